@@ -1,0 +1,143 @@
+//! One `ChannelEngine` trait, three engines: the reference model (the oracle),
+//! rust-hdl's own simulator, and the Verilated RTL (the sign-off).
+//!
+//! Contract of [`ChannelEngine::step`]: apply `inputs` (they are stable for the
+//! whole clock period), produce one rising edge of `clk`, and return the outputs
+//! as they are right after that edge. A bus built from engines feeds each node's
+//! `rx` in cycle n with the wired-AND of every node's `tx` returned by step n-1.
+//! See `crate::model` for the clock-level timing contract.
+
+pub mod model;
+pub mod rusthdl;
+pub mod verilator;
+
+use crate::frame::Frame;
+
+/// Bit-timing configuration, in time quanta (ISO 11898-1, 11.3.1).
+///
+/// The RTL ports carry `value - 1` for tseg1/tseg2/sjw (see `drcc_hdl::channel::btl`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BitTiming {
+    /// Baud-rate prescaler: one time quantum lasts `brp + 1` clocks (0..=63).
+    pub brp: u8,
+    /// TSEG1 = PROP_SEG + PHASE_SEG1 in tq (1..=16).
+    pub tseg1: u8,
+    /// TSEG2 = PHASE_SEG2 in tq (1..=8).
+    pub tseg2: u8,
+    /// Synchronisation jump width in tq (1..=4).
+    pub sjw: u8,
+    /// Majority of three samples at the sample point.
+    pub triple_sampling: bool,
+}
+
+impl Default for BitTiming {
+    fn default() -> Self {
+        // 8 MHz clock, 1 Mbit/s: 8 tq of one clock, sample point at 75 %.
+        BitTiming {
+            brp: 0,
+            tseg1: 5,
+            tseg2: 2,
+            sjw: 1,
+            triple_sampling: false,
+        }
+    }
+}
+
+impl BitTiming {
+    /// Time quanta per bit.
+    pub fn tq_per_bit(&self) -> u32 {
+        1 + self.tseg1 as u32 + self.tseg2 as u32
+    }
+    /// Clocks per bit.
+    pub fn clocks_per_bit(&self) -> u32 {
+        self.tq_per_bit() * (self.brp as u32 + 1)
+    }
+    /// Checks every field against its legal range; the error names the field.
+    pub fn validate(&self) -> Result<(), String> {
+        let check = |name: &str, v: u8, lo: u8, hi: u8| {
+            if v < lo || v > hi {
+                Err(format!(
+                    "bit timing field `{name}` = {v} is out of range: legal values are {lo}..={hi}"
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        check("brp", self.brp, 0, 63)?;
+        check("tseg1", self.tseg1, 1, 16)?;
+        check("tseg2", self.tseg2, 1, 8)?;
+        check("sjw", self.sjw, 1, 4)?;
+        if self.sjw > self.tseg2 {
+            return Err(format!(
+                "bit timing field `sjw` = {} exceeds `tseg2` = {}: SJW must not exceed PHASE_SEG2",
+                self.sjw, self.tseg2
+            ));
+        }
+        if self.tq_per_bit() < 8 {
+            return Err(format!(
+                "bit timing has {} tq per bit: ISO 11898-1 needs 8..=25 (raise tseg1/tseg2)",
+                self.tq_per_bit()
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Everything a channel samples at one clock edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ChannelInputs {
+    /// Synchronous active-high reset.
+    pub rst: bool,
+    /// The CAN bus as seen by this node's receiver (`true` = recessive).
+    pub rx: bool,
+    /// Shared bit-timing configuration.
+    pub timing: BitTiming,
+    /// One-clock request: latch `tx_frame` and transmit it.
+    pub tx_req: bool,
+    /// Frame to transmit; sampled when `tx_req` is high.
+    pub tx_frame: Frame,
+}
+
+/// Named internal signals compared clock by clock in co-simulation.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Probes {
+    /// One-clock pulse at the sample point of every bit.
+    pub sample_point: bool,
+    /// Bus value taken at the last sample point.
+    pub sampled_bit: bool,
+    /// The frame field the next bit belongs to (encoding in `crate::model::field`).
+    pub field: u8,
+    /// Transmit error counter (0..=256+).
+    pub tec: u16,
+    /// Receive error counter.
+    pub rec: u8,
+    /// 0 error active, 1 error passive, 2 bus-off.
+    pub err_state: u8,
+}
+
+/// Everything a channel drives, right after a clock edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ChannelOutputs {
+    /// The CAN transmit pin (`true` = recessive).
+    pub tx: bool,
+    /// A frame is latched and not yet sent.
+    pub tx_pending: bool,
+    /// One-clock pulse: the pending frame was sent successfully (end of EOF).
+    pub tx_done: bool,
+    /// One-clock pulse: arbitration was lost (the frame stays pending and is retried).
+    pub arb_lost: bool,
+    /// One-clock pulse: `rx_frame` holds a newly received valid frame.
+    pub rx_valid: bool,
+    /// Last received frame; changes only together with `rx_valid`.
+    pub rx_frame: Frame,
+    /// Probe signals.
+    pub probes: Probes,
+}
+
+/// One CAN channel, simulated clock by clock.
+pub trait ChannelEngine {
+    /// Engine name as the CLI spells it (`model`, `rust-hdl`, `verilator`).
+    fn name(&self) -> &'static str;
+    /// Apply inputs, clock once, return the outputs after the edge.
+    fn step(&mut self, inputs: &ChannelInputs) -> ChannelOutputs;
+}

@@ -1,0 +1,9 @@
+//! drcc-cosim: everything that runs a design — the reference model, the engines,
+//! the bus, co-simulation and traces.
+
+pub mod engine;
+pub mod frame;
+pub mod model;
+
+pub use engine::{BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, Probes};
+pub use frame::Frame;

@@ -1,0 +1,1 @@
+//! verilator-sys: placeholder

@@ -1,0 +1,1 @@
+//! drcc-hdl: the DRCC hardware, described in rust-hdl, one block per file.

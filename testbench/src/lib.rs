@@ -1,0 +1,1 @@
+//! drcc-testbench: scenarios and their runner.

@@ -1,1 +1,2 @@
 //! drcc-hdl: the DRCC hardware, described in rust-hdl, one block per file.
+pub mod channel;

@@ -1,0 +1,299 @@
+//! Bit timing logic (ISO 11898-1:2015, 11.3): prescaler, the SYNC/TSEG1/TSEG2
+//! segment counter, hard synchronisation, resynchronisation with the jump width,
+//! the sample point (with optional triple sampling) and the start of each
+//! transmitted bit. The exact per-clock algorithm is the timing contract §3
+//! (`cosim/src/model/timing_contract.md`); this block implements it line by line.
+//!
+//! Decisions where the standard leaves room:
+//! - The prescaler runs freely; edges are seen with one-time-quantum resolution.
+//! - SJW is clamped to TSEG2 (`min(sjw, tseg2)`), so a configuration with
+//!   SJW > PHASE_SEG2 can never shorten a bit below SYNC_SEG + TSEG1.
+//! - A node that is sending a dominant bit never resynchronises (8.7.7).
+
+use rust_hdl::prelude::*;
+
+/// Segment of the nominal bit time.
+#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
+pub enum Segment {
+    Sync,
+    Tseg1,
+    Tseg2,
+}
+
+/// The bit timing logic of one channel.
+#[derive(LogicBlock)]
+pub struct BitTimingLogic {
+    // clock and reset
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // configuration (minus-one encodings for the segment lengths)
+    pub cfg_brp: Signal<In, Bits<6>>,
+    pub cfg_tseg1: Signal<In, Bits<4>>,
+    pub cfg_tseg2: Signal<In, Bits<3>>,
+    pub cfg_sjw: Signal<In, Bits<2>>,
+    pub cfg_triple: Signal<In, Bit>,
+    // bus side
+    pub rx_s: Signal<In, Bit>,
+    pub tx: Signal<In, Bit>,
+    // from the bit stream processor
+    pub hard_sync_enable: Signal<In, Bit>,
+    // to the bit stream processor (valid in the clock of the event)
+    pub sample: Signal<Out, Bit>,
+    pub sampled: Signal<Out, Bit>,
+    pub bit_start: Signal<Out, Bit>,
+    pub hard_sync: Signal<Out, Bit>,
+    // probes
+    pub sample_point: Signal<Out, Bit>,
+    pub last_sample: Signal<Out, Bit>,
+    // state
+    brp_cnt: DFF<Bits<6>>,
+    seg: DFF<Segment>,
+    quantum: DFF<Bits<5>>,
+    tseg1_len: DFF<Bits<5>>,
+    tseg2_len: DFF<Bits<4>>,
+    rx_prev: DFF<Bit>,
+    rx_prev2: DFF<Bit>,
+    last_sample_q: DFF<Bit>,
+    synced: DFF<Bit>,
+    sample_point_q: DFF<Bit>,
+    // combinational helpers
+    tick: Signal<Local, Bit>,
+    tseg1_nominal: Signal<Local, Bits<5>>,
+    tseg2_nominal: Signal<Local, Bits<4>>,
+    sjw_cfg: Signal<Local, Bits<4>>,
+    sjw_eff: Signal<Local, Bits<4>>,
+    sync_ok: Signal<Local, Bit>,
+    do_hard: Signal<Local, Bit>,
+    do_resync: Signal<Local, Bit>,
+    quantum_next: Signal<Local, Bits<5>>,
+    pos_error: Signal<Local, Bits<5>>,
+    pos_jump: Signal<Local, Bits<5>>,
+    tseg1_eff: Signal<Local, Bits<5>>,
+    neg_error: Signal<Local, Bits<4>>,
+    tseg2_eff: Signal<Local, Bits<4>>,
+    sample_value: Signal<Local, Bit>,
+    one4: Constant<Bits<4>>,
+    one5: Constant<Bits<5>>,
+    one6: Constant<Bits<6>>,
+    zero5: Constant<Bits<5>>,
+    zero6: Constant<Bits<6>>,
+}
+
+impl Default for BitTimingLogic {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            cfg_brp: Default::default(),
+            cfg_tseg1: Default::default(),
+            cfg_tseg2: Default::default(),
+            cfg_sjw: Default::default(),
+            cfg_triple: Default::default(),
+            rx_s: Default::default(),
+            tx: Default::default(),
+            hard_sync_enable: Default::default(),
+            sample: Default::default(),
+            sampled: Default::default(),
+            bit_start: Default::default(),
+            hard_sync: Default::default(),
+            sample_point: Default::default(),
+            last_sample: Default::default(),
+            brp_cnt: Default::default(),
+            seg: Default::default(),
+            quantum: Default::default(),
+            tseg1_len: Default::default(),
+            tseg2_len: Default::default(),
+            rx_prev: Default::default(),
+            rx_prev2: Default::default(),
+            last_sample_q: Default::default(),
+            synced: Default::default(),
+            sample_point_q: Default::default(),
+            tick: Default::default(),
+            tseg1_nominal: Default::default(),
+            tseg2_nominal: Default::default(),
+            sjw_cfg: Default::default(),
+            sjw_eff: Default::default(),
+            sync_ok: Default::default(),
+            do_hard: Default::default(),
+            do_resync: Default::default(),
+            quantum_next: Default::default(),
+            pos_error: Default::default(),
+            pos_jump: Default::default(),
+            tseg1_eff: Default::default(),
+            neg_error: Default::default(),
+            tseg2_eff: Default::default(),
+            sample_value: Default::default(),
+            one4: Constant::new(1.into()),
+            one5: Constant::new(1.into()),
+            one6: Constant::new(1.into()),
+            zero5: Constant::new(0.into()),
+            zero6: Constant::new(0.into()),
+        }
+    }
+}
+
+impl Logic for BitTimingLogic {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clk,
+            brp_cnt,
+            seg,
+            quantum,
+            tseg1_len,
+            tseg2_len,
+            rx_prev,
+            rx_prev2,
+            last_sample_q,
+            synced,
+            sample_point_q
+        );
+        // Nominal lengths from the minus-one encodings; SJW clamped to TSEG2.
+        self.tseg1_nominal.next = bit_cast::<5, 4>(self.cfg_tseg1.val()) + self.one5.val();
+        self.tseg2_nominal.next = bit_cast::<4, 3>(self.cfg_tseg2.val()) + self.one4.val();
+        self.sjw_cfg.next = bit_cast::<4, 2>(self.cfg_sjw.val()) + self.one4.val();
+        if self.sjw_cfg.val() > self.tseg2_nominal.val() {
+            self.sjw_eff.next = self.tseg2_nominal.val();
+        } else {
+            self.sjw_eff.next = self.sjw_cfg.val();
+        }
+        // Prescaler: one time quantum every BRP+1 clocks.
+        self.tick.next = self.brp_cnt.q.val() >= self.cfg_brp.val();
+        // 11.3.2: recessive-to-dominant edge, previous sample recessive, once per bit.
+        self.sync_ok.next = self.rx_prev.q.val()
+            && !self.rx_s.val()
+            && self.last_sample_q.q.val()
+            && !self.synced.q.val();
+        self.do_hard.next = self.sync_ok.val() && self.hard_sync_enable.val();
+        self.do_resync.next = self.sync_ok.val() && !self.hard_sync_enable.val() && self.tx.val();
+        self.quantum_next.next = self.quantum.q.val() + self.one5.val();
+        // Positive phase error e = q+1 (edge in TSEG1), jump min(e, SJW).
+        self.pos_error.next = self.quantum.q.val() + self.one5.val();
+        if self.pos_error.val() > bit_cast::<5, 4>(self.sjw_eff.val()) {
+            self.pos_jump.next = bit_cast::<5, 4>(self.sjw_eff.val());
+        } else {
+            self.pos_jump.next = self.pos_error.val();
+        }
+        if self.do_resync.val() {
+            self.tseg1_eff.next = self.tseg1_len.q.val() + self.pos_jump.val();
+        } else {
+            self.tseg1_eff.next = self.tseg1_len.q.val();
+        }
+        // Negative phase error |e| = t2 - q (edge in TSEG2).
+        self.neg_error.next = self.tseg2_len.q.val() - self.quantum.q.val().get_bits::<4>(0);
+        if self.do_resync.val() {
+            self.tseg2_eff.next = self.tseg2_len.q.val() - self.sjw_eff.val();
+        } else {
+            self.tseg2_eff.next = self.tseg2_len.q.val();
+        }
+        // Sample value, single or majority of three quanta (triple sampling).
+        if self.cfg_triple.val() {
+            self.sample_value.next = (self.rx_prev2.q.val() && self.rx_prev.q.val())
+                || (self.rx_prev.q.val() && self.rx_s.val())
+                || (self.rx_prev2.q.val() && self.rx_s.val());
+        } else {
+            self.sample_value.next = self.rx_s.val();
+        }
+
+        self.sample.next = false;
+        self.bit_start.next = false;
+        self.hard_sync.next = false;
+        self.sample_point_q.d.next = false;
+        if self.tick.val() {
+            self.brp_cnt.d.next = self.zero6.val();
+            self.rx_prev.d.next = self.rx_s.val();
+            self.rx_prev2.d.next = self.rx_prev.q.val();
+            if self.do_hard.val() {
+                // Hard synchronisation: this quantum becomes SYNC_SEG.
+                self.seg.d.next = Segment::Tseg1;
+                self.quantum.d.next = self.zero5.val();
+                self.tseg1_len.d.next = self.tseg1_nominal.val();
+                self.tseg2_len.d.next = self.tseg2_nominal.val();
+                self.synced.d.next = true;
+                self.bit_start.next = true;
+                self.hard_sync.next = true;
+            } else {
+                match self.seg.q.val() {
+                    Segment::Sync => {
+                        self.seg.d.next = Segment::Tseg1;
+                        self.quantum.d.next = self.zero5.val();
+                        self.tseg1_len.d.next = self.tseg1_nominal.val();
+                        self.tseg2_len.d.next = self.tseg2_nominal.val();
+                        if self.do_resync.val() {
+                            self.synced.d.next = true;
+                        }
+                    }
+                    Segment::Tseg1 => {
+                        if self.do_resync.val() {
+                            self.synced.d.next = true;
+                        }
+                        self.tseg1_len.d.next = self.tseg1_eff.val();
+                        if self.quantum_next.val() >= self.tseg1_eff.val() {
+                            // Sample point: end of TSEG1.
+                            self.sample.next = true;
+                            self.sample_point_q.d.next = true;
+                            self.last_sample_q.d.next = self.sample_value.val();
+                            self.synced.d.next = false;
+                            self.seg.d.next = Segment::Tseg2;
+                            self.quantum.d.next = self.zero5.val();
+                        } else {
+                            self.quantum.d.next = self.quantum_next.val();
+                        }
+                    }
+                    Segment::Tseg2 => {
+                        if self.do_resync.val() && (self.neg_error.val() <= self.sjw_eff.val()) {
+                            // Edge within SJW before the bit end: this quantum is SYNC_SEG.
+                            self.seg.d.next = Segment::Tseg1;
+                            self.quantum.d.next = self.zero5.val();
+                            self.tseg1_len.d.next = self.tseg1_nominal.val();
+                            self.tseg2_len.d.next = self.tseg2_nominal.val();
+                            self.synced.d.next = true;
+                            self.bit_start.next = true;
+                        } else {
+                            if self.do_resync.val() {
+                                self.synced.d.next = true;
+                            }
+                            self.tseg2_len.d.next = self.tseg2_eff.val();
+                            if self.quantum_next.val().get_bits::<4>(0) >= self.tseg2_eff.val() {
+                                self.seg.d.next = Segment::Sync;
+                                self.quantum.d.next = self.zero5.val();
+                                self.bit_start.next = true;
+                            } else {
+                                self.quantum.d.next = self.quantum_next.val();
+                            }
+                        }
+                    }
+                    _ => {
+                        self.seg.d.next = Segment::Sync;
+                    }
+                }
+            }
+        } else {
+            self.brp_cnt.d.next = self.brp_cnt.q.val() + self.one6.val();
+        }
+        self.sampled.next = self.sample_value.val();
+        self.sample_point.next = self.sample_point_q.q.val();
+        self.last_sample.next = self.last_sample_q.q.val();
+
+        if self.rst.val() {
+            self.brp_cnt.d.next = self.zero6.val();
+            self.seg.d.next = Segment::Sync;
+            self.quantum.d.next = self.zero5.val();
+            self.tseg1_len.d.next = self.tseg1_nominal.val();
+            self.tseg2_len.d.next = self.tseg2_nominal.val();
+            self.rx_prev.d.next = true;
+            self.rx_prev2.d.next = true;
+            self.last_sample_q.d.next = true;
+            self.synced.d.next = false;
+            self.sample_point_q.d.next = false;
+        }
+    }
+}
+
+#[test]
+fn btl_synthesizes() {
+    let mut uut = BitTimingLogic::default();
+    uut.connect_all();
+    yosys_validate("bit_timing_logic", &generate_verilog(&uut)).unwrap();
+}

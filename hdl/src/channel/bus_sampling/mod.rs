@@ -1,0 +1,2 @@
+//! Bus sampling: everything between the CAN pins and the bit timing logic.
+pub mod synchronizer;

@@ -1,0 +1,5 @@
+//! One complete ISO 11898-1 classical CAN channel: bus sampling, bit timing
+//! logic and the bit stream processor.
+pub mod bsp;
+pub mod btl;
+pub mod bus_sampling;

@@ -3,3 +3,4 @@
 pub mod bsp;
 pub mod btl;
 pub mod bus_sampling;
+pub mod can_channel;

@@ -1,0 +1,958 @@
+//! Protocol controller of the bit stream processor (ISO 11898-1:2015, clauses 10
+//! and 12; timing contract §4): frame coding and decoding field by field,
+//! bit stuffing (10.5), CRC-15 (10.4.2.6), bitwise arbitration (10.4.2.1 /
+//! 12.1.2), acknowledgement (10.4.2.7), error detection (12.1.3), error and
+//! overload frames (10.4.3, 10.4.4), intermission and suspend transmission
+//! (10.4.5), bus integration and bus-off recovery (12.1.4.4).
+//!
+//! State changes only at the sample point (`sample`); the `tx` pin is loaded only
+//! at `bit_start`. Decisions where the standard leaves room (written in the
+//! timing contract too):
+//! - The type of error flag (active or passive) is the error state at the moment
+//!   the error is detected, before that error's counter increment.
+//! - A transmitter's frame is latched by a one-clock `tx_req` and stays pending
+//!   through lost arbitration and errors until sent (automatic retransmission).
+
+use super::crc::Crc15Step;
+use super::fault_confinement::FaultConfinement;
+use super::field::Field;
+use rust_hdl::prelude::*;
+
+/// The protocol controller of one channel.
+#[derive(LogicBlock)]
+pub struct ProtocolController {
+    // clock and reset
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // from the bit timing logic
+    pub sample: Signal<In, Bit>,
+    pub sampled: Signal<In, Bit>,
+    pub bit_start: Signal<In, Bit>,
+    pub hard_sync: Signal<In, Bit>,
+    // to the bit timing logic and the pin
+    pub hard_sync_enable: Signal<Out, Bit>,
+    pub tx: Signal<Out, Bit>,
+    // host transmit interface
+    pub tx_req: Signal<In, Bit>,
+    pub tx_id: Signal<In, Bits<29>>,
+    pub tx_ide: Signal<In, Bit>,
+    pub tx_rtr: Signal<In, Bit>,
+    pub tx_dlc: Signal<In, Bits<4>>,
+    pub tx_data: Signal<In, Bits<64>>,
+    pub tx_pending: Signal<Out, Bit>,
+    pub tx_done: Signal<Out, Bit>,
+    pub arb_lost: Signal<Out, Bit>,
+    // host receive interface
+    pub rx_valid: Signal<Out, Bit>,
+    pub rx_id: Signal<Out, Bits<29>>,
+    pub rx_ide: Signal<Out, Bit>,
+    pub rx_rtr: Signal<Out, Bit>,
+    pub rx_dlc: Signal<Out, Bits<4>>,
+    pub rx_data: Signal<Out, Bits<64>>,
+    // probes
+    pub field: Signal<Out, Field>,
+    pub tec: Signal<Out, Bits<9>>,
+    pub rec: Signal<Out, Bits<8>>,
+    pub err_state: Signal<Out, Bits<2>>,
+    // sub-blocks
+    crc_step: Crc15Step,
+    fc: FaultConfinement,
+    // protocol state
+    field_q: DFF<Field>,
+    bit_cnt: DFF<Bits<7>>,
+    is_tx: DFF<Bit>,
+    pending: DFF<Bit>,
+    stuff_cnt: DFF<Bits<3>>,
+    stuff_last: DFF<Bit>,
+    stuff_en: DFF<Bit>,
+    crc: DFF<Bits<15>>,
+    crc_ok: DFF<Bit>,
+    flag_passive: DFF<Bit>,
+    recovery_cnt: DFF<Bits<7>>,
+    tx_q: DFF<Bit>,
+    tx_bit: DFF<Bit>,
+    // latched transmit frame
+    txf_id: DFF<Bits<29>>,
+    txf_ide: DFF<Bit>,
+    txf_rtr: DFF<Bit>,
+    txf_dlc: DFF<Bits<4>>,
+    txf_data: DFF<Bits<64>>,
+    // receive shift registers
+    rxs_id: DFF<Bits<29>>,
+    rxs_srr_rtr: DFF<Bit>,
+    rxs_ide: DFF<Bit>,
+    rxs_rtr: DFF<Bit>,
+    rxs_dlc: DFF<Bits<4>>,
+    rxs_data: DFF<Bits<64>>,
+    data_len: DFF<Bits<7>>,
+    // host-visible receive registers and pulses
+    rx_valid_q: DFF<Bit>,
+    tx_done_q: DFF<Bit>,
+    arb_lost_q: DFF<Bit>,
+    rx_id_q: DFF<Bits<29>>,
+    rx_ide_q: DFF<Bit>,
+    rx_rtr_q: DFF<Bit>,
+    rx_dlc_q: DFF<Bits<4>>,
+    rx_data_q: DFF<Bits<64>>,
+    // next-state values of the sample-point update
+    field_n: Signal<Local, Field>,
+    bit_cnt_n: Signal<Local, Bits<7>>,
+    bit_cnt_inc: Signal<Local, Bits<7>>,
+    is_tx_n: Signal<Local, Bit>,
+    stuff_cnt_n: Signal<Local, Bits<3>>,
+    stuff_last_n: Signal<Local, Bit>,
+    stuff_en_n: Signal<Local, Bit>,
+    crc_n: Signal<Local, Bits<15>>,
+    crc_ok_n: Signal<Local, Bit>,
+    flag_passive_n: Signal<Local, Bit>,
+    tx_bit_n: Signal<Local, Bit>,
+    // classification of the sampled bit
+    bus_bit: Signal<Local, Bits<1>>,
+    start_ok: Signal<Local, Bit>,
+    is_stuff_bit: Signal<Local, Bit>,
+    in_arbitration: Signal<Local, Bit>,
+    in_frame: Signal<Local, Bit>,
+    sof: Signal<Local, Bit>,
+    sof_as_tx: Signal<Local, Bit>,
+    crc_covered: Signal<Local, Bit>,
+    dlc_n: Signal<Local, Bits<4>>,
+    data_bits: Signal<Local, Bits<7>>,
+    // errors and fault-confinement events
+    error: Signal<Local, Bit>,
+    tec_exempt: Signal<Local, Bit>,
+    ack_error: Signal<Local, Bit>,
+    // bit selectors of the transmitted frame
+    id_a_idx: Signal<Local, Bits<5>>,
+    id_b_idx: Signal<Local, Bits<5>>,
+    dlc_idx: Signal<Local, Bits<2>>,
+    data_idx: Signal<Local, Bits<6>>,
+    crc_idx: Signal<Local, Bits<4>>,
+    crc_rx_idx: Signal<Local, Bits<4>>,
+    data_wr_idx: Signal<Local, Bits<6>>,
+    // sized constants (rust-hdl would emit unsized literals otherwise)
+    n7_0: Constant<Bits<7>>,
+    n7_1: Constant<Bits<7>>,
+    n7_2: Constant<Bits<7>>,
+    n7_3: Constant<Bits<7>>,
+    n7_5: Constant<Bits<7>>,
+    n7_6: Constant<Bits<7>>,
+    n7_7: Constant<Bits<7>>,
+    n7_10: Constant<Bits<7>>,
+    n7_14: Constant<Bits<7>>,
+    n7_17: Constant<Bits<7>>,
+    n7_64: Constant<Bits<7>>,
+    n7_127: Constant<Bits<7>>,
+    n3_1: Constant<Bits<3>>,
+    n3_5: Constant<Bits<3>>,
+    n5_10: Constant<Bits<5>>,
+    n5_17: Constant<Bits<5>>,
+    n5_28: Constant<Bits<5>>,
+    n2_3: Constant<Bits<2>>,
+    n6_63: Constant<Bits<6>>,
+    n4_14: Constant<Bits<4>>,
+    n8_248: Constant<Bits<9>>,
+    zero15: Constant<Bits<15>>,
+    zero29: Constant<Bits<29>>,
+    zero64: Constant<Bits<64>>,
+}
+
+impl Default for ProtocolController {
+    fn default() -> Self {
+        let c7 = |v: u64| Constant::new(Bits::<7>::from(v));
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            sample: Default::default(),
+            sampled: Default::default(),
+            bit_start: Default::default(),
+            hard_sync: Default::default(),
+            hard_sync_enable: Default::default(),
+            tx: Default::default(),
+            tx_req: Default::default(),
+            tx_id: Default::default(),
+            tx_ide: Default::default(),
+            tx_rtr: Default::default(),
+            tx_dlc: Default::default(),
+            tx_data: Default::default(),
+            tx_pending: Default::default(),
+            tx_done: Default::default(),
+            arb_lost: Default::default(),
+            rx_valid: Default::default(),
+            rx_id: Default::default(),
+            rx_ide: Default::default(),
+            rx_rtr: Default::default(),
+            rx_dlc: Default::default(),
+            rx_data: Default::default(),
+            field: Default::default(),
+            tec: Default::default(),
+            rec: Default::default(),
+            err_state: Default::default(),
+            crc_step: Default::default(),
+            fc: Default::default(),
+            field_q: Default::default(),
+            bit_cnt: Default::default(),
+            is_tx: Default::default(),
+            pending: Default::default(),
+            stuff_cnt: Default::default(),
+            stuff_last: Default::default(),
+            stuff_en: Default::default(),
+            crc: Default::default(),
+            crc_ok: Default::default(),
+            flag_passive: Default::default(),
+            recovery_cnt: Default::default(),
+            tx_q: Default::default(),
+            tx_bit: Default::default(),
+            txf_id: Default::default(),
+            txf_ide: Default::default(),
+            txf_rtr: Default::default(),
+            txf_dlc: Default::default(),
+            txf_data: Default::default(),
+            rxs_id: Default::default(),
+            rxs_srr_rtr: Default::default(),
+            rxs_ide: Default::default(),
+            rxs_rtr: Default::default(),
+            rxs_dlc: Default::default(),
+            rxs_data: Default::default(),
+            data_len: Default::default(),
+            rx_valid_q: Default::default(),
+            tx_done_q: Default::default(),
+            arb_lost_q: Default::default(),
+            rx_id_q: Default::default(),
+            rx_ide_q: Default::default(),
+            rx_rtr_q: Default::default(),
+            rx_dlc_q: Default::default(),
+            rx_data_q: Default::default(),
+            field_n: Default::default(),
+            bit_cnt_n: Default::default(),
+            bit_cnt_inc: Default::default(),
+            is_tx_n: Default::default(),
+            stuff_cnt_n: Default::default(),
+            stuff_last_n: Default::default(),
+            stuff_en_n: Default::default(),
+            crc_n: Default::default(),
+            crc_ok_n: Default::default(),
+            flag_passive_n: Default::default(),
+            tx_bit_n: Default::default(),
+            bus_bit: Default::default(),
+            start_ok: Default::default(),
+            is_stuff_bit: Default::default(),
+            in_arbitration: Default::default(),
+            in_frame: Default::default(),
+            sof: Default::default(),
+            sof_as_tx: Default::default(),
+            crc_covered: Default::default(),
+            dlc_n: Default::default(),
+            data_bits: Default::default(),
+            error: Default::default(),
+            tec_exempt: Default::default(),
+            ack_error: Default::default(),
+            id_a_idx: Default::default(),
+            id_b_idx: Default::default(),
+            dlc_idx: Default::default(),
+            data_idx: Default::default(),
+            crc_idx: Default::default(),
+            crc_rx_idx: Default::default(),
+            data_wr_idx: Default::default(),
+            n7_0: c7(0),
+            n7_1: c7(1),
+            n7_2: c7(2),
+            n7_3: c7(3),
+            n7_5: c7(5),
+            n7_6: c7(6),
+            n7_7: c7(7),
+            n7_10: c7(10),
+            n7_14: c7(14),
+            n7_17: c7(17),
+            n7_64: c7(64),
+            n7_127: c7(127),
+            n3_1: Constant::new(1.into()),
+            n3_5: Constant::new(5.into()),
+            n5_10: Constant::new(10.into()),
+            n5_17: Constant::new(17.into()),
+            n5_28: Constant::new(28.into()),
+            n2_3: Constant::new(3.into()),
+            n6_63: Constant::new(63.into()),
+            n4_14: Constant::new(14.into()),
+            n8_248: Constant::new(248.into()),
+            zero15: Constant::new(0.into()),
+            zero29: Constant::new(0.into()),
+            zero64: Constant::new(0.into()),
+        }
+    }
+}
+
+impl Logic for ProtocolController {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clk, field_q, bit_cnt, is_tx, pending, stuff_cnt, stuff_last, stuff_en, crc,
+            crc_ok, flag_passive, recovery_cnt, tx_q, tx_bit, txf_id, txf_ide, txf_rtr, txf_dlc,
+            txf_data, rxs_id, rxs_srr_rtr, rxs_ide, rxs_rtr, rxs_dlc, rxs_data, data_len,
+            rx_valid_q, tx_done_q, arb_lost_q, rx_id_q, rx_ide_q, rx_rtr_q, rx_dlc_q, rx_data_q
+        );
+        self.fc.clk.next = self.clk.val();
+        self.fc.rst.next = self.rst.val();
+        self.crc_step.crc.next = self.crc.q.val();
+        self.crc_step.data_bit.next = self.sampled.val();
+
+        // ---- defaults: nothing changes unless the sample point says so
+        self.field_n.next = self.field_q.q.val();
+        self.bit_cnt_n.next = self.bit_cnt.q.val();
+        self.bit_cnt_inc.next = self.bit_cnt.q.val() + self.n7_1.val();
+        self.is_tx_n.next = self.is_tx.q.val();
+        self.stuff_cnt_n.next = self.stuff_cnt.q.val();
+        self.stuff_last_n.next = self.stuff_last.q.val();
+        self.stuff_en_n.next = self.stuff_en.q.val();
+        self.crc_n.next = self.crc.q.val();
+        self.crc_ok_n.next = self.crc_ok.q.val();
+        self.flag_passive_n.next = self.flag_passive.q.val();
+        self.bus_bit.next = self.sampled.val().into();
+        self.start_ok.next = self.pending.q.val() && !self.fc.bus_off.val();
+        self.is_stuff_bit.next =
+            self.stuff_en.q.val() && (self.stuff_cnt.q.val() == self.n3_5.val());
+        self.sof.next = false;
+        self.sof_as_tx.next = false;
+        self.error.next = false;
+        self.tec_exempt.next = false;
+        self.ack_error.next = false;
+        self.fc.tec_add8.next = false;
+        self.fc.rec_add1.next = false;
+        self.fc.rec_add8.next = false;
+        self.fc.tx_success.next = false;
+        self.fc.rx_success.next = false;
+        self.fc.recovered.next = false;
+        self.rx_valid_q.d.next = false;
+        self.tx_done_q.d.next = false;
+        self.arb_lost_q.d.next = false;
+        self.dlc_n.next = (self.rxs_dlc.q.val() << 1) | bit_cast::<4, 1>(self.bus_bit.val());
+        if self.rxs_rtr.q.val() {
+            self.data_bits.next = self.n7_0.val();
+        } else if self.dlc_n.val().get_bit(3) {
+            self.data_bits.next = self.n7_64.val();
+        } else {
+            self.data_bits.next = bit_cast::<7, 3>(self.dlc_n.val().get_bits::<3>(0)) << 3;
+        }
+        self.crc_rx_idx.next = self.n4_14.val() - self.bit_cnt.q.val().get_bits::<4>(0);
+        self.data_wr_idx.next = self.n6_63.val() - self.bit_cnt.q.val().get_bits::<6>(0);
+
+        // ---- field classification (10.4.2: the arbitration field is ID, SRR, IDE, RTR)
+        self.in_arbitration.next = false;
+        self.in_frame.next = false;
+        self.crc_covered.next = false;
+        match self.field_q.q.val() {
+            Field::IdA => {
+                self.in_arbitration.next = true;
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::SrrRtr => {
+                self.in_arbitration.next = true;
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::Ide => {
+                self.in_arbitration.next = true;
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::IdB => {
+                self.in_arbitration.next = true;
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::RtrExt => {
+                self.in_arbitration.next = true;
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::R1 => {
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::R0 => {
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::Dlc => {
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::Data => {
+                self.in_frame.next = true;
+                self.crc_covered.next = true;
+            }
+            Field::Crc => {
+                self.in_frame.next = true;
+            }
+            Field::CrcDelim => {
+                self.in_frame.next = true;
+            }
+            Field::AckSlot => {
+                self.in_frame.next = true;
+            }
+            Field::AckDelim => {
+                self.in_frame.next = true;
+            }
+            Field::Eof => {
+                self.in_frame.next = true;
+            }
+            _ => {}
+        }
+
+        // ---- the sample point
+        if self.sample.val() {
+            if self.is_stuff_bit.val() {
+                // 10.5: a stuff bit must be the complement of the five before it.
+                if self.sampled.val() == self.stuff_last.q.val() {
+                    self.error.next = true;
+                    // 12.1.4.2 exception: recessive stuff bit read dominant in arbitration.
+                    if self.is_tx.q.val() && self.in_arbitration.val() && self.tx_q.q.val() {
+                        self.tec_exempt.next = true;
+                    }
+                } else {
+                    self.stuff_cnt_n.next = self.n3_1.val();
+                    self.stuff_last_n.next = self.sampled.val();
+                }
+            } else {
+                if self.stuff_en.q.val() {
+                    if self.sampled.val() == self.stuff_last.q.val() {
+                        self.stuff_cnt_n.next = self.stuff_cnt.q.val() + self.n3_1.val();
+                    } else {
+                        self.stuff_cnt_n.next = self.n3_1.val();
+                        self.stuff_last_n.next = self.sampled.val();
+                    }
+                }
+                if self.crc_covered.val() {
+                    self.crc_n.next = self.crc_step.crc_next.val();
+                }
+                // 12.1.3.1 bit monitoring by the transmitter, with 12.1.2 arbitration.
+                if self.is_tx.q.val()
+                    && self.in_frame.val()
+                    && (self.sampled.val() != self.tx_q.q.val())
+                {
+                    if self.in_arbitration.val() && self.tx_q.q.val() {
+                        self.is_tx_n.next = false;
+                        self.arb_lost_q.d.next = true;
+                    } else if (self.field_q.q.val() == Field::AckSlot) && self.tx_q.q.val() {
+                        // Dominant ACK slot: acknowledged.
+                    } else {
+                        self.error.next = true;
+                    }
+                }
+                // 7.2.1: a receiver's own dominant ACK read back recessive.
+                if !self.is_tx.q.val()
+                    && (self.field_q.q.val() == Field::AckSlot)
+                    && !self.tx_q.q.val()
+                    && self.sampled.val()
+                {
+                    self.error.next = true;
+                }
+                match self.field_q.q.val() {
+                    Field::Integrating => {
+                        // 12.1.4.4: 11 consecutive recessive bits before taking part.
+                        if self.sampled.val() {
+                            if self.bit_cnt.q.val() == self.n7_10.val() {
+                                self.field_n.next = Field::Idle;
+                                self.bit_cnt_n.next = self.n7_0.val();
+                            } else {
+                                self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                            }
+                        } else {
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        }
+                    }
+                    Field::Idle => {
+                        if !self.sampled.val() {
+                            self.sof.next = true;
+                            self.sof_as_tx.next = self.start_ok.val();
+                        }
+                    }
+                    Field::Suspend => {
+                        // 10.4.5: a passive transmitter waits 8 bits; it may receive meanwhile.
+                        if !self.sampled.val() {
+                            self.sof.next = true;
+                        } else if self.bit_cnt.q.val() == self.n7_7.val() {
+                            self.field_n.next = Field::Idle;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::Intermission => {
+                        if !self.sampled.val() {
+                            if self.bit_cnt.q.val() == self.n7_2.val() {
+                                // 10.4.5: dominant third intermission bit is a SOF.
+                                self.sof.next = true;
+                                self.sof_as_tx.next = self.start_ok.val();
+                            } else {
+                                // 10.4.4: dominant intermission bit 1 or 2: overload.
+                                self.field_n.next = Field::OverloadFlag;
+                                self.bit_cnt_n.next = self.n7_0.val();
+                            }
+                        } else if self.bit_cnt.q.val() == self.n7_2.val() {
+                            if self.is_tx.q.val() && self.fc.error_passive.val() {
+                                self.field_n.next = Field::Suspend;
+                            } else {
+                                self.field_n.next = Field::Idle;
+                            }
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::IdA => {
+                        self.rxs_id.d.next = (self.rxs_id.q.val() << 1)
+                            | bit_cast::<29, 1>(self.bus_bit.val());
+                        if self.bit_cnt.q.val() == self.n7_10.val() {
+                            self.field_n.next = Field::SrrRtr;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::SrrRtr => {
+                        self.rxs_srr_rtr.d.next = self.sampled.val();
+                        self.field_n.next = Field::Ide;
+                    }
+                    Field::Ide => {
+                        self.rxs_ide.d.next = self.sampled.val();
+                        if self.sampled.val() {
+                            self.field_n.next = Field::IdB;
+                        } else {
+                            self.rxs_rtr.d.next = self.rxs_srr_rtr.q.val();
+                            self.field_n.next = Field::R0;
+                        }
+                        self.bit_cnt_n.next = self.n7_0.val();
+                    }
+                    Field::IdB => {
+                        self.rxs_id.d.next = (self.rxs_id.q.val() << 1)
+                            | bit_cast::<29, 1>(self.bus_bit.val());
+                        if self.bit_cnt.q.val() == self.n7_17.val() {
+                            self.field_n.next = Field::RtrExt;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::RtrExt => {
+                        self.rxs_rtr.d.next = self.sampled.val();
+                        self.field_n.next = Field::R1;
+                    }
+                    Field::R1 => {
+                        self.field_n.next = Field::R0;
+                    }
+                    Field::R0 => {
+                        self.field_n.next = Field::Dlc;
+                        self.bit_cnt_n.next = self.n7_0.val();
+                    }
+                    Field::Dlc => {
+                        self.rxs_dlc.d.next = self.dlc_n.val();
+                        if self.bit_cnt.q.val() == self.n7_3.val() {
+                            self.data_len.d.next = self.data_bits.val();
+                            if self.data_bits.val() == self.n7_0.val() {
+                                self.field_n.next = Field::Crc;
+                            } else {
+                                self.field_n.next = Field::Data;
+                            }
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::Data => {
+                        self.rxs_data.d.next = self
+                            .rxs_data
+                            .q
+                            .val()
+                            .replace_bit(self.data_wr_idx.val().index(), self.sampled.val());
+                        if self.bit_cnt_inc.val() == self.data_len.q.val() {
+                            self.field_n.next = Field::Crc;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::Crc => {
+                        if self.sampled.val()
+                            != self.crc.q.val().get_bit(self.crc_rx_idx.val().index())
+                        {
+                            self.crc_ok_n.next = false;
+                        }
+                        if self.bit_cnt.q.val() == self.n7_14.val() {
+                            self.field_n.next = Field::CrcDelim;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::CrcDelim => {
+                        // 10.5: the stuffed region ends with the CRC sequence.
+                        self.stuff_en_n.next = false;
+                        if !self.sampled.val() {
+                            self.error.next = true; // 12.1.3.4 form error
+                        }
+                        self.field_n.next = Field::AckSlot;
+                    }
+                    Field::AckSlot => {
+                        if self.is_tx.q.val() && self.sampled.val() {
+                            // 12.1.3.5 ACK error
+                            self.error.next = true;
+                            self.ack_error.next = true;
+                        }
+                        self.field_n.next = Field::AckDelim;
+                    }
+                    Field::AckDelim => {
+                        if !self.sampled.val() {
+                            self.error.next = true; // form error
+                        } else if !self.crc_ok.q.val() && !self.is_tx.q.val() {
+                            // 12.1.3.3: CRC error flag starts after the ACK delimiter.
+                            self.error.next = true;
+                        }
+                        self.field_n.next = Field::Eof;
+                        self.bit_cnt_n.next = self.n7_0.val();
+                    }
+                    Field::Eof => {
+                        if !self.sampled.val() {
+                            if (self.bit_cnt.q.val() == self.n7_6.val()) && !self.is_tx.q.val() {
+                                // 10.4.4: a receiver's dominant last EOF bit is an overload.
+                                self.field_n.next = Field::OverloadFlag;
+                                self.bit_cnt_n.next = self.n7_0.val();
+                            } else {
+                                self.error.next = true; // form error
+                            }
+                        } else {
+                            if (self.bit_cnt.q.val() == self.n7_5.val()) && !self.is_tx.q.val() {
+                                // 10.7: valid for receivers at the last but one EOF bit.
+                                self.rx_valid_q.d.next = true;
+                                self.rx_id_q.d.next = self.rxs_id.q.val();
+                                self.rx_ide_q.d.next = self.rxs_ide.q.val();
+                                self.rx_rtr_q.d.next = self.rxs_rtr.q.val();
+                                self.rx_dlc_q.d.next = self.rxs_dlc.q.val();
+                                self.rx_data_q.d.next = self.rxs_data.q.val();
+                                self.fc.rx_success.next = true;
+                            }
+                            if self.bit_cnt.q.val() == self.n7_6.val() {
+                                if self.is_tx.q.val() {
+                                    // 10.7: valid for the transmitter at the end of EOF.
+                                    self.tx_done_q.d.next = true;
+                                    self.pending.d.next = false;
+                                    self.fc.tx_success.next = true;
+                                }
+                                self.field_n.next = Field::Intermission;
+                                self.bit_cnt_n.next = self.n7_0.val();
+                            } else {
+                                self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                            }
+                        }
+                    }
+                    Field::ErrorFlag => {
+                        if self.flag_passive.q.val() {
+                            // 10.4.3: a passive flag ends after 6 equal consecutive bits.
+                            if (self.bit_cnt.q.val() == self.n7_0.val())
+                                || (self.sampled.val() != self.stuff_last.q.val())
+                            {
+                                self.bit_cnt_n.next = self.n7_1.val();
+                                self.stuff_last_n.next = self.sampled.val();
+                            } else if self.bit_cnt.q.val() == self.n7_5.val() {
+                                self.field_n.next = Field::ErrorDelim;
+                                self.bit_cnt_n.next = self.n7_0.val();
+                            } else {
+                                self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                            }
+                        } else if self.bit_cnt.q.val() == self.n7_5.val() {
+                            self.field_n.next = Field::ErrorDelim;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::OverloadFlag => {
+                        if self.bit_cnt.q.val() == self.n7_5.val() {
+                            self.field_n.next = Field::OverloadDelim;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::ErrorDelim => {
+                        // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
+                        if self.bit_cnt.q.val() == self.n7_0.val() {
+                            if self.sampled.val() {
+                                self.bit_cnt_n.next = self.n7_1.val();
+                            }
+                        } else if !self.sampled.val() {
+                            if self.bit_cnt.q.val() == self.n7_7.val() {
+                                self.field_n.next = Field::OverloadFlag;
+                                self.bit_cnt_n.next = self.n7_0.val();
+                            } else {
+                                self.error.next = true; // form error in the delimiter
+                            }
+                        } else if self.bit_cnt.q.val() == self.n7_7.val() {
+                            self.field_n.next = Field::Intermission;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::OverloadDelim => {
+                        // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
+                        if self.bit_cnt.q.val() == self.n7_0.val() {
+                            if self.sampled.val() {
+                                self.bit_cnt_n.next = self.n7_1.val();
+                            }
+                        } else if !self.sampled.val() {
+                            if self.bit_cnt.q.val() == self.n7_7.val() {
+                                self.field_n.next = Field::OverloadFlag;
+                                self.bit_cnt_n.next = self.n7_0.val();
+                            } else {
+                                self.error.next = true; // form error in the delimiter
+                            }
+                        } else if self.bit_cnt.q.val() == self.n7_7.val() {
+                            self.field_n.next = Field::Intermission;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                        }
+                    }
+                    Field::BusOff => {
+                        // 12.1.4.4: 128 occurrences of 11 consecutive recessive bits.
+                        if self.sampled.val() {
+                            if self.bit_cnt.q.val() == self.n7_10.val() {
+                                self.bit_cnt_n.next = self.n7_0.val();
+                                if self.recovery_cnt.q.val() == self.n7_127.val() {
+                                    self.field_n.next = Field::Idle;
+                                    self.fc.recovered.next = true;
+                                    self.recovery_cnt.d.next = self.n7_0.val();
+                                } else {
+                                    self.recovery_cnt.d.next =
+                                        self.recovery_cnt.q.val() + self.n7_1.val();
+                                }
+                            } else {
+                                self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                            }
+                        } else {
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        }
+                    }
+                    _ => {}
+                }
+            }
+
+            // Start of frame: a new frame begins, as transmitter if one is pending.
+            if self.sof.val() {
+                self.field_n.next = Field::IdA;
+                self.bit_cnt_n.next = self.n7_0.val();
+                self.is_tx_n.next = self.sof_as_tx.val();
+                self.stuff_en_n.next = true;
+                self.stuff_cnt_n.next = self.n3_1.val();
+                self.stuff_last_n.next = false;
+                self.crc_n.next = self.zero15.val();
+                self.crc_ok_n.next = true;
+                self.rxs_id.d.next = self.zero29.val();
+                self.rxs_data.d.next = self.zero64.val();
+                self.rxs_rtr.d.next = false;
+                self.rxs_dlc.d.next = bit_cast::<4, 1>(self.bus_bit.val());
+            }
+
+            // Any error: error flag from the next bit on (12.1.4.2 counter rules).
+            if self.error.val() {
+                self.field_n.next = Field::ErrorFlag;
+                self.bit_cnt_n.next = self.n7_0.val();
+                self.stuff_en_n.next = false;
+                self.flag_passive_n.next = self.fc.error_passive.val();
+                if self.is_tx_n.val() {
+                    if !self.tec_exempt.val()
+                        && !(self.ack_error.val() && self.fc.error_passive.val())
+                    {
+                        self.fc.tec_add8.next = true;
+                        if self.fc.tec.val() >= self.n8_248.val() {
+                            self.field_n.next = Field::BusOff;
+                            self.recovery_cnt.d.next = self.n7_0.val();
+                        }
+                    }
+                } else {
+                    self.fc.rec_add1.next = true;
+                }
+            }
+            self.field_q.d.next = self.field_n.val();
+            self.bit_cnt.d.next = self.bit_cnt_n.val();
+            self.is_tx.d.next = self.is_tx_n.val();
+            self.stuff_cnt.d.next = self.stuff_cnt_n.val();
+            self.stuff_last.d.next = self.stuff_last_n.val();
+            self.stuff_en.d.next = self.stuff_en_n.val();
+            self.crc.d.next = self.crc_n.val();
+            self.crc_ok.d.next = self.crc_ok_n.val();
+            self.flag_passive.d.next = self.flag_passive_n.val();
+        }
+
+        // ---- the bit this node sends next (contract §4.2)
+        self.id_b_idx.next = self.n5_17.val() - self.bit_cnt_n.val().get_bits::<5>(0);
+        if self.txf_ide.q.val() {
+            self.id_a_idx.next = self.n5_28.val() - self.bit_cnt_n.val().get_bits::<5>(0);
+        } else {
+            self.id_a_idx.next = self.n5_10.val() - self.bit_cnt_n.val().get_bits::<5>(0);
+        }
+        self.dlc_idx.next = self.n2_3.val() - self.bit_cnt_n.val().get_bits::<2>(0);
+        self.data_idx.next = self.n6_63.val() - self.bit_cnt_n.val().get_bits::<6>(0);
+        self.crc_idx.next = self.n4_14.val() - self.bit_cnt_n.val().get_bits::<4>(0);
+        self.tx_bit_n.next = true;
+        match self.field_n.val() {
+            Field::ErrorFlag => {
+                self.tx_bit_n.next = self.flag_passive_n.val();
+            }
+            Field::OverloadFlag => {
+                self.tx_bit_n.next = false;
+            }
+            Field::AckSlot => {
+                // 10.4.2.7: receivers that found the CRC correct send ACK.
+                self.tx_bit_n.next = self.is_tx_n.val() || !self.crc_ok_n.val();
+            }
+            _ => {
+                if self.is_tx_n.val() {
+                    if self.stuff_en_n.val() && (self.stuff_cnt_n.val() == self.n3_5.val()) {
+                        self.tx_bit_n.next = !self.stuff_last_n.val();
+                    } else {
+                        match self.field_n.val() {
+                            Field::IdA => {
+                                self.tx_bit_n.next =
+                                    self.txf_id.q.val().get_bit(self.id_a_idx.val().index());
+                            }
+                            Field::SrrRtr => {
+                                self.tx_bit_n.next = self.txf_ide.q.val() || self.txf_rtr.q.val();
+                            }
+                            Field::Ide => {
+                                self.tx_bit_n.next = self.txf_ide.q.val();
+                            }
+                            Field::IdB => {
+                                self.tx_bit_n.next =
+                                    self.txf_id.q.val().get_bit(self.id_b_idx.val().index());
+                            }
+                            Field::RtrExt => {
+                                self.tx_bit_n.next = self.txf_rtr.q.val();
+                            }
+                            Field::R1 => {
+                                self.tx_bit_n.next = false;
+                            }
+                            Field::R0 => {
+                                self.tx_bit_n.next = false;
+                            }
+                            Field::Dlc => {
+                                self.tx_bit_n.next =
+                                    self.txf_dlc.q.val().get_bit(self.dlc_idx.val().index());
+                            }
+                            Field::Data => {
+                                self.tx_bit_n.next =
+                                    self.txf_data.q.val().get_bit(self.data_idx.val().index());
+                            }
+                            Field::Crc => {
+                                self.tx_bit_n.next =
+                                    self.crc_n.val().get_bit(self.crc_idx.val().index());
+                            }
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
+
+        if self.sample.val() {
+            self.tx_bit.d.next = self.tx_bit_n.val();
+        }
+
+        // ---- the tx pin changes only at the start of a bit
+        if self.bit_start.val() {
+            if self.hard_sync.val()
+                && ((self.field_q.q.val() == Field::Idle)
+                    || (self.field_q.q.val() == Field::Intermission))
+            {
+                self.tx_q.d.next = !self.start_ok.val();
+            } else if self.hard_sync.val() && (self.field_q.q.val() == Field::Suspend) {
+                self.tx_q.d.next = true;
+            } else if self.field_q.q.val() == Field::Idle {
+                self.tx_q.d.next = !self.start_ok.val();
+            } else {
+                self.tx_q.d.next = self.tx_bit.q.val();
+            }
+        }
+
+        // ---- host transmit request: latched while nothing is pending
+        if self.tx_req.val() && !self.pending.q.val() {
+            self.pending.d.next = true;
+            self.txf_id.d.next = self.tx_id.val();
+            self.txf_ide.d.next = self.tx_ide.val();
+            self.txf_rtr.d.next = self.tx_rtr.val();
+            self.txf_dlc.d.next = self.tx_dlc.val();
+            self.txf_data.d.next = self.tx_data.val();
+        }
+
+        // ---- hard synchronisation is allowed between frames (11.3.2.1)
+        match self.field_q.q.val() {
+            Field::Integrating => {
+                self.hard_sync_enable.next = true;
+            }
+            Field::Idle => {
+                self.hard_sync_enable.next = true;
+            }
+            Field::Suspend => {
+                self.hard_sync_enable.next = true;
+            }
+            Field::BusOff => {
+                self.hard_sync_enable.next = true;
+            }
+            Field::Intermission => {
+                self.hard_sync_enable.next = self.bit_cnt.q.val() == self.n7_2.val();
+            }
+            _ => {
+                self.hard_sync_enable.next = false;
+            }
+        }
+
+        // ---- outputs
+        self.tx.next = self.tx_q.q.val();
+        self.tx_pending.next = self.pending.q.val();
+        self.tx_done.next = self.tx_done_q.q.val();
+        self.arb_lost.next = self.arb_lost_q.q.val();
+        self.rx_valid.next = self.rx_valid_q.q.val();
+        self.rx_id.next = self.rx_id_q.q.val();
+        self.rx_ide.next = self.rx_ide_q.q.val();
+        self.rx_rtr.next = self.rx_rtr_q.q.val();
+        self.rx_dlc.next = self.rx_dlc_q.q.val();
+        self.rx_data.next = self.rx_data_q.q.val();
+        self.field.next = self.field_q.q.val();
+        self.tec.next = self.fc.tec.val();
+        self.rec.next = self.fc.rec.val();
+        self.err_state.next = self.fc.err_state.val();
+
+        // ---- synchronous reset
+        if self.rst.val() {
+            self.field_q.d.next = Field::Integrating;
+            self.bit_cnt.d.next = self.n7_0.val();
+            self.is_tx.d.next = false;
+            self.pending.d.next = false;
+            self.stuff_cnt.d.next = self.n3_1.val();
+            self.stuff_last.d.next = false;
+            self.stuff_en.d.next = false;
+            self.crc.d.next = self.zero15.val();
+            self.crc_ok.d.next = true;
+            self.flag_passive.d.next = false;
+            self.recovery_cnt.d.next = self.n7_0.val();
+            self.tx_q.d.next = true;
+            self.tx_bit.d.next = true;
+            self.rx_valid_q.d.next = false;
+            self.tx_done_q.d.next = false;
+            self.arb_lost_q.d.next = false;
+            self.rx_id_q.d.next = self.zero29.val();
+            self.rx_ide_q.d.next = false;
+            self.rx_rtr_q.d.next = false;
+            self.rx_dlc_q.d.next = bit_cast::<4, 1>(self.bus_bit.val()) & self.rxs_dlc.q.val();
+            self.rx_data_q.d.next = self.zero64.val();
+        }
+    }
+}
+
+#[test]
+fn protocol_controller_synthesizes() {
+    let mut uut = ProtocolController::default();
+    uut.connect_all();
+    yosys_validate("protocol_controller", &generate_verilog(&uut)).unwrap();
+}

@@ -1410,9 +1410,6 @@ module can_channel__bsp__arb_lost_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1429,9 +1426,6 @@ module can_channel__bsp__bit_cnt(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 7'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1448,9 +1442,6 @@ module can_channel__bsp__crc(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 15'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1467,9 +1458,6 @@ module can_channel__bsp__crc_ok(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1514,9 +1502,6 @@ module can_channel__bsp__data_len(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 7'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1642,9 +1627,6 @@ module can_channel__bsp__fc__rec_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1661,9 +1643,6 @@ module can_channel__bsp__fc__tec_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1705,9 +1684,6 @@ module can_channel__bsp__field_q(d,q,clock);
     localparam Field__BusOff = 22;
     
     // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1724,9 +1700,6 @@ module can_channel__bsp__flag_passive(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1743,9 +1716,6 @@ module can_channel__bsp__is_tx(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1762,9 +1732,6 @@ module can_channel__bsp__pending(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1781,9 +1748,6 @@ module can_channel__bsp__recovery_cnt(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 7'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1800,9 +1764,6 @@ module can_channel__bsp__rx_data_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1819,9 +1780,6 @@ module can_channel__bsp__rx_dlc_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1838,9 +1796,6 @@ module can_channel__bsp__rx_id_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 29'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1857,9 +1812,6 @@ module can_channel__bsp__rx_ide_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1876,9 +1828,6 @@ module can_channel__bsp__rx_rtr_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1895,9 +1844,6 @@ module can_channel__bsp__rx_valid_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1914,9 +1860,6 @@ module can_channel__bsp__rxs_data(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1933,9 +1876,6 @@ module can_channel__bsp__rxs_dlc(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1952,9 +1892,6 @@ module can_channel__bsp__rxs_id(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 29'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1971,9 +1908,6 @@ module can_channel__bsp__rxs_ide(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -1990,9 +1924,6 @@ module can_channel__bsp__rxs_rtr(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2009,9 +1940,6 @@ module can_channel__bsp__rxs_srr_rtr(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2028,9 +1956,6 @@ module can_channel__bsp__stuff_cnt(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2047,9 +1972,6 @@ module can_channel__bsp__stuff_en(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2066,9 +1988,6 @@ module can_channel__bsp__stuff_last(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2085,9 +2004,6 @@ module can_channel__bsp__tx_bit(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2104,9 +2020,6 @@ module can_channel__bsp__tx_done_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2123,9 +2036,6 @@ module can_channel__bsp__tx_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2142,9 +2052,6 @@ module can_channel__bsp__txf_data(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2161,9 +2068,6 @@ module can_channel__bsp__txf_dlc(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2180,9 +2084,6 @@ module can_channel__bsp__txf_id(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 29'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2199,9 +2100,6 @@ module can_channel__bsp__txf_ide(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2218,9 +2116,6 @@ module can_channel__bsp__txf_rtr(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2534,9 +2429,6 @@ module can_channel__btl__brp_cnt(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2553,9 +2445,6 @@ module can_channel__btl__last_sample_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2572,9 +2461,6 @@ module can_channel__btl__quantum(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2591,9 +2477,6 @@ module can_channel__btl__rx_prev(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2610,9 +2493,6 @@ module can_channel__btl__rx_prev2(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2629,9 +2509,6 @@ module can_channel__btl__sample_point_q(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2653,9 +2530,6 @@ module can_channel__btl__seg(d,q,clock);
     localparam Segment__Tseg2 = 2;
     
     // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2672,9 +2546,6 @@ module can_channel__btl__synced(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2691,9 +2562,6 @@ module can_channel__btl__tseg1_len(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2710,9 +2578,6 @@ module can_channel__btl__tseg2_len(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2775,9 +2640,6 @@ module can_channel__rx_sync__rx_meta(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;
@@ -2794,9 +2656,6 @@ module can_channel__rx_sync__rx_sync(d,q,clock);
     input wire  clock;
     
     // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
     
     always @(posedge clock) begin
        q <= d;

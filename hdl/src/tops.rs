@@ -24,9 +24,34 @@ pub fn finish_verilog(name: &str, raw: &str) -> String {
     // Instantiations reference the module names too: `top$bsp$fc name(`.
     body = body.replace("top$", &format!("{name}__"));
     body = body.replace('$', "__");
+    body = strip_initial_blocks(&body);
     text.push_str(body.trim_end());
     text.push('\n');
     text
+}
+
+/// Removes rust-hdl's `initial begin ... end` blocks (power-up values of each
+/// flip-flop): the design never relies on them, every register that matters is
+/// reset by `rst`, and they are not portable to every FPGA flow.
+fn strip_initial_blocks(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut skipping = false;
+    for line in text.lines() {
+        let t = line.trim();
+        if !skipping && t == "initial begin" {
+            skipping = true;
+            continue;
+        }
+        if skipping {
+            if t == "end" {
+                skipping = false;
+            }
+            continue;
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
 }
 
 /// The Verilog of one top by name, or `None` for an unknown name.

@@ -267,6 +267,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     localparam  n6_63 = 6'b111111;
     localparam  n4_14 = 4'he;
     localparam  n8_248 = 9'b11111000;
+    localparam  zero4 = 4'h0;
     localparam  zero15 = 15'b0;
     localparam  zero29 = 29'h0;
     localparam  zero64 = 64'h0;
@@ -1199,7 +1200,6 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 rxs_id__d = zero29;
                 rxs_data__d = zero64;
                 rxs_rtr__d = 1'b0;
-                rxs_dlc__d = ((bus_bit) & 4'hf);
             end
             if (error) begin
                 field_n = Field__ErrorFlag;
@@ -1394,7 +1394,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             rx_id_q__d = zero29;
             rx_ide_q__d = 1'b0;
             rx_rtr_q__d = 1'b0;
-            rx_dlc_q__d = ((bus_bit) & 4'hf) & rxs_dlc__q;
+            rx_dlc_q__d = zero4;
             rx_data_q__d = zero64;
         end
     end

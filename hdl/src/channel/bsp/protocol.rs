@@ -151,6 +151,7 @@ pub struct ProtocolController {
     n6_63: Constant<Bits<6>>,
     n4_14: Constant<Bits<4>>,
     n8_248: Constant<Bits<9>>,
+    zero4: Constant<Bits<4>>,
     zero15: Constant<Bits<15>>,
     zero29: Constant<Bits<29>>,
     zero64: Constant<Bits<64>>,
@@ -274,6 +275,7 @@ impl Default for ProtocolController {
             n6_63: Constant::new(63.into()),
             n4_14: Constant::new(14.into()),
             n8_248: Constant::new(248.into()),
+            zero4: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero29: Constant::new(0.into()),
             zero64: Constant::new(0.into()),
@@ -751,7 +753,6 @@ impl Logic for ProtocolController {
                 self.rxs_id.d.next = self.zero29.val();
                 self.rxs_data.d.next = self.zero64.val();
                 self.rxs_rtr.d.next = false;
-                self.rxs_dlc.d.next = bit_cast::<4, 1>(self.bus_bit.val());
             }
 
             // Any error: error flag from the next bit on (12.1.4.2 counter rules).
@@ -944,7 +945,7 @@ impl Logic for ProtocolController {
             self.rx_id_q.d.next = self.zero29.val();
             self.rx_ide_q.d.next = false;
             self.rx_rtr_q.d.next = false;
-            self.rx_dlc_q.d.next = bit_cast::<4, 1>(self.bus_bit.val()) & self.rxs_dlc.q.val();
+            self.rx_dlc_q.d.next = self.zero4.val();
             self.rx_data_q.d.next = self.zero64.val();
         }
     }

@@ -1,0 +1,140 @@
+//! Fault confinement: the transmit and receive error counters and the node's error
+//! state (ISO 11898-1:2015 clause 12, fault confinement; the counting rules are
+//! 12.1.4.2 rules a to l).
+//!
+//! This file holds the counters and the state transitions (rules g to l); the
+//! places where rules a to f apply live with the error frames in `error.rs`.
+//! Open points decided here (also listed in timing_contract.md §4.5):
+//! - REC saturates at 255 (the `rec` probe is 8 bits wide); TEC stops moving once
+//!   the node is bus-off (at most 255 + 8 = 263).
+//! - Rule h, REC > 127: the standard allows any value 119..=127; the model sets 127.
+//! - The error state follows the counters at the same clock edge as the change.
+
+/// `err_state` value of an error-active node.
+pub const ERROR_ACTIVE: u8 = 0;
+/// `err_state` value of an error-passive node.
+pub const ERROR_PASSIVE: u8 = 1;
+/// `err_state` value of a bus-off node.
+pub const BUS_OFF: u8 = 2;
+
+/// Error counters and error state of one node.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Counters {
+    tec: u16,
+    rec: u8,
+    state: u8,
+}
+
+impl Default for Counters {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Counters {
+    /// Reset: both counters 0, error active.
+    pub fn new() -> Self {
+        Counters {
+            tec: 0,
+            rec: 0,
+            state: ERROR_ACTIVE,
+        }
+    }
+
+    /// Transmit error counter.
+    #[inline]
+    pub fn tec(&self) -> u16 {
+        self.tec
+    }
+
+    /// Receive error counter.
+    #[inline]
+    pub fn rec(&self) -> u8 {
+        self.rec
+    }
+
+    /// Error state (`ERROR_ACTIVE`, `ERROR_PASSIVE` or `BUS_OFF`).
+    #[inline]
+    pub fn state(&self) -> u8 {
+        self.state
+    }
+
+    /// Error active: sends active error flags.
+    #[inline]
+    pub fn is_active(&self) -> bool {
+        self.state == ERROR_ACTIVE
+    }
+
+    /// Error passive.
+    #[inline]
+    pub fn is_passive(&self) -> bool {
+        self.state == ERROR_PASSIVE
+    }
+
+    /// Bus-off.
+    #[inline]
+    pub fn is_bus_off(&self) -> bool {
+        self.state == BUS_OFF
+    }
+
+    /// Rules c, d, f (transmitter): TEC + `n`. No effect while bus-off.
+    pub fn tec_add(&mut self, n: u16) {
+        if self.is_bus_off() {
+            return;
+        }
+        self.tec += n;
+        self.update();
+    }
+
+    /// Rules a, b, e, f (receiver): REC + `n`, saturating at 255. No effect while bus-off.
+    pub fn rec_add(&mut self, n: u8) {
+        if self.is_bus_off() {
+            return;
+        }
+        self.rec = self.rec.saturating_add(n);
+        self.update();
+    }
+
+    /// ISO 11898-1 12.1.4.2 rule g: successful transmission, TEC - 1 unless 0.
+    pub fn tx_success(&mut self) {
+        if self.tec > 0 {
+            self.tec -= 1;
+        }
+        self.update();
+    }
+
+    /// ISO 11898-1 12.1.4.2 rule h: successful reception (no error up to the ACK
+    /// slot and the ACK bit sent successfully): REC - 1 when 1..=127; when above 127
+    /// a value in 119..=127 (the model takes 127).
+    pub fn rx_success(&mut self) {
+        if self.rec > 127 {
+            self.rec = 127;
+        } else if self.rec > 0 {
+            self.rec -= 1;
+        }
+        self.update();
+    }
+
+    /// ISO 11898-1 12.1.4.2 rule l: bus-off recovery after 128 occurrences of 11
+    /// consecutive recessive bits: both counters 0, error active.
+    pub fn recover(&mut self) {
+        self.tec = 0;
+        self.rec = 0;
+        self.state = ERROR_ACTIVE;
+    }
+
+    /// Rules i, j, k: error passive at TEC >= 128 or REC >= 128, bus-off at TEC > 255,
+    /// error active again when both are <= 127. Bus-off is left only by `recover`.
+    fn update(&mut self) {
+        if self.is_bus_off() {
+            return;
+        }
+        self.state = if self.tec > 255 {
+            BUS_OFF
+        } else if self.tec >= 128 || self.rec >= 128 {
+            ERROR_PASSIVE
+        } else {
+            ERROR_ACTIVE
+        };
+    }
+}

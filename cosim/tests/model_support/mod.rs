@@ -1,0 +1,309 @@
+//! Shared helpers for the reference model tests: an independent frame encoder
+//! (fields, CRC by polynomial long division, stuffing), a wired-AND bus of models,
+//! and a "lower tester" that drives exact bit sequences into one model.
+//!
+//! Nothing here uses the model's own encoder or CRC: expected values come from the
+//! standard's definitions, computed a second way.
+#![allow(dead_code)]
+
+use drcc_cosim::model::ChannelModel;
+use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, Frame};
+
+/// Field codes, copied from the table of the timing contract §4.1.
+pub mod code {
+    pub const INTEGRATING: u8 = 0;
+    pub const IDLE: u8 = 1;
+    pub const ID_A: u8 = 2;
+    pub const SRR_RTR: u8 = 3;
+    pub const IDE: u8 = 4;
+    pub const ID_B: u8 = 5;
+    pub const RTR_EXT: u8 = 6;
+    pub const R1: u8 = 7;
+    pub const R0: u8 = 8;
+    pub const DLC: u8 = 9;
+    pub const DATA: u8 = 10;
+    pub const CRC: u8 = 11;
+    pub const CRC_DELIM: u8 = 12;
+    pub const ACK_SLOT: u8 = 13;
+    pub const ACK_DELIM: u8 = 14;
+    pub const EOF: u8 = 15;
+    pub const INTERMISSION: u8 = 16;
+    pub const SUSPEND: u8 = 17;
+    pub const ERROR_FLAG: u8 = 18;
+    pub const ERROR_DELIM: u8 = 19;
+    pub const OVERLOAD_FLAG: u8 = 20;
+    pub const OVERLOAD_DELIM: u8 = 21;
+    pub const BUS_OFF: u8 = 22;
+}
+
+/// The timing of the brief: 8 tq, sample point after 6 tq, SJW 1.
+pub fn timing(brp: u8) -> BitTiming {
+    BitTiming {
+        brp,
+        tseg1: 5,
+        tseg2: 2,
+        sjw: 1,
+        triple_sampling: false,
+    }
+}
+
+/// One bit on the bus as the independent encoder sees it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Bit {
+    pub value: bool,
+    /// Field code (§4.1) of the bit; a stuff bit carries the field of the bit after it.
+    pub field: u8,
+    pub stuff: bool,
+}
+
+/// CRC-15 by polynomial long division: remainder of M(x) * x^15 modulo
+/// x^15 + x^14 + x^10 + x^8 + x^7 + x^4 + x^3 + 1.
+pub fn crc15_division(message: &[bool]) -> u16 {
+    // Generator coefficients from x^15 down to x^0.
+    let g: [bool; 16] = {
+        let mut g = [false; 16];
+        for e in [15, 14, 10, 8, 7, 4, 3, 0] {
+            g[15 - e] = true;
+        }
+        g
+    };
+    let mut work: Vec<bool> = message.to_vec();
+    work.extend(std::iter::repeat_n(false, 15));
+    for i in 0..message.len() {
+        if work[i] {
+            for (j, &gj) in g.iter().enumerate() {
+                work[i + j] ^= gj;
+            }
+        }
+    }
+    work[message.len()..]
+        .iter()
+        .fold(0u16, |acc, &b| (acc << 1) | b as u16)
+}
+
+fn push_bits(out: &mut Vec<(bool, u8)>, value: u64, n: u32, field: u8) {
+    for i in (0..n).rev() {
+        out.push(((value >> i) & 1 == 1, field));
+    }
+}
+
+/// Unstuffed bits from SOF to the last CRC bit, each with its field code.
+/// `corrupt_crc` flips the given CRC bit (0 = first CRC bit sent).
+pub fn unstuffed(f: &Frame, corrupt_crc: Option<usize>) -> Vec<(bool, u8)> {
+    let mut v = Vec::new();
+    v.push((false, code::IDLE)); // SOF (labelled by the state it leaves)
+    if f.ide {
+        let id = (f.id & 0x1FFF_FFFF) as u64;
+        push_bits(&mut v, id >> 18, 11, code::ID_A);
+        v.push((true, code::SRR_RTR));
+        v.push((true, code::IDE));
+        push_bits(&mut v, id & 0x3FFFF, 18, code::ID_B);
+        v.push((f.rtr, code::RTR_EXT));
+        v.push((false, code::R1));
+        v.push((false, code::R0));
+    } else {
+        push_bits(&mut v, (f.id & 0x7FF) as u64, 11, code::ID_A);
+        v.push((f.rtr, code::SRR_RTR));
+        v.push((false, code::IDE));
+        v.push((false, code::R0));
+    }
+    let dlc = f.dlc & 0xF;
+    push_bits(&mut v, dlc as u64, 4, code::DLC);
+    if !f.rtr {
+        for &byte in &f.data[..(dlc as usize).min(8)] {
+            push_bits(&mut v, byte as u64, 8, code::DATA);
+        }
+    }
+    let message: Vec<bool> = v.iter().map(|&(b, _)| b).collect();
+    let mut crc = crc15_division(&message);
+    if let Some(k) = corrupt_crc {
+        crc ^= 1 << (14 - k);
+    }
+    push_bits(&mut v, crc as u64, 15, code::CRC);
+    v
+}
+
+/// Stuffs SOF..CRC (a stuff bit after 5 equal bits, stuff bits included in the
+/// count, possibly after the last CRC bit) and appends CRC delimiter, ACK slot
+/// (`ack` = value on the bus), ACK delimiter and 7 EOF bits.
+pub fn frame_bits(f: &Frame, ack: bool, corrupt_crc: Option<usize>) -> Vec<Bit> {
+    let raw = unstuffed(f, corrupt_crc);
+    let mut out: Vec<Bit> = Vec::new();
+    let mut run = 0;
+    let mut last = true;
+    for (i, &(b, field)) in raw.iter().enumerate() {
+        out.push(Bit {
+            value: b,
+            field,
+            stuff: false,
+        });
+        if b == last {
+            run += 1;
+        } else {
+            last = b;
+            run = 1;
+        }
+        if run == 5 {
+            let next_field = raw.get(i + 1).map(|x| x.1).unwrap_or(code::CRC_DELIM);
+            out.push(Bit {
+                value: !b,
+                field: next_field,
+                stuff: true,
+            });
+            last = !b;
+            run = 1;
+        }
+    }
+    let fixed = [
+        (true, code::CRC_DELIM),
+        (ack, code::ACK_SLOT),
+        (true, code::ACK_DELIM),
+    ];
+    for (value, field) in fixed {
+        out.push(Bit {
+            value,
+            field,
+            stuff: false,
+        });
+    }
+    for _ in 0..7 {
+        out.push(Bit {
+            value: true,
+            field: code::EOF,
+            stuff: false,
+        });
+    }
+    out
+}
+
+/// The field probe expected right after sampling `bits[k]`: the field of the next
+/// non-stuff bit (INTERMISSION after the last EOF bit).
+pub fn field_after(bits: &[Bit], k: usize) -> u8 {
+    bits[k + 1..]
+        .iter()
+        .find(|b| !b.stuff)
+        .map(|b| b.field)
+        .unwrap_or(code::INTERMISSION)
+}
+
+/// Models on a wired-AND bus: every node's `rx` in cycle n is the AND of every
+/// connected node's `tx` from cycle n-1 (and of a forced dominant level).
+pub struct Bus {
+    pub nodes: Vec<ChannelModel>,
+    pub tx: Vec<bool>,
+    pub connected: Vec<bool>,
+    pub timing: BitTiming,
+    pub force_dominant: bool,
+    pub clock: u64,
+}
+
+impl Bus {
+    pub fn new(n: usize, timing: BitTiming) -> Self {
+        Bus {
+            nodes: (0..n).map(|_| ChannelModel::new()).collect(),
+            tx: vec![true; n],
+            connected: vec![true; n],
+            timing,
+            force_dominant: false,
+            clock: 0,
+        }
+    }
+
+    /// The bus level the nodes see in the next step.
+    pub fn level(&self) -> bool {
+        !self.force_dominant && self.tx.iter().zip(&self.connected).all(|(&t, &c)| t || !c)
+    }
+
+    /// One clock; `req[i]` requests a transmission on node i.
+    pub fn step(&mut self, req: &[Option<Frame>]) -> Vec<ChannelOutputs> {
+        let rx = self.level();
+        let mut outs = Vec::with_capacity(self.nodes.len());
+        for (i, node) in self.nodes.iter_mut().enumerate() {
+            let r = req.get(i).copied().flatten();
+            let out = node.step(&ChannelInputs {
+                rst: false,
+                rx,
+                timing: self.timing,
+                tx_req: r.is_some(),
+                tx_frame: r.unwrap_or_default(),
+            });
+            self.tx[i] = out.tx;
+            outs.push(out);
+        }
+        self.clock += 1;
+        outs
+    }
+
+    /// Steps with no requests until every node is idle (bus integration done).
+    pub fn integrate(&mut self) {
+        for _ in 0..(20 * self.timing.clocks_per_bit()) {
+            self.step(&[]);
+        }
+    }
+}
+
+/// A lower tester: drives a bit sequence into one model, one bit every
+/// `clocks_per_bit` clocks, wired-AND with the model's own `tx`.
+pub struct Tester {
+    pub node: ChannelModel,
+    pub tx: bool,
+    pub timing: BitTiming,
+    /// Outputs at every sample point of the node, in order.
+    pub samples: Vec<ChannelOutputs>,
+    /// Every `rx_valid` pulse.
+    pub received: Vec<Frame>,
+    /// A transmission request applied at the next clock.
+    pub request: Option<Frame>,
+}
+
+impl Tester {
+    pub fn new(timing: BitTiming) -> Self {
+        Tester {
+            node: ChannelModel::new(),
+            tx: true,
+            timing,
+            samples: Vec::new(),
+            received: Vec::new(),
+            request: None,
+        }
+    }
+
+    /// Drives one bit value for one bit time.
+    pub fn drive(&mut self, value: bool) {
+        for _ in 0..self.timing.clocks_per_bit() {
+            let req = self.request.take();
+            let out = self.node.step(&ChannelInputs {
+                rst: false,
+                rx: value && self.tx,
+                timing: self.timing,
+                tx_req: req.is_some(),
+                tx_frame: req.unwrap_or_default(),
+            });
+            self.tx = out.tx;
+            if out.probes.sample_point {
+                self.samples.push(out);
+            }
+            if out.rx_valid {
+                self.received.push(out.rx_frame);
+            }
+        }
+    }
+
+    pub fn drive_all(&mut self, bits: impl IntoIterator<Item = bool>) {
+        for b in bits {
+            self.drive(b);
+        }
+    }
+
+    /// Drives `n` recessive bits.
+    pub fn idle(&mut self, n: usize) {
+        for _ in 0..n {
+            self.drive(true);
+        }
+    }
+
+    /// The outputs at the last sample point.
+    pub fn last(&self) -> ChannelOutputs {
+        *self.samples.last().expect("no sample point yet")
+    }
+}

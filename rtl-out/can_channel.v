@@ -260,13 +260,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     localparam  n7_127 = 7'b1111111;
     localparam  n3_1 = 3'b1;
     localparam  n3_5 = 3'b101;
+    localparam  n3_7 = 3'b111;
+    localparam  zero3 = 3'b0;
+    localparam  n9_120 = 9'b1111000;
+    localparam  n9_248 = 9'b11111000;
+    localparam  n8_120 = 8'h78;
+    localparam  n8_127 = 8'h7f;
     localparam  n5_10 = 5'b1010;
     localparam  n5_17 = 5'b10001;
     localparam  n5_28 = 5'b11100;
     localparam  n2_3 = 2'b11;
     localparam  n6_63 = 6'b111111;
     localparam  n4_14 = 4'he;
-    localparam  n8_248 = 9'b11111000;
     localparam  zero4 = 4'h0;
     localparam  zero15 = 15'b0;
     localparam  zero29 = 29'h0;
@@ -353,6 +358,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  tx_bit__d;
     wire  tx_bit__q;
     reg  tx_bit__clock;
+    reg  last_bit_arb__d;
+    wire  last_bit_arb__q;
+    reg  last_bit_arb__clock;
+    reg  [2:0] dom_cnt__d;
+    wire  [2:0] dom_cnt__q;
+    reg  dom_cnt__clock;
+    reg  delim_first__d;
+    wire  delim_first__q;
+    reg  delim_first__clock;
+    reg  ack_passive_pending__d;
+    wire  ack_passive_pending__q;
+    reg  ack_passive_pending__clock;
     reg  [28:0] txf_id__d;
     wire  [28:0] txf_id__q;
     reg  txf_id__clock;
@@ -437,6 +454,17 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  [3:0] dlc_n;
     reg  [6:0] data_bits;
     reg  error;
+    reg  flag_error;
+    reg  suspend_due;
+    reg  passive_after;
+    reg  ev_recovered;
+    reg  ev_rx_success;
+    reg  ev_tx_success;
+    reg  ev_rec_add8;
+    reg  ev_rec_add1;
+    reg  ev_tec_add8;
+    reg  bus_off_after;
+    reg  join_ok;
     reg  tec_exempt;
     reg  ack_error;
     reg  [4:0] id_a_idx;
@@ -532,6 +560,26 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .d(tx_bit__d),
         .q(tx_bit__q),
         .clock(tx_bit__clock)
+    );
+    can_channel__bsp__last_bit_arb last_bit_arb(
+        .d(last_bit_arb__d),
+        .q(last_bit_arb__q),
+        .clock(last_bit_arb__clock)
+    );
+    can_channel__bsp__dom_cnt dom_cnt(
+        .d(dom_cnt__d),
+        .q(dom_cnt__q),
+        .clock(dom_cnt__clock)
+    );
+    can_channel__bsp__delim_first delim_first(
+        .d(delim_first__d),
+        .q(delim_first__q),
+        .clock(delim_first__clock)
+    );
+    can_channel__bsp__ack_passive_pending ack_passive_pending(
+        .d(ack_passive_pending__d),
+        .q(ack_passive_pending__q),
+        .clock(ack_passive_pending__clock)
     );
     can_channel__bsp__txf_id txf_id(
         .d(txf_id__d),
@@ -649,6 +697,10 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         recovery_cnt__clock = clk;
         tx_q__clock = clk;
         tx_bit__clock = clk;
+        last_bit_arb__clock = clk;
+        dom_cnt__clock = clk;
+        delim_first__clock = clk;
+        ack_passive_pending__clock = clk;
         txf_id__clock = clk;
         txf_ide__clock = clk;
         txf_rtr__clock = clk;
@@ -682,6 +734,10 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         recovery_cnt__d = recovery_cnt__q;
         tx_q__d = tx_q__q;
         tx_bit__d = tx_bit__q;
+        last_bit_arb__d = last_bit_arb__q;
+        dom_cnt__d = dom_cnt__q;
+        delim_first__d = delim_first__q;
+        ack_passive_pending__d = ack_passive_pending__q;
         txf_id__d = txf_id__q;
         txf_ide__d = txf_ide__q;
         txf_rtr__d = txf_rtr__q;
@@ -722,14 +778,17 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         sof = 1'b0;
         sof_as_tx = 1'b0;
         error = 1'b0;
+        flag_error = 1'b0;
+        suspend_due = is_tx__q && fc__error_passive;
+        join_ok = start_ok && ~suspend_due;
         tec_exempt = 1'b0;
         ack_error = 1'b0;
-        fc__tec_add8 = 1'b0;
-        fc__rec_add1 = 1'b0;
-        fc__rec_add8 = 1'b0;
-        fc__tx_success = 1'b0;
-        fc__rx_success = 1'b0;
-        fc__recovered = 1'b0;
+        ev_tec_add8 = 1'b0;
+        ev_rec_add1 = 1'b0;
+        ev_rec_add8 = 1'b0;
+        ev_tx_success = 1'b0;
+        ev_rx_success = 1'b0;
+        ev_recovered = 1'b0;
         rx_valid_q__d = 1'b0;
         tx_done_q__d = 1'b0;
         arb_lost_q__d = 1'b0;
@@ -827,7 +886,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             if (is_stuff_bit) begin
                 if (sampled == stuff_last__q) begin
                     error = 1'b1;
-                    if (is_tx__q && in_arbitration && tx_q__q) begin
+                    if (is_tx__q && last_bit_arb__q && tx_q__q) begin
                         tec_exempt = 1'b1;
                     end
                 end
@@ -837,6 +896,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 end
             end
             else begin
+                last_bit_arb__d = in_arbitration;
                 if (stuff_en__q) begin
                     if (sampled == stuff_last__q) begin
                         stuff_cnt_n = stuff_cnt__q + n3_1;
@@ -904,7 +964,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                             if (~sampled) begin
                                 if (bit_cnt__q == n7_2) begin
                                     sof = 1'b1;
-                                    sof_as_tx = start_ok;
+                                    sof_as_tx = join_ok;
                                 end
                                 else begin
                                     field_n = Field__OverloadFlag;
@@ -912,12 +972,13 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                 end
                             end
                             else if (bit_cnt__q == n7_2) begin
-                                if (is_tx__q && fc__error_passive) begin
+                                if (suspend_due) begin
                                     field_n = Field__Suspend;
                                 end
                                 else begin
                                     field_n = Field__Idle;
                                 end
+                                is_tx_n = 1'b0;
                                 bit_cnt_n = n7_0;
                             end
                             else begin
@@ -1032,6 +1093,9 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                 error = 1'b1;
                                 ack_error = 1'b1;
                             end
+                            if (~is_tx__q && ~tx_q__q && ~sampled) begin
+                                ev_rx_success = 1'b1;
+                            end
                             field_n = Field__AckDelim;
                         end
                     Field__AckDelim:
@@ -1064,13 +1128,12 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                     rx_rtr_q__d = rxs_rtr__q;
                                     rx_dlc_q__d = rxs_dlc__q;
                                     rx_data_q__d = rxs_data__q;
-                                    fc__rx_success = 1'b1;
                                 end
                                 if (bit_cnt__q == n7_6) begin
                                     if (is_tx__q) begin
                                         tx_done_q__d = 1'b1;
                                         pending__d = 1'b0;
-                                        fc__tx_success = 1'b1;
+                                        ev_tx_success = 1'b1;
                                     end
                                     field_n = Field__Intermission;
                                     bit_cnt_n = n7_0;
@@ -1083,6 +1146,10 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                     Field__ErrorFlag:
                         begin
                             if (flag_passive__q) begin
+                                if (ack_passive_pending__q && ~sampled) begin
+                                    ev_tec_add8 = 1'b1;
+                                    ack_passive_pending__d = 1'b0;
+                                end
                                 if ((bit_cnt__q == n7_0) || (sampled != stuff_last__q)) begin
                                     bit_cnt_n = n7_1;
                                     stuff_last_n = sampled;
@@ -1090,14 +1157,22 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                 else if (bit_cnt__q == n7_5) begin
                                     field_n = Field__ErrorDelim;
                                     bit_cnt_n = n7_0;
+                                    delim_first__d = 1'b1;
+                                    dom_cnt__d = zero3;
+                                    ack_passive_pending__d = 1'b0;
                                 end
                                 else begin
                                     bit_cnt_n = bit_cnt_inc;
                                 end
                             end
+                            else if (sampled) begin
+                                flag_error = 1'b1;
+                            end
                             else if (bit_cnt__q == n7_5) begin
                                 field_n = Field__ErrorDelim;
                                 bit_cnt_n = n7_0;
+                                delim_first__d = 1'b1;
+                                dom_cnt__d = zero3;
                             end
                             else begin
                                 bit_cnt_n = bit_cnt_inc;
@@ -1105,9 +1180,14 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                         end
                     Field__OverloadFlag:
                         begin
-                            if (bit_cnt__q == n7_5) begin
+                            if (sampled) begin
+                                flag_error = 1'b1;
+                            end
+                            else if (bit_cnt__q == n7_5) begin
                                 field_n = Field__OverloadDelim;
                                 bit_cnt_n = n7_0;
+                                delim_first__d = 1'b1;
+                                dom_cnt__d = zero3;
                             end
                             else begin
                                 bit_cnt_n = bit_cnt_inc;
@@ -1116,8 +1196,23 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                     Field__ErrorDelim:
                         begin
                             if (bit_cnt__q == n7_0) begin
+                                delim_first__d = 1'b0;
                                 if (sampled) begin
                                     bit_cnt_n = n7_1;
+                                end
+                                else begin
+                                    if (delim_first__q && ~is_tx__q) begin
+                                        ev_rec_add8 = 1'b1;
+                                    end
+                                    dom_cnt__d = dom_cnt__q + n3_1;
+                                    if (dom_cnt__q == n3_7) begin
+                                        if (is_tx__q) begin
+                                            ev_tec_add8 = 1'b1;
+                                        end
+                                        else begin
+                                            ev_rec_add8 = 1'b1;
+                                        end
+                                    end
                                 end
                             end
                             else if (~sampled) begin
@@ -1140,8 +1235,20 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                     Field__OverloadDelim:
                         begin
                             if (bit_cnt__q == n7_0) begin
+                                delim_first__d = 1'b0;
                                 if (sampled) begin
                                     bit_cnt_n = n7_1;
+                                end
+                                else begin
+                                    dom_cnt__d = dom_cnt__q + n3_1;
+                                    if (dom_cnt__q == n3_7) begin
+                                        if (is_tx__q) begin
+                                            ev_tec_add8 = 1'b1;
+                                        end
+                                        else begin
+                                            ev_rec_add8 = 1'b1;
+                                        end
+                                    end
                                 end
                             end
                             else if (~sampled) begin
@@ -1168,7 +1275,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                     bit_cnt_n = n7_0;
                                     if (recovery_cnt__q == n7_127) begin
                                         field_n = Field__Idle;
-                                        fc__recovered = 1'b1;
+                                        ev_recovered = 1'b1;
                                         recovery_cnt__d = n7_0;
                                     end
                                     else begin
@@ -1202,22 +1309,38 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 rxs_rtr__d = 1'b0;
             end
             if (error) begin
-                field_n = Field__ErrorFlag;
-                bit_cnt_n = n7_0;
-                stuff_en_n = 1'b0;
-                flag_passive_n = fc__error_passive;
                 if (is_tx_n) begin
-                    if (~tec_exempt && ~(ack_error && fc__error_passive)) begin
-                        fc__tec_add8 = 1'b1;
-                        if (fc__tec >= n8_248) begin
-                            field_n = Field__BusOff;
-                            recovery_cnt__d = n7_0;
-                        end
+                    if (ack_error && fc__error_passive) begin
+                        ack_passive_pending__d = 1'b1;
+                    end
+                    else if (~tec_exempt) begin
+                        ev_tec_add8 = 1'b1;
                     end
                 end
                 else begin
-                    fc__rec_add1 = 1'b1;
+                    ev_rec_add1 = 1'b1;
                 end
+            end
+            if (flag_error) begin
+                if (is_tx__q) begin
+                    ev_tec_add8 = 1'b1;
+                end
+                else begin
+                    ev_rec_add8 = 1'b1;
+                end
+            end
+            passive_after = fc__error_passive || (ev_tec_add8 && (fc__tec >= n9_120)) || (ev_rec_add1 && (fc__rec >= n8_127)) || (ev_rec_add8 && (fc__rec >= n8_120));
+            bus_off_after = ev_tec_add8 && (fc__tec >= n9_248) && ~fc__bus_off;
+            if (error || flag_error) begin
+                field_n = Field__ErrorFlag;
+                bit_cnt_n = n7_0;
+                stuff_en_n = 1'b0;
+                flag_passive_n = passive_after;
+            end
+            if (bus_off_after) begin
+                field_n = Field__BusOff;
+                bit_cnt_n = n7_0;
+                recovery_cnt__d = n7_0;
             end
             field_q__d = field_n;
             bit_cnt__d = bit_cnt_n;
@@ -1229,6 +1352,12 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             crc_ok__d = crc_ok_n;
             flag_passive__d = flag_passive_n;
         end
+        fc__tec_add8 = ev_tec_add8;
+        fc__rec_add1 = ev_rec_add1;
+        fc__rec_add8 = ev_rec_add8;
+        fc__tx_success = ev_tx_success;
+        fc__rx_success = ev_rx_success;
+        fc__recovered = ev_recovered;
         id_b_idx = n5_17 - bit_cnt_n[(32'h0)+:(5)];
         if (txf_ide__q) begin
             id_a_idx = n5_28 - bit_cnt_n[(32'h0)+:(5)];
@@ -1313,8 +1442,11 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             tx_bit__d = tx_bit_n;
         end
         if (bit_start) begin
-            if (hard_sync && ((field_q__q == Field__Idle) || (field_q__q == Field__Intermission))) begin
+            if (hard_sync && (field_q__q == Field__Idle)) begin
                 tx_q__d = ~start_ok;
+            end
+            else if (hard_sync && (field_q__q == Field__Intermission)) begin
+                tx_q__d = ~join_ok;
             end
             else if (hard_sync && (field_q__q == Field__Suspend)) begin
                 tx_q__d = 1'b1;
@@ -1388,6 +1520,10 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             recovery_cnt__d = n7_0;
             tx_q__d = 1'b1;
             tx_bit__d = 1'b1;
+            last_bit_arb__d = 1'b0;
+            dom_cnt__d = zero3;
+            delim_first__d = 1'b0;
+            ack_passive_pending__d = 1'b0;
             rx_valid_q__d = 1'b0;
             tx_done_q__d = 1'b0;
             arb_lost_q__d = 1'b0;
@@ -1400,6 +1536,22 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     end
     
 endmodule // can_channel__bsp
+
+
+module can_channel__bsp__ack_passive_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__ack_passive_pending
 
 
 module can_channel__bsp__arb_lost_q(d,q,clock);
@@ -1510,6 +1662,38 @@ module can_channel__bsp__data_len(d,q,clock);
 endmodule // can_channel__bsp__data_len
 
 
+module can_channel__bsp__delim_first(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__delim_first
+
+
+module can_channel__bsp__dom_cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__dom_cnt
+
+
 module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,tec,rec,err_state,error_passive,bus_off);
     
     // Module arguments
@@ -1570,10 +1754,12 @@ module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_suc
         rec_q__clock = clk;
         tec_q__d = tec_q__q;
         rec_q__d = rec_q__q;
-        if (tec_add8) begin
+        bus_off = tec_q__q > busoff9;
+        error_passive = (tec_q__q >= limit9) || (rec_q__q >= limit8);
+        if (tec_add8 && (tec_q__q <= busoff9)) begin
             tec_q__d = tec_q__q + eight9;
         end
-        else if (tx_success && (tec_q__q != zero9)) begin
+        else if (tx_success && (tec_q__q <= busoff9) && (tec_q__q != zero9)) begin
             tec_q__d = tec_q__q - one9;
         end
         if (rec_add8) begin
@@ -1603,8 +1789,6 @@ module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_suc
         end
         tec = tec_q__q;
         rec = rec_q__q;
-        bus_off = tec_q__q > busoff9;
-        error_passive = (tec_q__q >= limit9) || (rec_q__q >= limit8);
         if (bus_off) begin
             err_state = state_bus_off;
         end
@@ -1722,6 +1906,22 @@ module can_channel__bsp__is_tx(d,q,clock);
     end
           
 endmodule // can_channel__bsp__is_tx
+
+
+module can_channel__bsp__last_bit_arb(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__last_bit_arb
 
 
 module can_channel__bsp__pending(d,q,clock);

@@ -3,11 +3,13 @@
 //!
 //! The protocol controller decides which rule applies and raises one event per
 //! SAMPLE edge; this block applies it:
-//! - rule b/d/e (+8 to REC) -> `rec_add8`; rule a (+1 to REC) -> `rec_add1`;
-//! - rules c/d/e/f (+8 to TEC) -> `tec_add8`;
-//! - rule h (successful transmission, TEC -1) -> `tx_success`;
-//! - rule i (successful reception: REC -1, or from above 127 back to 127, the top
-//!   of the 119..127 range the standard allows) -> `rx_success`;
+//! - rules b, d, e, f for a receiver (+8 to REC) -> `rec_add8`;
+//! - rule a (+1 to REC) -> `rec_add1`;
+//! - rules c, d, e, f for a transmitter (+8 to TEC) -> `tec_add8`;
+//! - rule g (successful transmission, TEC -1) -> `tx_success`;
+//! - rule h (successful reception, counted at the ACK slot: REC -1, or from above
+//!   127 back to 127, the top of the 119..127 range the standard allows)
+//!   -> `rx_success`;
 //! - bus-off recovery (128 x 11 recessive bits) -> `recovered` clears both.
 //! Error passive at TEC >= 128 or REC >= 128; bus-off at TEC > 255. REC
 //! saturates at 255 instead of wrapping.
@@ -94,9 +96,17 @@ impl Logic for FaultConfinement {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, tec_q, rec_q);
-        if self.tec_add8.val() {
+        // State first: the counter updates below depend on it.
+        self.bus_off.next = self.tec_q.q.val() > self.busoff9.val();
+        self.error_passive.next =
+            (self.tec_q.q.val() >= self.limit9.val()) || (self.rec_q.q.val() >= self.limit8.val());
+        // TEC is frozen while bus-off (12.1.4.4: only recovery clears it).
+        if self.tec_add8.val() && (self.tec_q.q.val() <= self.busoff9.val()) {
             self.tec_q.d.next = self.tec_q.q.val() + self.eight9.val();
-        } else if self.tx_success.val() && (self.tec_q.q.val() != self.zero9.val()) {
+        } else if self.tx_success.val()
+            && (self.tec_q.q.val() <= self.busoff9.val())
+            && (self.tec_q.q.val() != self.zero9.val())
+        {
             self.tec_q.d.next = self.tec_q.q.val() - self.one9.val();
         }
         if self.rec_add8.val() {
@@ -122,9 +132,6 @@ impl Logic for FaultConfinement {
         }
         self.tec.next = self.tec_q.q.val();
         self.rec.next = self.rec_q.q.val();
-        self.bus_off.next = self.tec_q.q.val() > self.busoff9.val();
-        self.error_passive.next =
-            (self.tec_q.q.val() >= self.limit9.val()) || (self.rec_q.q.val() >= self.limit8.val());
         if self.bus_off.val() {
             self.err_state.next = self.state_bus_off.val();
         } else if self.error_passive.val() {

@@ -8,8 +8,10 @@
 //! State changes only at the sample point (`sample`); the `tx` pin is loaded only
 //! at `bit_start`. Decisions where the standard leaves room (written in the
 //! timing contract too):
-//! - The type of error flag (active or passive) is the error state at the moment
-//!   the error is detected, before that error's counter increment.
+//! - The type of error flag (active or passive) is the error state after the
+//!   counters have been updated for the error that starts it (contract §4.5).
+//! - The counting rules follow contract §4.5 rule by rule (rule letters of
+//!   ISO 11898-1 12.1.4.2); REC is decremented at the ACK slot (rule h).
 //! - A transmitter's frame is latched by a one-clock `tx_req` and stays pending
 //!   through lost arbitration and errors until sent (automatic retransmission).
 
@@ -71,6 +73,10 @@ pub struct ProtocolController {
     recovery_cnt: DFF<Bits<7>>,
     tx_q: DFF<Bit>,
     tx_bit: DFF<Bit>,
+    last_bit_arb: DFF<Bit>,
+    dom_cnt: DFF<Bits<3>>,
+    delim_first: DFF<Bit>,
+    ack_passive_pending: DFF<Bit>,
     // latched transmit frame
     txf_id: DFF<Bits<29>>,
     txf_ide: DFF<Bit>,
@@ -119,6 +125,17 @@ pub struct ProtocolController {
     data_bits: Signal<Local, Bits<7>>,
     // errors and fault-confinement events
     error: Signal<Local, Bit>,
+    flag_error: Signal<Local, Bit>,
+    suspend_due: Signal<Local, Bit>,
+    passive_after: Signal<Local, Bit>,
+    ev_recovered: Signal<Local, Bit>,
+    ev_rx_success: Signal<Local, Bit>,
+    ev_tx_success: Signal<Local, Bit>,
+    ev_rec_add8: Signal<Local, Bit>,
+    ev_rec_add1: Signal<Local, Bit>,
+    ev_tec_add8: Signal<Local, Bit>,
+    bus_off_after: Signal<Local, Bit>,
+    join_ok: Signal<Local, Bit>,
     tec_exempt: Signal<Local, Bit>,
     ack_error: Signal<Local, Bit>,
     // bit selectors of the transmitted frame
@@ -144,13 +161,18 @@ pub struct ProtocolController {
     n7_127: Constant<Bits<7>>,
     n3_1: Constant<Bits<3>>,
     n3_5: Constant<Bits<3>>,
+    n3_7: Constant<Bits<3>>,
+    zero3: Constant<Bits<3>>,
+    n9_120: Constant<Bits<9>>,
+    n9_248: Constant<Bits<9>>,
+    n8_120: Constant<Bits<8>>,
+    n8_127: Constant<Bits<8>>,
     n5_10: Constant<Bits<5>>,
     n5_17: Constant<Bits<5>>,
     n5_28: Constant<Bits<5>>,
     n2_3: Constant<Bits<2>>,
     n6_63: Constant<Bits<6>>,
     n4_14: Constant<Bits<4>>,
-    n8_248: Constant<Bits<9>>,
     zero4: Constant<Bits<4>>,
     zero15: Constant<Bits<15>>,
     zero29: Constant<Bits<29>>,
@@ -203,6 +225,10 @@ impl Default for ProtocolController {
             recovery_cnt: Default::default(),
             tx_q: Default::default(),
             tx_bit: Default::default(),
+            last_bit_arb: Default::default(),
+            dom_cnt: Default::default(),
+            delim_first: Default::default(),
+            ack_passive_pending: Default::default(),
             txf_id: Default::default(),
             txf_ide: Default::default(),
             txf_rtr: Default::default(),
@@ -245,6 +271,17 @@ impl Default for ProtocolController {
             dlc_n: Default::default(),
             data_bits: Default::default(),
             error: Default::default(),
+            flag_error: Default::default(),
+            suspend_due: Default::default(),
+            passive_after: Default::default(),
+            ev_recovered: Default::default(),
+            ev_rx_success: Default::default(),
+            ev_tx_success: Default::default(),
+            ev_rec_add8: Default::default(),
+            ev_rec_add1: Default::default(),
+            ev_tec_add8: Default::default(),
+            bus_off_after: Default::default(),
+            join_ok: Default::default(),
             tec_exempt: Default::default(),
             ack_error: Default::default(),
             id_a_idx: Default::default(),
@@ -268,13 +305,18 @@ impl Default for ProtocolController {
             n7_127: c7(127),
             n3_1: Constant::new(1.into()),
             n3_5: Constant::new(5.into()),
+            n3_7: Constant::new(7.into()),
+            zero3: Constant::new(0.into()),
+            n9_120: Constant::new(120.into()),
+            n9_248: Constant::new(248.into()),
+            n8_120: Constant::new(120.into()),
+            n8_127: Constant::new(127.into()),
             n5_10: Constant::new(10.into()),
             n5_17: Constant::new(17.into()),
             n5_28: Constant::new(28.into()),
             n2_3: Constant::new(3.into()),
             n6_63: Constant::new(63.into()),
             n4_14: Constant::new(14.into()),
-            n8_248: Constant::new(248.into()),
             zero4: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero29: Constant::new(0.into()),
@@ -288,7 +330,8 @@ impl Logic for ProtocolController {
     fn update(&mut self) {
         dff_setup!(
             self, clk, field_q, bit_cnt, is_tx, pending, stuff_cnt, stuff_last, stuff_en, crc,
-            crc_ok, flag_passive, recovery_cnt, tx_q, tx_bit, txf_id, txf_ide, txf_rtr, txf_dlc,
+            crc_ok, flag_passive, recovery_cnt, tx_q, tx_bit, last_bit_arb, dom_cnt, delim_first,
+            ack_passive_pending, txf_id, txf_ide, txf_rtr, txf_dlc,
             txf_data, rxs_id, rxs_srr_rtr, rxs_ide, rxs_rtr, rxs_dlc, rxs_data, data_len,
             rx_valid_q, tx_done_q, arb_lost_q, rx_id_q, rx_ide_q, rx_rtr_q, rx_dlc_q, rx_data_q
         );
@@ -315,14 +358,19 @@ impl Logic for ProtocolController {
         self.sof.next = false;
         self.sof_as_tx.next = false;
         self.error.next = false;
+        self.flag_error.next = false;
+        // 10.4.5: an error-passive transmitter suspends after its frame and does
+        // not join a SOF at intermission bit 3.
+        self.suspend_due.next = self.is_tx.q.val() && self.fc.error_passive.val();
+        self.join_ok.next = self.start_ok.val() && !self.suspend_due.val();
         self.tec_exempt.next = false;
         self.ack_error.next = false;
-        self.fc.tec_add8.next = false;
-        self.fc.rec_add1.next = false;
-        self.fc.rec_add8.next = false;
-        self.fc.tx_success.next = false;
-        self.fc.rx_success.next = false;
-        self.fc.recovered.next = false;
+        self.ev_tec_add8.next = false;
+        self.ev_rec_add1.next = false;
+        self.ev_rec_add8.next = false;
+        self.ev_tx_success.next = false;
+        self.ev_rx_success.next = false;
+        self.ev_recovered.next = false;
         self.rx_valid_q.d.next = false;
         self.tx_done_q.d.next = false;
         self.arb_lost_q.d.next = false;
@@ -408,7 +456,7 @@ impl Logic for ProtocolController {
                 if self.sampled.val() == self.stuff_last.q.val() {
                     self.error.next = true;
                     // 12.1.4.2 exception: recessive stuff bit read dominant in arbitration.
-                    if self.is_tx.q.val() && self.in_arbitration.val() && self.tx_q.q.val() {
+                    if self.is_tx.q.val() && self.last_bit_arb.q.val() && self.tx_q.q.val() {
                         self.tec_exempt.next = true;
                     }
                 } else {
@@ -416,6 +464,7 @@ impl Logic for ProtocolController {
                     self.stuff_last_n.next = self.sampled.val();
                 }
             } else {
+                self.last_bit_arb.d.next = self.in_arbitration.val();
                 if self.stuff_en.q.val() {
                     if self.sampled.val() == self.stuff_last.q.val() {
                         self.stuff_cnt_n.next = self.stuff_cnt.q.val() + self.n3_1.val();
@@ -485,18 +534,20 @@ impl Logic for ProtocolController {
                             if self.bit_cnt.q.val() == self.n7_2.val() {
                                 // 10.4.5: dominant third intermission bit is a SOF.
                                 self.sof.next = true;
-                                self.sof_as_tx.next = self.start_ok.val();
+                                self.sof_as_tx.next = self.join_ok.val();
                             } else {
                                 // 10.4.4: dominant intermission bit 1 or 2: overload.
                                 self.field_n.next = Field::OverloadFlag;
                                 self.bit_cnt_n.next = self.n7_0.val();
                             }
                         } else if self.bit_cnt.q.val() == self.n7_2.val() {
-                            if self.is_tx.q.val() && self.fc.error_passive.val() {
+                            if self.suspend_due.val() {
                                 self.field_n.next = Field::Suspend;
                             } else {
                                 self.field_n.next = Field::Idle;
                             }
+                            // The transmitter role ends with the intermission.
+                            self.is_tx_n.next = false;
                             self.bit_cnt_n.next = self.n7_0.val();
                         } else {
                             self.bit_cnt_n.next = self.bit_cnt_inc.val();
@@ -601,6 +652,10 @@ impl Logic for ProtocolController {
                             self.error.next = true;
                             self.ack_error.next = true;
                         }
+                        if !self.is_tx.q.val() && !self.tx_q.q.val() && !self.sampled.val() {
+                            // Rule h: received up to the ACK slot and acknowledged.
+                            self.ev_rx_success.next = true;
+                        }
                         self.field_n.next = Field::AckDelim;
                     }
                     Field::AckDelim => {
@@ -631,14 +686,13 @@ impl Logic for ProtocolController {
                                 self.rx_rtr_q.d.next = self.rxs_rtr.q.val();
                                 self.rx_dlc_q.d.next = self.rxs_dlc.q.val();
                                 self.rx_data_q.d.next = self.rxs_data.q.val();
-                                self.fc.rx_success.next = true;
                             }
                             if self.bit_cnt.q.val() == self.n7_6.val() {
                                 if self.is_tx.q.val() {
                                     // 10.7: valid for the transmitter at the end of EOF.
                                     self.tx_done_q.d.next = true;
                                     self.pending.d.next = false;
-                                    self.fc.tx_success.next = true;
+                                    self.ev_tx_success.next = true;
                                 }
                                 self.field_n.next = Field::Intermission;
                                 self.bit_cnt_n.next = self.n7_0.val();
@@ -649,6 +703,12 @@ impl Logic for ProtocolController {
                     }
                     Field::ErrorFlag => {
                         if self.flag_passive.q.val() {
+                            // Rule c exception 1: a dominant bit during the passive flag
+                            // that follows a passive ACK error costs TEC + 8 once.
+                            if self.ack_passive_pending.q.val() && !self.sampled.val() {
+                                self.ev_tec_add8.next = true;
+                                self.ack_passive_pending.d.next = false;
+                            }
                             // 10.4.3: a passive flag ends after 6 equal consecutive bits.
                             if (self.bit_cnt.q.val() == self.n7_0.val())
                                 || (self.sampled.val() != self.stuff_last.q.val())
@@ -658,20 +718,33 @@ impl Logic for ProtocolController {
                             } else if self.bit_cnt.q.val() == self.n7_5.val() {
                                 self.field_n.next = Field::ErrorDelim;
                                 self.bit_cnt_n.next = self.n7_0.val();
+                                self.delim_first.d.next = true;
+                                self.dom_cnt.d.next = self.zero3.val();
+                                self.ack_passive_pending.d.next = false;
                             } else {
                                 self.bit_cnt_n.next = self.bit_cnt_inc.val();
                             }
+                        } else if self.sampled.val() {
+                            // Rules d/e: bit error in its own active error flag.
+                            self.flag_error.next = true;
                         } else if self.bit_cnt.q.val() == self.n7_5.val() {
                             self.field_n.next = Field::ErrorDelim;
                             self.bit_cnt_n.next = self.n7_0.val();
+                            self.delim_first.d.next = true;
+                            self.dom_cnt.d.next = self.zero3.val();
                         } else {
                             self.bit_cnt_n.next = self.bit_cnt_inc.val();
                         }
                     }
                     Field::OverloadFlag => {
-                        if self.bit_cnt.q.val() == self.n7_5.val() {
+                        if self.sampled.val() {
+                            // Rules d/e: bit error in its own overload flag.
+                            self.flag_error.next = true;
+                        } else if self.bit_cnt.q.val() == self.n7_5.val() {
                             self.field_n.next = Field::OverloadDelim;
                             self.bit_cnt_n.next = self.n7_0.val();
+                            self.delim_first.d.next = true;
+                            self.dom_cnt.d.next = self.zero3.val();
                         } else {
                             self.bit_cnt_n.next = self.bit_cnt_inc.val();
                         }
@@ -679,8 +752,23 @@ impl Logic for ProtocolController {
                     Field::ErrorDelim => {
                         // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
                         if self.bit_cnt.q.val() == self.n7_0.val() {
+                            self.delim_first.d.next = false;
                             if self.sampled.val() {
                                 self.bit_cnt_n.next = self.n7_1.val();
+                            } else {
+                                if self.delim_first.q.val() && !self.is_tx.q.val() {
+                                    // Rule b: dominant first bit after its error flag.
+                                    self.ev_rec_add8.next = true;
+                                }
+                                // Rule f: every 8th consecutive dominant bit after the flag.
+                                self.dom_cnt.d.next = self.dom_cnt.q.val() + self.n3_1.val();
+                                if self.dom_cnt.q.val() == self.n3_7.val() {
+                                    if self.is_tx.q.val() {
+                                        self.ev_tec_add8.next = true;
+                                    } else {
+                                        self.ev_rec_add8.next = true;
+                                    }
+                                }
                             }
                         } else if !self.sampled.val() {
                             if self.bit_cnt.q.val() == self.n7_7.val() {
@@ -699,8 +787,19 @@ impl Logic for ProtocolController {
                     Field::OverloadDelim => {
                         // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
                         if self.bit_cnt.q.val() == self.n7_0.val() {
+                            self.delim_first.d.next = false;
                             if self.sampled.val() {
                                 self.bit_cnt_n.next = self.n7_1.val();
+                            } else {
+                                // Rule f: every 8th consecutive dominant bit after the flag.
+                                self.dom_cnt.d.next = self.dom_cnt.q.val() + self.n3_1.val();
+                                if self.dom_cnt.q.val() == self.n3_7.val() {
+                                    if self.is_tx.q.val() {
+                                        self.ev_tec_add8.next = true;
+                                    } else {
+                                        self.ev_rec_add8.next = true;
+                                    }
+                                }
                             }
                         } else if !self.sampled.val() {
                             if self.bit_cnt.q.val() == self.n7_7.val() {
@@ -723,7 +822,7 @@ impl Logic for ProtocolController {
                                 self.bit_cnt_n.next = self.n7_0.val();
                                 if self.recovery_cnt.q.val() == self.n7_127.val() {
                                     self.field_n.next = Field::Idle;
-                                    self.fc.recovered.next = true;
+                                    self.ev_recovered.next = true;
                                     self.recovery_cnt.d.next = self.n7_0.val();
                                 } else {
                                     self.recovery_cnt.d.next =
@@ -757,23 +856,46 @@ impl Logic for ProtocolController {
 
             // Any error: error flag from the next bit on (12.1.4.2 counter rules).
             if self.error.val() {
+                if self.is_tx_n.val() {
+                    if self.ack_error.val() && self.fc.error_passive.val() {
+                        // Rule c exception 1: decided during the passive flag.
+                        self.ack_passive_pending.d.next = true;
+                    } else if !self.tec_exempt.val() {
+                        self.ev_tec_add8.next = true; // rule c
+                    }
+                } else {
+                    self.ev_rec_add1.next = true; // rule a
+                }
+            }
+            if self.flag_error.val() {
+                if self.is_tx.q.val() {
+                    self.ev_tec_add8.next = true; // rule d
+                } else {
+                    self.ev_rec_add8.next = true; // rule e
+                }
+            }
+            // The error state after this sample's counter events (12.1.4.2 rules
+            // i/j): computed here from the counters so no combinational path runs
+            // back from the fault-confinement block.
+            self.passive_after.next = self.fc.error_passive.val()
+                || (self.ev_tec_add8.val() && (self.fc.tec.val() >= self.n9_120.val()))
+                || (self.ev_rec_add1.val() && (self.fc.rec.val() >= self.n8_127.val()))
+                || (self.ev_rec_add8.val() && (self.fc.rec.val() >= self.n8_120.val()));
+            self.bus_off_after.next = self.ev_tec_add8.val()
+                && (self.fc.tec.val() >= self.n9_248.val())
+                && !self.fc.bus_off.val();
+            if self.error.val() || self.flag_error.val() {
                 self.field_n.next = Field::ErrorFlag;
                 self.bit_cnt_n.next = self.n7_0.val();
                 self.stuff_en_n.next = false;
-                self.flag_passive_n.next = self.fc.error_passive.val();
-                if self.is_tx_n.val() {
-                    if !self.tec_exempt.val()
-                        && !(self.ack_error.val() && self.fc.error_passive.val())
-                    {
-                        self.fc.tec_add8.next = true;
-                        if self.fc.tec.val() >= self.n8_248.val() {
-                            self.field_n.next = Field::BusOff;
-                            self.recovery_cnt.d.next = self.n7_0.val();
-                        }
-                    }
-                } else {
-                    self.fc.rec_add1.next = true;
-                }
+                // The flag type follows the state after this error's increment.
+                self.flag_passive_n.next = self.passive_after.val();
+            }
+            // 12.1.4.4: TEC > 255 makes the node bus-off at once.
+            if self.bus_off_after.val() {
+                self.field_n.next = Field::BusOff;
+                self.bit_cnt_n.next = self.n7_0.val();
+                self.recovery_cnt.d.next = self.n7_0.val();
             }
             self.field_q.d.next = self.field_n.val();
             self.bit_cnt.d.next = self.bit_cnt_n.val();
@@ -785,6 +907,14 @@ impl Logic for ProtocolController {
             self.crc_ok.d.next = self.crc_ok_n.val();
             self.flag_passive.d.next = self.flag_passive_n.val();
         }
+
+        // ---- fault-confinement events of this clock
+        self.fc.tec_add8.next = self.ev_tec_add8.val();
+        self.fc.rec_add1.next = self.ev_rec_add1.val();
+        self.fc.rec_add8.next = self.ev_rec_add8.val();
+        self.fc.tx_success.next = self.ev_tx_success.val();
+        self.fc.rx_success.next = self.ev_rx_success.val();
+        self.fc.recovered.next = self.ev_recovered.val();
 
         // ---- the bit this node sends next (contract §4.2)
         self.id_b_idx.next = self.n5_17.val() - self.bit_cnt_n.val().get_bits::<5>(0);
@@ -862,11 +992,10 @@ impl Logic for ProtocolController {
 
         // ---- the tx pin changes only at the start of a bit
         if self.bit_start.val() {
-            if self.hard_sync.val()
-                && ((self.field_q.q.val() == Field::Idle)
-                    || (self.field_q.q.val() == Field::Intermission))
-            {
+            if self.hard_sync.val() && (self.field_q.q.val() == Field::Idle) {
                 self.tx_q.d.next = !self.start_ok.val();
+            } else if self.hard_sync.val() && (self.field_q.q.val() == Field::Intermission) {
+                self.tx_q.d.next = !self.join_ok.val();
             } else if self.hard_sync.val() && (self.field_q.q.val() == Field::Suspend) {
                 self.tx_q.d.next = true;
             } else if self.field_q.q.val() == Field::Idle {
@@ -939,6 +1068,10 @@ impl Logic for ProtocolController {
             self.recovery_cnt.d.next = self.n7_0.val();
             self.tx_q.d.next = true;
             self.tx_bit.d.next = true;
+            self.last_bit_arb.d.next = false;
+            self.dom_cnt.d.next = self.zero3.val();
+            self.delim_first.d.next = false;
+            self.ack_passive_pending.d.next = false;
             self.rx_valid_q.d.next = false;
             self.tx_done_q.d.next = false;
             self.arb_lost_q.d.next = false;

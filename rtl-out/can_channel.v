@@ -779,6 +779,8 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         sof_as_tx = 1'b0;
         error = 1'b0;
         flag_error = 1'b0;
+        passive_after = 1'b0;
+        bus_off_after = 1'b0;
         suspend_due = is_tx__q && fc__error_passive;
         join_ok = start_ok && ~suspend_due;
         tec_exempt = 1'b0;

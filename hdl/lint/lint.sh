@@ -25,6 +25,7 @@ for top in "${tops[@]}"; do
     iverilog -g2005 -o "$work/$top.vvp" -s "$top" "$file"
     echo "lint: $top: yosys synth + check -assert"
     yosys -q -l "$work/$top.yosys.log" -p "read_verilog $file; synth -flatten -top $top; check -assert; select -assert-none t:\$*latch* t:\$_DLATCH*_ t:\$_SR_*" >/dev/null \
+        && ! grep -q "Latch inferred" "$work/$top.yosys.log" \
         || { echo "lint: $top: yosys found a problem, see its log:" >&2; tail -20 "$work/$top.yosys.log" >&2; exit 1; }
 done
 echo "lint: ${#tops[@]} top(s) clean"

@@ -359,6 +359,8 @@ impl Logic for ProtocolController {
         self.sof_as_tx.next = false;
         self.error.next = false;
         self.flag_error.next = false;
+        self.passive_after.next = false;
+        self.bus_off_after.next = false;
         // 10.4.5: an error-passive transmitter suspends after its frame and does
         // not join a SOF at intermission bit 3.
         self.suspend_due.next = self.is_tx.q.val() && self.fc.error_passive.val();

@@ -1,9 +1,13 @@
 //! drcc-cosim: everything that runs a design — the reference model, the engines,
 //! the bus, co-simulation and traces.
 
+pub mod bus;
+pub mod cosim;
 pub mod engine;
 pub mod frame;
 pub mod model;
+pub mod system;
+pub mod trace;
 
 pub use engine::{BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, Probes};
 pub use frame::Frame;

@@ -1,1 +1,19 @@
-//! drcc-testbench: scenarios and their runner.
+//! drcc-testbench: the scenario format and its loader, the bit-rate solver,
+//! random traffic, the scenario runner (on one engine or co-simulated on two)
+//! and the engine benchmark. Scenario files live in `scenarios/`, integration
+//! tests in `tests/`.
+
+pub mod bench;
+pub mod bitrate;
+pub mod engines;
+pub mod random;
+pub mod run;
+pub mod scenario;
+
+pub use engines::EngineKind;
+pub use scenario::{Scenario, ScenarioError};
+
+/// The directory of the bundled scenario files.
+pub fn scenarios_dir() -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios")
+}

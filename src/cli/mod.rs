@@ -1,0 +1,91 @@
+//! The `drcc` subcommands, the error type shared by them (check failure: exit 1;
+//! error: exit 2) and the panic hook that turns an internal error into one line.
+
+pub mod generate;
+pub mod run;
+pub mod wave;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Duration;
+
+/// Why a command failed.
+#[derive(Debug)]
+pub enum CliError {
+    /// A check failed (exit 1): the message says what.
+    Failed(String),
+    /// An error (exit 2): bad input, missing tool, I/O.
+    Error(String),
+}
+
+impl CliError {
+    /// Prints the message and gives the exit code.
+    pub fn report(self) -> ExitCode {
+        match self {
+            CliError::Failed(m) => {
+                eprintln!("drcc: FAILED: {m}");
+                ExitCode::from(1)
+            }
+            CliError::Error(m) => {
+                eprintln!("drcc: error: {m}");
+                ExitCode::from(2)
+            }
+        }
+    }
+}
+
+impl From<String> for CliError {
+    fn from(s: String) -> Self {
+        CliError::Error(s)
+    }
+}
+
+/// Result of a command.
+pub type CliResult = Result<(), CliError>;
+
+/// Prints an internal error (a panic) as one message and exits with code 2,
+/// without a backtrace.
+pub fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        let msg = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".to_string());
+        let at = info
+            .location()
+            .map(|l| format!(" (at {}:{})", l.file(), l.line()))
+            .unwrap_or_default();
+        eprintln!("drcc: error: internal error: {msg}{at}");
+        std::process::exit(2);
+    }));
+}
+
+/// A path of the workspace: as given if it exists relative to the current
+/// directory, else relative to the workspace this binary was built from.
+pub fn workspace_path(rel: &str) -> PathBuf {
+    let here = Path::new(rel);
+    if here.exists() {
+        return here.to_path_buf();
+    }
+    let built = Path::new(env!("CARGO_MANIFEST_DIR")).join(rel);
+    if built.exists() {
+        built
+    } else {
+        here.to_path_buf()
+    }
+}
+
+/// `drcc bench`.
+pub fn bench(seconds: f64) -> CliResult {
+    if !(seconds.is_finite() && seconds > 0.0 && seconds <= 600.0) {
+        return Err(CliError::Error(format!(
+            "--seconds {seconds}: give a duration between 0 and 600 seconds"
+        )));
+    }
+    let mut out = std::io::stdout().lock();
+    drcc_testbench::bench::run(&mut out, Duration::from_secs_f64(seconds))
+        .map_err(|e| CliError::Error(format!("cannot write the report: {e}")))?;
+    Ok(())
+}

@@ -1,0 +1,267 @@
+//! `drcc sim`, `drcc cosim` and `drcc demo`: run scenarios, print per-node tables
+//! of sent and received frames, check expectations, write traces.
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use drcc_cosim::cosim::CosimError;
+use drcc_cosim::system::{NodeEvent, Sample};
+use drcc_cosim::trace::{BusVcdWriter, VcdWriter};
+use drcc_testbench::bitrate::sample_point_percent;
+use drcc_testbench::engines::{available, EngineKind, VERILATOR_HINT};
+use drcc_testbench::run::{self, RunResult};
+use drcc_testbench::Scenario;
+
+use super::{CliError, CliResult};
+
+/// The demo scenario, built in so `drcc demo` runs from anywhere.
+const DEMO_TOML: &str = include_str!("../../testbench/scenarios/demo.toml");
+
+fn load(path: &Path) -> Result<Scenario, CliError> {
+    Scenario::load(path).map_err(|e| CliError::Error(e.to_string()))
+}
+
+fn engine_role(kind: EngineKind) -> &'static str {
+    match kind {
+        EngineKind::Model => "the Rust reference model",
+        EngineKind::RustHdl => "the hdl blocks in rust-hdl's simulator",
+        EngineKind::Verilator => "the emitted Verilog, verilated",
+    }
+}
+
+fn print_header(sc: &Scenario, engines: &str) {
+    let t = &sc.timing;
+    println!("scenario  {} ({})", sc.name, sc.source);
+    if !sc.description.is_empty() {
+        println!("          {}", sc.description);
+    }
+    println!("engine    {engines}");
+    println!(
+        "timing    {} Hz clock, {:.0} bit/s: brp {}, tseg1 {}, tseg2 {}, sjw {}{} \
+         ({} tq of {} clocks, sample point {:.1} %)",
+        sc.clock_hz,
+        sc.bitrate(),
+        t.brp,
+        t.tseg1,
+        t.tseg2,
+        t.sjw,
+        if t.triple_sampling {
+            ", triple sampling"
+        } else {
+            ""
+        },
+        t.tq_per_bit(),
+        t.brp as u32 + 1,
+        sample_point_percent(t)
+    );
+    println!(
+        "nodes     {}",
+        sc.nodes
+            .iter()
+            .enumerate()
+            .map(|(i, n)| format!("{i}:{n}"))
+            .collect::<Vec<_>>()
+            .join("  ")
+    );
+}
+
+fn print_tables(sc: &Scenario, r: &RunResult) {
+    let cpb = sc.clocks_per_bit();
+    let row = |what: &str, e: &NodeEvent| {
+        println!(
+            "  {what:<9} cycle {:>9}  bit {:>7}  {}",
+            e.cycle,
+            e.cycle / cpb,
+            e.frame
+        )
+    };
+    for (i, name) in sc.nodes.iter().enumerate() {
+        let sent: Vec<&NodeEvent> = r.sent.iter().filter(|e| e.node == i).collect();
+        let got: Vec<&NodeEvent> = r.deliveries.iter().filter(|e| e.node == i).collect();
+        println!(
+            "\nnode {i} `{name}`: sent {} frame(s), received {} frame(s)",
+            sent.len(),
+            got.len()
+        );
+        for e in &sent {
+            row("sent", e);
+        }
+        for e in &got {
+            row("received", e);
+        }
+    }
+    println!(
+        "\n{} cycles ({} bit times, {:.3} ms), {} arbitration(s) lost, {}",
+        r.outcome.cycles(),
+        r.outcome.cycles() / cpb,
+        r.outcome.cycles() as f64 * 1000.0 / sc.clock_hz as f64,
+        r.arb_lost,
+        if r.outcome.is_idle() {
+            "bus idle at the end"
+        } else {
+            "cycle limit reached"
+        }
+    );
+}
+
+fn verdict(r: &RunResult) -> CliResult {
+    if r.passed() {
+        println!("PASS: every expected frame was sent and delivered exactly once");
+        Ok(())
+    } else {
+        for p in &r.problems {
+            println!("  - {p}");
+        }
+        Err(CliError::Failed(format!(
+            "{} expectation(s) not met",
+            r.problems.len()
+        )))
+    }
+}
+
+fn create(path: &Path) -> Result<BufWriter<File>, CliError> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| CliError::Error(format!("cannot create {}: {e}", dir.display())))?;
+    }
+    File::create(path)
+        .map(BufWriter::new)
+        .map_err(|e| CliError::Error(format!("cannot create {}: {e}", path.display())))
+}
+
+/// Runs a scenario on one engine, writing the requested traces.
+fn run_traced(
+    sc: &Scenario,
+    kind: EngineKind,
+    vcd: Option<&Path>,
+    bus_vcd: Option<&Path>,
+) -> Result<RunResult, CliError> {
+    let mut full_buf = vcd.map(create).transpose()?;
+    let mut bus_buf = bus_vcd.map(create).transpose()?;
+    let comment = format!(
+        "drcc sim {} on {}; clock_hz={}",
+        sc.name,
+        kind.name(),
+        sc.clock_hz
+    );
+    let io = |p: Option<&Path>| {
+        let p = p.map(|p| p.display().to_string()).unwrap_or_default();
+        move |e: std::io::Error| format!("cannot write {p}: {e}")
+    };
+    let mut full = match full_buf.as_mut() {
+        Some(b) => Some(
+            VcdWriter::new(b, sc.clock_hz, &[("tb", sc.nodes.len())], &comment).map_err(io(vcd))?,
+        ),
+        None => None,
+    };
+    let mut bus = match bus_buf.as_mut() {
+        Some(b) => {
+            Some(BusVcdWriter::new(b, sc.clock_hz, sc.nodes.len(), &comment).map_err(io(bus_vcd))?)
+        }
+        None => None,
+    };
+    let result = run::run_observed(sc, kind, |s: &Sample| {
+        if let Some(w) = full.as_mut() {
+            w.write_cycle(&[s]).map_err(io(vcd))?;
+        }
+        if let Some(w) = bus.as_mut() {
+            w.write_cycle(s).map_err(io(bus_vcd))?;
+        }
+        Ok(())
+    })?;
+    if let Some(w) = full.as_mut() {
+        w.finish().map_err(io(vcd))?;
+    }
+    if let Some(w) = bus.as_mut() {
+        w.finish().map_err(io(bus_vcd))?;
+    }
+    drop(full);
+    drop(bus);
+    if let Some(b) = full_buf.as_mut() {
+        b.flush().map_err(io(vcd))?;
+    }
+    if let Some(b) = bus_buf.as_mut() {
+        b.flush().map_err(io(bus_vcd))?;
+    }
+    Ok(result)
+}
+
+/// `drcc sim SCENARIO [--engine E] [--vcd FILE] [--bus-vcd FILE]`.
+pub fn sim(path: &Path, engine: &str, vcd: Option<&Path>, bus_vcd: Option<&Path>) -> CliResult {
+    let kind: EngineKind = engine.parse()?;
+    let sc = load(path)?;
+    available(kind)?;
+    print_header(&sc, &format!("{} ({})", kind.name(), engine_role(kind)));
+    let r = run_traced(&sc, kind, vcd, bus_vcd)?;
+    print_tables(&sc, &r);
+    for (what, p) in [("trace", vcd), ("bus trace", bus_vcd)] {
+        if let Some(p) = p {
+            println!("{what}: {}", p.display());
+        }
+    }
+    verdict(&r)
+}
+
+/// `drcc cosim SCENARIO [--engines A,B] [--vcd-dir DIR]`.
+pub fn cosim(path: &Path, engines: &str, vcd_dir: Option<PathBuf>) -> CliResult {
+    let kinds: Vec<EngineKind> = engines
+        .split(',')
+        .map(|s| s.parse::<EngineKind>())
+        .collect::<Result<_, _>>()?;
+    let [a, b] = kinds[..] else {
+        return Err(CliError::Error(format!(
+            "--engines {engines:?}: give exactly two engines, e.g. model,verilator"
+        )));
+    };
+    let sc = load(path)?;
+    available(a)?;
+    available(b)?;
+    print_header(&sc, &format!("{} vs {} in lock step", a.name(), b.name()));
+    match run::cosim(&sc, a, b, vcd_dir) {
+        Ok(c) => {
+            print_tables(&sc, &c.result);
+            println!(
+                "no divergence between {} and {} in {} cycles (every output and probe of every node, every clock)",
+                c.report.engine_a,
+                c.report.engine_b,
+                c.report.outcome.cycles()
+            );
+            verdict(&c.result)
+        }
+        Err(CosimError::Setup(e)) => Err(CliError::Error(e)),
+        Err(CosimError::Divergence(d)) => Err(CliError::Failed(d.to_string())),
+    }
+}
+
+/// `drcc demo`: the demo scenario on Verilator (or rust-hdl), tables, and
+/// out/demo_bus.vcd.
+pub fn demo() -> CliResult {
+    let disk = super::workspace_path("testbench/scenarios/demo.toml");
+    let sc = if disk.exists() {
+        load(&disk)?
+    } else {
+        Scenario::parse(DEMO_TOML, "demo.toml (built in)")
+            .map_err(|e| CliError::Error(e.to_string()))?
+    };
+    let kind = match available(EngineKind::Verilator) {
+        Ok(()) => EngineKind::Verilator,
+        Err(e) => {
+            println!("note: Verilator not found: {VERILATOR_HINT}; running on the rust-hdl engine");
+            println!("      ({e})");
+            EngineKind::RustHdl
+        }
+    };
+    print_header(&sc, &format!("{} ({})", kind.name(), engine_role(kind)));
+    let out = Path::new("out").join("demo_bus.vcd");
+    let r = run_traced(&sc, kind, None, Some(&out))?;
+    print_tables(&sc, &r);
+    println!("\nengine that ran: {} ({})", kind.name(), engine_role(kind));
+    println!("bus trace: {}", out.display());
+    println!(
+        "  decode it: sigrok-cli -I vcd -i {} -P can:can_rx=bus:nominal_bitrate={:.0} -A can=fields",
+        out.display(),
+        sc.bitrate()
+    );
+    verdict(&r)
+}

@@ -1,0 +1,155 @@
+//! The engine benchmark (`cargo bench`, `drcc bench`): the same workloads on every
+//! available engine in one run, reporting simulated clock cycles per second and
+//! the ratios between engines. It measures; it asserts nothing about time.
+//!
+//! Workloads (8 MHz clock, 1 Mbit/s):
+//! - `1 channel`: one node sending random frames that nobody acknowledges (ACK
+//!   errors, error frames, retransmissions: the channel is busy all the time),
+//! - `3-node system`: three nodes exchanging random traffic with contested
+//!   arbitration (cycles of the system: three channels per cycle).
+
+use std::io::{self, Write};
+use std::time::{Duration, Instant};
+
+use crate::engines::{make_engine, EngineKind};
+use crate::random::Traffic;
+use crate::run::build_system_with;
+
+/// One measurement.
+#[derive(Clone, Debug)]
+pub struct Measurement {
+    /// Engine.
+    pub engine: EngineKind,
+    /// Workload name.
+    pub workload: &'static str,
+    /// Simulated system clock cycles.
+    pub cycles: u64,
+    /// Wall-clock time.
+    pub seconds: f64,
+}
+
+impl Measurement {
+    /// Simulated cycles per second.
+    pub fn rate(&self) -> f64 {
+        self.cycles as f64 / self.seconds.max(1e-9)
+    }
+}
+
+/// The workloads: (name, nodes).
+pub const WORKLOADS: [(&str, usize); 2] = [("1 channel", 1), ("3-node system", 3)];
+
+/// Runs one workload on one engine for about `budget` of wall-clock time (at
+/// least 1000 cycles, at most `max_cycles`).
+pub fn measure(
+    engine: EngineKind,
+    workload: &'static str,
+    nodes: usize,
+    budget: Duration,
+    max_cycles: u64,
+) -> Result<Measurement, String> {
+    let mut traffic = Traffic::new(0xD_CC, 5000, 8_000_000, 1_000_000);
+    traffic.nodes = nodes;
+    traffic.max_gap_bits = 40;
+    let sc = traffic.scenario()?;
+    let mut sys = build_system_with(&sc, |_| make_engine(engine))?;
+    let start = Instant::now();
+    let mut cycles = 0u64;
+    loop {
+        for _ in 0..1000 {
+            sys.step();
+        }
+        cycles += 1000;
+        if cycles >= max_cycles || start.elapsed() >= budget {
+            break;
+        }
+    }
+    Ok(Measurement {
+        engine,
+        workload,
+        cycles,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+fn human(rate: f64) -> String {
+    if rate >= 1e6 {
+        format!("{:.2} M/s", rate / 1e6)
+    } else if rate >= 1e3 {
+        format!("{:.1} k/s", rate / 1e3)
+    } else {
+        format!("{rate:.0} /s")
+    }
+}
+
+/// Runs every workload on every available engine and prints the table.
+pub fn run(out: &mut dyn Write, budget: Duration) -> io::Result<Vec<Measurement>> {
+    writeln!(
+        out,
+        "drcc bench: simulated clock cycles per second, same workloads on every engine \
+         (8 MHz clock, 1 Mbit/s; about {:.1} s per measurement)",
+        budget.as_secs_f64()
+    )?;
+    let mut all = Vec::new();
+    let mut rows: Vec<(EngineKind, Result<Vec<Measurement>, String>)> = Vec::new();
+    for engine in EngineKind::ALL {
+        let mut ms = Vec::new();
+        let mut err = None;
+        for (name, nodes) in WORKLOADS {
+            match measure(engine, name, nodes, budget, 200_000_000) {
+                Ok(m) => ms.push(m),
+                Err(e) => {
+                    err = Some(e);
+                    break;
+                }
+            }
+        }
+        rows.push((engine, err.map_or(Ok(ms), Err)));
+    }
+    let model: Vec<f64> = rows
+        .iter()
+        .find(|(e, _)| *e == EngineKind::Model)
+        .and_then(|(_, r)| r.as_ref().ok())
+        .map(|ms| ms.iter().map(|m| m.rate()).collect())
+        .unwrap_or_default();
+    writeln!(
+        out,
+        "{:<10} {:>16} {:>16}   {:>22}",
+        "engine", WORKLOADS[0].0, WORKLOADS[1].0, "speed vs model (1ch / 3n)"
+    )?;
+    for (engine, r) in &rows {
+        match r {
+            Ok(ms) => {
+                let ratios: Vec<String> = ms
+                    .iter()
+                    .zip(&model)
+                    .map(|(m, base)| format!("{:.3}x", m.rate() / base.max(1e-9)))
+                    .collect();
+                writeln!(
+                    out,
+                    "{:<10} {:>16} {:>16}   {:>22}",
+                    engine.name(),
+                    human(ms[0].rate()),
+                    human(ms[1].rate()),
+                    ratios.join(" / ")
+                )?;
+                all.extend(ms.iter().cloned());
+            }
+            Err(e) => writeln!(out, "{:<10} not available: {e}", engine.name())?,
+        }
+    }
+    let rate = |k: EngineKind, w: &str| {
+        all.iter()
+            .find(|m| m.engine == k && m.workload == w)
+            .map(|m| m.rate())
+    };
+    for (w, _) in WORKLOADS {
+        if let (Some(v), Some(r)) = (rate(EngineKind::Verilator, w), rate(EngineKind::RustHdl, w)) {
+            writeln!(
+                out,
+                "{w}: verilator runs {:.1}x as fast as rust-hdl",
+                v / r.max(1e-9)
+            )?;
+        }
+    }
+    Ok(all)
+}

@@ -3,7 +3,7 @@
 
 
 
-module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_pending,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state);
+module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -13,6 +13,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
     input wire  [2:0] cfg_tseg2;
     input wire  [1:0] cfg_sjw;
     input wire  cfg_triple;
+    input wire  [1:0] cfg_mode;
+    input wire  [7:0] cfg_ewl;
+    input wire  cfg_single_shot;
     input wire  rx;
     output reg  tx;
     input wire  tx_req;
@@ -21,7 +24,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
     input wire  tx_rtr;
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
+    input wire  tx_abort;
     output reg  tx_pending;
+    output reg  tx_failed;
     output reg  tx_done;
     output reg  arb_lost;
     output reg  rx_valid;
@@ -36,6 +41,20 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
     output reg  [8:0] tec;
     output reg  [7:0] rec;
     output reg  [1:0] err_state;
+    output reg  err_warning;
+    output reg  err_valid;
+    output reg  [2:0] err_kind;
+    output reg  [4:0] err_field;
+    output reg  err_tx;
+    output reg  [4:0] alc;
+    output reg  [7:0] cnt_bit;
+    output reg  [7:0] cnt_stuff;
+    output reg  [7:0] cnt_crc;
+    output reg  [7:0] cnt_form;
+    output reg  [7:0] cnt_ack;
+    
+    // Constant declarations
+    localparam  loopback_mode = 2'b11;
     
     // Enums
     localparam Field__Integrating = 0;
@@ -63,6 +82,24 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
     localparam Field__BusOff = 22;
     
     // Stub signals
+    reg  cfg_regs__clk;
+    reg  cfg_regs__rst;
+    reg  [5:0] cfg_regs__cfg_brp;
+    reg  [3:0] cfg_regs__cfg_tseg1;
+    reg  [2:0] cfg_regs__cfg_tseg2;
+    reg  [1:0] cfg_regs__cfg_sjw;
+    reg  cfg_regs__cfg_triple;
+    reg  [1:0] cfg_regs__cfg_mode;
+    reg  [7:0] cfg_regs__cfg_ewl;
+    reg  cfg_regs__cfg_single_shot;
+    wire  [5:0] cfg_regs__brp;
+    wire  [3:0] cfg_regs__tseg1;
+    wire  [2:0] cfg_regs__tseg2;
+    wire  [1:0] cfg_regs__sjw;
+    wire  cfg_regs__triple;
+    wire  [1:0] cfg_regs__mode;
+    wire  [7:0] cfg_regs__ewl;
+    wire  cfg_regs__single_shot;
     reg  rx_sync__clk;
     reg  rx_sync__rst;
     reg  rx_sync__rx;
@@ -91,13 +128,18 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
     reg  bsp__hard_sync;
     wire  bsp__hard_sync_enable;
     wire  bsp__tx;
+    reg  [1:0] bsp__mode;
+    reg  [7:0] bsp__ewl;
+    reg  bsp__single_shot;
     reg  bsp__tx_req;
     reg  [28:0] bsp__tx_id;
     reg  bsp__tx_ide;
     reg  bsp__tx_rtr;
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
+    reg  bsp__tx_abort;
     wire  bsp__tx_pending;
+    wire  bsp__tx_failed;
     wire  bsp__tx_done;
     wire  bsp__arb_lost;
     wire  bsp__rx_valid;
@@ -110,8 +152,39 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
     wire  [8:0] bsp__tec;
     wire  [7:0] bsp__rec;
     wire  [1:0] bsp__err_state;
+    wire  bsp__err_warning;
+    wire  bsp__err_valid;
+    wire  [2:0] bsp__err_kind;
+    wire  [4:0] bsp__err_field;
+    wire  bsp__err_tx;
+    wire  [4:0] bsp__alc;
+    wire  [7:0] bsp__cnt_bit;
+    wire  [7:0] bsp__cnt_stuff;
+    wire  [7:0] bsp__cnt_crc;
+    wire  [7:0] bsp__cnt_form;
+    wire  [7:0] bsp__cnt_ack;
     
     // Sub module instances
+    can_channel__cfg_regs cfg_regs(
+        .clk(cfg_regs__clk),
+        .rst(cfg_regs__rst),
+        .cfg_brp(cfg_regs__cfg_brp),
+        .cfg_tseg1(cfg_regs__cfg_tseg1),
+        .cfg_tseg2(cfg_regs__cfg_tseg2),
+        .cfg_sjw(cfg_regs__cfg_sjw),
+        .cfg_triple(cfg_regs__cfg_triple),
+        .cfg_mode(cfg_regs__cfg_mode),
+        .cfg_ewl(cfg_regs__cfg_ewl),
+        .cfg_single_shot(cfg_regs__cfg_single_shot),
+        .brp(cfg_regs__brp),
+        .tseg1(cfg_regs__tseg1),
+        .tseg2(cfg_regs__tseg2),
+        .sjw(cfg_regs__sjw),
+        .triple(cfg_regs__triple),
+        .mode(cfg_regs__mode),
+        .ewl(cfg_regs__ewl),
+        .single_shot(cfg_regs__single_shot)
+    );
     can_channel__rx_sync rx_sync(
         .clk(rx_sync__clk),
         .rst(rx_sync__rst),
@@ -145,13 +218,18 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
         .hard_sync(bsp__hard_sync),
         .hard_sync_enable(bsp__hard_sync_enable),
         .tx(bsp__tx),
+        .mode(bsp__mode),
+        .ewl(bsp__ewl),
+        .single_shot(bsp__single_shot),
         .tx_req(bsp__tx_req),
         .tx_id(bsp__tx_id),
         .tx_ide(bsp__tx_ide),
         .tx_rtr(bsp__tx_rtr),
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
+        .tx_abort(bsp__tx_abort),
         .tx_pending(bsp__tx_pending),
+        .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
         .arb_lost(bsp__arb_lost),
         .rx_valid(bsp__rx_valid),
@@ -163,21 +241,49 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
         .field(bsp__field),
         .tec(bsp__tec),
         .rec(bsp__rec),
-        .err_state(bsp__err_state)
+        .err_state(bsp__err_state),
+        .err_warning(bsp__err_warning),
+        .err_valid(bsp__err_valid),
+        .err_kind(bsp__err_kind),
+        .err_field(bsp__err_field),
+        .err_tx(bsp__err_tx),
+        .alc(bsp__alc),
+        .cnt_bit(bsp__cnt_bit),
+        .cnt_stuff(bsp__cnt_stuff),
+        .cnt_crc(bsp__cnt_crc),
+        .cnt_form(bsp__cnt_form),
+        .cnt_ack(bsp__cnt_ack)
     );
     
     // Update code
     always @(*) begin
+        cfg_regs__clk = clk;
+        cfg_regs__rst = rst;
+        cfg_regs__cfg_brp = cfg_brp;
+        cfg_regs__cfg_tseg1 = cfg_tseg1;
+        cfg_regs__cfg_tseg2 = cfg_tseg2;
+        cfg_regs__cfg_sjw = cfg_sjw;
+        cfg_regs__cfg_triple = cfg_triple;
+        cfg_regs__cfg_mode = cfg_mode;
+        cfg_regs__cfg_ewl = cfg_ewl;
+        cfg_regs__cfg_single_shot = cfg_single_shot;
         rx_sync__clk = clk;
         rx_sync__rst = rst;
-        rx_sync__rx = rx;
+        if (cfg_regs__mode == loopback_mode) begin
+            rx_sync__rx = bsp__tx;
+            tx = 1'b1;
+        end
+        else begin
+            rx_sync__rx = rx;
+            tx = bsp__tx;
+        end
         btl__clk = clk;
         btl__rst = rst;
-        btl__cfg_brp = cfg_brp;
-        btl__cfg_tseg1 = cfg_tseg1;
-        btl__cfg_tseg2 = cfg_tseg2;
-        btl__cfg_sjw = cfg_sjw;
-        btl__cfg_triple = cfg_triple;
+        btl__cfg_brp = cfg_regs__brp;
+        btl__cfg_tseg1 = cfg_regs__tseg1;
+        btl__cfg_tseg2 = cfg_regs__tseg2;
+        btl__cfg_sjw = cfg_regs__sjw;
+        btl__cfg_triple = cfg_regs__triple;
         btl__rx_s = rx_sync__rx_s;
         btl__tx = bsp__tx;
         btl__hard_sync_enable = bsp__hard_sync_enable;
@@ -193,7 +299,10 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
         bsp__tx_rtr = tx_rtr;
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
-        tx = bsp__tx;
+        bsp__tx_abort = tx_abort;
+        bsp__mode = cfg_regs__mode;
+        bsp__ewl = cfg_regs__ewl;
+        bsp__single_shot = cfg_regs__single_shot;
         tx_pending = bsp__tx_pending;
         tx_done = bsp__tx_done;
         arb_lost = bsp__arb_lost;
@@ -209,12 +318,24 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx,tx,
         tec = bsp__tec;
         rec = bsp__rec;
         err_state = bsp__err_state;
+        tx_failed = bsp__tx_failed;
+        err_warning = bsp__err_warning;
+        err_valid = bsp__err_valid;
+        err_kind = bsp__err_kind;
+        err_field = bsp__err_field;
+        err_tx = bsp__err_tx;
+        alc = bsp__alc;
+        cnt_bit = bsp__cnt_bit;
+        cnt_stuff = bsp__cnt_stuff;
+        cnt_crc = bsp__cnt_crc;
+        cnt_form = bsp__cnt_form;
+        cnt_ack = bsp__cnt_ack;
     end
     
 endmodule // top
 
 
-module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_pending,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state);
+module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -225,13 +346,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     input wire  hard_sync;
     output reg  hard_sync_enable;
     output reg  tx;
+    input wire  [1:0] mode;
+    input wire  [7:0] ewl;
+    input wire  single_shot;
     input wire  tx_req;
     input wire  [28:0] tx_id;
     input wire  tx_ide;
     input wire  tx_rtr;
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
+    input wire  tx_abort;
     output reg  tx_pending;
+    output reg  tx_failed;
     output reg  tx_done;
     output reg  arb_lost;
     output reg  rx_valid;
@@ -244,8 +370,34 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     output reg  [8:0] tec;
     output reg  [7:0] rec;
     output reg  [1:0] err_state;
+    output reg  err_warning;
+    output reg  err_valid;
+    output reg  [2:0] err_kind;
+    output reg  [4:0] err_field;
+    output reg  err_tx;
+    output reg  [4:0] alc;
+    output reg  [7:0] cnt_bit;
+    output reg  [7:0] cnt_stuff;
+    output reg  [7:0] cnt_crc;
+    output reg  [7:0] cnt_form;
+    output reg  [7:0] cnt_ack;
     
     // Constant declarations
+    localparam  k3_bit = 3'b1;
+    localparam  k3_stuff = 3'b10;
+    localparam  k3_crc = 3'b11;
+    localparam  k3_form = 3'b100;
+    localparam  k3_ack = 3'b101;
+    localparam  n2_1 = 2'b1;
+    localparam  n2_3m = 2'b11;
+    localparam  n5_11 = 5'b1011;
+    localparam  n5_12 = 5'b1100;
+    localparam  n5_13 = 5'b1101;
+    localparam  n5_31 = 5'b11111;
+    localparam  n8_1 = 8'h1;
+    localparam  n8_255 = 8'hff;
+    localparam  zero5 = 5'b0;
+    localparam  zero8 = 8'h0;
     localparam  n7_0 = 7'b0;
     localparam  n7_1 = 7'b1;
     localparam  n7_2 = 7'b10;
@@ -303,6 +455,42 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     localparam Field__BusOff = 22;
     
     // Stub signals
+    reg  abort_pending__d;
+    wire  abort_pending__q;
+    reg  abort_pending__clock;
+    reg  tx_failed_q__d;
+    wire  tx_failed_q__q;
+    reg  tx_failed_q__clock;
+    reg  err_valid_q__d;
+    wire  err_valid_q__q;
+    reg  err_valid_q__clock;
+    reg  [2:0] err_kind_q__d;
+    wire  [2:0] err_kind_q__q;
+    reg  err_kind_q__clock;
+    reg  [4:0] err_field_q__d;
+    wire  [4:0] err_field_q__q;
+    reg  err_field_q__clock;
+    reg  err_tx_q__d;
+    wire  err_tx_q__q;
+    reg  err_tx_q__clock;
+    reg  [4:0] alc_q__d;
+    wire  [4:0] alc_q__q;
+    reg  alc_q__clock;
+    reg  [7:0] cnt_bit_q__d;
+    wire  [7:0] cnt_bit_q__q;
+    reg  cnt_bit_q__clock;
+    reg  [7:0] cnt_stuff_q__d;
+    wire  [7:0] cnt_stuff_q__q;
+    reg  cnt_stuff_q__clock;
+    reg  [7:0] cnt_crc_q__d;
+    wire  [7:0] cnt_crc_q__q;
+    reg  cnt_crc_q__clock;
+    reg  [7:0] cnt_form_q__d;
+    wire  [7:0] cnt_form_q__q;
+    reg  cnt_form_q__clock;
+    reg  [7:0] cnt_ack_q__d;
+    wire  [7:0] cnt_ack_q__q;
+    reg  cnt_ack_q__clock;
     reg  [14:0] crc_step__crc;
     reg  crc_step__data_bit;
     wire  [14:0] crc_step__crc_next;
@@ -432,6 +620,17 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  rx_data_q__clock;
     
     // Local signals
+    reg  listen_only;
+    reg  ack_check_off;
+    reg  loopback;
+    reg  stuff_err;
+    reg  stuff_as_bit;
+    reg  bit_err;
+    reg  form_err;
+    reg  crc_err;
+    reg  lost;
+    reg  [2:0] err_kind_n;
+    reg  [4:0] alc_n;
     reg  [4:0] field_n;
     reg  [6:0] bit_cnt_n;
     reg  [6:0] bit_cnt_inc;
@@ -476,6 +675,66 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  [5:0] data_wr_idx;
     
     // Sub module instances
+    can_channel__bsp__abort_pending abort_pending(
+        .d(abort_pending__d),
+        .q(abort_pending__q),
+        .clock(abort_pending__clock)
+    );
+    can_channel__bsp__tx_failed_q tx_failed_q(
+        .d(tx_failed_q__d),
+        .q(tx_failed_q__q),
+        .clock(tx_failed_q__clock)
+    );
+    can_channel__bsp__err_valid_q err_valid_q(
+        .d(err_valid_q__d),
+        .q(err_valid_q__q),
+        .clock(err_valid_q__clock)
+    );
+    can_channel__bsp__err_kind_q err_kind_q(
+        .d(err_kind_q__d),
+        .q(err_kind_q__q),
+        .clock(err_kind_q__clock)
+    );
+    can_channel__bsp__err_field_q err_field_q(
+        .d(err_field_q__d),
+        .q(err_field_q__q),
+        .clock(err_field_q__clock)
+    );
+    can_channel__bsp__err_tx_q err_tx_q(
+        .d(err_tx_q__d),
+        .q(err_tx_q__q),
+        .clock(err_tx_q__clock)
+    );
+    can_channel__bsp__alc_q alc_q(
+        .d(alc_q__d),
+        .q(alc_q__q),
+        .clock(alc_q__clock)
+    );
+    can_channel__bsp__cnt_bit_q cnt_bit_q(
+        .d(cnt_bit_q__d),
+        .q(cnt_bit_q__q),
+        .clock(cnt_bit_q__clock)
+    );
+    can_channel__bsp__cnt_stuff_q cnt_stuff_q(
+        .d(cnt_stuff_q__d),
+        .q(cnt_stuff_q__q),
+        .clock(cnt_stuff_q__clock)
+    );
+    can_channel__bsp__cnt_crc_q cnt_crc_q(
+        .d(cnt_crc_q__d),
+        .q(cnt_crc_q__q),
+        .clock(cnt_crc_q__clock)
+    );
+    can_channel__bsp__cnt_form_q cnt_form_q(
+        .d(cnt_form_q__d),
+        .q(cnt_form_q__q),
+        .clock(cnt_form_q__clock)
+    );
+    can_channel__bsp__cnt_ack_q cnt_ack_q(
+        .d(cnt_ack_q__d),
+        .q(cnt_ack_q__q),
+        .clock(cnt_ack_q__clock)
+    );
     can_channel__bsp__crc_step crc_step(
         .crc(crc_step__crc),
         .data_bit(crc_step__data_bit),
@@ -701,6 +960,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         dom_cnt__clock = clk;
         delim_first__clock = clk;
         ack_passive_pending__clock = clk;
+        abort_pending__clock = clk;
+        tx_failed_q__clock = clk;
+        err_valid_q__clock = clk;
+        err_kind_q__clock = clk;
+        err_field_q__clock = clk;
+        err_tx_q__clock = clk;
+        alc_q__clock = clk;
+        cnt_bit_q__clock = clk;
+        cnt_stuff_q__clock = clk;
+        cnt_crc_q__clock = clk;
+        cnt_form_q__clock = clk;
+        cnt_ack_q__clock = clk;
         txf_id__clock = clk;
         txf_ide__clock = clk;
         txf_rtr__clock = clk;
@@ -738,6 +1009,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         dom_cnt__d = dom_cnt__q;
         delim_first__d = delim_first__q;
         ack_passive_pending__d = ack_passive_pending__q;
+        abort_pending__d = abort_pending__q;
+        tx_failed_q__d = tx_failed_q__q;
+        err_valid_q__d = err_valid_q__q;
+        err_kind_q__d = err_kind_q__q;
+        err_field_q__d = err_field_q__q;
+        err_tx_q__d = err_tx_q__q;
+        alc_q__d = alc_q__q;
+        cnt_bit_q__d = cnt_bit_q__q;
+        cnt_stuff_q__d = cnt_stuff_q__q;
+        cnt_crc_q__d = cnt_crc_q__q;
+        cnt_form_q__d = cnt_form_q__q;
+        cnt_ack_q__d = cnt_ack_q__q;
         txf_id__d = txf_id__q;
         txf_ide__d = txf_ide__q;
         txf_rtr__d = txf_rtr__q;
@@ -773,7 +1056,30 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         crc_ok_n = crc_ok__q;
         flag_passive_n = flag_passive__q;
         bus_bit = sampled;
-        start_ok = pending__q && ~fc__bus_off;
+        listen_only = mode == n2_1;
+        ack_check_off = mode[32'h1];
+        loopback = mode == n2_3m;
+        start_ok = pending__q && ~fc__bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
+        stuff_err = 1'b0;
+        stuff_as_bit = 1'b0;
+        bit_err = 1'b0;
+        form_err = 1'b0;
+        crc_err = 1'b0;
+        lost = 1'b0;
+        tx_failed_q__d = 1'b0;
+        err_valid_q__d = 1'b0;
+        if (~pending__q) begin
+            abort_pending__d = 1'b0;
+        end
+        if (tx_abort && pending__q) begin
+            if (~is_tx__q && tx_q__q) begin
+                pending__d = 1'b0;
+                tx_failed_q__d = 1'b1;
+            end
+            else begin
+                abort_pending__d = 1'b1;
+            end
+        end
         is_stuff_bit = stuff_en__q && (stuff_cnt__q == n3_5);
         sof = 1'b0;
         sof_as_tx = 1'b0;
@@ -804,6 +1110,29 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         else begin
             data_bits = ((dlc_n[(32'h0)+:(3)]) & 7'h7f) << 32'h3;
         end
+        case (field_q__q)
+            Field__IdA:
+                begin
+                    alc_n = bit_cnt__q[(32'h0)+:(5)];
+                end
+            Field__SrrRtr:
+                begin
+                    alc_n = n5_11;
+                end
+            Field__Ide:
+                begin
+                    alc_n = n5_12;
+                end
+            Field__IdB:
+                begin
+                    alc_n = n5_13 + bit_cnt__q[(32'h0)+:(5)];
+                end
+            default:
+                begin
+                    alc_n = n5_31;
+                end
+        endcase
+        err_kind_n = k3_crc;
         crc_rx_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
         data_wr_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
         in_arbitration = 1'b0;
@@ -888,6 +1217,10 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             if (is_stuff_bit) begin
                 if (sampled == stuff_last__q) begin
                     error = 1'b1;
+                    stuff_err = 1'b1;
+                    if (is_tx__q && ~(last_bit_arb__q && tx_q__q)) begin
+                        stuff_as_bit = 1'b1;
+                    end
                     if (is_tx__q && last_bit_arb__q && tx_q__q) begin
                         tec_exempt = 1'b1;
                     end
@@ -915,15 +1248,19 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                     if (in_arbitration && tx_q__q) begin
                         is_tx_n = 1'b0;
                         arb_lost_q__d = 1'b1;
+                        lost = 1'b1;
+                        alc_q__d = alc_n;
                     end
                     else if ((field_q__q == Field__AckSlot) && tx_q__q) begin
                     end
                     else begin
                         error = 1'b1;
+                        bit_err = 1'b1;
                     end
                 end
                 if (~is_tx__q && (field_q__q == Field__AckSlot) && ~tx_q__q && sampled) begin
                     error = 1'b1;
+                    bit_err = 1'b1;
                 end
                 case (field_q__q)
                     Field__Integrating:
@@ -1086,12 +1423,13 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                             stuff_en_n = 1'b0;
                             if (~sampled) begin
                                 error = 1'b1;
+                                form_err = 1'b1;
                             end
                             field_n = Field__AckSlot;
                         end
                     Field__AckSlot:
                         begin
-                            if (is_tx__q && sampled) begin
+                            if (is_tx__q && sampled && ~ack_check_off) begin
                                 error = 1'b1;
                                 ack_error = 1'b1;
                             end
@@ -1104,9 +1442,11 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                         begin
                             if (~sampled) begin
                                 error = 1'b1;
+                                form_err = 1'b1;
                             end
                             else if (~crc_ok__q && ~is_tx__q) begin
                                 error = 1'b1;
+                                crc_err = 1'b1;
                             end
                             field_n = Field__Eof;
                             bit_cnt_n = n7_0;
@@ -1120,10 +1460,11 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                 end
                                 else begin
                                     error = 1'b1;
+                                    form_err = 1'b1;
                                 end
                             end
                             else begin
-                                if ((bit_cnt__q == n7_5) && ~is_tx__q) begin
+                                if ((bit_cnt__q == n7_5) && (~is_tx__q || loopback)) begin
                                     rx_valid_q__d = 1'b1;
                                     rx_id_q__d = rxs_id__q;
                                     rx_ide_q__d = rxs_ide__q;
@@ -1182,7 +1523,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                         end
                     Field__OverloadFlag:
                         begin
-                            if (sampled) begin
+                            if (sampled && ~listen_only) begin
                                 flag_error = 1'b1;
                             end
                             else if (bit_cnt__q == n7_5) begin
@@ -1224,6 +1565,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                 end
                                 else begin
                                     error = 1'b1;
+                                    form_err = 1'b1;
                                 end
                             end
                             else if (bit_cnt__q == n7_7) begin
@@ -1260,6 +1602,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                 end
                                 else begin
                                     error = 1'b1;
+                                    form_err = 1'b1;
                                 end
                             end
                             else if (bit_cnt__q == n7_7) begin
@@ -1310,6 +1653,21 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 rxs_data__d = zero64;
                 rxs_rtr__d = 1'b0;
             end
+            if (stuff_as_bit || bit_err || flag_error) begin
+                err_kind_n = k3_bit;
+            end
+            else if (stuff_err) begin
+                err_kind_n = k3_stuff;
+            end
+            else if (form_err) begin
+                err_kind_n = k3_form;
+            end
+            else if (ack_error) begin
+                err_kind_n = k3_ack;
+            end
+            else if (crc_err) begin
+                err_kind_n = k3_crc;
+            end
             if (error) begin
                 if (is_tx_n) begin
                     if (ack_error && fc__error_passive) begin
@@ -1332,12 +1690,45 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 end
             end
             passive_after = fc__error_passive || (ev_tec_add8 && (fc__tec >= n9_120)) || (ev_rec_add1 && (fc__rec >= n8_127)) || (ev_rec_add8 && (fc__rec >= n8_120));
-            bus_off_after = ev_tec_add8 && (fc__tec >= n9_248) && ~fc__bus_off;
+            bus_off_after = ~listen_only && ev_tec_add8 && (fc__tec >= n9_248) && ~fc__bus_off;
             if (error || flag_error) begin
                 field_n = Field__ErrorFlag;
                 bit_cnt_n = n7_0;
                 stuff_en_n = 1'b0;
-                flag_passive_n = passive_after;
+                flag_passive_n = passive_after || listen_only;
+                err_valid_q__d = 1'b1;
+                err_kind_q__d = err_kind_n;
+                err_field_q__d = field_q__q;
+                err_tx_q__d = is_tx__q;
+                if (err_kind_n == k3_bit) begin
+                    if (cnt_bit_q__q != n8_255) begin
+                        cnt_bit_q__d = cnt_bit_q__q + n8_1;
+                    end
+                end
+                if (err_kind_n == k3_stuff) begin
+                    if (cnt_stuff_q__q != n8_255) begin
+                        cnt_stuff_q__d = cnt_stuff_q__q + n8_1;
+                    end
+                end
+                if (err_kind_n == k3_crc) begin
+                    if (cnt_crc_q__q != n8_255) begin
+                        cnt_crc_q__d = cnt_crc_q__q + n8_1;
+                    end
+                end
+                if (err_kind_n == k3_form) begin
+                    if (cnt_form_q__q != n8_255) begin
+                        cnt_form_q__d = cnt_form_q__q + n8_1;
+                    end
+                end
+                if (err_kind_n == k3_ack) begin
+                    if (cnt_ack_q__q != n8_255) begin
+                        cnt_ack_q__d = cnt_ack_q__q + n8_1;
+                    end
+                end
+            end
+            if (pending__q && is_tx__q && (lost || error || flag_error) && (single_shot || abort_pending__q)) begin
+                pending__d = 1'b0;
+                tx_failed_q__d = 1'b1;
             end
             if (bus_off_after) begin
                 field_n = Field__BusOff;
@@ -1354,11 +1745,11 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             crc_ok__d = crc_ok_n;
             flag_passive__d = flag_passive_n;
         end
-        fc__tec_add8 = ev_tec_add8;
-        fc__rec_add1 = ev_rec_add1;
-        fc__rec_add8 = ev_rec_add8;
-        fc__tx_success = ev_tx_success;
-        fc__rx_success = ev_rx_success;
+        fc__tec_add8 = ev_tec_add8 && ~listen_only;
+        fc__rec_add1 = ev_rec_add1 && ~listen_only;
+        fc__rec_add8 = ev_rec_add8 && ~listen_only;
+        fc__tx_success = ev_tx_success && ~listen_only;
+        fc__rx_success = ev_rx_success && ~listen_only;
         fc__recovered = ev_recovered;
         id_b_idx = n5_17 - bit_cnt_n[(32'h0)+:(5)];
         if (txf_ide__q) begin
@@ -1441,7 +1832,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 end
         endcase
         if (sample) begin
-            tx_bit__d = tx_bit_n;
+            tx_bit__d = tx_bit_n || listen_only;
         end
         if (bit_start) begin
             if (hard_sync && (field_q__q == Field__Idle)) begin
@@ -1460,7 +1851,10 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 tx_q__d = tx_bit__q;
             end
         end
-        if (tx_req && ~pending__q) begin
+        if (tx_req && ~pending__q && listen_only) begin
+            tx_failed_q__d = 1'b1;
+        end
+        else if (tx_req && ~pending__q) begin
             pending__d = 1'b1;
             txf_id__d = tx_id;
             txf_ide__d = tx_ide;
@@ -1508,6 +1902,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         tec = fc__tec;
         rec = fc__rec;
         err_state = fc__err_state;
+        tx_failed = tx_failed_q__q;
+        err_warning = (fc__tec >= ((ewl) & 9'h1ff)) || (fc__rec >= ewl);
+        err_valid = err_valid_q__q;
+        err_kind = err_kind_q__q;
+        err_field = err_field_q__q;
+        err_tx = err_tx_q__q;
+        alc = alc_q__q;
+        cnt_bit = cnt_bit_q__q;
+        cnt_stuff = cnt_stuff_q__q;
+        cnt_crc = cnt_crc_q__q;
+        cnt_form = cnt_form_q__q;
+        cnt_ack = cnt_ack_q__q;
         if (rst) begin
             field_q__d = Field__Integrating;
             bit_cnt__d = n7_0;
@@ -1526,6 +1932,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             dom_cnt__d = zero3;
             delim_first__d = 1'b0;
             ack_passive_pending__d = 1'b0;
+            abort_pending__d = 1'b0;
+            tx_failed_q__d = 1'b0;
+            err_valid_q__d = 1'b0;
+            err_kind_q__d = zero3;
+            err_field_q__d = Field__Integrating;
+            err_tx_q__d = 1'b0;
+            alc_q__d = zero5;
+            cnt_bit_q__d = zero8;
+            cnt_stuff_q__d = zero8;
+            cnt_crc_q__d = zero8;
+            cnt_form_q__d = zero8;
+            cnt_ack_q__d = zero8;
             rx_valid_q__d = 1'b0;
             tx_done_q__d = 1'b0;
             arb_lost_q__d = 1'b0;
@@ -1538,6 +1956,22 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     end
     
 endmodule // can_channel__bsp
+
+
+module can_channel__bsp__abort_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__abort_pending
 
 
 module can_channel__bsp__ack_passive_pending(d,q,clock);
@@ -1554,6 +1988,22 @@ module can_channel__bsp__ack_passive_pending(d,q,clock);
     end
           
 endmodule // can_channel__bsp__ack_passive_pending
+
+
+module can_channel__bsp__alc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__alc_q
 
 
 module can_channel__bsp__arb_lost_q(d,q,clock);
@@ -1586,6 +2036,86 @@ module can_channel__bsp__bit_cnt(d,q,clock);
     end
           
 endmodule // can_channel__bsp__bit_cnt
+
+
+module can_channel__bsp__cnt_ack_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__cnt_ack_q
+
+
+module can_channel__bsp__cnt_bit_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__cnt_bit_q
+
+
+module can_channel__bsp__cnt_crc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__cnt_crc_q
+
+
+module can_channel__bsp__cnt_form_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__cnt_form_q
+
+
+module can_channel__bsp__cnt_stuff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__cnt_stuff_q
 
 
 module can_channel__bsp__crc(d,q,clock);
@@ -1694,6 +2224,95 @@ module can_channel__bsp__dom_cnt(d,q,clock);
     end
           
 endmodule // can_channel__bsp__dom_cnt
+
+
+module can_channel__bsp__err_field_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__err_field_q
+
+
+module can_channel__bsp__err_kind_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__err_kind_q
+
+
+module can_channel__bsp__err_tx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__err_tx_q
+
+
+module can_channel__bsp__err_valid_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__err_valid_q
 
 
 module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,tec,rec,err_state,error_passive,bus_off);
@@ -2228,6 +2847,22 @@ module can_channel__bsp__tx_done_q(d,q,clock);
     end
           
 endmodule // can_channel__bsp__tx_done_q
+
+
+module can_channel__bsp__tx_failed_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_failed_q
 
 
 module can_channel__bsp__tx_q(d,q,clock);
@@ -2786,6 +3421,314 @@ module can_channel__btl__tseg2_len(d,q,clock);
     end
           
 endmodule // can_channel__btl__tseg2_len
+
+
+module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp,tseg1,tseg2,sjw,triple,mode,ewl,single_shot);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  [5:0] cfg_brp;
+    input wire  [3:0] cfg_tseg1;
+    input wire  [2:0] cfg_tseg2;
+    input wire  [1:0] cfg_sjw;
+    input wire  cfg_triple;
+    input wire  [1:0] cfg_mode;
+    input wire  [7:0] cfg_ewl;
+    input wire  cfg_single_shot;
+    output reg  [5:0] brp;
+    output reg  [3:0] tseg1;
+    output reg  [2:0] tseg2;
+    output reg  [1:0] sjw;
+    output reg  triple;
+    output reg  [1:0] mode;
+    output reg  [7:0] ewl;
+    output reg  single_shot;
+    
+    // Constant declarations
+    localparam  n3_5 = 3'b101;
+    localparam  n4_5 = 4'h5;
+    localparam  n4_0 = 4'h0;
+    localparam  n4_1 = 4'h1;
+    localparam  n4_2 = 4'h2;
+    localparam  n6_0 = 6'b0;
+    localparam  n6_1 = 6'b1;
+    
+    // Stub signals
+    reg  [5:0] brp_q__d;
+    wire  [5:0] brp_q__q;
+    reg  brp_q__clock;
+    reg  [3:0] tseg1_q__d;
+    wire  [3:0] tseg1_q__q;
+    reg  tseg1_q__clock;
+    reg  [2:0] tseg2_q__d;
+    wire  [2:0] tseg2_q__q;
+    reg  tseg2_q__clock;
+    reg  [1:0] sjw_q__d;
+    wire  [1:0] sjw_q__q;
+    reg  sjw_q__clock;
+    reg  triple_q__d;
+    wire  triple_q__q;
+    reg  triple_q__clock;
+    reg  [1:0] mode_q__d;
+    wire  [1:0] mode_q__q;
+    reg  mode_q__clock;
+    reg  [7:0] ewl_q__d;
+    wire  [7:0] ewl_q__q;
+    reg  ewl_q__clock;
+    reg  single_shot_q__d;
+    wire  single_shot_q__q;
+    reg  single_shot_q__clock;
+    
+    // Local signals
+    reg  [3:0] tseg1_min;
+    reg  [3:0] tseg1_floor;
+    reg  [3:0] tseg1_raised;
+    reg  [3:0] tseg1_clamped;
+    reg  [1:0] sjw_clamped;
+    
+    // Sub module instances
+    can_channel__cfg_regs__brp_q brp_q(
+        .d(brp_q__d),
+        .q(brp_q__q),
+        .clock(brp_q__clock)
+    );
+    can_channel__cfg_regs__tseg1_q tseg1_q(
+        .d(tseg1_q__d),
+        .q(tseg1_q__q),
+        .clock(tseg1_q__clock)
+    );
+    can_channel__cfg_regs__tseg2_q tseg2_q(
+        .d(tseg2_q__d),
+        .q(tseg2_q__q),
+        .clock(tseg2_q__clock)
+    );
+    can_channel__cfg_regs__sjw_q sjw_q(
+        .d(sjw_q__d),
+        .q(sjw_q__q),
+        .clock(sjw_q__clock)
+    );
+    can_channel__cfg_regs__triple_q triple_q(
+        .d(triple_q__d),
+        .q(triple_q__q),
+        .clock(triple_q__clock)
+    );
+    can_channel__cfg_regs__mode_q mode_q(
+        .d(mode_q__d),
+        .q(mode_q__q),
+        .clock(mode_q__clock)
+    );
+    can_channel__cfg_regs__ewl_q ewl_q(
+        .d(ewl_q__d),
+        .q(ewl_q__q),
+        .clock(ewl_q__clock)
+    );
+    can_channel__cfg_regs__single_shot_q single_shot_q(
+        .d(single_shot_q__d),
+        .q(single_shot_q__q),
+        .clock(single_shot_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        brp_q__clock = clk;
+        tseg1_q__clock = clk;
+        tseg2_q__clock = clk;
+        sjw_q__clock = clk;
+        triple_q__clock = clk;
+        mode_q__clock = clk;
+        ewl_q__clock = clk;
+        single_shot_q__clock = clk;
+        brp_q__d = brp_q__q;
+        tseg1_q__d = tseg1_q__q;
+        tseg2_q__d = tseg2_q__q;
+        sjw_q__d = sjw_q__q;
+        triple_q__d = triple_q__q;
+        mode_q__d = mode_q__q;
+        ewl_q__d = ewl_q__q;
+        single_shot_q__d = single_shot_q__q;
+        if (cfg_tseg2 < n3_5) begin
+            tseg1_min = n4_5 - ((cfg_tseg2) & 4'hf);
+        end
+        else begin
+            tseg1_min = n4_0;
+        end
+        if (cfg_brp == n6_0) begin
+            tseg1_floor = n4_2;
+        end
+        else if (cfg_brp == n6_1) begin
+            tseg1_floor = n4_1;
+        end
+        else begin
+            tseg1_floor = n4_0;
+        end
+        if (cfg_tseg1 < tseg1_min) begin
+            tseg1_raised = tseg1_min;
+        end
+        else begin
+            tseg1_raised = cfg_tseg1;
+        end
+        if (tseg1_raised < tseg1_floor) begin
+            tseg1_clamped = tseg1_floor;
+        end
+        else begin
+            tseg1_clamped = tseg1_raised;
+        end
+        if (((cfg_sjw) & 3'h7) > cfg_tseg2) begin
+            sjw_clamped = cfg_tseg2[(32'h0)+:(2)];
+        end
+        else begin
+            sjw_clamped = cfg_sjw;
+        end
+        if (rst) begin
+            brp_q__d = cfg_brp;
+            tseg1_q__d = tseg1_clamped;
+            tseg2_q__d = cfg_tseg2;
+            sjw_q__d = sjw_clamped;
+            triple_q__d = cfg_triple;
+            mode_q__d = cfg_mode;
+            ewl_q__d = cfg_ewl;
+            single_shot_q__d = cfg_single_shot;
+        end
+        brp = brp_q__q;
+        tseg1 = tseg1_q__q;
+        tseg2 = tseg2_q__q;
+        sjw = sjw_q__q;
+        triple = triple_q__q;
+        mode = mode_q__q;
+        ewl = ewl_q__q;
+        single_shot = single_shot_q__q;
+    end
+    
+endmodule // can_channel__cfg_regs
+
+
+module can_channel__cfg_regs__brp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__brp_q
+
+
+module can_channel__cfg_regs__ewl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__ewl_q
+
+
+module can_channel__cfg_regs__mode_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__mode_q
+
+
+module can_channel__cfg_regs__single_shot_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__single_shot_q
+
+
+module can_channel__cfg_regs__sjw_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__sjw_q
+
+
+module can_channel__cfg_regs__triple_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__triple_q
+
+
+module can_channel__cfg_regs__tseg1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__tseg1_q
+
+
+module can_channel__cfg_regs__tseg2_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__tseg2_q
 
 
 module can_channel__rx_sync(clk,rst,rx,rx_s);

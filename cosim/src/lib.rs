@@ -9,5 +9,8 @@ pub mod model;
 pub mod system;
 pub mod trace;
 
-pub use engine::{BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, Probes};
+pub use engine::{
+    BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, ControllerConfig, Diagnostics, Mode,
+    Probes,
+};
 pub use frame::Frame;

@@ -83,6 +83,57 @@ impl BitTiming {
     }
 }
 
+/// Operating mode (timing contract §7).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Mode {
+    /// ISO 11898-1 operation.
+    #[default]
+    Normal = 0,
+    /// Bus monitoring: completely passive (CanKingdom "Silent").
+    ListenOnly = 1,
+    /// A recessive ACK slot is accepted (no receiver needed).
+    SelfTest = 2,
+    /// Internal loop-back: hears only itself, `tx` pin recessive.
+    Loopback = 3,
+}
+
+impl Mode {
+    /// The `cfg_mode` encoding.
+    pub fn code(self) -> u8 {
+        self as u8
+    }
+    /// Decode a `cfg_mode` value (two bits).
+    pub fn from_code(code: u8) -> Mode {
+        match code & 3 {
+            0 => Mode::Normal,
+            1 => Mode::ListenOnly,
+            2 => Mode::SelfTest,
+            _ => Mode::Loopback,
+        }
+    }
+}
+
+/// Controller configuration beyond bit timing (captured in reset mode, §6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ControllerConfig {
+    /// Operating mode.
+    pub mode: Mode,
+    /// Error warning limit (ISO 11898-1 default 96).
+    pub ewl: u8,
+    /// No automatic retransmission.
+    pub single_shot: bool,
+}
+
+impl Default for ControllerConfig {
+    fn default() -> Self {
+        ControllerConfig {
+            mode: Mode::Normal,
+            ewl: 96,
+            single_shot: false,
+        }
+    }
+}
+
 /// Everything a channel samples at one clock edge.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ChannelInputs {
@@ -90,12 +141,16 @@ pub struct ChannelInputs {
     pub rst: bool,
     /// The CAN bus as seen by this node's receiver (`true` = recessive).
     pub rx: bool,
-    /// Shared bit-timing configuration.
+    /// Shared bit-timing configuration (captured while `rst`).
     pub timing: BitTiming,
+    /// Mode, warning limit, single shot (captured while `rst`).
+    pub config: ControllerConfig,
     /// One-clock request: latch `tx_frame` and transmit it.
     pub tx_req: bool,
     /// Frame to transmit; sampled when `tx_req` is high.
     pub tx_frame: Frame,
+    /// One-clock request: abort the pending frame (§8).
+    pub tx_abort: bool,
 }
 
 /// Named internal signals compared clock by clock in co-simulation.
@@ -115,6 +170,29 @@ pub struct Probes {
     pub err_state: u8,
 }
 
+/// Host-visible diagnostics (timing contract §9).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Diagnostics {
+    /// TEC or REC at or above the error warning limit.
+    pub err_warning: bool,
+    /// One-clock pulse: an error was detected and captured.
+    pub err_valid: bool,
+    /// Kind of the last error: 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK.
+    pub err_kind: u8,
+    /// Field code at the last error.
+    pub err_field: u8,
+    /// The node was transmitter at the last error.
+    pub err_tx: bool,
+    /// Arbitration-lost bit position (0..=31).
+    pub alc: u8,
+    /// Errors by kind, saturating at 255: bit, stuff, CRC, form, ACK.
+    pub cnt_bit: u8,
+    pub cnt_stuff: u8,
+    pub cnt_crc: u8,
+    pub cnt_form: u8,
+    pub cnt_ack: u8,
+}
+
 /// Everything a channel drives, right after a clock edge.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ChannelOutputs {
@@ -126,12 +204,17 @@ pub struct ChannelOutputs {
     pub tx_done: bool,
     /// One-clock pulse: arbitration was lost (the frame stays pending and is retried).
     pub arb_lost: bool,
+    /// One-clock pulse: the pending frame was dropped (single shot, abort, or a
+    /// request refused in listen-only mode).
+    pub tx_failed: bool,
     /// One-clock pulse: `rx_frame` holds a newly received valid frame.
     pub rx_valid: bool,
     /// Last received frame; changes only together with `rx_valid`.
     pub rx_frame: Frame,
     /// Probe signals.
     pub probes: Probes,
+    /// Diagnostics registers.
+    pub diag: Diagnostics,
 }
 
 /// One CAN channel, simulated clock by clock.

@@ -4,3 +4,4 @@ pub mod bsp;
 pub mod btl;
 pub mod bus_sampling;
 pub mod can_channel;
+pub mod config;

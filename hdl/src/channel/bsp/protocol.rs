@@ -34,6 +34,10 @@ pub struct ProtocolController {
     // to the bit timing logic and the pin
     pub hard_sync_enable: Signal<Out, Bit>,
     pub tx: Signal<Out, Bit>,
+    // configuration (held, from the configuration registers)
+    pub mode: Signal<In, Bits<2>>,
+    pub ewl: Signal<In, Bits<8>>,
+    pub single_shot: Signal<In, Bit>,
     // host transmit interface
     pub tx_req: Signal<In, Bit>,
     pub tx_id: Signal<In, Bits<29>>,
@@ -41,7 +45,9 @@ pub struct ProtocolController {
     pub tx_rtr: Signal<In, Bit>,
     pub tx_dlc: Signal<In, Bits<4>>,
     pub tx_data: Signal<In, Bits<64>>,
+    pub tx_abort: Signal<In, Bit>,
     pub tx_pending: Signal<Out, Bit>,
+    pub tx_failed: Signal<Out, Bit>,
     pub tx_done: Signal<Out, Bit>,
     pub arb_lost: Signal<Out, Bit>,
     // host receive interface
@@ -56,6 +62,57 @@ pub struct ProtocolController {
     pub tec: Signal<Out, Bits<9>>,
     pub rec: Signal<Out, Bits<8>>,
     pub err_state: Signal<Out, Bits<2>>,
+    // diagnostics (contract §9)
+    pub err_warning: Signal<Out, Bit>,
+    pub err_valid: Signal<Out, Bit>,
+    pub err_kind: Signal<Out, Bits<3>>,
+    pub err_field: Signal<Out, Field>,
+    pub err_tx: Signal<Out, Bit>,
+    pub alc: Signal<Out, Bits<5>>,
+    pub cnt_bit: Signal<Out, Bits<8>>,
+    pub cnt_stuff: Signal<Out, Bits<8>>,
+    pub cnt_crc: Signal<Out, Bits<8>>,
+    pub cnt_form: Signal<Out, Bits<8>>,
+    pub cnt_ack: Signal<Out, Bits<8>>,
+    // transmit control and diagnostics state
+    abort_pending: DFF<Bit>,
+    tx_failed_q: DFF<Bit>,
+    err_valid_q: DFF<Bit>,
+    err_kind_q: DFF<Bits<3>>,
+    err_field_q: DFF<Field>,
+    err_tx_q: DFF<Bit>,
+    alc_q: DFF<Bits<5>>,
+    cnt_bit_q: DFF<Bits<8>>,
+    cnt_stuff_q: DFF<Bits<8>>,
+    cnt_crc_q: DFF<Bits<8>>,
+    cnt_form_q: DFF<Bits<8>>,
+    cnt_ack_q: DFF<Bits<8>>,
+    listen_only: Signal<Local, Bit>,
+    ack_check_off: Signal<Local, Bit>,
+    loopback: Signal<Local, Bit>,
+    stuff_err: Signal<Local, Bit>,
+    stuff_as_bit: Signal<Local, Bit>,
+    bit_err: Signal<Local, Bit>,
+    form_err: Signal<Local, Bit>,
+    crc_err: Signal<Local, Bit>,
+    lost: Signal<Local, Bit>,
+    err_kind_n: Signal<Local, Bits<3>>,
+    alc_n: Signal<Local, Bits<5>>,
+    k3_bit: Constant<Bits<3>>,
+    k3_stuff: Constant<Bits<3>>,
+    k3_crc: Constant<Bits<3>>,
+    k3_form: Constant<Bits<3>>,
+    k3_ack: Constant<Bits<3>>,
+    n2_1: Constant<Bits<2>>,
+    n2_3m: Constant<Bits<2>>,
+    n5_11: Constant<Bits<5>>,
+    n5_12: Constant<Bits<5>>,
+    n5_13: Constant<Bits<5>>,
+    n5_31: Constant<Bits<5>>,
+    n8_1: Constant<Bits<8>>,
+    n8_255: Constant<Bits<8>>,
+    zero5: Constant<Bits<5>>,
+    zero8: Constant<Bits<8>>,
     // sub-blocks
     crc_step: Crc15Step,
     fc: FaultConfinement,
@@ -198,6 +255,22 @@ impl Default for ProtocolController {
             tx_dlc: Default::default(),
             tx_data: Default::default(),
             tx_pending: Default::default(),
+            tx_abort: Default::default(),
+            tx_failed: Default::default(),
+            mode: Default::default(),
+            ewl: Default::default(),
+            single_shot: Default::default(),
+            err_warning: Default::default(),
+            err_valid: Default::default(),
+            err_kind: Default::default(),
+            err_field: Default::default(),
+            err_tx: Default::default(),
+            alc: Default::default(),
+            cnt_bit: Default::default(),
+            cnt_stuff: Default::default(),
+            cnt_crc: Default::default(),
+            cnt_form: Default::default(),
+            cnt_ack: Default::default(),
             tx_done: Default::default(),
             arb_lost: Default::default(),
             rx_valid: Default::default(),
@@ -210,6 +283,44 @@ impl Default for ProtocolController {
             tec: Default::default(),
             rec: Default::default(),
             err_state: Default::default(),
+            abort_pending: Default::default(),
+            tx_failed_q: Default::default(),
+            err_valid_q: Default::default(),
+            err_kind_q: Default::default(),
+            err_field_q: Default::default(),
+            err_tx_q: Default::default(),
+            alc_q: Default::default(),
+            cnt_bit_q: Default::default(),
+            cnt_stuff_q: Default::default(),
+            cnt_crc_q: Default::default(),
+            cnt_form_q: Default::default(),
+            cnt_ack_q: Default::default(),
+            listen_only: Default::default(),
+            ack_check_off: Default::default(),
+            loopback: Default::default(),
+            stuff_err: Default::default(),
+            stuff_as_bit: Default::default(),
+            bit_err: Default::default(),
+            form_err: Default::default(),
+            crc_err: Default::default(),
+            lost: Default::default(),
+            err_kind_n: Default::default(),
+            alc_n: Default::default(),
+            k3_bit: Constant::new(1.into()),
+            k3_stuff: Constant::new(2.into()),
+            k3_crc: Constant::new(3.into()),
+            k3_form: Constant::new(4.into()),
+            k3_ack: Constant::new(5.into()),
+            n2_1: Constant::new(1.into()),
+            n2_3m: Constant::new(3.into()),
+            n5_11: Constant::new(11.into()),
+            n5_12: Constant::new(12.into()),
+            n5_13: Constant::new(13.into()),
+            n5_31: Constant::new(31.into()),
+            n8_1: Constant::new(1.into()),
+            n8_255: Constant::new(255.into()),
+            zero5: Constant::new(0.into()),
+            zero8: Constant::new(0.into()),
             crc_step: Default::default(),
             fc: Default::default(),
             field_q: Default::default(),
@@ -331,7 +442,9 @@ impl Logic for ProtocolController {
         dff_setup!(
             self, clk, field_q, bit_cnt, is_tx, pending, stuff_cnt, stuff_last, stuff_en, crc,
             crc_ok, flag_passive, recovery_cnt, tx_q, tx_bit, last_bit_arb, dom_cnt, delim_first,
-            ack_passive_pending, txf_id, txf_ide, txf_rtr, txf_dlc,
+            ack_passive_pending, abort_pending, tx_failed_q, err_valid_q, err_kind_q,
+            err_field_q, err_tx_q, alc_q, cnt_bit_q, cnt_stuff_q, cnt_crc_q, cnt_form_q,
+            cnt_ack_q, txf_id, txf_ide, txf_rtr, txf_dlc,
             txf_data, rxs_id, rxs_srr_rtr, rxs_ide, rxs_rtr, rxs_dlc, rxs_data, data_len,
             rx_valid_q, tx_done_q, arb_lost_q, rx_id_q, rx_ide_q, rx_rtr_q, rx_dlc_q, rx_data_q
         );
@@ -352,7 +465,36 @@ impl Logic for ProtocolController {
         self.crc_ok_n.next = self.crc_ok.q.val();
         self.flag_passive_n.next = self.flag_passive.q.val();
         self.bus_bit.next = self.sampled.val().into();
-        self.start_ok.next = self.pending.q.val() && !self.fc.bus_off.val();
+        // Operating mode (contract §7).
+        self.listen_only.next = self.mode.val() == self.n2_1.val();
+        self.ack_check_off.next = self.mode.val().get_bit(1);
+        self.loopback.next = self.mode.val() == self.n2_3m.val();
+        // Contract §8: nothing starts in listen-only mode or while an abort is due.
+        self.start_ok.next = self.pending.q.val()
+            && !self.fc.bus_off.val()
+            && !self.listen_only.val()
+            && !self.tx_abort.val()
+            && !self.abort_pending.q.val();
+        self.stuff_err.next = false;
+        self.stuff_as_bit.next = false;
+        self.bit_err.next = false;
+        self.form_err.next = false;
+        self.crc_err.next = false;
+        self.lost.next = false;
+        self.tx_failed_q.d.next = false;
+        self.err_valid_q.d.next = false;
+        if !self.pending.q.val() {
+            self.abort_pending.d.next = false;
+        }
+        // Transmit abort (contract §8): immediate unless the frame is on the bus.
+        if self.tx_abort.val() && self.pending.q.val() {
+            if !self.is_tx.q.val() && self.tx_q.q.val() {
+                self.pending.d.next = false;
+                self.tx_failed_q.d.next = true;
+            } else {
+                self.abort_pending.d.next = true;
+            }
+        }
         self.is_stuff_bit.next =
             self.stuff_en.q.val() && (self.stuff_cnt.q.val() == self.n3_5.val());
         self.sof.next = false;
@@ -384,6 +526,25 @@ impl Logic for ProtocolController {
         } else {
             self.data_bits.next = bit_cast::<7, 3>(self.dlc_n.val().get_bits::<3>(0)) << 3;
         }
+        // Arbitration-lost position (contract §9).
+        match self.field_q.q.val() {
+            Field::IdA => {
+                self.alc_n.next = self.bit_cnt.q.val().get_bits::<5>(0);
+            }
+            Field::SrrRtr => {
+                self.alc_n.next = self.n5_11.val();
+            }
+            Field::Ide => {
+                self.alc_n.next = self.n5_12.val();
+            }
+            Field::IdB => {
+                self.alc_n.next = self.n5_13.val() + self.bit_cnt.q.val().get_bits::<5>(0);
+            }
+            _ => {
+                self.alc_n.next = self.n5_31.val();
+            }
+        }
+        self.err_kind_n.next = self.k3_crc.val();
         self.crc_rx_idx.next = self.n4_14.val() - self.bit_cnt.q.val().get_bits::<4>(0);
         self.data_wr_idx.next = self.n6_63.val() - self.bit_cnt.q.val().get_bits::<6>(0);
 
@@ -457,6 +618,12 @@ impl Logic for ProtocolController {
                 // 10.5: a stuff bit must be the complement of the five before it.
                 if self.sampled.val() == self.stuff_last.q.val() {
                     self.error.next = true;
+                    self.stuff_err.next = true;
+                    // A transmitter reads back its own stuff bit: a bit error, except
+                    // the recessive stuff bit in arbitration (rule c exception 2).
+                    if self.is_tx.q.val() && !(self.last_bit_arb.q.val() && self.tx_q.q.val()) {
+                        self.stuff_as_bit.next = true;
+                    }
                     // 12.1.4.2 exception: recessive stuff bit read dominant in arbitration.
                     if self.is_tx.q.val() && self.last_bit_arb.q.val() && self.tx_q.q.val() {
                         self.tec_exempt.next = true;
@@ -486,10 +653,13 @@ impl Logic for ProtocolController {
                     if self.in_arbitration.val() && self.tx_q.q.val() {
                         self.is_tx_n.next = false;
                         self.arb_lost_q.d.next = true;
+                        self.lost.next = true;
+                        self.alc_q.d.next = self.alc_n.val();
                     } else if (self.field_q.q.val() == Field::AckSlot) && self.tx_q.q.val() {
                         // Dominant ACK slot: acknowledged.
                     } else {
                         self.error.next = true;
+                        self.bit_err.next = true;
                     }
                 }
                 // 7.2.1: a receiver's own dominant ACK read back recessive.
@@ -499,6 +669,7 @@ impl Logic for ProtocolController {
                     && self.sampled.val()
                 {
                     self.error.next = true;
+                    self.bit_err.next = true;
                 }
                 match self.field_q.q.val() {
                     Field::Integrating => {
@@ -645,12 +816,13 @@ impl Logic for ProtocolController {
                         self.stuff_en_n.next = false;
                         if !self.sampled.val() {
                             self.error.next = true; // 12.1.3.4 form error
+                            self.form_err.next = true;
                         }
                         self.field_n.next = Field::AckSlot;
                     }
                     Field::AckSlot => {
-                        if self.is_tx.q.val() && self.sampled.val() {
-                            // 12.1.3.5 ACK error
+                        if self.is_tx.q.val() && self.sampled.val() && !self.ack_check_off.val() {
+                            // 12.1.3.5 ACK error (not checked in self-test and loop-back)
                             self.error.next = true;
                             self.ack_error.next = true;
                         }
@@ -663,9 +835,11 @@ impl Logic for ProtocolController {
                     Field::AckDelim => {
                         if !self.sampled.val() {
                             self.error.next = true; // form error
+                            self.form_err.next = true;
                         } else if !self.crc_ok.q.val() && !self.is_tx.q.val() {
                             // 12.1.3.3: CRC error flag starts after the ACK delimiter.
                             self.error.next = true;
+                            self.crc_err.next = true;
                         }
                         self.field_n.next = Field::Eof;
                         self.bit_cnt_n.next = self.n7_0.val();
@@ -678,9 +852,12 @@ impl Logic for ProtocolController {
                                 self.bit_cnt_n.next = self.n7_0.val();
                             } else {
                                 self.error.next = true; // form error
+                                self.form_err.next = true;
                             }
                         } else {
-                            if (self.bit_cnt.q.val() == self.n7_5.val()) && !self.is_tx.q.val() {
+                            if (self.bit_cnt.q.val() == self.n7_5.val())
+                                && (!self.is_tx.q.val() || self.loopback.val())
+                            {
                                 // 10.7: valid for receivers at the last but one EOF bit.
                                 self.rx_valid_q.d.next = true;
                                 self.rx_id_q.d.next = self.rxs_id.q.val();
@@ -739,7 +916,7 @@ impl Logic for ProtocolController {
                         }
                     }
                     Field::OverloadFlag => {
-                        if self.sampled.val() {
+                        if self.sampled.val() && !self.listen_only.val() {
                             // Rules d/e: bit error in its own overload flag.
                             self.flag_error.next = true;
                         } else if self.bit_cnt.q.val() == self.n7_5.val() {
@@ -778,6 +955,7 @@ impl Logic for ProtocolController {
                                 self.bit_cnt_n.next = self.n7_0.val();
                             } else {
                                 self.error.next = true; // form error in the delimiter
+                                self.form_err.next = true;
                             }
                         } else if self.bit_cnt.q.val() == self.n7_7.val() {
                             self.field_n.next = Field::Intermission;
@@ -809,6 +987,7 @@ impl Logic for ProtocolController {
                                 self.bit_cnt_n.next = self.n7_0.val();
                             } else {
                                 self.error.next = true; // form error in the delimiter
+                                self.form_err.next = true;
                             }
                         } else if self.bit_cnt.q.val() == self.n7_7.val() {
                             self.field_n.next = Field::Intermission;
@@ -856,6 +1035,18 @@ impl Logic for ProtocolController {
                 self.rxs_rtr.d.next = false;
             }
 
+            // One kind per error, by the precedence of contract §9.
+            if self.stuff_as_bit.val() || self.bit_err.val() || self.flag_error.val() {
+                self.err_kind_n.next = self.k3_bit.val();
+            } else if self.stuff_err.val() {
+                self.err_kind_n.next = self.k3_stuff.val();
+            } else if self.form_err.val() {
+                self.err_kind_n.next = self.k3_form.val();
+            } else if self.ack_error.val() {
+                self.err_kind_n.next = self.k3_ack.val();
+            } else if self.crc_err.val() {
+                self.err_kind_n.next = self.k3_crc.val();
+            }
             // Any error: error flag from the next bit on (12.1.4.2 counter rules).
             if self.error.val() {
                 if self.is_tx_n.val() {
@@ -883,7 +1074,8 @@ impl Logic for ProtocolController {
                 || (self.ev_tec_add8.val() && (self.fc.tec.val() >= self.n9_120.val()))
                 || (self.ev_rec_add1.val() && (self.fc.rec.val() >= self.n8_127.val()))
                 || (self.ev_rec_add8.val() && (self.fc.rec.val() >= self.n8_120.val()));
-            self.bus_off_after.next = self.ev_tec_add8.val()
+            self.bus_off_after.next = !self.listen_only.val()
+                && self.ev_tec_add8.val()
                 && (self.fc.tec.val() >= self.n9_248.val())
                 && !self.fc.bus_off.val();
             if self.error.val() || self.flag_error.val() {
@@ -891,7 +1083,46 @@ impl Logic for ProtocolController {
                 self.bit_cnt_n.next = self.n7_0.val();
                 self.stuff_en_n.next = false;
                 // The flag type follows the state after this error's increment.
-                self.flag_passive_n.next = self.passive_after.val();
+                self.flag_passive_n.next = self.passive_after.val() || self.listen_only.val();
+                // Error code capture (contract §9).
+                self.err_valid_q.d.next = true;
+                self.err_kind_q.d.next = self.err_kind_n.val();
+                self.err_field_q.d.next = self.field_q.q.val();
+                self.err_tx_q.d.next = self.is_tx.q.val();
+                if self.err_kind_n.val() == self.k3_bit.val() {
+                    if self.cnt_bit_q.q.val() != self.n8_255.val() {
+                        self.cnt_bit_q.d.next = self.cnt_bit_q.q.val() + self.n8_1.val();
+                    }
+                }
+                if self.err_kind_n.val() == self.k3_stuff.val() {
+                    if self.cnt_stuff_q.q.val() != self.n8_255.val() {
+                        self.cnt_stuff_q.d.next = self.cnt_stuff_q.q.val() + self.n8_1.val();
+                    }
+                }
+                if self.err_kind_n.val() == self.k3_crc.val() {
+                    if self.cnt_crc_q.q.val() != self.n8_255.val() {
+                        self.cnt_crc_q.d.next = self.cnt_crc_q.q.val() + self.n8_1.val();
+                    }
+                }
+                if self.err_kind_n.val() == self.k3_form.val() {
+                    if self.cnt_form_q.q.val() != self.n8_255.val() {
+                        self.cnt_form_q.d.next = self.cnt_form_q.q.val() + self.n8_1.val();
+                    }
+                }
+                if self.err_kind_n.val() == self.k3_ack.val() {
+                    if self.cnt_ack_q.q.val() != self.n8_255.val() {
+                        self.cnt_ack_q.d.next = self.cnt_ack_q.q.val() + self.n8_1.val();
+                    }
+                }
+            }
+            // Single shot or a due abort: a failed attempt drops the frame (§8).
+            if self.pending.q.val()
+                && self.is_tx.q.val()
+                && (self.lost.val() || self.error.val() || self.flag_error.val())
+                && (self.single_shot.val() || self.abort_pending.q.val())
+            {
+                self.pending.d.next = false;
+                self.tx_failed_q.d.next = true;
             }
             // 12.1.4.4: TEC > 255 makes the node bus-off at once.
             if self.bus_off_after.val() {
@@ -911,11 +1142,11 @@ impl Logic for ProtocolController {
         }
 
         // ---- fault-confinement events of this clock
-        self.fc.tec_add8.next = self.ev_tec_add8.val();
-        self.fc.rec_add1.next = self.ev_rec_add1.val();
-        self.fc.rec_add8.next = self.ev_rec_add8.val();
-        self.fc.tx_success.next = self.ev_tx_success.val();
-        self.fc.rx_success.next = self.ev_rx_success.val();
+        self.fc.tec_add8.next = self.ev_tec_add8.val() && !self.listen_only.val();
+        self.fc.rec_add1.next = self.ev_rec_add1.val() && !self.listen_only.val();
+        self.fc.rec_add8.next = self.ev_rec_add8.val() && !self.listen_only.val();
+        self.fc.tx_success.next = self.ev_tx_success.val() && !self.listen_only.val();
+        self.fc.rx_success.next = self.ev_rx_success.val() && !self.listen_only.val();
         self.fc.recovered.next = self.ev_recovered.val();
 
         // ---- the bit this node sends next (contract §4.2)
@@ -989,7 +1220,8 @@ impl Logic for ProtocolController {
         }
 
         if self.sample.val() {
-            self.tx_bit.d.next = self.tx_bit_n.val();
+            // Listen-only: the node never drives a dominant bit (contract §7).
+            self.tx_bit.d.next = self.tx_bit_n.val() || self.listen_only.val();
         }
 
         // ---- the tx pin changes only at the start of a bit
@@ -1008,7 +1240,10 @@ impl Logic for ProtocolController {
         }
 
         // ---- host transmit request: latched while nothing is pending
-        if self.tx_req.val() && !self.pending.q.val() {
+        if self.tx_req.val() && !self.pending.q.val() && self.listen_only.val() {
+            // Contract §7: listen-only refuses transmit requests.
+            self.tx_failed_q.d.next = true;
+        } else if self.tx_req.val() && !self.pending.q.val() {
             self.pending.d.next = true;
             self.txf_id.d.next = self.tx_id.val();
             self.txf_ide.d.next = self.tx_ide.val();
@@ -1054,6 +1289,19 @@ impl Logic for ProtocolController {
         self.tec.next = self.fc.tec.val();
         self.rec.next = self.fc.rec.val();
         self.err_state.next = self.fc.err_state.val();
+        self.tx_failed.next = self.tx_failed_q.q.val();
+        self.err_warning.next = (self.fc.tec.val() >= bit_cast::<9, 8>(self.ewl.val()))
+            || (self.fc.rec.val() >= self.ewl.val());
+        self.err_valid.next = self.err_valid_q.q.val();
+        self.err_kind.next = self.err_kind_q.q.val();
+        self.err_field.next = self.err_field_q.q.val();
+        self.err_tx.next = self.err_tx_q.q.val();
+        self.alc.next = self.alc_q.q.val();
+        self.cnt_bit.next = self.cnt_bit_q.q.val();
+        self.cnt_stuff.next = self.cnt_stuff_q.q.val();
+        self.cnt_crc.next = self.cnt_crc_q.q.val();
+        self.cnt_form.next = self.cnt_form_q.q.val();
+        self.cnt_ack.next = self.cnt_ack_q.q.val();
 
         // ---- synchronous reset
         if self.rst.val() {
@@ -1074,6 +1322,18 @@ impl Logic for ProtocolController {
             self.dom_cnt.d.next = self.zero3.val();
             self.delim_first.d.next = false;
             self.ack_passive_pending.d.next = false;
+            self.abort_pending.d.next = false;
+            self.tx_failed_q.d.next = false;
+            self.err_valid_q.d.next = false;
+            self.err_kind_q.d.next = self.zero3.val();
+            self.err_field_q.d.next = Field::Integrating;
+            self.err_tx_q.d.next = false;
+            self.alc_q.d.next = self.zero5.val();
+            self.cnt_bit_q.d.next = self.zero8.val();
+            self.cnt_stuff_q.d.next = self.zero8.val();
+            self.cnt_crc_q.d.next = self.zero8.val();
+            self.cnt_form_q.d.next = self.zero8.val();
+            self.cnt_ack_q.d.next = self.zero8.val();
             self.rx_valid_q.d.next = false;
             self.tx_done_q.d.next = false;
             self.arb_lost_q.d.next = false;

@@ -1,0 +1,179 @@
+//! Configuration registers of one channel (timing contract §6): the bit-timing
+//! fields, the operating mode, the error warning limit and single-shot mode are
+//! captured while `rst` is high ("reset mode", as ISO 11898-1 requires for
+//! bit-timing changes) and held while running, so a configuration change during
+//! operation takes effect only at the next reset.
+//!
+//! Illegal values are clamped here, never passed on:
+//! - SJW' = min(SJW, TSEG2) (SJW may not exceed PHASE_SEG2);
+//! - TSEG1' = max(TSEG1, 7 - TSEG2, M), M = 3 for BRP = 0, 2 for BRP = 1, else 1:
+//!   at least the 8 tq per bit of ISO 11898-1 11.3.1, and at least 3 clocks of
+//!   TSEG1 so a node reads back its own bit through the 2-clock synchronizer.
+//! All values use the minus-one encodings of the ports.
+
+use rust_hdl::prelude::*;
+
+/// Captured, clamped configuration.
+#[derive(LogicBlock)]
+pub struct ChannelConfig {
+    // clock and reset (reset mode = capture)
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // configuration inputs
+    pub cfg_brp: Signal<In, Bits<6>>,
+    pub cfg_tseg1: Signal<In, Bits<4>>,
+    pub cfg_tseg2: Signal<In, Bits<3>>,
+    pub cfg_sjw: Signal<In, Bits<2>>,
+    pub cfg_triple: Signal<In, Bit>,
+    pub cfg_mode: Signal<In, Bits<2>>,
+    pub cfg_ewl: Signal<In, Bits<8>>,
+    pub cfg_single_shot: Signal<In, Bit>,
+    // held configuration
+    pub brp: Signal<Out, Bits<6>>,
+    pub tseg1: Signal<Out, Bits<4>>,
+    pub tseg2: Signal<Out, Bits<3>>,
+    pub sjw: Signal<Out, Bits<2>>,
+    pub triple: Signal<Out, Bit>,
+    pub mode: Signal<Out, Bits<2>>,
+    pub ewl: Signal<Out, Bits<8>>,
+    pub single_shot: Signal<Out, Bit>,
+    brp_q: DFF<Bits<6>>,
+    tseg1_q: DFF<Bits<4>>,
+    tseg2_q: DFF<Bits<3>>,
+    sjw_q: DFF<Bits<2>>,
+    triple_q: DFF<Bit>,
+    mode_q: DFF<Bits<2>>,
+    ewl_q: DFF<Bits<8>>,
+    single_shot_q: DFF<Bit>,
+    // clamping
+    tseg1_min: Signal<Local, Bits<4>>,
+    tseg1_floor: Signal<Local, Bits<4>>,
+    tseg1_raised: Signal<Local, Bits<4>>,
+    tseg1_clamped: Signal<Local, Bits<4>>,
+    sjw_clamped: Signal<Local, Bits<2>>,
+    n3_5: Constant<Bits<3>>,
+    n4_5: Constant<Bits<4>>,
+    n4_0: Constant<Bits<4>>,
+    n4_1: Constant<Bits<4>>,
+    n4_2: Constant<Bits<4>>,
+    n6_0: Constant<Bits<6>>,
+    n6_1: Constant<Bits<6>>,
+}
+
+impl Default for ChannelConfig {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            cfg_brp: Default::default(),
+            cfg_tseg1: Default::default(),
+            cfg_tseg2: Default::default(),
+            cfg_sjw: Default::default(),
+            cfg_triple: Default::default(),
+            cfg_mode: Default::default(),
+            cfg_ewl: Default::default(),
+            cfg_single_shot: Default::default(),
+            brp: Default::default(),
+            tseg1: Default::default(),
+            tseg2: Default::default(),
+            sjw: Default::default(),
+            triple: Default::default(),
+            mode: Default::default(),
+            ewl: Default::default(),
+            single_shot: Default::default(),
+            brp_q: Default::default(),
+            tseg1_q: Default::default(),
+            tseg2_q: Default::default(),
+            sjw_q: Default::default(),
+            triple_q: Default::default(),
+            mode_q: Default::default(),
+            ewl_q: Default::default(),
+            single_shot_q: Default::default(),
+            tseg1_min: Default::default(),
+            tseg1_floor: Default::default(),
+            tseg1_raised: Default::default(),
+            tseg1_clamped: Default::default(),
+            sjw_clamped: Default::default(),
+            n3_5: Constant::new(5.into()),
+            n4_5: Constant::new(5.into()),
+            n4_0: Constant::new(0.into()),
+            n4_1: Constant::new(1.into()),
+            n4_2: Constant::new(2.into()),
+            n6_0: Constant::new(0.into()),
+            n6_1: Constant::new(1.into()),
+        }
+    }
+}
+
+impl Logic for ChannelConfig {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clk,
+            brp_q,
+            tseg1_q,
+            tseg2_q,
+            sjw_q,
+            triple_q,
+            mode_q,
+            ewl_q,
+            single_shot_q
+        );
+        // 8 tq per bit: TSEG1 >= 7 - TSEG2, i.e. (tseg1-1) >= 5 - (tseg2-1).
+        if self.cfg_tseg2.val() < self.n3_5.val() {
+            self.tseg1_min.next = self.n4_5.val() - bit_cast::<4, 3>(self.cfg_tseg2.val());
+        } else {
+            self.tseg1_min.next = self.n4_0.val();
+        }
+        // Own-bit read-back: (BRP+1) * TSEG1 >= 3 clocks.
+        if self.cfg_brp.val() == self.n6_0.val() {
+            self.tseg1_floor.next = self.n4_2.val();
+        } else if self.cfg_brp.val() == self.n6_1.val() {
+            self.tseg1_floor.next = self.n4_1.val();
+        } else {
+            self.tseg1_floor.next = self.n4_0.val();
+        }
+        if self.cfg_tseg1.val() < self.tseg1_min.val() {
+            self.tseg1_raised.next = self.tseg1_min.val();
+        } else {
+            self.tseg1_raised.next = self.cfg_tseg1.val();
+        }
+        if self.tseg1_raised.val() < self.tseg1_floor.val() {
+            self.tseg1_clamped.next = self.tseg1_floor.val();
+        } else {
+            self.tseg1_clamped.next = self.tseg1_raised.val();
+        }
+        // SJW <= TSEG2 (both minus-one encoded).
+        if bit_cast::<3, 2>(self.cfg_sjw.val()) > self.cfg_tseg2.val() {
+            self.sjw_clamped.next = self.cfg_tseg2.val().get_bits::<2>(0);
+        } else {
+            self.sjw_clamped.next = self.cfg_sjw.val();
+        }
+        if self.rst.val() {
+            self.brp_q.d.next = self.cfg_brp.val();
+            self.tseg1_q.d.next = self.tseg1_clamped.val();
+            self.tseg2_q.d.next = self.cfg_tseg2.val();
+            self.sjw_q.d.next = self.sjw_clamped.val();
+            self.triple_q.d.next = self.cfg_triple.val();
+            self.mode_q.d.next = self.cfg_mode.val();
+            self.ewl_q.d.next = self.cfg_ewl.val();
+            self.single_shot_q.d.next = self.cfg_single_shot.val();
+        }
+        self.brp.next = self.brp_q.q.val();
+        self.tseg1.next = self.tseg1_q.q.val();
+        self.tseg2.next = self.tseg2_q.q.val();
+        self.sjw.next = self.sjw_q.q.val();
+        self.triple.next = self.triple_q.q.val();
+        self.mode.next = self.mode_q.q.val();
+        self.ewl.next = self.ewl_q.q.val();
+        self.single_shot.next = self.single_shot_q.q.val();
+    }
+}
+
+#[test]
+fn channel_config_synthesizes() {
+    let mut uut = ChannelConfig::default();
+    uut.connect_all();
+    yosys_validate("channel_config", &generate_verilog(&uut)).unwrap();
+}

@@ -458,6 +458,9 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  abort_pending__d;
     wire  abort_pending__q;
     reg  abort_pending__clock;
+    reg  attempt__d;
+    wire  attempt__q;
+    reg  attempt__clock;
     reg  tx_failed_q__d;
     wire  tx_failed_q__q;
     reg  tx_failed_q__clock;
@@ -620,6 +623,8 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  rx_data_q__clock;
     
     // Local signals
+    reg  starts;
+    reg  join_starts;
     reg  listen_only;
     reg  ack_check_off;
     reg  loopback;
@@ -679,6 +684,11 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .d(abort_pending__d),
         .q(abort_pending__q),
         .clock(abort_pending__clock)
+    );
+    can_channel__bsp__attempt attempt(
+        .d(attempt__d),
+        .q(attempt__q),
+        .clock(attempt__clock)
     );
     can_channel__bsp__tx_failed_q tx_failed_q(
         .d(tx_failed_q__d),
@@ -961,6 +971,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         delim_first__clock = clk;
         ack_passive_pending__clock = clk;
         abort_pending__clock = clk;
+        attempt__clock = clk;
         tx_failed_q__clock = clk;
         err_valid_q__clock = clk;
         err_kind_q__clock = clk;
@@ -1010,6 +1021,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         delim_first__d = delim_first__q;
         ack_passive_pending__d = ack_passive_pending__q;
         abort_pending__d = abort_pending__q;
+        attempt__d = attempt__q;
         tx_failed_q__d = tx_failed_q__q;
         err_valid_q__d = err_valid_q__q;
         err_kind_q__d = err_kind_q__q;
@@ -1071,10 +1083,11 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         if (~pending__q) begin
             abort_pending__d = 1'b0;
         end
-        if (tx_abort && pending__q) begin
+        if ((tx_abort || abort_pending__q) && pending__q) begin
             if (~is_tx__q && tx_q__q) begin
                 pending__d = 1'b0;
                 tx_failed_q__d = 1'b1;
+                abort_pending__d = 1'b0;
             end
             else begin
                 abort_pending__d = 1'b1;
@@ -1089,6 +1102,8 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         bus_off_after = 1'b0;
         suspend_due = is_tx__q && fc__error_passive;
         join_ok = start_ok && ~suspend_due;
+        starts = (~tx_q__q && pending__q) || start_ok;
+        join_starts = (~tx_q__q && pending__q) || join_ok;
         tec_exempt = 1'b0;
         ack_error = 1'b0;
         ev_tec_add8 = 1'b0;
@@ -1153,7 +1168,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 end
             Field__Ide:
                 begin
-                    in_arbitration = 1'b1;
+                    in_arbitration = txf_ide__q;
                     in_frame = 1'b1;
                     crc_covered = 1'b1;
                 end
@@ -1282,7 +1297,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                         begin
                             if (~sampled) begin
                                 sof = 1'b1;
-                                sof_as_tx = start_ok;
+                                sof_as_tx = starts;
                             end
                         end
                     Field__Suspend:
@@ -1303,7 +1318,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                             if (~sampled) begin
                                 if (bit_cnt__q == n7_2) begin
                                     sof = 1'b1;
-                                    sof_as_tx = join_ok;
+                                    sof_as_tx = join_starts;
                                 end
                                 else begin
                                     field_n = Field__OverloadFlag;
@@ -1476,6 +1491,8 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                     if (is_tx__q) begin
                                         tx_done_q__d = 1'b1;
                                         pending__d = 1'b0;
+                                        attempt__d = 1'b0;
+                                        abort_pending__d = 1'b0;
                                         ev_tx_success = 1'b1;
                                     end
                                     field_n = Field__Intermission;
@@ -1644,6 +1661,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 field_n = Field__IdA;
                 bit_cnt_n = n7_0;
                 is_tx_n = sof_as_tx;
+                attempt__d = sof_as_tx;
                 stuff_en_n = 1'b1;
                 stuff_cnt_n = n3_1;
                 stuff_last_n = 1'b0;
@@ -1726,12 +1744,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                     end
                 end
             end
-            if (pending__q && is_tx__q && (lost || error || flag_error) && (single_shot || abort_pending__q)) begin
-                pending__d = 1'b0;
-                tx_failed_q__d = 1'b1;
+            if (attempt__q && is_tx__q && (lost || error || flag_error)) begin
+                attempt__d = 1'b0;
+                if (single_shot || abort_pending__q) begin
+                    pending__d = 1'b0;
+                    tx_failed_q__d = 1'b1;
+                    abort_pending__d = 1'b0;
+                end
             end
             if (bus_off_after) begin
                 field_n = Field__BusOff;
+                is_tx_n = 1'b0;
+                attempt__d = 1'b0;
                 bit_cnt_n = n7_0;
                 recovery_cnt__d = n7_0;
             end
@@ -1836,16 +1860,16 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         end
         if (bit_start) begin
             if (hard_sync && (field_q__q == Field__Idle)) begin
-                tx_q__d = ~start_ok;
+                tx_q__d = ~starts;
             end
             else if (hard_sync && (field_q__q == Field__Intermission)) begin
-                tx_q__d = ~join_ok;
+                tx_q__d = 1'b1;
             end
             else if (hard_sync && (field_q__q == Field__Suspend)) begin
                 tx_q__d = 1'b1;
             end
             else if (field_q__q == Field__Idle) begin
-                tx_q__d = ~start_ok;
+                tx_q__d = ~starts;
             end
             else begin
                 tx_q__d = tx_bit__q;
@@ -1933,6 +1957,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
             delim_first__d = 1'b0;
             ack_passive_pending__d = 1'b0;
             abort_pending__d = 1'b0;
+            attempt__d = 1'b0;
             tx_failed_q__d = 1'b0;
             err_valid_q__d = 1'b0;
             err_kind_q__d = zero3;
@@ -2020,6 +2045,22 @@ module can_channel__bsp__arb_lost_q(d,q,clock);
     end
           
 endmodule // can_channel__bsp__arb_lost_q
+
+
+module can_channel__bsp__attempt(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__attempt
 
 
 module can_channel__bsp__bit_cnt(d,q,clock);

@@ -4,7 +4,9 @@
 //!   compares instead and names stale files),
 //! - `sim` runs a scenario on one engine, `cosim` on two in lock step,
 //! - `wave-diff` compares two VCD files,
-//! - `demo` runs the bundled demo scenario, `bench` compares engine speeds.
+//! - `demo` runs the bundled demo scenario, `bench` compares engine speeds,
+//! - `synth` synthesises a top for an FPGA family (yosys; nextpnr and icepack
+//!   for iCE40) and reports its area and Fmax.
 //!
 //! Exit codes: 0 success; 1 a check failed (expectations not met, divergence,
 //! waveforms differ, stale Verilog); 2 an error (bad input, missing tool). Errors
@@ -80,6 +82,28 @@ enum Command {
         #[arg(long, default_value_t = 1.0)]
         seconds: f64,
     },
+    /// Synthesise a top with yosys (iCE40: also nextpnr and icepack): LUTs, FFs, BRAM, Fmax.
+    Synth {
+        /// FPGA family and board: ice40 (iCEBreaker), ice40hx (iCE40-HX8K Breakout),
+        /// xc3s (Spartan-3 Starter Board) or xc7 (Arty A7-35T).
+        #[arg(long, value_name = "FAMILY")]
+        target: Option<String>,
+        /// Top to synthesise (default: can_channel, the first top).
+        #[arg(long, value_name = "NAME")]
+        top: Option<String>,
+        /// Every top on every family.
+        #[arg(long)]
+        all: bool,
+        /// With --all: rewrite docs/synthesis.md and the results table in README.md.
+        #[arg(long)]
+        markdown: bool,
+        /// Print the results as JSON.
+        #[arg(long)]
+        json: bool,
+        /// Where netlists, logs, the scan wrapper and bitstreams go (default: out/synth).
+        #[arg(long, value_name = "DIR")]
+        build_dir: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
@@ -104,6 +128,21 @@ fn main() -> ExitCode {
         Command::WaveDiff { a, b, signals } => cli::wave::diff(&a, &b, &signals),
         Command::Demo => cli::run::demo(),
         Command::Bench { seconds } => cli::bench(seconds),
+        Command::Synth {
+            target,
+            top,
+            all,
+            markdown,
+            json,
+            build_dir,
+        } => cli::synth::run(cli::synth::SynthArgs {
+            target,
+            top,
+            all,
+            json,
+            markdown,
+            build_dir,
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

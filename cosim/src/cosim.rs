@@ -2,8 +2,11 @@
 //! lock step, compared every clock.
 //!
 //! Every clock, every node's outputs (`tx`, `tx_pending`, `tx_done`, `arb_lost`,
-//! `rx_valid`, `rx_frame`) and every probe are compared, and so are the inputs the
-//! systems applied (`rx`, `tx_req`), which can only differ if the scenarios differ.
+//! `tx_failed`, `rx_valid`, `rx_frame`), every probe and every diagnostics
+//! register (`err_warning`, `err_valid`, `err_kind`, `err_field`, `err_tx`, `alc`,
+//! `cnt_*`) are compared ([`OUTPUT_SIGNALS`]), and so are the inputs the systems
+//! applied (`rx`, `tx_req`, `tx_abort`), which can only differ if the scenarios
+//! differ.
 //! The first divergence is an error ([`CosimError::Divergence`]) reporting the
 //! cycle, the bit time (cycle / clocks per bit), the node, the signal and both
 //! values. If a VCD directory is given, the last [`CosimOptions::before`] cycles
@@ -171,6 +174,7 @@ pub fn compare_samples(a: &Sample, b: &Sample) -> Option<(usize, String, String,
         let pairs = [
             ("rx", a.rx.get(node), b.rx.get(node)),
             ("tx_req", a.tx_req.get(node), b.tx_req.get(node)),
+            ("tx_abort", a.tx_abort.get(node), b.tx_abort.get(node)),
         ];
         for (name, va, vb) in pairs {
             if va != vb {
@@ -183,8 +187,8 @@ pub fn compare_samples(a: &Sample, b: &Sample) -> Option<(usize, String, String,
 }
 
 /// Runs both systems in lock step until both are idle or `max_cycles` is reached,
-/// comparing every clock. The systems must have the same node count and timing
-/// and the same frames submitted.
+/// comparing every clock. The systems must have the same node count, timing and
+/// configurations, and the same frames and aborts submitted.
 pub fn lockstep(
     a: &mut System,
     b: &mut System,
@@ -202,6 +206,13 @@ pub fn lockstep(
             "the systems have different bit timings: {:?} and {:?}",
             a.timing(),
             b.timing()
+        )));
+    }
+    if a.configs() != b.configs() {
+        return Err(CosimError::Setup(format!(
+            "the systems have different controller configurations: {:?} and {:?}",
+            a.configs(),
+            b.configs()
         )));
     }
     if a.cycle() != b.cycle() {
@@ -336,11 +347,13 @@ mod tests {
     use crate::frame::Frame;
     use crate::system::tests::Ideal;
 
-    /// An `Ideal` engine whose `tec` probe goes wrong at one cycle.
+    /// An `Ideal` engine whose outputs go wrong at one cycle (`tec` = 8 unless
+    /// `spoil` says otherwise).
     struct Broken {
         inner: Box<dyn ChannelEngine>,
         at: u64,
         n: u64,
+        spoil: fn(&mut ChannelOutputs),
     }
 
     impl ChannelEngine for Broken {
@@ -350,7 +363,7 @@ mod tests {
         fn step(&mut self, i: &ChannelInputs) -> ChannelOutputs {
             let mut o = self.inner.step(i);
             if self.n == self.at {
-                o.probes.tec = 8;
+                (self.spoil)(&mut o);
             }
             self.n += 1;
             o
@@ -358,12 +371,17 @@ mod tests {
     }
 
     fn system(broken_at: Option<u64>) -> System {
+        system_spoiled(broken_at, |o| o.probes.tec = 8)
+    }
+
+    fn system_spoiled(broken_at: Option<u64>, spoil: fn(&mut ChannelOutputs)) -> System {
         let engines: Vec<Box<dyn ChannelEngine>> = (0..3)
             .map(|i| match broken_at {
                 Some(at) if i == 2 => Box::new(Broken {
                     inner: Ideal::boxed(),
                     at,
                     n: 0,
+                    spoil,
                 }) as Box<dyn ChannelEngine>,
                 _ => Ideal::boxed(),
             })
@@ -385,6 +403,41 @@ mod tests {
         let r = lockstep(&mut a, &mut b, &CosimOptions::default()).unwrap();
         assert!(r.outcome.is_idle());
         assert_eq!(a.deliveries().len(), 6);
+    }
+
+    #[test]
+    fn diagnostics_and_tx_failed_are_compared() {
+        type Case = (fn(&mut ChannelOutputs), &'static str, &'static str);
+        let cases: [Case; 4] = [
+            (|o| o.tx_failed = true, "tx_failed", "1"),
+            (|o| o.diag.err_kind = 5, "err_kind", "0x5 (5)"),
+            (|o| o.diag.alc = 31, "alc", "0x1F (31)"),
+            (|o| o.diag.cnt_ack = 1, "cnt_ack", "0x1 (1)"),
+        ];
+        for (spoil, signal, value) in cases {
+            let (mut a, mut b) = (system(None), system_spoiled(Some(33), spoil));
+            let CosimError::Divergence(d) =
+                lockstep(&mut a, &mut b, &CosimOptions::default()).unwrap_err()
+            else {
+                panic!("expected a divergence in {signal}");
+            };
+            assert_eq!((d.cycle, d.node, d.signal.as_str()), (33, 2, signal));
+            assert_eq!(d.value_b, value);
+        }
+        // Different configurations cannot be compared.
+        let (mut a, mut b) = (system(None), system(None));
+        b.set_node_config(
+            1,
+            crate::engine::ControllerConfig {
+                single_shot: true,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        assert!(matches!(
+            lockstep(&mut a, &mut b, &CosimOptions::default()),
+            Err(CosimError::Setup(_))
+        ));
     }
 
     #[test]

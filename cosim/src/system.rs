@@ -8,16 +8,25 @@
 //! frame at the head of its queue is due, the system raises `tx_req` for one clock
 //! with that frame (frames leave a queue in the order of their due cycles; frames
 //! due at the same cycle keep their submission order). It records every delivered
-//! frame (`rx_valid`), every `tx_done` and every `arb_lost`, with its cycle.
+//! frame (`rx_valid`), every `tx_done`, every `tx_failed` and every `arb_lost`,
+//! with its cycle.
+//!
+//! Every node gets the system's [`ControllerConfig`] (mode, error warning limit,
+//! single shot; default [`ControllerConfig::default`], settable for all nodes or
+//! per node before the first step), which the channels capture during reset
+//! (timing contract §6). `tx_abort` stays low except for the one-clock aborts
+//! requested with [`System::abort`]; in a clock that raises `tx_abort` the node
+//! gets no new `tx_req` (the host aborts first, the next frame follows).
 //!
 //! All nodes are held in reset for the first [`System::reset_cycles`] cycles
-//! (default [`DEFAULT_RESET_CYCLES`]); no request is raised during reset.
+//! (default [`DEFAULT_RESET_CYCLES`]); no request and no abort is raised during
+//! reset.
 
 use std::collections::VecDeque;
 use std::convert::Infallible;
 
 use crate::bus::{Bus, Fault};
-use crate::engine::{BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs};
+use crate::engine::{BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, ControllerConfig};
 use crate::frame::Frame;
 
 /// Cycles of reset at the start of every run.
@@ -42,6 +51,8 @@ pub struct Sample {
     pub rx: Vec<bool>,
     /// Per node: the `tx_req` input applied.
     pub tx_req: Vec<bool>,
+    /// Per node: the `tx_abort` input applied.
+    pub tx_abort: Vec<bool>,
     /// Per node: the outputs after the clock edge.
     pub outputs: Vec<ChannelOutputs>,
 }
@@ -53,8 +64,8 @@ pub struct NodeEvent {
     pub cycle: u64,
     /// Node index.
     pub node: usize,
-    /// The frame received (`rx_valid`) or sent (`tx_done`, `arb_lost`: the frame
-    /// latched by the node's last request).
+    /// The frame received (`rx_valid`) or sent (`tx_done`, `tx_failed`,
+    /// `arb_lost`: the frame latched by the node's last request).
     pub frame: Frame,
 }
 
@@ -100,13 +111,17 @@ pub struct System {
     queues: Vec<VecDeque<Queued>>,
     in_flight: Vec<Option<Frame>>,
     tx_frame: Vec<Frame>,
+    /// Due cycles of the aborts still to raise, per node, sorted.
+    aborts: Vec<VecDeque<u64>>,
     timing: BitTiming,
+    config: Vec<ControllerConfig>,
     bus: Bus,
     reset_cycles: u64,
     sample: Sample,
     tx: Vec<bool>,
     deliveries: Vec<NodeEvent>,
     sent: Vec<NodeEvent>,
+    failed: Vec<NodeEvent>,
     arb_lost: Vec<NodeEvent>,
     recessive_cycles: u64,
     steps: u64,
@@ -114,7 +129,8 @@ pub struct System {
 
 impl System {
     /// A system of the given engines (node i = `engines[i]`, named `node{i}`) with
-    /// one shared bit timing. Refuses an empty node list and an illegal timing.
+    /// one shared bit timing and the default [`ControllerConfig`]. Refuses an empty
+    /// node list and an illegal timing.
     pub fn new(engines: Vec<Box<dyn ChannelEngine>>, timing: BitTiming) -> Result<Self, String> {
         if engines.is_empty() {
             return Err("a system needs at least one node".to_string());
@@ -127,7 +143,9 @@ impl System {
             queues: vec![VecDeque::new(); n],
             in_flight: vec![None; n],
             tx_frame: vec![Frame::default(); n],
+            aborts: vec![VecDeque::new(); n],
             timing,
+            config: vec![ControllerConfig::default(); n],
             bus: Bus::new(n),
             reset_cycles: DEFAULT_RESET_CYCLES,
             sample: Sample {
@@ -136,11 +154,13 @@ impl System {
                 bus: true,
                 rx: vec![true; n],
                 tx_req: vec![false; n],
+                tx_abort: vec![false; n],
                 outputs: vec![idle_outputs(); n],
             },
             tx: vec![true; n],
             deliveries: Vec::new(),
             sent: Vec::new(),
+            failed: Vec::new(),
             arb_lost: Vec::new(),
             recessive_cycles: 0,
             steps: 0,
@@ -208,6 +228,28 @@ impl System {
         self.timing
     }
 
+    /// Gives every node `config` (mode, error warning limit, single shot). The
+    /// channels capture it while in reset: call before the first step.
+    pub fn set_config(&mut self, config: ControllerConfig) {
+        self.config.fill(config);
+    }
+
+    /// Gives one node its own `config` (see [`System::set_config`]).
+    pub fn set_node_config(&mut self, node: usize, config: ControllerConfig) -> Result<(), String> {
+        let nodes = self.nodes();
+        let c = self
+            .config
+            .get_mut(node)
+            .ok_or_else(|| no_such_node(node, nodes))?;
+        *c = config;
+        Ok(())
+    }
+
+    /// The configuration of every node (index = node).
+    pub fn configs(&self) -> &[ControllerConfig] {
+        &self.config
+    }
+
     /// Number of steps made so far (= index of the next cycle).
     pub fn cycle(&self) -> u64 {
         self.steps
@@ -221,12 +263,10 @@ impl System {
     /// Queues `frame` on `node`, to be requested at `at_cycle` or later.
     pub fn submit(&mut self, node: usize, at_cycle: u64, frame: Frame) -> Result<(), String> {
         let nodes = self.nodes();
-        let q = self.queues.get_mut(node).ok_or_else(|| {
-            format!(
-                "node {node} does not exist: the system has {nodes} nodes (0..={})",
-                nodes - 1
-            )
-        })?;
+        let q = self
+            .queues
+            .get_mut(node)
+            .ok_or_else(|| no_such_node(node, nodes))?;
         // Keep the queue sorted by due cycle, stable for equal due cycles.
         let pos = q.partition_point(|e| e.due <= at_cycle);
         q.insert(
@@ -236,6 +276,21 @@ impl System {
                 frame,
             },
         );
+        Ok(())
+    }
+
+    /// Raises `tx_abort` on `node` for one clock at `at_cycle`, or at the first
+    /// cycle after reset if that is later (timing contract §8: the pending frame
+    /// is dropped with `tx_failed` unless it is being sent; nothing happens when no
+    /// frame is pending). No `tx_req` is raised on that node in that clock.
+    pub fn abort(&mut self, node: usize, at_cycle: u64) -> Result<(), String> {
+        let nodes = self.nodes();
+        let q = self
+            .aborts
+            .get_mut(node)
+            .ok_or_else(|| no_such_node(node, nodes))?;
+        let pos = q.partition_point(|&c| c <= at_cycle);
+        q.insert(pos, at_cycle);
         Ok(())
     }
 
@@ -252,6 +307,11 @@ impl System {
     /// Every `tx_done`, in order.
     pub fn tx_done(&self) -> &[NodeEvent] {
         &self.sent
+    }
+
+    /// Every `tx_failed` (frames dropped: single shot, abort, listen-only), in order.
+    pub fn tx_failed(&self) -> &[NodeEvent] {
+        &self.failed
     }
 
     /// Every `arb_lost`, in order.
@@ -285,8 +345,16 @@ impl System {
         self.sample.rst = rst;
         self.sample.bus = line;
         for i in 0..self.engines.len() {
+            let mut tx_abort = false;
+            if !rst {
+                // Aborts due now (several due by now make one pulse).
+                while self.aborts[i].front().is_some_and(|&c| c <= cycle) {
+                    self.aborts[i].pop_front();
+                    tx_abort = true;
+                }
+            }
             let mut tx_req = false;
-            if !rst && !self.sample.outputs[i].tx_pending && !self.sample.tx_req[i] {
+            if !rst && !tx_abort && !self.sample.outputs[i].tx_pending && !self.sample.tx_req[i] {
                 if let Some(head) = self.queues[i].front() {
                     if head.due <= cycle {
                         tx_req = true;
@@ -300,11 +368,14 @@ impl System {
                 rst,
                 rx: self.sample.rx[i],
                 timing: self.timing,
+                config: self.config[i],
                 tx_req,
                 tx_frame: self.tx_frame[i],
+                tx_abort,
             };
             let out = self.engines[i].step(&inputs);
             self.sample.tx_req[i] = tx_req;
+            self.sample.tx_abort[i] = tx_abort;
             self.sample.outputs[i] = out;
             let mine = self.in_flight[i].unwrap_or_default();
             if out.rx_valid {
@@ -323,6 +394,14 @@ impl System {
             }
             if out.tx_done {
                 self.sent.push(NodeEvent {
+                    cycle,
+                    node: i,
+                    frame: mine,
+                });
+                self.in_flight[i] = None;
+            }
+            if out.tx_failed {
+                self.failed.push(NodeEvent {
                     cycle,
                     node: i,
                     frame: mine,
@@ -366,6 +445,13 @@ impl System {
     }
 }
 
+fn no_such_node(node: usize, nodes: usize) -> String {
+    format!(
+        "node {node} does not exist: the system has {nodes} nodes (0..={})",
+        nodes - 1
+    )
+}
+
 /// Outputs of a node that has not been clocked yet: everything recessive/idle.
 fn idle_outputs() -> ChannelOutputs {
     ChannelOutputs {
@@ -378,10 +464,13 @@ fn idle_outputs() -> ChannelOutputs {
 pub(crate) mod tests {
     use super::*;
     use crate::bus::{FaultKind, FaultTarget};
+    use crate::engine::Mode;
 
     /// A toy engine for testing the plumbing: a requested frame is sent as one
     /// dominant pulse of `dlc + 1` clocks once the line has been recessive for 3
     /// clocks; a receiver measures the pulse and reports a frame with that `dlc`.
+    /// In listen-only mode a request is refused (`tx_failed`); `tx_abort` drops a
+    /// pending frame that is not being sent (`tx_failed`).
     pub(crate) struct Ideal {
         pending: Option<Frame>,
         sending: u32,
@@ -425,8 +514,16 @@ pub(crate) mod tests {
                 };
                 return self.out;
             }
+            if i.tx_abort && self.pending.is_some() && self.sending == 0 {
+                self.pending = None;
+                o.tx_failed = true;
+            }
             if i.tx_req && self.pending.is_none() {
-                self.pending = Some(i.tx_frame);
+                if i.config.mode == Mode::ListenOnly {
+                    o.tx_failed = true;
+                } else {
+                    self.pending = Some(i.tx_frame);
+                }
             }
             // Receiver: measure dominant pulses not sent by ourselves.
             if !i.rx {
@@ -564,5 +661,109 @@ pub(crate) mod tests {
         let out = s.run_until_idle(500);
         assert_eq!(out, RunOutcome::CycleLimit { cycle: 500 });
         assert!(!s.sample().bus);
+    }
+
+    /// Per clock: (step, config, tx_abort, tx_req) as a node was given them.
+    type Seen = std::rc::Rc<std::cell::RefCell<Vec<(u64, ControllerConfig, bool, bool)>>>;
+
+    /// Records the configuration and `tx_abort` it is given, around an `Ideal`.
+    struct Spy {
+        inner: Box<dyn ChannelEngine>,
+        seen: Seen,
+        n: u64,
+    }
+
+    impl ChannelEngine for Spy {
+        fn name(&self) -> &'static str {
+            "spy"
+        }
+        fn step(&mut self, i: &ChannelInputs) -> ChannelOutputs {
+            self.seen
+                .borrow_mut()
+                .push((self.n, i.config, i.tx_abort, i.tx_req));
+            self.n += 1;
+            self.inner.step(i)
+        }
+    }
+
+    #[test]
+    fn config_reaches_every_node_and_failures_are_recorded() {
+        let seen = Seen::default();
+        let engines: Vec<Box<dyn ChannelEngine>> = vec![
+            Ideal::boxed(),
+            Box::new(Spy {
+                inner: Ideal::boxed(),
+                seen: seen.clone(),
+                n: 0,
+            }),
+        ];
+        let mut s = System::new(engines, BitTiming::default()).unwrap();
+        assert_eq!(s.configs(), &[ControllerConfig::default(); 2]);
+        let quiet = ControllerConfig {
+            mode: Mode::ListenOnly,
+            ewl: 10,
+            single_shot: true,
+        };
+        s.set_config(ControllerConfig {
+            ewl: 50,
+            ..ControllerConfig::default()
+        });
+        s.set_node_config(1, quiet).unwrap();
+        assert!(s.set_node_config(2, quiet).is_err());
+        s.submit(0, 0, frame(2)).unwrap();
+        s.submit(1, 0, frame(3)).unwrap();
+        assert!(s.run_until_idle(10_000).is_idle());
+        // Node 1 (listen-only) had its request refused: a tx_failed, nothing sent.
+        let failed: Vec<(usize, u8)> = s
+            .tx_failed()
+            .iter()
+            .map(|e| (e.node, e.frame.dlc))
+            .collect();
+        assert_eq!(failed, vec![(1, 3)]);
+        let sent: Vec<(usize, u8)> = s.tx_done().iter().map(|e| (e.node, e.frame.dlc)).collect();
+        assert_eq!(sent, vec![(0, 2)]);
+        assert_eq!(s.configs()[0].ewl, 50);
+        let seen = seen.borrow();
+        assert!(seen.iter().all(|&(_, c, abort, _)| c == quiet && !abort));
+    }
+
+    #[test]
+    fn abort_is_one_clock_after_reset_without_a_request() {
+        let seen = Seen::default();
+        let engines: Vec<Box<dyn ChannelEngine>> = vec![
+            Ideal::boxed(),
+            Box::new(Spy {
+                inner: Ideal::boxed(),
+                seen: seen.clone(),
+                n: 0,
+            }),
+        ];
+        let mut s = System::new(engines, BitTiming::default()).unwrap();
+        // Node 0 keeps the line busy so node 1's frame stays pending for a while.
+        s.submit(0, 0, frame(40)).unwrap();
+        s.submit(1, 10, frame(1)).unwrap();
+        s.submit(1, 12, frame(2)).unwrap();
+        s.abort(1, 0).unwrap(); // during reset: raised at the first cycle after it
+        s.abort(1, 20).unwrap();
+        s.abort(1, 20).unwrap(); // the same cycle: one pulse
+        assert!(s.abort(5, 0).is_err());
+        assert!(s.run_until_idle(10_000).is_idle());
+        let seen = seen.borrow();
+        let aborts: Vec<u64> = seen.iter().filter(|x| x.2).map(|x| x.0).collect();
+        assert_eq!(aborts, vec![DEFAULT_RESET_CYCLES, 20]);
+        assert!(
+            seen.iter().all(|x| !(x.2 && x.3)),
+            "no request with an abort"
+        );
+        // The frame pending at cycle 20 (requested at cycle 10) was dropped; the
+        // next one was requested after it and sent.
+        let failed: Vec<(u64, u8)> = s
+            .tx_failed()
+            .iter()
+            .map(|e| (e.cycle, e.frame.dlc))
+            .collect();
+        assert_eq!(failed, vec![(20, 1)]);
+        let sent: Vec<(usize, u8)> = s.tx_done().iter().map(|e| (e.node, e.frame.dlc)).collect();
+        assert_eq!(sent, vec![(0, 40), (1, 2)]);
     }
 }

@@ -36,6 +36,7 @@ fn run(timing: BitTiming, clocks: u64) -> (f64, u64) {
                 timing,
                 tx_req: true,
                 tx_frame: frames[i],
+                ..Default::default()
             });
             tx[i] = out.tx;
             delivered += out.tx_done as u64;

@@ -3,6 +3,7 @@
 
 pub mod generate;
 pub mod run;
+pub mod synth;
 pub mod wave;
 
 use std::path::{Path, PathBuf};

@@ -8,9 +8,11 @@ use std::path::{Path, PathBuf};
 use drcc_cosim::cosim::CosimError;
 use drcc_cosim::system::{NodeEvent, Sample};
 use drcc_cosim::trace::{BusVcdWriter, VcdWriter};
+use drcc_cosim::ControllerConfig;
 use drcc_testbench::bitrate::sample_point_percent;
 use drcc_testbench::engines::{available, EngineKind, VERILATOR_HINT};
 use drcc_testbench::run::{self, RunResult};
+use drcc_testbench::scenario::mode_name;
 use drcc_testbench::Scenario;
 
 use super::{CliError, CliResult};
@@ -79,13 +81,37 @@ fn print_tables(sc: &Scenario, r: &RunResult) {
     for (i, name) in sc.nodes.iter().enumerate() {
         let sent: Vec<&NodeEvent> = r.sent.iter().filter(|e| e.node == i).collect();
         let got: Vec<&NodeEvent> = r.deliveries.iter().filter(|e| e.node == i).collect();
+        let failed: Vec<&NodeEvent> = r.failed.iter().filter(|e| e.node == i).collect();
+        let config = sc.configs.get(i).copied().unwrap_or_default();
         println!(
-            "\nnode {i} `{name}`: sent {} frame(s), received {} frame(s)",
+            "\nnode {i} `{name}`: sent {} frame(s), received {} frame(s){}{}",
             sent.len(),
-            got.len()
+            got.len(),
+            if failed.is_empty() {
+                String::new()
+            } else {
+                format!(", dropped {} frame(s)", failed.len())
+            },
+            if config == ControllerConfig::default() {
+                String::new()
+            } else {
+                format!(
+                    " [mode {}, ewl {}{}]",
+                    mode_name(config.mode),
+                    config.ewl,
+                    if config.single_shot {
+                        ", single shot"
+                    } else {
+                        ""
+                    }
+                )
+            }
         );
         for e in &sent {
             row("sent", e);
+        }
+        for e in &failed {
+            row("dropped", e);
         }
         for e in &got {
             row("received", e);

@@ -5,6 +5,7 @@
 
 pub mod bench;
 pub mod bitrate;
+pub mod conformance;
 pub mod engines;
 pub mod random;
 pub mod run;

@@ -153,9 +153,11 @@ impl Traffic {
             clock_hz: self.clock_hz,
             timing,
             nodes: (0..self.nodes).map(|i| format!("node{i}")).collect(),
+            configs: vec![drcc_cosim::ControllerConfig::default(); self.nodes],
             frames,
             expect: Expectations::EveryFrameToEveryOtherNode,
             faults: Vec::new(),
+            aborts: Vec::new(),
             max_cycles,
             reset_cycles: drcc_cosim::system::DEFAULT_RESET_CYCLES,
         })

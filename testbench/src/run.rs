@@ -22,6 +22,8 @@ pub struct RunResult {
     pub deliveries: Vec<NodeEvent>,
     /// Every sent frame (`tx_done`).
     pub sent: Vec<NodeEvent>,
+    /// Every dropped frame (`tx_failed`).
+    pub failed: Vec<NodeEvent>,
     /// Number of lost arbitrations.
     pub arb_lost: usize,
     /// Expectations not met (empty: pass).
@@ -46,11 +48,17 @@ pub fn build_system_with(
     let mut sys = System::new(engines, sc.timing)?;
     sys.set_names(sc.nodes.clone())?;
     sys.set_reset_cycles(sc.reset_cycles);
+    for (node, config) in sc.configs.iter().enumerate() {
+        sys.set_node_config(node, *config)?;
+    }
     for f in &sc.faults {
         sys.add_fault(*f)?;
     }
     for f in &sc.frames {
         sys.submit(f.node, f.at_cycle, f.frame)?;
+    }
+    for a in &sc.aborts {
+        sys.abort(a.node, a.at_cycle)?;
     }
     Ok(sys)
 }
@@ -92,6 +100,7 @@ pub fn result(sc: &Scenario, sys: &System, outcome: RunOutcome) -> RunResult {
         outcome,
         deliveries: sys.deliveries().to_vec(),
         sent: sys.tx_done().to_vec(),
+        failed: sys.tx_failed().to_vec(),
         arb_lost: sys.arb_lost().len(),
         problems: check(sc, sys, outcome),
     }
@@ -135,10 +144,10 @@ fn compare(
         problems.push(format!(
             "{} did not {} frame {i} ({f})",
             describe(sc, node),
-            if verb == "received" {
-                "receive"
-            } else {
-                "send"
+            match verb {
+                "received" => "receive",
+                "dropped" => "drop (tx_failed)",
+                _ => "send",
             }
         ));
     }
@@ -176,6 +185,8 @@ pub fn check(sc: &Scenario, sys: &System, outcome: RunOutcome) -> Vec<String> {
         |k: usize| -> Vec<&NodeEvent> { sys.deliveries().iter().filter(|e| e.node == k).collect() };
     let tx_of =
         |k: usize| -> Vec<&NodeEvent> { sys.tx_done().iter().filter(|e| e.node == k).collect() };
+    let failed_of =
+        |k: usize| -> Vec<&NodeEvent> { sys.tx_failed().iter().filter(|e| e.node == k).collect() };
     match &sc.expect {
         Expectations::EveryFrameToEveryOtherNode => {
             for k in 0..n {
@@ -196,6 +207,9 @@ pub fn check(sc: &Scenario, sys: &System, outcome: RunOutcome) -> Vec<String> {
                 }
                 if let Some(s) = &e.sends {
                     compare(sc, e.node, "sent", s, &tx_of(e.node), &mut problems);
+                }
+                if let Some(f) = &e.fails {
+                    compare(sc, e.node, "dropped", f, &failed_of(e.node), &mut problems);
                 }
             }
         }

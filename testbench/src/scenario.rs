@@ -8,6 +8,9 @@
 //! nodes = ["ecu", "gateway", "sensor"]   # or a count: nodes = 3 (named node0..)
 //! max_ms = 20                  # optional; or max_bits / max_cycles
 //! reset_cycles = 4             # optional
+//! mode = "normal"              # optional: normal | listen_only | self_test | loopback
+//! ewl = 96                     # optional: error warning limit 0..=255 (default 96)
+//! single_shot = false          # optional: no automatic retransmission
 //!
 //! [timing]                     # explicit bit timing instead of `bitrate`
 //! brp = 0                      # 0..=63: one tq = brp+1 clocks
@@ -15,6 +18,10 @@
 //! tseg2 = 3                    # 1..=8 tq
 //! sjw = 3                      # 1..=4, <= tseg2 (default min(4, tseg2))
 //! triple_sampling = false
+//!
+//! [[node_config]]              # optional, per node: overrides mode / ewl / single_shot
+//! node = "sensor"
+//! mode = "listen_only"
 //!
 //! [[frame]]                    # frames are numbered 0, 1, ... in file order
 //! node = "ecu"                 # sender: name or index
@@ -29,6 +36,12 @@
 //! node = "gateway"             # sender and delivered once to every other node
 //! receives = [0, 2]            # frame numbers this node must receive (any order)
 //! sends = []                   # frame numbers this node must send (tx_done)
+//! fails = []                   # frame numbers dropped with tx_failed (single shot,
+//!                              # abort, listen-only); not checked when absent
+//!
+//! [[abort]]                    # optional: a one-clock tx_abort (timing contract §8)
+//! node = "ecu"
+//! at_bit = 60                  # or at_cycle
 //!
 //! [[fault]]                    # optional
 //! kind = "stuck_dominant"      # stuck_dominant | stuck_recessive | flip
@@ -40,6 +53,9 @@
 //!
 //! Errors name the file, the line and the field (`demo.toml:14: frame[1].dlc: ...`);
 //! bit-timing errors name the field and its legal range.
+//!
+//! The default expectation assumes every node transmits normally; with
+//! listen-only or loop-back nodes, or single shot, give [[expect]] lists.
 
 use std::fmt;
 use std::ops::Range;
@@ -47,7 +63,7 @@ use std::path::Path;
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
 use drcc_cosim::system::DEFAULT_RESET_CYCLES;
-use drcc_cosim::{BitTiming, Frame};
+use drcc_cosim::{BitTiming, ControllerConfig, Frame, Mode};
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -64,6 +80,15 @@ pub struct ScheduledFrame {
     pub frame: Frame,
 }
 
+/// A one-clock `tx_abort` request.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ScheduledAbort {
+    /// The node.
+    pub node: usize,
+    /// Clock cycle of the pulse (raised at the first cycle after reset if earlier).
+    pub at_cycle: u64,
+}
+
 /// What one node must receive and send.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct NodeExpectation {
@@ -73,6 +98,8 @@ pub struct NodeExpectation {
     pub receives: Option<Vec<usize>>,
     /// Frame numbers it must send (`tx_done`), each exactly once (None: not checked).
     pub sends: Option<Vec<usize>>,
+    /// Frame numbers it must drop (`tx_failed`), each exactly once (None: not checked).
+    pub fails: Option<Vec<usize>>,
 }
 
 /// Expected outcome of a scenario.
@@ -99,12 +126,17 @@ pub struct Scenario {
     pub timing: BitTiming,
     /// Node names (index = node number).
     pub nodes: Vec<String>,
+    /// Controller configuration per node (index = node number): mode, error
+    /// warning limit, single shot.
+    pub configs: Vec<ControllerConfig>,
     /// Frames, numbered by position.
     pub frames: Vec<ScheduledFrame>,
     /// Expected deliveries.
     pub expect: Expectations,
     /// Injected faults.
     pub faults: Vec<Fault>,
+    /// Host aborts.
+    pub aborts: Vec<ScheduledAbort>,
     /// Cycle limit of a run.
     pub max_cycles: u64,
     /// Reset cycles at the start.
@@ -130,7 +162,9 @@ impl Scenario {
     /// A default cycle limit: the last due time plus a generous budget per frame.
     pub fn default_max_cycles(frames: &[ScheduledFrame], clocks_per_bit: u64) -> u64 {
         let last = frames.iter().map(|f| f.at_cycle).max().unwrap_or(0);
-        let budget_bits = (frames.len() as u64).saturating_mul(300).saturating_add(1000);
+        let budget_bits = (frames.len() as u64)
+            .saturating_mul(300)
+            .saturating_add(1000);
         last.saturating_add(budget_bits.saturating_mul(clocks_per_bit))
     }
 
@@ -177,12 +211,39 @@ impl Scenario {
         let _ = writeln!(s, "nodes = [{}]", nodes.join(", "));
         let _ = writeln!(s, "max_cycles = {}", self.max_cycles);
         let _ = writeln!(s, "reset_cycles = {}", self.reset_cycles);
+        // The configuration: as scenario keys when every node shares it, else per node.
+        let same = self.configs.windows(2).all(|w| w[0] == w[1]);
+        let default = ControllerConfig::default();
+        let write_config = |s: &mut String, c: &ControllerConfig| {
+            if c.mode != default.mode {
+                let _ = writeln!(s, "mode = {}", q(mode_name(c.mode)));
+            }
+            if c.ewl != default.ewl {
+                let _ = writeln!(s, "ewl = {}", c.ewl);
+            }
+            if c.single_shot != default.single_shot {
+                let _ = writeln!(s, "single_shot = {}", c.single_shot);
+            }
+        };
+        if same {
+            if let Some(c) = self.configs.first() {
+                write_config(&mut s, c);
+            }
+        }
         let t = &self.timing;
         let _ = writeln!(
             s,
             "\n[timing]\nbrp = {}\ntseg1 = {}\ntseg2 = {}\nsjw = {}\ntriple_sampling = {}",
             t.brp, t.tseg1, t.tseg2, t.sjw, t.triple_sampling
         );
+        if !same {
+            for (name, c) in self.nodes.iter().zip(&self.configs) {
+                if *c != default {
+                    let _ = writeln!(s, "\n[[node_config]]\nnode = {}", q(name));
+                    write_config(&mut s, c);
+                }
+            }
+        }
         for (i, f) in self.frames.iter().enumerate() {
             let fr = &f.frame;
             let _ = writeln!(s, "\n[[frame]] # {i}");
@@ -209,7 +270,18 @@ impl Scenario {
                 if let Some(r) = &e.sends {
                     let _ = writeln!(s, "sends = {r:?}");
                 }
+                if let Some(r) = &e.fails {
+                    let _ = writeln!(s, "fails = {r:?}");
+                }
             }
+        }
+        for a in &self.aborts {
+            let _ = writeln!(
+                s,
+                "\n[[abort]]\nnode = {}\nat_cycle = {}",
+                q(&self.nodes[a.node]),
+                a.at_cycle
+            );
         }
         for f in &self.faults {
             let _ = writeln!(s, "\n[[fault]]\nkind = {}", q(f.kind.name()));
@@ -260,6 +332,16 @@ impl fmt::Display for ScenarioError {
 }
 
 impl std::error::Error for ScenarioError {}
+
+/// The scenario spelling of a mode.
+pub fn mode_name(m: Mode) -> &'static str {
+    match m {
+        Mode::Normal => "normal",
+        Mode::ListenOnly => "listen_only",
+        Mode::SelfTest => "self_test",
+        Mode::Loopback => "loopback",
+    }
+}
 
 /// A TOML/serde message on one line, with integer types spelled as ranges.
 fn friendly(msg: &str) -> String {
@@ -342,10 +424,26 @@ struct RawScenario {
     expect: Option<Vec<Spanned<RawExpect>>>,
     #[serde(default)]
     fault: Vec<Spanned<RawFault>>,
+    #[serde(default)]
+    abort: Vec<Spanned<RawAbort>>,
     max_cycles: Option<Spanned<u64>>,
     max_bits: Option<Spanned<u64>>,
     max_ms: Option<Spanned<f64>>,
     reset_cycles: Option<Spanned<u64>>,
+    mode: Option<Spanned<String>>,
+    ewl: Option<Spanned<i64>>,
+    single_shot: Option<bool>,
+    #[serde(default)]
+    node_config: Vec<Spanned<RawNodeConfig>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawNodeConfig {
+    node: Spanned<toml::Value>,
+    mode: Option<Spanned<String>>,
+    ewl: Option<Spanned<i64>>,
+    single_shot: Option<bool>,
 }
 
 #[derive(Deserialize)]
@@ -380,6 +478,15 @@ struct RawExpect {
     node: Spanned<toml::Value>,
     receives: Option<Spanned<Vec<usize>>>,
     sends: Option<Spanned<Vec<usize>>>,
+    fails: Option<Spanned<Vec<usize>>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawAbort {
+    node: Spanned<toml::Value>,
+    at_cycle: Option<Spanned<u64>>,
+    at_bit: Option<Spanned<u64>>,
 }
 
 #[derive(Deserialize)]
@@ -524,6 +631,37 @@ impl Loader<'_> {
         };
         let cpb = timing.clocks_per_bit() as u64;
 
+        // Controller configuration: scenario keys, then per-node overrides.
+        let base = self.config(
+            ControllerConfig::default(),
+            &raw.mode,
+            &raw.ewl,
+            raw.single_shot,
+            "",
+        )?;
+        let mut configs = vec![base; names.len()];
+        let mut configured: Vec<usize> = Vec::new();
+        for (i, nc) in raw.node_config.iter().enumerate() {
+            let nc = nc.get_ref();
+            let field = format!("node_config[{i}]");
+            let node = self.node_ref(&nc.node, &names, &format!("{field}.node"))?;
+            if configured.contains(&node) {
+                return Err(self.err(
+                    nc.node.span(),
+                    &format!("{field}.node"),
+                    format!("node {:?} has two [[node_config]] entries", names[node]),
+                ));
+            }
+            configured.push(node);
+            configs[node] = self.config(
+                base,
+                &nc.mode,
+                &nc.ewl,
+                nc.single_shot,
+                &format!("{field}."),
+            )?;
+        }
+
         // Frames.
         let mut frames = Vec::new();
         for (i, sf) in raw.frame.iter().enumerate() {
@@ -562,10 +700,12 @@ impl Loader<'_> {
                     };
                     let receives = check(&e.receives, "receives")?;
                     let sends = check(&e.sends, "sends")?;
+                    let fails = check(&e.fails, "fails")?;
                     v.push(NodeExpectation {
                         node,
                         receives,
                         sends,
+                        fails,
                     });
                 }
                 Expectations::Explicit(v)
@@ -576,6 +716,17 @@ impl Loader<'_> {
         let mut faults = Vec::new();
         for (i, f) in raw.fault.iter().enumerate() {
             faults.push(self.fault(i, f.get_ref(), &names, cpb)?);
+        }
+
+        // Aborts.
+        let mut aborts = Vec::new();
+        for (i, a) in raw.abort.iter().enumerate() {
+            let a = a.get_ref();
+            let field = format!("abort[{i}]");
+            aborts.push(ScheduledAbort {
+                node: self.node_ref(&a.node, &names, &format!("{field}.node"))?,
+                at_cycle: self.at(&a.at_cycle, &a.at_bit, &field, cpb)?,
+            });
         }
 
         // Limits.
@@ -624,9 +775,11 @@ impl Loader<'_> {
             clock_hz,
             timing,
             nodes: names,
+            configs,
             frames,
             expect,
             faults,
+            aborts,
             max_cycles,
             reset_cycles,
         })
@@ -666,6 +819,7 @@ impl Loader<'_> {
             "sjw" => t.sjw.as_ref().map(|s| s.span()),
             _ => None,
         };
+        // validate() also refuses a TSEG1 shorter than 3 clocks, naming `tseg1`.
         if let Err(e) = bt.validate() {
             // The message names the field between backticks.
             let field = e.split('`').nth(1).unwrap_or("").to_string();
@@ -675,19 +829,52 @@ impl Loader<'_> {
             };
             return Err(self.err(sp, &f, e));
         }
-        if (bt.brp as u32 + 1) * bt.tseg1 as u32 >= 3 {
-            Ok(bt)
-        } else {
-            Err(self.err(
-                t.tseg1.span(),
-                "timing.tseg1",
-                format!(
-                    "(brp+1) x tseg1 = {} clocks: a node needs at least 3 clocks before the \
-                     sample point to read back its own bit (timing contract, section 5)",
-                    (bt.brp as u32 + 1) * bt.tseg1 as u32
-                ),
-            ))
+        Ok(bt)
+    }
+
+    /// `base` with the given keys applied; `prefix` is `""` for the scenario keys
+    /// or `node_config[i].`.
+    fn config(
+        &self,
+        base: ControllerConfig,
+        mode: &Option<Spanned<String>>,
+        ewl: &Option<Spanned<i64>>,
+        single_shot: Option<bool>,
+        prefix: &str,
+    ) -> Result<ControllerConfig, ScenarioError> {
+        let mut c = base;
+        if let Some(m) = mode {
+            c.mode = match m.get_ref().as_str() {
+                "normal" => Mode::Normal,
+                "listen_only" => Mode::ListenOnly,
+                "self_test" => Mode::SelfTest,
+                "loopback" => Mode::Loopback,
+                other => {
+                    return Err(self.err(
+                        m.span(),
+                        &format!("{prefix}mode"),
+                        format!(
+                            "{other:?}: legal modes are normal, listen_only, self_test, loopback"
+                        ),
+                    ))
+                }
+            };
         }
+        if let Some(e) = ewl {
+            let v = *e.get_ref();
+            if !(0..=255).contains(&v) {
+                return Err(self.err(
+                    e.span(),
+                    &format!("{prefix}ewl"),
+                    format!("{v} is out of range: legal values are 0..=255"),
+                ));
+            }
+            c.ewl = v as u8;
+        }
+        if let Some(s) = single_shot {
+            c.single_shot = s;
+        }
+        Ok(c)
     }
 
     fn at(

@@ -4,7 +4,11 @@
 //! - model vs verilator: 2650 random frames over three bit timings (brp 0, 2 and
 //!   11), and every bundled scenario (faults included);
 //! - model vs rust-hdl: every bundled scenario and 50 random frames (rust-hdl's
-//!   simulator is about 50 times slower than Verilator).
+//!   simulator is about 50 times slower than Verilator);
+//! - the controller configuration and host control (timing contract §6-§9):
+//!   every mode, single shot, low warning limits, per-node mixes, bus errors and
+//!   aborts, model vs verilator (and a short mix on rust-hdl), so `tx_failed` and
+//!   every diagnostics register are compared clock by clock.
 //!
 //! A missing Verilator skips locally and fails in CI (`CI` or
 //! `DRCC_REQUIRE_VERILATOR` set). On a divergence the test fails with the report;
@@ -13,9 +17,12 @@
 
 use std::path::PathBuf;
 
+use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
+use drcc_cosim::{ControllerConfig, Mode};
 use drcc_testbench::engines::{available, verilator_required, VERILATOR_HINT};
 use drcc_testbench::random::Traffic;
 use drcc_testbench::run::cosim;
+use drcc_testbench::scenario::{Expectations, ScheduledAbort};
 use drcc_testbench::{scenarios_dir, EngineKind, Scenario};
 
 fn verilator_present() -> bool {
@@ -33,6 +40,13 @@ fn verilator_present() -> bool {
 }
 
 fn lockstep(sc: &Scenario, a: EngineKind, b: EngineKind) {
+    if let Err(e) = try_lockstep(sc, a, b) {
+        panic!("{e}");
+    }
+}
+
+/// As [`lockstep`], returning the failure report instead of panicking.
+fn try_lockstep(sc: &Scenario, a: EngineKind, b: EngineKind) -> Result<(), String> {
     let dir: PathBuf = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!(
         "cosim-{}-{}-{}",
         sc.name,
@@ -41,24 +55,19 @@ fn lockstep(sc: &Scenario, a: EngineKind, b: EngineKind) {
     ));
     match cosim(sc, a, b, Some(dir.clone())) {
         Ok(run) => {
-            assert!(
-                run.result.passed(),
-                "{}: {}",
-                sc.name,
-                run.result.problems.join("\n")
-            );
-            assert!(
-                run.report.outcome.is_idle(),
-                "{}: {:?}",
-                sc.name,
-                run.report.outcome
-            );
+            if !run.result.passed() {
+                return Err(format!("{}: {}", sc.name, run.result.problems.join("\n")));
+            }
+            if !run.report.outcome.is_idle() {
+                return Err(format!("{}: {:?}", sc.name, run.report.outcome));
+            }
+            Ok(())
         }
         Err(e) => {
             let _ = std::fs::create_dir_all(&dir);
             let toml = dir.join("scenario.toml");
             let _ = std::fs::write(&toml, sc.to_toml());
-            panic!(
+            Err(format!(
                 "{} ({}):\n{e}\nreproduce: drcc cosim {} --engines {},{} --vcd-dir {}",
                 sc.name,
                 sc.description,
@@ -66,7 +75,7 @@ fn lockstep(sc: &Scenario, a: EngineKind, b: EngineKind) {
                 a.name(),
                 b.name(),
                 dir.display()
-            );
+            ))
         }
     }
 }
@@ -144,6 +153,96 @@ fn model_vs_rusthdl_random() {
     t.max_gap_bits = 40;
     lockstep(
         &t.scenario().unwrap(),
+        EngineKind::Model,
+        EngineKind::RustHdl,
+    );
+}
+
+/// Node configurations to co-simulate: (label, per-node configuration of 3 nodes).
+fn config_cases() -> Vec<(&'static str, Vec<ControllerConfig>)> {
+    let c = |mode, ewl, single_shot| ControllerConfig {
+        mode,
+        ewl,
+        single_shot,
+    };
+    let n = |mode| c(mode, 96, false);
+    vec![
+        ("low-ewl", vec![c(Mode::Normal, 8, false); 3]),
+        ("single-shot", vec![c(Mode::Normal, 96, true); 3]),
+        (
+            "listen-only-node",
+            vec![n(Mode::ListenOnly), n(Mode::Normal), n(Mode::Normal)],
+        ),
+        (
+            "mixed",
+            vec![
+                c(Mode::Normal, 1, true),
+                n(Mode::SelfTest),
+                n(Mode::Loopback),
+            ],
+        ),
+        ("self-test", vec![c(Mode::SelfTest, 0, false); 3]),
+        ("listen-only", vec![n(Mode::ListenOnly); 3]),
+        ("loopback", vec![c(Mode::Loopback, 255, true); 3]),
+    ]
+}
+
+/// Random traffic on 3 nodes with the given configuration, a few bit flips on the
+/// bus (errors for the diagnostics) and aborts; expectations are not checked
+/// (they depend on the mode), only agreement and an idle end.
+fn configured(seed: u64, frames: usize, label: &str, configs: Vec<ControllerConfig>) -> Scenario {
+    let mut sc = random(seed, frames, 8_000_000, 500_000);
+    let cpb = sc.clocks_per_bit();
+    sc.name = format!("{}-{label}", sc.name);
+    sc.description = format!("{} ({label})", sc.description);
+    sc.configs = configs;
+    sc.expect = Expectations::Explicit(Vec::new());
+    let first = sc.frames[0].at_cycle;
+    let last = sc.frames.iter().map(|f| f.at_cycle).max().unwrap_or(0);
+    let span = (last - first).max(1);
+    // Flips of a whole bit (sure to be sampled) and of 1 or 2 clocks (edges).
+    sc.faults = (0..12u64)
+        .map(|k| Fault {
+            target: FaultTarget::Bus,
+            kind: FaultKind::Flip,
+            start: first + 40 * cpb + (k * 7919 * cpb + k * 5) % span,
+            cycles: if k % 3 == 0 { cpb } else { k % 3 },
+        })
+        .collect();
+    sc.aborts = sc
+        .frames
+        .iter()
+        .step_by(4)
+        .enumerate()
+        .map(|(k, f)| ScheduledAbort {
+            node: f.node,
+            at_cycle: f.at_cycle + (k as u64 * 13 * cpb + k as u64) % (80 * cpb),
+        })
+        .collect();
+    sc
+}
+
+/// Every case runs; the failures are reported together.
+#[test]
+fn model_vs_verilator_modes_and_aborts() {
+    if verilator_present() {
+        let failures: Vec<String> = config_cases()
+            .into_iter()
+            .enumerate()
+            .filter_map(|(k, (label, configs))| {
+                let sc = configured(300 + k as u64, 40, label, configs);
+                try_lockstep(&sc, EngineKind::Model, EngineKind::Verilator).err()
+            })
+            .collect();
+        assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    }
+}
+
+#[test]
+fn model_vs_rusthdl_modes_and_aborts() {
+    let (label, configs) = config_cases().swap_remove(3);
+    lockstep(
+        &configured(310, 12, label, configs),
         EngineKind::Model,
         EngineKind::RustHdl,
     );

@@ -84,6 +84,54 @@ fn loader_errors() {
             "[timing]\nbrp = 64000\ntseg1 = 5\ntseg2 = 2\n".to_string(),
         ),
         (
+            "tseg1 too short",
+            "[timing]\nbrp = 0\ntseg1 = 2\ntseg2 = 6\nsjw = 1\n".to_string(),
+        ),
+        (
+            "tseg1 too short at brp 1",
+            "[timing]\nbrp = 1\ntseg1 = 1\ntseg2 = 8\nsjw = 1\n".to_string(),
+        ),
+        ("unknown mode", format!("mode = \"silent\"\n{FRAME}")),
+        ("mode type", format!("mode = 1\n{FRAME}")),
+        ("ewl range", format!("ewl = 256\n{FRAME}")),
+        ("negative ewl", format!("ewl = -1\n{FRAME}")),
+        ("single_shot type", format!("single_shot = 1\n{FRAME}")),
+        (
+            "node_config mode",
+            format!("{FRAME}[[node_config]]\nnode = \"b\"\nmode = \"loop_back\"\n"),
+        ),
+        (
+            "node_config ewl",
+            format!("{FRAME}[[node_config]]\nnode = 0\newl = 1000\n"),
+        ),
+        (
+            "node_config unknown node",
+            format!("{FRAME}[[node_config]]\nnode = \"c\"\nsingle_shot = true\n"),
+        ),
+        (
+            "node_config twice",
+            format!(
+                "{FRAME}[[node_config]]\nnode = \"b\"\newl = 10\n\
+                 [[node_config]]\nnode = 1\nmode = \"self_test\"\n"
+            ),
+        ),
+        (
+            "node_config unknown key",
+            format!("{FRAME}[[node_config]]\nnode = \"b\"\nsilent = true\n"),
+        ),
+        (
+            "abort unknown node",
+            format!("{FRAME}[[abort]]\nnode = 5\nat_bit = 30\n"),
+        ),
+        (
+            "abort two due times",
+            format!("{FRAME}[[abort]]\nnode = \"a\"\nat_bit = 30\nat_cycle = 9\n"),
+        ),
+        (
+            "expect fails bad frame",
+            format!("{FRAME}[[expect]]\nnode = \"a\"\nfails = [3]\n"),
+        ),
+        (
             "expect bad frame",
             format!("{FRAME}[[expect]]\nnode = \"b\"\nreceives = [0, 1]\n"),
         ),
@@ -122,6 +170,22 @@ fn errors_name_file_line_and_field() {
     let e = Scenario::parse(&format!("{HEAD}{FRAME}dlc = \"x\"\n"), "z.toml").unwrap_err();
     assert_eq!(e.line, Some(8));
     assert_eq!(e.field.as_deref(), Some("frame[0].dlc"));
+    // Configuration errors too.
+    let e = Scenario::parse(
+        &format!("{HEAD}{FRAME}[[node_config]]\nnode = \"b\"\nmode = \"x\"\n"),
+        "w.toml",
+    )
+    .unwrap_err();
+    assert_eq!(e.line, Some(10));
+    assert_eq!(e.field.as_deref(), Some("node_config[0].mode"));
+    let e = Scenario::parse(
+        &format!("{HEAD}[timing]\nbrp = 0\ntseg1 = 2\ntseg2 = 6\nsjw = 1\n"),
+        "v.toml",
+    )
+    .unwrap_err();
+    assert_eq!(e.line, Some(6));
+    assert_eq!(e.field.as_deref(), Some("timing.tseg1"));
+    assert!(e.message.contains("minimum"), "{}", e.message);
     // A missing file is an error, not a panic.
     assert!(Scenario::load(std::path::Path::new("/nonexistent/s.toml")).is_err());
 }
@@ -144,5 +208,72 @@ fn round_trip_through_toml() {
             (&sc.frames, &sc.faults, &sc.expect, sc.timing),
             "{file}"
         );
+        assert_eq!(back.configs, sc.configs, "{file}");
     }
+}
+
+#[test]
+fn controller_configuration_keys() {
+    use drcc_cosim::{ControllerConfig, Mode};
+    // Default: every node normal, EWL 96, automatic retransmission.
+    let sc = Scenario::parse(&format!("{HEAD}{FRAME}"), "d.toml").unwrap();
+    assert_eq!(sc.configs, vec![ControllerConfig::default(); 2]);
+    // Scenario keys apply to every node; [[node_config]] overrides per node.
+    let text = format!(
+        "{HEAD}mode = \"self_test\"\newl = 120\nsingle_shot = true\n{FRAME}\
+         [[node_config]]\nnode = \"b\"\nmode = \"listen_only\"\n\
+         [[expect]]\nnode = \"a\"\nsends = []\nfails = [0]\n"
+    );
+    let sc = Scenario::parse(&text, "c.toml").unwrap();
+    assert!(sc.aborts.is_empty());
+    let a = ControllerConfig {
+        mode: Mode::SelfTest,
+        ewl: 120,
+        single_shot: true,
+    };
+    let b = ControllerConfig {
+        mode: Mode::ListenOnly,
+        ..a
+    };
+    assert_eq!(sc.configs, vec![a, b]);
+    let back = Scenario::parse(&sc.to_toml(), "c2.toml").unwrap();
+    assert_eq!((&back.configs, &back.expect), (&sc.configs, &sc.expect));
+    // Aborts: at_bit or at_cycle, round trip as at_cycle.
+    let text = format!(
+        "{HEAD}{FRAME}[[abort]]\nnode = \"b\"\nat_bit = 3\n[[abort]]\nnode = 0\nat_cycle = 7\n"
+    );
+    let sc = Scenario::parse(&text, "a.toml").unwrap();
+    let cpb = sc.clocks_per_bit();
+    assert_eq!(
+        sc.aborts,
+        vec![
+            drcc_testbench::scenario::ScheduledAbort {
+                node: 1,
+                at_cycle: 3 * cpb
+            },
+            drcc_testbench::scenario::ScheduledAbort {
+                node: 0,
+                at_cycle: 7
+            },
+        ]
+    );
+    let back = Scenario::parse(&sc.to_toml(), "a2.toml").unwrap();
+    assert_eq!(back.aborts, sc.aborts);
+    // Every mode name.
+    for (name, mode) in [
+        ("normal", Mode::Normal),
+        ("listen_only", Mode::ListenOnly),
+        ("self_test", Mode::SelfTest),
+        ("loopback", Mode::Loopback),
+    ] {
+        let text = format!("{HEAD}mode = \"{name}\"\nbitrate = 500_000\n");
+        let sc = Scenario::parse(&text, "m.toml").unwrap();
+        assert!(sc.configs.iter().all(|c| c.mode == mode), "{name}");
+        let back = Scenario::parse(&sc.to_toml(), "m2.toml").unwrap();
+        assert_eq!(back.configs, sc.configs, "{name}");
+    }
+    // Same configuration on every node: written as scenario keys.
+    let sc = Scenario::parse(&format!("{HEAD}ewl = 7\n{FRAME}"), "e.toml").unwrap();
+    assert!(sc.to_toml().contains("\newl = 7\n"));
+    assert!(!sc.to_toml().contains("node_config"));
 }

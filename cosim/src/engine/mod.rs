@@ -13,6 +13,11 @@ pub mod verilator;
 
 use crate::frame::Frame;
 
+/// Minimum length of TSEG1 in clocks, `(brp+1) * tseg1`: a node must read back its
+/// own bit through the 2-clock receive synchronizer before the sample point
+/// (timing contract §6, §10).
+pub const MIN_TSEG1_CLOCKS: u32 = 3;
+
 /// Bit-timing configuration, in time quanta (ISO 11898-1, 11.3.1).
 ///
 /// The RTL ports carry `value - 1` for tseg1/tseg2/sjw (see `drcc_hdl::channel::btl`).
@@ -52,7 +57,8 @@ impl BitTiming {
     pub fn clocks_per_bit(&self) -> u32 {
         self.tq_per_bit() * (self.brp as u32 + 1)
     }
-    /// Checks every field against its legal range; the error names the field.
+    /// Checks every field against its legal range, the 8..=25 tq of a bit and the
+    /// minimum TSEG1 of [`MIN_TSEG1_CLOCKS`] clocks; the error names the field.
     pub fn validate(&self) -> Result<(), String> {
         let check = |name: &str, v: u8, lo: u8, hi: u8| {
             if v < lo || v > hi {
@@ -79,7 +85,23 @@ impl BitTiming {
                 self.tq_per_bit()
             ));
         }
+        let clocks = (self.brp as u32 + 1) * self.tseg1 as u32;
+        if clocks < MIN_TSEG1_CLOCKS {
+            return Err(format!(
+                "bit timing field `tseg1` = {} is too short: (brp+1) x tseg1 = {clocks} \
+                 clock(s), but a node needs at least {MIN_TSEG1_CLOCKS} to read back its own \
+                 bit through the 2-clock synchronizer: the legal minimum at brp = {} is \
+                 tseg1 = {}",
+                self.tseg1,
+                self.brp,
+                self.min_tseg1()
+            ));
+        }
         Ok(())
+    }
+    /// The smallest TSEG1 (tq) that lasts [`MIN_TSEG1_CLOCKS`] clocks at this BRP.
+    pub fn min_tseg1(&self) -> u8 {
+        MIN_TSEG1_CLOCKS.div_ceil(self.brp as u32 + 1).max(1) as u8
     }
 }
 
@@ -223,4 +245,57 @@ pub trait ChannelEngine {
     fn name(&self) -> &'static str;
     /// Apply inputs, clock once, return the outputs after the edge.
     fn step(&mut self, inputs: &ChannelInputs) -> ChannelOutputs;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tseg1_must_last_three_clocks() {
+        let t = |brp, tseg1, tseg2| BitTiming {
+            brp,
+            tseg1,
+            tseg2,
+            sjw: 1,
+            triple_sampling: false,
+        };
+        // (brp+1) * tseg1 < 3 is refused, naming the field and the minimum.
+        for (brp, tseg1, min) in [(0, 1, 3), (0, 2, 3), (1, 1, 2)] {
+            let e = t(brp, tseg1, 8).validate().unwrap_err();
+            assert!(
+                e.starts_with(&format!("bit timing field `tseg1` = {tseg1} ")),
+                "{e}"
+            );
+            assert!(
+                e.ends_with(&format!(
+                    "the legal minimum at brp = {brp} is tseg1 = {min}"
+                )),
+                "{e}"
+            );
+            assert_eq!(t(brp, tseg1, 8).min_tseg1(), min);
+        }
+        // The boundary and everything above it is accepted.
+        for (brp, tseg1) in [(0, 3), (1, 2), (2, 1), (63, 1)] {
+            assert_eq!(
+                t(brp, tseg1, 8).validate(),
+                Ok(()),
+                "brp {brp} tseg1 {tseg1}"
+            );
+        }
+        assert_eq!(BitTiming::default().validate(), Ok(()));
+    }
+
+    #[test]
+    fn mode_codes_round_trip() {
+        for m in [
+            Mode::Normal,
+            Mode::ListenOnly,
+            Mode::SelfTest,
+            Mode::Loopback,
+        ] {
+            assert_eq!(Mode::from_code(m.code()), m);
+        }
+        assert_eq!(ControllerConfig::default().ewl, 96);
+    }
 }

@@ -7,7 +7,7 @@
 //! settle; read the outputs (inputs change away from the clock edge, as the
 //! conventions of DESIGN.md require).
 
-use super::{ChannelEngine, ChannelInputs, ChannelOutputs, Probes};
+use super::{ChannelEngine, ChannelInputs, ChannelOutputs, Diagnostics, Probes};
 use crate::frame::Frame;
 use drcc_hdl::channel::can_channel::CanChannel;
 use rust_hdl::prelude::*;
@@ -60,12 +60,16 @@ impl ChannelEngine for RustHdlEngine {
         u.cfg_tseg2.next = (i.timing.tseg2.clamp(1, 8) as u64 - 1).into();
         u.cfg_sjw.next = (i.timing.sjw.clamp(1, 4) as u64 - 1).into();
         u.cfg_triple.next = i.timing.triple_sampling;
+        u.cfg_mode.next = (i.config.mode.code() as u64).into();
+        u.cfg_ewl.next = (i.config.ewl as u64).into();
+        u.cfg_single_shot.next = i.config.single_shot;
         u.tx_req.next = i.tx_req;
         u.tx_id.next = ((i.tx_frame.id & 0x1FFF_FFFF) as u64).into();
         u.tx_ide.next = i.tx_frame.ide;
         u.tx_rtr.next = i.tx_frame.rtr;
         u.tx_dlc.next = ((i.tx_frame.dlc & 0xF) as u64).into();
         u.tx_data.next = i.tx_frame.data_word().into();
+        u.tx_abort.next = i.tx_abort;
         self.settle();
         self.uut.clk.next = Clock::from(true);
         self.settle();
@@ -83,6 +87,7 @@ impl ChannelEngine for RustHdlEngine {
             tx_pending: u.tx_pending.val(),
             tx_done: u.tx_done.val(),
             arb_lost: u.arb_lost.val(),
+            tx_failed: u.tx_failed.val(),
             rx_valid: u.rx_valid.val(),
             rx_frame,
             probes: Probes {
@@ -93,11 +98,25 @@ impl ChannelEngine for RustHdlEngine {
                 rec: u.rec.val().to_u64() as u8,
                 err_state: u.err_state.val().to_u64() as u8,
             },
+            diag: Diagnostics {
+                err_warning: u.err_warning.val(),
+                err_valid: u.err_valid.val(),
+                err_kind: u.err_kind.val().to_u64() as u8,
+                err_field: field_code(&u.err_field.val()),
+                err_tx: u.err_tx.val(),
+                alc: u.alc.val().to_u64() as u8,
+                cnt_bit: u.cnt_bit.val().to_u64() as u8,
+                cnt_stuff: u.cnt_stuff.val().to_u64() as u8,
+                cnt_crc: u.cnt_crc.val().to_u64() as u8,
+                cnt_form: u.cnt_form.val().to_u64() as u8,
+                cnt_ack: u.cnt_ack.val().to_u64() as u8,
+            },
         }
     }
 }
 
-/// The probe encoding of a field: its declaration index (timing contract §4.1).
+/// The probe encoding of a field (`field`, `err_field`): its declaration index
+/// (timing contract §4.1), as in the emitted Verilog.
 fn field_code(f: &drcc_hdl::channel::bsp::field::Field) -> u8 {
     use drcc_hdl::channel::bsp::field::Field::*;
     match f {

@@ -4,12 +4,13 @@
 //!
 //! One `step` is one FFI call (apply inputs, `clk` 0 then 1, read outputs) and
 //! allocates nothing. Port encodings: tseg1/tseg2/sjw travel as `value - 1`,
-//! the data bytes as [`Frame::data_word`] (byte 0 in bits 63..56).
+//! the data bytes as [`Frame::data_word`] (byte 0 in bits 63..56), the mode as
+//! [`Mode::code`](super::Mode::code).
 //!
 //! VCD traces ([`VerilatorEngine::open_vcd`]) stamp the `clk = 0` phase of step
 //! `n` at time `2n` and the `clk = 1` phase at `2n + 1` (half clock periods).
 
-use super::{ChannelEngine, ChannelInputs, ChannelOutputs, Probes};
+use super::{ChannelEngine, ChannelInputs, ChannelOutputs, Diagnostics, Probes};
 use crate::frame::Frame;
 use std::path::Path;
 use verilator_sys::{CanChannel, CanChannelIn, CanChannelOut};
@@ -73,6 +74,7 @@ impl ChannelEngine for VerilatorEngine {
 #[inline]
 fn encode(i: &ChannelInputs, p: &mut CanChannelIn) {
     let t = &i.timing;
+    let c = &i.config;
     let f = &i.tx_frame;
     *p = CanChannelIn {
         rst: i.rst as u8,
@@ -81,6 +83,9 @@ fn encode(i: &ChannelInputs, p: &mut CanChannelIn) {
         cfg_tseg2: t.tseg2.clamp(1, 8) - 1,
         cfg_sjw: t.sjw.clamp(1, 4) - 1,
         cfg_triple: t.triple_sampling as u8,
+        cfg_mode: c.mode.code(),
+        cfg_ewl: c.ewl,
+        cfg_single_shot: c.single_shot as u8,
         rx: i.rx as u8,
         tx_req: i.tx_req as u8,
         tx_id: f.id & 0x1FFF_FFFF,
@@ -88,6 +93,7 @@ fn encode(i: &ChannelInputs, p: &mut CanChannelIn) {
         tx_rtr: f.rtr as u8,
         tx_dlc: f.dlc & 0xF,
         tx_data: f.data_word(),
+        tx_abort: i.tx_abort as u8,
     };
 }
 
@@ -99,6 +105,7 @@ fn decode(p: &CanChannelOut) -> ChannelOutputs {
         tx_pending: p.tx_pending != 0,
         tx_done: p.tx_done != 0,
         arb_lost: p.arb_lost != 0,
+        tx_failed: p.tx_failed != 0,
         rx_valid: p.rx_valid != 0,
         rx_frame: Frame {
             id: p.rx_id,
@@ -115,13 +122,26 @@ fn decode(p: &CanChannelOut) -> ChannelOutputs {
             rec: p.rec,
             err_state: p.err_state,
         },
+        diag: Diagnostics {
+            err_warning: p.err_warning != 0,
+            err_valid: p.err_valid != 0,
+            err_kind: p.err_kind,
+            err_field: p.err_field,
+            err_tx: p.err_tx != 0,
+            alc: p.alc,
+            cnt_bit: p.cnt_bit,
+            cnt_stuff: p.cnt_stuff,
+            cnt_crc: p.cnt_crc,
+            cnt_form: p.cnt_form,
+            cnt_ack: p.cnt_ack,
+        },
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::BitTiming;
+    use crate::engine::{BitTiming, ControllerConfig, Mode};
 
     #[test]
     fn encode_uses_minus_one_encodings_and_data_word() {
@@ -135,6 +155,11 @@ mod tests {
                 sjw: 2,
                 triple_sampling: true,
             },
+            config: ControllerConfig {
+                mode: Mode::SelfTest,
+                ewl: 200,
+                single_shot: true,
+            },
             tx_req: true,
             tx_frame: Frame {
                 id: 0x1234_5678,
@@ -143,6 +168,7 @@ mod tests {
                 dlc: 8,
                 data: [1, 2, 3, 4, 5, 6, 7, 8],
             },
+            tx_abort: true,
         };
         let mut p = CanChannelIn::default();
         encode(&inputs, &mut p);
@@ -155,6 +181,9 @@ mod tests {
                 cfg_tseg2: 1,
                 cfg_sjw: 1,
                 cfg_triple: 1,
+                cfg_mode: 2,
+                cfg_ewl: 200,
+                cfg_single_shot: 1,
                 rx: 0,
                 tx_req: 1,
                 tx_id: 0x1234_5678,
@@ -162,8 +191,27 @@ mod tests {
                 tx_rtr: 0,
                 tx_dlc: 8,
                 tx_data: 0x0102_0304_0506_0708,
+                tx_abort: 1,
             }
         );
+        // Every mode travels as its code.
+        for mode in [
+            Mode::Normal,
+            Mode::ListenOnly,
+            Mode::SelfTest,
+            Mode::Loopback,
+        ] {
+            let i = ChannelInputs {
+                config: ControllerConfig {
+                    mode,
+                    ..ControllerConfig::default()
+                },
+                ..ChannelInputs::default()
+            };
+            encode(&i, &mut p);
+            assert_eq!(Mode::from_code(p.cfg_mode), mode);
+            assert_eq!((p.cfg_ewl, p.cfg_single_shot, p.tx_abort), (96, 0, 0));
+        }
     }
 
     #[test]
@@ -173,6 +221,7 @@ mod tests {
             tx_pending: 1,
             tx_done: 0,
             arb_lost: 1,
+            tx_failed: 1,
             rx_valid: 1,
             rx_id: 0x7FF,
             rx_ide: 0,
@@ -185,9 +234,20 @@ mod tests {
             tec: 256,
             rec: 127,
             err_state: 2,
+            err_warning: 1,
+            err_valid: 0,
+            err_kind: 4,
+            err_field: 19,
+            err_tx: 1,
+            alc: 31,
+            cnt_bit: 1,
+            cnt_stuff: 2,
+            cnt_crc: 3,
+            cnt_form: 255,
+            cnt_ack: 5,
         };
         let o = decode(&p);
-        assert!(o.tx && o.tx_pending && !o.tx_done && o.arb_lost && o.rx_valid);
+        assert!(o.tx && o.tx_pending && !o.tx_done && o.arb_lost && o.rx_valid && o.tx_failed);
         assert_eq!(
             o.rx_frame,
             Frame {
@@ -207,6 +267,22 @@ mod tests {
                 tec: 256,
                 rec: 127,
                 err_state: 2,
+            }
+        );
+        assert_eq!(
+            o.diag,
+            Diagnostics {
+                err_warning: true,
+                err_valid: false,
+                err_kind: 4,
+                err_field: 19,
+                err_tx: true,
+                alc: 31,
+                cnt_bit: 1,
+                cnt_stuff: 2,
+                cnt_crc: 3,
+                cnt_form: 255,
+                cnt_ack: 5,
             }
         );
     }

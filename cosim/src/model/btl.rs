@@ -3,9 +3,70 @@
 //! resynchronization with the synchronization jump width, sample point).
 //!
 //! This file is the contract's §3 algorithm written out verbatim; the comments
-//! name the conformance items (ISO 16845-1) each rule serves.
+//! name the conformance items (ISO 16845-1) each rule serves. The configuration it
+//! runs with is the one captured in reset mode, clamped as contract §6 says
+//! ([`Timing::capture`]).
 
 use crate::engine::BitTiming;
+
+/// Bit timing as captured in reset mode, with every value clamped to what the
+/// ports can carry and to ISO 11898-1 (contract §6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Timing {
+    /// Prescaler: a time quantum lasts `brp + 1` clocks (0..=63).
+    pub brp: u8,
+    /// `T1'`: TSEG1 lengthened to at least `7 - T2` tq and 3 clocks.
+    pub t1: u8,
+    /// `T2`: TSEG2 (1..=8).
+    pub t2: u8,
+    /// `SJW' = min(SJW, T2)`.
+    pub sjw: u8,
+    /// Majority of three samples.
+    pub triple: bool,
+}
+
+impl Default for Timing {
+    fn default() -> Self {
+        Timing::capture(&BitTiming::default())
+    }
+}
+
+impl Timing {
+    /// The configuration registers loaded at a reset edge (contract §6). Fields
+    /// first take the range of their port (`brp` 6 bits, `tseg1 - 1` 4 bits,
+    /// `tseg2 - 1` 3 bits, `sjw - 1` 2 bits; out-of-range struct values saturate),
+    /// then the ISO 11898-1 clamps: `SJW' = min(SJW, T2)`,
+    /// `T1' = max(T1, 7 - T2, M)` with `M` = 3 for BRP 0, 2 for BRP 1, else 1, so a
+    /// bit has at least 8 tq and TSEG1 lasts at least 3 clocks.
+    pub fn capture(t: &BitTiming) -> Self {
+        let brp = t.brp.min(63);
+        let t1 = t.tseg1.clamp(1, 16);
+        let t2 = t.tseg2.clamp(1, 8);
+        let sjw = t.sjw.clamp(1, 4).min(t2);
+        let m = match brp {
+            0 => 3,
+            1 => 2,
+            _ => 1,
+        };
+        Timing {
+            brp,
+            t1: t1.max(7u8.saturating_sub(t2)).max(m),
+            t2,
+            sjw,
+            triple: t.triple_sampling,
+        }
+    }
+
+    /// Time quanta per bit with the clamped values.
+    pub fn tq_per_bit(&self) -> u32 {
+        1 + self.t1 as u32 + self.t2 as u32
+    }
+
+    /// Clocks per bit with the clamped values.
+    pub fn clocks_per_bit(&self) -> u32 {
+        self.tq_per_bit() * (self.brp as u32 + 1)
+    }
+}
 
 /// Segment of the bit the current time quantum belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -93,12 +154,11 @@ impl Btl {
     pub fn tick(
         &mut self,
         rx_s: bool,
-        timing: &BitTiming,
+        timing: &Timing,
         tx: bool,
         hard_sync_enable: bool,
     ) -> BtlEvent {
-        let (t1_cfg, t2_cfg) = (timing.tseg1, timing.tseg2);
-        let sjw = timing.sjw.min(timing.tseg2);
+        let (t1_cfg, t2_cfg, sjw) = (timing.t1, timing.t2, timing.sjw);
         // Only recessive-to-dominant edges synchronize (ISO 11898-1 11.3.2).
         let edge = self.rx_prev && !rx_s;
         // 7.7.10: no synchronization when the bus equals the previous sample;
@@ -136,7 +196,7 @@ impl Btl {
                         self.synced = true;
                     }
                     if self.q + 1 >= self.t1 {
-                        let sampled = if timing.triple_sampling {
+                        let sampled = if timing.triple {
                             majority(self.rx_prev2, self.rx_prev, rx_s)
                         } else {
                             rx_s

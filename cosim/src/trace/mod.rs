@@ -1,7 +1,8 @@
 //! Traces: VCD writing and reading (with the `vcd` crate) and waveform comparison.
 //!
 //! - [`VcdWriter`]: the full trace of one or more systems (`clk`, `rst`, `bus`,
-//!   and per node its inputs, outputs and probes: `node0.tx`, `node0.field[4:0]`).
+//!   and per node its inputs, outputs, probes and diagnostics: `node0.tx`,
+//!   `node0.field[4:0]`, `node0.err_kind[2:0]`).
 //! - [`BusVcdWriter`]: the bus-only variant, 1-bit signals only (`bus`,
 //!   `node0_tx`, ...), for tools such as sigrok whose VCD input stops at the first
 //!   multi-bit signal and ignores scopes.
@@ -51,7 +52,9 @@ impl std::fmt::Debug for OutputSignal {
     }
 }
 
-/// Every output and probe of a channel, in the order they are compared and traced.
+/// Every output, probe and diagnostics register of a channel, in the order they
+/// are compared and traced: the pins and host events, the received frame, the
+/// probes, then the diagnostics (timing contract §9).
 pub const OUTPUT_SIGNALS: &[OutputSignal] = &[
     OutputSignal {
         name: "tx",
@@ -72,6 +75,11 @@ pub const OUTPUT_SIGNALS: &[OutputSignal] = &[
         name: "arb_lost",
         width: 1,
         get: |o| o.arb_lost as u64,
+    },
+    OutputSignal {
+        name: "tx_failed",
+        width: 1,
+        get: |o| o.tx_failed as u64,
     },
     OutputSignal {
         name: "rx_valid",
@@ -132,6 +140,61 @@ pub const OUTPUT_SIGNALS: &[OutputSignal] = &[
         name: "err_state",
         width: 2,
         get: |o| o.probes.err_state as u64,
+    },
+    OutputSignal {
+        name: "err_warning",
+        width: 1,
+        get: |o| o.diag.err_warning as u64,
+    },
+    OutputSignal {
+        name: "err_valid",
+        width: 1,
+        get: |o| o.diag.err_valid as u64,
+    },
+    OutputSignal {
+        name: "err_kind",
+        width: 3,
+        get: |o| o.diag.err_kind as u64,
+    },
+    OutputSignal {
+        name: "err_field",
+        width: 5,
+        get: |o| o.diag.err_field as u64,
+    },
+    OutputSignal {
+        name: "err_tx",
+        width: 1,
+        get: |o| o.diag.err_tx as u64,
+    },
+    OutputSignal {
+        name: "alc",
+        width: 5,
+        get: |o| o.diag.alc as u64,
+    },
+    OutputSignal {
+        name: "cnt_bit",
+        width: 8,
+        get: |o| o.diag.cnt_bit as u64,
+    },
+    OutputSignal {
+        name: "cnt_stuff",
+        width: 8,
+        get: |o| o.diag.cnt_stuff as u64,
+    },
+    OutputSignal {
+        name: "cnt_crc",
+        width: 8,
+        get: |o| o.diag.cnt_crc as u64,
+    },
+    OutputSignal {
+        name: "cnt_form",
+        width: 8,
+        get: |o| o.diag.cnt_form as u64,
+    },
+    OutputSignal {
+        name: "cnt_ack",
+        width: 8,
+        get: |o| o.diag.cnt_ack as u64,
     },
 ];
 
@@ -295,6 +358,23 @@ mod roundtrip_tests {
         let tx = t.signal("tb.node1.tx").unwrap();
         let bus = t.signal("tb.bus").unwrap();
         assert!(t.signal("tb.node0.field[4:0]").is_some());
+        for name in [
+            "tb.node0.tx_abort",
+            "tb.node0.tx_failed",
+            "tb.node2.err_warning",
+            "tb.node2.err_valid",
+            "tb.node2.err_kind[2:0]",
+            "tb.node2.err_field[4:0]",
+            "tb.node2.err_tx",
+            "tb.node2.alc[4:0]",
+            "tb.node2.cnt_bit[7:0]",
+            "tb.node2.cnt_stuff[7:0]",
+            "tb.node2.cnt_crc[7:0]",
+            "tb.node2.cnt_form[7:0]",
+            "tb.node2.cnt_ack[7:0]",
+        ] {
+            assert!(t.signal(name).is_some(), "{name} is traced");
+        }
         assert_eq!(t.find("node2.rx_frame_dlc").len(), 1);
         for s in &samples {
             let v = tx.value_at(tb.edge(s.cycle)).unwrap();

@@ -61,6 +61,7 @@ fn add_var<W: Write>(w: &mut vcd::Writer<W>, name: &str, width: u32) -> io::Resu
 struct NodeVars {
     rx: Var,
     tx_req: Var,
+    tx_abort: Var,
     outputs: Vec<Var>,
 }
 
@@ -92,9 +93,9 @@ impl Clock {
 ///
 /// Each system is a top-level scope (e.g. `tb`, or the engine name when several
 /// systems share one file) holding `clk`, `rst`, `bus` and one scope per node
-/// (`node0`, ...) with `rx`, `tx_req` and every output and probe of
-/// [`OUTPUT_SIGNALS`] (`tx`, ..., `rx_frame_id[28:0]`, ..., `field[4:0]`,
-/// `tec[8:0]`, ...).
+/// (`node0`, ...) with `rx`, `tx_req`, `tx_abort` and every output, probe and
+/// diagnostics register of [`OUTPUT_SIGNALS`] (`tx`, ..., `rx_frame_id[28:0]`,
+/// ..., `field[4:0]`, `tec[8:0]`, ..., `err_kind[2:0]`, ...).
 pub struct VcdWriter<W: Write> {
     w: vcd::Writer<W>,
     tb: TimeBase,
@@ -126,6 +127,7 @@ impl<W: Write> VcdWriter<W> {
                 w.add_module(&format!("node{i}"))?;
                 let rx = add_var(&mut w, "rx", 1)?;
                 let tx_req = add_var(&mut w, "tx_req", 1)?;
+                let tx_abort = add_var(&mut w, "tx_abort", 1)?;
                 let outputs = OUTPUT_SIGNALS
                     .iter()
                     .map(|s| add_var(&mut w, s.name, s.width))
@@ -134,6 +136,7 @@ impl<W: Write> VcdWriter<W> {
                 nv.push(NodeVars {
                     rx,
                     tx_req,
+                    tx_abort,
                     outputs,
                 });
             }
@@ -213,8 +216,9 @@ impl<W: Write> VcdWriter<W> {
                 for (s, g) in samples.iter().zip(self.groups.iter_mut()) {
                     change(w, &mut g.clk, 0)?;
                     change(w, &mut g.rst, s.rst as u64)?;
-                    for (nv, &r) in g.nodes.iter_mut().zip(&s.tx_req) {
-                        change(w, &mut nv.tx_req, r as u64)?;
+                    for (i, nv) in g.nodes.iter_mut().enumerate() {
+                        change(w, &mut nv.tx_req, flag(&s.tx_req, i))?;
+                        change(w, &mut nv.tx_abort, flag(&s.tx_abort, i))?;
                     }
                 }
                 // Outputs of cycle n: at edge n.
@@ -273,13 +277,15 @@ fn write_inputs<W: Write>(w: &mut vcd::Writer<W>, g: &mut Group, s: &Sample) -> 
     change(w, &mut g.bus, s.bus as u64)?;
     for (i, nv) in g.nodes.iter_mut().enumerate() {
         change(w, &mut nv.rx, s.rx.get(i).copied().unwrap_or(true) as u64)?;
-        change(
-            w,
-            &mut nv.tx_req,
-            s.tx_req.get(i).copied().unwrap_or(false) as u64,
-        )?;
+        change(w, &mut nv.tx_req, flag(&s.tx_req, i))?;
+        change(w, &mut nv.tx_abort, flag(&s.tx_abort, i))?;
     }
     Ok(())
+}
+
+/// A per-node input flag of a sample (0 when the sample has no entry for the node).
+fn flag(v: &[bool], node: usize) -> u64 {
+    v.get(node).copied().unwrap_or(false) as u64
 }
 
 fn write_outputs<W: Write>(w: &mut vcd::Writer<W>, g: &mut Group, s: &Sample) -> io::Result<()> {

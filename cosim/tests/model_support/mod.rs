@@ -7,7 +7,7 @@
 #![allow(dead_code)]
 
 use drcc_cosim::model::ChannelModel;
-use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, Frame};
+use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Frame};
 
 /// Field codes, copied from the table of the timing contract §4.1.
 pub mod code {
@@ -193,6 +193,10 @@ pub struct Bus {
     pub tx: Vec<bool>,
     pub connected: Vec<bool>,
     pub timing: BitTiming,
+    /// Configuration inputs of each node (captured at reset edges, §6).
+    pub configs: Vec<ControllerConfig>,
+    /// `tx_abort` of each node for the next step only.
+    pub abort: Vec<bool>,
     pub force_dominant: bool,
     pub clock: u64,
 }
@@ -204,6 +208,8 @@ impl Bus {
             tx: vec![true; n],
             connected: vec![true; n],
             timing,
+            configs: vec![ControllerConfig::default(); n],
+            abort: vec![false; n],
             force_dominant: false,
             clock: 0,
         }
@@ -224,14 +230,31 @@ impl Bus {
                 rst: false,
                 rx,
                 timing: self.timing,
+                config: self.configs[i],
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
+                tx_abort: std::mem::take(&mut self.abort[i]),
             });
             self.tx[i] = out.tx;
             outs.push(out);
         }
         self.clock += 1;
         outs
+    }
+
+    /// One reset edge on every node (captures `timing` and `configs`).
+    pub fn reset(&mut self) {
+        for (i, node) in self.nodes.iter_mut().enumerate() {
+            let out = node.step(&ChannelInputs {
+                rst: true,
+                rx: true,
+                timing: self.timing,
+                config: self.configs[i],
+                ..Default::default()
+            });
+            self.tx[i] = out.tx;
+        }
+        self.clock += 1;
     }
 
     /// Steps with no requests until every node is idle (bus integration done).
@@ -254,6 +277,11 @@ pub struct Tester {
     pub received: Vec<Frame>,
     /// A transmission request applied at the next clock.
     pub request: Option<Frame>,
+    /// Configuration inputs (captured at the first edge and at reset edges).
+    pub config: ControllerConfig,
+    /// Every output, clock by clock (only when `record` is set).
+    pub record: bool,
+    pub trace: Vec<ChannelOutputs>,
 }
 
 impl Tester {
@@ -265,7 +293,17 @@ impl Tester {
             samples: Vec::new(),
             received: Vec::new(),
             request: None,
+            config: ControllerConfig::default(),
+            record: false,
+            trace: Vec::new(),
         }
+    }
+
+    /// A tester whose node runs with `config`.
+    pub fn with_config(timing: BitTiming, config: ControllerConfig) -> Self {
+        let mut t = Tester::new(timing);
+        t.config = config;
+        t
     }
 
     /// Drives one bit value for one bit time.
@@ -276,10 +314,15 @@ impl Tester {
                 rst: false,
                 rx: value && self.tx,
                 timing: self.timing,
+                config: self.config,
                 tx_req: req.is_some(),
                 tx_frame: req.unwrap_or_default(),
+                tx_abort: false,
             });
             self.tx = out.tx;
+            if self.record {
+                self.trace.push(out);
+            }
             if out.probes.sample_point {
                 self.samples.push(out);
             }

@@ -22,37 +22,53 @@
 
 // clang-format off
 #define DRCC_CAN_CHANNEL_INPUTS(X) \
-    X(uint8_t,  rst,          1)  \
-    X(uint8_t,  cfg_brp,      6)  \
-    X(uint8_t,  cfg_tseg1,    4)  \
-    X(uint8_t,  cfg_tseg2,    3)  \
-    X(uint8_t,  cfg_sjw,      2)  \
-    X(uint8_t,  cfg_triple,   1)  \
-    X(uint8_t,  rx,           1)  \
-    X(uint8_t,  tx_req,       1)  \
-    X(uint32_t, tx_id,        29) \
-    X(uint8_t,  tx_ide,       1)  \
-    X(uint8_t,  tx_rtr,       1)  \
-    X(uint8_t,  tx_dlc,       4)  \
-    X(uint64_t, tx_data,      64)
+    X(uint8_t,  rst,             1)   \
+    X(uint8_t,  cfg_brp,         6)   \
+    X(uint8_t,  cfg_tseg1,       4)   \
+    X(uint8_t,  cfg_tseg2,       3)   \
+    X(uint8_t,  cfg_sjw,         2)   \
+    X(uint8_t,  cfg_triple,      1)   \
+    X(uint8_t,  cfg_mode,        2)   \
+    X(uint8_t,  cfg_ewl,         8)   \
+    X(uint8_t,  cfg_single_shot, 1)   \
+    X(uint8_t,  rx,              1)   \
+    X(uint8_t,  tx_req,          1)   \
+    X(uint32_t, tx_id,           29)  \
+    X(uint8_t,  tx_ide,          1)   \
+    X(uint8_t,  tx_rtr,          1)   \
+    X(uint8_t,  tx_dlc,          4)   \
+    X(uint64_t, tx_data,         64)  \
+    X(uint8_t,  tx_abort,        1)
 
 #define DRCC_CAN_CHANNEL_OUTPUTS(X) \
-    X(uint8_t,  tx,           1)  \
-    X(uint8_t,  tx_pending,   1)  \
-    X(uint8_t,  tx_done,      1)  \
-    X(uint8_t,  arb_lost,     1)  \
-    X(uint8_t,  rx_valid,     1)  \
-    X(uint32_t, rx_id,        29) \
-    X(uint8_t,  rx_ide,       1)  \
-    X(uint8_t,  rx_rtr,       1)  \
-    X(uint8_t,  rx_dlc,       4)  \
-    X(uint64_t, rx_data,      64) \
-    X(uint8_t,  sample_point, 1)  \
-    X(uint8_t,  sampled_bit,  1)  \
-    X(uint8_t,  field,        5)  \
-    X(uint16_t, tec,          9)  \
-    X(uint8_t,  rec,          8)  \
-    X(uint8_t,  err_state,    2)
+    X(uint8_t,  tx,              1)   \
+    X(uint8_t,  tx_pending,      1)   \
+    X(uint8_t,  tx_done,         1)   \
+    X(uint8_t,  arb_lost,        1)   \
+    X(uint8_t,  tx_failed,       1)   \
+    X(uint8_t,  rx_valid,        1)   \
+    X(uint32_t, rx_id,           29)  \
+    X(uint8_t,  rx_ide,          1)   \
+    X(uint8_t,  rx_rtr,          1)   \
+    X(uint8_t,  rx_dlc,          4)   \
+    X(uint64_t, rx_data,         64)  \
+    X(uint8_t,  sample_point,    1)   \
+    X(uint8_t,  sampled_bit,     1)   \
+    X(uint8_t,  field,           5)   \
+    X(uint16_t, tec,             9)   \
+    X(uint8_t,  rec,             8)   \
+    X(uint8_t,  err_state,       2)   \
+    X(uint8_t,  err_warning,     1)   \
+    X(uint8_t,  err_valid,       1)   \
+    X(uint8_t,  err_kind,        3)   \
+    X(uint8_t,  err_field,       5)   \
+    X(uint8_t,  err_tx,          1)   \
+    X(uint8_t,  alc,             5)   \
+    X(uint8_t,  cnt_bit,         8)   \
+    X(uint8_t,  cnt_stuff,       8)   \
+    X(uint8_t,  cnt_crc,         8)   \
+    X(uint8_t,  cnt_form,        8)   \
+    X(uint8_t,  cnt_ack,         8)
 // clang-format on
 
 #define DRCC_PORT_FIELD(type, name, width) type name;

@@ -179,6 +179,12 @@ port_struct! {
         cfg_sjw: u8 = 2,
         /// Triple sampling.
         cfg_triple: u8 = 1,
+        /// Operating mode: 0 normal, 1 listen-only, 2 self-test, 3 loop-back.
+        cfg_mode: u8 = 2,
+        /// Error warning limit (ISO 11898-1 default 96).
+        cfg_ewl: u8 = 8,
+        /// No automatic retransmission.
+        cfg_single_shot: u8 = 1,
         /// Bus value seen by the receiver (1 = recessive).
         rx: u8 = 1,
         /// One-clock transmit request.
@@ -193,6 +199,8 @@ port_struct! {
         tx_dlc: u8 = 4,
         /// Data, byte 0 in bits 63..56.
         tx_data: u64 = 64,
+        /// One-clock request: abort the pending frame.
+        tx_abort: u8 = 1,
     }
 }
 
@@ -208,6 +216,8 @@ port_struct! {
         tx_done: u8 = 1,
         /// Pulse: arbitration lost.
         arb_lost: u8 = 1,
+        /// Pulse: the pending frame was dropped (single shot, abort, listen-only).
+        tx_failed: u8 = 1,
         /// Pulse: a frame was received.
         rx_valid: u8 = 1,
         /// Received identifier.
@@ -232,6 +242,28 @@ port_struct! {
         rec: u8 = 8,
         /// Probe: 0 active, 1 passive, 2 bus-off.
         err_state: u8 = 2,
+        /// TEC or REC at or above the error warning limit.
+        err_warning: u8 = 1,
+        /// Pulse: an error was detected and captured.
+        err_valid: u8 = 1,
+        /// Kind of the last error: 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK.
+        err_kind: u8 = 3,
+        /// Field code at the last error.
+        err_field: u8 = 5,
+        /// The node was transmitter at the last error.
+        err_tx: u8 = 1,
+        /// Arbitration-lost bit position.
+        alc: u8 = 5,
+        /// Bit errors (saturating).
+        cnt_bit: u8 = 8,
+        /// Stuff errors (saturating).
+        cnt_stuff: u8 = 8,
+        /// CRC errors (saturating).
+        cnt_crc: u8 = 8,
+        /// Form errors (saturating).
+        cnt_form: u8 = 8,
+        /// ACK errors (saturating).
+        cnt_ack: u8 = 8,
     }
 }
 

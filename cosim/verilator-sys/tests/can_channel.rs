@@ -24,7 +24,8 @@ fn model_or_skip(test: &str) -> bool {
     false
 }
 
-/// 8 MHz / 1 Mbit/s: BRP 0, TSEG1 5, TSEG2 2, SJW 1, in the minus-one encodings.
+/// 8 MHz / 1 Mbit/s: BRP 0, TSEG1 5, TSEG2 2, SJW 1, in the minus-one encodings;
+/// normal mode, error warning limit 96, automatic retransmission.
 fn idle_inputs() -> CanChannelIn {
     CanChannelIn {
         rst: 0,
@@ -33,6 +34,9 @@ fn idle_inputs() -> CanChannelIn {
         cfg_tseg2: 1,
         cfg_sjw: 0,
         cfg_triple: 0,
+        cfg_mode: 0,
+        cfg_ewl: 96,
+        cfg_single_shot: 0,
         rx: 1,
         ..CanChannelIn::default()
     }
@@ -54,10 +58,16 @@ fn assert_reset_values(who: &str, o: &CanChannelOut) {
     assert_eq!(o.tx, 1, "{who}: tx recessive after reset");
     assert_eq!(o.tx_pending, 0, "{who}: nothing pending after reset");
     assert_eq!(
-        (o.tx_done, o.arb_lost, o.rx_valid),
-        (0, 0, 0),
+        (o.tx_done, o.arb_lost, o.rx_valid, o.tx_failed, o.err_valid),
+        (0, 0, 0, 0, 0),
         "{who}: no pulses"
     );
+    assert_eq!(
+        (o.cnt_bit, o.cnt_stuff, o.cnt_crc, o.cnt_form, o.cnt_ack),
+        (0, 0, 0, 0, 0),
+        "{who}: error counters by kind"
+    );
+    assert_eq!(o.err_warning, 0, "{who}: below the warning limit");
     assert_eq!(
         (o.tec, o.rec, o.err_state),
         (0, 0, 0),
@@ -208,6 +218,14 @@ fn single_eval_edge_matches_two_evals() {
                 i.cfg_tseg2 = tseg2 - 1;
                 i.cfg_sjw = rng.below(2) as u8;
                 i.cfg_triple = rng.below(2) as u8;
+                // Mostly normal mode; the others exercise the mode logic.
+                i.cfg_mode = if rng.below(2) == 0 {
+                    0
+                } else {
+                    rng.below(4) as u8
+                };
+                i.cfg_ewl = rng.below(256) as u8;
+                i.cfg_single_shot = rng.below(2) as u8;
             }
         }
         // Occasional dominant glitches exercise the error paths.
@@ -215,6 +233,7 @@ fn single_eval_edge_matches_two_evals() {
         for (k, i) in inputs.iter_mut().enumerate() {
             i.rst = rst as u8;
             i.tx_req = (rng.below(700) == k as u64) as u8;
+            i.tx_abort = (rng.below(5000) == k as u64) as u8;
             if i.tx_req == 1 {
                 i.tx_ide = rng.below(2) as u8;
                 i.tx_id = (rng.next() as u32) & if i.tx_ide == 1 { 0x1FFF_FFFF } else { 0x7FF };
@@ -241,10 +260,12 @@ fn single_eval_edge_matches_two_evals() {
         dominant += (bus[0] == 0) as u64;
         events += outs[0]
             .iter()
-            .map(|o| (o.tx_done + o.rx_valid + o.arb_lost) as u64)
+            .map(|o| (o.tx_done + o.rx_valid + o.arb_lost + o.tx_failed + o.err_valid) as u64)
             .sum::<u64>();
     }
-    eprintln!("{dominant} dominant clocks, {events} tx_done/rx_valid/arb_lost pulses");
+    eprintln!(
+        "{dominant} dominant clocks, {events} tx_done/rx_valid/arb_lost/tx_failed/err_valid pulses"
+    );
     assert!(
         dominant > 0,
         "the bus never went dominant: the test stimulus is dead"

@@ -9,6 +9,8 @@
 //!   the node is bus-off (at most 255 + 8 = 263).
 //! - Rule h, REC > 127: the standard allows any value 119..=127; the model sets 127.
 //! - The error state follows the counters at the same clock edge as the change.
+//! - In LISTEN_ONLY mode the counters are frozen (contract §7: no rule a to h
+//!   applies), see [`Counters::freeze`].
 
 /// `err_state` value of an error-active node.
 pub const ERROR_ACTIVE: u8 = 0;
@@ -23,6 +25,8 @@ pub struct Counters {
     tec: u16,
     rec: u8,
     state: u8,
+    /// LISTEN_ONLY: no counting rule applies (contract §7).
+    frozen: bool,
 }
 
 impl Default for Counters {
@@ -38,7 +42,13 @@ impl Counters {
             tec: 0,
             rec: 0,
             state: ERROR_ACTIVE,
+            frozen: false,
         }
+    }
+
+    /// LISTEN_ONLY mode (contract §7): TEC and REC never change.
+    pub fn freeze(&mut self) {
+        self.frozen = true;
     }
 
     /// Transmit error counter.
@@ -79,7 +89,7 @@ impl Counters {
 
     /// Rules c, d, f (transmitter): TEC + `n`. No effect while bus-off.
     pub fn tec_add(&mut self, n: u16) {
-        if self.is_bus_off() {
+        if self.is_bus_off() || self.frozen {
             return;
         }
         self.tec += n;
@@ -88,7 +98,7 @@ impl Counters {
 
     /// Rules a, b, e, f (receiver): REC + `n`, saturating at 255. No effect while bus-off.
     pub fn rec_add(&mut self, n: u8) {
-        if self.is_bus_off() {
+        if self.is_bus_off() || self.frozen {
             return;
         }
         self.rec = self.rec.saturating_add(n);
@@ -97,6 +107,9 @@ impl Counters {
 
     /// ISO 11898-1 12.1.4.2 rule g: successful transmission, TEC - 1 unless 0.
     pub fn tx_success(&mut self) {
+        if self.frozen {
+            return;
+        }
         if self.tec > 0 {
             self.tec -= 1;
         }
@@ -107,6 +120,9 @@ impl Counters {
     /// slot and the ACK bit sent successfully): REC - 1 when 1..=127; when above 127
     /// a value in 119..=127 (the model takes 127).
     pub fn rx_success(&mut self) {
+        if self.frozen {
+            return;
+        }
         if self.rec > 127 {
             self.rec = 127;
         } else if self.rec > 0 {

@@ -8,6 +8,7 @@
 //! bits, 8 in total; a dominant bit among bits 2..7 is a form error, a dominant
 //! 8th bit starts an overload frame. Overload flag: 6 dominant bits.
 
+use super::control::{KIND_ACK, KIND_BIT, KIND_CRC, KIND_FORM, KIND_STUFF};
 use super::frame::ErrorKind;
 use super::Bsp;
 use crate::model::field;
@@ -16,8 +17,19 @@ impl Bsp {
     /// An error was detected at this SAMPLE edge: count it, then start the error
     /// flag at the next bit (a CRC error arrives here only at the ACK delimiter).
     pub(super) fn error(&mut self, kind: ErrorKind) {
+        self.capture(match kind {
+            ErrorKind::Bit => KIND_BIT,
+            ErrorKind::Stuff | ErrorKind::StuffInArbitration => KIND_STUFF,
+            ErrorKind::Crc => KIND_CRC,
+            ErrorKind::Form => KIND_FORM,
+            ErrorKind::Ack => KIND_ACK,
+        });
         let mut ack_exception = false;
         if self.transmitter {
+            if self.attempt {
+                // The attempt ends without success (§8).
+                self.attempt_failed();
+            }
             match kind {
                 // ISO 11898-1 12.1.4.2 rule c exception 2: no change.
                 ErrorKind::StuffInArbitration => {}
@@ -37,7 +49,8 @@ impl Bsp {
     /// Starts an error flag at the next bit, active or passive by the error state.
     fn start_error_flag(&mut self) {
         self.next_field(field::ERROR_FLAG);
-        self.flag_active = self.counters.is_active();
+        // LISTEN_ONLY: every flag the node takes part in is passive (§7).
+        self.flag_active = self.counters.is_active() && !self.listen_only;
         self.flag_eq = 0;
         self.ack_exception = false;
     }
@@ -45,6 +58,7 @@ impl Bsp {
     /// Bit error while sending an active error flag or an overload flag: rule d
     /// (transmitter) or rule e (receiver) +8, and a new error flag (decision 3).
     fn flag_bit_error(&mut self) {
+        self.capture(KIND_BIT);
         if self.transmitter {
             self.counters.tec_add(8);
         } else {
@@ -89,7 +103,8 @@ impl Bsp {
 
     /// OVERLOAD_FLAG.
     pub(super) fn overload_flag(&mut self, b: bool) {
-        if b {
+        // LISTEN_ONLY follows the 6 flag bits without checking them (§7).
+        if b && !self.listen_only {
             return self.flag_bit_error();
         }
         self.cnt += 1;

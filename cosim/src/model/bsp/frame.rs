@@ -30,7 +30,10 @@ impl Bsp {
     /// Start of frame: a dominant sample in IDLE or SUSPEND or at intermission
     /// bit 3. The node becomes transmitter iff `start_ok` (contract §4.4).
     pub(super) fn sof(&mut self) {
-        self.transmitter = self.start_ok();
+        // A node whose own SOF is on `tx` has begun its attempt: it stays
+        // transmitter even if an abort arrived during the SOF bit (§8, decision 15).
+        self.transmitter = self.starts();
+        self.attempt = self.transmitter;
         self.field = field::ID_A;
         self.cnt = 0;
         self.pos = 1;
@@ -83,8 +86,7 @@ impl Bsp {
         if self.transmitter && b != sent {
             if arb && sent {
                 // Sent recessive, read dominant: arbitration lost; receive the rest.
-                self.transmitter = false;
-                self.arb_lost = true;
+                self.lose_arbitration();
             } else {
                 return self.error(ErrorKind::Bit);
             }
@@ -196,12 +198,13 @@ impl Bsp {
         self.cnt = 0;
     }
 
-    /// ACK slot: the transmitter needs a dominant bit (else ACK error); a receiver
-    /// that sent its ACK must read it back (else bit error, ISO 16845-1 7.2.1) and
-    /// then counts a successful reception (rule h, decision 8).
+    /// ACK slot: the transmitter needs a dominant bit (else ACK error; not in
+    /// SELF_TEST and LOOPBACK, §7); a receiver that sent its ACK must read it back
+    /// (else bit error, ISO 16845-1 7.2.1) and then counts a successful reception
+    /// (rule h, decision 8).
     pub(super) fn ack_slot(&mut self, b: bool) {
         if self.transmitter {
-            if b {
+            if b && !self.ack_optional {
                 return self.error(ErrorKind::Ack);
             }
         } else if !self.tx {
@@ -239,9 +242,14 @@ impl Bsp {
                 return self.error(ErrorKind::Bit);
             }
             self.cnt += 1;
-            if self.cnt == 7 {
+            if self.cnt == 6 && self.loopback {
+                // LOOPBACK: the node delivers its own frame too (§7).
+                self.rx_valid = true;
+                self.rx_frame = self.received_frame();
+            } else if self.cnt == 7 {
                 self.tx_done = true;
                 self.tx_pending = false;
+                self.attempt_done();
                 self.counters.tx_success();
                 self.next_field(field::INTERMISSION);
             }

@@ -64,6 +64,7 @@ impl Bsp {
         self.next_field(field::BUS_OFF);
         self.busoff_occ = 0;
         self.transmitter = false;
+        self.attempt = false;
         self.ack_exception = false;
     }
 

@@ -49,16 +49,40 @@
 //! 12. The 8th bit of an error or overload delimiter sampled dominant starts an
 //!     overload frame (no counter change); a dominant bit at delimiter bits 2..7 is a
 //!     form error.
+//!
+//! Operating modes (contract §7), transmit control (§8) and diagnostics (§9):
+//! 13. LISTEN_ONLY forces every bit the node sends to recessive (`next_tx_bit`,
+//!     `start_ok`), makes every error flag passive, follows overload flags without
+//!     checking them and freezes the counters; errors are still detected and
+//!     captured. SELF_TEST and LOOPBACK skip the transmitter's ACK slot check;
+//!     LOOPBACK also delivers the node's own frame at EOF bit 6 (the model's
+//!     `ChannelModel` feeds the synchronizer with `tx` and holds the pin recessive).
+//! 14. An *attempt* runs from the SOF at which the node becomes transmitter until
+//!     `tx_done`, lost arbitration or the first error it detects as transmitter.
+//!     An attempt that ends without success drops the frame (`tx_failed`) in
+//!     single-shot mode or when an abort is remembered.
+//! 15. `tx_abort` (and a remembered abort, at every edge until it is carried out)
+//!     drops the pending frame at once when the node is not transmitter and its
+//!     `tx` register is recessive; otherwise it is remembered. A node whose own
+//!     SOF is on `tx` (dominant) keeps it at the later SOF decisions (the hard
+//!     sync on its own SOF edge, the SOF sample point) whatever the abort: its
+//!     attempt has begun and runs on (`starts`).
+//! 16. `err_valid` and the capture registers are loaded in `error` and for a bit
+//!     error in an own flag (`capture`), also for the error that makes the node
+//!     bus-off; `alc` at the arbitration loss.
 
 mod confinement;
+mod control;
 mod encode;
 mod error;
 mod frame;
 mod interframe;
 
 pub use confinement::{Counters, BUS_OFF as STATE_BUS_OFF, ERROR_ACTIVE, ERROR_PASSIVE};
+pub use control::{Diag, KIND_ACK, KIND_BIT, KIND_CRC, KIND_FORM, KIND_STUFF};
 
 use self::encode::TxStream;
+use crate::engine::Mode;
 use crate::frame::Frame;
 use crate::model::field;
 
@@ -109,11 +133,28 @@ pub struct Bsp {
     /// Occurrences of 11 recessive bits while bus-off (rule l).
     busoff_occ: u8,
     counters: Counters,
+    // Configuration captured in reset mode (§6, §7, §8).
+    /// LISTEN_ONLY: never drives dominant, counters frozen.
+    listen_only: bool,
+    /// SELF_TEST or LOOPBACK: the transmitter accepts a recessive ACK slot.
+    ack_optional: bool,
+    /// LOOPBACK: the transmitter delivers its own frame too.
+    loopback: bool,
+    /// No automatic retransmission.
+    single_shot: bool,
+    // §8: transmit control.
+    /// The pending frame's attempt is on the bus (decision 14).
+    attempt: bool,
+    /// A `tx_abort` is remembered (decision 15).
+    abort_pending: bool,
     // Host side.
     rx_frame: Frame,
     tx_done: bool,
     arb_lost: bool,
     rx_valid: bool,
+    tx_failed: bool,
+    /// §9 registers.
+    diag: Diag,
 }
 
 impl Default for Bsp {
@@ -123,8 +164,19 @@ impl Default for Bsp {
 }
 
 impl Bsp {
-    /// Reset state: INTEGRATING, `tx` recessive, nothing pending, error active.
+    /// Reset state in NORMAL mode with automatic retransmission.
     pub fn new() -> Self {
+        Self::with_config(Mode::Normal, false)
+    }
+
+    /// Reset state: INTEGRATING, `tx` recessive, nothing pending, error active,
+    /// with the captured mode and single-shot setting (contract §6).
+    pub fn with_config(mode: Mode, single_shot: bool) -> Self {
+        let listen_only = mode == Mode::ListenOnly;
+        let mut counters = Counters::new();
+        if listen_only {
+            counters.freeze();
+        }
         Bsp {
             field: field::INTEGRATING,
             cnt: 0,
@@ -154,11 +206,19 @@ impl Bsp {
             dom_cnt: 0,
             ack_exception: false,
             busoff_occ: 0,
-            counters: Counters::new(),
+            counters,
+            listen_only,
+            ack_optional: matches!(mode, Mode::SelfTest | Mode::Loopback),
+            loopback: mode == Mode::Loopback,
+            single_shot,
+            attempt: false,
+            abort_pending: false,
             rx_frame: Frame::default(),
             tx_done: false,
             arb_lost: false,
             rx_valid: false,
+            tx_failed: false,
+            diag: Diag::default(),
         }
     }
 
@@ -192,10 +252,17 @@ impl Bsp {
         &self.rx_frame
     }
 
-    /// Pulses raised by the current edge: (`tx_done`, `arb_lost`, `rx_valid`).
+    /// Pulses raised by the current edge: (`tx_done`, `arb_lost`, `rx_valid`,
+    /// `tx_failed`).
     #[inline]
-    pub fn pulses(&self) -> (bool, bool, bool) {
-        (self.tx_done, self.arb_lost, self.rx_valid)
+    pub fn pulses(&self) -> (bool, bool, bool, bool) {
+        (self.tx_done, self.arb_lost, self.rx_valid, self.tx_failed)
+    }
+
+    /// Diagnostics registers (§9; `err_warning` is derived by the caller).
+    #[inline]
+    pub fn diag(&self) -> &Diag {
+        &self.diag
     }
 
     /// Clears the one-clock pulses at the start of an edge.
@@ -204,10 +271,17 @@ impl Bsp {
         self.tx_done = false;
         self.arb_lost = false;
         self.rx_valid = false;
+        self.tx_failed = false;
+        self.diag.err_valid = false;
     }
 
-    /// `tx_req` while nothing is pending: latch the frame (contract §4.4).
+    /// `tx_req` while nothing is pending (contract §4.4): latch the frame, or in
+    /// LISTEN_ONLY refuse it with `tx_failed` (§7).
     pub fn latch(&mut self, frame: &Frame) {
+        if self.listen_only {
+            self.tx_failed = true;
+            return;
+        }
         self.stream = TxStream::encode(frame);
         self.tx_pending = true;
     }
@@ -221,16 +295,29 @@ impl Bsp {
         ) || (self.field == field::INTERMISSION && self.cnt == 2)
     }
 
-    /// `start_ok` (contract §4.2, with decision 10 for suspend transmission).
+    /// `start_ok` (contract §4.2 and §8, with decision 10 for suspend
+    /// transmission). `tx_abort` of this edge has already been applied (`abort`):
+    /// it either cleared `tx_pending` or set `abort_pending`.
     #[inline]
     fn start_ok(&self) -> bool {
         self.tx_pending
             && !self.counters.is_bus_off()
+            && !self.listen_only
+            && !self.abort_pending
             && match self.field {
                 field::SUSPEND => false,
                 field::INTERMISSION => !(self.counters.is_passive() && self.transmitter),
                 _ => true,
             }
+    }
+
+    /// The SOF decision (contract §4.2, §4.4, §8): `start_ok`, except that a node
+    /// whose SOF is already on `tx` (dominant `tx` register with a frame pending)
+    /// keeps it; its attempt has begun and an abort does not withdraw it (decision
+    /// 15). Only an abort can make `start_ok` fall while the SOF is on `tx`.
+    #[inline]
+    fn starts(&self) -> bool {
+        (!self.tx && self.tx_pending) || self.start_ok()
     }
 
     /// A bit_start edge: load `tx` (contract §4.2).
@@ -239,7 +326,7 @@ impl Bsp {
         self.tx = if self.field == field::IDLE
             || (hard && matches!(self.field, field::SUSPEND | field::INTERMISSION))
         {
-            !self.start_ok()
+            !self.starts()
         } else {
             self.tx_bit
         };
@@ -273,6 +360,10 @@ impl Bsp {
     /// dominant bits of active error and overload flags, recessive otherwise.
     #[inline]
     fn next_tx_bit(&self) -> bool {
+        if self.listen_only {
+            // §7: every bit a listen-only node would send is recessive.
+            return true;
+        }
         match self.field {
             field::ID_A..=field::CRC_DELIM => {
                 if !self.transmitter {

@@ -76,6 +76,9 @@ pub struct ProtocolController {
     pub cnt_ack: Signal<Out, Bits<8>>,
     // transmit control and diagnostics state
     abort_pending: DFF<Bit>,
+    attempt: DFF<Bit>,
+    starts: Signal<Local, Bit>,
+    join_starts: Signal<Local, Bit>,
     tx_failed_q: DFF<Bit>,
     err_valid_q: DFF<Bit>,
     err_kind_q: DFF<Bits<3>>,
@@ -284,6 +287,9 @@ impl Default for ProtocolController {
             rec: Default::default(),
             err_state: Default::default(),
             abort_pending: Default::default(),
+            attempt: Default::default(),
+            starts: Default::default(),
+            join_starts: Default::default(),
             tx_failed_q: Default::default(),
             err_valid_q: Default::default(),
             err_kind_q: Default::default(),
@@ -442,7 +448,7 @@ impl Logic for ProtocolController {
         dff_setup!(
             self, clk, field_q, bit_cnt, is_tx, pending, stuff_cnt, stuff_last, stuff_en, crc,
             crc_ok, flag_passive, recovery_cnt, tx_q, tx_bit, last_bit_arb, dom_cnt, delim_first,
-            ack_passive_pending, abort_pending, tx_failed_q, err_valid_q, err_kind_q,
+            ack_passive_pending, abort_pending, attempt, tx_failed_q, err_valid_q, err_kind_q,
             err_field_q, err_tx_q, alc_q, cnt_bit_q, cnt_stuff_q, cnt_crc_q, cnt_form_q,
             cnt_ack_q, txf_id, txf_ide, txf_rtr, txf_dlc,
             txf_data, rxs_id, rxs_srr_rtr, rxs_ide, rxs_rtr, rxs_dlc, rxs_data, data_len,
@@ -486,11 +492,13 @@ impl Logic for ProtocolController {
         if !self.pending.q.val() {
             self.abort_pending.d.next = false;
         }
-        // Transmit abort (contract §8): immediate unless the frame is on the bus.
-        if self.tx_abort.val() && self.pending.q.val() {
+        // Transmit abort (contract §8), new or remembered: carried out at the first
+        // edge where the frame is not on the bus.
+        if (self.tx_abort.val() || self.abort_pending.q.val()) && self.pending.q.val() {
             if !self.is_tx.q.val() && self.tx_q.q.val() {
                 self.pending.d.next = false;
                 self.tx_failed_q.d.next = true;
+                self.abort_pending.d.next = false;
             } else {
                 self.abort_pending.d.next = true;
             }
@@ -507,6 +515,10 @@ impl Logic for ProtocolController {
         // not join a SOF at intermission bit 3.
         self.suspend_due.next = self.is_tx.q.val() && self.fc.error_passive.val();
         self.join_ok.next = self.start_ok.val() && !self.suspend_due.val();
+        // A node whose own SOF is already on `tx` keeps its attempt (contract §8).
+        self.starts.next = (!self.tx_q.q.val() && self.pending.q.val()) || self.start_ok.val();
+        self.join_starts.next =
+            (!self.tx_q.q.val() && self.pending.q.val()) || self.join_ok.val();
         self.tec_exempt.next = false;
         self.ack_error.next = false;
         self.ev_tec_add8.next = false;
@@ -548,7 +560,8 @@ impl Logic for ProtocolController {
         self.crc_rx_idx.next = self.n4_14.val() - self.bit_cnt.q.val().get_bits::<4>(0);
         self.data_wr_idx.next = self.n6_63.val() - self.bit_cnt.q.val().get_bits::<6>(0);
 
-        // ---- field classification (10.4.2: the arbitration field is ID, SRR, IDE, RTR)
+        // ---- field classification (10.4.2: the arbitration field is ID and RTR, plus
+        // SRR and IDE in extended frames)
         self.in_arbitration.next = false;
         self.in_frame.next = false;
         self.crc_covered.next = false;
@@ -564,7 +577,9 @@ impl Logic for ProtocolController {
                 self.crc_covered.next = true;
             }
             Field::Ide => {
-                self.in_arbitration.next = true;
+                // IDE belongs to the arbitration field of extended frames only
+                // (10.4.2.2); a base frame's IDE is control field.
+                self.in_arbitration.next = self.txf_ide.q.val();
                 self.in_frame.next = true;
                 self.crc_covered.next = true;
             }
@@ -688,7 +703,7 @@ impl Logic for ProtocolController {
                     Field::Idle => {
                         if !self.sampled.val() {
                             self.sof.next = true;
-                            self.sof_as_tx.next = self.start_ok.val();
+                            self.sof_as_tx.next = self.starts.val();
                         }
                     }
                     Field::Suspend => {
@@ -707,7 +722,7 @@ impl Logic for ProtocolController {
                             if self.bit_cnt.q.val() == self.n7_2.val() {
                                 // 10.4.5: dominant third intermission bit is a SOF.
                                 self.sof.next = true;
-                                self.sof_as_tx.next = self.join_ok.val();
+                                self.sof_as_tx.next = self.join_starts.val();
                             } else {
                                 // 10.4.4: dominant intermission bit 1 or 2: overload.
                                 self.field_n.next = Field::OverloadFlag;
@@ -871,6 +886,8 @@ impl Logic for ProtocolController {
                                     // 10.7: valid for the transmitter at the end of EOF.
                                     self.tx_done_q.d.next = true;
                                     self.pending.d.next = false;
+                                    self.attempt.d.next = false;
+                                    self.abort_pending.d.next = false;
                                     self.ev_tx_success.next = true;
                                 }
                                 self.field_n.next = Field::Intermission;
@@ -1025,6 +1042,7 @@ impl Logic for ProtocolController {
                 self.field_n.next = Field::IdA;
                 self.bit_cnt_n.next = self.n7_0.val();
                 self.is_tx_n.next = self.sof_as_tx.val();
+                self.attempt.d.next = self.sof_as_tx.val();
                 self.stuff_en_n.next = true;
                 self.stuff_cnt_n.next = self.n3_1.val();
                 self.stuff_last_n.next = false;
@@ -1116,17 +1134,24 @@ impl Logic for ProtocolController {
                 }
             }
             // Single shot or a due abort: a failed attempt drops the frame (§8).
-            if self.pending.q.val()
+            // An attempt runs from its SOF to tx_done, lost arbitration or the
+            // first error it detects as transmitter (contract §8).
+            if self.attempt.q.val()
                 && self.is_tx.q.val()
                 && (self.lost.val() || self.error.val() || self.flag_error.val())
-                && (self.single_shot.val() || self.abort_pending.q.val())
             {
-                self.pending.d.next = false;
-                self.tx_failed_q.d.next = true;
+                self.attempt.d.next = false;
+                if self.single_shot.val() || self.abort_pending.q.val() {
+                    self.pending.d.next = false;
+                    self.tx_failed_q.d.next = true;
+                    self.abort_pending.d.next = false;
+                }
             }
             // 12.1.4.4: TEC > 255 makes the node bus-off at once.
             if self.bus_off_after.val() {
                 self.field_n.next = Field::BusOff;
+                self.is_tx_n.next = false;
+                self.attempt.d.next = false;
                 self.bit_cnt_n.next = self.n7_0.val();
                 self.recovery_cnt.d.next = self.n7_0.val();
             }
@@ -1227,13 +1252,15 @@ impl Logic for ProtocolController {
         // ---- the tx pin changes only at the start of a bit
         if self.bit_start.val() {
             if self.hard_sync.val() && (self.field_q.q.val() == Field::Idle) {
-                self.tx_q.d.next = !self.start_ok.val();
+                self.tx_q.d.next = !self.starts.val();
             } else if self.hard_sync.val() && (self.field_q.q.val() == Field::Intermission) {
-                self.tx_q.d.next = !self.join_ok.val();
+                // 10.4.6: a node joining at intermission bit 3 sends no SOF bit;
+                // its first identifier bit follows.
+                self.tx_q.d.next = true;
             } else if self.hard_sync.val() && (self.field_q.q.val() == Field::Suspend) {
                 self.tx_q.d.next = true;
             } else if self.field_q.q.val() == Field::Idle {
-                self.tx_q.d.next = !self.start_ok.val();
+                self.tx_q.d.next = !self.starts.val();
             } else {
                 self.tx_q.d.next = self.tx_bit.q.val();
             }
@@ -1323,6 +1350,7 @@ impl Logic for ProtocolController {
             self.delim_first.d.next = false;
             self.ack_passive_pending.d.next = false;
             self.abort_pending.d.next = false;
+            self.attempt.d.next = false;
             self.tx_failed_q.d.next = false;
             self.err_valid_q.d.next = false;
             self.err_kind_q.d.next = self.zero3.val();

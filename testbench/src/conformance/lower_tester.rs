@@ -1,0 +1,925 @@
+//! The lower tester (LT) of the conformance suite: it drives one implementation
+//! under test (IUT, any [`ChannelEngine`]) with exact bit sequences on `rx` and
+//! records, bit by bit, what the IUT does.
+//!
+//! **Bus.** The IUT's `rx` in clock n is the wired-AND of the IUT's own `tx`
+//! returned by step n-1 and the tester's drive ([`Lt::R`] lets the IUT's `tx`
+//! through, [`Lt::D`] pulls the bus dominant). [`Lt::ForceR`] forces the bus
+//! recessive whatever the IUT sends: that is how the LT corrupts a dominant bit of
+//! the IUT (ISO 16845-1 lower testers do the same; on a real bus it stands for a
+//! disturbance).
+//!
+//! **Bit grid.** The tester sends bits of exactly `clocks_per_bit` clocks, back to
+//! back, from an origin: the first dominant bit it drives (the IUT hard-synchronises
+//! on that SOF edge, contract §3), or the IUT's own SOF ([`SBit::await_sof`]: the
+//! tester waits with a recessive bus until the IUT pulls it dominant and starts a
+//! new grid at that clock, because the IUT hard-synchronises on its own SOF edge).
+//! Every tester edge on that grid falls into the IUT's SYNC_SEG (the IUT's 2-clock
+//! synchronizer delays all edges alike), so the IUT samples every tester bit at
+//! the same clock of the bit (clock 5 of 8, counted from 0, with 8 tq of one
+//! clock); the tester learns that clock at the origin and reports a lost
+//! synchronisation at the first bit where it moves.
+//!
+//! **Records.** For every bit the tester records ([`BitRecord`]): its drive, the bus
+//! value and the IUT's `tx` at the IUT's sample point, the probes right after that
+//! sample point (field, TEC, REC, error state, sampled bit) and the host events of
+//! the bit (`rx_valid` with `rx_frame`, `tx_done`, `arb_lost`). A SAMPLE edge (and
+//! the pulses it raises) belongs to the bit whose bus clock it read, two clocks
+//! before the edge ([`SampleEvent`]).
+//!
+//! **Scripts.** A [`Script`] lists bits with the tester's drive and the expected
+//! IUT `tx`; [`LowerTester::run`] plays it and fails with a table around the first
+//! bit where the IUT's `tx` differs from the expectation.
+
+use std::collections::VecDeque;
+use std::fmt::Write as _;
+use std::ops::Range;
+
+use drcc_cosim::{BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, Frame, Probes};
+
+use super::bits::{Field, FrameBits};
+
+/// A factory of fresh IUTs (the conformance items take one, so each item can start
+/// from reset as often as it needs).
+pub type Iut = dyn Fn() -> Box<dyn ChannelEngine>;
+
+/// Field codes of the `field` probe (timing contract §4.1).
+pub mod field {
+    /// Waiting for 11 recessive bits after reset.
+    pub const INTEGRATING: u8 = 0;
+    /// Bus idle.
+    pub const IDLE: u8 = 1;
+    /// Base identifier.
+    pub const ID_A: u8 = 2;
+    /// ACK slot.
+    pub const ACK_SLOT: u8 = 13;
+    /// End of frame.
+    pub const EOF: u8 = 15;
+    /// Intermission.
+    pub const INTERMISSION: u8 = 16;
+    /// Suspend transmission.
+    pub const SUSPEND: u8 = 17;
+    /// Error flag.
+    pub const ERROR_FLAG: u8 = 18;
+    /// Error delimiter.
+    pub const ERROR_DELIM: u8 = 19;
+    /// Overload flag.
+    pub const OVERLOAD_FLAG: u8 = 20;
+    /// Overload delimiter.
+    pub const OVERLOAD_DELIM: u8 = 21;
+    /// Bus-off.
+    pub const BUS_OFF: u8 = 22;
+
+    /// Name of a field code.
+    pub fn name(code: u8) -> &'static str {
+        const NAMES: [&str; 23] = [
+            "INTEGRATING",
+            "IDLE",
+            "ID_A",
+            "SRR_RTR",
+            "IDE",
+            "ID_B",
+            "RTR_EXT",
+            "R1",
+            "R0",
+            "DLC",
+            "DATA",
+            "CRC",
+            "CRC_DELIM",
+            "ACK_SLOT",
+            "ACK_DELIM",
+            "EOF",
+            "INTERMISSION",
+            "SUSPEND",
+            "ERROR_FLAG",
+            "ERROR_DELIM",
+            "OVERLOAD_FLAG",
+            "OVERLOAD_DELIM",
+            "BUS_OFF",
+        ];
+        NAMES.get(code as usize).copied().unwrap_or("?")
+    }
+}
+
+/// `err_state` probe values.
+pub mod state {
+    /// Error active.
+    pub const ACTIVE: u8 = 0;
+    /// Error passive.
+    pub const PASSIVE: u8 = 1;
+    /// Bus-off.
+    pub const BUS_OFF: u8 = 2;
+}
+
+/// What the tester drives during one bit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lt {
+    /// Recessive: the bus carries the IUT's own `tx`.
+    R,
+    /// Dominant.
+    D,
+    /// Recessive whatever the IUT sends (corrupts a dominant bit of the IUT).
+    ForceR,
+}
+
+impl Lt {
+    /// `R` for `true` (recessive), `D` for `false`.
+    pub fn from_value(recessive: bool) -> Lt {
+        if recessive {
+            Lt::R
+        } else {
+            Lt::D
+        }
+    }
+
+    /// The bus value with this drive and the IUT's `tx`.
+    pub fn bus(self, iut_tx: bool) -> bool {
+        match self {
+            Lt::R => iut_tx,
+            Lt::D => false,
+            Lt::ForceR => true,
+        }
+    }
+
+    fn symbol(self) -> &'static str {
+        match self {
+            Lt::R => "R",
+            Lt::D => "D",
+            Lt::ForceR => "R!",
+        }
+    }
+}
+
+/// What happened during one tester bit.
+#[derive(Clone, Debug)]
+pub struct BitRecord {
+    /// Label from the script.
+    pub label: String,
+    /// The tester's drive.
+    pub drive: Lt,
+    /// Bus value the IUT sampled (the bus two clocks before its SAMPLE edge).
+    pub bus: bool,
+    /// The IUT's `tx` on the bus at that moment.
+    pub tx: bool,
+    /// Clock of the bus value the IUT sampled, counted from the bit's first clock
+    /// (None: no sample point read this bit).
+    pub sample_offset: Option<u32>,
+    /// Probes right after the sample point (at the end of the bit if there was none).
+    pub probes: Probes,
+    /// `rx_valid` pulsed during the bit.
+    pub rx_valid: bool,
+    /// `rx_frame` at the `rx_valid` pulse.
+    pub rx_frame: Option<Frame>,
+    /// `tx_done` pulsed during the bit.
+    pub tx_done: bool,
+    /// `arb_lost` pulsed during the bit.
+    pub arb_lost: bool,
+    /// Clocks the tester waited for the IUT's SOF before this bit ([`SBit::await_sof`]).
+    pub waited: Option<u32>,
+    /// First clock of the bit (tester clock count).
+    pub start: u64,
+    /// First clock after the bit.
+    pub end: u64,
+}
+
+/// A SAMPLE edge of the IUT (or a host pulse), attributed to the clock of the bus
+/// value it read: the IUT's synchronizer makes that two clocks before the edge.
+#[derive(Clone, Copy, Debug)]
+pub struct SampleEvent {
+    /// Tester clock of the bus value the IUT sampled (edge clock - 2).
+    pub rx_clock: u64,
+    /// A sample point (false: only host pulses at this edge).
+    pub sample: bool,
+    /// The bus value sampled.
+    pub bus: bool,
+    /// The IUT's `tx` on the bus at `rx_clock`.
+    pub tx: bool,
+    /// Probes after the edge.
+    pub probes: Probes,
+    /// `rx_valid` at this edge, with the frame.
+    pub rx_frame: Option<Frame>,
+    /// `tx_done` at this edge.
+    pub tx_done: bool,
+    /// `arb_lost` at this edge.
+    pub arb_lost: bool,
+}
+
+/// One clock as seen by the tester (for the bit-timing items).
+#[derive(Clone, Copy, Debug)]
+pub struct ClockRecord {
+    /// Tester clock count of this clock.
+    pub clock: u64,
+    /// Bus value (the IUT's `rx`) in this clock.
+    pub bus: bool,
+    /// The IUT's `tx` on the bus in this clock (returned by the previous step).
+    pub tx: bool,
+    /// The outputs after this clock's edge.
+    pub out: ChannelOutputs,
+}
+
+/// One bit of a [`Script`].
+#[derive(Clone, Debug)]
+pub struct SBit {
+    /// The tester's drive.
+    pub drive: Lt,
+    /// Expected IUT `tx` at its sample point (None: not checked).
+    pub expect: Option<bool>,
+    /// Name of the bit in failure reports and for [`Run::find`].
+    pub label: String,
+    /// Request this frame (`tx_req`) at the first clock of the bit.
+    pub request: Option<Frame>,
+    /// Before this bit, wait (recessive) up to this many bit times for the IUT's
+    /// SOF; the bit then starts at the clock the IUT's dominant reaches the bus.
+    pub await_sof: Option<u32>,
+    /// Instead of one bit time of `drive`: these `(drive, clocks)` segments (the
+    /// bit-timing items lengthen, shorten and cut bits). The sample point inside a
+    /// shaped bit is not checked against the grid; the bits after it are.
+    pub shape: Option<Vec<(Lt, u32)>>,
+}
+
+/// Bits to play, with the IUT's expected `tx`.
+#[derive(Clone, Debug, Default)]
+pub struct Script {
+    /// The bits.
+    pub bits: Vec<SBit>,
+}
+
+fn expect_of(v: bool) -> Option<bool> {
+    Some(v)
+}
+
+impl Script {
+    /// An empty script.
+    pub fn new() -> Self {
+        Script::default()
+    }
+
+    /// Number of bits.
+    pub fn len(&self) -> usize {
+        self.bits.len()
+    }
+
+    /// No bits.
+    pub fn is_empty(&self) -> bool {
+        self.bits.is_empty()
+    }
+
+    /// One bit.
+    pub fn push(&mut self, drive: Lt, expect: Option<bool>, label: impl Into<String>) -> &mut Self {
+        self.bits.push(SBit {
+            drive,
+            expect,
+            label: label.into(),
+            request: None,
+            await_sof: None,
+            shape: None,
+        });
+        self
+    }
+
+    /// One bit made of `(drive, clocks)` segments (see [`SBit::shape`]).
+    pub fn push_shaped(
+        &mut self,
+        segs: &[(Lt, u32)],
+        expect: Option<bool>,
+        label: impl Into<String>,
+    ) -> &mut Self {
+        self.push(segs[0].0, expect, label);
+        self.bits.last_mut().unwrap().shape = Some(segs.to_vec());
+        self
+    }
+
+    /// `n` equal bits labelled `label 1` .. `label n`.
+    pub fn repeat(&mut self, n: usize, drive: Lt, expect: Option<bool>, label: &str) -> &mut Self {
+        for i in 1..=n {
+            self.push(drive, expect, format!("{label} {i}"));
+        }
+        self
+    }
+
+    /// Requests `frame` at the start of the next bit pushed.
+    pub fn request_at(&mut self, idx: usize, frame: Frame) -> &mut Self {
+        self.bits[idx].request = Some(frame);
+        self
+    }
+
+    /// The tester transmits bits `range` of `fb`; the IUT is a receiver and is
+    /// expected recessive everywhere except in the ACK slot, where it sends its ACK
+    /// iff `iut_acks`.
+    pub fn receive(&mut self, fb: &FrameBits, range: Range<usize>, iut_acks: bool) -> &mut Self {
+        for i in range {
+            let b = fb.bits[i];
+            let expect = !(b.field == Field::AckSlot && iut_acks);
+            self.push(Lt::from_value(b.value), expect_of(expect), fb.name(i));
+        }
+        self
+    }
+
+    /// The IUT transmits bits `range` of `fb`; the tester drives recessive except
+    /// in the ACK slot, which it makes dominant iff `ack`. When the range starts
+    /// with the SOF, the tester waits up to `sof_within` bit times for it.
+    pub fn transmit(
+        &mut self,
+        fb: &FrameBits,
+        range: Range<usize>,
+        ack: bool,
+        sof_within: u32,
+    ) -> &mut Self {
+        let first = self.bits.len();
+        let starts_at_sof = range.start == 0;
+        for i in range {
+            let b = fb.bits[i];
+            let drive = if b.field == Field::AckSlot && ack {
+                Lt::D
+            } else {
+                Lt::R
+            };
+            self.push(drive, expect_of(b.value), fb.name(i));
+        }
+        if starts_at_sof {
+            self.bits[first].await_sof = Some(sof_within);
+        }
+        self
+    }
+
+    /// The IUT's active error flag, observed with a recessive tester.
+    pub fn active_flag(&mut self, label: &str) -> &mut Self {
+        self.repeat(6, Lt::R, Some(false), label)
+    }
+
+    /// The IUT's passive error flag with a recessive tester.
+    pub fn passive_flag(&mut self, label: &str) -> &mut Self {
+        self.repeat(6, Lt::R, Some(true), label)
+    }
+
+    /// An error flag of the IUT, active or passive.
+    pub fn error_flag(&mut self, active: bool) -> &mut Self {
+        if active {
+            self.active_flag("ErrFlag")
+        } else {
+            self.passive_flag("ErrFlag")
+        }
+    }
+
+    /// Error delimiter: 8 recessive bits.
+    pub fn error_delim(&mut self) -> &mut Self {
+        self.repeat(8, Lt::R, Some(true), "ErrDelim")
+    }
+
+    /// The IUT's overload flag with a recessive tester.
+    pub fn overload_flag(&mut self) -> &mut Self {
+        self.repeat(6, Lt::R, Some(false), "OvlFlag")
+    }
+
+    /// Overload delimiter: 8 recessive bits.
+    pub fn overload_delim(&mut self) -> &mut Self {
+        self.repeat(8, Lt::R, Some(true), "OvlDelim")
+    }
+
+    /// Intermission: 3 recessive bits.
+    pub fn intermission(&mut self) -> &mut Self {
+        self.repeat(3, Lt::R, Some(true), "Intermission")
+    }
+
+    /// Suspend transmission: 8 recessive bits.
+    pub fn suspend(&mut self) -> &mut Self {
+        self.repeat(8, Lt::R, Some(true), "Suspend")
+    }
+
+    /// `n` recessive bits of bus idle.
+    pub fn idle(&mut self, n: usize) -> &mut Self {
+        self.repeat(n, Lt::R, Some(true), "Idle")
+    }
+
+    /// Appends another script.
+    pub fn append(&mut self, other: &Script) -> &mut Self {
+        self.bits.extend(other.bits.iter().cloned());
+        self
+    }
+}
+
+/// The records of a played script.
+#[derive(Clone, Debug)]
+pub struct Run {
+    /// One record per script bit.
+    pub recs: Vec<BitRecord>,
+}
+
+impl Run {
+    /// Index of the first record labelled `label`.
+    pub fn find(&self, label: &str) -> usize {
+        self.find_from(0, label)
+    }
+
+    /// Index of the first record labelled `label` at or after `from`.
+    pub fn find_from(&self, from: usize, label: &str) -> usize {
+        (from..self.recs.len())
+            .find(|&i| self.recs[i].label == label)
+            .unwrap_or_else(|| panic!("no bit labelled {label:?} after bit {from}"))
+    }
+
+    /// The record labelled `label`.
+    pub fn at(&self, label: &str) -> &BitRecord {
+        &self.recs[self.find(label)]
+    }
+
+    /// The last record.
+    pub fn last(&self) -> &BitRecord {
+        self.recs.last().expect("empty run")
+    }
+
+    /// Indices of the bits where `rx_valid` pulsed.
+    pub fn rx_valid_bits(&self) -> Vec<usize> {
+        (0..self.recs.len())
+            .filter(|&i| self.recs[i].rx_valid)
+            .collect()
+    }
+
+    /// Indices of the bits where `tx_done` pulsed.
+    pub fn tx_done_bits(&self) -> Vec<usize> {
+        (0..self.recs.len())
+            .filter(|&i| self.recs[i].tx_done)
+            .collect()
+    }
+
+    /// Indices of the bits where `arb_lost` pulsed.
+    pub fn arb_lost_bits(&self) -> Vec<usize> {
+        (0..self.recs.len())
+            .filter(|&i| self.recs[i].arb_lost)
+            .collect()
+    }
+}
+
+/// The lower tester driving one IUT.
+pub struct LowerTester {
+    iut: Box<dyn ChannelEngine>,
+    inputs: ChannelInputs,
+    /// The IUT's `tx` returned by the last step: on the bus in the next clock.
+    tx: bool,
+    last: ChannelOutputs,
+    clock: u64,
+    /// (bus, IUT tx on the bus) of the last clocks, newest last.
+    history: VecDeque<(bool, bool)>,
+    /// Every SAMPLE edge and host pulse so far.
+    pub events: Vec<SampleEvent>,
+    /// The bit grid is established (the IUT is synchronised to the tester).
+    synced: bool,
+    sample_offset: Option<u32>,
+    request: Option<Frame>,
+    /// Every frame the IUT delivered (`rx_valid`), in order.
+    pub received: Vec<Frame>,
+    /// Number of `tx_done` pulses.
+    pub tx_done: u32,
+    /// Number of `arb_lost` pulses.
+    pub arb_lost: u32,
+    /// Optional per-clock trace (timing items).
+    pub trace: Option<Vec<ClockRecord>>,
+    context: String,
+}
+
+impl LowerTester {
+    /// A tester on a fresh IUT: reset for 2 clocks, then recessive until the IUT
+    /// has integrated (11 recessive bits, contract §4.1) and is idle.
+    pub fn new(iut: Box<dyn ChannelEngine>, timing: BitTiming) -> Self {
+        timing.validate().expect("conformance bit timing");
+        let mut lt = LowerTester {
+            iut,
+            inputs: ChannelInputs {
+                rst: true,
+                rx: true,
+                timing,
+                ..ChannelInputs::default()
+            },
+            tx: true,
+            last: ChannelOutputs::default(),
+            clock: 0,
+            history: VecDeque::with_capacity(4),
+            events: Vec::new(),
+            synced: false,
+            sample_offset: None,
+            request: None,
+            received: Vec::new(),
+            tx_done: 0,
+            arb_lost: 0,
+            trace: None,
+            context: String::new(),
+        };
+        for _ in 0..2 {
+            lt.last = lt.iut.step(&lt.inputs);
+        }
+        lt.inputs.rst = false;
+        lt.tx = lt.last.tx;
+        let cpb = lt.cpb() as u64;
+        for _ in 0..13 * cpb {
+            lt.clock(Lt::R);
+        }
+        assert_eq!(
+            lt.last.probes.field,
+            field::IDLE,
+            "{}: IUT not idle after reset and 13 recessive bits (field {})",
+            lt.iut.name(),
+            field::name(lt.last.probes.field)
+        );
+        lt
+    }
+
+    /// A tester on a fresh IUT from `factory`.
+    pub fn start(factory: &Iut, timing: BitTiming) -> Self {
+        Self::new(factory(), timing)
+    }
+
+    /// A text printed with every failure (e.g. the elementary test).
+    pub fn set_context(&mut self, ctx: impl Into<String>) {
+        self.context = ctx.into();
+    }
+
+    /// The IUT's engine name.
+    pub fn name(&self) -> &'static str {
+        self.iut.name()
+    }
+
+    /// Clocks per bit.
+    pub fn cpb(&self) -> u32 {
+        self.inputs.timing.clocks_per_bit()
+    }
+
+    /// The bit timing.
+    pub fn timing(&self) -> BitTiming {
+        self.inputs.timing
+    }
+
+    /// Clocks run so far.
+    pub fn now(&self) -> u64 {
+        self.clock
+    }
+
+    /// The outputs of the last clock.
+    pub fn outputs(&self) -> &ChannelOutputs {
+        &self.last
+    }
+
+    /// The probes of the last clock.
+    pub fn probes(&self) -> Probes {
+        self.last.probes
+    }
+
+    /// (TEC, REC, error state) now.
+    pub fn counters(&self) -> (u16, u8, u8) {
+        let p = self.last.probes;
+        (p.tec, p.rec, p.err_state)
+    }
+
+    /// Requests `frame` (`tx_req` during the next clock).
+    pub fn request(&mut self, frame: Frame) {
+        self.request = Some(frame);
+    }
+
+    /// The next bit starts a new grid (e.g. after moving the edges on purpose).
+    pub fn resync_grid(&mut self) {
+        self.sample_offset = None;
+    }
+
+    /// One clock with the tester driving `drive`.
+    pub fn clock(&mut self, drive: Lt) -> ClockRecord {
+        let iut_tx = self.tx;
+        let bus = drive.bus(iut_tx);
+        self.inputs.rx = bus;
+        match self.request.take() {
+            Some(f) => {
+                self.inputs.tx_req = true;
+                self.inputs.tx_frame = f;
+            }
+            None => self.inputs.tx_req = false,
+        }
+        let out = self.iut.step(&self.inputs);
+        self.tx = out.tx;
+        self.last = out;
+        self.clock += 1;
+        if self.history.len() == 3 {
+            self.history.pop_front();
+        }
+        self.history.push_back((bus, iut_tx));
+        if out.rx_valid {
+            self.received.push(out.rx_frame);
+        }
+        if out.probes.sample_point || out.rx_valid || out.tx_done || out.arb_lost {
+            // The SAMPLE edge used rx_s = the bus two clocks before this edge.
+            let (b, t) = if self.history.len() >= 3 {
+                self.history[0]
+            } else {
+                (bus, iut_tx)
+            };
+            self.events.push(SampleEvent {
+                rx_clock: (self.clock - 1).saturating_sub(2),
+                sample: out.probes.sample_point,
+                bus: b,
+                tx: t,
+                probes: out.probes,
+                rx_frame: out.rx_valid.then_some(out.rx_frame),
+                tx_done: out.tx_done,
+                arb_lost: out.arb_lost,
+            });
+        }
+        self.tx_done += out.tx_done as u32;
+        self.arb_lost += out.arb_lost as u32;
+        let rec = ClockRecord {
+            clock: self.clock - 1,
+            bus,
+            tx: iut_tx,
+            out,
+        };
+        if let Some(t) = self.trace.as_mut() {
+            t.push(rec);
+        }
+        rec
+    }
+
+    /// `n` clocks of the same drive.
+    pub fn clocks(&mut self, drive: Lt, n: u32) -> Vec<ClockRecord> {
+        (0..n).map(|_| self.clock(drive)).collect()
+    }
+
+    /// One bit time of the tester, with its record (as known at its end).
+    pub fn bit(&mut self, drive: Lt, label: &str) -> BitRecord {
+        let segs = [(drive, self.cpb())];
+        self.shaped_bit(&segs, label)
+    }
+
+    /// One tester bit made of `(drive, clocks)` segments (need not add up to one
+    /// bit time: the timing items lengthen and shorten bits). The record holds what
+    /// is known when the bit ends (see [`LowerTester::fill`]).
+    pub fn shaped_bit(&mut self, segs: &[(Lt, u32)], label: &str) -> BitRecord {
+        let start = self.clock;
+        if segs.iter().any(|s| s.0 == Lt::D) {
+            self.synced = true;
+        }
+        for &(drive, n) in segs {
+            for _ in 0..n {
+                self.clock(drive);
+            }
+        }
+        let mut rec = BitRecord {
+            label: label.to_string(),
+            drive: segs[0].0,
+            bus: true,
+            tx: true,
+            sample_offset: None,
+            probes: self.last.probes,
+            rx_valid: false,
+            rx_frame: None,
+            tx_done: false,
+            arb_lost: false,
+            waited: None,
+            start,
+            end: self.clock,
+        };
+        self.fill(&mut rec);
+        rec
+    }
+
+    /// Fills `rec` from the events whose sampled bus clock lies in the bit: the
+    /// last sample point, and every host pulse. A sample point late in a bit may
+    /// come up to two clocks after the bit's end, so a record is complete once
+    /// two more clocks have run.
+    pub fn fill(&self, rec: &mut BitRecord) {
+        let from = self.events.partition_point(|e| e.rx_clock < rec.start);
+        for e in self.events[from..]
+            .iter()
+            .take_while(|e| e.rx_clock < rec.end)
+        {
+            if e.sample {
+                rec.bus = e.bus;
+                rec.tx = e.tx;
+                rec.sample_offset = Some((e.rx_clock - rec.start) as u32);
+                rec.probes = e.probes;
+            }
+            if let Some(f) = e.rx_frame {
+                rec.rx_valid = true;
+                rec.rx_frame = Some(f);
+            }
+            rec.tx_done |= e.tx_done;
+            rec.arb_lost |= e.arb_lost;
+        }
+    }
+
+    /// The last sample point that read a bus clock in `start..end`.
+    pub fn sample_in(&self, start: u64, end: u64) -> Option<SampleEvent> {
+        self.events
+            .iter()
+            .rev()
+            .find(|e| e.sample && e.rx_clock >= start && e.rx_clock < end)
+            .copied()
+    }
+
+    /// Waits, recessive, up to `max_bits` bit times (plus half a bit for the loop
+    /// delay: with 0 the SOF must come at this very bit) for the IUT to pull the
+    /// bus dominant; returns the clocks waited. The next clock is
+    /// then the first clock of the IUT's SOF on the bus and starts a new grid.
+    pub fn await_sof(&mut self, max_bits: u32) -> u32 {
+        let limit = max_bits * self.cpb() + self.cpb() / 2 + 2;
+        let mut waited = 0;
+        while self.tx {
+            assert!(
+                waited < limit,
+                "{}: {}the IUT did not start a frame within {max_bits} bit times \
+                 (field {}, TEC {}, REC {}, state {})",
+                self.iut.name(),
+                self.ctx(),
+                field::name(self.last.probes.field),
+                self.last.probes.tec,
+                self.last.probes.rec,
+                self.last.probes.err_state
+            );
+            self.clock(Lt::R);
+            waited += 1;
+        }
+        self.synced = true;
+        waited
+    }
+
+    fn ctx(&self) -> String {
+        if self.context.is_empty() {
+            String::new()
+        } else {
+            format!("[{}] ", self.context)
+        }
+    }
+
+    /// Plays `script`; panics with a bit table at the first bit where the IUT's
+    /// `tx` differs from the expectation or the IUT lost the bit synchronisation.
+    pub fn run(&mut self, script: &Script) -> Run {
+        let mut recs: Vec<BitRecord> = Vec::with_capacity(script.bits.len());
+        // Per bit: (the grid exists, this bit starts a new grid).
+        let mut grid: Vec<(bool, bool)> = Vec::with_capacity(script.bits.len());
+        let mut failure: Option<(usize, String)> = None;
+        for (i, sb) in script.bits.iter().enumerate() {
+            if let Some(f) = sb.request {
+                self.request(f);
+            }
+            let synced_before = self.synced;
+            let waited = sb.await_sof.map(|w| self.await_sof(w));
+            let mut rec = match &sb.shape {
+                Some(segs) => self.shaped_bit(segs, &sb.label),
+                None => self.bit(sb.drive, &sb.label),
+            };
+            rec.waited = waited;
+            grid.push((
+                self.synced,
+                waited.is_some() || (!synced_before && self.synced),
+            ));
+            recs.push(rec);
+            // The previous bit is complete now.
+            if i > 0 {
+                let mut prev = recs[i - 1].clone();
+                self.fill(&mut prev);
+                recs[i - 1] = prev;
+                self.check_bit(script, &recs, grid[i - 1], i - 1, &mut failure);
+            }
+            if failure.as_ref().is_some_and(|f| recs.len() > f.0 + 8) {
+                break;
+            }
+        }
+        if failure.is_none() && !recs.is_empty() {
+            let i = recs.len() - 1;
+            self.check_bit(script, &recs, grid[i], i, &mut failure);
+        }
+        if let Some((i, why)) = failure {
+            panic!(
+                "{}: {}bit {i} ({}): {why}\n{}",
+                self.iut.name(),
+                self.ctx(),
+                script.bits[i].label,
+                table(script, &recs, i)
+            );
+        }
+        Run { recs }
+    }
+
+    fn check_bit(
+        &mut self,
+        script: &Script,
+        recs: &[BitRecord],
+        (synced, new_grid): (bool, bool),
+        i: usize,
+        failure: &mut Option<(usize, String)>,
+    ) {
+        if failure.is_some() {
+            return;
+        }
+        if new_grid {
+            self.sample_offset = None;
+        }
+        let (sb, rec) = (&script.bits[i], &recs[i]);
+        if synced && sb.shape.is_none() {
+            match (rec.sample_offset, self.sample_offset) {
+                (None, _) => {
+                    *failure = Some((i, "no sample point in this bit".into()));
+                    return;
+                }
+                (Some(o), None) => self.sample_offset = Some(o),
+                (Some(o), Some(e)) if o != e => {
+                    *failure = Some((
+                        i,
+                        format!(
+                            "the IUT sampled clock {o} of the bit instead of {e}: \
+                             it lost the bit synchronisation"
+                        ),
+                    ));
+                    return;
+                }
+                _ => {}
+            }
+        }
+        if let Some(e) = sb.expect {
+            if rec.tx != e {
+                *failure = Some((
+                    i,
+                    format!(
+                        "IUT tx {} where {} was expected",
+                        val(rec.tx),
+                        if e { "recessive" } else { "dominant" }
+                    ),
+                ));
+            }
+        }
+    }
+
+    /// Asserts (TEC, REC, error state) now.
+    #[track_caller]
+    pub fn assert_counters(&self, tec: u16, rec: u8, err_state: u8, what: &str) {
+        let p = self.last.probes;
+        assert_eq!(
+            (p.tec, p.rec, p.err_state),
+            (tec, rec, err_state),
+            "{}: {}{what}: (TEC, REC, state) expected ({tec}, {rec}, {err_state}), got ({}, {}, {})",
+            self.iut.name(),
+            self.ctx(),
+            p.tec,
+            p.rec,
+            p.err_state
+        );
+    }
+
+    /// Asserts the `field` probe now.
+    #[track_caller]
+    pub fn assert_field(&self, code: u8, what: &str) {
+        assert_eq!(
+            self.last.probes.field,
+            code,
+            "{}: {}{what}: field {} expected, got {}",
+            self.iut.name(),
+            self.ctx(),
+            field::name(code),
+            field::name(self.last.probes.field)
+        );
+    }
+}
+
+fn val(b: bool) -> &'static str {
+    if b {
+        "R"
+    } else {
+        "D"
+    }
+}
+
+/// Bits `i-12 ..= i+6` of a run as a table.
+fn table(script: &Script, recs: &[BitRecord], i: usize) -> String {
+    let mut s = String::from(
+        "  bit  label                      LT   bus  tx   exp  field           TEC  REC st  events\n",
+    );
+    let lo = i.saturating_sub(12);
+    for (k, r) in recs.iter().enumerate().skip(lo).take(19) {
+        let exp = script.bits[k].expect.map(val).unwrap_or("-");
+        let mut ev = String::new();
+        if r.rx_valid {
+            ev.push_str("rx_valid ");
+        }
+        if r.tx_done {
+            ev.push_str("tx_done ");
+        }
+        if r.arb_lost {
+            ev.push_str("arb_lost ");
+        }
+        if let Some(w) = r.waited {
+            let _ = write!(ev, "waited {w} clk ");
+        }
+        let _ = writeln!(
+            s,
+            "{} {:4} {:26} {:4} {:4} {:4} {:4} {:15} {:4} {:3} {:2}  {}",
+            if k == i { ">" } else { " " },
+            k,
+            r.label,
+            r.drive.symbol(),
+            val(r.bus),
+            val(r.tx),
+            exp,
+            field::name(r.probes.field),
+            r.probes.tec,
+            r.probes.rec,
+            r.probes.err_state,
+            ev
+        );
+    }
+    s
+}

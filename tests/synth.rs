@@ -1,0 +1,148 @@
+//! The FPGA flow end to end: `drcc synth --target ice40 --top can_channel` runs
+//! yosys, nextpnr-ice40 and icepack, writes a bitstream and reports non-zero
+//! LUT / FF counts and the Fmax nextpnr measured (about 40 s on 2 cores).
+//!
+//! Without the tools the flow test is skipped, except under CI (`CI` set to
+//! anything but empty, `0` or `false`), where it fails with the install hint.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn drcc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_drcc"))
+        .args(args)
+        .output()
+        .expect("cannot run the drcc binary")
+}
+
+fn ci() -> bool {
+    std::env::var("CI").is_ok_and(|v| !v.is_empty() && v != "0" && v != "false")
+}
+
+/// The number after `"key": ` in the first object that follows `"section": `
+/// (or anywhere if `section` is empty).
+fn number(json: &str, section: &str, key: &str) -> f64 {
+    let from = if section.is_empty() {
+        0
+    } else {
+        json.find(&format!("\"{section}\": "))
+            .unwrap_or_else(|| panic!("no {section} in {json}"))
+    };
+    let pat = format!("\"{key}\": ");
+    let at = json[from..]
+        .find(&pat)
+        .unwrap_or_else(|| panic!("no {section}.{key} in {json}"))
+        + from
+        + pat.len();
+    let digits: String = json[at..]
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || *c == '.')
+        .collect();
+    digits
+        .parse()
+        .unwrap_or_else(|_| panic!("{section}.{key} is not a number in {json}"))
+}
+
+fn string(json: &str, key: &str) -> String {
+    let pat = format!("\"{key}\": \"");
+    let at = json
+        .find(&pat)
+        .unwrap_or_else(|| panic!("no {key} in {json}"))
+        + pat.len();
+    let end = json[at..].find('"').expect("closing quote") + at;
+    json[at..end].to_string()
+}
+
+#[test]
+fn ice40_flow_writes_a_bitstream_and_reports_area_and_fmax() {
+    let dir = std::env::temp_dir().join(format!("drcc-synth-test-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let dir_s = dir.display().to_string();
+    let out = drcc(&[
+        "synth",
+        "--target",
+        "ice40",
+        "--top",
+        "can_channel",
+        "--json",
+        "--build-dir",
+        &dir_s,
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    if !out.status.success() {
+        if stderr.contains("not found on PATH") {
+            assert!(
+                !ci(),
+                "the FPGA tools are required in CI: {}",
+                stderr.trim()
+            );
+            eprintln!("skipped: {}", stderr.trim());
+            return;
+        }
+        panic!("drcc synth failed ({}): {stderr}", out.status);
+    }
+    let json = stdout.trim();
+    assert!(json.starts_with('{') && json.ends_with('}'), "{json}");
+    let lut = number(json, "top_area", "lut");
+    let ff = number(json, "top_area", "ff");
+    assert!(lut > 0.0 && ff > 0.0, "LUT {lut}, FF {ff}: {json}");
+    // The wrapper adds its scan chain on top of the channel.
+    assert!(number(json, "wrapper_area", "ff") > ff, "{json}");
+    let fmax = number(json, "pnr", "fmax_mhz");
+    assert!(fmax > 1.0 && fmax < 1000.0, "Fmax {fmax} MHz: {json}");
+    assert_eq!(number(json, "pnr", "constraint_mhz"), 12.0, "{json}");
+    let bitstream = PathBuf::from(string(json, "bitstream"));
+    assert!(bitstream.starts_with(&dir), "{}", bitstream.display());
+    let len = std::fs::metadata(&bitstream)
+        .unwrap_or_else(|e| panic!("no bitstream {}: {e}", bitstream.display()))
+        .len();
+    // An iCE40UP5K bitstream is about 100 kB.
+    assert!(len > 50_000, "bitstream of {len} bytes");
+    let wrapper = dir.join("can_channel-ice40").join("can_channel_scan.v");
+    let v = std::fs::read_to_string(&wrapper).expect("the scan wrapper is kept");
+    assert!(v.contains("module can_channel_scan("), "{v}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_missing_tool_is_named_with_its_package() {
+    let empty = std::env::temp_dir().join(format!("drcc-synth-nopath-{}", std::process::id()));
+    std::fs::create_dir_all(&empty).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_drcc"))
+        .args(["synth", "--target", "ice40"])
+        .env("PATH", &empty)
+        .output()
+        .expect("cannot run the drcc binary");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("yosys (Debian/Ubuntu package yosys)")
+            && stderr.contains("icepack (Debian/Ubuntu package fpga-icestorm)")
+            && stderr.contains("sudo apt-get install yosys nextpnr-ice40 fpga-icestorm"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&empty);
+}
+
+#[test]
+fn bad_arguments_are_errors_not_panics() {
+    for (args, want) in [
+        (
+            &["synth", "--target", "ecp5"][..],
+            "--target ecp5: unknown FPGA family; legal values are ice40, ice40hx, xc3s, xc7",
+        ),
+        (
+            &["synth", "--target", "ice40", "--top", "nope"][..],
+            "--top nope: unknown top; the tops are can_channel",
+        ),
+        (&["synth"][..], "give --target"),
+        (&["synth", "--markdown"][..], "use it with --all"),
+    ] {
+        let out = drcc(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(want), "{args:?}: {stderr}");
+    }
+}

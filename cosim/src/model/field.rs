@@ -84,7 +84,8 @@ pub fn name(code: u8) -> &'static str {
 }
 
 /// Fields of the arbitration phase (contract §4.4): a transmitter that sends
-/// recessive and reads dominant on one of these bits has lost arbitration.
+/// recessive and reads dominant on one of these bits has lost arbitration. IDE
+/// counts only in extended frames (the caller checks the bit sent there).
 pub fn is_arbitration(code: u8) -> bool {
     matches!(code, ID_A | SRR_RTR | IDE | ID_B | RTR_EXT)
 }

@@ -634,6 +634,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  form_err;
     reg  crc_err;
     reg  lost;
+    reg  sof_error;
     reg  [2:0] err_kind_n;
     reg  [4:0] alc_n;
     reg  [4:0] field_n;
@@ -1078,6 +1079,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         form_err = 1'b0;
         crc_err = 1'b0;
         lost = 1'b0;
+        sof_error = 1'b0;
         tx_failed_q__d = 1'b0;
         err_valid_q__d = 1'b0;
         if (~pending__q) begin
@@ -1298,6 +1300,12 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                             if (~sampled) begin
                                 sof = 1'b1;
                                 sof_as_tx = starts;
+                            end
+                            else if (~tx_q__q) begin
+                                is_tx_n = 1'b1;
+                                sof_error = 1'b1;
+                                error = 1'b1;
+                                bit_err = 1'b1;
                             end
                         end
                     Field__Suspend:
@@ -1717,7 +1725,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 err_valid_q__d = 1'b1;
                 err_kind_q__d = err_kind_n;
                 err_field_q__d = field_q__q;
-                err_tx_q__d = is_tx__q;
+                err_tx_q__d = is_tx__q || sof_error;
                 if (err_kind_n == k3_bit) begin
                     if (cnt_bit_q__q != n8_255) begin
                         cnt_bit_q__d = cnt_bit_q__q + n8_1;
@@ -1744,7 +1752,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                     end
                 end
             end
-            if (attempt__q && is_tx__q && (lost || error || flag_error)) begin
+            if ((attempt__q && is_tx__q && (lost || error || flag_error)) || sof_error) begin
                 attempt__d = 1'b0;
                 if (single_shot || abort_pending__q) begin
                     pending__d = 1'b0;

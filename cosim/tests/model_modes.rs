@@ -784,3 +784,81 @@ fn tx_abort_during_own_ack_waits_for_recessive_tx() {
     assert!(outs[first_recessive..].iter().all(|o| o.tx && !o.tx_done));
     assert_eq!(outs.iter().filter(|o| o.tx_failed).count(), 1);
 }
+
+/// LISTEN_ONLY follows an overload flag without checking it: a lower tester
+/// sends a frame and one dominant intermission bit 1, then only recessive bits. A
+/// normal node would read its own dominant overload flag; the listen-only node
+/// sends recessive, reads recessive, and still raises no error.
+#[test]
+fn listen_only_follows_overload_flag_unchecked() {
+    let f = frame(0x2C4, &[0x81]);
+    let mut bits: Vec<bool> = model_support::frame_bits(&f, false, None)
+        .iter()
+        .map(|b| b.value)
+        .collect();
+    bits.push(false); // intermission bit 1: overload condition
+    let mut t = Tester::with_config(timing(0), cfg(Mode::ListenOnly));
+    t.idle(20);
+    t.record = true;
+    t.drive_all(bits);
+    t.idle(30);
+    let fields: Vec<u8> = t.samples.iter().map(|o| o.probes.field).collect();
+    let first_ovl = fields.iter().position(|&x| x == code::OVERLOAD_FLAG).unwrap();
+    let first_delim = fields.iter().position(|&x| x == code::OVERLOAD_DELIM).unwrap();
+    assert_eq!(first_delim - first_ovl, 6, "6 flag bits followed");
+    assert!(fields[first_delim..].contains(&code::IDLE));
+    assert!(t.trace.iter().all(|o| o.tx && !o.diag.err_valid));
+    assert_eq!(t.received, vec![f.normalized()]);
+}
+
+/// Single shot drops only a frame whose attempt fails: a frame latched during
+/// the intermission after a successful one (the node is still transmitter there,
+/// §4.5 roles) survives an error detected before its own SOF (a form error in an
+/// overload delimiter, captured with `err_tx`), and is sent afterwards.
+#[test]
+fn single_shot_keeps_frame_not_yet_attempted() {
+    let t = timing(0);
+    let bpc = t.clocks_per_bit();
+    let mut bus = Bus::new(2, t);
+    bus.configs[0] = single_shot();
+    bus.reset();
+    bus.integrate();
+    let (f1, f2) = (frame(0x111, &[1]), frame(0x222, &[2]));
+    bus.step(&[Some(f1), None]);
+    while !bus.step(&[])[0].tx_done {}
+    let o = bus.step(&[Some(f2), None])[0];
+    assert!(o.tx_pending);
+    // Dominant intermission bit 2: overload frame.
+    let mut outs = Vec::new();
+    let force_next_but_one = |bus: &mut Bus, outs: &mut Vec<Vec<ChannelOutputs>>| {
+        for _ in 0..bpc {
+            outs.push(bus.step(&[]));
+        }
+        bus.force_dominant = true;
+        for _ in 0..bpc {
+            outs.push(bus.step(&[]));
+        }
+        bus.force_dominant = false;
+    };
+    force_next_but_one(&mut bus, &mut outs);
+    // End of the 6-bit overload flag, then dominant delimiter bit 2: form error.
+    loop {
+        let o = bus.step(&[]);
+        outs.push(o.clone());
+        if o[0].probes.sample_point && o[0].probes.field == code::OVERLOAD_DELIM {
+            break;
+        }
+    }
+    force_next_but_one(&mut bus, &mut outs);
+    for _ in 0..300 * bpc {
+        outs.push(bus.step(&[]));
+    }
+    let errs: Vec<_> = outs.iter().filter(|o| o[0].diag.err_valid).collect();
+    assert!(!errs.is_empty());
+    assert_eq!(errs[0][0].diag.err_kind, KIND_FORM);
+    assert!(errs[0][0].diag.err_tx, "still transmitter (role) after its frame");
+    assert!(outs.iter().all(|o| !o[0].tx_failed));
+    assert_eq!(outs.iter().filter(|o| o[0].tx_done).count(), 1);
+    let rx: Vec<Frame> = outs.iter().filter(|o| o[1].rx_valid).map(|o| o[1].rx_frame).collect();
+    assert_eq!(rx, vec![f2.normalized()]);
+}

@@ -7,6 +7,7 @@ pub mod bench;
 pub mod bitrate;
 pub mod conformance;
 pub mod engines;
+pub mod fault_gen;
 pub mod random;
 pub mod run;
 pub mod scenario;

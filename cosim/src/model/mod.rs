@@ -95,9 +95,10 @@ impl ChannelModel {
     pub fn step(&mut self, inputs: &ChannelInputs) -> ChannelOutputs {
         // Bitwise `|` on bools: one test instead of four branches.
         if inputs.rst | inputs.tx_abort | self.special | self.bsp.abort_pending() {
-            return self.step_special(inputs);
+            self.step_special(inputs);
+        } else {
+            self.edge(inputs, inputs.rx, false);
         }
-        self.edge(inputs, inputs.rx, false);
         self.outputs()
     }
 
@@ -105,13 +106,13 @@ impl ChannelModel {
     /// abort, LOOPBACK.
     #[cold]
     #[inline(never)]
-    fn step_special(&mut self, inputs: &ChannelInputs) -> ChannelOutputs {
+    fn step_special(&mut self, inputs: &ChannelInputs) {
         if inputs.rst || !self.configured {
             // A reset edge (§6); power-up is reset mode, so a new model's first
             // edge loads the configuration too, then runs normally if `rst` is low.
             *self = ChannelModel::reset(inputs);
             if inputs.rst {
-                return self.outputs();
+                return;
             }
         }
         // §7 LOOPBACK: the synchronizer's first stage takes the own `tx` register.
@@ -122,7 +123,6 @@ impl ChannelModel {
         };
         let abort = inputs.tx_abort || self.bsp.abort_pending();
         self.edge(inputs, rx, abort);
-        self.outputs()
     }
 
     /// One edge of a configured channel out of reset; `rx` is what enters the

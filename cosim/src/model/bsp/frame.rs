@@ -82,7 +82,10 @@ impl Bsp {
             self.stuff_last = b;
             self.stuff_cnt = 1;
         }
-        let arb = field::is_arbitration(self.field);
+        // IDE is arbitration only in an extended frame (the transmitter sent it
+        // recessive); a base frame's IDE is control field (ISO 11898-1 10.4.2.2),
+        // so a stuff bit after it is not "in arbitration" (contract §4.4, §4.5).
+        let arb = field::is_arbitration(self.field) && (self.field != field::IDE || sent);
         if self.transmitter && b != sent {
             if arb && sent {
                 // Sent recessive, read dominant: arbitration lost; receive the rest.

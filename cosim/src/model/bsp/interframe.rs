@@ -2,6 +2,7 @@
 //! suspend transmission and bus-off recovery (ISO 11898-1:2015 clause 10.4.6,
 //! interframe space; clause 12, bus integration and bus-off, 12.1.4.2 rule l).
 
+use super::frame::ErrorKind;
 use super::Bsp;
 use crate::model::field;
 
@@ -22,6 +23,12 @@ impl Bsp {
     pub(super) fn idle(&mut self, b: bool) {
         if !b {
             self.sof();
+        } else if !self.tx {
+            // Its own SOF read back recessive: the node sent a frame bit, so it is
+            // transmitter and has a bit error (ISO 11898-1 12.1.3.1; contract §4.4).
+            self.transmitter = true;
+            self.attempt = true;
+            self.error(ErrorKind::Bit);
         }
     }
 

@@ -323,9 +323,11 @@ impl Bsp {
     /// A bit_start edge: load `tx` (contract §4.2).
     #[inline]
     pub fn bit_start(&mut self, hard: bool) {
-        self.tx = if self.field == field::IDLE
-            || (hard && matches!(self.field, field::SUSPEND | field::INTERMISSION))
-        {
+        self.tx = if hard && matches!(self.field, field::SUSPEND | field::INTERMISSION) {
+            // SUSPEND: joins as receiver only. Intermission bit 3: a joining
+            // transmitter sends no SOF bit (ISO 11898-1 10.4.6, contract §4.2).
+            true
+        } else if self.field == field::IDLE {
             !self.starts()
         } else {
             self.tx_bit

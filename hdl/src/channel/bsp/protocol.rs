@@ -99,6 +99,7 @@ pub struct ProtocolController {
     form_err: Signal<Local, Bit>,
     crc_err: Signal<Local, Bit>,
     lost: Signal<Local, Bit>,
+    sof_error: Signal<Local, Bit>,
     err_kind_n: Signal<Local, Bits<3>>,
     alc_n: Signal<Local, Bits<5>>,
     k3_bit: Constant<Bits<3>>,
@@ -310,6 +311,7 @@ impl Default for ProtocolController {
             form_err: Default::default(),
             crc_err: Default::default(),
             lost: Default::default(),
+            sof_error: Default::default(),
             err_kind_n: Default::default(),
             alc_n: Default::default(),
             k3_bit: Constant::new(1.into()),
@@ -487,6 +489,7 @@ impl Logic for ProtocolController {
         self.form_err.next = false;
         self.crc_err.next = false;
         self.lost.next = false;
+        self.sof_error.next = false;
         self.tx_failed_q.d.next = false;
         self.err_valid_q.d.next = false;
         if !self.pending.q.val() {
@@ -704,6 +707,13 @@ impl Logic for ProtocolController {
                         if !self.sampled.val() {
                             self.sof.next = true;
                             self.sof_as_tx.next = self.starts.val();
+                        } else if !self.tx_q.q.val() {
+                            // 12.1.3.1: its own SOF read back recessive is a bit
+                            // error; having sent a frame bit, it is transmitter.
+                            self.is_tx_n.next = true;
+                            self.sof_error.next = true;
+                            self.error.next = true;
+                            self.bit_err.next = true;
                         }
                     }
                     Field::Suspend => {
@@ -1106,7 +1116,7 @@ impl Logic for ProtocolController {
                 self.err_valid_q.d.next = true;
                 self.err_kind_q.d.next = self.err_kind_n.val();
                 self.err_field_q.d.next = self.field_q.q.val();
-                self.err_tx_q.d.next = self.is_tx.q.val();
+                self.err_tx_q.d.next = self.is_tx.q.val() || self.sof_error.val();
                 if self.err_kind_n.val() == self.k3_bit.val() {
                     if self.cnt_bit_q.q.val() != self.n8_255.val() {
                         self.cnt_bit_q.d.next = self.cnt_bit_q.q.val() + self.n8_1.val();
@@ -1136,9 +1146,10 @@ impl Logic for ProtocolController {
             // Single shot or a due abort: a failed attempt drops the frame (§8).
             // An attempt runs from its SOF to tx_done, lost arbitration or the
             // first error it detects as transmitter (contract §8).
-            if self.attempt.q.val()
+            if (self.attempt.q.val()
                 && self.is_tx.q.val()
-                && (self.lost.val() || self.error.val() || self.flag_error.val())
+                && (self.lost.val() || self.error.val() || self.flag_error.val()))
+                || self.sof_error.val()
             {
                 self.attempt.d.next = false;
                 if self.single_shot.val() || self.abort_pending.q.val() {

@@ -68,6 +68,9 @@ pub fn make_engine(kind: EngineKind) -> Result<Box<dyn ChannelEngine>, String> {
         EngineKind::RustHdl => Ok(Box::new(RustHdlEngine::new())),
         EngineKind::Verilator => match VerilatorEngine::new() {
             Ok(e) => Ok(Box::new(e)),
+            Err(e) if e.contains(VERILATOR_HINT) => {
+                Err(format!("the Verilator engine is not available: {e}"))
+            }
             Err(e) => Err(format!(
                 "the Verilator engine is not available: {e} ({VERILATOR_HINT})"
             )),

@@ -1726,30 +1726,20 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 err_kind_q__d = err_kind_n;
                 err_field_q__d = field_q__q;
                 err_tx_q__d = is_tx__q || sof_error;
-                if (err_kind_n == k3_bit) begin
-                    if (cnt_bit_q__q != n8_255) begin
-                        cnt_bit_q__d = cnt_bit_q__q + n8_1;
-                    end
+                if ((err_kind_n == k3_bit) && (cnt_bit_q__q != n8_255)) begin
+                    cnt_bit_q__d = cnt_bit_q__q + n8_1;
                 end
-                if (err_kind_n == k3_stuff) begin
-                    if (cnt_stuff_q__q != n8_255) begin
-                        cnt_stuff_q__d = cnt_stuff_q__q + n8_1;
-                    end
+                if ((err_kind_n == k3_stuff) && (cnt_stuff_q__q != n8_255)) begin
+                    cnt_stuff_q__d = cnt_stuff_q__q + n8_1;
                 end
-                if (err_kind_n == k3_crc) begin
-                    if (cnt_crc_q__q != n8_255) begin
-                        cnt_crc_q__d = cnt_crc_q__q + n8_1;
-                    end
+                if ((err_kind_n == k3_crc) && (cnt_crc_q__q != n8_255)) begin
+                    cnt_crc_q__d = cnt_crc_q__q + n8_1;
                 end
-                if (err_kind_n == k3_form) begin
-                    if (cnt_form_q__q != n8_255) begin
-                        cnt_form_q__d = cnt_form_q__q + n8_1;
-                    end
+                if ((err_kind_n == k3_form) && (cnt_form_q__q != n8_255)) begin
+                    cnt_form_q__d = cnt_form_q__q + n8_1;
                 end
-                if (err_kind_n == k3_ack) begin
-                    if (cnt_ack_q__q != n8_255) begin
-                        cnt_ack_q__d = cnt_ack_q__q + n8_1;
-                    end
+                if ((err_kind_n == k3_ack) && (cnt_ack_q__q != n8_255)) begin
+                    cnt_ack_q__d = cnt_ack_q__q + n8_1;
                 end
             end
             if ((attempt__q && is_tx__q && (lost || error || flag_error)) || sof_error) begin

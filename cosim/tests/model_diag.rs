@@ -528,10 +528,17 @@ fn stuff_bit_after_base_ide_is_not_in_arbitration() {
         let f = frame(id, &[0x33]);
         let bits = frame_bits(&f, false, None);
         let k = bits.iter().position(|b| b.stuff).unwrap();
-        assert!(bits[k].value && bits[k].field == at, "{id:#x}: first stuff bit");
+        assert!(
+            bits[k].value && bits[k].field == at,
+            "{id:#x}: first stuff bit"
+        );
         let outs = force_first_recessive(f, at);
         let (d, before) = first_error(&outs);
-        assert_eq!((d.err_kind, d.err_field, d.err_tx), (kind, at, true), "{id:#x}");
+        assert_eq!(
+            (d.err_kind, d.err_field, d.err_tx),
+            (kind, at, true),
+            "{id:#x}"
+        );
         assert_eq!(before, at);
         let e = outs.iter().position(|o| o.diag.err_valid).unwrap();
         assert_eq!(outs[e].probes.tec, tec, "{id:#x}");
@@ -581,8 +588,14 @@ fn error_causing_bus_off_is_captured() {
         }
     }
     let o = off.expect("bus-off reached");
-    assert!(o.diag.err_valid, "the error that caused bus-off is captured");
-    assert_eq!((o.diag.err_kind, o.diag.err_field, o.diag.err_tx), (KIND_BIT, code::DATA, true));
+    assert!(
+        o.diag.err_valid,
+        "the error that caused bus-off is captured"
+    );
+    assert_eq!(
+        (o.diag.err_kind, o.diag.err_field, o.diag.err_tx),
+        (KIND_BIT, code::DATA, true)
+    );
     assert_eq!(o.probes.tec, 256);
     assert_eq!(o.probes.field, code::BUS_OFF);
     assert_eq!(bit_errors, 32);

@@ -440,7 +440,10 @@ fn pending_frame_starts_on_sof_at_intermission_bit_3() {
     let s = &t.samples[mark..];
     assert!(!s[0].probes.sampled_bit);
     // ISO 11898-1 10.4.6: a node joining at intermission bit 3 sends no SOF bit.
-    assert!(s[0].tx, "no SOF bit of its own when joining at intermission bit 3");
+    assert!(
+        s[0].tx,
+        "no SOF bit of its own when joining at intermission bit 3"
+    );
     assert_eq!(s[0].probes.field, code::ID_A);
     // From the first identifier bit on, the node drives g (the tester is recessive).
     for k in 1..25 {

@@ -803,8 +803,14 @@ fn listen_only_follows_overload_flag_unchecked() {
     t.drive_all(bits);
     t.idle(30);
     let fields: Vec<u8> = t.samples.iter().map(|o| o.probes.field).collect();
-    let first_ovl = fields.iter().position(|&x| x == code::OVERLOAD_FLAG).unwrap();
-    let first_delim = fields.iter().position(|&x| x == code::OVERLOAD_DELIM).unwrap();
+    let first_ovl = fields
+        .iter()
+        .position(|&x| x == code::OVERLOAD_FLAG)
+        .unwrap();
+    let first_delim = fields
+        .iter()
+        .position(|&x| x == code::OVERLOAD_DELIM)
+        .unwrap();
     assert_eq!(first_delim - first_ovl, 6, "6 flag bits followed");
     assert!(fields[first_delim..].contains(&code::IDLE));
     assert!(t.trace.iter().all(|o| o.tx && !o.diag.err_valid));
@@ -856,9 +862,16 @@ fn single_shot_keeps_frame_not_yet_attempted() {
     let errs: Vec<_> = outs.iter().filter(|o| o[0].diag.err_valid).collect();
     assert!(!errs.is_empty());
     assert_eq!(errs[0][0].diag.err_kind, KIND_FORM);
-    assert!(errs[0][0].diag.err_tx, "still transmitter (role) after its frame");
+    assert!(
+        errs[0][0].diag.err_tx,
+        "still transmitter (role) after its frame"
+    );
     assert!(outs.iter().all(|o| !o[0].tx_failed));
     assert_eq!(outs.iter().filter(|o| o[0].tx_done).count(), 1);
-    let rx: Vec<Frame> = outs.iter().filter(|o| o[1].rx_valid).map(|o| o[1].rx_frame).collect();
+    let rx: Vec<Frame> = outs
+        .iter()
+        .filter(|o| o[1].rx_valid)
+        .map(|o| o[1].rx_frame)
+        .collect();
     assert_eq!(rx, vec![f2.normalized()]);
 }

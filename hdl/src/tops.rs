@@ -69,6 +69,11 @@ pub fn emit(name: &str) -> Option<String> {
 /// Every top and its Verilog.
 pub fn emit_all() -> Vec<(&'static str, String)> {
     TOPS.iter()
-        .map(|name| (*name, emit(name).expect("every name in TOPS has an emitter")))
+        .map(|name| {
+            (
+                *name,
+                emit(name).expect("every name in TOPS has an emitter"),
+            )
+        })
         .collect()
 }

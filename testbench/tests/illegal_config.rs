@@ -13,8 +13,20 @@ use drcc_testbench::engines::verilator_required;
 
 fn frames() -> [Frame; 2] {
     [
-        Frame { id: 0x155, ide: false, rtr: false, dlc: 2, data: [0xAA, 0x0F, 0, 0, 0, 0, 0, 0] },
-        Frame { id: 0x1ABC_DE01, ide: true, rtr: false, dlc: 1, data: [0x81, 0, 0, 0, 0, 0, 0, 0] },
+        Frame {
+            id: 0x155,
+            ide: false,
+            rtr: false,
+            dlc: 2,
+            data: [0xAA, 0x0F, 0, 0, 0, 0, 0, 0],
+        },
+        Frame {
+            id: 0x1ABC_DE01,
+            ide: true,
+            rtr: false,
+            dlc: 1,
+            data: [0x81, 0, 0, 0, 0, 0, 0, 0],
+        },
     ]
 }
 
@@ -23,13 +35,20 @@ fn frames() -> [Frame; 2] {
 fn lockstep(timing: BitTiming, cycles: usize) -> Vec<bool> {
     let mut rtl: Vec<VerilatorEngine> = (0..2).map(|_| VerilatorEngine::new().unwrap()).collect();
     let mut model: Vec<ModelEngine> = (0..2).map(|_| ModelEngine::new()).collect();
-    let recessive = ChannelOutputs { tx: true, ..Default::default() };
+    let recessive = ChannelOutputs {
+        tx: true,
+        ..Default::default()
+    };
     let (mut out_r, mut out_m) = (vec![recessive; 2], vec![recessive; 2]);
     let mut tx0 = Vec::with_capacity(cycles);
     for cycle in 0..cycles {
         let (bus_r, bus_m) = (out_r.iter().all(|o| o.tx), out_m.iter().all(|o| o.tx));
         for n in 0..2 {
-            let mut inp = ChannelInputs { rst: cycle < 4, timing, ..Default::default() };
+            let mut inp = ChannelInputs {
+                rst: cycle < 4,
+                timing,
+                ..Default::default()
+            };
             if cycle == 10 + 3 * n {
                 inp.tx_req = true;
                 inp.tx_frame = frames()[n];
@@ -85,7 +104,13 @@ fn short_bit_time_is_clamped_to_8_tq_in_rtl_and_model() {
         return;
     }
     // 1 + 1 + 1 = 3 tq: TSEG1 is raised to 7 - TSEG2 = 6 -> 8 tq of 2 clocks.
-    let t = BitTiming { brp: 1, tseg1: 1, tseg2: 1, sjw: 1, triple_sampling: false };
+    let t = BitTiming {
+        brp: 1,
+        tseg1: 1,
+        tseg2: 1,
+        sjw: 1,
+        triple_sampling: false,
+    };
     let tx = lockstep(t, 3000);
     assert_eq!(shortest_bit(&tx), 16, "8 tq x 2 clocks per bit");
 }
@@ -96,7 +121,13 @@ fn tseg1_too_short_for_read_back_is_clamped() {
         return;
     }
     // brp 0, tseg1 1, tseg2 8: 10 tq, but TSEG1 is raised to 3 clocks -> 12 clocks.
-    let t = BitTiming { brp: 0, tseg1: 1, tseg2: 8, sjw: 1, triple_sampling: false };
+    let t = BitTiming {
+        brp: 0,
+        tseg1: 1,
+        tseg2: 8,
+        sjw: 1,
+        triple_sampling: false,
+    };
     let tx = lockstep(t, 3000);
     assert_eq!(shortest_bit(&tx), 12);
 }
@@ -106,7 +137,13 @@ fn sjw_above_tseg2_is_clamped_and_engines_agree() {
     if !verilator_or_skip() {
         return;
     }
-    let t = BitTiming { brp: 0, tseg1: 8, tseg2: 2, sjw: 4, triple_sampling: false };
+    let t = BitTiming {
+        brp: 0,
+        tseg1: 8,
+        tseg2: 2,
+        sjw: 4,
+        triple_sampling: false,
+    };
     let tx = lockstep(t, 3000);
     assert_eq!(shortest_bit(&tx), 11);
 }
@@ -114,9 +151,36 @@ fn sjw_above_tseg2_is_clamped_and_engines_agree() {
 #[test]
 fn loader_refuses_what_the_hardware_would_clamp() {
     for (t, field) in [
-        (BitTiming { brp: 1, tseg1: 1, tseg2: 1, sjw: 1, triple_sampling: false }, "tq per bit"),
-        (BitTiming { brp: 0, tseg1: 8, tseg2: 2, sjw: 4, triple_sampling: false }, "sjw"),
-        (BitTiming { brp: 0, tseg1: 1, tseg2: 8, sjw: 1, triple_sampling: false }, "tseg1"),
+        (
+            BitTiming {
+                brp: 1,
+                tseg1: 1,
+                tseg2: 1,
+                sjw: 1,
+                triple_sampling: false,
+            },
+            "tq per bit",
+        ),
+        (
+            BitTiming {
+                brp: 0,
+                tseg1: 8,
+                tseg2: 2,
+                sjw: 4,
+                triple_sampling: false,
+            },
+            "sjw",
+        ),
+        (
+            BitTiming {
+                brp: 0,
+                tseg1: 1,
+                tseg2: 8,
+                sjw: 1,
+                triple_sampling: false,
+            },
+            "tseg1",
+        ),
     ] {
         let err = t.validate().expect_err("illegal timing must be refused");
         assert!(err.contains(field), "`{err}` should name {field}");

@@ -6,8 +6,8 @@
 use super::bsp::field::Field;
 use super::bsp::protocol::ProtocolController;
 use super::btl::BitTimingLogic;
-use super::config::ChannelConfig;
 use super::bus_sampling::synchronizer::RxSynchronizer;
+use super::config::ChannelConfig;
 use rust_hdl::prelude::*;
 
 /// One CAN channel: BTL + BSP.

@@ -9,6 +9,7 @@
 //! - TSEG1' = max(TSEG1, 7 - TSEG2, M), M = 3 for BRP = 0, 2 for BRP = 1, else 1:
 //!   at least the 8 tq per bit of ISO 11898-1 11.3.1, and at least 3 clocks of
 //!   TSEG1 so a node reads back its own bit through the 2-clock synchronizer.
+//!
 //! All values use the minus-one encodings of the ports.
 
 use rust_hdl::prelude::*;

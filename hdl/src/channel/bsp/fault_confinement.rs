@@ -11,6 +11,7 @@
 //!   127 back to 127, the top of the 119..127 range the standard allows)
 //!   -> `rx_success`;
 //! - bus-off recovery (128 x 11 recessive bits) -> `recovered` clears both.
+//!
 //! Error passive at TEC >= 128 or REC >= 128; bus-off at TEC > 255. REC
 //! saturates at 255 instead of wrapping.
 

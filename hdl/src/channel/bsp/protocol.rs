@@ -448,13 +448,58 @@ impl Logic for ProtocolController {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, field_q, bit_cnt, is_tx, pending, stuff_cnt, stuff_last, stuff_en, crc,
-            crc_ok, flag_passive, recovery_cnt, tx_q, tx_bit, last_bit_arb, dom_cnt, delim_first,
-            ack_passive_pending, abort_pending, attempt, tx_failed_q, err_valid_q, err_kind_q,
-            err_field_q, err_tx_q, alc_q, cnt_bit_q, cnt_stuff_q, cnt_crc_q, cnt_form_q,
-            cnt_ack_q, txf_id, txf_ide, txf_rtr, txf_dlc,
-            txf_data, rxs_id, rxs_srr_rtr, rxs_ide, rxs_rtr, rxs_dlc, rxs_data, data_len,
-            rx_valid_q, tx_done_q, arb_lost_q, rx_id_q, rx_ide_q, rx_rtr_q, rx_dlc_q, rx_data_q
+            self,
+            clk,
+            field_q,
+            bit_cnt,
+            is_tx,
+            pending,
+            stuff_cnt,
+            stuff_last,
+            stuff_en,
+            crc,
+            crc_ok,
+            flag_passive,
+            recovery_cnt,
+            tx_q,
+            tx_bit,
+            last_bit_arb,
+            dom_cnt,
+            delim_first,
+            ack_passive_pending,
+            abort_pending,
+            attempt,
+            tx_failed_q,
+            err_valid_q,
+            err_kind_q,
+            err_field_q,
+            err_tx_q,
+            alc_q,
+            cnt_bit_q,
+            cnt_stuff_q,
+            cnt_crc_q,
+            cnt_form_q,
+            cnt_ack_q,
+            txf_id,
+            txf_ide,
+            txf_rtr,
+            txf_dlc,
+            txf_data,
+            rxs_id,
+            rxs_srr_rtr,
+            rxs_ide,
+            rxs_rtr,
+            rxs_dlc,
+            rxs_data,
+            data_len,
+            rx_valid_q,
+            tx_done_q,
+            arb_lost_q,
+            rx_id_q,
+            rx_ide_q,
+            rx_rtr_q,
+            rx_dlc_q,
+            rx_data_q
         );
         self.fc.clk.next = self.clk.val();
         self.fc.rst.next = self.rst.val();
@@ -520,8 +565,7 @@ impl Logic for ProtocolController {
         self.join_ok.next = self.start_ok.val() && !self.suspend_due.val();
         // A node whose own SOF is already on `tx` keeps its attempt (contract §8).
         self.starts.next = (!self.tx_q.q.val() && self.pending.q.val()) || self.start_ok.val();
-        self.join_starts.next =
-            (!self.tx_q.q.val() && self.pending.q.val()) || self.join_ok.val();
+        self.join_starts.next = (!self.tx_q.q.val() && self.pending.q.val()) || self.join_ok.val();
         self.tec_exempt.next = false;
         self.ack_error.next = false;
         self.ev_tec_add8.next = false;
@@ -752,8 +796,8 @@ impl Logic for ProtocolController {
                         }
                     }
                     Field::IdA => {
-                        self.rxs_id.d.next = (self.rxs_id.q.val() << 1)
-                            | bit_cast::<29, 1>(self.bus_bit.val());
+                        self.rxs_id.d.next =
+                            (self.rxs_id.q.val() << 1) | bit_cast::<29, 1>(self.bus_bit.val());
                         if self.bit_cnt.q.val() == self.n7_10.val() {
                             self.field_n.next = Field::SrrRtr;
                             self.bit_cnt_n.next = self.n7_0.val();
@@ -776,8 +820,8 @@ impl Logic for ProtocolController {
                         self.bit_cnt_n.next = self.n7_0.val();
                     }
                     Field::IdB => {
-                        self.rxs_id.d.next = (self.rxs_id.q.val() << 1)
-                            | bit_cast::<29, 1>(self.bus_bit.val());
+                        self.rxs_id.d.next =
+                            (self.rxs_id.q.val() << 1) | bit_cast::<29, 1>(self.bus_bit.val());
                         if self.bit_cnt.q.val() == self.n7_17.val() {
                             self.field_n.next = Field::RtrExt;
                             self.bit_cnt_n.next = self.n7_0.val();
@@ -1117,30 +1161,30 @@ impl Logic for ProtocolController {
                 self.err_kind_q.d.next = self.err_kind_n.val();
                 self.err_field_q.d.next = self.field_q.q.val();
                 self.err_tx_q.d.next = self.is_tx.q.val() || self.sof_error.val();
-                if self.err_kind_n.val() == self.k3_bit.val() {
-                    if self.cnt_bit_q.q.val() != self.n8_255.val() {
-                        self.cnt_bit_q.d.next = self.cnt_bit_q.q.val() + self.n8_1.val();
-                    }
+                if (self.err_kind_n.val() == self.k3_bit.val())
+                    && (self.cnt_bit_q.q.val() != self.n8_255.val())
+                {
+                    self.cnt_bit_q.d.next = self.cnt_bit_q.q.val() + self.n8_1.val();
                 }
-                if self.err_kind_n.val() == self.k3_stuff.val() {
-                    if self.cnt_stuff_q.q.val() != self.n8_255.val() {
-                        self.cnt_stuff_q.d.next = self.cnt_stuff_q.q.val() + self.n8_1.val();
-                    }
+                if (self.err_kind_n.val() == self.k3_stuff.val())
+                    && (self.cnt_stuff_q.q.val() != self.n8_255.val())
+                {
+                    self.cnt_stuff_q.d.next = self.cnt_stuff_q.q.val() + self.n8_1.val();
                 }
-                if self.err_kind_n.val() == self.k3_crc.val() {
-                    if self.cnt_crc_q.q.val() != self.n8_255.val() {
-                        self.cnt_crc_q.d.next = self.cnt_crc_q.q.val() + self.n8_1.val();
-                    }
+                if (self.err_kind_n.val() == self.k3_crc.val())
+                    && (self.cnt_crc_q.q.val() != self.n8_255.val())
+                {
+                    self.cnt_crc_q.d.next = self.cnt_crc_q.q.val() + self.n8_1.val();
                 }
-                if self.err_kind_n.val() == self.k3_form.val() {
-                    if self.cnt_form_q.q.val() != self.n8_255.val() {
-                        self.cnt_form_q.d.next = self.cnt_form_q.q.val() + self.n8_1.val();
-                    }
+                if (self.err_kind_n.val() == self.k3_form.val())
+                    && (self.cnt_form_q.q.val() != self.n8_255.val())
+                {
+                    self.cnt_form_q.d.next = self.cnt_form_q.q.val() + self.n8_1.val();
                 }
-                if self.err_kind_n.val() == self.k3_ack.val() {
-                    if self.cnt_ack_q.q.val() != self.n8_255.val() {
-                        self.cnt_ack_q.d.next = self.cnt_ack_q.q.val() + self.n8_1.val();
-                    }
+                if (self.err_kind_n.val() == self.k3_ack.val())
+                    && (self.cnt_ack_q.q.val() != self.n8_255.val())
+                {
+                    self.cnt_ack_q.d.next = self.cnt_ack_q.q.val() + self.n8_1.val();
                 }
             }
             // Single shot or a due abort: a failed attempt drops the frame (§8).

@@ -93,13 +93,13 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     reg  [7:0] cfg_regs__cfg_ewl;
     reg  cfg_regs__cfg_single_shot;
     wire  [5:0] cfg_regs__brp;
-    wire  [3:0] cfg_regs__tseg1;
-    wire  [2:0] cfg_regs__tseg2;
-    wire  [1:0] cfg_regs__sjw;
     wire  cfg_regs__triple;
     wire  [1:0] cfg_regs__mode;
     wire  [7:0] cfg_regs__ewl;
     wire  cfg_regs__single_shot;
+    wire  [4:0] cfg_regs__tseg1_len;
+    wire  [3:0] cfg_regs__tseg2_len;
+    wire  [3:0] cfg_regs__sjw_len;
     reg  rx_sync__clk;
     reg  rx_sync__rst;
     reg  rx_sync__rx;
@@ -107,9 +107,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     reg  btl__clk;
     reg  btl__rst;
     reg  [5:0] btl__cfg_brp;
-    reg  [3:0] btl__cfg_tseg1;
-    reg  [2:0] btl__cfg_tseg2;
-    reg  [1:0] btl__cfg_sjw;
+    reg  [4:0] btl__cfg_tseg1_len;
+    reg  [3:0] btl__cfg_tseg2_len;
+    reg  [3:0] btl__cfg_sjw_len;
     reg  btl__cfg_triple;
     reg  btl__rx_s;
     reg  btl__tx;
@@ -177,13 +177,13 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         .cfg_ewl(cfg_regs__cfg_ewl),
         .cfg_single_shot(cfg_regs__cfg_single_shot),
         .brp(cfg_regs__brp),
-        .tseg1(cfg_regs__tseg1),
-        .tseg2(cfg_regs__tseg2),
-        .sjw(cfg_regs__sjw),
         .triple(cfg_regs__triple),
         .mode(cfg_regs__mode),
         .ewl(cfg_regs__ewl),
-        .single_shot(cfg_regs__single_shot)
+        .single_shot(cfg_regs__single_shot),
+        .tseg1_len(cfg_regs__tseg1_len),
+        .tseg2_len(cfg_regs__tseg2_len),
+        .sjw_len(cfg_regs__sjw_len)
     );
     can_channel__rx_sync rx_sync(
         .clk(rx_sync__clk),
@@ -195,9 +195,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         .clk(btl__clk),
         .rst(btl__rst),
         .cfg_brp(btl__cfg_brp),
-        .cfg_tseg1(btl__cfg_tseg1),
-        .cfg_tseg2(btl__cfg_tseg2),
-        .cfg_sjw(btl__cfg_sjw),
+        .cfg_tseg1_len(btl__cfg_tseg1_len),
+        .cfg_tseg2_len(btl__cfg_tseg2_len),
+        .cfg_sjw_len(btl__cfg_sjw_len),
         .cfg_triple(btl__cfg_triple),
         .rx_s(btl__rx_s),
         .tx(btl__tx),
@@ -280,9 +280,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         btl__clk = clk;
         btl__rst = rst;
         btl__cfg_brp = cfg_regs__brp;
-        btl__cfg_tseg1 = cfg_regs__tseg1;
-        btl__cfg_tseg2 = cfg_regs__tseg2;
-        btl__cfg_sjw = cfg_regs__sjw;
+        btl__cfg_tseg1_len = cfg_regs__tseg1_len;
+        btl__cfg_tseg2_len = cfg_regs__tseg2_len;
+        btl__cfg_sjw_len = cfg_regs__sjw_len;
         btl__cfg_triple = cfg_regs__triple;
         btl__rx_s = rx_sync__rx_s;
         btl__tx = bsp__tx;
@@ -3000,15 +3000,15 @@ module can_channel__bsp__txf_rtr(d,q,clock);
 endmodule // can_channel__bsp__txf_rtr
 
 
-module can_channel__btl(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
+module can_channel__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  [5:0] cfg_brp;
-    input wire  [3:0] cfg_tseg1;
-    input wire  [2:0] cfg_tseg2;
-    input wire  [1:0] cfg_sjw;
+    input wire  [4:0] cfg_tseg1_len;
+    input wire  [3:0] cfg_tseg2_len;
+    input wire  [3:0] cfg_sjw_len;
     input wire  cfg_triple;
     input wire  rx_s;
     input wire  tx;
@@ -3068,7 +3068,6 @@ module can_channel__btl(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,r
     reg  tick;
     reg  [4:0] tseg1_nominal;
     reg  [3:0] tseg2_nominal;
-    reg  [3:0] sjw_cfg;
     reg  [3:0] sjw_eff;
     reg  sync_ok;
     reg  do_hard;
@@ -3155,15 +3154,9 @@ module can_channel__btl(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,r
         last_sample_q__d = last_sample_q__q;
         synced__d = synced__q;
         sample_point_q__d = sample_point_q__q;
-        tseg1_nominal = ((cfg_tseg1) & 5'h1f) + one5;
-        tseg2_nominal = ((cfg_tseg2) & 4'hf) + one4;
-        sjw_cfg = ((cfg_sjw) & 4'hf) + one4;
-        if (sjw_cfg > tseg2_nominal) begin
-            sjw_eff = tseg2_nominal;
-        end
-        else begin
-            sjw_eff = sjw_cfg;
-        end
+        tseg1_nominal = cfg_tseg1_len;
+        tseg2_nominal = cfg_tseg2_len;
+        sjw_eff = cfg_sjw_len;
         tick = brp_cnt__q >= cfg_brp;
         sync_ok = rx_prev__q && ~rx_s && last_sample_q__q && ~synced__q;
         do_hard = sync_ok && hard_sync_enable;
@@ -3462,7 +3455,7 @@ module can_channel__btl__tseg2_len(d,q,clock);
 endmodule // can_channel__btl__tseg2_len
 
 
-module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp,tseg1,tseg2,sjw,triple,mode,ewl,single_shot);
+module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp,triple,mode,ewl,single_shot,tseg1_len,tseg2_len,sjw_len);
     
     // Module arguments
     input wire  clk;
@@ -3476,15 +3469,17 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     input wire  [7:0] cfg_ewl;
     input wire  cfg_single_shot;
     output reg  [5:0] brp;
-    output reg  [3:0] tseg1;
-    output reg  [2:0] tseg2;
-    output reg  [1:0] sjw;
     output reg  triple;
     output reg  [1:0] mode;
     output reg  [7:0] ewl;
     output reg  single_shot;
+    output reg  [4:0] tseg1_len;
+    output reg  [3:0] tseg2_len;
+    output reg  [3:0] sjw_len;
     
     // Constant declarations
+    localparam  one4 = 4'h1;
+    localparam  one5 = 5'b1;
     localparam  n3_5 = 3'b101;
     localparam  n4_5 = 4'h5;
     localparam  n4_0 = 4'h0;
@@ -3494,18 +3489,18 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     localparam  n6_1 = 6'b1;
     
     // Stub signals
+    reg  [4:0] tseg1_len_q__d;
+    wire  [4:0] tseg1_len_q__q;
+    reg  tseg1_len_q__clock;
+    reg  [3:0] tseg2_len_q__d;
+    wire  [3:0] tseg2_len_q__q;
+    reg  tseg2_len_q__clock;
+    reg  [3:0] sjw_len_q__d;
+    wire  [3:0] sjw_len_q__q;
+    reg  sjw_len_q__clock;
     reg  [5:0] brp_q__d;
     wire  [5:0] brp_q__q;
     reg  brp_q__clock;
-    reg  [3:0] tseg1_q__d;
-    wire  [3:0] tseg1_q__q;
-    reg  tseg1_q__clock;
-    reg  [2:0] tseg2_q__d;
-    wire  [2:0] tseg2_q__q;
-    reg  tseg2_q__clock;
-    reg  [1:0] sjw_q__d;
-    wire  [1:0] sjw_q__q;
-    reg  sjw_q__clock;
     reg  triple_q__d;
     wire  triple_q__q;
     reg  triple_q__clock;
@@ -3527,25 +3522,25 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     reg  [1:0] sjw_clamped;
     
     // Sub module instances
+    can_channel__cfg_regs__tseg1_len_q tseg1_len_q(
+        .d(tseg1_len_q__d),
+        .q(tseg1_len_q__q),
+        .clock(tseg1_len_q__clock)
+    );
+    can_channel__cfg_regs__tseg2_len_q tseg2_len_q(
+        .d(tseg2_len_q__d),
+        .q(tseg2_len_q__q),
+        .clock(tseg2_len_q__clock)
+    );
+    can_channel__cfg_regs__sjw_len_q sjw_len_q(
+        .d(sjw_len_q__d),
+        .q(sjw_len_q__q),
+        .clock(sjw_len_q__clock)
+    );
     can_channel__cfg_regs__brp_q brp_q(
         .d(brp_q__d),
         .q(brp_q__q),
         .clock(brp_q__clock)
-    );
-    can_channel__cfg_regs__tseg1_q tseg1_q(
-        .d(tseg1_q__d),
-        .q(tseg1_q__q),
-        .clock(tseg1_q__clock)
-    );
-    can_channel__cfg_regs__tseg2_q tseg2_q(
-        .d(tseg2_q__d),
-        .q(tseg2_q__q),
-        .clock(tseg2_q__clock)
-    );
-    can_channel__cfg_regs__sjw_q sjw_q(
-        .d(sjw_q__d),
-        .q(sjw_q__q),
-        .clock(sjw_q__clock)
     );
     can_channel__cfg_regs__triple_q triple_q(
         .d(triple_q__d),
@@ -3571,21 +3566,21 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     // Update code
     always @(*) begin
         brp_q__clock = clk;
-        tseg1_q__clock = clk;
-        tseg2_q__clock = clk;
-        sjw_q__clock = clk;
         triple_q__clock = clk;
         mode_q__clock = clk;
         ewl_q__clock = clk;
         single_shot_q__clock = clk;
+        tseg1_len_q__clock = clk;
+        tseg2_len_q__clock = clk;
+        sjw_len_q__clock = clk;
         brp_q__d = brp_q__q;
-        tseg1_q__d = tseg1_q__q;
-        tseg2_q__d = tseg2_q__q;
-        sjw_q__d = sjw_q__q;
         triple_q__d = triple_q__q;
         mode_q__d = mode_q__q;
         ewl_q__d = ewl_q__q;
         single_shot_q__d = single_shot_q__q;
+        tseg1_len_q__d = tseg1_len_q__q;
+        tseg2_len_q__d = tseg2_len_q__q;
+        sjw_len_q__d = sjw_len_q__q;
         if (cfg_tseg2 < n3_5) begin
             tseg1_min = n4_5 - ((cfg_tseg2) & 4'hf);
         end
@@ -3621,22 +3616,22 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
         end
         if (rst) begin
             brp_q__d = cfg_brp;
-            tseg1_q__d = tseg1_clamped;
-            tseg2_q__d = cfg_tseg2;
-            sjw_q__d = sjw_clamped;
             triple_q__d = cfg_triple;
             mode_q__d = cfg_mode;
             ewl_q__d = cfg_ewl;
             single_shot_q__d = cfg_single_shot;
+            tseg1_len_q__d = ((tseg1_clamped) & 5'h1f) + one5;
+            tseg2_len_q__d = ((cfg_tseg2) & 4'hf) + one4;
+            sjw_len_q__d = ((sjw_clamped) & 4'hf) + one4;
         end
         brp = brp_q__q;
-        tseg1 = tseg1_q__q;
-        tseg2 = tseg2_q__q;
-        sjw = sjw_q__q;
         triple = triple_q__q;
         mode = mode_q__q;
         ewl = ewl_q__q;
         single_shot = single_shot_q__q;
+        tseg1_len = tseg1_len_q__q;
+        tseg2_len = tseg2_len_q__q;
+        sjw_len = sjw_len_q__q;
     end
     
 endmodule // can_channel__cfg_regs
@@ -3706,11 +3701,11 @@ module can_channel__cfg_regs__single_shot_q(d,q,clock);
 endmodule // can_channel__cfg_regs__single_shot_q
 
 
-module can_channel__cfg_regs__sjw_q(d,q,clock);
+module can_channel__cfg_regs__sjw_len_q(d,q,clock);
     
     // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
+    input wire  [3:0] d;
+    output reg  [3:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -3719,7 +3714,7 @@ module can_channel__cfg_regs__sjw_q(d,q,clock);
        q <= d;
     end
           
-endmodule // can_channel__cfg_regs__sjw_q
+endmodule // can_channel__cfg_regs__sjw_len_q
 
 
 module can_channel__cfg_regs__triple_q(d,q,clock);
@@ -3738,7 +3733,23 @@ module can_channel__cfg_regs__triple_q(d,q,clock);
 endmodule // can_channel__cfg_regs__triple_q
 
 
-module can_channel__cfg_regs__tseg1_q(d,q,clock);
+module can_channel__cfg_regs__tseg1_len_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__cfg_regs__tseg1_len_q
+
+
+module can_channel__cfg_regs__tseg2_len_q(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -3751,23 +3762,7 @@ module can_channel__cfg_regs__tseg1_q(d,q,clock);
        q <= d;
     end
           
-endmodule // can_channel__cfg_regs__tseg1_q
-
-
-module can_channel__cfg_regs__tseg2_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__cfg_regs__tseg2_q
+endmodule // can_channel__cfg_regs__tseg2_len_q
 
 
 module can_channel__rx_sync(clk,rst,rx,rx_s);

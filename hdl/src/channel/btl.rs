@@ -28,9 +28,9 @@ pub struct BitTimingLogic {
     pub rst: Signal<In, Bit>,
     // configuration (minus-one encodings for the segment lengths)
     pub cfg_brp: Signal<In, Bits<6>>,
-    pub cfg_tseg1: Signal<In, Bits<4>>,
-    pub cfg_tseg2: Signal<In, Bits<3>>,
-    pub cfg_sjw: Signal<In, Bits<2>>,
+    pub cfg_tseg1_len: Signal<In, Bits<5>>,
+    pub cfg_tseg2_len: Signal<In, Bits<4>>,
+    pub cfg_sjw_len: Signal<In, Bits<4>>,
     pub cfg_triple: Signal<In, Bit>,
     // bus side
     pub rx_s: Signal<In, Bit>,
@@ -60,7 +60,6 @@ pub struct BitTimingLogic {
     tick: Signal<Local, Bit>,
     tseg1_nominal: Signal<Local, Bits<5>>,
     tseg2_nominal: Signal<Local, Bits<4>>,
-    sjw_cfg: Signal<Local, Bits<4>>,
     sjw_eff: Signal<Local, Bits<4>>,
     sync_ok: Signal<Local, Bit>,
     do_hard: Signal<Local, Bit>,
@@ -85,9 +84,9 @@ impl Default for BitTimingLogic {
             clk: Default::default(),
             rst: Default::default(),
             cfg_brp: Default::default(),
-            cfg_tseg1: Default::default(),
-            cfg_tseg2: Default::default(),
-            cfg_sjw: Default::default(),
+            cfg_tseg1_len: Default::default(),
+            cfg_tseg2_len: Default::default(),
+            cfg_sjw_len: Default::default(),
             cfg_triple: Default::default(),
             rx_s: Default::default(),
             tx: Default::default(),
@@ -111,7 +110,6 @@ impl Default for BitTimingLogic {
             tick: Default::default(),
             tseg1_nominal: Default::default(),
             tseg2_nominal: Default::default(),
-            sjw_cfg: Default::default(),
             sjw_eff: Default::default(),
             sync_ok: Default::default(),
             do_hard: Default::default(),
@@ -150,14 +148,10 @@ impl Logic for BitTimingLogic {
             sample_point_q
         );
         // Nominal lengths from the minus-one encodings; SJW clamped to TSEG2.
-        self.tseg1_nominal.next = bit_cast::<5, 4>(self.cfg_tseg1.val()) + self.one5.val();
-        self.tseg2_nominal.next = bit_cast::<4, 3>(self.cfg_tseg2.val()) + self.one4.val();
-        self.sjw_cfg.next = bit_cast::<4, 2>(self.cfg_sjw.val()) + self.one4.val();
-        if self.sjw_cfg.val() > self.tseg2_nominal.val() {
-            self.sjw_eff.next = self.tseg2_nominal.val();
-        } else {
-            self.sjw_eff.next = self.sjw_cfg.val();
-        }
+        // Lengths in tq, clamped and registered by the configuration block.
+        self.tseg1_nominal.next = self.cfg_tseg1_len.val();
+        self.tseg2_nominal.next = self.cfg_tseg2_len.val();
+        self.sjw_eff.next = self.cfg_sjw_len.val();
         // Prescaler: one time quantum every BRP+1 clocks.
         self.tick.next = self.brp_cnt.q.val() >= self.cfg_brp.val();
         // 11.3.2: recessive-to-dominant edge, previous sample recessive, once per bit.

@@ -164,9 +164,9 @@ impl Logic for CanChannel {
         self.btl.clk.next = self.clk.val();
         self.btl.rst.next = self.rst.val();
         self.btl.cfg_brp.next = self.cfg_regs.brp.val();
-        self.btl.cfg_tseg1.next = self.cfg_regs.tseg1.val();
-        self.btl.cfg_tseg2.next = self.cfg_regs.tseg2.val();
-        self.btl.cfg_sjw.next = self.cfg_regs.sjw.val();
+        self.btl.cfg_tseg1_len.next = self.cfg_regs.tseg1_len.val();
+        self.btl.cfg_tseg2_len.next = self.cfg_regs.tseg2_len.val();
+        self.btl.cfg_sjw_len.next = self.cfg_regs.sjw_len.val();
         self.btl.cfg_triple.next = self.cfg_regs.triple.val();
         self.btl.rx_s.next = self.rx_sync.rx_s.val();
         self.btl.tx.next = self.bsp.tx.val();

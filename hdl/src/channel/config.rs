@@ -31,17 +31,21 @@ pub struct ChannelConfig {
     pub cfg_single_shot: Signal<In, Bit>,
     // held configuration
     pub brp: Signal<Out, Bits<6>>,
-    pub tseg1: Signal<Out, Bits<4>>,
-    pub tseg2: Signal<Out, Bits<3>>,
-    pub sjw: Signal<Out, Bits<2>>,
     pub triple: Signal<Out, Bit>,
     pub mode: Signal<Out, Bits<2>>,
     pub ewl: Signal<Out, Bits<8>>,
     pub single_shot: Signal<Out, Bit>,
+    // derived lengths in time quanta (registered, so the bit timing logic has
+    // no adders on its sample-point path): TSEG1', TSEG2, SJW'
+    pub tseg1_len: Signal<Out, Bits<5>>,
+    pub tseg2_len: Signal<Out, Bits<4>>,
+    pub sjw_len: Signal<Out, Bits<4>>,
+    tseg1_len_q: DFF<Bits<5>>,
+    tseg2_len_q: DFF<Bits<4>>,
+    sjw_len_q: DFF<Bits<4>>,
+    one4: Constant<Bits<4>>,
+    one5: Constant<Bits<5>>,
     brp_q: DFF<Bits<6>>,
-    tseg1_q: DFF<Bits<4>>,
-    tseg2_q: DFF<Bits<3>>,
-    sjw_q: DFF<Bits<2>>,
     triple_q: DFF<Bit>,
     mode_q: DFF<Bits<2>>,
     ewl_q: DFF<Bits<8>>,
@@ -75,17 +79,19 @@ impl Default for ChannelConfig {
             cfg_ewl: Default::default(),
             cfg_single_shot: Default::default(),
             brp: Default::default(),
-            tseg1: Default::default(),
-            tseg2: Default::default(),
-            sjw: Default::default(),
             triple: Default::default(),
             mode: Default::default(),
             ewl: Default::default(),
             single_shot: Default::default(),
+            tseg1_len: Default::default(),
+            tseg2_len: Default::default(),
+            sjw_len: Default::default(),
+            tseg1_len_q: Default::default(),
+            tseg2_len_q: Default::default(),
+            sjw_len_q: Default::default(),
+            one4: Constant::new(1.into()),
+            one5: Constant::new(1.into()),
             brp_q: Default::default(),
-            tseg1_q: Default::default(),
-            tseg2_q: Default::default(),
-            sjw_q: Default::default(),
             triple_q: Default::default(),
             mode_q: Default::default(),
             ewl_q: Default::default(),
@@ -113,13 +119,13 @@ impl Logic for ChannelConfig {
             self,
             clk,
             brp_q,
-            tseg1_q,
-            tseg2_q,
-            sjw_q,
             triple_q,
             mode_q,
             ewl_q,
-            single_shot_q
+            single_shot_q,
+            tseg1_len_q,
+            tseg2_len_q,
+            sjw_len_q
         );
         // 8 tq per bit: TSEG1 >= 7 - TSEG2, i.e. (tseg1-1) >= 5 - (tseg2-1).
         if self.cfg_tseg2.val() < self.n3_5.val() {
@@ -153,22 +159,22 @@ impl Logic for ChannelConfig {
         }
         if self.rst.val() {
             self.brp_q.d.next = self.cfg_brp.val();
-            self.tseg1_q.d.next = self.tseg1_clamped.val();
-            self.tseg2_q.d.next = self.cfg_tseg2.val();
-            self.sjw_q.d.next = self.sjw_clamped.val();
             self.triple_q.d.next = self.cfg_triple.val();
             self.mode_q.d.next = self.cfg_mode.val();
             self.ewl_q.d.next = self.cfg_ewl.val();
             self.single_shot_q.d.next = self.cfg_single_shot.val();
+            self.tseg1_len_q.d.next = bit_cast::<5, 4>(self.tseg1_clamped.val()) + self.one5.val();
+            self.tseg2_len_q.d.next = bit_cast::<4, 3>(self.cfg_tseg2.val()) + self.one4.val();
+            self.sjw_len_q.d.next = bit_cast::<4, 2>(self.sjw_clamped.val()) + self.one4.val();
         }
         self.brp.next = self.brp_q.q.val();
-        self.tseg1.next = self.tseg1_q.q.val();
-        self.tseg2.next = self.tseg2_q.q.val();
-        self.sjw.next = self.sjw_q.q.val();
         self.triple.next = self.triple_q.q.val();
         self.mode.next = self.mode_q.q.val();
         self.ewl.next = self.ewl_q.q.val();
         self.single_shot.next = self.single_shot_q.q.val();
+        self.tseg1_len.next = self.tseg1_len_q.q.val();
+        self.tseg2_len.next = self.tseg2_len_q.q.val();
+        self.sjw_len.next = self.sjw_len_q.q.val();
     }
 }
 

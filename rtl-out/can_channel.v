@@ -653,6 +653,8 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  is_stuff_bit;
     reg  in_arbitration;
     reg  in_frame;
+    reg  in_delim;
+    reg  after_error_flag;
     reg  sof;
     reg  sof_as_tx;
     reg  crc_covered;
@@ -1155,7 +1157,18 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         in_arbitration = 1'b0;
         in_frame = 1'b0;
         crc_covered = 1'b0;
+        in_delim = 1'b0;
+        after_error_flag = 1'b0;
         case (field_q__q)
+            Field__ErrorDelim:
+                begin
+                    in_delim = 1'b1;
+                    after_error_flag = 1'b1;
+                end
+            Field__OverloadDelim:
+                begin
+                    in_delim = 1'b1;
+                end
             Field__IdA:
                 begin
                     in_arbitration = 1'b1;
@@ -1561,83 +1574,6 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                                 bit_cnt_n = bit_cnt_inc;
                             end
                         end
-                    Field__ErrorDelim:
-                        begin
-                            if (bit_cnt__q == n7_0) begin
-                                delim_first__d = 1'b0;
-                                if (sampled) begin
-                                    bit_cnt_n = n7_1;
-                                end
-                                else begin
-                                    if (delim_first__q && ~is_tx__q) begin
-                                        ev_rec_add8 = 1'b1;
-                                    end
-                                    dom_cnt__d = dom_cnt__q + n3_1;
-                                    if (dom_cnt__q == n3_7) begin
-                                        if (is_tx__q) begin
-                                            ev_tec_add8 = 1'b1;
-                                        end
-                                        else begin
-                                            ev_rec_add8 = 1'b1;
-                                        end
-                                    end
-                                end
-                            end
-                            else if (~sampled) begin
-                                if (bit_cnt__q == n7_7) begin
-                                    field_n = Field__OverloadFlag;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    error = 1'b1;
-                                    form_err = 1'b1;
-                                end
-                            end
-                            else if (bit_cnt__q == n7_7) begin
-                                field_n = Field__Intermission;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__OverloadDelim:
-                        begin
-                            if (bit_cnt__q == n7_0) begin
-                                delim_first__d = 1'b0;
-                                if (sampled) begin
-                                    bit_cnt_n = n7_1;
-                                end
-                                else begin
-                                    dom_cnt__d = dom_cnt__q + n3_1;
-                                    if (dom_cnt__q == n3_7) begin
-                                        if (is_tx__q) begin
-                                            ev_tec_add8 = 1'b1;
-                                        end
-                                        else begin
-                                            ev_rec_add8 = 1'b1;
-                                        end
-                                    end
-                                end
-                            end
-                            else if (~sampled) begin
-                                if (bit_cnt__q == n7_7) begin
-                                    field_n = Field__OverloadFlag;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    error = 1'b1;
-                                    form_err = 1'b1;
-                                end
-                            end
-                            else if (bit_cnt__q == n7_7) begin
-                                field_n = Field__Intermission;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
                     Field__BusOff:
                         begin
                             if (sampled) begin
@@ -1664,6 +1600,45 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                         begin
                         end
                 endcase
+                if (in_delim) begin
+                    if (bit_cnt__q == n7_0) begin
+                        delim_first__d = 1'b0;
+                        if (sampled) begin
+                            bit_cnt_n = n7_1;
+                        end
+                        else begin
+                            if (delim_first__q && after_error_flag && ~is_tx__q) begin
+                                ev_rec_add8 = 1'b1;
+                            end
+                            dom_cnt__d = dom_cnt__q + n3_1;
+                            if (dom_cnt__q == n3_7) begin
+                                if (is_tx__q) begin
+                                    ev_tec_add8 = 1'b1;
+                                end
+                                else begin
+                                    ev_rec_add8 = 1'b1;
+                                end
+                            end
+                        end
+                    end
+                    else if (~sampled) begin
+                        if (bit_cnt__q == n7_7) begin
+                            field_n = Field__OverloadFlag;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            error = 1'b1;
+                            form_err = 1'b1;
+                        end
+                    end
+                    else if (bit_cnt__q == n7_7) begin
+                        field_n = Field__Intermission;
+                        bit_cnt_n = n7_0;
+                    end
+                    else begin
+                        bit_cnt_n = bit_cnt_inc;
+                    end
+                end
             end
             if (sof) begin
                 field_n = Field__IdA;

@@ -179,6 +179,8 @@ pub struct ProtocolController {
     is_stuff_bit: Signal<Local, Bit>,
     in_arbitration: Signal<Local, Bit>,
     in_frame: Signal<Local, Bit>,
+    in_delim: Signal<Local, Bit>,
+    after_error_flag: Signal<Local, Bit>,
     sof: Signal<Local, Bit>,
     sof_as_tx: Signal<Local, Bit>,
     crc_covered: Signal<Local, Bit>,
@@ -384,6 +386,8 @@ impl Default for ProtocolController {
             is_stuff_bit: Default::default(),
             in_arbitration: Default::default(),
             in_frame: Default::default(),
+            in_delim: Default::default(),
+            after_error_flag: Default::default(),
             sof: Default::default(),
             sof_as_tx: Default::default(),
             crc_covered: Default::default(),
@@ -612,7 +616,16 @@ impl Logic for ProtocolController {
         self.in_arbitration.next = false;
         self.in_frame.next = false;
         self.crc_covered.next = false;
+        self.in_delim.next = false;
+        self.after_error_flag.next = false;
         match self.field_q.q.val() {
+            Field::ErrorDelim => {
+                self.in_delim.next = true;
+                self.after_error_flag.next = true;
+            }
+            Field::OverloadDelim => {
+                self.in_delim.next = true;
+            }
             Field::IdA => {
                 self.in_arbitration.next = true;
                 self.in_frame.next = true;
@@ -999,74 +1012,6 @@ impl Logic for ProtocolController {
                             self.bit_cnt_n.next = self.bit_cnt_inc.val();
                         }
                     }
-                    Field::ErrorDelim => {
-                        // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
-                        if self.bit_cnt.q.val() == self.n7_0.val() {
-                            self.delim_first.d.next = false;
-                            if self.sampled.val() {
-                                self.bit_cnt_n.next = self.n7_1.val();
-                            } else {
-                                if self.delim_first.q.val() && !self.is_tx.q.val() {
-                                    // Rule b: dominant first bit after its error flag.
-                                    self.ev_rec_add8.next = true;
-                                }
-                                // Rule f: every 8th consecutive dominant bit after the flag.
-                                self.dom_cnt.d.next = self.dom_cnt.q.val() + self.n3_1.val();
-                                if self.dom_cnt.q.val() == self.n3_7.val() {
-                                    if self.is_tx.q.val() {
-                                        self.ev_tec_add8.next = true;
-                                    } else {
-                                        self.ev_rec_add8.next = true;
-                                    }
-                                }
-                            }
-                        } else if !self.sampled.val() {
-                            if self.bit_cnt.q.val() == self.n7_7.val() {
-                                self.field_n.next = Field::OverloadFlag;
-                                self.bit_cnt_n.next = self.n7_0.val();
-                            } else {
-                                self.error.next = true; // form error in the delimiter
-                                self.form_err.next = true;
-                            }
-                        } else if self.bit_cnt.q.val() == self.n7_7.val() {
-                            self.field_n.next = Field::Intermission;
-                            self.bit_cnt_n.next = self.n7_0.val();
-                        } else {
-                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
-                        }
-                    }
-                    Field::OverloadDelim => {
-                        // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
-                        if self.bit_cnt.q.val() == self.n7_0.val() {
-                            self.delim_first.d.next = false;
-                            if self.sampled.val() {
-                                self.bit_cnt_n.next = self.n7_1.val();
-                            } else {
-                                // Rule f: every 8th consecutive dominant bit after the flag.
-                                self.dom_cnt.d.next = self.dom_cnt.q.val() + self.n3_1.val();
-                                if self.dom_cnt.q.val() == self.n3_7.val() {
-                                    if self.is_tx.q.val() {
-                                        self.ev_tec_add8.next = true;
-                                    } else {
-                                        self.ev_rec_add8.next = true;
-                                    }
-                                }
-                            }
-                        } else if !self.sampled.val() {
-                            if self.bit_cnt.q.val() == self.n7_7.val() {
-                                self.field_n.next = Field::OverloadFlag;
-                                self.bit_cnt_n.next = self.n7_0.val();
-                            } else {
-                                self.error.next = true; // form error in the delimiter
-                                self.form_err.next = true;
-                            }
-                        } else if self.bit_cnt.q.val() == self.n7_7.val() {
-                            self.field_n.next = Field::Intermission;
-                            self.bit_cnt_n.next = self.n7_0.val();
-                        } else {
-                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
-                        }
-                    }
                     Field::BusOff => {
                         // 12.1.4.4: 128 occurrences of 11 consecutive recessive bits.
                         if self.sampled.val() {
@@ -1088,6 +1033,47 @@ impl Logic for ProtocolController {
                         }
                     }
                     _ => {}
+                }
+                // Error and overload delimiters share one rule set; rule b only
+                // follows an error flag.
+                if self.in_delim.val() {
+                    // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
+                    if self.bit_cnt.q.val() == self.n7_0.val() {
+                        self.delim_first.d.next = false;
+                        if self.sampled.val() {
+                            self.bit_cnt_n.next = self.n7_1.val();
+                        } else {
+                            if self.delim_first.q.val()
+                                && self.after_error_flag.val()
+                                && !self.is_tx.q.val()
+                            {
+                                // Rule b: dominant first bit after its error flag.
+                                self.ev_rec_add8.next = true;
+                            }
+                            // Rule f: every 8th consecutive dominant bit after the flag.
+                            self.dom_cnt.d.next = self.dom_cnt.q.val() + self.n3_1.val();
+                            if self.dom_cnt.q.val() == self.n3_7.val() {
+                                if self.is_tx.q.val() {
+                                    self.ev_tec_add8.next = true;
+                                } else {
+                                    self.ev_rec_add8.next = true;
+                                }
+                            }
+                        }
+                    } else if !self.sampled.val() {
+                        if self.bit_cnt.q.val() == self.n7_7.val() {
+                            self.field_n.next = Field::OverloadFlag;
+                            self.bit_cnt_n.next = self.n7_0.val();
+                        } else {
+                            self.error.next = true; // form error in the delimiter
+                            self.form_err.next = true;
+                        }
+                    } else if self.bit_cnt.q.val() == self.n7_7.val() {
+                        self.field_n.next = Field::Intermission;
+                        self.bit_cnt_n.next = self.n7_0.val();
+                    } else {
+                        self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                    }
                 }
             }
 

@@ -7,6 +7,7 @@
 //! `rx` in cycle n with the wired-AND of every node's `tx` returned by step n-1.
 //! See `crate::model` for the clock-level timing contract.
 
+pub mod drcc;
 pub mod model;
 pub mod rusthdl;
 pub mod verilator;

@@ -30,10 +30,16 @@ struct Top {
 }
 
 /// Every top this crate wraps. All of them are built, or none (see module docs).
-const TOPS: &[Top] = &[Top {
-    name: "can_channel",
-    file: "can_channel.v",
-}];
+const TOPS: &[Top] = &[
+    Top {
+        name: "can_channel",
+        file: "can_channel.v",
+    },
+    Top {
+        name: "drcc",
+        file: "drcc.v",
+    },
+];
 
 /// Message when no usable Verilator is found (kept equal to `UNAVAILABLE_MSG` in lib.rs).
 const UNAVAILABLE_MSG: &str = "Verilator not found: install it with `apt-get install verilator`";

@@ -38,7 +38,8 @@ pub const UNAVAILABLE_MSG: &str =
     "Verilator not found: install it with `apt-get install verilator`";
 
 /// Error message when the Verilog of the `can_channel` top has not been generated.
-pub const RTL_MISSING_MSG: &str = "rtl-out/can_channel.v missing: run `cargo run -- generate`";
+pub const RTL_MISSING_MSG: &str =
+    "an RTL top in rtl-out/ (can_channel.v, drcc.v) is missing: run `cargo run -- generate`";
 
 /// Why this build has no Verilated model (set by build.rs; empty when it has one).
 const BUILD_REASON: &str = env!("DRCC_VERILATOR_UNAVAILABLE");
@@ -267,6 +268,100 @@ port_struct! {
     }
 }
 
+port_struct! {
+    /// Every input of `drcc` except `clk` (mirror of `DrccIn` in `shim/drcc_ports.h`).
+    pub struct DrccIn {
+        /// Synchronous active-high reset.
+        rst: u8 = 1,
+        /// Wishbone cycle.
+        wb_cyc_i: u8 = 1,
+        /// Wishbone strobe.
+        wb_stb_i: u8 = 1,
+        /// Wishbone write enable.
+        wb_we_i: u8 = 1,
+        /// Wishbone word address.
+        wb_adr_i: u8 = 6,
+        /// Wishbone write data.
+        wb_dat_i: u32 = 32,
+        /// Channel A receive pin (1 = recessive).
+        chan_a_rx: u8 = 1,
+        /// Channel B receive pin.
+        chan_b_rx: u8 = 1,
+    }
+}
+
+port_struct! {
+    /// Every output of `drcc` right after a rising edge (mirror of `DrccOut` in `shim/drcc_ports.h`).
+    pub struct DrccOut {
+        /// Wishbone read data.
+        wb_dat_o: u32 = 32,
+        /// Wishbone acknowledge.
+        wb_ack_o: u8 = 1,
+        /// Interrupt request.
+        irq: u8 = 1,
+        /// Channel A transmit pin.
+        chan_a_tx: u8 = 1,
+        /// Channel B transmit pin.
+        chan_b_tx: u8 = 1,
+        /// Main FSM state (Table 1 encoding).
+        state: u8 = 4,
+        /// Current channel: 0 = A, 1 = B.
+        tx_channel: u8 = 1,
+        /// Pulse: a channel acknowledged a transmission.
+        transmission_ack: u8 = 1,
+        /// Channel A transmit request.
+        chan_a_transmission_req: u8 = 1,
+        /// Channel B transmit request.
+        chan_b_transmission_req: u8 = 1,
+        /// Pulse: message done.
+        tx_success: u8 = 1,
+        /// Channel(s) that delivered the last message.
+        tx_ok_channel: u8 = 2,
+        /// Pulse: a channel failed the message.
+        tx_failure: u8 = 1,
+        /// Latched failed channel(s).
+        tx_failure_channel: u8 = 2,
+        /// A transmission is in progress.
+        tx_going_on: u8 = 1,
+        /// Channel A TEC.
+        chan_a_bsp_tx_err_cnt: u16 = 9,
+        /// Channel A not error active.
+        chan_a_bsp_node_error_passive: u8 = 1,
+        /// Channel B TEC.
+        chan_b_bsp_tx_err_cnt: u16 = 9,
+        /// Channel B not error active.
+        chan_b_bsp_node_error_passive: u8 = 1,
+        /// Aux FSM A state.
+        aux_a_state: u8 = 2,
+        /// Aux FSM B state.
+        aux_b_state: u8 = 2,
+        /// Channel A sample point pulse.
+        chan_a_sample_point: u8 = 1,
+        /// Channel B sample point pulse.
+        chan_b_sample_point: u8 = 1,
+        /// Channel A field code.
+        chan_a_field: u8 = 5,
+        /// Channel B field code.
+        chan_b_field: u8 = 5,
+        /// Channel A REC.
+        chan_a_rec: u8 = 8,
+        /// Channel B REC.
+        chan_b_rec: u8 = 8,
+        /// Channel A error state.
+        chan_a_err_state: u8 = 2,
+        /// Channel B error state.
+        chan_b_err_state: u8 = 2,
+    }
+}
+
+/// The layout fingerprint the C side must report (`drcc_drcc_abi`).
+pub fn drcc_abi() -> u64 {
+    let mut h = LayoutHash::new();
+    DrccIn::layout_hash(&mut h);
+    DrccOut::layout_hash(&mut h);
+    h.0
+}
+
 /// The layout fingerprint the C side must report (`drcc_can_channel_abi`).
 pub fn can_channel_abi() -> u64 {
     let mut h = LayoutHash::new();
@@ -275,145 +370,218 @@ pub fn can_channel_abi() -> u64 {
     h.0
 }
 
-/// The raw C ABI of `shim/can_channel_shim.cpp` (declared in `shim/can_channel_ports.h`).
-#[cfg(drcc_verilator)]
-pub mod ffi {
-    use super::{CanChannelIn, CanChannelOut};
-    use std::ffi::{c_char, c_int, c_void};
-
-    extern "C" {
-        /// Layout fingerprint of the C structs.
-        pub fn drcc_can_channel_abi() -> u64;
-        /// New instance (own `VerilatedContext`), or null.
-        pub fn drcc_can_channel_new() -> *mut c_void;
-        /// Frees an instance (closing its trace); null is ignored.
-        pub fn drcc_can_channel_free(handle: *mut c_void);
-        /// Applies `*input`, makes one rising edge of `clk`, writes `*output`.
-        pub fn drcc_can_channel_step(
-            handle: *mut c_void,
-            input: *const CanChannelIn,
-            output: *mut CanChannelOut,
-        );
-        /// 1 if steps can make one eval instead of two.
-        pub fn drcc_can_channel_fast_edge() -> c_int;
-        /// `exact != 0`: always two evals per step.
-        pub fn drcc_can_channel_set_exact(handle: *mut c_void, exact: c_int);
-        /// Opens a VCD file: 0, or `-errno`.
-        pub fn drcc_can_channel_trace_open(handle: *mut c_void, path: *const c_char) -> c_int;
-        /// Dumps the current values at `time` (half clock periods) if a trace is open.
-        pub fn drcc_can_channel_trace_dump(handle: *mut c_void, time: u64);
-        /// Flushes and closes the trace, if open.
-        pub fn drcc_can_channel_trace_close(handle: *mut c_void);
-    }
-}
-
-/// One Verilated `can_channel` instance with its own `VerilatedContext`.
-pub struct CanChannel {
-    #[cfg(drcc_verilator)]
-    raw: std::ptr::NonNull<std::ffi::c_void>,
-    #[cfg(not(drcc_verilator))]
-    never: std::convert::Infallible,
-}
-
-// SAFETY: an instance owns its context, model and trace; nothing in it is tied to
-// the creating thread (the shim clears Verilator's thread-current context after
-// construction). `&mut self` on every call rules out concurrent use.
-unsafe impl Send for CanChannel {}
-
-impl fmt::Debug for CanChannel {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("CanChannel").finish_non_exhaustive()
-    }
-}
-
-#[cfg(drcc_verilator)]
-impl CanChannel {
-    /// A new instance; registers are as `--x-initial fast` leaves them until the
-    /// first step with `rst = 1`.
-    ///
-    /// # Panics
-    /// If the C and Rust port layouts differ (a build inconsistency, see the crate docs).
-    pub fn new() -> Result<Self, VerilatorUnavailable> {
-        // SAFETY: plain function without arguments.
-        let c_abi = unsafe { ffi::drcc_can_channel_abi() };
-        assert_eq!(
-            c_abi,
-            can_channel_abi(),
-            "verilator-sys: CanChannelIn/CanChannelOut in src/lib.rs do not match \
-             shim/can_channel_ports.h (same fields, order, types and widths needed)"
-        );
-        // SAFETY: returns an owned instance or null.
-        let raw = unsafe { ffi::drcc_can_channel_new() };
-        let raw = std::ptr::NonNull::new(raw).expect("drcc_can_channel_new: out of memory");
-        Ok(CanChannel { raw })
-    }
-
-    /// Applies `input`, makes one rising edge of `clk` and writes the outputs after it.
-    #[inline]
-    pub fn step_into(&mut self, input: &CanChannelIn, output: &mut CanChannelOut) {
-        // SAFETY: `raw` is a live instance; the structs are #[repr(C)] mirrors of
-        // the C ones (checked in new()).
-        unsafe { ffi::drcc_can_channel_step(self.raw.as_ptr(), input, output) }
-    }
-
-    /// Applies `input`, makes one rising edge of `clk` and returns the outputs after it.
-    #[inline]
-    pub fn step(&mut self, input: &CanChannelIn) -> CanChannelOut {
-        let mut out = CanChannelOut::default();
-        self.step_into(input, &mut out);
-        out
-    }
-
-    /// Whether steps without a trace make one eval instead of two (see the crate docs).
-    pub fn fast_edge() -> bool {
-        // SAFETY: plain function without arguments.
-        unsafe { ffi::drcc_can_channel_fast_edge() != 0 }
-    }
-
-    /// `true`: always evaluate `clk = 0` and then `clk = 1` (as while tracing);
-    /// `false` (the default): use the single-eval edge when [`CanChannel::fast_edge`].
-    pub fn set_exact(&mut self, exact: bool) {
-        // SAFETY: `raw` is live.
-        unsafe { ffi::drcc_can_channel_set_exact(self.raw.as_ptr(), exact as _) }
-    }
-
-    /// Starts a VCD trace of every signal (closing an open one first). Times are
-    /// in half clock periods (see the crate docs).
-    pub fn trace_open(&mut self, path: impl AsRef<std::path::Path>) -> std::io::Result<()> {
-        let c = path_to_cstring(path.as_ref())?;
-        // SAFETY: `raw` is live; `c` outlives the call.
-        let rc = unsafe { ffi::drcc_can_channel_trace_open(self.raw.as_ptr(), c.as_ptr()) };
-        if rc == 0 {
-            Ok(())
-        } else {
-            let err = std::io::Error::from_raw_os_error(-rc);
-            Err(std::io::Error::new(
-                err.kind(),
-                format!("cannot open VCD file {}: {err}", path.as_ref().display()),
-            ))
+/// Declares the raw FFI module and the safe wrapper of one Verilated top. The C side
+/// is `shim/<top>_shim.cpp`, built from the port table `shim/<top>_ports.h`.
+macro_rules! verilated_top {
+    (
+        $(#[$meta:meta])*
+        wrapper $name:ident, ports $in:ident / $out:ident, abi $abi:ident, ffi $ffi:ident {
+            $abi_c:ident, $new_c:ident, $free_c:ident, $step_c:ident, $fast_c:ident,
+            $exact_c:ident, $topen_c:ident, $tdump_c:ident, $tclose_c:ident $(,)?
         }
-    }
+    ) => {
+/// The raw C ABI of shim of one top (declared in `shim/<top>_ports.h`).
+        #[cfg(drcc_verilator)]
+        pub mod $ffi {
+            use super::{$in, $out};
+            use std::ffi::{c_char, c_int, c_void};
 
-    /// Dumps the current signal values at `time` (half clock periods) if a trace is
-    /// open. `step` already dumps both phases; this is for extra samples. Times must
-    /// not go backwards.
-    pub fn trace_dump(&mut self, time: u64) {
-        // SAFETY: `raw` is live.
-        unsafe { ffi::drcc_can_channel_trace_dump(self.raw.as_ptr(), time) }
-    }
+            extern "C" {
+                /// Layout fingerprint of the C structs.
+                pub fn $abi_c() -> u64;
+                /// New instance (own `VerilatedContext`), or null.
+                pub fn $new_c() -> *mut c_void;
+                /// Frees an instance (closing its trace); null is ignored.
+                pub fn $free_c(handle: *mut c_void);
+                /// Applies `*input`, makes one rising edge of `clk`, writes `*output`.
+                pub fn $step_c(
+                    handle: *mut c_void,
+                    input: *const $in,
+                    output: *mut $out,
+                );
+                /// 1 if steps can make one eval instead of two.
+                pub fn $fast_c() -> c_int;
+                /// `exact != 0`: always two evals per step.
+                pub fn $exact_c(handle: *mut c_void, exact: c_int);
+                /// Opens a VCD file: 0, or `-errno`.
+                pub fn $topen_c(handle: *mut c_void, path: *const c_char) -> c_int;
+                /// Dumps the current values at `time` (half clock periods) if a trace is open.
+                pub fn $tdump_c(handle: *mut c_void, time: u64);
+                /// Flushes and closes the trace, if open.
+                pub fn $tclose_c(handle: *mut c_void);
+            }
+        }
 
-    /// Flushes and closes the trace, if one is open.
-    pub fn trace_close(&mut self) {
-        // SAFETY: `raw` is live.
-        unsafe { ffi::drcc_can_channel_trace_close(self.raw.as_ptr()) }
+        /// One Verilated instance of the top with its own `VerilatedContext`.
+        $(#[$meta])*
+        pub struct $name {
+            #[cfg(drcc_verilator)]
+            raw: std::ptr::NonNull<std::ffi::c_void>,
+            #[cfg(not(drcc_verilator))]
+            never: std::convert::Infallible,
+        }
+
+        // SAFETY: an instance owns its context, model and trace; nothing in it is tied to
+        // the creating thread (the shim clears Verilator's thread-current context after
+        // construction). `&mut self` on every call rules out concurrent use.
+        unsafe impl Send for $name {}
+
+        impl fmt::Debug for $name {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.debug_struct(stringify!($name)).finish_non_exhaustive()
+            }
+        }
+
+        #[cfg(drcc_verilator)]
+        impl $name {
+            /// A new instance; registers are as `--x-initial fast` leaves them until the
+            /// first step with `rst = 1`.
+            ///
+            /// # Panics
+            /// If the C and Rust port layouts differ (a build inconsistency, see the crate docs).
+            pub fn new() -> Result<Self, VerilatorUnavailable> {
+                // SAFETY: plain function without arguments.
+                let c_abi = unsafe { $ffi::$abi_c() };
+                assert_eq!(
+                    c_abi,
+                    $abi(),
+                    "verilator-sys: $in/$out in src/lib.rs do not match \
+                     the shim's port table (same fields, order, types and widths needed)"
+                );
+                // SAFETY: returns an owned instance or null.
+                let raw = unsafe { $ffi::$new_c() };
+                let raw = std::ptr::NonNull::new(raw).expect(concat!(stringify!($new_c), ": out of memory"));
+                Ok($name { raw })
+            }
+
+            /// Applies `input`, makes one rising edge of `clk` and writes the outputs after it.
+            #[inline]
+            pub fn step_into(&mut self, input: &$in, output: &mut $out) {
+                // SAFETY: `raw` is a live instance; the structs are #[repr(C)] mirrors of
+                // the C ones (checked in new()).
+                unsafe { $ffi::$step_c(self.raw.as_ptr(), input, output) }
+            }
+
+            /// Applies `input`, makes one rising edge of `clk` and returns the outputs after it.
+            #[inline]
+            pub fn step(&mut self, input: &$in) -> $out {
+                let mut out = $out::default();
+                self.step_into(input, &mut out);
+                out
+            }
+
+            /// Whether steps without a trace make one eval instead of two (see the crate docs).
+            pub fn fast_edge() -> bool {
+                // SAFETY: plain function without arguments.
+                unsafe { $ffi::$fast_c() != 0 }
+            }
+
+            /// `true`: always evaluate `clk = 0` and then `clk = 1` (as while tracing);
+            /// `false` (the default): use the single-eval edge when [`$name::fast_edge`].
+            pub fn set_exact(&mut self, exact: bool) {
+                // SAFETY: `raw` is live.
+                unsafe { $ffi::$exact_c(self.raw.as_ptr(), exact as _) }
+            }
+
+            /// Starts a VCD trace of every signal (closing an open one first). Times are
+            /// in half clock periods (see the crate docs).
+            pub fn trace_open(&mut self, path: impl AsRef<std::path::Path>) -> std::io::Result<()> {
+                let c = path_to_cstring(path.as_ref())?;
+                // SAFETY: `raw` is live; `c` outlives the call.
+                let rc = unsafe { $ffi::$topen_c(self.raw.as_ptr(), c.as_ptr()) };
+                if rc == 0 {
+                    Ok(())
+                } else {
+                    let err = std::io::Error::from_raw_os_error(-rc);
+                    Err(std::io::Error::new(
+                        err.kind(),
+                        format!("cannot open VCD file {}: {err}", path.as_ref().display()),
+                    ))
+                }
+            }
+
+            /// Dumps the current signal values at `time` (half clock periods) if a trace is
+            /// open. `step` already dumps both phases; this is for extra samples. Times must
+            /// not go backwards.
+            pub fn trace_dump(&mut self, time: u64) {
+                // SAFETY: `raw` is live.
+                unsafe { $ffi::$tdump_c(self.raw.as_ptr(), time) }
+            }
+
+            /// Flushes and closes the trace, if one is open.
+            pub fn trace_close(&mut self) {
+                // SAFETY: `raw` is live.
+                unsafe { $ffi::$tclose_c(self.raw.as_ptr()) }
+            }
+        }
+
+        #[cfg(drcc_verilator)]
+        impl Drop for $name {
+            fn drop(&mut self) {
+                // SAFETY: `raw` came from $new_c and is freed once.
+                unsafe { $ffi::$free_c(self.raw.as_ptr()) }
+            }
+        }
+
+        #[cfg(not(drcc_verilator))]
+        impl $name {
+            /// Always fails in this build: see [`unavailable_reason`].
+            pub fn new() -> Result<Self, VerilatorUnavailable> {
+                Err(VerilatorUnavailable::new())
+            }
+
+            /// Unreachable: no instance exists in this build.
+            pub fn step_into(&mut self, _input: &$in, _output: &mut $out) {
+                match self.never {}
+            }
+
+            /// Unreachable: no instance exists in this build.
+            pub fn step(&mut self, _input: &$in) -> $out {
+                match self.never {}
+            }
+
+            /// No model, no fast edge.
+            pub fn fast_edge() -> bool {
+                false
+            }
+
+            /// Unreachable: no instance exists in this build.
+            pub fn set_exact(&mut self, _exact: bool) {
+                match self.never {}
+            }
+
+            /// Unreachable: no instance exists in this build.
+            pub fn trace_open(&mut self, _path: impl AsRef<std::path::Path>) -> std::io::Result<()> {
+                match self.never {}
+            }
+
+            /// Unreachable: no instance exists in this build.
+            pub fn trace_dump(&mut self, _time: u64) {
+                match self.never {}
+            }
+
+            /// Unreachable: no instance exists in this build.
+            pub fn trace_close(&mut self) {
+                match self.never {}
+            }
+        }
+    };
+}
+
+verilated_top! {
+    /// The `can_channel` top.
+    wrapper CanChannel, ports CanChannelIn / CanChannelOut, abi can_channel_abi, ffi ffi {
+        drcc_can_channel_abi, drcc_can_channel_new, drcc_can_channel_free,
+        drcc_can_channel_step, drcc_can_channel_fast_edge, drcc_can_channel_set_exact,
+        drcc_can_channel_trace_open, drcc_can_channel_trace_dump, drcc_can_channel_trace_close,
     }
 }
 
-#[cfg(drcc_verilator)]
-impl Drop for CanChannel {
-    fn drop(&mut self) {
-        // SAFETY: `raw` came from drcc_can_channel_new and is freed once.
-        unsafe { ffi::drcc_can_channel_free(self.raw.as_ptr()) }
+verilated_top! {
+    /// The `drcc` top (two channels, redundancy management, RAMs, Wishbone).
+    wrapper Drcc, ports DrccIn / DrccOut, abi drcc_abi, ffi drcc_ffi {
+        drcc_drcc_abi, drcc_drcc_new, drcc_drcc_free, drcc_drcc_step, drcc_drcc_fast_edge,
+        drcc_drcc_set_exact, drcc_drcc_trace_open, drcc_drcc_trace_dump, drcc_drcc_trace_close,
     }
 }
 
@@ -432,49 +600,6 @@ fn path_to_cstring(path: &std::path::Path) -> std::io::Result<std::ffi::CString>
             format!("VCD path contains a NUL byte: {}", path.display()),
         )
     })
-}
-
-#[cfg(not(drcc_verilator))]
-impl CanChannel {
-    /// Always fails in this build: see [`unavailable_reason`].
-    pub fn new() -> Result<Self, VerilatorUnavailable> {
-        Err(VerilatorUnavailable::new())
-    }
-
-    /// Unreachable: no instance exists in this build.
-    pub fn step_into(&mut self, _input: &CanChannelIn, _output: &mut CanChannelOut) {
-        match self.never {}
-    }
-
-    /// Unreachable: no instance exists in this build.
-    pub fn step(&mut self, _input: &CanChannelIn) -> CanChannelOut {
-        match self.never {}
-    }
-
-    /// No model, no fast edge.
-    pub fn fast_edge() -> bool {
-        false
-    }
-
-    /// Unreachable: no instance exists in this build.
-    pub fn set_exact(&mut self, _exact: bool) {
-        match self.never {}
-    }
-
-    /// Unreachable: no instance exists in this build.
-    pub fn trace_open(&mut self, _path: impl AsRef<std::path::Path>) -> std::io::Result<()> {
-        match self.never {}
-    }
-
-    /// Unreachable: no instance exists in this build.
-    pub fn trace_dump(&mut self, _time: u64) {
-        match self.never {}
-    }
-
-    /// Unreachable: no instance exists in this build.
-    pub fn trace_close(&mut self) {
-        match self.never {}
-    }
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 
 pub mod bus;
 pub mod cosim;
+pub mod dual;
 pub mod engine;
 pub mod frame;
 pub mod model;

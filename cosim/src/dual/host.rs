@@ -1,0 +1,463 @@
+//! The host side of one DRCC node: a Wishbone B4 classic master that runs a small
+//! driver program, the way firmware on a soft CPU would:
+//!
+//! 1. configuration: `CTRL` (reset mode + configuration), `BTR`, `RMB_CFG`,
+//!    `DEDUP_CFG`, `INT_ENABLE`, then `CTRL` with reset mode cleared;
+//! 2. forever: when a submitted frame is due, read `STATUS` and, if its TX queue has
+//!    room, write `TX_ID`, `TX_CTRL`, `TX_DATA0/1` and `TX_CMD.push`; otherwise poll
+//!    `RX_ID` and, when the FIFO is not empty, read the frame and pop it; explicit
+//!    register reads asked for by a test go first.
+//!
+//! The driver only reacts to the DUT's outputs of the previous clock, so two engines
+//! that agree clock by clock get identical stimulus. Register indices and fields are
+//! the DRCC contract's (`crate::model::drcc_contract.md` §3), written here again on
+//! purpose: the host side is part of the testbench, not of either design.
+
+use crate::engine::drcc::{DrccInputs, DrccOutputs};
+use crate::frame::Frame;
+use std::collections::VecDeque;
+
+/// Word indices of the DRCC registers (contract §3).
+pub mod reg {
+    pub const ID: u8 = 0;
+    pub const CTRL: u8 = 1;
+    pub const BTR: u8 = 2;
+    pub const RMB_CFG: u8 = 3;
+    pub const DEDUP_CFG: u8 = 4;
+    pub const STATUS: u8 = 5;
+    pub const INT_STATUS: u8 = 6;
+    pub const INT_ENABLE: u8 = 7;
+    pub const CHAN_A_ERR: u8 = 8;
+    pub const CHAN_B_ERR: u8 = 9;
+    pub const AUX_A: u8 = 10;
+    pub const AUX_B: u8 = 11;
+    pub const TX_ID: u8 = 12;
+    pub const TX_CTRL: u8 = 13;
+    pub const TX_DATA0: u8 = 14;
+    pub const TX_DATA1: u8 = 15;
+    pub const TX_CMD: u8 = 16;
+    pub const RX_ID: u8 = 17;
+    pub const RX_CTRL: u8 = 18;
+    pub const RX_DATA0: u8 = 19;
+    pub const RX_DATA1: u8 = 20;
+    pub const RX_CMD: u8 = 21;
+    pub const STATS0: u8 = 22;
+    pub const STATS1: u8 = 23;
+    pub const TIMES: u8 = 24;
+}
+
+/// Transmit policy of redundancy mode (`CTRL.policy`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Policy {
+    /// Never switch (channel A only).
+    None,
+    /// The paper's policy: switch when the channel is error passive.
+    ErrorPassive,
+    /// Switch after `k` failed attempts (1..=15).
+    KFailed(u8),
+}
+
+/// What the host writes at start-up.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HostConfig {
+    /// `BTR` register value.
+    pub btr: u32,
+    /// Redundancy mode (else normal mode).
+    pub redundancy: bool,
+    /// Redundancy policy.
+    pub policy: Policy,
+    /// Send every message on both channels (`CTRL.dual_tx`).
+    pub dual_tx: bool,
+    /// Channel modes (contract §C.7 codes) of A and B.
+    pub mode_a: u8,
+    pub mode_b: u8,
+    /// Error-free bit times before a failed channel is used again.
+    pub recovery_bits: u16,
+    /// Stall limit in bit times (0 = off).
+    pub stall_limit: u16,
+    /// Duplicate window in bit times (0 = off, at most 32767).
+    pub dedup_window: u16,
+    /// `INT_ENABLE`.
+    pub int_enable: u32,
+}
+
+impl Default for HostConfig {
+    fn default() -> Self {
+        HostConfig {
+            // brp 0, TSEG1 5, TSEG2 2, SJW 1 (minus-one fields), EWL 96.
+            btr: btr(0, 5, 2, 1, false, 96),
+            redundancy: true,
+            policy: Policy::ErrorPassive,
+            dual_tx: false,
+            mode_a: 0,
+            mode_b: 0,
+            recovery_bits: 1024,
+            stall_limit: 0,
+            dedup_window: 1024,
+            int_enable: 0xFF,
+        }
+    }
+}
+
+/// `BTR` value for the given timing in time quanta (tseg1 1..=16, tseg2 1..=8, sjw 1..=4).
+pub fn btr(brp: u8, tseg1: u8, tseg2: u8, sjw: u8, triple: bool, ewl: u8) -> u32 {
+    (brp as u32 & 0x3F)
+        | ((tseg1.saturating_sub(1) as u32 & 0xF) << 6)
+        | ((tseg2.saturating_sub(1) as u32 & 0x7) << 10)
+        | ((sjw.saturating_sub(1) as u32 & 0x3) << 13)
+        | ((triple as u32) << 15)
+        | ((ewl as u32) << 16)
+}
+
+impl HostConfig {
+    /// `CTRL` value with the given reset-mode bit.
+    pub fn ctrl(&self, reset_mode: bool) -> u32 {
+        let (policy, k) = match self.policy {
+            Policy::None => (0, 1),
+            Policy::ErrorPassive => (1, 1),
+            Policy::KFailed(k) => (2, k as u32),
+        };
+        (reset_mode as u32)
+            | ((self.redundancy as u32) << 1)
+            | (policy << 2)
+            | ((self.dual_tx as u32) << 4)
+            | ((k & 0xF) << 8)
+            | ((self.mode_a as u32 & 3) << 12)
+            | ((self.mode_b as u32 & 3) << 14)
+    }
+}
+
+/// A frame the host read from the RX FIFO.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HostRx {
+    /// Clock at which the pop was acknowledged.
+    pub cycle: u64,
+    pub frame: Frame,
+    /// Channel the frame came from (0 = A, 1 = B).
+    pub channel: u8,
+}
+
+/// A frame the host handed to the DRCC.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HostTx {
+    /// Clock at which the push was acknowledged.
+    pub cycle: u64,
+    pub frame: Frame,
+    /// Queue (normal mode: 0 = A, 1 = B).
+    pub queue: u8,
+}
+
+/// A register read asked for by a test, and its result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HostRead {
+    pub cycle: u64,
+    pub reg: u8,
+    pub value: u32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Purpose {
+    Config,
+    Write,
+    TxSpace,
+    TxWrite,
+    TxPush,
+    RxId,
+    RxCtrl,
+    RxData0,
+    RxData1,
+    RxPop,
+    Explicit,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Op {
+    write: bool,
+    reg: u8,
+    value: u32,
+    purpose: Purpose,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Submission {
+    due: u64,
+    frame: Frame,
+    queue: u8,
+}
+
+/// One node's host: configuration, transmit submissions, RX FIFO draining.
+#[derive(Clone, Debug)]
+pub struct HostDriver {
+    config: HostConfig,
+    ops: VecDeque<Op>,
+    current: Option<Op>,
+    submissions: VecDeque<Submission>,
+    explicit: VecDeque<(u8, Option<u32>)>,
+    rx_partial: (Frame, u8),
+    pushing: Option<Submission>,
+    /// Frames pushed, frames popped, explicit reads.
+    pub sent: Vec<HostTx>,
+    pub received: Vec<HostRx>,
+    pub reads: Vec<HostRead>,
+    configured: bool,
+}
+
+impl HostDriver {
+    /// A driver that will configure the DRCC with `config` after reset.
+    pub fn new(config: HostConfig) -> Self {
+        let mut d = HostDriver {
+            config,
+            ops: VecDeque::new(),
+            current: None,
+            submissions: VecDeque::new(),
+            explicit: VecDeque::new(),
+            rx_partial: (Frame::default(), 0),
+            pushing: None,
+            sent: Vec::new(),
+            received: Vec::new(),
+            reads: Vec::new(),
+            configured: false,
+        };
+        let c = config;
+        for (reg, value) in [
+            (reg::CTRL, c.ctrl(true)),
+            (reg::BTR, c.btr),
+            (
+                reg::RMB_CFG,
+                c.recovery_bits as u32 | ((c.stall_limit as u32) << 16),
+            ),
+            (reg::DEDUP_CFG, c.dedup_window as u32 & 0x7FFF),
+            (reg::INT_ENABLE, c.int_enable),
+            (reg::CTRL, c.ctrl(false)),
+        ] {
+            d.ops.push_back(Op {
+                write: true,
+                reg,
+                value,
+                purpose: Purpose::Config,
+            });
+        }
+        d
+    }
+
+    /// The configuration written at start-up.
+    pub fn config(&self) -> &HostConfig {
+        &self.config
+    }
+
+    /// Queues `frame` for transmission once the clock reaches `due` (queue 0 = A,
+    /// 1 = B; redundancy mode ignores the queue).
+    pub fn submit(&mut self, due: u64, frame: Frame, queue: u8) {
+        let pos = self
+            .submissions
+            .iter()
+            .position(|s| s.due > due)
+            .unwrap_or(self.submissions.len());
+        self.submissions.insert(
+            pos,
+            Submission {
+                due,
+                frame,
+                queue: queue & 1,
+            },
+        );
+    }
+
+    /// Asks for one register read (result in [`HostDriver::reads`]).
+    pub fn read(&mut self, reg: u8) {
+        self.explicit.push_back((reg, None));
+    }
+
+    /// Asks for one register write (done before any further reads or pushes).
+    pub fn write(&mut self, reg: u8, value: u32) {
+        self.explicit.push_back((reg, Some(value)));
+    }
+
+    /// Frames submitted but not yet pushed into the DRCC.
+    pub fn backlog(&self) -> usize {
+        self.submissions.len() + self.pushing.is_some() as usize
+    }
+
+    /// Whether the start-up configuration has been written.
+    pub fn configured(&self) -> bool {
+        self.configured
+    }
+
+    /// Whether nothing is left to do except polling.
+    pub fn is_idle(&self) -> bool {
+        self.configured
+            && self.submissions.is_empty()
+            && self.pushing.is_none()
+            && self.explicit.is_empty()
+            && self.ops.is_empty()
+    }
+
+    /// Wishbone inputs for clock `cycle`, given the DUT outputs of the previous clock
+    /// (`prev`), and bookkeeping of the transaction those outputs acknowledged.
+    pub fn drive(&mut self, cycle: u64, prev: &DrccOutputs, rst: bool, inputs: &mut DrccInputs) {
+        inputs.wb_cyc = false;
+        inputs.wb_stb = false;
+        inputs.wb_we = false;
+        inputs.wb_adr = 0;
+        inputs.wb_dat_w = 0;
+        if rst {
+            return;
+        }
+        if let Some(op) = self.current {
+            if prev.wb_ack {
+                self.current = None;
+                self.complete(cycle, op, prev.wb_dat_r);
+            }
+        }
+        if self.current.is_none() {
+            self.current = self.next_op(cycle);
+        }
+        if let Some(op) = self.current {
+            inputs.wb_cyc = true;
+            inputs.wb_stb = true;
+            inputs.wb_we = op.write;
+            inputs.wb_adr = op.reg;
+            inputs.wb_dat_w = op.value;
+        }
+    }
+
+    fn next_op(&mut self, cycle: u64) -> Option<Op> {
+        if let Some(op) = self.ops.pop_front() {
+            return Some(op);
+        }
+        self.configured = true;
+        if let Some((reg, value)) = self.explicit.pop_front() {
+            return Some(Op {
+                write: value.is_some(),
+                reg,
+                value: value.unwrap_or(0),
+                purpose: if value.is_some() {
+                    Purpose::Write
+                } else {
+                    Purpose::Explicit
+                },
+            });
+        }
+        if self.pushing.is_none() && self.submissions.front().is_some_and(|s| s.due <= cycle) {
+            self.pushing = self.submissions.pop_front();
+        }
+        if self.pushing.is_some() {
+            return Some(Op {
+                write: false,
+                reg: reg::STATUS,
+                value: 0,
+                purpose: Purpose::TxSpace,
+            });
+        }
+        Some(Op {
+            write: false,
+            reg: reg::RX_ID,
+            value: 0,
+            purpose: Purpose::RxId,
+        })
+    }
+
+    fn complete(&mut self, cycle: u64, op: Op, data: u32) {
+        match op.purpose {
+            Purpose::Config | Purpose::Write | Purpose::TxWrite => {}
+            Purpose::Explicit => self.reads.push(HostRead {
+                cycle,
+                reg: op.reg,
+                value: data,
+            }),
+            Purpose::TxSpace => {
+                let Some(s) = self.pushing else { return };
+                let count = if s.queue == 0 || self.config.redundancy {
+                    (data >> 16) & 0xF
+                } else {
+                    (data >> 20) & 0xF
+                };
+                if count < 8 {
+                    let f = s.frame;
+                    let data_word = f.data_word();
+                    // Registers carry byte 0 in [7:0]; the frame keeps byte 0 first.
+                    let d0 = u32::from_le_bytes([f.data[0], f.data[1], f.data[2], f.data[3]]);
+                    let d1 = u32::from_le_bytes([f.data[4], f.data[5], f.data[6], f.data[7]]);
+                    debug_assert_eq!(data_word.to_be_bytes(), f.data);
+                    let id = (f.id & 0x1FFF_FFFF) | ((f.ide as u32) << 29) | ((f.rtr as u32) << 30);
+                    let ctrl = (f.dlc as u32 & 0xF) | ((s.queue as u32) << 8);
+                    for (reg, value) in [
+                        (reg::TX_ID, id),
+                        (reg::TX_CTRL, ctrl),
+                        (reg::TX_DATA0, d0),
+                        (reg::TX_DATA1, d1),
+                    ] {
+                        self.ops.push_back(Op {
+                            write: true,
+                            reg,
+                            value,
+                            purpose: Purpose::TxWrite,
+                        });
+                    }
+                    self.ops.push_back(Op {
+                        write: true,
+                        reg: reg::TX_CMD,
+                        value: 1,
+                        purpose: Purpose::TxPush,
+                    });
+                } else {
+                    // Queue full: drain the RX FIFO once, then ask again.
+                    self.ops.push_back(Op {
+                        write: false,
+                        reg: reg::RX_ID,
+                        value: 0,
+                        purpose: Purpose::RxId,
+                    });
+                }
+            }
+            Purpose::TxPush => {
+                if let Some(s) = self.pushing.take() {
+                    self.sent.push(HostTx {
+                        cycle,
+                        frame: s.frame,
+                        queue: s.queue,
+                    });
+                }
+            }
+            Purpose::RxId => {
+                if data >> 31 != 0 {
+                    self.rx_partial.0 = Frame {
+                        id: data & 0x1FFF_FFFF,
+                        ide: data >> 29 & 1 != 0,
+                        rtr: data >> 30 & 1 != 0,
+                        ..Frame::default()
+                    };
+                    for (reg, purpose) in [
+                        (reg::RX_CTRL, Purpose::RxCtrl),
+                        (reg::RX_DATA0, Purpose::RxData0),
+                        (reg::RX_DATA1, Purpose::RxData1),
+                    ] {
+                        self.ops.push_back(Op {
+                            write: false,
+                            reg,
+                            value: 0,
+                            purpose,
+                        });
+                    }
+                    self.ops.push_back(Op {
+                        write: true,
+                        reg: reg::RX_CMD,
+                        value: 1,
+                        purpose: Purpose::RxPop,
+                    });
+                }
+            }
+            Purpose::RxCtrl => {
+                self.rx_partial.0.dlc = (data & 0xF) as u8;
+                self.rx_partial.1 = (data >> 8 & 1) as u8;
+            }
+            Purpose::RxData0 => self.rx_partial.0.data[..4].copy_from_slice(&data.to_le_bytes()),
+            Purpose::RxData1 => self.rx_partial.0.data[4..].copy_from_slice(&data.to_le_bytes()),
+            Purpose::RxPop => self.received.push(HostRx {
+                cycle,
+                frame: self.rx_partial.0,
+                channel: self.rx_partial.1,
+            }),
+        }
+    }
+}

@@ -8,6 +8,7 @@
 //! See `crate::model` for the clock-level timing contract.
 
 pub mod drcc;
+pub mod drcc_model;
 pub mod drcc_verilator;
 pub mod model;
 pub mod rusthdl;

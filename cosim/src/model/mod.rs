@@ -15,6 +15,7 @@
 pub mod bsp;
 pub mod btl;
 pub mod crc;
+pub mod drcc;
 pub mod field;
 
 use crate::engine::{ChannelInputs, ChannelOutputs, Diagnostics, Mode, Probes};

@@ -1,0 +1,147 @@
+//! Auxiliary FSM of one channel ("channel validity", contract §5): the failure
+//! policies (error-passive, bus-off, k failed attempts, stall), the restart of a
+//! failed channel and its probation before it is trusted again.
+
+use super::regs::aux::*;
+use super::regs::ctrl::{POLICY_KFAIL, POLICY_NONE, POLICY_PASSIVE};
+
+/// What one aux FSM samples at an edge (pre-edge values).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct AuxInputs {
+    /// Redundancy mode and not reset mode.
+    pub running: bool,
+    pub policy: u32,
+    /// `k`, 1..15.
+    pub k: u8,
+    pub stall_limit: u16,
+    pub recovery_bits: u16,
+    pub tick: bool,
+    /// The main FSM is in one of this channel's states.
+    pub in_use: bool,
+    // The channel's registered outputs.
+    pub tx_pending: bool,
+    pub tx_done: bool,
+    pub err_valid: bool,
+    pub err_tx: bool,
+    pub err_state: u8,
+    pub sample_point: bool,
+}
+
+/// What the aux FSM did at an edge.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct AuxEvents {
+    /// INT_STATUS.aux (valid -> failed, probation -> valid).
+    pub int: bool,
+    /// probation -> valid (STATS1 recoveries).
+    pub recovered: bool,
+}
+
+/// One auxiliary FSM.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct AuxFsm {
+    pub state: u8,
+    /// Failed attempts since the last success, saturating at 15.
+    pub fail_cnt: u8,
+    pub stall_cnt: u16,
+    pub probe_cnt: u16,
+    /// Latched causes (CAUSE_* bits).
+    pub causes: u8,
+    // Cleared only by `rst`.
+    pub failures: u8,
+    pub recoveries: u8,
+}
+
+impl AuxFsm {
+    /// Channel `rst` contribution: the channel restarts while in `restart`.
+    pub fn restarting(&self) -> bool {
+        self.state == RESTART
+    }
+
+    /// AUX_x register value.
+    pub fn reg(&self) -> u32 {
+        self.state as u32
+            | (self.causes as u32) << 2
+            | (self.fail_cnt as u32) << 8
+            | (self.failures as u32) << 16
+            | (self.recoveries as u32) << 24
+    }
+
+    /// One rising edge.
+    pub fn edge(&mut self, i: &AuxInputs) -> AuxEvents {
+        let mut ev = AuxEvents::default();
+        if !i.running {
+            self.state = VALID;
+            self.fail_cnt = 0;
+            self.stall_cnt = 0;
+            self.probe_cnt = 0;
+            self.causes = 0;
+            return ev;
+        }
+        let c = *self;
+        let mut n = c;
+        n.fail_cnt = if i.tx_done {
+            0
+        } else if i.err_valid && i.err_tx {
+            (c.fail_cnt + 1).min(15)
+        } else {
+            c.fail_cnt
+        };
+        n.stall_cnt = if !i.tx_pending {
+            0
+        } else if i.tick {
+            c.stall_cnt.saturating_add(1)
+        } else {
+            c.stall_cnt
+        };
+        match c.state {
+            VALID => {
+                let mut causes = 0;
+                if i.policy == POLICY_PASSIVE && i.err_state != 0 {
+                    causes |= CAUSE_PASSIVE;
+                }
+                if i.policy != POLICY_NONE && i.err_state == 2 {
+                    causes |= CAUSE_BUSOFF;
+                }
+                if i.policy == POLICY_KFAIL && c.fail_cnt >= i.k {
+                    causes |= CAUSE_KFAIL;
+                }
+                if i.policy != POLICY_NONE && i.stall_limit != 0 && c.stall_cnt >= i.stall_limit {
+                    causes |= CAUSE_STALL;
+                }
+                if causes != 0 {
+                    n.state = FAILED;
+                    n.causes |= causes;
+                    n.failures = c.failures.saturating_add(1);
+                    ev.int = true;
+                }
+            }
+            FAILED => {
+                if !i.tx_pending && i.err_state != 2 && !i.in_use {
+                    n.state = RESTART;
+                    n.fail_cnt = 0;
+                }
+            }
+            RESTART => {
+                n.state = PROBATION;
+                n.probe_cnt = 0;
+            }
+            _ => {
+                if c.probe_cnt >= i.recovery_bits.max(1) {
+                    n.state = VALID;
+                    n.recoveries = c.recoveries.saturating_add(1);
+                    ev.recovered = true;
+                    ev.int = true;
+                }
+                n.probe_cnt = if i.err_valid {
+                    0
+                } else if i.sample_point {
+                    c.probe_cnt.saturating_add(1)
+                } else {
+                    c.probe_cnt
+                };
+            }
+        }
+        *self = n;
+        ev
+    }
+}

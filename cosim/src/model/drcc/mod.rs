@@ -1,0 +1,555 @@
+//! Reference model of the DRCC top (dual-redundancy CAN controller), written from
+//! its clock-level contract (`drcc_contract.md`, included below) and the DRCC paper
+//! (seed 003, Table 1 and section IV). Two [`ChannelModel`]s (the channel oracle) are
+//! paired under the redundancy manager: main FSM ([`main_fsm`]), one auxiliary FSM
+//! per channel ([`aux_fsm`]), the TX queues ([`tx_queues`]), the RX FIFO with
+//! duplicate removal ([`rx_path`]) and the Wishbone register file (this file, map in
+//! [`regs`]).
+//!
+//! Step order (a registered design): every next-state value is computed from the
+//! values before the edge. The channel outputs the DRCC logic sees at an edge are
+//! the channel output registers of the previous step; the channel inputs of this
+//! edge are derived from the DRCC registers before the edge; then everything is
+//! committed and the outputs are read from the registers after the edge.
+//!
+//! ## Interpretations (where the contract leaves a choice)
+//!
+//! 1. `tx_failure` is a one-clock pulse register like `transmission_ack` and
+//!    `tx_success`; `tx_ok_channel` / `tx_failure_channel` are the latched values.
+//! 2. wait4 row 2: `tx_failure` and `tx_failure_channel` are both set only with
+//!    `failed_b`. The copy "finish" there (dual_tx copy aborted on B) raises no
+//!    `transmission_ack`, hence no `tx_success` and no `INT_STATUS.tx_done` (finish_q
+//!    = `transmission_ack` set and popped at the same edge, literally §4.1).
+//! 3. Reset mode (and normal mode for the FSMs) is a synchronous clear judged on the
+//!    `reset_mode` register before the edge: queues, RX FIFO, writer FSM, history,
+//!    `rxp`, `now`, `hist_idle`, `tx_time`, tick counters are held cleared while it
+//!    is 1 (the clear takes effect at the first edge after `reset_mode` rises).
+//!    `INT_STATUS`, `INT_ENABLE`, `irq` and the staged TX registers are not cleared by
+//!    reset mode. Clearing `failover` in reset mode is not a switch event.
+//! 4. RAMs are read-first: a read port loaded at an edge where the same address is
+//!    written gets the old contents. RAM contents are never reset (power-up 0); the
+//!    read data registers keep loading at `rst` and reset-mode edges, and `RX_ID`,
+//!    `RX_CTRL`, `RX_DATA*` show the RX read data register even when the FIFO is
+//!    empty (only `RX_ID[31]`, `count != 0`, tells).
+//! 5. All full/empty decisions use the counts before the edge: a push to a full
+//!    queue is refused even if the same edge pops it; an RX write with `count == 32`
+//!    overruns even if the same edge pops; a pop is refused (illegal) iff the count
+//!    before the edge is 0 (also in reset mode, where the clear wins anyway).
+//! 6. `CTRL` outside reset mode: the written cfg fields are compared with the
+//!    current ones after the `k = 0 -> 1` clamp (writing k = 0 while k = 1 is not
+//!    illegal); reserved bits are ignored. `policy = 3` outside reset mode is such a
+//!    difference (illegal, `reset_mode` still taken).
+//! 7. A write to `TX_CMD` / `RX_CMD` with bit 0 clear does nothing (not illegal).
+//!    `TX_CMD` and `RX_CMD` read 0. Writes to `INT_STATUS` (W1C) and every RW
+//!    register are legal in any mode.
+//! 8. `rxp` set (a new `rx_valid`) and clear (the writer takes it) at the same edge:
+//!    set wins. `probe_cnt` clear (`err_valid`) and increment (`sample_point`) at the
+//!    same edge: clear wins. `fail_cnt`: entering restart clears, else `tx_done`
+//!    clears, else a failed attempt increments.
+//! 9. STATS1 recoveries add one per aux FSM recovering (two if both recover at the
+//!    same edge). `hist_idle` clears `hv` at every edge where it is 32767 before the
+//!    edge.
+//! 10. The TEC probe `chan_?_bsp_tx_err_cnt` and `CHAN_?_ERR[8:0]` are the channel
+//!     TEC masked to 9 bits. Unused main FSM encodings (10..15) go to idle1.
+//! 11. `tick` is not gated by reset mode (the counters are cleared there, so it
+//!     cannot fire after the first reset-mode edge; everything it drives is held
+//!     cleared in reset mode anyway).
+#![doc = include_str!("../drcc_contract.md")]
+
+pub mod aux_fsm;
+pub mod main_fsm;
+pub mod regs;
+pub mod rx_path;
+pub mod tx_queues;
+
+use crate::engine::drcc::{DrccInputs, DrccOutputs, DrccProbes};
+use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Mode};
+use crate::frame::Frame;
+use crate::model::ChannelModel;
+use aux_fsm::{AuxFsm, AuxInputs};
+use main_fsm::{FsmInputs, MainFsm};
+use regs::*;
+use rx_path::{RxInputs, RxPath};
+use tx_queues::{TxQueues, TxqInputs};
+
+/// The register file and the small top-level registers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Regs {
+    ctrl: u32,
+    btr: u32,
+    rmb: u32,
+    dedup: u32,
+    int_status: u32,
+    int_enable: u32,
+    irq: bool,
+    wb_ack: bool,
+    wb_dat: u32,
+    tx_id: u32,
+    tx_ctrl: u32,
+    tx_data: [u32; 2],
+    /// Nominal bit tick counters (§4.3).
+    tq_cnt: u8,
+    bit_cnt: u8,
+    /// Channel `err_state` one clock earlier (INT_STATUS.err_state).
+    err_q: [u8; 2],
+    /// STATS1[31:16].
+    recoveries: u16,
+}
+
+impl Regs {
+    fn reset() -> Self {
+        Regs {
+            ctrl: ctrl::RESET,
+            btr: btr::RESET,
+            rmb: rmb::RESET,
+            dedup: dedup::RESET,
+            int_status: 0,
+            int_enable: 0,
+            irq: false,
+            wb_ack: false,
+            wb_dat: 0,
+            tx_id: 0,
+            tx_ctrl: 0,
+            tx_data: [0; 2],
+            tq_cnt: 0,
+            bit_cnt: 0,
+            err_q: [0; 2],
+            recoveries: 0,
+        }
+    }
+    fn reset_mode(&self) -> bool {
+        self.ctrl & ctrl::RESET_MODE != 0
+    }
+    fn redundancy(&self) -> bool {
+        self.ctrl & ctrl::REDUNDANCY != 0
+    }
+    fn policy(&self) -> u32 {
+        (self.ctrl & ctrl::POLICY_MASK) >> ctrl::POLICY_SHIFT
+    }
+    fn dual_tx(&self) -> bool {
+        self.ctrl & ctrl::DUAL_TX != 0
+    }
+    fn k(&self) -> u8 {
+        ((self.ctrl & ctrl::K_MASK) >> ctrl::K_SHIFT) as u8
+    }
+    fn window(&self) -> u16 {
+        (self.dedup & dedup::WINDOW_MASK) as u16
+    }
+    fn brp(&self) -> u8 {
+        (self.btr & btr::BRP_MASK) as u8
+    }
+    /// `1 + (tseg1+1) + (tseg2+1)` from the fields as written.
+    fn tq_per_bit(&self) -> u8 {
+        (((self.btr >> btr::TSEG1_SHIFT) & 0xF) + ((self.btr >> btr::TSEG2_SHIFT) & 0x7) + 3) as u8
+    }
+    /// The frame staged in TX_ID..TX_DATA1.
+    fn staged(&self) -> Frame {
+        let mut data = [0u8; 8];
+        data[..4].copy_from_slice(&self.tx_data[0].to_le_bytes());
+        data[4..].copy_from_slice(&self.tx_data[1].to_le_bytes());
+        Frame {
+            id: self.tx_id & frame_id::ID_MASK,
+            ide: self.tx_id & frame_id::IDE != 0,
+            rtr: self.tx_id & frame_id::RTR != 0,
+            dlc: (self.tx_ctrl & frame_ctrl::DLC_MASK) as u8,
+            data,
+        }
+    }
+}
+
+/// `CTRL` write value with `k = 0` clamped to 1 (§9).
+fn clamp_k(w: u32) -> u32 {
+    if w & ctrl::K_MASK == 0 {
+        w | (1 << ctrl::K_SHIFT)
+    } else {
+        w
+    }
+}
+
+/// The DRCC top, simulated clock by clock.
+#[derive(Clone, Debug)]
+pub struct DrccModel {
+    chan: [ChannelModel; 2],
+    /// The channels' output registers after the last edge.
+    out: [ChannelOutputs; 2],
+    r: Regs,
+    fsm: MainFsm,
+    aux: [AuxFsm; 2],
+    txq: TxQueues,
+    rx: RxPath,
+}
+
+impl Default for DrccModel {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl DrccModel {
+    /// A DRCC in its reset state (reset mode, both channels held in reset).
+    pub fn new() -> Self {
+        let chan = [ChannelModel::new(), ChannelModel::new()];
+        let out = [chan[0].outputs(), chan[1].outputs()];
+        DrccModel {
+            chan,
+            out,
+            r: Regs::reset(),
+            fsm: MainFsm::default(),
+            aux: [AuxFsm::default(); 2],
+            txq: TxQueues::default(),
+            rx: RxPath::default(),
+        }
+    }
+
+    /// The inputs of channel `c` (0 = A) for this edge, from the registers before it.
+    fn chan_inputs(&self, c: usize, rst: bool, rx: bool) -> ChannelInputs {
+        let r = &self.r;
+        let b = r.btr;
+        ChannelInputs {
+            rst: rst || r.reset_mode() || self.aux[c].restarting(),
+            rx,
+            timing: BitTiming {
+                brp: r.brp(),
+                tseg1: ((b >> btr::TSEG1_SHIFT) & 0xF) as u8 + 1,
+                tseg2: ((b >> btr::TSEG2_SHIFT) & 0x7) as u8 + 1,
+                sjw: ((b >> btr::SJW_SHIFT) & 0x3) as u8 + 1,
+                triple_sampling: b & btr::TRIPLE != 0,
+            },
+            config: ControllerConfig {
+                mode: Mode::from_code(
+                    (r.ctrl
+                        >> if c == 0 {
+                            ctrl::MODE_A_SHIFT
+                        } else {
+                            ctrl::MODE_B_SHIFT
+                        }) as u8,
+                ),
+                ewl: (b >> btr::EWL_SHIFT) as u8,
+                single_shot: r.ctrl & ctrl::SINGLE_SHOT != 0 && !r.redundancy(),
+            },
+            tx_req: self.txq.req[c]
+                || if c == 0 {
+                    self.fsm.req_a
+                } else {
+                    self.fsm.req_b
+                },
+            tx_frame: self.txq.rd,
+            tx_abort: if c == 0 {
+                self.fsm.abort_a
+            } else {
+                self.fsm.abort_b
+            },
+        }
+    }
+
+    /// The value a Wishbone read of word `adr` returns (registers before the edge).
+    fn read_reg(&self, adr: u8) -> u32 {
+        let r = &self.r;
+        let chan_err = |o: &ChannelOutputs| {
+            (o.probes.tec as u32 & 0x1FF)
+                | (o.probes.rec as u32) << 16
+                | (o.probes.err_state as u32 & 3) << 24
+                | (o.diag.err_warning as u32) << 26
+        };
+        let (rx_frame, rx_ch) = self.rx.rd;
+        match adr {
+            idx::ID => ID_VALUE,
+            idx::CTRL => r.ctrl,
+            idx::BTR => r.btr,
+            idx::RMB_CFG => r.rmb,
+            idx::DEDUP_CFG => r.dedup,
+            idx::STATUS => {
+                self.fsm.state as u32
+                    | (self.fsm.tx_channel() as u32) << 4
+                    | (self.aux[0].state as u32) << 5
+                    | (self.aux[1].state as u32) << 7
+                    | (self.out[0].probes.err_state as u32 & 3) << 9
+                    | (self.out[1].probes.err_state as u32 & 3) << 11
+                    | (r.reset_mode() as u32) << 13
+                    | (self.fsm.tx_going_on() as u32) << 14
+                    | (self.txq.count[0] as u32) << 16
+                    | (self.txq.count[1] as u32) << 20
+                    | (self.rx.count as u32) << 24
+            }
+            idx::INT_STATUS => r.int_status,
+            idx::INT_ENABLE => r.int_enable,
+            idx::CHAN_A_ERR => chan_err(&self.out[0]),
+            idx::CHAN_B_ERR => chan_err(&self.out[1]),
+            idx::AUX_A => self.aux[0].reg(),
+            idx::AUX_B => self.aux[1].reg(),
+            idx::TX_ID => r.tx_id,
+            idx::TX_CTRL => r.tx_ctrl,
+            idx::TX_DATA0 => r.tx_data[0],
+            idx::TX_DATA1 => r.tx_data[1],
+            idx::RX_ID => {
+                (rx_frame.id & frame_id::ID_MASK)
+                    | if rx_frame.ide { frame_id::IDE } else { 0 }
+                    | if rx_frame.rtr { frame_id::RTR } else { 0 }
+                    | if self.rx.count != 0 {
+                        frame_id::NOT_EMPTY
+                    } else {
+                        0
+                    }
+            }
+            idx::RX_CTRL => (rx_frame.dlc as u32 & 0xF) | (rx_ch as u32 & 1) << 8,
+            idx::RX_DATA0 => u32::from_le_bytes(rx_frame.data[..4].try_into().unwrap()),
+            idx::RX_DATA1 => u32::from_le_bytes(rx_frame.data[4..].try_into().unwrap()),
+            idx::STATS0 => self.rx.duplicates as u32 | (self.rx.overruns as u32) << 16,
+            idx::STATS1 => self.fsm.switches as u32 | (r.recoveries as u32) << 16,
+            idx::TIMES => self.fsm.last_tx_time as u32 | (self.fsm.switch_time as u32) << 16,
+            // TX_CMD, RX_CMD (write only) and unmapped words.
+            _ => 0,
+        }
+    }
+
+    /// Apply `inputs` for one clock period, make one rising edge, return the outputs
+    /// right after it.
+    pub fn step(&mut self, i: &DrccInputs) -> DrccOutputs {
+        let ca = self.chan_inputs(0, i.rst, i.chan_a_rx);
+        let cb = self.chan_inputs(1, i.rst, i.chan_b_rx);
+        if i.rst {
+            let redundancy = self.r.redundancy();
+            self.r = Regs::reset();
+            self.fsm = MainFsm::default();
+            self.aux = [AuxFsm::default(); 2];
+            self.txq.reset(redundancy);
+            self.rx.reset();
+        } else {
+            self.edge(i);
+        }
+        self.out[0] = self.chan[0].step(&ca);
+        self.out[1] = self.chan[1].step(&cb);
+        self.outputs()
+    }
+
+    /// Every DRCC register at a non-reset edge (the channels are stepped after).
+    fn edge(&mut self, i: &DrccInputs) {
+        let r = self.r;
+        let [pa, pb] = &self.out;
+        let reset_mode = r.reset_mode();
+        let redundancy = r.redundancy();
+        let running = redundancy && !reset_mode;
+
+        // Nominal bit tick (§4.3).
+        let tpb1 = r.tq_per_bit() - 1;
+        let tq_wrap = r.tq_cnt == r.brp();
+        let tick = tq_wrap && r.bit_cnt == tpb1;
+        let mut n = r;
+        if reset_mode {
+            n.tq_cnt = 0;
+            n.bit_cnt = 0;
+        } else if tq_wrap {
+            n.tq_cnt = 0;
+            n.bit_cnt = if r.bit_cnt == tpb1 { 0 } else { r.bit_cnt + 1 };
+        } else {
+            n.tq_cnt = r.tq_cnt + 1;
+        }
+
+        // Wishbone (§2, §3, §9).
+        let mut ints = 0u32;
+        let mut w1c = 0u32;
+        let mut push = None;
+        let mut pop = false;
+        let take = i.wb_cyc && i.wb_stb && !r.wb_ack;
+        n.wb_ack = take;
+        n.wb_dat = 0;
+        if take {
+            let adr = i.wb_adr & 0x3F;
+            let d = i.wb_dat_w;
+            if !i.wb_we {
+                n.wb_dat = self.read_reg(adr);
+            } else {
+                match adr {
+                    idx::CTRL => {
+                        let w = clamp_k(d & ctrl::DEFINED);
+                        if reset_mode {
+                            if (w & ctrl::POLICY_MASK) >> ctrl::POLICY_SHIFT == ctrl::POLICY_ILLEGAL
+                            {
+                                ints |= int::ILLEGAL;
+                            } else {
+                                n.ctrl = w;
+                            }
+                        } else {
+                            if w & ctrl::CFG != r.ctrl & ctrl::CFG {
+                                ints |= int::ILLEGAL;
+                            }
+                            n.ctrl = (r.ctrl & !ctrl::RESET_MODE) | (w & ctrl::RESET_MODE);
+                        }
+                    }
+                    idx::BTR | idx::RMB_CFG | idx::DEDUP_CFG => {
+                        if !reset_mode {
+                            ints |= int::ILLEGAL;
+                        } else if adr == idx::BTR {
+                            n.btr = d & btr::DEFINED;
+                        } else if adr == idx::RMB_CFG {
+                            n.rmb = d;
+                        } else {
+                            n.dedup = d & dedup::WINDOW_MASK;
+                        }
+                    }
+                    idx::INT_STATUS => w1c = d & int::ALL,
+                    idx::INT_ENABLE => n.int_enable = d & int::ALL,
+                    idx::TX_ID => n.tx_id = d & (frame_id::ID_MASK | frame_id::IDE | frame_id::RTR),
+                    idx::TX_CTRL => n.tx_ctrl = d & frame_ctrl::DEFINED,
+                    idx::TX_DATA0 => n.tx_data[0] = d,
+                    idx::TX_DATA1 => n.tx_data[1] = d,
+                    idx::TX_CMD => {
+                        if d & 1 != 0 {
+                            let q = if redundancy {
+                                0
+                            } else {
+                                (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
+                            };
+                            push = Some((q, r.staged()));
+                        }
+                    }
+                    idx::RX_CMD => pop = d & 1 != 0,
+                    // Read-only and unmapped words.
+                    _ => ints |= int::ILLEGAL,
+                }
+            }
+        }
+
+        // Main FSM (§4), on pre-edge values of the aux FSMs and TX queue A.
+        let fsm_in = FsmInputs {
+            running,
+            q: self.txq.count[0] > 0,
+            va: self.aux[0].state == aux::VALID,
+            vb: self.aux[1].state == aux::VALID,
+            dual_tx: r.dual_tx(),
+            tick,
+            pending_a: pa.tx_pending,
+            done_a: pa.tx_done,
+            failed_a: pa.tx_failed,
+            pending_b: pb.tx_pending,
+            done_b: pb.tx_done,
+            failed_b: pb.tx_failed,
+        };
+        let in_use = [self.fsm.uses_a(), self.fsm.uses_b()];
+        let fev = self.fsm.edge(&fsm_in);
+        if fev.tx_success {
+            ints |= int::TX_DONE;
+        }
+        if fev.tx_failure {
+            ints |= int::TX_FAILURE;
+        }
+        if fev.switch {
+            ints |= int::SWITCH;
+        }
+
+        // Aux FSMs (§5).
+        for (c, o) in [pa, pb].into_iter().enumerate() {
+            let aev = self.aux[c].edge(&AuxInputs {
+                running,
+                policy: r.policy(),
+                k: r.k(),
+                stall_limit: (r.rmb >> 16) as u16,
+                recovery_bits: r.rmb as u16,
+                tick,
+                in_use: in_use[c],
+                tx_pending: o.tx_pending,
+                tx_done: o.tx_done,
+                err_valid: o.diag.err_valid,
+                err_tx: o.diag.err_tx,
+                err_state: o.probes.err_state,
+                sample_point: o.probes.sample_point,
+            });
+            if aev.int {
+                ints |= int::AUX;
+            }
+            if aev.recovered {
+                n.recoveries = n.recoveries.saturating_add(1);
+            }
+        }
+
+        // TX queues (§6).
+        let tev = self.txq.edge(&TxqInputs {
+            reset_mode,
+            redundancy,
+            push,
+            fsm_pop: fev.pop,
+            done: [pa.tx_done, pb.tx_done],
+            failed: [pa.tx_failed, pb.tx_failed],
+        });
+        if tev.push_refused {
+            ints |= int::ILLEGAL;
+        }
+        if tev.tx_done {
+            ints |= int::TX_DONE;
+        }
+        if tev.tx_failure {
+            ints |= int::TX_FAILURE;
+        }
+
+        // RX FIFO and duplicate removal (§7).
+        let rev = self.rx.edge(
+            &RxInputs {
+                reset_mode,
+                dedup_on: redundancy && r.window() != 0,
+                window: r.window(),
+                tick,
+                pop,
+                rx_valid: [pa.rx_valid, pb.rx_valid],
+            },
+            [&pa.rx_frame, &pb.rx_frame],
+        );
+        if rev.pop_refused {
+            ints |= int::ILLEGAL;
+        }
+        if rev.rx {
+            ints |= int::RX;
+        }
+        if rev.overrun {
+            ints |= int::OVERRUN;
+        }
+
+        // Interrupts (§8).
+        let es = [pa.probes.err_state, pb.probes.err_state];
+        if es != r.err_q {
+            ints |= int::ERR_STATE;
+        }
+        n.err_q = es;
+        n.int_status = (r.int_status & !w1c) | ints;
+        n.irq = r.int_status & r.int_enable != 0;
+        self.r = n;
+    }
+
+    /// The outputs after the last edge.
+    pub fn outputs(&self) -> DrccOutputs {
+        let [a, b] = &self.out;
+        let f = &self.fsm;
+        DrccOutputs {
+            wb_ack: self.r.wb_ack,
+            wb_dat_r: self.r.wb_dat,
+            irq: self.r.irq,
+            chan_a_tx: a.tx,
+            chan_b_tx: b.tx,
+            probes: DrccProbes {
+                state: f.state,
+                tx_channel: f.tx_channel(),
+                transmission_ack: f.transmission_ack,
+                chan_a_transmission_req: f.req_a || self.txq.req[0],
+                chan_b_transmission_req: f.req_b || self.txq.req[1],
+                tx_success: f.tx_success,
+                tx_ok_channel: f.tx_ok_channel,
+                tx_failure: f.tx_failure,
+                tx_failure_channel: f.tx_failure_channel,
+                tx_going_on: f.tx_going_on(),
+                chan_a_bsp_tx_err_cnt: a.probes.tec & 0x1FF,
+                chan_a_bsp_node_error_passive: a.probes.err_state != 0,
+                chan_b_bsp_tx_err_cnt: b.probes.tec & 0x1FF,
+                chan_b_bsp_node_error_passive: b.probes.err_state != 0,
+                aux_a_state: self.aux[0].state,
+                aux_b_state: self.aux[1].state,
+                chan_a_sample_point: a.probes.sample_point,
+                chan_b_sample_point: b.probes.sample_point,
+                chan_a_field: a.probes.field,
+                chan_b_field: b.probes.field,
+                chan_a_rec: a.probes.rec,
+                chan_b_rec: b.probes.rec,
+                chan_a_err_state: a.probes.err_state,
+                chan_b_err_state: b.probes.err_state,
+            },
+        }
+    }
+}

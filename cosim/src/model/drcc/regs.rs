@@ -1,0 +1,139 @@
+//! DRCC register map (contract §3): word indices, field positions, reset values and
+//! interrupt bits. Written from the contract's table; nothing else lives here.
+
+/// `ID` register value: "DRCC" in ASCII.
+pub const ID_VALUE: u32 = 0x4452_4343;
+
+/// Word indices (`wb_adr_i`, byte offset / 4).
+pub mod idx {
+    pub const ID: u8 = 0;
+    pub const CTRL: u8 = 1;
+    pub const BTR: u8 = 2;
+    pub const RMB_CFG: u8 = 3;
+    pub const DEDUP_CFG: u8 = 4;
+    pub const STATUS: u8 = 5;
+    pub const INT_STATUS: u8 = 6;
+    pub const INT_ENABLE: u8 = 7;
+    pub const CHAN_A_ERR: u8 = 8;
+    pub const CHAN_B_ERR: u8 = 9;
+    pub const AUX_A: u8 = 10;
+    pub const AUX_B: u8 = 11;
+    pub const TX_ID: u8 = 12;
+    pub const TX_CTRL: u8 = 13;
+    pub const TX_DATA0: u8 = 14;
+    pub const TX_DATA1: u8 = 15;
+    pub const TX_CMD: u8 = 16;
+    pub const RX_ID: u8 = 17;
+    pub const RX_CTRL: u8 = 18;
+    pub const RX_DATA0: u8 = 19;
+    pub const RX_DATA1: u8 = 20;
+    pub const RX_CMD: u8 = 21;
+    pub const STATS0: u8 = 22;
+    pub const STATS1: u8 = 23;
+    pub const TIMES: u8 = 24;
+}
+
+/// `CTRL` fields.
+pub mod ctrl {
+    pub const RESET_MODE: u32 = 1 << 0;
+    pub const REDUNDANCY: u32 = 1 << 1;
+    pub const POLICY_SHIFT: u32 = 2;
+    pub const POLICY_MASK: u32 = 0x3 << POLICY_SHIFT;
+    pub const DUAL_TX: u32 = 1 << 4;
+    pub const K_SHIFT: u32 = 8;
+    pub const K_MASK: u32 = 0xF << K_SHIFT;
+    pub const MODE_A_SHIFT: u32 = 12;
+    pub const MODE_B_SHIFT: u32 = 14;
+    pub const SINGLE_SHOT: u32 = 1 << 16;
+    /// Every defined bit (reserved bits read 0).
+    pub const DEFINED: u32 = 0x1_FF1F;
+    /// Every cfg field (all defined bits but `reset_mode`).
+    pub const CFG: u32 = DEFINED & !RESET_MODE;
+    /// Reset value: reset mode, policy error-passive, k = 1.
+    pub const RESET: u32 = RESET_MODE | (1 << POLICY_SHIFT) | (1 << K_SHIFT);
+    /// Policy codes.
+    pub const POLICY_NONE: u32 = 0;
+    pub const POLICY_PASSIVE: u32 = 1;
+    pub const POLICY_KFAIL: u32 = 2;
+    pub const POLICY_ILLEGAL: u32 = 3;
+}
+
+/// `BTR` fields (value - 1 encodings as the channel ports, §C.6).
+pub mod btr {
+    pub const BRP_MASK: u32 = 0x3F;
+    pub const TSEG1_SHIFT: u32 = 6;
+    pub const TSEG2_SHIFT: u32 = 10;
+    pub const SJW_SHIFT: u32 = 13;
+    pub const TRIPLE: u32 = 1 << 15;
+    pub const EWL_SHIFT: u32 = 16;
+    pub const DEFINED: u32 = 0x00FF_FFFF;
+    /// Reset value: brp 0, tseg1 4 (5 tq), tseg2 1 (2 tq), sjw 0 (1 tq), ewl 96.
+    pub const RESET: u32 = (4 << TSEG1_SHIFT) | (1 << TSEG2_SHIFT) | (96 << EWL_SHIFT);
+}
+
+/// `RMB_CFG`: [15:0] recovery_bits, [31:16] stall_limit.
+pub mod rmb {
+    pub const RESET: u32 = 1024;
+}
+
+/// `DEDUP_CFG`: [14:0] window.
+pub mod dedup {
+    pub const WINDOW_MASK: u32 = 0x7FFF;
+    pub const RESET: u32 = 1024;
+}
+
+/// `INT_STATUS` / `INT_ENABLE` bits.
+pub mod int {
+    pub const RX: u32 = 1 << 0;
+    pub const TX_DONE: u32 = 1 << 1;
+    pub const SWITCH: u32 = 1 << 2;
+    pub const ERR_STATE: u32 = 1 << 3;
+    pub const OVERRUN: u32 = 1 << 4;
+    pub const TX_FAILURE: u32 = 1 << 5;
+    pub const ILLEGAL: u32 = 1 << 6;
+    pub const AUX: u32 = 1 << 7;
+    pub const ALL: u32 = 0xFF;
+}
+
+/// `TX_ID` / `RX_ID` fields.
+pub mod frame_id {
+    pub const ID_MASK: u32 = 0x1FFF_FFFF;
+    pub const IDE: u32 = 1 << 29;
+    pub const RTR: u32 = 1 << 30;
+    pub const NOT_EMPTY: u32 = 1 << 31;
+}
+
+/// `TX_CTRL` / `RX_CTRL` fields.
+pub mod frame_ctrl {
+    pub const DLC_MASK: u32 = 0xF;
+    /// TX: queue select; RX: channel the frame came from.
+    pub const QUEUE: u32 = 1 << 8;
+    pub const DEFINED: u32 = DLC_MASK | QUEUE;
+}
+
+/// Main FSM state encoding (Table 1).
+pub mod state {
+    pub const IDLE1: u8 = 0;
+    pub const WAIT1: u8 = 1;
+    pub const CH1: u8 = 2;
+    pub const ABORT1: u8 = 3;
+    pub const WAIT2: u8 = 4;
+    pub const IDLE2: u8 = 5;
+    pub const WAIT3: u8 = 6;
+    pub const CH2: u8 = 7;
+    pub const ABORT2: u8 = 8;
+    pub const WAIT4: u8 = 9;
+}
+
+/// Auxiliary FSM state encoding (§5).
+pub mod aux {
+    pub const VALID: u8 = 0;
+    pub const FAILED: u8 = 1;
+    pub const RESTART: u8 = 2;
+    pub const PROBATION: u8 = 3;
+    /// Cause bits as they sit in AUX_x[5:2], shifted down by 2.
+    pub const CAUSE_PASSIVE: u8 = 1 << 0;
+    pub const CAUSE_BUSOFF: u8 = 1 << 1;
+    pub const CAUSE_KFAIL: u8 = 1 << 2;
+    pub const CAUSE_STALL: u8 = 1 << 3;
+}

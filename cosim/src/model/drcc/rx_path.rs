@@ -1,0 +1,240 @@
+//! RX FIFO and duplicate removal (contract §7): the 32 x 100-bit RX RAM with its
+//! registered read port, the writer FSM (idle, scan, decide, write), the 8-entry
+//! history of delivered frames and the `now` / `hist_idle` tick counters.
+
+use crate::frame::Frame;
+
+/// Writer FSM states.
+pub const W_IDLE: u8 = 0;
+pub const W_SCAN: u8 = 1;
+pub const W_DECIDE: u8 = 2;
+pub const W_WRITE: u8 = 3;
+
+/// `hist_idle` saturation value: every history entry is dropped there.
+const HIST_IDLE_MAX: u16 = 32767;
+
+/// What the RX path samples at an edge.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RxInputs {
+    pub reset_mode: bool,
+    /// `redundancy && window != 0`.
+    pub dedup_on: bool,
+    pub window: u16,
+    pub tick: bool,
+    /// An `RX_CMD.pop` write at this edge.
+    pub pop: bool,
+    /// Channel `rx_valid` pulses (registered channel outputs).
+    pub rx_valid: [bool; 2],
+}
+
+/// What the RX path did at an edge.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RxEvents {
+    /// Pop on an empty FIFO: INT_STATUS.illegal.
+    pub pop_refused: bool,
+    pub rx: bool,
+    pub overrun: bool,
+}
+
+/// One history entry (RAM 8 x 116: frame, channel, timestamp).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct HistEntry {
+    pub frame: Frame,
+    pub ch: u8,
+    pub ts: u16,
+}
+
+/// The RX FIFO, the writer FSM and the dedup history.
+#[derive(Clone, Debug, Default)]
+pub struct RxPath {
+    ram: [(Frame, u8); 32],
+    pub head: u8,
+    pub count: u8,
+    /// RAM read data register (the RX_* registers).
+    pub rd: (Frame, u8),
+    pub rxp: [bool; 2],
+    pub w_state: u8,
+    pub sel: u8,
+    pub scan_i: u8,
+    pub hit: bool,
+    pub hit_e: u8,
+    hist: [HistEntry; 8],
+    /// History RAM read data register.
+    hist_rd: HistEntry,
+    pub hv: u8,
+    pub hu: u8,
+    pub hist_ptr: u8,
+    pub hist_idle: u16,
+    pub now: u16,
+    // Statistics, cleared only by `rst`.
+    pub duplicates: u16,
+    pub overruns: u16,
+}
+
+impl RxPath {
+    /// A `rst` edge: the read ports load as at every edge (RAM contents are not
+    /// reset), every register and statistic clears.
+    pub fn reset(&mut self) {
+        let rd = self.ram[self.head as usize];
+        let hist_rd = self.hist[(self.scan_i & 7) as usize];
+        *self = RxPath {
+            ram: self.ram,
+            hist: self.hist,
+            rd,
+            hist_rd,
+            ..RxPath::default()
+        };
+    }
+
+    /// One rising edge; `rx_frame` are the channels' held `rx_*` outputs.
+    pub fn edge(&mut self, i: &RxInputs, rx_frame: [&Frame; 2]) -> RxEvents {
+        let mut ev = RxEvents::default();
+        let c = self.clone_regs();
+        // Registered read ports (read-first: the RAM contents before the edge).
+        self.rd = self.ram[c.head as usize];
+        self.hist_rd = self.hist[(c.scan_i & 7) as usize];
+        ev.pop_refused = i.pop && c.count == 0;
+        if i.reset_mode {
+            self.head = 0;
+            self.count = 0;
+            self.rxp = [false; 2];
+            self.w_state = W_IDLE;
+            self.sel = 0;
+            self.scan_i = 0;
+            self.hit = false;
+            self.hit_e = 0;
+            self.hv = 0;
+            self.hu = 0;
+            self.hist_ptr = 0;
+            self.hist_idle = 0;
+            self.now = 0;
+            return ev;
+        }
+        if i.tick {
+            self.now = c.now.wrapping_add(1);
+            self.hist_idle = (c.hist_idle + 1).min(HIST_IDLE_MAX);
+        }
+        if c.hist_idle == HIST_IDLE_MAX {
+            self.hv = 0;
+        }
+        self.rxp = [c.rxp[0] | i.rx_valid[0], c.rxp[1] | i.rx_valid[1]];
+        let mut pushed = false;
+        match c.w_state {
+            W_IDLE => {
+                if c.rxp[0] || c.rxp[1] {
+                    let s = if c.rxp[0] { 0 } else { 1 };
+                    self.sel = s as u8;
+                    // A new rx_valid at this edge sets it again (set wins).
+                    self.rxp[s] = i.rx_valid[s];
+                    self.hist_idle = 0;
+                    self.w_state = if i.dedup_on { W_SCAN } else { W_WRITE };
+                    self.scan_i = 0;
+                    self.hit = false;
+                }
+            }
+            W_SCAN => {
+                if c.scan_i >= 1 {
+                    let e = c.scan_i - 1;
+                    let bit = 1u8 << e;
+                    let entry = c.hist_rd;
+                    let age = c.now.wrapping_sub(entry.ts);
+                    if c.hv & bit != 0 && age > i.window {
+                        self.hv &= !bit;
+                    } else if c.hv & bit != 0
+                        && c.hu & bit == 0
+                        && entry.ch != c.sel
+                        && entry.frame == *rx_frame[c.sel as usize]
+                        && !c.hit
+                    {
+                        self.hit = true;
+                        self.hit_e = e;
+                    }
+                }
+                self.scan_i = c.scan_i + 1;
+                if c.scan_i == 8 {
+                    self.w_state = W_DECIDE;
+                }
+            }
+            W_DECIDE => {
+                if c.hit {
+                    self.hu |= 1 << c.hit_e;
+                    self.duplicates = c.duplicates.saturating_add(1);
+                    self.w_state = W_IDLE;
+                } else {
+                    self.w_state = W_WRITE;
+                }
+            }
+            _ => {
+                let frame = *rx_frame[c.sel as usize];
+                if c.count >= 32 {
+                    self.overruns = c.overruns.saturating_add(1);
+                    ev.overrun = true;
+                } else {
+                    self.ram[((c.head + c.count) & 31) as usize] = (frame, c.sel);
+                    pushed = true;
+                    ev.rx = true;
+                }
+                if i.dedup_on {
+                    let p = c.hist_ptr & 7;
+                    self.hist[p as usize] = HistEntry {
+                        frame,
+                        ch: c.sel,
+                        ts: c.now,
+                    };
+                    self.hv |= 1 << p;
+                    self.hu &= !(1 << p);
+                    self.hist_ptr = (p + 1) & 7;
+                }
+                self.w_state = W_IDLE;
+            }
+        }
+        let popped = i.pop && c.count > 0;
+        if popped {
+            self.head = (c.head + 1) & 31;
+        }
+        self.count = c.count + pushed as u8 - popped as u8;
+        ev
+    }
+
+    /// The small registers before the edge (everything but the RAMs).
+    fn clone_regs(&self) -> RxRegs {
+        RxRegs {
+            head: self.head,
+            count: self.count,
+            rxp: self.rxp,
+            w_state: self.w_state,
+            sel: self.sel,
+            scan_i: self.scan_i,
+            hit: self.hit,
+            hit_e: self.hit_e,
+            hist_rd: self.hist_rd,
+            hv: self.hv,
+            hu: self.hu,
+            hist_ptr: self.hist_ptr,
+            hist_idle: self.hist_idle,
+            now: self.now,
+            duplicates: self.duplicates,
+            overruns: self.overruns,
+        }
+    }
+}
+
+/// Pre-edge copy of the RX path registers.
+struct RxRegs {
+    head: u8,
+    count: u8,
+    rxp: [bool; 2],
+    w_state: u8,
+    sel: u8,
+    scan_i: u8,
+    hit: bool,
+    hit_e: u8,
+    hist_rd: HistEntry,
+    hv: u8,
+    hu: u8,
+    hist_ptr: u8,
+    hist_idle: u16,
+    now: u16,
+    duplicates: u16,
+    overruns: u16,
+}

@@ -1,0 +1,118 @@
+//! TX buffer RAM and its two queues (contract §6): 16 x 99-bit synchronous RAM,
+//! queue A = entries 0..7, queue B = 8..15; the registered read port feeding both
+//! channels; the normal-mode request / busy logic of each channel.
+
+use crate::frame::Frame;
+
+/// What the TX queues sample at an edge (pre-edge values and this edge's requests).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TxqInputs {
+    pub reset_mode: bool,
+    pub redundancy: bool,
+    /// A `TX_CMD.push` write at this edge, with its target queue.
+    pub push: Option<(usize, Frame)>,
+    /// Redundancy mode: the main FSM's "finish" pops queue A.
+    pub fsm_pop: bool,
+    /// Channel `tx_done` / `tx_failed` pulses (registered channel outputs).
+    pub done: [bool; 2],
+    pub failed: [bool; 2],
+}
+
+/// What the TX queues did at an edge.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TxqEvents {
+    /// The push was refused (reset mode or queue full): INT_STATUS.illegal.
+    pub push_refused: bool,
+    /// Normal mode: INT_STATUS.tx_done / tx_failure.
+    pub tx_done: bool,
+    pub tx_failure: bool,
+}
+
+/// The TX RAM, the queue pointers and the normal-mode request logic.
+#[derive(Clone, Debug, Default)]
+pub struct TxQueues {
+    ram: [Frame; 16],
+    pub head: [u8; 2],
+    pub count: [u8; 2],
+    /// RAM read data register: the channels' `tx_*` inputs.
+    pub rd: Frame,
+    /// Normal mode: which queue the read port serves (toggles every edge).
+    pub rd_sel: u8,
+    /// Normal mode: channel `tx_req` pulses.
+    pub req: [bool; 2],
+    pub busy: [bool; 2],
+}
+
+impl TxQueues {
+    /// A `rst` edge: the read port loads as at every edge (RAM contents are not
+    /// reset), every register clears.
+    pub fn reset(&mut self, redundancy: bool) {
+        let q = if redundancy { 0 } else { self.rd_sel as usize };
+        let rd = self.ram[q * 8 + self.head[q] as usize];
+        *self = TxQueues {
+            ram: self.ram,
+            rd,
+            ..TxQueues::default()
+        };
+    }
+
+    /// One rising edge.
+    pub fn edge(&mut self, i: &TxqInputs) -> TxqEvents {
+        let mut ev = TxqEvents::default();
+        // Registered read port, from the pre-edge address and RAM (read-first).
+        let q = if i.redundancy {
+            0
+        } else {
+            self.rd_sel as usize
+        };
+        self.rd = self.ram[q * 8 + self.head[q] as usize];
+        if i.reset_mode {
+            ev.push_refused = i.push.is_some();
+            self.head = [0; 2];
+            self.count = [0; 2];
+            self.rd_sel = 0;
+            self.req = [false; 2];
+            self.busy = [false; 2];
+            return ev;
+        }
+        let (head, count) = (self.head, self.count);
+        let mut pop = [false; 2];
+        if i.redundancy {
+            pop[0] = i.fsm_pop;
+            self.req = [false; 2];
+            self.busy = [false; 2];
+            self.rd_sel = 0;
+        } else {
+            let (req, busy) = (self.req, self.busy);
+            for c in 0..2 {
+                self.req[c] = self.rd_sel as usize == c && count[c] > 0 && !busy[c] && !req[c];
+                if i.done[c] || i.failed[c] {
+                    pop[c] = true;
+                    self.busy[c] = false;
+                    ev.tx_done |= i.done[c];
+                    ev.tx_failure |= i.failed[c];
+                } else if self.req[c] {
+                    self.busy[c] = true;
+                }
+            }
+            self.rd_sel ^= 1;
+        }
+        let mut push_q = None;
+        if let Some((q, frame)) = i.push {
+            if count[q] >= 8 {
+                ev.push_refused = true;
+            } else {
+                self.ram[q * 8 + ((head[q] + count[q]) & 7) as usize] = frame;
+                push_q = Some(q);
+            }
+        }
+        for c in 0..2 {
+            let popped = pop[c] && count[c] > 0;
+            if popped {
+                self.head[c] = (head[c] + 1) & 7;
+            }
+            self.count[c] = count[c] + (push_q == Some(c)) as u8 - popped as u8;
+        }
+        ev
+    }
+}

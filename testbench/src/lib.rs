@@ -6,8 +6,10 @@
 pub mod bench;
 pub mod bitrate;
 pub mod conformance;
+pub mod dual;
 pub mod engines;
 pub mod fault_gen;
+pub mod paper;
 pub mod random;
 pub mod run;
 pub mod scenario;

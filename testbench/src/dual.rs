@@ -1,0 +1,383 @@
+//! Dual-bus fault scenarios of DRCC nodes (issue "The DRCC itself"): N >= 4 DRCC
+//! nodes in redundancy mode on lines A and B, every host submitting frames, one
+//! fault on line A for a while. A run reports, from the hosts' point of view,
+//! whether every frame submitted by every host reached every other host exactly
+//! once, what the registers said during the fault, and whether channel A was used
+//! again after the fault (the main FSM's `wait4 -> idle1` path).
+//!
+//! The faults and how they are injected (contract of `drcc_cosim::bus`):
+//! - `cut_a`: line A broken between two halves of the nodes ([`LineCut`]); each half
+//!   still acknowledges its own frames, so only `dual_tx` keeps the halves informed;
+//! - `a_stuck_dominant` / `a_stuck_recessive`: the whole line A;
+//! - `dead_transceiver`: node 0's channel A transmitter and receiver stuck recessive
+//!   (it neither drives nor hears line A);
+//! - `a_bus_off`: node 0's channel A transmitter stuck dominant (a babbling
+//!   transceiver) until fault confinement takes node 0's channel A to bus-off.
+
+use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
+use drcc_cosim::dual::host::{btr, reg, HostConfig, Policy};
+use drcc_cosim::dual::lockstep::{compare, DrccDivergence};
+use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
+use drcc_cosim::engine::drcc::DrccEngine;
+use drcc_cosim::engine::drcc_model::DrccModelEngine;
+use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_cosim::Frame;
+
+use crate::engines::{EngineKind, VERILATOR_HINT};
+
+/// Clocks per bit of the scenarios: 8 MHz, 1 Mbit/s, 8 tq of one clock.
+pub const CLOCKS_PER_BIT: u64 = 8;
+
+/// The fault of a dual-bus scenario.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DualFault {
+    None,
+    CutA,
+    AStuckDominant,
+    AStuckRecessive,
+    DeadTransceiver,
+    ABusOff,
+}
+
+impl DualFault {
+    /// Every fault, in report order.
+    pub const ALL: [DualFault; 6] = [
+        DualFault::None,
+        DualFault::CutA,
+        DualFault::AStuckDominant,
+        DualFault::AStuckRecessive,
+        DualFault::DeadTransceiver,
+        DualFault::ABusOff,
+    ];
+
+    /// Name as reports and the CLI spell it.
+    pub fn name(self) -> &'static str {
+        match self {
+            DualFault::None => "no_fault",
+            DualFault::CutA => "cut_a",
+            DualFault::AStuckDominant => "a_stuck_dominant",
+            DualFault::AStuckRecessive => "a_stuck_recessive",
+            DualFault::DeadTransceiver => "dead_transceiver",
+            DualFault::ABusOff => "a_bus_off",
+        }
+    }
+}
+
+/// A dual-bus scenario.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DualScenario {
+    pub fault: DualFault,
+    pub nodes: usize,
+    /// Frames each host submits.
+    pub frames_per_node: usize,
+    /// Bit times between two submissions of one host.
+    pub period_bits: u64,
+    /// Fault window, in bit times from the start.
+    pub fault_start_bits: u64,
+    pub fault_bits: u64,
+    /// Redundancy configuration of every node.
+    pub policy: Policy,
+    pub dual_tx: bool,
+    pub recovery_bits: u16,
+}
+
+impl DualScenario {
+    /// The product's recommended configuration against `fault`: redundancy mode,
+    /// switch after 2 failed attempts, every message on both lines.
+    pub fn standard(fault: DualFault) -> Self {
+        DualScenario {
+            fault,
+            nodes: 4,
+            frames_per_node: 24,
+            period_bits: 700,
+            fault_start_bits: 3_000,
+            fault_bits: if fault == DualFault::ABusOff {
+                400
+            } else {
+                6_000
+            },
+            policy: Policy::KFailed(2),
+            dual_tx: true,
+            recovery_bits: 1_000,
+        }
+    }
+
+    fn host_config(&self) -> HostConfig {
+        HostConfig {
+            btr: btr(0, 5, 2, 1, false, 96),
+            redundancy: true,
+            policy: self.policy,
+            dual_tx: self.dual_tx,
+            recovery_bits: self.recovery_bits,
+            dedup_window: 2_000,
+            ..HostConfig::default()
+        }
+    }
+
+    /// The frame host `node` submits as its `k`-th: a unique base identifier (lower
+    /// identifiers for lower nodes) and data naming node and sequence number.
+    pub fn frame(node: usize, k: usize) -> Frame {
+        let mut data = [0u8; 8];
+        data[0] = node as u8;
+        data[1] = k as u8;
+        data[2] = 0xA5;
+        Frame {
+            id: 0x100 + (node as u32) * 0x40 + (k as u32 % 0x40),
+            ide: false,
+            rtr: false,
+            dlc: 3,
+            data,
+        }
+    }
+
+    /// Total run length in bit times (traffic, fault, recovery, and a tail).
+    pub fn run_bits(&self) -> u64 {
+        let traffic = self.period_bits * self.frames_per_node as u64;
+        let fault_end = self.fault_start_bits + self.fault_bits;
+        // Bus-off recovery (128 x 11 bits) + the aux probation before channel A is
+        // used again, then a few frames on A.
+        traffic.max(fault_end + 1_408 + self.recovery_bits as u64 + 6 * self.period_bits)
+    }
+
+    fn faults(&self, sys: &mut DualBusSystem) -> Result<(), String> {
+        let start = self.fault_start_bits * CLOCKS_PER_BIT;
+        let cycles = self.fault_bits * CLOCKS_PER_BIT;
+        let f = |target, kind| Fault {
+            target,
+            kind,
+            start,
+            cycles,
+        };
+        match self.fault {
+            DualFault::None => {}
+            DualFault::CutA => sys.add_cut(
+                Line::A,
+                LineCut {
+                    at: self.nodes / 2,
+                    start,
+                    cycles,
+                },
+            )?,
+            DualFault::AStuckDominant => {
+                sys.add_fault(Line::A, f(FaultTarget::Bus, FaultKind::StuckDominant))?
+            }
+            DualFault::AStuckRecessive => {
+                sys.add_fault(Line::A, f(FaultTarget::Bus, FaultKind::StuckRecessive))?
+            }
+            DualFault::DeadTransceiver => {
+                sys.add_fault(Line::A, f(FaultTarget::Tx(0), FaultKind::StuckRecessive))?;
+                sys.add_fault(Line::A, f(FaultTarget::Rx(0), FaultKind::StuckRecessive))?;
+            }
+            DualFault::ABusOff => {
+                sys.add_fault(Line::A, f(FaultTarget::Tx(0), FaultKind::StuckDominant))?
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A DRCC engine by kind; Verilator missing is an error that says how to install it.
+pub fn drcc_engine(kind: EngineKind) -> Result<Box<dyn DrccEngine>, String> {
+    match kind {
+        EngineKind::Model => Ok(Box::new(DrccModelEngine::new())),
+        EngineKind::Verilator => DrccVerilatorEngine::new()
+            .map(|e| Box::new(e) as Box<dyn DrccEngine>)
+            .map_err(|e| format!("{e}; {VERILATOR_HINT}")),
+        EngineKind::RustHdl => Err(
+            "the DRCC top runs on the model and verilator engines (rust-hdl's simulator is \
+             too slow for multi-node DRCC runs): use --engine model or --engine verilator"
+                .to_string(),
+        ),
+    }
+}
+
+/// What one run showed.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct DualReport {
+    pub scenario: String,
+    pub cycles: u64,
+    /// (receiver, sender, k) of frames a host never got.
+    pub missing: Vec<(usize, usize, usize)>,
+    /// (receiver, sender, k) of frames a host got more than once.
+    pub duplicates: Vec<(usize, usize, usize)>,
+    /// Frames a host got that nobody sent (corruption).
+    pub foreign: usize,
+    /// Frames delivered in total, and frames submitted.
+    pub delivered: usize,
+    pub submitted: usize,
+    /// Per node: `AUX_A` and `STATUS` read by the host at the end of the fault window.
+    pub aux_a_during: Vec<u32>,
+    pub status_during: Vec<u32>,
+    /// Per node: `STATUS`, `AUX_A` and `STATS0` at the end.
+    pub status_end: Vec<u32>,
+    pub aux_a_end: Vec<u32>,
+    pub stats0_end: Vec<u32>,
+    /// Per node: first clock (after the fault ended) at which the main FSM went
+    /// from wait4 to idle1, if it did.
+    pub back_on_a: Vec<Option<u64>>,
+    /// Per node: frames sent on line A after the fault ended (SOFs on `chan_a_tx`).
+    pub a_frames_after: Vec<u64>,
+    /// First clock at which some node's aux A left `valid`, if any.
+    pub first_aux_failure: Option<u64>,
+}
+
+impl DualReport {
+    /// Every frame reached every other host exactly once.
+    pub fn exactly_once(&self) -> bool {
+        self.missing.is_empty() && self.duplicates.is_empty() && self.foreign == 0
+    }
+}
+
+/// Runs `s` on one engine kind, or on two in lock step (`cosim = Some(other)`):
+/// then the first divergence is an error.
+pub fn run_dual(
+    s: &DualScenario,
+    kind: EngineKind,
+    cosim: Option<EngineKind>,
+) -> Result<DualReport, String> {
+    let build = |k: EngineKind| -> Result<DualBusSystem, String> {
+        let engines = (0..s.nodes)
+            .map(|_| drcc_engine(k))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut sys = DualBusSystem::new(engines, vec![s.host_config(); s.nodes])?;
+        s.faults(&mut sys)?;
+        for n in 0..s.nodes {
+            for k in 0..s.frames_per_node {
+                // Stagger the hosts so that frames also contend for the bus.
+                let due = (100 + k as u64 * s.period_bits + n as u64 * 37) * CLOCKS_PER_BIT;
+                sys.node_mut(n)
+                    .host
+                    .submit(due, DualScenario::frame(n, k), 0);
+            }
+        }
+        Ok(sys)
+    };
+    let mut main = build(kind)?;
+    let mut other = match cosim {
+        Some(k) => Some(build(k)?),
+        None => None,
+    };
+    let total = s.run_bits() * CLOCKS_PER_BIT;
+    let fault_end = (s.fault_start_bits + s.fault_bits) * CLOCKS_PER_BIT;
+    let read_during = fault_end.saturating_sub(50 * CLOCKS_PER_BIT);
+    let mut report = DualReport {
+        scenario: s.fault.name().to_string(),
+        back_on_a: vec![None; s.nodes],
+        a_frames_after: vec![0; s.nodes],
+        ..DualReport::default()
+    };
+    let mut prev_state = vec![0u8; s.nodes];
+    let mut prev_tx_a = vec![true; s.nodes];
+    let mut a_idle_bits = vec![0u64; s.nodes];
+    let mut cycle = 0;
+    let read_regs = |sys: &mut DualBusSystem, regs: &[u8]| {
+        for n in 0..sys.len() {
+            for &r in regs {
+                sys.node_mut(n).host.read(r);
+            }
+        }
+    };
+    while cycle < total || main.nodes().iter().any(|n| n.host.reads.len() < 5) {
+        if cycle == read_during {
+            read_regs(&mut main, &[reg::AUX_A, reg::STATUS]);
+            if let Some(o) = other.as_mut() {
+                read_regs(o, &[reg::AUX_A, reg::STATUS]);
+            }
+        }
+        if cycle == total {
+            read_regs(&mut main, &[reg::STATUS, reg::AUX_A, reg::STATS0]);
+            if let Some(o) = other.as_mut() {
+                read_regs(o, &[reg::STATUS, reg::AUX_A, reg::STATS0]);
+            }
+        }
+        main.step();
+        if let Some(o) = other.as_mut() {
+            o.step();
+            if let Some(d) = compare(&main, o) {
+                return Err(divergence_message(s, &d));
+            }
+        }
+        for (i, n) in main.nodes().iter().enumerate() {
+            let p = &n.outputs.probes;
+            if report.first_aux_failure.is_none() && p.aux_a_state != 0 {
+                report.first_aux_failure = Some(cycle);
+            }
+            if cycle >= fault_end
+                && prev_state[i] == 9
+                && p.state == 0
+                && report.back_on_a[i].is_none()
+            {
+                report.back_on_a[i] = Some(cycle);
+            }
+            prev_state[i] = p.state;
+            // A SOF: own dominant after at least 11 recessive bits on the pin.
+            let tx = n.outputs.chan_a_tx;
+            if prev_tx_a[i] && !tx {
+                if cycle >= fault_end && a_idle_bits[i] >= 11 * CLOCKS_PER_BIT {
+                    report.a_frames_after[i] += 1;
+                }
+                a_idle_bits[i] = 0;
+            }
+            if tx {
+                a_idle_bits[i] += 1;
+            } else {
+                a_idle_bits[i] = 0;
+            }
+            prev_tx_a[i] = tx;
+        }
+        cycle += 1;
+        if cycle > total + 100_000 {
+            return Err(format!(
+                "{}: the hosts did not finish their register reads",
+                s.fault.name()
+            ));
+        }
+    }
+    report.cycles = cycle;
+    tally(s, &main, &mut report);
+    Ok(report)
+}
+
+fn divergence_message(s: &DualScenario, d: &DrccDivergence) -> String {
+    format!(
+        "scenario {}: {d} (bit time {})",
+        s.fault.name(),
+        d.cycle / CLOCKS_PER_BIT
+    )
+}
+
+fn tally(s: &DualScenario, sys: &DualBusSystem, r: &mut DualReport) {
+    r.submitted = s.nodes * s.frames_per_node;
+    for (rx_node, n) in sys.nodes().iter().enumerate() {
+        let mut seen = vec![vec![0usize; s.frames_per_node]; s.nodes];
+        for got in &n.host.received {
+            let f = got.frame;
+            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
+            if sender < s.nodes && k < s.frames_per_node && f == DualScenario::frame(sender, k) {
+                seen[sender][k] += 1;
+            } else {
+                r.foreign += 1;
+            }
+        }
+        r.delivered += n.host.received.len();
+        for (sender, counts) in seen.iter().enumerate() {
+            if sender == rx_node {
+                continue;
+            }
+            for (k, &c) in counts.iter().enumerate() {
+                if c == 0 {
+                    r.missing.push((rx_node, sender, k));
+                } else if c > 1 {
+                    r.duplicates.push((rx_node, sender, k));
+                }
+            }
+        }
+        let reads = &n.host.reads;
+        let get = |idx: usize| reads.get(idx).map(|x| x.value).unwrap_or(0);
+        r.aux_a_during.push(get(0));
+        r.status_during.push(get(1));
+        r.status_end.push(get(2));
+        r.aux_a_end.push(get(3));
+        r.stats0_end.push(get(4));
+    }
+}

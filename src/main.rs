@@ -76,6 +76,25 @@ enum Command {
     },
     /// Run the demo scenario (Verilator if available, else rust-hdl); writes out/demo_bus.vcd.
     Demo,
+    /// DRCC redundancy scenarios on a dual bus: `paper` (Figs. 5-8), `switchover`
+    /// (the benchmark table), a fault (`cut_a`, `a_stuck_dominant`,
+    /// `a_stuck_recessive`, `dead_transceiver`, `a_bus_off`, `no_fault`) or `all`.
+    Redundancy {
+        /// What to run.
+        what: String,
+        /// Engine: model or verilator.
+        #[arg(long, default_value = "model")]
+        engine: String,
+        /// Also run this engine in lock step and compare every clock.
+        #[arg(long, value_name = "ENGINE")]
+        cosim: Option<String>,
+        /// Switch policy of `paper`: error-passive, none, k1 .. k15.
+        #[arg(long, default_value = "error-passive")]
+        policy: String,
+        /// `paper`: write the trace with the paper's signal names.
+        #[arg(long, value_name = "FILE")]
+        vcd: Option<PathBuf>,
+    },
     /// Measure simulated clock cycles per second of every available engine.
     Bench {
         /// Seconds per measurement.
@@ -127,6 +146,13 @@ fn main() -> ExitCode {
         } => cli::run::cosim(&scenario, &engines, vcd_dir),
         Command::WaveDiff { a, b, signals } => cli::wave::diff(&a, &b, &signals),
         Command::Demo => cli::run::demo(),
+        Command::Redundancy {
+            what,
+            engine,
+            cosim,
+            policy,
+            vcd,
+        } => cli::redundancy::run(&what, &engine, cosim.as_deref(), &policy, vcd.as_deref()),
         Command::Bench { seconds } => cli::bench(seconds),
         Command::Synth {
             target,

@@ -2,6 +2,7 @@
 //! error: exit 2) and the panic hook that turns an internal error into one line.
 
 pub mod generate;
+pub mod redundancy;
 pub mod run;
 pub mod synth;
 pub mod wave;

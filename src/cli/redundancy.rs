@@ -1,0 +1,111 @@
+//! `drcc redundancy`: the DRCC's redundancy scenarios on a dual bus — the paper's
+//! Figs. 5-8 experiment (`paper`), the fault scenarios of 4 DRCC nodes (`cut_a`,
+//! `a_stuck_dominant`, ..., or `all`), and the switchover table (`switchover`) — on
+//! one engine, or on two in lock step with `--cosim`.
+
+use super::{CliError, CliResult};
+use drcc_cosim::dual::host::Policy;
+use drcc_testbench::dual::{run_dual, DualFault, DualScenario};
+use drcc_testbench::paper::{run_paper, switchover_table, Rate};
+use drcc_testbench::EngineKind;
+use std::path::Path;
+
+fn engine(name: &str) -> Result<EngineKind, CliError> {
+    name.parse::<EngineKind>().map_err(CliError::Error)
+}
+
+fn policy(name: &str) -> Result<Policy, CliError> {
+    match name {
+        "error-passive" => Ok(Policy::ErrorPassive),
+        "none" => Ok(Policy::None),
+        k if k.starts_with("k") => match k[1..].parse::<u8>() {
+            Ok(k @ 1..=15) => Ok(Policy::KFailed(k)),
+            _ => Err(CliError::Error(format!(
+                "--policy {name}: give k1 .. k15 (switch after k failed attempts)"
+            ))),
+        },
+        other => Err(CliError::Error(format!(
+            "--policy {other}: the policies are error-passive, none, k1 .. k15"
+        ))),
+    }
+}
+
+/// Runs `what` (see the module docs).
+pub fn run(
+    what: &str,
+    engine_name: &str,
+    cosim: Option<&str>,
+    policy_name: &str,
+    vcd: Option<&Path>,
+) -> CliResult {
+    let kind = engine(engine_name)?;
+    let other = cosim.map(engine).transpose()?;
+    match what {
+        "paper" => {
+            let p = policy(policy_name)?;
+            let mut buf = Vec::new();
+            let r = run_paper(p, Rate::M1, kind, other, vcd.map(|_| &mut buf))
+                .map_err(CliError::Error)?;
+            if let Some(path) = vcd {
+                std::fs::write(path, &buf).map_err(|e| {
+                    CliError::Error(format!("cannot write {}: {e}", path.display()))
+                })?;
+                println!("wrote {}", path.display());
+            }
+            println!(
+                "paper scenario ({policy_name}, 1 Mbit/s): TEC of A {:?}; main FSM {:?}; \
+                 tx_ok_channel {:#04b}; on B after {:.0} bit times, tx_success after {:.0}",
+                r.tec_a,
+                r.states,
+                r.tx_ok_channel,
+                r.bits_to_b().unwrap_or(f64::NAN),
+                r.bits_to_success().unwrap_or(f64::NAN)
+            );
+            Ok(())
+        }
+        "switchover" => {
+            print!("{}", switchover_table(kind).map_err(CliError::Error)?);
+            Ok(())
+        }
+        _ => {
+            let faults: Vec<DualFault> = if what == "all" {
+                DualFault::ALL.to_vec()
+            } else {
+                match DualFault::ALL.iter().find(|f| f.name() == what) {
+                    Some(f) => vec![*f],
+                    None => {
+                        let names: Vec<_> = DualFault::ALL.iter().map(|f| f.name()).collect();
+                        return Err(CliError::Error(format!(
+                            "unknown scenario {what:?}: give paper, switchover, all, or one of {}",
+                            names.join(", ")
+                        )));
+                    }
+                }
+            };
+            let mut failed = 0;
+            for f in faults {
+                let s = DualScenario::standard(f);
+                let r = run_dual(&s, kind, other).map_err(CliError::Error)?;
+                let ok = r.exactly_once();
+                failed += !ok as usize;
+                println!(
+                    "{:<18} {}: {} of {} deliveries, missing {}, duplicates {}, back on A {}/{}",
+                    f.name(),
+                    if ok { "exactly once" } else { "FAILED" },
+                    r.delivered,
+                    s.nodes * (s.nodes - 1) * s.frames_per_node,
+                    r.missing.len(),
+                    r.duplicates.len(),
+                    r.back_on_a.iter().filter(|b| b.is_some()).count(),
+                    s.nodes
+                );
+            }
+            if failed > 0 {
+                return Err(CliError::Error(format!(
+                    "{failed} scenario(s) lost or duplicated frames"
+                )));
+            }
+            Ok(())
+        }
+    }
+}

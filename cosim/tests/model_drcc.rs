@@ -976,3 +976,46 @@ fn dedup_window_expires_entries() {
     assert_eq!(sys.pop(1), Some((m, 1)));
     assert_eq!(sys.read(1, STATS0), 0);
 }
+
+/// `RX_ID[31]` (`rx_ready`, §7) is 1 only when the read data holds the new head:
+/// polling RX_ID back to back (every 2 clocks, at both clock phases) while a frame
+/// arrives in an empty FIFO whose RAM head still holds an older frame never shows
+/// the valid flag with the old frame.
+#[test]
+fn rx_ready_never_pairs_the_flag_with_a_stale_head() {
+    for phase in 0..2 {
+        let mut sys = Sys::new(1);
+        let pa = sys.add_plain(0, true);
+        sys.start(0, policy(1) | k(1));
+        sys.run(20 * CPB);
+        let old = frame(0x111, false, false, 1, &[1]);
+        let new = frame(0x222, false, false, 1, &[2]);
+        // Fill all 32 RAM entries with `old` (so the next head holds it), pop them.
+        for _ in 0..32 {
+            let d = sys.plain[pa].done;
+            sys.plain[pa].req = Some(old);
+            while sys.plain[pa].done == d {
+                sys.step();
+            }
+        }
+        sys.run(20 * CPB);
+        for _ in 0..32 {
+            assert_eq!(sys.pop(0), Some((old, 0)));
+        }
+        sys.run(phase);
+        sys.plain[pa].req = Some(new);
+        let mut seen = false;
+        for _ in 0..(120 * CPB / 2) {
+            let id = sys.read(0, RX_ID);
+            if id >> 31 == 1 {
+                assert_eq!(
+                    id & 0x7FF,
+                    0x222,
+                    "phase {phase}: valid flag with a stale head"
+                );
+                seen = true;
+            }
+        }
+        assert!(seen, "phase {phase}: the new frame arrived");
+    }
+}

@@ -30,7 +30,7 @@
 //!    written gets the old contents. RAM contents are never reset (power-up 0); the
 //!    read data registers keep loading at `rst` and reset-mode edges, and `RX_ID`,
 //!    `RX_CTRL`, `RX_DATA*` show the RX read data register even when the FIFO is
-//!    empty (only `RX_ID[31]`, `count != 0`, tells).
+//!    empty (only `RX_ID[31]`, the `rx_ready` register, tells).
 //! 5. All full/empty decisions use the counts before the edge: a push to a full
 //!    queue is refused even if the same edge pops it; an RX write with `count == 32`
 //!    overruns even if the same edge pops; a pop is refused (illegal) iff the count
@@ -285,7 +285,7 @@ impl DrccModel {
                 (rx_frame.id & frame_id::ID_MASK)
                     | if rx_frame.ide { frame_id::IDE } else { 0 }
                     | if rx_frame.rtr { frame_id::RTR } else { 0 }
-                    | if self.rx.count != 0 {
+                    | if self.rx.rx_ready {
                         frame_id::NOT_EMPTY
                     } else {
                         0

@@ -52,6 +52,8 @@ pub struct RxPath {
     pub count: u8,
     /// RAM read data register (the RX_* registers).
     pub rd: (Frame, u8),
+    /// `RX_ID[31]`: `count != 0` at the previous edge.
+    pub rx_ready: bool,
     pub rxp: [bool; 2],
     pub w_state: u8,
     pub sel: u8,
@@ -94,6 +96,7 @@ impl RxPath {
         self.rd = self.ram[c.head as usize];
         self.hist_rd = self.hist[(c.scan_i & 7) as usize];
         ev.pop_refused = i.pop && c.count == 0;
+        self.rx_ready = !i.reset_mode && c.count != 0;
         if i.reset_mode {
             self.head = 0;
             self.count = 0;

@@ -1,3 +1,7 @@
 //! drcc-hdl: the DRCC hardware, described in rust-hdl, one block per file.
 pub mod channel;
+pub mod drcc;
+pub mod host;
+pub mod memory;
+pub mod rmb;
 pub mod tops;

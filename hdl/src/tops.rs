@@ -5,10 +5,11 @@
 //! compiled together.
 
 use crate::channel::can_channel::CanChannel;
+use crate::drcc::Drcc;
 use rust_hdl::prelude::*;
 
 /// Names of the emitted tops, in the order `drcc generate` writes them.
-pub const TOPS: &[&str] = &["can_channel"];
+pub const TOPS: &[&str] = &["can_channel", "drcc"];
 
 /// Renames rust-hdl's `top` / `top$a$b` module names to `<name>` / `<name>__a__b`
 /// and prefixes the file with a header naming the generator.
@@ -59,6 +60,11 @@ pub fn emit(name: &str) -> Option<String> {
     match name {
         "can_channel" => {
             let mut uut = CanChannel::default();
+            uut.connect_all();
+            Some(finish_verilog(name, &generate_verilog(&uut)))
+        }
+        "drcc" => {
+            let mut uut = Drcc::default();
             uut.connect_all();
             Some(finish_verilog(name, &generate_verilog(&uut)))
         }

@@ -1,5 +1,8 @@
 //! `drcc generate [--out DIR] [--check]`: writes `<top>.v` for every top of
-//! `drcc_hdl::tops::emit_all()`, or checks that the files on disk are current.
+//! `drcc_hdl::tops::emit_all()`, the DRCC register header `drcc_regs.h` beside
+//! them and the register documentation `docs/registers.md` (into DIR too when
+//! `--out` is given), both generated from `drcc_hdl::host::registers`; or checks
+//! that the files on disk are current.
 
 use std::path::{Path, PathBuf};
 
@@ -7,12 +10,68 @@ use super::{workspace_path, CliError, CliResult};
 
 /// Runs the command.
 pub fn run(out: Option<PathBuf>, check: bool) -> CliResult {
+    let docs = out.clone().unwrap_or_else(|| workspace_path("docs"));
     let dir = out.unwrap_or_else(|| workspace_path("rtl-out"));
     let tops = drcc_hdl::tops::emit_all();
+    let extras = vec![
+        (
+            dir.join("drcc_regs.h"),
+            drcc_hdl::host::registers::c_header(),
+        ),
+        (
+            docs.join("registers.md"),
+            drcc_hdl::host::registers::markdown(),
+        ),
+    ];
     if check {
-        check_dir(&dir, &tops)
+        let verilog = check_dir(&dir, &tops);
+        let others = check_files(&extras);
+        match (verilog, others) {
+            (Ok(()), Ok(())) => Ok(()),
+            (Err(CliError::Failed(a)), Err(CliError::Failed(b))) => {
+                Err(CliError::Failed(format!("{a}; {b}")))
+            }
+            (Err(e), _) | (_, Err(e)) => Err(e),
+        }
     } else {
-        write_dir(&dir, &tops)
+        write_dir(&dir, &tops)?;
+        write_files(&extras)
+    }
+}
+
+fn write_files(files: &[(PathBuf, String)]) -> CliResult {
+    for (path, text) in files {
+        if let Some(parent) = path.parent() {
+            std::fs::create_dir_all(parent)
+                .map_err(|e| CliError::Error(format!("cannot create {}: {e}", parent.display())))?;
+        }
+        if std::fs::read_to_string(path).is_ok_and(|old| old == *text) {
+            println!("unchanged {}", path.display());
+            continue;
+        }
+        std::fs::write(path, text)
+            .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())))?;
+        println!("wrote {} ({} lines)", path.display(), text.lines().count());
+    }
+    Ok(())
+}
+
+fn check_files(files: &[(PathBuf, String)]) -> CliResult {
+    let mut stale = Vec::new();
+    for (path, text) in files {
+        match std::fs::read_to_string(path) {
+            Ok(old) if old == *text => println!("up to date {}", path.display()),
+            Ok(_) => stale.push(format!("{} is stale", path.display())),
+            Err(_) => stale.push(format!("{} is missing", path.display())),
+        }
+    }
+    if stale.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::Failed(format!(
+            "{}; run `drcc generate` and commit the result",
+            stale.join("; ")
+        )))
     }
 }
 

@@ -1,0 +1,307 @@
+//! The `drcc` top: the dual-redundancy CAN controller of the DRCC paper
+//! (sections II-IV, Table 1), as fixed clock by clock by
+//! `cosim/src/model/drcc_contract.md`. Two `can_channel`s (A = the paper's
+//! channel 1, B = channel 2) share one bit timing; the redundancy management
+//! block (main FSM of Table 1, one auxiliary FSM per channel, bit tick), the TX
+//! buffer, the RX FIFO with duplicate removal and the Wishbone register block
+//! complete it. Ports (contract §1): clock/reset, Wishbone slave, irq, CAN pins,
+//! the paper's probes, the channel probes.
+
+use crate::channel::bsp::field::Field;
+use crate::channel::can_channel::CanChannel;
+use crate::host::wishbone::WbRegs;
+use crate::memory::dedup::RxWriter;
+use crate::memory::rx_fifo::RxFifo;
+use crate::memory::tx_buffer::TxBuffer;
+use crate::rmb::aux_fsm::AuxFsm;
+use crate::rmb::bit_tick::BitTick;
+use crate::rmb::main_fsm::MainFsm;
+use rust_hdl::prelude::*;
+
+/// The DRCC top.
+#[derive(LogicBlock, Default)]
+pub struct Drcc {
+    // clock and reset
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // Wishbone B4 classic slave
+    pub wb_cyc_i: Signal<In, Bit>,
+    pub wb_stb_i: Signal<In, Bit>,
+    pub wb_we_i: Signal<In, Bit>,
+    pub wb_adr_i: Signal<In, Bits<6>>,
+    pub wb_dat_i: Signal<In, Bits<32>>,
+    pub wb_dat_o: Signal<Out, Bits<32>>,
+    pub wb_ack_o: Signal<Out, Bit>,
+    pub irq: Signal<Out, Bit>,
+    // CAN pins (1 = recessive)
+    pub chan_a_tx: Signal<Out, Bit>,
+    pub chan_a_rx: Signal<In, Bit>,
+    pub chan_b_tx: Signal<Out, Bit>,
+    pub chan_b_rx: Signal<In, Bit>,
+    // paper probes (Table 1, DESIGN.md)
+    pub state: Signal<Out, Bits<4>>,
+    pub tx_channel: Signal<Out, Bit>,
+    pub transmission_ack: Signal<Out, Bit>,
+    pub chan_a_transmission_req: Signal<Out, Bit>,
+    pub chan_b_transmission_req: Signal<Out, Bit>,
+    pub tx_success: Signal<Out, Bit>,
+    pub tx_ok_channel: Signal<Out, Bits<2>>,
+    pub tx_failure: Signal<Out, Bit>,
+    pub tx_failure_channel: Signal<Out, Bits<2>>,
+    pub tx_going_on: Signal<Out, Bit>,
+    pub chan_a_bsp_tx_err_cnt: Signal<Out, Bits<9>>,
+    pub chan_a_bsp_node_error_passive: Signal<Out, Bit>,
+    pub chan_b_bsp_tx_err_cnt: Signal<Out, Bits<9>>,
+    pub chan_b_bsp_node_error_passive: Signal<Out, Bit>,
+    // other probes
+    pub aux_a_state: Signal<Out, Bits<2>>,
+    pub aux_b_state: Signal<Out, Bits<2>>,
+    pub chan_a_sample_point: Signal<Out, Bit>,
+    pub chan_b_sample_point: Signal<Out, Bit>,
+    pub chan_a_field: Signal<Out, Field>,
+    pub chan_b_field: Signal<Out, Field>,
+    pub chan_a_rec: Signal<Out, Bits<8>>,
+    pub chan_b_rec: Signal<Out, Bits<8>>,
+    pub chan_a_err_state: Signal<Out, Bits<2>>,
+    pub chan_b_err_state: Signal<Out, Bits<2>>,
+    // blocks
+    regs: WbRegs,
+    ticker: BitTick,
+    main: MainFsm,
+    aux_a: AuxFsm,
+    aux_b: AuxFsm,
+    txbuf: TxBuffer,
+    rxfifo: RxFifo,
+    rxw: RxWriter,
+    chan_a: CanChannel,
+    chan_b: CanChannel,
+    // glue
+    clear: Signal<Local, Bit>,
+    rmb_hold: Signal<Local, Bit>,
+}
+
+impl Logic for Drcc {
+    #[hdl_gen]
+    fn update(&mut self) {
+        // reset mode empties the queues and the FIFO; the RMB runs in redundancy
+        // mode only
+        self.clear.next = self.rst.val() | self.regs.reset_mode.val();
+        self.rmb_hold.next =
+            self.rst.val() | self.regs.reset_mode.val() | !self.regs.redundancy.val();
+
+        // ---- register block ----
+        self.regs.clk.next = self.clk.val();
+        self.regs.rst.next = self.rst.val();
+        self.regs.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.regs.wb_stb_i.next = self.wb_stb_i.val();
+        self.regs.wb_we_i.next = self.wb_we_i.val();
+        self.regs.wb_adr_i.next = self.wb_adr_i.val();
+        self.regs.wb_dat_i.next = self.wb_dat_i.val();
+        self.regs.state.next = self.main.state.val();
+        self.regs.tx_channel.next = self.main.tx_channel.val();
+        self.regs.tx_going_on.next = self.main.tx_going_on.val();
+        self.regs.aux_a_state.next = self.aux_a.aux_state.val();
+        self.regs.aux_b_state.next = self.aux_b.aux_state.val();
+        self.regs.es_a.next = self.chan_a.err_state.val();
+        self.regs.es_b.next = self.chan_b.err_state.val();
+        self.regs.txq_a.next = self.txbuf.count_a.val();
+        self.regs.txq_b.next = self.txbuf.count_b.val();
+        self.regs.rx_count.next = self.rxfifo.count.val();
+        self.regs.tec_a.next = self.chan_a.tec.val();
+        self.regs.rec_a.next = self.chan_a.rec.val();
+        self.regs.ew_a.next = self.chan_a.err_warning.val();
+        self.regs.tec_b.next = self.chan_b.tec.val();
+        self.regs.rec_b.next = self.chan_b.rec.val();
+        self.regs.ew_b.next = self.chan_b.err_warning.val();
+        self.regs.causes_a.next = self.aux_a.causes.val();
+        self.regs.fail_cnt_a.next = self.aux_a.fail_cnt.val();
+        self.regs.failures_a.next = self.aux_a.failures.val();
+        self.regs.recoveries_a.next = self.aux_a.recoveries.val();
+        self.regs.causes_b.next = self.aux_b.causes.val();
+        self.regs.fail_cnt_b.next = self.aux_b.fail_cnt.val();
+        self.regs.failures_b.next = self.aux_b.failures.val();
+        self.regs.recoveries_b.next = self.aux_b.recoveries.val();
+        self.regs.rx_head.next = self.rxfifo.rd_data.val();
+        self.regs.duplicates.next = self.rxw.duplicates.val();
+        self.regs.overruns.next = self.rxw.overruns.val();
+        self.regs.last_tx_time.next = self.main.last_tx_time.val();
+        self.regs.switch_time.next = self.main.switch_time.val();
+        self.regs.ev_rx.next = self.rxw.rx_evt.val();
+        self.regs.ev_tx_done.next = self.txbuf.done_evt.val() | self.main.success_evt.val();
+        self.regs.ev_switch.next = self.main.switch_evt.val();
+        self.regs.ev_overrun.next = self.rxw.overrun_evt.val();
+        self.regs.ev_tx_failure.next = self.txbuf.failed_evt.val() | self.main.fail_evt.val();
+        self.regs.ev_aux.next = self.aux_a.fail_evt.val()
+            | self.aux_a.recover_evt.val()
+            | self.aux_b.fail_evt.val()
+            | self.aux_b.recover_evt.val();
+        self.regs.ev_recover_a.next = self.aux_a.recover_evt.val();
+        self.regs.ev_recover_b.next = self.aux_b.recover_evt.val();
+        self.wb_dat_o.next = self.regs.wb_dat_o.val();
+        self.wb_ack_o.next = self.regs.wb_ack_o.val();
+        self.irq.next = self.regs.irq.val();
+
+        // ---- bit tick ----
+        self.ticker.clk.next = self.clk.val();
+        self.ticker.hold.next = self.clear.val();
+        self.ticker.brp.next = self.regs.brp.val();
+        self.ticker.tseg1.next = self.regs.tseg1.val();
+        self.ticker.tseg2.next = self.regs.tseg2.val();
+
+        // ---- main FSM (Table 1) ----
+        self.main.clk.next = self.clk.val();
+        self.main.rst.next = self.rst.val();
+        self.main.hold.next = self.rmb_hold.val();
+        self.main.dual_tx.next = self.regs.dual_tx.val();
+        self.main.queued.next = self.txbuf.count_a.val().any();
+        self.main.valid_a.next = self.aux_a.valid.val();
+        self.main.valid_b.next = self.aux_b.valid.val();
+        self.main.pending_a.next = self.chan_a.tx_pending.val();
+        self.main.pending_b.next = self.chan_b.tx_pending.val();
+        self.main.done_a.next = self.chan_a.tx_done.val();
+        self.main.done_b.next = self.chan_b.tx_done.val();
+        self.main.failed_a.next = self.chan_a.tx_failed.val();
+        self.main.failed_b.next = self.chan_b.tx_failed.val();
+        self.main.tick.next = self.ticker.tick.val();
+
+        // ---- auxiliary FSMs ----
+        self.aux_a.clk.next = self.clk.val();
+        self.aux_a.rst.next = self.rst.val();
+        self.aux_a.hold.next = self.rmb_hold.val();
+        self.aux_a.policy.next = self.regs.policy.val();
+        self.aux_a.k.next = self.regs.k.val();
+        self.aux_a.stall_limit.next = self.regs.stall_limit.val();
+        self.aux_a.recovery_bits.next = self.regs.recovery_bits.val();
+        self.aux_a.tick.next = self.ticker.tick.val();
+        self.aux_a.in_use.next = self.main.in_use_a.val();
+        self.aux_a.err_valid.next = self.chan_a.err_valid.val();
+        self.aux_a.err_tx.next = self.chan_a.err_tx.val();
+        self.aux_a.tx_done.next = self.chan_a.tx_done.val();
+        self.aux_a.tx_pending.next = self.chan_a.tx_pending.val();
+        self.aux_a.err_state.next = self.chan_a.err_state.val();
+        self.aux_a.sample_point.next = self.chan_a.sample_point.val();
+        self.aux_b.clk.next = self.clk.val();
+        self.aux_b.rst.next = self.rst.val();
+        self.aux_b.hold.next = self.rmb_hold.val();
+        self.aux_b.policy.next = self.regs.policy.val();
+        self.aux_b.k.next = self.regs.k.val();
+        self.aux_b.stall_limit.next = self.regs.stall_limit.val();
+        self.aux_b.recovery_bits.next = self.regs.recovery_bits.val();
+        self.aux_b.tick.next = self.ticker.tick.val();
+        self.aux_b.in_use.next = self.main.in_use_b.val();
+        self.aux_b.err_valid.next = self.chan_b.err_valid.val();
+        self.aux_b.err_tx.next = self.chan_b.err_tx.val();
+        self.aux_b.tx_done.next = self.chan_b.tx_done.val();
+        self.aux_b.tx_pending.next = self.chan_b.tx_pending.val();
+        self.aux_b.err_state.next = self.chan_b.err_state.val();
+        self.aux_b.sample_point.next = self.chan_b.sample_point.val();
+
+        // ---- TX buffer ----
+        self.txbuf.clk.next = self.clk.val();
+        self.txbuf.clear.next = self.clear.val();
+        self.txbuf.redundancy.next = self.regs.redundancy.val();
+        self.txbuf.push.next = self.regs.push.val();
+        self.txbuf.push_q.next = self.regs.push_q.val();
+        self.txbuf.push_frame.next = self.regs.tx_frame.val();
+        self.txbuf.pop_red.next = self.main.pop.val();
+        self.txbuf.done_a.next = self.chan_a.tx_done.val();
+        self.txbuf.failed_a.next = self.chan_a.tx_failed.val();
+        self.txbuf.done_b.next = self.chan_b.tx_done.val();
+        self.txbuf.failed_b.next = self.chan_b.tx_failed.val();
+
+        // ---- RX path ----
+        self.rxfifo.clk.next = self.clk.val();
+        self.rxfifo.clear.next = self.clear.val();
+        self.rxfifo.wr.next = self.rxw.fifo_wr.val();
+        self.rxfifo.wr_data.next = self.rxw.fifo_data.val();
+        self.rxfifo.pop.next = self.regs.pop.val();
+        self.rxw.clk.next = self.clk.val();
+        self.rxw.rst.next = self.rst.val();
+        self.rxw.clear.next = self.clear.val();
+        self.rxw.dedup_on.next = self.regs.redundancy.val() & self.regs.window.val().any();
+        self.rxw.window.next = self.regs.window.val();
+        self.rxw.now.next = self.ticker.now.val();
+        self.rxw.tick.next = self.ticker.tick.val();
+        self.rxw.rxv_a.next = self.chan_a.rx_valid.val();
+        self.rxw.rxv_b.next = self.chan_b.rx_valid.val();
+        self.rxw.frame_a.next = (bit_cast::<99, 1>(self.chan_a.rx_rtr.val().into()) << 98)
+            | (bit_cast::<99, 1>(self.chan_a.rx_ide.val().into()) << 97)
+            | (bit_cast::<99, 29>(self.chan_a.rx_id.val()) << 68)
+            | (bit_cast::<99, 4>(self.chan_a.rx_dlc.val()) << 64)
+            | bit_cast::<99, 64>(self.chan_a.rx_data.val());
+        self.rxw.frame_b.next = (bit_cast::<99, 1>(self.chan_b.rx_rtr.val().into()) << 98)
+            | (bit_cast::<99, 1>(self.chan_b.rx_ide.val().into()) << 97)
+            | (bit_cast::<99, 29>(self.chan_b.rx_id.val()) << 68)
+            | (bit_cast::<99, 4>(self.chan_b.rx_dlc.val()) << 64)
+            | bit_cast::<99, 64>(self.chan_b.rx_data.val());
+        self.rxw.fifo_count.next = self.rxfifo.count.val();
+
+        // ---- channels: shared bit timing, own mode, TX RAM read data ----
+        self.chan_a.clk.next = self.clk.val();
+        self.chan_a.rst.next = self.clear.val() | self.aux_a.chan_rst.val();
+        self.chan_a.cfg_brp.next = self.regs.brp.val();
+        self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
+        self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
+        self.chan_a.cfg_sjw.next = self.regs.sjw.val();
+        self.chan_a.cfg_triple.next = self.regs.triple.val();
+        self.chan_a.cfg_mode.next = self.regs.mode_a.val();
+        self.chan_a.cfg_ewl.next = self.regs.ewl.val();
+        self.chan_a.cfg_single_shot.next =
+            self.regs.single_shot.val() & !self.regs.redundancy.val();
+        self.chan_a.rx.next = self.chan_a_rx.val();
+        self.chan_a.tx_req.next = self.main.req_a.val() | self.txbuf.req_a.val();
+        self.chan_a.tx_abort.next = self.main.abort_a.val();
+        self.chan_a.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
+        self.chan_a.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+        self.chan_a.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+        self.chan_a.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
+        self.chan_a.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        self.chan_b.clk.next = self.clk.val();
+        self.chan_b.rst.next = self.clear.val() | self.aux_b.chan_rst.val();
+        self.chan_b.cfg_brp.next = self.regs.brp.val();
+        self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
+        self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();
+        self.chan_b.cfg_sjw.next = self.regs.sjw.val();
+        self.chan_b.cfg_triple.next = self.regs.triple.val();
+        self.chan_b.cfg_mode.next = self.regs.mode_b.val();
+        self.chan_b.cfg_ewl.next = self.regs.ewl.val();
+        self.chan_b.cfg_single_shot.next =
+            self.regs.single_shot.val() & !self.regs.redundancy.val();
+        self.chan_b.rx.next = self.chan_b_rx.val();
+        self.chan_b.tx_req.next = self.main.req_b.val() | self.txbuf.req_b.val();
+        self.chan_b.tx_abort.next = self.main.abort_b.val();
+        self.chan_b.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
+        self.chan_b.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+        self.chan_b.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+        self.chan_b.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
+        self.chan_b.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        self.chan_a_tx.next = self.chan_a.tx.val();
+        self.chan_b_tx.next = self.chan_b.tx.val();
+
+        // ---- probes ----
+        self.state.next = self.main.state.val();
+        self.tx_channel.next = self.main.tx_channel.val();
+        self.transmission_ack.next = self.main.transmission_ack.val();
+        self.chan_a_transmission_req.next = self.main.req_a.val() | self.txbuf.req_a.val();
+        self.chan_b_transmission_req.next = self.main.req_b.val() | self.txbuf.req_b.val();
+        self.tx_success.next = self.main.tx_success.val();
+        self.tx_ok_channel.next = self.main.tx_ok_channel.val();
+        self.tx_failure.next = self.main.tx_failure.val();
+        self.tx_failure_channel.next = self.main.tx_failure_channel.val();
+        self.tx_going_on.next = self.main.tx_going_on.val();
+        self.chan_a_bsp_tx_err_cnt.next = self.chan_a.tec.val();
+        self.chan_a_bsp_node_error_passive.next = self.chan_a.err_state.val().any();
+        self.chan_b_bsp_tx_err_cnt.next = self.chan_b.tec.val();
+        self.chan_b_bsp_node_error_passive.next = self.chan_b.err_state.val().any();
+        self.aux_a_state.next = self.aux_a.aux_state.val();
+        self.aux_b_state.next = self.aux_b.aux_state.val();
+        self.chan_a_sample_point.next = self.chan_a.sample_point.val();
+        self.chan_b_sample_point.next = self.chan_b.sample_point.val();
+        self.chan_a_field.next = self.chan_a.field.val();
+        self.chan_b_field.next = self.chan_b.field.val();
+        self.chan_a_rec.next = self.chan_a.rec.val();
+        self.chan_b_rec.next = self.chan_b.rec.val();
+        self.chan_a_err_state.next = self.chan_a.err_state.val();
+        self.chan_b_err_state.next = self.chan_b.err_state.val();
+    }
+}

@@ -1,0 +1,643 @@
+//! The DRCC register map (DRCC contract §3, §8, §9): the one source of truth.
+//!
+//! A plain constant table: every register with its word index, access, fields
+//! (bit ranges, reset values, descriptions). The Wishbone register block
+//! (`super::wishbone`) decodes with the index constants below, `markdown()`
+//! generates `docs/registers.md` and `c_header()` generates
+//! `rtl-out/drcc_regs.h` (both written by `drcc generate`, checked by
+//! `drcc generate --check`). A test beside the register block reads every
+//! register after reset and compares it with [`Register::reset_value`].
+
+use std::fmt::Write as _;
+
+/// Host access of a register.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Access {
+    /// Read only: a write is refused and sets `INT_STATUS.illegal`.
+    Ro,
+    /// Read and write.
+    Rw,
+    /// Read, write 1 to clear.
+    W1c,
+    /// Write only (a command): reads 0.
+    Wo,
+}
+
+impl Access {
+    /// The abbreviation used in the documentation.
+    pub fn label(self) -> &'static str {
+        match self {
+            Access::Ro => "RO",
+            Access::Rw => "RW",
+            Access::W1c => "R/W1C",
+            Access::Wo => "WO",
+        }
+    }
+}
+
+/// One field of a register.
+#[derive(Clone, Copy, Debug)]
+pub struct Field {
+    pub name: &'static str,
+    /// Least significant bit.
+    pub lsb: u32,
+    /// Width in bits.
+    pub width: u32,
+    /// Value after `rst`.
+    pub reset: u32,
+    /// Configuration field: writable only in reset mode (contract §9).
+    pub cfg: bool,
+    pub desc: &'static str,
+}
+
+impl Field {
+    /// The field's bits in place.
+    pub const fn mask(&self) -> u32 {
+        (((1u64 << self.width) - 1) << self.lsb) as u32
+    }
+}
+
+/// One 32-bit register.
+#[derive(Clone, Copy, Debug)]
+pub struct Register {
+    pub name: &'static str,
+    /// Word index (`wb_adr_i`); byte offset = 4 x index.
+    pub index: u32,
+    pub access: Access,
+    pub desc: &'static str,
+    pub fields: &'static [Field],
+}
+
+impl Register {
+    /// Byte offset.
+    pub const fn offset(&self) -> u32 {
+        self.index * 4
+    }
+
+    /// Value read right after `rst`.
+    pub fn reset_value(&self) -> u32 {
+        if self.access == Access::Wo {
+            return 0;
+        }
+        self.fields
+            .iter()
+            .fold(0, |acc, f| acc | ((f.reset << f.lsb) & f.mask()))
+    }
+}
+
+// Word indices (the Wishbone decoder uses these).
+pub const ID: u32 = 0;
+pub const CTRL: u32 = 1;
+pub const BTR: u32 = 2;
+pub const RMB_CFG: u32 = 3;
+pub const DEDUP_CFG: u32 = 4;
+pub const STATUS: u32 = 5;
+pub const INT_STATUS: u32 = 6;
+pub const INT_ENABLE: u32 = 7;
+pub const CHAN_A_ERR: u32 = 8;
+pub const CHAN_B_ERR: u32 = 9;
+pub const AUX_A: u32 = 10;
+pub const AUX_B: u32 = 11;
+pub const TX_ID: u32 = 12;
+pub const TX_CTRL: u32 = 13;
+pub const TX_DATA0: u32 = 14;
+pub const TX_DATA1: u32 = 15;
+pub const TX_CMD: u32 = 16;
+pub const RX_ID: u32 = 17;
+pub const RX_CTRL: u32 = 18;
+pub const RX_DATA0: u32 = 19;
+pub const RX_DATA1: u32 = 20;
+pub const RX_CMD: u32 = 21;
+pub const STATS0: u32 = 22;
+pub const STATS1: u32 = 23;
+pub const TIMES: u32 = 24;
+
+/// The constant read from `ID`: "DRCC" in ASCII.
+pub const ID_VALUE: u32 = 0x4452_4343;
+
+const fn f(name: &'static str, lsb: u32, width: u32, reset: u32, desc: &'static str) -> Field {
+    Field {
+        name,
+        lsb,
+        width,
+        reset,
+        cfg: false,
+        desc,
+    }
+}
+
+const fn cfg(name: &'static str, lsb: u32, width: u32, reset: u32, desc: &'static str) -> Field {
+    Field {
+        name,
+        lsb,
+        width,
+        reset,
+        cfg: true,
+        desc,
+    }
+}
+
+const INT_FIELDS: &[Field] = &[
+    f("rx", 0, 1, 0, "a frame was written to the RX FIFO"),
+    f(
+        "tx_done",
+        1,
+        1,
+        0,
+        "a message was sent (normal mode: a channel's tx_done; redundancy mode: with tx_success)",
+    ),
+    f(
+        "switch",
+        2,
+        1,
+        0,
+        "the main FSM switched channel (failover changed)",
+    ),
+    f("err_state", 3, 1, 0, "a channel's error state changed"),
+    f(
+        "overrun",
+        4,
+        1,
+        0,
+        "a received frame was dropped because the RX FIFO was full",
+    ),
+    f(
+        "tx_failure",
+        5,
+        1,
+        0,
+        "a message failed (normal mode: a channel's tx_failed; redundancy mode: with tx_failure)",
+    ),
+    f(
+        "illegal",
+        6,
+        1,
+        0,
+        "an illegal register access was refused (contract §9)",
+    ),
+    f(
+        "aux",
+        7,
+        1,
+        0,
+        "an auxiliary FSM judged a channel failed, or recovered it",
+    ),
+];
+
+const CHAN_ERR_FIELDS: &[Field] = &[
+    f("tec", 0, 9, 0, "transmit error counter"),
+    f("rec", 16, 8, 0, "receive error counter"),
+    f(
+        "err_state",
+        24,
+        2,
+        0,
+        "0 error active, 1 error passive, 2 bus-off",
+    ),
+    f("err_warning", 26, 1, 0, "TEC or REC >= error warning limit"),
+];
+
+const AUX_FIELDS: &[Field] = &[
+    f(
+        "state",
+        0,
+        2,
+        0,
+        "aux FSM state: 0 valid, 1 failed, 2 restart, 3 probation",
+    ),
+    f(
+        "cause_passive",
+        2,
+        1,
+        0,
+        "judged failed because error passive (latched)",
+    ),
+    f(
+        "cause_busoff",
+        3,
+        1,
+        0,
+        "judged failed because bus-off (latched)",
+    ),
+    f(
+        "cause_kfail",
+        4,
+        1,
+        0,
+        "judged failed after k failed attempts (latched)",
+    ),
+    f(
+        "cause_stall",
+        5,
+        1,
+        0,
+        "judged failed because a message stalled (latched)",
+    ),
+    f(
+        "fail_cnt",
+        8,
+        4,
+        0,
+        "failed attempts since the last success (saturating 15)",
+    ),
+    f(
+        "failures",
+        16,
+        8,
+        0,
+        "times judged failed (saturating 255, cleared by rst only)",
+    ),
+    f(
+        "recoveries",
+        24,
+        8,
+        0,
+        "times recovered (saturating 255, cleared by rst only)",
+    ),
+];
+
+/// The register map, in index order.
+pub const REGISTERS: &[Register] = &[
+    Register {
+        name: "ID",
+        index: ID,
+        access: Access::Ro,
+        desc: "Identification constant \"DRCC\"",
+        fields: &[f("id", 0, 32, ID_VALUE, "0x44524343")],
+    },
+    Register {
+        name: "CTRL",
+        index: CTRL,
+        access: Access::Rw,
+        desc: "Control; cfg fields are writable only in reset mode",
+        fields: &[
+            f("reset_mode", 0, 1, 1, "1 = reset mode: channels held in reset, queues and FIFO emptied"),
+            cfg("redundancy", 1, 1, 0, "0 = normal mode (two independent controllers), 1 = redundancy mode"),
+            cfg("policy", 2, 2, 1, "channel failure policy: 0 none, 1 error-passive, 2 k-failed (3 illegal)"),
+            cfg("dual_tx", 4, 1, 0, "redundancy mode: send every message on A, then its copy on B"),
+            cfg("k", 8, 4, 1, "failed attempts for the k-failed policy (1..15; 0 is stored as 1)"),
+            cfg("mode_a", 12, 2, 0, "channel A mode: 0 normal, 1 listen-only, 2 self-test, 3 loop-back"),
+            cfg("mode_b", 14, 2, 0, "channel B mode"),
+            cfg("single_shot", 16, 1, 0, "no automatic retransmission (normal mode only)"),
+        ],
+    },
+    Register {
+        name: "BTR",
+        index: BTR,
+        access: Access::Rw,
+        desc: "Bit timing of both channels (fields carry value - 1); writable only in reset mode",
+        fields: &[
+            cfg("brp", 0, 6, 0, "time quantum = brp + 1 clocks"),
+            cfg("tseg1", 6, 4, 4, "TSEG1 = tseg1 + 1 quanta"),
+            cfg("tseg2", 10, 3, 1, "TSEG2 = tseg2 + 1 quanta"),
+            cfg("sjw", 13, 2, 0, "SJW = sjw + 1 quanta"),
+            cfg("triple", 15, 1, 0, "triple sampling"),
+            cfg("ewl", 16, 8, 96, "error warning limit"),
+        ],
+    },
+    Register {
+        name: "RMB_CFG",
+        index: RMB_CFG,
+        access: Access::Rw,
+        desc: "Redundancy management; writable only in reset mode",
+        fields: &[
+            cfg("recovery_bits", 0, 16, 1024, "error-free bit times before a failed channel is valid again (0 = 1)"),
+            cfg("stall_limit", 16, 16, 0, "bit times a message may stay pending before the channel is judged failed (0 = off)"),
+        ],
+    },
+    Register {
+        name: "DEDUP_CFG",
+        index: DEDUP_CFG,
+        access: Access::Rw,
+        desc: "Duplicate removal (redundancy mode); writable only in reset mode",
+        fields: &[cfg("window", 0, 15, 1024, "window in nominal bit times; 0 = duplicate removal off")],
+    },
+    Register {
+        name: "STATUS",
+        index: STATUS,
+        access: Access::Ro,
+        desc: "Status",
+        fields: &[
+            f("state", 0, 4, 0, "main FSM state (Table 1): idle1 0, wait1 1, ch1 2, abort1 3, wait2 4, idle2 5, wait3 6, ch2 7, abort2 8, wait4 9"),
+            f("tx_channel", 4, 1, 0, "channel in use: 0 A, 1 B"),
+            f("aux_a_state", 5, 2, 0, "aux FSM A state"),
+            f("aux_b_state", 7, 2, 0, "aux FSM B state"),
+            f("err_state_a", 9, 2, 0, "channel A error state"),
+            f("err_state_b", 11, 2, 0, "channel B error state"),
+            f("reset_mode", 13, 1, 1, "CTRL.reset_mode"),
+            f("tx_going_on", 14, 1, 0, "a transmission is in progress (main FSM not idle)"),
+            f("txq_a_count", 16, 4, 0, "TX queue A count (0..8)"),
+            f("txq_b_count", 20, 4, 0, "TX queue B count (0..8)"),
+            f("rx_count", 24, 6, 0, "RX FIFO count (0..32)"),
+        ],
+    },
+    Register {
+        name: "INT_STATUS",
+        index: INT_STATUS,
+        access: Access::W1c,
+        desc: "Interrupt status; write 1 to clear (an event at the same edge wins)",
+        fields: INT_FIELDS,
+    },
+    Register {
+        name: "INT_ENABLE",
+        index: INT_ENABLE,
+        access: Access::Rw,
+        desc: "Interrupt enable: irq = |(INT_STATUS & INT_ENABLE), registered",
+        fields: INT_FIELDS,
+    },
+    Register {
+        name: "CHAN_A_ERR",
+        index: CHAN_A_ERR,
+        access: Access::Ro,
+        desc: "Channel A fault confinement",
+        fields: CHAN_ERR_FIELDS,
+    },
+    Register {
+        name: "CHAN_B_ERR",
+        index: CHAN_B_ERR,
+        access: Access::Ro,
+        desc: "Channel B fault confinement",
+        fields: CHAN_ERR_FIELDS,
+    },
+    Register {
+        name: "AUX_A",
+        index: AUX_A,
+        access: Access::Ro,
+        desc: "Auxiliary FSM of channel A",
+        fields: AUX_FIELDS,
+    },
+    Register {
+        name: "AUX_B",
+        index: AUX_B,
+        access: Access::Ro,
+        desc: "Auxiliary FSM of channel B",
+        fields: AUX_FIELDS,
+    },
+    Register {
+        name: "TX_ID",
+        index: TX_ID,
+        access: Access::Rw,
+        desc: "Staged frame: identifier",
+        fields: &[
+            f("id", 0, 29, 0, "identifier (base frame: id[10:0])"),
+            f("ide", 29, 1, 0, "extended frame"),
+            f("rtr", 30, 1, 0, "remote frame"),
+        ],
+    },
+    Register {
+        name: "TX_CTRL",
+        index: TX_CTRL,
+        access: Access::Rw,
+        desc: "Staged frame: length and queue",
+        fields: &[
+            f("dlc", 0, 4, 0, "data length code"),
+            f("queue", 8, 1, 0, "normal mode: 0 queue A, 1 queue B (ignored in redundancy mode)"),
+        ],
+    },
+    Register {
+        name: "TX_DATA0",
+        index: TX_DATA0,
+        access: Access::Rw,
+        desc: "Staged frame: data bytes 0..3 (byte 0 in [7:0])",
+        fields: &[f("data", 0, 32, 0, "bytes 0..3")],
+    },
+    Register {
+        name: "TX_DATA1",
+        index: TX_DATA1,
+        access: Access::Rw,
+        desc: "Staged frame: data bytes 4..7 (byte 4 in [7:0])",
+        fields: &[f("data", 0, 32, 0, "bytes 4..7")],
+    },
+    Register {
+        name: "TX_CMD",
+        index: TX_CMD,
+        access: Access::Wo,
+        desc: "Transmit command",
+        fields: &[f("push", 0, 1, 0, "append the staged frame to a TX queue (refused in reset mode or when full)")],
+    },
+    Register {
+        name: "RX_ID",
+        index: RX_ID,
+        access: Access::Ro,
+        desc: "Head of the RX FIFO: identifier",
+        fields: &[
+            f("id", 0, 29, 0, "identifier"),
+            f("ide", 29, 1, 0, "extended frame"),
+            f("rtr", 30, 1, 0, "remote frame"),
+            f("not_empty", 31, 1, 0, "the RX FIFO is not empty"),
+        ],
+    },
+    Register {
+        name: "RX_CTRL",
+        index: RX_CTRL,
+        access: Access::Ro,
+        desc: "Head of the RX FIFO: length and channel",
+        fields: &[
+            f("dlc", 0, 4, 0, "data length code as received"),
+            f("channel", 8, 1, 0, "channel the frame came from: 0 A, 1 B"),
+        ],
+    },
+    Register {
+        name: "RX_DATA0",
+        index: RX_DATA0,
+        access: Access::Ro,
+        desc: "Head of the RX FIFO: data bytes 0..3 (byte 0 in [7:0])",
+        fields: &[f("data", 0, 32, 0, "bytes 0..3")],
+    },
+    Register {
+        name: "RX_DATA1",
+        index: RX_DATA1,
+        access: Access::Ro,
+        desc: "Head of the RX FIFO: data bytes 4..7 (byte 4 in [7:0])",
+        fields: &[f("data", 0, 32, 0, "bytes 4..7")],
+    },
+    Register {
+        name: "RX_CMD",
+        index: RX_CMD,
+        access: Access::Wo,
+        desc: "Receive command",
+        fields: &[f("pop", 0, 1, 0, "remove the head of the RX FIFO (refused when empty)")],
+    },
+    Register {
+        name: "STATS0",
+        index: STATS0,
+        access: Access::Ro,
+        desc: "Receive statistics (saturating, cleared by rst only)",
+        fields: &[
+            f("duplicates", 0, 16, 0, "duplicates dropped"),
+            f("overruns", 16, 16, 0, "frames dropped because the RX FIFO was full"),
+        ],
+    },
+    Register {
+        name: "STATS1",
+        index: STATS1,
+        access: Access::Ro,
+        desc: "Redundancy statistics (saturating, cleared by rst only)",
+        fields: &[
+            f("switches", 0, 16, 0, "channel switches"),
+            f("recoveries", 16, 16, 0, "channel recoveries (both channels)"),
+        ],
+    },
+    Register {
+        name: "TIMES",
+        index: TIMES,
+        access: Access::Ro,
+        desc: "Redundancy timing in nominal bit times (saturating, cleared by rst only)",
+        fields: &[
+            f("last_tx_time", 0, 16, 0, "bit times from the first request to the delivery of the last message"),
+            f("switch_time", 16, 16, 0, "bit times from the first request to the failover of the last switch"),
+        ],
+    },
+];
+
+/// Main FSM state encodings (paper Table 1), for the header.
+pub const MAIN_STATES: &[(&str, u32)] = &[
+    ("IDLE1", 0),
+    ("WAIT1", 1),
+    ("CH1", 2),
+    ("ABORT1", 3),
+    ("WAIT2", 4),
+    ("IDLE2", 5),
+    ("WAIT3", 6),
+    ("CH2", 7),
+    ("ABORT2", 8),
+    ("WAIT4", 9),
+];
+
+/// Auxiliary FSM state encodings, for the header.
+pub const AUX_STATES: &[(&str, u32)] = &[
+    ("VALID", 0),
+    ("FAILED", 1),
+    ("RESTART", 2),
+    ("PROBATION", 3),
+];
+
+/// The register named `name`.
+pub fn register(name: &str) -> Option<&'static Register> {
+    REGISTERS.iter().find(|r| r.name == name)
+}
+
+fn bits(f: &Field) -> String {
+    if f.width == 1 {
+        format!("[{}]", f.lsb)
+    } else {
+        format!("[{}:{}]", f.lsb + f.width - 1, f.lsb)
+    }
+}
+
+/// `docs/registers.md`.
+pub fn markdown() -> String {
+    let mut s = String::new();
+    s.push_str("# DRCC register map\n\n");
+    s.push_str(
+        "Generated by `drcc generate` from `hdl/src/host/registers.rs` (the one source of \
+         truth); do not edit. Behaviour: `cosim/src/model/drcc_contract.md` §2, §3, §8, §9.\n\n",
+    );
+    s.push_str(
+        "Wishbone B4 classic slave, 32-bit words, `wb_adr_i` is the word index (byte offset = \
+         4 x index). Every access takes two clocks (request, ack). Unmapped addresses read 0; a \
+         write to a read-only or unmapped address, a cfg field written outside reset mode, a \
+         refused push or pop sets `INT_STATUS.illegal`.\n\n",
+    );
+    s.push_str(
+        "| index | offset | name | access | reset | description |\n|---|---|---|---|---|---|\n",
+    );
+    for r in REGISTERS {
+        let _ = writeln!(
+            s,
+            "| {} | 0x{:02X} | [`{}`](#{}) | {} | 0x{:08X} | {} |",
+            r.index,
+            r.offset(),
+            r.name,
+            r.name.to_lowercase(),
+            r.access.label(),
+            r.reset_value(),
+            r.desc
+        );
+    }
+    for r in REGISTERS {
+        let _ = write!(
+            s,
+            "\n## {}\n\nIndex {}, offset 0x{:02X}, {}, reset 0x{:08X}. {}.\n\n",
+            r.name,
+            r.index,
+            r.offset(),
+            r.access.label(),
+            r.reset_value(),
+            r.desc
+        );
+        s.push_str("| bits | field | reset | description |\n|---|---|---|---|\n");
+        for fl in r.fields {
+            let _ = writeln!(
+                s,
+                "| {} | `{}` | {} | {}{} |",
+                bits(fl),
+                fl.name,
+                if fl.width > 8 {
+                    format!("0x{:X}", fl.reset)
+                } else {
+                    fl.reset.to_string()
+                },
+                if fl.cfg { "(cfg) " } else { "" },
+                fl.desc
+            );
+        }
+    }
+    s
+}
+
+/// `rtl-out/drcc_regs.h`.
+pub fn c_header() -> String {
+    let mut s = String::new();
+    s.push_str(
+        "/* drcc_regs.h: DRCC register map. Generated by `drcc generate` from\n \
+         * hdl/src/host/registers.rs; do not edit. Offsets are byte offsets. */\n\
+         #ifndef DRCC_REGS_H\n#define DRCC_REGS_H\n\n",
+    );
+    let _ = writeln!(s, "#define DRCC_ID_VALUE 0x{ID_VALUE:08X}u\n");
+    for r in REGISTERS {
+        let reg = r.name;
+        let _ = writeln!(s, "/* {reg}: {} ({}) */", r.desc, r.access.label());
+        let _ = writeln!(s, "#define DRCC_{reg}_OFFSET 0x{:02X}u", r.offset());
+        let _ = writeln!(s, "#define DRCC_{reg}_INDEX {}u", r.index);
+        let _ = writeln!(s, "#define DRCC_{reg}_RESET 0x{:08X}u", r.reset_value());
+        for fl in r.fields {
+            let fname = fl.name.to_uppercase();
+            let _ = writeln!(s, "#define DRCC_{reg}_{fname}_SHIFT {}u", fl.lsb);
+            let _ = writeln!(s, "#define DRCC_{reg}_{fname}_MASK 0x{:08X}u", fl.mask());
+        }
+        s.push('\n');
+    }
+    for (n, v) in MAIN_STATES {
+        let _ = writeln!(s, "#define DRCC_STATE_{n} {v}u");
+    }
+    for (n, v) in AUX_STATES {
+        let _ = writeln!(s, "#define DRCC_AUX_{n} {v}u");
+    }
+    s.push_str("\n#endif /* DRCC_REGS_H */\n");
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_is_consistent() {
+        for (i, r) in REGISTERS.iter().enumerate() {
+            assert_eq!(r.index as usize, i, "{} is out of order", r.name);
+            let mut used = 0u32;
+            for fl in r.fields {
+                assert!(fl.lsb + fl.width <= 32, "{}.{}", r.name, fl.name);
+                assert_eq!(used & fl.mask(), 0, "{}.{} overlaps", r.name, fl.name);
+                assert!(fl.width == 32 || fl.reset < (1 << fl.width));
+                used |= fl.mask();
+            }
+        }
+        assert_eq!(register("CTRL").unwrap().reset_value(), 0x0000_0105);
+        assert_eq!(register("BTR").unwrap().reset_value(), 0x0060_0500);
+        let h = c_header();
+        assert!(h.contains("#define DRCC_BTR_EWL_MASK 0x00FF0000u"));
+        assert!(markdown().contains("| 24 | 0x60 | [`TIMES`]"));
+    }
+}

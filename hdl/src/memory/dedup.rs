@@ -1,0 +1,332 @@
+//! Receive writer and duplicate removal (DRCC contract §7). Each channel's
+//! `rx_valid` pulse sets `rxp_a` / `rxp_b`; the writer FSM (`w_state`: idle 0,
+//! scan 1, decide 2, write 3) takes A before B, and in redundancy mode with a
+//! non-zero window scans the 8-entry history (a synchronous RAM of 8 x 116 bits:
+//! [115:17] frame, [16] channel, [15:0] timestamp `now`) for an identical frame
+//! delivered from the other channel at most `window` bit times earlier that has
+//! not already cancelled a copy; such a frame is dropped as a duplicate.
+//! Otherwise the frame is written to the RX FIFO (or counted as an overrun when
+//! the FIFO is full) and recorded in the history.
+//!
+//! scan (9 clocks, `scan_i` 0..8): history read address = `scan_i[2:0]`; at the
+//! edge with `scan_i = i >= 1` the read data is entry `i - 1`.
+
+use rust_hdl::prelude::*;
+
+/// Receive writer with the duplicate-removal history.
+#[derive(LogicBlock)]
+pub struct RxWriter {
+    // clock, reset (statistics) and clear (rst or reset mode)
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub clear: Signal<In, Bit>,
+    // configuration and time
+    pub dedup_on: Signal<In, Bit>,
+    pub window: Signal<In, Bits<15>>,
+    pub now: Signal<In, Bits<16>>,
+    pub tick: Signal<In, Bit>,
+    // channels: rx_valid pulses and the held received frames
+    pub rxv_a: Signal<In, Bit>,
+    pub rxv_b: Signal<In, Bit>,
+    pub frame_a: Signal<In, Bits<99>>,
+    pub frame_b: Signal<In, Bits<99>>,
+    // RX FIFO
+    pub fifo_count: Signal<In, Bits<6>>,
+    pub fifo_wr: Signal<Out, Bit>,
+    pub fifo_data: Signal<Out, Bits<100>>,
+    // events and statistics
+    pub rx_evt: Signal<Out, Bit>,
+    pub overrun_evt: Signal<Out, Bit>,
+    pub duplicates: Signal<Out, Bits<16>>,
+    pub overruns: Signal<Out, Bits<16>>,
+    // history
+    hist: RAM<Bits<116>, 3>,
+    // registers
+    w_state: DFF<Bits<2>>,
+    rxp_a: DFF<Bit>,
+    rxp_b: DFF<Bit>,
+    sel: DFF<Bit>,
+    scan_i: DFF<Bits<4>>,
+    hit: DFF<Bit>,
+    hit_e: DFF<Bits<3>>,
+    hist_ptr: DFF<Bits<3>>,
+    hist_idle: DFF<Bits<15>>,
+    hv: DFF<Bits<8>>,
+    hu: DFF<Bits<8>>,
+    dups_q: DFF<Bits<16>>,
+    overruns_q: DFF<Bits<16>>,
+    // judgement of the history entry being read
+    frame_sel: Signal<Local, Bits<99>>,
+    scan_e: Signal<Local, Bits<3>>,
+    e_mask: Signal<Local, Bits<8>>,
+    e_ts: Signal<Local, Bits<16>>,
+    e_age: Signal<Local, Bits<16>>,
+    e_ch: Signal<Local, Bit>,
+    e_frame: Signal<Local, Bits<99>>,
+    e_hv: Signal<Local, Bit>,
+    e_hu: Signal<Local, Bit>,
+    hit_mask: Signal<Local, Bits<8>>,
+    ptr_mask: Signal<Local, Bits<8>>,
+    fifo_full: Signal<Local, Bit>,
+    // constants
+    s_idle: Constant<Bits<2>>,
+    s_scan: Constant<Bits<2>>,
+    s_decide: Constant<Bits<2>>,
+    s_write: Constant<Bits<2>>,
+    zero3: Constant<Bits<3>>,
+    one3: Constant<Bits<3>>,
+    zero4: Constant<Bits<4>>,
+    one4: Constant<Bits<4>>,
+    eight4: Constant<Bits<4>>,
+    full6: Constant<Bits<6>>,
+    zero8: Constant<Bits<8>>,
+    one8: Constant<Bits<8>>,
+    zero15: Constant<Bits<15>>,
+    one15: Constant<Bits<15>>,
+    max15: Constant<Bits<15>>,
+    zero16: Constant<Bits<16>>,
+    one16: Constant<Bits<16>>,
+    max16: Constant<Bits<16>>,
+}
+
+impl Default for RxWriter {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            clear: Default::default(),
+            dedup_on: Default::default(),
+            window: Default::default(),
+            now: Default::default(),
+            tick: Default::default(),
+            rxv_a: Default::default(),
+            rxv_b: Default::default(),
+            frame_a: Default::default(),
+            frame_b: Default::default(),
+            fifo_count: Default::default(),
+            fifo_wr: Default::default(),
+            fifo_data: Default::default(),
+            rx_evt: Default::default(),
+            overrun_evt: Default::default(),
+            duplicates: Default::default(),
+            overruns: Default::default(),
+            hist: Default::default(),
+            w_state: Default::default(),
+            rxp_a: Default::default(),
+            rxp_b: Default::default(),
+            sel: Default::default(),
+            scan_i: Default::default(),
+            hit: Default::default(),
+            hit_e: Default::default(),
+            hist_ptr: Default::default(),
+            hist_idle: Default::default(),
+            hv: Default::default(),
+            hu: Default::default(),
+            dups_q: Default::default(),
+            overruns_q: Default::default(),
+            frame_sel: Default::default(),
+            scan_e: Default::default(),
+            e_mask: Default::default(),
+            e_ts: Default::default(),
+            e_age: Default::default(),
+            e_ch: Default::default(),
+            e_frame: Default::default(),
+            e_hv: Default::default(),
+            e_hu: Default::default(),
+            hit_mask: Default::default(),
+            ptr_mask: Default::default(),
+            fifo_full: Default::default(),
+            s_idle: Constant::new(0.into()),
+            s_scan: Constant::new(1.into()),
+            s_decide: Constant::new(2.into()),
+            s_write: Constant::new(3.into()),
+            zero3: Constant::new(0.into()),
+            one3: Constant::new(1.into()),
+            zero4: Constant::new(0.into()),
+            one4: Constant::new(1.into()),
+            eight4: Constant::new(8.into()),
+            full6: Constant::new(32.into()),
+            zero8: Constant::new(0.into()),
+            one8: Constant::new(1.into()),
+            zero15: Constant::new(0.into()),
+            one15: Constant::new(1.into()),
+            max15: Constant::new(0x7FFF.into()),
+            zero16: Constant::new(0.into()),
+            one16: Constant::new(1.into()),
+            max16: Constant::new(0xFFFF.into()),
+        }
+    }
+}
+
+impl Logic for RxWriter {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, hist_ptr, hist_idle, hv, hu,
+            dups_q, overruns_q
+        );
+        self.hist.read_clock.next = self.clk.val();
+        self.hist.write_clock.next = self.clk.val();
+
+        // the frame being processed, and the history entry being read
+        if self.sel.q.val() {
+            self.frame_sel.next = self.frame_b.val();
+        } else {
+            self.frame_sel.next = self.frame_a.val();
+        }
+        self.scan_e.next = self.scan_i.q.val().get_bits::<3>(0) - self.one3.val();
+        self.e_mask.next = self.one8.val() << self.scan_e.val();
+        self.hit_mask.next = self.one8.val() << self.hit_e.q.val();
+        self.ptr_mask.next = self.one8.val() << self.hist_ptr.q.val();
+        self.e_ts.next = self.hist.read_data.val().get_bits::<16>(0);
+        self.e_ch.next = self.hist.read_data.val().get_bit(16);
+        self.e_frame.next = self.hist.read_data.val().get_bits::<99>(17);
+        self.e_age.next = self.now.val() - self.e_ts.val();
+        self.e_hv.next = self.hv.q.val().get_bit(self.scan_e.val().index());
+        self.e_hu.next = self.hu.q.val().get_bit(self.scan_e.val().index());
+        self.fifo_full.next = self.fifo_count.val() == self.full6.val();
+
+        self.hist.read_address.next = self.scan_i.q.val().get_bits::<3>(0);
+        self.hist.write_enable.next = false;
+        self.hist.write_address.next = self.hist_ptr.q.val();
+        self.hist.write_data.next = (bit_cast::<116, 99>(self.frame_sel.val()) << 17)
+            | (bit_cast::<116, 1>(self.sel.q.val().into()) << 16)
+            | bit_cast::<116, 16>(self.now.val());
+        self.fifo_wr.next = false;
+        self.fifo_data.next = (bit_cast::<100, 1>(self.sel.q.val().into()) << 99)
+            | bit_cast::<100, 99>(self.frame_sel.val());
+        self.rx_evt.next = false;
+        self.overrun_evt.next = false;
+
+        // defaults
+        self.w_state.d.next = self.w_state.q.val();
+        self.rxp_a.d.next = self.rxp_a.q.val();
+        self.rxp_b.d.next = self.rxp_b.q.val();
+        self.sel.d.next = self.sel.q.val();
+        self.scan_i.d.next = self.scan_i.q.val();
+        self.hit.d.next = self.hit.q.val();
+        self.hit_e.d.next = self.hit_e.q.val();
+        self.hist_ptr.d.next = self.hist_ptr.q.val();
+        self.hv.d.next = self.hv.q.val();
+        self.hu.d.next = self.hu.q.val();
+        self.dups_q.d.next = self.dups_q.q.val();
+        self.overruns_q.d.next = self.overruns_q.q.val();
+        self.hist_idle.d.next = self.hist_idle.q.val();
+        if self.tick.val() & (self.hist_idle.q.val() != self.max15.val()) {
+            self.hist_idle.d.next = self.hist_idle.q.val() + self.one15.val();
+        }
+
+        if self.w_state.q.val() == self.s_idle.val() {
+            if self.rxp_a.q.val() | self.rxp_b.q.val() {
+                if self.rxp_a.q.val() {
+                    self.sel.d.next = false;
+                    self.rxp_a.d.next = false;
+                } else {
+                    self.sel.d.next = true;
+                    self.rxp_b.d.next = false;
+                }
+                self.hist_idle.d.next = self.zero15.val();
+                self.scan_i.d.next = self.zero4.val();
+                self.hit.d.next = false;
+                if self.dedup_on.val() {
+                    self.w_state.d.next = self.s_scan.val();
+                } else {
+                    self.w_state.d.next = self.s_write.val();
+                }
+            }
+        } else if self.w_state.q.val() == self.s_scan.val() {
+            if self.scan_i.q.val() != self.zero4.val() {
+                if self.e_hv.val() & (self.e_age.val() > bit_cast::<16, 15>(self.window.val())) {
+                    // expired
+                    self.hv.d.next = self.hv.q.val() & !self.e_mask.val();
+                } else if self.e_hv.val()
+                    & !self.e_hu.val()
+                    & (self.e_ch.val() != self.sel.q.val())
+                    & (self.e_frame.val() == self.frame_sel.val())
+                    & !self.hit.q.val()
+                {
+                    self.hit.d.next = true;
+                    self.hit_e.d.next = self.scan_e.val();
+                }
+            }
+            self.scan_i.d.next = self.scan_i.q.val() + self.one4.val();
+            if self.scan_i.q.val() == self.eight4.val() {
+                self.w_state.d.next = self.s_decide.val();
+            }
+        } else if self.w_state.q.val() == self.s_decide.val() {
+            if self.hit.q.val() {
+                // duplicate: it cancels the history entry and is dropped
+                self.hu.d.next = self.hu.q.val() | self.hit_mask.val();
+                if self.dups_q.q.val() != self.max16.val() {
+                    self.dups_q.d.next = self.dups_q.q.val() + self.one16.val();
+                }
+                self.w_state.d.next = self.s_idle.val();
+            } else {
+                self.w_state.d.next = self.s_write.val();
+            }
+        } else {
+            // write
+            if self.fifo_full.val() {
+                if self.overruns_q.q.val() != self.max16.val() {
+                    self.overruns_q.d.next = self.overruns_q.q.val() + self.one16.val();
+                }
+                self.overrun_evt.next = true;
+            } else {
+                self.fifo_wr.next = true;
+                self.rx_evt.next = true;
+            }
+            if self.dedup_on.val() {
+                self.hist.write_enable.next = true;
+                self.hv.d.next = self.hv.q.val() | self.ptr_mask.val();
+                self.hu.d.next = self.hu.q.val() & !self.ptr_mask.val();
+                self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one3.val();
+            }
+            self.w_state.d.next = self.s_idle.val();
+        }
+        // a history left idle for 32767 bit times is forgotten, so an entry is
+        // never judged by a wrapped age
+        if self.hist_idle.q.val() == self.max15.val() {
+            self.hv.d.next = self.zero8.val();
+        }
+        // rx_valid pulses (a new pulse wins over the clear above)
+        if self.rxv_a.val() {
+            self.rxp_a.d.next = true;
+        }
+        if self.rxv_b.val() {
+            self.rxp_b.d.next = true;
+        }
+
+        if self.clear.val() {
+            self.w_state.d.next = self.s_idle.val();
+            self.rxp_a.d.next = false;
+            self.rxp_b.d.next = false;
+            self.sel.d.next = false;
+            self.scan_i.d.next = self.zero4.val();
+            self.hit.d.next = false;
+            self.hit_e.d.next = self.zero3.val();
+            self.hist_ptr.d.next = self.zero3.val();
+            self.hist_idle.d.next = self.zero15.val();
+            self.hv.d.next = self.zero8.val();
+            self.hu.d.next = self.zero8.val();
+            self.fifo_wr.next = false;
+            self.rx_evt.next = false;
+            self.overrun_evt.next = false;
+            self.hist.write_enable.next = false;
+            self.dups_q.d.next = self.dups_q.q.val();
+            self.overruns_q.d.next = self.overruns_q.q.val();
+        }
+        if self.rst.val() {
+            self.dups_q.d.next = self.zero16.val();
+            self.overruns_q.d.next = self.zero16.val();
+        }
+        self.duplicates.next = self.dups_q.q.val();
+        self.overruns.next = self.overruns_q.q.val();
+    }
+}
+
+#[test]
+fn rx_writer_synthesizes() {
+    let mut uut = RxWriter::default();
+    uut.connect_all();
+    yosys_validate("rx_writer", &generate_verilog(&uut)).unwrap();
+}

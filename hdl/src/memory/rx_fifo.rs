@@ -1,0 +1,87 @@
+//! RX FIFO (DRCC contract §7): one synchronous RAM of 32 entries x 100 bits
+//! (the 99 frame bits of the channel `rx_*` ports and, in [99], the channel the
+//! frame came from), `head[4:0]`, `count[5:0]`. The read data register is loaded
+//! at every edge from `head`; the RX_* registers read it. The writer (`dedup.rs`)
+//! writes only when not full, the register block pops only when not empty.
+
+use rust_hdl::prelude::*;
+
+/// RX FIFO.
+#[derive(LogicBlock)]
+pub struct RxFifo {
+    // clock and clear (rst or reset mode: emptied)
+    pub clk: Signal<In, Clock>,
+    pub clear: Signal<In, Bit>,
+    // write side (writer FSM) and pop (RX_CMD)
+    pub wr: Signal<In, Bit>,
+    pub wr_data: Signal<In, Bits<100>>,
+    pub pop: Signal<In, Bit>,
+    // outputs
+    pub count: Signal<Out, Bits<6>>,
+    pub rd_data: Signal<Out, Bits<100>>,
+    ram: RAM<Bits<100>, 5>,
+    head: DFF<Bits<5>>,
+    cnt: DFF<Bits<6>>,
+    one5: Constant<Bits<5>>,
+    one6: Constant<Bits<6>>,
+    zero5: Constant<Bits<5>>,
+    zero6: Constant<Bits<6>>,
+}
+
+impl Default for RxFifo {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            clear: Default::default(),
+            wr: Default::default(),
+            wr_data: Default::default(),
+            pop: Default::default(),
+            count: Default::default(),
+            rd_data: Default::default(),
+            ram: Default::default(),
+            head: Default::default(),
+            cnt: Default::default(),
+            one5: Constant::new(1.into()),
+            one6: Constant::new(1.into()),
+            zero5: Constant::new(0.into()),
+            zero6: Constant::new(0.into()),
+        }
+    }
+}
+
+impl Logic for RxFifo {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, head, cnt);
+        self.ram.read_clock.next = self.clk.val();
+        self.ram.write_clock.next = self.clk.val();
+        self.ram.read_address.next = self.head.q.val();
+        self.ram.write_enable.next = self.wr.val();
+        self.ram.write_address.next = self.head.q.val() + self.cnt.q.val().get_bits::<5>(0);
+        self.ram.write_data.next = self.wr_data.val();
+        self.rd_data.next = self.ram.read_data.val();
+
+        self.head.d.next = self.head.q.val();
+        if self.pop.val() {
+            self.head.d.next = self.head.q.val() + self.one5.val();
+        }
+        self.cnt.d.next = self.cnt.q.val();
+        if self.wr.val() & !self.pop.val() {
+            self.cnt.d.next = self.cnt.q.val() + self.one6.val();
+        } else if !self.wr.val() & self.pop.val() {
+            self.cnt.d.next = self.cnt.q.val() - self.one6.val();
+        }
+        if self.clear.val() {
+            self.head.d.next = self.zero5.val();
+            self.cnt.d.next = self.zero6.val();
+        }
+        self.count.next = self.cnt.q.val();
+    }
+}
+
+#[test]
+fn rx_fifo_synthesizes() {
+    let mut uut = RxFifo::default();
+    uut.connect_all();
+    yosys_validate("rx_fifo", &generate_verilog(&uut)).unwrap();
+}

@@ -1,0 +1,226 @@
+//! TX message buffer (DRCC contract §6): one synchronous RAM of 16 frames x 99
+//! bits (id, ide, rtr, dlc, data: the channel's `tx_*` ports), two circular
+//! queues of 8 (queue A = entries 0..7, queue B = 8..15, the queue bit is the
+//! address MSB), and the normal-mode request logic.
+//!
+//! The RAM read data register is loaded at every edge from
+//! `redundancy ? {0, head_a} : {rd_sel, head[rd_sel]}`; `rd_sel` toggles at every
+//! edge in normal mode, so a normal-mode request `req_c` is raised only at an edge
+//! where the read data being loaded is queue c's head. In redundancy mode queue A
+//! is the one logical queue and the main FSM pops it (`pop_red`).
+//! Frame layout (the TX_ID register bits in [98:68]): [98] rtr, [97] ide,
+//! [96:68] id, [67:64] dlc, [63:0] data (byte 0 in [63:56], as the channel ports).
+
+use rust_hdl::prelude::*;
+
+/// TX buffer: RAM, two queues, normal-mode requests.
+#[derive(LogicBlock)]
+pub struct TxBuffer {
+    // clock and clear (rst or reset mode: both queues emptied)
+    pub clk: Signal<In, Clock>,
+    pub clear: Signal<In, Bit>,
+    pub redundancy: Signal<In, Bit>,
+    // push (already accepted by the register block) and the staged frame
+    pub push: Signal<In, Bit>,
+    pub push_q: Signal<In, Bit>,
+    pub push_frame: Signal<In, Bits<99>>,
+    // redundancy mode: the main FSM's finish
+    pub pop_red: Signal<In, Bit>,
+    // channel events
+    pub done_a: Signal<In, Bit>,
+    pub failed_a: Signal<In, Bit>,
+    pub done_b: Signal<In, Bit>,
+    pub failed_b: Signal<In, Bit>,
+    // outputs
+    pub count_a: Signal<Out, Bits<4>>,
+    pub count_b: Signal<Out, Bits<4>>,
+    pub rd_frame: Signal<Out, Bits<99>>,
+    pub req_a: Signal<Out, Bit>,
+    pub req_b: Signal<Out, Bit>,
+    pub done_evt: Signal<Out, Bit>,
+    pub failed_evt: Signal<Out, Bit>,
+    // storage and queue state
+    ram: RAM<Bits<99>, 4>,
+    head_a: DFF<Bits<3>>,
+    head_b: DFF<Bits<3>>,
+    cnt_a: DFF<Bits<4>>,
+    cnt_b: DFF<Bits<4>>,
+    rd_sel: DFF<Bit>,
+    req_a_q: DFF<Bit>,
+    req_b_q: DFF<Bit>,
+    busy_a: DFF<Bit>,
+    busy_b: DFF<Bit>,
+    pop_a: Signal<Local, Bit>,
+    pop_b: Signal<Local, Bit>,
+    push_a: Signal<Local, Bit>,
+    push_b: Signal<Local, Bit>,
+    wr_slot: Signal<Local, Bits<3>>,
+    rd_slot: Signal<Local, Bits<3>>,
+    one3: Constant<Bits<3>>,
+    one4: Constant<Bits<4>>,
+    zero3: Constant<Bits<3>>,
+    zero4: Constant<Bits<4>>,
+}
+
+impl Default for TxBuffer {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            clear: Default::default(),
+            redundancy: Default::default(),
+            push: Default::default(),
+            push_q: Default::default(),
+            push_frame: Default::default(),
+            pop_red: Default::default(),
+            done_a: Default::default(),
+            failed_a: Default::default(),
+            done_b: Default::default(),
+            failed_b: Default::default(),
+            count_a: Default::default(),
+            count_b: Default::default(),
+            rd_frame: Default::default(),
+            req_a: Default::default(),
+            req_b: Default::default(),
+            done_evt: Default::default(),
+            failed_evt: Default::default(),
+            ram: Default::default(),
+            head_a: Default::default(),
+            head_b: Default::default(),
+            cnt_a: Default::default(),
+            cnt_b: Default::default(),
+            rd_sel: Default::default(),
+            req_a_q: Default::default(),
+            req_b_q: Default::default(),
+            busy_a: Default::default(),
+            busy_b: Default::default(),
+            pop_a: Default::default(),
+            pop_b: Default::default(),
+            push_a: Default::default(),
+            push_b: Default::default(),
+            wr_slot: Default::default(),
+            rd_slot: Default::default(),
+            one3: Constant::new(1.into()),
+            one4: Constant::new(1.into()),
+            zero3: Constant::new(0.into()),
+            zero4: Constant::new(0.into()),
+        }
+    }
+}
+
+impl Logic for TxBuffer {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clk, head_a, head_b, cnt_a, cnt_b, rd_sel, req_a_q, req_b_q, busy_a, busy_b
+        );
+        self.ram.read_clock.next = self.clk.val();
+        self.ram.write_clock.next = self.clk.val();
+
+        // pops: redundancy mode by the main FSM, normal mode at each channel
+        // tx_done / tx_failed
+        if self.redundancy.val() {
+            self.pop_a.next = self.pop_red.val();
+            self.pop_b.next = false;
+        } else {
+            self.pop_a.next = self.done_a.val() | self.failed_a.val();
+            self.pop_b.next = self.done_b.val() | self.failed_b.val();
+        }
+        self.push_a.next = self.push.val() & !self.push_q.val();
+        self.push_b.next = self.push.val() & self.push_q.val();
+
+        // write port: the staged frame goes to {q, head + count}
+        if self.push_q.val() {
+            self.wr_slot.next = self.head_b.q.val() + self.cnt_b.q.val().get_bits::<3>(0);
+        } else {
+            self.wr_slot.next = self.head_a.q.val() + self.cnt_a.q.val().get_bits::<3>(0);
+        }
+        self.ram.write_enable.next = self.push.val();
+        self.ram.write_address.next = (bit_cast::<4, 1>(self.push_q.val().into()) << 3)
+            | bit_cast::<4, 3>(self.wr_slot.val());
+        self.ram.write_data.next = self.push_frame.val();
+
+        // read port: {0, head_a} in redundancy mode, else {rd_sel, head[rd_sel]}
+        if self.rd_sel.q.val() {
+            self.rd_slot.next = self.head_b.q.val();
+        } else {
+            self.rd_slot.next = self.head_a.q.val();
+        }
+        if self.redundancy.val() {
+            self.ram.read_address.next = bit_cast::<4, 3>(self.head_a.q.val());
+        } else {
+            self.ram.read_address.next = (bit_cast::<4, 1>(self.rd_sel.q.val().into()) << 3)
+                | bit_cast::<4, 3>(self.rd_slot.val());
+        }
+        self.rd_frame.next = self.ram.read_data.val();
+
+        // queue pointers
+        self.head_a.d.next = self.head_a.q.val();
+        self.head_b.d.next = self.head_b.q.val();
+        if self.pop_a.val() {
+            self.head_a.d.next = self.head_a.q.val() + self.one3.val();
+        }
+        if self.pop_b.val() {
+            self.head_b.d.next = self.head_b.q.val() + self.one3.val();
+        }
+        self.cnt_a.d.next = self.cnt_a.q.val();
+        if self.push_a.val() & !self.pop_a.val() {
+            self.cnt_a.d.next = self.cnt_a.q.val() + self.one4.val();
+        } else if !self.push_a.val() & self.pop_a.val() {
+            self.cnt_a.d.next = self.cnt_a.q.val() - self.one4.val();
+        }
+        self.cnt_b.d.next = self.cnt_b.q.val();
+        if self.push_b.val() & !self.pop_b.val() {
+            self.cnt_b.d.next = self.cnt_b.q.val() + self.one4.val();
+        } else if !self.push_b.val() & self.pop_b.val() {
+            self.cnt_b.d.next = self.cnt_b.q.val() - self.one4.val();
+        }
+
+        // normal mode: req_c <= (rd_sel == c) && count_c > 0 && !busy_c && !req_c
+        self.rd_sel.d.next = !self.rd_sel.q.val() & !self.redundancy.val();
+        self.req_a_q.d.next = !self.redundancy.val()
+            & !self.rd_sel.q.val()
+            & (self.cnt_a.q.val() != self.zero4.val())
+            & !self.busy_a.q.val()
+            & !self.req_a_q.q.val();
+        self.req_b_q.d.next = !self.redundancy.val()
+            & self.rd_sel.q.val()
+            & (self.cnt_b.q.val() != self.zero4.val())
+            & !self.busy_b.q.val()
+            & !self.req_b_q.q.val();
+        self.busy_a.d.next = self.busy_a.q.val() | self.req_a_q.d.val();
+        self.busy_b.d.next = self.busy_b.q.val() | self.req_b_q.d.val();
+        if !self.redundancy.val() & (self.done_a.val() | self.failed_a.val()) {
+            self.busy_a.d.next = false;
+        }
+        if !self.redundancy.val() & (self.done_b.val() | self.failed_b.val()) {
+            self.busy_b.d.next = false;
+        }
+        self.done_evt.next = !self.redundancy.val() & (self.done_a.val() | self.done_b.val());
+        self.failed_evt.next = !self.redundancy.val() & (self.failed_a.val() | self.failed_b.val());
+
+        if self.clear.val() {
+            self.head_a.d.next = self.zero3.val();
+            self.head_b.d.next = self.zero3.val();
+            self.cnt_a.d.next = self.zero4.val();
+            self.cnt_b.d.next = self.zero4.val();
+            self.rd_sel.d.next = false;
+            self.req_a_q.d.next = false;
+            self.req_b_q.d.next = false;
+            self.busy_a.d.next = false;
+            self.busy_b.d.next = false;
+            self.done_evt.next = false;
+            self.failed_evt.next = false;
+        }
+        self.count_a.next = self.cnt_a.q.val();
+        self.count_b.next = self.cnt_b.q.val();
+        self.req_a.next = self.req_a_q.q.val();
+        self.req_b.next = self.req_b_q.q.val();
+    }
+}
+
+#[test]
+fn tx_buffer_synthesizes() {
+    let mut uut = TxBuffer::default();
+    uut.connect_all();
+    yosys_validate("tx_buffer", &generate_verilog(&uut)).unwrap();
+}

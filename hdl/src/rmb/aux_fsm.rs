@@ -1,0 +1,268 @@
+//! Auxiliary FSM of one channel ("channel validity", DRCC contract §5; the
+//! paper's auxiliary FSMs of section III). States (`aux_state[1:0]`): valid 0,
+//! failed 1, restart 2, probation 3.
+//!
+//! - valid -> failed when a cause holds (policy error-passive, bus-off,
+//!   k failed attempts, stall); the cause bits are latched, `failures` counts.
+//! - failed -> restart when the channel is idle and not in use by the main FSM.
+//! - restart -> probation after one clock, during which the channel is reset
+//!   (`chan_rst`: it re-integrates with the bus as after power-up).
+//! - probation -> valid after `recovery_bits` error-free sample points.
+//!
+//! While `hold` (normal or reset mode) it sits in valid with the working counters
+//! and cause bits cleared; `failures` and `recoveries` clear with `rst` only.
+
+use rust_hdl::prelude::*;
+
+/// Auxiliary FSM of one channel.
+#[derive(LogicBlock)]
+pub struct AuxFsm {
+    // clock, reset, hold (rst, normal or reset mode)
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub hold: Signal<In, Bit>,
+    // configuration
+    pub policy: Signal<In, Bits<2>>,
+    pub k: Signal<In, Bits<4>>,
+    pub stall_limit: Signal<In, Bits<16>>,
+    pub recovery_bits: Signal<In, Bits<16>>,
+    // bit tick and main FSM
+    pub tick: Signal<In, Bit>,
+    pub in_use: Signal<In, Bit>,
+    // channel
+    pub err_valid: Signal<In, Bit>,
+    pub err_tx: Signal<In, Bit>,
+    pub tx_done: Signal<In, Bit>,
+    pub tx_pending: Signal<In, Bit>,
+    pub err_state: Signal<In, Bits<2>>,
+    pub sample_point: Signal<In, Bit>,
+    // outputs
+    pub aux_state: Signal<Out, Bits<2>>,
+    pub valid: Signal<Out, Bit>,
+    pub chan_rst: Signal<Out, Bit>,
+    pub causes: Signal<Out, Bits<4>>,
+    pub fail_cnt: Signal<Out, Bits<4>>,
+    pub failures: Signal<Out, Bits<8>>,
+    pub recoveries: Signal<Out, Bits<8>>,
+    pub fail_evt: Signal<Out, Bit>,
+    pub recover_evt: Signal<Out, Bit>,
+    // registers
+    st: DFF<Bits<2>>,
+    fail_q: DFF<Bits<4>>,
+    stall_q: DFF<Bits<16>>,
+    probe_q: DFF<Bits<16>>,
+    causes_q: DFF<Bits<4>>,
+    failures_q: DFF<Bits<8>>,
+    recoveries_q: DFF<Bits<8>>,
+    // judgement
+    c_passive: Signal<Local, Bit>,
+    c_busoff: Signal<Local, Bit>,
+    c_kfail: Signal<Local, Bit>,
+    c_stall: Signal<Local, Bit>,
+    now_causes: Signal<Local, Bits<4>>,
+    rb_eff: Signal<Local, Bits<16>>,
+    // constants
+    s_valid: Constant<Bits<2>>,
+    s_failed: Constant<Bits<2>>,
+    s_restart: Constant<Bits<2>>,
+    s_probation: Constant<Bits<2>>,
+    p_none: Constant<Bits<2>>,
+    p_passive: Constant<Bits<2>>,
+    p_kfail: Constant<Bits<2>>,
+    es_active: Constant<Bits<2>>,
+    es_busoff: Constant<Bits<2>>,
+    one4: Constant<Bits<4>>,
+    zero4: Constant<Bits<4>>,
+    max4: Constant<Bits<4>>,
+    one8: Constant<Bits<8>>,
+    zero8: Constant<Bits<8>>,
+    max8: Constant<Bits<8>>,
+    one16: Constant<Bits<16>>,
+    zero16: Constant<Bits<16>>,
+    max16: Constant<Bits<16>>,
+}
+
+impl Default for AuxFsm {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            hold: Default::default(),
+            policy: Default::default(),
+            k: Default::default(),
+            stall_limit: Default::default(),
+            recovery_bits: Default::default(),
+            tick: Default::default(),
+            in_use: Default::default(),
+            err_valid: Default::default(),
+            err_tx: Default::default(),
+            tx_done: Default::default(),
+            tx_pending: Default::default(),
+            err_state: Default::default(),
+            sample_point: Default::default(),
+            aux_state: Default::default(),
+            valid: Default::default(),
+            chan_rst: Default::default(),
+            causes: Default::default(),
+            fail_cnt: Default::default(),
+            failures: Default::default(),
+            recoveries: Default::default(),
+            fail_evt: Default::default(),
+            recover_evt: Default::default(),
+            st: Default::default(),
+            fail_q: Default::default(),
+            stall_q: Default::default(),
+            probe_q: Default::default(),
+            causes_q: Default::default(),
+            failures_q: Default::default(),
+            recoveries_q: Default::default(),
+            c_passive: Default::default(),
+            c_busoff: Default::default(),
+            c_kfail: Default::default(),
+            c_stall: Default::default(),
+            now_causes: Default::default(),
+            rb_eff: Default::default(),
+            s_valid: Constant::new(0.into()),
+            s_failed: Constant::new(1.into()),
+            s_restart: Constant::new(2.into()),
+            s_probation: Constant::new(3.into()),
+            p_none: Constant::new(0.into()),
+            p_passive: Constant::new(1.into()),
+            p_kfail: Constant::new(2.into()),
+            es_active: Constant::new(0.into()),
+            es_busoff: Constant::new(2.into()),
+            one4: Constant::new(1.into()),
+            zero4: Constant::new(0.into()),
+            max4: Constant::new(15.into()),
+            one8: Constant::new(1.into()),
+            zero8: Constant::new(0.into()),
+            max8: Constant::new(255.into()),
+            one16: Constant::new(1.into()),
+            zero16: Constant::new(0.into()),
+            max16: Constant::new(0xFFFF.into()),
+        }
+    }
+}
+
+impl Logic for AuxFsm {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clk,
+            st,
+            fail_q,
+            stall_q,
+            probe_q,
+            causes_q,
+            failures_q,
+            recoveries_q
+        );
+        self.st.d.next = self.st.q.val();
+        self.probe_q.d.next = self.probe_q.q.val();
+        self.causes_q.d.next = self.causes_q.q.val();
+        self.failures_q.d.next = self.failures_q.q.val();
+        self.recoveries_q.d.next = self.recoveries_q.q.val();
+        self.fail_evt.next = false;
+        self.recover_evt.next = false;
+
+        // fail_cnt: +1 per failed attempt (saturating), 0 at tx_done
+        self.fail_q.d.next = self.fail_q.q.val();
+        if self.err_valid.val() & self.err_tx.val() & (self.fail_q.q.val() != self.max4.val()) {
+            self.fail_q.d.next = self.fail_q.q.val() + self.one4.val();
+        }
+        if self.tx_done.val() {
+            self.fail_q.d.next = self.zero4.val();
+        }
+        // stall_cnt: ticks while pending (saturating), 0 while not pending
+        self.stall_q.d.next = self.stall_q.q.val();
+        if self.tick.val() & (self.stall_q.q.val() != self.max16.val()) {
+            self.stall_q.d.next = self.stall_q.q.val() + self.one16.val();
+        }
+        if !self.tx_pending.val() {
+            self.stall_q.d.next = self.zero16.val();
+        }
+
+        // failure causes, on registered values
+        self.c_passive.next = (self.policy.val() == self.p_passive.val())
+            & (self.err_state.val() != self.es_active.val());
+        self.c_busoff.next = (self.policy.val() != self.p_none.val())
+            & (self.err_state.val() == self.es_busoff.val());
+        self.c_kfail.next =
+            (self.policy.val() == self.p_kfail.val()) & (self.fail_q.q.val() >= self.k.val());
+        self.c_stall.next = (self.policy.val() != self.p_none.val())
+            & (self.stall_limit.val() != self.zero16.val())
+            & (self.stall_q.q.val() >= self.stall_limit.val());
+        self.now_causes.next = bit_cast::<4, 1>(self.c_passive.val().into())
+            | (bit_cast::<4, 1>(self.c_busoff.val().into()) << 1)
+            | (bit_cast::<4, 1>(self.c_kfail.val().into()) << 2)
+            | (bit_cast::<4, 1>(self.c_stall.val().into()) << 3);
+        if self.recovery_bits.val() == self.zero16.val() {
+            self.rb_eff.next = self.one16.val();
+        } else {
+            self.rb_eff.next = self.recovery_bits.val();
+        }
+
+        if self.st.q.val() == self.s_valid.val() {
+            if self.now_causes.val() != self.zero4.val() {
+                self.st.d.next = self.s_failed.val();
+                self.causes_q.d.next = self.causes_q.q.val() | self.now_causes.val();
+                if self.failures_q.q.val() != self.max8.val() {
+                    self.failures_q.d.next = self.failures_q.q.val() + self.one8.val();
+                }
+                self.fail_evt.next = true;
+            }
+        } else if self.st.q.val() == self.s_failed.val() {
+            if !self.tx_pending.val() & !self.in_use.val() {
+                self.st.d.next = self.s_restart.val();
+                self.fail_q.d.next = self.zero4.val();
+            }
+        } else if self.st.q.val() == self.s_restart.val() {
+            self.st.d.next = self.s_probation.val();
+            self.probe_q.d.next = self.zero16.val();
+        } else {
+            // probation
+            if self.err_valid.val() {
+                self.probe_q.d.next = self.zero16.val();
+            } else if self.sample_point.val() {
+                self.probe_q.d.next = self.probe_q.q.val() + self.one16.val();
+            }
+            if self.probe_q.q.val() >= self.rb_eff.val() {
+                self.st.d.next = self.s_valid.val();
+                if self.recoveries_q.q.val() != self.max8.val() {
+                    self.recoveries_q.d.next = self.recoveries_q.q.val() + self.one8.val();
+                }
+                self.recover_evt.next = true;
+            }
+        }
+
+        if self.hold.val() {
+            self.st.d.next = self.s_valid.val();
+            self.fail_q.d.next = self.zero4.val();
+            self.stall_q.d.next = self.zero16.val();
+            self.probe_q.d.next = self.zero16.val();
+            self.causes_q.d.next = self.zero4.val();
+            self.fail_evt.next = false;
+            self.recover_evt.next = false;
+        }
+        if self.rst.val() {
+            self.failures_q.d.next = self.zero8.val();
+            self.recoveries_q.d.next = self.zero8.val();
+        }
+
+        self.aux_state.next = self.st.q.val();
+        self.valid.next = self.st.q.val() == self.s_valid.val();
+        self.chan_rst.next = self.st.q.val() == self.s_restart.val();
+        self.causes.next = self.causes_q.q.val();
+        self.fail_cnt.next = self.fail_q.q.val();
+        self.failures.next = self.failures_q.q.val();
+        self.recoveries.next = self.recoveries_q.q.val();
+    }
+}
+
+#[test]
+fn aux_fsm_synthesizes() {
+    let mut uut = AuxFsm::default();
+    uut.connect_all();
+    yosys_validate("aux_fsm", &generate_verilog(&uut)).unwrap();
+}

@@ -1,0 +1,123 @@
+//! Nominal bit tick and bit-time clock of the redundancy management (DRCC
+//! contract §4.3, §7 `now`): `tick` pulses once every
+//! `(brp+1) * (1 + (tseg1+1) + (tseg2+1))` clocks from the `BTR` fields as written
+//! (not clamped). `tq_cnt` counts 0..brp, `bit_cnt` 0..tq_per_bit-1, both wrap at
+//! `tick`; `tick` is combinational from them. `now` counts ticks (16 bits,
+//! wrapping). Everything is 0 while `hold` (reset mode).
+
+use rust_hdl::prelude::*;
+
+/// Bit tick and `now`.
+#[derive(LogicBlock)]
+pub struct BitTick {
+    // clock and hold (rst or reset mode)
+    pub clk: Signal<In, Clock>,
+    pub hold: Signal<In, Bit>,
+    // BTR fields (value - 1 encodings)
+    pub brp: Signal<In, Bits<6>>,
+    pub tseg1: Signal<In, Bits<4>>,
+    pub tseg2: Signal<In, Bits<3>>,
+    // outputs
+    pub tick: Signal<Out, Bit>,
+    pub now: Signal<Out, Bits<16>>,
+    tq_cnt: DFF<Bits<6>>,
+    bit_cnt: DFF<Bits<5>>,
+    now_q: DFF<Bits<16>>,
+    tq_last: Signal<Local, Bits<5>>,
+    tick_l: Signal<Local, Bit>,
+    one5: Constant<Bits<5>>,
+    two5: Constant<Bits<5>>,
+    one6: Constant<Bits<6>>,
+    one16: Constant<Bits<16>>,
+    zero5: Constant<Bits<5>>,
+    zero6: Constant<Bits<6>>,
+    zero16: Constant<Bits<16>>,
+}
+
+impl Default for BitTick {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            hold: Default::default(),
+            brp: Default::default(),
+            tseg1: Default::default(),
+            tseg2: Default::default(),
+            tick: Default::default(),
+            now: Default::default(),
+            tq_cnt: Default::default(),
+            bit_cnt: Default::default(),
+            now_q: Default::default(),
+            tq_last: Default::default(),
+            tick_l: Default::default(),
+            one5: Constant::new(1.into()),
+            two5: Constant::new(2.into()),
+            one6: Constant::new(1.into()),
+            one16: Constant::new(1.into()),
+            zero5: Constant::new(0.into()),
+            zero6: Constant::new(0.into()),
+            zero16: Constant::new(0.into()),
+        }
+    }
+}
+
+impl Logic for BitTick {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, tq_cnt, bit_cnt, now_q);
+        // last quantum index of a bit: 1 + (tseg1+1) + (tseg2+1) - 1
+        self.tq_last.next = bit_cast::<5, 4>(self.tseg1.val())
+            + bit_cast::<5, 3>(self.tseg2.val())
+            + self.two5.val();
+        self.tick_l.next =
+            (self.tq_cnt.q.val() == self.brp.val()) & (self.bit_cnt.q.val() == self.tq_last.val());
+        self.tq_cnt.d.next = self.tq_cnt.q.val() + self.one6.val();
+        self.bit_cnt.d.next = self.bit_cnt.q.val();
+        self.now_q.d.next = self.now_q.q.val();
+        if self.tq_cnt.q.val() == self.brp.val() {
+            self.tq_cnt.d.next = self.zero6.val();
+            if self.bit_cnt.q.val() == self.tq_last.val() {
+                self.bit_cnt.d.next = self.zero5.val();
+            } else {
+                self.bit_cnt.d.next = self.bit_cnt.q.val() + self.one5.val();
+            }
+        }
+        if self.tick_l.val() {
+            self.now_q.d.next = self.now_q.q.val() + self.one16.val();
+        }
+        if self.hold.val() {
+            self.tq_cnt.d.next = self.zero6.val();
+            self.bit_cnt.d.next = self.zero5.val();
+            self.now_q.d.next = self.zero16.val();
+            self.tick_l.next = false;
+        }
+        self.tick.next = self.tick_l.val();
+        self.now.next = self.now_q.q.val();
+    }
+}
+
+#[test]
+fn bit_tick_period() {
+    let mut uut = BitTick::default();
+    uut.connect_all();
+    uut.clk.next = Clock::from(false);
+    uut.hold.next = true;
+    uut.brp.next = 1.into();
+    uut.tseg1.next = 4.into();
+    uut.tseg2.next = 1.into();
+    assert!(simulate(&mut uut, 100));
+    let mut ticks = vec![];
+    for cycle in 0..100 {
+        uut.hold.next = cycle < 2;
+        uut.clk.next = Clock::from(false);
+        assert!(simulate(&mut uut, 100));
+        if uut.tick.val() {
+            ticks.push(cycle);
+        }
+        uut.clk.next = Clock::from(true);
+        assert!(simulate(&mut uut, 100));
+    }
+    // (1+1) * (1 + 5 + 2) = 16 clocks per bit, first tick 16 clocks after hold.
+    assert_eq!(&ticks[..3], &[17, 33, 49]);
+    assert_eq!(uut.now.val(), Bits::<16>::from(ticks.len() as u64));
+    yosys_validate("bit_tick", &generate_verilog(&uut)).unwrap();
+}

@@ -139,8 +139,7 @@ impl DualScenario {
         traffic.max(fault_end + 1_408 + self.recovery_bits as u64 + 6 * self.period_bits)
     }
 
-    fn faults(&self, sys: &mut DualBusSystem) -> Result<(), String> {
-        let start = self.fault_start_bits * CLOCKS_PER_BIT;
+    fn faults(&self, sys: &mut DualBusSystem, start: u64) -> Result<(), String> {
         let cycles = self.fault_bits * CLOCKS_PER_BIT;
         let f = |target, kind| Fault {
             target,
@@ -235,12 +234,14 @@ pub fn run_dual(
     kind: EngineKind,
     cosim: Option<EngineKind>,
 ) -> Result<DualReport, String> {
-    let build = |k: EngineKind| -> Result<DualBusSystem, String> {
+    let build = |k: EngineKind, fault_start: Option<u64>| -> Result<DualBusSystem, String> {
         let engines = (0..s.nodes)
             .map(|_| drcc_engine(k))
             .collect::<Result<Vec<_>, _>>()?;
         let mut sys = DualBusSystem::new(engines, vec![s.host_config(); s.nodes])?;
-        s.faults(&mut sys)?;
+        if let Some(start) = fault_start {
+            s.faults(&mut sys, start)?;
+        }
         for n in 0..s.nodes {
             for k in 0..s.frames_per_node {
                 // Stagger the hosts so that frames also contend for the bus.
@@ -252,13 +253,34 @@ pub fn run_dual(
         }
         Ok(sys)
     };
-    let mut main = build(kind)?;
+    // The babbling transmitter must hit node 0 while it transmits (else another
+    // node's frame takes the hit): the fault starts at node 0's first SOF on A at
+    // or after `fault_start_bits`, found by running the fault-free prefix (the run
+    // is deterministic up to the fault).
+    let mut start = s.fault_start_bits * CLOCKS_PER_BIT;
+    if s.fault == DualFault::ABusOff {
+        let mut probe = build(EngineKind::Model, None)?;
+        let mut prev = true;
+        loop {
+            probe.step();
+            let tx = probe.node(0).outputs.chan_a_tx;
+            if probe.cycle() > start && prev && !tx {
+                start = probe.cycle();
+                break;
+            }
+            prev = tx;
+            if probe.cycle() > start + 100_000 {
+                return Err("a_bus_off: node 0 never transmitted on line A".into());
+            }
+        }
+    }
+    let mut main = build(kind, Some(start))?;
     let mut other = match cosim {
-        Some(k) => Some(build(k)?),
+        Some(k) => Some(build(k, Some(start))?),
         None => None,
     };
     let total = s.run_bits() * CLOCKS_PER_BIT;
-    let fault_end = (s.fault_start_bits + s.fault_bits) * CLOCKS_PER_BIT;
+    let fault_end = start + s.fault_bits * CLOCKS_PER_BIT;
     let read_during = fault_end.saturating_sub(50 * CLOCKS_PER_BIT);
     let mut report = DualReport {
         scenario: s.fault.name().to_string(),

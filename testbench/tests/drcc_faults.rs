@@ -127,11 +127,12 @@ fn dead_transceiver_on_node_0() {
 fn node_0_channel_a_bus_off() {
     let r = run(DualFault::ABusOff);
     check_failure_and_return(&r, &[0]);
-    // Cause bit [3] of AUX_A: bus-off.
-    assert_ne!(
-        r.aux_a_during[0] & (1 << 3),
-        0,
-        "AUX_A cause bus-off: {:#x}",
-        r.aux_a_during[0]
+    // STATUS[10:9]: channel A error state 2 = bus-off (fault confinement, ISO
+    // 11898-1 12.1.4.2: TEC > 255 after the babbling), read while the fault lasts.
+    assert_eq!(
+        r.status_during[0] >> 9 & 3,
+        2,
+        "node 0 STATUS {:#x}: channel A bus-off",
+        r.status_during[0]
     );
 }

@@ -1,5 +1,5 @@
 //! RX FIFO and duplicate removal (contract §7): the 32 x 100-bit RX RAM with its
-//! registered read port, the writer FSM (idle, scan, decide, write), the 8-entry
+//! registered read port, the writer FSM (idle, scan, decide, write), the 32-entry
 //! history of delivered frames and the `now` / `hist_idle` tick counters.
 
 use crate::frame::Frame;
@@ -12,6 +12,9 @@ pub const W_WRITE: u8 = 3;
 
 /// `hist_idle` saturation value: every history entry is dropped there.
 const HIST_IDLE_MAX: u16 = 32767;
+
+/// History entries (contract §7).
+pub const HIST: usize = 32;
 
 /// What the RX path samples at an edge.
 #[derive(Clone, Copy, Debug, Default)]
@@ -36,7 +39,7 @@ pub struct RxEvents {
     pub overrun: bool,
 }
 
-/// One history entry (RAM 8 x 116: frame, channel, timestamp).
+/// One history entry (RAM 32 x 116: frame, channel, timestamp).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct HistEntry {
     pub frame: Frame,
@@ -60,11 +63,13 @@ pub struct RxPath {
     pub scan_i: u8,
     pub hit: bool,
     pub hit_e: u8,
-    hist: [HistEntry; 8],
+    hist: [HistEntry; HIST],
     /// History RAM read data register.
     hist_rd: HistEntry,
-    pub hv: u8,
-    pub hu: u8,
+    pub hv: u32,
+    pub hu: u32,
+    pub free_found: bool,
+    pub free_e: u8,
     pub hist_ptr: u8,
     pub hist_idle: u16,
     pub now: u16,
@@ -78,7 +83,7 @@ impl RxPath {
     /// reset), every register and statistic clears.
     pub fn reset(&mut self) {
         let rd = self.ram[self.head as usize];
-        let hist_rd = self.hist[(self.scan_i & 7) as usize];
+        let hist_rd = self.hist[(self.scan_i & 31) as usize];
         *self = RxPath {
             ram: self.ram,
             hist: self.hist,
@@ -94,7 +99,7 @@ impl RxPath {
         let c = self.clone_regs();
         // Registered read ports (read-first: the RAM contents before the edge).
         self.rd = self.ram[c.head as usize];
-        self.hist_rd = self.hist[(c.scan_i & 7) as usize];
+        self.hist_rd = self.hist[(c.scan_i & 31) as usize];
         ev.pop_refused = i.pop && c.count == 0;
         self.rx_ready = !i.reset_mode && c.count != 0;
         if i.reset_mode {
@@ -108,6 +113,8 @@ impl RxPath {
             self.hit_e = 0;
             self.hv = 0;
             self.hu = 0;
+            self.free_found = false;
+            self.free_e = 0;
             self.hist_ptr = 0;
             self.hist_idle = 0;
             self.now = 0;
@@ -133,14 +140,20 @@ impl RxPath {
                     self.w_state = if i.dedup_on { W_SCAN } else { W_WRITE };
                     self.scan_i = 0;
                     self.hit = false;
+                    self.free_found = false;
                 }
             }
             W_SCAN => {
                 if c.scan_i >= 1 {
                     let e = c.scan_i - 1;
-                    let bit = 1u8 << e;
+                    let bit = 1u32 << e;
                     let entry = c.hist_rd;
                     let age = c.now.wrapping_sub(entry.ts);
+                    let live = c.hv & bit != 0;
+                    if (!live || c.hu & bit != 0 || age > i.window) && !c.free_found {
+                        self.free_found = true;
+                        self.free_e = e;
+                    }
                     if c.hv & bit != 0 && age > i.window {
                         self.hv &= !bit;
                     } else if c.hv & bit != 0
@@ -154,7 +167,7 @@ impl RxPath {
                     }
                 }
                 self.scan_i = c.scan_i + 1;
-                if c.scan_i == 8 {
+                if c.scan_i == HIST as u8 {
                     self.w_state = W_DECIDE;
                 }
             }
@@ -178,7 +191,11 @@ impl RxPath {
                     ev.rx = true;
                 }
                 if i.dedup_on {
-                    let p = c.hist_ptr & 7;
+                    let p = if c.free_found {
+                        c.free_e
+                    } else {
+                        c.hist_ptr & 31
+                    };
                     self.hist[p as usize] = HistEntry {
                         frame,
                         ch: c.sel,
@@ -186,7 +203,9 @@ impl RxPath {
                     };
                     self.hv |= 1 << p;
                     self.hu &= !(1 << p);
-                    self.hist_ptr = (p + 1) & 7;
+                    if !c.free_found {
+                        self.hist_ptr = (p + 1) & 31;
+                    }
                 }
                 self.w_state = W_IDLE;
             }
@@ -213,6 +232,8 @@ impl RxPath {
             hist_rd: self.hist_rd,
             hv: self.hv,
             hu: self.hu,
+            free_found: self.free_found,
+            free_e: self.free_e,
             hist_ptr: self.hist_ptr,
             hist_idle: self.hist_idle,
             now: self.now,
@@ -233,8 +254,10 @@ struct RxRegs {
     hit: bool,
     hit_e: u8,
     hist_rd: HistEntry,
-    hv: u8,
-    hu: u8,
+    hv: u32,
+    hu: u32,
+    free_found: bool,
+    free_e: u8,
     hist_ptr: u8,
     hist_idle: u16,
     now: u16,

@@ -106,6 +106,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  [7:0] regs__failures_b;
     reg  [7:0] regs__recoveries_b;
     reg  [99:0] regs__rx_head;
+    reg  regs__rx_ready;
     reg  [15:0] regs__duplicates;
     reg  [15:0] regs__overruns;
     reg  [15:0] regs__last_tx_time;
@@ -253,6 +254,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  rxfifo__pop;
     wire  [5:0] rxfifo__count;
     wire  [99:0] rxfifo__rd_data;
+    wire  rxfifo__rx_ready;
     reg  rxw__clk;
     reg  rxw__rst;
     reg  rxw__clear;
@@ -405,6 +407,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .failures_b(regs__failures_b),
         .recoveries_b(regs__recoveries_b),
         .rx_head(regs__rx_head),
+        .rx_ready(regs__rx_ready),
         .duplicates(regs__duplicates),
         .overruns(regs__overruns),
         .last_tx_time(regs__last_tx_time),
@@ -563,7 +566,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .wr_data(rxfifo__wr_data),
         .pop(rxfifo__pop),
         .count(rxfifo__count),
-        .rd_data(rxfifo__rd_data)
+        .rd_data(rxfifo__rd_data),
+        .rx_ready(rxfifo__rx_ready)
     );
     drcc__rxw rxw(
         .clk(rxw__clk),
@@ -718,6 +722,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         regs__failures_b = aux_b__failures;
         regs__recoveries_b = aux_b__recoveries;
         regs__rx_head = rxfifo__rd_data;
+        regs__rx_ready = rxfifo__rx_ready;
         regs__duplicates = rxw__duplicates;
         regs__overruns = rxw__overruns;
         regs__last_tx_time = main__last_tx_time;
@@ -1052,7 +1057,7 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             end
         end
         else if (st__q == s_failed) begin
-            if (~tx_pending & ~in_use) begin
+            if (~tx_pending & ~in_use & (err_state != es_busoff)) begin
                 st__d = s_restart;
                 fail_q__d = zero4;
             end
@@ -1388,7 +1393,7 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             end
         end
         else if (st__q == s_failed) begin
-            if (~tx_pending & ~in_use) begin
+            if (~tx_pending & ~in_use & (err_state != es_busoff)) begin
                 st__d = s_restart;
                 fail_q__d = zero4;
             end
@@ -9560,7 +9565,6 @@ module drcc__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_
                     resend__d = 1'b0;
                     copy__d = 1'b0;
                     last_time_q__d = tx_time__q;
-                    fin_q__d = 1'b1;
                     ok_ch_q__d = ch_a;
                 end
             end
@@ -9588,7 +9592,7 @@ module drcc__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_
             last_time_q__d = zero16;
             switch_time_q__d = zero16;
         end
-        switch_evt = failover__d != failover__q;
+        switch_evt = (failover__d != failover__q) & ~hold;
         success_evt = success_q__d;
         state = st__q;
         tx_channel = st__q >= s_idle2;
@@ -9883,7 +9887,7 @@ module drcc__main__tx_time(d,q,clock);
 endmodule // drcc__main__tx_time
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,state,tx_channel,tx_going_on,aux_a_state,aux_b_state,es_a,es_b,txq_a,txq_b,rx_count,tec_a,rec_a,ew_a,tec_b,rec_b,ew_b,causes_a,fail_cnt_a,failures_a,recoveries_a,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,duplicates,overruns,last_tx_time,switch_time,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,state,tx_channel,tx_going_on,aux_a_state,aux_b_state,es_a,es_b,txq_a,txq_b,rx_count,tec_a,rec_a,ew_a,tec_b,rec_b,ew_b,causes_a,fail_cnt_a,failures_a,recoveries_a,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,last_tx_time,switch_time,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
     
     // Module arguments
     input wire  clk;
@@ -9921,6 +9925,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     input wire  [7:0] failures_b;
     input wire  [7:0] recoveries_b;
     input wire  [99:0] rx_head;
+    input wire  rx_ready;
     input wire  [15:0] duplicates;
     input wire  [15:0] overruns;
     input wire  [15:0] last_tx_time;
@@ -10091,7 +10096,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  cfg_differs;
     reg  [3:0] target_count;
     reg  [7:0] events;
-    reg  rx_nonempty;
     reg  es_evt;
     reg  [31:0] ctrl_val;
     reg  [31:0] status_val;
@@ -10280,7 +10284,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
         wr = taken & wb_we_i;
         wdat = wb_dat_i;
-        rx_nonempty = rx_count != zero6;
         es_evt = (es_a != es_a_prev__q) | (es_b != es_b_prev__q);
         ctrl_val = ((reset_mode_q__q) & 32'hffffffff) | (((redundancy_q__q) & 32'hffffffff) << 32'h1) | (((policy_q__q) & 32'hffffffff) << 32'h2) | (((dual_tx_q__q) & 32'hffffffff) << 32'h4) | (((k_q__q) & 32'hffffffff) << 32'h8) | (((mode_a_q__q) & 32'hffffffff) << 32'hc) | (((mode_b_q__q) & 32'hffffffff) << 32'he) | (((single_shot_q__q) & 32'hffffffff) << 32'h10);
         status_val = ((state) & 32'hffffffff) | (((tx_channel) & 32'hffffffff) << 32'h4) | (((aux_a_state) & 32'hffffffff) << 32'h5) | (((aux_b_state) & 32'hffffffff) << 32'h7) | (((es_a) & 32'hffffffff) << 32'h9) | (((es_b) & 32'hffffffff) << 32'hb) | (((reset_mode_q__q) & 32'hffffffff) << 32'hd) | (((tx_going_on) & 32'hffffffff) << 32'he) | (((txq_a) & 32'hffffffff) << 32'h10) | (((txq_b) & 32'hffffffff) << 32'h14) | (((rx_count) & 32'hffffffff) << 32'h18);
@@ -10336,7 +10339,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
             rdata = tx_data1_q__q;
         end
         else if (wb_adr_i == a_rx_id) begin
-            rdata = ((rx_head[(32'h44)+:(31)]) & 32'hffffffff) | (((rx_nonempty) & 32'hffffffff) << 32'h1f);
+            rdata = ((rx_head[(32'h44)+:(31)]) & 32'hffffffff) | (((rx_ready) & 32'hffffffff) << 32'h1f);
         end
         else if (wb_adr_i == a_rx_ctrl) begin
             rdata = ((rx_head[(32'h40)+:(4)]) & 32'hffffffff) | (((rx_head[32'h63]) & 32'hffffffff) << 32'h8);
@@ -10961,7 +10964,7 @@ module drcc__regs__window_q(d,q,clock);
 endmodule // drcc__regs__window_q
 
 
-module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data);
+module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     
     // Module arguments
     input wire  clk;
@@ -10971,6 +10974,7 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data);
     input wire  pop;
     output reg  [5:0] count;
     output reg  [99:0] rd_data;
+    output reg  rx_ready;
     
     // Constant declarations
     localparam  one5 = 5'b1;
@@ -10992,6 +10996,9 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data);
     reg  [5:0] cnt__d;
     wire  [5:0] cnt__q;
     reg  cnt__clock;
+    reg  ready__d;
+    wire  ready__q;
+    reg  ready__clock;
     
     // Sub module instances
     drcc__rxfifo__ram ram(
@@ -11013,13 +11020,20 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data);
         .q(cnt__q),
         .clock(cnt__clock)
     );
+    drcc__rxfifo__ready ready(
+        .d(ready__d),
+        .q(ready__q),
+        .clock(ready__clock)
+    );
     
     // Update code
     always @(*) begin
         head__clock = clk;
         cnt__clock = clk;
+        ready__clock = clk;
         head__d = head__q;
         cnt__d = cnt__q;
+        ready__d = ready__q;
         ram__read_clock = clk;
         ram__write_clock = clk;
         ram__read_address = head__q;
@@ -11038,11 +11052,14 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data);
         else if (~wr & pop) begin
             cnt__d = cnt__q - one6;
         end
+        ready__d = cnt__q != zero6;
         if (clear) begin
+            ready__d = 1'b0;
             head__d = zero5;
             cnt__d = zero6;
         end
         count = cnt__q;
+        rx_ready = ready__q;
     end
     
 endmodule // drcc__rxfifo
@@ -11107,6 +11124,22 @@ module drcc__rxfifo__ram(read_address,read_clock,read_data,write_address,write_c
     end
                 
 endmodule // drcc__rxfifo__ram
+
+
+module drcc__rxfifo__ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxfifo__ready
 
 
 module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns);
@@ -11212,6 +11245,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [7:0] hit_mask;
     reg  [7:0] ptr_mask;
     reg  fifo_full;
+    reg  [7:0] hv_base;
     
     // Sub module instances
     drcc__rxw__hist hist(
@@ -11352,7 +11386,6 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hit__d = hit__q;
         hit_e__d = hit_e__q;
         hist_ptr__d = hist_ptr__q;
-        hv__d = hv__q;
         hu__d = hu__q;
         dups_q__d = dups_q__q;
         overruns_q__d = overruns_q__q;
@@ -11360,6 +11393,13 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         if (tick & (hist_idle__q != max15)) begin
             hist_idle__d = hist_idle__q + one15;
         end
+        if (hist_idle__q == max15) begin
+            hv_base = zero8;
+        end
+        else begin
+            hv_base = hv__q;
+        end
+        hv__d = hv_base;
         if (w_state__q == s_idle) begin
             if (rxp_a__q | rxp_b__q) begin
                 if (rxp_a__q) begin
@@ -11384,7 +11424,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         else if (w_state__q == s_scan) begin
             if (scan_i__q != zero4) begin
                 if (e_hv & (e_age > ((window) & 16'hffff))) begin
-                    hv__d = hv__q & ~e_mask;
+                    hv__d = hv_base & ~e_mask;
                 end
                 else if (e_hv & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
                     hit__d = 1'b1;
@@ -11421,14 +11461,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             end
             if (dedup_on) begin
                 hist__write_enable = 1'b1;
-                hv__d = hv__q | ptr_mask;
+                hv__d = hv_base | ptr_mask;
                 hu__d = hu__q & ~ptr_mask;
                 hist_ptr__d = hist_ptr__q + one3;
             end
             w_state__d = s_idle;
-        end
-        if (hist_idle__q == max15) begin
-            hv__d = zero8;
         end
         if (rxv_a) begin
             rxp_a__d = 1'b1;
@@ -11992,12 +12029,12 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
         ram__read_clock = clk;
         ram__write_clock = clk;
         if (redundancy) begin
-            pop_a = pop_red;
+            pop_a = pop_red & (cnt_a__q != zero4);
             pop_b = 1'b0;
         end
         else begin
-            pop_a = done_a | failed_a;
-            pop_b = done_b | failed_b;
+            pop_a = (done_a | failed_a) & (cnt_a__q != zero4);
+            pop_b = (done_b | failed_b) & (cnt_b__q != zero4);
         end
         push_a = push & ~push_q;
         push_b = push & push_q;

@@ -424,7 +424,7 @@ pub const REGISTERS: &[Register] = &[
             f("id", 0, 29, 0, "identifier"),
             f("ide", 29, 1, 0, "extended frame"),
             f("rtr", 30, 1, 0, "remote frame"),
-            f("not_empty", 31, 1, 0, "the RX FIFO is not empty"),
+            f("rx_ready", 31, 1, 0, "the head is valid: the RX FIFO was not empty at the previous edge"),
         ],
     },
     Register {

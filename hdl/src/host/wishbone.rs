@@ -58,6 +58,7 @@ pub struct WbRegs {
     pub failures_b: Signal<In, Bits<8>>,
     pub recoveries_b: Signal<In, Bits<8>>,
     pub rx_head: Signal<In, Bits<100>>,
+    pub rx_ready: Signal<In, Bit>,
     pub duplicates: Signal<In, Bits<16>>,
     pub overruns: Signal<In, Bits<16>>,
     pub last_tx_time: Signal<In, Bits<16>>,
@@ -131,7 +132,6 @@ pub struct WbRegs {
     cfg_differs: Signal<Local, Bit>,
     target_count: Signal<Local, Bits<4>>,
     events: Signal<Local, Bits<8>>,
-    rx_nonempty: Signal<Local, Bit>,
     es_evt: Signal<Local, Bit>,
     ctrl_val: Signal<Local, Bits<32>>,
     status_val: Signal<Local, Bits<32>>,
@@ -241,6 +241,7 @@ impl Default for WbRegs {
             failures_b: Default::default(),
             recoveries_b: Default::default(),
             rx_head: Default::default(),
+            rx_ready: Default::default(),
             duplicates: Default::default(),
             overruns: Default::default(),
             last_tx_time: Default::default(),
@@ -309,7 +310,6 @@ impl Default for WbRegs {
             cfg_differs: Default::default(),
             target_count: Default::default(),
             events: Default::default(),
-            rx_nonempty: Default::default(),
             es_evt: Default::default(),
             ctrl_val: Default::default(),
             status_val: Default::default(),
@@ -400,7 +400,6 @@ impl Logic for WbRegs {
         self.taken.next = self.wb_cyc_i.val() & self.wb_stb_i.val() & !self.ack_q.q.val();
         self.wr.next = self.taken.val() & self.wb_we_i.val();
         self.wdat.next = self.wb_dat_i.val();
-        self.rx_nonempty.next = self.rx_count.val() != self.zero6.val();
         self.es_evt.next = (self.es_a.val() != self.es_a_prev.q.val())
             | (self.es_b.val() != self.es_b_prev.q.val());
 
@@ -485,7 +484,7 @@ impl Logic for WbRegs {
             self.rdata.next = self.tx_data1_q.q.val();
         } else if self.wb_adr_i.val() == self.a_rx_id.val() {
             self.rdata.next = bit_cast::<32, 31>(self.rx_head.val().get_bits::<31>(68))
-                | (bit_cast::<32, 1>(self.rx_nonempty.val().into()) << 31);
+                | (bit_cast::<32, 1>(self.rx_ready.val().into()) << 31);
         } else if self.wb_adr_i.val() == self.a_rx_ctrl.val() {
             self.rdata.next = bit_cast::<32, 4>(self.rx_head.val().get_bits::<4>(64))
                 | (bit_cast::<32, 1>(self.rx_head.val().get_bit(99).into()) << 8);

@@ -68,6 +68,7 @@ pub struct RxWriter {
     hit_mask: Signal<Local, Bits<8>>,
     ptr_mask: Signal<Local, Bits<8>>,
     fifo_full: Signal<Local, Bit>,
+    hv_base: Signal<Local, Bits<8>>,
     // constants
     s_idle: Constant<Bits<2>>,
     s_scan: Constant<Bits<2>>,
@@ -136,6 +137,7 @@ impl Default for RxWriter {
             hit_mask: Default::default(),
             ptr_mask: Default::default(),
             fifo_full: Default::default(),
+            hv_base: Default::default(),
             s_idle: Constant::new(0.into()),
             s_scan: Constant::new(1.into()),
             s_decide: Constant::new(2.into()),
@@ -207,7 +209,6 @@ impl Logic for RxWriter {
         self.hit.d.next = self.hit.q.val();
         self.hit_e.d.next = self.hit_e.q.val();
         self.hist_ptr.d.next = self.hist_ptr.q.val();
-        self.hv.d.next = self.hv.q.val();
         self.hu.d.next = self.hu.q.val();
         self.dups_q.d.next = self.dups_q.q.val();
         self.overruns_q.d.next = self.overruns_q.q.val();
@@ -215,6 +216,14 @@ impl Logic for RxWriter {
         if self.tick.val() & (self.hist_idle.q.val() != self.max15.val()) {
             self.hist_idle.d.next = self.hist_idle.q.val() + self.one15.val();
         }
+        // a history left idle for 32767 bit times is forgotten, so an entry is
+        // never judged by a wrapped age
+        if self.hist_idle.q.val() == self.max15.val() {
+            self.hv_base.next = self.zero8.val();
+        } else {
+            self.hv_base.next = self.hv.q.val();
+        }
+        self.hv.d.next = self.hv_base.val();
 
         if self.w_state.q.val() == self.s_idle.val() {
             if self.rxp_a.q.val() | self.rxp_b.q.val() {
@@ -238,7 +247,7 @@ impl Logic for RxWriter {
             if self.scan_i.q.val() != self.zero4.val() {
                 if self.e_hv.val() & (self.e_age.val() > bit_cast::<16, 15>(self.window.val())) {
                     // expired
-                    self.hv.d.next = self.hv.q.val() & !self.e_mask.val();
+                    self.hv.d.next = self.hv_base.val() & !self.e_mask.val();
                 } else if self.e_hv.val()
                     & !self.e_hu.val()
                     & (self.e_ch.val() != self.sel.q.val())
@@ -277,16 +286,11 @@ impl Logic for RxWriter {
             }
             if self.dedup_on.val() {
                 self.hist.write_enable.next = true;
-                self.hv.d.next = self.hv.q.val() | self.ptr_mask.val();
+                self.hv.d.next = self.hv_base.val() | self.ptr_mask.val();
                 self.hu.d.next = self.hu.q.val() & !self.ptr_mask.val();
                 self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one3.val();
             }
             self.w_state.d.next = self.s_idle.val();
-        }
-        // a history left idle for 32767 bit times is forgotten, so an entry is
-        // never judged by a wrapped age
-        if self.hist_idle.q.val() == self.max15.val() {
-            self.hv.d.next = self.zero8.val();
         }
         // rx_valid pulses (a new pulse wins over the clear above)
         if self.rxv_a.val() {

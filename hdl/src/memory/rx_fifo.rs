@@ -1,7 +1,8 @@
 //! RX FIFO (DRCC contract §7): one synchronous RAM of 32 entries x 100 bits
 //! (the 99 frame bits of the channel `rx_*` ports and, in [99], the channel the
 //! frame came from), `head[4:0]`, `count[5:0]`. The read data register is loaded
-//! at every edge from `head`; the RX_* registers read it. The writer (`dedup.rs`)
+//! at every edge from `head`; the RX_* registers read it. `rx_ready` (RX_ID[31])
+//! is `count != 0` registered (0 in reset mode). The writer (`dedup.rs`)
 //! writes only when not full, the register block pops only when not empty.
 
 use rust_hdl::prelude::*;
@@ -19,9 +20,11 @@ pub struct RxFifo {
     // outputs
     pub count: Signal<Out, Bits<6>>,
     pub rd_data: Signal<Out, Bits<100>>,
+    pub rx_ready: Signal<Out, Bit>,
     ram: RAM<Bits<100>, 5>,
     head: DFF<Bits<5>>,
     cnt: DFF<Bits<6>>,
+    ready: DFF<Bit>,
     one5: Constant<Bits<5>>,
     one6: Constant<Bits<6>>,
     zero5: Constant<Bits<5>>,
@@ -38,9 +41,11 @@ impl Default for RxFifo {
             pop: Default::default(),
             count: Default::default(),
             rd_data: Default::default(),
+            rx_ready: Default::default(),
             ram: Default::default(),
             head: Default::default(),
             cnt: Default::default(),
+            ready: Default::default(),
             one5: Constant::new(1.into()),
             one6: Constant::new(1.into()),
             zero5: Constant::new(0.into()),
@@ -52,7 +57,7 @@ impl Default for RxFifo {
 impl Logic for RxFifo {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, head, cnt);
+        dff_setup!(self, clk, head, cnt, ready);
         self.ram.read_clock.next = self.clk.val();
         self.ram.write_clock.next = self.clk.val();
         self.ram.read_address.next = self.head.q.val();
@@ -71,11 +76,16 @@ impl Logic for RxFifo {
         } else if !self.wr.val() & self.pop.val() {
             self.cnt.d.next = self.cnt.q.val() - self.one6.val();
         }
+        // rx_ready: the FIFO was not empty at the previous edge, so the read data
+        // register already holds the head written into an empty FIFO
+        self.ready.d.next = self.cnt.q.val() != self.zero6.val();
         if self.clear.val() {
+            self.ready.d.next = false;
             self.head.d.next = self.zero5.val();
             self.cnt.d.next = self.zero6.val();
         }
         self.count.next = self.cnt.q.val();
+        self.rx_ready.next = self.ready.q.val();
     }
 }
 

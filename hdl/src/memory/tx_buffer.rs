@@ -118,12 +118,15 @@ impl Logic for TxBuffer {
 
         // pops: redundancy mode by the main FSM, normal mode at each channel
         // tx_done / tx_failed
+        // (never below empty)
         if self.redundancy.val() {
-            self.pop_a.next = self.pop_red.val();
+            self.pop_a.next = self.pop_red.val() & (self.cnt_a.q.val() != self.zero4.val());
             self.pop_b.next = false;
         } else {
-            self.pop_a.next = self.done_a.val() | self.failed_a.val();
-            self.pop_b.next = self.done_b.val() | self.failed_b.val();
+            self.pop_a.next = (self.done_a.val() | self.failed_a.val())
+                & (self.cnt_a.q.val() != self.zero4.val());
+            self.pop_b.next = (self.done_b.val() | self.failed_b.val())
+                & (self.cnt_b.q.val() != self.zero4.val());
         }
         self.push_a.next = self.push.val() & !self.push_q.val();
         self.push_b.next = self.push.val() & self.push_q.val();

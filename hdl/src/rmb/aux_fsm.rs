@@ -4,7 +4,8 @@
 //!
 //! - valid -> failed when a cause holds (policy error-passive, bus-off,
 //!   k failed attempts, stall); the cause bits are latched, `failures` counts.
-//! - failed -> restart when the channel is idle and not in use by the main FSM.
+//! - failed -> restart when the channel is idle, not bus-off and not in use by
+//!   the main FSM.
 //! - restart -> probation after one clock, during which the channel is reset
 //!   (`chan_rst`: it re-integrates with the bus as after power-up).
 //! - probation -> valid after `recovery_bits` error-free sample points.
@@ -213,7 +214,11 @@ impl Logic for AuxFsm {
                 self.fail_evt.next = true;
             }
         } else if self.st.q.val() == self.s_failed.val() {
-            if !self.tx_pending.val() & !self.in_use.val() {
+            // a bus-off channel recovers by itself first (ISO 11898-1 12.1.4.2)
+            if !self.tx_pending.val()
+                & !self.in_use.val()
+                & (self.err_state.val() != self.es_busoff.val())
+            {
                 self.st.d.next = self.s_restart.val();
                 self.fail_q.d.next = self.zero4.val();
             }

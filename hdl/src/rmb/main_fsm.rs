@@ -340,12 +340,13 @@ impl Logic for MainFsm {
                     }
                 }
                 if self.copy.q.val() {
-                    // the copy on B is given up: finish, tx_ok_channel <= 01
+                    // the copy on B is given up: finish, tx_ok_channel <= 01; no
+                    // transmission_ack at this edge, hence no tx_success (§4.1:
+                    // finish_q is "popped at the ack edge")
                     self.pop.next = true;
                     self.resend.d.next = false;
                     self.copy.d.next = false;
                     self.last_time_q.d.next = self.tx_time.q.val();
-                    self.fin_q.d.next = true;
                     self.ok_ch_q.d.next = self.ch_a.val();
                 }
             }
@@ -374,7 +375,9 @@ impl Logic for MainFsm {
             self.last_time_q.d.next = self.zero16.val();
             self.switch_time_q.d.next = self.zero16.val();
         }
-        self.switch_evt.next = self.failover.d.val() != self.failover.q.val();
+        // a switch event is a change of failover while running (clearing it in
+        // normal or reset mode is not a switch)
+        self.switch_evt.next = (self.failover.d.val() != self.failover.q.val()) & !self.hold.val();
         self.success_evt.next = self.success_q.d.val();
 
         self.state.next = self.st.q.val();

@@ -163,7 +163,7 @@ impl Logic for CanChannel {
 
         self.btl.clk.next = self.clk.val();
         self.btl.rst.next = self.rst.val();
-        self.btl.cfg_brp.next = self.cfg_regs.brp.val();
+        self.btl.cfg_brp_next.next = self.cfg_regs.brp_next.val();
         self.btl.cfg_tseg1_len.next = self.cfg_regs.tseg1_len.val();
         self.btl.cfg_tseg2_len.next = self.cfg_regs.tseg2_len.val();
         self.btl.cfg_sjw_len.next = self.cfg_regs.sjw_len.val();

@@ -30,7 +30,9 @@ pub struct ChannelConfig {
     pub cfg_ewl: Signal<In, Bits<8>>,
     pub cfg_single_shot: Signal<In, Bit>,
     // held configuration
-    pub brp: Signal<Out, Bits<6>>,
+    /// The BRP held from the next clock on (the input while capturing), so the
+    /// prescaler can register its tick one clock ahead.
+    pub brp_next: Signal<Out, Bits<6>>,
     pub triple: Signal<Out, Bit>,
     pub mode: Signal<Out, Bits<2>>,
     pub ewl: Signal<Out, Bits<8>>,
@@ -78,7 +80,7 @@ impl Default for ChannelConfig {
             cfg_mode: Default::default(),
             cfg_ewl: Default::default(),
             cfg_single_shot: Default::default(),
-            brp: Default::default(),
+            brp_next: Default::default(),
             triple: Default::default(),
             mode: Default::default(),
             ewl: Default::default(),
@@ -167,7 +169,11 @@ impl Logic for ChannelConfig {
             self.tseg2_len_q.d.next = bit_cast::<4, 3>(self.cfg_tseg2.val()) + self.one4.val();
             self.sjw_len_q.d.next = bit_cast::<4, 2>(self.sjw_clamped.val()) + self.one4.val();
         }
-        self.brp.next = self.brp_q.q.val();
+        if self.rst.val() {
+            self.brp_next.next = self.cfg_brp.val();
+        } else {
+            self.brp_next.next = self.brp_q.q.val();
+        }
         self.triple.next = self.triple_q.q.val();
         self.mode.next = self.mode_q.q.val();
         self.ewl.next = self.ewl_q.q.val();

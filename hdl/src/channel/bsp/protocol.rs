@@ -133,7 +133,7 @@ pub struct ProtocolController {
     flag_passive: DFF<Bit>,
     recovery_cnt: DFF<Bits<7>>,
     tx_q: DFF<Bit>,
-    tx_bit: DFF<Bit>,
+    tx_bit: Signal<Local, Bit>,
     last_bit_arb: DFF<Bit>,
     dom_cnt: DFF<Bits<3>>,
     delim_first: DFF<Bit>,
@@ -466,7 +466,6 @@ impl Logic for ProtocolController {
             flag_passive,
             recovery_cnt,
             tx_q,
-            tx_bit,
             last_bit_arb,
             dom_cnt,
             delim_first,
@@ -1215,34 +1214,38 @@ impl Logic for ProtocolController {
         self.fc.rx_success.next = self.ev_rx_success.val() && !self.listen_only.val();
         self.fc.recovered.next = self.ev_recovered.val();
 
-        // ---- the bit this node sends next (contract §4.2)
-        self.id_b_idx.next = self.n5_17.val() - self.bit_cnt_n.val().get_bits::<5>(0);
+        // ---- the bit this node sends next (contract §4.2), prepared from the state
+        // the last SAMPLE edge left: the state changes only at SAMPLE edges and no
+        // bit_start falls on one, so it is the bit of that edge, and the sample
+        // decision stays off this path. (The latched frame can change only while
+        // nothing is pending, and then the node sends no frame bit.)
+        self.id_b_idx.next = self.n5_17.val() - self.bit_cnt.q.val().get_bits::<5>(0);
         if self.txf_ide.q.val() {
-            self.id_a_idx.next = self.n5_28.val() - self.bit_cnt_n.val().get_bits::<5>(0);
+            self.id_a_idx.next = self.n5_28.val() - self.bit_cnt.q.val().get_bits::<5>(0);
         } else {
-            self.id_a_idx.next = self.n5_10.val() - self.bit_cnt_n.val().get_bits::<5>(0);
+            self.id_a_idx.next = self.n5_10.val() - self.bit_cnt.q.val().get_bits::<5>(0);
         }
-        self.dlc_idx.next = self.n2_3.val() - self.bit_cnt_n.val().get_bits::<2>(0);
-        self.data_idx.next = self.n6_63.val() - self.bit_cnt_n.val().get_bits::<6>(0);
-        self.crc_idx.next = self.n4_14.val() - self.bit_cnt_n.val().get_bits::<4>(0);
+        self.dlc_idx.next = self.n2_3.val() - self.bit_cnt.q.val().get_bits::<2>(0);
+        self.data_idx.next = self.n6_63.val() - self.bit_cnt.q.val().get_bits::<6>(0);
+        self.crc_idx.next = self.n4_14.val() - self.bit_cnt.q.val().get_bits::<4>(0);
         self.tx_bit_n.next = true;
-        match self.field_n.val() {
+        match self.field_q.q.val() {
             Field::ErrorFlag => {
-                self.tx_bit_n.next = self.flag_passive_n.val();
+                self.tx_bit_n.next = self.flag_passive.q.val();
             }
             Field::OverloadFlag => {
                 self.tx_bit_n.next = false;
             }
             Field::AckSlot => {
                 // 10.4.2.7: receivers that found the CRC correct send ACK.
-                self.tx_bit_n.next = self.is_tx_n.val() || !self.crc_ok_n.val();
+                self.tx_bit_n.next = self.is_tx.q.val() || !self.crc_ok.q.val();
             }
             _ => {
-                if self.is_tx_n.val() {
-                    if self.stuff_en_n.val() && (self.stuff_cnt_n.val() == self.n3_5.val()) {
-                        self.tx_bit_n.next = !self.stuff_last_n.val();
+                if self.is_tx.q.val() {
+                    if self.stuff_en.q.val() && (self.stuff_cnt.q.val() == self.n3_5.val()) {
+                        self.tx_bit_n.next = !self.stuff_last.q.val();
                     } else {
-                        match self.field_n.val() {
+                        match self.field_q.q.val() {
                             Field::IdA => {
                                 self.tx_bit_n.next =
                                     self.txf_id.q.val().get_bit(self.id_a_idx.val().index());
@@ -1276,7 +1279,7 @@ impl Logic for ProtocolController {
                             }
                             Field::Crc => {
                                 self.tx_bit_n.next =
-                                    self.crc_n.val().get_bit(self.crc_idx.val().index());
+                                    self.crc.q.val().get_bit(self.crc_idx.val().index());
                             }
                             _ => {}
                         }
@@ -1285,10 +1288,8 @@ impl Logic for ProtocolController {
             }
         }
 
-        if self.sample.val() {
-            // Listen-only: the node never drives a dominant bit (contract §7).
-            self.tx_bit.d.next = self.tx_bit_n.val() || self.listen_only.val();
-        }
+        // Listen-only: the node never drives a dominant bit (contract §7).
+        self.tx_bit.next = self.tx_bit_n.val() || self.listen_only.val();
 
         // ---- the tx pin changes only at the start of a bit
         if self.bit_start.val() {
@@ -1303,7 +1304,7 @@ impl Logic for ProtocolController {
             } else if self.field_q.q.val() == Field::Idle {
                 self.tx_q.d.next = !self.starts.val();
             } else {
-                self.tx_q.d.next = self.tx_bit.q.val();
+                self.tx_q.d.next = self.tx_bit.val();
             }
         }
 
@@ -1385,7 +1386,6 @@ impl Logic for ProtocolController {
             self.flag_passive.d.next = false;
             self.recovery_cnt.d.next = self.n7_0.val();
             self.tx_q.d.next = true;
-            self.tx_bit.d.next = true;
             self.last_bit_arb.d.next = false;
             self.dom_cnt.d.next = self.zero3.val();
             self.delim_first.d.next = false;

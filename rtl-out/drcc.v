@@ -11169,14 +11169,14 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     localparam  s_scan = 2'b1;
     localparam  s_decide = 2'b10;
     localparam  s_write = 2'b11;
-    localparam  zero3 = 3'b0;
-    localparam  one3 = 3'b1;
-    localparam  zero4 = 4'h0;
-    localparam  one4 = 4'h1;
-    localparam  eight4 = 4'h8;
+    localparam  zero5 = 5'b0;
+    localparam  one5 = 5'b1;
+    localparam  zero6 = 6'b0;
+    localparam  one6 = 6'b1;
+    localparam  last_scan = 6'b100000;
     localparam  full6 = 6'b100000;
-    localparam  zero8 = 8'h0;
-    localparam  one8 = 8'h1;
+    localparam  zero32 = 32'h0;
+    localparam  one32 = 32'h1;
     localparam  zero15 = 15'b0;
     localparam  one15 = 15'b1;
     localparam  max15 = 15'b111111111111111;
@@ -11185,10 +11185,10 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     localparam  max16 = 16'hffff;
     
     // Stub signals
-    reg  [2:0] hist__read_address;
+    reg  [4:0] hist__read_address;
     reg  hist__read_clock;
     wire  [115:0] hist__read_data;
-    reg  [2:0] hist__write_address;
+    reg  [4:0] hist__write_address;
     reg  hist__write_clock;
     reg  [115:0] hist__write_data;
     reg  hist__write_enable;
@@ -11204,26 +11204,32 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  sel__d;
     wire  sel__q;
     reg  sel__clock;
-    reg  [3:0] scan_i__d;
-    wire  [3:0] scan_i__q;
+    reg  [5:0] scan_i__d;
+    wire  [5:0] scan_i__q;
     reg  scan_i__clock;
     reg  hit__d;
     wire  hit__q;
     reg  hit__clock;
-    reg  [2:0] hit_e__d;
-    wire  [2:0] hit_e__q;
+    reg  [4:0] hit_e__d;
+    wire  [4:0] hit_e__q;
     reg  hit_e__clock;
-    reg  [2:0] hist_ptr__d;
-    wire  [2:0] hist_ptr__q;
+    reg  free_found__d;
+    wire  free_found__q;
+    reg  free_found__clock;
+    reg  [4:0] free_e__d;
+    wire  [4:0] free_e__q;
+    reg  free_e__clock;
+    reg  [4:0] hist_ptr__d;
+    wire  [4:0] hist_ptr__q;
     reg  hist_ptr__clock;
     reg  [14:0] hist_idle__d;
     wire  [14:0] hist_idle__q;
     reg  hist_idle__clock;
-    reg  [7:0] hv__d;
-    wire  [7:0] hv__q;
+    reg  [31:0] hv__d;
+    wire  [31:0] hv__q;
     reg  hv__clock;
-    reg  [7:0] hu__d;
-    wire  [7:0] hu__q;
+    reg  [31:0] hu__d;
+    wire  [31:0] hu__q;
     reg  hu__clock;
     reg  [15:0] dups_q__d;
     wire  [15:0] dups_q__q;
@@ -11234,18 +11240,20 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     
     // Local signals
     reg  [98:0] frame_sel;
-    reg  [2:0] scan_e;
-    reg  [7:0] e_mask;
+    reg  [4:0] scan_e;
+    reg  [31:0] e_mask;
     reg  [15:0] e_ts;
     reg  [15:0] e_age;
     reg  e_ch;
     reg  [98:0] e_frame;
     reg  e_hv;
     reg  e_hu;
-    reg  [7:0] hit_mask;
-    reg  [7:0] ptr_mask;
+    reg  e_expired;
+    reg  [4:0] slot;
+    reg  [31:0] hit_mask;
+    reg  [31:0] slot_mask;
     reg  fifo_full;
-    reg  [7:0] hv_base;
+    reg  [31:0] hv_base;
     
     // Sub module instances
     drcc__rxw__hist hist(
@@ -11292,6 +11300,16 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .q(hit_e__q),
         .clock(hit_e__clock)
     );
+    drcc__rxw__free_found free_found(
+        .d(free_found__d),
+        .q(free_found__q),
+        .clock(free_found__clock)
+    );
+    drcc__rxw__free_e free_e(
+        .d(free_e__d),
+        .q(free_e__q),
+        .clock(free_e__clock)
+    );
     drcc__rxw__hist_ptr hist_ptr(
         .d(hist_ptr__d),
         .q(hist_ptr__q),
@@ -11332,6 +11350,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         scan_i__clock = clk;
         hit__clock = clk;
         hit_e__clock = clk;
+        free_found__clock = clk;
+        free_e__clock = clk;
         hist_ptr__clock = clk;
         hist_idle__clock = clk;
         hv__clock = clk;
@@ -11345,6 +11365,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         scan_i__d = scan_i__q;
         hit__d = hit__q;
         hit_e__d = hit_e__q;
+        free_found__d = free_found__q;
+        free_e__d = free_e__q;
         hist_ptr__d = hist_ptr__q;
         hist_idle__d = hist_idle__q;
         hv__d = hv__q;
@@ -11359,20 +11381,27 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         else begin
             frame_sel = frame_a;
         end
-        scan_e = scan_i__q[(32'h0)+:(3)] - one3;
-        e_mask = one8 << scan_e;
-        hit_mask = one8 << hit_e__q;
-        ptr_mask = one8 << hist_ptr__q;
+        scan_e = scan_i__q[(32'h0)+:(5)] - one5;
+        e_mask = one32 << scan_e;
+        hit_mask = one32 << hit_e__q;
+        if (free_found__q) begin
+            slot = free_e__q;
+        end
+        else begin
+            slot = hist_ptr__q;
+        end
+        slot_mask = one32 << slot;
         e_ts = hist__read_data[(32'h0)+:(16)];
         e_ch = hist__read_data[32'h10];
         e_frame = hist__read_data[(32'h11)+:(99)];
         e_age = now - e_ts;
         e_hv = hv__q[scan_e];
         e_hu = hu__q[scan_e];
+        e_expired = e_age > ((window) & 16'hffff);
         fifo_full = fifo_count == full6;
-        hist__read_address = scan_i__q[(32'h0)+:(3)];
+        hist__read_address = scan_i__q[(32'h0)+:(5)];
         hist__write_enable = 1'b0;
-        hist__write_address = hist_ptr__q;
+        hist__write_address = slot;
         hist__write_data = (((frame_sel) & 116'hfffffffffffffffffffffffffffff) << 32'h11) | (((sel__q) & 116'hfffffffffffffffffffffffffffff) << 32'h10) | ((now) & 116'hfffffffffffffffffffffffffffff);
         fifo_wr = 1'b0;
         fifo_data = (((sel__q) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 100'hfffffffffffffffffffffffff);
@@ -11385,6 +11414,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         scan_i__d = scan_i__q;
         hit__d = hit__q;
         hit_e__d = hit_e__q;
+        free_found__d = free_found__q;
+        free_e__d = free_e__q;
         hist_ptr__d = hist_ptr__q;
         hu__d = hu__q;
         dups_q__d = dups_q__q;
@@ -11394,7 +11425,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             hist_idle__d = hist_idle__q + one15;
         end
         if (hist_idle__q == max15) begin
-            hv_base = zero8;
+            hv_base = zero32;
         end
         else begin
             hv_base = hv__q;
@@ -11411,8 +11442,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                     rxp_b__d = 1'b0;
                 end
                 hist_idle__d = zero15;
-                scan_i__d = zero4;
+                scan_i__d = zero6;
                 hit__d = 1'b0;
+                free_found__d = 1'b0;
                 if (dedup_on) begin
                     w_state__d = s_scan;
                 end
@@ -11422,8 +11454,12 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             end
         end
         else if (w_state__q == s_scan) begin
-            if (scan_i__q != zero4) begin
-                if (e_hv & (e_age > ((window) & 16'hffff))) begin
+            if (scan_i__q != zero6) begin
+                if ((~e_hv | e_hu | e_expired) & ~free_found__q) begin
+                    free_found__d = 1'b1;
+                    free_e__d = scan_e;
+                end
+                if (e_hv & e_expired) begin
                     hv__d = hv_base & ~e_mask;
                 end
                 else if (e_hv & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
@@ -11431,8 +11467,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                     hit_e__d = scan_e;
                 end
             end
-            scan_i__d = scan_i__q + one4;
-            if (scan_i__q == eight4) begin
+            scan_i__d = scan_i__q + one6;
+            if (scan_i__q == last_scan) begin
                 w_state__d = s_decide;
             end
         end
@@ -11461,9 +11497,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             end
             if (dedup_on) begin
                 hist__write_enable = 1'b1;
-                hv__d = hv_base | ptr_mask;
-                hu__d = hu__q & ~ptr_mask;
-                hist_ptr__d = hist_ptr__q + one3;
+                hv__d = hv_base | slot_mask;
+                hu__d = hu__q & ~slot_mask;
+                if (~free_found__q) begin
+                    hist_ptr__d = hist_ptr__q + one5;
+                end
             end
             w_state__d = s_idle;
         end
@@ -11478,13 +11516,15 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             rxp_a__d = 1'b0;
             rxp_b__d = 1'b0;
             sel__d = 1'b0;
-            scan_i__d = zero4;
+            scan_i__d = zero6;
             hit__d = 1'b0;
-            hit_e__d = zero3;
-            hist_ptr__d = zero3;
+            hit_e__d = zero5;
+            free_found__d = 1'b0;
+            free_e__d = zero5;
+            hist_ptr__d = zero5;
             hist_idle__d = zero15;
-            hv__d = zero8;
-            hu__d = zero8;
+            hv__d = zero32;
+            hu__d = zero32;
             fifo_wr = 1'b0;
             rx_evt = 1'b0;
             overrun_evt = 1'b0;
@@ -11519,19 +11559,51 @@ module drcc__rxw__dups_q(d,q,clock);
 endmodule // drcc__rxw__dups_q
 
 
+module drcc__rxw__free_e(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__free_e
+
+
+module drcc__rxw__free_found(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__free_found
+
+
 module drcc__rxw__hist(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [2:0] read_address;
+    input wire  [4:0] read_address;
     input wire  read_clock;
     output reg  [115:0] read_data;
-    input wire  [2:0] write_address;
+    input wire  [4:0] write_address;
     input wire  write_clock;
     input wire  [115:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[115:0] mem[7:0];
+    reg[115:0] mem[31:0];
     
     
     
@@ -11567,8 +11639,8 @@ endmodule // drcc__rxw__hist_idle
 module drcc__rxw__hist_ptr(d,q,clock);
     
     // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -11599,8 +11671,8 @@ endmodule // drcc__rxw__hit
 module drcc__rxw__hit_e(d,q,clock);
     
     // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -11615,8 +11687,8 @@ endmodule // drcc__rxw__hit_e
 module drcc__rxw__hu(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -11631,8 +11703,8 @@ endmodule // drcc__rxw__hu
 module drcc__rxw__hv(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -11695,8 +11767,8 @@ endmodule // drcc__rxw__rxp_b
 module drcc__rxw__scan_i(d,q,clock);
     
     // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
+    input wire  [5:0] d;
+    output reg  [5:0] q;
     input wire  clock;
     
     // Update code (custom)

@@ -1,15 +1,17 @@
 //! Receive writer and duplicate removal (DRCC contract §7). Each channel's
 //! `rx_valid` pulse sets `rxp_a` / `rxp_b`; the writer FSM (`w_state`: idle 0,
 //! scan 1, decide 2, write 3) takes A before B, and in redundancy mode with a
-//! non-zero window scans the 8-entry history (a synchronous RAM of 8 x 116 bits:
+//! non-zero window scans the 32-entry history (a synchronous RAM of 32 x 116 bits:
 //! [115:17] frame, [16] channel, [15:0] timestamp `now`) for an identical frame
 //! delivered from the other channel at most `window` bit times earlier that has
 //! not already cancelled a copy; such a frame is dropped as a duplicate.
 //! Otherwise the frame is written to the RX FIFO (or counted as an overrun when
 //! the FIFO is full) and recorded in the history.
 //!
-//! scan (9 clocks, `scan_i` 0..8): history read address = `scan_i[2:0]`; at the
-//! edge with `scan_i = i >= 1` the read data is entry `i - 1`.
+//! scan (33 clocks, `scan_i` 0..32): history read address = `scan_i[4:0]`; at the
+//! edge with `scan_i = i >= 1` the read data is entry `i - 1`. The first free
+//! entry (not valid, already used, or expired) seen by the scan is where the new
+//! frame is recorded; with all 32 live, the round-robin `hist_ptr` is the victim.
 
 use rust_hdl::prelude::*;
 
@@ -40,48 +42,52 @@ pub struct RxWriter {
     pub duplicates: Signal<Out, Bits<16>>,
     pub overruns: Signal<Out, Bits<16>>,
     // history
-    hist: RAM<Bits<116>, 3>,
+    hist: RAM<Bits<116>, 5>,
     // registers
     w_state: DFF<Bits<2>>,
     rxp_a: DFF<Bit>,
     rxp_b: DFF<Bit>,
     sel: DFF<Bit>,
-    scan_i: DFF<Bits<4>>,
+    scan_i: DFF<Bits<6>>,
     hit: DFF<Bit>,
-    hit_e: DFF<Bits<3>>,
-    hist_ptr: DFF<Bits<3>>,
+    hit_e: DFF<Bits<5>>,
+    free_found: DFF<Bit>,
+    free_e: DFF<Bits<5>>,
+    hist_ptr: DFF<Bits<5>>,
     hist_idle: DFF<Bits<15>>,
-    hv: DFF<Bits<8>>,
-    hu: DFF<Bits<8>>,
+    hv: DFF<Bits<32>>,
+    hu: DFF<Bits<32>>,
     dups_q: DFF<Bits<16>>,
     overruns_q: DFF<Bits<16>>,
     // judgement of the history entry being read
     frame_sel: Signal<Local, Bits<99>>,
-    scan_e: Signal<Local, Bits<3>>,
-    e_mask: Signal<Local, Bits<8>>,
+    scan_e: Signal<Local, Bits<5>>,
+    e_mask: Signal<Local, Bits<32>>,
     e_ts: Signal<Local, Bits<16>>,
     e_age: Signal<Local, Bits<16>>,
     e_ch: Signal<Local, Bit>,
     e_frame: Signal<Local, Bits<99>>,
     e_hv: Signal<Local, Bit>,
     e_hu: Signal<Local, Bit>,
-    hit_mask: Signal<Local, Bits<8>>,
-    ptr_mask: Signal<Local, Bits<8>>,
+    e_expired: Signal<Local, Bit>,
+    slot: Signal<Local, Bits<5>>,
+    hit_mask: Signal<Local, Bits<32>>,
+    slot_mask: Signal<Local, Bits<32>>,
     fifo_full: Signal<Local, Bit>,
-    hv_base: Signal<Local, Bits<8>>,
+    hv_base: Signal<Local, Bits<32>>,
     // constants
     s_idle: Constant<Bits<2>>,
     s_scan: Constant<Bits<2>>,
     s_decide: Constant<Bits<2>>,
     s_write: Constant<Bits<2>>,
-    zero3: Constant<Bits<3>>,
-    one3: Constant<Bits<3>>,
-    zero4: Constant<Bits<4>>,
-    one4: Constant<Bits<4>>,
-    eight4: Constant<Bits<4>>,
+    zero5: Constant<Bits<5>>,
+    one5: Constant<Bits<5>>,
+    zero6: Constant<Bits<6>>,
+    one6: Constant<Bits<6>>,
+    last_scan: Constant<Bits<6>>,
     full6: Constant<Bits<6>>,
-    zero8: Constant<Bits<8>>,
-    one8: Constant<Bits<8>>,
+    zero32: Constant<Bits<32>>,
+    one32: Constant<Bits<32>>,
     zero15: Constant<Bits<15>>,
     one15: Constant<Bits<15>>,
     max15: Constant<Bits<15>>,
@@ -119,6 +125,8 @@ impl Default for RxWriter {
             scan_i: Default::default(),
             hit: Default::default(),
             hit_e: Default::default(),
+            free_found: Default::default(),
+            free_e: Default::default(),
             hist_ptr: Default::default(),
             hist_idle: Default::default(),
             hv: Default::default(),
@@ -134,22 +142,24 @@ impl Default for RxWriter {
             e_frame: Default::default(),
             e_hv: Default::default(),
             e_hu: Default::default(),
+            e_expired: Default::default(),
+            slot: Default::default(),
             hit_mask: Default::default(),
-            ptr_mask: Default::default(),
+            slot_mask: Default::default(),
             fifo_full: Default::default(),
             hv_base: Default::default(),
             s_idle: Constant::new(0.into()),
             s_scan: Constant::new(1.into()),
             s_decide: Constant::new(2.into()),
             s_write: Constant::new(3.into()),
-            zero3: Constant::new(0.into()),
-            one3: Constant::new(1.into()),
-            zero4: Constant::new(0.into()),
-            one4: Constant::new(1.into()),
-            eight4: Constant::new(8.into()),
+            zero5: Constant::new(0.into()),
+            one5: Constant::new(1.into()),
+            zero6: Constant::new(0.into()),
+            one6: Constant::new(1.into()),
+            last_scan: Constant::new(32.into()),
             full6: Constant::new(32.into()),
-            zero8: Constant::new(0.into()),
-            one8: Constant::new(1.into()),
+            zero32: Constant::new(0.into()),
+            one32: Constant::new(1.into()),
             zero15: Constant::new(0.into()),
             one15: Constant::new(1.into()),
             max15: Constant::new(0x7FFF.into()),
@@ -164,8 +174,8 @@ impl Logic for RxWriter {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, hist_ptr, hist_idle, hv, hu,
-            dups_q, overruns_q
+            self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, free_found, free_e,
+            hist_ptr, hist_idle, hv, hu, dups_q, overruns_q
         );
         self.hist.read_clock.next = self.clk.val();
         self.hist.write_clock.next = self.clk.val();
@@ -176,21 +186,28 @@ impl Logic for RxWriter {
         } else {
             self.frame_sel.next = self.frame_a.val();
         }
-        self.scan_e.next = self.scan_i.q.val().get_bits::<3>(0) - self.one3.val();
-        self.e_mask.next = self.one8.val() << self.scan_e.val();
-        self.hit_mask.next = self.one8.val() << self.hit_e.q.val();
-        self.ptr_mask.next = self.one8.val() << self.hist_ptr.q.val();
+        self.scan_e.next = self.scan_i.q.val().get_bits::<5>(0) - self.one5.val();
+        self.e_mask.next = self.one32.val() << self.scan_e.val();
+        self.hit_mask.next = self.one32.val() << self.hit_e.q.val();
+        // where a new frame is recorded: the first free entry, else hist_ptr
+        if self.free_found.q.val() {
+            self.slot.next = self.free_e.q.val();
+        } else {
+            self.slot.next = self.hist_ptr.q.val();
+        }
+        self.slot_mask.next = self.one32.val() << self.slot.val();
         self.e_ts.next = self.hist.read_data.val().get_bits::<16>(0);
         self.e_ch.next = self.hist.read_data.val().get_bit(16);
         self.e_frame.next = self.hist.read_data.val().get_bits::<99>(17);
         self.e_age.next = self.now.val() - self.e_ts.val();
         self.e_hv.next = self.hv.q.val().get_bit(self.scan_e.val().index());
         self.e_hu.next = self.hu.q.val().get_bit(self.scan_e.val().index());
+        self.e_expired.next = self.e_age.val() > bit_cast::<16, 15>(self.window.val());
         self.fifo_full.next = self.fifo_count.val() == self.full6.val();
 
-        self.hist.read_address.next = self.scan_i.q.val().get_bits::<3>(0);
+        self.hist.read_address.next = self.scan_i.q.val().get_bits::<5>(0);
         self.hist.write_enable.next = false;
-        self.hist.write_address.next = self.hist_ptr.q.val();
+        self.hist.write_address.next = self.slot.val();
         self.hist.write_data.next = (bit_cast::<116, 99>(self.frame_sel.val()) << 17)
             | (bit_cast::<116, 1>(self.sel.q.val().into()) << 16)
             | bit_cast::<116, 16>(self.now.val());
@@ -208,6 +225,8 @@ impl Logic for RxWriter {
         self.scan_i.d.next = self.scan_i.q.val();
         self.hit.d.next = self.hit.q.val();
         self.hit_e.d.next = self.hit_e.q.val();
+        self.free_found.d.next = self.free_found.q.val();
+        self.free_e.d.next = self.free_e.q.val();
         self.hist_ptr.d.next = self.hist_ptr.q.val();
         self.hu.d.next = self.hu.q.val();
         self.dups_q.d.next = self.dups_q.q.val();
@@ -219,7 +238,7 @@ impl Logic for RxWriter {
         // a history left idle for 32767 bit times is forgotten, so an entry is
         // never judged by a wrapped age
         if self.hist_idle.q.val() == self.max15.val() {
-            self.hv_base.next = self.zero8.val();
+            self.hv_base.next = self.zero32.val();
         } else {
             self.hv_base.next = self.hv.q.val();
         }
@@ -235,8 +254,9 @@ impl Logic for RxWriter {
                     self.rxp_b.d.next = false;
                 }
                 self.hist_idle.d.next = self.zero15.val();
-                self.scan_i.d.next = self.zero4.val();
+                self.scan_i.d.next = self.zero6.val();
                 self.hit.d.next = false;
+                self.free_found.d.next = false;
                 if self.dedup_on.val() {
                     self.w_state.d.next = self.s_scan.val();
                 } else {
@@ -244,8 +264,14 @@ impl Logic for RxWriter {
                 }
             }
         } else if self.w_state.q.val() == self.s_scan.val() {
-            if self.scan_i.q.val() != self.zero4.val() {
-                if self.e_hv.val() & (self.e_age.val() > bit_cast::<16, 15>(self.window.val())) {
+            if self.scan_i.q.val() != self.zero6.val() {
+                if (!self.e_hv.val() | self.e_hu.val() | self.e_expired.val())
+                    & !self.free_found.q.val()
+                {
+                    self.free_found.d.next = true;
+                    self.free_e.d.next = self.scan_e.val();
+                }
+                if self.e_hv.val() & self.e_expired.val() {
                     // expired
                     self.hv.d.next = self.hv_base.val() & !self.e_mask.val();
                 } else if self.e_hv.val()
@@ -258,8 +284,8 @@ impl Logic for RxWriter {
                     self.hit_e.d.next = self.scan_e.val();
                 }
             }
-            self.scan_i.d.next = self.scan_i.q.val() + self.one4.val();
-            if self.scan_i.q.val() == self.eight4.val() {
+            self.scan_i.d.next = self.scan_i.q.val() + self.one6.val();
+            if self.scan_i.q.val() == self.last_scan.val() {
                 self.w_state.d.next = self.s_decide.val();
             }
         } else if self.w_state.q.val() == self.s_decide.val() {
@@ -286,9 +312,11 @@ impl Logic for RxWriter {
             }
             if self.dedup_on.val() {
                 self.hist.write_enable.next = true;
-                self.hv.d.next = self.hv_base.val() | self.ptr_mask.val();
-                self.hu.d.next = self.hu.q.val() & !self.ptr_mask.val();
-                self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one3.val();
+                self.hv.d.next = self.hv_base.val() | self.slot_mask.val();
+                self.hu.d.next = self.hu.q.val() & !self.slot_mask.val();
+                if !self.free_found.q.val() {
+                    self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one5.val();
+                }
             }
             self.w_state.d.next = self.s_idle.val();
         }
@@ -305,13 +333,15 @@ impl Logic for RxWriter {
             self.rxp_a.d.next = false;
             self.rxp_b.d.next = false;
             self.sel.d.next = false;
-            self.scan_i.d.next = self.zero4.val();
+            self.scan_i.d.next = self.zero6.val();
             self.hit.d.next = false;
-            self.hit_e.d.next = self.zero3.val();
-            self.hist_ptr.d.next = self.zero3.val();
+            self.hit_e.d.next = self.zero5.val();
+            self.free_found.d.next = false;
+            self.free_e.d.next = self.zero5.val();
+            self.hist_ptr.d.next = self.zero5.val();
             self.hist_idle.d.next = self.zero15.val();
-            self.hv.d.next = self.zero8.val();
-            self.hu.d.next = self.zero8.val();
+            self.hv.d.next = self.zero32.val();
+            self.hu.d.next = self.zero32.val();
             self.fifo_wr.next = false;
             self.rx_evt.next = false;
             self.overrun_evt.next = false;

@@ -1643,7 +1643,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     reg  [1:0] cfg_regs__cfg_mode;
     reg  [7:0] cfg_regs__cfg_ewl;
     reg  cfg_regs__cfg_single_shot;
-    wire  [5:0] cfg_regs__brp;
+    wire  [5:0] cfg_regs__brp_next;
     wire  cfg_regs__triple;
     wire  [1:0] cfg_regs__mode;
     wire  [7:0] cfg_regs__ewl;
@@ -1657,7 +1657,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     wire  rx_sync__rx_s;
     reg  btl__clk;
     reg  btl__rst;
-    reg  [5:0] btl__cfg_brp;
+    reg  [5:0] btl__cfg_brp_next;
     reg  [4:0] btl__cfg_tseg1_len;
     reg  [3:0] btl__cfg_tseg2_len;
     reg  [3:0] btl__cfg_sjw_len;
@@ -1727,7 +1727,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         .cfg_mode(cfg_regs__cfg_mode),
         .cfg_ewl(cfg_regs__cfg_ewl),
         .cfg_single_shot(cfg_regs__cfg_single_shot),
-        .brp(cfg_regs__brp),
+        .brp_next(cfg_regs__brp_next),
         .triple(cfg_regs__triple),
         .mode(cfg_regs__mode),
         .ewl(cfg_regs__ewl),
@@ -1745,7 +1745,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     drcc__chan_a__btl btl(
         .clk(btl__clk),
         .rst(btl__rst),
-        .cfg_brp(btl__cfg_brp),
+        .cfg_brp_next(btl__cfg_brp_next),
         .cfg_tseg1_len(btl__cfg_tseg1_len),
         .cfg_tseg2_len(btl__cfg_tseg2_len),
         .cfg_sjw_len(btl__cfg_sjw_len),
@@ -1830,7 +1830,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         end
         btl__clk = clk;
         btl__rst = rst;
-        btl__cfg_brp = cfg_regs__brp;
+        btl__cfg_brp_next = cfg_regs__brp_next;
         btl__cfg_tseg1_len = cfg_regs__tseg1_len;
         btl__cfg_tseg2_len = cfg_regs__tseg2_len;
         btl__cfg_sjw_len = cfg_regs__sjw_len;
@@ -2097,9 +2097,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  tx_q__d;
     wire  tx_q__q;
     reg  tx_q__clock;
-    reg  tx_bit__d;
-    wire  tx_bit__q;
-    reg  tx_bit__clock;
     reg  last_bit_arb__d;
     wire  last_bit_arb__q;
     reg  last_bit_arb__clock;
@@ -2188,6 +2185,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  sof_error;
     reg  [2:0] err_kind_n;
     reg  [4:0] alc_n;
+    reg  tx_bit;
     reg  [4:0] field_n;
     reg  [6:0] bit_cnt_n;
     reg  [6:0] bit_cnt_inc;
@@ -2379,11 +2377,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .q(tx_q__q),
         .clock(tx_q__clock)
     );
-    drcc__chan_a__bsp__tx_bit tx_bit(
-        .d(tx_bit__d),
-        .q(tx_bit__q),
-        .clock(tx_bit__clock)
-    );
     drcc__chan_a__bsp__last_bit_arb last_bit_arb(
         .d(last_bit_arb__d),
         .q(last_bit_arb__q),
@@ -2519,7 +2512,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         flag_passive__clock = clk;
         recovery_cnt__clock = clk;
         tx_q__clock = clk;
-        tx_bit__clock = clk;
         last_bit_arb__clock = clk;
         dom_cnt__clock = clk;
         delim_first__clock = clk;
@@ -2569,7 +2561,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         flag_passive__d = flag_passive__q;
         recovery_cnt__d = recovery_cnt__q;
         tx_q__d = tx_q__q;
-        tx_bit__d = tx_bit__q;
         last_bit_arb__d = last_bit_arb__q;
         dom_cnt__d = dom_cnt__q;
         delim_first__d = delim_first__q;
@@ -3299,21 +3290,21 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__tx_success = ev_tx_success && ~listen_only;
         fc__rx_success = ev_rx_success && ~listen_only;
         fc__recovered = ev_recovered;
-        id_b_idx = n5_17 - bit_cnt_n[(32'h0)+:(5)];
+        id_b_idx = n5_17 - bit_cnt__q[(32'h0)+:(5)];
         if (txf_ide__q) begin
-            id_a_idx = n5_28 - bit_cnt_n[(32'h0)+:(5)];
+            id_a_idx = n5_28 - bit_cnt__q[(32'h0)+:(5)];
         end
         else begin
-            id_a_idx = n5_10 - bit_cnt_n[(32'h0)+:(5)];
+            id_a_idx = n5_10 - bit_cnt__q[(32'h0)+:(5)];
         end
-        dlc_idx = n2_3 - bit_cnt_n[(32'h0)+:(2)];
-        data_idx = n6_63 - bit_cnt_n[(32'h0)+:(6)];
-        crc_idx = n4_14 - bit_cnt_n[(32'h0)+:(4)];
+        dlc_idx = n2_3 - bit_cnt__q[(32'h0)+:(2)];
+        data_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
+        crc_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
         tx_bit_n = 1'b1;
-        case (field_n)
+        case (field_q__q)
             Field__ErrorFlag:
                 begin
-                    tx_bit_n = flag_passive_n;
+                    tx_bit_n = flag_passive__q;
                 end
             Field__OverloadFlag:
                 begin
@@ -3321,16 +3312,16 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 end
             Field__AckSlot:
                 begin
-                    tx_bit_n = is_tx_n || ~crc_ok_n;
+                    tx_bit_n = is_tx__q || ~crc_ok__q;
                 end
             default:
                 begin
-                    if (is_tx_n) begin
-                        if (stuff_en_n && (stuff_cnt_n == n3_5)) begin
-                            tx_bit_n = ~stuff_last_n;
+                    if (is_tx__q) begin
+                        if (stuff_en__q && (stuff_cnt__q == n3_5)) begin
+                            tx_bit_n = ~stuff_last__q;
                         end
                         else begin
-                            case (field_n)
+                            case (field_q__q)
                                 Field__IdA:
                                     begin
                                         tx_bit_n = txf_id__q[id_a_idx];
@@ -3369,7 +3360,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     end
                                 Field__Crc:
                                     begin
-                                        tx_bit_n = crc_n[crc_idx];
+                                        tx_bit_n = crc__q[crc_idx];
                                     end
                                 default:
                                     begin
@@ -3379,9 +3370,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     end
                 end
         endcase
-        if (sample) begin
-            tx_bit__d = tx_bit_n || listen_only;
-        end
+        tx_bit = tx_bit_n || listen_only;
         if (bit_start) begin
             if (hard_sync && (field_q__q == Field__Idle)) begin
                 tx_q__d = ~starts;
@@ -3396,7 +3385,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 tx_q__d = ~starts;
             end
             else begin
-                tx_q__d = tx_bit__q;
+                tx_q__d = tx_bit;
             end
         end
         if (tx_req && ~pending__q && listen_only) begin
@@ -3475,7 +3464,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
             flag_passive__d = 1'b0;
             recovery_cnt__d = n7_0;
             tx_q__d = 1'b1;
-            tx_bit__d = 1'b1;
             last_bit_arb__d = 1'b0;
             dom_cnt__d = zero3;
             delim_first__d = 1'b0;
@@ -4382,22 +4370,6 @@ module drcc__chan_a__bsp__stuff_last(d,q,clock);
 endmodule // drcc__chan_a__bsp__stuff_last
 
 
-module drcc__chan_a__bsp__tx_bit(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__tx_bit
-
-
 module drcc__chan_a__bsp__tx_done_q(d,q,clock);
     
     // Module arguments
@@ -4526,12 +4498,12 @@ module drcc__chan_a__bsp__txf_rtr(d,q,clock);
 endmodule // drcc__chan_a__bsp__txf_rtr
 
 
-module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
+module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [5:0] cfg_brp_next;
     input wire  [4:0] cfg_tseg1_len;
     input wire  [3:0] cfg_tseg2_len;
     input wire  [3:0] cfg_sjw_len;
@@ -4589,6 +4561,21 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
     reg  sample_point_q__d;
     wire  sample_point_q__q;
     reg  sample_point_q__clock;
+    reg  tick_q__d;
+    wire  tick_q__q;
+    reg  tick_q__clock;
+    reg  last1__d;
+    wire  last1__q;
+    reg  last1__clock;
+    reg  last2__d;
+    wire  last2__q;
+    reg  last2__clock;
+    reg  res_sync__d;
+    wire  res_sync__q;
+    reg  res_sync__clock;
+    reg  res_end__d;
+    wire  res_end__q;
+    reg  res_end__clock;
     
     // Local signals
     reg  tick;
@@ -4602,9 +4589,27 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
     reg  [4:0] pos_error;
     reg  [4:0] pos_jump;
     reg  [4:0] tseg1_eff;
-    reg  [3:0] neg_error;
     reg  [3:0] tseg2_eff;
     reg  sample_value;
+    reg  [5:0] brp_cnt_n;
+    reg  [4:0] quantum_next2;
+    reg  [3:0] q2_next;
+    reg  [3:0] q2_next2;
+    reg  [3:0] t2_short;
+    reg  [3:0] t2_short2;
+    reg  [3:0] ne_stay;
+    reg  [3:0] ne_short;
+    reg  last1_stay;
+    reg  last2_stay;
+    reg  res_sync_stay;
+    reg  res_end_stay;
+    reg  last2_short;
+    reg  res_sync_short;
+    reg  res_end_short;
+    reg  last2_enter;
+    reg  res_sync_enter;
+    reg  res_end_enter;
+    reg  last1_enter;
     
     // Sub module instances
     drcc__chan_a__btl__brp_cnt brp_cnt(
@@ -4657,6 +4662,31 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         .q(sample_point_q__q),
         .clock(sample_point_q__clock)
     );
+    drcc__chan_a__btl__tick_q tick_q(
+        .d(tick_q__d),
+        .q(tick_q__q),
+        .clock(tick_q__clock)
+    );
+    drcc__chan_a__btl__last1 last1(
+        .d(last1__d),
+        .q(last1__q),
+        .clock(last1__clock)
+    );
+    drcc__chan_a__btl__last2 last2(
+        .d(last2__d),
+        .q(last2__q),
+        .clock(last2__clock)
+    );
+    drcc__chan_a__btl__res_sync res_sync(
+        .d(res_sync__d),
+        .q(res_sync__q),
+        .clock(res_sync__clock)
+    );
+    drcc__chan_a__btl__res_end res_end(
+        .d(res_end__d),
+        .q(res_end__q),
+        .clock(res_end__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -4670,6 +4700,11 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         last_sample_q__clock = clk;
         synced__clock = clk;
         sample_point_q__clock = clk;
+        tick_q__clock = clk;
+        last1__clock = clk;
+        last2__clock = clk;
+        res_sync__clock = clk;
+        res_end__clock = clk;
         brp_cnt__d = brp_cnt__q;
         seg__d = seg__q;
         quantum__d = quantum__q;
@@ -4680,14 +4715,28 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         last_sample_q__d = last_sample_q__q;
         synced__d = synced__q;
         sample_point_q__d = sample_point_q__q;
+        tick_q__d = tick_q__q;
+        last1__d = last1__q;
+        last2__d = last2__q;
+        res_sync__d = res_sync__q;
+        res_end__d = res_end__q;
         tseg1_nominal = cfg_tseg1_len;
         tseg2_nominal = cfg_tseg2_len;
         sjw_eff = cfg_sjw_len;
-        tick = brp_cnt__q >= cfg_brp;
+        tick = tick_q__q;
+        if (rst || tick) begin
+            brp_cnt_n = zero6;
+        end
+        else begin
+            brp_cnt_n = brp_cnt__q + one6;
+        end
+        brp_cnt__d = brp_cnt_n;
+        tick_q__d = brp_cnt_n >= cfg_brp_next;
         sync_ok = rx_prev__q && ~rx_s && last_sample_q__q && ~synced__q;
         do_hard = sync_ok && hard_sync_enable;
         do_resync = sync_ok && ~hard_sync_enable && tx;
         quantum_next = quantum__q + one5;
+        quantum_next2 = quantum_next + one5;
         pos_error = quantum__q + one5;
         if (pos_error > ((sjw_eff) & 5'h1f)) begin
             pos_jump = ((sjw_eff) & 5'h1f);
@@ -4701,13 +4750,29 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         else begin
             tseg1_eff = tseg1_len__q;
         end
-        neg_error = tseg2_len__q - quantum__q[(32'h0)+:(4)];
+        t2_short = tseg2_len__q - sjw_eff;
         if (do_resync) begin
-            tseg2_eff = tseg2_len__q - sjw_eff;
+            tseg2_eff = t2_short;
         end
         else begin
             tseg2_eff = tseg2_len__q;
         end
+        last1_enter = one5 >= tseg1_nominal;
+        last1_stay = quantum_next2 >= tseg1_len__q;
+        last2_enter = one4 >= tseg2_len__q;
+        res_sync_enter = tseg2_len__q <= sjw_eff;
+        res_end_enter = one4 >= t2_short;
+        q2_next = quantum_next[(32'h0)+:(4)];
+        q2_next2 = quantum_next2[(32'h0)+:(4)];
+        last2_stay = q2_next2 >= tseg2_len__q;
+        ne_stay = tseg2_len__q - q2_next;
+        res_sync_stay = ne_stay <= sjw_eff;
+        res_end_stay = q2_next2 >= t2_short;
+        last2_short = q2_next2 >= t2_short;
+        ne_short = t2_short - q2_next;
+        res_sync_short = ne_short <= sjw_eff;
+        t2_short2 = t2_short - sjw_eff;
+        res_end_short = q2_next2 >= t2_short2;
         if (cfg_triple) begin
             sample_value = (rx_prev2__q && rx_prev__q) || (rx_prev__q && rx_s) || (rx_prev2__q && rx_s);
         end
@@ -4719,7 +4784,6 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         hard_sync = 1'b0;
         sample_point_q__d = 1'b0;
         if (tick) begin
-            brp_cnt__d = zero6;
             rx_prev__d = rx_s;
             rx_prev2__d = rx_prev__q;
             if (do_hard) begin
@@ -4730,6 +4794,10 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
                 synced__d = 1'b1;
                 bit_start = 1'b1;
                 hard_sync = 1'b1;
+                last1__d = last1_enter;
+                last2__d = 1'b0;
+                res_sync__d = 1'b0;
+                res_end__d = 1'b0;
             end
             else begin
                 case (seg__q)
@@ -4742,6 +4810,10 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
                             if (do_resync) begin
                                 synced__d = 1'b1;
                             end
+                            last1__d = last1_enter;
+                            last2__d = 1'b0;
+                            res_sync__d = 1'b0;
+                            res_end__d = 1'b0;
                         end
                     Segment__Tseg1:
                         begin
@@ -4749,58 +4821,85 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
                                 synced__d = 1'b1;
                             end
                             tseg1_len__d = tseg1_eff;
-                            if (quantum_next >= tseg1_eff) begin
+                            if (last1__q && ~do_resync) begin
                                 sample = 1'b1;
                                 sample_point_q__d = 1'b1;
                                 last_sample_q__d = sample_value;
                                 synced__d = 1'b0;
                                 seg__d = Segment__Tseg2;
                                 quantum__d = zero5;
+                                last1__d = 1'b0;
+                                last2__d = last2_enter;
+                                res_sync__d = res_sync_enter;
+                                res_end__d = res_end_enter;
                             end
                             else begin
                                 quantum__d = quantum_next;
+                                if (do_resync) begin
+                                    last1__d = last1__q && ((quantum__q == zero5) || (sjw_eff == one4));
+                                end
+                                else begin
+                                    last1__d = last1_stay;
+                                end
                             end
                         end
                     Segment__Tseg2:
                         begin
-                            if (do_resync && (neg_error <= sjw_eff)) begin
+                            if (do_resync && res_sync__q) begin
                                 seg__d = Segment__Tseg1;
                                 quantum__d = zero5;
                                 tseg1_len__d = tseg1_nominal;
                                 tseg2_len__d = tseg2_nominal;
                                 synced__d = 1'b1;
                                 bit_start = 1'b1;
+                                last1__d = last1_enter;
+                                last2__d = 1'b0;
+                                res_sync__d = 1'b0;
+                                res_end__d = 1'b0;
                             end
                             else begin
                                 if (do_resync) begin
                                     synced__d = 1'b1;
                                 end
                                 tseg2_len__d = tseg2_eff;
-                                if (quantum_next[(32'h0)+:(4)] >= tseg2_eff) begin
+                                if ((do_resync && res_end__q) || (~do_resync && last2__q)) begin
                                     seg__d = Segment__Sync;
                                     quantum__d = zero5;
                                     bit_start = 1'b1;
+                                    last2__d = 1'b0;
+                                    res_sync__d = 1'b0;
+                                    res_end__d = 1'b0;
                                 end
                                 else begin
                                     quantum__d = quantum_next;
+                                    if (do_resync) begin
+                                        last2__d = last2_short;
+                                        res_sync__d = res_sync_short;
+                                        res_end__d = res_end_short;
+                                    end
+                                    else begin
+                                        last2__d = last2_stay;
+                                        res_sync__d = res_sync_stay;
+                                        res_end__d = res_end_stay;
+                                    end
                                 end
                             end
                         end
                     default:
                         begin
                             seg__d = Segment__Sync;
+                            last1__d = 1'b0;
+                            last2__d = 1'b0;
+                            res_sync__d = 1'b0;
+                            res_end__d = 1'b0;
                         end
                 endcase
             end
-        end
-        else begin
-            brp_cnt__d = brp_cnt__q + one6;
         end
         sampled = sample_value;
         sample_point = sample_point_q__q;
         last_sample = last_sample_q__q;
         if (rst) begin
-            brp_cnt__d = zero6;
             seg__d = Segment__Sync;
             quantum__d = zero5;
             tseg1_len__d = tseg1_nominal;
@@ -4810,6 +4909,10 @@ module drcc__chan_a__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
             last_sample_q__d = 1'b1;
             synced__d = 1'b0;
             sample_point_q__d = 1'b0;
+            last1__d = 1'b0;
+            last2__d = 1'b0;
+            res_sync__d = 1'b0;
+            res_end__d = 1'b0;
         end
     end
     
@@ -4830,6 +4933,38 @@ module drcc__chan_a__btl__brp_cnt(d,q,clock);
     end
           
 endmodule // drcc__chan_a__btl__brp_cnt
+
+
+module drcc__chan_a__btl__last1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__btl__last1
+
+
+module drcc__chan_a__btl__last2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__btl__last2
 
 
 module drcc__chan_a__btl__last_sample_q(d,q,clock);
@@ -4862,6 +4997,38 @@ module drcc__chan_a__btl__quantum(d,q,clock);
     end
           
 endmodule // drcc__chan_a__btl__quantum
+
+
+module drcc__chan_a__btl__res_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__btl__res_end
+
+
+module drcc__chan_a__btl__res_sync(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__btl__res_sync
 
 
 module drcc__chan_a__btl__rx_prev(d,q,clock);
@@ -4949,6 +5116,22 @@ module drcc__chan_a__btl__synced(d,q,clock);
 endmodule // drcc__chan_a__btl__synced
 
 
+module drcc__chan_a__btl__tick_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__btl__tick_q
+
+
 module drcc__chan_a__btl__tseg1_len(d,q,clock);
     
     // Module arguments
@@ -4981,7 +5164,7 @@ module drcc__chan_a__btl__tseg2_len(d,q,clock);
 endmodule // drcc__chan_a__btl__tseg2_len
 
 
-module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp,triple,mode,ewl,single_shot,tseg1_len,tseg2_len,sjw_len);
+module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp_next,triple,mode,ewl,single_shot,tseg1_len,tseg2_len,sjw_len);
     
     // Module arguments
     input wire  clk;
@@ -4994,7 +5177,7 @@ module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
     input wire  [1:0] cfg_mode;
     input wire  [7:0] cfg_ewl;
     input wire  cfg_single_shot;
-    output reg  [5:0] brp;
+    output reg  [5:0] brp_next;
     output reg  triple;
     output reg  [1:0] mode;
     output reg  [7:0] ewl;
@@ -5150,7 +5333,12 @@ module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
             tseg2_len_q__d = ((cfg_tseg2) & 4'hf) + one4;
             sjw_len_q__d = ((sjw_clamped) & 4'hf) + one4;
         end
-        brp = brp_q__q;
+        if (rst) begin
+            brp_next = cfg_brp;
+        end
+        else begin
+            brp_next = brp_q__q;
+        end
         triple = triple_q__q;
         mode = mode_q__q;
         ewl = ewl_q__q;
@@ -5458,7 +5646,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     reg  [1:0] cfg_regs__cfg_mode;
     reg  [7:0] cfg_regs__cfg_ewl;
     reg  cfg_regs__cfg_single_shot;
-    wire  [5:0] cfg_regs__brp;
+    wire  [5:0] cfg_regs__brp_next;
     wire  cfg_regs__triple;
     wire  [1:0] cfg_regs__mode;
     wire  [7:0] cfg_regs__ewl;
@@ -5472,7 +5660,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     wire  rx_sync__rx_s;
     reg  btl__clk;
     reg  btl__rst;
-    reg  [5:0] btl__cfg_brp;
+    reg  [5:0] btl__cfg_brp_next;
     reg  [4:0] btl__cfg_tseg1_len;
     reg  [3:0] btl__cfg_tseg2_len;
     reg  [3:0] btl__cfg_sjw_len;
@@ -5542,7 +5730,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         .cfg_mode(cfg_regs__cfg_mode),
         .cfg_ewl(cfg_regs__cfg_ewl),
         .cfg_single_shot(cfg_regs__cfg_single_shot),
-        .brp(cfg_regs__brp),
+        .brp_next(cfg_regs__brp_next),
         .triple(cfg_regs__triple),
         .mode(cfg_regs__mode),
         .ewl(cfg_regs__ewl),
@@ -5560,7 +5748,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     drcc__chan_b__btl btl(
         .clk(btl__clk),
         .rst(btl__rst),
-        .cfg_brp(btl__cfg_brp),
+        .cfg_brp_next(btl__cfg_brp_next),
         .cfg_tseg1_len(btl__cfg_tseg1_len),
         .cfg_tseg2_len(btl__cfg_tseg2_len),
         .cfg_sjw_len(btl__cfg_sjw_len),
@@ -5645,7 +5833,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         end
         btl__clk = clk;
         btl__rst = rst;
-        btl__cfg_brp = cfg_regs__brp;
+        btl__cfg_brp_next = cfg_regs__brp_next;
         btl__cfg_tseg1_len = cfg_regs__tseg1_len;
         btl__cfg_tseg2_len = cfg_regs__tseg2_len;
         btl__cfg_sjw_len = cfg_regs__sjw_len;
@@ -5912,9 +6100,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  tx_q__d;
     wire  tx_q__q;
     reg  tx_q__clock;
-    reg  tx_bit__d;
-    wire  tx_bit__q;
-    reg  tx_bit__clock;
     reg  last_bit_arb__d;
     wire  last_bit_arb__q;
     reg  last_bit_arb__clock;
@@ -6003,6 +6188,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  sof_error;
     reg  [2:0] err_kind_n;
     reg  [4:0] alc_n;
+    reg  tx_bit;
     reg  [4:0] field_n;
     reg  [6:0] bit_cnt_n;
     reg  [6:0] bit_cnt_inc;
@@ -6194,11 +6380,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .q(tx_q__q),
         .clock(tx_q__clock)
     );
-    drcc__chan_b__bsp__tx_bit tx_bit(
-        .d(tx_bit__d),
-        .q(tx_bit__q),
-        .clock(tx_bit__clock)
-    );
     drcc__chan_b__bsp__last_bit_arb last_bit_arb(
         .d(last_bit_arb__d),
         .q(last_bit_arb__q),
@@ -6334,7 +6515,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         flag_passive__clock = clk;
         recovery_cnt__clock = clk;
         tx_q__clock = clk;
-        tx_bit__clock = clk;
         last_bit_arb__clock = clk;
         dom_cnt__clock = clk;
         delim_first__clock = clk;
@@ -6384,7 +6564,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         flag_passive__d = flag_passive__q;
         recovery_cnt__d = recovery_cnt__q;
         tx_q__d = tx_q__q;
-        tx_bit__d = tx_bit__q;
         last_bit_arb__d = last_bit_arb__q;
         dom_cnt__d = dom_cnt__q;
         delim_first__d = delim_first__q;
@@ -7114,21 +7293,21 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__tx_success = ev_tx_success && ~listen_only;
         fc__rx_success = ev_rx_success && ~listen_only;
         fc__recovered = ev_recovered;
-        id_b_idx = n5_17 - bit_cnt_n[(32'h0)+:(5)];
+        id_b_idx = n5_17 - bit_cnt__q[(32'h0)+:(5)];
         if (txf_ide__q) begin
-            id_a_idx = n5_28 - bit_cnt_n[(32'h0)+:(5)];
+            id_a_idx = n5_28 - bit_cnt__q[(32'h0)+:(5)];
         end
         else begin
-            id_a_idx = n5_10 - bit_cnt_n[(32'h0)+:(5)];
+            id_a_idx = n5_10 - bit_cnt__q[(32'h0)+:(5)];
         end
-        dlc_idx = n2_3 - bit_cnt_n[(32'h0)+:(2)];
-        data_idx = n6_63 - bit_cnt_n[(32'h0)+:(6)];
-        crc_idx = n4_14 - bit_cnt_n[(32'h0)+:(4)];
+        dlc_idx = n2_3 - bit_cnt__q[(32'h0)+:(2)];
+        data_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
+        crc_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
         tx_bit_n = 1'b1;
-        case (field_n)
+        case (field_q__q)
             Field__ErrorFlag:
                 begin
-                    tx_bit_n = flag_passive_n;
+                    tx_bit_n = flag_passive__q;
                 end
             Field__OverloadFlag:
                 begin
@@ -7136,16 +7315,16 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 end
             Field__AckSlot:
                 begin
-                    tx_bit_n = is_tx_n || ~crc_ok_n;
+                    tx_bit_n = is_tx__q || ~crc_ok__q;
                 end
             default:
                 begin
-                    if (is_tx_n) begin
-                        if (stuff_en_n && (stuff_cnt_n == n3_5)) begin
-                            tx_bit_n = ~stuff_last_n;
+                    if (is_tx__q) begin
+                        if (stuff_en__q && (stuff_cnt__q == n3_5)) begin
+                            tx_bit_n = ~stuff_last__q;
                         end
                         else begin
-                            case (field_n)
+                            case (field_q__q)
                                 Field__IdA:
                                     begin
                                         tx_bit_n = txf_id__q[id_a_idx];
@@ -7184,7 +7363,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     end
                                 Field__Crc:
                                     begin
-                                        tx_bit_n = crc_n[crc_idx];
+                                        tx_bit_n = crc__q[crc_idx];
                                     end
                                 default:
                                     begin
@@ -7194,9 +7373,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     end
                 end
         endcase
-        if (sample) begin
-            tx_bit__d = tx_bit_n || listen_only;
-        end
+        tx_bit = tx_bit_n || listen_only;
         if (bit_start) begin
             if (hard_sync && (field_q__q == Field__Idle)) begin
                 tx_q__d = ~starts;
@@ -7211,7 +7388,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 tx_q__d = ~starts;
             end
             else begin
-                tx_q__d = tx_bit__q;
+                tx_q__d = tx_bit;
             end
         end
         if (tx_req && ~pending__q && listen_only) begin
@@ -7290,7 +7467,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
             flag_passive__d = 1'b0;
             recovery_cnt__d = n7_0;
             tx_q__d = 1'b1;
-            tx_bit__d = 1'b1;
             last_bit_arb__d = 1'b0;
             dom_cnt__d = zero3;
             delim_first__d = 1'b0;
@@ -8197,22 +8373,6 @@ module drcc__chan_b__bsp__stuff_last(d,q,clock);
 endmodule // drcc__chan_b__bsp__stuff_last
 
 
-module drcc__chan_b__bsp__tx_bit(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__tx_bit
-
-
 module drcc__chan_b__bsp__tx_done_q(d,q,clock);
     
     // Module arguments
@@ -8341,12 +8501,12 @@ module drcc__chan_b__bsp__txf_rtr(d,q,clock);
 endmodule // drcc__chan_b__bsp__txf_rtr
 
 
-module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
+module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [5:0] cfg_brp_next;
     input wire  [4:0] cfg_tseg1_len;
     input wire  [3:0] cfg_tseg2_len;
     input wire  [3:0] cfg_sjw_len;
@@ -8404,6 +8564,21 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
     reg  sample_point_q__d;
     wire  sample_point_q__q;
     reg  sample_point_q__clock;
+    reg  tick_q__d;
+    wire  tick_q__q;
+    reg  tick_q__clock;
+    reg  last1__d;
+    wire  last1__q;
+    reg  last1__clock;
+    reg  last2__d;
+    wire  last2__q;
+    reg  last2__clock;
+    reg  res_sync__d;
+    wire  res_sync__q;
+    reg  res_sync__clock;
+    reg  res_end__d;
+    wire  res_end__q;
+    reg  res_end__clock;
     
     // Local signals
     reg  tick;
@@ -8417,9 +8592,27 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
     reg  [4:0] pos_error;
     reg  [4:0] pos_jump;
     reg  [4:0] tseg1_eff;
-    reg  [3:0] neg_error;
     reg  [3:0] tseg2_eff;
     reg  sample_value;
+    reg  [5:0] brp_cnt_n;
+    reg  [4:0] quantum_next2;
+    reg  [3:0] q2_next;
+    reg  [3:0] q2_next2;
+    reg  [3:0] t2_short;
+    reg  [3:0] t2_short2;
+    reg  [3:0] ne_stay;
+    reg  [3:0] ne_short;
+    reg  last1_stay;
+    reg  last2_stay;
+    reg  res_sync_stay;
+    reg  res_end_stay;
+    reg  last2_short;
+    reg  res_sync_short;
+    reg  res_end_short;
+    reg  last2_enter;
+    reg  res_sync_enter;
+    reg  res_end_enter;
+    reg  last1_enter;
     
     // Sub module instances
     drcc__chan_b__btl__brp_cnt brp_cnt(
@@ -8472,6 +8665,31 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         .q(sample_point_q__q),
         .clock(sample_point_q__clock)
     );
+    drcc__chan_b__btl__tick_q tick_q(
+        .d(tick_q__d),
+        .q(tick_q__q),
+        .clock(tick_q__clock)
+    );
+    drcc__chan_b__btl__last1 last1(
+        .d(last1__d),
+        .q(last1__q),
+        .clock(last1__clock)
+    );
+    drcc__chan_b__btl__last2 last2(
+        .d(last2__d),
+        .q(last2__q),
+        .clock(last2__clock)
+    );
+    drcc__chan_b__btl__res_sync res_sync(
+        .d(res_sync__d),
+        .q(res_sync__q),
+        .clock(res_sync__clock)
+    );
+    drcc__chan_b__btl__res_end res_end(
+        .d(res_end__d),
+        .q(res_end__q),
+        .clock(res_end__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -8485,6 +8703,11 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         last_sample_q__clock = clk;
         synced__clock = clk;
         sample_point_q__clock = clk;
+        tick_q__clock = clk;
+        last1__clock = clk;
+        last2__clock = clk;
+        res_sync__clock = clk;
+        res_end__clock = clk;
         brp_cnt__d = brp_cnt__q;
         seg__d = seg__q;
         quantum__d = quantum__q;
@@ -8495,14 +8718,28 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         last_sample_q__d = last_sample_q__q;
         synced__d = synced__q;
         sample_point_q__d = sample_point_q__q;
+        tick_q__d = tick_q__q;
+        last1__d = last1__q;
+        last2__d = last2__q;
+        res_sync__d = res_sync__q;
+        res_end__d = res_end__q;
         tseg1_nominal = cfg_tseg1_len;
         tseg2_nominal = cfg_tseg2_len;
         sjw_eff = cfg_sjw_len;
-        tick = brp_cnt__q >= cfg_brp;
+        tick = tick_q__q;
+        if (rst || tick) begin
+            brp_cnt_n = zero6;
+        end
+        else begin
+            brp_cnt_n = brp_cnt__q + one6;
+        end
+        brp_cnt__d = brp_cnt_n;
+        tick_q__d = brp_cnt_n >= cfg_brp_next;
         sync_ok = rx_prev__q && ~rx_s && last_sample_q__q && ~synced__q;
         do_hard = sync_ok && hard_sync_enable;
         do_resync = sync_ok && ~hard_sync_enable && tx;
         quantum_next = quantum__q + one5;
+        quantum_next2 = quantum_next + one5;
         pos_error = quantum__q + one5;
         if (pos_error > ((sjw_eff) & 5'h1f)) begin
             pos_jump = ((sjw_eff) & 5'h1f);
@@ -8516,13 +8753,29 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         else begin
             tseg1_eff = tseg1_len__q;
         end
-        neg_error = tseg2_len__q - quantum__q[(32'h0)+:(4)];
+        t2_short = tseg2_len__q - sjw_eff;
         if (do_resync) begin
-            tseg2_eff = tseg2_len__q - sjw_eff;
+            tseg2_eff = t2_short;
         end
         else begin
             tseg2_eff = tseg2_len__q;
         end
+        last1_enter = one5 >= tseg1_nominal;
+        last1_stay = quantum_next2 >= tseg1_len__q;
+        last2_enter = one4 >= tseg2_len__q;
+        res_sync_enter = tseg2_len__q <= sjw_eff;
+        res_end_enter = one4 >= t2_short;
+        q2_next = quantum_next[(32'h0)+:(4)];
+        q2_next2 = quantum_next2[(32'h0)+:(4)];
+        last2_stay = q2_next2 >= tseg2_len__q;
+        ne_stay = tseg2_len__q - q2_next;
+        res_sync_stay = ne_stay <= sjw_eff;
+        res_end_stay = q2_next2 >= t2_short;
+        last2_short = q2_next2 >= t2_short;
+        ne_short = t2_short - q2_next;
+        res_sync_short = ne_short <= sjw_eff;
+        t2_short2 = t2_short - sjw_eff;
+        res_end_short = q2_next2 >= t2_short2;
         if (cfg_triple) begin
             sample_value = (rx_prev2__q && rx_prev__q) || (rx_prev__q && rx_s) || (rx_prev2__q && rx_s);
         end
@@ -8534,7 +8787,6 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
         hard_sync = 1'b0;
         sample_point_q__d = 1'b0;
         if (tick) begin
-            brp_cnt__d = zero6;
             rx_prev__d = rx_s;
             rx_prev2__d = rx_prev__q;
             if (do_hard) begin
@@ -8545,6 +8797,10 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
                 synced__d = 1'b1;
                 bit_start = 1'b1;
                 hard_sync = 1'b1;
+                last1__d = last1_enter;
+                last2__d = 1'b0;
+                res_sync__d = 1'b0;
+                res_end__d = 1'b0;
             end
             else begin
                 case (seg__q)
@@ -8557,6 +8813,10 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
                             if (do_resync) begin
                                 synced__d = 1'b1;
                             end
+                            last1__d = last1_enter;
+                            last2__d = 1'b0;
+                            res_sync__d = 1'b0;
+                            res_end__d = 1'b0;
                         end
                     Segment__Tseg1:
                         begin
@@ -8564,58 +8824,85 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
                                 synced__d = 1'b1;
                             end
                             tseg1_len__d = tseg1_eff;
-                            if (quantum_next >= tseg1_eff) begin
+                            if (last1__q && ~do_resync) begin
                                 sample = 1'b1;
                                 sample_point_q__d = 1'b1;
                                 last_sample_q__d = sample_value;
                                 synced__d = 1'b0;
                                 seg__d = Segment__Tseg2;
                                 quantum__d = zero5;
+                                last1__d = 1'b0;
+                                last2__d = last2_enter;
+                                res_sync__d = res_sync_enter;
+                                res_end__d = res_end_enter;
                             end
                             else begin
                                 quantum__d = quantum_next;
+                                if (do_resync) begin
+                                    last1__d = last1__q && ((quantum__q == zero5) || (sjw_eff == one4));
+                                end
+                                else begin
+                                    last1__d = last1_stay;
+                                end
                             end
                         end
                     Segment__Tseg2:
                         begin
-                            if (do_resync && (neg_error <= sjw_eff)) begin
+                            if (do_resync && res_sync__q) begin
                                 seg__d = Segment__Tseg1;
                                 quantum__d = zero5;
                                 tseg1_len__d = tseg1_nominal;
                                 tseg2_len__d = tseg2_nominal;
                                 synced__d = 1'b1;
                                 bit_start = 1'b1;
+                                last1__d = last1_enter;
+                                last2__d = 1'b0;
+                                res_sync__d = 1'b0;
+                                res_end__d = 1'b0;
                             end
                             else begin
                                 if (do_resync) begin
                                     synced__d = 1'b1;
                                 end
                                 tseg2_len__d = tseg2_eff;
-                                if (quantum_next[(32'h0)+:(4)] >= tseg2_eff) begin
+                                if ((do_resync && res_end__q) || (~do_resync && last2__q)) begin
                                     seg__d = Segment__Sync;
                                     quantum__d = zero5;
                                     bit_start = 1'b1;
+                                    last2__d = 1'b0;
+                                    res_sync__d = 1'b0;
+                                    res_end__d = 1'b0;
                                 end
                                 else begin
                                     quantum__d = quantum_next;
+                                    if (do_resync) begin
+                                        last2__d = last2_short;
+                                        res_sync__d = res_sync_short;
+                                        res_end__d = res_end_short;
+                                    end
+                                    else begin
+                                        last2__d = last2_stay;
+                                        res_sync__d = res_sync_stay;
+                                        res_end__d = res_end_stay;
+                                    end
                                 end
                             end
                         end
                     default:
                         begin
                             seg__d = Segment__Sync;
+                            last1__d = 1'b0;
+                            last2__d = 1'b0;
+                            res_sync__d = 1'b0;
+                            res_end__d = 1'b0;
                         end
                 endcase
             end
-        end
-        else begin
-            brp_cnt__d = brp_cnt__q + one6;
         end
         sampled = sample_value;
         sample_point = sample_point_q__q;
         last_sample = last_sample_q__q;
         if (rst) begin
-            brp_cnt__d = zero6;
             seg__d = Segment__Sync;
             quantum__d = zero5;
             tseg1_len__d = tseg1_nominal;
@@ -8625,6 +8912,10 @@ module drcc__chan_b__btl(clk,rst,cfg_brp,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len
             last_sample_q__d = 1'b1;
             synced__d = 1'b0;
             sample_point_q__d = 1'b0;
+            last1__d = 1'b0;
+            last2__d = 1'b0;
+            res_sync__d = 1'b0;
+            res_end__d = 1'b0;
         end
     end
     
@@ -8645,6 +8936,38 @@ module drcc__chan_b__btl__brp_cnt(d,q,clock);
     end
           
 endmodule // drcc__chan_b__btl__brp_cnt
+
+
+module drcc__chan_b__btl__last1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__btl__last1
+
+
+module drcc__chan_b__btl__last2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__btl__last2
 
 
 module drcc__chan_b__btl__last_sample_q(d,q,clock);
@@ -8677,6 +9000,38 @@ module drcc__chan_b__btl__quantum(d,q,clock);
     end
           
 endmodule // drcc__chan_b__btl__quantum
+
+
+module drcc__chan_b__btl__res_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__btl__res_end
+
+
+module drcc__chan_b__btl__res_sync(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__btl__res_sync
 
 
 module drcc__chan_b__btl__rx_prev(d,q,clock);
@@ -8764,6 +9119,22 @@ module drcc__chan_b__btl__synced(d,q,clock);
 endmodule // drcc__chan_b__btl__synced
 
 
+module drcc__chan_b__btl__tick_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__btl__tick_q
+
+
 module drcc__chan_b__btl__tseg1_len(d,q,clock);
     
     // Module arguments
@@ -8796,7 +9167,7 @@ module drcc__chan_b__btl__tseg2_len(d,q,clock);
 endmodule // drcc__chan_b__btl__tseg2_len
 
 
-module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp,triple,mode,ewl,single_shot,tseg1_len,tseg2_len,sjw_len);
+module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp_next,triple,mode,ewl,single_shot,tseg1_len,tseg2_len,sjw_len);
     
     // Module arguments
     input wire  clk;
@@ -8809,7 +9180,7 @@ module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
     input wire  [1:0] cfg_mode;
     input wire  [7:0] cfg_ewl;
     input wire  cfg_single_shot;
-    output reg  [5:0] brp;
+    output reg  [5:0] brp_next;
     output reg  triple;
     output reg  [1:0] mode;
     output reg  [7:0] ewl;
@@ -8965,7 +9336,12 @@ module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
             tseg2_len_q__d = ((cfg_tseg2) & 4'hf) + one4;
             sjw_len_q__d = ((sjw_clamped) & 4'hf) + one4;
         end
-        brp = brp_q__q;
+        if (rst) begin
+            brp_next = cfg_brp;
+        end
+        else begin
+            brp_next = brp_q__q;
+        end
         triple = triple_q__q;
         mode = mode_q__q;
         ewl = ewl_q__q;

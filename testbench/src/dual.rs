@@ -25,6 +25,9 @@ use drcc_cosim::Frame;
 
 use crate::engines::{EngineKind, VERILATOR_HINT};
 
+/// `field` probe code of the data field (timing contract §4.1).
+const FIELD_DATA: u8 = 10;
+
 /// Clocks per bit of the scenarios: 8 MHz, 1 Mbit/s, 8 tq of one clock.
 pub const CLOCKS_PER_BIT: u64 = 8;
 
@@ -79,6 +82,8 @@ pub struct DualScenario {
     pub policy: Policy,
     pub dual_tx: bool,
     pub recovery_bits: u16,
+    /// "No bus activity" judgement: a frame pending this many bit times (0 = off).
+    pub stall_bits: u16,
 }
 
 impl DualScenario {
@@ -99,6 +104,10 @@ impl DualScenario {
             policy: Policy::KFailed(2),
             dual_tx: true,
             recovery_bits: 1_000,
+            // A stuck-dominant line never lets a waiting frame start: no attempt
+            // fails, so only the stall judgement sees it. 500 bit times is about 8
+            // frames of waiting for arbitration.
+            stall_bits: 500,
         }
     }
 
@@ -109,6 +118,7 @@ impl DualScenario {
             policy: self.policy,
             dual_tx: self.dual_tx,
             recovery_bits: self.recovery_bits,
+            stall_limit: self.stall_bits,
             dedup_window: 2_000,
             ..HostConfig::default()
         }
@@ -254,21 +264,22 @@ pub fn run_dual(
         Ok(sys)
     };
     // The babbling transmitter must hit node 0 while it transmits (else another
-    // node's frame takes the hit): the fault starts at node 0's first SOF on A at
-    // or after `fault_start_bits`, found by running the fault-free prefix (the run
-    // is deterministic up to the fault).
+    // node's frame takes the hit; in arbitration it would only make node 0 lose):
+    // the fault starts in the data field of node 0's first frame on A at or after
+    // `fault_start_bits`, found by running the fault-free prefix (the run is
+    // deterministic up to the fault).
     let mut start = s.fault_start_bits * CLOCKS_PER_BIT;
     if s.fault == DualFault::ABusOff {
         let mut probe = build(EngineKind::Model, None)?;
-        let mut prev = true;
         loop {
             probe.step();
-            let tx = probe.node(0).outputs.chan_a_tx;
-            if probe.cycle() > start && prev && !tx {
+            let n0 = probe.node(0).outputs;
+            // Node 0 drives a dominant bit in a data field: it is the transmitter
+            // (receivers stay recessive there), past arbitration.
+            if probe.cycle() > start && n0.probes.chan_a_field == FIELD_DATA && !n0.chan_a_tx {
                 start = probe.cycle();
                 break;
             }
-            prev = tx;
             if probe.cycle() > start + 100_000 {
                 return Err("a_bus_off: node 0 never transmitted on line A".into());
             }

@@ -144,7 +144,7 @@ pub fn run_paper(
                 CLOCK_HZ,
                 2,
                 &format!(
-                    "DRCC paper Figs. 5-8: channel A without acknowledgement, {} , policy {policy:?}",
+                    "DRCC paper Figs. 5-8: channel A without acknowledgement, {}, policy {policy:?}",
                     rate.name
                 ),
             )

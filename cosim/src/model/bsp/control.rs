@@ -65,11 +65,13 @@ impl Bsp {
     }
 
     /// The attempt ended without success (lost arbitration, or an error detected
-    /// as transmitter): in single-shot mode, or with an abort remembered, the frame
-    /// is dropped at this edge (§8); otherwise it stays pending for a retry.
+    /// as transmitter): in single-shot mode, or with an abort remembered before
+    /// this edge, the frame is dropped at this edge (§8); otherwise it stays
+    /// pending (an abort that arrived at this very edge is carried out at the next
+    /// edge where the node is no transmitter and its `tx` recessive).
     pub(super) fn attempt_failed(&mut self) {
         self.attempt = false;
-        if self.single_shot || self.abort_pending {
+        if self.single_shot || (self.abort_pending && !self.abort_new) {
             self.drop_frame();
         }
     }
@@ -105,8 +107,9 @@ impl Bsp {
         }
         if !self.transmitter && self.tx {
             self.drop_frame();
-        } else {
+        } else if !self.abort_pending {
             self.abort_pending = true;
+            self.abort_new = true;
         }
     }
 }

@@ -147,6 +147,9 @@ pub struct Bsp {
     attempt: bool,
     /// A `tx_abort` is remembered (decision 15).
     abort_pending: bool,
+    /// The abort became remembered at this edge: an attempt that ends at this same
+    /// edge is judged without it (§8, "on the state before it").
+    abort_new: bool,
     // Host side.
     rx_frame: Frame,
     tx_done: bool,
@@ -213,6 +216,7 @@ impl Bsp {
             single_shot,
             attempt: false,
             abort_pending: false,
+            abort_new: false,
             rx_frame: Frame::default(),
             tx_done: false,
             arb_lost: false,
@@ -273,6 +277,7 @@ impl Bsp {
         self.rx_valid = false;
         self.tx_failed = false;
         self.diag.err_valid = false;
+        self.abort_new = false;
     }
 
     /// `tx_req` while nothing is pending (contract §4.4): latch the frame, or in

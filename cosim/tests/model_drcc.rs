@@ -1019,3 +1019,39 @@ fn rx_ready_never_pairs_the_flag_with_a_stale_head() {
         assert!(seen, "phase {phase}: the new frame arrived");
     }
 }
+
+/// Contract §9: redundancy mode needs both channels able to transmit; a CTRL write
+/// asking for redundancy with a LISTEN_ONLY channel (§C.7 mode 1) is refused.
+#[test]
+fn redundancy_with_a_listen_only_channel_is_refused() {
+    let mut sys = Sys::new(1);
+    let ctrl0 = sys.read(0, CTRL);
+    for mode in [1u32 << 12, 1u32 << 14] {
+        sys.write(0, CTRL, RESET_MODE | REDUNDANCY | policy(1) | k(1) | mode);
+        assert!(take_illegal(&mut sys), "mode bits {mode:#x}");
+        assert_eq!(sys.read(0, CTRL), ctrl0, "the whole write is refused");
+    }
+    // The same channel modes are fine in normal mode.
+    sys.write(0, CTRL, RESET_MODE | policy(1) | k(1) | 1 << 12);
+    assert!(!take_illegal(&mut sys));
+}
+
+/// Contract §6: the write that clears reset mode may also carry the configuration;
+/// the channels stay in reset one more clock and take it. Here channel A becomes
+/// SELF_TEST (§C.7: no ACK needed) in that very write: alone on its line, it then
+/// sends a frame successfully instead of collecting ACK errors.
+#[test]
+fn configuration_in_the_write_that_leaves_reset_mode_is_taken() {
+    let mut sys = Sys::new(1);
+    sys.write(0, CTRL, policy(1) | k(1) | 2 << 12); // reset_mode 0, mode_a SELF_TEST
+    sys.run(20 * CPB);
+    let f = frame(0x321, false, false, 1, &[0x5A]);
+    sys.push(0, &f, 0);
+    sys.run(200 * CPB);
+    assert_eq!(
+        sys.read(0, INT_STATUS) & (I_TX_DONE | I_TX_FAILURE),
+        I_TX_DONE,
+        "self-test frame sent without acknowledgement"
+    );
+    assert_eq!(sys.read(0, CHAN_A_ERR) & 0x1FF, 0, "no ACK error counted");
+}

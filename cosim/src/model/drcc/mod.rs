@@ -94,6 +94,10 @@ struct Regs {
     err_q: [u8; 2],
     /// STATS1[31:16].
     recoveries: u16,
+    /// `reset_mode` one edge earlier: the channels stay in reset one clock longer
+    /// so that they capture the configuration written with the write that leaves
+    /// reset mode (contract §6).
+    reset_mode_q: bool,
 }
 
 impl Regs {
@@ -115,6 +119,7 @@ impl Regs {
             bit_cnt: 0,
             err_q: [0; 2],
             recoveries: 0,
+            reset_mode_q: true,
         }
     }
     fn reset_mode(&self) -> bool {
@@ -206,7 +211,7 @@ impl DrccModel {
         let r = &self.r;
         let b = r.btr;
         ChannelInputs {
-            rst: rst || r.reset_mode() || self.aux[c].restarting(),
+            rst: rst || r.reset_mode() || r.reset_mode_q || self.aux[c].restarting(),
             rx,
             timing: BitTiming {
                 brp: r.brp(),
@@ -335,6 +340,7 @@ impl DrccModel {
         let tq_wrap = r.tq_cnt == r.brp();
         let tick = tq_wrap && r.bit_cnt == tpb1;
         let mut n = r;
+        n.reset_mode_q = reset_mode;
         if reset_mode {
             n.tq_cnt = 0;
             n.bit_cnt = 0;
@@ -363,7 +369,11 @@ impl DrccModel {
                     idx::CTRL => {
                         let w = clamp_k(d & ctrl::DEFINED);
                         if reset_mode {
+                            let listen_only = |shift: u32| (w >> shift) & 3 == 1;
                             if (w & ctrl::POLICY_MASK) >> ctrl::POLICY_SHIFT == ctrl::POLICY_ILLEGAL
+                                || (w & ctrl::REDUNDANCY != 0
+                                    && (listen_only(ctrl::MODE_A_SHIFT)
+                                        || listen_only(ctrl::MODE_B_SHIFT)))
                             {
                                 ints |= int::ILLEGAL;
                             } else {

@@ -63,6 +63,13 @@ pub fn run(
             );
             Ok(())
         }
+        "table" => {
+            print!(
+                "{}",
+                drcc_testbench::dual::fault_table(kind, other).map_err(CliError::Error)?
+            );
+            Ok(())
+        }
         "switchover" => {
             print!("{}", switchover_table(kind).map_err(CliError::Error)?);
             Ok(())
@@ -76,7 +83,7 @@ pub fn run(
                     None => {
                         let names: Vec<_> = DualFault::ALL.iter().map(|f| f.name()).collect();
                         return Err(CliError::Error(format!(
-                            "unknown scenario {what:?}: give paper, switchover, all, or one of {}",
+                            "unknown scenario {what:?}: give paper, switchover, table, all, or one of {}",
                             names.join(", ")
                         )));
                     }
@@ -89,7 +96,7 @@ pub fn run(
                 let ok = r.exactly_once();
                 failed += !ok as usize;
                 println!(
-                    "{:<18} {}: {} of {} deliveries, missing {}, duplicates {}, back on A {}/{}",
+                    "{:<18} {}: {} of {} deliveries, missing {}, duplicates {}, back on A {} of the {} that left it",
                     f.name(),
                     if ok { "exactly once" } else { "FAILED" },
                     r.delivered,
@@ -97,7 +104,7 @@ pub fn run(
                     r.missing.len(),
                     r.duplicates.len(),
                     r.back_on_a.iter().filter(|b| b.is_some()).count(),
-                    s.nodes
+                    r.a_failed.iter().filter(|&&f| f).count()
                 );
             }
             if failed > 0 {

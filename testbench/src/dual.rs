@@ -221,13 +221,22 @@ pub struct DualReport {
     pub status_end: Vec<u32>,
     pub aux_a_end: Vec<u32>,
     pub stats0_end: Vec<u32>,
-    /// Per node: first clock (after the fault ended) at which the main FSM went
-    /// from wait4 to idle1, if it did.
+    /// Per node: the clock at which the main FSM went wait4 -> idle1 after aux A
+    /// had judged channel A failed and then reported it valid again (the return
+    /// to channel A), if that happened (cleared again by a later failure).
     pub back_on_a: Vec<Option<u64>>,
-    /// Per node: frames sent on line A after the fault ended (SOFs on `chan_a_tx`).
+    /// Per node: whether aux A ever left `valid`.
+    pub a_failed: Vec<bool>,
+    /// Per node: frames it sent as transmitter on line A after its return to A and
+    /// after the fault ended (it drove a dominant bit in a data field).
     pub a_frames_after: Vec<u64>,
     /// First clock at which some node's aux A left `valid`, if any.
     pub first_aux_failure: Option<u64>,
+    /// Clocks at which the fault started and ended.
+    pub fault_start: u64,
+    pub fault_end: u64,
+    /// Frames the hosts pushed into their DRCC.
+    pub pushed: usize,
 }
 
 impl DualReport {
@@ -296,12 +305,14 @@ pub fn run_dual(
     let mut report = DualReport {
         scenario: s.fault.name().to_string(),
         back_on_a: vec![None; s.nodes],
+        a_failed: vec![false; s.nodes],
         a_frames_after: vec![0; s.nodes],
         ..DualReport::default()
     };
     let mut prev_state = vec![0u8; s.nodes];
-    let mut prev_tx_a = vec![true; s.nodes];
-    let mut a_idle_bits = vec![0u64; s.nodes];
+    let mut prev_aux = vec![0u8; s.nodes];
+    let mut awaiting_return = vec![false; s.nodes];
+    let mut counted_frame = vec![false; s.nodes];
     let mut cycle = 0;
     let read_regs = |sys: &mut DualBusSystem, regs: &[u8]| {
         for n in 0..sys.len() {
@@ -335,28 +346,28 @@ pub fn run_dual(
             if report.first_aux_failure.is_none() && p.aux_a_state != 0 {
                 report.first_aux_failure = Some(cycle);
             }
-            if cycle >= fault_end
-                && prev_state[i] == 9
-                && p.state == 0
-                && report.back_on_a[i].is_none()
-            {
+            if p.aux_a_state != 0 {
+                report.a_failed[i] = true;
+                report.back_on_a[i] = None;
+                awaiting_return[i] = false;
+            } else if prev_aux[i] != 0 {
+                awaiting_return[i] = true;
+            }
+            prev_aux[i] = p.aux_a_state;
+            if awaiting_return[i] && prev_state[i] == 9 && p.state == 0 {
                 report.back_on_a[i] = Some(cycle);
+                awaiting_return[i] = false;
             }
             prev_state[i] = p.state;
-            // A SOF: own dominant after at least 11 recessive bits on the pin.
-            let tx = n.outputs.chan_a_tx;
-            if prev_tx_a[i] && !tx {
-                if cycle >= fault_end && a_idle_bits[i] >= 11 * CLOCKS_PER_BIT {
+            // Transmitter on A: a dominant bit of its own in a data field.
+            if p.chan_a_field == FIELD_DATA && !n.outputs.chan_a_tx {
+                if !counted_frame[i] && report.back_on_a[i].is_some() && cycle >= fault_end {
                     report.a_frames_after[i] += 1;
                 }
-                a_idle_bits[i] = 0;
+                counted_frame[i] = true;
+            } else if p.chan_a_field != FIELD_DATA {
+                counted_frame[i] = false;
             }
-            if tx {
-                a_idle_bits[i] += 1;
-            } else {
-                a_idle_bits[i] = 0;
-            }
-            prev_tx_a[i] = tx;
         }
         cycle += 1;
         if cycle > total + 100_000 {
@@ -367,6 +378,9 @@ pub fn run_dual(
         }
     }
     report.cycles = cycle;
+    report.fault_start = start;
+    report.fault_end = fault_end;
+    report.pushed = main.nodes().iter().map(|n| n.host.sent.len()).sum();
     tally(s, &main, &mut report);
     Ok(report)
 }
@@ -413,4 +427,78 @@ fn tally(s: &DualScenario, sys: &DualBusSystem, r: &mut DualReport) {
         r.aux_a_end.push(get(3));
         r.stats0_end.push(get(4));
     }
+}
+
+/// The fault scenarios as a Markdown table (`drcc redundancy table`): per fault,
+/// deliveries, bit times from fault onset to the first node judging channel A
+/// failed, and from the end of the fault to the last node back on channel A.
+pub fn fault_table(kind: EngineKind, cosim: Option<EngineKind>) -> Result<String, String> {
+    let mut t = String::from(
+        "| fault (line A) | deliveries (exactly once) | lost | duplicated | duplicates dropped per node | onset -> channel A judged failed | fault end -> last node back on A (wait4 -> idle1) |\n\
+         |---|---:|---:|---:|---:|---:|---:|\n",
+    );
+    for f in DualFault::ALL {
+        let s = DualScenario::standard(f);
+        let r = run_dual(&s, kind, cosim)?;
+        let expected = s.nodes * (s.nodes - 1) * s.frames_per_node;
+        let to_fail = match r.first_aux_failure {
+            Some(c) if f != DualFault::None => {
+                format!(
+                    "{} bit times",
+                    c.saturating_sub(r.fault_start) / CLOCKS_PER_BIT
+                )
+            }
+            _ => "-".to_string(),
+        };
+        let back = if f == DualFault::None {
+            "-".to_string()
+        } else {
+            let returns: Vec<u64> = (0..s.nodes)
+                .filter(|&n| r.a_failed[n])
+                .filter_map(|n| r.back_on_a[n])
+                .collect();
+            let failed = r.a_failed.iter().filter(|&&x| x).count();
+            if failed == 0 {
+                "no node left A".to_string()
+            } else if returns.len() < failed {
+                format!(
+                    "{} of {failed} nodes did not return",
+                    failed - returns.len()
+                )
+            } else {
+                let last = returns.iter().max().copied().unwrap_or(r.fault_end);
+                if last >= r.fault_end {
+                    format!(
+                        "{} bit times ({failed} nodes)",
+                        (last - r.fault_end) / CLOCKS_PER_BIT
+                    )
+                } else {
+                    // A receiver cannot tell a dead transceiver from a quiet bus:
+                    // the aux probation ended while the fault was still there.
+                    format!(
+                        "{} bit times before the fault ended ({failed} nodes)",
+                        (r.fault_end - last) / CLOCKS_PER_BIT
+                    )
+                }
+            }
+        };
+        let dups: Vec<String> = r
+            .stats0_end
+            .iter()
+            .map(|v| (v & 0xFFFF).to_string())
+            .collect();
+        t.push_str(&format!(
+            "| {} | {}/{} {} | {} | {} | {} | {} | {} |\n",
+            f.name(),
+            r.delivered,
+            expected,
+            if r.exactly_once() { "yes" } else { "NO" },
+            r.missing.len(),
+            r.duplicates.len(),
+            dups.join(" / "),
+            to_fail,
+            back
+        ));
+    }
+    Ok(t)
 }

@@ -50,8 +50,10 @@ fn aux_a_state(status: u32) -> u32 {
     status >> 5 & 3
 }
 
-/// The nodes named failed channel A while the fault lasted, and afterwards every
-/// node is back on channel A with channel A valid and has sent on line A again.
+/// The `affected` nodes judged channel A failed (AUX_A counts a failure while the
+/// fault lasts); every node that left channel A came back to it through
+/// wait4 -> idle1 after its last failure and sent frames on line A after the
+/// fault ended; at the end every node is in idle1 with channel A valid.
 fn check_failure_and_return(r: &DualReport, affected: &[usize]) {
     for &n in affected {
         assert!(
@@ -60,13 +62,21 @@ fn check_failure_and_return(r: &DualReport, affected: &[usize]) {
             r.scenario,
             r.aux_a_during[n]
         );
-        assert!(
-            r.back_on_a[n].is_some(),
-            "{}: node {n} never went wait4 -> idle1 after the fault",
-            r.scenario
-        );
     }
-    for (n, &status) in r.status_end.iter().enumerate() {
+    for n in 0..r.status_end.len() {
+        if r.a_failed[n] {
+            assert!(
+                r.back_on_a[n].is_some(),
+                "{}: node {n} did not return to channel A (wait4 -> idle1) after its last failure",
+                r.scenario
+            );
+            assert!(
+                r.a_frames_after[n] >= 1,
+                "{}: node {n} sent nothing on line A after its return and the fault's end",
+                r.scenario
+            );
+        }
+        let status = r.status_end[n];
         assert_eq!(
             fsm_state(status),
             0,
@@ -77,11 +87,6 @@ fn check_failure_and_return(r: &DualReport, affected: &[usize]) {
             aux_a_state(status),
             0,
             "{}: node {n} channel A valid again",
-            r.scenario
-        );
-        assert!(
-            r.a_frames_after[n] >= 1,
-            "{}: node {n} did not send on line A after the fault",
             r.scenario
         );
     }
@@ -101,8 +106,11 @@ fn no_fault_every_message_once_and_copies_dropped() {
 
 #[test]
 fn cut_line_a() {
+    // Each half of line A still acknowledges its own frames: no transmitter sees
+    // an error, so no node leaves A; dual_tx's copies on B carry the frames across.
     let r = run(DualFault::CutA);
     check_failure_and_return(&r, &[]);
+    assert!(r.a_failed.iter().all(|&f| !f), "nobody needs to leave A");
 }
 
 #[test]

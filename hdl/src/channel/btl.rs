@@ -74,6 +74,7 @@ pub struct BitTimingLogic {
     last2: DFF<Bit>,
     res_sync: DFF<Bit>,
     res_end: DFF<Bit>,
+    hse_q: DFF<Bit>,
     // combinational helpers
     tick: Signal<Local, Bit>,
     tseg1_nominal: Signal<Local, Bits<5>>,
@@ -148,6 +149,7 @@ impl Default for BitTimingLogic {
             last2: Default::default(),
             res_sync: Default::default(),
             res_end: Default::default(),
+            hse_q: Default::default(),
             tick: Default::default(),
             tseg1_nominal: Default::default(),
             tseg2_nominal: Default::default(),
@@ -209,7 +211,8 @@ impl Logic for BitTimingLogic {
             last1,
             last2,
             res_sync,
-            res_end
+            res_end,
+            hse_q
         );
         // Nominal lengths from the minus-one encodings; SJW clamped to TSEG2.
         // Lengths in tq, clamped and registered by the configuration block.
@@ -282,7 +285,14 @@ impl Logic for BitTimingLogic {
             self.sample_value.next = self.rx_s.val();
         }
 
-        self.sample.next = false;
+        // `sample` for the bit stream processor: the TSEG1 branch below, with
+        // `hard_sync_enable` one clock late. It changes only at SAMPLE edges and reset,
+        // and in the clock after either `last1` is 0, so the late copy is exact
+        // wherever it matters.
+        self.hse_q.d.next = self.hard_sync_enable.val();
+        self.sample.next = self.tick.val()
+            && self.last1.q.val()
+            && !(self.sync_ok.val() && (self.hse_q.q.val() || self.tx.val()));
         self.bit_start.next = false;
         self.hard_sync.next = false;
         self.sample_point_q.d.next = false;
@@ -325,8 +335,7 @@ impl Logic for BitTimingLogic {
                         // q+1 >= t1 (`last1`); with a resync never: the jump is
                         // at least one tq and q < t1.
                         if self.last1.q.val() && !self.do_resync.val() {
-                            // Sample point: end of TSEG1.
-                            self.sample.next = true;
+                            // Sample point: end of TSEG1 (`sample` above).
                             self.sample_point_q.d.next = true;
                             self.last_sample_q.d.next = self.sample_value.val();
                             self.synced.d.next = false;

@@ -53,12 +53,26 @@ pub struct ChannelConfig {
     ewl_q: DFF<Bits<8>>,
     single_shot_q: DFF<Bit>,
     // clamping
-    tseg1_min: Signal<Local, Bits<4>>,
-    tseg1_floor: Signal<Local, Bits<4>>,
-    tseg1_raised: Signal<Local, Bits<4>>,
-    tseg1_clamped: Signal<Local, Bits<4>>,
+    brp0: Signal<Local, Bit>,
+    brp1: Signal<Local, Bit>,
+    tseg1_low: Signal<Local, Bits<4>>,
+    tseg1_low_len: Signal<Local, Bits<5>>,
+    tseg1_inc: Signal<Local, Bits<5>>,
+    tseg1_clamped_len: Signal<Local, Bits<5>>,
+    n3_0: Constant<Bits<3>>,
+    n3_1: Constant<Bits<3>>,
+    n3_2: Constant<Bits<3>>,
+    n3_3: Constant<Bits<3>>,
+    n3_4: Constant<Bits<3>>,
+    n4_3: Constant<Bits<4>>,
+    n4_4: Constant<Bits<4>>,
+    n5_1: Constant<Bits<5>>,
+    n5_2: Constant<Bits<5>>,
+    n5_3: Constant<Bits<5>>,
+    n5_4: Constant<Bits<5>>,
+    n5_5: Constant<Bits<5>>,
+    n5_6: Constant<Bits<5>>,
     sjw_clamped: Signal<Local, Bits<2>>,
-    n3_5: Constant<Bits<3>>,
     n4_5: Constant<Bits<4>>,
     n4_0: Constant<Bits<4>>,
     n4_1: Constant<Bits<4>>,
@@ -98,12 +112,26 @@ impl Default for ChannelConfig {
             mode_q: Default::default(),
             ewl_q: Default::default(),
             single_shot_q: Default::default(),
-            tseg1_min: Default::default(),
-            tseg1_floor: Default::default(),
-            tseg1_raised: Default::default(),
-            tseg1_clamped: Default::default(),
+            brp0: Default::default(),
+            brp1: Default::default(),
+            tseg1_low: Default::default(),
+            tseg1_low_len: Default::default(),
+            tseg1_inc: Default::default(),
+            tseg1_clamped_len: Default::default(),
+            n3_0: Constant::new(0.into()),
+            n3_1: Constant::new(1.into()),
+            n3_2: Constant::new(2.into()),
+            n3_3: Constant::new(3.into()),
+            n3_4: Constant::new(4.into()),
+            n4_3: Constant::new(3.into()),
+            n4_4: Constant::new(4.into()),
+            n5_1: Constant::new(1.into()),
+            n5_2: Constant::new(2.into()),
+            n5_3: Constant::new(3.into()),
+            n5_4: Constant::new(4.into()),
+            n5_5: Constant::new(5.into()),
+            n5_6: Constant::new(6.into()),
             sjw_clamped: Default::default(),
-            n3_5: Constant::new(5.into()),
             n4_5: Constant::new(5.into()),
             n4_0: Constant::new(0.into()),
             n4_1: Constant::new(1.into()),
@@ -129,29 +157,37 @@ impl Logic for ChannelConfig {
             tseg2_len_q,
             sjw_len_q
         );
-        // 8 tq per bit: TSEG1 >= 7 - TSEG2, i.e. (tseg1-1) >= 5 - (tseg2-1).
-        if self.cfg_tseg2.val() < self.n3_5.val() {
-            self.tseg1_min.next = self.n4_5.val() - bit_cast::<4, 3>(self.cfg_tseg2.val());
+        // TSEG1' - 1 = max(TSEG1 - 1, L) with the lower bound L = max(5 - (TSEG2 - 1)
+        // (8 tq per bit: TSEG1 >= 7 - TSEG2), 2 for BRP = 0 / 1 for BRP = 1 (own-bit
+        // read-back: (BRP+1) * TSEG1 >= 3 clocks)). L and L + 1 are a table of the
+        // inputs and TSEG1 + 1 is formed beside the comparison, so the capture path
+        // has one comparator and no chained adders.
+        self.brp0.next = self.cfg_brp.val() == self.n6_0.val();
+        self.brp1.next = self.cfg_brp.val() == self.n6_1.val();
+        if self.cfg_tseg2.val() == self.n3_0.val() {
+            self.tseg1_low.next = self.n4_5.val();
+            self.tseg1_low_len.next = self.n5_6.val();
+        } else if self.cfg_tseg2.val() == self.n3_1.val() {
+            self.tseg1_low.next = self.n4_4.val();
+            self.tseg1_low_len.next = self.n5_5.val();
+        } else if self.cfg_tseg2.val() == self.n3_2.val() {
+            self.tseg1_low.next = self.n4_3.val();
+            self.tseg1_low_len.next = self.n5_4.val();
+        } else if (self.cfg_tseg2.val() == self.n3_3.val()) || self.brp0.val() {
+            self.tseg1_low.next = self.n4_2.val();
+            self.tseg1_low_len.next = self.n5_3.val();
+        } else if self.brp1.val() || (self.cfg_tseg2.val() == self.n3_4.val()) {
+            self.tseg1_low.next = self.n4_1.val();
+            self.tseg1_low_len.next = self.n5_2.val();
         } else {
-            self.tseg1_min.next = self.n4_0.val();
+            self.tseg1_low.next = self.n4_0.val();
+            self.tseg1_low_len.next = self.n5_1.val();
         }
-        // Own-bit read-back: (BRP+1) * TSEG1 >= 3 clocks.
-        if self.cfg_brp.val() == self.n6_0.val() {
-            self.tseg1_floor.next = self.n4_2.val();
-        } else if self.cfg_brp.val() == self.n6_1.val() {
-            self.tseg1_floor.next = self.n4_1.val();
+        self.tseg1_inc.next = bit_cast::<5, 4>(self.cfg_tseg1.val()) + self.one5.val();
+        if self.cfg_tseg1.val() < self.tseg1_low.val() {
+            self.tseg1_clamped_len.next = self.tseg1_low_len.val();
         } else {
-            self.tseg1_floor.next = self.n4_0.val();
-        }
-        if self.cfg_tseg1.val() < self.tseg1_min.val() {
-            self.tseg1_raised.next = self.tseg1_min.val();
-        } else {
-            self.tseg1_raised.next = self.cfg_tseg1.val();
-        }
-        if self.tseg1_raised.val() < self.tseg1_floor.val() {
-            self.tseg1_clamped.next = self.tseg1_floor.val();
-        } else {
-            self.tseg1_clamped.next = self.tseg1_raised.val();
+            self.tseg1_clamped_len.next = self.tseg1_inc.val();
         }
         // SJW <= TSEG2 (both minus-one encoded).
         if bit_cast::<3, 2>(self.cfg_sjw.val()) > self.cfg_tseg2.val() {
@@ -165,7 +201,7 @@ impl Logic for ChannelConfig {
             self.mode_q.d.next = self.cfg_mode.val();
             self.ewl_q.d.next = self.cfg_ewl.val();
             self.single_shot_q.d.next = self.cfg_single_shot.val();
-            self.tseg1_len_q.d.next = bit_cast::<5, 4>(self.tseg1_clamped.val()) + self.one5.val();
+            self.tseg1_len_q.d.next = self.tseg1_clamped_len.val();
             self.tseg2_len_q.d.next = bit_cast::<4, 3>(self.cfg_tseg2.val()) + self.one4.val();
             self.sjw_len_q.d.next = bit_cast::<4, 2>(self.sjw_clamped.val()) + self.one4.val();
         }

@@ -138,8 +138,47 @@ pub struct ProtocolController {
     dom_cnt: DFF<Bits<3>>,
     delim_first: DFF<Bit>,
     ack_passive_pending: DFF<Bit>,
+    // registered pre-decodes of the state the next SAMPLE edge sees
+    p_in_arbitration: DFF<Bit>,
+    p_ide: DFF<Bit>,
+    p_in_frame: DFF<Bit>,
+    p_crc_covered: DFF<Bit>,
+    p_in_delim: DFF<Bit>,
+    p_after_error_flag: DFF<Bit>,
+    p_ack_slot: DFF<Bit>,
+    p_stuff_bit: DFF<Bit>,
+    p_bc0: DFF<Bit>,
+    p_bc2: DFF<Bit>,
+    p_bc3: DFF<Bit>,
+    p_bc5: DFF<Bit>,
+    p_bc6: DFF<Bit>,
+    p_bc7: DFF<Bit>,
+    p_bc10: DFF<Bit>,
+    p_bc14: DFF<Bit>,
+    p_bc17: DFF<Bit>,
+    p_data_end: DFF<Bit>,
+    p_recovery_end: DFF<Bit>,
+    p_dom7: DFF<Bit>,
+    p_crc_bit: DFF<Bit>,
+    p_passive: DFF<Bit>,
+    p_bus_off: DFF<Bit>,
+    p_suspend_due: DFF<Bit>,
+    p_tec_ge120: DFF<Bit>,
+    p_tec_ge248: DFF<Bit>,
+    p_rec_ge127: DFF<Bit>,
+    p_rec_ge120: DFF<Bit>,
+    p_cnt_bit_max: DFF<Bit>,
+    p_cnt_stuff_max: DFF<Bit>,
+    p_cnt_crc_max: DFF<Bit>,
+    p_cnt_form_max: DFF<Bit>,
+    p_cnt_ack_max: DFF<Bit>,
+    p_alc: DFF<Bits<5>>,
     // latched transmit frame
-    txf_id: DFF<Bits<29>>,
+    // identifier, aligned so the bit counter indexes it without an adder:
+    // ID_A (ID[28:18] extended, ID[10:0] base) in bits 15..5 (bit 15 - n is ID_A
+    // bit n), ID[17:0] in bits 31..14 (bit 31 - n is ID_B bit n)
+    txf_ida: DFF<Bits<16>>,
+    txf_idb: DFF<Bits<32>>,
     txf_ide: DFF<Bit>,
     txf_rtr: DFF<Bit>,
     txf_dlc: DFF<Bits<4>>,
@@ -176,7 +215,6 @@ pub struct ProtocolController {
     // classification of the sampled bit
     bus_bit: Signal<Local, Bits<1>>,
     start_ok: Signal<Local, Bit>,
-    is_stuff_bit: Signal<Local, Bit>,
     in_arbitration: Signal<Local, Bit>,
     in_frame: Signal<Local, Bit>,
     in_delim: Signal<Local, Bit>,
@@ -202,11 +240,13 @@ pub struct ProtocolController {
     tec_exempt: Signal<Local, Bit>,
     ack_error: Signal<Local, Bit>,
     // bit selectors of the transmitted frame
-    id_a_idx: Signal<Local, Bits<5>>,
+    id_a_idx: Signal<Local, Bits<4>>,
     id_b_idx: Signal<Local, Bits<5>>,
     dlc_idx: Signal<Local, Bits<2>>,
     data_idx: Signal<Local, Bits<6>>,
+    // CRC aligned one bit up: bit 15 - n is CRC bit 14 - n
     crc_idx: Signal<Local, Bits<4>>,
+    crc_tx: Signal<Local, Bits<16>>,
     crc_rx_idx: Signal<Local, Bits<4>>,
     data_wr_idx: Signal<Local, Bits<6>>,
     // sized constants (rust-hdl would emit unsized literals otherwise)
@@ -230,10 +270,6 @@ pub struct ProtocolController {
     n9_248: Constant<Bits<9>>,
     n8_120: Constant<Bits<8>>,
     n8_127: Constant<Bits<8>>,
-    n5_10: Constant<Bits<5>>,
-    n5_17: Constant<Bits<5>>,
-    n5_28: Constant<Bits<5>>,
-    n2_3: Constant<Bits<2>>,
     n6_63: Constant<Bits<6>>,
     n4_14: Constant<Bits<4>>,
     zero4: Constant<Bits<4>>,
@@ -350,7 +386,42 @@ impl Default for ProtocolController {
             dom_cnt: Default::default(),
             delim_first: Default::default(),
             ack_passive_pending: Default::default(),
-            txf_id: Default::default(),
+            p_in_arbitration: Default::default(),
+            p_ide: Default::default(),
+            p_in_frame: Default::default(),
+            p_crc_covered: Default::default(),
+            p_in_delim: Default::default(),
+            p_after_error_flag: Default::default(),
+            p_ack_slot: Default::default(),
+            p_stuff_bit: Default::default(),
+            p_bc0: Default::default(),
+            p_bc2: Default::default(),
+            p_bc3: Default::default(),
+            p_bc5: Default::default(),
+            p_bc6: Default::default(),
+            p_bc7: Default::default(),
+            p_bc10: Default::default(),
+            p_bc14: Default::default(),
+            p_bc17: Default::default(),
+            p_data_end: Default::default(),
+            p_recovery_end: Default::default(),
+            p_dom7: Default::default(),
+            p_crc_bit: Default::default(),
+            p_passive: Default::default(),
+            p_bus_off: Default::default(),
+            p_suspend_due: Default::default(),
+            p_tec_ge120: Default::default(),
+            p_tec_ge248: Default::default(),
+            p_rec_ge127: Default::default(),
+            p_rec_ge120: Default::default(),
+            p_cnt_bit_max: Default::default(),
+            p_cnt_stuff_max: Default::default(),
+            p_cnt_crc_max: Default::default(),
+            p_cnt_form_max: Default::default(),
+            p_cnt_ack_max: Default::default(),
+            p_alc: Default::default(),
+            txf_ida: Default::default(),
+            txf_idb: Default::default(),
             txf_ide: Default::default(),
             txf_rtr: Default::default(),
             txf_dlc: Default::default(),
@@ -383,7 +454,6 @@ impl Default for ProtocolController {
             tx_bit_n: Default::default(),
             bus_bit: Default::default(),
             start_ok: Default::default(),
-            is_stuff_bit: Default::default(),
             in_arbitration: Default::default(),
             in_frame: Default::default(),
             in_delim: Default::default(),
@@ -412,6 +482,7 @@ impl Default for ProtocolController {
             dlc_idx: Default::default(),
             data_idx: Default::default(),
             crc_idx: Default::default(),
+            crc_tx: Default::default(),
             crc_rx_idx: Default::default(),
             data_wr_idx: Default::default(),
             n7_0: c7(0),
@@ -434,10 +505,6 @@ impl Default for ProtocolController {
             n9_248: Constant::new(248.into()),
             n8_120: Constant::new(120.into()),
             n8_127: Constant::new(127.into()),
-            n5_10: Constant::new(10.into()),
-            n5_17: Constant::new(17.into()),
-            n5_28: Constant::new(28.into()),
-            n2_3: Constant::new(3.into()),
             n6_63: Constant::new(63.into()),
             n4_14: Constant::new(14.into()),
             zero4: Constant::new(0.into()),
@@ -483,7 +550,42 @@ impl Logic for ProtocolController {
             cnt_crc_q,
             cnt_form_q,
             cnt_ack_q,
-            txf_id,
+            p_in_arbitration,
+            p_ide,
+            p_in_frame,
+            p_crc_covered,
+            p_in_delim,
+            p_after_error_flag,
+            p_ack_slot,
+            p_stuff_bit,
+            p_bc0,
+            p_bc2,
+            p_bc3,
+            p_bc5,
+            p_bc6,
+            p_bc7,
+            p_bc10,
+            p_bc14,
+            p_bc17,
+            p_data_end,
+            p_recovery_end,
+            p_dom7,
+            p_crc_bit,
+            p_passive,
+            p_bus_off,
+            p_suspend_due,
+            p_tec_ge120,
+            p_tec_ge248,
+            p_rec_ge127,
+            p_rec_ge120,
+            p_cnt_bit_max,
+            p_cnt_stuff_max,
+            p_cnt_crc_max,
+            p_cnt_form_max,
+            p_cnt_ack_max,
+            p_alc,
+            txf_ida,
+            txf_idb,
             txf_ide,
             txf_rtr,
             txf_dlc,
@@ -554,8 +656,6 @@ impl Logic for ProtocolController {
                 self.abort_pending.d.next = true;
             }
         }
-        self.is_stuff_bit.next =
-            self.stuff_en.q.val() && (self.stuff_cnt.q.val() == self.n3_5.val());
         self.sof.next = false;
         self.sof_as_tx.next = false;
         self.error.next = false;
@@ -564,7 +664,7 @@ impl Logic for ProtocolController {
         self.bus_off_after.next = false;
         // 10.4.5: an error-passive transmitter suspends after its frame and does
         // not join a SOF at intermission bit 3.
-        self.suspend_due.next = self.is_tx.q.val() && self.fc.error_passive.val();
+        self.suspend_due.next = self.p_suspend_due.q.val();
         self.join_ok.next = self.start_ok.val() && !self.suspend_due.val();
         // A node whose own SOF is already on `tx` keeps its attempt (contract §8).
         self.starts.next = (!self.tx_q.q.val() && self.pending.q.val()) || self.start_ok.val();
@@ -610,85 +710,133 @@ impl Logic for ProtocolController {
         self.crc_rx_idx.next = self.n4_14.val() - self.bit_cnt.q.val().get_bits::<4>(0);
         self.data_wr_idx.next = self.n6_63.val() - self.bit_cnt.q.val().get_bits::<6>(0);
 
-        // ---- field classification (10.4.2: the arbitration field is ID and RTR, plus
-        // SRR and IDE in extended frames)
-        self.in_arbitration.next = false;
-        self.in_frame.next = false;
-        self.crc_covered.next = false;
-        self.in_delim.next = false;
-        self.after_error_flag.next = false;
+        // ---- registered pre-decodes: everything below is a function of state that
+        // changes only at SAMPLE edges, bit_start or reset, registered every clock.
+        // The next SAMPLE edge comes at least 3 clocks after any of these (8 tq after
+        // a sample, TSEG1 >= 3 clocks after a bit_start, 2 ticks after reset), so at
+        // a SAMPLE edge each equals its combinational value and the sample-point
+        // logic starts from flip-flops instead of decoders and comparators.
+        // Field classification (10.4.2: the arbitration field is ID and RTR, plus
+        // SRR and IDE in extended frames).
+        self.p_in_arbitration.d.next = false;
+        self.p_ide.d.next = false;
+        self.p_in_frame.d.next = false;
+        self.p_crc_covered.d.next = false;
+        self.p_in_delim.d.next = false;
+        self.p_after_error_flag.d.next = false;
         match self.field_q.q.val() {
             Field::ErrorDelim => {
-                self.in_delim.next = true;
-                self.after_error_flag.next = true;
+                self.p_in_delim.d.next = true;
+                self.p_after_error_flag.d.next = true;
             }
             Field::OverloadDelim => {
-                self.in_delim.next = true;
+                self.p_in_delim.d.next = true;
             }
             Field::IdA => {
-                self.in_arbitration.next = true;
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_arbitration.d.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::SrrRtr => {
-                self.in_arbitration.next = true;
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_arbitration.d.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::Ide => {
                 // IDE belongs to the arbitration field of extended frames only
                 // (10.4.2.2); a base frame's IDE is control field.
-                self.in_arbitration.next = self.txf_ide.q.val();
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_arbitration.d.next = false;
+                self.p_ide.d.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::IdB => {
-                self.in_arbitration.next = true;
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_arbitration.d.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::RtrExt => {
-                self.in_arbitration.next = true;
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_arbitration.d.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::R1 => {
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::R0 => {
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::Dlc => {
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::Data => {
-                self.in_frame.next = true;
-                self.crc_covered.next = true;
+                self.p_in_frame.d.next = true;
+                self.p_crc_covered.d.next = true;
             }
             Field::Crc => {
-                self.in_frame.next = true;
+                self.p_in_frame.d.next = true;
             }
             Field::CrcDelim => {
-                self.in_frame.next = true;
+                self.p_in_frame.d.next = true;
             }
             Field::AckSlot => {
-                self.in_frame.next = true;
+                self.p_in_frame.d.next = true;
             }
             Field::AckDelim => {
-                self.in_frame.next = true;
+                self.p_in_frame.d.next = true;
             }
             Field::Eof => {
-                self.in_frame.next = true;
+                self.p_in_frame.d.next = true;
             }
             _ => {}
         }
 
+        self.p_ack_slot.d.next = self.field_q.q.val() == Field::AckSlot;
+        self.p_stuff_bit.d.next =
+            self.stuff_en.q.val() && (self.stuff_cnt.q.val() == self.n3_5.val());
+        self.p_bc0.d.next = self.bit_cnt.q.val() == self.n7_0.val();
+        self.p_bc2.d.next = self.bit_cnt.q.val() == self.n7_2.val();
+        self.p_bc3.d.next = self.bit_cnt.q.val() == self.n7_3.val();
+        self.p_bc5.d.next = self.bit_cnt.q.val() == self.n7_5.val();
+        self.p_bc6.d.next = self.bit_cnt.q.val() == self.n7_6.val();
+        self.p_bc7.d.next = self.bit_cnt.q.val() == self.n7_7.val();
+        self.p_bc10.d.next = self.bit_cnt.q.val() == self.n7_10.val();
+        self.p_bc14.d.next = self.bit_cnt.q.val() == self.n7_14.val();
+        self.p_bc17.d.next = self.bit_cnt.q.val() == self.n7_17.val();
+        self.p_data_end.d.next = self.bit_cnt_inc.val() == self.data_len.q.val();
+        self.p_recovery_end.d.next = self.recovery_cnt.q.val() == self.n7_127.val();
+        self.p_dom7.d.next = self.dom_cnt.q.val() == self.n3_7.val();
+        // (indexed only in the CRC field, where the index is in range)
+        self.p_crc_bit.d.next = false;
+        if self.field_q.q.val() == Field::Crc {
+            self.p_crc_bit.d.next = self.crc.q.val().get_bit(self.crc_rx_idx.val().index());
+        }
+        self.p_alc.d.next = self.alc_n.val();
+        self.p_passive.d.next = self.fc.error_passive.val();
+        self.p_bus_off.d.next = self.fc.bus_off.val();
+        self.p_suspend_due.d.next = self.is_tx.q.val() && self.fc.error_passive.val();
+        self.p_tec_ge120.d.next = self.fc.tec.val() >= self.n9_120.val();
+        self.p_tec_ge248.d.next = self.fc.tec.val() >= self.n9_248.val();
+        self.p_rec_ge127.d.next = self.fc.rec.val() >= self.n8_127.val();
+        self.p_rec_ge120.d.next = self.fc.rec.val() >= self.n8_120.val();
+        self.p_cnt_bit_max.d.next = self.cnt_bit_q.q.val() == self.n8_255.val();
+        self.p_cnt_stuff_max.d.next = self.cnt_stuff_q.q.val() == self.n8_255.val();
+        self.p_cnt_crc_max.d.next = self.cnt_crc_q.q.val() == self.n8_255.val();
+        self.p_cnt_form_max.d.next = self.cnt_form_q.q.val() == self.n8_255.val();
+        self.p_cnt_ack_max.d.next = self.cnt_ack_q.q.val() == self.n8_255.val();
+        self.in_arbitration.next =
+            self.p_in_arbitration.q.val() || (self.p_ide.q.val() && self.txf_ide.q.val());
+        self.in_frame.next = self.p_in_frame.q.val();
+        self.crc_covered.next = self.p_crc_covered.q.val();
+        self.in_delim.next = self.p_in_delim.q.val();
+        self.after_error_flag.next = self.p_after_error_flag.q.val();
+
         // ---- the sample point
         if self.sample.val() {
-            if self.is_stuff_bit.val() {
+            if self.p_stuff_bit.q.val() {
                 // 10.5: a stuff bit must be the complement of the five before it.
                 if self.sampled.val() == self.stuff_last.q.val() {
                     self.error.next = true;
@@ -728,8 +876,8 @@ impl Logic for ProtocolController {
                         self.is_tx_n.next = false;
                         self.arb_lost_q.d.next = true;
                         self.lost.next = true;
-                        self.alc_q.d.next = self.alc_n.val();
-                    } else if (self.field_q.q.val() == Field::AckSlot) && self.tx_q.q.val() {
+                        self.alc_q.d.next = self.p_alc.q.val();
+                    } else if self.p_ack_slot.q.val() && self.tx_q.q.val() {
                         // Dominant ACK slot: acknowledged.
                     } else {
                         self.error.next = true;
@@ -738,7 +886,7 @@ impl Logic for ProtocolController {
                 }
                 // 7.2.1: a receiver's own dominant ACK read back recessive.
                 if !self.is_tx.q.val()
-                    && (self.field_q.q.val() == Field::AckSlot)
+                    && self.p_ack_slot.q.val()
                     && !self.tx_q.q.val()
                     && self.sampled.val()
                 {
@@ -749,7 +897,7 @@ impl Logic for ProtocolController {
                     Field::Integrating => {
                         // 12.1.4.4: 11 consecutive recessive bits before taking part.
                         if self.sampled.val() {
-                            if self.bit_cnt.q.val() == self.n7_10.val() {
+                            if self.p_bc10.q.val() {
                                 self.field_n.next = Field::Idle;
                                 self.bit_cnt_n.next = self.n7_0.val();
                             } else {
@@ -776,7 +924,7 @@ impl Logic for ProtocolController {
                         // 10.4.5: a passive transmitter waits 8 bits; it may receive meanwhile.
                         if !self.sampled.val() {
                             self.sof.next = true;
-                        } else if self.bit_cnt.q.val() == self.n7_7.val() {
+                        } else if self.p_bc7.q.val() {
                             self.field_n.next = Field::Idle;
                             self.bit_cnt_n.next = self.n7_0.val();
                         } else {
@@ -785,7 +933,7 @@ impl Logic for ProtocolController {
                     }
                     Field::Intermission => {
                         if !self.sampled.val() {
-                            if self.bit_cnt.q.val() == self.n7_2.val() {
+                            if self.p_bc2.q.val() {
                                 // 10.4.5: dominant third intermission bit is a SOF.
                                 self.sof.next = true;
                                 self.sof_as_tx.next = self.join_starts.val();
@@ -794,7 +942,7 @@ impl Logic for ProtocolController {
                                 self.field_n.next = Field::OverloadFlag;
                                 self.bit_cnt_n.next = self.n7_0.val();
                             }
-                        } else if self.bit_cnt.q.val() == self.n7_2.val() {
+                        } else if self.p_bc2.q.val() {
                             if self.suspend_due.val() {
                                 self.field_n.next = Field::Suspend;
                             } else {
@@ -810,7 +958,7 @@ impl Logic for ProtocolController {
                     Field::IdA => {
                         self.rxs_id.d.next =
                             (self.rxs_id.q.val() << 1) | bit_cast::<29, 1>(self.bus_bit.val());
-                        if self.bit_cnt.q.val() == self.n7_10.val() {
+                        if self.p_bc10.q.val() {
                             self.field_n.next = Field::SrrRtr;
                             self.bit_cnt_n.next = self.n7_0.val();
                         } else {
@@ -834,7 +982,7 @@ impl Logic for ProtocolController {
                     Field::IdB => {
                         self.rxs_id.d.next =
                             (self.rxs_id.q.val() << 1) | bit_cast::<29, 1>(self.bus_bit.val());
-                        if self.bit_cnt.q.val() == self.n7_17.val() {
+                        if self.p_bc17.q.val() {
                             self.field_n.next = Field::RtrExt;
                             self.bit_cnt_n.next = self.n7_0.val();
                         } else {
@@ -854,7 +1002,7 @@ impl Logic for ProtocolController {
                     }
                     Field::Dlc => {
                         self.rxs_dlc.d.next = self.dlc_n.val();
-                        if self.bit_cnt.q.val() == self.n7_3.val() {
+                        if self.p_bc3.q.val() {
                             self.data_len.d.next = self.data_bits.val();
                             if self.data_bits.val() == self.n7_0.val() {
                                 self.field_n.next = Field::Crc;
@@ -872,7 +1020,7 @@ impl Logic for ProtocolController {
                             .q
                             .val()
                             .replace_bit(self.data_wr_idx.val().index(), self.sampled.val());
-                        if self.bit_cnt_inc.val() == self.data_len.q.val() {
+                        if self.p_data_end.q.val() {
                             self.field_n.next = Field::Crc;
                             self.bit_cnt_n.next = self.n7_0.val();
                         } else {
@@ -880,12 +1028,10 @@ impl Logic for ProtocolController {
                         }
                     }
                     Field::Crc => {
-                        if self.sampled.val()
-                            != self.crc.q.val().get_bit(self.crc_rx_idx.val().index())
-                        {
+                        if self.sampled.val() != self.p_crc_bit.q.val() {
                             self.crc_ok_n.next = false;
                         }
-                        if self.bit_cnt.q.val() == self.n7_14.val() {
+                        if self.p_bc14.q.val() {
                             self.field_n.next = Field::CrcDelim;
                             self.bit_cnt_n.next = self.n7_0.val();
                         } else {
@@ -927,7 +1073,7 @@ impl Logic for ProtocolController {
                     }
                     Field::Eof => {
                         if !self.sampled.val() {
-                            if (self.bit_cnt.q.val() == self.n7_6.val()) && !self.is_tx.q.val() {
+                            if (self.p_bc6.q.val()) && !self.is_tx.q.val() {
                                 // 10.4.4: a receiver's dominant last EOF bit is an overload.
                                 self.field_n.next = Field::OverloadFlag;
                                 self.bit_cnt_n.next = self.n7_0.val();
@@ -936,8 +1082,7 @@ impl Logic for ProtocolController {
                                 self.form_err.next = true;
                             }
                         } else {
-                            if (self.bit_cnt.q.val() == self.n7_5.val())
-                                && (!self.is_tx.q.val() || self.loopback.val())
+                            if (self.p_bc5.q.val()) && (!self.is_tx.q.val() || self.loopback.val())
                             {
                                 // 10.7: valid for receivers at the last but one EOF bit.
                                 self.rx_valid_q.d.next = true;
@@ -947,7 +1092,7 @@ impl Logic for ProtocolController {
                                 self.rx_dlc_q.d.next = self.rxs_dlc.q.val();
                                 self.rx_data_q.d.next = self.rxs_data.q.val();
                             }
-                            if self.bit_cnt.q.val() == self.n7_6.val() {
+                            if self.p_bc6.q.val() {
                                 if self.is_tx.q.val() {
                                     // 10.7: valid for the transmitter at the end of EOF.
                                     self.tx_done_q.d.next = true;
@@ -972,12 +1117,12 @@ impl Logic for ProtocolController {
                                 self.ack_passive_pending.d.next = false;
                             }
                             // 10.4.3: a passive flag ends after 6 equal consecutive bits.
-                            if (self.bit_cnt.q.val() == self.n7_0.val())
+                            if (self.p_bc0.q.val())
                                 || (self.sampled.val() != self.stuff_last.q.val())
                             {
                                 self.bit_cnt_n.next = self.n7_1.val();
                                 self.stuff_last_n.next = self.sampled.val();
-                            } else if self.bit_cnt.q.val() == self.n7_5.val() {
+                            } else if self.p_bc5.q.val() {
                                 self.field_n.next = Field::ErrorDelim;
                                 self.bit_cnt_n.next = self.n7_0.val();
                                 self.delim_first.d.next = true;
@@ -989,7 +1134,7 @@ impl Logic for ProtocolController {
                         } else if self.sampled.val() {
                             // Rules d/e: bit error in its own active error flag.
                             self.flag_error.next = true;
-                        } else if self.bit_cnt.q.val() == self.n7_5.val() {
+                        } else if self.p_bc5.q.val() {
                             self.field_n.next = Field::ErrorDelim;
                             self.bit_cnt_n.next = self.n7_0.val();
                             self.delim_first.d.next = true;
@@ -1002,7 +1147,7 @@ impl Logic for ProtocolController {
                         if self.sampled.val() && !self.listen_only.val() {
                             // Rules d/e: bit error in its own overload flag.
                             self.flag_error.next = true;
-                        } else if self.bit_cnt.q.val() == self.n7_5.val() {
+                        } else if self.p_bc5.q.val() {
                             self.field_n.next = Field::OverloadDelim;
                             self.bit_cnt_n.next = self.n7_0.val();
                             self.delim_first.d.next = true;
@@ -1014,9 +1159,9 @@ impl Logic for ProtocolController {
                     Field::BusOff => {
                         // 12.1.4.4: 128 occurrences of 11 consecutive recessive bits.
                         if self.sampled.val() {
-                            if self.bit_cnt.q.val() == self.n7_10.val() {
+                            if self.p_bc10.q.val() {
                                 self.bit_cnt_n.next = self.n7_0.val();
-                                if self.recovery_cnt.q.val() == self.n7_127.val() {
+                                if self.p_recovery_end.q.val() {
                                     self.field_n.next = Field::Idle;
                                     self.ev_recovered.next = true;
                                     self.recovery_cnt.d.next = self.n7_0.val();
@@ -1037,7 +1182,7 @@ impl Logic for ProtocolController {
                 // follows an error flag.
                 if self.in_delim.val() {
                     // 10.4.3/10.4.4: wait for recessive, then 8 recessive bits in all.
-                    if self.bit_cnt.q.val() == self.n7_0.val() {
+                    if self.p_bc0.q.val() {
                         self.delim_first.d.next = false;
                         if self.sampled.val() {
                             self.bit_cnt_n.next = self.n7_1.val();
@@ -1051,7 +1196,7 @@ impl Logic for ProtocolController {
                             }
                             // Rule f: every 8th consecutive dominant bit after the flag.
                             self.dom_cnt.d.next = self.dom_cnt.q.val() + self.n3_1.val();
-                            if self.dom_cnt.q.val() == self.n3_7.val() {
+                            if self.p_dom7.q.val() {
                                 if self.is_tx.q.val() {
                                     self.ev_tec_add8.next = true;
                                 } else {
@@ -1060,14 +1205,14 @@ impl Logic for ProtocolController {
                             }
                         }
                     } else if !self.sampled.val() {
-                        if self.bit_cnt.q.val() == self.n7_7.val() {
+                        if self.p_bc7.q.val() {
                             self.field_n.next = Field::OverloadFlag;
                             self.bit_cnt_n.next = self.n7_0.val();
                         } else {
                             self.error.next = true; // form error in the delimiter
                             self.form_err.next = true;
                         }
-                    } else if self.bit_cnt.q.val() == self.n7_7.val() {
+                    } else if self.p_bc7.q.val() {
                         self.field_n.next = Field::Intermission;
                         self.bit_cnt_n.next = self.n7_0.val();
                     } else {
@@ -1107,7 +1252,7 @@ impl Logic for ProtocolController {
             // Any error: error flag from the next bit on (12.1.4.2 counter rules).
             if self.error.val() {
                 if self.is_tx_n.val() {
-                    if self.ack_error.val() && self.fc.error_passive.val() {
+                    if self.ack_error.val() && self.p_passive.q.val() {
                         // Rule c exception 1: decided during the passive flag.
                         self.ack_passive_pending.d.next = true;
                     } else if !self.tec_exempt.val() {
@@ -1127,14 +1272,14 @@ impl Logic for ProtocolController {
             // The error state after this sample's counter events (12.1.4.2 rules
             // i/j): computed here from the counters so no combinational path runs
             // back from the fault-confinement block.
-            self.passive_after.next = self.fc.error_passive.val()
-                || (self.ev_tec_add8.val() && (self.fc.tec.val() >= self.n9_120.val()))
-                || (self.ev_rec_add1.val() && (self.fc.rec.val() >= self.n8_127.val()))
-                || (self.ev_rec_add8.val() && (self.fc.rec.val() >= self.n8_120.val()));
+            self.passive_after.next = self.p_passive.q.val()
+                || (self.ev_tec_add8.val() && self.p_tec_ge120.q.val())
+                || (self.ev_rec_add1.val() && self.p_rec_ge127.q.val())
+                || (self.ev_rec_add8.val() && self.p_rec_ge120.q.val());
             self.bus_off_after.next = !self.listen_only.val()
                 && self.ev_tec_add8.val()
-                && (self.fc.tec.val() >= self.n9_248.val())
-                && !self.fc.bus_off.val();
+                && self.p_tec_ge248.q.val()
+                && !self.p_bus_off.q.val();
             if self.error.val() || self.flag_error.val() {
                 self.field_n.next = Field::ErrorFlag;
                 self.bit_cnt_n.next = self.n7_0.val();
@@ -1146,29 +1291,19 @@ impl Logic for ProtocolController {
                 self.err_kind_q.d.next = self.err_kind_n.val();
                 self.err_field_q.d.next = self.field_q.q.val();
                 self.err_tx_q.d.next = self.is_tx.q.val() || self.sof_error.val();
-                if (self.err_kind_n.val() == self.k3_bit.val())
-                    && (self.cnt_bit_q.q.val() != self.n8_255.val())
-                {
+                if (self.err_kind_n.val() == self.k3_bit.val()) && !self.p_cnt_bit_max.q.val() {
                     self.cnt_bit_q.d.next = self.cnt_bit_q.q.val() + self.n8_1.val();
                 }
-                if (self.err_kind_n.val() == self.k3_stuff.val())
-                    && (self.cnt_stuff_q.q.val() != self.n8_255.val())
-                {
+                if (self.err_kind_n.val() == self.k3_stuff.val()) && !self.p_cnt_stuff_max.q.val() {
                     self.cnt_stuff_q.d.next = self.cnt_stuff_q.q.val() + self.n8_1.val();
                 }
-                if (self.err_kind_n.val() == self.k3_crc.val())
-                    && (self.cnt_crc_q.q.val() != self.n8_255.val())
-                {
+                if (self.err_kind_n.val() == self.k3_crc.val()) && !self.p_cnt_crc_max.q.val() {
                     self.cnt_crc_q.d.next = self.cnt_crc_q.q.val() + self.n8_1.val();
                 }
-                if (self.err_kind_n.val() == self.k3_form.val())
-                    && (self.cnt_form_q.q.val() != self.n8_255.val())
-                {
+                if (self.err_kind_n.val() == self.k3_form.val()) && !self.p_cnt_form_max.q.val() {
                     self.cnt_form_q.d.next = self.cnt_form_q.q.val() + self.n8_1.val();
                 }
-                if (self.err_kind_n.val() == self.k3_ack.val())
-                    && (self.cnt_ack_q.q.val() != self.n8_255.val())
-                {
+                if (self.err_kind_n.val() == self.k3_ack.val()) && !self.p_cnt_ack_max.q.val() {
                     self.cnt_ack_q.d.next = self.cnt_ack_q.q.val() + self.n8_1.val();
                 }
             }
@@ -1219,15 +1354,13 @@ impl Logic for ProtocolController {
         // bit_start falls on one, so it is the bit of that edge, and the sample
         // decision stays off this path. (The latched frame can change only while
         // nothing is pending, and then the node sends no frame bit.)
-        self.id_b_idx.next = self.n5_17.val() - self.bit_cnt.q.val().get_bits::<5>(0);
-        if self.txf_ide.q.val() {
-            self.id_a_idx.next = self.n5_28.val() - self.bit_cnt.q.val().get_bits::<5>(0);
-        } else {
-            self.id_a_idx.next = self.n5_10.val() - self.bit_cnt.q.val().get_bits::<5>(0);
-        }
-        self.dlc_idx.next = self.n2_3.val() - self.bit_cnt.q.val().get_bits::<2>(0);
-        self.data_idx.next = self.n6_63.val() - self.bit_cnt.q.val().get_bits::<6>(0);
-        self.crc_idx.next = self.n4_14.val() - self.bit_cnt.q.val().get_bits::<4>(0);
+        // 15 - n, 31 - n, 3 - n, 63 - n: the complement of the bit counter.
+        self.id_a_idx.next = !self.bit_cnt.q.val().get_bits::<4>(0);
+        self.id_b_idx.next = !self.bit_cnt.q.val().get_bits::<5>(0);
+        self.dlc_idx.next = !self.bit_cnt.q.val().get_bits::<2>(0);
+        self.data_idx.next = !self.bit_cnt.q.val().get_bits::<6>(0);
+        self.crc_idx.next = !self.bit_cnt.q.val().get_bits::<4>(0);
+        self.crc_tx.next = bit_cast::<16, 15>(self.crc.q.val()) << 1;
         self.tx_bit_n.next = true;
         match self.field_q.q.val() {
             Field::ErrorFlag => {
@@ -1248,7 +1381,7 @@ impl Logic for ProtocolController {
                         match self.field_q.q.val() {
                             Field::IdA => {
                                 self.tx_bit_n.next =
-                                    self.txf_id.q.val().get_bit(self.id_a_idx.val().index());
+                                    self.txf_ida.q.val().get_bit(self.id_a_idx.val().index());
                             }
                             Field::SrrRtr => {
                                 self.tx_bit_n.next = self.txf_ide.q.val() || self.txf_rtr.q.val();
@@ -1258,7 +1391,7 @@ impl Logic for ProtocolController {
                             }
                             Field::IdB => {
                                 self.tx_bit_n.next =
-                                    self.txf_id.q.val().get_bit(self.id_b_idx.val().index());
+                                    self.txf_idb.q.val().get_bit(self.id_b_idx.val().index());
                             }
                             Field::RtrExt => {
                                 self.tx_bit_n.next = self.txf_rtr.q.val();
@@ -1279,7 +1412,7 @@ impl Logic for ProtocolController {
                             }
                             Field::Crc => {
                                 self.tx_bit_n.next =
-                                    self.crc.q.val().get_bit(self.crc_idx.val().index());
+                                    self.crc_tx.val().get_bit(self.crc_idx.val().index());
                             }
                             _ => {}
                         }
@@ -1314,7 +1447,12 @@ impl Logic for ProtocolController {
             self.tx_failed_q.d.next = true;
         } else if self.tx_req.val() && !self.pending.q.val() {
             self.pending.d.next = true;
-            self.txf_id.d.next = self.tx_id.val();
+            if self.tx_ide.val() {
+                self.txf_ida.d.next = bit_cast::<16, 11>(self.tx_id.val().get_bits::<11>(18)) << 5;
+            } else {
+                self.txf_ida.d.next = bit_cast::<16, 11>(self.tx_id.val().get_bits::<11>(0)) << 5;
+            }
+            self.txf_idb.d.next = bit_cast::<32, 18>(self.tx_id.val().get_bits::<18>(0)) << 14;
             self.txf_ide.d.next = self.tx_ide.val();
             self.txf_rtr.d.next = self.tx_rtr.val();
             self.txf_dlc.d.next = self.tx_dlc.val();

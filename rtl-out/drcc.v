@@ -120,6 +120,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  regs__ev_recover_a;
     reg  regs__ev_recover_b;
     wire  regs__reset_mode;
+    wire  regs__reset_mode_d;
     wire  regs__redundancy;
     wire  [1:0] regs__policy;
     wire  regs__dual_tx;
@@ -421,6 +422,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .ev_recover_a(regs__ev_recover_a),
         .ev_recover_b(regs__ev_recover_b),
         .reset_mode(regs__reset_mode),
+        .reset_mode_d(regs__reset_mode_d),
         .redundancy(regs__redundancy),
         .policy(regs__policy),
         .dual_tx(regs__dual_tx),
@@ -816,7 +818,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         rxw__frame_b = (((chan_b__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_b__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_b__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_b__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_b__rx_data) & 99'h7ffffffffffffffffffffffff);
         rxw__fifo_count = rxfifo__count;
         chan_a__clk = clk;
-        chan_a__rst = clear | aux_a__chan_rst;
+        chan_a__rst = clear | regs__reset_mode_d | aux_a__chan_rst;
         chan_a__cfg_brp = regs__brp;
         chan_a__cfg_tseg1 = regs__tseg1;
         chan_a__cfg_tseg2 = regs__tseg2;
@@ -834,7 +836,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         chan_a__tx_dlc = txbuf__rd_frame[(32'h40)+:(4)];
         chan_a__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
         chan_b__clk = clk;
-        chan_b__rst = clear | aux_b__chan_rst;
+        chan_b__rst = clear | regs__reset_mode_d | aux_b__chan_rst;
         chan_b__cfg_brp = regs__brp;
         chan_b__cfg_tseg1 = regs__tseg1;
         chan_b__cfg_tseg2 = regs__tseg2;
@@ -10263,7 +10265,7 @@ module drcc__main__tx_time(d,q,clock);
 endmodule // drcc__main__tx_time
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,state,tx_channel,tx_going_on,aux_a_state,aux_b_state,es_a,es_b,txq_a,txq_b,rx_count,tec_a,rec_a,ew_a,tec_b,rec_b,ew_b,causes_a,fail_cnt_a,failures_a,recoveries_a,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,last_tx_time,switch_time,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,state,tx_channel,tx_going_on,aux_a_state,aux_b_state,es_a,es_b,txq_a,txq_b,rx_count,tec_a,rec_a,ew_a,tec_b,rec_b,ew_b,causes_a,fail_cnt_a,failures_a,recoveries_a,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,last_tx_time,switch_time,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
     
     // Module arguments
     input wire  clk;
@@ -10315,6 +10317,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     input wire  ev_recover_a;
     input wire  ev_recover_b;
     output reg  reset_mode;
+    output reg  reset_mode_d;
     output reg  redundancy;
     output reg  [1:0] policy;
     output reg  dual_tx;
@@ -10367,6 +10370,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
     localparam  policy_illegal = 2'b11;
+    localparam  mode_listen = 2'b1;
     localparam  policy_reset = 2'b1;
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
@@ -10397,6 +10401,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  reset_mode_q__d;
     wire  reset_mode_q__q;
     reg  reset_mode_q__clock;
+    reg  reset_mode_dq__d;
+    wire  reset_mode_dq__q;
+    reg  reset_mode_dq__clock;
     reg  redundancy_q__d;
     wire  redundancy_q__q;
     reg  redundancy_q__clock;
@@ -10498,6 +10505,11 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .d(reset_mode_q__d),
         .q(reset_mode_q__q),
         .clock(reset_mode_q__clock)
+    );
+    drcc__regs__reset_mode_dq reset_mode_dq(
+        .d(reset_mode_dq__d),
+        .q(reset_mode_dq__q),
+        .clock(reset_mode_dq__clock)
     );
     drcc__regs__redundancy_q redundancy_q(
         .d(redundancy_q__d),
@@ -10611,6 +10623,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         dat_q__clock = clk;
         irq_q__clock = clk;
         reset_mode_q__clock = clk;
+        reset_mode_dq__clock = clk;
         redundancy_q__clock = clk;
         policy_q__clock = clk;
         dual_tx_q__clock = clk;
@@ -10636,6 +10649,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         dat_q__d = dat_q__q;
         irq_q__d = irq_q__q;
         reset_mode_q__d = reset_mode_q__q;
+        reset_mode_dq__d = reset_mode_dq__q;
         redundancy_q__d = redundancy_q__q;
         policy_q__d = policy_q__q;
         dual_tx_q__d = dual_tx_q__q;
@@ -10741,6 +10755,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
             dat_q__d = rdata;
         end
         reset_mode_q__d = reset_mode_q__q;
+        reset_mode_dq__d = reset_mode_q__q;
         redundancy_q__d = redundancy_q__q;
         policy_q__d = policy_q__q;
         dual_tx_q__d = dual_tx_q__q;
@@ -10777,7 +10792,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         if (wr) begin
             if (wb_adr_i == a_ctrl) begin
                 if (reset_mode_q__q) begin
-                    if (wdat[(32'h2)+:(2)] == policy_illegal) begin
+                    if ((wdat[(32'h2)+:(2)] == policy_illegal) | (wdat[32'h1] & ((wdat[(32'hc)+:(2)] == mode_listen) | (wdat[(32'he)+:(2)] == mode_listen)))) begin
                         illegal = 1'b1;
                     end
                     else begin
@@ -10889,6 +10904,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
             dat_q__d = zero32;
             irq_q__d = 1'b0;
             reset_mode_q__d = 1'b1;
+            reset_mode_dq__d = 1'b1;
             redundancy_q__d = 1'b0;
             policy_q__d = policy_reset;
             dual_tx_q__d = 1'b0;
@@ -10917,6 +10933,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         wb_dat_o = dat_q__q;
         irq = irq_q__q;
         reset_mode = reset_mode_q__q;
+        reset_mode_d = reset_mode_dq__q;
         redundancy = redundancy_q__q;
         policy = policy_q__q;
         dual_tx = dual_tx_q__q;
@@ -11178,6 +11195,22 @@ module drcc__regs__redundancy_q(d,q,clock);
     end
           
 endmodule // drcc__regs__redundancy_q
+
+
+module drcc__regs__reset_mode_dq(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__reset_mode_dq
 
 
 module drcc__regs__reset_mode_q(d,q,clock);

@@ -238,8 +238,11 @@ impl Logic for Drcc {
         self.rxw.fifo_count.next = self.rxfifo.count.val();
 
         // ---- channels: shared bit timing, own mode, TX RAM read data ----
+        // channel rst = rst | reset_mode | reset_mode one edge earlier | restart
+        // (contract §6): the channels capture their configuration while in reset
         self.chan_a.clk.next = self.clk.val();
-        self.chan_a.rst.next = self.clear.val() | self.aux_a.chan_rst.val();
+        self.chan_a.rst.next =
+            self.clear.val() | self.regs.reset_mode_d.val() | self.aux_a.chan_rst.val();
         self.chan_a.cfg_brp.next = self.regs.brp.val();
         self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
@@ -258,7 +261,8 @@ impl Logic for Drcc {
         self.chan_a.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
         self.chan_a.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
         self.chan_b.clk.next = self.clk.val();
-        self.chan_b.rst.next = self.clear.val() | self.aux_b.chan_rst.val();
+        self.chan_b.rst.next =
+            self.clear.val() | self.regs.reset_mode_d.val() | self.aux_b.chan_rst.val();
         self.chan_b.cfg_brp.next = self.regs.brp.val();
         self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();

@@ -272,7 +272,7 @@ pub const REGISTERS: &[Register] = &[
         desc: "Control; cfg fields are writable only in reset mode",
         fields: &[
             f("reset_mode", 0, 1, 1, "1 = reset mode: channels held in reset, queues and FIFO emptied"),
-            cfg("redundancy", 1, 1, 0, "0 = normal mode (two independent controllers), 1 = redundancy mode"),
+            cfg("redundancy", 1, 1, 0, "0 = normal mode (two independent controllers), 1 = redundancy mode (refused with a listen-only channel)"),
             cfg("policy", 2, 2, 1, "channel failure policy: 0 none, 1 error-passive, 2 k-failed (3 illegal)"),
             cfg("dual_tx", 4, 1, 0, "redundancy mode: send every message on A, then its copy on B"),
             cfg("k", 8, 4, 1, "failed attempts for the k-failed policy (1..15; 0 is stored as 1)"),
@@ -537,7 +537,8 @@ pub fn markdown() -> String {
         "Wishbone B4 classic slave, 32-bit words, `wb_adr_i` is the word index (byte offset = \
          4 x index). Every access takes two clocks (request, ack). Unmapped addresses read 0; a \
          write to a read-only or unmapped address, a cfg field written outside reset mode, a \
-         refused push or pop sets `INT_STATUS.illegal`.\n\n",
+         CTRL write with policy 3 or with redundancy and a listen-only channel (refused as a \
+         whole), a refused push or pop sets `INT_STATUS.illegal`.\n\n",
     );
     s.push_str(
         "| index | offset | name | access | reset | description |\n|---|---|---|---|---|---|\n",

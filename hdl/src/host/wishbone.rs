@@ -6,7 +6,8 @@
 //!   for a read, `dat_o <=` the register value before the edge; a write takes
 //!   effect at that edge. At every other edge `ack <= 0`, `dat_o <= 0`.
 //! - cfg fields (CTRL except `reset_mode`, BTR, RMB_CFG, DEDUP_CFG) are writable
-//!   only in reset mode; CTRL with policy 3 is refused; k = 0 is stored as 1;
+//!   only in reset mode; CTRL with policy 3, or with redundancy and a
+//!   LISTEN_ONLY channel, is refused; k = 0 is stored as 1;
 //!   refused writes, writes to RO/unmapped registers, a refused push or pop set
 //!   `INT_STATUS.illegal` (§9).
 //! - `INT_STATUS` is W1C, an event at the same edge wins; `irq <=
@@ -74,6 +75,9 @@ pub struct WbRegs {
     pub ev_recover_b: Signal<In, Bit>,
     // configuration outputs
     pub reset_mode: Signal<Out, Bit>,
+    /// `reset_mode` one edge earlier (1 after `rst`): the channels stay in reset
+    /// one clock after reset mode (contract §6).
+    pub reset_mode_d: Signal<Out, Bit>,
     pub redundancy: Signal<Out, Bit>,
     pub policy: Signal<Out, Bits<2>>,
     pub dual_tx: Signal<Out, Bit>,
@@ -100,6 +104,7 @@ pub struct WbRegs {
     dat_q: DFF<Bits<32>>,
     irq_q: DFF<Bit>,
     reset_mode_q: DFF<Bit>,
+    reset_mode_dq: DFF<Bit>,
     redundancy_q: DFF<Bit>,
     policy_q: DFF<Bits<2>>,
     dual_tx_q: DFF<Bit>,
@@ -169,6 +174,7 @@ pub struct WbRegs {
     rmb_cfg_reset: Constant<Bits<32>>,
     window_reset: Constant<Bits<15>>,
     policy_illegal: Constant<Bits<2>>,
+    mode_listen: Constant<Bits<2>>,
     policy_reset: Constant<Bits<2>>,
     zero2: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
@@ -255,6 +261,7 @@ impl Default for WbRegs {
             ev_recover_a: Default::default(),
             ev_recover_b: Default::default(),
             reset_mode: Default::default(),
+            reset_mode_d: Default::default(),
             redundancy: Default::default(),
             policy: Default::default(),
             dual_tx: Default::default(),
@@ -279,6 +286,7 @@ impl Default for WbRegs {
             dat_q: Default::default(),
             irq_q: Default::default(),
             reset_mode_q: Default::default(),
+            reset_mode_dq: Default::default(),
             redundancy_q: Default::default(),
             policy_q: Default::default(),
             dual_tx_q: Default::default(),
@@ -345,6 +353,7 @@ impl Default for WbRegs {
             rmb_cfg_reset: Constant::new(rmb.into()),
             window_reset: Constant::new(field_reset("DEDUP_CFG", "window").into()),
             policy_illegal: Constant::new(3.into()),
+            mode_listen: Constant::new(1.into()),
             policy_reset: Constant::new(field_reset("CTRL", "policy").into()),
             zero2: Constant::new(0.into()),
             zero4: Constant::new(0.into()),
@@ -375,6 +384,7 @@ impl Logic for WbRegs {
             dat_q,
             irq_q,
             reset_mode_q,
+            reset_mode_dq,
             redundancy_q,
             policy_q,
             dual_tx_q,
@@ -518,6 +528,7 @@ impl Logic for WbRegs {
 
         // ---- writes ----
         self.reset_mode_q.d.next = self.reset_mode_q.q.val();
+        self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
         self.redundancy_q.d.next = self.redundancy_q.q.val();
         self.policy_q.d.next = self.policy_q.q.val();
         self.dual_tx_q.d.next = self.dual_tx_q.q.val();
@@ -562,7 +573,12 @@ impl Logic for WbRegs {
         if self.wr.val() {
             if self.wb_adr_i.val() == self.a_ctrl.val() {
                 if self.reset_mode_q.q.val() {
-                    if self.wdat.val().get_bits::<2>(2) == self.policy_illegal.val() {
+                    // policy 3, or redundancy with a LISTEN_ONLY channel (§9)
+                    if (self.wdat.val().get_bits::<2>(2) == self.policy_illegal.val())
+                        | (self.wdat.val().get_bit(1)
+                            & ((self.wdat.val().get_bits::<2>(12) == self.mode_listen.val())
+                                | (self.wdat.val().get_bits::<2>(14) == self.mode_listen.val())))
+                    {
                         self.illegal.next = true;
                     } else {
                         self.reset_mode_q.d.next = self.wdat.val().get_bit(0);
@@ -666,6 +682,7 @@ impl Logic for WbRegs {
             self.dat_q.d.next = self.zero32.val();
             self.irq_q.d.next = false;
             self.reset_mode_q.d.next = true;
+            self.reset_mode_dq.d.next = true;
             self.redundancy_q.d.next = false;
             self.policy_q.d.next = self.policy_reset.val();
             self.dual_tx_q.d.next = false;
@@ -696,6 +713,7 @@ impl Logic for WbRegs {
         self.wb_dat_o.next = self.dat_q.q.val();
         self.irq.next = self.irq_q.q.val();
         self.reset_mode.next = self.reset_mode_q.q.val();
+        self.reset_mode_d.next = self.reset_mode_dq.q.val();
         self.redundancy.next = self.redundancy_q.q.val();
         self.policy.next = self.policy_q.q.val();
         self.dual_tx.next = self.dual_tx_q.q.val();

@@ -1971,10 +1971,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     localparam  n9_248 = 9'b11111000;
     localparam  n8_120 = 8'h78;
     localparam  n8_127 = 8'h7f;
-    localparam  n5_10 = 5'b1010;
-    localparam  n5_17 = 5'b10001;
-    localparam  n5_28 = 5'b11100;
-    localparam  n2_3 = 2'b11;
     localparam  n6_63 = 6'b111111;
     localparam  n4_14 = 4'he;
     localparam  zero4 = 4'h0;
@@ -2111,9 +2107,114 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  ack_passive_pending__d;
     wire  ack_passive_pending__q;
     reg  ack_passive_pending__clock;
-    reg  [28:0] txf_id__d;
-    wire  [28:0] txf_id__q;
-    reg  txf_id__clock;
+    reg  p_in_arbitration__d;
+    wire  p_in_arbitration__q;
+    reg  p_in_arbitration__clock;
+    reg  p_ide__d;
+    wire  p_ide__q;
+    reg  p_ide__clock;
+    reg  p_in_frame__d;
+    wire  p_in_frame__q;
+    reg  p_in_frame__clock;
+    reg  p_crc_covered__d;
+    wire  p_crc_covered__q;
+    reg  p_crc_covered__clock;
+    reg  p_in_delim__d;
+    wire  p_in_delim__q;
+    reg  p_in_delim__clock;
+    reg  p_after_error_flag__d;
+    wire  p_after_error_flag__q;
+    reg  p_after_error_flag__clock;
+    reg  p_ack_slot__d;
+    wire  p_ack_slot__q;
+    reg  p_ack_slot__clock;
+    reg  p_stuff_bit__d;
+    wire  p_stuff_bit__q;
+    reg  p_stuff_bit__clock;
+    reg  p_bc0__d;
+    wire  p_bc0__q;
+    reg  p_bc0__clock;
+    reg  p_bc2__d;
+    wire  p_bc2__q;
+    reg  p_bc2__clock;
+    reg  p_bc3__d;
+    wire  p_bc3__q;
+    reg  p_bc3__clock;
+    reg  p_bc5__d;
+    wire  p_bc5__q;
+    reg  p_bc5__clock;
+    reg  p_bc6__d;
+    wire  p_bc6__q;
+    reg  p_bc6__clock;
+    reg  p_bc7__d;
+    wire  p_bc7__q;
+    reg  p_bc7__clock;
+    reg  p_bc10__d;
+    wire  p_bc10__q;
+    reg  p_bc10__clock;
+    reg  p_bc14__d;
+    wire  p_bc14__q;
+    reg  p_bc14__clock;
+    reg  p_bc17__d;
+    wire  p_bc17__q;
+    reg  p_bc17__clock;
+    reg  p_data_end__d;
+    wire  p_data_end__q;
+    reg  p_data_end__clock;
+    reg  p_recovery_end__d;
+    wire  p_recovery_end__q;
+    reg  p_recovery_end__clock;
+    reg  p_dom7__d;
+    wire  p_dom7__q;
+    reg  p_dom7__clock;
+    reg  p_crc_bit__d;
+    wire  p_crc_bit__q;
+    reg  p_crc_bit__clock;
+    reg  p_passive__d;
+    wire  p_passive__q;
+    reg  p_passive__clock;
+    reg  p_bus_off__d;
+    wire  p_bus_off__q;
+    reg  p_bus_off__clock;
+    reg  p_suspend_due__d;
+    wire  p_suspend_due__q;
+    reg  p_suspend_due__clock;
+    reg  p_tec_ge120__d;
+    wire  p_tec_ge120__q;
+    reg  p_tec_ge120__clock;
+    reg  p_tec_ge248__d;
+    wire  p_tec_ge248__q;
+    reg  p_tec_ge248__clock;
+    reg  p_rec_ge127__d;
+    wire  p_rec_ge127__q;
+    reg  p_rec_ge127__clock;
+    reg  p_rec_ge120__d;
+    wire  p_rec_ge120__q;
+    reg  p_rec_ge120__clock;
+    reg  p_cnt_bit_max__d;
+    wire  p_cnt_bit_max__q;
+    reg  p_cnt_bit_max__clock;
+    reg  p_cnt_stuff_max__d;
+    wire  p_cnt_stuff_max__q;
+    reg  p_cnt_stuff_max__clock;
+    reg  p_cnt_crc_max__d;
+    wire  p_cnt_crc_max__q;
+    reg  p_cnt_crc_max__clock;
+    reg  p_cnt_form_max__d;
+    wire  p_cnt_form_max__q;
+    reg  p_cnt_form_max__clock;
+    reg  p_cnt_ack_max__d;
+    wire  p_cnt_ack_max__q;
+    reg  p_cnt_ack_max__clock;
+    reg  [4:0] p_alc__d;
+    wire  [4:0] p_alc__q;
+    reg  p_alc__clock;
+    reg  [15:0] txf_ida__d;
+    wire  [15:0] txf_ida__q;
+    reg  txf_ida__clock;
+    reg  [31:0] txf_idb__d;
+    wire  [31:0] txf_idb__q;
+    reg  txf_idb__clock;
     reg  txf_ide__d;
     wire  txf_ide__q;
     reg  txf_ide__clock;
@@ -2201,7 +2302,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  tx_bit_n;
     reg  bus_bit;
     reg  start_ok;
-    reg  is_stuff_bit;
     reg  in_arbitration;
     reg  in_frame;
     reg  in_delim;
@@ -2225,11 +2325,12 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  join_ok;
     reg  tec_exempt;
     reg  ack_error;
-    reg  [4:0] id_a_idx;
+    reg  [3:0] id_a_idx;
     reg  [4:0] id_b_idx;
     reg  [1:0] dlc_idx;
     reg  [5:0] data_idx;
     reg  [3:0] crc_idx;
+    reg  [15:0] crc_tx;
     reg  [3:0] crc_rx_idx;
     reg  [5:0] data_wr_idx;
     
@@ -2399,10 +2500,185 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .q(ack_passive_pending__q),
         .clock(ack_passive_pending__clock)
     );
-    drcc__chan_a__bsp__txf_id txf_id(
-        .d(txf_id__d),
-        .q(txf_id__q),
-        .clock(txf_id__clock)
+    drcc__chan_a__bsp__p_in_arbitration p_in_arbitration(
+        .d(p_in_arbitration__d),
+        .q(p_in_arbitration__q),
+        .clock(p_in_arbitration__clock)
+    );
+    drcc__chan_a__bsp__p_ide p_ide(
+        .d(p_ide__d),
+        .q(p_ide__q),
+        .clock(p_ide__clock)
+    );
+    drcc__chan_a__bsp__p_in_frame p_in_frame(
+        .d(p_in_frame__d),
+        .q(p_in_frame__q),
+        .clock(p_in_frame__clock)
+    );
+    drcc__chan_a__bsp__p_crc_covered p_crc_covered(
+        .d(p_crc_covered__d),
+        .q(p_crc_covered__q),
+        .clock(p_crc_covered__clock)
+    );
+    drcc__chan_a__bsp__p_in_delim p_in_delim(
+        .d(p_in_delim__d),
+        .q(p_in_delim__q),
+        .clock(p_in_delim__clock)
+    );
+    drcc__chan_a__bsp__p_after_error_flag p_after_error_flag(
+        .d(p_after_error_flag__d),
+        .q(p_after_error_flag__q),
+        .clock(p_after_error_flag__clock)
+    );
+    drcc__chan_a__bsp__p_ack_slot p_ack_slot(
+        .d(p_ack_slot__d),
+        .q(p_ack_slot__q),
+        .clock(p_ack_slot__clock)
+    );
+    drcc__chan_a__bsp__p_stuff_bit p_stuff_bit(
+        .d(p_stuff_bit__d),
+        .q(p_stuff_bit__q),
+        .clock(p_stuff_bit__clock)
+    );
+    drcc__chan_a__bsp__p_bc0 p_bc0(
+        .d(p_bc0__d),
+        .q(p_bc0__q),
+        .clock(p_bc0__clock)
+    );
+    drcc__chan_a__bsp__p_bc2 p_bc2(
+        .d(p_bc2__d),
+        .q(p_bc2__q),
+        .clock(p_bc2__clock)
+    );
+    drcc__chan_a__bsp__p_bc3 p_bc3(
+        .d(p_bc3__d),
+        .q(p_bc3__q),
+        .clock(p_bc3__clock)
+    );
+    drcc__chan_a__bsp__p_bc5 p_bc5(
+        .d(p_bc5__d),
+        .q(p_bc5__q),
+        .clock(p_bc5__clock)
+    );
+    drcc__chan_a__bsp__p_bc6 p_bc6(
+        .d(p_bc6__d),
+        .q(p_bc6__q),
+        .clock(p_bc6__clock)
+    );
+    drcc__chan_a__bsp__p_bc7 p_bc7(
+        .d(p_bc7__d),
+        .q(p_bc7__q),
+        .clock(p_bc7__clock)
+    );
+    drcc__chan_a__bsp__p_bc10 p_bc10(
+        .d(p_bc10__d),
+        .q(p_bc10__q),
+        .clock(p_bc10__clock)
+    );
+    drcc__chan_a__bsp__p_bc14 p_bc14(
+        .d(p_bc14__d),
+        .q(p_bc14__q),
+        .clock(p_bc14__clock)
+    );
+    drcc__chan_a__bsp__p_bc17 p_bc17(
+        .d(p_bc17__d),
+        .q(p_bc17__q),
+        .clock(p_bc17__clock)
+    );
+    drcc__chan_a__bsp__p_data_end p_data_end(
+        .d(p_data_end__d),
+        .q(p_data_end__q),
+        .clock(p_data_end__clock)
+    );
+    drcc__chan_a__bsp__p_recovery_end p_recovery_end(
+        .d(p_recovery_end__d),
+        .q(p_recovery_end__q),
+        .clock(p_recovery_end__clock)
+    );
+    drcc__chan_a__bsp__p_dom7 p_dom7(
+        .d(p_dom7__d),
+        .q(p_dom7__q),
+        .clock(p_dom7__clock)
+    );
+    drcc__chan_a__bsp__p_crc_bit p_crc_bit(
+        .d(p_crc_bit__d),
+        .q(p_crc_bit__q),
+        .clock(p_crc_bit__clock)
+    );
+    drcc__chan_a__bsp__p_passive p_passive(
+        .d(p_passive__d),
+        .q(p_passive__q),
+        .clock(p_passive__clock)
+    );
+    drcc__chan_a__bsp__p_bus_off p_bus_off(
+        .d(p_bus_off__d),
+        .q(p_bus_off__q),
+        .clock(p_bus_off__clock)
+    );
+    drcc__chan_a__bsp__p_suspend_due p_suspend_due(
+        .d(p_suspend_due__d),
+        .q(p_suspend_due__q),
+        .clock(p_suspend_due__clock)
+    );
+    drcc__chan_a__bsp__p_tec_ge120 p_tec_ge120(
+        .d(p_tec_ge120__d),
+        .q(p_tec_ge120__q),
+        .clock(p_tec_ge120__clock)
+    );
+    drcc__chan_a__bsp__p_tec_ge248 p_tec_ge248(
+        .d(p_tec_ge248__d),
+        .q(p_tec_ge248__q),
+        .clock(p_tec_ge248__clock)
+    );
+    drcc__chan_a__bsp__p_rec_ge127 p_rec_ge127(
+        .d(p_rec_ge127__d),
+        .q(p_rec_ge127__q),
+        .clock(p_rec_ge127__clock)
+    );
+    drcc__chan_a__bsp__p_rec_ge120 p_rec_ge120(
+        .d(p_rec_ge120__d),
+        .q(p_rec_ge120__q),
+        .clock(p_rec_ge120__clock)
+    );
+    drcc__chan_a__bsp__p_cnt_bit_max p_cnt_bit_max(
+        .d(p_cnt_bit_max__d),
+        .q(p_cnt_bit_max__q),
+        .clock(p_cnt_bit_max__clock)
+    );
+    drcc__chan_a__bsp__p_cnt_stuff_max p_cnt_stuff_max(
+        .d(p_cnt_stuff_max__d),
+        .q(p_cnt_stuff_max__q),
+        .clock(p_cnt_stuff_max__clock)
+    );
+    drcc__chan_a__bsp__p_cnt_crc_max p_cnt_crc_max(
+        .d(p_cnt_crc_max__d),
+        .q(p_cnt_crc_max__q),
+        .clock(p_cnt_crc_max__clock)
+    );
+    drcc__chan_a__bsp__p_cnt_form_max p_cnt_form_max(
+        .d(p_cnt_form_max__d),
+        .q(p_cnt_form_max__q),
+        .clock(p_cnt_form_max__clock)
+    );
+    drcc__chan_a__bsp__p_cnt_ack_max p_cnt_ack_max(
+        .d(p_cnt_ack_max__d),
+        .q(p_cnt_ack_max__q),
+        .clock(p_cnt_ack_max__clock)
+    );
+    drcc__chan_a__bsp__p_alc p_alc(
+        .d(p_alc__d),
+        .q(p_alc__q),
+        .clock(p_alc__clock)
+    );
+    drcc__chan_a__bsp__txf_ida txf_ida(
+        .d(txf_ida__d),
+        .q(txf_ida__q),
+        .clock(txf_ida__clock)
+    );
+    drcc__chan_a__bsp__txf_idb txf_idb(
+        .d(txf_idb__d),
+        .q(txf_idb__q),
+        .clock(txf_idb__clock)
     );
     drcc__chan_a__bsp__txf_ide txf_ide(
         .d(txf_ide__d),
@@ -2531,7 +2807,42 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__clock = clk;
         cnt_form_q__clock = clk;
         cnt_ack_q__clock = clk;
-        txf_id__clock = clk;
+        p_in_arbitration__clock = clk;
+        p_ide__clock = clk;
+        p_in_frame__clock = clk;
+        p_crc_covered__clock = clk;
+        p_in_delim__clock = clk;
+        p_after_error_flag__clock = clk;
+        p_ack_slot__clock = clk;
+        p_stuff_bit__clock = clk;
+        p_bc0__clock = clk;
+        p_bc2__clock = clk;
+        p_bc3__clock = clk;
+        p_bc5__clock = clk;
+        p_bc6__clock = clk;
+        p_bc7__clock = clk;
+        p_bc10__clock = clk;
+        p_bc14__clock = clk;
+        p_bc17__clock = clk;
+        p_data_end__clock = clk;
+        p_recovery_end__clock = clk;
+        p_dom7__clock = clk;
+        p_crc_bit__clock = clk;
+        p_passive__clock = clk;
+        p_bus_off__clock = clk;
+        p_suspend_due__clock = clk;
+        p_tec_ge120__clock = clk;
+        p_tec_ge248__clock = clk;
+        p_rec_ge127__clock = clk;
+        p_rec_ge120__clock = clk;
+        p_cnt_bit_max__clock = clk;
+        p_cnt_stuff_max__clock = clk;
+        p_cnt_crc_max__clock = clk;
+        p_cnt_form_max__clock = clk;
+        p_cnt_ack_max__clock = clk;
+        p_alc__clock = clk;
+        txf_ida__clock = clk;
+        txf_idb__clock = clk;
         txf_ide__clock = clk;
         txf_rtr__clock = clk;
         txf_dlc__clock = clk;
@@ -2580,7 +2891,42 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__d = cnt_crc_q__q;
         cnt_form_q__d = cnt_form_q__q;
         cnt_ack_q__d = cnt_ack_q__q;
-        txf_id__d = txf_id__q;
+        p_in_arbitration__d = p_in_arbitration__q;
+        p_ide__d = p_ide__q;
+        p_in_frame__d = p_in_frame__q;
+        p_crc_covered__d = p_crc_covered__q;
+        p_in_delim__d = p_in_delim__q;
+        p_after_error_flag__d = p_after_error_flag__q;
+        p_ack_slot__d = p_ack_slot__q;
+        p_stuff_bit__d = p_stuff_bit__q;
+        p_bc0__d = p_bc0__q;
+        p_bc2__d = p_bc2__q;
+        p_bc3__d = p_bc3__q;
+        p_bc5__d = p_bc5__q;
+        p_bc6__d = p_bc6__q;
+        p_bc7__d = p_bc7__q;
+        p_bc10__d = p_bc10__q;
+        p_bc14__d = p_bc14__q;
+        p_bc17__d = p_bc17__q;
+        p_data_end__d = p_data_end__q;
+        p_recovery_end__d = p_recovery_end__q;
+        p_dom7__d = p_dom7__q;
+        p_crc_bit__d = p_crc_bit__q;
+        p_passive__d = p_passive__q;
+        p_bus_off__d = p_bus_off__q;
+        p_suspend_due__d = p_suspend_due__q;
+        p_tec_ge120__d = p_tec_ge120__q;
+        p_tec_ge248__d = p_tec_ge248__q;
+        p_rec_ge127__d = p_rec_ge127__q;
+        p_rec_ge120__d = p_rec_ge120__q;
+        p_cnt_bit_max__d = p_cnt_bit_max__q;
+        p_cnt_stuff_max__d = p_cnt_stuff_max__q;
+        p_cnt_crc_max__d = p_cnt_crc_max__q;
+        p_cnt_form_max__d = p_cnt_form_max__q;
+        p_cnt_ack_max__d = p_cnt_ack_max__q;
+        p_alc__d = p_alc__q;
+        txf_ida__d = txf_ida__q;
+        txf_idb__d = txf_idb__q;
         txf_ide__d = txf_ide__q;
         txf_rtr__d = txf_rtr__q;
         txf_dlc__d = txf_dlc__q;
@@ -2641,14 +2987,13 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 abort_pending__d = 1'b1;
             end
         end
-        is_stuff_bit = stuff_en__q && (stuff_cnt__q == n3_5);
         sof = 1'b0;
         sof_as_tx = 1'b0;
         error = 1'b0;
         flag_error = 1'b0;
         passive_after = 1'b0;
         bus_off_after = 1'b0;
-        suspend_due = is_tx__q && fc__error_passive;
+        suspend_due = p_suspend_due__q;
         join_ok = start_ok && ~suspend_due;
         starts = (~tx_q__q && pending__q) || start_ok;
         join_starts = (~tx_q__q && pending__q) || join_ok;
@@ -2698,97 +3043,135 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         err_kind_n = k3_crc;
         crc_rx_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
         data_wr_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
-        in_arbitration = 1'b0;
-        in_frame = 1'b0;
-        crc_covered = 1'b0;
-        in_delim = 1'b0;
-        after_error_flag = 1'b0;
+        p_in_arbitration__d = 1'b0;
+        p_ide__d = 1'b0;
+        p_in_frame__d = 1'b0;
+        p_crc_covered__d = 1'b0;
+        p_in_delim__d = 1'b0;
+        p_after_error_flag__d = 1'b0;
         case (field_q__q)
             Field__ErrorDelim:
                 begin
-                    in_delim = 1'b1;
-                    after_error_flag = 1'b1;
+                    p_in_delim__d = 1'b1;
+                    p_after_error_flag__d = 1'b1;
                 end
             Field__OverloadDelim:
                 begin
-                    in_delim = 1'b1;
+                    p_in_delim__d = 1'b1;
                 end
             Field__IdA:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__SrrRtr:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Ide:
                 begin
-                    in_arbitration = txf_ide__q;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b0;
+                    p_ide__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__IdB:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__RtrExt:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__R1:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__R0:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Dlc:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Data:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Crc:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__CrcDelim:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__AckSlot:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__AckDelim:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__Eof:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             default:
                 begin
                 end
         endcase
+        p_ack_slot__d = field_q__q == Field__AckSlot;
+        p_stuff_bit__d = stuff_en__q && (stuff_cnt__q == n3_5);
+        p_bc0__d = bit_cnt__q == n7_0;
+        p_bc2__d = bit_cnt__q == n7_2;
+        p_bc3__d = bit_cnt__q == n7_3;
+        p_bc5__d = bit_cnt__q == n7_5;
+        p_bc6__d = bit_cnt__q == n7_6;
+        p_bc7__d = bit_cnt__q == n7_7;
+        p_bc10__d = bit_cnt__q == n7_10;
+        p_bc14__d = bit_cnt__q == n7_14;
+        p_bc17__d = bit_cnt__q == n7_17;
+        p_data_end__d = bit_cnt_inc == data_len__q;
+        p_recovery_end__d = recovery_cnt__q == n7_127;
+        p_dom7__d = dom_cnt__q == n3_7;
+        p_crc_bit__d = 1'b0;
+        if (field_q__q == Field__Crc) begin
+            p_crc_bit__d = crc__q[crc_rx_idx];
+        end
+        p_alc__d = alc_n;
+        p_passive__d = fc__error_passive;
+        p_bus_off__d = fc__bus_off;
+        p_suspend_due__d = is_tx__q && fc__error_passive;
+        p_tec_ge120__d = fc__tec >= n9_120;
+        p_tec_ge248__d = fc__tec >= n9_248;
+        p_rec_ge127__d = fc__rec >= n8_127;
+        p_rec_ge120__d = fc__rec >= n8_120;
+        p_cnt_bit_max__d = cnt_bit_q__q == n8_255;
+        p_cnt_stuff_max__d = cnt_stuff_q__q == n8_255;
+        p_cnt_crc_max__d = cnt_crc_q__q == n8_255;
+        p_cnt_form_max__d = cnt_form_q__q == n8_255;
+        p_cnt_ack_max__d = cnt_ack_q__q == n8_255;
+        in_arbitration = p_in_arbitration__q || (p_ide__q && txf_ide__q);
+        in_frame = p_in_frame__q;
+        crc_covered = p_crc_covered__q;
+        in_delim = p_in_delim__q;
+        after_error_flag = p_after_error_flag__q;
         if (sample) begin
-            if (is_stuff_bit) begin
+            if (p_stuff_bit__q) begin
                 if (sampled == stuff_last__q) begin
                     error = 1'b1;
                     stuff_err = 1'b1;
@@ -2823,16 +3206,16 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         is_tx_n = 1'b0;
                         arb_lost_q__d = 1'b1;
                         lost = 1'b1;
-                        alc_q__d = alc_n;
+                        alc_q__d = p_alc__q;
                     end
-                    else if ((field_q__q == Field__AckSlot) && tx_q__q) begin
+                    else if (p_ack_slot__q && tx_q__q) begin
                     end
                     else begin
                         error = 1'b1;
                         bit_err = 1'b1;
                     end
                 end
-                if (~is_tx__q && (field_q__q == Field__AckSlot) && ~tx_q__q && sampled) begin
+                if (~is_tx__q && p_ack_slot__q && ~tx_q__q && sampled) begin
                     error = 1'b1;
                     bit_err = 1'b1;
                 end
@@ -2840,7 +3223,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Integrating:
                         begin
                             if (sampled) begin
-                                if (bit_cnt__q == n7_10) begin
+                                if (p_bc10__q) begin
                                     field_n = Field__Idle;
                                     bit_cnt_n = n7_0;
                                 end
@@ -2870,7 +3253,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             if (~sampled) begin
                                 sof = 1'b1;
                             end
-                            else if (bit_cnt__q == n7_7) begin
+                            else if (p_bc7__q) begin
                                 field_n = Field__Idle;
                                 bit_cnt_n = n7_0;
                             end
@@ -2881,7 +3264,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Intermission:
                         begin
                             if (~sampled) begin
-                                if (bit_cnt__q == n7_2) begin
+                                if (p_bc2__q) begin
                                     sof = 1'b1;
                                     sof_as_tx = join_starts;
                                 end
@@ -2890,7 +3273,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     bit_cnt_n = n7_0;
                                 end
                             end
-                            else if (bit_cnt__q == n7_2) begin
+                            else if (p_bc2__q) begin
                                 if (suspend_due) begin
                                     field_n = Field__Suspend;
                                 end
@@ -2907,7 +3290,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__IdA:
                         begin
                             rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (bit_cnt__q == n7_10) begin
+                            if (p_bc10__q) begin
                                 field_n = Field__SrrRtr;
                                 bit_cnt_n = n7_0;
                             end
@@ -2935,7 +3318,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__IdB:
                         begin
                             rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (bit_cnt__q == n7_17) begin
+                            if (p_bc17__q) begin
                                 field_n = Field__RtrExt;
                                 bit_cnt_n = n7_0;
                             end
@@ -2960,7 +3343,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Dlc:
                         begin
                             rxs_dlc__d = dlc_n;
-                            if (bit_cnt__q == n7_3) begin
+                            if (p_bc3__q) begin
                                 data_len__d = data_bits;
                                 if (data_bits == n7_0) begin
                                     field_n = Field__Crc;
@@ -2977,7 +3360,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Data:
                         begin
                             rxs_data__d = (rxs_data__q & ~(1 << (data_wr_idx)) | ((sampled) << (data_wr_idx)));
-                            if (bit_cnt_inc == data_len__q) begin
+                            if (p_data_end__q) begin
                                 field_n = Field__Crc;
                                 bit_cnt_n = n7_0;
                             end
@@ -2987,10 +3370,10 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         end
                     Field__Crc:
                         begin
-                            if (sampled != crc__q[crc_rx_idx]) begin
+                            if (sampled != p_crc_bit__q) begin
                                 crc_ok_n = 1'b0;
                             end
-                            if (bit_cnt__q == n7_14) begin
+                            if (p_bc14__q) begin
                                 field_n = Field__CrcDelim;
                                 bit_cnt_n = n7_0;
                             end
@@ -3034,7 +3417,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Eof:
                         begin
                             if (~sampled) begin
-                                if ((bit_cnt__q == n7_6) && ~is_tx__q) begin
+                                if ((p_bc6__q) && ~is_tx__q) begin
                                     field_n = Field__OverloadFlag;
                                     bit_cnt_n = n7_0;
                                 end
@@ -3044,7 +3427,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                 end
                             end
                             else begin
-                                if ((bit_cnt__q == n7_5) && (~is_tx__q || loopback)) begin
+                                if ((p_bc5__q) && (~is_tx__q || loopback)) begin
                                     rx_valid_q__d = 1'b1;
                                     rx_id_q__d = rxs_id__q;
                                     rx_ide_q__d = rxs_ide__q;
@@ -3052,7 +3435,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     rx_dlc_q__d = rxs_dlc__q;
                                     rx_data_q__d = rxs_data__q;
                                 end
-                                if (bit_cnt__q == n7_6) begin
+                                if (p_bc6__q) begin
                                     if (is_tx__q) begin
                                         tx_done_q__d = 1'b1;
                                         pending__d = 1'b0;
@@ -3075,11 +3458,11 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     ev_tec_add8 = 1'b1;
                                     ack_passive_pending__d = 1'b0;
                                 end
-                                if ((bit_cnt__q == n7_0) || (sampled != stuff_last__q)) begin
+                                if ((p_bc0__q) || (sampled != stuff_last__q)) begin
                                     bit_cnt_n = n7_1;
                                     stuff_last_n = sampled;
                                 end
-                                else if (bit_cnt__q == n7_5) begin
+                                else if (p_bc5__q) begin
                                     field_n = Field__ErrorDelim;
                                     bit_cnt_n = n7_0;
                                     delim_first__d = 1'b1;
@@ -3093,7 +3476,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             else if (sampled) begin
                                 flag_error = 1'b1;
                             end
-                            else if (bit_cnt__q == n7_5) begin
+                            else if (p_bc5__q) begin
                                 field_n = Field__ErrorDelim;
                                 bit_cnt_n = n7_0;
                                 delim_first__d = 1'b1;
@@ -3108,7 +3491,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             if (sampled && ~listen_only) begin
                                 flag_error = 1'b1;
                             end
-                            else if (bit_cnt__q == n7_5) begin
+                            else if (p_bc5__q) begin
                                 field_n = Field__OverloadDelim;
                                 bit_cnt_n = n7_0;
                                 delim_first__d = 1'b1;
@@ -3121,9 +3504,9 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__BusOff:
                         begin
                             if (sampled) begin
-                                if (bit_cnt__q == n7_10) begin
+                                if (p_bc10__q) begin
                                     bit_cnt_n = n7_0;
-                                    if (recovery_cnt__q == n7_127) begin
+                                    if (p_recovery_end__q) begin
                                         field_n = Field__Idle;
                                         ev_recovered = 1'b1;
                                         recovery_cnt__d = n7_0;
@@ -3145,7 +3528,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         end
                 endcase
                 if (in_delim) begin
-                    if (bit_cnt__q == n7_0) begin
+                    if (p_bc0__q) begin
                         delim_first__d = 1'b0;
                         if (sampled) begin
                             bit_cnt_n = n7_1;
@@ -3155,7 +3538,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                 ev_rec_add8 = 1'b1;
                             end
                             dom_cnt__d = dom_cnt__q + n3_1;
-                            if (dom_cnt__q == n3_7) begin
+                            if (p_dom7__q) begin
                                 if (is_tx__q) begin
                                     ev_tec_add8 = 1'b1;
                                 end
@@ -3166,7 +3549,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         end
                     end
                     else if (~sampled) begin
-                        if (bit_cnt__q == n7_7) begin
+                        if (p_bc7__q) begin
                             field_n = Field__OverloadFlag;
                             bit_cnt_n = n7_0;
                         end
@@ -3175,7 +3558,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             form_err = 1'b1;
                         end
                     end
-                    else if (bit_cnt__q == n7_7) begin
+                    else if (p_bc7__q) begin
                         field_n = Field__Intermission;
                         bit_cnt_n = n7_0;
                     end
@@ -3215,7 +3598,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
             end
             if (error) begin
                 if (is_tx_n) begin
-                    if (ack_error && fc__error_passive) begin
+                    if (ack_error && p_passive__q) begin
                         ack_passive_pending__d = 1'b1;
                     end
                     else if (~tec_exempt) begin
@@ -3234,8 +3617,8 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     ev_rec_add8 = 1'b1;
                 end
             end
-            passive_after = fc__error_passive || (ev_tec_add8 && (fc__tec >= n9_120)) || (ev_rec_add1 && (fc__rec >= n8_127)) || (ev_rec_add8 && (fc__rec >= n8_120));
-            bus_off_after = ~listen_only && ev_tec_add8 && (fc__tec >= n9_248) && ~fc__bus_off;
+            passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
+            bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
             if (error || flag_error) begin
                 field_n = Field__ErrorFlag;
                 bit_cnt_n = n7_0;
@@ -3245,19 +3628,19 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 err_kind_q__d = err_kind_n;
                 err_field_q__d = field_q__q;
                 err_tx_q__d = is_tx__q || sof_error;
-                if ((err_kind_n == k3_bit) && (cnt_bit_q__q != n8_255)) begin
+                if ((err_kind_n == k3_bit) && ~p_cnt_bit_max__q) begin
                     cnt_bit_q__d = cnt_bit_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_stuff) && (cnt_stuff_q__q != n8_255)) begin
+                if ((err_kind_n == k3_stuff) && ~p_cnt_stuff_max__q) begin
                     cnt_stuff_q__d = cnt_stuff_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_crc) && (cnt_crc_q__q != n8_255)) begin
+                if ((err_kind_n == k3_crc) && ~p_cnt_crc_max__q) begin
                     cnt_crc_q__d = cnt_crc_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_form) && (cnt_form_q__q != n8_255)) begin
+                if ((err_kind_n == k3_form) && ~p_cnt_form_max__q) begin
                     cnt_form_q__d = cnt_form_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_ack) && (cnt_ack_q__q != n8_255)) begin
+                if ((err_kind_n == k3_ack) && ~p_cnt_ack_max__q) begin
                     cnt_ack_q__d = cnt_ack_q__q + n8_1;
                 end
             end
@@ -3292,16 +3675,12 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__tx_success = ev_tx_success && ~listen_only;
         fc__rx_success = ev_rx_success && ~listen_only;
         fc__recovered = ev_recovered;
-        id_b_idx = n5_17 - bit_cnt__q[(32'h0)+:(5)];
-        if (txf_ide__q) begin
-            id_a_idx = n5_28 - bit_cnt__q[(32'h0)+:(5)];
-        end
-        else begin
-            id_a_idx = n5_10 - bit_cnt__q[(32'h0)+:(5)];
-        end
-        dlc_idx = n2_3 - bit_cnt__q[(32'h0)+:(2)];
-        data_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
-        crc_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
+        id_a_idx = ~bit_cnt__q[(32'h0)+:(4)];
+        id_b_idx = ~bit_cnt__q[(32'h0)+:(5)];
+        dlc_idx = ~bit_cnt__q[(32'h0)+:(2)];
+        data_idx = ~bit_cnt__q[(32'h0)+:(6)];
+        crc_idx = ~bit_cnt__q[(32'h0)+:(4)];
+        crc_tx = ((crc__q) & 16'hffff) << 32'h1;
         tx_bit_n = 1'b1;
         case (field_q__q)
             Field__ErrorFlag:
@@ -3326,7 +3705,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             case (field_q__q)
                                 Field__IdA:
                                     begin
-                                        tx_bit_n = txf_id__q[id_a_idx];
+                                        tx_bit_n = txf_ida__q[id_a_idx];
                                     end
                                 Field__SrrRtr:
                                     begin
@@ -3338,7 +3717,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     end
                                 Field__IdB:
                                     begin
-                                        tx_bit_n = txf_id__q[id_b_idx];
+                                        tx_bit_n = txf_idb__q[id_b_idx];
                                     end
                                 Field__RtrExt:
                                     begin
@@ -3362,7 +3741,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     end
                                 Field__Crc:
                                     begin
-                                        tx_bit_n = crc__q[crc_idx];
+                                        tx_bit_n = crc_tx[crc_idx];
                                     end
                                 default:
                                     begin
@@ -3395,7 +3774,13 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         end
         else if (tx_req && ~pending__q) begin
             pending__d = 1'b1;
-            txf_id__d = tx_id;
+            if (tx_ide) begin
+                txf_ida__d = ((tx_id[(32'h12)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            else begin
+                txf_ida__d = ((tx_id[(32'h0)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            txf_idb__d = ((tx_id[(32'h0)+:(18)]) & 32'hffffffff) << 32'he;
             txf_ide__d = tx_ide;
             txf_rtr__d = tx_rtr;
             txf_dlc__d = tx_dlc;
@@ -4100,6 +4485,550 @@ module drcc__chan_a__bsp__last_bit_arb(d,q,clock);
 endmodule // drcc__chan_a__bsp__last_bit_arb
 
 
+module drcc__chan_a__bsp__p_ack_slot(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_ack_slot
+
+
+module drcc__chan_a__bsp__p_after_error_flag(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_after_error_flag
+
+
+module drcc__chan_a__bsp__p_alc(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_alc
+
+
+module drcc__chan_a__bsp__p_bc0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc0
+
+
+module drcc__chan_a__bsp__p_bc10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc10
+
+
+module drcc__chan_a__bsp__p_bc14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc14
+
+
+module drcc__chan_a__bsp__p_bc17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc17
+
+
+module drcc__chan_a__bsp__p_bc2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc2
+
+
+module drcc__chan_a__bsp__p_bc3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc3
+
+
+module drcc__chan_a__bsp__p_bc5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc5
+
+
+module drcc__chan_a__bsp__p_bc6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc6
+
+
+module drcc__chan_a__bsp__p_bc7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bc7
+
+
+module drcc__chan_a__bsp__p_bus_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_bus_off
+
+
+module drcc__chan_a__bsp__p_cnt_ack_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_cnt_ack_max
+
+
+module drcc__chan_a__bsp__p_cnt_bit_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_cnt_bit_max
+
+
+module drcc__chan_a__bsp__p_cnt_crc_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_cnt_crc_max
+
+
+module drcc__chan_a__bsp__p_cnt_form_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_cnt_form_max
+
+
+module drcc__chan_a__bsp__p_cnt_stuff_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_cnt_stuff_max
+
+
+module drcc__chan_a__bsp__p_crc_bit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_crc_bit
+
+
+module drcc__chan_a__bsp__p_crc_covered(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_crc_covered
+
+
+module drcc__chan_a__bsp__p_data_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_data_end
+
+
+module drcc__chan_a__bsp__p_dom7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_dom7
+
+
+module drcc__chan_a__bsp__p_ide(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_ide
+
+
+module drcc__chan_a__bsp__p_in_arbitration(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_in_arbitration
+
+
+module drcc__chan_a__bsp__p_in_delim(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_in_delim
+
+
+module drcc__chan_a__bsp__p_in_frame(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_in_frame
+
+
+module drcc__chan_a__bsp__p_passive(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_passive
+
+
+module drcc__chan_a__bsp__p_rec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_rec_ge120
+
+
+module drcc__chan_a__bsp__p_rec_ge127(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_rec_ge127
+
+
+module drcc__chan_a__bsp__p_recovery_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_recovery_end
+
+
+module drcc__chan_a__bsp__p_stuff_bit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_stuff_bit
+
+
+module drcc__chan_a__bsp__p_suspend_due(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_suspend_due
+
+
+module drcc__chan_a__bsp__p_tec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_tec_ge120
+
+
+module drcc__chan_a__bsp__p_tec_ge248(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__p_tec_ge248
+
+
 module drcc__chan_a__bsp__pending(d,q,clock);
     
     // Module arguments
@@ -4452,11 +5381,11 @@ module drcc__chan_a__bsp__txf_dlc(d,q,clock);
 endmodule // drcc__chan_a__bsp__txf_dlc
 
 
-module drcc__chan_a__bsp__txf_id(d,q,clock);
+module drcc__chan_a__bsp__txf_ida(d,q,clock);
     
     // Module arguments
-    input wire  [28:0] d;
-    output reg  [28:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -4465,7 +5394,23 @@ module drcc__chan_a__bsp__txf_id(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__txf_id
+endmodule // drcc__chan_a__bsp__txf_ida
+
+
+module drcc__chan_a__bsp__txf_idb(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__txf_idb
 
 
 module drcc__chan_a__bsp__txf_ide(d,q,clock);
@@ -4578,6 +5523,9 @@ module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
     reg  res_end__d;
     wire  res_end__q;
     reg  res_end__clock;
+    reg  hse_q__d;
+    wire  hse_q__q;
+    reg  hse_q__clock;
     
     // Local signals
     reg  tick;
@@ -4689,6 +5637,11 @@ module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         .q(res_end__q),
         .clock(res_end__clock)
     );
+    drcc__chan_a__btl__hse_q hse_q(
+        .d(hse_q__d),
+        .q(hse_q__q),
+        .clock(hse_q__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -4707,6 +5660,7 @@ module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         last2__clock = clk;
         res_sync__clock = clk;
         res_end__clock = clk;
+        hse_q__clock = clk;
         brp_cnt__d = brp_cnt__q;
         seg__d = seg__q;
         quantum__d = quantum__q;
@@ -4722,6 +5676,7 @@ module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         last2__d = last2__q;
         res_sync__d = res_sync__q;
         res_end__d = res_end__q;
+        hse_q__d = hse_q__q;
         tseg1_nominal = cfg_tseg1_len;
         tseg2_nominal = cfg_tseg2_len;
         sjw_eff = cfg_sjw_len;
@@ -4781,7 +5736,8 @@ module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         else begin
             sample_value = rx_s;
         end
-        sample = 1'b0;
+        hse_q__d = hard_sync_enable;
+        sample = tick && last1__q && ~(sync_ok && (hse_q__q || tx));
         bit_start = 1'b0;
         hard_sync = 1'b0;
         sample_point_q__d = 1'b0;
@@ -4824,7 +5780,6 @@ module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
                             end
                             tseg1_len__d = tseg1_eff;
                             if (last1__q && ~do_resync) begin
-                                sample = 1'b1;
                                 sample_point_q__d = 1'b1;
                                 last_sample_q__d = sample_value;
                                 synced__d = 1'b0;
@@ -4935,6 +5890,22 @@ module drcc__chan_a__btl__brp_cnt(d,q,clock);
     end
           
 endmodule // drcc__chan_a__btl__brp_cnt
+
+
+module drcc__chan_a__btl__hse_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__btl__hse_q
 
 
 module drcc__chan_a__btl__last1(d,q,clock);
@@ -5191,7 +6162,19 @@ module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
     // Constant declarations
     localparam  one4 = 4'h1;
     localparam  one5 = 5'b1;
-    localparam  n3_5 = 3'b101;
+    localparam  n3_0 = 3'b0;
+    localparam  n3_1 = 3'b1;
+    localparam  n3_2 = 3'b10;
+    localparam  n3_3 = 3'b11;
+    localparam  n3_4 = 3'b100;
+    localparam  n4_3 = 4'h3;
+    localparam  n4_4 = 4'h4;
+    localparam  n5_1 = 5'b1;
+    localparam  n5_2 = 5'b10;
+    localparam  n5_3 = 5'b11;
+    localparam  n5_4 = 5'b100;
+    localparam  n5_5 = 5'b101;
+    localparam  n5_6 = 5'b110;
     localparam  n4_5 = 4'h5;
     localparam  n4_0 = 4'h0;
     localparam  n4_1 = 4'h1;
@@ -5226,10 +6209,12 @@ module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
     reg  single_shot_q__clock;
     
     // Local signals
-    reg  [3:0] tseg1_min;
-    reg  [3:0] tseg1_floor;
-    reg  [3:0] tseg1_raised;
-    reg  [3:0] tseg1_clamped;
+    reg  brp0;
+    reg  brp1;
+    reg  [3:0] tseg1_low;
+    reg  [4:0] tseg1_low_len;
+    reg  [4:0] tseg1_inc;
+    reg  [4:0] tseg1_clamped_len;
     reg  [1:0] sjw_clamped;
     
     // Sub module instances
@@ -5292,32 +6277,38 @@ module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
         tseg1_len_q__d = tseg1_len_q__q;
         tseg2_len_q__d = tseg2_len_q__q;
         sjw_len_q__d = sjw_len_q__q;
-        if (cfg_tseg2 < n3_5) begin
-            tseg1_min = n4_5 - ((cfg_tseg2) & 4'hf);
+        brp0 = cfg_brp == n6_0;
+        brp1 = cfg_brp == n6_1;
+        if (cfg_tseg2 == n3_0) begin
+            tseg1_low = n4_5;
+            tseg1_low_len = n5_6;
+        end
+        else if (cfg_tseg2 == n3_1) begin
+            tseg1_low = n4_4;
+            tseg1_low_len = n5_5;
+        end
+        else if (cfg_tseg2 == n3_2) begin
+            tseg1_low = n4_3;
+            tseg1_low_len = n5_4;
+        end
+        else if ((cfg_tseg2 == n3_3) || brp0) begin
+            tseg1_low = n4_2;
+            tseg1_low_len = n5_3;
+        end
+        else if (brp1 || (cfg_tseg2 == n3_4)) begin
+            tseg1_low = n4_1;
+            tseg1_low_len = n5_2;
         end
         else begin
-            tseg1_min = n4_0;
+            tseg1_low = n4_0;
+            tseg1_low_len = n5_1;
         end
-        if (cfg_brp == n6_0) begin
-            tseg1_floor = n4_2;
-        end
-        else if (cfg_brp == n6_1) begin
-            tseg1_floor = n4_1;
-        end
-        else begin
-            tseg1_floor = n4_0;
-        end
-        if (cfg_tseg1 < tseg1_min) begin
-            tseg1_raised = tseg1_min;
+        tseg1_inc = ((cfg_tseg1) & 5'h1f) + one5;
+        if (cfg_tseg1 < tseg1_low) begin
+            tseg1_clamped_len = tseg1_low_len;
         end
         else begin
-            tseg1_raised = cfg_tseg1;
-        end
-        if (tseg1_raised < tseg1_floor) begin
-            tseg1_clamped = tseg1_floor;
-        end
-        else begin
-            tseg1_clamped = tseg1_raised;
+            tseg1_clamped_len = tseg1_inc;
         end
         if (((cfg_sjw) & 3'h7) > cfg_tseg2) begin
             sjw_clamped = cfg_tseg2[(32'h0)+:(2)];
@@ -5331,7 +6322,7 @@ module drcc__chan_a__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
             mode_q__d = cfg_mode;
             ewl_q__d = cfg_ewl;
             single_shot_q__d = cfg_single_shot;
-            tseg1_len_q__d = ((tseg1_clamped) & 5'h1f) + one5;
+            tseg1_len_q__d = tseg1_clamped_len;
             tseg2_len_q__d = ((cfg_tseg2) & 4'hf) + one4;
             sjw_len_q__d = ((sjw_clamped) & 4'hf) + one4;
         end
@@ -5974,10 +6965,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     localparam  n9_248 = 9'b11111000;
     localparam  n8_120 = 8'h78;
     localparam  n8_127 = 8'h7f;
-    localparam  n5_10 = 5'b1010;
-    localparam  n5_17 = 5'b10001;
-    localparam  n5_28 = 5'b11100;
-    localparam  n2_3 = 2'b11;
     localparam  n6_63 = 6'b111111;
     localparam  n4_14 = 4'he;
     localparam  zero4 = 4'h0;
@@ -6114,9 +7101,114 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  ack_passive_pending__d;
     wire  ack_passive_pending__q;
     reg  ack_passive_pending__clock;
-    reg  [28:0] txf_id__d;
-    wire  [28:0] txf_id__q;
-    reg  txf_id__clock;
+    reg  p_in_arbitration__d;
+    wire  p_in_arbitration__q;
+    reg  p_in_arbitration__clock;
+    reg  p_ide__d;
+    wire  p_ide__q;
+    reg  p_ide__clock;
+    reg  p_in_frame__d;
+    wire  p_in_frame__q;
+    reg  p_in_frame__clock;
+    reg  p_crc_covered__d;
+    wire  p_crc_covered__q;
+    reg  p_crc_covered__clock;
+    reg  p_in_delim__d;
+    wire  p_in_delim__q;
+    reg  p_in_delim__clock;
+    reg  p_after_error_flag__d;
+    wire  p_after_error_flag__q;
+    reg  p_after_error_flag__clock;
+    reg  p_ack_slot__d;
+    wire  p_ack_slot__q;
+    reg  p_ack_slot__clock;
+    reg  p_stuff_bit__d;
+    wire  p_stuff_bit__q;
+    reg  p_stuff_bit__clock;
+    reg  p_bc0__d;
+    wire  p_bc0__q;
+    reg  p_bc0__clock;
+    reg  p_bc2__d;
+    wire  p_bc2__q;
+    reg  p_bc2__clock;
+    reg  p_bc3__d;
+    wire  p_bc3__q;
+    reg  p_bc3__clock;
+    reg  p_bc5__d;
+    wire  p_bc5__q;
+    reg  p_bc5__clock;
+    reg  p_bc6__d;
+    wire  p_bc6__q;
+    reg  p_bc6__clock;
+    reg  p_bc7__d;
+    wire  p_bc7__q;
+    reg  p_bc7__clock;
+    reg  p_bc10__d;
+    wire  p_bc10__q;
+    reg  p_bc10__clock;
+    reg  p_bc14__d;
+    wire  p_bc14__q;
+    reg  p_bc14__clock;
+    reg  p_bc17__d;
+    wire  p_bc17__q;
+    reg  p_bc17__clock;
+    reg  p_data_end__d;
+    wire  p_data_end__q;
+    reg  p_data_end__clock;
+    reg  p_recovery_end__d;
+    wire  p_recovery_end__q;
+    reg  p_recovery_end__clock;
+    reg  p_dom7__d;
+    wire  p_dom7__q;
+    reg  p_dom7__clock;
+    reg  p_crc_bit__d;
+    wire  p_crc_bit__q;
+    reg  p_crc_bit__clock;
+    reg  p_passive__d;
+    wire  p_passive__q;
+    reg  p_passive__clock;
+    reg  p_bus_off__d;
+    wire  p_bus_off__q;
+    reg  p_bus_off__clock;
+    reg  p_suspend_due__d;
+    wire  p_suspend_due__q;
+    reg  p_suspend_due__clock;
+    reg  p_tec_ge120__d;
+    wire  p_tec_ge120__q;
+    reg  p_tec_ge120__clock;
+    reg  p_tec_ge248__d;
+    wire  p_tec_ge248__q;
+    reg  p_tec_ge248__clock;
+    reg  p_rec_ge127__d;
+    wire  p_rec_ge127__q;
+    reg  p_rec_ge127__clock;
+    reg  p_rec_ge120__d;
+    wire  p_rec_ge120__q;
+    reg  p_rec_ge120__clock;
+    reg  p_cnt_bit_max__d;
+    wire  p_cnt_bit_max__q;
+    reg  p_cnt_bit_max__clock;
+    reg  p_cnt_stuff_max__d;
+    wire  p_cnt_stuff_max__q;
+    reg  p_cnt_stuff_max__clock;
+    reg  p_cnt_crc_max__d;
+    wire  p_cnt_crc_max__q;
+    reg  p_cnt_crc_max__clock;
+    reg  p_cnt_form_max__d;
+    wire  p_cnt_form_max__q;
+    reg  p_cnt_form_max__clock;
+    reg  p_cnt_ack_max__d;
+    wire  p_cnt_ack_max__q;
+    reg  p_cnt_ack_max__clock;
+    reg  [4:0] p_alc__d;
+    wire  [4:0] p_alc__q;
+    reg  p_alc__clock;
+    reg  [15:0] txf_ida__d;
+    wire  [15:0] txf_ida__q;
+    reg  txf_ida__clock;
+    reg  [31:0] txf_idb__d;
+    wire  [31:0] txf_idb__q;
+    reg  txf_idb__clock;
     reg  txf_ide__d;
     wire  txf_ide__q;
     reg  txf_ide__clock;
@@ -6204,7 +7296,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  tx_bit_n;
     reg  bus_bit;
     reg  start_ok;
-    reg  is_stuff_bit;
     reg  in_arbitration;
     reg  in_frame;
     reg  in_delim;
@@ -6228,11 +7319,12 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  join_ok;
     reg  tec_exempt;
     reg  ack_error;
-    reg  [4:0] id_a_idx;
+    reg  [3:0] id_a_idx;
     reg  [4:0] id_b_idx;
     reg  [1:0] dlc_idx;
     reg  [5:0] data_idx;
     reg  [3:0] crc_idx;
+    reg  [15:0] crc_tx;
     reg  [3:0] crc_rx_idx;
     reg  [5:0] data_wr_idx;
     
@@ -6402,10 +7494,185 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .q(ack_passive_pending__q),
         .clock(ack_passive_pending__clock)
     );
-    drcc__chan_b__bsp__txf_id txf_id(
-        .d(txf_id__d),
-        .q(txf_id__q),
-        .clock(txf_id__clock)
+    drcc__chan_b__bsp__p_in_arbitration p_in_arbitration(
+        .d(p_in_arbitration__d),
+        .q(p_in_arbitration__q),
+        .clock(p_in_arbitration__clock)
+    );
+    drcc__chan_b__bsp__p_ide p_ide(
+        .d(p_ide__d),
+        .q(p_ide__q),
+        .clock(p_ide__clock)
+    );
+    drcc__chan_b__bsp__p_in_frame p_in_frame(
+        .d(p_in_frame__d),
+        .q(p_in_frame__q),
+        .clock(p_in_frame__clock)
+    );
+    drcc__chan_b__bsp__p_crc_covered p_crc_covered(
+        .d(p_crc_covered__d),
+        .q(p_crc_covered__q),
+        .clock(p_crc_covered__clock)
+    );
+    drcc__chan_b__bsp__p_in_delim p_in_delim(
+        .d(p_in_delim__d),
+        .q(p_in_delim__q),
+        .clock(p_in_delim__clock)
+    );
+    drcc__chan_b__bsp__p_after_error_flag p_after_error_flag(
+        .d(p_after_error_flag__d),
+        .q(p_after_error_flag__q),
+        .clock(p_after_error_flag__clock)
+    );
+    drcc__chan_b__bsp__p_ack_slot p_ack_slot(
+        .d(p_ack_slot__d),
+        .q(p_ack_slot__q),
+        .clock(p_ack_slot__clock)
+    );
+    drcc__chan_b__bsp__p_stuff_bit p_stuff_bit(
+        .d(p_stuff_bit__d),
+        .q(p_stuff_bit__q),
+        .clock(p_stuff_bit__clock)
+    );
+    drcc__chan_b__bsp__p_bc0 p_bc0(
+        .d(p_bc0__d),
+        .q(p_bc0__q),
+        .clock(p_bc0__clock)
+    );
+    drcc__chan_b__bsp__p_bc2 p_bc2(
+        .d(p_bc2__d),
+        .q(p_bc2__q),
+        .clock(p_bc2__clock)
+    );
+    drcc__chan_b__bsp__p_bc3 p_bc3(
+        .d(p_bc3__d),
+        .q(p_bc3__q),
+        .clock(p_bc3__clock)
+    );
+    drcc__chan_b__bsp__p_bc5 p_bc5(
+        .d(p_bc5__d),
+        .q(p_bc5__q),
+        .clock(p_bc5__clock)
+    );
+    drcc__chan_b__bsp__p_bc6 p_bc6(
+        .d(p_bc6__d),
+        .q(p_bc6__q),
+        .clock(p_bc6__clock)
+    );
+    drcc__chan_b__bsp__p_bc7 p_bc7(
+        .d(p_bc7__d),
+        .q(p_bc7__q),
+        .clock(p_bc7__clock)
+    );
+    drcc__chan_b__bsp__p_bc10 p_bc10(
+        .d(p_bc10__d),
+        .q(p_bc10__q),
+        .clock(p_bc10__clock)
+    );
+    drcc__chan_b__bsp__p_bc14 p_bc14(
+        .d(p_bc14__d),
+        .q(p_bc14__q),
+        .clock(p_bc14__clock)
+    );
+    drcc__chan_b__bsp__p_bc17 p_bc17(
+        .d(p_bc17__d),
+        .q(p_bc17__q),
+        .clock(p_bc17__clock)
+    );
+    drcc__chan_b__bsp__p_data_end p_data_end(
+        .d(p_data_end__d),
+        .q(p_data_end__q),
+        .clock(p_data_end__clock)
+    );
+    drcc__chan_b__bsp__p_recovery_end p_recovery_end(
+        .d(p_recovery_end__d),
+        .q(p_recovery_end__q),
+        .clock(p_recovery_end__clock)
+    );
+    drcc__chan_b__bsp__p_dom7 p_dom7(
+        .d(p_dom7__d),
+        .q(p_dom7__q),
+        .clock(p_dom7__clock)
+    );
+    drcc__chan_b__bsp__p_crc_bit p_crc_bit(
+        .d(p_crc_bit__d),
+        .q(p_crc_bit__q),
+        .clock(p_crc_bit__clock)
+    );
+    drcc__chan_b__bsp__p_passive p_passive(
+        .d(p_passive__d),
+        .q(p_passive__q),
+        .clock(p_passive__clock)
+    );
+    drcc__chan_b__bsp__p_bus_off p_bus_off(
+        .d(p_bus_off__d),
+        .q(p_bus_off__q),
+        .clock(p_bus_off__clock)
+    );
+    drcc__chan_b__bsp__p_suspend_due p_suspend_due(
+        .d(p_suspend_due__d),
+        .q(p_suspend_due__q),
+        .clock(p_suspend_due__clock)
+    );
+    drcc__chan_b__bsp__p_tec_ge120 p_tec_ge120(
+        .d(p_tec_ge120__d),
+        .q(p_tec_ge120__q),
+        .clock(p_tec_ge120__clock)
+    );
+    drcc__chan_b__bsp__p_tec_ge248 p_tec_ge248(
+        .d(p_tec_ge248__d),
+        .q(p_tec_ge248__q),
+        .clock(p_tec_ge248__clock)
+    );
+    drcc__chan_b__bsp__p_rec_ge127 p_rec_ge127(
+        .d(p_rec_ge127__d),
+        .q(p_rec_ge127__q),
+        .clock(p_rec_ge127__clock)
+    );
+    drcc__chan_b__bsp__p_rec_ge120 p_rec_ge120(
+        .d(p_rec_ge120__d),
+        .q(p_rec_ge120__q),
+        .clock(p_rec_ge120__clock)
+    );
+    drcc__chan_b__bsp__p_cnt_bit_max p_cnt_bit_max(
+        .d(p_cnt_bit_max__d),
+        .q(p_cnt_bit_max__q),
+        .clock(p_cnt_bit_max__clock)
+    );
+    drcc__chan_b__bsp__p_cnt_stuff_max p_cnt_stuff_max(
+        .d(p_cnt_stuff_max__d),
+        .q(p_cnt_stuff_max__q),
+        .clock(p_cnt_stuff_max__clock)
+    );
+    drcc__chan_b__bsp__p_cnt_crc_max p_cnt_crc_max(
+        .d(p_cnt_crc_max__d),
+        .q(p_cnt_crc_max__q),
+        .clock(p_cnt_crc_max__clock)
+    );
+    drcc__chan_b__bsp__p_cnt_form_max p_cnt_form_max(
+        .d(p_cnt_form_max__d),
+        .q(p_cnt_form_max__q),
+        .clock(p_cnt_form_max__clock)
+    );
+    drcc__chan_b__bsp__p_cnt_ack_max p_cnt_ack_max(
+        .d(p_cnt_ack_max__d),
+        .q(p_cnt_ack_max__q),
+        .clock(p_cnt_ack_max__clock)
+    );
+    drcc__chan_b__bsp__p_alc p_alc(
+        .d(p_alc__d),
+        .q(p_alc__q),
+        .clock(p_alc__clock)
+    );
+    drcc__chan_b__bsp__txf_ida txf_ida(
+        .d(txf_ida__d),
+        .q(txf_ida__q),
+        .clock(txf_ida__clock)
+    );
+    drcc__chan_b__bsp__txf_idb txf_idb(
+        .d(txf_idb__d),
+        .q(txf_idb__q),
+        .clock(txf_idb__clock)
     );
     drcc__chan_b__bsp__txf_ide txf_ide(
         .d(txf_ide__d),
@@ -6534,7 +7801,42 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__clock = clk;
         cnt_form_q__clock = clk;
         cnt_ack_q__clock = clk;
-        txf_id__clock = clk;
+        p_in_arbitration__clock = clk;
+        p_ide__clock = clk;
+        p_in_frame__clock = clk;
+        p_crc_covered__clock = clk;
+        p_in_delim__clock = clk;
+        p_after_error_flag__clock = clk;
+        p_ack_slot__clock = clk;
+        p_stuff_bit__clock = clk;
+        p_bc0__clock = clk;
+        p_bc2__clock = clk;
+        p_bc3__clock = clk;
+        p_bc5__clock = clk;
+        p_bc6__clock = clk;
+        p_bc7__clock = clk;
+        p_bc10__clock = clk;
+        p_bc14__clock = clk;
+        p_bc17__clock = clk;
+        p_data_end__clock = clk;
+        p_recovery_end__clock = clk;
+        p_dom7__clock = clk;
+        p_crc_bit__clock = clk;
+        p_passive__clock = clk;
+        p_bus_off__clock = clk;
+        p_suspend_due__clock = clk;
+        p_tec_ge120__clock = clk;
+        p_tec_ge248__clock = clk;
+        p_rec_ge127__clock = clk;
+        p_rec_ge120__clock = clk;
+        p_cnt_bit_max__clock = clk;
+        p_cnt_stuff_max__clock = clk;
+        p_cnt_crc_max__clock = clk;
+        p_cnt_form_max__clock = clk;
+        p_cnt_ack_max__clock = clk;
+        p_alc__clock = clk;
+        txf_ida__clock = clk;
+        txf_idb__clock = clk;
         txf_ide__clock = clk;
         txf_rtr__clock = clk;
         txf_dlc__clock = clk;
@@ -6583,7 +7885,42 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__d = cnt_crc_q__q;
         cnt_form_q__d = cnt_form_q__q;
         cnt_ack_q__d = cnt_ack_q__q;
-        txf_id__d = txf_id__q;
+        p_in_arbitration__d = p_in_arbitration__q;
+        p_ide__d = p_ide__q;
+        p_in_frame__d = p_in_frame__q;
+        p_crc_covered__d = p_crc_covered__q;
+        p_in_delim__d = p_in_delim__q;
+        p_after_error_flag__d = p_after_error_flag__q;
+        p_ack_slot__d = p_ack_slot__q;
+        p_stuff_bit__d = p_stuff_bit__q;
+        p_bc0__d = p_bc0__q;
+        p_bc2__d = p_bc2__q;
+        p_bc3__d = p_bc3__q;
+        p_bc5__d = p_bc5__q;
+        p_bc6__d = p_bc6__q;
+        p_bc7__d = p_bc7__q;
+        p_bc10__d = p_bc10__q;
+        p_bc14__d = p_bc14__q;
+        p_bc17__d = p_bc17__q;
+        p_data_end__d = p_data_end__q;
+        p_recovery_end__d = p_recovery_end__q;
+        p_dom7__d = p_dom7__q;
+        p_crc_bit__d = p_crc_bit__q;
+        p_passive__d = p_passive__q;
+        p_bus_off__d = p_bus_off__q;
+        p_suspend_due__d = p_suspend_due__q;
+        p_tec_ge120__d = p_tec_ge120__q;
+        p_tec_ge248__d = p_tec_ge248__q;
+        p_rec_ge127__d = p_rec_ge127__q;
+        p_rec_ge120__d = p_rec_ge120__q;
+        p_cnt_bit_max__d = p_cnt_bit_max__q;
+        p_cnt_stuff_max__d = p_cnt_stuff_max__q;
+        p_cnt_crc_max__d = p_cnt_crc_max__q;
+        p_cnt_form_max__d = p_cnt_form_max__q;
+        p_cnt_ack_max__d = p_cnt_ack_max__q;
+        p_alc__d = p_alc__q;
+        txf_ida__d = txf_ida__q;
+        txf_idb__d = txf_idb__q;
         txf_ide__d = txf_ide__q;
         txf_rtr__d = txf_rtr__q;
         txf_dlc__d = txf_dlc__q;
@@ -6644,14 +7981,13 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 abort_pending__d = 1'b1;
             end
         end
-        is_stuff_bit = stuff_en__q && (stuff_cnt__q == n3_5);
         sof = 1'b0;
         sof_as_tx = 1'b0;
         error = 1'b0;
         flag_error = 1'b0;
         passive_after = 1'b0;
         bus_off_after = 1'b0;
-        suspend_due = is_tx__q && fc__error_passive;
+        suspend_due = p_suspend_due__q;
         join_ok = start_ok && ~suspend_due;
         starts = (~tx_q__q && pending__q) || start_ok;
         join_starts = (~tx_q__q && pending__q) || join_ok;
@@ -6701,97 +8037,135 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         err_kind_n = k3_crc;
         crc_rx_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
         data_wr_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
-        in_arbitration = 1'b0;
-        in_frame = 1'b0;
-        crc_covered = 1'b0;
-        in_delim = 1'b0;
-        after_error_flag = 1'b0;
+        p_in_arbitration__d = 1'b0;
+        p_ide__d = 1'b0;
+        p_in_frame__d = 1'b0;
+        p_crc_covered__d = 1'b0;
+        p_in_delim__d = 1'b0;
+        p_after_error_flag__d = 1'b0;
         case (field_q__q)
             Field__ErrorDelim:
                 begin
-                    in_delim = 1'b1;
-                    after_error_flag = 1'b1;
+                    p_in_delim__d = 1'b1;
+                    p_after_error_flag__d = 1'b1;
                 end
             Field__OverloadDelim:
                 begin
-                    in_delim = 1'b1;
+                    p_in_delim__d = 1'b1;
                 end
             Field__IdA:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__SrrRtr:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Ide:
                 begin
-                    in_arbitration = txf_ide__q;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b0;
+                    p_ide__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__IdB:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__RtrExt:
                 begin
-                    in_arbitration = 1'b1;
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__R1:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__R0:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Dlc:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Data:
                 begin
-                    in_frame = 1'b1;
-                    crc_covered = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
                 end
             Field__Crc:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__CrcDelim:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__AckSlot:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__AckDelim:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             Field__Eof:
                 begin
-                    in_frame = 1'b1;
+                    p_in_frame__d = 1'b1;
                 end
             default:
                 begin
                 end
         endcase
+        p_ack_slot__d = field_q__q == Field__AckSlot;
+        p_stuff_bit__d = stuff_en__q && (stuff_cnt__q == n3_5);
+        p_bc0__d = bit_cnt__q == n7_0;
+        p_bc2__d = bit_cnt__q == n7_2;
+        p_bc3__d = bit_cnt__q == n7_3;
+        p_bc5__d = bit_cnt__q == n7_5;
+        p_bc6__d = bit_cnt__q == n7_6;
+        p_bc7__d = bit_cnt__q == n7_7;
+        p_bc10__d = bit_cnt__q == n7_10;
+        p_bc14__d = bit_cnt__q == n7_14;
+        p_bc17__d = bit_cnt__q == n7_17;
+        p_data_end__d = bit_cnt_inc == data_len__q;
+        p_recovery_end__d = recovery_cnt__q == n7_127;
+        p_dom7__d = dom_cnt__q == n3_7;
+        p_crc_bit__d = 1'b0;
+        if (field_q__q == Field__Crc) begin
+            p_crc_bit__d = crc__q[crc_rx_idx];
+        end
+        p_alc__d = alc_n;
+        p_passive__d = fc__error_passive;
+        p_bus_off__d = fc__bus_off;
+        p_suspend_due__d = is_tx__q && fc__error_passive;
+        p_tec_ge120__d = fc__tec >= n9_120;
+        p_tec_ge248__d = fc__tec >= n9_248;
+        p_rec_ge127__d = fc__rec >= n8_127;
+        p_rec_ge120__d = fc__rec >= n8_120;
+        p_cnt_bit_max__d = cnt_bit_q__q == n8_255;
+        p_cnt_stuff_max__d = cnt_stuff_q__q == n8_255;
+        p_cnt_crc_max__d = cnt_crc_q__q == n8_255;
+        p_cnt_form_max__d = cnt_form_q__q == n8_255;
+        p_cnt_ack_max__d = cnt_ack_q__q == n8_255;
+        in_arbitration = p_in_arbitration__q || (p_ide__q && txf_ide__q);
+        in_frame = p_in_frame__q;
+        crc_covered = p_crc_covered__q;
+        in_delim = p_in_delim__q;
+        after_error_flag = p_after_error_flag__q;
         if (sample) begin
-            if (is_stuff_bit) begin
+            if (p_stuff_bit__q) begin
                 if (sampled == stuff_last__q) begin
                     error = 1'b1;
                     stuff_err = 1'b1;
@@ -6826,16 +8200,16 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         is_tx_n = 1'b0;
                         arb_lost_q__d = 1'b1;
                         lost = 1'b1;
-                        alc_q__d = alc_n;
+                        alc_q__d = p_alc__q;
                     end
-                    else if ((field_q__q == Field__AckSlot) && tx_q__q) begin
+                    else if (p_ack_slot__q && tx_q__q) begin
                     end
                     else begin
                         error = 1'b1;
                         bit_err = 1'b1;
                     end
                 end
-                if (~is_tx__q && (field_q__q == Field__AckSlot) && ~tx_q__q && sampled) begin
+                if (~is_tx__q && p_ack_slot__q && ~tx_q__q && sampled) begin
                     error = 1'b1;
                     bit_err = 1'b1;
                 end
@@ -6843,7 +8217,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Integrating:
                         begin
                             if (sampled) begin
-                                if (bit_cnt__q == n7_10) begin
+                                if (p_bc10__q) begin
                                     field_n = Field__Idle;
                                     bit_cnt_n = n7_0;
                                 end
@@ -6873,7 +8247,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             if (~sampled) begin
                                 sof = 1'b1;
                             end
-                            else if (bit_cnt__q == n7_7) begin
+                            else if (p_bc7__q) begin
                                 field_n = Field__Idle;
                                 bit_cnt_n = n7_0;
                             end
@@ -6884,7 +8258,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Intermission:
                         begin
                             if (~sampled) begin
-                                if (bit_cnt__q == n7_2) begin
+                                if (p_bc2__q) begin
                                     sof = 1'b1;
                                     sof_as_tx = join_starts;
                                 end
@@ -6893,7 +8267,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     bit_cnt_n = n7_0;
                                 end
                             end
-                            else if (bit_cnt__q == n7_2) begin
+                            else if (p_bc2__q) begin
                                 if (suspend_due) begin
                                     field_n = Field__Suspend;
                                 end
@@ -6910,7 +8284,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__IdA:
                         begin
                             rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (bit_cnt__q == n7_10) begin
+                            if (p_bc10__q) begin
                                 field_n = Field__SrrRtr;
                                 bit_cnt_n = n7_0;
                             end
@@ -6938,7 +8312,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__IdB:
                         begin
                             rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (bit_cnt__q == n7_17) begin
+                            if (p_bc17__q) begin
                                 field_n = Field__RtrExt;
                                 bit_cnt_n = n7_0;
                             end
@@ -6963,7 +8337,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Dlc:
                         begin
                             rxs_dlc__d = dlc_n;
-                            if (bit_cnt__q == n7_3) begin
+                            if (p_bc3__q) begin
                                 data_len__d = data_bits;
                                 if (data_bits == n7_0) begin
                                     field_n = Field__Crc;
@@ -6980,7 +8354,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Data:
                         begin
                             rxs_data__d = (rxs_data__q & ~(1 << (data_wr_idx)) | ((sampled) << (data_wr_idx)));
-                            if (bit_cnt_inc == data_len__q) begin
+                            if (p_data_end__q) begin
                                 field_n = Field__Crc;
                                 bit_cnt_n = n7_0;
                             end
@@ -6990,10 +8364,10 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         end
                     Field__Crc:
                         begin
-                            if (sampled != crc__q[crc_rx_idx]) begin
+                            if (sampled != p_crc_bit__q) begin
                                 crc_ok_n = 1'b0;
                             end
-                            if (bit_cnt__q == n7_14) begin
+                            if (p_bc14__q) begin
                                 field_n = Field__CrcDelim;
                                 bit_cnt_n = n7_0;
                             end
@@ -7037,7 +8411,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__Eof:
                         begin
                             if (~sampled) begin
-                                if ((bit_cnt__q == n7_6) && ~is_tx__q) begin
+                                if ((p_bc6__q) && ~is_tx__q) begin
                                     field_n = Field__OverloadFlag;
                                     bit_cnt_n = n7_0;
                                 end
@@ -7047,7 +8421,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                 end
                             end
                             else begin
-                                if ((bit_cnt__q == n7_5) && (~is_tx__q || loopback)) begin
+                                if ((p_bc5__q) && (~is_tx__q || loopback)) begin
                                     rx_valid_q__d = 1'b1;
                                     rx_id_q__d = rxs_id__q;
                                     rx_ide_q__d = rxs_ide__q;
@@ -7055,7 +8429,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     rx_dlc_q__d = rxs_dlc__q;
                                     rx_data_q__d = rxs_data__q;
                                 end
-                                if (bit_cnt__q == n7_6) begin
+                                if (p_bc6__q) begin
                                     if (is_tx__q) begin
                                         tx_done_q__d = 1'b1;
                                         pending__d = 1'b0;
@@ -7078,11 +8452,11 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     ev_tec_add8 = 1'b1;
                                     ack_passive_pending__d = 1'b0;
                                 end
-                                if ((bit_cnt__q == n7_0) || (sampled != stuff_last__q)) begin
+                                if ((p_bc0__q) || (sampled != stuff_last__q)) begin
                                     bit_cnt_n = n7_1;
                                     stuff_last_n = sampled;
                                 end
-                                else if (bit_cnt__q == n7_5) begin
+                                else if (p_bc5__q) begin
                                     field_n = Field__ErrorDelim;
                                     bit_cnt_n = n7_0;
                                     delim_first__d = 1'b1;
@@ -7096,7 +8470,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             else if (sampled) begin
                                 flag_error = 1'b1;
                             end
-                            else if (bit_cnt__q == n7_5) begin
+                            else if (p_bc5__q) begin
                                 field_n = Field__ErrorDelim;
                                 bit_cnt_n = n7_0;
                                 delim_first__d = 1'b1;
@@ -7111,7 +8485,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             if (sampled && ~listen_only) begin
                                 flag_error = 1'b1;
                             end
-                            else if (bit_cnt__q == n7_5) begin
+                            else if (p_bc5__q) begin
                                 field_n = Field__OverloadDelim;
                                 bit_cnt_n = n7_0;
                                 delim_first__d = 1'b1;
@@ -7124,9 +8498,9 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     Field__BusOff:
                         begin
                             if (sampled) begin
-                                if (bit_cnt__q == n7_10) begin
+                                if (p_bc10__q) begin
                                     bit_cnt_n = n7_0;
-                                    if (recovery_cnt__q == n7_127) begin
+                                    if (p_recovery_end__q) begin
                                         field_n = Field__Idle;
                                         ev_recovered = 1'b1;
                                         recovery_cnt__d = n7_0;
@@ -7148,7 +8522,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         end
                 endcase
                 if (in_delim) begin
-                    if (bit_cnt__q == n7_0) begin
+                    if (p_bc0__q) begin
                         delim_first__d = 1'b0;
                         if (sampled) begin
                             bit_cnt_n = n7_1;
@@ -7158,7 +8532,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                 ev_rec_add8 = 1'b1;
                             end
                             dom_cnt__d = dom_cnt__q + n3_1;
-                            if (dom_cnt__q == n3_7) begin
+                            if (p_dom7__q) begin
                                 if (is_tx__q) begin
                                     ev_tec_add8 = 1'b1;
                                 end
@@ -7169,7 +8543,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                         end
                     end
                     else if (~sampled) begin
-                        if (bit_cnt__q == n7_7) begin
+                        if (p_bc7__q) begin
                             field_n = Field__OverloadFlag;
                             bit_cnt_n = n7_0;
                         end
@@ -7178,7 +8552,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             form_err = 1'b1;
                         end
                     end
-                    else if (bit_cnt__q == n7_7) begin
+                    else if (p_bc7__q) begin
                         field_n = Field__Intermission;
                         bit_cnt_n = n7_0;
                     end
@@ -7218,7 +8592,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
             end
             if (error) begin
                 if (is_tx_n) begin
-                    if (ack_error && fc__error_passive) begin
+                    if (ack_error && p_passive__q) begin
                         ack_passive_pending__d = 1'b1;
                     end
                     else if (~tec_exempt) begin
@@ -7237,8 +8611,8 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                     ev_rec_add8 = 1'b1;
                 end
             end
-            passive_after = fc__error_passive || (ev_tec_add8 && (fc__tec >= n9_120)) || (ev_rec_add1 && (fc__rec >= n8_127)) || (ev_rec_add8 && (fc__rec >= n8_120));
-            bus_off_after = ~listen_only && ev_tec_add8 && (fc__tec >= n9_248) && ~fc__bus_off;
+            passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
+            bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
             if (error || flag_error) begin
                 field_n = Field__ErrorFlag;
                 bit_cnt_n = n7_0;
@@ -7248,19 +8622,19 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 err_kind_q__d = err_kind_n;
                 err_field_q__d = field_q__q;
                 err_tx_q__d = is_tx__q || sof_error;
-                if ((err_kind_n == k3_bit) && (cnt_bit_q__q != n8_255)) begin
+                if ((err_kind_n == k3_bit) && ~p_cnt_bit_max__q) begin
                     cnt_bit_q__d = cnt_bit_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_stuff) && (cnt_stuff_q__q != n8_255)) begin
+                if ((err_kind_n == k3_stuff) && ~p_cnt_stuff_max__q) begin
                     cnt_stuff_q__d = cnt_stuff_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_crc) && (cnt_crc_q__q != n8_255)) begin
+                if ((err_kind_n == k3_crc) && ~p_cnt_crc_max__q) begin
                     cnt_crc_q__d = cnt_crc_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_form) && (cnt_form_q__q != n8_255)) begin
+                if ((err_kind_n == k3_form) && ~p_cnt_form_max__q) begin
                     cnt_form_q__d = cnt_form_q__q + n8_1;
                 end
-                if ((err_kind_n == k3_ack) && (cnt_ack_q__q != n8_255)) begin
+                if ((err_kind_n == k3_ack) && ~p_cnt_ack_max__q) begin
                     cnt_ack_q__d = cnt_ack_q__q + n8_1;
                 end
             end
@@ -7295,16 +8669,12 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__tx_success = ev_tx_success && ~listen_only;
         fc__rx_success = ev_rx_success && ~listen_only;
         fc__recovered = ev_recovered;
-        id_b_idx = n5_17 - bit_cnt__q[(32'h0)+:(5)];
-        if (txf_ide__q) begin
-            id_a_idx = n5_28 - bit_cnt__q[(32'h0)+:(5)];
-        end
-        else begin
-            id_a_idx = n5_10 - bit_cnt__q[(32'h0)+:(5)];
-        end
-        dlc_idx = n2_3 - bit_cnt__q[(32'h0)+:(2)];
-        data_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
-        crc_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
+        id_a_idx = ~bit_cnt__q[(32'h0)+:(4)];
+        id_b_idx = ~bit_cnt__q[(32'h0)+:(5)];
+        dlc_idx = ~bit_cnt__q[(32'h0)+:(2)];
+        data_idx = ~bit_cnt__q[(32'h0)+:(6)];
+        crc_idx = ~bit_cnt__q[(32'h0)+:(4)];
+        crc_tx = ((crc__q) & 16'hffff) << 32'h1;
         tx_bit_n = 1'b1;
         case (field_q__q)
             Field__ErrorFlag:
@@ -7329,7 +8699,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                             case (field_q__q)
                                 Field__IdA:
                                     begin
-                                        tx_bit_n = txf_id__q[id_a_idx];
+                                        tx_bit_n = txf_ida__q[id_a_idx];
                                     end
                                 Field__SrrRtr:
                                     begin
@@ -7341,7 +8711,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     end
                                 Field__IdB:
                                     begin
-                                        tx_bit_n = txf_id__q[id_b_idx];
+                                        tx_bit_n = txf_idb__q[id_b_idx];
                                     end
                                 Field__RtrExt:
                                     begin
@@ -7365,7 +8735,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                                     end
                                 Field__Crc:
                                     begin
-                                        tx_bit_n = crc__q[crc_idx];
+                                        tx_bit_n = crc_tx[crc_idx];
                                     end
                                 default:
                                     begin
@@ -7398,7 +8768,13 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         end
         else if (tx_req && ~pending__q) begin
             pending__d = 1'b1;
-            txf_id__d = tx_id;
+            if (tx_ide) begin
+                txf_ida__d = ((tx_id[(32'h12)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            else begin
+                txf_ida__d = ((tx_id[(32'h0)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            txf_idb__d = ((tx_id[(32'h0)+:(18)]) & 32'hffffffff) << 32'he;
             txf_ide__d = tx_ide;
             txf_rtr__d = tx_rtr;
             txf_dlc__d = tx_dlc;
@@ -8103,6 +9479,550 @@ module drcc__chan_b__bsp__last_bit_arb(d,q,clock);
 endmodule // drcc__chan_b__bsp__last_bit_arb
 
 
+module drcc__chan_b__bsp__p_ack_slot(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_ack_slot
+
+
+module drcc__chan_b__bsp__p_after_error_flag(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_after_error_flag
+
+
+module drcc__chan_b__bsp__p_alc(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_alc
+
+
+module drcc__chan_b__bsp__p_bc0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc0
+
+
+module drcc__chan_b__bsp__p_bc10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc10
+
+
+module drcc__chan_b__bsp__p_bc14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc14
+
+
+module drcc__chan_b__bsp__p_bc17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc17
+
+
+module drcc__chan_b__bsp__p_bc2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc2
+
+
+module drcc__chan_b__bsp__p_bc3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc3
+
+
+module drcc__chan_b__bsp__p_bc5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc5
+
+
+module drcc__chan_b__bsp__p_bc6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc6
+
+
+module drcc__chan_b__bsp__p_bc7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bc7
+
+
+module drcc__chan_b__bsp__p_bus_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_bus_off
+
+
+module drcc__chan_b__bsp__p_cnt_ack_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_cnt_ack_max
+
+
+module drcc__chan_b__bsp__p_cnt_bit_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_cnt_bit_max
+
+
+module drcc__chan_b__bsp__p_cnt_crc_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_cnt_crc_max
+
+
+module drcc__chan_b__bsp__p_cnt_form_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_cnt_form_max
+
+
+module drcc__chan_b__bsp__p_cnt_stuff_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_cnt_stuff_max
+
+
+module drcc__chan_b__bsp__p_crc_bit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_crc_bit
+
+
+module drcc__chan_b__bsp__p_crc_covered(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_crc_covered
+
+
+module drcc__chan_b__bsp__p_data_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_data_end
+
+
+module drcc__chan_b__bsp__p_dom7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_dom7
+
+
+module drcc__chan_b__bsp__p_ide(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_ide
+
+
+module drcc__chan_b__bsp__p_in_arbitration(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_in_arbitration
+
+
+module drcc__chan_b__bsp__p_in_delim(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_in_delim
+
+
+module drcc__chan_b__bsp__p_in_frame(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_in_frame
+
+
+module drcc__chan_b__bsp__p_passive(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_passive
+
+
+module drcc__chan_b__bsp__p_rec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_rec_ge120
+
+
+module drcc__chan_b__bsp__p_rec_ge127(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_rec_ge127
+
+
+module drcc__chan_b__bsp__p_recovery_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_recovery_end
+
+
+module drcc__chan_b__bsp__p_stuff_bit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_stuff_bit
+
+
+module drcc__chan_b__bsp__p_suspend_due(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_suspend_due
+
+
+module drcc__chan_b__bsp__p_tec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_tec_ge120
+
+
+module drcc__chan_b__bsp__p_tec_ge248(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__p_tec_ge248
+
+
 module drcc__chan_b__bsp__pending(d,q,clock);
     
     // Module arguments
@@ -8455,11 +10375,11 @@ module drcc__chan_b__bsp__txf_dlc(d,q,clock);
 endmodule // drcc__chan_b__bsp__txf_dlc
 
 
-module drcc__chan_b__bsp__txf_id(d,q,clock);
+module drcc__chan_b__bsp__txf_ida(d,q,clock);
     
     // Module arguments
-    input wire  [28:0] d;
-    output reg  [28:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -8468,7 +10388,23 @@ module drcc__chan_b__bsp__txf_id(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__txf_id
+endmodule // drcc__chan_b__bsp__txf_ida
+
+
+module drcc__chan_b__bsp__txf_idb(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__txf_idb
 
 
 module drcc__chan_b__bsp__txf_ide(d,q,clock);
@@ -8581,6 +10517,9 @@ module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
     reg  res_end__d;
     wire  res_end__q;
     reg  res_end__clock;
+    reg  hse_q__d;
+    wire  hse_q__q;
+    reg  hse_q__clock;
     
     // Local signals
     reg  tick;
@@ -8692,6 +10631,11 @@ module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         .q(res_end__q),
         .clock(res_end__clock)
     );
+    drcc__chan_b__btl__hse_q hse_q(
+        .d(hse_q__d),
+        .q(hse_q__q),
+        .clock(hse_q__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -8710,6 +10654,7 @@ module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         last2__clock = clk;
         res_sync__clock = clk;
         res_end__clock = clk;
+        hse_q__clock = clk;
         brp_cnt__d = brp_cnt__q;
         seg__d = seg__q;
         quantum__d = quantum__q;
@@ -8725,6 +10670,7 @@ module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         last2__d = last2__q;
         res_sync__d = res_sync__q;
         res_end__d = res_end__q;
+        hse_q__d = hse_q__q;
         tseg1_nominal = cfg_tseg1_len;
         tseg2_nominal = cfg_tseg2_len;
         sjw_eff = cfg_sjw_len;
@@ -8784,7 +10730,8 @@ module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
         else begin
             sample_value = rx_s;
         end
-        sample = 1'b0;
+        hse_q__d = hard_sync_enable;
+        sample = tick && last1__q && ~(sync_ok && (hse_q__q || tx));
         bit_start = 1'b0;
         hard_sync = 1'b0;
         sample_point_q__d = 1'b0;
@@ -8827,7 +10774,6 @@ module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sj
                             end
                             tseg1_len__d = tseg1_eff;
                             if (last1__q && ~do_resync) begin
-                                sample = 1'b1;
                                 sample_point_q__d = 1'b1;
                                 last_sample_q__d = sample_value;
                                 synced__d = 1'b0;
@@ -8938,6 +10884,22 @@ module drcc__chan_b__btl__brp_cnt(d,q,clock);
     end
           
 endmodule // drcc__chan_b__btl__brp_cnt
+
+
+module drcc__chan_b__btl__hse_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__btl__hse_q
 
 
 module drcc__chan_b__btl__last1(d,q,clock);
@@ -9194,7 +11156,19 @@ module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
     // Constant declarations
     localparam  one4 = 4'h1;
     localparam  one5 = 5'b1;
-    localparam  n3_5 = 3'b101;
+    localparam  n3_0 = 3'b0;
+    localparam  n3_1 = 3'b1;
+    localparam  n3_2 = 3'b10;
+    localparam  n3_3 = 3'b11;
+    localparam  n3_4 = 3'b100;
+    localparam  n4_3 = 4'h3;
+    localparam  n4_4 = 4'h4;
+    localparam  n5_1 = 5'b1;
+    localparam  n5_2 = 5'b10;
+    localparam  n5_3 = 5'b11;
+    localparam  n5_4 = 5'b100;
+    localparam  n5_5 = 5'b101;
+    localparam  n5_6 = 5'b110;
     localparam  n4_5 = 4'h5;
     localparam  n4_0 = 4'h0;
     localparam  n4_1 = 4'h1;
@@ -9229,10 +11203,12 @@ module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
     reg  single_shot_q__clock;
     
     // Local signals
-    reg  [3:0] tseg1_min;
-    reg  [3:0] tseg1_floor;
-    reg  [3:0] tseg1_raised;
-    reg  [3:0] tseg1_clamped;
+    reg  brp0;
+    reg  brp1;
+    reg  [3:0] tseg1_low;
+    reg  [4:0] tseg1_low_len;
+    reg  [4:0] tseg1_inc;
+    reg  [4:0] tseg1_clamped_len;
     reg  [1:0] sjw_clamped;
     
     // Sub module instances
@@ -9295,32 +11271,38 @@ module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
         tseg1_len_q__d = tseg1_len_q__q;
         tseg2_len_q__d = tseg2_len_q__q;
         sjw_len_q__d = sjw_len_q__q;
-        if (cfg_tseg2 < n3_5) begin
-            tseg1_min = n4_5 - ((cfg_tseg2) & 4'hf);
+        brp0 = cfg_brp == n6_0;
+        brp1 = cfg_brp == n6_1;
+        if (cfg_tseg2 == n3_0) begin
+            tseg1_low = n4_5;
+            tseg1_low_len = n5_6;
+        end
+        else if (cfg_tseg2 == n3_1) begin
+            tseg1_low = n4_4;
+            tseg1_low_len = n5_5;
+        end
+        else if (cfg_tseg2 == n3_2) begin
+            tseg1_low = n4_3;
+            tseg1_low_len = n5_4;
+        end
+        else if ((cfg_tseg2 == n3_3) || brp0) begin
+            tseg1_low = n4_2;
+            tseg1_low_len = n5_3;
+        end
+        else if (brp1 || (cfg_tseg2 == n3_4)) begin
+            tseg1_low = n4_1;
+            tseg1_low_len = n5_2;
         end
         else begin
-            tseg1_min = n4_0;
+            tseg1_low = n4_0;
+            tseg1_low_len = n5_1;
         end
-        if (cfg_brp == n6_0) begin
-            tseg1_floor = n4_2;
-        end
-        else if (cfg_brp == n6_1) begin
-            tseg1_floor = n4_1;
-        end
-        else begin
-            tseg1_floor = n4_0;
-        end
-        if (cfg_tseg1 < tseg1_min) begin
-            tseg1_raised = tseg1_min;
+        tseg1_inc = ((cfg_tseg1) & 5'h1f) + one5;
+        if (cfg_tseg1 < tseg1_low) begin
+            tseg1_clamped_len = tseg1_low_len;
         end
         else begin
-            tseg1_raised = cfg_tseg1;
-        end
-        if (tseg1_raised < tseg1_floor) begin
-            tseg1_clamped = tseg1_floor;
-        end
-        else begin
-            tseg1_clamped = tseg1_raised;
+            tseg1_clamped_len = tseg1_inc;
         end
         if (((cfg_sjw) & 3'h7) > cfg_tseg2) begin
             sjw_clamped = cfg_tseg2[(32'h0)+:(2)];
@@ -9334,7 +11316,7 @@ module drcc__chan_b__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tr
             mode_q__d = cfg_mode;
             ewl_q__d = cfg_ewl;
             single_shot_q__d = cfg_single_shot;
-            tseg1_len_q__d = ((tseg1_clamped) & 5'h1f) + one5;
+            tseg1_len_q__d = tseg1_clamped_len;
             tseg2_len_q__d = ((cfg_tseg2) & 4'hf) + one4;
             sjw_len_q__d = ((sjw_clamped) & 4'hf) + one4;
         end

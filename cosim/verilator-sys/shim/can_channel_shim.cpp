@@ -1,13 +1,6 @@
-// can_channel_shim.cpp: the C ABI around the Verilated `can_channel` top
-// (Vcan_channel). Every function here is declared in can_channel_ports.h and
-// mirrored in verilator-sys/src/lib.rs. The port table itself lives in
-// can_channel_ports.h; nothing in this file names an individual port except clk.
-//
-// Clocking and trace time: step() applies the inputs, evaluates with clk=0, then
-// with clk=1 (one rising edge), and copies the outputs. With a trace open, step
-// number n (counted from 0 since the instance was created) dumps the clk=0 phase at
-// VCD time 2n and the clk=1 phase at 2n+1: one VCD time unit is half a clock period,
-// whatever $timescale the file header states.
+// can_channel_shim.cpp: the C ABI around the Verilated `can_channel` top (Vcan_channel). Every
+// function is declared in can_channel_ports.h and mirrored in verilator-sys/src/lib.rs;
+// the port table lives in can_channel_ports.h, the code in verilated_top_shim.inc.
 
 #include <cstddef>
 #include <cstdint>
@@ -17,94 +10,18 @@
 #include "can_channel_ports.h"
 #include "drcc_shim_common.h"
 
-// build.rs defines DRCC_CAN_CHANNEL_CLK_PREV as the name of the model's internal
-// "clk at the previous eval" member when it finds exactly one (Verilator 5.006:
-// __Vtrigrprev__TOP__clk); without it every step makes two evals.
+// build.rs defines DRCC_CAN_CHANNEL_CLK_PREV when it finds the model's "previous clk" member.
 #ifdef DRCC_CAN_CHANNEL_CLK_PREV
 #include "Vcan_channel___024root.h"
+#define DRCC_SHIM_CLK_PREV DRCC_CAN_CHANNEL_CLK_PREV
 #endif
 
-namespace {
+#define DRCC_SHIM_MODEL Vcan_channel
+#define DRCC_SHIM_NAME "can_channel"
+#define DRCC_SHIM_IN CanChannelIn
+#define DRCC_SHIM_OUT CanChannelOut
+#define DRCC_SHIM_INPUTS DRCC_CAN_CHANNEL_INPUTS
+#define DRCC_SHIM_OUTPUTS DRCC_CAN_CHANNEL_OUTPUTS
+#define DRCC_SHIM_FN(f) drcc_can_channel_##f
 
-using Inst = drcc::Instance<Vcan_channel>;
-
-/// Prepares a single eval with clk=1 to see a rising edge; false if unsupported.
-inline bool armEdge(Vcan_channel& t) {
-#ifdef DRCC_CAN_CHANNEL_CLK_PREV
-    t.rootp->DRCC_CAN_CHANNEL_CLK_PREV = 0;
-    return true;
-#else
-    (void)t;
-    return false;
-#endif
-}
-
-// Every listed port must exist on the model with a storage type no wider than the
-// struct field (a port that changes from 8 to 9 bits fails here, not silently).
-#define DRCC_CHECK_PORT(ctype, name, width)                        \
-    static_assert(sizeof(Vcan_channel::name) <= sizeof(ctype),     \
-                  "can_channel port " #name " no longer fits its port-table type");
-DRCC_CAN_CHANNEL_INPUTS(DRCC_CHECK_PORT)
-DRCC_CAN_CHANNEL_OUTPUTS(DRCC_CHECK_PORT)
-#undef DRCC_CHECK_PORT
-
-static_assert(std::is_standard_layout<CanChannelIn>::value, "CanChannelIn must be plain C");
-static_assert(std::is_standard_layout<CanChannelOut>::value, "CanChannelOut must be plain C");
-
-}  // namespace
-
-extern "C" uint64_t drcc_can_channel_abi(void) {
-    drcc::LayoutHash h;
-#define DRCC_HASH_IN(type, name, width) \
-    h.field(#name, offsetof(CanChannelIn, name), sizeof(type), width);
-#define DRCC_HASH_OUT(type, name, width) \
-    h.field(#name, offsetof(CanChannelOut, name), sizeof(type), width);
-    DRCC_CAN_CHANNEL_INPUTS(DRCC_HASH_IN)
-    h.end(sizeof(CanChannelIn));
-    DRCC_CAN_CHANNEL_OUTPUTS(DRCC_HASH_OUT)
-    h.end(sizeof(CanChannelOut));
-#undef DRCC_HASH_IN
-#undef DRCC_HASH_OUT
-    return h.h;
-}
-
-extern "C" void* drcc_can_channel_new(void) { return drcc::newInstance<Vcan_channel>(); }
-
-extern "C" void drcc_can_channel_free(void* handle) { delete static_cast<Inst*>(handle); }
-
-extern "C" void drcc_can_channel_step(void* handle, const CanChannelIn* in, CanChannelOut* out) {
-    Inst* const s = static_cast<Inst*>(handle);
-    Vcan_channel& t = s->top;
-    // Inputs are masked to their port width: Verilator assumes unused high bits are 0.
-#define DRCC_SET_IN(type, name, width) t.name = in->name & drcc::mask<type, width>();
-    DRCC_CAN_CHANNEL_INPUTS(DRCC_SET_IN)
-#undef DRCC_SET_IN
-    s->clockEdge(armEdge);
-#define DRCC_GET_OUT(type, name, width) out->name = static_cast<type>(t.name);
-    DRCC_CAN_CHANNEL_OUTPUTS(DRCC_GET_OUT)
-#undef DRCC_GET_OUT
-}
-
-extern "C" int drcc_can_channel_fast_edge(void) {
-#ifdef DRCC_CAN_CHANNEL_CLK_PREV
-    return 1;
-#else
-    return 0;
-#endif
-}
-
-extern "C" void drcc_can_channel_set_exact(void* handle, int exact) {
-    static_cast<Inst*>(handle)->exact = exact != 0;
-}
-
-extern "C" int drcc_can_channel_trace_open(void* handle, const char* path) {
-    return static_cast<Inst*>(handle)->traceOpen(path);
-}
-
-extern "C" void drcc_can_channel_trace_dump(void* handle, uint64_t time) {
-    static_cast<Inst*>(handle)->traceDump(time);
-}
-
-extern "C" void drcc_can_channel_trace_close(void* handle) {
-    static_cast<Inst*>(handle)->traceClose();
-}
+#include "verilated_top_shim.inc"

@@ -91,7 +91,8 @@ enum Command {
         /// Switch policy of `paper`: error-passive, none, k1 .. k15.
         #[arg(long, default_value = "error-passive")]
         policy: String,
-        /// `paper`: write the trace with the paper's signal names.
+        /// `paper` or a fault: write the trace with the paper's signal names
+        /// (with `all`: one file per fault, named after it).
         #[arg(long, value_name = "FILE")]
         vcd: Option<PathBuf>,
     },

@@ -5,7 +5,7 @@
 
 use super::{CliError, CliResult};
 use drcc_cosim::dual::host::Policy;
-use drcc_testbench::dual::{run_dual, DualFault, DualScenario};
+use drcc_testbench::dual::{run_dual_traced, DualFault, DualScenario};
 use drcc_testbench::paper::{run_paper, switchover_table, Rate};
 use drcc_testbench::EngineKind;
 use std::path::Path;
@@ -92,7 +92,24 @@ pub fn run(
             let mut failed = 0;
             for f in faults {
                 let s = DualScenario::standard(f);
-                let r = run_dual(&s, kind, other).map_err(CliError::Error)?;
+                let mut buf = Vec::new();
+                let r = run_dual_traced(&s, kind, other, vcd.map(|_| &mut buf))
+                    .map_err(CliError::Error)?;
+                if let Some(path) = vcd {
+                    let path = if what == "all" {
+                        path.with_file_name(format!(
+                            "{}_{}.vcd",
+                            path.file_stem().and_then(|x| x.to_str()).unwrap_or("drcc"),
+                            f.name()
+                        ))
+                    } else {
+                        path.to_path_buf()
+                    };
+                    std::fs::write(&path, &buf).map_err(|e| {
+                        CliError::Error(format!("cannot write {}: {e}", path.display()))
+                    })?;
+                    println!("wrote {}", path.display());
+                }
                 let ok = r.exactly_once();
                 failed += !ok as usize;
                 println!(

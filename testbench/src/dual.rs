@@ -17,6 +17,7 @@
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
 use drcc_cosim::dual::host::{btr, reg, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::{compare, DrccDivergence};
+use drcc_cosim::dual::vcd::DrccVcdWriter;
 use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
 use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
@@ -253,6 +254,17 @@ pub fn run_dual(
     kind: EngineKind,
     cosim: Option<EngineKind>,
 ) -> Result<DualReport, String> {
+    run_dual_traced(s, kind, cosim, None)
+}
+
+/// [`run_dual`], also writing the VCD of the main engine's system (the paper's
+/// signal names of every node, `dual::vcd`) into `vcd`.
+pub fn run_dual_traced(
+    s: &DualScenario,
+    kind: EngineKind,
+    cosim: Option<EngineKind>,
+    vcd: Option<&mut Vec<u8>>,
+) -> Result<DualReport, String> {
     let build = |k: EngineKind, fault_start: Option<u64>| -> Result<DualBusSystem, String> {
         let engines = (0..s.nodes)
             .map(|_| drcc_engine(k))
@@ -299,6 +311,18 @@ pub fn run_dual(
         Some(k) => Some(build(k, Some(start))?),
         None => None,
     };
+    let mut writer = match vcd {
+        Some(buf) => Some(
+            DrccVcdWriter::new(
+                buf,
+                8_000_000,
+                s.nodes,
+                &format!("DRCC dual-bus fault scenario {}", s.fault.name()),
+            )
+            .map_err(|e| e.to_string())?,
+        ),
+        None => None,
+    };
     let total = s.run_bits() * CLOCKS_PER_BIT;
     let fault_end = start + s.fault_bits * CLOCKS_PER_BIT;
     let read_during = fault_end.saturating_sub(50 * CLOCKS_PER_BIT);
@@ -335,6 +359,9 @@ pub fn run_dual(
             }
         }
         main.step();
+        if let Some(w) = writer.as_mut() {
+            w.write_cycle(&main).map_err(|e| e.to_string())?;
+        }
         if let Some(o) = other.as_mut() {
             o.step();
             if let Some(d) = compare(&main, o) {
@@ -376,6 +403,9 @@ pub fn run_dual(
                 s.fault.name()
             ));
         }
+    }
+    if let Some(w) = writer.as_mut() {
+        w.finish(main.cycle()).map_err(|e| e.to_string())?;
     }
     report.cycles = cycle;
     report.fault_start = start;

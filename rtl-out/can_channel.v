@@ -2252,7 +2252,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
                 end
             Field__Intermission:
                 begin
-                    hard_sync_enable = bit_cnt__q == n7_2;
+                    hard_sync_enable = bit_cnt__q[32'h1];
                 end
             default:
                 begin

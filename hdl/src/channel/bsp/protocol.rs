@@ -1474,7 +1474,11 @@ impl Logic for ProtocolController {
                 self.hard_sync_enable.next = true;
             }
             Field::Intermission => {
-                self.hard_sync_enable.next = self.bit_cnt.q.val() == self.n7_2.val();
+                // Third intermission bit: bit_cnt == 2. Intermission is entered with
+                // bit_cnt = 0 (EOF, overload/error delimiter) and counts up only
+                // while bit_cnt != 2, so bit_cnt is 0, 1 or 2 here and bit 1 alone
+                // decides; the BTL's next state sees no 7-bit comparator.
+                self.hard_sync_enable.next = self.bit_cnt.q.val().get_bit(1);
             }
             _ => {
                 self.hard_sync_enable.next = false;

@@ -3805,7 +3805,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 end
             Field__Intermission:
                 begin
-                    hard_sync_enable = bit_cnt__q == n7_2;
+                    hard_sync_enable = bit_cnt__q[32'h1];
                 end
             default:
                 begin
@@ -8799,7 +8799,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 end
             Field__Intermission:
                 begin
-                    hard_sync_enable = bit_cnt__q == n7_2;
+                    hard_sync_enable = bit_cnt__q[32'h1];
                 end
             default:
                 begin
@@ -13374,11 +13374,11 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     localparam  zero6 = 6'b0;
     
     // Stub signals
+    reg  ram__clk;
     reg  [4:0] ram__read_address;
-    reg  ram__read_clock;
+    reg  ram__read_enable;
     wire  [99:0] ram__read_data;
     reg  [4:0] ram__write_address;
-    reg  ram__write_clock;
     reg  [99:0] ram__write_data;
     reg  ram__write_enable;
     reg  [4:0] head__d;
@@ -13391,13 +13391,16 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     wire  ready__q;
     reg  ready__clock;
     
+    // Local signals
+    reg  [4:0] pop5;
+    
     // Sub module instances
     drcc__rxfifo__ram ram(
+        .clk(ram__clk),
         .read_address(ram__read_address),
-        .read_clock(ram__read_clock),
+        .read_enable(ram__read_enable),
         .read_data(ram__read_data),
         .write_address(ram__write_address),
-        .write_clock(ram__write_clock),
         .write_data(ram__write_data),
         .write_enable(ram__write_enable)
     );
@@ -13425,9 +13428,10 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
         head__d = head__q;
         cnt__d = cnt__q;
         ready__d = ready__q;
-        ram__read_clock = clk;
-        ram__write_clock = clk;
-        ram__read_address = head__q;
+        ram__clk = clk;
+        pop5 = ((pop) & 5'h1f);
+        ram__read_address = head__q + pop5;
+        ram__read_enable = ~(wr & (cnt__q[(32'h0)+:(5)] == pop5));
         ram__write_enable = wr;
         ram__write_address = head__q + cnt__q[(32'h0)+:(5)];
         ram__write_data = wr_data;
@@ -13488,27 +13492,28 @@ module drcc__rxfifo__head(d,q,clock);
 endmodule // drcc__rxfifo__head
 
 
-module drcc__rxfifo__ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module drcc__rxfifo__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
     
     // Module arguments
+    input wire  clk;
     input wire  [4:0] read_address;
-    input wire  read_clock;
+    input wire  read_enable;
     output reg  [99:0] read_data;
     input wire  [4:0] write_address;
-    input wire  write_clock;
     input wire  [99:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
+    (* no_rw_check *)
     reg[99:0] mem[31:0];
     
-    
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
     end
     
-    always @(posedge write_clock) begin
+    always @(posedge clk) begin
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -13576,11 +13581,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     localparam  max16 = 16'hffff;
     
     // Stub signals
+    reg  hist__clk;
     reg  [4:0] hist__read_address;
-    reg  hist__read_clock;
+    reg  hist__read_enable;
     wire  [115:0] hist__read_data;
     reg  [4:0] hist__write_address;
-    reg  hist__write_clock;
     reg  [115:0] hist__write_data;
     reg  hist__write_enable;
     reg  [1:0] w_state__d;
@@ -13648,11 +13653,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     
     // Sub module instances
     drcc__rxw__hist hist(
+        .clk(hist__clk),
         .read_address(hist__read_address),
-        .read_clock(hist__read_clock),
+        .read_enable(hist__read_enable),
         .read_data(hist__read_data),
         .write_address(hist__write_address),
-        .write_clock(hist__write_clock),
         .write_data(hist__write_data),
         .write_enable(hist__write_enable)
     );
@@ -13764,8 +13769,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hu__d = hu__q;
         dups_q__d = dups_q__q;
         overruns_q__d = overruns_q__q;
-        hist__read_clock = clk;
-        hist__write_clock = clk;
+        hist__clk = clk;
+        hist__read_enable = 1'b1;
         if (sel__q) begin
             frame_sel = frame_b;
         end
@@ -13982,27 +13987,28 @@ module drcc__rxw__free_found(d,q,clock);
 endmodule // drcc__rxw__free_found
 
 
-module drcc__rxw__hist(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module drcc__rxw__hist(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
     
     // Module arguments
+    input wire  clk;
     input wire  [4:0] read_address;
-    input wire  read_clock;
+    input wire  read_enable;
     output reg  [115:0] read_data;
     input wire  [4:0] write_address;
-    input wire  write_clock;
     input wire  [115:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
+    (* no_rw_check *)
     reg[115:0] mem[31:0];
     
-    
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
     end
     
-    always @(posedge write_clock) begin
+    always @(posedge clk) begin
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -14370,11 +14376,11 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
     localparam  zero4 = 4'h0;
     
     // Stub signals
+    reg  ram__clk;
     reg  [3:0] ram__read_address;
-    reg  ram__read_clock;
+    reg  ram__read_enable;
     wire  [98:0] ram__read_data;
     reg  [3:0] ram__write_address;
-    reg  ram__write_clock;
     reg  [98:0] ram__write_data;
     reg  ram__write_enable;
     reg  [2:0] head_a__d;
@@ -14415,11 +14421,11 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
     
     // Sub module instances
     drcc__txbuf__ram ram(
+        .clk(ram__clk),
         .read_address(ram__read_address),
-        .read_clock(ram__read_clock),
+        .read_enable(ram__read_enable),
         .read_data(ram__read_data),
         .write_address(ram__write_address),
-        .write_clock(ram__write_clock),
         .write_data(ram__write_data),
         .write_enable(ram__write_enable)
     );
@@ -14489,8 +14495,8 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
         req_b_q__d = req_b_q__q;
         busy_a__d = busy_a__q;
         busy_b__d = busy_b__q;
-        ram__read_clock = clk;
-        ram__write_clock = clk;
+        ram__clk = clk;
+        ram__read_enable = 1'b1;
         if (redundancy) begin
             pop_a = pop_red & (cnt_a__q != zero4);
             pop_b = 1'b0;
@@ -14676,27 +14682,28 @@ module drcc__txbuf__head_b(d,q,clock);
 endmodule // drcc__txbuf__head_b
 
 
-module drcc__txbuf__ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module drcc__txbuf__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
     
     // Module arguments
+    input wire  clk;
     input wire  [3:0] read_address;
-    input wire  read_clock;
+    input wire  read_enable;
     output reg  [98:0] read_data;
     input wire  [3:0] write_address;
-    input wire  write_clock;
     input wire  [98:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
+    (* no_rw_check *)
     reg[98:0] mem[15:0];
     
-    
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
     end
     
-    always @(posedge write_clock) begin
+    always @(posedge clk) begin
        if (write_enable) begin
           mem[write_address] <= write_data;
        end

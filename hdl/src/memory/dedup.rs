@@ -12,7 +12,13 @@
 //! edge with `scan_i = i >= 1` the read data is entry `i - 1`. The first free
 //! entry (not valid, already used, or expired) seen by the scan is where the new
 //! frame is recorded; with all 32 live, the round-robin `hist_ptr` is the victim.
+//!
+//! The history is a block RAM without read-before-write emulation
+//! (`super::bram`): it is written only in `write`, and its read data is used only
+//! in `scan` edges with `scan_i >= 1`, loaded at the previous `scan` edge, where
+//! nothing is written; a colliding read is never observed.
 
+use super::bram::Bram;
 use rust_hdl::prelude::*;
 
 /// Receive writer with the duplicate-removal history.
@@ -42,7 +48,7 @@ pub struct RxWriter {
     pub duplicates: Signal<Out, Bits<16>>,
     pub overruns: Signal<Out, Bits<16>>,
     // history
-    hist: RAM<Bits<116>, 5>,
+    hist: Bram<Bits<116>, 5>,
     // registers
     w_state: DFF<Bits<2>>,
     rxp_a: DFF<Bit>,
@@ -177,8 +183,8 @@ impl Logic for RxWriter {
             self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, free_found, free_e,
             hist_ptr, hist_idle, hv, hu, dups_q, overruns_q
         );
-        self.hist.read_clock.next = self.clk.val();
-        self.hist.write_clock.next = self.clk.val();
+        self.hist.clk.next = self.clk.val();
+        self.hist.read_enable.next = true;
 
         // the frame being processed, and the history entry being read
         if self.sel.q.val() {

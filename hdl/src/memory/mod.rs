@@ -1,6 +1,8 @@
 //! DRCC memories (contract §6, §7): the TX message buffer, the RX FIFO and the
-//! receive writer with its duplicate-removal history. Each RAM is rust-hdl's
-//! `RAM` (registered read port) so that it maps to block RAM.
+//! receive writer with its duplicate-removal history. Each RAM is a `bram::Bram`
+//! (registered read port, collisions declared undefined) so that it maps to
+//! block RAM with no read-before-write emulation.
+pub mod bram;
 pub mod dedup;
 pub mod rx_fifo;
 pub mod tx_buffer;

@@ -4,7 +4,20 @@
 //! at every edge from `head`; the RX_* registers read it. `rx_ready` (RX_ID[31])
 //! is `count != 0` registered (0 in reset mode). The writer (`dedup.rs`)
 //! writes only when not full, the register block pops only when not empty.
+//!
+//! Block RAM without read-before-write emulation (`super::bram`): the read
+//! address is `head + pop`, and the read is disabled at an edge where it meets
+//! the write (`wr` with `count == pop`). Equivalence with the contract's RAM:
+//! - `count == 0`, a write and no pop: the read data register already holds
+//!   `mem[head]` as before this edge (the previous edge read the same address —
+//!   `head` only moves with a pop, the read address follows it — and wrote
+//!   nothing there: it would have left `count != 0`), so holding it is exact.
+//! - at a pop edge the read data loaded is never observed: the pop is a
+//!   Wishbone write whose ack blocks the access at the next edge (§2), and the
+//!   next edge reads the new `head` as the contract does. Reading `head + 1`
+//!   there keeps the read data one step ahead for the case above.
 
+use super::bram::Bram;
 use rust_hdl::prelude::*;
 
 /// RX FIFO.
@@ -21,10 +34,11 @@ pub struct RxFifo {
     pub count: Signal<Out, Bits<6>>,
     pub rd_data: Signal<Out, Bits<100>>,
     pub rx_ready: Signal<Out, Bit>,
-    ram: RAM<Bits<100>, 5>,
+    ram: Bram<Bits<100>, 5>,
     head: DFF<Bits<5>>,
     cnt: DFF<Bits<6>>,
     ready: DFF<Bit>,
+    pop5: Signal<Local, Bits<5>>,
     one5: Constant<Bits<5>>,
     one6: Constant<Bits<6>>,
     zero5: Constant<Bits<5>>,
@@ -46,6 +60,7 @@ impl Default for RxFifo {
             head: Default::default(),
             cnt: Default::default(),
             ready: Default::default(),
+            pop5: Default::default(),
             one5: Constant::new(1.into()),
             one6: Constant::new(1.into()),
             zero5: Constant::new(0.into()),
@@ -58,9 +73,11 @@ impl Logic for RxFifo {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, head, cnt, ready);
-        self.ram.read_clock.next = self.clk.val();
-        self.ram.write_clock.next = self.clk.val();
-        self.ram.read_address.next = self.head.q.val();
+        self.ram.clk.next = self.clk.val();
+        self.pop5.next = bit_cast::<5, 1>(self.pop.val().into());
+        self.ram.read_address.next = self.head.q.val() + self.pop5.val();
+        self.ram.read_enable.next =
+            !(self.wr.val() & (self.cnt.q.val().get_bits::<5>(0) == self.pop5.val()));
         self.ram.write_enable.next = self.wr.val();
         self.ram.write_address.next = self.head.q.val() + self.cnt.q.val().get_bits::<5>(0);
         self.ram.write_data.next = self.wr_data.val();

@@ -10,7 +10,16 @@
 //! is the one logical queue and the main FSM pops it (`pop_red`).
 //! Frame layout (the TX_ID register bits in [98:68]): [98] rtr, [97] ide,
 //! [96:68] id, [67:64] dlc, [63:0] data (byte 0 in [63:56], as the channel ports).
+//!
+//! Block RAM without read-before-write emulation (`super::bram`): the read meets
+//! the write only when a push goes to the empty queue being read (`head +
+//! count == head` with `count < 8`). The read data loaded there is never used:
+//! a channel takes `tx_*` only at an edge where its `tx_req` is high, and the
+//! request of the next edge needs the queue non-empty before this one (normal
+//! mode: `count_c != 0`; redundancy mode: the main FSM requests only in `wait1`
+//! / `wait3`, which hold the frame being sent in queue A until its pop).
 
+use super::bram::Bram;
 use rust_hdl::prelude::*;
 
 /// TX buffer: RAM, two queues, normal-mode requests.
@@ -40,7 +49,7 @@ pub struct TxBuffer {
     pub done_evt: Signal<Out, Bit>,
     pub failed_evt: Signal<Out, Bit>,
     // storage and queue state
-    ram: RAM<Bits<99>, 4>,
+    ram: Bram<Bits<99>, 4>,
     head_a: DFF<Bits<3>>,
     head_b: DFF<Bits<3>>,
     cnt_a: DFF<Bits<4>>,
@@ -113,8 +122,8 @@ impl Logic for TxBuffer {
         dff_setup!(
             self, clk, head_a, head_b, cnt_a, cnt_b, rd_sel, req_a_q, req_b_q, busy_a, busy_b
         );
-        self.ram.read_clock.next = self.clk.val();
-        self.ram.write_clock.next = self.clk.val();
+        self.ram.clk.next = self.clk.val();
+        self.ram.read_enable.next = true;
 
         // pops: redundancy mode by the main FSM, normal mode at each channel
         // tx_done / tx_failed

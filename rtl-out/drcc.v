@@ -13637,7 +13637,6 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     // Local signals
     reg  [98:0] frame_sel;
     reg  [4:0] scan_e;
-    reg  [31:0] e_mask;
     reg  [15:0] e_ts;
     reg  [15:0] e_age;
     reg  e_ch;
@@ -13645,9 +13644,10 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  e_hv;
     reg  e_hu;
     reg  e_expired;
+    reg  e_keep;
     reg  [4:0] slot;
-    reg  [31:0] hit_mask;
-    reg  [31:0] slot_mask;
+    reg  [4:0] mask_e;
+    reg  [31:0] mask;
     reg  fifo_full;
     reg  [31:0] hv_base;
     
@@ -13778,21 +13778,25 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             frame_sel = frame_a;
         end
         scan_e = scan_i__q[(32'h0)+:(5)] - one5;
-        e_mask = one32 << scan_e;
-        hit_mask = one32 << hit_e__q;
         if (free_found__q) begin
             slot = free_e__q;
         end
         else begin
             slot = hist_ptr__q;
         end
-        slot_mask = one32 << slot;
+        if (w_state__q == s_decide) begin
+            mask_e = hit_e__q;
+        end
+        else begin
+            mask_e = slot;
+        end
+        mask = one32 << mask_e;
         e_ts = hist__read_data[(32'h0)+:(16)];
         e_ch = hist__read_data[32'h10];
         e_frame = hist__read_data[(32'h11)+:(99)];
         e_age = now - e_ts;
-        e_hv = hv__q[scan_e];
-        e_hu = hu__q[scan_e];
+        e_hv = hv__q[32'h0];
+        e_hu = hu__q[32'h0];
         e_expired = e_age > ((window) & 16'hffff);
         fifo_full = fifo_count == full6;
         hist__read_address = scan_i__q[(32'h0)+:(5)];
@@ -13826,6 +13830,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         else begin
             hv_base = hv__q;
         end
+        e_keep = hv_base[32'h0] & ~e_expired;
         hv__d = hv_base;
         if (w_state__q == s_idle) begin
             if (rxp_a__q | rxp_b__q) begin
@@ -13855,10 +13860,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                     free_found__d = 1'b1;
                     free_e__d = scan_e;
                 end
-                if (e_hv & e_expired) begin
-                    hv__d = hv_base & ~e_mask;
-                end
-                else if (e_hv & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
+                hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << 32'h1f);
+                hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << 32'h1f);
+                if (e_hv & ~e_expired & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
                     hit__d = 1'b1;
                     hit_e__d = scan_e;
                 end
@@ -13870,7 +13874,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         else if (w_state__q == s_decide) begin
             if (hit__q) begin
-                hu__d = hu__q | hit_mask;
+                hu__d = hu__q | mask;
                 if (dups_q__q != max16) begin
                     dups_q__d = dups_q__q + one16;
                 end
@@ -13893,8 +13897,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             end
             if (dedup_on) begin
                 hist__write_enable = 1'b1;
-                hv__d = hv_base | slot_mask;
-                hu__d = hu__q & ~slot_mask;
+                hv__d = hv_base | mask;
+                hu__d = hu__q & ~mask;
                 if (~free_found__q) begin
                     hist_ptr__d = hist_ptr__q + one5;
                 end

@@ -17,6 +17,12 @@
 //! (`super::bram`): it is written only in `write`, and its read data is used only
 //! in `scan` edges with `scan_i >= 1`, loaded at the previous `scan` edge, where
 //! nothing is written; a colliding read is never observed.
+//!
+//! `hv` / `hu` are rotated right by one at every `scan` edge with `scan_i >= 1`,
+//! so the entry being judged is always bit 0 (no 32-way index multiplexer, no
+//! decoder of `scan_i`); the 32 rotations of a scan bring them back into place
+//! before `decide` and `write` use them. One decoder serves `decide` (`hit_e`)
+//! and `write` (the recorded slot).
 
 use super::bram::Bram;
 use rust_hdl::prelude::*;
@@ -68,7 +74,6 @@ pub struct RxWriter {
     // judgement of the history entry being read
     frame_sel: Signal<Local, Bits<99>>,
     scan_e: Signal<Local, Bits<5>>,
-    e_mask: Signal<Local, Bits<32>>,
     e_ts: Signal<Local, Bits<16>>,
     e_age: Signal<Local, Bits<16>>,
     e_ch: Signal<Local, Bit>,
@@ -76,9 +81,10 @@ pub struct RxWriter {
     e_hv: Signal<Local, Bit>,
     e_hu: Signal<Local, Bit>,
     e_expired: Signal<Local, Bit>,
+    e_keep: Signal<Local, Bit>,
     slot: Signal<Local, Bits<5>>,
-    hit_mask: Signal<Local, Bits<32>>,
-    slot_mask: Signal<Local, Bits<32>>,
+    mask_e: Signal<Local, Bits<5>>,
+    mask: Signal<Local, Bits<32>>,
     fifo_full: Signal<Local, Bit>,
     hv_base: Signal<Local, Bits<32>>,
     // constants
@@ -141,7 +147,6 @@ impl Default for RxWriter {
             overruns_q: Default::default(),
             frame_sel: Default::default(),
             scan_e: Default::default(),
-            e_mask: Default::default(),
             e_ts: Default::default(),
             e_age: Default::default(),
             e_ch: Default::default(),
@@ -149,9 +154,10 @@ impl Default for RxWriter {
             e_hv: Default::default(),
             e_hu: Default::default(),
             e_expired: Default::default(),
+            e_keep: Default::default(),
             slot: Default::default(),
-            hit_mask: Default::default(),
-            slot_mask: Default::default(),
+            mask_e: Default::default(),
+            mask: Default::default(),
             fifo_full: Default::default(),
             hv_base: Default::default(),
             s_idle: Constant::new(0.into()),
@@ -193,21 +199,26 @@ impl Logic for RxWriter {
             self.frame_sel.next = self.frame_a.val();
         }
         self.scan_e.next = self.scan_i.q.val().get_bits::<5>(0) - self.one5.val();
-        self.e_mask.next = self.one32.val() << self.scan_e.val();
-        self.hit_mask.next = self.one32.val() << self.hit_e.q.val();
         // where a new frame is recorded: the first free entry, else hist_ptr
         if self.free_found.q.val() {
             self.slot.next = self.free_e.q.val();
         } else {
             self.slot.next = self.hist_ptr.q.val();
         }
-        self.slot_mask.next = self.one32.val() << self.slot.val();
+        // one decoder: the hit entry in decide, the recorded slot in write
+        if self.w_state.q.val() == self.s_decide.val() {
+            self.mask_e.next = self.hit_e.q.val();
+        } else {
+            self.mask_e.next = self.slot.val();
+        }
+        self.mask.next = self.one32.val() << self.mask_e.val();
         self.e_ts.next = self.hist.read_data.val().get_bits::<16>(0);
         self.e_ch.next = self.hist.read_data.val().get_bit(16);
         self.e_frame.next = self.hist.read_data.val().get_bits::<99>(17);
         self.e_age.next = self.now.val() - self.e_ts.val();
-        self.e_hv.next = self.hv.q.val().get_bit(self.scan_e.val().index());
-        self.e_hu.next = self.hu.q.val().get_bit(self.scan_e.val().index());
+        // in scan, entry scan_e has been rotated into bit 0
+        self.e_hv.next = self.hv.q.val().get_bit(0);
+        self.e_hu.next = self.hu.q.val().get_bit(0);
         self.e_expired.next = self.e_age.val() > bit_cast::<16, 15>(self.window.val());
         self.fifo_full.next = self.fifo_count.val() == self.full6.val();
 
@@ -248,6 +259,8 @@ impl Logic for RxWriter {
         } else {
             self.hv_base.next = self.hv.q.val();
         }
+        // in scan: entry scan_e (bit 0) stays valid unless it expired
+        self.e_keep.next = self.hv_base.val().get_bit(0) & !self.e_expired.val();
         self.hv.d.next = self.hv_base.val();
 
         if self.w_state.q.val() == self.s_idle.val() {
@@ -277,10 +290,14 @@ impl Logic for RxWriter {
                     self.free_found.d.next = true;
                     self.free_e.d.next = self.scan_e.val();
                 }
-                if self.e_hv.val() & self.e_expired.val() {
-                    // expired
-                    self.hv.d.next = self.hv_base.val() & !self.e_mask.val();
-                } else if self.e_hv.val()
+                // rotate right: entry scan_e (bit 0) goes to bit 31, expired
+                // entries leave hv
+                self.hv.d.next = (self.hv_base.val() >> self.one32.val())
+                    | (bit_cast::<32, 1>(self.e_keep.val().into()) << 31);
+                self.hu.d.next = (self.hu.q.val() >> self.one32.val())
+                    | (bit_cast::<32, 1>(self.hu.q.val().get_bit(0).into()) << 31);
+                if self.e_hv.val()
+                    & !self.e_expired.val()
                     & !self.e_hu.val()
                     & (self.e_ch.val() != self.sel.q.val())
                     & (self.e_frame.val() == self.frame_sel.val())
@@ -297,7 +314,7 @@ impl Logic for RxWriter {
         } else if self.w_state.q.val() == self.s_decide.val() {
             if self.hit.q.val() {
                 // duplicate: it cancels the history entry and is dropped
-                self.hu.d.next = self.hu.q.val() | self.hit_mask.val();
+                self.hu.d.next = self.hu.q.val() | self.mask.val();
                 if self.dups_q.q.val() != self.max16.val() {
                     self.dups_q.d.next = self.dups_q.q.val() + self.one16.val();
                 }
@@ -318,8 +335,8 @@ impl Logic for RxWriter {
             }
             if self.dedup_on.val() {
                 self.hist.write_enable.next = true;
-                self.hv.d.next = self.hv_base.val() | self.slot_mask.val();
-                self.hu.d.next = self.hu.q.val() & !self.slot_mask.val();
+                self.hv.d.next = self.hv_base.val() | self.mask.val();
+                self.hu.d.next = self.hu.q.val() & !self.mask.val();
                 if !self.free_found.q.val() {
                     self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one5.val();
                 }

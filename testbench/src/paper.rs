@@ -107,7 +107,7 @@ pub fn run_paper(
     rate: Rate,
     kind: EngineKind,
     cosim: Option<EngineKind>,
-    mut vcd: Option<&mut Vec<u8>>,
+    vcd: Option<&mut Vec<u8>>,
 ) -> Result<PaperReport, String> {
     let timing = btr(rate.brp, 5, 2, 1, false, 96);
     let node0 = HostConfig {
@@ -137,7 +137,7 @@ pub fn run_paper(
     let mut sys = build(kind)?;
     let mut other = cosim.map(build).transpose()?;
     let cpb = rate.clocks_per_bit();
-    let mut w = match vcd.as_deref_mut() {
+    let mut w = match vcd {
         Some(buf) => Some(
             DrccVcdWriter::new(
                 buf,

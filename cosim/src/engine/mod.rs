@@ -10,6 +10,7 @@
 pub mod drcc;
 pub mod drcc_model;
 pub mod drcc_verilator;
+pub mod hub;
 pub mod model;
 pub mod rusthdl;
 pub mod verilator;

@@ -9,10 +9,12 @@ pub mod conformance;
 pub mod dual;
 pub mod engines;
 pub mod fault_gen;
+pub mod hub_stim;
 pub mod paper;
 pub mod random;
 pub mod run;
 pub mod scenario;
+pub mod star;
 
 pub use engines::EngineKind;
 pub use scenario::{Scenario, ScenarioError};

@@ -1,0 +1,228 @@
+//! The host side of one hub: a Wishbone B4 classic master that writes the start-up
+//! configuration (reset mode, `BTR`, guard thresholds, restoration and decoupling
+//! times, `INT_ENABLE`, then reset mode cleared) and afterwards performs the register
+//! reads and writes a test asks for, the way a supervisor CPU next to the hub would.
+//!
+//! Register indices and fields are the hub contract's (`hub_contract.md` §8), written
+//! here again on purpose: the host is part of the testbench, not of either design.
+//! The driver reacts only to the outputs of the previous clock, so two engines that
+//! agree clock by clock get identical stimulus.
+
+use crate::engine::hub::{HubInputs, HubOutputs};
+use std::collections::VecDeque;
+
+/// Word indices of the hub registers (contract §8).
+pub mod hub_reg {
+    pub const ID: u8 = 0;
+    pub const CTRL: u8 = 1;
+    pub const BTR: u8 = 2;
+    pub const GUARD_CFG: u8 = 3;
+    pub const BF_CFG: u8 = 4;
+    pub const RESTORE_CFG: u8 = 5;
+    pub const STATUS: u8 = 6;
+    pub const INT_STATUS: u8 = 7;
+    pub const INT_ENABLE: u8 = 8;
+    pub const STATS: u8 = 9;
+    /// `PORT_p` is at `PORT0 + p`.
+    pub const PORT0: u8 = 16;
+    /// `CTRL` bits.
+    pub const CTRL_RESET_MODE: u32 = 1;
+    pub const CTRL_FORCE_DECOUPLE: u32 = 1 << 1;
+    pub const CTRL_RECOUPLE: u32 = 1 << 2;
+    pub const CTRL_ACK_INTERDEP: u32 = 1 << 8;
+}
+
+/// What the hub's host writes at start-up.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HubConfig {
+    /// `BTR` (the DRCC's layout; `triple` and `ewl` are not used by the hub).
+    pub btr: u32,
+    /// ACK interdependence (paper section 4).
+    pub ack_interdep: bool,
+    /// Dominant run that isolates a node port / an incoming sublink (>= 14).
+    pub sd_run_up: u8,
+    pub sd_run_sub: u8,
+    /// Consecutive silent frames that isolate a port (0 = off).
+    pub sr_frames: u8,
+    /// Port error counter limits (node ports / sublinks).
+    pub bf_up: u8,
+    pub bf_sub: u8,
+    /// Symptom-free bit times before an isolated port is restored (0 = never).
+    pub restore_bits: u16,
+    /// Bit times without any enabled sublink before definitive decoupling (0 = never).
+    pub decouple_bits: u16,
+    pub int_enable: u32,
+}
+
+impl Default for HubConfig {
+    /// The contract's reset values, with guarding switched on.
+    fn default() -> Self {
+        HubConfig {
+            btr: 0x0000_0000 | (4 << 6) | (1 << 10),
+            ack_interdep: true,
+            sd_run_up: 14,
+            sd_run_sub: 16,
+            sr_frames: 8,
+            bf_up: 32,
+            bf_sub: 64,
+            restore_bits: 1408,
+            decouple_bits: 4096,
+            int_enable: 0xF,
+        }
+    }
+}
+
+impl HubConfig {
+    /// `CTRL` value with the given reset-mode bit.
+    pub fn ctrl(&self, reset_mode: bool) -> u32 {
+        reset_mode as u32 | if self.ack_interdep { hub_reg::CTRL_ACK_INTERDEP } else { 0 }
+    }
+
+    /// `GUARD_CFG` value.
+    pub fn guard_cfg(&self) -> u32 {
+        (self.sd_run_up as u32 & 0x3F)
+            | ((self.sd_run_sub as u32 & 0x3F) << 8)
+            | ((self.sr_frames as u32 & 0xF) << 16)
+    }
+
+    /// `BF_CFG` value.
+    pub fn bf_cfg(&self) -> u32 {
+        self.bf_up as u32 | ((self.bf_sub as u32) << 8)
+    }
+
+    /// `RESTORE_CFG` value.
+    pub fn restore_cfg(&self) -> u32 {
+        self.restore_bits as u32 | ((self.decouple_bits as u32) << 16)
+    }
+}
+
+/// A register read asked for by a test, and its result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HubRead {
+    pub cycle: u64,
+    pub reg: u8,
+    pub value: u32,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Op {
+    write: bool,
+    reg: u8,
+    value: u32,
+    config: bool,
+}
+
+/// One hub's host.
+#[derive(Clone, Debug)]
+pub struct HubHost {
+    config: HubConfig,
+    ops: VecDeque<Op>,
+    current: Option<Op>,
+    /// Reads done so far.
+    pub reads: Vec<HubRead>,
+    configured: bool,
+}
+
+impl HubHost {
+    /// A host that configures the hub with `config` after reset.
+    pub fn new(config: HubConfig) -> Self {
+        let c = config;
+        let ops = [
+            (hub_reg::CTRL, c.ctrl(true)),
+            (hub_reg::BTR, c.btr),
+            (hub_reg::GUARD_CFG, c.guard_cfg()),
+            (hub_reg::BF_CFG, c.bf_cfg()),
+            (hub_reg::RESTORE_CFG, c.restore_cfg()),
+            (hub_reg::INT_ENABLE, c.int_enable),
+            (hub_reg::CTRL, c.ctrl(false)),
+        ]
+        .into_iter()
+        .map(|(reg, value)| Op {
+            write: true,
+            reg,
+            value,
+            config: true,
+        })
+        .collect();
+        HubHost {
+            config,
+            ops,
+            current: None,
+            reads: Vec::new(),
+            configured: false,
+        }
+    }
+
+    /// The configuration written at start-up.
+    pub fn config(&self) -> &HubConfig {
+        &self.config
+    }
+
+    /// Whether the start-up configuration has been written.
+    pub fn configured(&self) -> bool {
+        self.configured
+    }
+
+    /// Whether nothing is left to do.
+    pub fn is_idle(&self) -> bool {
+        self.ops.is_empty() && self.current.is_none()
+    }
+
+    /// Asks for one register read (result in [`HubHost::reads`]).
+    pub fn read(&mut self, reg: u8) {
+        self.ops.push_back(Op {
+            write: false,
+            reg,
+            value: 0,
+            config: false,
+        });
+    }
+
+    /// Asks for one register write.
+    pub fn write(&mut self, reg: u8, value: u32) {
+        self.ops.push_back(Op {
+            write: true,
+            reg,
+            value,
+            config: false,
+        });
+    }
+
+    /// Wishbone inputs for clock `cycle`, given the hub's outputs of the previous
+    /// clock (`prev`).
+    pub fn drive(&mut self, cycle: u64, prev: &HubOutputs, rst: bool, inputs: &mut HubInputs) {
+        inputs.wb_cyc = false;
+        inputs.wb_stb = false;
+        inputs.wb_we = false;
+        inputs.wb_adr = 0;
+        inputs.wb_dat_w = 0;
+        if rst {
+            return;
+        }
+        if let Some(op) = self.current {
+            if prev.wb_ack {
+                self.current = None;
+                if !op.write {
+                    self.reads.push(HubRead {
+                        cycle,
+                        reg: op.reg,
+                        value: prev.wb_dat_r,
+                    });
+                }
+            }
+        }
+        if self.current.is_none() {
+            self.current = self.ops.pop_front();
+            if !self.current.is_some_and(|o| o.config) {
+                self.configured = true;
+            }
+        }
+        if let Some(op) = self.current {
+            inputs.wb_cyc = true;
+            inputs.wb_stb = true;
+            inputs.wb_we = op.write;
+            inputs.wb_adr = op.reg;
+            inputs.wb_dat_w = op.value;
+        }
+    }
+}

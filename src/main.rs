@@ -96,6 +96,20 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         vcd: Option<PathBuf>,
     },
+    /// DRCC nodes on a ReCANcentrate replicated star of two coupled hubs: `table` (the
+    /// fault scenarios as Markdown), a fault (`uplink_stuck_dominant`, `uplink_bit_flipping`,
+    /// `uplink_stuck_recessive`, `downlink_cut`, `sublink_stuck_dominant`, `interlink_lost`,
+    /// `all_interlinks_lost`, `no_fault`) or `all`.
+    Star {
+        /// What to run.
+        what: String,
+        /// Engine: model, verilator, or rust-hdl (rust-hdl hubs with model nodes).
+        #[arg(long, default_value = "model")]
+        engine: String,
+        /// Also run this engine in lock step and compare every clock.
+        #[arg(long, value_name = "ENGINE")]
+        cosim: Option<String>,
+    },
     /// Measure simulated clock cycles per second of every available engine.
     Bench {
         /// Seconds per measurement.
@@ -154,6 +168,11 @@ fn main() -> ExitCode {
             policy,
             vcd,
         } => cli::redundancy::run(&what, &engine, cosim.as_deref(), &policy, vcd.as_deref()),
+        Command::Star {
+            what,
+            engine,
+            cosim,
+        } => cli::star::run(&what, &engine, cosim.as_deref()),
         Command::Bench { seconds } => cli::bench(seconds),
         Command::Synth {
             target,

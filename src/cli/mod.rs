@@ -3,6 +3,7 @@
 
 pub mod generate;
 pub mod redundancy;
+pub mod star;
 pub mod run;
 pub mod synth;
 pub mod wave;

@@ -170,7 +170,14 @@ impl StarScenario {
             frames_per_node: 24,
             period_bits: 500,
             fault_start_bits: 3_000,
-            fault_bits: 4_000,
+            // Losing every interlink blocks all traffic (ACK interdependence) until the
+            // hubs decouple, `decouple_bits` after the sublinks were judged silent; the
+            // fault outlasts that so that both stars are seen carrying on alone.
+            fault_bits: if fault == StarFault::AllInterlinksLost {
+                9_000
+            } else {
+                4_000
+            },
             hub: HubConfig {
                 btr: btr(STAR_BRP, STAR_TSEG1, STAR_TSEG2, STAR_SJW, false, 0),
                 ..HubConfig::default()
@@ -184,7 +191,10 @@ impl StarScenario {
             redundancy: true,
             policy: Policy::KFailed(2),
             dual_tx: false,
-            recovery_bits: 1_000,
+            // Longer than the hubs' restoration time (1408): a node returns to a hub
+            // only after the hub has re-coupled its port; returning earlier would be
+            // a dominant bit on an isolated port, which restarts the restoration.
+            recovery_bits: 2_000,
             stall_limit: 500,
             dedup_window: 2_000,
             ..HostConfig::default()
@@ -214,6 +224,10 @@ impl StarScenario {
         traffic.max(fault_end + self.hub.restore_bits as u64 + 1_408 + 2_000)
     }
 }
+
+/// Bit times after the end of `all_interlinks_lost` at which the hubs' hosts
+/// re-couple them.
+pub const RECOUPLE_AFTER_BITS: u64 = 200;
 
 /// A hub engine by kind.
 pub fn hub_engine(kind: EngineKind, n: usize, m: usize) -> Result<Box<dyn HubEngine>, String> {
@@ -376,10 +390,28 @@ pub fn run_star(
             }
         }
     };
+    // After definitive decoupling only the hubs' host can re-couple them (the paper's
+    // section 5 protocol is not built): both supervisors write `CTRL.recouple` once
+    // the interlinks are back.
+    let recouple_at = (s.fault == StarFault::AllInterlinksLost)
+        .then_some(report.fault_end + RECOUPLE_AFTER_BITS * CLOCKS_PER_BIT);
+    let recouple = |sys: &mut StarSystem| {
+        for h in 0..2 {
+            sys.hub_mut(h)
+                .host
+                .write(hub_reg::CTRL, hub_reg::CTRL_ACK_INTERDEP | hub_reg::CTRL_RECOUPLE);
+        }
+    };
     let mut prev_enabled = [0u16; 2];
     let mut prev_decoupled = [false; 2];
     let mut cycle = 0u64;
     loop {
+        if Some(cycle) == recouple_at {
+            recouple(&mut main);
+            if let Some(o) = other.as_mut() {
+                recouple(o);
+            }
+        }
         if cycle == total {
             ask(&mut main);
             if let Some(o) = other.as_mut() {

@@ -1,0 +1,8 @@
+//! The ReCANcentrate hub (ReCANcentrate paper sections 2-5, `hub_contract.md`):
+//! input synchronizers and the two-stage AND coupler, the frame tracker, one
+//! guard per port, the Wishbone register block and the `hub` top.
+pub mod coupler;
+pub mod hub;
+pub mod port_guard;
+pub mod registers;
+pub mod tracker;

@@ -59,13 +59,14 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     coupler: Coupler<N, M>,
     cfg_regs: ChannelConfig,
     btl: BitTimingLogic,
-    trk: FrameTracker,
+    tracker: FrameTracker,
     node_guards: [PortGuard; N],
     sub_guards: [PortGuard; M],
     // glue
     guard_rst: Signal<Local, Bit>,
     btl_rst: Signal<Local, Bit>,
     ack_win: Signal<Local, Bit>,
+    recouple: Signal<Local, Bit>,
     node_en: Signal<Local, Bits<N>>,
     sub_en: Signal<Local, Bits<M>>,
     port_rd: Signal<Local, Bits<32>>,
@@ -74,6 +75,7 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     a_node: [Constant<Bits<6>>; N],
     a_sub: [Constant<Bits<6>>; M],
     shift_n: Constant<Bits<4>>,
+    a_ctrl: Constant<Bits<6>>,
     s_idle: Constant<Bits<2>>,
     s_ack: Constant<Bits<2>>,
     s_delim: Constant<Bits<2>>,
@@ -115,12 +117,13 @@ impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
             coupler: Default::default(),
             cfg_regs: Default::default(),
             btl: Default::default(),
-            trk: Default::default(),
+            tracker: Default::default(),
             node_guards: std::array::from_fn(|_| Default::default()),
             sub_guards: std::array::from_fn(|_| Default::default()),
             guard_rst: Default::default(),
             btl_rst: Default::default(),
             ack_win: Default::default(),
+            recouple: Default::default(),
             node_en: Default::default(),
             sub_en: Default::default(),
             port_rd: Default::default(),
@@ -129,6 +132,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
             a_node: std::array::from_fn(|i| Constant::new((port0 + i as u64).into())),
             a_sub: std::array::from_fn(|j| Constant::new((port0 + (N + j) as u64).into())),
             shift_n: Constant::new((N as u64).into()),
+            a_ctrl: Constant::new((super::registers::CTRL as u64).into()),
             s_idle: Constant::new(super::tracker::IDLE_WAIT.into()),
             s_ack: Constant::new(super::tracker::ACK_SLOT.into()),
             s_delim: Constant::new(super::tracker::ACK_DELIM.into()),
@@ -150,8 +154,21 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.btl_rst.next =
             self.rst.val() | self.regs.reset_mode.val() | self.regs.reset_mode_d.val();
         // §4: the ACK window from the registered tracker state
-        self.ack_win.next = (self.trk.trk.val() == self.s_ack.val())
-            | (self.trk.trk.val() == self.s_delim.val());
+        self.ack_win.next = (self.tracker.trk.val() == self.s_ack.val())
+            | (self.tracker.trk.val() == self.s_delim.val());
+
+        // CTRL.recouple (§8): a CTRL write with bit 2, not bit 1, and reset_mode 0
+        // before the write and in the written value (the register block takes
+        // the rest of the command)
+        self.recouple.next = self.wb_cyc_i.val()
+            & self.wb_stb_i.val()
+            & !self.regs.wb_ack_o.val()
+            & self.wb_we_i.val()
+            & (self.wb_adr_i.val() == self.a_ctrl.val())
+            & !self.regs.reset_mode.val()
+            & !self.wb_dat_i.val().get_bit(0)
+            & !self.wb_dat_i.val().get_bit(1)
+            & self.wb_dat_i.val().get_bit(2);
 
         // ---- guards (§6) ----
         self.node_en.next = self.zero_n.val();
@@ -168,12 +185,12 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
             self.node_guards[i].sample.next = self.btl.sample.val();
             self.node_guards[i].pb.next = self.coupler.node_q.val().get_bit(i);
             self.node_guards[i].b.next = self.coupler.coupled.val();
-            self.node_guards[i].ev_sof.next = self.trk.ev_sof.val();
-            self.node_guards[i].ev_frame.next = self.trk.ev_frame.val();
-            self.node_guards[i].in_arb.next = self.trk.in_arb.val();
-            self.node_guards[i].ev_stuff_rec.next = self.trk.ev_stuff_rec.val();
-            self.node_guards[i].ev_rid.next = self.trk.ev_rid.val();
-            self.node_guards[i].ev_ack.next = self.trk.ev_ack.val();
+            self.node_guards[i].ev_sof.next = self.tracker.ev_sof.val();
+            self.node_guards[i].ev_frame.next = self.tracker.ev_frame.val();
+            self.node_guards[i].in_arb.next = self.tracker.in_arb.val();
+            self.node_guards[i].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
+            self.node_guards[i].ev_rid.next = self.tracker.ev_rid.val();
+            self.node_guards[i].ev_ack.next = self.tracker.ev_ack.val();
             self.node_guards[i].sd_limit.next = self.regs.sd_run_up.val();
             self.node_guards[i].bf_limit.next = self.regs.bf_up.val();
             self.node_guards[i].sr_frames.next = self.regs.sr_frames.val();
@@ -194,16 +211,16 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
             // §6: the sublink guards are frozen while decoupled
             self.sub_guards[j].freeze.next = self.regs.decoupled.val();
             self.sub_guards[j].rid_en.next = false;
-            self.sub_guards[j].recouple.next = self.regs.recouple.val();
+            self.sub_guards[j].recouple.next = self.recouple.val();
             self.sub_guards[j].sample.next = self.btl.sample.val();
             self.sub_guards[j].pb.next = self.coupler.sub_q.val().get_bit(j);
             self.sub_guards[j].b.next = self.coupler.coupled.val();
-            self.sub_guards[j].ev_sof.next = self.trk.ev_sof.val();
-            self.sub_guards[j].ev_frame.next = self.trk.ev_frame.val();
-            self.sub_guards[j].in_arb.next = self.trk.in_arb.val();
-            self.sub_guards[j].ev_stuff_rec.next = self.trk.ev_stuff_rec.val();
-            self.sub_guards[j].ev_rid.next = self.trk.ev_rid.val();
-            self.sub_guards[j].ev_ack.next = self.trk.ev_ack.val();
+            self.sub_guards[j].ev_sof.next = self.tracker.ev_sof.val();
+            self.sub_guards[j].ev_frame.next = self.tracker.ev_frame.val();
+            self.sub_guards[j].in_arb.next = self.tracker.in_arb.val();
+            self.sub_guards[j].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
+            self.sub_guards[j].ev_rid.next = self.tracker.ev_rid.val();
+            self.sub_guards[j].ev_ack.next = self.tracker.ev_ack.val();
             self.sub_guards[j].sd_limit.next = self.regs.sd_run_sub.val();
             self.sub_guards[j].bf_limit.next = self.regs.bf_sub.val();
             self.sub_guards[j].sr_frames.next = self.regs.sr_frames.val();
@@ -229,12 +246,12 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.regs.wb_dat_i.next = self.wb_dat_i.val();
         self.regs.sample.next = self.btl.sample.val();
         self.regs.any_sub_en.next = self.sub_en.val() != self.zero_m.val();
-        self.regs.trk.next = self.trk.trk.val();
+        self.regs.trk.next = self.tracker.trk.val();
         self.regs.ack_window.next = self.ack_win.val();
         self.regs.port_en.next = bit_cast::<P, N>(self.node_en.val())
             | (bit_cast::<P, M>(self.sub_en.val()) << self.shift_n.val());
-        self.regs.frames.next = self.trk.frames.val();
-        self.regs.errors.next = self.trk.errors.val();
+        self.regs.frames.next = self.tracker.frames.val();
+        self.regs.errors.next = self.tracker.errors.val();
         self.regs.port_rd.next = self.port_rd.val();
         self.regs.ev_iso.next = self.ev_iso.val();
         self.regs.ev_rest.next = self.ev_rest.val();
@@ -270,13 +287,13 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.btl.cfg_triple.next = false;
         self.btl.rx_s.next = self.coupler.coupled.val();
         self.btl.tx.next = true;
-        self.btl.hard_sync_enable.next = self.trk.trk.val() == self.s_idle.val();
+        self.btl.hard_sync_enable.next = self.tracker.trk.val() == self.s_idle.val();
 
         // ---- frame tracker (§5) ----
-        self.trk.clk.next = self.clk.val();
-        self.trk.rst.next = self.guard_rst.val();
-        self.trk.sample.next = self.btl.sample.val();
-        self.trk.b.next = self.coupler.coupled.val();
+        self.tracker.clk.next = self.clk.val();
+        self.tracker.rst.next = self.guard_rst.val();
+        self.tracker.sample.next = self.btl.sample.val();
+        self.tracker.b.next = self.coupler.coupled.val();
 
         // ---- outputs ----
         self.wb_dat_o.next = self.regs.wb_dat_o.val();
@@ -286,7 +303,7 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.sublink_out.next = self.coupler.sublink_out.val();
         self.coupled.next = self.coupler.coupled.val();
         self.sample_point.next = self.btl.sample_point.val();
-        self.trk_state.next = self.trk.trk.val();
+        self.trk_state.next = self.tracker.trk.val();
         self.ack_window.next = self.ack_win.val();
         self.decoupled.next = self.regs.decoupled.val();
         self.port_enabled.next = bit_cast::<P, N>(self.node_en.val())

@@ -11,8 +11,9 @@
 //!   outside reset mode and a CTRL write carrying both commands set
 //!   `INT_STATUS.illegal`.
 //! - `CTRL.force_decouple` / `CTRL.recouple` act only with `reset_mode` 0 before
-//!   the write and in the written value; `recouple` is handed to the sublink
-//!   guards as a one-clock pulse.
+//!   the write and in the written value. The sublink guards get the `recouple`
+//!   pulse from the top (decoded there so that no always block both reads the
+//!   guard events and drives the command: no combinational cycle for Verilator).
 //! - §7: `no_twin` counts SAMPLE edges without an enabled sublink; it decouples
 //!   after `decouple_bits` of them. A command wins over that at the same edge.
 //! - `INT_STATUS` is W1C, an event at the same edge wins; `irq <=
@@ -87,7 +88,6 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     pub reset_mode_d: Signal<Out, Bit>,
     pub ack_interdep: Signal<Out, Bit>,
     pub decoupled: Signal<Out, Bit>,
-    pub recouple: Signal<Out, Bit>,
     pub brp: Signal<Out, Bits<6>>,
     pub tseg1: Signal<Out, Bits<4>>,
     pub tseg2: Signal<Out, Bits<3>>,
@@ -190,7 +190,6 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             reset_mode_d: Default::default(),
             ack_interdep: Default::default(),
             decoupled: Default::default(),
-            recouple: Default::default(),
             brp: Default::default(),
             tseg1: Default::default(),
             tseg2: Default::default(),
@@ -338,7 +337,6 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
 
         // ---- §7 decoupling (at SAMPLE edges) ----
         self.dec_evt.next = false;
-        self.recouple.next = false;
         if self.any_sub_en.val() {
             self.no_twin_new.next = self.zero16.val();
         } else if self.no_twin.q.val() == self.max16.val() {
@@ -382,7 +380,6 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                                 // recouple
                                 self.decoupled_q.d.next = false;
                                 self.no_twin.d.next = self.zero16.val();
-                                self.recouple.next = true;
                                 self.dec_evt.next = false;
                             }
                         }
@@ -476,7 +473,6 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
             self.int_enable.d.next = self.zero4.val();
             self.decoupled_q.d.next = false;
             self.no_twin.d.next = self.zero16.val();
-            self.recouple.next = false;
         }
 
         // ---- outputs ----

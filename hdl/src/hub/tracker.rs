@@ -59,7 +59,6 @@ pub struct FrameTracker {
     st_idle: Signal<Local, Bit>,
     st_frame: Signal<Local, Bit>,
     st_ack: Signal<Local, Bit>,
-    st_delim: Signal<Local, Bit>,
     stuff_due: Signal<Local, Bit>,
     at_crc_delim: Signal<Local, Bit>,
     data_bit: Signal<Local, Bit>,
@@ -131,7 +130,6 @@ impl Default for FrameTracker {
             st_idle: Default::default(),
             st_frame: Default::default(),
             st_ack: Default::default(),
-            st_delim: Default::default(),
             stuff_due: Default::default(),
             at_crc_delim: Default::default(),
             data_bit: Default::default(),
@@ -183,7 +181,6 @@ impl Logic for FrameTracker {
         self.st_idle.next = self.trk_q.q.val() == self.s_idle.val();
         self.st_frame.next = self.trk_q.q.val() == self.s_frame.val();
         self.st_ack.next = self.trk_q.q.val() == self.s_ack.val();
-        self.st_delim.next = self.trk_q.q.val() == self.s_delim.val();
         // FRAME: a stuff bit is due, else the CRC delimiter, else data bit `pos`
         self.stuff_due.next = self.same_run.q.val() == self.n3_5.val();
         self.at_crc_delim.next = self.pos.q.val() == self.crc_end.q.val();

@@ -299,8 +299,7 @@ impl Logic for PortGuard {
                         self.silent.d.next = self.silent_new.val();
                     }
                 }
-                if self.sd_hit.val() | self.rid_hit.val() | self.bf_hit.val() | self.sr_hit.val()
-                {
+                if self.sd_hit.val() | self.rid_hit.val() | self.bf_hit.val() | self.sr_hit.val() {
                     // ISOLATE(p, kind): first of SD, RID, BF, SR
                     self.iso_evt.next = true;
                     self.enabled_q.d.next = false;

@@ -147,3 +147,78 @@ fn coupler_synthesizes() {
     uut.connect_all();
     yosys_validate("hub_coupler", &generate_verilog(&uut)).unwrap();
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    type Uut = Coupler<4, 2>;
+
+    /// One clock: inputs applied with `clk` low, then the rising edge.
+    fn clock(u: &mut Uut) {
+        u.clk.next = Clock::from(false);
+        assert!(simulate(u, 100));
+        u.clk.next = Clock::from(true);
+        assert!(simulate(u, 100));
+    }
+
+    fn fresh() -> Box<Uut> {
+        let mut u = Box::<Uut>::default();
+        u.connect_all();
+        u.node_en.next = 0xF.into();
+        u.sub_en.next = 0x3.into();
+        u.uplink.next = 0xF.into();
+        u.sublink_in.next = 0x3.into();
+        u.rst.next = true;
+        clock(&mut u);
+        u.rst.next = false;
+        clock(&mut u);
+        u
+    }
+
+    #[test]
+    fn uplink_reaches_downlink_three_edges_later_and_isolated_ports_are_ignored() {
+        let mut u = fresh();
+        u.uplink.next = 0xB.into(); // node 2 dominant
+        for edge in 1..=3 {
+            clock(&mut u);
+            let dominant = edge == 3;
+            assert_eq!(u.downlink.val().to_u64(), if dominant { 0 } else { 0xF });
+            assert_eq!(u.sublink_out.val().to_u64(), if dominant { 0 } else { 0x3 });
+            assert_eq!(u.coupled.val(), !dominant);
+        }
+        // node 2 isolated: its dominant level no longer reaches anybody
+        u.node_en.next = 0xB.into();
+        clock(&mut u);
+        assert_eq!(u.downlink.val().to_u64(), 0xF);
+        assert_eq!(u.sublink_out.val().to_u64(), 0x3);
+    }
+
+    #[test]
+    fn ack_mask_passes_only_the_twin_and_decoupling_drops_it() {
+        let mut u = fresh();
+        u.uplink.next = 0xE.into(); // own node ACKs
+        for _ in 0..2 {
+            clock(&mut u);
+        }
+        u.ack_mask.next = true;
+        clock(&mut u);
+        assert_eq!(u.downlink.val().to_u64(), 0xF, "own ACK masked");
+        assert_eq!(
+            u.sublink_out.val().to_u64(),
+            0x0,
+            "but forwarded to the twin"
+        );
+        assert!(!u.coupled.val(), "the tracker sees it");
+        u.uplink.next = 0xF.into();
+        u.sublink_in.next = 0x1.into(); // the twin's ACK on interlink 1
+        for _ in 0..3 {
+            clock(&mut u);
+        }
+        assert_eq!(u.downlink.val().to_u64(), 0x0, "twin ACK passes");
+        u.decoupled.next = true;
+        u.ack_mask.next = false;
+        clock(&mut u);
+        assert_eq!(u.downlink.val().to_u64(), 0xF, "decoupled: own star only");
+    }
+}

@@ -238,7 +238,7 @@ mod tests {
                     if stuck {
                         up &= !(1 << 3);
                     }
-                    if flip && c == 2 && rng.next() % 4 == 0 {
+                    if flip && c == 2 && rng.next().is_multiple_of(4) {
                         up &= !(1 << 2);
                     }
                     i.uplink = up;
@@ -258,7 +258,7 @@ mod tests {
                         i.wb_stb = true;
                         i.wb_we = false;
                         i.wb_adr = (rng.next() % 24) as u8;
-                        if rng.next() % 50 == 0 {
+                        if rng.next().is_multiple_of(50) {
                             i.wb_we = true;
                             i.wb_adr = [1u8, 1, 1, 7, 2, 0][(rng.next() % 6) as usize];
                             i.wb_dat_w =

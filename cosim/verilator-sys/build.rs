@@ -39,6 +39,10 @@ const TOPS: &[Top] = &[
         name: "drcc",
         file: "drcc.v",
     },
+    Top {
+        name: "hub",
+        file: "hub.v",
+    },
 ];
 
 /// Message when no usable Verilator is found (kept equal to `UNAVAILABLE_MSG` in lib.rs).

@@ -2,6 +2,7 @@
 pub mod channel;
 pub mod drcc;
 pub mod host;
+pub mod hub;
 pub mod memory;
 pub mod rmb;
 pub mod tops;

@@ -6,10 +6,11 @@
 
 use crate::channel::can_channel::CanChannel;
 use crate::drcc::Drcc;
+use crate::hub::hub::Hub4x2;
 use rust_hdl::prelude::*;
 
 /// Names of the emitted tops, in the order `drcc generate` writes them.
-pub const TOPS: &[&str] = &["can_channel", "drcc"];
+pub const TOPS: &[&str] = &["can_channel", "drcc", "hub"];
 
 /// Renames rust-hdl's `top` / `top$a$b` module names to `<name>` / `<name>__a__b`
 /// and prefixes the file with a header naming the generator.
@@ -65,6 +66,11 @@ pub fn emit(name: &str) -> Option<String> {
         }
         "drcc" => {
             let mut uut = Drcc::default();
+            uut.connect_all();
+            Some(finish_verilog(name, &generate_verilog(&uut)))
+        }
+        "hub" => {
+            let mut uut = Hub4x2::default();
             uut.connect_all();
             Some(finish_verilog(name, &generate_verilog(&uut)))
         }

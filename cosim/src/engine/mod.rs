@@ -11,6 +11,8 @@ pub mod drcc;
 pub mod drcc_model;
 pub mod drcc_verilator;
 pub mod hub;
+pub mod hub_rusthdl;
+pub mod hub_verilator;
 pub mod model;
 pub mod rusthdl;
 pub mod verilator;

@@ -39,7 +39,7 @@ pub const UNAVAILABLE_MSG: &str =
 
 /// Error message when the Verilog of the `can_channel` top has not been generated.
 pub const RTL_MISSING_MSG: &str =
-    "an RTL top in rtl-out/ (can_channel.v, drcc.v) is missing: run `cargo run -- generate`";
+    "an RTL top in rtl-out/ (can_channel.v, drcc.v, hub.v) is missing: run `cargo run -- generate`";
 
 /// Why this build has no Verilated model (set by build.rs; empty when it has one).
 const BUILD_REASON: &str = env!("DRCC_VERILATOR_UNAVAILABLE");
@@ -362,6 +362,64 @@ pub fn drcc_abi() -> u64 {
     h.0
 }
 
+port_struct! {
+    /// Every input of `hub` except `clk` (mirror of `HubIn` in `shim/hub_ports.h`).
+    pub struct HubIn {
+        /// Synchronous active-high reset.
+        rst: u8 = 1,
+        /// Wishbone cycle.
+        wb_cyc_i: u8 = 1,
+        /// Wishbone strobe.
+        wb_stb_i: u8 = 1,
+        /// Wishbone write enable.
+        wb_we_i: u8 = 1,
+        /// Wishbone word address.
+        wb_adr_i: u8 = 6,
+        /// Wishbone write data.
+        wb_dat_i: u32 = 32,
+        /// Node transmit values, bit i = node port i (1 = recessive).
+        uplink: u8 = 4,
+        /// The twin hub's contribution, bit j = interlink j.
+        sublink_in: u8 = 2,
+    }
+}
+
+port_struct! {
+    /// Every output of `hub` right after a rising edge (mirror of `HubOut` in `shim/hub_ports.h`).
+    pub struct HubOut {
+        /// Wishbone read data.
+        wb_dat_o: u32 = 32,
+        /// Wishbone acknowledge.
+        wb_ack_o: u8 = 1,
+        /// Interrupt request.
+        irq: u8 = 1,
+        /// What node i receives (all bits equal).
+        downlink: u8 = 4,
+        /// This hub's contribution on every interlink.
+        sublink_out: u8 = 2,
+        /// `coupled_q`: the signal the hub tracks.
+        coupled: u8 = 1,
+        /// Bit timing sample point probe.
+        sample_point: u8 = 1,
+        /// Tracker state.
+        trk_state: u8 = 2,
+        /// ACK window (contract §4).
+        ack_window: u8 = 1,
+        /// Decoupled (contract §7).
+        decoupled: u8 = 1,
+        /// Bit p = port p enabled.
+        port_enabled: u8 = 6,
+    }
+}
+
+/// The layout fingerprint the C side must report (`drcc_hub_abi`).
+pub fn hub_abi() -> u64 {
+    let mut h = LayoutHash::new();
+    HubIn::layout_hash(&mut h);
+    HubOut::layout_hash(&mut h);
+    h.0
+}
+
 /// The layout fingerprint the C side must report (`drcc_can_channel_abi`).
 pub fn can_channel_abi() -> u64 {
     let mut h = LayoutHash::new();
@@ -582,6 +640,14 @@ verilated_top! {
     wrapper Drcc, ports DrccIn / DrccOut, abi drcc_abi, ffi drcc_ffi {
         drcc_drcc_abi, drcc_drcc_new, drcc_drcc_free, drcc_drcc_step, drcc_drcc_fast_edge,
         drcc_drcc_set_exact, drcc_drcc_trace_open, drcc_drcc_trace_dump, drcc_drcc_trace_close,
+    }
+}
+
+verilated_top! {
+    /// The `hub` top (ReCANcentrate hub, N = 4 node ports, M = 2 interlinks).
+    wrapper Hub, ports HubIn / HubOut, abi hub_abi, ffi hub_ffi {
+        drcc_hub_abi, drcc_hub_new, drcc_hub_free, drcc_hub_step, drcc_hub_fast_edge,
+        drcc_hub_set_exact, drcc_hub_trace_open, drcc_hub_trace_dump, drcc_hub_trace_close,
     }
 }
 

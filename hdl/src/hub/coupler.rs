@@ -1,0 +1,224 @@
+//! Coupler of the hub (ReCANcentrate paper section 2 "two-stage AND coupling",
+//! section 4 "ACK interdependence"; hub contract §2, §3, §4): the two-flip-flop
+//! synchronizer and the judged copy `port_q` of every port, stage 1 (the hub's own
+//! contribution: AND of the enabled node ports), stage 2 (AND with the twin hub's
+//! contribution: the enabled incoming sublinks, unless decoupled) and the
+//! registered outputs `coupled_q`, `sublink_out` and `downlink` (the downlink
+//! carries only the twin's contribution inside the ACK window under ACK
+//! interdependence). Every register resets to 1 (recessive); an empty AND is 1.
+
+use rust_hdl::prelude::*;
+
+/// Synchronizers and two-stage AND coupling for N node ports and M interlinks.
+#[derive(LogicBlock)]
+pub struct Coupler<const N: usize, const M: usize> {
+    // clock and reset
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // pins (1 = recessive)
+    pub uplink: Signal<In, Bits<N>>,
+    pub sublink_in: Signal<In, Bits<M>>,
+    pub downlink: Signal<Out, Bits<N>>,
+    pub sublink_out: Signal<Out, Bits<M>>,
+    // control (registered values of the guards and the register block)
+    pub node_en: Signal<In, Bits<N>>,
+    pub sub_en: Signal<In, Bits<M>>,
+    pub decoupled: Signal<In, Bit>,
+    /// `ack_window & ack_interdep & !decoupled` (§3).
+    pub ack_mask: Signal<In, Bit>,
+    // to the tracker and the guards
+    pub coupled: Signal<Out, Bit>,
+    pub node_q: Signal<Out, Bits<N>>,
+    pub sub_q: Signal<Out, Bits<M>>,
+    // synchronizers (§2)
+    node_s1: DFF<Bits<N>>,
+    node_s: DFF<Bits<N>>,
+    node_pq: DFF<Bits<N>>,
+    sub_s1: DFF<Bits<M>>,
+    sub_s: DFF<Bits<M>>,
+    sub_pq: DFF<Bits<M>>,
+    // outputs (§3)
+    coupled_q: DFF<Bit>,
+    down_q: DFF<Bits<N>>,
+    sub_out_q: DFF<Bits<M>>,
+    // stage 1 / stage 2
+    own: Signal<Local, Bit>,
+    twin: Signal<Local, Bit>,
+    view: Signal<Local, Bit>,
+    ones_n: Constant<Bits<N>>,
+    ones_m: Constant<Bits<M>>,
+    zero_n: Constant<Bits<N>>,
+    zero_m: Constant<Bits<M>>,
+}
+
+impl<const N: usize, const M: usize> Default for Coupler<N, M> {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            uplink: Default::default(),
+            sublink_in: Default::default(),
+            downlink: Default::default(),
+            sublink_out: Default::default(),
+            node_en: Default::default(),
+            sub_en: Default::default(),
+            decoupled: Default::default(),
+            ack_mask: Default::default(),
+            coupled: Default::default(),
+            node_q: Default::default(),
+            sub_q: Default::default(),
+            node_s1: Default::default(),
+            node_s: Default::default(),
+            node_pq: Default::default(),
+            sub_s1: Default::default(),
+            sub_s: Default::default(),
+            sub_pq: Default::default(),
+            coupled_q: Default::default(),
+            down_q: Default::default(),
+            sub_out_q: Default::default(),
+            own: Default::default(),
+            twin: Default::default(),
+            view: Default::default(),
+            ones_n: Constant::new(Bits::<N>::mask()),
+            ones_m: Constant::new(Bits::<M>::mask()),
+            zero_n: Constant::new(0.into()),
+            zero_m: Constant::new(0.into()),
+        }
+    }
+}
+
+impl<const N: usize, const M: usize> Logic for Coupler<N, M> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clk, node_s1, node_s, node_pq, sub_s1, sub_s, sub_pq, coupled_q, down_q,
+            sub_out_q
+        );
+        // §2: s1 <= pin ; in_s <= s1 ; port_q <= in_s
+        self.node_s1.d.next = self.uplink.val();
+        self.node_s.d.next = self.node_s1.q.val();
+        self.node_pq.d.next = self.node_s.q.val();
+        self.sub_s1.d.next = self.sublink_in.val();
+        self.sub_s.d.next = self.sub_s1.q.val();
+        self.sub_pq.d.next = self.sub_s.q.val();
+        // §3 stage 1 (own) and the twin's contribution: isolated ports are recessive
+        self.own.next = (self.node_s.q.val() | !self.node_en.val()).all();
+        self.twin.next = (self.sub_s.q.val() | !self.sub_en.val()).all();
+        // §3 stage 2
+        if self.decoupled.val() {
+            self.view.next = self.own.val();
+        } else {
+            self.view.next = self.own.val() & self.twin.val();
+        }
+        self.coupled_q.d.next = self.view.val();
+        if self.own.val() {
+            self.sub_out_q.d.next = self.ones_m.val();
+        } else {
+            self.sub_out_q.d.next = self.zero_m.val();
+        }
+        // §4: inside the ACK window only the twin's contribution reaches the nodes
+        if (self.ack_mask.val() & self.twin.val()) | (!self.ack_mask.val() & self.view.val()) {
+            self.down_q.d.next = self.ones_n.val();
+        } else {
+            self.down_q.d.next = self.zero_n.val();
+        }
+        if self.rst.val() {
+            self.node_s1.d.next = self.ones_n.val();
+            self.node_s.d.next = self.ones_n.val();
+            self.node_pq.d.next = self.ones_n.val();
+            self.sub_s1.d.next = self.ones_m.val();
+            self.sub_s.d.next = self.ones_m.val();
+            self.sub_pq.d.next = self.ones_m.val();
+            self.coupled_q.d.next = true;
+            self.down_q.d.next = self.ones_n.val();
+            self.sub_out_q.d.next = self.ones_m.val();
+        }
+        self.coupled.next = self.coupled_q.q.val();
+        self.downlink.next = self.down_q.q.val();
+        self.sublink_out.next = self.sub_out_q.q.val();
+        self.node_q.next = self.node_pq.q.val();
+        self.sub_q.next = self.sub_pq.q.val();
+    }
+}
+
+#[test]
+fn coupler_synthesizes() {
+    let mut uut = Coupler::<4, 2>::default();
+    uut.connect_all();
+    yosys_validate("hub_coupler", &generate_verilog(&uut)).unwrap();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    type Uut = Coupler<4, 2>;
+
+    /// One clock: inputs applied with `clk` low, then the rising edge.
+    fn clock(u: &mut Uut) {
+        u.clk.next = Clock::from(false);
+        assert!(simulate(u, 100));
+        u.clk.next = Clock::from(true);
+        assert!(simulate(u, 100));
+    }
+
+    fn fresh() -> Box<Uut> {
+        let mut u = Box::<Uut>::default();
+        u.connect_all();
+        u.node_en.next = 0xF.into();
+        u.sub_en.next = 0x3.into();
+        u.uplink.next = 0xF.into();
+        u.sublink_in.next = 0x3.into();
+        u.rst.next = true;
+        clock(&mut u);
+        u.rst.next = false;
+        clock(&mut u);
+        u
+    }
+
+    #[test]
+    fn uplink_reaches_downlink_three_edges_later_and_isolated_ports_are_ignored() {
+        let mut u = fresh();
+        u.uplink.next = 0xB.into(); // node 2 dominant
+        for edge in 1..=3 {
+            clock(&mut u);
+            let dominant = edge == 3;
+            assert_eq!(u.downlink.val().to_u64(), if dominant { 0 } else { 0xF });
+            assert_eq!(u.sublink_out.val().to_u64(), if dominant { 0 } else { 0x3 });
+            assert_eq!(u.coupled.val(), !dominant);
+        }
+        // node 2 isolated: its dominant level no longer reaches anybody
+        u.node_en.next = 0xB.into();
+        clock(&mut u);
+        assert_eq!(u.downlink.val().to_u64(), 0xF);
+        assert_eq!(u.sublink_out.val().to_u64(), 0x3);
+    }
+
+    #[test]
+    fn ack_mask_passes_only_the_twin_and_decoupling_drops_it() {
+        let mut u = fresh();
+        u.uplink.next = 0xE.into(); // own node ACKs
+        for _ in 0..2 {
+            clock(&mut u);
+        }
+        u.ack_mask.next = true;
+        clock(&mut u);
+        assert_eq!(u.downlink.val().to_u64(), 0xF, "own ACK masked");
+        assert_eq!(
+            u.sublink_out.val().to_u64(),
+            0x0,
+            "but forwarded to the twin"
+        );
+        assert!(!u.coupled.val(), "the tracker sees it");
+        u.uplink.next = 0xF.into();
+        u.sublink_in.next = 0x1.into(); // the twin's ACK on interlink 1
+        for _ in 0..3 {
+            clock(&mut u);
+        }
+        assert_eq!(u.downlink.val().to_u64(), 0x0, "twin ACK passes");
+        u.decoupled.next = true;
+        u.ack_mask.next = false;
+        clock(&mut u);
+        assert_eq!(u.downlink.val().to_u64(), 0xF, "decoupled: own star only");
+    }
+}

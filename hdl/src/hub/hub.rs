@@ -1,0 +1,334 @@
+//! The `hub` top: the ReCANcentrate star hub (ReCANcentrate paper sections 2-5),
+//! exactly as fixed clock by clock by `cosim/src/model/hub_contract.md`. N node
+//! ports (uplink/downlink pairs, 2..=8) and M interlinks to the twin hub
+//! (sublink_in/sublink_out pairs, 1..=4); P = N + M guarded ports (node ports
+//! 0..N, then the incoming sublinks N..N+M).
+//!
+//! Blocks: the Wishbone register block with the decoupling state (§7, §8), the
+//! coupler (§2-§4), the channel's bit timing logic and configuration capture on
+//! `coupled_q` (§5: `tx = 1`, `triple = 0`, `hard_sync_enable = (trk ==
+//! IDLE_WAIT)`, held in reset by `rst | reset_mode | reset_mode_q` exactly as the
+//! DRCC holds its channels), the frame tracker (§5) and one guard per port (§6).
+//! The tracker and the guards are held at their reset values by `rst |
+//! reset_mode` (`reset_mode` is the register value, i.e. the value before the
+//! edge).
+//!
+//! Parametrisation: const generics `N`, `M` and `P` (stable Rust cannot write
+//! `N + M` in a type, so `P` is passed and checked to equal `N + M`); the guards
+//! are arrays of blocks and the per-port wiring is written with rust-hdl `for`
+//! loops, which the Verilog generator unrolls.
+
+use super::coupler::Coupler;
+use super::port_guard::PortGuard;
+use super::registers::HubRegs;
+use super::tracker::FrameTracker;
+use crate::channel::btl::BitTimingLogic;
+use crate::channel::config::ChannelConfig;
+use rust_hdl::prelude::*;
+
+/// The hub top with N node ports, M interlinks and P = N + M ports.
+#[derive(LogicBlock)]
+pub struct Hub<const N: usize, const M: usize, const P: usize> {
+    // clock and reset
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // Wishbone B4 classic slave
+    pub wb_cyc_i: Signal<In, Bit>,
+    pub wb_stb_i: Signal<In, Bit>,
+    pub wb_we_i: Signal<In, Bit>,
+    pub wb_adr_i: Signal<In, Bits<6>>,
+    pub wb_dat_i: Signal<In, Bits<32>>,
+    pub wb_dat_o: Signal<Out, Bits<32>>,
+    pub wb_ack_o: Signal<Out, Bit>,
+    pub irq: Signal<Out, Bit>,
+    // node links (1 = recessive)
+    pub uplink: Signal<In, Bits<N>>,
+    pub downlink: Signal<Out, Bits<N>>,
+    // interlinks
+    pub sublink_out: Signal<Out, Bits<M>>,
+    pub sublink_in: Signal<In, Bits<M>>,
+    // probes
+    pub coupled: Signal<Out, Bit>,
+    pub sample_point: Signal<Out, Bit>,
+    pub trk_state: Signal<Out, Bits<2>>,
+    pub ack_window: Signal<Out, Bit>,
+    pub decoupled: Signal<Out, Bit>,
+    pub port_enabled: Signal<Out, Bits<P>>,
+    // blocks
+    regs: HubRegs<N, M, P>,
+    coupler: Coupler<N, M>,
+    cfg_regs: ChannelConfig,
+    btl: BitTimingLogic,
+    tracker: FrameTracker,
+    node_guards: [PortGuard; N],
+    sub_guards: [PortGuard; M],
+    // glue
+    guard_rst: Signal<Local, Bit>,
+    btl_rst: Signal<Local, Bit>,
+    ack_win: Signal<Local, Bit>,
+    recouple: Signal<Local, Bit>,
+    node_en: Signal<Local, Bits<N>>,
+    sub_en: Signal<Local, Bits<M>>,
+    port_rd: Signal<Local, Bits<32>>,
+    ev_iso: Signal<Local, Bit>,
+    ev_rest: Signal<Local, Bit>,
+    a_node: [Constant<Bits<6>>; N],
+    a_sub: [Constant<Bits<6>>; M],
+    shift_n: Constant<Bits<4>>,
+    a_ctrl: Constant<Bits<6>>,
+    s_idle: Constant<Bits<2>>,
+    s_ack: Constant<Bits<2>>,
+    s_delim: Constant<Bits<2>>,
+    zero_n: Constant<Bits<N>>,
+    zero_m: Constant<Bits<M>>,
+    zero2: Constant<Bits<2>>,
+    zero8: Constant<Bits<8>>,
+    zero32: Constant<Bits<32>>,
+}
+
+impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
+    fn default() -> Self {
+        assert!((2..=8).contains(&N), "hub: N node ports must be 2..=8");
+        assert!((1..=4).contains(&M), "hub: M interlinks must be 1..=4");
+        assert_eq!(P, N + M, "hub: P must be N + M");
+        let port0 = super::registers::PORT0 as u64;
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            wb_cyc_i: Default::default(),
+            wb_stb_i: Default::default(),
+            wb_we_i: Default::default(),
+            wb_adr_i: Default::default(),
+            wb_dat_i: Default::default(),
+            wb_dat_o: Default::default(),
+            wb_ack_o: Default::default(),
+            irq: Default::default(),
+            uplink: Default::default(),
+            downlink: Default::default(),
+            sublink_out: Default::default(),
+            sublink_in: Default::default(),
+            coupled: Default::default(),
+            sample_point: Default::default(),
+            trk_state: Default::default(),
+            ack_window: Default::default(),
+            decoupled: Default::default(),
+            port_enabled: Default::default(),
+            regs: Default::default(),
+            coupler: Default::default(),
+            cfg_regs: Default::default(),
+            btl: Default::default(),
+            tracker: Default::default(),
+            node_guards: std::array::from_fn(|_| Default::default()),
+            sub_guards: std::array::from_fn(|_| Default::default()),
+            guard_rst: Default::default(),
+            btl_rst: Default::default(),
+            ack_win: Default::default(),
+            recouple: Default::default(),
+            node_en: Default::default(),
+            sub_en: Default::default(),
+            port_rd: Default::default(),
+            ev_iso: Default::default(),
+            ev_rest: Default::default(),
+            a_node: std::array::from_fn(|i| Constant::new((port0 + i as u64).into())),
+            a_sub: std::array::from_fn(|j| Constant::new((port0 + (N + j) as u64).into())),
+            shift_n: Constant::new((N as u64).into()),
+            a_ctrl: Constant::new((super::registers::CTRL as u64).into()),
+            s_idle: Constant::new(super::tracker::IDLE_WAIT.into()),
+            s_ack: Constant::new(super::tracker::ACK_SLOT.into()),
+            s_delim: Constant::new(super::tracker::ACK_DELIM.into()),
+            zero_n: Constant::new(0.into()),
+            zero_m: Constant::new(0.into()),
+            zero2: Constant::new(0.into()),
+            zero8: Constant::new(0.into()),
+            zero32: Constant::new(0.into()),
+        }
+    }
+}
+
+impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        // reset mode holds the tracker and the guards (value before the edge); the
+        // BTL and its configuration capture stay in reset one edge longer (§5).
+        self.guard_rst.next = self.rst.val() | self.regs.reset_mode.val();
+        self.btl_rst.next =
+            self.rst.val() | self.regs.reset_mode.val() | self.regs.reset_mode_d.val();
+        // §4: the ACK window from the registered tracker state
+        self.ack_win.next = (self.tracker.trk.val() == self.s_ack.val())
+            | (self.tracker.trk.val() == self.s_delim.val());
+
+        // CTRL.recouple (§8): a CTRL write with bit 2, not bit 1, and reset_mode 0
+        // before the write and in the written value (the register block takes
+        // the rest of the command)
+        self.recouple.next = self.wb_cyc_i.val()
+            & self.wb_stb_i.val()
+            & !self.regs.wb_ack_o.val()
+            & self.wb_we_i.val()
+            & (self.wb_adr_i.val() == self.a_ctrl.val())
+            & !self.regs.reset_mode.val()
+            & !self.wb_dat_i.val().get_bit(0)
+            & !self.wb_dat_i.val().get_bit(1)
+            & self.wb_dat_i.val().get_bit(2);
+
+        // ---- guards (§6) ----
+        self.node_en.next = self.zero_n.val();
+        self.sub_en.next = self.zero_m.val();
+        self.port_rd.next = self.zero32.val();
+        self.ev_iso.next = false;
+        self.ev_rest.next = false;
+        for i in 0..N {
+            self.node_guards[i].clk.next = self.clk.val();
+            self.node_guards[i].rst.next = self.guard_rst.val();
+            self.node_guards[i].freeze.next = false;
+            self.node_guards[i].rid_en.next = true;
+            self.node_guards[i].recouple.next = false;
+            self.node_guards[i].sample.next = self.btl.sample.val();
+            self.node_guards[i].pb.next = self.coupler.node_q.val().get_bit(i);
+            self.node_guards[i].b.next = self.coupler.coupled.val();
+            self.node_guards[i].ev_sof.next = self.tracker.ev_sof.val();
+            self.node_guards[i].ev_frame.next = self.tracker.ev_frame.val();
+            self.node_guards[i].in_arb.next = self.tracker.in_arb.val();
+            self.node_guards[i].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
+            self.node_guards[i].ev_rid.next = self.tracker.ev_rid.val();
+            self.node_guards[i].ev_ack.next = self.tracker.ev_ack.val();
+            self.node_guards[i].sd_limit.next = self.regs.sd_run_up.val();
+            self.node_guards[i].bf_limit.next = self.regs.bf_up.val();
+            self.node_guards[i].sr_frames.next = self.regs.sr_frames.val();
+            self.node_guards[i].restore_bits.next = self.regs.restore_bits.val();
+            self.node_en.next = self
+                .node_en
+                .val()
+                .replace_bit(i, self.node_guards[i].enabled.val());
+            if self.wb_adr_i.val() == self.a_node[i].val() {
+                self.port_rd.next = self.node_guards[i].word.val();
+            }
+            self.ev_iso.next = self.ev_iso.val() | self.node_guards[i].iso_evt.val();
+            self.ev_rest.next = self.ev_rest.val() | self.node_guards[i].rest_evt.val();
+        }
+        for j in 0..M {
+            self.sub_guards[j].clk.next = self.clk.val();
+            self.sub_guards[j].rst.next = self.guard_rst.val();
+            // §6: the sublink guards are frozen while decoupled
+            self.sub_guards[j].freeze.next = self.regs.decoupled.val();
+            self.sub_guards[j].rid_en.next = false;
+            self.sub_guards[j].recouple.next = self.recouple.val();
+            self.sub_guards[j].sample.next = self.btl.sample.val();
+            self.sub_guards[j].pb.next = self.coupler.sub_q.val().get_bit(j);
+            self.sub_guards[j].b.next = self.coupler.coupled.val();
+            self.sub_guards[j].ev_sof.next = self.tracker.ev_sof.val();
+            self.sub_guards[j].ev_frame.next = self.tracker.ev_frame.val();
+            self.sub_guards[j].in_arb.next = self.tracker.in_arb.val();
+            self.sub_guards[j].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
+            self.sub_guards[j].ev_rid.next = self.tracker.ev_rid.val();
+            self.sub_guards[j].ev_ack.next = self.tracker.ev_ack.val();
+            self.sub_guards[j].sd_limit.next = self.regs.sd_run_sub.val();
+            self.sub_guards[j].bf_limit.next = self.regs.bf_sub.val();
+            self.sub_guards[j].sr_frames.next = self.regs.sr_frames.val();
+            self.sub_guards[j].restore_bits.next = self.regs.restore_bits.val();
+            self.sub_en.next = self
+                .sub_en
+                .val()
+                .replace_bit(j, self.sub_guards[j].enabled.val());
+            if self.wb_adr_i.val() == self.a_sub[j].val() {
+                self.port_rd.next = self.sub_guards[j].word.val();
+            }
+            self.ev_iso.next = self.ev_iso.val() | self.sub_guards[j].iso_evt.val();
+            self.ev_rest.next = self.ev_rest.val() | self.sub_guards[j].rest_evt.val();
+        }
+
+        // ---- register block (§7, §8) ----
+        self.regs.clk.next = self.clk.val();
+        self.regs.rst.next = self.rst.val();
+        self.regs.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.regs.wb_stb_i.next = self.wb_stb_i.val();
+        self.regs.wb_we_i.next = self.wb_we_i.val();
+        self.regs.wb_adr_i.next = self.wb_adr_i.val();
+        self.regs.wb_dat_i.next = self.wb_dat_i.val();
+        self.regs.sample.next = self.btl.sample.val();
+        self.regs.any_sub_en.next = self.sub_en.val() != self.zero_m.val();
+        self.regs.trk.next = self.tracker.trk.val();
+        self.regs.ack_window.next = self.ack_win.val();
+        self.regs.port_en.next = bit_cast::<P, N>(self.node_en.val())
+            | (bit_cast::<P, M>(self.sub_en.val()) << self.shift_n.val());
+        self.regs.frames.next = self.tracker.frames.val();
+        self.regs.errors.next = self.tracker.errors.val();
+        self.regs.port_rd.next = self.port_rd.val();
+        self.regs.ev_iso.next = self.ev_iso.val();
+        self.regs.ev_rest.next = self.ev_rest.val();
+
+        // ---- coupler (§2-§4) ----
+        self.coupler.clk.next = self.clk.val();
+        self.coupler.rst.next = self.rst.val();
+        self.coupler.uplink.next = self.uplink.val();
+        self.coupler.sublink_in.next = self.sublink_in.val();
+        self.coupler.node_en.next = self.node_en.val();
+        self.coupler.sub_en.next = self.sub_en.val();
+        self.coupler.decoupled.next = self.regs.decoupled.val();
+        self.coupler.ack_mask.next =
+            self.ack_win.val() & self.regs.ack_interdep.val() & !self.regs.decoupled.val();
+
+        // ---- bit timing on coupled_q (§5) ----
+        self.cfg_regs.clk.next = self.clk.val();
+        self.cfg_regs.rst.next = self.btl_rst.val();
+        self.cfg_regs.cfg_brp.next = self.regs.brp.val();
+        self.cfg_regs.cfg_tseg1.next = self.regs.tseg1.val();
+        self.cfg_regs.cfg_tseg2.next = self.regs.tseg2.val();
+        self.cfg_regs.cfg_sjw.next = self.regs.sjw.val();
+        self.cfg_regs.cfg_triple.next = false;
+        self.cfg_regs.cfg_mode.next = self.zero2.val();
+        self.cfg_regs.cfg_ewl.next = self.zero8.val();
+        self.cfg_regs.cfg_single_shot.next = false;
+        self.btl.clk.next = self.clk.val();
+        self.btl.rst.next = self.btl_rst.val();
+        self.btl.cfg_brp_next.next = self.cfg_regs.brp_next.val();
+        self.btl.cfg_tseg1_len.next = self.cfg_regs.tseg1_len.val();
+        self.btl.cfg_tseg2_len.next = self.cfg_regs.tseg2_len.val();
+        self.btl.cfg_sjw_len.next = self.cfg_regs.sjw_len.val();
+        self.btl.cfg_triple.next = false;
+        self.btl.rx_s.next = self.coupler.coupled.val();
+        self.btl.tx.next = true;
+        self.btl.hard_sync_enable.next = self.tracker.trk.val() == self.s_idle.val();
+
+        // ---- frame tracker (§5) ----
+        self.tracker.clk.next = self.clk.val();
+        self.tracker.rst.next = self.guard_rst.val();
+        self.tracker.sample.next = self.btl.sample.val();
+        self.tracker.b.next = self.coupler.coupled.val();
+
+        // ---- outputs ----
+        self.wb_dat_o.next = self.regs.wb_dat_o.val();
+        self.wb_ack_o.next = self.regs.wb_ack_o.val();
+        self.irq.next = self.regs.irq.val();
+        self.downlink.next = self.coupler.downlink.val();
+        self.sublink_out.next = self.coupler.sublink_out.val();
+        self.coupled.next = self.coupler.coupled.val();
+        self.sample_point.next = self.btl.sample_point.val();
+        self.trk_state.next = self.tracker.trk.val();
+        self.ack_window.next = self.ack_win.val();
+        self.decoupled.next = self.regs.decoupled.val();
+        self.port_enabled.next = bit_cast::<P, N>(self.node_en.val())
+            | (bit_cast::<P, M>(self.sub_en.val()) << self.shift_n.val());
+    }
+}
+
+/// The emitted hub: N = 4 node ports, M = 2 interlinks.
+pub type Hub4x2 = Hub<4, 2, 6>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hub_synthesizes() {
+        let mut uut = Hub4x2::default();
+        uut.connect_all();
+        yosys_validate("hub", &generate_verilog(&uut)).unwrap();
+    }
+
+    #[test]
+    fn hub_2x1_synthesizes() {
+        let mut uut = Hub::<2, 1, 3>::default();
+        uut.connect_all();
+        yosys_validate("hub_2x1", &generate_verilog(&uut)).unwrap();
+    }
+}

@@ -1,0 +1,374 @@
+//! Guard of one hub port (ReCANcentrate paper section 2, "per-port fault
+//! treatment" and "restoration policy"; hub contract §6). Instantiated once per
+//! node port (uplink) and once per incoming sublink. At every SAMPLE edge it
+//! judges `pb` (the port's `port_q`) against `b` (`coupled_q`) and the frame
+//! events of the tracker:
+//! - rule SD: `dom_run >= sd_limit` isolates (kind 1, stuck-at-dominant);
+//! - rule RID: a node port that is still a candidate transmitter at data bit 10
+//!   of identifier 0x000/0x001 is isolated (kind 4, reserved identifier);
+//! - rule BF: BLAME (pec += 8) for a dominant bit from a port that is not the
+//!   frame's transmitter, or for the transmitter at a stuff error on a recessive
+//!   bit; `pec >= bf_limit` isolates (kind 3, bit-flipping);
+//! - rule SR: `sr_frames` frames without a dominant bit isolate (kind 2, silent);
+//! - a disabled port is restored after `restore_bits` SAMPLE edges without a
+//!   symptom.
+//!
+//! Several isolations at one edge: the kind is the first of SD, RID, BF, SR. The
+//! whole guard holds its reset values while `rst` (`rst | reset_mode`), holds every
+//! field while `freeze` (a sublink guard while decoupled, §6), and the host's
+//! `recouple` command wins over a guard event at the same edge (§8).
+
+use rust_hdl::prelude::*;
+
+/// Port fault kinds (PORT_p.kind).
+pub const KIND_STUCK_DOMINANT: u64 = 1;
+pub const KIND_SILENT: u64 = 2;
+pub const KIND_BIT_FLIPPING: u64 = 3;
+pub const KIND_RESERVED_ID: u64 = 4;
+
+/// One port's guard.
+#[derive(LogicBlock)]
+pub struct PortGuard {
+    // clock and reset
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    /// Hold every field (a sublink guard while decoupled).
+    pub freeze: Signal<In, Bit>,
+    /// The reserved-identifier rule applies (node ports only).
+    pub rid_en: Signal<In, Bit>,
+    /// Host command `CTRL.recouple` for this port (sublinks only).
+    pub recouple: Signal<In, Bit>,
+    // SAMPLE edge, port value and bus value (before the edge)
+    pub sample: Signal<In, Bit>,
+    pub pb: Signal<In, Bit>,
+    pub b: Signal<In, Bit>,
+    // tracker events (each implies `sample`)
+    pub ev_sof: Signal<In, Bit>,
+    pub ev_frame: Signal<In, Bit>,
+    pub in_arb: Signal<In, Bit>,
+    pub ev_stuff_rec: Signal<In, Bit>,
+    pub ev_rid: Signal<In, Bit>,
+    pub ev_ack: Signal<In, Bit>,
+    // limits (§8)
+    pub sd_limit: Signal<In, Bits<6>>,
+    pub bf_limit: Signal<In, Bits<8>>,
+    pub sr_frames: Signal<In, Bits<4>>,
+    pub restore_bits: Signal<In, Bits<16>>,
+    // outputs
+    pub enabled: Signal<Out, Bit>,
+    /// PORT_p register value: [0] enabled, [3:1] kind, [15:8] pec,
+    /// [23:16] isolations, [31:24] restorations.
+    pub word: Signal<Out, Bits<32>>,
+    /// One-clock events for INT_STATUS (valid in the clock of the edge).
+    pub iso_evt: Signal<Out, Bit>,
+    pub rest_evt: Signal<Out, Bit>,
+    // registers
+    enabled_q: DFF<Bit>,
+    kind: DFF<Bits<3>>,
+    pec: DFF<Bits<8>>,
+    dom_run: DFF<Bits<6>>,
+    silent: DFF<Bits<4>>,
+    restore_cnt: DFF<Bits<16>>,
+    isolations: DFF<Bits<8>>,
+    restorations: DFF<Bits<8>>,
+    cand: DFF<Bit>,
+    lost: DFF<Bit>,
+    blamed: DFF<Bit>,
+    active: DFF<Bit>,
+    // combinational
+    run: Signal<Local, Bit>,
+    dom_new: Signal<Local, Bits<6>>,
+    sd_hit: Signal<Local, Bit>,
+    cand_n: Signal<Local, Bit>,
+    lost_n: Signal<Local, Bit>,
+    active_n: Signal<Local, Bit>,
+    blame: Signal<Local, Bit>,
+    pec_blamed: Signal<Local, Bits<8>>,
+    bf_hit: Signal<Local, Bit>,
+    rid_hit: Signal<Local, Bit>,
+    silent_new: Signal<Local, Bits<4>>,
+    sr_hit: Signal<Local, Bit>,
+    symptom: Signal<Local, Bit>,
+    rc_new: Signal<Local, Bits<16>>,
+    // constants
+    k_sd: Constant<Bits<3>>,
+    k_sr: Constant<Bits<3>>,
+    k_bf: Constant<Bits<3>>,
+    k_rid: Constant<Bits<3>>,
+    zero3: Constant<Bits<3>>,
+    zero4: Constant<Bits<4>>,
+    one4: Constant<Bits<4>>,
+    max4: Constant<Bits<4>>,
+    zero6: Constant<Bits<6>>,
+    one6: Constant<Bits<6>>,
+    max6: Constant<Bits<6>>,
+    zero8: Constant<Bits<8>>,
+    one8: Constant<Bits<8>>,
+    eight8: Constant<Bits<8>>,
+    sat8: Constant<Bits<8>>,
+    max8: Constant<Bits<8>>,
+    zero16: Constant<Bits<16>>,
+    one16: Constant<Bits<16>>,
+    max16: Constant<Bits<16>>,
+}
+
+impl Default for PortGuard {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            freeze: Default::default(),
+            rid_en: Default::default(),
+            recouple: Default::default(),
+            sample: Default::default(),
+            pb: Default::default(),
+            b: Default::default(),
+            ev_sof: Default::default(),
+            ev_frame: Default::default(),
+            in_arb: Default::default(),
+            ev_stuff_rec: Default::default(),
+            ev_rid: Default::default(),
+            ev_ack: Default::default(),
+            sd_limit: Default::default(),
+            bf_limit: Default::default(),
+            sr_frames: Default::default(),
+            restore_bits: Default::default(),
+            enabled: Default::default(),
+            word: Default::default(),
+            iso_evt: Default::default(),
+            rest_evt: Default::default(),
+            enabled_q: Default::default(),
+            kind: Default::default(),
+            pec: Default::default(),
+            dom_run: Default::default(),
+            silent: Default::default(),
+            restore_cnt: Default::default(),
+            isolations: Default::default(),
+            restorations: Default::default(),
+            cand: Default::default(),
+            lost: Default::default(),
+            blamed: Default::default(),
+            active: Default::default(),
+            run: Default::default(),
+            dom_new: Default::default(),
+            sd_hit: Default::default(),
+            cand_n: Default::default(),
+            lost_n: Default::default(),
+            active_n: Default::default(),
+            blame: Default::default(),
+            pec_blamed: Default::default(),
+            bf_hit: Default::default(),
+            rid_hit: Default::default(),
+            silent_new: Default::default(),
+            sr_hit: Default::default(),
+            symptom: Default::default(),
+            rc_new: Default::default(),
+            k_sd: Constant::new(KIND_STUCK_DOMINANT.into()),
+            k_sr: Constant::new(KIND_SILENT.into()),
+            k_bf: Constant::new(KIND_BIT_FLIPPING.into()),
+            k_rid: Constant::new(KIND_RESERVED_ID.into()),
+            zero3: Constant::new(0.into()),
+            zero4: Constant::new(0.into()),
+            one4: Constant::new(1.into()),
+            max4: Constant::new(15.into()),
+            zero6: Constant::new(0.into()),
+            one6: Constant::new(1.into()),
+            max6: Constant::new(63.into()),
+            zero8: Constant::new(0.into()),
+            one8: Constant::new(1.into()),
+            eight8: Constant::new(8.into()),
+            sat8: Constant::new(248.into()),
+            max8: Constant::new(255.into()),
+            zero16: Constant::new(0.into()),
+            one16: Constant::new(1.into()),
+            max16: Constant::new(0xFFFF.into()),
+        }
+    }
+}
+
+impl Logic for PortGuard {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clk,
+            enabled_q,
+            kind,
+            pec,
+            dom_run,
+            silent,
+            restore_cnt,
+            isolations,
+            restorations,
+            cand,
+            lost,
+            blamed,
+            active
+        );
+        self.iso_evt.next = false;
+        self.rest_evt.next = false;
+        self.run.next = self.sample.val() & !self.freeze.val();
+
+        // every SAMPLE, every port: dom_run = pb ? 0 : min(dom_run + 1, 63)
+        if self.pb.val() {
+            self.dom_new.next = self.zero6.val();
+        } else if self.dom_run.q.val() == self.max6.val() {
+            self.dom_new.next = self.max6.val();
+        } else {
+            self.dom_new.next = self.dom_run.q.val() + self.one6.val();
+        }
+        self.sd_hit.next = self.dom_new.val() >= self.sd_limit.val();
+
+        // per-frame flags, tracked for every port
+        self.cand_n.next = self.cand.q.val();
+        self.lost_n.next = self.lost.q.val();
+        self.active_n.next = self.active.q.val();
+        if self.ev_sof.val() {
+            self.cand_n.next = !self.pb.val();
+            self.lost_n.next = false;
+            self.active_n.next = !self.pb.val();
+        }
+        if self.ev_frame.val() | self.ev_ack.val() {
+            self.active_n.next = self.active.q.val() | !self.pb.val();
+        }
+        if self.ev_frame.val() & self.in_arb.val() {
+            if !self.pb.val() & !self.lost.q.val() {
+                self.cand_n.next = true;
+            }
+            if self.pb.val() & !self.b.val() {
+                self.cand_n.next = false;
+                self.lost_n.next = true;
+            }
+        }
+
+        // rule BF: BLAME (once per frame) and its pec
+        self.blame.next = self.ev_frame.val()
+            & !self.blamed.q.val()
+            & ((!self.in_arb.val() & !self.pb.val() & !self.cand_n.val())
+                | (self.ev_stuff_rec.val() & self.cand_n.val()));
+        if self.pec.q.val() >= self.sat8.val() {
+            self.pec_blamed.next = self.max8.val();
+        } else {
+            self.pec_blamed.next = self.pec.q.val() + self.eight8.val();
+        }
+        self.bf_hit.next = self.blame.val() & (self.pec_blamed.val() >= self.bf_limit.val());
+        // rule RID
+        self.rid_hit.next = self.ev_rid.val() & self.rid_en.val() & self.cand_n.val();
+        // rule SR
+        if self.silent.q.val() == self.max4.val() {
+            self.silent_new.next = self.max4.val();
+        } else {
+            self.silent_new.next = self.silent.q.val() + self.one4.val();
+        }
+        self.sr_hit.next = self.ev_ack.val()
+            & !self.active_n.val()
+            & (self.sr_frames.val() != self.zero4.val())
+            & (self.silent_new.val() >= self.sr_frames.val());
+        // restoration
+        self.symptom.next = (!self.pb.val() & self.b.val())
+            | self.sd_hit.val()
+            | (self.ev_ack.val() & !self.active_n.val());
+        if self.symptom.val() {
+            self.rc_new.next = self.zero16.val();
+        } else if self.restore_cnt.q.val() == self.max16.val() {
+            self.rc_new.next = self.max16.val();
+        } else {
+            self.rc_new.next = self.restore_cnt.q.val() + self.one16.val();
+        }
+
+        if self.run.val() {
+            self.dom_run.d.next = self.dom_new.val();
+            self.cand.d.next = self.cand_n.val();
+            self.lost.d.next = self.lost_n.val();
+            self.active.d.next = self.active_n.val();
+            if self.ev_sof.val() {
+                self.blamed.d.next = false;
+            }
+            if self.enabled_q.q.val() {
+                if self.blame.val() {
+                    self.blamed.d.next = true;
+                    self.pec.d.next = self.pec_blamed.val();
+                }
+                if self.ev_ack.val() {
+                    if !self.blamed.q.val() & (self.pec.q.val() != self.zero8.val()) {
+                        self.pec.d.next = self.pec.q.val() - self.one8.val();
+                    }
+                    if self.active_n.val() {
+                        self.silent.d.next = self.zero4.val();
+                    } else {
+                        self.silent.d.next = self.silent_new.val();
+                    }
+                }
+                if self.sd_hit.val() | self.rid_hit.val() | self.bf_hit.val() | self.sr_hit.val() {
+                    // ISOLATE(p, kind): first of SD, RID, BF, SR
+                    self.iso_evt.next = true;
+                    self.enabled_q.d.next = false;
+                    if self.sd_hit.val() {
+                        self.kind.d.next = self.k_sd.val();
+                    } else if self.rid_hit.val() {
+                        self.kind.d.next = self.k_rid.val();
+                    } else if self.bf_hit.val() {
+                        self.kind.d.next = self.k_bf.val();
+                    } else {
+                        self.kind.d.next = self.k_sr.val();
+                    }
+                    if self.isolations.q.val() != self.max8.val() {
+                        self.isolations.d.next = self.isolations.q.val() + self.one8.val();
+                    }
+                    self.restore_cnt.d.next = self.zero16.val();
+                    self.silent.d.next = self.zero4.val();
+                }
+            } else if (self.restore_bits.val() != self.zero16.val())
+                & (self.rc_new.val() >= self.restore_bits.val())
+            {
+                // restoration
+                self.rest_evt.next = true;
+                self.enabled_q.d.next = true;
+                if self.restorations.q.val() != self.max8.val() {
+                    self.restorations.d.next = self.restorations.q.val() + self.one8.val();
+                }
+                self.pec.d.next = self.zero8.val();
+                self.silent.d.next = self.zero4.val();
+                self.restore_cnt.d.next = self.zero16.val();
+            } else {
+                self.restore_cnt.d.next = self.rc_new.val();
+            }
+        }
+        if self.recouple.val() {
+            // CTRL.recouple: kind and the counts are kept
+            self.enabled_q.d.next = true;
+            self.restore_cnt.d.next = self.zero16.val();
+            self.silent.d.next = self.zero4.val();
+            self.pec.d.next = self.zero8.val();
+        }
+        if self.rst.val() {
+            self.enabled_q.d.next = true;
+            self.kind.d.next = self.zero3.val();
+            self.pec.d.next = self.zero8.val();
+            self.dom_run.d.next = self.zero6.val();
+            self.silent.d.next = self.zero4.val();
+            self.restore_cnt.d.next = self.zero16.val();
+            self.isolations.d.next = self.zero8.val();
+            self.restorations.d.next = self.zero8.val();
+            self.cand.d.next = false;
+            self.lost.d.next = false;
+            self.blamed.d.next = false;
+            self.active.d.next = false;
+            self.iso_evt.next = false;
+            self.rest_evt.next = false;
+        }
+        self.enabled.next = self.enabled_q.q.val();
+        self.word.next = bit_cast::<32, 1>(self.enabled_q.q.val().into())
+            | (bit_cast::<32, 3>(self.kind.q.val()) << 1)
+            | (bit_cast::<32, 8>(self.pec.q.val()) << 8)
+            | (bit_cast::<32, 8>(self.isolations.q.val()) << 16)
+            | (bit_cast::<32, 8>(self.restorations.q.val()) << 24);
+    }
+}
+
+#[test]
+fn port_guard_synthesizes() {
+    let mut uut = PortGuard::default();
+    uut.connect_all();
+    yosys_validate("hub_port_guard", &generate_verilog(&uut)).unwrap();
+}

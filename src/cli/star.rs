@@ -38,6 +38,12 @@ pub fn run(what: &str, engine_name: &str, cosim: Option<&str>) -> CliResult {
         let r = run_star(&s, kind, other).map_err(CliError::Error)?;
         lost += !r.exactly_once() as usize;
         print!("{}", table_row(&s, &r));
+        for &(rx, tx, k) in &r.missing {
+            eprintln!("  {}: node {rx} never received frame {k} of node {tx}", f.name());
+        }
+        for &(rx, tx, k) in &r.duplicates {
+            eprintln!("  {}: node {rx} received frame {k} of node {tx} more than once", f.name());
+        }
     }
     if lost > 0 {
         return Err(CliError::Error(format!(

@@ -133,16 +133,34 @@ impl StarFault {
     }
 
     /// The hub ports (hub, port) the fault should get isolated: the guarded input
-    /// the faulty link feeds. A cut downlink feeds no guarded input.
+    /// the faulty link feeds. A cut downlink feeds no guarded input, but it makes the
+    /// node's uplink on that hub faulty: the node's controller never hears its own
+    /// bits, so each dominant bit it sends is a bit error and its active error flags
+    /// restart back to back (ISO 11898-1 10.11.2) until it is error passive, a
+    /// dominant run the hub isolates as stuck-at-dominant (contract §6 rule SD).
     pub fn target_ports(self) -> Vec<(usize, usize)> {
         self.links()
             .into_iter()
-            .filter_map(|(l, _)| match l {
-                Link::Uplink { hub, node } => Some((hub, node)),
-                Link::Sublink { from, interlink } => Some((1 - from, HUB_N + interlink)),
-                Link::Downlink { .. } => None,
+            .map(|(l, _)| match l {
+                Link::Uplink { hub, node } | Link::Downlink { hub, node } => (hub, node),
+                Link::Sublink { from, interlink } => (1 - from, HUB_N + interlink),
             })
             .collect()
+    }
+
+    /// The fault kind (`PORT_p[3:1]`, contract §6) the target ports should show:
+    /// 1 stuck-dominant, 2 silent, 3 bit-flipping.
+    pub fn expected_kind(self) -> Option<u32> {
+        match self {
+            StarFault::None => None,
+            StarFault::UplinkStuckDominant
+            | StarFault::DownlinkCut
+            | StarFault::SublinkStuckDominant => Some(1),
+            StarFault::UplinkStuckRecessive
+            | StarFault::InterlinkLost
+            | StarFault::AllInterlinksLost => Some(2),
+            StarFault::UplinkBitFlipping => Some(3),
+        }
     }
 }
 
@@ -279,6 +297,8 @@ pub struct StarReport {
     /// hub only).
     pub from_others: Vec<usize>,
     pub dups_dropped: Vec<u32>,
+    /// Per node: the clocks at which its host took each frame from its RX FIFO.
+    pub received_at: Vec<Vec<u64>>,
     /// Every change of a hub's `port_enabled`.
     pub events: Vec<PortEvent>,
     /// Clocks at which each hub became decoupled.
@@ -489,6 +509,8 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
             }
         }
         r.delivered += from_others;
+        r.received_at
+            .push(n.host.received.iter().map(|got| got.cycle).collect());
         r.from_others.push(from_others);
         for (sender, counts) in seen.iter().enumerate() {
             if sender == rx_node {
@@ -556,7 +578,7 @@ pub fn table_row(s: &StarScenario, r: &StarReport) -> String {
         })
         .collect();
     let mut iso = if iso.is_empty() {
-        "- (no guarded input)".to_string()
+        "-".to_string()
     } else {
         iso.join("; ")
     };

@@ -1,0 +1,235 @@
+//! Replicated-star fault scenarios (issue "ReCANcentrate hub"): 4 DRCC nodes, channel
+//! A on hub 1 and channel B on hub 2, two hubs coupled by two interlinks, one fault on
+//! one link for 4000 bit times (`testbench::star`). The reference models (DRCC and
+//! hub) run the system and the Verilated `drcc.v` / `hub.v` run it in lock step: any
+//! difference at any clock fails. On top of that agreement, each scenario must show
+//! what the hub contract (`cosim/src/model/hub_contract.md`) and the paper promise:
+//!
+//! - every single fault: no frame lost or duplicated at the application level;
+//! - the faulty input isolated by its own hub with the fault kind of §6, within the
+//!   bound the contract's thresholds give (stuck-dominant: the 14th / 16th dominant
+//!   sample), no other port isolated, and the port restored after the fault ends
+//!   (no earlier than `restore_bits` when the symptom lasts to the end of the fault);
+//! - one interlink lost: the coupling holds (no decoupling, no omission anywhere);
+//! - every interlink lost: ACK interdependence lets no frame complete anywhere until
+//!   a hub decouples, then each star carries traffic again.
+
+use drcc_cosim::engine::hub_verilator::HubVerilatorEngine;
+use drcc_cosim::star::hub_host::HubConfig;
+use drcc_testbench::engines::verilator_required;
+use drcc_testbench::star::{
+    run_star, StarFault, StarReport, StarScenario, CLOCKS_PER_BIT, HUB_N,
+};
+use drcc_testbench::EngineKind;
+
+fn cosim_engine() -> Option<EngineKind> {
+    match HubVerilatorEngine::new() {
+        Ok(_) => Some(EngineKind::Verilator),
+        Err(e) if verilator_required() => panic!("the Verilated hub is required in CI: {e}"),
+        Err(e) => {
+            eprintln!("model only, no lock step with the RTL: {e}");
+            None
+        }
+    }
+}
+
+fn run(fault: StarFault) -> (StarScenario, StarReport) {
+    let s = StarScenario::standard(fault);
+    let r = run_star(&s, EngineKind::Model, cosim_engine()).unwrap_or_else(|e| panic!("{e}"));
+    (s, r)
+}
+
+/// PORT_p: [0] enabled, [3:1] kind, [23:16] isolations, [31:24] restorations.
+fn port_kind(port: u32) -> u32 {
+    port >> 1 & 7
+}
+fn port_isolations(port: u32) -> u32 {
+    port >> 16 & 0xFF
+}
+
+fn bits_after(from: u64, at: u64) -> u64 {
+    (at - from) / CLOCKS_PER_BIT
+}
+
+fn assert_lossless(s: &StarScenario, r: &StarReport) {
+    assert!(
+        r.exactly_once(),
+        "{}: missing {:?}, duplicates {:?}, foreign {}",
+        s.fault.name(),
+        r.missing,
+        r.duplicates,
+        r.foreign
+    );
+    assert_eq!(r.delivered, s.nodes * (s.nodes - 1) * s.frames_per_node);
+}
+
+/// Each target port isolated during the fault with the expected kind, nothing else
+/// isolated, each target restored after the fault ended. Returns the isolation
+/// delays in bit times.
+fn assert_isolated_and_restored(s: &StarScenario, r: &StarReport) -> Vec<u64> {
+    let name = s.fault.name();
+    let targets = s.fault.target_ports();
+    assert!(
+        r.false_isolations(&targets).is_empty(),
+        "{name}: ports isolated that are not faulty: {:?}",
+        r.false_isolations(&targets)
+    );
+    let mut delays = Vec::new();
+    for &(h, p) in &targets {
+        let at = r
+            .isolated_at(h, p, r.fault_start)
+            .unwrap_or_else(|| panic!("{name}: hub {} port {p} never isolated", h + 1));
+        assert!(at < r.fault_end, "{name}: isolated only after the fault ended");
+        delays.push(bits_after(r.fault_start, at));
+        let reg = r.hub_ports[h][p];
+        assert_eq!(
+            Some(port_kind(reg)),
+            s.fault.expected_kind(),
+            "{name}: hub {} PORT_{p} = {reg:#010x}",
+            h + 1
+        );
+        assert!(port_isolations(reg) >= 1, "{name}: PORT_{p} counts no isolation");
+        let back = r
+            .restored_at(h, p, r.fault_end)
+            .unwrap_or_else(|| panic!("{name}: hub {} port {p} never restored", h + 1));
+        assert_eq!(reg & 1, 1, "{name}: PORT_{p} not enabled at the end");
+        if matches!(
+            s.fault,
+            StarFault::UplinkStuckDominant | StarFault::SublinkStuckDominant
+        ) {
+            // A stuck-dominant link shows its symptom until the fault ends, so the
+            // restoration counter (§6) starts at the end at the earliest.
+            assert!(
+                bits_after(r.fault_end, back) >= s.hub.restore_bits as u64,
+                "{name}: restored {} bit times after the fault, before restore_bits",
+                bits_after(r.fault_end, back)
+            );
+        }
+    }
+    delays
+}
+
+#[test]
+fn no_fault_isolates_nothing_and_delivers_everything_once() {
+    let (s, r) = run(StarFault::None);
+    assert_lossless(&s, &r);
+    assert!(r.events.is_empty(), "isolations without a fault: {:?}", r.events);
+    assert_eq!(r.decoupled_at, [None, None]);
+    // Coupled hubs bring every frame to both channels of every node: the DRCC
+    // removes one copy of each, and no node sees an omission.
+    for i in 0..s.nodes {
+        assert_eq!(r.omissions(i), 0, "node {i}");
+    }
+    // Both hubs tracked every frame to its ACK slot (STATS[15:0]).
+    let frames = s.nodes * s.frames_per_node;
+    for h in 0..2 {
+        assert_eq!(r.hub_stats[h] & 0xFFFF, frames as u32, "hub {} STATS", h + 1);
+    }
+}
+
+#[test]
+fn uplink_stuck_dominant_is_isolated_at_the_14th_dominant_bit() {
+    let (s, r) = run(StarFault::UplinkStuckDominant);
+    assert_lossless(&s, &r);
+    let d = assert_isolated_and_restored(&s, &r);
+    // §6 rule SD: the SAMPLE edge where dom_run reaches sd_run_up (14); the first
+    // dominant sample comes within one bit time of the onset.
+    let limit = HubConfig::default().sd_run_up as u64;
+    assert!((limit - 1..=limit).contains(&d[0]), "isolated after {} bit times", d[0]);
+}
+
+#[test]
+fn uplink_bit_flipping_is_isolated_and_loses_nothing() {
+    let (s, r) = run(StarFault::UplinkBitFlipping);
+    assert_lossless(&s, &r);
+    let d = assert_isolated_and_restored(&s, &r);
+    // BF: +8 per blamed frame, isolation at pec >= bf_up (32): at least four frames
+    // with a flipped bit, i.e. more than one frame length after the onset.
+    assert!(d[0] >= 44, "isolated after {} bit times", d[0]);
+}
+
+#[test]
+fn uplink_stuck_recessive_is_isolated_as_silent() {
+    let (s, r) = run(StarFault::UplinkStuckRecessive);
+    assert_lossless(&s, &r);
+    let d = assert_isolated_and_restored(&s, &r);
+    // SR: sr_frames (8) whole frames through their ACK slot, each at least 44 bits.
+    let frames = HubConfig::default().sr_frames as u64;
+    assert!(d[0] >= frames * 44, "isolated after {} bit times", d[0]);
+}
+
+#[test]
+fn cut_downlink_loses_nothing_and_the_deaf_node_is_contained() {
+    let (s, r) = run(StarFault::DownlinkCut);
+    assert_lossless(&s, &r);
+    assert_isolated_and_restored(&s, &r);
+    // Node 3 hears hub 1 no more: every frame reaches it through hub 2 only.
+    assert!(r.omissions(3) > 0, "node 3 saw no omission");
+}
+
+#[test]
+fn incoming_sublink_stuck_dominant_is_isolated_at_the_16th_dominant_bit() {
+    let (s, r) = run(StarFault::SublinkStuckDominant);
+    assert_lossless(&s, &r);
+    let d = assert_isolated_and_restored(&s, &r);
+    let limit = HubConfig::default().sd_run_sub as u64;
+    assert!((limit - 1..=limit).contains(&d[0]), "isolated after {} bit times", d[0]);
+    assert_eq!(r.decoupled_at, [None, None]);
+}
+
+#[test]
+fn one_interlink_lost_keeps_the_hubs_coupled() {
+    let (s, r) = run(StarFault::InterlinkLost);
+    assert_lossless(&s, &r);
+    assert_isolated_and_restored(&s, &r);
+    assert_eq!(r.decoupled_at, [None, None], "the other interlink carries the coupling");
+    for i in 0..s.nodes {
+        assert_eq!(r.omissions(i), 0, "node {i}: the coupling held, both hubs deliver");
+    }
+}
+
+#[test]
+fn all_interlinks_lost_stops_traffic_until_the_hubs_decouple() {
+    let (s, r) = run(StarFault::AllInterlinksLost);
+    assert!(r.duplicates.is_empty() && r.foreign == 0, "{:?}", r.duplicates);
+    let targets = s.fault.target_ports();
+    assert!(r.false_isolations(&targets).is_empty());
+    let mut last_isolation = [0u64; 2];
+    for &(h, p) in &targets {
+        assert!(p >= HUB_N);
+        let at = r.isolated_at(h, p, r.fault_start).expect("sublink isolated");
+        last_isolation[h] = last_isolation[h].max(at);
+    }
+    // §7: decoupled decouple_bits sample points after the last sublink went. The
+    // hub counts its own bit times: the hard synchronization at every start of frame
+    // and resynchronization stretch some of them, so allow 1/64 more.
+    let decouple = s.hub.decouple_bits as u64;
+    let mut decoupled = [0u64; 2];
+    for h in 0..2 {
+        let at = r.decoupled_at[h].expect("each hub decouples");
+        let after = bits_after(last_isolation[h], at);
+        assert!(
+            (decouple..=decouple + decouple / 64).contains(&after),
+            "hub {} decoupled {after} bit times after its last sublink",
+            h + 1
+        );
+        decoupled[h] = at;
+    }
+    // ACK interdependence: a frame that started after the onset completes nowhere
+    // until the first hub decouples (one frame, 130 bit times at most, may be
+    // under way at the onset).
+    let blocked_from = r.fault_start + 130 * CLOCKS_PER_BIT;
+    let first = decoupled[0].min(decoupled[1]);
+    let mut after_decoupling = 0;
+    for (i, node) in r.received_at.iter().enumerate() {
+        for &c in node {
+            assert!(
+                !(blocked_from..first).contains(&c),
+                "node {i} received a frame at bit {} while the hubs were blocked",
+                c / CLOCKS_PER_BIT
+            );
+            after_decoupling += (c >= first && c < r.fault_end) as usize;
+        }
+    }
+    assert!(after_decoupling > 0, "no star carried traffic after decoupling");
+}

@@ -109,6 +109,9 @@ enum Command {
         /// Also run this engine in lock step and compare every clock.
         #[arg(long, value_name = "ENGINE")]
         cosim: Option<String>,
+        /// With `table`: rewrite the table in README.md and docs/hub.md.
+        #[arg(long)]
+        markdown: bool,
     },
     /// Measure simulated clock cycles per second of every available engine.
     Bench {
@@ -172,7 +175,8 @@ fn main() -> ExitCode {
             what,
             engine,
             cosim,
-        } => cli::star::run(&what, &engine, cosim.as_deref()),
+            markdown,
+        } => cli::star::run(&what, &engine, cosim.as_deref(), markdown),
         Command::Bench { seconds } => cli::bench(seconds),
         Command::Synth {
             target,

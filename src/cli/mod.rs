@@ -3,8 +3,8 @@
 
 pub mod generate;
 pub mod redundancy;
-pub mod star;
 pub mod run;
+pub mod star;
 pub mod synth;
 pub mod wave;
 

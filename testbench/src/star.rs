@@ -88,6 +88,13 @@ impl StarFault {
         StarFault::ALL.into_iter().find(|f| f.name() == s)
     }
 
+    /// One fault (one link, or one interlink as a unit): the product promises no
+    /// frame lost at the application level. Losing every interlink is a multiple
+    /// fault; it promises that no frame completes while the hubs are blocked.
+    pub fn is_single(self) -> bool {
+        self != StarFault::AllInterlinksLost
+    }
+
     /// What is faulty, in words.
     pub fn describe(self) -> &'static str {
         match self {
@@ -98,7 +105,9 @@ impl StarFault {
             }
             StarFault::UplinkStuckRecessive => "node 2 -> hub 1 uplink stuck recessive",
             StarFault::DownlinkCut => "hub 1 -> node 3 downlink cut (reads recessive)",
-            StarFault::SublinkStuckDominant => "hub 2 -> hub 1 sublink of interlink 0 stuck dominant",
+            StarFault::SublinkStuckDominant => {
+                "hub 2 -> hub 1 sublink of interlink 0 stuck dominant"
+            }
             StarFault::InterlinkLost => "interlink 0 cut (both sublinks)",
             StarFault::AllInterlinksLost => "both interlinks cut (all four sublinks)",
         }
@@ -110,7 +119,9 @@ impl StarFault {
         let sub = |from, interlink| Link::Sublink { from, interlink };
         match self {
             StarFault::None => vec![],
-            StarFault::UplinkStuckDominant => vec![(Link::Uplink { hub: 0, node: 0 }, StuckDominant)],
+            StarFault::UplinkStuckDominant => {
+                vec![(Link::Uplink { hub: 0, node: 0 }, StuckDominant)]
+            }
             StarFault::UplinkBitFlipping => vec![(
                 Link::Uplink { hub: 0, node: 1 },
                 BitFlip {
@@ -373,7 +384,9 @@ pub fn build_star(s: &StarScenario, kind: EngineKind) -> Result<StarSystem, Stri
     for n in 0..s.nodes {
         for k in 0..s.frames_per_node {
             let due = (100 + k as u64 * s.period_bits + n as u64 * 37) * CLOCKS_PER_BIT;
-            sys.node_mut(n).host.submit(due, StarScenario::frame(n, k), 0);
+            sys.node_mut(n)
+                .host
+                .submit(due, StarScenario::frame(n, k), 0);
         }
     }
     Ok(sys)
@@ -417,9 +430,10 @@ pub fn run_star(
         .then_some(report.fault_end + RECOUPLE_AFTER_BITS * CLOCKS_PER_BIT);
     let recouple = |sys: &mut StarSystem| {
         for h in 0..2 {
-            sys.hub_mut(h)
-                .host
-                .write(hub_reg::CTRL, hub_reg::CTRL_ACK_INTERDEP | hub_reg::CTRL_RECOUPLE);
+            sys.hub_mut(h).host.write(
+                hub_reg::CTRL,
+                hub_reg::CTRL_ACK_INTERDEP | hub_reg::CTRL_RECOUPLE,
+            );
         }
     };
     let mut prev_enabled = [0u16; 2];

@@ -57,13 +57,21 @@ impl HubStim {
         let restore = 40 + rng.below(200) as u32;
         let decouple = 60 + rng.below(400) as u32;
         let setup = VecDeque::from(vec![
-            (1, 1 | (rng.below(2) as u32) << 8),                      // CTRL: reset mode, ack_interdep
-            (2, (4 << 6) | (1 << 10) | (rng.below(2) as u32) << 13),  // BTR: 8 tq, SJW 1 or 2
-            (3, 14 + rng.below(4) as u32 | (14 + rng.below(6) as u32) << 8 | (1 + rng.below(4) as u32) << 16),
-            (4, 8 + rng.below(24) as u32 | (8 + rng.below(40) as u32) << 8),
+            (1, 1 | (rng.below(2) as u32) << 8), // CTRL: reset mode, ack_interdep
+            (2, (4 << 6) | (1 << 10) | (rng.below(2) as u32) << 13), // BTR: 8 tq, SJW 1 or 2
+            (
+                3,
+                14 + rng.below(4) as u32
+                    | (14 + rng.below(6) as u32) << 8
+                    | (1 + rng.below(4) as u32) << 16,
+            ),
+            (
+                4,
+                8 + rng.below(24) as u32 | (8 + rng.below(40) as u32) << 8,
+            ),
             (5, restore | decouple << 16),
             (8, 0xF),
-            (1, rng.below(2) as u32 * 0x100),                          // leave reset mode
+            (1, rng.below(2) as u32 * 0x100), // leave reset mode
         ]);
         HubStim {
             rng,
@@ -122,7 +130,10 @@ impl HubStim {
             let bits = FrameBits::new(&f).values();
             let ack = bits.len() - 9; // ACK slot: before ACK delimiter + 7 EOF bits
             let corrupt = if self.rng.percent(15) {
-                Some((self.rng.below(ports as u64) as usize, 1 + self.rng.below(ack as u64 - 1) as usize))
+                Some((
+                    self.rng.below(ports as u64) as usize,
+                    1 + self.rng.below(ack as u64 - 1) as usize,
+                ))
             } else {
                 None
             };

@@ -17,9 +17,7 @@
 use drcc_cosim::engine::hub_verilator::HubVerilatorEngine;
 use drcc_cosim::star::hub_host::HubConfig;
 use drcc_testbench::engines::verilator_required;
-use drcc_testbench::star::{
-    run_star, StarFault, StarReport, StarScenario, CLOCKS_PER_BIT, HUB_N,
-};
+use drcc_testbench::star::{run_star, StarFault, StarReport, StarScenario, CLOCKS_PER_BIT, HUB_N};
 use drcc_testbench::EngineKind;
 
 fn cosim_engine() -> Option<EngineKind> {
@@ -79,7 +77,10 @@ fn assert_isolated_and_restored(s: &StarScenario, r: &StarReport) -> Vec<u64> {
         let at = r
             .isolated_at(h, p, r.fault_start)
             .unwrap_or_else(|| panic!("{name}: hub {} port {p} never isolated", h + 1));
-        assert!(at < r.fault_end, "{name}: isolated only after the fault ended");
+        assert!(
+            at < r.fault_end,
+            "{name}: isolated only after the fault ended"
+        );
         delays.push(bits_after(r.fault_start, at));
         let reg = r.hub_ports[h][p];
         assert_eq!(
@@ -88,7 +89,10 @@ fn assert_isolated_and_restored(s: &StarScenario, r: &StarReport) -> Vec<u64> {
             "{name}: hub {} PORT_{p} = {reg:#010x}",
             h + 1
         );
-        assert!(port_isolations(reg) >= 1, "{name}: PORT_{p} counts no isolation");
+        assert!(
+            port_isolations(reg) >= 1,
+            "{name}: PORT_{p} counts no isolation"
+        );
         let back = r
             .restored_at(h, p, r.fault_end)
             .unwrap_or_else(|| panic!("{name}: hub {} port {p} never restored", h + 1));
@@ -113,7 +117,11 @@ fn assert_isolated_and_restored(s: &StarScenario, r: &StarReport) -> Vec<u64> {
 fn no_fault_isolates_nothing_and_delivers_everything_once() {
     let (s, r) = run(StarFault::None);
     assert_lossless(&s, &r);
-    assert!(r.events.is_empty(), "isolations without a fault: {:?}", r.events);
+    assert!(
+        r.events.is_empty(),
+        "isolations without a fault: {:?}",
+        r.events
+    );
     assert_eq!(r.decoupled_at, [None, None]);
     // Coupled hubs bring every frame to both channels of every node: the DRCC
     // removes one copy of each, and no node sees an omission.
@@ -123,7 +131,12 @@ fn no_fault_isolates_nothing_and_delivers_everything_once() {
     // Both hubs tracked every frame to its ACK slot (STATS[15:0]).
     let frames = s.nodes * s.frames_per_node;
     for h in 0..2 {
-        assert_eq!(r.hub_stats[h] & 0xFFFF, frames as u32, "hub {} STATS", h + 1);
+        assert_eq!(
+            r.hub_stats[h] & 0xFFFF,
+            frames as u32,
+            "hub {} STATS",
+            h + 1
+        );
     }
 }
 
@@ -135,7 +148,11 @@ fn uplink_stuck_dominant_is_isolated_at_the_14th_dominant_bit() {
     // §6 rule SD: the SAMPLE edge where dom_run reaches sd_run_up (14); the first
     // dominant sample comes within one bit time of the onset.
     let limit = HubConfig::default().sd_run_up as u64;
-    assert!((limit - 1..=limit).contains(&d[0]), "isolated after {} bit times", d[0]);
+    assert!(
+        (limit - 1..=limit).contains(&d[0]),
+        "isolated after {} bit times",
+        d[0]
+    );
 }
 
 #[test]
@@ -173,7 +190,11 @@ fn incoming_sublink_stuck_dominant_is_isolated_at_the_16th_dominant_bit() {
     assert_lossless(&s, &r);
     let d = assert_isolated_and_restored(&s, &r);
     let limit = HubConfig::default().sd_run_sub as u64;
-    assert!((limit - 1..=limit).contains(&d[0]), "isolated after {} bit times", d[0]);
+    assert!(
+        (limit - 1..=limit).contains(&d[0]),
+        "isolated after {} bit times",
+        d[0]
+    );
     assert_eq!(r.decoupled_at, [None, None]);
 }
 
@@ -182,22 +203,36 @@ fn one_interlink_lost_keeps_the_hubs_coupled() {
     let (s, r) = run(StarFault::InterlinkLost);
     assert_lossless(&s, &r);
     assert_isolated_and_restored(&s, &r);
-    assert_eq!(r.decoupled_at, [None, None], "the other interlink carries the coupling");
+    assert_eq!(
+        r.decoupled_at,
+        [None, None],
+        "the other interlink carries the coupling"
+    );
     for i in 0..s.nodes {
-        assert_eq!(r.omissions(i), 0, "node {i}: the coupling held, both hubs deliver");
+        assert_eq!(
+            r.omissions(i),
+            0,
+            "node {i}: the coupling held, both hubs deliver"
+        );
     }
 }
 
 #[test]
 fn all_interlinks_lost_stops_traffic_until_the_hubs_decouple() {
     let (s, r) = run(StarFault::AllInterlinksLost);
-    assert!(r.duplicates.is_empty() && r.foreign == 0, "{:?}", r.duplicates);
+    assert!(
+        r.duplicates.is_empty() && r.foreign == 0,
+        "{:?}",
+        r.duplicates
+    );
     let targets = s.fault.target_ports();
     assert!(r.false_isolations(&targets).is_empty());
     let mut last_isolation = [0u64; 2];
     for &(h, p) in &targets {
         assert!(p >= HUB_N);
-        let at = r.isolated_at(h, p, r.fault_start).expect("sublink isolated");
+        let at = r
+            .isolated_at(h, p, r.fault_start)
+            .expect("sublink isolated");
         last_isolation[h] = last_isolation[h].max(at);
     }
     // §7: decoupled decouple_bits sample points after the last sublink went. The
@@ -231,5 +266,8 @@ fn all_interlinks_lost_stops_traffic_until_the_hubs_decouple() {
             after_decoupling += (c >= first && c < r.fault_end) as usize;
         }
     }
-    assert!(after_decoupling > 0, "no star carried traffic after decoupling");
+    assert!(
+        after_decoupling > 0,
+        "no star carried traffic after decoupling"
+    );
 }

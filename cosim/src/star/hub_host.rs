@@ -75,7 +75,12 @@ impl Default for HubConfig {
 impl HubConfig {
     /// `CTRL` value with the given reset-mode bit.
     pub fn ctrl(&self, reset_mode: bool) -> u32 {
-        reset_mode as u32 | if self.ack_interdep { hub_reg::CTRL_ACK_INTERDEP } else { 0 }
+        reset_mode as u32
+            | if self.ack_interdep {
+                hub_reg::CTRL_ACK_INTERDEP
+            } else {
+                0
+            }
     }
 
     /// `GUARD_CFG` value.

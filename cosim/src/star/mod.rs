@@ -17,9 +17,9 @@
 pub mod hub_host;
 pub mod lockstep;
 
+use crate::dual::host::{HostConfig, HostDriver};
 use crate::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use crate::engine::hub::{HubEngine, HubInputs, HubOutputs};
-use crate::dual::host::{HostConfig, HostDriver};
 use hub_host::{HubConfig, HubHost};
 
 /// A link of the star.

@@ -92,3 +92,17 @@ pub fn bench(seconds: f64) -> CliResult {
         .map_err(|e| CliError::Error(format!("cannot write the report: {e}")))?;
     Ok(())
 }
+
+/// Replaces the text between the marker lines `begin` and `end` (generated tables in
+/// README.md and docs/) with `body`; names a missing marker.
+pub fn replace_between(text: &str, begin: &str, end: &str, body: &str) -> Result<String, String> {
+    let b = text
+        .find(begin)
+        .ok_or_else(|| format!("no `{begin}` marker"))?
+        + begin.len();
+    let e = text[b..]
+        .find(end)
+        .map(|i| b + i)
+        .ok_or_else(|| format!("no `{end}` marker after the begin marker"))?;
+    Ok(format!("{}\n{}{}", &text[..b], body, &text[e..]))
+}

@@ -4,7 +4,7 @@
 //! `table --markdown` also rewrites the table between the `star-table` markers of
 //! README.md and docs/hub.md.
 
-use super::{workspace_path, CliError, CliResult};
+use super::{replace_between, workspace_path, CliError, CliResult};
 use drcc_testbench::star::{run_star, star_table, table_row, StarFault, StarScenario};
 use drcc_testbench::EngineKind;
 
@@ -86,15 +86,7 @@ const TABLE_END: &str = "<!-- star-table:end -->";
 
 /// Replaces the text between the star-table markers.
 fn replace_table(text: &str, table: &str) -> Result<String, String> {
-    let b = text
-        .find(TABLE_BEGIN)
-        .ok_or_else(|| format!("no `{TABLE_BEGIN}` marker"))?
-        + TABLE_BEGIN.len();
-    let e = text[b..]
-        .find(TABLE_END)
-        .map(|i| b + i)
-        .ok_or_else(|| format!("no `{TABLE_END}` marker after the begin marker"))?;
-    Ok(format!("{}\n{}{}", &text[..b], table, &text[e..]))
+    replace_between(text, TABLE_BEGIN, TABLE_END, table)
 }
 
 #[cfg(test)]

@@ -1849,15 +1849,7 @@ pub fn markdown_doc(results: &[SynthResult], env: &ToolEnv) -> String {
 
 /// Replaces the text between [`README_BEGIN`] and [`README_END`].
 pub fn replace_between_markers(text: &str, table: &str) -> Result<String, String> {
-    let b = text
-        .find(README_BEGIN)
-        .ok_or_else(|| format!("no `{README_BEGIN}` marker"))?;
-    let after_b = b + README_BEGIN.len();
-    let e = text[after_b..]
-        .find(README_END)
-        .map(|i| after_b + i)
-        .ok_or_else(|| format!("no `{README_END}` marker after the begin marker"))?;
-    Ok(format!("{}\n{}{}", &text[..after_b], table, &text[e..]))
+    super::replace_between(text, README_BEGIN, README_END, table)
 }
 
 #[cfg(test)]

@@ -210,7 +210,8 @@ impl PortGuard {
             }
         } else {
             // Restoration: the port keeps being monitored.
-            let silent_frame = ev == TrkEvent::Ack && !(self.active || !pb);
+            // `trk == ACK_SLOT & !(active | !pb)`: silent through a frame.
+            let silent_frame = ev == TrkEvent::Ack && !self.active && pb;
             let symptom = (!pb && b) || stuck || silent_frame;
             self.track_flags(pb, b, ev);
             self.restore_cnt = if symptom {

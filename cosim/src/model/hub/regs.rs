@@ -147,7 +147,12 @@ impl Regs {
 
     /// `CTRL` as read (the commands read 0).
     pub fn ctrl(&self) -> u32 {
-        self.reset_mode as u32 | if self.ack_interdep { ctrl::ACK_INTERDEP } else { 0 }
+        self.reset_mode as u32
+            | if self.ack_interdep {
+                ctrl::ACK_INTERDEP
+            } else {
+                0
+            }
     }
 
     /// `sd_run_up`.

@@ -15,8 +15,9 @@
 //! commands (a command wins over a guard event of the same edge), then
 //! `INT_STATUS` and `irq`.
 //!
-//! Speed: a clock without a sample point moves only the synchronizers, the
-//! coupling registers and the prescaler; nothing allocates.
+//! Speed: a clock without a sample point and without a Wishbone access moves only
+//! the synchronizers, the coupling registers and the prescaler (the accesses and
+//! the commands are out of line); nothing allocates.
 //!
 //! ## Ambiguities (the reading taken where the contract leaves a choice)
 //!
@@ -54,6 +55,10 @@
 //!     registers before it.
 //! 11. Bits of `downlink`, `sublink_out` and `port_enabled` above N, M and N + M are
 //!     0 (the ports are zero-extended into the engine's integers).
+//! 12. Rule RID is judged, as written, at data bit `pos == 10`, before IDE is
+//!     known: an extended frame whose 11-bit base part is 0x000 or 0x001 (ID[28:19]
+//!     all dominant) isolates its node port too. The contract writes no exemption,
+//!     and such identifiers outrank every other frame but the hubs' own.
 #![doc = include_str!("../hub_contract.md")]
 
 pub mod coupling;
@@ -211,33 +216,32 @@ impl HubModel {
     }
 
     /// One edge out of `rst`.
+    #[inline]
     fn edge(&mut self, i: &HubInputs) {
-        let r = self.regs;
-        let mut next = r;
-        let mut ints = 0u32;
+        // The registers this edge needs as they are before it.
+        let reset_mode = self.regs.reset_mode;
+        let btl_reset = reset_mode || self.regs.reset_mode_q;
+        let ack_interdep = self.regs.ack_interdep;
+        let btr_before = self.regs.btr;
+        let int_before = self.regs.int_status;
+        let irq = int_before & self.regs.int_enable != 0;
 
         // Wishbone (§D.2): a transaction is taken when the ack register is low.
-        let take = i.wb_cyc && i.wb_stb && !r.wb_ack;
-        next.wb_ack = take;
-        next.wb_dat = 0;
+        let take = i.wb_cyc && i.wb_stb && !self.regs.wb_ack;
         let mut fx = WriteEffects::default();
         if take {
-            let adr = i.wb_adr & 0x3F;
-            if i.wb_we {
-                fx = next.write(&r, adr, i.wb_dat_w);
-                if fx.illegal {
-                    ints |= int::ILLEGAL;
-                }
-            } else {
-                next.wb_dat = self.read(adr);
-            }
+            fx = self.wishbone(i);
+        } else {
+            self.regs.wb_ack = false;
+            self.regs.wb_dat = 0;
         }
+        let mut ints = if fx.illegal { int::ILLEGAL } else { 0 };
 
         // Synchronizers and coupling (§2-§4), on the registers before the edge.
         let b = self.cpl.coupled_q;
         let pq = self.cpl.port_q;
         let decoupled = self.dec.decoupled;
-        let mask_ack = self.trk.ack_window() && r.ack_interdep && !decoupled;
+        let mask_ack = self.trk.ack_window() && ack_interdep && !decoupled;
         let pins = (i.uplink & self.node_mask) | ((i.sublink_in as u16) << self.n);
         self.cpl.edge(
             pins,
@@ -250,9 +254,9 @@ impl HubModel {
 
         // Bit timing (§5), held in reset by reset_mode | reset_mode_q.
         self.sample_point = false;
-        if r.reset_mode || r.reset_mode_q {
+        if btl_reset {
             self.btl = Btl::new();
-            self.timing = timing_of(r.btr);
+            self.timing = timing_of(btr_before);
         } else {
             let (_, tick) = self.btl.clock(b, self.timing.brp);
             if tick {
@@ -261,17 +265,52 @@ impl HubModel {
                     self.btl.tick(b, &self.timing, true, hard_sync_enable)
                 {
                     self.sample_point = true;
-                    ints |= self.sample(sampled, pq, &r);
+                    // The guard configuration cannot change at a SAMPLE edge (it
+                    // is written only in reset mode), so `self.regs` holds the
+                    // values before the edge.
+                    ints |= self.sample(sampled, pq);
                 }
             }
         }
 
         // Reset mode: a transparent star (§8).
-        if r.reset_mode {
+        if reset_mode {
             self.hold_reset_mode();
         }
 
         // Commands (§8; they act only outside reset mode): the command wins.
+        if fx.force_decouple | fx.recouple {
+            ints |= self.command(&fx);
+        }
+
+        self.regs.reset_mode_q = reset_mode;
+        self.regs.int_status = (int_before & !fx.w1c) | ints;
+        self.regs.irq = irq;
+    }
+
+    /// A Wishbone transaction taken at this edge: the read data register, or the
+    /// write (decided on the registers before the edge).
+    #[cold]
+    #[inline(never)]
+    fn wishbone(&mut self, i: &HubInputs) -> WriteEffects {
+        let adr = i.wb_adr & 0x3F;
+        self.regs.wb_ack = true;
+        if i.wb_we {
+            let before = self.regs;
+            self.regs.wb_dat = 0;
+            self.regs.write(&before, adr, i.wb_dat_w)
+        } else {
+            self.regs.wb_dat = self.read(adr);
+            WriteEffects::default()
+        }
+    }
+
+    /// `CTRL.force_decouple` / `CTRL.recouple` acting at this edge; returns the
+    /// `INT_STATUS` events.
+    #[cold]
+    #[inline(never)]
+    fn command(&mut self, fx: &WriteEffects) -> u32 {
+        let mut ints = 0;
         if fx.force_decouple {
             self.dec.force();
             ints |= int::DECOUPLED;
@@ -286,16 +325,14 @@ impl HubModel {
             }
             self.update_enabled();
         }
-
-        next.reset_mode_q = r.reset_mode;
-        next.int_status = (r.int_status & !fx.w1c) | ints;
-        next.irq = r.int_status & r.int_enable != 0;
-        self.regs = next;
+        ints
     }
 
     /// A SAMPLE edge: tracker, guards, decoupling. `b` = the sampled bus value,
     /// `pq` = `port_q` before the edge. Returns the `INT_STATUS` events.
-    fn sample(&mut self, b: bool, pq: u16, r: &Regs) -> u32 {
+    fn sample(&mut self, b: bool, pq: u16) -> u32 {
+        let r = &self.regs;
+        let decouple_bits = r.decouple_bits();
         let ev = self.trk.sample(b);
         let any_sub_enabled = self.enabled & self.sub_mask != 0;
         let decoupled = self.dec.decoupled;
@@ -326,7 +363,7 @@ impl HubModel {
             }
         }
         self.update_enabled();
-        if self.dec.sample(any_sub_enabled, r.decouple_bits()) {
+        if self.dec.sample(any_sub_enabled, decouple_bits) {
             ints |= int::DECOUPLED;
         }
         ints

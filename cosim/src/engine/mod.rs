@@ -11,6 +11,7 @@ pub mod drcc;
 pub mod drcc_model;
 pub mod drcc_verilator;
 pub mod hub;
+pub mod hub_model;
 pub mod hub_rusthdl;
 pub mod hub_verilator;
 pub mod model;

@@ -17,6 +17,7 @@ pub mod btl;
 pub mod crc;
 pub mod drcc;
 pub mod field;
+pub mod hub;
 
 use crate::engine::{ChannelInputs, ChannelOutputs, Diagnostics, Mode, Probes};
 use bsp::Bsp;

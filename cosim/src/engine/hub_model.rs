@@ -1,0 +1,41 @@
+//! The hub reference model as a [`HubEngine`] (engine name `model`): a thin wrapper
+//! around [`crate::model::hub::HubModel`], the oracle written from the hub contract
+//! (`hub_contract.md`).
+
+use super::hub::{HubEngine, HubInputs, HubOutputs};
+use crate::model::hub::HubModel;
+
+/// The hub reference model engine.
+#[derive(Clone, Debug)]
+pub struct HubModelEngine {
+    model: HubModel,
+}
+
+impl HubModelEngine {
+    /// A model engine with `n` node ports (2..=8) and `m` interlinks (1..=4) in its
+    /// reset state; other shapes are refused with a message naming the ranges.
+    pub fn new(n: usize, m: usize) -> Result<Self, String> {
+        Ok(HubModelEngine {
+            model: HubModel::new(n, m)?,
+        })
+    }
+
+    /// The model inside (guard and tracker state for tests).
+    pub fn model(&self) -> &HubModel {
+        &self.model
+    }
+}
+
+impl HubEngine for HubModelEngine {
+    fn name(&self) -> &'static str {
+        "model"
+    }
+
+    fn shape(&self) -> (usize, usize) {
+        self.model.shape()
+    }
+
+    fn step(&mut self, inputs: &HubInputs) -> HubOutputs {
+        self.model.step(inputs)
+    }
+}

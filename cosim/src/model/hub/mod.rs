@@ -1,0 +1,410 @@
+//! Reference model of the ReCANcentrate hub top (two-stage AND star hub), written
+//! from its clock-level contract (`hub_contract.md`, included below), the channel
+//! contract (`timing_contract.md` §C.3 bit timing, §C.6 configuration capture and
+//! clamps) and the DRCC contract's Wishbone conventions (§D.1, §D.2). It is the
+//! oracle the RTL is compared with, so it never looks at the RTL.
+//!
+//! Parts: input synchronizers and coupling ([`coupling`], §2-§4), the frame tracker
+//! ([`tracker`], §5) run at the sample points of the channel's own bit timing logic
+//! ([`crate::model::btl`]) on `coupled_q`, the per-port guards ([`guard`], §6),
+//! decoupling ([`decouple`], §7) and the register file ([`regs`], §8).
+//!
+//! Step order (a registered design): at every edge every next value is computed
+//! from the values before it: Wishbone access, coupling, bit timing and (at a
+//! SAMPLE edge) tracker, guards and decoupling, then the reset-mode hold, then the
+//! commands (a command wins over a guard event of the same edge), then
+//! `INT_STATUS` and `irq`.
+//!
+//! Speed: a clock without a sample point and without a Wishbone access moves only
+//! the synchronizers, the coupling registers and the prescaler (the accesses and
+//! the commands are out of line); nothing allocates.
+//!
+//! ## Ambiguities (the reading taken where the contract leaves a choice)
+//!
+//! 1. `ack_window` is the combinational decode of the `trk` register (not a
+//!    register of its own): the `ack_window` probe, `STATUS[2]` and the downlink
+//!    mask all use `trk` as it is before the edge at which they are used.
+//! 2. The BTL's `rx_s` is `coupled_q` itself (it is already a registered,
+//!    synchronized signal): no further synchronizer stages. The prescaler, the
+//!    segments and the sample point are the channel's (§C.3) with `tx = 1`,
+//!    `triple = 0`, `hard_sync_enable = (trk == IDLE_WAIT)` before the edge.
+//! 3. The BTL configuration is captured from `BTR` (value before the edge, clamped
+//!    as §C.6) at every edge where the BTL is held in reset (`reset_mode |
+//!    reset_mode_q` before the edge; at a `rst` edge the reset `BTR`).
+//! 4. At a stuff error with `b == 1`, "every port with `cand`" uses `cand` after
+//!    the arbitration update of that same bit (the rules of `FRAME_PORTS` apply in
+//!    the order written).
+//! 5. A disabled port only tracks its per-frame flags (`cand`, `lost`, `active`;
+//!    `blamed` is cleared by `SOF_PORTS`); its `pec` and `silent` do not change
+//!    until it is restored (restoration clears them).
+//! 6. A `CTRL` write with both command bits set is refused whole (and sets
+//!    `illegal`) whatever the reset mode, as the contract states it without a
+//!    condition.
+//! 7. `force_decouple` sets `INT_STATUS.decoupled` every time it acts, also when the
+//!    hub is already decoupled.
+//! 8. A command and a guard event of the same edge: the command's field writes win
+//!    (`recouple` re-enables a sublink isolated at that edge, `decoupled = 0` beats
+//!    a decoupling at that edge), but the guard event's `INT_STATUS` bit and its
+//!    `kind` / `isolations` updates stay (the command keeps "kind and the counts").
+//!    `recouple` is not a restoration (no count, no `INT_STATUS.restoration`).
+//! 9. `no_twin` keeps counting while decoupled (it is not a sublink guard field);
+//!    it is only observable through the next decoupling, after `recouple` cleared it.
+//! 10. The reset-mode hold (every guard field, `enabled`, tracker, `no_twin`,
+//!     `decoupled`, `STATS`) is a synchronous clear at every edge where
+//!     `reset_mode` before the edge is 1; the coupling at that edge still uses the
+//!     registers before it.
+//! 11. Bits of `downlink`, `sublink_out` and `port_enabled` above N, M and N + M are
+//!     0 (the ports are zero-extended into the engine's integers).
+//! 12. Rule RID is judged, as written, at data bit `pos == 10`, before IDE is
+//!     known: an extended frame whose 11-bit base part is 0x000 or 0x001 (ID[28:19]
+//!     all dominant) isolates its node port too. The contract writes no exemption,
+//!     and such identifiers outrank every other frame but the hubs' own.
+#![doc = include_str!("../hub_contract.md")]
+
+pub mod coupling;
+pub mod decouple;
+pub mod guard;
+pub mod regs;
+pub mod tracker;
+
+use crate::engine::hub::{HubInputs, HubOutputs, HubProbes, MAX_INTERLINKS, MAX_NODE_PORTS};
+use crate::engine::BitTiming;
+use crate::model::btl::{Btl, BtlEvent, Timing};
+use coupling::Coupling;
+use decouple::Decoupler;
+use guard::{Limits, PortGuard};
+use regs::{btr, idx, int, Regs, WriteEffects};
+use tracker::{Tracker, IDLE_WAIT};
+
+/// Most ports a hub has (N + M).
+pub const MAX_PORTS: usize = MAX_NODE_PORTS + MAX_INTERLINKS;
+
+/// The bit timing a `BTR` value configures (value - 1 encodings), clamped as a
+/// channel clamps its configuration (§C.6).
+pub fn timing_of(btr_value: u32) -> Timing {
+    Timing::capture(&BitTiming {
+        brp: (btr_value & btr::BRP_MASK) as u8,
+        tseg1: ((btr_value >> btr::TSEG1_SHIFT) & 0xF) as u8 + 1,
+        tseg2: ((btr_value >> btr::TSEG2_SHIFT) & 0x7) as u8 + 1,
+        sjw: ((btr_value >> btr::SJW_SHIFT) & 0x3) as u8 + 1,
+        triple_sampling: false,
+    })
+}
+
+/// The hub top, simulated clock by clock.
+#[derive(Clone, Debug)]
+pub struct HubModel {
+    n: usize,
+    m: usize,
+    /// Bits `0..N`.
+    node_mask: u16,
+    /// Bits `N..N+M`.
+    sub_mask: u16,
+    regs: Regs,
+    cpl: Coupling,
+    btl: Btl,
+    /// Bit timing captured while the BTL is held in reset.
+    timing: Timing,
+    /// `sample_point` probe register.
+    sample_point: bool,
+    trk: Tracker,
+    ports: [PortGuard; MAX_PORTS],
+    /// Bit p = `ports[p].enabled` (kept in step with the guards).
+    enabled: u16,
+    dec: Decoupler,
+}
+
+impl HubModel {
+    /// A hub with `n` node ports and `m` interlinks in its reset state. Shapes
+    /// outside N 2..=8, M 1..=4 are refused.
+    pub fn new(n: usize, m: usize) -> Result<Self, String> {
+        if !(2..=MAX_NODE_PORTS).contains(&n) || !(1..=MAX_INTERLINKS).contains(&m) {
+            return Err(format!(
+                "hub shape N = {n}, M = {m} is not supported: the hub has 2..={MAX_NODE_PORTS} \
+                 node ports (N) and 1..={MAX_INTERLINKS} interlinks (M)"
+            ));
+        }
+        let node_mask = (1u16 << n) - 1;
+        let sub_mask = ((1u16 << m) - 1) << n;
+        let mut hub = HubModel {
+            n,
+            m,
+            node_mask,
+            sub_mask,
+            regs: Regs::reset(),
+            cpl: Coupling::new(),
+            btl: Btl::new(),
+            timing: timing_of(btr::RESET),
+            sample_point: false,
+            trk: Tracker::new(),
+            ports: [PortGuard::new(); MAX_PORTS],
+            enabled: 0,
+            dec: Decoupler::default(),
+        };
+        hub.reset();
+        Ok(hub)
+    }
+
+    /// Node ports N and interlinks M.
+    pub fn shape(&self) -> (usize, usize) {
+        (self.n, self.m)
+    }
+
+    /// Every register at its `rst` value.
+    fn reset(&mut self) {
+        self.regs = Regs::reset();
+        self.cpl = Coupling::new();
+        self.btl = Btl::new();
+        self.timing = timing_of(btr::RESET);
+        self.sample_point = false;
+        self.hold_reset_mode();
+    }
+
+    /// The fields reset mode holds at their reset values (§8 "Reset mode").
+    fn hold_reset_mode(&mut self) {
+        self.trk = Tracker::new();
+        self.ports = [PortGuard::new(); MAX_PORTS];
+        self.enabled = self.node_mask | self.sub_mask;
+        self.dec = Decoupler::default();
+    }
+
+    fn update_enabled(&mut self) {
+        let mut e = 0u16;
+        for (p, g) in self.ports[..self.n + self.m].iter().enumerate() {
+            e |= (g.enabled as u16) << p;
+        }
+        self.enabled = e;
+    }
+
+    /// The value a Wishbone read of word `adr` returns (registers before the edge).
+    fn read(&self, adr: u8) -> u32 {
+        let r = &self.regs;
+        match adr {
+            idx::ID => regs::id_value(self.n, self.m),
+            idx::CTRL => r.ctrl(),
+            idx::BTR => r.btr,
+            idx::GUARD_CFG => r.guard,
+            idx::BF_CFG => r.bf,
+            idx::RESTORE_CFG => r.restore,
+            idx::STATUS => {
+                r.reset_mode as u32
+                    | (self.dec.decoupled as u32) << 1
+                    | (self.trk.ack_window() as u32) << 2
+                    | (self.trk.state as u32) << 4
+                    | (self.enabled as u32) << 16
+            }
+            idx::INT_STATUS => r.int_status,
+            idx::INT_ENABLE => r.int_enable,
+            idx::STATS => self.trk.frames as u32 | (self.trk.errors as u32) << 16,
+            a if a >= idx::PORT0 && ((a - idx::PORT0) as usize) < self.n + self.m => {
+                self.ports[(a - idx::PORT0) as usize].reg()
+            }
+            _ => 0,
+        }
+    }
+
+    /// Apply `inputs` for one clock period, make one rising edge, return the outputs
+    /// right after it.
+    #[inline]
+    pub fn step(&mut self, i: &HubInputs) -> HubOutputs {
+        if i.rst {
+            self.reset();
+        } else {
+            self.edge(i);
+        }
+        self.outputs()
+    }
+
+    /// One edge out of `rst`.
+    #[inline]
+    fn edge(&mut self, i: &HubInputs) {
+        // The registers this edge needs as they are before it.
+        let reset_mode = self.regs.reset_mode;
+        let btl_reset = reset_mode || self.regs.reset_mode_q;
+        let ack_interdep = self.regs.ack_interdep;
+        let btr_before = self.regs.btr;
+        let int_before = self.regs.int_status;
+        let irq = int_before & self.regs.int_enable != 0;
+
+        // Wishbone (§D.2): a transaction is taken when the ack register is low.
+        let take = i.wb_cyc && i.wb_stb && !self.regs.wb_ack;
+        let mut fx = WriteEffects::default();
+        if take {
+            fx = self.wishbone(i);
+        } else {
+            self.regs.wb_ack = false;
+            self.regs.wb_dat = 0;
+        }
+        let mut ints = if fx.illegal { int::ILLEGAL } else { 0 };
+
+        // Synchronizers and coupling (§2-§4), on the registers before the edge.
+        let b = self.cpl.coupled_q;
+        let pq = self.cpl.port_q;
+        let decoupled = self.dec.decoupled;
+        let mask_ack = self.trk.ack_window() && ack_interdep && !decoupled;
+        let pins = (i.uplink & self.node_mask) | ((i.sublink_in as u16) << self.n);
+        self.cpl.edge(
+            pins,
+            self.enabled,
+            decoupled,
+            mask_ack,
+            self.node_mask,
+            self.sub_mask,
+        );
+
+        // Bit timing (§5), held in reset by reset_mode | reset_mode_q.
+        self.sample_point = false;
+        if btl_reset {
+            self.btl = Btl::new();
+            self.timing = timing_of(btr_before);
+        } else {
+            let (_, tick) = self.btl.clock(b, self.timing.brp);
+            if tick {
+                let hard_sync_enable = self.trk.state == IDLE_WAIT;
+                if let BtlEvent::Sample(sampled) =
+                    self.btl.tick(b, &self.timing, true, hard_sync_enable)
+                {
+                    self.sample_point = true;
+                    // The guard configuration cannot change at a SAMPLE edge (it
+                    // is written only in reset mode), so `self.regs` holds the
+                    // values before the edge.
+                    ints |= self.sample(sampled, pq);
+                }
+            }
+        }
+
+        // Reset mode: a transparent star (§8).
+        if reset_mode {
+            self.hold_reset_mode();
+        }
+
+        // Commands (§8; they act only outside reset mode): the command wins.
+        if fx.force_decouple | fx.recouple {
+            ints |= self.command(&fx);
+        }
+
+        self.regs.reset_mode_q = reset_mode;
+        self.regs.int_status = (int_before & !fx.w1c) | ints;
+        self.regs.irq = irq;
+    }
+
+    /// A Wishbone transaction taken at this edge: the read data register, or the
+    /// write (decided on the registers before the edge).
+    #[cold]
+    #[inline(never)]
+    fn wishbone(&mut self, i: &HubInputs) -> WriteEffects {
+        let adr = i.wb_adr & 0x3F;
+        self.regs.wb_ack = true;
+        if i.wb_we {
+            let before = self.regs;
+            self.regs.wb_dat = 0;
+            self.regs.write(&before, adr, i.wb_dat_w)
+        } else {
+            self.regs.wb_dat = self.read(adr);
+            WriteEffects::default()
+        }
+    }
+
+    /// `CTRL.force_decouple` / `CTRL.recouple` acting at this edge; returns the
+    /// `INT_STATUS` events.
+    #[cold]
+    #[inline(never)]
+    fn command(&mut self, fx: &WriteEffects) -> u32 {
+        let mut ints = 0;
+        if fx.force_decouple {
+            self.dec.force();
+            ints |= int::DECOUPLED;
+        }
+        if fx.recouple {
+            self.dec.recouple();
+            for g in self.ports[self.n..self.n + self.m].iter_mut() {
+                g.enabled = true;
+                g.restore_cnt = 0;
+                g.silent = 0;
+                g.pec = 0;
+            }
+            self.update_enabled();
+        }
+        ints
+    }
+
+    /// A SAMPLE edge: tracker, guards, decoupling. `b` = the sampled bus value,
+    /// `pq` = `port_q` before the edge. Returns the `INT_STATUS` events.
+    fn sample(&mut self, b: bool, pq: u16) -> u32 {
+        let r = &self.regs;
+        let decouple_bits = r.decouple_bits();
+        let ev = self.trk.sample(b);
+        let any_sub_enabled = self.enabled & self.sub_mask != 0;
+        let decoupled = self.dec.decoupled;
+        let node = Limits {
+            sd: r.sd_run_up(),
+            bf: r.bf_up(),
+            sr_frames: r.sr_frames(),
+            restore_bits: r.restore_bits(),
+            node: true,
+        };
+        let sub = Limits {
+            sd: r.sd_run_sub(),
+            bf: r.bf_sub(),
+            node: false,
+            ..node
+        };
+        // While decoupled the sublink guards are frozen.
+        let ports = if decoupled { self.n } else { self.n + self.m };
+        let mut ints = 0;
+        for (p, g) in self.ports[..ports].iter_mut().enumerate() {
+            let lim = if p < self.n { &node } else { &sub };
+            let e = g.sample((pq >> p) & 1 != 0, b, ev, lim);
+            if e.isolated {
+                ints |= int::ISOLATION;
+            }
+            if e.restored {
+                ints |= int::RESTORATION;
+            }
+        }
+        self.update_enabled();
+        if self.dec.sample(any_sub_enabled, decouple_bits) {
+            ints |= int::DECOUPLED;
+        }
+        ints
+    }
+
+    /// The outputs after the last edge.
+    #[inline]
+    pub fn outputs(&self) -> HubOutputs {
+        HubOutputs {
+            wb_ack: self.regs.wb_ack,
+            wb_dat_r: self.regs.wb_dat,
+            irq: self.regs.irq,
+            downlink: if self.cpl.downlink { self.node_mask } else { 0 },
+            sublink_out: if self.cpl.sublink_out {
+                (self.sub_mask >> self.n) as u8
+            } else {
+                0
+            },
+            probes: HubProbes {
+                coupled: self.cpl.coupled_q,
+                sample_point: self.sample_point,
+                trk_state: self.trk.state,
+                ack_window: self.trk.ack_window(),
+                decoupled: self.dec.decoupled,
+                port_enabled: self.enabled,
+            },
+        }
+    }
+
+    /// The guard registers of port `p` (node ports `0..N`, sublinks `N..N+M`).
+    pub fn port(&self, p: usize) -> &PortGuard {
+        &self.ports[p]
+    }
+
+    /// The tracker (state and `STATS` counters).
+    pub fn tracker(&self) -> &Tracker {
+        &self.trk
+    }
+
+    /// `no_twin` and `decoupled`.
+    pub fn decoupler(&self) -> &Decoupler {
+        &self.dec
+    }
+}

@@ -61,13 +61,13 @@ impl HubStim {
             (2, (4 << 6) | (1 << 10) | (rng.below(2) as u32) << 13), // BTR: 8 tq, SJW 1 or 2
             (
                 3,
-                14 + rng.below(4) as u32
-                    | (14 + rng.below(6) as u32) << 8
-                    | (1 + rng.below(4) as u32) << 16,
+                (14 + rng.below(4) as u32)
+                    | ((14 + rng.below(6) as u32) << 8)
+                    | ((1 + rng.below(4) as u32) << 16),
             ),
             (
                 4,
-                8 + rng.below(24) as u32 | (8 + rng.below(40) as u32) << 8,
+                (8 + rng.below(24) as u32) | ((8 + rng.below(40) as u32) << 8),
             ),
             (5, restore | decouple << 16),
             (8, 0xF),
@@ -212,7 +212,7 @@ impl HubStim {
                     PortFault::StuckDominant => false,
                     PortFault::StuckRecessive => true,
                     PortFault::Flip => {
-                        if (left / STIM_CLOCKS_PER_BIT) % 5 == 0 {
+                        if (left / STIM_CLOCKS_PER_BIT).is_multiple_of(5) {
                             !v
                         } else {
                             v

@@ -58,7 +58,7 @@ impl Default for HubConfig {
     /// The contract's reset values, with guarding switched on.
     fn default() -> Self {
         HubConfig {
-            btr: 0x0000_0000 | (4 << 6) | (1 << 10),
+            btr: (4 << 6) | (1 << 10),
             ack_interdep: true,
             sd_run_up: 14,
             sd_run_sub: 16,

@@ -942,9 +942,12 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     reg  [15:0] stall_q__d;
     wire  [15:0] stall_q__q;
     reg  stall_q__clock;
-    reg  [15:0] probe_q__d;
-    wire  [15:0] probe_q__q;
-    reg  probe_q__clock;
+    reg  [15:0] left_q__d;
+    wire  [15:0] left_q__q;
+    reg  left_q__clock;
+    reg  done_q__d;
+    wire  done_q__q;
+    reg  done_q__clock;
     reg  [3:0] causes_q__d;
     wire  [3:0] causes_q__q;
     reg  causes_q__clock;
@@ -979,10 +982,15 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         .q(stall_q__q),
         .clock(stall_q__clock)
     );
-    drcc__aux_a__probe_q probe_q(
-        .d(probe_q__d),
-        .q(probe_q__q),
-        .clock(probe_q__clock)
+    drcc__aux_a__left_q left_q(
+        .d(left_q__d),
+        .q(left_q__q),
+        .clock(left_q__clock)
+    );
+    drcc__aux_a__done_q done_q(
+        .d(done_q__d),
+        .q(done_q__q),
+        .clock(done_q__clock)
     );
     drcc__aux_a__causes_q causes_q(
         .d(causes_q__d),
@@ -1005,19 +1013,22 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         st__clock = clk;
         fail_q__clock = clk;
         stall_q__clock = clk;
-        probe_q__clock = clk;
+        left_q__clock = clk;
+        done_q__clock = clk;
         causes_q__clock = clk;
         failures_q__clock = clk;
         recoveries_q__clock = clk;
         st__d = st__q;
         fail_q__d = fail_q__q;
         stall_q__d = stall_q__q;
-        probe_q__d = probe_q__q;
+        left_q__d = left_q__q;
+        done_q__d = done_q__q;
         causes_q__d = causes_q__q;
         failures_q__d = failures_q__q;
         recoveries_q__d = recoveries_q__q;
         st__d = st__q;
-        probe_q__d = probe_q__q;
+        left_q__d = left_q__q;
+        done_q__d = done_q__q;
         causes_q__d = causes_q__q;
         failures_q__d = failures_q__q;
         recoveries_q__d = recoveries_q__q;
@@ -1066,16 +1077,19 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         end
         else if (st__q == s_restart) begin
             st__d = s_probation;
-            probe_q__d = zero16;
+            left_q__d = rb_eff;
+            done_q__d = 1'b0;
         end
         else begin
             if (err_valid) begin
-                probe_q__d = zero16;
+                left_q__d = rb_eff;
+                done_q__d = 1'b0;
             end
             else if (sample_point) begin
-                probe_q__d = probe_q__q + one16;
+                left_q__d = left_q__q - one16;
+                done_q__d = left_q__q == one16;
             end
-            if (probe_q__q >= rb_eff) begin
+            if (done_q__q) begin
                 st__d = s_valid;
                 if (recoveries_q__q != max8) begin
                     recoveries_q__d = recoveries_q__q + one8;
@@ -1087,7 +1101,8 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             st__d = s_valid;
             fail_q__d = zero4;
             stall_q__d = zero16;
-            probe_q__d = zero16;
+            left_q__d = rb_eff;
+            done_q__d = 1'b0;
             causes_q__d = zero4;
             fail_evt = 1'b0;
             recover_evt = 1'b0;
@@ -1124,6 +1139,22 @@ module drcc__aux_a__causes_q(d,q,clock);
 endmodule // drcc__aux_a__causes_q
 
 
+module drcc__aux_a__done_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__aux_a__done_q
+
+
 module drcc__aux_a__fail_q(d,q,clock);
     
     // Module arguments
@@ -1156,7 +1187,7 @@ module drcc__aux_a__failures_q(d,q,clock);
 endmodule // drcc__aux_a__failures_q
 
 
-module drcc__aux_a__probe_q(d,q,clock);
+module drcc__aux_a__left_q(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1169,7 +1200,7 @@ module drcc__aux_a__probe_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__aux_a__probe_q
+endmodule // drcc__aux_a__left_q
 
 
 module drcc__aux_a__recoveries_q(d,q,clock);
@@ -1278,9 +1309,12 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     reg  [15:0] stall_q__d;
     wire  [15:0] stall_q__q;
     reg  stall_q__clock;
-    reg  [15:0] probe_q__d;
-    wire  [15:0] probe_q__q;
-    reg  probe_q__clock;
+    reg  [15:0] left_q__d;
+    wire  [15:0] left_q__q;
+    reg  left_q__clock;
+    reg  done_q__d;
+    wire  done_q__q;
+    reg  done_q__clock;
     reg  [3:0] causes_q__d;
     wire  [3:0] causes_q__q;
     reg  causes_q__clock;
@@ -1315,10 +1349,15 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         .q(stall_q__q),
         .clock(stall_q__clock)
     );
-    drcc__aux_b__probe_q probe_q(
-        .d(probe_q__d),
-        .q(probe_q__q),
-        .clock(probe_q__clock)
+    drcc__aux_b__left_q left_q(
+        .d(left_q__d),
+        .q(left_q__q),
+        .clock(left_q__clock)
+    );
+    drcc__aux_b__done_q done_q(
+        .d(done_q__d),
+        .q(done_q__q),
+        .clock(done_q__clock)
     );
     drcc__aux_b__causes_q causes_q(
         .d(causes_q__d),
@@ -1341,19 +1380,22 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         st__clock = clk;
         fail_q__clock = clk;
         stall_q__clock = clk;
-        probe_q__clock = clk;
+        left_q__clock = clk;
+        done_q__clock = clk;
         causes_q__clock = clk;
         failures_q__clock = clk;
         recoveries_q__clock = clk;
         st__d = st__q;
         fail_q__d = fail_q__q;
         stall_q__d = stall_q__q;
-        probe_q__d = probe_q__q;
+        left_q__d = left_q__q;
+        done_q__d = done_q__q;
         causes_q__d = causes_q__q;
         failures_q__d = failures_q__q;
         recoveries_q__d = recoveries_q__q;
         st__d = st__q;
-        probe_q__d = probe_q__q;
+        left_q__d = left_q__q;
+        done_q__d = done_q__q;
         causes_q__d = causes_q__q;
         failures_q__d = failures_q__q;
         recoveries_q__d = recoveries_q__q;
@@ -1402,16 +1444,19 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         end
         else if (st__q == s_restart) begin
             st__d = s_probation;
-            probe_q__d = zero16;
+            left_q__d = rb_eff;
+            done_q__d = 1'b0;
         end
         else begin
             if (err_valid) begin
-                probe_q__d = zero16;
+                left_q__d = rb_eff;
+                done_q__d = 1'b0;
             end
             else if (sample_point) begin
-                probe_q__d = probe_q__q + one16;
+                left_q__d = left_q__q - one16;
+                done_q__d = left_q__q == one16;
             end
-            if (probe_q__q >= rb_eff) begin
+            if (done_q__q) begin
                 st__d = s_valid;
                 if (recoveries_q__q != max8) begin
                     recoveries_q__d = recoveries_q__q + one8;
@@ -1423,7 +1468,8 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             st__d = s_valid;
             fail_q__d = zero4;
             stall_q__d = zero16;
-            probe_q__d = zero16;
+            left_q__d = rb_eff;
+            done_q__d = 1'b0;
             causes_q__d = zero4;
             fail_evt = 1'b0;
             recover_evt = 1'b0;
@@ -1460,6 +1506,22 @@ module drcc__aux_b__causes_q(d,q,clock);
 endmodule // drcc__aux_b__causes_q
 
 
+module drcc__aux_b__done_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__aux_b__done_q
+
+
 module drcc__aux_b__fail_q(d,q,clock);
     
     // Module arguments
@@ -1492,7 +1554,7 @@ module drcc__aux_b__failures_q(d,q,clock);
 endmodule // drcc__aux_b__failures_q
 
 
-module drcc__aux_b__probe_q(d,q,clock);
+module drcc__aux_b__left_q(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1505,7 +1567,7 @@ module drcc__aux_b__probe_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__aux_b__probe_q
+endmodule // drcc__aux_b__left_q
 
 
 module drcc__aux_b__recoveries_q(d,q,clock);
@@ -13584,10 +13646,17 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  hist__clk;
     reg  [4:0] hist__read_address;
     reg  hist__read_enable;
-    wire  [115:0] hist__read_data;
+    wire  [99:0] hist__read_data;
     reg  [4:0] hist__write_address;
-    reg  [115:0] hist__write_data;
+    reg  [99:0] hist__write_data;
     reg  hist__write_enable;
+    reg  hist_ts__clk;
+    reg  [4:0] hist_ts__read_address;
+    reg  hist_ts__read_enable;
+    wire  [15:0] hist_ts__read_data;
+    reg  [4:0] hist_ts__write_address;
+    reg  [15:0] hist_ts__write_data;
+    reg  hist_ts__write_enable;
     reg  [1:0] w_state__d;
     wire  [1:0] w_state__q;
     reg  w_state__clock;
@@ -13618,6 +13687,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [4:0] hist_ptr__d;
     wire  [4:0] hist_ptr__q;
     reg  hist_ptr__clock;
+    reg  exp_q__d;
+    wire  exp_q__q;
+    reg  exp_q__clock;
     reg  [14:0] hist_idle__d;
     wire  [14:0] hist_idle__q;
     reg  hist_idle__clock;
@@ -13644,6 +13716,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  e_hv;
     reg  e_hu;
     reg  e_expired;
+    reg  e_gt;
+    reg  e_ge;
     reg  e_keep;
     reg  [4:0] slot;
     reg  [4:0] mask_e;
@@ -13660,6 +13734,15 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .write_address(hist__write_address),
         .write_data(hist__write_data),
         .write_enable(hist__write_enable)
+    );
+    drcc__rxw__hist_ts hist_ts(
+        .clk(hist_ts__clk),
+        .read_address(hist_ts__read_address),
+        .read_enable(hist_ts__read_enable),
+        .read_data(hist_ts__read_data),
+        .write_address(hist_ts__write_address),
+        .write_data(hist_ts__write_data),
+        .write_enable(hist_ts__write_enable)
     );
     drcc__rxw__w_state w_state(
         .d(w_state__d),
@@ -13711,6 +13794,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .q(hist_ptr__q),
         .clock(hist_ptr__clock)
     );
+    drcc__rxw__exp_q exp_q(
+        .d(exp_q__d),
+        .q(exp_q__q),
+        .clock(exp_q__clock)
+    );
     drcc__rxw__hist_idle hist_idle(
         .d(hist_idle__d),
         .q(hist_idle__q),
@@ -13749,6 +13837,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         free_found__clock = clk;
         free_e__clock = clk;
         hist_ptr__clock = clk;
+        exp_q__clock = clk;
         hist_idle__clock = clk;
         hv__clock = clk;
         hu__clock = clk;
@@ -13764,6 +13853,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         free_found__d = free_found__q;
         free_e__d = free_e__q;
         hist_ptr__d = hist_ptr__q;
+        exp_q__d = exp_q__q;
         hist_idle__d = hist_idle__q;
         hv__d = hv__q;
         hu__d = hu__q;
@@ -13771,6 +13861,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         overruns_q__d = overruns_q__q;
         hist__clk = clk;
         hist__read_enable = 1'b1;
+        hist_ts__clk = clk;
+        hist_ts__read_enable = 1'b1;
         if (sel__q) begin
             frame_sel = frame_b;
         end
@@ -13791,18 +13883,35 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             mask_e = slot;
         end
         mask = one32 << mask_e;
-        e_ts = hist__read_data[(32'h0)+:(16)];
-        e_ch = hist__read_data[32'h10];
-        e_frame = hist__read_data[(32'h11)+:(99)];
+        e_ch = hist__read_data[32'h0];
+        e_frame = hist__read_data[(32'h1)+:(99)];
+        e_ts = hist_ts__read_data;
         e_age = now - e_ts;
+        e_gt = e_age > ((window) & 16'hffff);
+        e_ge = e_age >= ((window) & 16'hffff);
+        if (tick) begin
+            exp_q__d = e_ge & (e_age != max16);
+        end
+        else begin
+            exp_q__d = e_gt;
+        end
         e_hv = hv__q[32'h0];
         e_hu = hu__q[32'h0];
-        e_expired = e_age > ((window) & 16'hffff);
+        e_expired = exp_q__q;
         fifo_full = fifo_count == full6;
         hist__read_address = scan_i__q[(32'h0)+:(5)];
         hist__write_enable = 1'b0;
         hist__write_address = slot;
-        hist__write_data = (((frame_sel) & 116'hfffffffffffffffffffffffffffff) << 32'h11) | (((sel__q) & 116'hfffffffffffffffffffffffffffff) << 32'h10) | ((now) & 116'hfffffffffffffffffffffffffffff);
+        hist__write_data = (((frame_sel) & 100'hfffffffffffffffffffffffff) << 32'h1) | ((sel__q) & 100'hfffffffffffffffffffffffff);
+        if (w_state__q == s_scan) begin
+            hist_ts__read_address = scan_i__q[(32'h0)+:(5)] + one5;
+        end
+        else begin
+            hist_ts__read_address = zero5;
+        end
+        hist_ts__write_enable = 1'b0;
+        hist_ts__write_address = slot;
+        hist_ts__write_data = now;
         fifo_wr = 1'b0;
         fifo_data = (((sel__q) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 100'hfffffffffffffffffffffffff);
         rx_evt = 1'b0;
@@ -13897,6 +14006,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             end
             if (dedup_on) begin
                 hist__write_enable = 1'b1;
+                hist_ts__write_enable = 1'b1;
                 hv__d = hv_base | mask;
                 hu__d = hu__q & ~mask;
                 if (~free_found__q) begin
@@ -13929,6 +14039,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             rx_evt = 1'b0;
             overrun_evt = 1'b0;
             hist__write_enable = 1'b0;
+            hist_ts__write_enable = 1'b0;
             dups_q__d = dups_q__q;
             overruns_q__d = overruns_q__q;
         end
@@ -13957,6 +14068,22 @@ module drcc__rxw__dups_q(d,q,clock);
     end
           
 endmodule // drcc__rxw__dups_q
+
+
+module drcc__rxw__exp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__exp_q
 
 
 module drcc__rxw__free_e(d,q,clock);
@@ -13997,14 +14124,14 @@ module drcc__rxw__hist(clk,read_address,read_enable,read_data,write_address,writ
     input wire  clk;
     input wire  [4:0] read_address;
     input wire  read_enable;
-    output reg  [115:0] read_data;
+    output reg  [99:0] read_data;
     input wire  [4:0] write_address;
-    input wire  [115:0] write_data;
+    input wire  [99:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     (* no_rw_check *)
-    reg[115:0] mem[31:0];
+    reg[99:0] mem[31:0];
     
     always @(posedge clk) begin
        if (read_enable) begin
@@ -14051,6 +14178,36 @@ module drcc__rxw__hist_ptr(d,q,clock);
     end
           
 endmodule // drcc__rxw__hist_ptr
+
+
+module drcc__rxw__hist_ts(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [4:0] read_address;
+    input wire  read_enable;
+    output reg  [15:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[15:0] mem[31:0];
+    
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+    
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // drcc__rxw__hist_ts
 
 
 module drcc__rxw__hit(d,q,clock);

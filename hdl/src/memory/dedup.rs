@@ -2,14 +2,26 @@
 //! `rx_valid` pulse sets `rxp_a` / `rxp_b`; the writer FSM (`w_state`: idle 0,
 //! scan 1, decide 2, write 3) takes A before B, and in redundancy mode with a
 //! non-zero window scans the 32-entry history (a synchronous RAM of 32 x 116 bits:
-//! [115:17] frame, [16] channel, [15:0] timestamp `now`) for an identical frame
+//! [115:17] frame, [16] channel, [15:0] timestamp `now`; stored as two RAMs, see
+//! below) for an identical frame
 //! delivered from the other channel at most `window` bit times earlier that has
 //! not already cancelled a copy; such a frame is dropped as a duplicate.
 //! Otherwise the frame is written to the RX FIFO (or counted as an overrun when
 //! the FIFO is full) and recorded in the history.
 //!
 //! scan (33 clocks, `scan_i` 0..32): history read address = `scan_i[4:0]`; at the
-//! edge with `scan_i = i >= 1` the read data is entry `i - 1`. The first free
+//! edge with `scan_i = i >= 1` the read data is entry `i - 1`.
+//!
+//! Timing (iCE40 Fmax): the timestamps live in a RAM of their own (`hist_ts`,
+//! 32 x 16; the frames and channels in `hist`, 32 x 100: the same 8 block RAMs),
+//! read one entry ahead (address `scan_i + 1` in scan, 0 elsewhere, so entry 0 is
+//! loaded at the idle -> scan edge). Entry `e`'s expiry `age > window` is thus
+//! computed a clock early, for the `now` of the judging edge (`now + tick`:
+//! `now` counts `tick`s and only clears with `clear`, which also ends the scan;
+//! `window` is cfg, written only in reset mode = `clear`), and registered in
+//! `exp_q`. This takes the 16-bit subtraction and compare off the RAM -> `hit` /
+//! `free_found` path. A write is always followed by an idle edge, which reloads
+//! address 0, so a colliding `hist_ts` read is never observed either. The first free
 //! entry (not valid, already used, or expired) seen by the scan is where the new
 //! frame is recorded; with all 32 live, the round-robin `hist_ptr` is the victim.
 //!
@@ -54,7 +66,8 @@ pub struct RxWriter {
     pub duplicates: Signal<Out, Bits<16>>,
     pub overruns: Signal<Out, Bits<16>>,
     // history
-    hist: Bram<Bits<116>, 5>,
+    hist: Bram<Bits<100>, 5>,
+    hist_ts: Bram<Bits<16>, 5>,
     // registers
     w_state: DFF<Bits<2>>,
     rxp_a: DFF<Bit>,
@@ -66,6 +79,7 @@ pub struct RxWriter {
     free_found: DFF<Bit>,
     free_e: DFF<Bits<5>>,
     hist_ptr: DFF<Bits<5>>,
+    exp_q: DFF<Bit>,
     hist_idle: DFF<Bits<15>>,
     hv: DFF<Bits<32>>,
     hu: DFF<Bits<32>>,
@@ -81,6 +95,8 @@ pub struct RxWriter {
     e_hv: Signal<Local, Bit>,
     e_hu: Signal<Local, Bit>,
     e_expired: Signal<Local, Bit>,
+    e_gt: Signal<Local, Bit>,
+    e_ge: Signal<Local, Bit>,
     e_keep: Signal<Local, Bit>,
     slot: Signal<Local, Bits<5>>,
     mask_e: Signal<Local, Bits<5>>,
@@ -130,6 +146,7 @@ impl Default for RxWriter {
             duplicates: Default::default(),
             overruns: Default::default(),
             hist: Default::default(),
+            hist_ts: Default::default(),
             w_state: Default::default(),
             rxp_a: Default::default(),
             rxp_b: Default::default(),
@@ -140,6 +157,7 @@ impl Default for RxWriter {
             free_found: Default::default(),
             free_e: Default::default(),
             hist_ptr: Default::default(),
+            exp_q: Default::default(),
             hist_idle: Default::default(),
             hv: Default::default(),
             hu: Default::default(),
@@ -154,6 +172,8 @@ impl Default for RxWriter {
             e_hv: Default::default(),
             e_hu: Default::default(),
             e_expired: Default::default(),
+            e_gt: Default::default(),
+            e_ge: Default::default(),
             e_keep: Default::default(),
             slot: Default::default(),
             mask_e: Default::default(),
@@ -187,10 +207,12 @@ impl Logic for RxWriter {
     fn update(&mut self) {
         dff_setup!(
             self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, free_found, free_e,
-            hist_ptr, hist_idle, hv, hu, dups_q, overruns_q
+            hist_ptr, exp_q, hist_idle, hv, hu, dups_q, overruns_q
         );
         self.hist.clk.next = self.clk.val();
         self.hist.read_enable.next = true;
+        self.hist_ts.clk.next = self.clk.val();
+        self.hist_ts.read_enable.next = true;
 
         // the frame being processed, and the history entry being read
         if self.sel.q.val() {
@@ -212,22 +234,40 @@ impl Logic for RxWriter {
             self.mask_e.next = self.slot.val();
         }
         self.mask.next = self.one32.val() << self.mask_e.val();
-        self.e_ts.next = self.hist.read_data.val().get_bits::<16>(0);
-        self.e_ch.next = self.hist.read_data.val().get_bit(16);
-        self.e_frame.next = self.hist.read_data.val().get_bits::<99>(17);
+        self.e_ch.next = self.hist.read_data.val().get_bit(0);
+        self.e_frame.next = self.hist.read_data.val().get_bits::<99>(1);
+        // timing: expiry one clock ahead (module doc). In scan, e_ts is the entry
+        // judged at the next edge, when now will be now + tick:
+        // (age + 1) mod 2^16 > window <=> age >= window && age != 0xFFFF.
+        self.e_ts.next = self.hist_ts.read_data.val();
         self.e_age.next = self.now.val() - self.e_ts.val();
+        self.e_gt.next = self.e_age.val() > bit_cast::<16, 15>(self.window.val());
+        self.e_ge.next = self.e_age.val() >= bit_cast::<16, 15>(self.window.val());
+        if self.tick.val() {
+            self.exp_q.d.next = self.e_ge.val() & (self.e_age.val() != self.max16.val());
+        } else {
+            self.exp_q.d.next = self.e_gt.val();
+        }
         // in scan, entry scan_e has been rotated into bit 0
         self.e_hv.next = self.hv.q.val().get_bit(0);
         self.e_hu.next = self.hu.q.val().get_bit(0);
-        self.e_expired.next = self.e_age.val() > bit_cast::<16, 15>(self.window.val());
+        self.e_expired.next = self.exp_q.q.val();
         self.fifo_full.next = self.fifo_count.val() == self.full6.val();
 
         self.hist.read_address.next = self.scan_i.q.val().get_bits::<5>(0);
         self.hist.write_enable.next = false;
         self.hist.write_address.next = self.slot.val();
-        self.hist.write_data.next = (bit_cast::<116, 99>(self.frame_sel.val()) << 17)
-            | (bit_cast::<116, 1>(self.sel.q.val().into()) << 16)
-            | bit_cast::<116, 16>(self.now.val());
+        self.hist.write_data.next = (bit_cast::<100, 99>(self.frame_sel.val()) << 1)
+            | bit_cast::<100, 1>(self.sel.q.val().into());
+        // one entry ahead of `hist` (module doc)
+        if self.w_state.q.val() == self.s_scan.val() {
+            self.hist_ts.read_address.next = self.scan_i.q.val().get_bits::<5>(0) + self.one5.val();
+        } else {
+            self.hist_ts.read_address.next = self.zero5.val();
+        }
+        self.hist_ts.write_enable.next = false;
+        self.hist_ts.write_address.next = self.slot.val();
+        self.hist_ts.write_data.next = self.now.val();
         self.fifo_wr.next = false;
         self.fifo_data.next = (bit_cast::<100, 1>(self.sel.q.val().into()) << 99)
             | bit_cast::<100, 99>(self.frame_sel.val());
@@ -335,6 +375,7 @@ impl Logic for RxWriter {
             }
             if self.dedup_on.val() {
                 self.hist.write_enable.next = true;
+                self.hist_ts.write_enable.next = true;
                 self.hv.d.next = self.hv_base.val() | self.mask.val();
                 self.hu.d.next = self.hu.q.val() & !self.mask.val();
                 if !self.free_found.q.val() {
@@ -369,6 +410,7 @@ impl Logic for RxWriter {
             self.rx_evt.next = false;
             self.overrun_evt.next = false;
             self.hist.write_enable.next = false;
+            self.hist_ts.write_enable.next = false;
             self.dups_q.d.next = self.dups_q.q.val();
             self.overruns_q.d.next = self.overruns_q.q.val();
         }

@@ -10,6 +10,16 @@
 //!   (`chan_rst`: it re-integrates with the bus as after power-up).
 //! - probation -> valid after `recovery_bits` error-free sample points.
 //!
+//! Timing (iCE40 Fmax): the contract's `probe_cnt >= recovery_bits` (0 treated
+//! as 1) is implemented as a down counter `left_q` = `rb_eff - probe_cnt` with a
+//! registered `left_q == 0` flag (`done_q`), so no 16-bit compare against the
+//! configuration sits in front of the recovery event and the STATS1 counter.
+//! Identical at every clock: `recovery_bits` is cfg (writable only in reset
+//! mode, when `hold` keeps this FSM in valid), so it is constant from `restart`
+//! to the end of probation; there `probe_cnt` starts at 0, grows by at most 1
+//! per clock and the FSM leaves as soon as it reaches `rb_eff` >= 1, so
+//! `probe_cnt <= rb_eff` and `probe_cnt >= rb_eff` <=> `left_q == 0`.
+//!
 //! While `hold` (normal or reset mode) it sits in valid with the working counters
 //! and cause bits cleared; `failures` and `recoveries` clear with `rst` only.
 
@@ -51,7 +61,8 @@ pub struct AuxFsm {
     st: DFF<Bits<2>>,
     fail_q: DFF<Bits<4>>,
     stall_q: DFF<Bits<16>>,
-    probe_q: DFF<Bits<16>>,
+    left_q: DFF<Bits<16>>,
+    done_q: DFF<Bit>,
     causes_q: DFF<Bits<4>>,
     failures_q: DFF<Bits<8>>,
     recoveries_q: DFF<Bits<8>>,
@@ -113,7 +124,8 @@ impl Default for AuxFsm {
             st: Default::default(),
             fail_q: Default::default(),
             stall_q: Default::default(),
-            probe_q: Default::default(),
+            left_q: Default::default(),
+            done_q: Default::default(),
             causes_q: Default::default(),
             failures_q: Default::default(),
             recoveries_q: Default::default(),
@@ -154,13 +166,15 @@ impl Logic for AuxFsm {
             st,
             fail_q,
             stall_q,
-            probe_q,
+            left_q,
+            done_q,
             causes_q,
             failures_q,
             recoveries_q
         );
         self.st.d.next = self.st.q.val();
-        self.probe_q.d.next = self.probe_q.q.val();
+        self.left_q.d.next = self.left_q.q.val();
+        self.done_q.d.next = self.done_q.q.val();
         self.causes_q.d.next = self.causes_q.q.val();
         self.failures_q.d.next = self.failures_q.q.val();
         self.recoveries_q.d.next = self.recoveries_q.q.val();
@@ -224,15 +238,21 @@ impl Logic for AuxFsm {
             }
         } else if self.st.q.val() == self.s_restart.val() {
             self.st.d.next = self.s_probation.val();
-            self.probe_q.d.next = self.zero16.val();
+            // probe_cnt <= 0 (see the module doc: left = rb_eff - probe_cnt)
+            self.left_q.d.next = self.rb_eff.val();
+            self.done_q.d.next = false;
         } else {
             // probation
             if self.err_valid.val() {
-                self.probe_q.d.next = self.zero16.val();
+                self.left_q.d.next = self.rb_eff.val();
+                self.done_q.d.next = false;
             } else if self.sample_point.val() {
-                self.probe_q.d.next = self.probe_q.q.val() + self.one16.val();
+                // timing: the flag is precomputed one clock ahead
+                self.left_q.d.next = self.left_q.q.val() - self.one16.val();
+                self.done_q.d.next = self.left_q.q.val() == self.one16.val();
             }
-            if self.probe_q.q.val() >= self.rb_eff.val() {
+            // probe_cnt >= rb_eff (registered: off the critical path)
+            if self.done_q.q.val() {
                 self.st.d.next = self.s_valid.val();
                 if self.recoveries_q.q.val() != self.max8.val() {
                     self.recoveries_q.d.next = self.recoveries_q.q.val() + self.one8.val();
@@ -245,7 +265,8 @@ impl Logic for AuxFsm {
             self.st.d.next = self.s_valid.val();
             self.fail_q.d.next = self.zero4.val();
             self.stall_q.d.next = self.zero16.val();
-            self.probe_q.d.next = self.zero16.val();
+            self.left_q.d.next = self.rb_eff.val();
+            self.done_q.d.next = false;
             self.causes_q.d.next = self.zero4.val();
             self.fail_evt.next = false;
             self.recover_evt.next = false;

@@ -6,14 +6,21 @@
 //! - `1 channel`: one node sending random frames that nobody acknowledges (ACK
 //!   errors, error frames, retransmissions: the channel is busy all the time),
 //! - `3-node system`: three nodes exchanging random traffic with contested
-//!   arbitration (cycles of the system: three channels per cycle).
+//!   arbitration (cycles of the system: three channels per cycle),
+//! - `hub 4x2`: one ReCANcentrate hub (4 node ports, 2 interlinks) on the random
+//!   stimulus of its co-simulation test (frames, ACKs, faulty ports, register
+//!   traffic).
 
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
+use drcc_cosim::engine::hub::HubOutputs;
+
 use crate::engines::{make_engine, EngineKind};
+use crate::hub_stim::HubStim;
 use crate::random::Traffic;
 use crate::run::build_system_with;
+use crate::star::{hub_engine, HUB_M, HUB_N};
 
 /// One measurement.
 #[derive(Clone, Debug)]
@@ -66,6 +73,36 @@ pub fn measure(
     Ok(Measurement {
         engine,
         workload,
+        cycles,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// Runs one hub (N = 4, M = 2) on `engine` with the co-simulation test's random
+/// stimulus for about `budget`.
+pub fn measure_hub(
+    engine: EngineKind,
+    budget: Duration,
+    max_cycles: u64,
+) -> Result<Measurement, String> {
+    let mut hub = hub_engine(engine, HUB_N, HUB_M)?;
+    let mut stim = HubStim::new(0xD_CC, HUB_N, HUB_M);
+    let mut prev = HubOutputs::default();
+    let start = Instant::now();
+    let mut cycles = 0u64;
+    loop {
+        for _ in 0..1000 {
+            let i = stim.next(&prev);
+            prev = hub.step(&i);
+        }
+        cycles += 1000;
+        if cycles >= max_cycles || start.elapsed() >= budget {
+            break;
+        }
+    }
+    Ok(Measurement {
+        engine,
+        workload: "hub 4x2",
         cycles,
         seconds: start.elapsed().as_secs_f64(),
     })
@@ -142,6 +179,25 @@ pub fn run(out: &mut dyn Write, budget: Duration) -> io::Result<Vec<Measurement>
             .find(|m| m.engine == k && m.workload == w)
             .map(|m| m.rate())
     };
+    let mut hub_rates = Vec::new();
+    for engine in EngineKind::ALL {
+        match measure_hub(engine, budget, 200_000_000) {
+            Ok(m) => hub_rates.push((engine, m.rate())),
+            Err(e) => writeln!(out, "hub 4x2 on {}: not available: {e}", engine.name())?,
+        }
+    }
+    let hub_model = hub_rates
+        .iter()
+        .find(|(e, _)| *e == EngineKind::Model)
+        .map(|(_, r)| *r);
+    let hub_line: Vec<String> = hub_rates
+        .iter()
+        .map(|(e, r)| match hub_model {
+            Some(base) => format!("{} {} ({:.3}x)", e.name(), human(*r), r / base.max(1e-9)),
+            None => format!("{} {}", e.name(), human(*r)),
+        })
+        .collect();
+    writeln!(out, "hub 4x2 (speed vs model): {}", hub_line.join(", "))?;
     for (w, _) in WORKLOADS {
         if let (Some(v), Some(r)) = (rate(EngineKind::Verilator, w), rate(EngineKind::RustHdl, w)) {
             writeln!(

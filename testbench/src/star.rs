@@ -220,9 +220,10 @@ impl StarScenario {
             redundancy: true,
             policy: Policy::KFailed(2),
             dual_tx: false,
-            // Longer than the hubs' restoration time (1408): a node returns to a hub
-            // only after the hub has re-coupled its port; returning earlier would be
-            // a dominant bit on an isolated port, which restarts the restoration.
+            // Longer than the hubs' restoration time (1408), so that a node whose
+            // probation began after the fault ended returns only once the hub has
+            // re-coupled its port; returning earlier is a dominant bit on an isolated
+            // port, which restarts the restoration (docs/hub.md, "Restoration").
             recovery_bits: 2_000,
             stall_limit: 500,
             dedup_window: 2_000,

@@ -106,3 +106,13 @@ pub fn replace_between(text: &str, begin: &str, end: &str, body: &str) -> Result
         .ok_or_else(|| format!("no `{end}` marker after the begin marker"))?;
     Ok(format!("{}\n{}{}", &text[..b], body, &text[e..]))
 }
+
+/// Rewrites the generated block between `begin` and `end` in the file at `path`.
+pub fn rewrite_between(path: &std::path::Path, begin: &str, end: &str, body: &str) -> CliResult {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Error(format!("cannot read {}: {e}", path.display())))?;
+    let new = replace_between(&text, begin, end, body)
+        .map_err(|m| CliError::Error(format!("{}: {m}", path.display())))?;
+    std::fs::write(path, new)
+        .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())))
+}

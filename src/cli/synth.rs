@@ -281,11 +281,7 @@ pub fn run(args: SynthArgs) -> CliResult {
         let doc_path = workspace_path("docs").join("synthesis.md");
         write_file(&doc_path, &doc)?;
         let readme_path = workspace_path("README.md");
-        let readme = std::fs::read_to_string(&readme_path)
-            .map_err(|e| CliError::Error(format!("cannot read {}: {e}", readme_path.display())))?;
-        let new = replace_between_markers(&readme, &table)
-            .map_err(|m| CliError::Error(format!("{}: {m}", readme_path.display())))?;
-        write_file(&readme_path, &new)?;
+        super::rewrite_between(&readme_path, README_BEGIN, README_END, &table)?;
         if !args.json {
             print!("{table}");
             println!(
@@ -1847,11 +1843,6 @@ pub fn markdown_doc(results: &[SynthResult], env: &ToolEnv) -> String {
     s
 }
 
-/// Replaces the text between [`README_BEGIN`] and [`README_END`].
-pub fn replace_between_markers(text: &str, table: &str) -> Result<String, String> {
-    super::replace_between(text, README_BEGIN, README_END, table)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -2052,12 +2043,13 @@ module toy(clk,rst,cfg,rx,tx,rx_valid,rx_data,tx_data,chan_b_rx,chan_b_tx);\n\
     #[test]
     fn markers_are_replaced() {
         let text = format!("head\n{README_BEGIN}\nold\n{README_END}\ntail\n");
-        let new = replace_between_markers(&text, "| new |\n").unwrap();
+        let new =
+            crate::cli::replace_between(&text, README_BEGIN, README_END, "| new |\n").unwrap();
         assert_eq!(
             new,
             format!("head\n{README_BEGIN}\n| new |\n{README_END}\ntail\n")
         );
-        assert!(replace_between_markers("nothing", "x").is_err());
+        assert!(crate::cli::replace_between("nothing", README_BEGIN, README_END, "x").is_err());
     }
 
     #[test]

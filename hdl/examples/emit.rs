@@ -5,6 +5,6 @@ fn main() {
         .unwrap_or_else(|| "can_channel".into());
     match drcc_hdl::tops::emit(&name) {
         Some(v) => print!("{v}"),
-        None => eprintln!("unknown top `{name}`; known: {:?}", drcc_hdl::tops::TOPS),
+        None => eprintln!("unknown top `{name}`; known: {:?}", drcc_hdl::tops::names()),
     }
 }

@@ -1,6 +1,7 @@
 //! drcc-hdl: the DRCC hardware, described in rust-hdl, one block per file.
 pub mod channel;
 pub mod drcc;
+pub mod generated;
 pub mod host;
 pub mod hub;
 pub mod memory;

@@ -10,19 +10,22 @@ use super::{workspace_path, CliError, CliResult};
 
 /// Runs the command.
 pub fn run(out: Option<PathBuf>, check: bool) -> CliResult {
-    let docs = out.clone().unwrap_or_else(|| workspace_path("docs"));
+    let out_flat = out.clone();
     let dir = out.unwrap_or_else(|| workspace_path("rtl-out"));
     let tops = drcc_hdl::tops::emit_all();
-    let extras = vec![
-        (
-            dir.join("drcc_regs.h"),
-            drcc_hdl::host::registers::c_header(),
-        ),
-        (
-            docs.join("registers.md"),
-            drcc_hdl::host::registers::markdown(),
-        ),
-    ];
+    // Repository-relative paths of the other generated files; with `--out DIR`
+    // every file goes flat into DIR.
+    let extras: Vec<(PathBuf, String)> = drcc_hdl::generated::extras()
+        .into_iter()
+        .map(|f| {
+            let rel = Path::new(f.path);
+            let path = match &out_flat {
+                Some(d) => d.join(rel.file_name().expect("generated path has a file name")),
+                None => workspace_path(f.path),
+            };
+            (path, f.text)
+        })
+        .collect();
     if check {
         let verilog = check_dir(&dir, &tops);
         let others = check_files(&extras);

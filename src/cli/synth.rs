@@ -212,7 +212,7 @@ pub struct SynthArgs {
 
 /// Runs the command.
 pub fn run(args: SynthArgs) -> CliResult {
-    let tops: Vec<&'static str> = drcc_hdl::tops::TOPS.to_vec();
+    let tops: Vec<&'static str> = drcc_hdl::tops::names();
     if args.markdown && !args.all {
         return Err(CliError::Error(
             "--markdown regenerates the whole results table: use it with --all".to_string(),

@@ -1,0 +1,26 @@
+//! Every file `drcc generate` writes besides the tops' Verilog: register
+//! documentation, C headers, shim port tables. Each generator lives beside what it
+//! describes; this list is the one place `drcc generate` (and `--check`) reads, so
+//! a new generated file is one entry here.
+
+/// One generated file.
+pub struct GeneratedFile {
+    /// Path relative to the repository root (`rtl-out/...`, `docs/...`).
+    pub path: &'static str,
+    /// Its full text.
+    pub text: String,
+}
+
+/// The generated files other than `rtl-out/<top>.v`, in the order they are written.
+pub fn extras() -> Vec<GeneratedFile> {
+    vec![
+        GeneratedFile {
+            path: "rtl-out/drcc_regs.h",
+            text: crate::host::registers::c_header(),
+        },
+        GeneratedFile {
+            path: "docs/registers.md",
+            text: crate::host::registers::markdown(),
+        },
+    ]
+}

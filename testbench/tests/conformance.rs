@@ -275,9 +275,9 @@ conformance! {
     drcc_fig5_lone_transmitter_verilator => transmitter::drcc_fig5_lone_transmitter;
 }
 
-/// Items where the reference model (and the contract) deviate from ISO 11898-1;
-/// ignored until decided (see docs/conformance.md, "Known deviations"). Run them
-/// with `--ignored`.
+/// The strict ISO 11898-1 checks of two former deviations of the model (see
+/// docs/conformance.md, "Former deviations"); still ignored, they pass on both
+/// engines. Run them with `--ignored`.
 macro_rules! known_deviation {
     ($($model:ident, $verilator:ident => $module:ident :: $func:ident;)*) => {
         $(

@@ -38,7 +38,7 @@ pub struct Drcc {
     pub chan_a_rx: Signal<In, Bit>,
     pub chan_b_tx: Signal<Out, Bit>,
     pub chan_b_rx: Signal<In, Bit>,
-    // paper probes (Table 1, DESIGN.md)
+    // paper probes (Table 1; DRCC contract §1)
     pub state: Signal<Out, Bits<4>>,
     pub tx_channel: Signal<Out, Bit>,
     pub transmission_ack: Signal<Out, Bit>,

@@ -1,4 +1,4 @@
-//! VCD of a dual-bus DRCC system with the DRCC paper's signal names (DESIGN.md,
+//! VCD of a dual-bus DRCC system with the DRCC paper's signal names (`docs/design.md`,
 //! "Redundancy management"): per node `state[3:0]`, `tx_channel`,
 //! `transmission_ack`, `chan_a_transmission_req`, ..., plus the CAN pins and the
 //! two line values. Values change at the rising edge of the clock that produced

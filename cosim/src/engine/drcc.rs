@@ -23,7 +23,7 @@ pub struct DrccInputs {
     pub chan_b_rx: bool,
 }
 
-/// The DRCC probes: the paper's signal names (DESIGN.md) and the channel probes.
+/// The DRCC probes: the paper's signal names (DRCC contract §1) and the channel probes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrccProbes {
     /// Main FSM state, Table 1 encoding (idle1 = 0 .. wait4 = 9).

@@ -5,7 +5,7 @@
 //!
 //! One `step`: with `clk` low, apply the inputs and settle; raise `clk` and
 //! settle; read the outputs (inputs change away from the clock edge, as the
-//! conventions of DESIGN.md require).
+//! conventions of `docs/design.md` require).
 
 use super::{ChannelEngine, ChannelInputs, ChannelOutputs, Diagnostics, Probes};
 use crate::frame::Frame;

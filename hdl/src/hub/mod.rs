@@ -2,7 +2,7 @@
 //! input synchronizers and the two-stage AND coupler, the frame tracker, one
 //! guard per port, the Wishbone register block and the `hub` top.
 pub mod coupler;
-// `hub/hub.rs` is the top, named like the other tops (DESIGN.md layout).
+// `hub/hub.rs` is the top, named like the other tops (`docs/design.md`, layout).
 #[allow(clippy::module_inception)]
 pub mod hub;
 pub mod port_guard;

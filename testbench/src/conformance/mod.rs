@@ -7,14 +7,14 @@
 //!   per-bit records of the IUT's `tx`, probes and host events.
 //! - [`procedures`]: recurring sequences (receive errors, ACK errors, reaching a
 //!   given REC/TEC) with their ISO 11898-1 counter arithmetic.
-//! - [`receiver`], [`transmitter`], [`timing`](mod@timing): one public function per checklist
+//! - [`receiver`], [`transmitter`], [`timing`](mod@timing): one public function per ISO 16845-1
 //!   item (`iso_7_2_5_crc_error_position`, ...), each taking an IUT factory, plus
 //!   [`drcc_fig5_lone_transmitter`] (the DRCC paper's Fig. 5/6 behaviour).
 //!
 //! Expected values come from ISO 11898-1:2015 (frame format, error detection,
 //! 12.1.4.2 counting rules a..l) and the timing contract, never from an engine.
 //! The integration test `tests/conformance.rs` runs every item on the model and on
-//! the Verilated RTL; `docs/conformance.md` maps the checklist to the items.
+//! the Verilated RTL; `docs/conformance.md` lists the ISO 16845-1 items and their tests.
 
 pub mod bits;
 pub mod lower_tester;

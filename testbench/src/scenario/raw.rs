@@ -43,8 +43,8 @@ pub(super) struct RawNodeConfig {
 #[serde(deny_unknown_fields)]
 pub(super) struct RawTiming {
     pub(super) brp: Spanned<i64>,
-    tseg1: Spanned<i64>,
-    tseg2: Spanned<i64>,
+    pub(super) tseg1: Spanned<i64>,
+    pub(super) tseg2: Spanned<i64>,
     pub(super) sjw: Option<Spanned<i64>>,
     #[serde(default)]
     pub(super) triple_sampling: bool,

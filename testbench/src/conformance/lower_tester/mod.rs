@@ -43,7 +43,7 @@ mod records;
 mod report;
 mod script;
 pub use records::*;
-pub use report::*;
+use report::{table, val};
 pub use script::*;
 
 /// A factory of fresh IUTs (the conformance items take one, so each item can start

@@ -26,11 +26,7 @@ pub fn iso_8_3_2_sof_at_intermission_bit_3_tx(iut: &Iut) {
     let f = base(0x332, &[0x33]);
     let fb = FrameBits::new(&f);
     lt.request(f);
-    let r0 = fb.pos(Field::R0, 0);
-    let mut s = Script::new();
-    s.transmit(&fb, 0..r0, false, 2);
-    s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-    exp.tec_add(8);
+    let (mut s, _) = bit_error_at_r0(&mut exp, &fb, 2);
     s.error_flag(true).error_delim();
     s.repeat(2, Lt::R, Some(true), "Intermission");
     s.push(Lt::D, None, "Intermission 3 dominant");
@@ -50,11 +46,7 @@ pub(super) fn tx_flag_bit_error(
     b: usize,
     sof_within: u32,
 ) -> Run {
-    let r0 = fb.pos(Field::R0, 0);
-    let mut s = Script::new();
-    s.transmit(fb, 0..r0, false, sof_within);
-    s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-    exp.tec_add(8);
+    let (mut s, _) = bit_error_at_r0(exp, fb, sof_within);
     assert!(exp.active());
     s.repeat(b - 1, Lt::R, Some(false), "ErrFlag");
     s.push(

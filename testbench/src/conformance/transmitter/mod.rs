@@ -48,6 +48,18 @@ fn send_ok(lt: &mut LowerTester, exp: &mut Expected, frame: &Frame) -> Run {
     tx_ok(lt, exp, &FrameBits::new(frame), 2)
 }
 
+/// The IUT transmits `fb` up to r0 (SOF within `sof_within` bits), which the
+/// tester forces recessive: a bit error (ISO 11898-1 10.11.1), TEC + 8 (12.1.4.2
+/// rule c). Returns the script, to go on with the error flag, and r0's position.
+fn bit_error_at_r0(exp: &mut Expected, fb: &FrameBits, sof_within: u32) -> (Script, usize) {
+    let r0 = fb.pos(Field::R0, 0);
+    let mut s = Script::new();
+    s.transmit(fb, 0..r0, false, sof_within);
+    s.push(Lt::ForceR, Some(false), "r0 forced recessive");
+    exp.tec_add(8);
+    (s, r0)
+}
+
 /// A fresh IUT error passive with TEC `tec` (a multiple of 8, >= 128) and nothing
 /// pending: ACK errors and bit errors on one frame, which then succeeds (TEC - 1).
 fn passive_transmitter(iut: &Iut, tec: u16) -> (LowerTester, Expected) {
@@ -127,11 +139,7 @@ fn tx_error_with_dominant_after(
     dominant_after: usize,
     sof_within: u32,
 ) -> Run {
-    let r0 = fb.pos(Field::R0, 0);
-    let mut s = Script::new();
-    s.transmit(fb, 0..r0, false, sof_within);
-    s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-    exp.tec_add(8);
+    let (mut s, _) = bit_error_at_r0(exp, fb, sof_within);
     s.error_flag(exp.active());
     s.repeat(dominant_after, Lt::D, Some(true), "Dominant after flag");
     for _ in 0..dominant_after / 8 {
@@ -153,11 +161,7 @@ fn tx_delimiter_dominant(
     k: usize,
     sof_within: u32,
 ) -> Run {
-    let r0 = fb.pos(Field::R0, 0);
-    let mut s = Script::new();
-    s.transmit(fb, 0..r0, false, sof_within);
-    s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-    exp.tec_add(8);
+    let (mut s, _) = bit_error_at_r0(exp, fb, sof_within);
     s.error_flag(exp.active());
     s.repeat(k - 1, Lt::R, Some(true), "ErrDelim");
     s.push(Lt::D, Some(true), format!("ErrDelim {k} dominant"));

@@ -12,11 +12,7 @@ pub fn iso_8_5_1_passive_flag_with_active_flag_from_others(iut: &Iut) {
     lt.request(f);
     for late in 0..=5usize {
         lt.set_context(format!("active flag {late} bits late"));
-        let r0 = fb.pos(Field::R0, 0);
-        let mut s = Script::new();
-        s.transmit(&fb, 0..r0, false, if late == 0 { 2 } else { 0 });
-        s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-        exp.tec_add(8);
+        let (mut s, _) = bit_error_at_r0(&mut exp, &fb, if late == 0 { 2 } else { 0 });
         s.repeat(late, Lt::R, Some(true), "PassiveFlag R");
         s.repeat(6, Lt::D, Some(true), "Active flag of others");
         s.error_delim();
@@ -43,11 +39,7 @@ fn passive_error_until_intermission_3(
     fb: &FrameBits,
     sof_within: u32,
 ) -> Script {
-    let r0 = fb.pos(Field::R0, 0);
-    let mut s = Script::new();
-    s.transmit(fb, 0..r0, false, sof_within);
-    s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-    exp.tec_add(8);
+    let (mut s, _) = bit_error_at_r0(exp, fb, sof_within);
     assert!(!exp.active());
     s.passive_flag("PassiveFlag").error_delim();
     s.repeat(2, Lt::R, Some(true), "Intermission");
@@ -284,11 +276,7 @@ pub fn iso_8_5_12_passive_flag_tx_six_equal_bits(iut: &Iut) {
         .enumerate()
     {
         lt.set_context(format!("bits during the passive flag: {p}"));
-        let r0 = fb.pos(Field::R0, 0);
-        let mut s = Script::new();
-        s.transmit(&fb, 0..r0, false, if k == 0 { 2 } else { 0 });
-        s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-        exp.tec_add(8);
+        let (mut s, _) = bit_error_at_r0(&mut exp, &fb, if k == 0 { 2 } else { 0 });
         for (i, c) in p.chars().enumerate() {
             let d = if c == 'D' { Lt::D } else { Lt::R };
             s.push(d, Some(true), format!("PassiveFlag {}", i + 1));
@@ -329,11 +317,7 @@ pub fn iso_8_5_14_retransmission_within_31_bits(iut: &Iut) {
     lt.request(f);
     for late in 0..=6usize {
         lt.set_context(format!("active flag {late} bits late"));
-        let r0 = fb.pos(Field::R0, 0);
-        let mut s = Script::new();
-        s.transmit(&fb, 0..r0, false, if late == 0 { 2 } else { 0 });
-        s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-        exp.tec_add(8);
+        let (mut s, r0) = bit_error_at_r0(&mut exp, &fb, if late == 0 { 2 } else { 0 });
         s.repeat(late, Lt::R, Some(true), "PassiveFlag R");
         s.repeat(6, Lt::D, Some(true), "Active flag of others");
         s.error_delim();
@@ -355,11 +339,7 @@ pub fn iso_8_5_15_turning_passive_retransmits_after_25_bits(iut: &Iut) {
     let f = base(0x515, &[0x80]);
     let fb = FrameBits::new(&f);
     lt.request(f);
-    let r0 = fb.pos(Field::R0, 0);
-    let mut s = Script::new();
-    s.transmit(&fb, 0..r0, false, 2);
-    s.push(Lt::ForceR, Some(false), "r0 forced recessive");
-    exp.tec_add(8);
+    let (mut s, _) = bit_error_at_r0(&mut exp, &fb, 2);
     for j in 1..=15 {
         s.push(Lt::ForceR, Some(false), format!("forced {j}"));
         exp.tec_add(8);

@@ -3,8 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------- error capture
-
 /// A receiver's stuff error: SOF and four dominant ID bits, then a sixth dominant
 /// bit at the stuff position (the next non-stuff bit is still ID_A).
 #[test]

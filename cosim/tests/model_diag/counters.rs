@@ -3,8 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------- counters
-
 /// Counters by kind: a lone transmitter makes one ACK error per attempt; `cnt_ack`
 /// follows the `err_valid` pulses, saturates at 255, the other counters stay 0;
 /// only a reset clears them.

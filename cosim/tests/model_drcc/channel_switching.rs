@@ -4,10 +4,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// (c) normal mode: queue A on channel A, queue B on channel B
-// ---------------------------------------------------------------------------
-
 #[test]
 fn normal_mode_queue_a_on_channel_a_queue_b_on_channel_b() {
     let mut sys = Sys::new(1);
@@ -78,59 +74,6 @@ fn normal_mode_queue_a_on_channel_a_queue_b_on_channel_b() {
 // ---------------------------------------------------------------------------
 // (d) paper Fig 5-7: error-passive policy, channel A without an acknowledging node
 // ---------------------------------------------------------------------------
-
-/// Everything the paper scenario records, clock by clock.
-#[derive(Default)]
-struct Trace {
-    states: Vec<(u64, u8)>,
-    aux_a: Vec<(u64, u8)>,
-    tec_a: Vec<u16>,
-    ack: Vec<u64>,
-    success: Vec<u64>,
-    failure: Vec<(u64, u8)>,
-    sample_a: Vec<(u64, bool)>,
-}
-
-impl Trace {
-    fn record(&mut self, clock: u64, o: &DrccOutputs) {
-        let p = o.probes;
-        if self.states.last().map(|s| s.1) != Some(p.state) {
-            self.states.push((clock, p.state));
-        }
-        if self.aux_a.last().map(|s| s.1) != Some(p.aux_a_state) {
-            self.aux_a.push((clock, p.aux_a_state));
-        }
-        if self.tec_a.last() != Some(&p.chan_a_bsp_tx_err_cnt) {
-            self.tec_a.push(p.chan_a_bsp_tx_err_cnt);
-        }
-        if p.transmission_ack {
-            self.ack.push(clock);
-        }
-        if p.tx_success {
-            self.success.push(clock);
-        }
-        if p.tx_failure {
-            self.failure.push((clock, p.tx_failure_channel));
-        }
-        self.sample_a.push((clock, p.chan_a_sample_point));
-        // Contract §4 outputs derived from the state.
-        assert_eq!(p.tx_channel, p.state >= IDLE2);
-        assert_eq!(p.tx_going_on, p.state != IDLE1 && p.state != IDLE2);
-        assert_eq!(
-            p.chan_a_bsp_node_error_passive,
-            p.chan_a_err_state != 0,
-            "error passive probe"
-        );
-    }
-
-    fn state_seq(&self) -> Vec<u8> {
-        self.states.iter().map(|s| s.1).collect()
-    }
-
-    fn clock_of(&self, state: u8) -> u64 {
-        self.states.iter().find(|s| s.1 == state).unwrap().0
-    }
-}
 
 #[test]
 fn error_passive_policy_switches_to_channel_b_paper_fig5_to_7() {

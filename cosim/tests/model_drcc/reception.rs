@@ -4,10 +4,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// (g) RX FIFO: channel tag, order, overrun at 33 frames
-// ---------------------------------------------------------------------------
-
 #[test]
 fn rx_fifo_tags_channels_and_counts_overrun() {
     let mut sys = Sys::new(1);

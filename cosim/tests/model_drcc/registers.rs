@@ -3,10 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// (a) reset values and ID
-// ---------------------------------------------------------------------------
-
 /// Every register at its reset value (contract §3), also after `rst`.
 #[test]
 fn reset_values_and_id() {

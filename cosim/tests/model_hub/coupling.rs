@@ -3,9 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// Coupling (§2, §3).
-
 #[test]
 fn reset_mode_is_a_transparent_two_stage_and_star() {
     let mut b = Bench::new(3, 2);

@@ -3,9 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// Decoupling (§7).
-
 #[test]
 fn decoupling_after_decouple_bits_is_sticky_until_recouple() {
     let cfg = [(RESTORE_CFG, 10 | 30 << 16)];

@@ -3,9 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// Guards (§6).
-
 #[test]
 fn stuck_dominant_node_port_is_isolated_at_its_14th_dominant_sample() {
     let mut b = Bench::running(2, 1, &[(INT_ENABLE, INT_ISOLATION)], true);

@@ -3,9 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// Shape and registers (§8).
-
 #[test]
 fn shapes_outside_the_contract_are_refused() {
     for (n, m) in [(1, 1), (9, 1), (2, 0), (2, 5), (0, 0)] {

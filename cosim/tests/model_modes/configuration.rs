@@ -3,8 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------- §6
-
 /// Bit timing, mode, EWL and single-shot are captured at reset edges only:
 /// changed while running they have no effect; after a reset they do.
 #[test]

@@ -2,8 +2,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------- §7
-
 /// LISTEN_ONLY: across frames, arbitration, a bit error with error frames and an
 /// overload frame, the node never drives dominant, TEC and REC stay 0, it receives
 /// every frame that was sent successfully, refuses `tx_req` with `tx_failed`, and

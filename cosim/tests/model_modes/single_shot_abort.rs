@@ -2,8 +2,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------- §8
-
 /// Single shot, lost arbitration: `arb_lost` and `tx_failed` at the same edge,
 /// `tx_pending` clears, no retry (the loser then only sends the winner's ACK).
 /// Without single shot the loser retries and succeeds.

@@ -3,9 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// Fault confinement of a dead node
-
 /// A node whose receiver reads recessive for good (a broken transceiver RXD)
 /// sends its SOF and reads it back recessive. ISO 11898-1 bit monitoring: a node
 /// sending a bit detects a bit error when it reads another value; the only

@@ -3,9 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// The run
-
 /// Totals of a configuration.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Totals {

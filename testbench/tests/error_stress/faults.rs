@@ -2,9 +2,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// Scenario and faults
-
 /// Largest gap between bursts of frames, in bit times (about 140 bit times per
 /// frame on average: a busy bus with room to recover).
 pub(super) const MAX_GAP_BITS: u64 = 600;

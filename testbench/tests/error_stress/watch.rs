@@ -3,9 +3,6 @@
 
 use super::*;
 
-// ---------------------------------------------------------------------------
-// Observation: a transparent wrapper around the engines of the first system
-
 /// One change of a node's probes (recorded from the fault-free cycle on).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Mark {

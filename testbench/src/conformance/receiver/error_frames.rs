@@ -22,11 +22,7 @@ pub fn iso_7_3_1_dominant_bits_after_active_flag(iut: &Iut) {
 pub fn iso_7_3_2_sof_at_intermission_bit_3(iut: &Iut) {
     let (mut lt, mut exp) = start(iut);
     let fb = FrameBits::new(&base(0x444, &[0x44]));
-    let e = rx_error_frame();
-    let mut s = Script::new();
-    s.receive(&e, 0..5, false);
-    s.push(Lt::D, Some(true), "stuff error");
-    exp.rec_add(1);
+    let mut s = rx_stuff_error(&mut exp);
     s.error_flag(true).error_delim();
     s.repeat(2, Lt::R, Some(true), "Intermission");
     s.receive(&fb, 0..fb.len(), true).intermission();
@@ -40,11 +36,7 @@ pub fn iso_7_3_2_sof_at_intermission_bit_3(iut: &Iut) {
 /// Stuff error, then the flag bit `b` (1..=6) of the IUT's active error flag
 /// forced recessive: bit error (REC + 8, rule e), a new flag from the next bit.
 pub(super) fn flag_bit_error(lt: &mut LowerTester, exp: &mut Expected, b: usize) -> Run {
-    let e = rx_error_frame();
-    let mut s = Script::new();
-    s.receive(&e, 0..5, false);
-    s.push(Lt::D, Some(true), "stuff error");
-    exp.rec_add(1);
+    let mut s = rx_stuff_error(exp);
     assert!(exp.active());
     for i in 1..b {
         s.push(Lt::R, Some(false), format!("ErrFlag {i}"));
@@ -76,11 +68,7 @@ pub fn iso_7_3_3_bit_error_in_active_flag(iut: &Iut) {
 /// Stuff error, then a dominant bit at error delimiter bit `k` (2..=7): form
 /// error, REC + 1, new flag from the next bit.
 pub(super) fn delimiter_form_error(lt: &mut LowerTester, exp: &mut Expected, k: usize) -> Run {
-    let e = rx_error_frame();
-    let mut s = Script::new();
-    s.receive(&e, 0..5, false);
-    s.push(Lt::D, Some(true), "stuff error");
-    exp.rec_add(1);
+    let mut s = rx_stuff_error(exp);
     s.error_flag(exp.active());
     s.repeat(k - 1, Lt::R, Some(true), "ErrDelim");
     s.push(Lt::D, Some(true), format!("ErrDelim {k} dominant"));

@@ -14,7 +14,7 @@ use drcc_cosim::Frame;
 
 use super::bits::{stuffing_frames, Field, FrameBits, Options};
 use super::lower_tester::{field, state, Iut, LowerTester, Lt, Run, Script};
-use super::procedures::{base, ext, rec_to, remote, rx_error, rx_error_frame, Expected};
+use super::procedures::{base, ext, rec_to, remote, rx_error, rx_stuff_error, Expected};
 use super::{timing, timing_brp};
 
 mod error_detection;

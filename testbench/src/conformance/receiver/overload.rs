@@ -37,11 +37,7 @@ pub fn iso_7_4_1_overload_at_intermission(iut: &Iut) {
         lt.check(&exp, "overload frames change no counter");
         // After an error frame.
         lt.set_context(format!("after an error frame, intermission bit {bit}"));
-        let e = rx_error_frame();
-        let mut s = Script::new();
-        s.receive(&e, 0..5, false);
-        s.push(Lt::D, Some(true), "stuff error");
-        exp.rec_add(1);
+        let mut s = rx_stuff_error(&mut exp);
         s.error_flag(true).error_delim();
         s.repeat(bit - 1, Lt::R, Some(true), "Intermission");
         s.push(Lt::D, Some(true), format!("Intermission {bit} dominant"));
@@ -55,11 +51,7 @@ pub fn iso_7_4_1_overload_at_intermission(iut: &Iut) {
 /// overload delimiter starts an overload frame; no counter change.
 pub fn iso_7_4_3_overload_at_delimiter_bit_8(iut: &Iut) {
     let (mut lt, mut exp) = start(iut);
-    let e = rx_error_frame();
-    let mut s = Script::new();
-    s.receive(&e, 0..5, false);
-    s.push(Lt::D, Some(true), "stuff error");
-    exp.rec_add(1);
+    let mut s = rx_stuff_error(&mut exp);
     s.error_flag(true);
     s.repeat(7, Lt::R, Some(true), "ErrDelim");
     s.push(Lt::D, Some(true), "ErrDelim 8 dominant");

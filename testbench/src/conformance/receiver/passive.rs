@@ -16,12 +16,8 @@ pub(super) fn passive_receiver(iut: &Iut, target: u8) -> (LowerTester, Expected)
 /// bits, counting restarted at every change); checks the `field` probe bit by bit,
 /// the 8-bit delimiter and a SOF at intermission bit 3.
 fn passive_flag_pattern(lt: &mut LowerTester, exp: &mut Expected, during: &[Lt]) {
-    let e = rx_error_frame();
     let fb = FrameBits::new(&base(0x2A2, &[0x2A]));
-    let mut s = Script::new();
-    s.receive(&e, 0..5, false);
-    s.push(Lt::D, Some(true), "stuff error");
-    exp.rec_add(1);
+    let mut s = rx_stuff_error(exp);
     for (i, &d) in during.iter().enumerate() {
         s.push(d, Some(true), format!("PassiveFlag {}", i + 1));
     }
@@ -128,11 +124,7 @@ pub fn iso_7_5_6_passive_form_error_in_delimiter(iut: &Iut) {
 /// it still acknowledges the next frame (REC back to 119..=127, error active).
 pub fn iso_7_5_7_active_to_passive(iut: &Iut) {
     let (mut lt, mut exp) = start(iut);
-    let e = rx_error_frame();
-    let mut s = Script::new();
-    s.receive(&e, 0..5, false);
-    s.push(Lt::D, Some(true), "stuff error");
-    exp.rec_add(1);
+    let mut s = rx_stuff_error(&mut exp);
     for j in 1..=16 {
         s.push(Lt::ForceR, Some(false), format!("forced {j}"));
         exp.rec_add(8);

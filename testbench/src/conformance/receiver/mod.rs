@@ -9,6 +9,10 @@
 //! consecutive dominant bit after a flag (14th after an active error flag or an
 //! overload flag) and every further 8th + 8 (rule f); successful reception (ACK
 //! sent and read back) - 1, from above 127 to a value in 119..=127 (rule h).
+//!
+//! One file per ISO 16845-1 group: `frames` (7.1), `error_detection` (7.2),
+//! `error_frames` (7.3), `overload` (7.4), `passive` (7.5), `rec` (7.6); the
+//! set-ups several groups share are here.
 
 use drcc_cosim::Frame;
 

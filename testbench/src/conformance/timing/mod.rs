@@ -18,6 +18,9 @@
 //! dominant for exactly `d` tq: the IUT samples dominant iff its sample point
 //! falls inside, and a recessive sample is a stuff error whose error flag shows,
 //! to the clock, where the IUT's next bit starts.
+//!
+//! The receiver items are in `as_receiver`, the transmitter items in
+//! `as_transmitter`; the clock-level helpers both use are here.
 
 use drcc_cosim::BitTiming;
 

@@ -12,6 +12,10 @@
 //! error flag or an overload flag) and every further 8th + 8 (rule f); successful
 //! transmission - 1 (rule g); bus-off above 255, recovery after 128 occurrences of
 //! 11 consecutive recessive bits (rules j, l).
+//!
+//! One file per ISO 16845-1 group: `transmission` (8.1), `error_detection`
+//! (8.2), `error_frames` (8.3), `overload` (8.4), `passive` (8.5), `tec` (8.6);
+//! the set-ups several groups share are here.
 
 use drcc_cosim::Frame;
 

@@ -1,6 +1,6 @@
 //! ISO 16845-1 items 7.1 to 7.6: the IUT as receiver (valid frames, error
 //! detection, error and overload frames, the error-passive receiver, the receive
-//! error counter). One public function per checklist item or item group, named
+//! error counter). One public function per ISO 16845-1 item or item group, named
 //! after it; each takes an IUT factory and panics on the first deviation.
 //!
 //! Expected counters follow ISO 11898-1:2015 12.1.4.2: a receiver detecting an

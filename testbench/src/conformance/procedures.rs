@@ -122,11 +122,7 @@ pub fn rx_error_frame() -> FrameBits {
 /// plus 8 when at least one; rule f: + 8 for every 8), the error delimiter and the
 /// intermission. The IUT must be idle and have nothing to send.
 pub fn rx_error(lt: &mut LowerTester, exp: &mut Expected, dominant_after: usize) -> Run {
-    let fb = rx_error_frame();
-    let mut s = Script::new();
-    s.receive(&fb, 0..5, false);
-    s.push(Lt::D, Some(true), "stuff error");
-    exp.rec_add(1);
+    let mut s = rx_stuff_error(exp);
     s.error_flag(exp.active());
     if dominant_after > 0 {
         s.repeat(dominant_after, Lt::D, Some(true), "Dominant after flag");
@@ -139,6 +135,18 @@ pub fn rx_error(lt: &mut LowerTester, exp: &mut Expected, dominant_after: usize)
     let run = lt.run(&s);
     lt.check(exp, "after a receive error");
     run
+}
+
+/// The IUT receives [`rx_error_frame`] and the tester turns its first stuff bit
+/// dominant: a stuff error (REC + 1, rule a). The script goes on with the IUT's
+/// error flag.
+pub fn rx_stuff_error(exp: &mut Expected) -> Script {
+    let fb = rx_error_frame();
+    let mut s = Script::new();
+    s.receive(&fb, 0..5, false);
+    s.push(Lt::D, Some(true), "stuff error");
+    exp.rec_add(1);
+    s
 }
 
 /// Brings REC from `exp.rec` up to `target` with receive errors (+9 and +1).

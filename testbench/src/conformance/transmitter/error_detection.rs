@@ -1,0 +1,106 @@
+//! ISO 16845-1 8.2: error detection by the transmitter (bit errors in every
+//! field, stuff errors, form errors, ACK errors).
+
+use super::*;
+
+/// Positions of one bit the IUT drives in every field of `fb`, both polarities
+/// where the field has both, outside arbitration losses and the ACK slot.
+fn one_bit_per_field(fb: &FrameBits) -> Vec<usize> {
+    let mut v = Vec::new();
+    for (i, b) in fb.bits.iter().enumerate() {
+        let skip = b.stuff
+            || matches!(b.field, Field::Sof | Field::AckSlot)
+            || (b.value && b.field.is_arbitration());
+        if skip {
+            continue;
+        }
+        if !v
+            .iter()
+            .any(|&j: &usize| fb.bits[j].field == b.field && fb.bits[j].value == b.value)
+        {
+            v.push(i);
+        }
+    }
+    v
+}
+
+/// 8.2.1 / 8.2.2 (and 8.6.6): a bit error in every field the IUT drives (base and
+/// extended; dominant identifier bits forced recessive, control, data and CRC bits
+/// of both values, CRC delimiter, ACK delimiter, EOF): error flag from the next
+/// bit, TEC + 8 at the bit, then a successful retransmission.
+pub fn iso_8_2_1_bit_error_every_field(iut: &Iut) {
+    for f in [
+        base(0x2B5, &[0x0F, 0xF0]),
+        ext(0x0AB5_3C21, &[0x5A]),
+        remote(0x1C3, false, 3),
+    ] {
+        let fb = FrameBits::new(&f);
+        let pos = one_bit_per_field(&fb);
+        let fields: Vec<Field> = pos.iter().map(|&p| fb.bits[p].field).collect();
+        for want in [
+            Field::IdA,
+            Field::Dlc,
+            Field::Crc,
+            Field::CrcDelim,
+            Field::Eof,
+        ] {
+            assert!(fields.contains(&want));
+        }
+        corrupt_each(iut, &f, &pos);
+    }
+}
+
+/// The recessive stuff bit after the IDE bit of a base frame: ISO 11898-1 puts
+/// it in the control field (rule c exception 2 does not apply: TEC + 8), the
+/// contract in arbitration (no change). Played only by
+/// [`strict_8_6_19_base_ide_stuff_bit`].
+pub(super) fn base_ide_stuff_bit(fb: &FrameBits, p: usize) -> bool {
+    let b = fb.bits[p];
+    b.stuff && b.value && b.field == Field::Ide && !fb.frame.ide
+}
+
+fn stuff_bits_tx(iut: &Iut, frames: &[Frame]) {
+    for f in frames {
+        let fb = FrameBits::new(f);
+        let pos: Vec<usize> = fb
+            .stuff_positions()
+            .into_iter()
+            .filter(|&p| !base_ide_stuff_bit(&fb, p))
+            .collect();
+        corrupt_each(iut, f, &pos);
+    }
+}
+
+/// 8.2.3 (and 8.6.19): every stuff bit of base frames covering every field
+/// inverted: error flag from the next bit; TEC + 8, except a recessive stuff bit
+/// of the arbitration field read dominant (rule c exception 2: unchanged).
+pub fn iso_8_2_3_stuff_bit_errors_base(iut: &Iut) {
+    stuff_bits_tx(iut, &stuffing_frames(false));
+}
+
+/// 8.2.4: as 8.2.3 on extended frames.
+pub fn iso_8_2_4_stuff_bit_errors_extended(iut: &Iut) {
+    stuff_bits_tx(iut, &stuffing_frames(true));
+}
+
+/// 8.2.8 (classical adaptation; ISO 16845-1 runs it on a 64-byte FD frame): as
+/// 8.2.3 on base frames ID 555h, DLC 8, with the ISO data patterns.
+pub fn iso_8_2_8_stuff_bit_errors_data_patterns(iut: &Iut) {
+    stuff_bits_tx(iut, &data_pattern_frames());
+}
+
+/// 8.2.5 (and 8.6.7): a dominant CRC delimiter, ACK delimiter and EOF bits 1..=7
+/// are errors for the transmitter: flag from the next bit, TEC + 8.
+pub fn iso_8_2_5_form_errors_tx(iut: &Iut) {
+    let f = base(0x5A5, &[0xA5, 0x5A]);
+    let fb = FrameBits::new(&f);
+    let mut pos = vec![fb.crc_delim(), fb.pos(Field::AckDelim, 0)];
+    pos.extend((1..=7).map(|n| fb.eof(n)));
+    corrupt_each(iut, &f, &pos);
+}
+
+/// 8.2.6 (and 8.6.8): ACK error: recessive ACK slot, error flag from the ACK
+/// delimiter, TEC + 8 at the ACK slot while error active.
+pub fn iso_8_2_6_ack_error(iut: &Iut) {
+    iso_8_6_8_ack_error_active(iut);
+}

@@ -1,0 +1,161 @@
+//! Running one star scenario: the DRCC nodes and hubs clock by clock, the faults
+//! applied on their links, the port events and deliveries tallied into a
+//! [`StarReport`].
+
+use super::*;
+
+/// Runs `s` on `kind`, or on two engines in lock step (`cosim`): then the first
+/// divergence is an error.
+pub fn run_star(
+    s: &StarScenario,
+    kind: EngineKind,
+    cosim: Option<EngineKind>,
+) -> Result<StarReport, String> {
+    let mut main = build_star(s, kind)?;
+    let mut other = match cosim {
+        Some(k) => Some(build_star(s, k)?),
+        None => None,
+    };
+    let total = s.run_bits() * CLOCKS_PER_BIT;
+    let mut report = StarReport {
+        scenario: s.fault.name().to_string(),
+        fault_start: s.fault_start_bits * CLOCKS_PER_BIT,
+        fault_end: (s.fault_start_bits + s.fault_bits) * CLOCKS_PER_BIT,
+        ..StarReport::default()
+    };
+    let ask = |sys: &mut StarSystem| {
+        for n in 0..sys.len() {
+            sys.node_mut(n).host.read(reg::STATS0);
+        }
+        for h in 0..2 {
+            let hub = sys.hub_mut(h);
+            hub.host.read(hub_reg::STATS);
+            for p in 0..HUB_N + HUB_M {
+                hub.host.read(hub_reg::PORT0 + p as u8);
+            }
+        }
+    };
+    // After definitive decoupling only the hubs' host can re-couple them (the paper's
+    // section 5 protocol is not built): both supervisors write `CTRL.recouple` once
+    // the interlinks are back.
+    let recouple_at = (s.fault == StarFault::AllInterlinksLost)
+        .then_some(report.fault_end + RECOUPLE_AFTER_BITS * CLOCKS_PER_BIT);
+    let recouple = |sys: &mut StarSystem| {
+        for h in 0..2 {
+            sys.hub_mut(h).host.write(
+                hub_reg::CTRL,
+                hub_reg::CTRL_ACK_INTERDEP | hub_reg::CTRL_RECOUPLE,
+            );
+        }
+    };
+    let mut prev_enabled = [0u16; 2];
+    let mut prev_decoupled = [false; 2];
+    let mut cycle = 0u64;
+    loop {
+        if Some(cycle) == recouple_at {
+            recouple(&mut main);
+            if let Some(o) = other.as_mut() {
+                recouple(o);
+            }
+        }
+        if cycle == total {
+            ask(&mut main);
+            if let Some(o) = other.as_mut() {
+                ask(o);
+            }
+        }
+        main.step();
+        if let Some(o) = other.as_mut() {
+            o.step();
+            if let Some(d) = compare(&main, o) {
+                return Err(format!(
+                    "scenario {}: {d} (bit time {})",
+                    s.fault.name(),
+                    d.cycle / CLOCKS_PER_BIT
+                ));
+            }
+        }
+        for h in 0..2 {
+            let p = main.hub(h).outputs.probes;
+            let mask = ((1u32 << (HUB_N + HUB_M)) - 1) as u16;
+            let en = p.port_enabled & mask;
+            if main.hub(h).host.configured() && cycle > 0 {
+                let changed = en ^ prev_enabled[h];
+                for port in 0..HUB_N + HUB_M {
+                    if changed >> port & 1 != 0 {
+                        report.events.push(PortEvent {
+                            cycle,
+                            hub: h,
+                            port,
+                            enabled: en >> port & 1 != 0,
+                        });
+                    }
+                }
+                if p.decoupled && !prev_decoupled[h] && report.decoupled_at[h].is_none() {
+                    report.decoupled_at[h] = Some(cycle);
+                }
+            }
+            prev_enabled[h] = en;
+            prev_decoupled[h] = p.decoupled;
+        }
+        cycle += 1;
+        let done = cycle > total
+            && main.nodes().iter().all(|n| !n.host.reads.is_empty())
+            && (0..2).all(|h| main.hub(h).host.reads.len() > HUB_N + HUB_M);
+        if done {
+            break;
+        }
+        if cycle > total + 100_000 {
+            return Err(format!(
+                "{}: the hosts did not finish their register reads",
+                s.fault.name()
+            ));
+        }
+    }
+    report.cycles = cycle;
+    tally(s, &main, &mut report);
+    Ok(report)
+}
+
+fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
+    r.submitted = s.nodes * s.frames_per_node;
+    for (rx_node, n) in sys.nodes().iter().enumerate() {
+        let mut seen = vec![vec![0usize; s.frames_per_node]; s.nodes];
+        let mut from_others = 0;
+        for got in &n.host.received {
+            let f = got.frame;
+            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
+            if sender < s.nodes && k < s.frames_per_node && f == StarScenario::frame(sender, k) {
+                seen[sender][k] += 1;
+                if sender != rx_node {
+                    from_others += 1;
+                }
+            } else {
+                r.foreign += 1;
+            }
+        }
+        r.delivered += from_others;
+        r.received_at
+            .push(n.host.received.iter().map(|got| got.cycle).collect());
+        r.from_others.push(from_others);
+        for (sender, counts) in seen.iter().enumerate() {
+            if sender == rx_node {
+                continue;
+            }
+            for (k, &c) in counts.iter().enumerate() {
+                if c == 0 {
+                    r.missing.push((rx_node, sender, k));
+                } else if c > 1 {
+                    r.duplicates.push((rx_node, sender, k));
+                }
+            }
+        }
+        r.dups_dropped
+            .push(n.host.reads.first().map(|x| x.value & 0xFFFF).unwrap_or(0));
+    }
+    for h in 0..2 {
+        let reads = &sys.hub(h).host.reads;
+        r.hub_stats[h] = reads.first().map(|x| x.value).unwrap_or(0);
+        r.hub_ports[h] = reads.iter().skip(1).map(|x| x.value).collect();
+    }
+}

@@ -134,7 +134,8 @@ Frame layout: the can_channel ports versus the DRCC registers (drcc.v)
   first data bit sent   bit 63 (MSB of byte 0)           bit 7 of DATA0
   base identifier       tx_id/rx_id[10:0], [28:11] = 0   TX_ID/RX_ID[10:0]
   extended identifier   tx_id/rx_id[28:0], base [28:18]  TX_ID/RX_ID[28:0], base [28:18]
-  ide, rtr, dlc         ports tx_ide, tx_rtr, tx_dlc     TX_ID[29], TX_ID[30], TX_CTRL[3:0]
+  ide, rtr              tx_ide/rx_ide, tx_rtr/rx_rtr     TX_ID/RX_ID[29], [30]
+  dlc                   tx_dlc/rx_dlc[3:0]               TX_CTRL/RX_CTRL[3:0]
 Bit-timing ports: cfg_brp is BRP itself (tq = cfg_brp + 1 clocks); cfg_tseg1, cfg_tseg2
 and cfg_sjw are minus-one codes; every cfg_* input is captured only while rst = 1.";
 

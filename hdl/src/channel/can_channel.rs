@@ -115,9 +115,11 @@ pub struct CanChannel {
     pub sample_point: Signal<Out, Bit>,
     /// Bus value taken at the last sample point, 1 = recessive.
     pub sampled_bit: Signal<Out, Bit>,
-    /// Field of the next non-stuff bit (contract §4.1 codes): 0 integrating, 1 idle,
-    /// 2 ID_A .. 11 CRC, 12 CRC delimiter, 13 ACK slot, 15 EOF, 16 intermission,
-    /// 17 suspend, 18 error flag, 19 error delimiter, 20/21 overload, 22 bus-off.
+    /// Field of the next non-stuff bit (contract §4.1): 0 integrating, 1 idle, 2 base
+    /// ID, 3 SRR/RTR, 4 IDE, 5 extension ID, 6 extended RTR, 7 r1, 8 r0, 9 DLC, 10 data,
+    /// 11 CRC, 12 CRC delimiter, 13 ACK slot, 14 ACK delimiter, 15 EOF, 16
+    /// intermission, 17 suspend, 18 error flag, 19 error delimiter, 20 overload flag,
+    /// 21 overload delimiter, 22 bus-off.
     pub field: Signal<Out, Field>,
     /// Transmit error counter TEC (ISO 11898-1 12.1.4); above 255 the node is
     /// bus-off.

@@ -47,12 +47,27 @@ pub fn port_docs(source: &str, block: &str) -> Vec<(String, String)> {
     docs
 }
 
-/// `text` broken into lines of at most `width` characters at spaces (a longer
-/// word gets a line of its own).
+/// `text` broken into lines of at most `width` characters at spaces, never inside
+/// a `code span` (a longer word or span gets a line of its own).
 pub fn wrap(text: &str, width: usize) -> Vec<String> {
+    // Words, with a code span's words glued back together.
+    let mut words: Vec<String> = Vec::new();
+    let mut open = false;
+    for word in text.split_whitespace() {
+        match words.last_mut() {
+            Some(last) if open => {
+                last.push(' ');
+                last.push_str(word);
+            }
+            _ => words.push(word.to_string()),
+        }
+        if word.matches('`').count() % 2 == 1 {
+            open = !open;
+        }
+    }
     let mut lines = Vec::new();
     let mut line = String::new();
-    for word in text.split_whitespace() {
+    for word in &words {
         if !line.is_empty() && line.len() + 1 + word.len() > width {
             lines.push(std::mem::take(&mut line));
         }
@@ -109,5 +124,6 @@ pub struct Blk<const N: usize> {
         let lines = wrap("aaa bbb ccc dddddddddd e", 7);
         assert_eq!(lines, vec!["aaa bbb", "ccc", "dddddddddd", "e"]);
         assert_eq!(wrap("", 10), vec![String::new()]);
+        assert_eq!(wrap("see `rst = 1` now", 9), vec!["see", "`rst = 1`", "now"]);
     }
 }

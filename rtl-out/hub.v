@@ -10,9 +10,9 @@
 // dir    width  port          meaning
 // input      1  clk           Clock. Every register changes at its rising edge; the hub's bit
 //                             timing (register `BTR`) is counted in its periods.
-// input      1  rst           Synchronous reset of everything, active high: at an edge with `rst =
-//                             1` every register takes its reset value and every link output is
-//                             recessive.
+// input      1  rst           Synchronous reset of everything, active high: at an edge with
+//                             `rst = 1` every register takes its reset value and every link output
+//                             is recessive.
 // input      1  wb_cyc_i      Wishbone cycle, active high. A transaction is taken at an edge where
 //                             `wb_cyc_i & wb_stb_i & !wb_ack_o`.
 // input      1  wb_stb_i      Wishbone strobe, active high.
@@ -23,8 +23,8 @@
 // output    32  wb_dat_o      Wishbone read data, valid while `wb_ack_o = 1`, else 0.
 // output     1  wb_ack_o      Wishbone acknowledge, 1 for the clock after the edge that took the
 //                             transaction: every access takes 2 clocks.
-// output     1  irq           Interrupt request, active-high level, registered: `|(INT_STATUS &
-//                             INT_ENABLE)`.
+// output     1  irq           Interrupt request, active-high level, registered:
+//                             `|(INT_STATUS & INT_ENABLE)`.
 // input      4  uplink        Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive;
 //                             each is synchronized by two flip-flops.
 // output     4  downlink      What node i receives, bit i (N bits), 1 = recessive; every bit
@@ -60,8 +60,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     // Synchronous reset of everything, active high: at an edge with `rst = 1` every register takes
     // its reset value and every link output is recessive.
     input wire  rst;
-    // Wishbone cycle, active high. A transaction is taken at an edge where `wb_cyc_i & wb_stb_i &
-    // !wb_ack_o`.
+    // Wishbone cycle, active high. A transaction is taken at an edge where
+    // `wb_cyc_i & wb_stb_i & !wb_ack_o`.
     input wire  wb_cyc_i;
     // Wishbone strobe, active high.
     input wire  wb_stb_i;

@@ -91,7 +91,10 @@ fn main() {
     let manifest = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("CARGO_MANIFEST_DIR"));
     let shim_dir = manifest.join("shim");
     println!("cargo::rerun-if-changed={}", shim_dir.display());
-    println!("cargo::rerun-if-changed=build.rs");
+    // The script and the files it includes with #[path].
+    for own in ["build.rs", "build", "src/required.rs"] {
+        println!("cargo::rerun-if-changed={own}");
+    }
     if let Ok(entries) = fs::read_dir(&shim_dir) {
         for e in entries.flatten() {
             println!("cargo::rerun-if-changed={}", e.path().display());

@@ -54,7 +54,7 @@
     X(uint64_t, rx_data,         64)  /* Received data, byte 0 in `[63:56]` as `tx_data`; bytes past `min(rx_dlc, 8)` and every byte of a remote frame are 0. Held until the next `rx_valid`. */ \
     X(uint8_t,  sample_point,     1)  /* One-clock pulse, the clock after each sample point of the bit timing logic. */ \
     X(uint8_t,  sampled_bit,      1)  /* Bus value taken at the last sample point, 1 = recessive. */ \
-    X(uint8_t,  field,            5)  /* Field of the next non-stuff bit (contract §4.1 codes): 0 integrating, 1 idle, 2 ID_A .. 11 CRC, 12 CRC delimiter, 13 ACK slot, 15 EOF, 16 intermission, 17 suspend, 18 error flag, 19 error delimiter, 20/21 overload, 22 bus-off. */ \
+    X(uint8_t,  field,            5)  /* Field of the next non-stuff bit (contract §4.1): 0 integrating, 1 idle, 2 base ID, 3 SRR/RTR, 4 IDE, 5 extension ID, 6 extended RTR, 7 r1, 8 r0, 9 DLC, 10 data, 11 CRC, 12 CRC delimiter, 13 ACK slot, 14 ACK delimiter, 15 EOF, 16 intermission, 17 suspend, 18 error flag, 19 error delimiter, 20 overload flag, 21 overload delimiter, 22 bus-off. */ \
     X(uint16_t, tec,              9)  /* Transmit error counter TEC (ISO 11898-1 12.1.4); above 255 the node is bus-off. */ \
     X(uint8_t,  rec,              8)  /* Receive error counter REC, saturating at 255. */ \
     X(uint8_t,  err_state,        2)  /* Fault confinement state: 0 error active, 1 error passive, 2 bus-off. */ \

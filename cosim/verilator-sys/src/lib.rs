@@ -411,7 +411,16 @@ mod tests {
     /// The rule of the crate docs, value by value.
     #[test]
     fn required_rule() {
-        for off in [None, Some(""), Some("0"), Some("false"), Some("FALSE"), Some("no"), Some("Off"), Some(" 0 ")] {
+        for off in [
+            None,
+            Some(""),
+            Some("0"),
+            Some("false"),
+            Some("FALSE"),
+            Some("no"),
+            Some("Off"),
+            Some(" 0 "),
+        ] {
             assert!(!required::is_on(off), "{off:?}");
         }
         for on in ["1", "true", "TRUE", "yes", "on", "anything"] {

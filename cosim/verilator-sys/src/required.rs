@@ -15,9 +15,14 @@ pub const REQUIRE_VARS: [&str; 2] = ["DRCC_REQUIRE_VERILATOR", "CI"];
 /// ignored). So `CI=true`, `CI=1` and `DRCC_REQUIRE_VERILATOR=yes` require it;
 /// `CI=false`, `CI=0`, `CI=` and an unset variable do not.
 pub fn required() -> bool {
-    REQUIRE_VARS
-        .iter()
-        .any(|k| is_on(std::env::var_os(k).as_deref().map(|v| v.to_string_lossy()).as_deref()))
+    REQUIRE_VARS.iter().any(|k| {
+        is_on(
+            std::env::var_os(k)
+                .as_deref()
+                .map(|v| v.to_string_lossy())
+                .as_deref(),
+        )
+    })
 }
 
 /// The rule of [`required`] for one variable's value (`None`: unset).

@@ -116,7 +116,10 @@ pub struct Blk<const N: usize> {
                 ("z".to_string(), "Last.".to_string()),
             ]
         );
-        assert!(port_docs(SOURCE, "Bl").is_empty(), "a prefix is not the name");
+        assert!(
+            port_docs(SOURCE, "Bl").is_empty(),
+            "a prefix is not the name"
+        );
     }
 
     #[test]
@@ -124,6 +127,9 @@ pub struct Blk<const N: usize> {
         let lines = wrap("aaa bbb ccc dddddddddd e", 7);
         assert_eq!(lines, vec!["aaa bbb", "ccc", "dddddddddd", "e"]);
         assert_eq!(wrap("", 10), vec![String::new()]);
-        assert_eq!(wrap("see `rst = 1` now", 9), vec!["see", "`rst = 1`", "now"]);
+        assert_eq!(
+            wrap("see `rst = 1` now", 9),
+            vec!["see", "`rst = 1`", "now"]
+        );
     }
 }

@@ -79,7 +79,10 @@ fn port_table(ports: &[Port]) -> String {
     let name_w = ports.iter().map(|p| p.name.len()).max().unwrap_or(4).max(4);
     let lead = format!("// {:<6} {:>5}  {:<name_w$}  ", "", "", "");
     let doc_w = WIDTH.saturating_sub(lead.len()).max(30);
-    let mut t = format!("// Ports:\n// {:<6} {:>5}  {:<name_w$}  meaning\n", "dir", "width", "port");
+    let mut t = format!(
+        "// Ports:\n// {:<6} {:>5}  {:<name_w$}  meaning\n",
+        "dir", "width", "port"
+    );
     for p in ports {
         let dir = match p.direction {
             Direction::Input => "input",
@@ -108,14 +111,19 @@ fn comment_declarations(name: &str, body: &str, ports: &[Port]) -> String {
     for line in body.lines() {
         let t = line.trim();
         if t.starts_with("module ") {
-            in_top = t.starts_with(&format!("module {name}(")) || t.starts_with(&format!("module {name} ("));
+            in_top = t.starts_with(&format!("module {name}("))
+                || t.starts_with(&format!("module {name} ("));
         }
         if in_top && t == "// Module arguments" {
             in_args = true;
         } else if in_args && t.is_empty() {
             in_args = false;
         } else if in_args && (t.starts_with("input ") || t.starts_with("output ")) {
-            let port = t.trim_end_matches(';').split_whitespace().last().unwrap_or("");
+            let port = t
+                .trim_end_matches(';')
+                .split_whitespace()
+                .last()
+                .unwrap_or("");
             if let Some(p) = ports.iter().find(|p| p.name == port) {
                 let indent = &line[..line.len() - line.trim_start().len()];
                 for l in wrap(&p.doc, WIDTH - indent.len() - 3) {

@@ -2,8 +2,9 @@
 //! yosys, nextpnr-ice40 and icepack, writes a bitstream and reports non-zero
 //! LUT / FF counts and the Fmax nextpnr measured (about 40 s on 2 cores).
 //!
-//! Without the tools the flow test is skipped, except under CI (`CI` set to
-//! anything but empty, `0` or `false`), where it fails with the install hint.
+//! Without the tools the flow test is skipped, except under CI
+//! (`verilator_sys::required()`: `CI` or `DRCC_REQUIRE_VERILATOR` set to anything
+//! but empty, `0`, `false`, `no` or `off`), where it fails with the install hint.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -15,8 +16,11 @@ fn drcc(args: &[&str]) -> Output {
         .expect("cannot run the drcc binary")
 }
 
+/// Whether missing tools fail the test: the one rule of `verilator_sys::required`
+/// (`DRCC_REQUIRE_VERILATOR` or `CI` set to anything but empty, `0`, `false`,
+/// `no` or `off`), shared with every test that needs an external tool.
 fn ci() -> bool {
-    std::env::var("CI").is_ok_and(|v| !v.is_empty() && v != "0" && v != "false")
+    drcc_testbench::engines::tools_required()
 }
 
 /// The number after `"key": ` in the first object that follows `"section": `

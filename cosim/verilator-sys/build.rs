@@ -1,49 +1,37 @@
-//! Build script of verilator-sys: verilates every top in [`TOPS`] from the RTL
-//! directory (`<workspace>/rtl-out`, or `$DRCC_RTL_DIR`), builds the Verilator
-//! runtime and the C ABI shims (`shim/<top>_shim.cpp`) and links them all into
+//! Build script of verilator-sys: finds the tops by their port tables
+//! (`shim/<top>_ports.h`, written by `drcc generate`), generates the Rust port
+//! structs and bindings from them (always), and verilates every top from the RTL
+//! directory (`<workspace>/rtl-out/<top>.v`, or `$DRCC_RTL_DIR`), builds the
+//! Verilator runtime and the C ABI shims (one `<top>_shim.cpp` per top, generated
+//! into OUT_DIR around `shim/verilated_top_shim.inc`) and links them all into
 //! this crate, then sets `cfg(drcc_verilator)`.
 //!
 //! Without Verilator, or without the RTL files, the crate is built without the
-//! model (a `cargo:warning` says why; `verilator_sys::available()` is false) unless
-//! `DRCC_REQUIRE_VERILATOR=1`, which turns every such case into a build error.
+//! model (a `cargo:warning` says why; `verilator_sys::available()` is false)
+//! unless Verilator is required (`src/required.rs`: `DRCC_REQUIRE_VERILATOR` or
+//! `CI` set to anything but empty, `0`, `false`, `no`, `off`), which turns every
+//! such case into a build error.
 //!
 //! Built models are cached in `<target>/drcc-verilated/` keyed by Verilator
 //! version, options and RTL text, so the dev/test/release profiles share one
 //! Verilator run; only the small shim is compiled per profile.
 //!
-//! Adding a top is one line in [`TOPS`] plus its `shim/<name>_ports.h` and
-//! `shim/<name>_shim.cpp` (and the Rust bindings in `src/lib.rs`).
+//! Ports are never parsed from Verilog or from Verilator's headers: the table and
+//! the RTL come from the same rust-hdl block (`drcc generate --check` keeps them
+//! current), and the shim checks at compile time that every table port exists on
+//! the model and fits its C type.
+
+#[path = "src/required.rs"]
+mod required;
+#[path = "build/tables.rs"]
+mod tables;
 
 use std::env;
-use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
-
-/// One Verilog top module and the file (in the RTL directory) that holds it.
-struct Top {
-    /// Module name; the model class is `V<name>`, the shim `shim/<name>_shim.cpp`.
-    name: &'static str,
-    /// File name inside the RTL directory (it may hold submodules too).
-    file: &'static str,
-}
-
-/// Every top this crate wraps. All of them are built, or none (see module docs).
-const TOPS: &[Top] = &[
-    Top {
-        name: "can_channel",
-        file: "can_channel.v",
-    },
-    Top {
-        name: "drcc",
-        file: "drcc.v",
-    },
-    Top {
-        name: "hub",
-        file: "hub.v",
-    },
-];
+use tables::TopTable;
 
 /// Message when no usable Verilator is found (kept equal to `UNAVAILABLE_MSG` in lib.rs).
 const UNAVAILABLE_MSG: &str = "Verilator not found: install it with `apt-get install verilator`";
@@ -88,30 +76,38 @@ const MAKE_VARS: &[&str] = &[
 enum Missing {
     /// No Verilator or no RTL: an expected situation on a fresh checkout.
     Unavailable { msg: String },
-    /// Verilator ran and failed, or the ports do not match the shim's table.
+    /// Verilator or the shim compile ran and failed.
     Failed { msg: String, detail: String },
 }
 
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(drcc_verilator)");
-    for var in ["VERILATOR", "DRCC_REQUIRE_VERILATOR", "DRCC_RTL_DIR"] {
+    for var in ["VERILATOR", "DRCC_RTL_DIR"]
+        .into_iter()
+        .chain(required::REQUIRE_VARS)
+    {
         println!("cargo::rerun-if-env-changed={var}");
     }
     let manifest = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("CARGO_MANIFEST_DIR"));
     let shim_dir = manifest.join("shim");
     println!("cargo::rerun-if-changed={}", shim_dir.display());
-    println!("cargo::rerun-if-changed=build.rs");
+    // The script and the files it includes with #[path].
+    for own in ["build.rs", "build", "src/required.rs"] {
+        println!("cargo::rerun-if-changed={own}");
+    }
     if let Ok(entries) = fs::read_dir(&shim_dir) {
         for e in entries.flatten() {
             println!("cargo::rerun-if-changed={}", e.path().display());
         }
     }
 
-    let required = matches!(
-        env::var("DRCC_REQUIRE_VERILATOR").as_deref(),
-        Ok("1") | Ok("true") | Ok("yes")
-    );
-    match build(&manifest, &shim_dir) {
+    // The Rust bindings exist in every build, with or without the model.
+    let tops = tables::find_tops(&shim_dir).unwrap_or_else(|e| panic!("{e}"));
+    let out = PathBuf::from(env::var_os("OUT_DIR").expect("OUT_DIR"));
+    write_if_changed(&out.join("tops.rs"), &tables::rust_bindings(&tops));
+
+    let required = required::required();
+    match build(&manifest, &shim_dir, &tops) {
         Ok(version) => {
             println!("cargo::rustc-cfg=drcc_verilator");
             println!("cargo::rustc-env=DRCC_VERILATOR_VERSION={version}");
@@ -119,7 +115,7 @@ fn main() {
         }
         Err(Missing::Unavailable { msg }) => {
             if required {
-                panic!("{msg} (DRCC_REQUIRE_VERILATOR=1)");
+                panic!("{msg} (Verilator is required: DRCC_REQUIRE_VERILATOR or CI is set)");
             }
             println!("cargo::warning={msg}; building verilator-sys without the Verilated model");
             println!("cargo::rustc-env=DRCC_VERILATOR_VERSION=");
@@ -140,10 +136,10 @@ fn main() {
 }
 
 /// Builds and links every top; returns the Verilator version.
-fn build(manifest: &Path, shim_dir: &Path) -> Result<String, Missing> {
+fn build(manifest: &Path, shim_dir: &Path, tops: &[TopTable]) -> Result<String, Missing> {
     let rtl_dir = rtl_dir(manifest);
-    for top in TOPS {
-        let file = rtl_dir.join(top.file);
+    for top in tops {
+        let file = rtl_dir.join(rtl_file(top));
         // Watch the file; while it is missing, watch the closest existing directory
         // (its appearance changes that directory). A missing watched path would
         // rerun this script, and rebuild every dependent crate, on every build.
@@ -163,13 +159,13 @@ fn build(manifest: &Path, shim_dir: &Path) -> Result<String, Missing> {
     let version = verilator_version(&verilator)?;
     let root = verilator_root(&verilator)?;
 
-    for top in TOPS {
-        let file = rtl_dir.join(top.file);
+    for top in tops {
+        let file = rtl_dir.join(rtl_file(top));
         if !file.is_file() {
             return Err(Missing::Unavailable {
                 msg: format!(
                     "rtl-out/{} missing: run `cargo run -- generate` (looked for {})",
-                    top.file,
+                    rtl_file(top),
                     file.display()
                 ),
             });
@@ -179,6 +175,8 @@ fn build(manifest: &Path, shim_dir: &Path) -> Result<String, Missing> {
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("OUT_DIR"));
     let lib_dir = out.join("lib");
     fs::create_dir_all(&lib_dir).expect("create OUT_DIR/lib");
+    let gen_dir = out.join("shim");
+    fs::create_dir_all(&gen_dir).expect("create OUT_DIR/shim");
     let jobs = env::var("NUM_JOBS")
         .ok()
         .and_then(|j| j.parse::<usize>().ok())
@@ -199,8 +197,8 @@ fn build(manifest: &Path, shim_dir: &Path) -> Result<String, Missing> {
     let runtime = runtime_dir.join("libdrcc_verilated_rt.a");
     let mut mdirs = Vec::new();
     let mut defines: Vec<(String, String)> = Vec::new();
-    for top in TOPS {
-        let file = rtl_dir.join(top.file);
+    for top in tops {
+        let file = rtl_dir.join(rtl_file(top));
         let key = stamp_key(&verilator, &version, Some(&file))?;
         let mdir = cache.join(format!("V{}-{:016x}", top.name, fnv1a(&key)));
         let archive = format!("V{}__ALL.a", top.name);
@@ -218,7 +216,6 @@ fn build(manifest: &Path, shim_dir: &Path) -> Result<String, Missing> {
             .ok();
             prune(&cache, &format!("V{}-", top.name), &mdir);
         }
-        check_ports(top, &mdir, shim_dir)?;
         if let Some(member) = clk_prev_member(top, &mdir) {
             defines.push((format!("DRCC_{}_CLK_PREV", top.name.to_uppercase()), member));
         }
@@ -252,21 +249,37 @@ fn build(manifest: &Path, shim_dir: &Path) -> Result<String, Missing> {
     for (name, value) in &defines {
         cc.define(name, value.as_str());
     }
-    for (top, mdir) in TOPS.iter().zip(&mdirs) {
+    for (top, mdir) in tops.iter().zip(&mdirs) {
+        let cpp = gen_dir.join(format!("{}_shim.cpp", top.name));
+        write_if_changed(&cpp, &tables::shim_cpp(top));
         cc.include(mdir);
-        cc.file(shim_dir.join(format!("{}_shim.cpp", top.name)));
+        cc.file(cpp);
     }
     cc.compile("drcc_verilator_shims");
 
     // Then the models, then the runtime they share, then the C++ runtime.
     println!("cargo::rustc-link-search=native={}", lib_dir.display());
-    for top in TOPS {
+    for top in tops {
         println!("cargo::rustc-link-lib=static=V{}__ALL", top.name);
     }
     println!("cargo::rustc-link-lib=static=drcc_verilated_rt");
     println!("cargo::rustc-link-lib=dylib=stdc++");
     println!("cargo::rustc-link-lib=dylib=pthread");
     Ok(version)
+}
+
+/// The RTL file of a top inside the RTL directory (it may hold submodules too).
+fn rtl_file(top: &TopTable) -> String {
+    format!("{}.v", top.name)
+}
+
+/// Writes `text` unless the file already holds it (keeps the shim's mtime, so the
+/// cc crate's output stays current).
+fn write_if_changed(path: &Path, text: &str) {
+    if fs::read_to_string(path).is_ok_and(|old| old == text) {
+        return;
+    }
+    fs::write(path, text).unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
 }
 
 /// `$DRCC_RTL_DIR` (relative paths are taken from the workspace root) or `<workspace>/rtl-out`.
@@ -342,7 +355,7 @@ fn run(cmd: &mut Command, what: &str) -> Result<String, Missing> {
 fn summary(detail: &str) -> Vec<&str> {
     let errors: Vec<&str> = detail
         .lines()
-        .filter(|l| l.contains("%Error") || l.contains("error:") || l.starts_with("port "))
+        .filter(|l| l.contains("%Error") || l.contains("error:"))
         .take(20)
         .collect();
     if errors.is_empty() {
@@ -459,7 +472,7 @@ fn copy(from: &Path, to: &Path) -> Result<(), Missing> {
 /// Verilates and compiles one top into `mdir` (incremental: make skips what is current).
 fn verilate(
     verilator: &Path,
-    top: &Top,
+    top: &TopTable,
     file: &Path,
     mdir: &Path,
     jobs: usize,
@@ -467,7 +480,7 @@ fn verilate(
     let mut cmd = Command::new(verilator);
     cmd.args(VERILATOR_FLAGS)
         .arg("--top-module")
-        .arg(top.name)
+        .arg(&top.name)
         .arg("--prefix")
         .arg(format!("V{}", top.name))
         .arg("--Mdir")
@@ -494,7 +507,7 @@ fn verilate(
 /// Verilator >= 5.0xx leaves `libverilated.a` in the Mdir; 5.006 does not, so the
 /// objects listed as VM_GLOBAL_* in `V<top>_classes.mk` are made with Verilator's
 /// own rules and flags and archived here.
-fn build_runtime(top: &Top, mdir: &Path, jobs: usize, dest: &Path) -> Result<(), Missing> {
+fn build_runtime(top: &TopTable, mdir: &Path, jobs: usize, dest: &Path) -> Result<(), Missing> {
     let existing = mdir.join("libverilated.a");
     if existing.is_file() {
         fs::copy(&existing, dest).map_err(|e| Missing::Failed {
@@ -563,7 +576,7 @@ fn make_list(text: &str, name: &str) -> Vec<String> {
 /// member of `V<top>___024root.h` looks like it (5.006: `__Vtrigrprev__TOP__clk`).
 /// The shim then makes one eval per clock instead of two (see drcc_shim_common.h);
 /// the tests check that both ways give the same outputs.
-fn clk_prev_member(top: &Top, mdir: &Path) -> Option<String> {
+fn clk_prev_member(top: &TopTable, mdir: &Path) -> Option<String> {
     let text = fs::read_to_string(mdir.join(format!("V{}___024root.h", top.name))).ok()?;
     let mut found: Vec<String> = text
         .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
@@ -577,159 +590,4 @@ fn clk_prev_member(top: &Top, mdir: &Path) -> Option<String> {
     found.sort();
     found.dedup();
     (found.len() == 1).then(|| found.remove(0))
-}
-
-/// A port: direction ("IN"/"OUT"/"INOUT") and bit width.
-#[derive(Clone, Debug, PartialEq)]
-struct Port {
-    dir: String,
-    width: u32,
-}
-
-/// Compares the ports Verilator generated (`V<top>.h`) with `shim/<top>_ports.h`.
-fn check_ports(top: &Top, mdir: &Path, shim_dir: &Path) -> Result<(), Missing> {
-    let header = mdir.join(format!("V{}.h", top.name));
-    let table = shim_dir.join(format!("{}_ports.h", top.name));
-    let read = |p: &Path| {
-        fs::read_to_string(p).map_err(|e| Missing::Failed {
-            msg: format!("cannot read {}", p.display()),
-            detail: e.to_string(),
-        })
-    };
-    let rtl = rtl_ports(&read(&header)?);
-    let shim = table_ports(&read(&table)?, &top.name.to_uppercase());
-    let mut problems = String::new();
-    for (name, p) in &rtl {
-        if name == "clk" {
-            continue;
-        }
-        match shim.iter().find(|(n, _)| n == name) {
-            None => writeln!(
-                problems,
-                "port `{name}` ({} {} bits) is not in the table",
-                p.dir, p.width
-            )
-            .unwrap(),
-            Some((_, q)) if q != p => writeln!(
-                problems,
-                "port `{name}`: RTL has {} {} bits, the table says {} {} bits",
-                p.dir, p.width, q.dir, q.width
-            )
-            .unwrap(),
-            _ => {}
-        }
-    }
-    for (name, _) in &shim {
-        if !rtl.iter().any(|(n, _)| n == name) {
-            writeln!(problems, "port `{name}` is in the table but not in the RTL").unwrap();
-        }
-    }
-    if !rtl.iter().any(|(n, _)| n == "clk") {
-        writeln!(
-            problems,
-            "port `clk` (the clock input) is missing in the RTL"
-        )
-        .unwrap();
-    }
-    if problems.is_empty() {
-        Ok(())
-    } else {
-        Err(Missing::Failed {
-            msg: format!(
-                "the ports of `{}` changed: update {} and its mirror in verilator-sys/src/lib.rs",
-                top.name,
-                table.display()
-            ),
-            detail: problems,
-        })
-    }
-}
-
-/// `VL_IN8(&name,msb,lsb);` lines of a Verilator model header.
-fn rtl_ports(text: &str) -> Vec<(String, Port)> {
-    let mut ports = Vec::new();
-    for line in text.lines() {
-        let t = line.trim();
-        let Some(rest) = t.strip_prefix("VL_") else {
-            continue;
-        };
-        let Some((mac, args)) = rest.split_once('(') else {
-            continue;
-        };
-        let dir = if mac.starts_with("INOUT") {
-            "INOUT"
-        } else if mac.starts_with("IN") {
-            "IN"
-        } else if mac.starts_with("OUT") {
-            "OUT"
-        } else {
-            continue;
-        };
-        let args: Vec<&str> = args
-            .split(')')
-            .next()
-            .unwrap_or("")
-            .split(',')
-            .map(str::trim)
-            .collect();
-        if args.len() < 3 {
-            continue;
-        }
-        let (Ok(msb), Ok(lsb)) = (args[1].parse::<i64>(), args[2].parse::<i64>()) else {
-            continue;
-        };
-        ports.push((
-            args[0].trim_start_matches('&').to_string(),
-            Port {
-                dir: dir.into(),
-                width: (msb - lsb).unsigned_abs() as u32 + 1,
-            },
-        ));
-    }
-    ports
-}
-
-/// `X(type, name, width)` lines under `#define DRCC_<TOP>_INPUTS(X)` / `_OUTPUTS(X)`.
-fn table_ports(text: &str, top_upper: &str) -> Vec<(String, Port)> {
-    let inputs = format!("#define DRCC_{top_upper}_INPUTS(X)");
-    let outputs = format!("#define DRCC_{top_upper}_OUTPUTS(X)");
-    let mut dir: Option<&str> = None;
-    let mut ports = Vec::new();
-    for line in text.lines() {
-        let t = line.trim();
-        if t.starts_with(&inputs) {
-            dir = Some("IN");
-            continue;
-        }
-        if t.starts_with(&outputs) {
-            dir = Some("OUT");
-            continue;
-        }
-        if t.starts_with('#') || t.is_empty() {
-            dir = None;
-            continue;
-        }
-        let (Some(d), Some(args)) = (dir, t.strip_prefix("X(")) else {
-            continue;
-        };
-        let f: Vec<&str> = args
-            .split(')')
-            .next()
-            .unwrap_or("")
-            .split(',')
-            .map(str::trim)
-            .collect();
-        if let [_ty, name, width] = f[..] {
-            if let Ok(width) = width.parse() {
-                ports.push((
-                    name.to_string(),
-                    Port {
-                        dir: d.into(),
-                        width,
-                    },
-                ));
-            }
-        }
-    }
-    ports
 }

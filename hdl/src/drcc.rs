@@ -22,47 +22,100 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock, Default)]
 pub struct Drcc {
     // clock and reset
+    /// Clock. Every register changes at its rising edge; the channels' bit timing
+    /// (register `BTR`) is counted in its periods.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset of everything, active high: registers, queues, FIFO and
+    /// both channels take their reset values at an edge with `rst = 1`, and the DRCC
+    /// leaves it in reset mode (`CTRL.reset_mode = 1`), where the host writes the
+    /// channel configuration (`CTRL`, `BTR`).
     pub rst: Signal<In, Bit>,
-    // Wishbone B4 classic slave
+    // Wishbone B4 classic slave (drcc_contract.md §2); register map:
+    // docs/registers.md, rtl-out/drcc_regs.h
+    /// Wishbone cycle, active high. A transaction is taken at an edge where
+    /// `wb_cyc_i & wb_stb_i & !wb_ack_o`.
     pub wb_cyc_i: Signal<In, Bit>,
+    /// Wishbone strobe, active high.
     pub wb_stb_i: Signal<In, Bit>,
+    /// Wishbone write enable: 1 = write, 0 = read.
     pub wb_we_i: Signal<In, Bit>,
+    /// Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i`.
     pub wb_adr_i: Signal<In, Bits<6>>,
+    /// Wishbone write data, always a full word (no `wb_sel_i`). Data bytes in
+    /// `TX_DATA0/1`: byte 0 (first on the bus) in `[7:0]`, unlike the channel ports.
     pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Wishbone read data, valid while `wb_ack_o = 1`, else 0. Reads have no side
+    /// effects; unmapped addresses read 0.
     pub wb_dat_o: Signal<Out, Bits<32>>,
+    /// Wishbone acknowledge, 1 for the clock after the edge that took the
+    /// transaction: every access takes 2 clocks.
     pub wb_ack_o: Signal<Out, Bit>,
+    /// Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     pub irq: Signal<Out, Bit>,
-    // CAN pins (1 = recessive)
+    // CAN pins (1 = recessive, 0 = dominant); A is the paper's channel 1, B channel 2
+    /// Channel A CAN transmit pin, 1 = recessive (a register).
     pub chan_a_tx: Signal<Out, Bit>,
+    /// Channel A CAN receive pin, 1 = recessive; synchronized by two flip-flops.
     pub chan_a_rx: Signal<In, Bit>,
+    /// Channel B CAN transmit pin, 1 = recessive (a register).
     pub chan_b_tx: Signal<Out, Bit>,
+    /// Channel B CAN receive pin, 1 = recessive; synchronized by two flip-flops.
     pub chan_b_rx: Signal<In, Bit>,
-    // paper probes (Table 1; DRCC contract §1)
+    // paper probes (DRCC paper Table 1, drcc_contract.md §4)
+    /// Main FSM state: idle1 0, wait1 1, ch1 2, abort1 3, wait2 4, idle2 5, wait3 6,
+    /// ch2 7, abort2 8, wait4 9.
     pub state: Signal<Out, Bits<4>>,
+    /// Channel the main FSM transmits on: 0 = A, 1 = B (`state >= idle2`).
     pub tx_channel: Signal<Out, Bit>,
+    /// One-clock pulse: a channel delivered the message in flight.
     pub transmission_ack: Signal<Out, Bit>,
+    /// Channel A transmit request (its `tx_req`), a one-clock pulse.
     pub chan_a_transmission_req: Signal<Out, Bit>,
+    /// Channel B transmit request (its `tx_req`), a one-clock pulse.
     pub chan_b_transmission_req: Signal<Out, Bit>,
+    /// One-clock pulse, the clock after `transmission_ack`: the message is done and
+    /// left its queue (not for the first copy of a `dual_tx` message).
     pub tx_success: Signal<Out, Bit>,
+    /// Channel(s) that delivered the last message, bit 0 = A, bit 1 = B (`11`: both,
+    /// `dual_tx`). Held until the next delivery; cleared in reset mode.
     pub tx_ok_channel: Signal<Out, Bits<2>>,
+    /// One-clock pulse: the main FSM judged a channel failed for the message.
     pub tx_failure: Signal<Out, Bit>,
+    /// Latched failed channel(s), bit 0 = A, bit 1 = B. Held until the next failure;
+    /// cleared in reset mode.
     pub tx_failure_channel: Signal<Out, Bits<2>>,
+    /// A transmission is in progress: `state` is neither idle1 nor idle2.
     pub tx_going_on: Signal<Out, Bit>,
+    /// Channel A transmit error counter (its `tec`).
     pub chan_a_bsp_tx_err_cnt: Signal<Out, Bits<9>>,
+    /// Channel A is not error active (error passive or bus-off: `err_state != 0`).
     pub chan_a_bsp_node_error_passive: Signal<Out, Bit>,
+    /// Channel B transmit error counter (its `tec`).
     pub chan_b_bsp_tx_err_cnt: Signal<Out, Bits<9>>,
+    /// Channel B is not error active (error passive or bus-off: `err_state != 0`).
     pub chan_b_bsp_node_error_passive: Signal<Out, Bit>,
-    // other probes
+    // other probes (drcc_contract.md §5; the channel probes of timing_contract.md)
+    /// Aux FSM A, the validity of channel A: valid 0, failed 1, restart 2,
+    /// probation 3.
     pub aux_a_state: Signal<Out, Bits<2>>,
+    /// Aux FSM B, the validity of channel B: valid 0, failed 1, restart 2,
+    /// probation 3.
     pub aux_b_state: Signal<Out, Bits<2>>,
+    /// Channel A `sample_point`: one-clock pulse after each of its sample points.
     pub chan_a_sample_point: Signal<Out, Bit>,
+    /// Channel B `sample_point`: one-clock pulse after each of its sample points.
     pub chan_b_sample_point: Signal<Out, Bit>,
+    /// Channel A `field`: field of its next non-stuff bit (timing contract §4.1 codes).
     pub chan_a_field: Signal<Out, Field>,
+    /// Channel B `field`: field of its next non-stuff bit (timing contract §4.1 codes).
     pub chan_b_field: Signal<Out, Field>,
+    /// Channel A receive error counter (its `rec`).
     pub chan_a_rec: Signal<Out, Bits<8>>,
+    /// Channel B receive error counter (its `rec`).
     pub chan_b_rec: Signal<Out, Bits<8>>,
+    /// Channel A `err_state`: 0 error active, 1 error passive, 2 bus-off.
     pub chan_a_err_state: Signal<Out, Bits<2>>,
+    /// Channel B `err_state`: 0 error active, 1 error passive, 2 bus-off.
     pub chan_b_err_state: Signal<Out, Bits<2>>,
     // blocks
     regs: WbRegs,

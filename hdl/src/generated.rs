@@ -1,5 +1,5 @@
 //! Every file `drcc generate` writes besides the tops' Verilog: register
-//! documentation, C headers, shim port tables. Each generator lives beside what it
+//! documentation, C headers, the Verilator shim port table of every top. Each generator lives beside what it
 //! describes; this list is the one place `drcc generate` (and `--check`) reads, so
 //! a new generated file is one entry here.
 
@@ -13,7 +13,7 @@ pub struct GeneratedFile {
 
 /// The generated files other than `rtl-out/<top>.v`, in the order they are written.
 pub fn extras() -> Vec<GeneratedFile> {
-    vec![
+    let mut files = vec![
         GeneratedFile {
             path: "rtl-out/drcc_regs.h",
             text: crate::host::registers::c_header(),
@@ -22,5 +22,11 @@ pub fn extras() -> Vec<GeneratedFile> {
             path: "docs/registers.md",
             text: crate::host::registers::markdown(),
         },
-    ]
+    ];
+    // verilator-sys's build script finds the tops by these tables (one per top).
+    files.extend(crate::tops::TOPS.iter().map(|t| GeneratedFile {
+        path: crate::tops::shim_table::path_of(t.name),
+        text: t.shim_table(),
+    }));
+    files
 }

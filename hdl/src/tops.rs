@@ -1,12 +1,30 @@
 //! The emitted tops: the one registry every tool reads (`drcc generate`, the
-//! FPGA flow, the Verilator shims). Adding a top is one entry in [`TOPS`].
+//! FPGA flow, the Verilator shims).
 //!
 //! For each top it gives the Verilog (`drcc generate` writes it to
 //! `rtl-out/<name>.v`) and the port list, taken from the rust-hdl block itself
-//! through its [`Probe`] walk, never by parsing Verilog. rust-hdl names every top
-//! `top` and every sub-module after its path (`top$bsp$fc`); the emitter renames
-//! them to `<name>` and `<name>__bsp__fc` so the Verilog reads well and several
-//! tops can be compiled together.
+//! through its [`Probe`] walk, never by parsing Verilog, with each port's meaning
+//! taken from the `///` comment on its field in the block's source
+//! ([`port_docs`]). From those, `drcc generate` writes the header and the port
+//! comments of `rtl-out/<name>.v` ([`verilog`]) and the Verilator port table
+//! `cosim/verilator-sys/shim/<name>_ports.h` ([`shim_table`]).
+//!
+//! # Adding a top
+//! 1. Write its block, with a `///` comment on every `pub` port (the test
+//!    `every_port_is_documented` fails otherwise).
+//! 2. Add one [`Top`] entry to [`TOPS`].
+//! 3. Run `cargo run --release -- generate` and commit `rtl-out/` and
+//!    `cosim/verilator-sys/shim/`.
+//!
+//! That is all: `drcc generate --check`, the lint and FPGA flows read [`TOPS`];
+//! verilator-sys's build script finds the new `<name>_ports.h`, verilates
+//! `rtl-out/<name>.v` and generates the C shim, the Rust port structs
+//! `<Name>In` / `<Name>Out` and the wrapper `verilator_sys::<Name>`. Only an
+//! engine that drives the top (`cosim/src/engine/`) is written by hand.
+
+pub mod port_docs;
+pub mod shim_table;
+pub mod verilog;
 
 use crate::channel::can_channel::CanChannel;
 use crate::drcc::Drcc;
@@ -33,6 +51,9 @@ pub struct Port {
     pub width: usize,
     /// True for the clock input (`Signal<In, Clock>`).
     pub is_clock: bool,
+    /// What the port means and how it is encoded: the `///` comment on its field
+    /// (empty when the field has none).
+    pub doc: String,
 }
 
 /// One emitted top: everything the tools need to know about it.
@@ -45,6 +66,14 @@ pub struct Top {
     pub contract: &'static str,
     /// Generation parameters, as `name = value` pairs, for the file header.
     pub params: &'static [(&'static str, &'static str)],
+    /// The rust-hdl struct of the top (its port docs are read from its source).
+    pub block: &'static str,
+    /// Repository path of the file declaring [`Top::block`].
+    pub source_path: &'static str,
+    /// The text of that file (`include_str!`), for the port docs.
+    source: &'static str,
+    /// Extra lines for the header of the emitted file (layouts, pointers).
+    pub notes: &'static str,
     /// The raw rust-hdl Verilog of the block (before [`finish_verilog`]).
     raw_verilog: fn() -> String,
     /// The ports of the block, from its probe walk.
@@ -54,12 +83,24 @@ pub struct Top {
 impl Top {
     /// The finished Verilog of this top, as `drcc generate` writes it.
     pub fn verilog(&self) -> String {
-        finish_verilog(self.name, &(self.raw_verilog)())
+        verilog::finish(self, &(self.raw_verilog)(), &self.ports())
     }
 
-    /// The top-level ports, in declaration order.
+    /// The top-level ports, in declaration order, with their docs.
     pub fn ports(&self) -> Vec<Port> {
-        (self.ports)()
+        let docs = port_docs::port_docs(self.source, self.block);
+        let mut ports = (self.ports)();
+        for p in &mut ports {
+            if let Some((_, doc)) = docs.iter().find(|(n, _)| *n == p.name) {
+                p.doc = doc.clone();
+            }
+        }
+        ports
+    }
+
+    /// The text of `cosim/verilator-sys/shim/<name>_ports.h`.
+    pub fn shim_table(&self) -> String {
+        shim_table::ports_header(self, &self.ports())
     }
 }
 
@@ -81,6 +122,23 @@ fn ports_of<B: Block + Default>() -> Vec<Port> {
     probe.ports
 }
 
+/// The frame layout on `can_channel`'s ports, once, and how the DRCC's registers
+/// differ (timing contract §4.4, `cosim/src/frame.rs`, drcc_contract.md §3).
+const CHANNEL_NOTES: &str = "\
+Frame layout: the can_channel ports versus the DRCC registers (drcc.v)
+  item                  can_channel ports                DRCC registers
+  data byte 0 (first)   tx_data/rx_data[63:56]           TX_DATA0/RX_DATA0[7:0]
+  data byte 3           tx_data/rx_data[39:32]           TX_DATA0/RX_DATA0[31:24]
+  data byte 4           tx_data/rx_data[31:24]           TX_DATA1/RX_DATA1[7:0]
+  data byte 7           tx_data/rx_data[7:0]             TX_DATA1/RX_DATA1[31:24]
+  first data bit sent   bit 63 (MSB of byte 0)           bit 7 of DATA0
+  base identifier       tx_id/rx_id[10:0], [28:11] = 0   TX_ID/RX_ID[10:0]
+  extended identifier   tx_id/rx_id[28:0], base [28:18]  TX_ID/RX_ID[28:0], base [28:18]
+  ide, rtr              tx_ide/rx_ide, tx_rtr/rx_rtr     TX_ID/RX_ID[29], [30]
+  dlc                   tx_dlc/rx_dlc[3:0]               TX_CTRL/RX_CTRL[3:0]
+Bit-timing ports: cfg_brp is BRP itself (tq = cfg_brp + 1 clocks); cfg_tseg1, cfg_tseg2
+and cfg_sjw are minus-one codes; every cfg_* input is captured only while rst = 1.";
+
 /// Every emitted top, in the order `drcc generate` writes them.
 pub static TOPS: &[Top] = &[
     Top {
@@ -88,6 +146,10 @@ pub static TOPS: &[Top] = &[
         summary: "one ISO 11898-1 classical CAN channel (bit timing, bit stream processor, fault confinement)",
         contract: "cosim/src/model/timing_contract.md",
         params: &[],
+        block: "CanChannel",
+        source_path: "hdl/src/channel/can_channel.rs",
+        source: include_str!("channel/can_channel.rs"),
+        notes: CHANNEL_NOTES,
         raw_verilog: raw_verilog_of::<CanChannel>,
         ports: ports_of::<CanChannel>,
     },
@@ -96,6 +158,12 @@ pub static TOPS: &[Top] = &[
         summary: "the dual-redundancy CAN controller: two channels, redundancy management, TX buffer, RX FIFO, Wishbone",
         contract: "cosim/src/model/drcc_contract.md",
         params: &[],
+        block: "Drcc",
+        source_path: "hdl/src/drcc.rs",
+        source: include_str!("drcc.rs"),
+        notes: "Registers: docs/registers.md, C header rtl-out/drcc_regs.h. In TX_DATA0/1 and\n\
+                RX_DATA0/1 byte 0 (the first on the bus) is in [7:0]; on can_channel's ports it\n\
+                is in [63:56] (see the table in can_channel.v).",
         raw_verilog: raw_verilog_of::<Drcc>,
         ports: ports_of::<Drcc>,
     },
@@ -104,6 +172,11 @@ pub static TOPS: &[Top] = &[
         summary: "the ReCANcentrate star hub: coupling, fault treatment, ACK interdependence",
         contract: "cosim/src/model/hub_contract.md",
         params: &[("N", "4"), ("M", "2")],
+        block: "Hub",
+        source_path: "hdl/src/hub/hub.rs",
+        source: include_str!("hub/hub.rs"),
+        notes: "N node ports, M interlinks, P = N + M guarded ports (node ports 0..N-1, then\n\
+                the incoming sublinks N..N+M-1). Registers: hub_contract.md section 8.",
         raw_verilog: raw_verilog_of::<Hub4x2>,
         ports: ports_of::<Hub4x2>,
     },
@@ -155,6 +228,7 @@ impl Probe for PortProbe {
             name,
             direction,
             width: signal.bits(),
+            doc: String::new(),
         });
     }
 
@@ -167,50 +241,6 @@ impl Probe for PortProbe {
     fn visit_end_scope(&mut self, _name: &str, _node: &dyn Block) {
         self.depth -= 1;
     }
-}
-
-/// Renames rust-hdl's `top` / `top$a$b` module names to `<name>` / `<name>__a__b`
-/// and prefixes the file with a header naming the generator.
-pub fn finish_verilog(name: &str, raw: &str) -> String {
-    let mut text = String::new();
-    text.push_str(&format!(
-        "// {name}.v: generated by `drcc generate` from the rust-hdl blocks of drcc-hdl.\n\
-         // Do not edit: change the Rust source and regenerate.\n\n"
-    ));
-    let mut body = raw.replace("module top$", &format!("module {name}__"));
-    body = body.replace("module top(", &format!("module {name}("));
-    body = body.replace("module top (", &format!("module {name} ("));
-    // Instantiations reference the module names too: `top$bsp$fc name(`.
-    body = body.replace("top$", &format!("{name}__"));
-    body = body.replace('$', "__");
-    body = strip_initial_blocks(&body);
-    text.push_str(body.trim_end());
-    text.push('\n');
-    text
-}
-
-/// Removes rust-hdl's `initial begin ... end` blocks (power-up values of each
-/// flip-flop): the design never relies on them, every register that matters is
-/// reset by `rst`, and they are not portable to every FPGA flow.
-fn strip_initial_blocks(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    let mut skipping = false;
-    for line in text.lines() {
-        let t = line.trim();
-        if !skipping && t == "initial begin" {
-            skipping = true;
-            continue;
-        }
-        if skipping {
-            if t == "end" {
-                skipping = false;
-            }
-            continue;
-        }
-        out.push_str(line);
-        out.push('\n');
-    }
-    out
 }
 
 /// The Verilog of one top by name, or `None` for an unknown name.
@@ -258,5 +288,98 @@ mod tests {
         assert_eq!(find("rx_data").width, 64);
         assert_eq!(find("rx_data").direction, Direction::Output);
         assert_eq!(find("tec").width, 9);
+    }
+
+    /// Every port of every top says what it means (fails when a port is added
+    /// without a `///` comment, or renamed so its comment no longer matches).
+    #[test]
+    fn every_port_is_documented() {
+        for t in TOPS {
+            for p in t.ports() {
+                assert!(
+                    p.doc.split_whitespace().count() >= 3,
+                    "port `{}` of `{}` has no `///` doc in {} (struct {})",
+                    p.name,
+                    t.name,
+                    t.source_path,
+                    t.block
+                );
+            }
+        }
+    }
+
+    /// The header's port table lists exactly the probed ports, in order, with
+    /// their direction and width, and each declaration is preceded by its doc.
+    #[test]
+    fn header_lists_exactly_the_probed_ports() {
+        for t in TOPS {
+            let text = t.verilog();
+            let header: Vec<&str> = text.lines().take_while(|l| l.starts_with("//")).collect();
+            let start = header
+                .iter()
+                .position(|l| l.starts_with("// Ports:"))
+                .expect("port table")
+                + 2;
+            let rows: Vec<(String, String, String)> = header[start..]
+                .iter()
+                .map(|l| l.trim_start_matches("//"))
+                .take_while(|l| !l.trim().is_empty())
+                .filter(|l| l.starts_with(" input") || l.starts_with(" output"))
+                .map(|l| {
+                    let f: Vec<&str> = l.split_whitespace().collect();
+                    (f[0].to_string(), f[1].to_string(), f[2].to_string())
+                })
+                .collect();
+            let probed: Vec<(String, String, String)> = t
+                .ports()
+                .into_iter()
+                .map(|p| {
+                    let dir = match p.direction {
+                        Direction::Input => "input",
+                        Direction::Output => "output",
+                    };
+                    (dir.to_string(), p.width.to_string(), p.name)
+                })
+                .collect();
+            assert_eq!(rows, probed, "header port table of {}", t.name);
+            for p in t.ports() {
+                let first_doc_line: String = port_docs::wrap(&p.doc, 60)[0]
+                    .split_whitespace()
+                    .take(3)
+                    .collect::<Vec<_>>()
+                    .join(" ");
+                let decl = text
+                    .lines()
+                    .position(|l| {
+                        let l = l.trim();
+                        (l.starts_with("input ") || l.starts_with("output "))
+                            && l.ends_with(&format!(" {};", p.name))
+                    })
+                    .unwrap_or_else(|| panic!("declaration of {}", p.name));
+                let above: Vec<&str> = text.lines().take(decl).collect();
+                let comment: Vec<&str> = above
+                    .iter()
+                    .rev()
+                    .take_while(|l| l.trim().starts_with("//"))
+                    .copied()
+                    .collect();
+                let comment = comment.iter().rev().copied().collect::<Vec<_>>().join(" ");
+                assert!(
+                    comment.contains(&first_doc_line),
+                    "declaration of {}.{} lacks its doc: {comment:?}",
+                    t.name,
+                    p.name
+                );
+            }
+        }
+    }
+
+    /// The channel header states the frame layout, which differs from the
+    /// DRCC's registers (timing contract §4.4, drcc contract §3).
+    #[test]
+    fn channel_header_states_the_frame_layout() {
+        let text = top("can_channel").unwrap().verilog();
+        assert!(text.contains("tx_data/rx_data[63:56]           TX_DATA0/RX_DATA0[7:0]"));
+        assert!(text.contains("tx_id/rx_id[10:0], [28:11] = 0"));
     }
 }

@@ -83,12 +83,10 @@ pub fn available(kind: EngineKind) -> Result<(), String> {
     make_engine(kind).map(|_| ())
 }
 
-/// Whether a missing Verilator must fail instead of being skipped: in CI (`CI`
-/// set) or when `DRCC_REQUIRE_VERILATOR` is set (to anything but `0` or empty).
-pub fn verilator_required() -> bool {
-    let set = |k: &str| std::env::var(k).is_ok_and(|v| !v.is_empty() && v != "0" && v != "false");
-    set("CI") || set("DRCC_REQUIRE_VERILATOR")
-}
+/// Whether a missing Verilator must fail instead of being skipped: the one rule
+/// of `verilator_sys::required` (`DRCC_REQUIRE_VERILATOR` or `CI` set to anything
+/// but empty, `0`, `false`, `no` or `off`).
+pub use drcc_cosim::engine::verilator::verilator_required;
 
 /// Whether external tools (sigrok-cli) must be present: same rule as Verilator.
 pub fn tools_required() -> bool {

@@ -15,6 +15,11 @@ use crate::frame::Frame;
 use std::path::Path;
 use verilator_sys::{CanChannel, CanChannelIn, CanChannelOut};
 
+/// Whether a missing Verilator must fail instead of being skipped: the one rule of
+/// [`verilator_sys::required`] (`DRCC_REQUIRE_VERILATOR` or `CI` set to anything
+/// but empty, `0`, `false`, `no`, `off`), re-exported for the crates above.
+pub use verilator_sys::required as verilator_required;
+
 /// The Verilated `can_channel`.
 pub struct VerilatorEngine {
     ch: CanChannel,

@@ -1,11 +1,21 @@
 //! verilator-sys: the Verilated RTL tops of `rtl-out/` behind a small C ABI, plus
 //! safe wrappers.
 //!
-//! `build.rs` verilates `rtl-out/can_channel.v` (top `can_channel`; override the
-//! directory with `DRCC_RTL_DIR`), compiles `shim/can_channel_shim.cpp` and links
-//! both. Without Verilator or without the RTL the crate still builds: [`available`]
-//! is then `false` and [`CanChannel::new`] returns [`VerilatorUnavailable`]. Set
-//! `DRCC_REQUIRE_VERILATOR=1` (CI does) to make that a build error instead.
+//! The tops are found by their port tables `shim/<top>_ports.h`, which
+//! `drcc generate` writes from the rust-hdl blocks (`drcc_hdl::tops::TOPS`).
+//! `build.rs` turns each table into the Rust port structs `<Top>In` /
+//! `<Top>Out`, the wrapper `<Top>` ([`CanChannel`], [`Drcc`], [`Hub`]) and a C++
+//! shim, verilates `rtl-out/<top>.v` (override the directory with
+//! `DRCC_RTL_DIR`) and links it all. Without Verilator or without the RTL the
+//! crate still builds: [`available`] is then `false` and every `new` returns
+//! [`VerilatorUnavailable`], unless Verilator is [`required`] (CI), which makes
+//! that a build error instead.
+//!
+//! # When Verilator is required
+//! One rule, [`required`], used by the build script (it includes the same
+//! source file) and by every test and tool that skips without Verilator:
+//! required iff `DRCC_REQUIRE_VERILATOR` or `CI` is set to a value other than
+//! empty, `0`, `false`, `no` or `off` (case-insensitive).
 //!
 //! # Clocking and traces
 //! [`CanChannel::step`] applies the inputs, evaluates `clk = 0`, then `clk = 1`
@@ -21,15 +31,18 @@
 //! unit is half a clock period, whatever `$timescale` the file header states.
 //!
 //! # When the RTL ports change
-//! The port table is `shim/can_channel_ports.h` (C side) and [`CanChannelIn`] /
-//! [`CanChannelOut`] here (same fields, same order, same types). `build.rs` compares
-//! the C table with the ports Verilator found in the RTL and stops with a message
-//! naming each differing port; [`CanChannel::new`] panics if the C and Rust layouts
-//! differ (a fingerprint of every field's name, offset, size and width).
+//! Nothing here is edited: change the block, run `drcc generate`, and the table,
+//! the C structs and the Rust structs follow. The shim's compile checks that every
+//! table port exists on the Verilated model and fits its C type; each `new()`
+//! panics if the C and Rust layouts differ (a fingerprint of every field's name,
+//! offset, size and width), which can only happen with a stale build.
 //!
 //! Each instance has its own `VerilatedContext`: several instances (the nodes of
 //! one bus) can live in one process and be stepped alternately, on any thread,
 //! but one instance is never stepped from two threads at once (`Send`, not `Sync`).
+
+mod required;
+pub use required::{required, REQUIRE_VARS};
 
 use std::fmt;
 
@@ -161,271 +174,6 @@ impl LayoutHash {
         self.byte(b'|');
         self.u64(size);
     }
-}
-
-port_struct! {
-    /// Every input of `can_channel` except `clk` (mirror of `CanChannelIn` in
-    /// `shim/can_channel_ports.h`). Single-bit ports hold 0 or 1; the shim masks
-    /// every value to its port width.
-    pub struct CanChannelIn {
-        /// Synchronous active-high reset.
-        rst: u8 = 1,
-        /// Baud-rate prescaler (a time quantum is `cfg_brp + 1` clocks).
-        cfg_brp: u8 = 6,
-        /// TSEG1 in tq, minus one.
-        cfg_tseg1: u8 = 4,
-        /// TSEG2 in tq, minus one.
-        cfg_tseg2: u8 = 3,
-        /// SJW in tq, minus one.
-        cfg_sjw: u8 = 2,
-        /// Triple sampling.
-        cfg_triple: u8 = 1,
-        /// Operating mode: 0 normal, 1 listen-only, 2 self-test, 3 loop-back.
-        cfg_mode: u8 = 2,
-        /// Error warning limit (ISO 11898-1 default 96).
-        cfg_ewl: u8 = 8,
-        /// No automatic retransmission.
-        cfg_single_shot: u8 = 1,
-        /// Bus value seen by the receiver (1 = recessive).
-        rx: u8 = 1,
-        /// One-clock transmit request.
-        tx_req: u8 = 1,
-        /// Identifier (11 bits in `[10:0]` for base frames).
-        tx_id: u32 = 29,
-        /// Extended frame.
-        tx_ide: u8 = 1,
-        /// Remote frame.
-        tx_rtr: u8 = 1,
-        /// Data length code.
-        tx_dlc: u8 = 4,
-        /// Data, byte 0 in bits 63..56.
-        tx_data: u64 = 64,
-        /// One-clock request: abort the pending frame.
-        tx_abort: u8 = 1,
-    }
-}
-
-port_struct! {
-    /// Every output of `can_channel` right after a rising edge (mirror of
-    /// `CanChannelOut` in `shim/can_channel_ports.h`).
-    pub struct CanChannelOut {
-        /// Transmit pin (1 = recessive).
-        tx: u8 = 1,
-        /// A frame is latched and not yet sent.
-        tx_pending: u8 = 1,
-        /// Pulse: frame sent.
-        tx_done: u8 = 1,
-        /// Pulse: arbitration lost.
-        arb_lost: u8 = 1,
-        /// Pulse: the pending frame was dropped (single shot, abort, listen-only).
-        tx_failed: u8 = 1,
-        /// Pulse: a frame was received.
-        rx_valid: u8 = 1,
-        /// Received identifier.
-        rx_id: u32 = 29,
-        /// Received frame is extended.
-        rx_ide: u8 = 1,
-        /// Received frame is remote.
-        rx_rtr: u8 = 1,
-        /// Received DLC.
-        rx_dlc: u8 = 4,
-        /// Received data, byte 0 in bits 63..56.
-        rx_data: u64 = 64,
-        /// Probe: pulse after each sample point.
-        sample_point: u8 = 1,
-        /// Probe: bus value at the last sample point.
-        sampled_bit: u8 = 1,
-        /// Probe: field code of the next bit.
-        field: u8 = 5,
-        /// Probe: transmit error counter.
-        tec: u16 = 9,
-        /// Probe: receive error counter.
-        rec: u8 = 8,
-        /// Probe: 0 active, 1 passive, 2 bus-off.
-        err_state: u8 = 2,
-        /// TEC or REC at or above the error warning limit.
-        err_warning: u8 = 1,
-        /// Pulse: an error was detected and captured.
-        err_valid: u8 = 1,
-        /// Kind of the last error: 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK.
-        err_kind: u8 = 3,
-        /// Field code at the last error.
-        err_field: u8 = 5,
-        /// The node was transmitter at the last error.
-        err_tx: u8 = 1,
-        /// Arbitration-lost bit position.
-        alc: u8 = 5,
-        /// Bit errors (saturating).
-        cnt_bit: u8 = 8,
-        /// Stuff errors (saturating).
-        cnt_stuff: u8 = 8,
-        /// CRC errors (saturating).
-        cnt_crc: u8 = 8,
-        /// Form errors (saturating).
-        cnt_form: u8 = 8,
-        /// ACK errors (saturating).
-        cnt_ack: u8 = 8,
-    }
-}
-
-port_struct! {
-    /// Every input of `drcc` except `clk` (mirror of `DrccIn` in `shim/drcc_ports.h`).
-    pub struct DrccIn {
-        /// Synchronous active-high reset.
-        rst: u8 = 1,
-        /// Wishbone cycle.
-        wb_cyc_i: u8 = 1,
-        /// Wishbone strobe.
-        wb_stb_i: u8 = 1,
-        /// Wishbone write enable.
-        wb_we_i: u8 = 1,
-        /// Wishbone word address.
-        wb_adr_i: u8 = 6,
-        /// Wishbone write data.
-        wb_dat_i: u32 = 32,
-        /// Channel A receive pin (1 = recessive).
-        chan_a_rx: u8 = 1,
-        /// Channel B receive pin.
-        chan_b_rx: u8 = 1,
-    }
-}
-
-port_struct! {
-    /// Every output of `drcc` right after a rising edge (mirror of `DrccOut` in `shim/drcc_ports.h`).
-    pub struct DrccOut {
-        /// Wishbone read data.
-        wb_dat_o: u32 = 32,
-        /// Wishbone acknowledge.
-        wb_ack_o: u8 = 1,
-        /// Interrupt request.
-        irq: u8 = 1,
-        /// Channel A transmit pin.
-        chan_a_tx: u8 = 1,
-        /// Channel B transmit pin.
-        chan_b_tx: u8 = 1,
-        /// Main FSM state (Table 1 encoding).
-        state: u8 = 4,
-        /// Current channel: 0 = A, 1 = B.
-        tx_channel: u8 = 1,
-        /// Pulse: a channel acknowledged a transmission.
-        transmission_ack: u8 = 1,
-        /// Channel A transmit request.
-        chan_a_transmission_req: u8 = 1,
-        /// Channel B transmit request.
-        chan_b_transmission_req: u8 = 1,
-        /// Pulse: message done.
-        tx_success: u8 = 1,
-        /// Channel(s) that delivered the last message.
-        tx_ok_channel: u8 = 2,
-        /// Pulse: a channel failed the message.
-        tx_failure: u8 = 1,
-        /// Latched failed channel(s).
-        tx_failure_channel: u8 = 2,
-        /// A transmission is in progress.
-        tx_going_on: u8 = 1,
-        /// Channel A TEC.
-        chan_a_bsp_tx_err_cnt: u16 = 9,
-        /// Channel A not error active.
-        chan_a_bsp_node_error_passive: u8 = 1,
-        /// Channel B TEC.
-        chan_b_bsp_tx_err_cnt: u16 = 9,
-        /// Channel B not error active.
-        chan_b_bsp_node_error_passive: u8 = 1,
-        /// Aux FSM A state.
-        aux_a_state: u8 = 2,
-        /// Aux FSM B state.
-        aux_b_state: u8 = 2,
-        /// Channel A sample point pulse.
-        chan_a_sample_point: u8 = 1,
-        /// Channel B sample point pulse.
-        chan_b_sample_point: u8 = 1,
-        /// Channel A field code.
-        chan_a_field: u8 = 5,
-        /// Channel B field code.
-        chan_b_field: u8 = 5,
-        /// Channel A REC.
-        chan_a_rec: u8 = 8,
-        /// Channel B REC.
-        chan_b_rec: u8 = 8,
-        /// Channel A error state.
-        chan_a_err_state: u8 = 2,
-        /// Channel B error state.
-        chan_b_err_state: u8 = 2,
-    }
-}
-
-/// The layout fingerprint the C side must report (`drcc_drcc_abi`).
-pub fn drcc_abi() -> u64 {
-    let mut h = LayoutHash::new();
-    DrccIn::layout_hash(&mut h);
-    DrccOut::layout_hash(&mut h);
-    h.0
-}
-
-port_struct! {
-    /// Every input of `hub` except `clk` (mirror of `HubIn` in `shim/hub_ports.h`).
-    pub struct HubIn {
-        /// Synchronous active-high reset.
-        rst: u8 = 1,
-        /// Wishbone cycle.
-        wb_cyc_i: u8 = 1,
-        /// Wishbone strobe.
-        wb_stb_i: u8 = 1,
-        /// Wishbone write enable.
-        wb_we_i: u8 = 1,
-        /// Wishbone word address.
-        wb_adr_i: u8 = 6,
-        /// Wishbone write data.
-        wb_dat_i: u32 = 32,
-        /// Node transmit values, bit i = node port i (1 = recessive).
-        uplink: u8 = 4,
-        /// The twin hub's contribution, bit j = interlink j.
-        sublink_in: u8 = 2,
-    }
-}
-
-port_struct! {
-    /// Every output of `hub` right after a rising edge (mirror of `HubOut` in `shim/hub_ports.h`).
-    pub struct HubOut {
-        /// Wishbone read data.
-        wb_dat_o: u32 = 32,
-        /// Wishbone acknowledge.
-        wb_ack_o: u8 = 1,
-        /// Interrupt request.
-        irq: u8 = 1,
-        /// What node i receives (all bits equal).
-        downlink: u8 = 4,
-        /// This hub's contribution on every interlink.
-        sublink_out: u8 = 2,
-        /// `coupled_q`: the signal the hub tracks.
-        coupled: u8 = 1,
-        /// Bit timing sample point probe.
-        sample_point: u8 = 1,
-        /// Tracker state.
-        trk_state: u8 = 2,
-        /// ACK window (contract §4).
-        ack_window: u8 = 1,
-        /// Decoupled (contract §7).
-        decoupled: u8 = 1,
-        /// Bit p = port p enabled.
-        port_enabled: u8 = 6,
-    }
-}
-
-/// The layout fingerprint the C side must report (`drcc_hub_abi`).
-pub fn hub_abi() -> u64 {
-    let mut h = LayoutHash::new();
-    HubIn::layout_hash(&mut h);
-    HubOut::layout_hash(&mut h);
-    h.0
-}
-
-/// The layout fingerprint the C side must report (`drcc_can_channel_abi`).
-pub fn can_channel_abi() -> u64 {
-    let mut h = LayoutHash::new();
-    CanChannelIn::layout_hash(&mut h);
-    CanChannelOut::layout_hash(&mut h);
-    h.0
 }
 
 /// Declares the raw FFI module and the safe wrapper of one Verilated top. The C side
@@ -626,30 +374,11 @@ macro_rules! verilated_top {
     };
 }
 
-verilated_top! {
-    /// The `can_channel` top.
-    wrapper CanChannel, ports CanChannelIn / CanChannelOut, abi can_channel_abi, ffi ffi {
-        drcc_can_channel_abi, drcc_can_channel_new, drcc_can_channel_free,
-        drcc_can_channel_step, drcc_can_channel_fast_edge, drcc_can_channel_set_exact,
-        drcc_can_channel_trace_open, drcc_can_channel_trace_dump, drcc_can_channel_trace_close,
-    }
-}
-
-verilated_top! {
-    /// The `drcc` top (two channels, redundancy management, RAMs, Wishbone).
-    wrapper Drcc, ports DrccIn / DrccOut, abi drcc_abi, ffi drcc_ffi {
-        drcc_drcc_abi, drcc_drcc_new, drcc_drcc_free, drcc_drcc_step, drcc_drcc_fast_edge,
-        drcc_drcc_set_exact, drcc_drcc_trace_open, drcc_drcc_trace_dump, drcc_drcc_trace_close,
-    }
-}
-
-verilated_top! {
-    /// The `hub` top (ReCANcentrate hub, N = 4 node ports, M = 2 interlinks).
-    wrapper Hub, ports HubIn / HubOut, abi hub_abi, ffi hub_ffi {
-        drcc_hub_abi, drcc_hub_new, drcc_hub_free, drcc_hub_step, drcc_hub_fast_edge,
-        drcc_hub_set_exact, drcc_hub_trace_open, drcc_hub_trace_dump, drcc_hub_trace_close,
-    }
-}
+// The port structs, layout fingerprints and wrappers of every top, generated by
+// build.rs from the tables `shim/<top>_ports.h` (see `build/tables.rs`):
+// `CanChannelIn` / `CanChannelOut` / `can_channel_abi` / `CanChannel`,
+// `DrccIn` / `DrccOut` / `drcc_abi` / `Drcc`, `HubIn` / `HubOut` / `hub_abi` / `Hub`.
+include!(concat!(env!("OUT_DIR"), "/tops.rs"));
 
 #[cfg(drcc_verilator)]
 fn path_to_cstring(path: &std::path::Path) -> std::io::Result<std::ffi::CString> {
@@ -677,6 +406,27 @@ mod tests {
         for (name, width) in CanChannelIn::PORTS.iter().chain(CanChannelOut::PORTS) {
             assert!(*width >= 1 && *width <= 64, "{name}");
         }
+    }
+
+    /// The rule of the crate docs, value by value.
+    #[test]
+    fn required_rule() {
+        for off in [
+            None,
+            Some(""),
+            Some("0"),
+            Some("false"),
+            Some("FALSE"),
+            Some("no"),
+            Some("Off"),
+            Some(" 0 "),
+        ] {
+            assert!(!required::is_on(off), "{off:?}");
+        }
+        for on in ["1", "true", "TRUE", "yes", "on", "anything"] {
+            assert!(required::is_on(Some(on)), "{on}");
+        }
+        assert_eq!(REQUIRE_VARS, ["DRCC_REQUIRE_VERILATOR", "CI"]);
     }
 
     #[test]

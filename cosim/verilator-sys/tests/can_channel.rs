@@ -1,7 +1,8 @@
 //! Tests of the Verilated `can_channel` through the safe wrapper: several instances
 //! side by side, reset values, VCD traces, and the error when the model is missing.
-//! Without the model they skip, except under CI (`CI` or `DRCC_REQUIRE_VERILATOR`
-//! set), where a missing model is a failure.
+//! Without the model they skip, except when Verilator is required
+//! (`verilator_sys::required()`: `CI` or `DRCC_REQUIRE_VERILATOR` set), where a
+//! missing model is a failure.
 
 use verilator_sys::{
     available, unavailable_reason, CanChannel, CanChannelIn, CanChannelOut, RTL_MISSING_MSG,
@@ -14,8 +15,7 @@ fn model_or_skip(test: &str) -> bool {
         return true;
     }
     let reason = unavailable_reason().unwrap_or("?");
-    let ci = std::env::var_os("CI").is_some()
-        || std::env::var("DRCC_REQUIRE_VERILATOR").is_ok_and(|v| v == "1");
+    let ci = verilator_sys::required();
     assert!(
         !ci,
         "{test}: the Verilated model is required in CI: {reason}"

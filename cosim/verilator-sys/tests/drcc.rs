@@ -7,8 +7,7 @@ use verilator_sys::{available, unavailable_reason, Drcc, DrccIn};
 #[test]
 fn id_register_reads_drcc_after_reset() {
     if !available() {
-        let ci = std::env::var_os("CI").is_some()
-            || std::env::var("DRCC_REQUIRE_VERILATOR").is_ok_and(|v| v == "1");
+        let ci = verilator_sys::required();
         assert!(
             !ci,
             "the Verilated model is required in CI: {:?}",

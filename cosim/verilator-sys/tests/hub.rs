@@ -8,8 +8,7 @@ use verilator_sys::{available, unavailable_reason, Hub, HubIn};
 
 fn model_or_skip() -> Option<Hub> {
     if !available() {
-        let ci = std::env::var_os("CI").is_some()
-            || std::env::var("DRCC_REQUIRE_VERILATOR").is_ok_and(|v| v == "1");
+        let ci = verilator_sys::required();
         assert!(
             !ci,
             "the Verilated model is required in CI: {:?}",

@@ -14,60 +14,146 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct CanChannel {
     // clock and reset
+    /// Clock. Every register changes at its rising edge; the bit timing is counted
+    /// in its periods (a time quantum is `cfg_brp + 1` clocks).
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset, active high: at an edge with `rst = 1` every register takes
+    /// its reset value and the `cfg_*` inputs are captured (contract §1, §6).
     pub rst: Signal<In, Bit>,
-    // bit-timing configuration: tq = (cfg_brp+1) clocks, TSEG1 = cfg_tseg1+1,
-    // TSEG2 = cfg_tseg2+1, SJW = min(cfg_sjw+1, TSEG2)
+    // bit-timing configuration (ISO 11898-1 11.3): captured at every edge where
+    // `rst = 1`, held while `rst = 0` (contract §6)
+    /// Baud-rate prescaler BRP, 0..63, taken as is (not a minus-one code): a time
+    /// quantum lasts `cfg_brp + 1` clocks. Captured while `rst = 1`.
     pub cfg_brp: Signal<In, Bits<6>>,
+    /// TSEG1 minus one: PROP_SEG + PHASE_SEG1 lasts `cfg_tseg1 + 1` tq (1..16),
+    /// lengthened if needed so a bit has at least 8 tq and TSEG1 at least 3 clocks
+    /// (contract §6). Captured while `rst = 1`.
     pub cfg_tseg1: Signal<In, Bits<4>>,
+    /// TSEG2 minus one: PHASE_SEG2 lasts `cfg_tseg2 + 1` tq (1..8). Captured while
+    /// `rst = 1`.
     pub cfg_tseg2: Signal<In, Bits<3>>,
+    /// SJW minus one: the resynchronisation jump width is `min(cfg_sjw + 1, TSEG2)`
+    /// tq (1..4). Captured while `rst = 1`.
     pub cfg_sjw: Signal<In, Bits<2>>,
+    /// Triple sampling, 1 = on: the sample is the majority of the bus value at the
+    /// sample point and at the two time quanta before it. Captured while `rst = 1`.
     pub cfg_triple: Signal<In, Bit>,
-    // controller configuration: mode (0 normal, 1 listen-only, 2 self-test,
-    // 3 loop-back), error warning limit, no automatic retransmission
+    // controller configuration: captured at every edge where `rst = 1` (contract §6)
+    /// Operating mode (contract §7): 0 normal, 1 listen-only (never drives the bus),
+    /// 2 self-test (no ACK needed), 3 loop-back (hears only itself, `tx` stays 1).
+    /// Captured while `rst = 1`.
     pub cfg_mode: Signal<In, Bits<2>>,
+    /// Error warning limit EWL (ISO 11898-1 default 96): `err_warning` is
+    /// `tec >= cfg_ewl || rec >= cfg_ewl`. Captured while `rst = 1`.
     pub cfg_ewl: Signal<In, Bits<8>>,
+    /// 1 = single shot, no automatic retransmission: an attempt that loses
+    /// arbitration or meets an error drops the frame (`tx_failed`, contract §8).
+    /// Captured while `rst = 1`.
     pub cfg_single_shot: Signal<In, Bit>,
-    // CAN pins (1 = recessive)
+    // CAN pins, to and from the transceiver (1 = recessive, 0 = dominant)
+    /// CAN receive pin, 1 = recessive. May be asynchronous: it passes a two
+    /// flip-flop synchronizer, so a change is seen 2 clocks later (contract §2).
     pub rx: Signal<In, Bit>,
+    /// CAN transmit pin, 1 = recessive. A register, recessive after reset and
+    /// constant 1 in loop-back mode; it changes only at the start of a bit.
     pub tx: Signal<Out, Bit>,
-    // host transmit interface
+    // host transmit interface: one frame at a time (contract §4.4, §8)
+    /// Transmit request, a one-clock pulse: at that edge `tx_id`, `tx_ide`, `tx_rtr`,
+    /// `tx_dlc` and `tx_data` are latched and `tx_pending` rises. Ignored while
+    /// `tx_pending = 1`; refused with `tx_failed` in listen-only mode.
     pub tx_req: Signal<In, Bit>,
+    /// Identifier to send, right-aligned: a base frame uses `[10:0]` (`[28:11]`
+    /// ignored), an extended frame `[28:0]`, whose base part `[28:18]` goes first
+    /// on the bus. Latched by `tx_req`.
     pub tx_id: Signal<In, Bits<29>>,
+    /// Identifier extension: 1 = extended frame (29-bit identifier), 0 = base frame
+    /// (11 bits). Latched by `tx_req`.
     pub tx_ide: Signal<In, Bit>,
+    /// 1 = remote frame (no data field; `tx_dlc` is still sent). Latched by `tx_req`.
     pub tx_rtr: Signal<In, Bit>,
+    /// Data length code as sent, 0..15; 9..15 carry 8 bytes. Latched by `tx_req`.
     pub tx_dlc: Signal<In, Bits<4>>,
+    /// Data bytes, byte 0 (the first on the bus) in `[63:56]`, byte 7 in `[7:0]`: the
+    /// data field leaves MSB first from bit 63 down. Bytes past `min(tx_dlc, 8)` are
+    /// not sent. Latched by `tx_req`.
     pub tx_data: Signal<In, Bits<64>>,
+    /// Abort request, a one-clock pulse: drops the pending frame at once while the
+    /// node is not transmitting it (and `tx` is recessive), else when the attempt in
+    /// progress fails; a successful attempt still ends with `tx_done` (contract §8).
     pub tx_abort: Signal<In, Bit>,
+    /// A frame is latched and not yet sent or dropped: 1 from the `tx_req` edge
+    /// until `tx_done` or `tx_failed`.
     pub tx_pending: Signal<Out, Bit>,
+    /// One-clock pulse: the pending frame was dropped (single-shot attempt failed,
+    /// abort carried out, or `tx_req` in listen-only mode); `tx_pending` clears.
     pub tx_failed: Signal<Out, Bit>,
+    /// One-clock pulse: the pending frame was sent (7th EOF bit recessive, ISO
+    /// 11898-1 8.1.5); `tx_pending` clears.
     pub tx_done: Signal<Out, Bit>,
+    /// One-clock pulse: arbitration lost (the bit position is in `alc`); the frame
+    /// stays pending and is retried, unless `cfg_single_shot`.
     pub arb_lost: Signal<Out, Bit>,
-    // host receive interface
+    // host receive interface: the last frame received, held until the next one
+    /// One-clock pulse: a frame was received (6th EOF bit recessive, not sent by this
+    /// node except in loop-back mode); `rx_id` .. `rx_data` are updated at that edge.
     pub rx_valid: Signal<Out, Bit>,
+    /// Received identifier, aligned as `tx_id`: base frame in `[10:0]` with `[28:11]`
+    /// zero, extended frame in `[28:0]`. Held until the next `rx_valid`.
     pub rx_id: Signal<Out, Bits<29>>,
+    /// Received frame is extended (1) or base (0). Held until the next `rx_valid`.
     pub rx_ide: Signal<Out, Bit>,
+    /// Received frame is a remote frame. Held until the next `rx_valid`.
     pub rx_rtr: Signal<Out, Bit>,
+    /// Received data length code as sent on the bus, 0..15. Held until the next
+    /// `rx_valid`.
     pub rx_dlc: Signal<Out, Bits<4>>,
+    /// Received data, byte 0 in `[63:56]` as `tx_data`; bytes past `min(rx_dlc, 8)`
+    /// and every byte of a remote frame are 0. Held until the next `rx_valid`.
     pub rx_data: Signal<Out, Bits<64>>,
-    // probes
+    // probes (contract §3, §4)
+    /// One-clock pulse, the clock after each sample point of the bit timing logic.
     pub sample_point: Signal<Out, Bit>,
+    /// Bus value taken at the last sample point, 1 = recessive.
     pub sampled_bit: Signal<Out, Bit>,
+    /// Field of the next non-stuff bit (contract §4.1): 0 integrating, 1 idle, 2 base
+    /// ID, 3 SRR/RTR, 4 IDE, 5 extension ID, 6 extended RTR, 7 r1, 8 r0, 9 DLC, 10 data,
+    /// 11 CRC, 12 CRC delimiter, 13 ACK slot, 14 ACK delimiter, 15 EOF, 16
+    /// intermission, 17 suspend, 18 error flag, 19 error delimiter, 20 overload flag,
+    /// 21 overload delimiter, 22 bus-off.
     pub field: Signal<Out, Field>,
+    /// Transmit error counter TEC (ISO 11898-1 12.1.4); above 255 the node is
+    /// bus-off.
     pub tec: Signal<Out, Bits<9>>,
+    /// Receive error counter REC, saturating at 255.
     pub rec: Signal<Out, Bits<8>>,
+    /// Fault confinement state: 0 error active, 1 error passive, 2 bus-off.
     pub err_state: Signal<Out, Bits<2>>,
-    // diagnostics
+    // diagnostics, host-visible registers (contract §9)
+    /// `tec >= cfg_ewl || rec >= cfg_ewl` (error warning limit reached).
     pub err_warning: Signal<Out, Bit>,
+    /// One-clock pulse: an error was detected; `err_kind`, `err_field` and `err_tx`
+    /// are loaded at that edge.
     pub err_valid: Signal<Out, Bit>,
+    /// Kind of the last error: 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK (0 none since
+    /// reset). Held until the next error.
     pub err_kind: Signal<Out, Bits<3>>,
+    /// `field` code of the bit in error at the last error. Held until the next error.
     pub err_field: Signal<Out, Field>,
+    /// 1 = the node was transmitter at the last error. Held until the next error.
     pub err_tx: Signal<Out, Bit>,
+    /// Arbitration-lost capture, loaded with `arb_lost`: base-ID bit i (0 = first,
+    /// most significant) is i, SRR/RTR 11, IDE 12, extension bit j is 13 + j, the
+    /// RTR of an extended frame 31.
     pub alc: Signal<Out, Bits<5>>,
+    /// Bit errors counted since reset, saturating at 255.
     pub cnt_bit: Signal<Out, Bits<8>>,
+    /// Stuff errors counted since reset, saturating at 255.
     pub cnt_stuff: Signal<Out, Bits<8>>,
+    /// CRC errors counted since reset, saturating at 255.
     pub cnt_crc: Signal<Out, Bits<8>>,
+    /// Form errors counted since reset, saturating at 255.
     pub cnt_form: Signal<Out, Bits<8>>,
+    /// ACK errors counted since reset, saturating at 255.
     pub cnt_ack: Signal<Out, Bits<8>>,
     // blocks
     cfg_regs: ChannelConfig,

@@ -30,29 +30,61 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct Hub<const N: usize, const M: usize, const P: usize> {
     // clock and reset
+    /// Clock. Every register changes at its rising edge; the hub's bit timing
+    /// (register `BTR`) is counted in its periods.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset of everything, active high: at an edge with `rst = 1`
+    /// every register takes its reset value and every link output is recessive.
     pub rst: Signal<In, Bit>,
-    // Wishbone B4 classic slave
+    // Wishbone B4 classic slave, as the DRCC's (hub_contract.md §1, §8)
+    /// Wishbone cycle, active high. A transaction is taken at an edge where
+    /// `wb_cyc_i & wb_stb_i & !wb_ack_o`.
     pub wb_cyc_i: Signal<In, Bit>,
+    /// Wishbone strobe, active high.
     pub wb_stb_i: Signal<In, Bit>,
+    /// Wishbone write enable: 1 = write, 0 = read.
     pub wb_we_i: Signal<In, Bit>,
+    /// Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i`
+    /// (hub contract §8).
     pub wb_adr_i: Signal<In, Bits<6>>,
+    /// Wishbone write data, always a full word (no `wb_sel_i`).
     pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Wishbone read data, valid while `wb_ack_o = 1`, else 0.
     pub wb_dat_o: Signal<Out, Bits<32>>,
+    /// Wishbone acknowledge, 1 for the clock after the edge that took the
+    /// transaction: every access takes 2 clocks.
     pub wb_ack_o: Signal<Out, Bit>,
+    /// Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     pub irq: Signal<Out, Bit>,
-    // node links (1 = recessive)
+    // node links: bit i belongs to node port i (1 = recessive, 0 = dominant)
+    /// Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive; each is
+    /// synchronized by two flip-flops.
     pub uplink: Signal<In, Bits<N>>,
+    /// What node i receives, bit i (N bits), 1 = recessive; every bit carries the
+    /// same value (registers; in the ACK window only the twin hub's contribution
+    /// while ACK interdependence is on).
     pub downlink: Signal<Out, Bits<N>>,
-    // interlinks
+    // interlinks to the twin hub: bit j belongs to interlink j
+    /// This hub's contribution (the AND of its enabled node ports), the same on
+    /// each of the M interlinks, 1 = recessive. Wire it to the twin's `sublink_in`.
     pub sublink_out: Signal<Out, Bits<M>>,
+    /// The twin hub's contribution, bit j = interlink j (M bits), 1 = recessive;
+    /// each is synchronized by two flip-flops.
     pub sublink_in: Signal<In, Bits<M>>,
-    // probes
+    // probes (hub_contract.md §3 - §7)
+    /// `coupled_q`: the coupled bus value the hub tracks, 1 = recessive.
     pub coupled: Signal<Out, Bit>,
+    /// One-clock pulse, the clock after each sample point of the hub's bit timing.
     pub sample_point: Signal<Out, Bit>,
+    /// Frame tracker state: 0 IDLE_WAIT, 1 FRAME, 2 ACK_SLOT, 3 ACK_DELIM.
     pub trk_state: Signal<Out, Bits<2>>,
+    /// 1 while the tracker is in the ACK slot or ACK delimiter (the ACK window).
     pub ack_window: Signal<Out, Bit>,
+    /// 1 once the hub has decoupled from its twin (sticky until `CTRL.recouple` or
+    /// reset mode).
     pub decoupled: Signal<Out, Bit>,
+    /// Bit p = port p enabled (not isolated): node ports 0..N-1, then the incoming
+    /// sublinks N..N+M-1 (P = N + M bits).
     pub port_enabled: Signal<Out, Bits<P>>,
     // blocks
     regs: HubRegs<N, M, P>,

@@ -75,12 +75,9 @@ pub fn model_iut() -> Box<dyn ChannelEngine> {
     Box::new(ModelEngine::new())
 }
 
-/// Whether a missing Verilator must fail the verilator variants: `CI` (or
-/// `DRCC_REQUIRE_VERILATOR`) set to anything but empty, `0` or `false`.
-pub fn verilator_required() -> bool {
-    let set = |k: &str| std::env::var(k).is_ok_and(|v| !v.is_empty() && v != "0" && v != "false");
-    set("CI") || set("DRCC_REQUIRE_VERILATOR")
-}
+/// Whether a missing Verilator must fail the verilator variants (the one rule
+/// of `verilator_sys::required`).
+pub use crate::engines::verilator_required;
 
 /// Runs `item` on Verilated IUTs. Without the Verilated model the item fails in CI
 /// ([`verilator_required`]) and is skipped with a message elsewhere.

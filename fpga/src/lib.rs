@@ -21,10 +21,12 @@
 //! toolchain: [`tools`] (finding and running the programs), [`target`] (the
 //! families and boards), [`yosys`], [`nextpnr`], [`icepack`], [`scan`] (the
 //! wrapper), [`flow`] (one top on one target), [`report`] (the serde report and
-//! its text) and [`markdown`] (the generated table and document).
+//! its text), [`json`] (its `--json` layout) and [`markdown`] (the generated
+//! table and document).
 
 pub mod flow;
 pub mod icepack;
+pub mod json;
 pub mod markdown;
 pub mod nextpnr;
 pub mod report;

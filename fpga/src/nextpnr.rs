@@ -7,7 +7,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use crate::report::round3;
+use crate::json::round3;
 use crate::tools::{run_logged, NEXTPNR_ICE40};
 use crate::Error;
 

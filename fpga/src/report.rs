@@ -6,6 +6,8 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize, Serializer};
 
+use crate::json::round3;
+
 use crate::nextpnr::CriticalPath;
 use crate::target::{Target, FMAX_MARGIN, RECOMMENDED_CLOCK_MHZ, REFERENCE_NAME};
 use crate::yosys::Area;
@@ -168,16 +170,6 @@ pub fn ratio(a: u64, b: u64) -> f64 {
         0.0
     } else {
         a as f64 / b as f64
-    }
-}
-
-/// Writes a number as the reports always have: three decimals at most, a
-/// non-finite one as `null`.
-pub(crate) fn round3<S: Serializer>(x: &f64, s: S) -> Result<S::Ok, S::Error> {
-    if x.is_finite() {
-        s.serialize_f64(format!("{x:.3}").parse().unwrap_or(*x))
-    } else {
-        s.serialize_none()
     }
 }
 

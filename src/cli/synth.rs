@@ -114,12 +114,7 @@ pub fn run(args: SynthArgs) -> CliResult {
         }
     }
     if args.json {
-        let json = if results.len() == 1 && !args.all {
-            serde_json::to_string_pretty(&results[0])
-        } else {
-            serde_json::to_string_pretty(&results)
-        };
-        let json = json.map_err(|e| CliError::Error(format!("cannot write the report: {e}")))?;
+        let json = drcc_fpga::json::reports(&results, args.all)?;
         println!("{json}");
     }
     if args.markdown {

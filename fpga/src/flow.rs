@@ -165,3 +165,60 @@ impl Flow<'_> {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn flow_in(workspace: &Path) -> Flow<'static> {
+        Flow {
+            workspace: workspace.to_path_buf(),
+            build_root: workspace.join("build"),
+            env: ToolEnv::default(),
+            progress: &|_| {},
+        }
+    }
+
+    /// The wrapper is built from the block's ports, so the Verilog yosys reads
+    /// must be that block's: a stale `rtl-out/` file is refused.
+    #[test]
+    fn stale_rtl_is_refused() {
+        let top = drcc_hdl::tops::top("can_channel").unwrap();
+        let ws = std::env::temp_dir().join(format!("drcc-fpga-stale-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&ws);
+        let flow = flow_in(&ws);
+        let missing = flow.rtl(top).unwrap_err().0;
+        assert!(missing.contains("run `drcc generate` first"), "{missing}");
+        let file = ws.join("rtl-out").join("can_channel.v");
+        write_file(&file, &top.verilog()).unwrap();
+        assert_eq!(flow.rtl(top).unwrap(), abs(&file).unwrap());
+        write_file(
+            &file,
+            &top.verilog()
+                .replace("input wire  rx;", "input wire  rx_old;"),
+        )
+        .unwrap();
+        let stale = flow.rtl(top).unwrap_err().0;
+        assert!(
+            stale.contains("is not the Verilog of the drcc-hdl block"),
+            "{stale}"
+        );
+        let _ = std::fs::remove_dir_all(&ws);
+    }
+
+    /// A family this yosys cannot synthesise gets a report with no numbers,
+    /// and nothing is run.
+    #[test]
+    fn unsupported_family_is_reported_not_run() {
+        let top = drcc_hdl::tops::top("can_channel").unwrap();
+        let mut flow = flow_in(Path::new("/nonexistent"));
+        flow.env.unsupported.insert(
+            "xc3s",
+            "yosys 0.9: `synth_xilinx` does not support `-family xc3s`".into(),
+        );
+        let r = flow.run(top, Target::by_name("xc3s").unwrap()).unwrap();
+        assert!(r.measured.is_none());
+        assert_eq!(r.board, "Digilent Spartan-3 Starter Board");
+        assert!(r.unsupported.unwrap().contains("-family xc3s"));
+    }
+}

@@ -6,8 +6,9 @@
 //! (`verilator_sys::required()`: `CI` or `DRCC_REQUIRE_VERILATOR` set to anything
 //! but empty, `0`, `false`, `no` or `off`), where it fails with the install hint.
 
-use std::path::PathBuf;
 use std::process::{Command, Output};
+
+use drcc_fpga::SynthReport;
 
 fn drcc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_drcc"))
@@ -21,40 +22,6 @@ fn drcc(args: &[&str]) -> Output {
 /// `no` or `off`), shared with every test that needs an external tool.
 fn ci() -> bool {
     drcc_testbench::engines::tools_required()
-}
-
-/// The number after `"key": ` in the first object that follows `"section": `
-/// (or anywhere if `section` is empty).
-fn number(json: &str, section: &str, key: &str) -> f64 {
-    let from = if section.is_empty() {
-        0
-    } else {
-        json.find(&format!("\"{section}\": "))
-            .unwrap_or_else(|| panic!("no {section} in {json}"))
-    };
-    let pat = format!("\"{key}\": ");
-    let at = json[from..]
-        .find(&pat)
-        .unwrap_or_else(|| panic!("no {section}.{key} in {json}"))
-        + from
-        + pat.len();
-    let digits: String = json[at..]
-        .chars()
-        .take_while(|c| c.is_ascii_digit() || *c == '.')
-        .collect();
-    digits
-        .parse()
-        .unwrap_or_else(|_| panic!("{section}.{key} is not a number in {json}"))
-}
-
-fn string(json: &str, key: &str) -> String {
-    let pat = format!("\"{key}\": \"");
-    let at = json
-        .find(&pat)
-        .unwrap_or_else(|| panic!("no {key} in {json}"))
-        + pat.len();
-    let end = json[at..].find('"').expect("closing quote") + at;
-    json[at..end].to_string()
 }
 
 #[test]
@@ -86,19 +53,30 @@ fn ice40_flow_writes_a_bitstream_and_reports_area_and_fmax() {
         }
         panic!("drcc synth failed ({}): {stderr}", out.status);
     }
-    let json = stdout.trim();
-    assert!(json.starts_with('{') && json.ends_with('}'), "{json}");
-    let lut = number(json, "top_area", "lut");
-    let ff = number(json, "top_area", "ff");
-    assert!(lut > 0.0 && ff > 0.0, "LUT {lut}, FF {ff}: {json}");
+    let report: SynthReport = serde_json::from_str(stdout.trim())
+        .unwrap_or_else(|e| panic!("--json is not one report ({e}): {stdout}"));
+    assert_eq!(
+        (report.top.as_str(), report.target.name),
+        ("can_channel", "ice40")
+    );
+    let m = report
+        .measured
+        .as_ref()
+        .unwrap_or_else(|| panic!("no numbers: {report:?}"));
+    let (lut, ff) = (m.top_area.lut, m.top_area.ff);
+    assert!(lut > 0 && ff > 0, "LUT {lut}, FF {ff}: {report:?}");
     // The wrapper adds its scan chain on top of the channel.
-    assert!(number(json, "wrapper_area", "ff") > ff, "{json}");
-    let fmax = number(json, "pnr", "fmax_mhz");
-    assert!(fmax > 1.0 && fmax < 1000.0, "Fmax {fmax} MHz: {json}");
-    assert_eq!(number(json, "pnr", "constraint_mhz"), 12.0, "{json}");
-    let bitstream = PathBuf::from(string(json, "bitstream"));
+    assert!(m.wrapper_area.ff > ff, "{report:?}");
+    let pnr = m.pnr.as_ref().expect("iCE40 is placed and routed");
+    assert!(
+        pnr.fmax_mhz > 1.0 && pnr.fmax_mhz < 1000.0,
+        "Fmax {} MHz: {report:?}",
+        pnr.fmax_mhz
+    );
+    assert_eq!(pnr.constraint_mhz, 12.0, "{report:?}");
+    let bitstream = &pnr.bitstream;
     assert!(bitstream.starts_with(&dir), "{}", bitstream.display());
-    let len = std::fs::metadata(&bitstream)
+    let len = std::fs::metadata(bitstream)
         .unwrap_or_else(|e| panic!("no bitstream {}: {e}", bitstream.display()))
         .len();
     // An iCE40UP5K bitstream is about 100 kB.

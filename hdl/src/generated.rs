@@ -22,5 +22,13 @@ pub fn extras() -> Vec<GeneratedFile> {
             path: "docs/registers.md",
             text: crate::host::registers::markdown(),
         },
+        GeneratedFile {
+            path: "rtl-out/hub_regs.h",
+            text: crate::host::hub_registers::c_header(),
+        },
+        GeneratedFile {
+            path: "docs/hub_registers.md",
+            text: crate::host::hub_registers::markdown(),
+        },
     ]
 }

@@ -1,6 +1,8 @@
-//! The DRCC's `CTRL` register (DRCC contract §3, §9): reset mode, the operating
-//! mode ([`Mode`]), the switch policy ([`SwitchPolicy`]), `dual_tx`, `k`, the
-//! channel modes ([`ChannelMode`]) and `single_shot`, with the refusals of §9:
+//! The DRCC's `CTRL` register (DRCC contract §3, §9): the storage of reset
+//! mode, the operating mode ([`Mode`]), the switch policy, `dual_tx`, `k`, the
+//! channel modes ([`ChannelMode`]) and `single_shot`. The refusals of §9 are
+//! decided by [`CtrlCheck`] (combinational, beside it in the register block, so
+//! that no always block both takes the write and flags it):
 //!
 //! - in reset mode (before the write) the whole word is taken, except that a
 //!   write with the illegal policy code, or with redundancy and a listen-only
@@ -10,8 +12,12 @@
 //!
 //! Field positions and reset values come from the table (`super::registers`).
 
+#[cfg(doc)]
+use super::ctrl_check::CtrlCheck;
 use super::map::lsb;
-use super::registers::{ChannelMode, Mode, MAP, POLICY_ILLEGAL};
+#[cfg(doc)]
+use super::registers::ChannelMode;
+use super::registers::{Mode, MAP};
 use rust_hdl::prelude::*;
 
 /// `CTRL`.
@@ -27,9 +33,10 @@ pub struct CtrlReg {
     pub we: Signal<In, Bit>,
     /// The written word.
     pub wdat: Signal<In, Bits<32>>,
-    /// A write of `wdat` now is refused or flagged (§9): with `we`, the
-    /// `INT_STATUS.illegal` event.
-    pub illegal: Signal<Out, Bit>,
+    /// [`CtrlCheck::refused`]: in reset mode the write is not taken.
+    pub refused: Signal<In, Bit>,
+    /// [`CtrlCheck::k_in`]: the `k` to store.
+    pub k_in: Signal<In, Bits<4>>,
     /// The register's value, for reads.
     pub word: Signal<Out, Bits<32>>,
     // ---- fields ----
@@ -40,7 +47,7 @@ pub struct CtrlReg {
     pub reset_mode_d: Signal<Out, Bit>,
     /// [`Mode`]: 1 = redundancy mode.
     pub redundancy: Signal<Out, Bit>,
-    /// [`SwitchPolicy`] code.
+    /// `SwitchPolicy` code.
     pub policy: Signal<Out, Bits<2>>,
     /// Redundancy mode: every message on A, then its copy on B.
     pub dual_tx: Signal<Out, Bit>,
@@ -62,9 +69,6 @@ pub struct CtrlReg {
     mode_a_q: DFF<Bits<2>>,
     mode_b_q: DFF<Bits<2>>,
     single_shot_q: DFF<Bit>,
-    k_in: Signal<Local, Bits<4>>,
-    cfg_differs: Signal<Local, Bit>,
-    refused: Signal<Local, Bit>,
     // ---- field positions (from the table) ----
     p_reset_mode: Constant<Bits<5>>,
     p_redundancy: Constant<Bits<5>>,
@@ -75,14 +79,10 @@ pub struct CtrlReg {
     p_mode_b: Constant<Bits<5>>,
     p_single_shot: Constant<Bits<5>>,
     // ---- codes and reset values ----
-    policy_illegal: Constant<Bits<2>>,
-    mode_listen: Constant<Bits<2>>,
     redundancy_reset: Constant<Bit>,
     policy_reset: Constant<Bits<2>>,
     k_reset: Constant<Bits<4>>,
     mode_reset: Constant<Bits<2>>,
-    zero4: Constant<Bits<4>>,
-    one4: Constant<Bits<4>>,
 }
 
 impl Default for CtrlReg {
@@ -96,7 +96,8 @@ impl Default for CtrlReg {
             rst: Default::default(),
             we: Default::default(),
             wdat: Default::default(),
-            illegal: Default::default(),
+            refused: Default::default(),
+            k_in: Default::default(),
             word: Default::default(),
             reset_mode: Default::default(),
             reset_mode_d: Default::default(),
@@ -116,9 +117,6 @@ impl Default for CtrlReg {
             mode_a_q: Default::default(),
             mode_b_q: Default::default(),
             single_shot_q: Default::default(),
-            k_in: Default::default(),
-            cfg_differs: Default::default(),
-            refused: Default::default(),
             p_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
             p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
             p_policy: lsb(&MAP, "CTRL", "policy", 2),
@@ -127,14 +125,10 @@ impl Default for CtrlReg {
             p_mode_a: lsb(&MAP, "CTRL", "mode_a", 2),
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
-            policy_illegal: Constant::new((POLICY_ILLEGAL as u64).into()),
-            mode_listen: Constant::new((ChannelMode::ListenOnly.code() as u64).into()),
             redundancy_reset: Constant::new(reset("redundancy") == Mode::Redundancy.code() as u64),
             policy_reset: Constant::new(reset("policy").into()),
             k_reset: Constant::new(reset("k").into()),
             mode_reset: Constant::new(reset("mode_a").into()),
-            zero4: Constant::new(0.into()),
-            one4: Constant::new(1.into()),
         }
     }
 }
@@ -156,37 +150,6 @@ impl Logic for CtrlReg {
             single_shot_q
         );
         self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
-        // k = 0 is stored as 1 (§9)
-        if self.wdat.val().get_bits::<4>(self.p_k.val().index()) == self.zero4.val() {
-            self.k_in.next = self.one4.val();
-        } else {
-            self.k_in.next = self.wdat.val().get_bits::<4>(self.p_k.val().index());
-        }
-        // an illegal policy, or redundancy with a listen-only channel (§9)
-        self.refused.next = (self.wdat.val().get_bits::<2>(self.p_policy.val().index())
-            == self.policy_illegal.val())
-            | (self.wdat.val().get_bit(self.p_redundancy.val().index())
-                & ((self.wdat.val().get_bits::<2>(self.p_mode_a.val().index())
-                    == self.mode_listen.val())
-                    | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index())
-                        == self.mode_listen.val())));
-        self.cfg_differs.next = (self.wdat.val().get_bit(self.p_redundancy.val().index())
-            != self.redundancy_q.q.val())
-            | (self.wdat.val().get_bits::<2>(self.p_policy.val().index()) != self.policy_q.q.val())
-            | (self.wdat.val().get_bit(self.p_dual_tx.val().index()) != self.dual_tx_q.q.val())
-            | (self.k_in.val() != self.k_q.q.val())
-            | (self.wdat.val().get_bits::<2>(self.p_mode_a.val().index()) != self.mode_a_q.q.val())
-            | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index()) != self.mode_b_q.q.val())
-            | (self.wdat.val().get_bit(self.p_single_shot.val().index())
-                != self.single_shot_q.q.val());
-
-        // what a write of wdat would flag: independent of `we`, so the decoder
-        // reads it without a path back through this block
-        if self.reset_mode_q.q.val() {
-            self.illegal.next = self.refused.val();
-        } else {
-            self.illegal.next = self.cfg_differs.val();
-        }
         if self.we.val() {
             if self.reset_mode_q.q.val() {
                 if !self.refused.val() {
@@ -244,81 +207,9 @@ impl Logic for CtrlReg {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::host::registers::SwitchPolicy;
-
-    fn write(uut: &mut CtrlReg, word: u32) -> bool {
-        uut.we.next = true;
-        uut.wdat.next = (word as u64).into();
-        uut.clk.next = Clock::from(false);
-        assert!(simulate(uut, 50));
-        let illegal = uut.illegal.val();
-        uut.clk.next = Clock::from(true);
-        assert!(simulate(uut, 50));
-        uut.we.next = false;
-        illegal
-    }
-
-    fn ctrl(fields: &[(&str, u32)]) -> u32 {
-        fields
-            .iter()
-            .fold(0, |w, (n, v)| w | MAP.field("CTRL", n).put(*v))
-    }
-
-    #[test]
-    fn ctrl_reg_synthesizes() {
-        let mut uut = CtrlReg::default();
-        uut.connect_all();
-        yosys_validate("ctrl_reg", &generate_verilog(&uut)).unwrap();
-    }
-
-    /// Contract §9, with the words built from the table and the named codes.
-    #[test]
-    fn refusals_of_section_9() {
-        let mut uut = CtrlReg::default();
-        uut.connect_all();
-        uut.rst.next = true;
-        write(&mut uut, 0);
-        uut.rst.next = false;
-        let reset = MAP.register("CTRL").unwrap().reset_value();
-        assert_eq!(uut.word.val().to_u64() as u32, reset);
-        // policy 3: refused as a whole
-        assert!(write(
-            &mut uut,
-            ctrl(&[("reset_mode", 1), ("policy", POLICY_ILLEGAL)])
-        ));
-        assert_eq!(uut.word.val().to_u64() as u32, reset);
-        // redundancy with a listen-only channel: refused
-        let listen = ChannelMode::ListenOnly.code();
-        assert!(write(
-            &mut uut,
-            ctrl(&[("reset_mode", 1), ("redundancy", 1), ("mode_b", listen)])
-        ));
-        assert_eq!(uut.word.val().to_u64() as u32, reset);
-        // k = 0 is stored as 1, not refused
-        let word = ctrl(&[
-            ("reset_mode", 1),
-            ("redundancy", Mode::Redundancy.code()),
-            ("policy", SwitchPolicy::KFailed.code()),
-            ("mode_a", ChannelMode::SelfTest.code()),
-        ]);
-        assert!(!write(&mut uut, word));
-        assert_eq!(uut.word.val().to_u64() as u32, word | ctrl(&[("k", 1)]));
-        assert_eq!(
-            uut.policy.val().to_u64() as u32,
-            SwitchPolicy::KFailed.code()
-        );
-        // leaving reset mode with the same cfg fields is legal; then a cfg change
-        // is flagged and only reset_mode is taken
-        let running = word & !ctrl(&[("reset_mode", 1)]) | ctrl(&[("k", 1)]);
-        assert!(!write(&mut uut, running));
-        assert!(!uut.reset_mode.val());
-        assert!(write(
-            &mut uut,
-            running | ctrl(&[("dual_tx", 1), ("reset_mode", 1)])
-        ));
-        assert!(uut.reset_mode.val() && !uut.dual_tx.val());
-    }
+#[test]
+fn ctrl_reg_synthesizes() {
+    let mut uut = CtrlReg::default();
+    uut.connect_all();
+    yosys_validate("ctrl_reg", &generate_verilog(&uut)).unwrap();
 }

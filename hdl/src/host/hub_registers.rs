@@ -9,7 +9,7 @@
 //! describes the emitted top (N = 4, M = 2): `ID` carries N and M, `STATUS.enabled`
 //! has one bit per port, and `PORT_p` is one register repeated at `PORT0 + p`.
 
-use super::map::{cfg, f, Access, Field, Register, RegisterMap};
+use super::map::{cfg, cmd, f, Access, Field, Register, RegisterMap};
 use crate::register_enum;
 
 /// Node ports of the emitted top.
@@ -102,8 +102,8 @@ pub const REGISTERS: &[Register] = &[
         desc: "Control; commands act only with reset_mode 0 before the write and in it",
         fields: &[
             f("reset_mode", 0, 1, 1, "1 = reset mode: a transparent two-stage AND star"),
-            f("force_decouple", 1, 1, 0, "write 1: decouple now (command, reads 0)"),
-            f("recouple", 2, 1, 0, "write 1: recouple and enable every sublink (command, reads 0); both commands in one write are refused"),
+            cmd("force_decouple", 1, "decouple now"),
+            cmd("recouple", 2, "recouple and enable every sublink; both commands in one write are refused"),
             cfg("ack_interdep", 8, 1, 1, "ACK interdependence (ReCANcentrate paper section 4)"),
         ],
     },
@@ -235,12 +235,12 @@ pub fn register(name: &str) -> Option<&'static Register> {
 
 /// `docs/hub_registers.md`.
 pub fn markdown() -> String {
-    super::map::markdown(&MAP)
+    super::generate::markdown(&MAP)
 }
 
 /// `rtl-out/hub_regs.h`.
 pub fn c_header() -> String {
-    let h = super::map::c_header(&MAP);
+    let h = super::generate::c_header(&MAP);
     let port = "/* PORT_p of port p < HUB_PORTS */\n\
                 #define HUB_PORT_INDEX(p) (HUB_PORT0_INDEX + (p))\n\
                 #define HUB_PORT_OFFSET(p) (HUB_PORT0_OFFSET + 4u * (p))\n\n#endif";

@@ -9,7 +9,7 @@
 //! `rtl-out/drcc_regs.h` (written by `drcc generate`, checked by
 //! `drcc generate --check`).
 
-use super::map::{cfg, f, CodeList, RegisterMap};
+use super::map::{cfg, cmd, f, CodeList, RegisterMap};
 pub use super::map::{Access, Field, Register};
 use crate::register_enum;
 
@@ -382,7 +382,7 @@ pub const REGISTERS: &[Register] = &[
         index: TX_CMD,
         access: Access::Wo,
         desc: "Transmit command",
-        fields: &[f("push", 0, 1, 0, "append the staged frame to a TX queue (refused in reset mode or when full)")],
+        fields: &[cmd("push", 0, "append the staged frame to a TX queue (refused in reset mode or when full)")],
     },
     Register {
         name: "RX_ID",
@@ -425,7 +425,7 @@ pub const REGISTERS: &[Register] = &[
         index: RX_CMD,
         access: Access::Wo,
         desc: "Receive command",
-        fields: &[f("pop", 0, 1, 0, "remove the head of the RX FIFO (refused when empty)")],
+        fields: &[cmd("pop", 0, "remove the head of the RX FIFO (refused when empty)")],
     },
     Register {
         name: "STATS0",
@@ -500,12 +500,12 @@ pub fn register(name: &str) -> Option<&'static Register> {
 
 /// `docs/registers.md`.
 pub fn markdown() -> String {
-    super::map::markdown(&MAP)
+    super::generate::markdown(&MAP)
 }
 
 /// `rtl-out/drcc_regs.h`.
 pub fn c_header() -> String {
-    super::map::c_header(&MAP)
+    super::generate::c_header(&MAP)
 }
 
 #[cfg(test)]

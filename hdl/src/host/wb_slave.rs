@@ -11,7 +11,7 @@
 //!   when `int_enable_we`; `irq <= |(int_status & int_enable)` (registered, so it
 //!   follows `INT_STATUS` by one clock).
 //!
-//! The register block decodes the address and data (`taken`, `wr` come out
+//! The register block decodes the address and data (`wr` comes out
 //! combinationally) and hands back the read value, the events and the W1C bits.
 
 use rust_hdl::prelude::*;
@@ -39,8 +39,6 @@ pub struct WbSlave<const W: usize> {
     /// Interrupt request: `|(INT_STATUS & INT_ENABLE)` one clock later.
     pub irq: Signal<Out, Bit>,
     // ---- to the register decoder ----
-    /// An access is taken at this edge (`cyc & stb & !ack`).
-    pub taken: Signal<Out, Bit>,
     /// A write is taken at this edge.
     pub wr: Signal<Out, Bit>,
     /// `INT_STATUS` (registered).
@@ -59,6 +57,8 @@ pub struct WbSlave<const W: usize> {
     /// ... with this value.
     pub int_enable_d: Signal<In, Bits<W>>,
     // ---- state ----
+    /// An access is taken at this edge (`cyc & stb & !ack`).
+    taken: Signal<Local, Bit>,
     ack_q: DFF<Bit>,
     dat_q: DFF<Bits<32>>,
     irq_q: DFF<Bit>,

@@ -13,6 +13,7 @@
 //! - The `err_state` event is raised here when either channel's error state
 //!   differs from its value one clock earlier (§8).
 
+use super::ctrl_check::CtrlCheck;
 use super::ctrl_reg::CtrlReg;
 use super::map::lsb;
 use super::registers::{self as map, MAP};
@@ -129,6 +130,7 @@ pub struct WbRegs {
     // ---- blocks ----
     bus: WbSlave<8>,
     ctrl: CtrlReg,
+    ctrl_check: CtrlCheck,
     // ---- registers ----
     btr_q: DFF<Bits<24>>,
     rmb_cfg_q: DFF<Bits<32>>,
@@ -280,6 +282,7 @@ impl Default for WbRegs {
             recoveries: Default::default(),
             bus: Default::default(),
             ctrl: Default::default(),
+            ctrl_check: Default::default(),
             btr_q: Default::default(),
             rmb_cfg_q: Default::default(),
             window_q: Default::default(),
@@ -410,8 +413,21 @@ impl Logic for WbRegs {
         // ---- writes (§3, §9) ----
         self.ctrl.clk.next = self.clk.val();
         self.ctrl.rst.next = self.rst.val();
-        self.ctrl.we.next = false;
+        self.ctrl.we.next = self.wr.val() & (self.wb_adr_i.val() == self.a_ctrl.val());
         self.ctrl.wdat.next = self.wdat.val();
+        self.ctrl.refused.next = self.ctrl_check.refused.val();
+        self.ctrl.k_in.next = self.ctrl_check.k_in.val();
+        // from the port, not the local copy: Verilator then orders this apart from
+        // the decode that reads the verdict (no circular logic, UNOPTFLAT)
+        self.ctrl_check.wdat.next = self.wb_dat_i.val();
+        self.ctrl_check.reset_mode.next = self.ctrl.reset_mode.val();
+        self.ctrl_check.redundancy.next = self.ctrl.redundancy.val();
+        self.ctrl_check.policy.next = self.ctrl.policy.val();
+        self.ctrl_check.dual_tx.next = self.ctrl.dual_tx.val();
+        self.ctrl_check.k.next = self.ctrl.k.val();
+        self.ctrl_check.mode_a.next = self.ctrl.mode_a.val();
+        self.ctrl_check.mode_b.next = self.ctrl.mode_b.val();
+        self.ctrl_check.single_shot.next = self.ctrl.single_shot.val();
         self.illegal.next = false;
         self.w1c.next = self.zero8.val();
         self.bus.int_enable_we.next = false;
@@ -428,8 +444,7 @@ impl Logic for WbRegs {
 
         if self.wr.val() {
             if self.wb_adr_i.val() == self.a_ctrl.val() {
-                self.ctrl.we.next = true;
-                self.illegal.next = self.ctrl.illegal.val();
+                self.illegal.next = self.ctrl_check.illegal.val();
             } else if self.wb_adr_i.val() == self.a_btr.val() {
                 if self.ctrl.reset_mode.val() {
                     self.btr_q.d.next = self.wdat.val().get_bits::<24>(0);

@@ -25,7 +25,7 @@
 //! and cause bits cleared; `failures` and `recoveries` clear with `rst` only.
 
 use super::switch_policy::FailureJudge;
-use crate::host::registers::ErrState;
+use crate::host::registers::{AuxState, ErrState};
 use rust_hdl::prelude::*;
 
 /// Auxiliary FSM of one channel.
@@ -128,10 +128,10 @@ impl Default for AuxFsm {
             judge: Default::default(),
             now_causes: Default::default(),
             rb_eff: Default::default(),
-            s_valid: Constant::new(0.into()),
-            s_failed: Constant::new(1.into()),
-            s_restart: Constant::new(2.into()),
-            s_probation: Constant::new(3.into()),
+            s_valid: Constant::new((AuxState::Valid.code() as u64).into()),
+            s_failed: Constant::new((AuxState::Failed.code() as u64).into()),
+            s_restart: Constant::new((AuxState::Restart.code() as u64).into()),
+            s_probation: Constant::new((AuxState::Probation.code() as u64).into()),
             es_busoff: Constant::new((ErrState::BusOff.code() as u64).into()),
             one4: Constant::new(1.into()),
             zero4: Constant::new(0.into()),
@@ -202,7 +202,7 @@ impl Logic for AuxFsm {
         }
 
         if self.st.q.val() == self.s_valid.val() {
-            if self.now_causes.val() != self.zero4.val() {
+            if self.judge.failed.val() {
                 self.st.d.next = self.s_failed.val();
                 self.causes_q.d.next = self.causes_q.q.val() | self.now_causes.val();
                 if self.failures_q.q.val() != self.max8.val() {

@@ -1110,7 +1110,7 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             rb_eff = recovery_bits;
         end
         if (st__q == s_valid) begin
-            if (now_causes != zero4) begin
+            if (judge__failed) begin
                 st__d = s_failed;
                 causes_q__d = causes_q__q | now_causes;
                 if (failures_q__q != max8) begin
@@ -1529,7 +1529,7 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             rb_eff = recovery_bits;
         end
         if (st__q == s_valid) begin
-            if (now_causes != zero4) begin
+            if (judge__failed) begin
                 st__d = s_failed;
                 causes_q__d = causes_q__q | now_causes;
                 if (failures_q__q != max8) begin
@@ -12563,7 +12563,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     wire  [31:0] bus__wb_dat_o;
     wire  bus__wb_ack_o;
     wire  bus__irq;
-    wire  bus__taken;
     wire  bus__wr;
     wire  [7:0] bus__int_status;
     wire  [7:0] bus__int_enable;
@@ -12576,7 +12575,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  ctrl__rst;
     reg  ctrl__we;
     reg  [31:0] ctrl__wdat;
-    wire  ctrl__illegal;
+    reg  ctrl__refused;
+    reg  [3:0] ctrl__k_in;
     wire  [31:0] ctrl__word;
     wire  ctrl__reset_mode;
     wire  ctrl__reset_mode_d;
@@ -12587,6 +12587,18 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     wire  [1:0] ctrl__mode_a;
     wire  [1:0] ctrl__mode_b;
     wire  ctrl__single_shot;
+    reg  [31:0] ctrl_check__wdat;
+    reg  ctrl_check__reset_mode;
+    reg  ctrl_check__redundancy;
+    reg  [1:0] ctrl_check__policy;
+    reg  ctrl_check__dual_tx;
+    reg  [3:0] ctrl_check__k;
+    reg  [1:0] ctrl_check__mode_a;
+    reg  [1:0] ctrl_check__mode_b;
+    reg  ctrl_check__single_shot;
+    wire  [3:0] ctrl_check__k_in;
+    wire  ctrl_check__refused;
+    wire  ctrl_check__illegal;
     reg  [23:0] btr_q__d;
     wire  [23:0] btr_q__q;
     reg  btr_q__clock;
@@ -12644,7 +12656,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .wb_dat_o(bus__wb_dat_o),
         .wb_ack_o(bus__wb_ack_o),
         .irq(bus__irq),
-        .taken(bus__taken),
         .wr(bus__wr),
         .int_status(bus__int_status),
         .int_enable(bus__int_enable),
@@ -12659,7 +12670,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .rst(ctrl__rst),
         .we(ctrl__we),
         .wdat(ctrl__wdat),
-        .illegal(ctrl__illegal),
+        .refused(ctrl__refused),
+        .k_in(ctrl__k_in),
         .word(ctrl__word),
         .reset_mode(ctrl__reset_mode),
         .reset_mode_d(ctrl__reset_mode_d),
@@ -12670,6 +12682,20 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .mode_a(ctrl__mode_a),
         .mode_b(ctrl__mode_b),
         .single_shot(ctrl__single_shot)
+    );
+    drcc__regs__ctrl_check ctrl_check(
+        .wdat(ctrl_check__wdat),
+        .reset_mode(ctrl_check__reset_mode),
+        .redundancy(ctrl_check__redundancy),
+        .policy(ctrl_check__policy),
+        .dual_tx(ctrl_check__dual_tx),
+        .k(ctrl_check__k),
+        .mode_a(ctrl_check__mode_a),
+        .mode_b(ctrl_check__mode_b),
+        .single_shot(ctrl_check__single_shot),
+        .k_in(ctrl_check__k_in),
+        .refused(ctrl_check__refused),
+        .illegal(ctrl_check__illegal)
     );
     drcc__regs__btr_q btr_q(
         .d(btr_q__d),
@@ -12803,8 +12829,19 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         bus__rdata = rdata;
         ctrl__clk = clk;
         ctrl__rst = rst;
-        ctrl__we = 1'b0;
+        ctrl__we = wr & (wb_adr_i == a_ctrl);
         ctrl__wdat = wdat;
+        ctrl__refused = ctrl_check__refused;
+        ctrl__k_in = ctrl_check__k_in;
+        ctrl_check__wdat = wb_dat_i;
+        ctrl_check__reset_mode = ctrl__reset_mode;
+        ctrl_check__redundancy = ctrl__redundancy;
+        ctrl_check__policy = ctrl__policy;
+        ctrl_check__dual_tx = ctrl__dual_tx;
+        ctrl_check__k = ctrl__k;
+        ctrl_check__mode_a = ctrl__mode_a;
+        ctrl_check__mode_b = ctrl__mode_b;
+        ctrl_check__single_shot = ctrl__single_shot;
         illegal = 1'b0;
         w1c = zero8;
         bus__int_enable_we = 1'b0;
@@ -12819,8 +12856,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         end
         if (wr) begin
             if (wb_adr_i == a_ctrl) begin
-                ctrl__we = 1'b1;
-                illegal = ctrl__illegal;
+                illegal = ctrl_check__illegal;
             end
             else if (wb_adr_i == a_btr) begin
                 if (ctrl__reset_mode) begin
@@ -12969,7 +13005,7 @@ module drcc__regs__btr_q(d,q,clock);
 endmodule // drcc__regs__btr_q
 
 
-module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,taken,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
+module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
     
     // Module arguments
     input wire  clk;
@@ -12980,7 +13016,6 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,t
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
     output reg  irq;
-    output reg  taken;
     output reg  wr;
     output reg  [7:0] int_status;
     output reg  [7:0] int_enable;
@@ -13010,6 +13045,9 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,t
     reg  [7:0] int_enable_q__d;
     wire  [7:0] int_enable_q__q;
     reg  int_enable_q__clock;
+    
+    // Local signals
+    reg  taken;
     
     // Sub module instances
     drcc__regs__bus__ack_q ack_q(
@@ -13160,14 +13198,15 @@ module drcc__regs__bus__irq_q(d,q,clock);
 endmodule // drcc__regs__bus__irq_q
 
 
-module drcc__regs__ctrl(clk,rst,we,wdat,illegal,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot);
+module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  we;
     input wire  [31:0] wdat;
-    output reg  illegal;
+    input wire  refused;
+    input wire  [3:0] k_in;
     output reg  [31:0] word;
     output reg  reset_mode;
     output reg  reset_mode_d;
@@ -13188,14 +13227,10 @@ module drcc__regs__ctrl(clk,rst,we,wdat,illegal,word,reset_mode,reset_mode_d,red
     localparam  p_mode_a = 5'b1100;
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
-    localparam  policy_illegal = 2'b11;
-    localparam  mode_listen = 2'b1;
     localparam  redundancy_reset = 1'b0;
     localparam  policy_reset = 2'b1;
     localparam  k_reset = 4'h1;
     localparam  mode_reset = 2'b0;
-    localparam  zero4 = 4'h0;
-    localparam  one4 = 4'h1;
     
     // Stub signals
     reg  reset_mode_q__d;
@@ -13225,11 +13260,6 @@ module drcc__regs__ctrl(clk,rst,we,wdat,illegal,word,reset_mode,reset_mode_d,red
     reg  single_shot_q__d;
     wire  single_shot_q__q;
     reg  single_shot_q__clock;
-    
-    // Local signals
-    reg  [3:0] k_in;
-    reg  cfg_differs;
-    reg  refused;
     
     // Sub module instances
     drcc__regs__ctrl__reset_mode_q reset_mode_q(
@@ -13299,20 +13329,6 @@ module drcc__regs__ctrl(clk,rst,we,wdat,illegal,word,reset_mode,reset_mode_d,red
         mode_b_q__d = mode_b_q__q;
         single_shot_q__d = single_shot_q__q;
         reset_mode_dq__d = reset_mode_q__q;
-        if (wdat[(p_k)+:(4)] == zero4) begin
-            k_in = one4;
-        end
-        else begin
-            k_in = wdat[(p_k)+:(4)];
-        end
-        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | (wdat[p_redundancy] & ((wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen)));
-        cfg_differs = (wdat[p_redundancy] != redundancy_q__q) | (wdat[(p_policy)+:(2)] != policy_q__q) | (wdat[p_dual_tx] != dual_tx_q__q) | (k_in != k_q__q) | (wdat[(p_mode_a)+:(2)] != mode_a_q__q) | (wdat[(p_mode_b)+:(2)] != mode_b_q__q) | (wdat[p_single_shot] != single_shot_q__q);
-        if (reset_mode_q__q) begin
-            illegal = refused;
-        end
-        else begin
-            illegal = cfg_differs;
-        end
         if (we) begin
             if (reset_mode_q__q) begin
                 if (~refused) begin
@@ -13498,6 +13514,59 @@ module drcc__regs__ctrl__single_shot_q(d,q,clock);
     end
           
 endmodule // drcc__regs__ctrl__single_shot_q
+
+
+module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,k_in,refused,illegal);
+    
+    // Module arguments
+    input wire  [31:0] wdat;
+    input wire  reset_mode;
+    input wire  redundancy;
+    input wire  [1:0] policy;
+    input wire  dual_tx;
+    input wire  [3:0] k;
+    input wire  [1:0] mode_a;
+    input wire  [1:0] mode_b;
+    input wire  single_shot;
+    output reg  [3:0] k_in;
+    output reg  refused;
+    output reg  illegal;
+    
+    // Constant declarations
+    localparam  p_redundancy = 5'b1;
+    localparam  p_policy = 5'b10;
+    localparam  p_dual_tx = 5'b100;
+    localparam  p_k = 5'b1000;
+    localparam  p_mode_a = 5'b1100;
+    localparam  p_mode_b = 5'b1110;
+    localparam  p_single_shot = 5'b10000;
+    localparam  policy_illegal = 2'b11;
+    localparam  mode_listen = 2'b1;
+    localparam  zero4 = 4'h0;
+    localparam  one4 = 4'h1;
+    
+    // Local signals
+    reg  cfg_differs;
+    
+    // Update code
+    always @(*) begin
+        if (wdat[(p_k)+:(4)] == zero4) begin
+            k_in = one4;
+        end
+        else begin
+            k_in = wdat[(p_k)+:(4)];
+        end
+        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | (wdat[p_redundancy] & ((wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen)));
+        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot);
+        if (reset_mode) begin
+            illegal = refused;
+        end
+        else begin
+            illegal = cfg_differs;
+        end
+    end
+    
+endmodule // drcc__regs__ctrl_check
 
 
 module drcc__regs__es_a_prev(d,q,clock);

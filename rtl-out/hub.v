@@ -4268,10 +4268,10 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  c_force = 5'b1;
     localparam  c_recouple = 5'b10;
     localparam  c_ack_interdep = 5'b1000;
-    localparam  b_brp = 5'b0;
-    localparam  b_tseg1 = 5'b110;
-    localparam  b_tseg2 = 5'b1010;
-    localparam  b_sjw = 5'b1101;
+    localparam  b_brp = 4'h0;
+    localparam  b_tseg1 = 4'h6;
+    localparam  b_tseg2 = 4'ha;
+    localparam  b_sjw = 4'hd;
     localparam  g_sd_up = 5'b0;
     localparam  g_sd_sub = 5'b1000;
     localparam  g_sr = 5'b10000;
@@ -4316,7 +4316,6 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     wire  [31:0] bus__wb_dat_o;
     wire  bus__wb_ack_o;
     wire  bus__irq;
-    wire  bus__taken;
     wire  bus__wr;
     wire  [3:0] bus__int_status;
     wire  [3:0] bus__int_enable;
@@ -4385,7 +4384,6 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         .wb_dat_o(bus__wb_dat_o),
         .wb_ack_o(bus__wb_ack_o),
         .irq(bus__irq),
-        .taken(bus__taken),
         .wr(bus__wr),
         .int_status(bus__int_status),
         .int_enable(bus__int_enable),
@@ -4754,7 +4752,7 @@ module hub__regs__btr_q(d,q,clock);
 endmodule // hub__regs__btr_q
 
 
-module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,taken,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
+module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
     
     // Module arguments
     input wire  clk;
@@ -4765,7 +4763,6 @@ module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,ta
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
     output reg  irq;
-    output reg  taken;
     output reg  wr;
     output reg  [3:0] int_status;
     output reg  [3:0] int_enable;
@@ -4795,6 +4792,9 @@ module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,ta
     reg  [3:0] int_enable_q__d;
     wire  [3:0] int_enable_q__q;
     reg  int_enable_q__clock;
+    
+    // Local signals
+    reg  taken;
     
     // Sub module instances
     hub__regs__bus__ack_q ack_q(

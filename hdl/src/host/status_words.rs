@@ -368,7 +368,8 @@ mod tests {
         let mut uut = StatusWords::default();
         uut.connect_all();
         uut.adr.next = (map::STATUS as u64).into();
-        let fields: [(&str, fn(&mut StatusWords, bool)); 11] = [
+        type Drive = fn(&mut StatusWords, bool);
+        let fields: [(&str, Drive); 11] = [
             ("state", |u, on| {
                 u.state.next = if on { 0xF.into() } else { 0.into() }
             }),

@@ -224,36 +224,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  [31:0] regs__wb_dat_o;
     wire  regs__wb_ack_o;
     wire  regs__irq;
-    reg  [3:0] regs__state;
-    reg  regs__tx_channel;
-    reg  regs__tx_going_on;
-    reg  [1:0] regs__aux_a_state;
-    reg  [1:0] regs__aux_b_state;
+    reg  [31:0] regs__ro_word;
     reg  [1:0] regs__es_a;
     reg  [1:0] regs__es_b;
     reg  [3:0] regs__txq_a;
     reg  [3:0] regs__txq_b;
     reg  [5:0] regs__rx_count;
-    reg  [8:0] regs__tec_a;
-    reg  [7:0] regs__rec_a;
-    reg  regs__ew_a;
-    reg  [8:0] regs__tec_b;
-    reg  [7:0] regs__rec_b;
-    reg  regs__ew_b;
-    reg  [3:0] regs__causes_a;
-    reg  [3:0] regs__fail_cnt_a;
-    reg  [7:0] regs__failures_a;
-    reg  [7:0] regs__recoveries_a;
-    reg  [3:0] regs__causes_b;
-    reg  [3:0] regs__fail_cnt_b;
-    reg  [7:0] regs__failures_b;
-    reg  [7:0] regs__recoveries_b;
-    reg  [99:0] regs__rx_head;
-    reg  regs__rx_ready;
-    reg  [15:0] regs__duplicates;
-    reg  [15:0] regs__overruns;
-    reg  [15:0] regs__last_tx_time;
-    reg  [15:0] regs__switch_time;
     reg  regs__ev_rx;
     reg  regs__ev_tx_done;
     reg  regs__ev_switch;
@@ -284,6 +260,43 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  regs__push_q;
     wire  [98:0] regs__tx_frame;
     wire  regs__pop;
+    wire  [15:0] regs__switches;
+    wire  [15:0] regs__recoveries;
+    reg  [5:0] status__adr;
+    wire  [31:0] status__word;
+    reg  [3:0] status__state;
+    reg  status__tx_channel;
+    reg  status__tx_going_on;
+    reg  [15:0] status__last_tx_time;
+    reg  [15:0] status__switch_time;
+    reg  status__reset_mode;
+    reg  [3:0] status__txq_a;
+    reg  [3:0] status__txq_b;
+    reg  [5:0] status__rx_count;
+    reg  [1:0] status__es_a;
+    reg  [8:0] status__tec_a;
+    reg  [7:0] status__rec_a;
+    reg  status__ew_a;
+    reg  [1:0] status__es_b;
+    reg  [8:0] status__tec_b;
+    reg  [7:0] status__rec_b;
+    reg  status__ew_b;
+    reg  [1:0] status__aux_a_state;
+    reg  [3:0] status__causes_a;
+    reg  [3:0] status__fail_cnt_a;
+    reg  [7:0] status__failures_a;
+    reg  [7:0] status__recoveries_a;
+    reg  [1:0] status__aux_b_state;
+    reg  [3:0] status__causes_b;
+    reg  [3:0] status__fail_cnt_b;
+    reg  [7:0] status__failures_b;
+    reg  [7:0] status__recoveries_b;
+    reg  [99:0] status__rx_head;
+    reg  status__rx_ready;
+    reg  [15:0] status__duplicates;
+    reg  [15:0] status__overruns;
+    reg  [15:0] status__switches;
+    reg  [15:0] status__recoveries;
     reg  ticker__clk;
     reg  ticker__hold;
     reg  [5:0] ticker__brp;
@@ -526,36 +539,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .wb_dat_o(regs__wb_dat_o),
         .wb_ack_o(regs__wb_ack_o),
         .irq(regs__irq),
-        .state(regs__state),
-        .tx_channel(regs__tx_channel),
-        .tx_going_on(regs__tx_going_on),
-        .aux_a_state(regs__aux_a_state),
-        .aux_b_state(regs__aux_b_state),
+        .ro_word(regs__ro_word),
         .es_a(regs__es_a),
         .es_b(regs__es_b),
         .txq_a(regs__txq_a),
         .txq_b(regs__txq_b),
         .rx_count(regs__rx_count),
-        .tec_a(regs__tec_a),
-        .rec_a(regs__rec_a),
-        .ew_a(regs__ew_a),
-        .tec_b(regs__tec_b),
-        .rec_b(regs__rec_b),
-        .ew_b(regs__ew_b),
-        .causes_a(regs__causes_a),
-        .fail_cnt_a(regs__fail_cnt_a),
-        .failures_a(regs__failures_a),
-        .recoveries_a(regs__recoveries_a),
-        .causes_b(regs__causes_b),
-        .fail_cnt_b(regs__fail_cnt_b),
-        .failures_b(regs__failures_b),
-        .recoveries_b(regs__recoveries_b),
-        .rx_head(regs__rx_head),
-        .rx_ready(regs__rx_ready),
-        .duplicates(regs__duplicates),
-        .overruns(regs__overruns),
-        .last_tx_time(regs__last_tx_time),
-        .switch_time(regs__switch_time),
         .ev_rx(regs__ev_rx),
         .ev_tx_done(regs__ev_tx_done),
         .ev_switch(regs__ev_switch),
@@ -585,7 +574,46 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .push(regs__push),
         .push_q(regs__push_q),
         .tx_frame(regs__tx_frame),
-        .pop(regs__pop)
+        .pop(regs__pop),
+        .switches(regs__switches),
+        .recoveries(regs__recoveries)
+    );
+    drcc__status status(
+        .adr(status__adr),
+        .word(status__word),
+        .state(status__state),
+        .tx_channel(status__tx_channel),
+        .tx_going_on(status__tx_going_on),
+        .last_tx_time(status__last_tx_time),
+        .switch_time(status__switch_time),
+        .reset_mode(status__reset_mode),
+        .txq_a(status__txq_a),
+        .txq_b(status__txq_b),
+        .rx_count(status__rx_count),
+        .es_a(status__es_a),
+        .tec_a(status__tec_a),
+        .rec_a(status__rec_a),
+        .ew_a(status__ew_a),
+        .es_b(status__es_b),
+        .tec_b(status__tec_b),
+        .rec_b(status__rec_b),
+        .ew_b(status__ew_b),
+        .aux_a_state(status__aux_a_state),
+        .causes_a(status__causes_a),
+        .fail_cnt_a(status__fail_cnt_a),
+        .failures_a(status__failures_a),
+        .recoveries_a(status__recoveries_a),
+        .aux_b_state(status__aux_b_state),
+        .causes_b(status__causes_b),
+        .fail_cnt_b(status__fail_cnt_b),
+        .failures_b(status__failures_b),
+        .recoveries_b(status__recoveries_b),
+        .rx_head(status__rx_head),
+        .rx_ready(status__rx_ready),
+        .duplicates(status__duplicates),
+        .overruns(status__overruns),
+        .switches(status__switches),
+        .recoveries(status__recoveries)
     );
     drcc__ticker ticker(
         .clk(ticker__clk),
@@ -842,36 +870,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         regs__wb_we_i = wb_we_i;
         regs__wb_adr_i = wb_adr_i;
         regs__wb_dat_i = wb_dat_i;
-        regs__state = main__state;
-        regs__tx_channel = main__tx_channel;
-        regs__tx_going_on = main__tx_going_on;
-        regs__aux_a_state = aux_a__aux_state;
-        regs__aux_b_state = aux_b__aux_state;
+        regs__ro_word = status__word;
         regs__es_a = chan_a__err_state;
         regs__es_b = chan_b__err_state;
         regs__txq_a = txbuf__count_a;
         regs__txq_b = txbuf__count_b;
         regs__rx_count = rxfifo__count;
-        regs__tec_a = chan_a__tec;
-        regs__rec_a = chan_a__rec;
-        regs__ew_a = chan_a__err_warning;
-        regs__tec_b = chan_b__tec;
-        regs__rec_b = chan_b__rec;
-        regs__ew_b = chan_b__err_warning;
-        regs__causes_a = aux_a__causes;
-        regs__fail_cnt_a = aux_a__fail_cnt;
-        regs__failures_a = aux_a__failures;
-        regs__recoveries_a = aux_a__recoveries;
-        regs__causes_b = aux_b__causes;
-        regs__fail_cnt_b = aux_b__fail_cnt;
-        regs__failures_b = aux_b__failures;
-        regs__recoveries_b = aux_b__recoveries;
-        regs__rx_head = rxfifo__rd_data;
-        regs__rx_ready = rxfifo__rx_ready;
-        regs__duplicates = rxw__duplicates;
-        regs__overruns = rxw__overruns;
-        regs__last_tx_time = main__last_tx_time;
-        regs__switch_time = main__switch_time;
         regs__ev_rx = rxw__rx_evt;
         regs__ev_tx_done = txbuf__done_evt | main__success_evt;
         regs__ev_switch = main__switch_evt;
@@ -883,6 +887,40 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
         irq = regs__irq;
+        status__adr = wb_adr_i;
+        status__reset_mode = regs__reset_mode;
+        status__state = main__state;
+        status__tx_channel = main__tx_channel;
+        status__tx_going_on = main__tx_going_on;
+        status__last_tx_time = main__last_tx_time;
+        status__switch_time = main__switch_time;
+        status__txq_a = txbuf__count_a;
+        status__txq_b = txbuf__count_b;
+        status__rx_count = rxfifo__count;
+        status__es_a = chan_a__err_state;
+        status__tec_a = chan_a__tec;
+        status__rec_a = chan_a__rec;
+        status__ew_a = chan_a__err_warning;
+        status__es_b = chan_b__err_state;
+        status__tec_b = chan_b__tec;
+        status__rec_b = chan_b__rec;
+        status__ew_b = chan_b__err_warning;
+        status__aux_a_state = aux_a__aux_state;
+        status__causes_a = aux_a__causes;
+        status__fail_cnt_a = aux_a__fail_cnt;
+        status__failures_a = aux_a__failures;
+        status__recoveries_a = aux_a__recoveries;
+        status__aux_b_state = aux_b__aux_state;
+        status__causes_b = aux_b__causes;
+        status__fail_cnt_b = aux_b__fail_cnt;
+        status__failures_b = aux_b__failures;
+        status__recoveries_b = aux_b__recoveries;
+        status__rx_head = rxfifo__rd_data;
+        status__rx_ready = rxfifo__rx_ready;
+        status__duplicates = rxw__duplicates;
+        status__overruns = rxw__overruns;
+        status__switches = regs__switches;
+        status__recoveries = regs__recoveries;
         ticker__clk = clk;
         ticker__hold = clear;
         ticker__brp = regs__brp;
@@ -1060,10 +1098,6 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     localparam  s_failed = 2'b1;
     localparam  s_restart = 2'b10;
     localparam  s_probation = 2'b11;
-    localparam  p_none = 2'b0;
-    localparam  p_passive = 2'b1;
-    localparam  p_kfail = 2'b10;
-    localparam  es_active = 2'b0;
     localparam  es_busoff = 2'b10;
     localparam  one4 = 4'h1;
     localparam  zero4 = 4'h0;
@@ -1100,12 +1134,16 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     reg  [7:0] recoveries_q__d;
     wire  [7:0] recoveries_q__q;
     reg  recoveries_q__clock;
+    reg  [1:0] judge__policy;
+    reg  [3:0] judge__k;
+    reg  [15:0] judge__stall_limit;
+    reg  [1:0] judge__err_state;
+    reg  [3:0] judge__fail_cnt;
+    reg  [15:0] judge__stall_cnt;
+    wire  [3:0] judge__causes;
+    wire  judge__failed;
     
     // Local signals
-    reg  c_passive;
-    reg  c_busoff;
-    reg  c_kfail;
-    reg  c_stall;
     reg  [3:0] now_causes;
     reg  [15:0] rb_eff;
     
@@ -1150,6 +1188,16 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         .q(recoveries_q__q),
         .clock(recoveries_q__clock)
     );
+    drcc__aux_a__judge judge(
+        .policy(judge__policy),
+        .k(judge__k),
+        .stall_limit(judge__stall_limit),
+        .err_state(judge__err_state),
+        .fail_cnt(judge__fail_cnt),
+        .stall_cnt(judge__stall_cnt),
+        .causes(judge__causes),
+        .failed(judge__failed)
+    );
     
     // Update code
     always @(*) begin
@@ -1191,11 +1239,13 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         if (~tx_pending) begin
             stall_q__d = zero16;
         end
-        c_passive = (policy == p_passive) & (err_state != es_active);
-        c_busoff = (policy != p_none) & (err_state == es_busoff);
-        c_kfail = (policy == p_kfail) & (fail_q__q >= k);
-        c_stall = (policy != p_none) & (stall_limit != zero16) & (stall_q__q >= stall_limit);
-        now_causes = ((c_passive) & 4'hf) | (((c_busoff) & 4'hf) << 32'h1) | (((c_kfail) & 4'hf) << 32'h2) | (((c_stall) & 4'hf) << 32'h3);
+        judge__policy = policy;
+        judge__k = k;
+        judge__stall_limit = stall_limit;
+        judge__err_state = err_state;
+        judge__fail_cnt = fail_q__q;
+        judge__stall_cnt = stall_q__q;
+        now_causes = judge__causes;
         if (recovery_bits == zero16) begin
             rb_eff = one16;
         end
@@ -1203,7 +1253,7 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             rb_eff = recovery_bits;
         end
         if (st__q == s_valid) begin
-            if (now_causes != zero4) begin
+            if (judge__failed) begin
                 st__d = s_failed;
                 causes_q__d = causes_q__q | now_causes;
                 if (failures_q__q != max8) begin
@@ -1330,6 +1380,46 @@ module drcc__aux_a__failures_q(d,q,clock);
 endmodule // drcc__aux_a__failures_q
 
 
+module drcc__aux_a__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,causes,failed);
+    
+    // Module arguments
+    input wire  [1:0] policy;
+    input wire  [3:0] k;
+    input wire  [15:0] stall_limit;
+    input wire  [1:0] err_state;
+    input wire  [3:0] fail_cnt;
+    input wire  [15:0] stall_cnt;
+    output reg  [3:0] causes;
+    output reg  failed;
+    
+    // Constant declarations
+    localparam  p_none = 2'b0;
+    localparam  p_passive = 2'b1;
+    localparam  p_kfail = 2'b10;
+    localparam  es_active = 2'b0;
+    localparam  es_busoff = 2'b10;
+    localparam  zero4 = 4'h0;
+    localparam  zero16 = 16'h0;
+    
+    // Local signals
+    reg  c_passive;
+    reg  c_busoff;
+    reg  c_kfail;
+    reg  c_stall;
+    
+    // Update code
+    always @(*) begin
+        c_passive = (policy == p_passive) & (err_state != es_active);
+        c_busoff = (policy != p_none) & (err_state == es_busoff);
+        c_kfail = (policy == p_kfail) & (fail_cnt >= k);
+        c_stall = (policy != p_none) & (stall_limit != zero16) & (stall_cnt >= stall_limit);
+        causes = ((c_passive) & 4'hf) | (((c_busoff) & 4'hf) << 32'h1) | (((c_kfail) & 4'hf) << 32'h2) | (((c_stall) & 4'hf) << 32'h3);
+        failed = causes != zero4;
+    end
+    
+endmodule // drcc__aux_a__judge
+
+
 module drcc__aux_a__left_q(d,q,clock);
     
     // Module arguments
@@ -1427,10 +1517,6 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     localparam  s_failed = 2'b1;
     localparam  s_restart = 2'b10;
     localparam  s_probation = 2'b11;
-    localparam  p_none = 2'b0;
-    localparam  p_passive = 2'b1;
-    localparam  p_kfail = 2'b10;
-    localparam  es_active = 2'b0;
     localparam  es_busoff = 2'b10;
     localparam  one4 = 4'h1;
     localparam  zero4 = 4'h0;
@@ -1467,12 +1553,16 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     reg  [7:0] recoveries_q__d;
     wire  [7:0] recoveries_q__q;
     reg  recoveries_q__clock;
+    reg  [1:0] judge__policy;
+    reg  [3:0] judge__k;
+    reg  [15:0] judge__stall_limit;
+    reg  [1:0] judge__err_state;
+    reg  [3:0] judge__fail_cnt;
+    reg  [15:0] judge__stall_cnt;
+    wire  [3:0] judge__causes;
+    wire  judge__failed;
     
     // Local signals
-    reg  c_passive;
-    reg  c_busoff;
-    reg  c_kfail;
-    reg  c_stall;
     reg  [3:0] now_causes;
     reg  [15:0] rb_eff;
     
@@ -1517,6 +1607,16 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         .q(recoveries_q__q),
         .clock(recoveries_q__clock)
     );
+    drcc__aux_b__judge judge(
+        .policy(judge__policy),
+        .k(judge__k),
+        .stall_limit(judge__stall_limit),
+        .err_state(judge__err_state),
+        .fail_cnt(judge__fail_cnt),
+        .stall_cnt(judge__stall_cnt),
+        .causes(judge__causes),
+        .failed(judge__failed)
+    );
     
     // Update code
     always @(*) begin
@@ -1558,11 +1658,13 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
         if (~tx_pending) begin
             stall_q__d = zero16;
         end
-        c_passive = (policy == p_passive) & (err_state != es_active);
-        c_busoff = (policy != p_none) & (err_state == es_busoff);
-        c_kfail = (policy == p_kfail) & (fail_q__q >= k);
-        c_stall = (policy != p_none) & (stall_limit != zero16) & (stall_q__q >= stall_limit);
-        now_causes = ((c_passive) & 4'hf) | (((c_busoff) & 4'hf) << 32'h1) | (((c_kfail) & 4'hf) << 32'h2) | (((c_stall) & 4'hf) << 32'h3);
+        judge__policy = policy;
+        judge__k = k;
+        judge__stall_limit = stall_limit;
+        judge__err_state = err_state;
+        judge__fail_cnt = fail_q__q;
+        judge__stall_cnt = stall_q__q;
+        now_causes = judge__causes;
         if (recovery_bits == zero16) begin
             rb_eff = one16;
         end
@@ -1570,7 +1672,7 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             rb_eff = recovery_bits;
         end
         if (st__q == s_valid) begin
-            if (now_causes != zero4) begin
+            if (judge__failed) begin
                 st__d = s_failed;
                 causes_q__d = causes_q__q | now_causes;
                 if (failures_q__q != max8) begin
@@ -1695,6 +1797,46 @@ module drcc__aux_b__failures_q(d,q,clock);
     end
           
 endmodule // drcc__aux_b__failures_q
+
+
+module drcc__aux_b__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,causes,failed);
+    
+    // Module arguments
+    input wire  [1:0] policy;
+    input wire  [3:0] k;
+    input wire  [15:0] stall_limit;
+    input wire  [1:0] err_state;
+    input wire  [3:0] fail_cnt;
+    input wire  [15:0] stall_cnt;
+    output reg  [3:0] causes;
+    output reg  failed;
+    
+    // Constant declarations
+    localparam  p_none = 2'b0;
+    localparam  p_passive = 2'b1;
+    localparam  p_kfail = 2'b10;
+    localparam  es_active = 2'b0;
+    localparam  es_busoff = 2'b10;
+    localparam  zero4 = 4'h0;
+    localparam  zero16 = 16'h0;
+    
+    // Local signals
+    reg  c_passive;
+    reg  c_busoff;
+    reg  c_kfail;
+    reg  c_stall;
+    
+    // Update code
+    always @(*) begin
+        c_passive = (policy == p_passive) & (err_state != es_active);
+        c_busoff = (policy != p_none) & (err_state == es_busoff);
+        c_kfail = (policy == p_kfail) & (fail_cnt >= k);
+        c_stall = (policy != p_none) & (stall_limit != zero16) & (stall_cnt >= stall_limit);
+        causes = ((c_passive) & 4'hf) | (((c_busoff) & 4'hf) << 32'h1) | (((c_kfail) & 4'hf) << 32'h2) | (((c_stall) & 4'hf) << 32'h3);
+        failed = causes != zero4;
+    end
+    
+endmodule // drcc__aux_b__judge
 
 
 module drcc__aux_b__left_q(d,q,clock);
@@ -12452,7 +12594,7 @@ module drcc__main__tx_time(d,q,clock);
 endmodule // drcc__main__tx_time
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,state,tx_channel,tx_going_on,aux_a_state,aux_b_state,es_a,es_b,txq_a,txq_b,rx_count,tec_a,rec_a,ew_a,tec_b,rec_b,ew_b,causes_a,fail_cnt_a,failures_a,recoveries_a,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,last_tx_time,switch_time,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,switches,recoveries);
     
     // Module arguments
     input wire  clk;
@@ -12465,36 +12607,12 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
     output reg  irq;
-    input wire  [3:0] state;
-    input wire  tx_channel;
-    input wire  tx_going_on;
-    input wire  [1:0] aux_a_state;
-    input wire  [1:0] aux_b_state;
+    input wire  [31:0] ro_word;
     input wire  [1:0] es_a;
     input wire  [1:0] es_b;
     input wire  [3:0] txq_a;
     input wire  [3:0] txq_b;
     input wire  [5:0] rx_count;
-    input wire  [8:0] tec_a;
-    input wire  [7:0] rec_a;
-    input wire  ew_a;
-    input wire  [8:0] tec_b;
-    input wire  [7:0] rec_b;
-    input wire  ew_b;
-    input wire  [3:0] causes_a;
-    input wire  [3:0] fail_cnt_a;
-    input wire  [7:0] failures_a;
-    input wire  [7:0] recoveries_a;
-    input wire  [3:0] causes_b;
-    input wire  [3:0] fail_cnt_b;
-    input wire  [7:0] failures_b;
-    input wire  [7:0] recoveries_b;
-    input wire  [99:0] rx_head;
-    input wire  rx_ready;
-    input wire  [15:0] duplicates;
-    input wire  [15:0] overruns;
-    input wire  [15:0] last_tx_time;
-    input wire  [15:0] switch_time;
     input wire  ev_rx;
     input wire  ev_tx_done;
     input wire  ev_switch;
@@ -12525,44 +12643,49 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     output reg  push_q;
     output reg  [98:0] tx_frame;
     output reg  pop;
+    output reg  [15:0] switches;
+    output reg  [15:0] recoveries;
     
     // Constant declarations
-    localparam  a_id = 6'b0;
     localparam  a_ctrl = 6'b1;
     localparam  a_btr = 6'b10;
     localparam  a_rmb_cfg = 6'b11;
     localparam  a_dedup_cfg = 6'b100;
-    localparam  a_status = 6'b101;
     localparam  a_int_status = 6'b110;
     localparam  a_int_enable = 6'b111;
-    localparam  a_chan_a_err = 6'b1000;
-    localparam  a_chan_b_err = 6'b1001;
-    localparam  a_aux_a = 6'b1010;
-    localparam  a_aux_b = 6'b1011;
     localparam  a_tx_id = 6'b1100;
     localparam  a_tx_ctrl = 6'b1101;
     localparam  a_tx_data0 = 6'b1110;
     localparam  a_tx_data1 = 6'b1111;
     localparam  a_tx_cmd = 6'b10000;
-    localparam  a_rx_id = 6'b10001;
-    localparam  a_rx_ctrl = 6'b10010;
-    localparam  a_rx_data0 = 6'b10011;
-    localparam  a_rx_data1 = 6'b10100;
     localparam  a_rx_cmd = 6'b10101;
-    localparam  a_stats0 = 6'b10110;
-    localparam  a_stats1 = 6'b10111;
-    localparam  a_times = 6'b11000;
-    localparam  id_value = 32'h44524343;
-    localparam  ctrl_reset_btr = 24'h600500;
+    localparam  b_brp = 5'b0;
+    localparam  b_tseg1 = 5'b110;
+    localparam  b_tseg2 = 5'b1010;
+    localparam  b_sjw = 5'b1101;
+    localparam  b_triple = 5'b1111;
+    localparam  b_ewl = 5'b10000;
+    localparam  r_recovery = 5'b0;
+    localparam  r_stall = 5'b10000;
+    localparam  d_window = 5'b0;
+    localparam  t_dlc = 5'b0;
+    localparam  t_queue = 5'b1000;
+    localparam  t_push = 5'b0;
+    localparam  r_pop = 5'b0;
+    localparam  i_rx = 5'b0;
+    localparam  i_tx_done = 5'b1;
+    localparam  i_switch = 5'b10;
+    localparam  i_err_state = 5'b11;
+    localparam  i_overrun = 5'b100;
+    localparam  i_tx_failure = 5'b101;
+    localparam  i_illegal = 5'b110;
+    localparam  i_aux = 5'b111;
+    localparam  btr_reset = 24'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
-    localparam  policy_illegal = 2'b11;
-    localparam  mode_listen = 2'b1;
-    localparam  policy_reset = 2'b1;
+    localparam  queue_full = 4'h8;
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
-    localparam  one4 = 4'h1;
-    localparam  full4 = 4'h8;
     localparam  zero6 = 6'b0;
     localparam  zero8 = 8'h0;
     localparam  zero15 = 15'b0;
@@ -12571,47 +12694,54 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     localparam  two16 = 16'h2;
     localparam  max16 = 16'hffff;
     localparam  max16m1 = 16'hfffe;
-    localparam  zero24 = 24'h0;
     localparam  zero31 = 31'h0;
     localparam  zero32 = 32'h0;
     
     // Stub signals
-    reg  ack_q__d;
-    wire  ack_q__q;
-    reg  ack_q__clock;
-    reg  [31:0] dat_q__d;
-    wire  [31:0] dat_q__q;
-    reg  dat_q__clock;
-    reg  irq_q__d;
-    wire  irq_q__q;
-    reg  irq_q__clock;
-    reg  reset_mode_q__d;
-    wire  reset_mode_q__q;
-    reg  reset_mode_q__clock;
-    reg  reset_mode_dq__d;
-    wire  reset_mode_dq__q;
-    reg  reset_mode_dq__clock;
-    reg  redundancy_q__d;
-    wire  redundancy_q__q;
-    reg  redundancy_q__clock;
-    reg  [1:0] policy_q__d;
-    wire  [1:0] policy_q__q;
-    reg  policy_q__clock;
-    reg  dual_tx_q__d;
-    wire  dual_tx_q__q;
-    reg  dual_tx_q__clock;
-    reg  [3:0] k_q__d;
-    wire  [3:0] k_q__q;
-    reg  k_q__clock;
-    reg  [1:0] mode_a_q__d;
-    wire  [1:0] mode_a_q__q;
-    reg  mode_a_q__clock;
-    reg  [1:0] mode_b_q__d;
-    wire  [1:0] mode_b_q__q;
-    reg  mode_b_q__clock;
-    reg  single_shot_q__d;
-    wire  single_shot_q__q;
-    reg  single_shot_q__clock;
+    reg  bus__clk;
+    reg  bus__rst;
+    reg  bus__wb_cyc_i;
+    reg  bus__wb_stb_i;
+    reg  bus__wb_we_i;
+    wire  [31:0] bus__wb_dat_o;
+    wire  bus__wb_ack_o;
+    wire  bus__irq;
+    wire  bus__wr;
+    wire  [7:0] bus__int_status;
+    wire  [7:0] bus__int_enable;
+    reg  [31:0] bus__rdata;
+    reg  [7:0] bus__events;
+    reg  [7:0] bus__w1c;
+    reg  bus__int_enable_we;
+    reg  [7:0] bus__int_enable_d;
+    reg  ctrl__clk;
+    reg  ctrl__rst;
+    reg  ctrl__we;
+    reg  [31:0] ctrl__wdat;
+    reg  ctrl__refused;
+    reg  [3:0] ctrl__k_in;
+    wire  [31:0] ctrl__word;
+    wire  ctrl__reset_mode;
+    wire  ctrl__reset_mode_d;
+    wire  ctrl__redundancy;
+    wire  [1:0] ctrl__policy;
+    wire  ctrl__dual_tx;
+    wire  [3:0] ctrl__k;
+    wire  [1:0] ctrl__mode_a;
+    wire  [1:0] ctrl__mode_b;
+    wire  ctrl__single_shot;
+    reg  [31:0] ctrl_check__wdat;
+    reg  ctrl_check__reset_mode;
+    reg  ctrl_check__redundancy;
+    reg  [1:0] ctrl_check__policy;
+    reg  ctrl_check__dual_tx;
+    reg  [3:0] ctrl_check__k;
+    reg  [1:0] ctrl_check__mode_a;
+    reg  [1:0] ctrl_check__mode_b;
+    reg  ctrl_check__single_shot;
+    wire  [3:0] ctrl_check__k_in;
+    wire  ctrl_check__refused;
+    wire  ctrl_check__illegal;
     reg  [23:0] btr_q__d;
     wire  [23:0] btr_q__q;
     reg  btr_q__clock;
@@ -12621,12 +12751,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  [14:0] window_q__d;
     wire  [14:0] window_q__q;
     reg  window_q__clock;
-    reg  [7:0] int_status__d;
-    wire  [7:0] int_status__q;
-    reg  int_status__clock;
-    reg  [7:0] int_enable__d;
-    wire  [7:0] int_enable__q;
-    reg  int_enable__clock;
     reg  [30:0] tx_id_q__d;
     wire  [30:0] tx_id_q__q;
     reg  tx_id_q__clock;
@@ -12656,82 +12780,65 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  es_b_prev__clock;
     
     // Local signals
-    reg  taken;
     reg  wr;
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
     reg  [7:0] w1c;
-    reg  [3:0] k_w;
-    reg  cfg_differs;
     reg  [3:0] target_count;
-    reg  [7:0] events;
     reg  es_evt;
-    reg  [31:0] ctrl_val;
-    reg  [31:0] status_val;
     reg  [63:0] tx_data64;
-    reg  [63:0] rx_data64;
     
     // Sub module instances
-    drcc__regs__ack_q ack_q(
-        .d(ack_q__d),
-        .q(ack_q__q),
-        .clock(ack_q__clock)
+    drcc__regs__bus bus(
+        .clk(bus__clk),
+        .rst(bus__rst),
+        .wb_cyc_i(bus__wb_cyc_i),
+        .wb_stb_i(bus__wb_stb_i),
+        .wb_we_i(bus__wb_we_i),
+        .wb_dat_o(bus__wb_dat_o),
+        .wb_ack_o(bus__wb_ack_o),
+        .irq(bus__irq),
+        .wr(bus__wr),
+        .int_status(bus__int_status),
+        .int_enable(bus__int_enable),
+        .rdata(bus__rdata),
+        .events(bus__events),
+        .w1c(bus__w1c),
+        .int_enable_we(bus__int_enable_we),
+        .int_enable_d(bus__int_enable_d)
     );
-    drcc__regs__dat_q dat_q(
-        .d(dat_q__d),
-        .q(dat_q__q),
-        .clock(dat_q__clock)
+    drcc__regs__ctrl ctrl(
+        .clk(ctrl__clk),
+        .rst(ctrl__rst),
+        .we(ctrl__we),
+        .wdat(ctrl__wdat),
+        .refused(ctrl__refused),
+        .k_in(ctrl__k_in),
+        .word(ctrl__word),
+        .reset_mode(ctrl__reset_mode),
+        .reset_mode_d(ctrl__reset_mode_d),
+        .redundancy(ctrl__redundancy),
+        .policy(ctrl__policy),
+        .dual_tx(ctrl__dual_tx),
+        .k(ctrl__k),
+        .mode_a(ctrl__mode_a),
+        .mode_b(ctrl__mode_b),
+        .single_shot(ctrl__single_shot)
     );
-    drcc__regs__irq_q irq_q(
-        .d(irq_q__d),
-        .q(irq_q__q),
-        .clock(irq_q__clock)
-    );
-    drcc__regs__reset_mode_q reset_mode_q(
-        .d(reset_mode_q__d),
-        .q(reset_mode_q__q),
-        .clock(reset_mode_q__clock)
-    );
-    drcc__regs__reset_mode_dq reset_mode_dq(
-        .d(reset_mode_dq__d),
-        .q(reset_mode_dq__q),
-        .clock(reset_mode_dq__clock)
-    );
-    drcc__regs__redundancy_q redundancy_q(
-        .d(redundancy_q__d),
-        .q(redundancy_q__q),
-        .clock(redundancy_q__clock)
-    );
-    drcc__regs__policy_q policy_q(
-        .d(policy_q__d),
-        .q(policy_q__q),
-        .clock(policy_q__clock)
-    );
-    drcc__regs__dual_tx_q dual_tx_q(
-        .d(dual_tx_q__d),
-        .q(dual_tx_q__q),
-        .clock(dual_tx_q__clock)
-    );
-    drcc__regs__k_q k_q(
-        .d(k_q__d),
-        .q(k_q__q),
-        .clock(k_q__clock)
-    );
-    drcc__regs__mode_a_q mode_a_q(
-        .d(mode_a_q__d),
-        .q(mode_a_q__q),
-        .clock(mode_a_q__clock)
-    );
-    drcc__regs__mode_b_q mode_b_q(
-        .d(mode_b_q__d),
-        .q(mode_b_q__q),
-        .clock(mode_b_q__clock)
-    );
-    drcc__regs__single_shot_q single_shot_q(
-        .d(single_shot_q__d),
-        .q(single_shot_q__q),
-        .clock(single_shot_q__clock)
+    drcc__regs__ctrl_check ctrl_check(
+        .wdat(ctrl_check__wdat),
+        .reset_mode(ctrl_check__reset_mode),
+        .redundancy(ctrl_check__redundancy),
+        .policy(ctrl_check__policy),
+        .dual_tx(ctrl_check__dual_tx),
+        .k(ctrl_check__k),
+        .mode_a(ctrl_check__mode_a),
+        .mode_b(ctrl_check__mode_b),
+        .single_shot(ctrl_check__single_shot),
+        .k_in(ctrl_check__k_in),
+        .refused(ctrl_check__refused),
+        .illegal(ctrl_check__illegal)
     );
     drcc__regs__btr_q btr_q(
         .d(btr_q__d),
@@ -12747,16 +12854,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .d(window_q__d),
         .q(window_q__q),
         .clock(window_q__clock)
-    );
-    drcc__regs__int_status int_status(
-        .d(int_status__d),
-        .q(int_status__q),
-        .clock(int_status__clock)
-    );
-    drcc__regs__int_enable int_enable(
-        .d(int_enable__d),
-        .q(int_enable__q),
-        .clock(int_enable__clock)
     );
     drcc__regs__tx_id_q tx_id_q(
         .d(tx_id_q__d),
@@ -12806,23 +12903,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     
     // Update code
     always @(*) begin
-        ack_q__clock = clk;
-        dat_q__clock = clk;
-        irq_q__clock = clk;
-        reset_mode_q__clock = clk;
-        reset_mode_dq__clock = clk;
-        redundancy_q__clock = clk;
-        policy_q__clock = clk;
-        dual_tx_q__clock = clk;
-        k_q__clock = clk;
-        mode_a_q__clock = clk;
-        mode_b_q__clock = clk;
-        single_shot_q__clock = clk;
         btr_q__clock = clk;
         rmb_cfg_q__clock = clk;
         window_q__clock = clk;
-        int_status__clock = clk;
-        int_enable__clock = clk;
         tx_id_q__clock = clk;
         tx_dlc_q__clock = clk;
         tx_queue_q__clock = clk;
@@ -12832,23 +12915,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         recov_q__clock = clk;
         es_a_prev__clock = clk;
         es_b_prev__clock = clk;
-        ack_q__d = ack_q__q;
-        dat_q__d = dat_q__q;
-        irq_q__d = irq_q__q;
-        reset_mode_q__d = reset_mode_q__q;
-        reset_mode_dq__d = reset_mode_dq__q;
-        redundancy_q__d = redundancy_q__q;
-        policy_q__d = policy_q__q;
-        dual_tx_q__d = dual_tx_q__q;
-        k_q__d = k_q__q;
-        mode_a_q__d = mode_a_q__q;
-        mode_b_q__d = mode_b_q__q;
-        single_shot_q__d = single_shot_q__q;
         btr_q__d = btr_q__q;
         rmb_cfg_q__d = rmb_cfg_q__q;
         window_q__d = window_q__q;
-        int_status__d = int_status__q;
-        int_enable__d = int_enable__q;
         tx_id_q__d = tx_id_q__q;
         tx_dlc_q__d = tx_dlc_q__q;
         tx_queue_q__d = tx_queue_q__q;
@@ -12858,20 +12927,17 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         recov_q__d = recov_q__q;
         es_a_prev__d = es_a_prev__q;
         es_b_prev__d = es_b_prev__q;
-        taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
-        wr = taken & wb_we_i;
+        bus__clk = clk;
+        bus__rst = rst;
+        bus__wb_cyc_i = wb_cyc_i;
+        bus__wb_stb_i = wb_stb_i;
+        bus__wb_we_i = wb_we_i;
+        wr = bus__wr;
         wdat = wb_dat_i;
         es_evt = (es_a != es_a_prev__q) | (es_b != es_b_prev__q);
-        ctrl_val = ((reset_mode_q__q) & 32'hffffffff) | (((redundancy_q__q) & 32'hffffffff) << 32'h1) | (((policy_q__q) & 32'hffffffff) << 32'h2) | (((dual_tx_q__q) & 32'hffffffff) << 32'h4) | (((k_q__q) & 32'hffffffff) << 32'h8) | (((mode_a_q__q) & 32'hffffffff) << 32'hc) | (((mode_b_q__q) & 32'hffffffff) << 32'he) | (((single_shot_q__q) & 32'hffffffff) << 32'h10);
-        status_val = ((state) & 32'hffffffff) | (((tx_channel) & 32'hffffffff) << 32'h4) | (((aux_a_state) & 32'hffffffff) << 32'h5) | (((aux_b_state) & 32'hffffffff) << 32'h7) | (((es_a) & 32'hffffffff) << 32'h9) | (((es_b) & 32'hffffffff) << 32'hb) | (((reset_mode_q__q) & 32'hffffffff) << 32'hd) | (((tx_going_on) & 32'hffffffff) << 32'he) | (((txq_a) & 32'hffffffff) << 32'h10) | (((txq_b) & 32'hffffffff) << 32'h14) | (((rx_count) & 32'hffffffff) << 32'h18);
-        rx_data64 = rx_head[(32'h0)+:(64)];
         tx_data64 = (((tx_data0_q__q[(32'h0)+:(8)]) & 64'hffffffffffffffff) << 32'h38) | (((tx_data0_q__q[(32'h8)+:(8)]) & 64'hffffffffffffffff) << 32'h30) | (((tx_data0_q__q[(32'h10)+:(8)]) & 64'hffffffffffffffff) << 32'h28) | (((tx_data0_q__q[(32'h18)+:(8)]) & 64'hffffffffffffffff) << 32'h20) | (((tx_data1_q__q[(32'h0)+:(8)]) & 64'hffffffffffffffff) << 32'h18) | (((tx_data1_q__q[(32'h8)+:(8)]) & 64'hffffffffffffffff) << 32'h10) | (((tx_data1_q__q[(32'h10)+:(8)]) & 64'hffffffffffffffff) << 32'h8) | ((tx_data1_q__q[(32'h18)+:(8)]) & 64'hffffffffffffffff);
-        rdata = zero32;
-        if (wb_adr_i == a_id) begin
-            rdata = id_value;
-        end
-        else if (wb_adr_i == a_ctrl) begin
-            rdata = ctrl_val;
+        if (wb_adr_i == a_ctrl) begin
+            rdata = ctrl__word;
         end
         else if (wb_adr_i == a_btr) begin
             rdata = ((btr_q__q) & 32'hffffffff);
@@ -12880,34 +12946,19 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
             rdata = rmb_cfg_q__q;
         end
         else if (wb_adr_i == a_dedup_cfg) begin
-            rdata = ((window_q__q) & 32'hffffffff);
-        end
-        else if (wb_adr_i == a_status) begin
-            rdata = status_val;
+            rdata = ((window_q__q) & 32'hffffffff) << d_window;
         end
         else if (wb_adr_i == a_int_status) begin
-            rdata = ((int_status__q) & 32'hffffffff);
+            rdata = ((bus__int_status) & 32'hffffffff);
         end
         else if (wb_adr_i == a_int_enable) begin
-            rdata = ((int_enable__q) & 32'hffffffff);
-        end
-        else if (wb_adr_i == a_chan_a_err) begin
-            rdata = ((tec_a) & 32'hffffffff) | (((rec_a) & 32'hffffffff) << 32'h10) | (((es_a) & 32'hffffffff) << 32'h18) | (((ew_a) & 32'hffffffff) << 32'h1a);
-        end
-        else if (wb_adr_i == a_chan_b_err) begin
-            rdata = ((tec_b) & 32'hffffffff) | (((rec_b) & 32'hffffffff) << 32'h10) | (((es_b) & 32'hffffffff) << 32'h18) | (((ew_b) & 32'hffffffff) << 32'h1a);
-        end
-        else if (wb_adr_i == a_aux_a) begin
-            rdata = ((aux_a_state) & 32'hffffffff) | (((causes_a) & 32'hffffffff) << 32'h2) | (((fail_cnt_a) & 32'hffffffff) << 32'h8) | (((failures_a) & 32'hffffffff) << 32'h10) | (((recoveries_a) & 32'hffffffff) << 32'h18);
-        end
-        else if (wb_adr_i == a_aux_b) begin
-            rdata = ((aux_b_state) & 32'hffffffff) | (((causes_b) & 32'hffffffff) << 32'h2) | (((fail_cnt_b) & 32'hffffffff) << 32'h8) | (((failures_b) & 32'hffffffff) << 32'h10) | (((recoveries_b) & 32'hffffffff) << 32'h18);
+            rdata = ((bus__int_enable) & 32'hffffffff);
         end
         else if (wb_adr_i == a_tx_id) begin
             rdata = ((tx_id_q__q) & 32'hffffffff);
         end
         else if (wb_adr_i == a_tx_ctrl) begin
-            rdata = ((tx_dlc_q__q) & 32'hffffffff) | (((tx_queue_q__q) & 32'hffffffff) << 32'h8);
+            rdata = (((tx_dlc_q__q) & 32'hffffffff) << t_dlc) | (((tx_queue_q__q) & 32'hffffffff) << t_queue);
         end
         else if (wb_adr_i == a_tx_data0) begin
             rdata = tx_data0_q__q;
@@ -12915,62 +12966,32 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         else if (wb_adr_i == a_tx_data1) begin
             rdata = tx_data1_q__q;
         end
-        else if (wb_adr_i == a_rx_id) begin
-            rdata = ((rx_head[(32'h44)+:(31)]) & 32'hffffffff) | (((rx_ready) & 32'hffffffff) << 32'h1f);
+        else begin
+            rdata = ro_word;
         end
-        else if (wb_adr_i == a_rx_ctrl) begin
-            rdata = ((rx_head[(32'h40)+:(4)]) & 32'hffffffff) | (((rx_head[32'h63]) & 32'hffffffff) << 32'h8);
-        end
-        else if (wb_adr_i == a_rx_data0) begin
-            rdata = ((rx_data64[(32'h38)+:(8)]) & 32'hffffffff) | (((rx_data64[(32'h30)+:(8)]) & 32'hffffffff) << 32'h8) | (((rx_data64[(32'h28)+:(8)]) & 32'hffffffff) << 32'h10) | (((rx_data64[(32'h20)+:(8)]) & 32'hffffffff) << 32'h18);
-        end
-        else if (wb_adr_i == a_rx_data1) begin
-            rdata = ((rx_data64[(32'h18)+:(8)]) & 32'hffffffff) | (((rx_data64[(32'h10)+:(8)]) & 32'hffffffff) << 32'h8) | (((rx_data64[(32'h8)+:(8)]) & 32'hffffffff) << 32'h10) | (((rx_data64[(32'h0)+:(8)]) & 32'hffffffff) << 32'h18);
-        end
-        else if (wb_adr_i == a_stats0) begin
-            rdata = ((duplicates) & 32'hffffffff) | (((overruns) & 32'hffffffff) << 32'h10);
-        end
-        else if (wb_adr_i == a_stats1) begin
-            rdata = ((switches_q__q) & 32'hffffffff) | (((recov_q__q) & 32'hffffffff) << 32'h10);
-        end
-        else if (wb_adr_i == a_times) begin
-            rdata = ((last_tx_time) & 32'hffffffff) | (((switch_time) & 32'hffffffff) << 32'h10);
-        end
-        ack_q__d = taken;
-        dat_q__d = zero32;
-        if (taken & ~wb_we_i) begin
-            dat_q__d = rdata;
-        end
-        reset_mode_q__d = reset_mode_q__q;
-        reset_mode_dq__d = reset_mode_q__q;
-        redundancy_q__d = redundancy_q__q;
-        policy_q__d = policy_q__q;
-        dual_tx_q__d = dual_tx_q__q;
-        k_q__d = k_q__q;
-        mode_a_q__d = mode_a_q__q;
-        mode_b_q__d = mode_b_q__q;
-        single_shot_q__d = single_shot_q__q;
-        btr_q__d = btr_q__q;
-        rmb_cfg_q__d = rmb_cfg_q__q;
-        window_q__d = window_q__q;
-        int_enable__d = int_enable__q;
-        tx_id_q__d = tx_id_q__q;
-        tx_dlc_q__d = tx_dlc_q__q;
-        tx_queue_q__d = tx_queue_q__q;
-        tx_data0_q__d = tx_data0_q__q;
-        tx_data1_q__d = tx_data1_q__q;
+        bus__rdata = rdata;
+        ctrl__clk = clk;
+        ctrl__rst = rst;
+        ctrl__we = wr & (wb_adr_i == a_ctrl);
+        ctrl__wdat = wdat;
+        ctrl__refused = ctrl_check__refused;
+        ctrl__k_in = ctrl_check__k_in;
+        ctrl_check__wdat = wb_dat_i;
+        ctrl_check__reset_mode = ctrl__reset_mode;
+        ctrl_check__redundancy = ctrl__redundancy;
+        ctrl_check__policy = ctrl__policy;
+        ctrl_check__dual_tx = ctrl__dual_tx;
+        ctrl_check__k = ctrl__k;
+        ctrl_check__mode_a = ctrl__mode_a;
+        ctrl_check__mode_b = ctrl__mode_b;
+        ctrl_check__single_shot = ctrl__single_shot;
         illegal = 1'b0;
         w1c = zero8;
+        bus__int_enable_we = 1'b0;
+        bus__int_enable_d = wdat[(32'h0)+:(8)];
         push = 1'b0;
         pop = 1'b0;
-        if (wdat[(32'h8)+:(4)] == zero4) begin
-            k_w = one4;
-        end
-        else begin
-            k_w = wdat[(32'h8)+:(4)];
-        end
-        cfg_differs = (wdat[32'h1] != redundancy_q__q) | (wdat[(32'h2)+:(2)] != policy_q__q) | (wdat[32'h4] != dual_tx_q__q) | (k_w != k_q__q) | (wdat[(32'hc)+:(2)] != mode_a_q__q) | (wdat[(32'he)+:(2)] != mode_b_q__q) | (wdat[32'h10] != single_shot_q__q);
-        if (tx_queue_q__q & ~redundancy_q__q) begin
+        if (tx_queue_q__q & ~ctrl__redundancy) begin
             target_count = txq_b;
         end
         else begin
@@ -12978,28 +12999,10 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         end
         if (wr) begin
             if (wb_adr_i == a_ctrl) begin
-                if (reset_mode_q__q) begin
-                    if ((wdat[(32'h2)+:(2)] == policy_illegal) | (wdat[32'h1] & ((wdat[(32'hc)+:(2)] == mode_listen) | (wdat[(32'he)+:(2)] == mode_listen)))) begin
-                        illegal = 1'b1;
-                    end
-                    else begin
-                        reset_mode_q__d = wdat[32'h0];
-                        redundancy_q__d = wdat[32'h1];
-                        policy_q__d = wdat[(32'h2)+:(2)];
-                        dual_tx_q__d = wdat[32'h4];
-                        k_q__d = k_w;
-                        mode_a_q__d = wdat[(32'hc)+:(2)];
-                        mode_b_q__d = wdat[(32'he)+:(2)];
-                        single_shot_q__d = wdat[32'h10];
-                    end
-                end
-                else begin
-                    reset_mode_q__d = wdat[32'h0];
-                    illegal = cfg_differs;
-                end
+                illegal = ctrl_check__illegal;
             end
             else if (wb_adr_i == a_btr) begin
-                if (reset_mode_q__q) begin
+                if (ctrl__reset_mode) begin
                     btr_q__d = wdat[(32'h0)+:(24)];
                 end
                 else begin
@@ -13007,7 +13010,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 end
             end
             else if (wb_adr_i == a_rmb_cfg) begin
-                if (reset_mode_q__q) begin
+                if (ctrl__reset_mode) begin
                     rmb_cfg_q__d = wdat;
                 end
                 else begin
@@ -13015,8 +13018,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 end
             end
             else if (wb_adr_i == a_dedup_cfg) begin
-                if (reset_mode_q__q) begin
-                    window_q__d = wdat[(32'h0)+:(15)];
+                if (ctrl__reset_mode) begin
+                    window_q__d = wdat[(d_window)+:(15)];
                 end
                 else begin
                     illegal = 1'b1;
@@ -13026,14 +13029,14 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 w1c = wdat[(32'h0)+:(8)];
             end
             else if (wb_adr_i == a_int_enable) begin
-                int_enable__d = wdat[(32'h0)+:(8)];
+                bus__int_enable_we = 1'b1;
             end
             else if (wb_adr_i == a_tx_id) begin
                 tx_id_q__d = wdat[(32'h0)+:(31)];
             end
             else if (wb_adr_i == a_tx_ctrl) begin
-                tx_dlc_q__d = wdat[(32'h0)+:(4)];
-                tx_queue_q__d = wdat[32'h8];
+                tx_dlc_q__d = wdat[(t_dlc)+:(4)];
+                tx_queue_q__d = wdat[t_queue];
             end
             else if (wb_adr_i == a_tx_data0) begin
                 tx_data0_q__d = wdat;
@@ -13042,8 +13045,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 tx_data1_q__d = wdat;
             end
             else if (wb_adr_i == a_tx_cmd) begin
-                if (wdat[32'h0]) begin
-                    if (reset_mode_q__q | (target_count == full4)) begin
+                if (wdat[t_push]) begin
+                    if (ctrl__reset_mode | (target_count == queue_full)) begin
                         illegal = 1'b1;
                     end
                     else begin
@@ -13052,7 +13055,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 end
             end
             else if (wb_adr_i == a_rx_cmd) begin
-                if (wdat[32'h0]) begin
+                if (wdat[r_pop]) begin
                     if (rx_count == zero6) begin
                         illegal = 1'b1;
                     end
@@ -13065,16 +13068,13 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 illegal = 1'b1;
             end
         end
-        events = ((ev_rx) & 8'hff) | (((ev_tx_done) & 8'hff) << 32'h1) | (((ev_switch) & 8'hff) << 32'h2) | (((es_evt) & 8'hff) << 32'h3) | (((ev_overrun) & 8'hff) << 32'h4) | (((ev_tx_failure) & 8'hff) << 32'h5) | (((illegal) & 8'hff) << 32'h6) | (((ev_aux) & 8'hff) << 32'h7);
-        int_status__d = (int_status__q & ~w1c) | events;
-        irq_q__d = (int_status__q & int_enable__q) != zero8;
+        bus__events = (((ev_rx) & 8'hff) << i_rx) | (((ev_tx_done) & 8'hff) << i_tx_done) | (((ev_switch) & 8'hff) << i_switch) | (((es_evt) & 8'hff) << i_err_state) | (((ev_overrun) & 8'hff) << i_overrun) | (((ev_tx_failure) & 8'hff) << i_tx_failure) | (((illegal) & 8'hff) << i_illegal) | (((ev_aux) & 8'hff) << i_aux);
+        bus__w1c = w1c;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
-        switches_q__d = switches_q__q;
         if (ev_switch & (switches_q__q != max16)) begin
             switches_q__d = switches_q__q + one16;
         end
-        recov_q__d = recov_q__q;
         if (ev_recover_a & ev_recover_b) begin
             if (recov_q__q >= max16m1) begin
                 recov_q__d = max16;
@@ -13087,23 +13087,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
             recov_q__d = recov_q__q + one16;
         end
         if (rst) begin
-            ack_q__d = 1'b0;
-            dat_q__d = zero32;
-            irq_q__d = 1'b0;
-            reset_mode_q__d = 1'b1;
-            reset_mode_dq__d = 1'b1;
-            redundancy_q__d = 1'b0;
-            policy_q__d = policy_reset;
-            dual_tx_q__d = 1'b0;
-            k_q__d = one4;
-            mode_a_q__d = zero2;
-            mode_b_q__d = zero2;
-            single_shot_q__d = 1'b0;
-            btr_q__d = ctrl_reset_btr;
+            btr_q__d = btr_reset;
             rmb_cfg_q__d = rmb_cfg_reset;
             window_q__d = window_reset;
-            int_status__d = zero8;
-            int_enable__d = zero8;
             tx_id_q__d = zero31;
             tx_dlc_q__d = zero4;
             tx_queue_q__d = 1'b0;
@@ -13116,48 +13102,34 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
             push = 1'b0;
             pop = 1'b0;
         end
-        wb_ack_o = ack_q__q;
-        wb_dat_o = dat_q__q;
-        irq = irq_q__q;
-        reset_mode = reset_mode_q__q;
-        reset_mode_d = reset_mode_dq__q;
-        redundancy = redundancy_q__q;
-        policy = policy_q__q;
-        dual_tx = dual_tx_q__q;
-        k = k_q__q;
-        mode_a = mode_a_q__q;
-        mode_b = mode_b_q__q;
-        single_shot = single_shot_q__q;
-        brp = btr_q__q[(32'h0)+:(6)];
-        tseg1 = btr_q__q[(32'h6)+:(4)];
-        tseg2 = btr_q__q[(32'ha)+:(3)];
-        sjw = btr_q__q[(32'hd)+:(2)];
-        triple = btr_q__q[32'hf];
-        ewl = btr_q__q[(32'h10)+:(8)];
-        recovery_bits = rmb_cfg_q__q[(32'h0)+:(16)];
-        stall_limit = rmb_cfg_q__q[(32'h10)+:(16)];
+        wb_ack_o = bus__wb_ack_o;
+        wb_dat_o = bus__wb_dat_o;
+        irq = bus__irq;
+        reset_mode = ctrl__reset_mode;
+        reset_mode_d = ctrl__reset_mode_d;
+        redundancy = ctrl__redundancy;
+        policy = ctrl__policy;
+        dual_tx = ctrl__dual_tx;
+        k = ctrl__k;
+        mode_a = ctrl__mode_a;
+        mode_b = ctrl__mode_b;
+        single_shot = ctrl__single_shot;
+        brp = btr_q__q[(b_brp)+:(6)];
+        tseg1 = btr_q__q[(b_tseg1)+:(4)];
+        tseg2 = btr_q__q[(b_tseg2)+:(3)];
+        sjw = btr_q__q[(b_sjw)+:(2)];
+        triple = btr_q__q[b_triple];
+        ewl = btr_q__q[(b_ewl)+:(8)];
+        recovery_bits = rmb_cfg_q__q[(r_recovery)+:(16)];
+        stall_limit = rmb_cfg_q__q[(r_stall)+:(16)];
         window = window_q__q;
-        push_q = tx_queue_q__q & ~redundancy_q__q;
+        switches = switches_q__q;
+        recoveries = recov_q__q;
+        push_q = tx_queue_q__q & ~ctrl__redundancy;
         tx_frame = (((tx_id_q__q) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((tx_dlc_q__q) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((tx_data64) & 99'h7ffffffffffffffffffffffff);
     end
     
 endmodule // drcc__regs
-
-
-module drcc__regs__ack_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__ack_q
 
 
 module drcc__regs__btr_q(d,q,clock);
@@ -13176,23 +13148,120 @@ module drcc__regs__btr_q(d,q,clock);
 endmodule // drcc__regs__btr_q
 
 
-module drcc__regs__dat_q(d,q,clock);
+module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
+    input wire  clk;
+    input wire  rst;
+    input wire  wb_cyc_i;
+    input wire  wb_stb_i;
+    input wire  wb_we_i;
+    output reg  [31:0] wb_dat_o;
+    output reg  wb_ack_o;
+    output reg  irq;
+    output reg  wr;
+    output reg  [7:0] int_status;
+    output reg  [7:0] int_enable;
+    input wire  [31:0] rdata;
+    input wire  [7:0] events;
+    input wire  [7:0] w1c;
+    input wire  int_enable_we;
+    input wire  [7:0] int_enable_d;
     
-    // Update code (custom)
+    // Constant declarations
+    localparam  zero_w = 8'h0;
+    localparam  zero32 = 32'h0;
     
-    always @(posedge clock) begin
-       q <= d;
+    // Stub signals
+    reg  ack_q__d;
+    wire  ack_q__q;
+    reg  ack_q__clock;
+    reg  [31:0] dat_q__d;
+    wire  [31:0] dat_q__q;
+    reg  dat_q__clock;
+    reg  irq_q__d;
+    wire  irq_q__q;
+    reg  irq_q__clock;
+    reg  [7:0] int_status_q__d;
+    wire  [7:0] int_status_q__q;
+    reg  int_status_q__clock;
+    reg  [7:0] int_enable_q__d;
+    wire  [7:0] int_enable_q__q;
+    reg  int_enable_q__clock;
+    
+    // Local signals
+    reg  taken;
+    
+    // Sub module instances
+    drcc__regs__bus__ack_q ack_q(
+        .d(ack_q__d),
+        .q(ack_q__q),
+        .clock(ack_q__clock)
+    );
+    drcc__regs__bus__dat_q dat_q(
+        .d(dat_q__d),
+        .q(dat_q__q),
+        .clock(dat_q__clock)
+    );
+    drcc__regs__bus__irq_q irq_q(
+        .d(irq_q__d),
+        .q(irq_q__q),
+        .clock(irq_q__clock)
+    );
+    drcc__regs__bus__int_status_q int_status_q(
+        .d(int_status_q__d),
+        .q(int_status_q__q),
+        .clock(int_status_q__clock)
+    );
+    drcc__regs__bus__int_enable_q int_enable_q(
+        .d(int_enable_q__d),
+        .q(int_enable_q__q),
+        .clock(int_enable_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ack_q__clock = clk;
+        dat_q__clock = clk;
+        irq_q__clock = clk;
+        int_status_q__clock = clk;
+        int_enable_q__clock = clk;
+        ack_q__d = ack_q__q;
+        dat_q__d = dat_q__q;
+        irq_q__d = irq_q__q;
+        int_status_q__d = int_status_q__q;
+        int_enable_q__d = int_enable_q__q;
+        taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
+        wr = taken & wb_we_i;
+        ack_q__d = taken;
+        dat_q__d = zero32;
+        if (taken & ~wb_we_i) begin
+            dat_q__d = rdata;
+        end
+        int_status_q__d = (int_status_q__q & ~w1c) | events;
+        int_enable_q__d = int_enable_q__q;
+        if (int_enable_we) begin
+            int_enable_q__d = int_enable_d;
+        end
+        irq_q__d = (int_status_q__q & int_enable_q__q) != zero_w;
+        if (rst) begin
+            ack_q__d = 1'b0;
+            dat_q__d = zero32;
+            irq_q__d = 1'b0;
+            int_status_q__d = zero_w;
+            int_enable_q__d = zero_w;
+        end
+        wb_ack_o = ack_q__q;
+        wb_dat_o = dat_q__q;
+        irq = irq_q__q;
+        int_status = int_status_q__q;
+        int_enable = int_enable_q__q;
     end
-          
-endmodule // drcc__regs__dat_q
+    
+endmodule // drcc__regs__bus
 
 
-module drcc__regs__dual_tx_q(d,q,clock);
+module drcc__regs__bus__ack_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13205,7 +13274,442 @@ module drcc__regs__dual_tx_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__regs__dual_tx_q
+endmodule // drcc__regs__bus__ack_q
+
+
+module drcc__regs__bus__dat_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__bus__dat_q
+
+
+module drcc__regs__bus__int_enable_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__bus__int_enable_q
+
+
+module drcc__regs__bus__int_status_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__bus__int_status_q
+
+
+module drcc__regs__bus__irq_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__bus__irq_q
+
+
+module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  we;
+    input wire  [31:0] wdat;
+    input wire  refused;
+    input wire  [3:0] k_in;
+    output reg  [31:0] word;
+    output reg  reset_mode;
+    output reg  reset_mode_d;
+    output reg  redundancy;
+    output reg  [1:0] policy;
+    output reg  dual_tx;
+    output reg  [3:0] k;
+    output reg  [1:0] mode_a;
+    output reg  [1:0] mode_b;
+    output reg  single_shot;
+    
+    // Constant declarations
+    localparam  p_reset_mode = 5'b0;
+    localparam  p_redundancy = 5'b1;
+    localparam  p_policy = 5'b10;
+    localparam  p_dual_tx = 5'b100;
+    localparam  p_k = 5'b1000;
+    localparam  p_mode_a = 5'b1100;
+    localparam  p_mode_b = 5'b1110;
+    localparam  p_single_shot = 5'b10000;
+    localparam  redundancy_reset = 1'b0;
+    localparam  policy_reset = 2'b1;
+    localparam  k_reset = 4'h1;
+    localparam  mode_reset = 2'b0;
+    
+    // Stub signals
+    reg  reset_mode_q__d;
+    wire  reset_mode_q__q;
+    reg  reset_mode_q__clock;
+    reg  reset_mode_dq__d;
+    wire  reset_mode_dq__q;
+    reg  reset_mode_dq__clock;
+    reg  redundancy_q__d;
+    wire  redundancy_q__q;
+    reg  redundancy_q__clock;
+    reg  [1:0] policy_q__d;
+    wire  [1:0] policy_q__q;
+    reg  policy_q__clock;
+    reg  dual_tx_q__d;
+    wire  dual_tx_q__q;
+    reg  dual_tx_q__clock;
+    reg  [3:0] k_q__d;
+    wire  [3:0] k_q__q;
+    reg  k_q__clock;
+    reg  [1:0] mode_a_q__d;
+    wire  [1:0] mode_a_q__q;
+    reg  mode_a_q__clock;
+    reg  [1:0] mode_b_q__d;
+    wire  [1:0] mode_b_q__q;
+    reg  mode_b_q__clock;
+    reg  single_shot_q__d;
+    wire  single_shot_q__q;
+    reg  single_shot_q__clock;
+    
+    // Sub module instances
+    drcc__regs__ctrl__reset_mode_q reset_mode_q(
+        .d(reset_mode_q__d),
+        .q(reset_mode_q__q),
+        .clock(reset_mode_q__clock)
+    );
+    drcc__regs__ctrl__reset_mode_dq reset_mode_dq(
+        .d(reset_mode_dq__d),
+        .q(reset_mode_dq__q),
+        .clock(reset_mode_dq__clock)
+    );
+    drcc__regs__ctrl__redundancy_q redundancy_q(
+        .d(redundancy_q__d),
+        .q(redundancy_q__q),
+        .clock(redundancy_q__clock)
+    );
+    drcc__regs__ctrl__policy_q policy_q(
+        .d(policy_q__d),
+        .q(policy_q__q),
+        .clock(policy_q__clock)
+    );
+    drcc__regs__ctrl__dual_tx_q dual_tx_q(
+        .d(dual_tx_q__d),
+        .q(dual_tx_q__q),
+        .clock(dual_tx_q__clock)
+    );
+    drcc__regs__ctrl__k_q k_q(
+        .d(k_q__d),
+        .q(k_q__q),
+        .clock(k_q__clock)
+    );
+    drcc__regs__ctrl__mode_a_q mode_a_q(
+        .d(mode_a_q__d),
+        .q(mode_a_q__q),
+        .clock(mode_a_q__clock)
+    );
+    drcc__regs__ctrl__mode_b_q mode_b_q(
+        .d(mode_b_q__d),
+        .q(mode_b_q__q),
+        .clock(mode_b_q__clock)
+    );
+    drcc__regs__ctrl__single_shot_q single_shot_q(
+        .d(single_shot_q__d),
+        .q(single_shot_q__q),
+        .clock(single_shot_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        reset_mode_q__clock = clk;
+        reset_mode_dq__clock = clk;
+        redundancy_q__clock = clk;
+        policy_q__clock = clk;
+        dual_tx_q__clock = clk;
+        k_q__clock = clk;
+        mode_a_q__clock = clk;
+        mode_b_q__clock = clk;
+        single_shot_q__clock = clk;
+        reset_mode_q__d = reset_mode_q__q;
+        reset_mode_dq__d = reset_mode_dq__q;
+        redundancy_q__d = redundancy_q__q;
+        policy_q__d = policy_q__q;
+        dual_tx_q__d = dual_tx_q__q;
+        k_q__d = k_q__q;
+        mode_a_q__d = mode_a_q__q;
+        mode_b_q__d = mode_b_q__q;
+        single_shot_q__d = single_shot_q__q;
+        reset_mode_dq__d = reset_mode_q__q;
+        if (we) begin
+            if (reset_mode_q__q) begin
+                if (~refused) begin
+                    reset_mode_q__d = wdat[p_reset_mode];
+                    redundancy_q__d = wdat[p_redundancy];
+                    policy_q__d = wdat[(p_policy)+:(2)];
+                    dual_tx_q__d = wdat[p_dual_tx];
+                    k_q__d = k_in;
+                    mode_a_q__d = wdat[(p_mode_a)+:(2)];
+                    mode_b_q__d = wdat[(p_mode_b)+:(2)];
+                    single_shot_q__d = wdat[p_single_shot];
+                end
+            end
+            else begin
+                reset_mode_q__d = wdat[p_reset_mode];
+            end
+        end
+        if (rst) begin
+            reset_mode_q__d = 1'b1;
+            reset_mode_dq__d = 1'b1;
+            redundancy_q__d = redundancy_reset;
+            policy_q__d = policy_reset;
+            dual_tx_q__d = 1'b0;
+            k_q__d = k_reset;
+            mode_a_q__d = mode_reset;
+            mode_b_q__d = mode_reset;
+            single_shot_q__d = 1'b0;
+        end
+        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot);
+        reset_mode = reset_mode_q__q;
+        reset_mode_d = reset_mode_dq__q;
+        redundancy = redundancy_q__q;
+        policy = policy_q__q;
+        dual_tx = dual_tx_q__q;
+        k = k_q__q;
+        mode_a = mode_a_q__q;
+        mode_b = mode_b_q__q;
+        single_shot = single_shot_q__q;
+    end
+    
+endmodule // drcc__regs__ctrl
+
+
+module drcc__regs__ctrl__dual_tx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__dual_tx_q
+
+
+module drcc__regs__ctrl__k_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__k_q
+
+
+module drcc__regs__ctrl__mode_a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__mode_a_q
+
+
+module drcc__regs__ctrl__mode_b_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__mode_b_q
+
+
+module drcc__regs__ctrl__policy_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__policy_q
+
+
+module drcc__regs__ctrl__redundancy_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__redundancy_q
+
+
+module drcc__regs__ctrl__reset_mode_dq(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__reset_mode_dq
+
+
+module drcc__regs__ctrl__reset_mode_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__reset_mode_q
+
+
+module drcc__regs__ctrl__single_shot_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__single_shot_q
+
+
+module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,k_in,refused,illegal);
+    
+    // Module arguments
+    input wire  [31:0] wdat;
+    input wire  reset_mode;
+    input wire  redundancy;
+    input wire  [1:0] policy;
+    input wire  dual_tx;
+    input wire  [3:0] k;
+    input wire  [1:0] mode_a;
+    input wire  [1:0] mode_b;
+    input wire  single_shot;
+    output reg  [3:0] k_in;
+    output reg  refused;
+    output reg  illegal;
+    
+    // Constant declarations
+    localparam  p_redundancy = 5'b1;
+    localparam  p_policy = 5'b10;
+    localparam  p_dual_tx = 5'b100;
+    localparam  p_k = 5'b1000;
+    localparam  p_mode_a = 5'b1100;
+    localparam  p_mode_b = 5'b1110;
+    localparam  p_single_shot = 5'b10000;
+    localparam  policy_illegal = 2'b11;
+    localparam  mode_listen = 2'b1;
+    localparam  zero4 = 4'h0;
+    localparam  one4 = 4'h1;
+    
+    // Local signals
+    reg  cfg_differs;
+    
+    // Update code
+    always @(*) begin
+        if (wdat[(p_k)+:(4)] == zero4) begin
+            k_in = one4;
+        end
+        else begin
+            k_in = wdat[(p_k)+:(4)];
+        end
+        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | (wdat[p_redundancy] & ((wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen)));
+        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot);
+        if (reset_mode) begin
+            illegal = refused;
+        end
+        else begin
+            illegal = cfg_differs;
+        end
+    end
+    
+endmodule // drcc__regs__ctrl_check
 
 
 module drcc__regs__es_a_prev(d,q,clock);
@@ -13240,118 +13744,6 @@ module drcc__regs__es_b_prev(d,q,clock);
 endmodule // drcc__regs__es_b_prev
 
 
-module drcc__regs__int_enable(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__int_enable
-
-
-module drcc__regs__int_status(d,q,clock);
-    
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__int_status
-
-
-module drcc__regs__irq_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__irq_q
-
-
-module drcc__regs__k_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__k_q
-
-
-module drcc__regs__mode_a_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__mode_a_q
-
-
-module drcc__regs__mode_b_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__mode_b_q
-
-
-module drcc__regs__policy_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__policy_q
-
-
 module drcc__regs__recov_q(d,q,clock);
     
     // Module arguments
@@ -13368,54 +13760,6 @@ module drcc__regs__recov_q(d,q,clock);
 endmodule // drcc__regs__recov_q
 
 
-module drcc__regs__redundancy_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__redundancy_q
-
-
-module drcc__regs__reset_mode_dq(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__reset_mode_dq
-
-
-module drcc__regs__reset_mode_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__reset_mode_q
-
-
 module drcc__regs__rmb_cfg_q(d,q,clock);
     
     // Module arguments
@@ -13430,22 +13774,6 @@ module drcc__regs__rmb_cfg_q(d,q,clock);
     end
           
 endmodule // drcc__regs__rmb_cfg_q
-
-
-module drcc__regs__single_shot_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__single_shot_q
 
 
 module drcc__regs__switches_q(d,q,clock);
@@ -14511,6 +14839,142 @@ module drcc__rxw__w_state(d,q,clock);
     end
           
 endmodule // drcc__rxw__w_state
+
+
+module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,switches,recoveries);
+    
+    // Module arguments
+    input wire  [5:0] adr;
+    output reg  [31:0] word;
+    input wire  [3:0] state;
+    input wire  tx_channel;
+    input wire  tx_going_on;
+    input wire  [15:0] last_tx_time;
+    input wire  [15:0] switch_time;
+    input wire  reset_mode;
+    input wire  [3:0] txq_a;
+    input wire  [3:0] txq_b;
+    input wire  [5:0] rx_count;
+    input wire  [1:0] es_a;
+    input wire  [8:0] tec_a;
+    input wire  [7:0] rec_a;
+    input wire  ew_a;
+    input wire  [1:0] es_b;
+    input wire  [8:0] tec_b;
+    input wire  [7:0] rec_b;
+    input wire  ew_b;
+    input wire  [1:0] aux_a_state;
+    input wire  [3:0] causes_a;
+    input wire  [3:0] fail_cnt_a;
+    input wire  [7:0] failures_a;
+    input wire  [7:0] recoveries_a;
+    input wire  [1:0] aux_b_state;
+    input wire  [3:0] causes_b;
+    input wire  [3:0] fail_cnt_b;
+    input wire  [7:0] failures_b;
+    input wire  [7:0] recoveries_b;
+    input wire  [99:0] rx_head;
+    input wire  rx_ready;
+    input wire  [15:0] duplicates;
+    input wire  [15:0] overruns;
+    input wire  [15:0] switches;
+    input wire  [15:0] recoveries;
+    
+    // Constant declarations
+    localparam  a_id = 6'b0;
+    localparam  a_status = 6'b101;
+    localparam  a_chan_a_err = 6'b1000;
+    localparam  a_chan_b_err = 6'b1001;
+    localparam  a_aux_a = 6'b1010;
+    localparam  a_aux_b = 6'b1011;
+    localparam  a_rx_id = 6'b10001;
+    localparam  a_rx_ctrl = 6'b10010;
+    localparam  a_rx_data0 = 6'b10011;
+    localparam  a_rx_data1 = 6'b10100;
+    localparam  a_stats0 = 6'b10110;
+    localparam  a_stats1 = 6'b10111;
+    localparam  a_times = 6'b11000;
+    localparam  id_value = 32'h44524343;
+    localparam  zero32 = 32'h0;
+    localparam  st_state = 5'b0;
+    localparam  st_tx_channel = 5'b100;
+    localparam  st_aux_a = 5'b101;
+    localparam  st_aux_b = 5'b111;
+    localparam  st_es_a = 5'b1001;
+    localparam  st_es_b = 5'b1011;
+    localparam  st_reset_mode = 5'b1101;
+    localparam  st_tx_going_on = 5'b1110;
+    localparam  st_txq_a = 5'b10000;
+    localparam  st_txq_b = 5'b10100;
+    localparam  st_rx_count = 5'b11000;
+    localparam  err_tec = 5'b0;
+    localparam  err_rec = 5'b10000;
+    localparam  err_state = 5'b11000;
+    localparam  err_warning = 5'b11010;
+    localparam  aux_state = 5'b0;
+    localparam  aux_causes = 5'b10;
+    localparam  aux_fail_cnt = 5'b1000;
+    localparam  aux_failures = 5'b10000;
+    localparam  aux_recoveries = 5'b11000;
+    localparam  rx_ready_at = 5'b11111;
+    localparam  rx_dlc_at = 5'b0;
+    localparam  rx_channel_at = 5'b1000;
+    localparam  s0_duplicates = 5'b0;
+    localparam  s0_overruns = 5'b10000;
+    localparam  s1_switches = 5'b0;
+    localparam  s1_recoveries = 5'b10000;
+    localparam  t_last_tx = 5'b0;
+    localparam  t_switch = 5'b10000;
+    
+    // Local signals
+    reg  [63:0] rx_data64;
+    
+    // Update code
+    always @(*) begin
+        rx_data64 = rx_head[(32'h0)+:(64)];
+        word = zero32;
+        if (adr == a_id) begin
+            word = id_value;
+        end
+        else if (adr == a_status) begin
+            word = (((state) & 32'hffffffff) << st_state) | (((tx_channel) & 32'hffffffff) << st_tx_channel) | (((aux_a_state) & 32'hffffffff) << st_aux_a) | (((aux_b_state) & 32'hffffffff) << st_aux_b) | (((es_a) & 32'hffffffff) << st_es_a) | (((es_b) & 32'hffffffff) << st_es_b) | (((reset_mode) & 32'hffffffff) << st_reset_mode) | (((tx_going_on) & 32'hffffffff) << st_tx_going_on) | (((txq_a) & 32'hffffffff) << st_txq_a) | (((txq_b) & 32'hffffffff) << st_txq_b) | (((rx_count) & 32'hffffffff) << st_rx_count);
+        end
+        else if (adr == a_chan_a_err) begin
+            word = (((tec_a) & 32'hffffffff) << err_tec) | (((rec_a) & 32'hffffffff) << err_rec) | (((es_a) & 32'hffffffff) << err_state) | (((ew_a) & 32'hffffffff) << err_warning);
+        end
+        else if (adr == a_chan_b_err) begin
+            word = (((tec_b) & 32'hffffffff) << err_tec) | (((rec_b) & 32'hffffffff) << err_rec) | (((es_b) & 32'hffffffff) << err_state) | (((ew_b) & 32'hffffffff) << err_warning);
+        end
+        else if (adr == a_aux_a) begin
+            word = (((aux_a_state) & 32'hffffffff) << aux_state) | (((causes_a) & 32'hffffffff) << aux_causes) | (((fail_cnt_a) & 32'hffffffff) << aux_fail_cnt) | (((failures_a) & 32'hffffffff) << aux_failures) | (((recoveries_a) & 32'hffffffff) << aux_recoveries);
+        end
+        else if (adr == a_aux_b) begin
+            word = (((aux_b_state) & 32'hffffffff) << aux_state) | (((causes_b) & 32'hffffffff) << aux_causes) | (((fail_cnt_b) & 32'hffffffff) << aux_fail_cnt) | (((failures_b) & 32'hffffffff) << aux_failures) | (((recoveries_b) & 32'hffffffff) << aux_recoveries);
+        end
+        else if (adr == a_rx_id) begin
+            word = ((rx_head[(32'h44)+:(31)]) & 32'hffffffff) | (((rx_ready) & 32'hffffffff) << rx_ready_at);
+        end
+        else if (adr == a_rx_ctrl) begin
+            word = (((rx_head[(32'h40)+:(4)]) & 32'hffffffff) << rx_dlc_at) | (((rx_head[32'h63]) & 32'hffffffff) << rx_channel_at);
+        end
+        else if (adr == a_rx_data0) begin
+            word = ((rx_data64[(32'h38)+:(8)]) & 32'hffffffff) | (((rx_data64[(32'h30)+:(8)]) & 32'hffffffff) << 32'h8) | (((rx_data64[(32'h28)+:(8)]) & 32'hffffffff) << 32'h10) | (((rx_data64[(32'h20)+:(8)]) & 32'hffffffff) << 32'h18);
+        end
+        else if (adr == a_rx_data1) begin
+            word = ((rx_data64[(32'h18)+:(8)]) & 32'hffffffff) | (((rx_data64[(32'h10)+:(8)]) & 32'hffffffff) << 32'h8) | (((rx_data64[(32'h8)+:(8)]) & 32'hffffffff) << 32'h10) | (((rx_data64[(32'h0)+:(8)]) & 32'hffffffff) << 32'h18);
+        end
+        else if (adr == a_stats0) begin
+            word = (((duplicates) & 32'hffffffff) << s0_duplicates) | (((overruns) & 32'hffffffff) << s0_overruns);
+        end
+        else if (adr == a_stats1) begin
+            word = (((switches) & 32'hffffffff) << s1_switches) | (((recoveries) & 32'hffffffff) << s1_recoveries);
+        end
+        else if (adr == a_times) begin
+            word = (((last_tx_time) & 32'hffffffff) << t_last_tx) | (((switch_time) & 32'hffffffff) << t_switch);
+        end
+    end
+    
+endmodule // drcc__status
 
 
 module drcc__ticker(clk,hold,brp,tseg1,tseg2,tick,now);

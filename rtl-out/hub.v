@@ -4342,6 +4342,32 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  a_stats = 6'b1001;
     localparam  a_port0 = 6'b10000;
     localparam  a_port_end = 6'b10110;
+    localparam  c_reset_mode = 5'b0;
+    localparam  c_force = 5'b1;
+    localparam  c_recouple = 5'b10;
+    localparam  c_ack_interdep = 5'b1000;
+    localparam  b_brp = 4'h0;
+    localparam  b_tseg1 = 4'h6;
+    localparam  b_tseg2 = 4'ha;
+    localparam  b_sjw = 4'hd;
+    localparam  g_sd_up = 5'b0;
+    localparam  g_sd_sub = 5'b1000;
+    localparam  g_sr = 5'b10000;
+    localparam  f_bf_up = 5'b0;
+    localparam  f_bf_sub = 5'b1000;
+    localparam  r_restore = 5'b0;
+    localparam  r_decouple = 5'b10000;
+    localparam  s_reset_mode = 5'b0;
+    localparam  s_decoupled = 5'b1;
+    localparam  s_ack_window = 5'b10;
+    localparam  s_trk = 5'b100;
+    localparam  s_enabled = 5'b10000;
+    localparam  i_isolation = 5'b0;
+    localparam  i_restoration = 5'b1;
+    localparam  i_decoupled = 5'b10;
+    localparam  i_illegal = 5'b11;
+    localparam  t_frames = 5'b0;
+    localparam  t_errors = 5'b10000;
     localparam  id_val = 32'h48550402;
     localparam  btr_reset = 15'b10100000000;
     localparam  sd_up_reset = 6'b1110;
@@ -4360,15 +4386,22 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  zero32 = 32'h0;
     
     // Stub signals
-    reg  ack_q__d;
-    wire  ack_q__q;
-    reg  ack_q__clock;
-    reg  [31:0] dat_q__d;
-    wire  [31:0] dat_q__q;
-    reg  dat_q__clock;
-    reg  irq_q__d;
-    wire  irq_q__q;
-    reg  irq_q__clock;
+    reg  bus__clk;
+    reg  bus__rst;
+    reg  bus__wb_cyc_i;
+    reg  bus__wb_stb_i;
+    reg  bus__wb_we_i;
+    wire  [31:0] bus__wb_dat_o;
+    wire  bus__wb_ack_o;
+    wire  bus__irq;
+    wire  bus__wr;
+    wire  [3:0] bus__int_status;
+    wire  [3:0] bus__int_enable;
+    reg  [31:0] bus__rdata;
+    reg  [3:0] bus__events;
+    reg  [3:0] bus__w1c;
+    reg  bus__int_enable_we;
+    reg  [3:0] bus__int_enable_d;
     reg  reset_mode_q__d;
     wire  reset_mode_q__q;
     reg  reset_mode_q__clock;
@@ -4402,12 +4435,6 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     reg  [15:0] decouple_q__d;
     wire  [15:0] decouple_q__q;
     reg  decouple_q__clock;
-    reg  [3:0] int_status__d;
-    wire  [3:0] int_status__q;
-    reg  int_status__clock;
-    reg  [3:0] int_enable__d;
-    wire  [3:0] int_enable__q;
-    reg  int_enable__clock;
     reg  decoupled_q__d;
     wire  decoupled_q__q;
     reg  decoupled_q__clock;
@@ -4416,7 +4443,6 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     reg  no_twin__clock;
     
     // Local signals
-    reg  taken;
     reg  wr;
     reg  [31:0] wdat;
     reg  [31:0] rdata;
@@ -4425,23 +4451,25 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     reg  [3:0] w1c;
     reg  dec_evt;
     reg  [15:0] no_twin_new;
-    reg  [3:0] events;
     
     // Sub module instances
-    hub__regs__ack_q ack_q(
-        .d(ack_q__d),
-        .q(ack_q__q),
-        .clock(ack_q__clock)
-    );
-    hub__regs__dat_q dat_q(
-        .d(dat_q__d),
-        .q(dat_q__q),
-        .clock(dat_q__clock)
-    );
-    hub__regs__irq_q irq_q(
-        .d(irq_q__d),
-        .q(irq_q__q),
-        .clock(irq_q__clock)
+    hub__regs__bus bus(
+        .clk(bus__clk),
+        .rst(bus__rst),
+        .wb_cyc_i(bus__wb_cyc_i),
+        .wb_stb_i(bus__wb_stb_i),
+        .wb_we_i(bus__wb_we_i),
+        .wb_dat_o(bus__wb_dat_o),
+        .wb_ack_o(bus__wb_ack_o),
+        .irq(bus__irq),
+        .wr(bus__wr),
+        .int_status(bus__int_status),
+        .int_enable(bus__int_enable),
+        .rdata(bus__rdata),
+        .events(bus__events),
+        .w1c(bus__w1c),
+        .int_enable_we(bus__int_enable_we),
+        .int_enable_d(bus__int_enable_d)
     );
     hub__regs__reset_mode_q reset_mode_q(
         .d(reset_mode_q__d),
@@ -4498,16 +4526,6 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         .q(decouple_q__q),
         .clock(decouple_q__clock)
     );
-    hub__regs__int_status int_status(
-        .d(int_status__d),
-        .q(int_status__q),
-        .clock(int_status__clock)
-    );
-    hub__regs__int_enable int_enable(
-        .d(int_enable__d),
-        .q(int_enable__q),
-        .clock(int_enable__clock)
-    );
     hub__regs__decoupled_q decoupled_q(
         .d(decoupled_q__d),
         .q(decoupled_q__q),
@@ -4521,9 +4539,6 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     
     // Update code
     always @(*) begin
-        ack_q__clock = clk;
-        dat_q__clock = clk;
-        irq_q__clock = clk;
         reset_mode_q__clock = clk;
         reset_mode_dq__clock = clk;
         ack_interdep_q__clock = clk;
@@ -4535,13 +4550,8 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         bf_sub_q__clock = clk;
         restore_q__clock = clk;
         decouple_q__clock = clk;
-        int_status__clock = clk;
-        int_enable__clock = clk;
         decoupled_q__clock = clk;
         no_twin__clock = clk;
-        ack_q__d = ack_q__q;
-        dat_q__d = dat_q__q;
-        irq_q__d = irq_q__q;
         reset_mode_q__d = reset_mode_q__q;
         reset_mode_dq__d = reset_mode_dq__q;
         ack_interdep_q__d = ack_interdep_q__q;
@@ -4553,12 +4563,14 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         bf_sub_q__d = bf_sub_q__q;
         restore_q__d = restore_q__q;
         decouple_q__d = decouple_q__q;
-        int_status__d = int_status__q;
-        int_enable__d = int_enable__q;
         decoupled_q__d = decoupled_q__q;
         no_twin__d = no_twin__q;
-        taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
-        wr = taken & wb_we_i;
+        bus__clk = clk;
+        bus__rst = rst;
+        bus__wb_cyc_i = wb_cyc_i;
+        bus__wb_stb_i = wb_stb_i;
+        bus__wb_we_i = wb_we_i;
+        wr = bus__wr;
         wdat = wb_dat_i;
         is_port = (wb_adr_i >= a_port0) & (wb_adr_i < a_port_end);
         rdata = zero32;
@@ -4566,40 +4578,36 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             rdata = id_val;
         end
         else if (wb_adr_i == a_ctrl) begin
-            rdata = ((reset_mode_q__q) & 32'hffffffff) | (((ack_interdep_q__q) & 32'hffffffff) << 32'h8);
+            rdata = (((reset_mode_q__q) & 32'hffffffff) << c_reset_mode) | (((ack_interdep_q__q) & 32'hffffffff) << c_ack_interdep);
         end
         else if (wb_adr_i == a_btr) begin
             rdata = ((btr_q__q) & 32'hffffffff);
         end
         else if (wb_adr_i == a_guard) begin
-            rdata = ((sd_up_q__q) & 32'hffffffff) | (((sd_sub_q__q) & 32'hffffffff) << 32'h8) | (((sr_q__q) & 32'hffffffff) << 32'h10);
+            rdata = (((sd_up_q__q) & 32'hffffffff) << g_sd_up) | (((sd_sub_q__q) & 32'hffffffff) << g_sd_sub) | (((sr_q__q) & 32'hffffffff) << g_sr);
         end
         else if (wb_adr_i == a_bf) begin
-            rdata = ((bf_up_q__q) & 32'hffffffff) | (((bf_sub_q__q) & 32'hffffffff) << 32'h8);
+            rdata = (((bf_up_q__q) & 32'hffffffff) << f_bf_up) | (((bf_sub_q__q) & 32'hffffffff) << f_bf_sub);
         end
         else if (wb_adr_i == a_restore) begin
-            rdata = ((restore_q__q) & 32'hffffffff) | (((decouple_q__q) & 32'hffffffff) << 32'h10);
+            rdata = (((restore_q__q) & 32'hffffffff) << r_restore) | (((decouple_q__q) & 32'hffffffff) << r_decouple);
         end
         else if (wb_adr_i == a_status) begin
-            rdata = ((reset_mode_q__q) & 32'hffffffff) | (((decoupled_q__q) & 32'hffffffff) << 32'h1) | (((ack_window) & 32'hffffffff) << 32'h2) | (((trk) & 32'hffffffff) << 32'h4) | (((port_en) & 32'hffffffff) << 32'h10);
+            rdata = (((reset_mode_q__q) & 32'hffffffff) << s_reset_mode) | (((decoupled_q__q) & 32'hffffffff) << s_decoupled) | (((ack_window) & 32'hffffffff) << s_ack_window) | (((trk) & 32'hffffffff) << s_trk) | (((port_en) & 32'hffffffff) << s_enabled);
         end
         else if (wb_adr_i == a_int_status) begin
-            rdata = ((int_status__q) & 32'hffffffff);
+            rdata = ((bus__int_status) & 32'hffffffff);
         end
         else if (wb_adr_i == a_int_enable) begin
-            rdata = ((int_enable__q) & 32'hffffffff);
+            rdata = ((bus__int_enable) & 32'hffffffff);
         end
         else if (wb_adr_i == a_stats) begin
-            rdata = ((frames) & 32'hffffffff) | (((errors) & 32'hffffffff) << 32'h10);
+            rdata = (((frames) & 32'hffffffff) << t_frames) | (((errors) & 32'hffffffff) << t_errors);
         end
         else if (is_port) begin
             rdata = port_rd;
         end
-        ack_q__d = taken;
-        dat_q__d = zero32;
-        if (taken & ~wb_we_i) begin
-            dat_q__d = rdata;
-        end
+        bus__rdata = rdata;
         reset_mode_dq__d = reset_mode_q__q;
         dec_evt = 1'b0;
         if (any_sub_en) begin
@@ -4620,24 +4628,26 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         end
         illegal = 1'b0;
         w1c = zero4;
+        bus__int_enable_we = 1'b0;
+        bus__int_enable_d = wdat[(32'h0)+:(4)];
         if (wr) begin
             if (wb_adr_i == a_ctrl) begin
-                if (wdat[32'h1] & wdat[32'h2]) begin
+                if (wdat[c_force] & wdat[c_recouple]) begin
                     illegal = 1'b1;
                 end
                 else begin
-                    reset_mode_q__d = wdat[32'h0];
+                    reset_mode_q__d = wdat[c_reset_mode];
                     if (reset_mode_q__q) begin
-                        ack_interdep_q__d = wdat[32'h8];
+                        ack_interdep_q__d = wdat[c_ack_interdep];
                     end
                     else begin
-                        illegal = wdat[32'h8] != ack_interdep_q__q;
-                        if (~wdat[32'h0]) begin
-                            if (wdat[32'h1]) begin
+                        illegal = wdat[c_ack_interdep] != ack_interdep_q__q;
+                        if (~wdat[c_reset_mode]) begin
+                            if (wdat[c_force]) begin
                                 decoupled_q__d = 1'b1;
                                 dec_evt = 1'b1;
                             end
-                            if (wdat[32'h2]) begin
+                            if (wdat[c_recouple]) begin
                                 decoupled_q__d = 1'b0;
                                 no_twin__d = zero16;
                                 dec_evt = 1'b0;
@@ -4656,19 +4666,19 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             end
             else if (wb_adr_i == a_guard) begin
                 if (reset_mode_q__q) begin
-                    if (wdat[(32'h0)+:(6)] < sd_min) begin
+                    if (wdat[(g_sd_up)+:(6)] < sd_min) begin
                         sd_up_q__d = sd_min;
                     end
                     else begin
-                        sd_up_q__d = wdat[(32'h0)+:(6)];
+                        sd_up_q__d = wdat[(g_sd_up)+:(6)];
                     end
-                    if (wdat[(32'h8)+:(6)] < sd_min) begin
+                    if (wdat[(g_sd_sub)+:(6)] < sd_min) begin
                         sd_sub_q__d = sd_min;
                     end
                     else begin
-                        sd_sub_q__d = wdat[(32'h8)+:(6)];
+                        sd_sub_q__d = wdat[(g_sd_sub)+:(6)];
                     end
-                    sr_q__d = wdat[(32'h10)+:(4)];
+                    sr_q__d = wdat[(g_sr)+:(4)];
                 end
                 else begin
                     illegal = 1'b1;
@@ -4676,17 +4686,17 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             end
             else if (wb_adr_i == a_bf) begin
                 if (reset_mode_q__q) begin
-                    if (wdat[(32'h0)+:(8)] < bf_min) begin
+                    if (wdat[(f_bf_up)+:(8)] < bf_min) begin
                         bf_up_q__d = bf_min;
                     end
                     else begin
-                        bf_up_q__d = wdat[(32'h0)+:(8)];
+                        bf_up_q__d = wdat[(f_bf_up)+:(8)];
                     end
-                    if (wdat[(32'h8)+:(8)] < bf_min) begin
+                    if (wdat[(f_bf_sub)+:(8)] < bf_min) begin
                         bf_sub_q__d = bf_min;
                     end
                     else begin
-                        bf_sub_q__d = wdat[(32'h8)+:(8)];
+                        bf_sub_q__d = wdat[(f_bf_sub)+:(8)];
                     end
                 end
                 else begin
@@ -4695,8 +4705,8 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             end
             else if (wb_adr_i == a_restore) begin
                 if (reset_mode_q__q) begin
-                    restore_q__d = wdat[(32'h0)+:(16)];
-                    decouple_q__d = wdat[(32'h10)+:(16)];
+                    restore_q__d = wdat[(r_restore)+:(16)];
+                    decouple_q__d = wdat[(r_decouple)+:(16)];
                 end
                 else begin
                     illegal = 1'b1;
@@ -4706,7 +4716,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
                 w1c = wdat[(32'h0)+:(4)];
             end
             else if (wb_adr_i == a_int_enable) begin
-                int_enable__d = wdat[(32'h0)+:(4)];
+                bus__int_enable_we = 1'b1;
             end
             else begin
                 illegal = 1'b1;
@@ -4717,13 +4727,9 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             decoupled_q__d = 1'b0;
             dec_evt = 1'b0;
         end
-        events = ((ev_iso) & 4'hf) | (((ev_rest) & 4'hf) << 32'h1) | (((dec_evt) & 4'hf) << 32'h2) | (((illegal) & 4'hf) << 32'h3);
-        int_status__d = (int_status__q & ~w1c) | events;
-        irq_q__d = (int_status__q & int_enable__q) != zero4;
+        bus__events = (((ev_iso) & 4'hf) << i_isolation) | (((ev_rest) & 4'hf) << i_restoration) | (((dec_evt) & 4'hf) << i_decoupled) | (((illegal) & 4'hf) << i_illegal);
+        bus__w1c = w1c;
         if (rst) begin
-            ack_q__d = 1'b0;
-            dat_q__d = zero32;
-            irq_q__d = 1'b0;
             reset_mode_q__d = 1'b1;
             reset_mode_dq__d = 1'b1;
             ack_interdep_q__d = 1'b1;
@@ -4735,22 +4741,20 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             bf_sub_q__d = bf_sub_reset;
             restore_q__d = restore_reset;
             decouple_q__d = decouple_reset;
-            int_status__d = zero4;
-            int_enable__d = zero4;
             decoupled_q__d = 1'b0;
             no_twin__d = zero16;
         end
-        wb_ack_o = ack_q__q;
-        wb_dat_o = dat_q__q;
-        irq = irq_q__q;
+        wb_ack_o = bus__wb_ack_o;
+        wb_dat_o = bus__wb_dat_o;
+        irq = bus__irq;
         reset_mode = reset_mode_q__q;
         reset_mode_d = reset_mode_dq__q;
         ack_interdep = ack_interdep_q__q;
         decoupled = decoupled_q__q;
-        brp = btr_q__q[(32'h0)+:(6)];
-        tseg1 = btr_q__q[(32'h6)+:(4)];
-        tseg2 = btr_q__q[(32'ha)+:(3)];
-        sjw = btr_q__q[(32'hd)+:(2)];
+        brp = btr_q__q[(b_brp)+:(6)];
+        tseg1 = btr_q__q[(b_tseg1)+:(4)];
+        tseg2 = btr_q__q[(b_tseg2)+:(3)];
+        sjw = btr_q__q[(b_sjw)+:(2)];
         sd_run_up = sd_up_q__q;
         sd_run_sub = sd_sub_q__q;
         sr_frames = sr_q__q;
@@ -4776,22 +4780,6 @@ module hub__regs__ack_interdep_q(d,q,clock);
     end
           
 endmodule // hub__regs__ack_interdep_q
-
-
-module hub__regs__ack_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // hub__regs__ack_q
 
 
 module hub__regs__bf_sub_q(d,q,clock);
@@ -4842,7 +4830,136 @@ module hub__regs__btr_q(d,q,clock);
 endmodule // hub__regs__btr_q
 
 
-module hub__regs__dat_q(d,q,clock);
+module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wb_cyc_i;
+    input wire  wb_stb_i;
+    input wire  wb_we_i;
+    output reg  [31:0] wb_dat_o;
+    output reg  wb_ack_o;
+    output reg  irq;
+    output reg  wr;
+    output reg  [3:0] int_status;
+    output reg  [3:0] int_enable;
+    input wire  [31:0] rdata;
+    input wire  [3:0] events;
+    input wire  [3:0] w1c;
+    input wire  int_enable_we;
+    input wire  [3:0] int_enable_d;
+    
+    // Constant declarations
+    localparam  zero_w = 4'h0;
+    localparam  zero32 = 32'h0;
+    
+    // Stub signals
+    reg  ack_q__d;
+    wire  ack_q__q;
+    reg  ack_q__clock;
+    reg  [31:0] dat_q__d;
+    wire  [31:0] dat_q__q;
+    reg  dat_q__clock;
+    reg  irq_q__d;
+    wire  irq_q__q;
+    reg  irq_q__clock;
+    reg  [3:0] int_status_q__d;
+    wire  [3:0] int_status_q__q;
+    reg  int_status_q__clock;
+    reg  [3:0] int_enable_q__d;
+    wire  [3:0] int_enable_q__q;
+    reg  int_enable_q__clock;
+    
+    // Local signals
+    reg  taken;
+    
+    // Sub module instances
+    hub__regs__bus__ack_q ack_q(
+        .d(ack_q__d),
+        .q(ack_q__q),
+        .clock(ack_q__clock)
+    );
+    hub__regs__bus__dat_q dat_q(
+        .d(dat_q__d),
+        .q(dat_q__q),
+        .clock(dat_q__clock)
+    );
+    hub__regs__bus__irq_q irq_q(
+        .d(irq_q__d),
+        .q(irq_q__q),
+        .clock(irq_q__clock)
+    );
+    hub__regs__bus__int_status_q int_status_q(
+        .d(int_status_q__d),
+        .q(int_status_q__q),
+        .clock(int_status_q__clock)
+    );
+    hub__regs__bus__int_enable_q int_enable_q(
+        .d(int_enable_q__d),
+        .q(int_enable_q__q),
+        .clock(int_enable_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ack_q__clock = clk;
+        dat_q__clock = clk;
+        irq_q__clock = clk;
+        int_status_q__clock = clk;
+        int_enable_q__clock = clk;
+        ack_q__d = ack_q__q;
+        dat_q__d = dat_q__q;
+        irq_q__d = irq_q__q;
+        int_status_q__d = int_status_q__q;
+        int_enable_q__d = int_enable_q__q;
+        taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
+        wr = taken & wb_we_i;
+        ack_q__d = taken;
+        dat_q__d = zero32;
+        if (taken & ~wb_we_i) begin
+            dat_q__d = rdata;
+        end
+        int_status_q__d = (int_status_q__q & ~w1c) | events;
+        int_enable_q__d = int_enable_q__q;
+        if (int_enable_we) begin
+            int_enable_q__d = int_enable_d;
+        end
+        irq_q__d = (int_status_q__q & int_enable_q__q) != zero_w;
+        if (rst) begin
+            ack_q__d = 1'b0;
+            dat_q__d = zero32;
+            irq_q__d = 1'b0;
+            int_status_q__d = zero_w;
+            int_enable_q__d = zero_w;
+        end
+        wb_ack_o = ack_q__q;
+        wb_dat_o = dat_q__q;
+        irq = irq_q__q;
+        int_status = int_status_q__q;
+        int_enable = int_enable_q__q;
+    end
+    
+endmodule // hub__regs__bus
+
+
+module hub__regs__bus__ack_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__regs__bus__ack_q
+
+
+module hub__regs__bus__dat_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4855,7 +4972,55 @@ module hub__regs__dat_q(d,q,clock);
        q <= d;
     end
           
-endmodule // hub__regs__dat_q
+endmodule // hub__regs__bus__dat_q
+
+
+module hub__regs__bus__int_enable_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__regs__bus__int_enable_q
+
+
+module hub__regs__bus__int_status_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__regs__bus__int_status_q
+
+
+module hub__regs__bus__irq_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__regs__bus__irq_q
 
 
 module hub__regs__decouple_q(d,q,clock);
@@ -4888,54 +5053,6 @@ module hub__regs__decoupled_q(d,q,clock);
     end
           
 endmodule // hub__regs__decoupled_q
-
-
-module hub__regs__int_enable(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // hub__regs__int_enable
-
-
-module hub__regs__int_status(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // hub__regs__int_status
-
-
-module hub__regs__irq_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // hub__regs__irq_q
 
 
 module hub__regs__no_twin(d,q,clock);

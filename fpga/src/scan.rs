@@ -313,6 +313,7 @@ mod tests {
             direction,
             width,
             is_clock: name == "clk",
+            doc: String::new(),
         }
     }
 

@@ -9,6 +9,7 @@
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;
+use crate::host::status_words::StatusWords;
 use crate::host::wishbone::WbRegs;
 use crate::memory::dedup::RxWriter;
 use crate::memory::rx_fifo::RxFifo;
@@ -119,6 +120,7 @@ pub struct Drcc {
     pub chan_b_err_state: Signal<Out, Bits<2>>,
     // blocks
     regs: WbRegs,
+    status: StatusWords,
     ticker: BitTick,
     main: MainFsm,
     aux_a: AuxFsm,
@@ -150,36 +152,12 @@ impl Logic for Drcc {
         self.regs.wb_we_i.next = self.wb_we_i.val();
         self.regs.wb_adr_i.next = self.wb_adr_i.val();
         self.regs.wb_dat_i.next = self.wb_dat_i.val();
-        self.regs.state.next = self.main.state.val();
-        self.regs.tx_channel.next = self.main.tx_channel.val();
-        self.regs.tx_going_on.next = self.main.tx_going_on.val();
-        self.regs.aux_a_state.next = self.aux_a.aux_state.val();
-        self.regs.aux_b_state.next = self.aux_b.aux_state.val();
+        self.regs.ro_word.next = self.status.word.val();
         self.regs.es_a.next = self.chan_a.err_state.val();
         self.regs.es_b.next = self.chan_b.err_state.val();
         self.regs.txq_a.next = self.txbuf.count_a.val();
         self.regs.txq_b.next = self.txbuf.count_b.val();
         self.regs.rx_count.next = self.rxfifo.count.val();
-        self.regs.tec_a.next = self.chan_a.tec.val();
-        self.regs.rec_a.next = self.chan_a.rec.val();
-        self.regs.ew_a.next = self.chan_a.err_warning.val();
-        self.regs.tec_b.next = self.chan_b.tec.val();
-        self.regs.rec_b.next = self.chan_b.rec.val();
-        self.regs.ew_b.next = self.chan_b.err_warning.val();
-        self.regs.causes_a.next = self.aux_a.causes.val();
-        self.regs.fail_cnt_a.next = self.aux_a.fail_cnt.val();
-        self.regs.failures_a.next = self.aux_a.failures.val();
-        self.regs.recoveries_a.next = self.aux_a.recoveries.val();
-        self.regs.causes_b.next = self.aux_b.causes.val();
-        self.regs.fail_cnt_b.next = self.aux_b.fail_cnt.val();
-        self.regs.failures_b.next = self.aux_b.failures.val();
-        self.regs.recoveries_b.next = self.aux_b.recoveries.val();
-        self.regs.rx_head.next = self.rxfifo.rd_data.val();
-        self.regs.rx_ready.next = self.rxfifo.rx_ready.val();
-        self.regs.duplicates.next = self.rxw.duplicates.val();
-        self.regs.overruns.next = self.rxw.overruns.val();
-        self.regs.last_tx_time.next = self.main.last_tx_time.val();
-        self.regs.switch_time.next = self.main.switch_time.val();
         self.regs.ev_rx.next = self.rxw.rx_evt.val();
         self.regs.ev_tx_done.next = self.txbuf.done_evt.val() | self.main.success_evt.val();
         self.regs.ev_switch.next = self.main.switch_evt.val();
@@ -194,6 +172,42 @@ impl Logic for Drcc {
         self.wb_dat_o.next = self.regs.wb_dat_o.val();
         self.wb_ack_o.next = self.regs.wb_ack_o.val();
         self.irq.next = self.regs.irq.val();
+
+        // ---- read-only registers ----
+        self.status.adr.next = self.wb_adr_i.val();
+        self.status.reset_mode.next = self.regs.reset_mode.val();
+        self.status.state.next = self.main.state.val();
+        self.status.tx_channel.next = self.main.tx_channel.val();
+        self.status.tx_going_on.next = self.main.tx_going_on.val();
+        self.status.last_tx_time.next = self.main.last_tx_time.val();
+        self.status.switch_time.next = self.main.switch_time.val();
+        self.status.txq_a.next = self.txbuf.count_a.val();
+        self.status.txq_b.next = self.txbuf.count_b.val();
+        self.status.rx_count.next = self.rxfifo.count.val();
+        self.status.es_a.next = self.chan_a.err_state.val();
+        self.status.tec_a.next = self.chan_a.tec.val();
+        self.status.rec_a.next = self.chan_a.rec.val();
+        self.status.ew_a.next = self.chan_a.err_warning.val();
+        self.status.es_b.next = self.chan_b.err_state.val();
+        self.status.tec_b.next = self.chan_b.tec.val();
+        self.status.rec_b.next = self.chan_b.rec.val();
+        self.status.ew_b.next = self.chan_b.err_warning.val();
+        self.status.aux_a_state.next = self.aux_a.aux_state.val();
+        self.status.causes_a.next = self.aux_a.causes.val();
+        self.status.fail_cnt_a.next = self.aux_a.fail_cnt.val();
+        self.status.failures_a.next = self.aux_a.failures.val();
+        self.status.recoveries_a.next = self.aux_a.recoveries.val();
+        self.status.aux_b_state.next = self.aux_b.aux_state.val();
+        self.status.causes_b.next = self.aux_b.causes.val();
+        self.status.fail_cnt_b.next = self.aux_b.fail_cnt.val();
+        self.status.failures_b.next = self.aux_b.failures.val();
+        self.status.recoveries_b.next = self.aux_b.recoveries.val();
+        self.status.rx_head.next = self.rxfifo.rd_data.val();
+        self.status.rx_ready.next = self.rxfifo.rx_ready.val();
+        self.status.duplicates.next = self.rxw.duplicates.val();
+        self.status.overruns.next = self.rxw.overruns.val();
+        self.status.switches.next = self.regs.switches.val();
+        self.status.recoveries.next = self.regs.recoveries.val();
 
         // ---- bit tick ----
         self.ticker.clk.next = self.clk.val();

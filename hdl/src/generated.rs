@@ -1,6 +1,6 @@
 //! Every file `drcc generate` writes besides the tops' Verilog: register
-//! documentation, C headers, the Verilator shim port table of every top. Each generator lives beside what it
-//! describes; this list is the one place `drcc generate` (and `--check`) reads, so
+//! documentation, C headers, the Verilator shim port table of every top. Each
+//! generator lives beside what it describes; this list is the one place `drcc generate` (and `--check`) reads, so
 //! a new generated file is one entry here.
 
 /// One generated file.
@@ -21,6 +21,14 @@ pub fn extras() -> Vec<GeneratedFile> {
         GeneratedFile {
             path: "docs/registers.md",
             text: crate::host::registers::markdown(),
+        },
+        GeneratedFile {
+            path: "rtl-out/hub_regs.h",
+            text: crate::host::hub_registers::c_header(),
+        },
+        GeneratedFile {
+            path: "docs/hub_registers.md",
+            text: crate::host::hub_registers::markdown(),
         },
     ];
     // verilator-sys's build script finds the tops by these tables (one per top).

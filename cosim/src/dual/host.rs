@@ -9,41 +9,56 @@
 //!    register reads asked for by a test go first.
 //!
 //! The driver only reacts to the DUT's outputs of the previous clock, so two engines
-//! that agree clock by clock get identical stimulus. Register indices and fields are
-//! the DRCC contract's (`crate::model::drcc_contract.md` §3), written here again on
-//! purpose: the host side is part of the testbench, not of either design.
+//! that agree clock by clock get identical stimulus. Register indices, field
+//! positions and codes come from drcc-hdl's register table (the one source of the
+//! map, which also generates `rtl-out/drcc_regs.h`), as firmware would take them
+//! from that header; the reference model keeps its own copy, checked against the
+//! table by `cosim/tests/register_maps.rs`.
 
 use crate::engine::drcc::{DrccInputs, DrccOutputs};
 use crate::frame::Frame;
+use drcc_hdl::host::registers::{SwitchPolicy, MAP};
 use std::collections::VecDeque;
 
-/// Word indices of the DRCC registers (contract §3).
+/// Word indices of the DRCC registers, from the register table of drcc-hdl
+/// (`drcc_hdl::host::registers`, contract §3) as the `u8` the bus carries.
 pub mod reg {
-    pub const ID: u8 = 0;
-    pub const CTRL: u8 = 1;
-    pub const BTR: u8 = 2;
-    pub const RMB_CFG: u8 = 3;
-    pub const DEDUP_CFG: u8 = 4;
-    pub const STATUS: u8 = 5;
-    pub const INT_STATUS: u8 = 6;
-    pub const INT_ENABLE: u8 = 7;
-    pub const CHAN_A_ERR: u8 = 8;
-    pub const CHAN_B_ERR: u8 = 9;
-    pub const AUX_A: u8 = 10;
-    pub const AUX_B: u8 = 11;
-    pub const TX_ID: u8 = 12;
-    pub const TX_CTRL: u8 = 13;
-    pub const TX_DATA0: u8 = 14;
-    pub const TX_DATA1: u8 = 15;
-    pub const TX_CMD: u8 = 16;
-    pub const RX_ID: u8 = 17;
-    pub const RX_CTRL: u8 = 18;
-    pub const RX_DATA0: u8 = 19;
-    pub const RX_DATA1: u8 = 20;
-    pub const RX_CMD: u8 = 21;
-    pub const STATS0: u8 = 22;
-    pub const STATS1: u8 = 23;
-    pub const TIMES: u8 = 24;
+    use drcc_hdl::host::registers as map;
+    pub const ID: u8 = map::ID as u8;
+    pub const CTRL: u8 = map::CTRL as u8;
+    pub const BTR: u8 = map::BTR as u8;
+    pub const RMB_CFG: u8 = map::RMB_CFG as u8;
+    pub const DEDUP_CFG: u8 = map::DEDUP_CFG as u8;
+    pub const STATUS: u8 = map::STATUS as u8;
+    pub const INT_STATUS: u8 = map::INT_STATUS as u8;
+    pub const INT_ENABLE: u8 = map::INT_ENABLE as u8;
+    pub const CHAN_A_ERR: u8 = map::CHAN_A_ERR as u8;
+    pub const CHAN_B_ERR: u8 = map::CHAN_B_ERR as u8;
+    pub const AUX_A: u8 = map::AUX_A as u8;
+    pub const AUX_B: u8 = map::AUX_B as u8;
+    pub const TX_ID: u8 = map::TX_ID as u8;
+    pub const TX_CTRL: u8 = map::TX_CTRL as u8;
+    pub const TX_DATA0: u8 = map::TX_DATA0 as u8;
+    pub const TX_DATA1: u8 = map::TX_DATA1 as u8;
+    pub const TX_CMD: u8 = map::TX_CMD as u8;
+    pub const RX_ID: u8 = map::RX_ID as u8;
+    pub const RX_CTRL: u8 = map::RX_CTRL as u8;
+    pub const RX_DATA0: u8 = map::RX_DATA0 as u8;
+    pub const RX_DATA1: u8 = map::RX_DATA1 as u8;
+    pub const RX_CMD: u8 = map::RX_CMD as u8;
+    pub const STATS0: u8 = map::STATS0 as u8;
+    pub const STATS1: u8 = map::STATS1 as u8;
+    pub const TIMES: u8 = map::TIMES as u8;
+}
+
+/// `reg.field` placed in a register word (positions from the table).
+fn put(reg: &str, field: &str, value: u32) -> u32 {
+    MAP.field(reg, field).put(value)
+}
+
+/// `reg.field` of a register word.
+fn get(reg: &str, field: &str, word: u32) -> u32 {
+    MAP.field(reg, field).get(word)
 }
 
 /// Transmit policy of redundancy mode (`CTRL.policy`).
@@ -94,36 +109,37 @@ impl Default for HostConfig {
             recovery_bits: 1024,
             stall_limit: 0,
             dedup_window: 1024,
-            int_enable: 0xFF,
+            // every interrupt
+            int_enable: MAP.register("INT_ENABLE").map_or(0, |r| r.defined()),
         }
     }
 }
 
 /// `BTR` value for the given timing in time quanta (tseg1 1..=16, tseg2 1..=8, sjw 1..=4).
 pub fn btr(brp: u8, tseg1: u8, tseg2: u8, sjw: u8, triple: bool, ewl: u8) -> u32 {
-    (brp as u32 & 0x3F)
-        | ((tseg1.saturating_sub(1) as u32 & 0xF) << 6)
-        | ((tseg2.saturating_sub(1) as u32 & 0x7) << 10)
-        | ((sjw.saturating_sub(1) as u32 & 0x3) << 13)
-        | ((triple as u32) << 15)
-        | ((ewl as u32) << 16)
+    put("BTR", "brp", brp as u32)
+        | put("BTR", "tseg1", tseg1.saturating_sub(1) as u32)
+        | put("BTR", "tseg2", tseg2.saturating_sub(1) as u32)
+        | put("BTR", "sjw", sjw.saturating_sub(1) as u32)
+        | put("BTR", "triple", triple as u32)
+        | put("BTR", "ewl", ewl as u32)
 }
 
 impl HostConfig {
     /// `CTRL` value with the given reset-mode bit.
     pub fn ctrl(&self, reset_mode: bool) -> u32 {
         let (policy, k) = match self.policy {
-            Policy::None => (0, 1),
-            Policy::ErrorPassive => (1, 1),
-            Policy::KFailed(k) => (2, k as u32),
+            Policy::None => (SwitchPolicy::None, 1),
+            Policy::ErrorPassive => (SwitchPolicy::ErrorPassive, 1),
+            Policy::KFailed(k) => (SwitchPolicy::KFailed, k as u32),
         };
-        (reset_mode as u32)
-            | ((self.redundancy as u32) << 1)
-            | (policy << 2)
-            | ((self.dual_tx as u32) << 4)
-            | ((k & 0xF) << 8)
-            | ((self.mode_a as u32 & 3) << 12)
-            | ((self.mode_b as u32 & 3) << 14)
+        put("CTRL", "reset_mode", reset_mode as u32)
+            | put("CTRL", "redundancy", self.redundancy as u32)
+            | put("CTRL", "policy", policy.code())
+            | put("CTRL", "dual_tx", self.dual_tx as u32)
+            | put("CTRL", "k", k)
+            | put("CTRL", "mode_a", self.mode_a as u32)
+            | put("CTRL", "mode_b", self.mode_b as u32)
     }
 }
 
@@ -224,9 +240,13 @@ impl HostDriver {
             (reg::BTR, c.btr),
             (
                 reg::RMB_CFG,
-                c.recovery_bits as u32 | ((c.stall_limit as u32) << 16),
+                put("RMB_CFG", "recovery_bits", c.recovery_bits as u32)
+                    | put("RMB_CFG", "stall_limit", c.stall_limit as u32),
             ),
-            (reg::DEDUP_CFG, c.dedup_window as u32 & 0x7FFF),
+            (
+                reg::DEDUP_CFG,
+                put("DEDUP_CFG", "window", c.dedup_window as u32),
+            ),
             (reg::INT_ENABLE, c.int_enable),
             (reg::CTRL, c.ctrl(false)),
         ] {
@@ -368,9 +388,9 @@ impl HostDriver {
             Purpose::TxSpace => {
                 let Some(s) = self.pushing else { return };
                 let count = if s.queue == 0 || self.config.redundancy {
-                    (data >> 16) & 0xF
+                    get("STATUS", "txq_a_count", data)
                 } else {
-                    (data >> 20) & 0xF
+                    get("STATUS", "txq_b_count", data)
                 };
                 if count < 8 {
                     let f = s.frame;
@@ -379,8 +399,11 @@ impl HostDriver {
                     let d0 = u32::from_le_bytes([f.data[0], f.data[1], f.data[2], f.data[3]]);
                     let d1 = u32::from_le_bytes([f.data[4], f.data[5], f.data[6], f.data[7]]);
                     debug_assert_eq!(data_word.to_be_bytes(), f.data);
-                    let id = (f.id & 0x1FFF_FFFF) | ((f.ide as u32) << 29) | ((f.rtr as u32) << 30);
-                    let ctrl = (f.dlc as u32 & 0xF) | ((s.queue as u32) << 8);
+                    let id = put("TX_ID", "id", f.id)
+                        | put("TX_ID", "ide", f.ide as u32)
+                        | put("TX_ID", "rtr", f.rtr as u32);
+                    let ctrl = put("TX_CTRL", "dlc", f.dlc as u32)
+                        | put("TX_CTRL", "queue", s.queue as u32);
                     for (reg, value) in [
                         (reg::TX_ID, id),
                         (reg::TX_CTRL, ctrl),
@@ -397,7 +420,7 @@ impl HostDriver {
                     self.ops.push_back(Op {
                         write: true,
                         reg: reg::TX_CMD,
-                        value: 1,
+                        value: put("TX_CMD", "push", 1),
                         purpose: Purpose::TxPush,
                     });
                 } else {
@@ -420,11 +443,11 @@ impl HostDriver {
                 }
             }
             Purpose::RxId => {
-                if data >> 31 != 0 {
+                if get("RX_ID", "rx_ready", data) != 0 {
                     self.rx_partial.0 = Frame {
-                        id: data & 0x1FFF_FFFF,
-                        ide: data >> 29 & 1 != 0,
-                        rtr: data >> 30 & 1 != 0,
+                        id: get("RX_ID", "id", data),
+                        ide: get("RX_ID", "ide", data) != 0,
+                        rtr: get("RX_ID", "rtr", data) != 0,
                         ..Frame::default()
                     };
                     for (reg, purpose) in [
@@ -442,14 +465,14 @@ impl HostDriver {
                     self.ops.push_back(Op {
                         write: true,
                         reg: reg::RX_CMD,
-                        value: 1,
+                        value: put("RX_CMD", "pop", 1),
                         purpose: Purpose::RxPop,
                     });
                 }
             }
             Purpose::RxCtrl => {
-                self.rx_partial.0.dlc = (data & 0xF) as u8;
-                self.rx_partial.1 = (data >> 8 & 1) as u8;
+                self.rx_partial.0.dlc = get("RX_CTRL", "dlc", data) as u8;
+                self.rx_partial.1 = get("RX_CTRL", "channel", data) as u8;
             }
             Purpose::RxData0 => self.rx_partial.0.data[..4].copy_from_slice(&data.to_le_bytes()),
             Purpose::RxData1 => self.rx_partial.0.data[4..].copy_from_slice(&data.to_le_bytes()),

@@ -3,33 +3,43 @@
 //! times, `INT_ENABLE`, then reset mode cleared) and afterwards performs the register
 //! reads and writes a test asks for, the way a supervisor CPU next to the hub would.
 //!
-//! Register indices and fields are the hub contract's (`hub_contract.md` §8), written
-//! here again on purpose: the host is part of the testbench, not of either design.
+//! Register indices and field positions come from drcc-hdl's hub register table
+//! (the one source of the map, which also generates `rtl-out/hub_regs.h`); the
+//! reference model keeps its own copy, checked by `cosim/tests/register_maps.rs`.
 //! The driver reacts only to the outputs of the previous clock, so two engines that
 //! agree clock by clock get identical stimulus.
 
 use crate::engine::hub::{HubInputs, HubOutputs};
+use drcc_hdl::host::hub_registers::MAP;
 use std::collections::VecDeque;
 
-/// Word indices of the hub registers (contract §8).
+/// Word indices and `CTRL` bits of the hub registers, from the register table of
+/// drcc-hdl (`drcc_hdl::host::hub_registers`, contract §8).
 pub mod hub_reg {
-    pub const ID: u8 = 0;
-    pub const CTRL: u8 = 1;
-    pub const BTR: u8 = 2;
-    pub const GUARD_CFG: u8 = 3;
-    pub const BF_CFG: u8 = 4;
-    pub const RESTORE_CFG: u8 = 5;
-    pub const STATUS: u8 = 6;
-    pub const INT_STATUS: u8 = 7;
-    pub const INT_ENABLE: u8 = 8;
-    pub const STATS: u8 = 9;
+    use drcc_hdl::host::hub_registers::{self as map, REGISTERS};
+    use drcc_hdl::host::map::find;
+    pub const ID: u8 = map::ID as u8;
+    pub const CTRL: u8 = map::CTRL as u8;
+    pub const BTR: u8 = map::BTR as u8;
+    pub const GUARD_CFG: u8 = map::GUARD_CFG as u8;
+    pub const BF_CFG: u8 = map::BF_CFG as u8;
+    pub const RESTORE_CFG: u8 = map::RESTORE_CFG as u8;
+    pub const STATUS: u8 = map::STATUS as u8;
+    pub const INT_STATUS: u8 = map::INT_STATUS as u8;
+    pub const INT_ENABLE: u8 = map::INT_ENABLE as u8;
+    pub const STATS: u8 = map::STATS as u8;
     /// `PORT_p` is at `PORT0 + p`.
-    pub const PORT0: u8 = 16;
+    pub const PORT0: u8 = map::PORT0 as u8;
     /// `CTRL` bits.
-    pub const CTRL_RESET_MODE: u32 = 1;
-    pub const CTRL_FORCE_DECOUPLE: u32 = 1 << 1;
-    pub const CTRL_RECOUPLE: u32 = 1 << 2;
-    pub const CTRL_ACK_INTERDEP: u32 = 1 << 8;
+    pub const CTRL_RESET_MODE: u32 = find(REGISTERS, "CTRL", "reset_mode").mask();
+    pub const CTRL_FORCE_DECOUPLE: u32 = find(REGISTERS, "CTRL", "force_decouple").mask();
+    pub const CTRL_RECOUPLE: u32 = find(REGISTERS, "CTRL", "recouple").mask();
+    pub const CTRL_ACK_INTERDEP: u32 = find(REGISTERS, "CTRL", "ack_interdep").mask();
+}
+
+/// `reg.field` placed in a register word (positions from the table).
+fn put(reg: &str, field: &str, value: u32) -> u32 {
+    MAP.field(reg, field).put(value)
 }
 
 /// What the hub's host writes at start-up.
@@ -58,7 +68,7 @@ impl Default for HubConfig {
     /// The contract's reset values, with guarding switched on.
     fn default() -> Self {
         HubConfig {
-            btr: (4 << 6) | (1 << 10),
+            btr: MAP.register("BTR").map_or(0, |r| r.reset_value()),
             ack_interdep: true,
             sd_run_up: 14,
             sd_run_sub: 16,
@@ -67,7 +77,8 @@ impl Default for HubConfig {
             bf_sub: 64,
             restore_bits: 1408,
             decouple_bits: 4096,
-            int_enable: 0xF,
+            // every interrupt
+            int_enable: MAP.register("INT_ENABLE").map_or(0, |r| r.defined()),
         }
     }
 }
@@ -75,29 +86,26 @@ impl Default for HubConfig {
 impl HubConfig {
     /// `CTRL` value with the given reset-mode bit.
     pub fn ctrl(&self, reset_mode: bool) -> u32 {
-        reset_mode as u32
-            | if self.ack_interdep {
-                hub_reg::CTRL_ACK_INTERDEP
-            } else {
-                0
-            }
+        put("CTRL", "reset_mode", reset_mode as u32)
+            | put("CTRL", "ack_interdep", self.ack_interdep as u32)
     }
 
     /// `GUARD_CFG` value.
     pub fn guard_cfg(&self) -> u32 {
-        (self.sd_run_up as u32 & 0x3F)
-            | ((self.sd_run_sub as u32 & 0x3F) << 8)
-            | ((self.sr_frames as u32 & 0xF) << 16)
+        put("GUARD_CFG", "sd_run_up", self.sd_run_up as u32)
+            | put("GUARD_CFG", "sd_run_sub", self.sd_run_sub as u32)
+            | put("GUARD_CFG", "sr_frames", self.sr_frames as u32)
     }
 
     /// `BF_CFG` value.
     pub fn bf_cfg(&self) -> u32 {
-        self.bf_up as u32 | ((self.bf_sub as u32) << 8)
+        put("BF_CFG", "bf_up", self.bf_up as u32) | put("BF_CFG", "bf_sub", self.bf_sub as u32)
     }
 
     /// `RESTORE_CFG` value.
     pub fn restore_cfg(&self) -> u32 {
-        self.restore_bits as u32 | ((self.decouple_bits as u32) << 16)
+        put("RESTORE_CFG", "restore_bits", self.restore_bits as u32)
+            | put("RESTORE_CFG", "decouple_bits", self.decouple_bits as u32)
     }
 }
 

@@ -1,4 +1,13 @@
-//! Host interface of the DRCC top: the register map (the one source of truth)
-//! and the Wishbone B4 classic register block that decodes it.
+//! Host interface of the tops: the register-map tables (the one source of truth
+//! of the DRCC's and the hub's maps, with the generators of their documents and
+//! C headers), the Wishbone B4 classic slave both register blocks instantiate,
+//! and the DRCC's register block.
+pub mod ctrl_check;
+pub mod ctrl_reg;
+pub mod generate;
+pub mod hub_registers;
+pub mod map;
 pub mod registers;
+pub mod status_words;
+pub mod wb_slave;
 pub mod wishbone;

@@ -1,87 +1,90 @@
 //! The DRCC register map (DRCC contract §3, §8, §9): the one source of truth.
 //!
-//! A plain constant table: every register with its word index, access, fields
-//! (bit ranges, reset values, descriptions). The Wishbone register block
-//! (`super::wishbone`) decodes with the index constants below, `markdown()`
-//! generates `docs/registers.md` and `c_header()` generates
-//! `rtl-out/drcc_regs.h` (both written by `drcc generate`, checked by
-//! `drcc generate --check`). A test beside the register block reads every
-//! register after reset and compares it with [`Register::reset_value`].
+//! A constant table ([`MAP`]): every register with its word index, access and
+//! fields (bit ranges, reset values, descriptions, named codes). The register
+//! block (`super::wishbone`) decodes with the index constants and takes its field
+//! positions from the table; the named codes ([`Mode`], [`SwitchPolicy`],
+//! [`ChannelMode`], ...) are the ones the RTL, the testbench host and the
+//! documents use. `markdown()` generates `docs/registers.md` and `c_header()`
+//! `rtl-out/drcc_regs.h` (written by `drcc generate`, checked by
+//! `drcc generate --check`).
 
-use std::fmt::Write as _;
+use super::map::{cfg, cmd, f, CodeList, RegisterMap};
+pub use super::map::{Access, Field, Register};
+use crate::register_enum;
 
-/// Host access of a register.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Access {
-    /// Read only: a write is refused and sets `INT_STATUS.illegal`.
-    Ro,
-    /// Read and write.
-    Rw,
-    /// Read, write 1 to clear.
-    W1c,
-    /// Write only (a command): reads 0.
-    Wo,
-}
-
-impl Access {
-    /// The abbreviation used in the documentation.
-    pub fn label(self) -> &'static str {
-        match self {
-            Access::Ro => "RO",
-            Access::Rw => "RW",
-            Access::W1c => "R/W1C",
-            Access::Wo => "WO",
-        }
+register_enum! {
+    /// `CTRL.redundancy`: how the two channels are used (DRCC paper section III).
+    pub enum Mode {
+        /// two independent controllers
+        Normal = 0 => "NORMAL",
+        /// one redundant channel pair, the main FSM switches between them
+        Redundancy = 1 => "REDUNDANCY",
     }
 }
 
-/// One field of a register.
-#[derive(Clone, Copy, Debug)]
-pub struct Field {
-    pub name: &'static str,
-    /// Least significant bit.
-    pub lsb: u32,
-    /// Width in bits.
-    pub width: u32,
-    /// Value after `rst`.
-    pub reset: u32,
-    /// Configuration field: writable only in reset mode (contract §9).
-    pub cfg: bool,
-    pub desc: &'static str,
-}
-
-impl Field {
-    /// The field's bits in place.
-    pub const fn mask(&self) -> u32 {
-        (((1u64 << self.width) - 1) << self.lsb) as u32
+register_enum! {
+    /// `CTRL.policy`: when an auxiliary FSM judges its channel failed (DRCC paper
+    /// section III; code 3 is refused, contract §9).
+    pub enum SwitchPolicy {
+        /// never (the main FSM stays on its channel)
+        None = 0 => "NONE",
+        /// when the channel is error passive (the paper's policy)
+        ErrorPassive = 1 => "ERROR_PASSIVE",
+        /// after `k` failed attempts since the last success
+        KFailed = 2 => "K_FAILED",
     }
 }
 
-/// One 32-bit register.
-#[derive(Clone, Copy, Debug)]
-pub struct Register {
-    pub name: &'static str,
-    /// Word index (`wb_adr_i`); byte offset = 4 x index.
-    pub index: u32,
-    pub access: Access,
-    pub desc: &'static str,
-    pub fields: &'static [Field],
+/// `CTRL.policy` code that is refused (contract §9).
+pub const POLICY_ILLEGAL: u32 = 3;
+
+register_enum! {
+    /// `CTRL.mode_a`/`mode_b`: operating mode of one channel (contract §C.7).
+    pub enum ChannelMode {
+        /// ISO 11898-1 operation
+        Normal = 0 => "NORMAL",
+        /// receive only, never drives dominant (bus monitoring, ISO 11898-1 10.14)
+        ListenOnly = 1 => "LISTEN_ONLY",
+        /// a frame is successful without an acknowledgement
+        SelfTest = 2 => "SELF_TEST",
+        /// the channel hears its own transmit output only
+        Loopback = 3 => "LOOPBACK",
+    }
 }
 
-impl Register {
-    /// Byte offset.
-    pub const fn offset(&self) -> u32 {
-        self.index * 4
+register_enum! {
+    /// `CHAN_x_ERR.err_state`: fault confinement state (ISO 11898-1 12.1.4).
+    pub enum ErrState {
+        ErrorActive = 0 => "ERROR_ACTIVE",
+        ErrorPassive = 1 => "ERROR_PASSIVE",
+        BusOff = 2 => "BUS_OFF",
     }
+}
 
-    /// Value read right after `rst`.
-    pub fn reset_value(&self) -> u32 {
-        if self.access == Access::Wo {
-            return 0;
-        }
-        self.fields
-            .iter()
-            .fold(0, |acc, f| acc | ((f.reset << f.lsb) & f.mask()))
+register_enum! {
+    /// Auxiliary FSM state (`AUX_x.state`, `STATUS.aux_x_state`; contract §5).
+    pub enum AuxState {
+        Valid = 0 => "VALID",
+        Failed = 1 => "FAILED",
+        Restart = 2 => "RESTART",
+        Probation = 3 => "PROBATION",
+    }
+}
+
+register_enum! {
+    /// Main FSM state (`STATUS.state`; DRCC paper Table 1).
+    pub enum MainState {
+        Idle1 = 0 => "IDLE1",
+        Wait1 = 1 => "WAIT1",
+        Ch1 = 2 => "CH1",
+        Abort1 = 3 => "ABORT1",
+        Wait2 = 4 => "WAIT2",
+        Idle2 = 5 => "IDLE2",
+        Wait3 = 6 => "WAIT3",
+        Ch2 = 7 => "CH2",
+        Abort2 = 8 => "ABORT2",
+        Wait4 = 9 => "WAIT4",
     }
 }
 
@@ -114,28 +117,6 @@ pub const TIMES: u32 = 24;
 
 /// The constant read from `ID`: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
-
-const fn f(name: &'static str, lsb: u32, width: u32, reset: u32, desc: &'static str) -> Field {
-    Field {
-        name,
-        lsb,
-        width,
-        reset,
-        cfg: false,
-        desc,
-    }
-}
-
-const fn cfg(name: &'static str, lsb: u32, width: u32, reset: u32, desc: &'static str) -> Field {
-    Field {
-        name,
-        lsb,
-        width,
-        reset,
-        cfg: true,
-        desc,
-    }
-}
 
 const INT_FIELDS: &[Field] = &[
     f("rx", 0, 1, 0, "a frame was written to the RX FIFO"),
@@ -187,24 +168,12 @@ const INT_FIELDS: &[Field] = &[
 const CHAN_ERR_FIELDS: &[Field] = &[
     f("tec", 0, 9, 0, "transmit error counter"),
     f("rec", 16, 8, 0, "receive error counter"),
-    f(
-        "err_state",
-        24,
-        2,
-        0,
-        "0 error active, 1 error passive, 2 bus-off",
-    ),
+    f("err_state", 24, 2, 0, "fault confinement state").coded(ErrState::ENCODING),
     f("err_warning", 26, 1, 0, "TEC or REC >= error warning limit"),
 ];
 
 const AUX_FIELDS: &[Field] = &[
-    f(
-        "state",
-        0,
-        2,
-        0,
-        "aux FSM state: 0 valid, 1 failed, 2 restart, 3 probation",
-    ),
+    f("state", 0, 2, 0, "aux FSM state").coded(AuxState::ENCODING),
     f(
         "cause_passive",
         2,
@@ -272,12 +241,12 @@ pub const REGISTERS: &[Register] = &[
         desc: "Control; cfg fields are writable only in reset mode",
         fields: &[
             f("reset_mode", 0, 1, 1, "1 = reset mode: channels held in reset, queues and FIFO emptied"),
-            cfg("redundancy", 1, 1, 0, "0 = normal mode (two independent controllers), 1 = redundancy mode (refused with a listen-only channel)"),
-            cfg("policy", 2, 2, 1, "channel failure policy: 0 none, 1 error-passive, 2 k-failed (3 illegal)"),
+            cfg("redundancy", 1, 1, 0, "operating mode (redundancy is refused with a listen-only channel)").coded(Mode::ENCODING),
+            cfg("policy", 2, 2, 1, "channel failure policy (3 is refused)").coded(SwitchPolicy::ENCODING),
             cfg("dual_tx", 4, 1, 0, "redundancy mode: send every message on A, then its copy on B"),
             cfg("k", 8, 4, 1, "failed attempts for the k-failed policy (1..15; 0 is stored as 1)"),
-            cfg("mode_a", 12, 2, 0, "channel A mode: 0 normal, 1 listen-only, 2 self-test, 3 loop-back"),
-            cfg("mode_b", 14, 2, 0, "channel B mode"),
+            cfg("mode_a", 12, 2, 0, "channel A mode").coded(ChannelMode::ENCODING),
+            cfg("mode_b", 14, 2, 0, "channel B mode").coded(ChannelMode::ENCODING),
             cfg("single_shot", 16, 1, 0, "no automatic retransmission (normal mode only)"),
         ],
     },
@@ -318,12 +287,12 @@ pub const REGISTERS: &[Register] = &[
         access: Access::Ro,
         desc: "Status",
         fields: &[
-            f("state", 0, 4, 0, "main FSM state (Table 1): idle1 0, wait1 1, ch1 2, abort1 3, wait2 4, idle2 5, wait3 6, ch2 7, abort2 8, wait4 9"),
+            f("state", 0, 4, 0, "main FSM state (Table 1)").coded(MainState::ENCODING),
             f("tx_channel", 4, 1, 0, "channel in use: 0 A, 1 B"),
-            f("aux_a_state", 5, 2, 0, "aux FSM A state"),
-            f("aux_b_state", 7, 2, 0, "aux FSM B state"),
-            f("err_state_a", 9, 2, 0, "channel A error state"),
-            f("err_state_b", 11, 2, 0, "channel B error state"),
+            f("aux_a_state", 5, 2, 0, "aux FSM A state").coded(AuxState::ENCODING),
+            f("aux_b_state", 7, 2, 0, "aux FSM B state").coded(AuxState::ENCODING),
+            f("err_state_a", 9, 2, 0, "channel A error state").coded(ErrState::ENCODING),
+            f("err_state_b", 11, 2, 0, "channel B error state").coded(ErrState::ENCODING),
             f("reset_mode", 13, 1, 1, "CTRL.reset_mode"),
             f("tx_going_on", 14, 1, 0, "a transmission is in progress (main FSM not idle)"),
             f("txq_a_count", 16, 4, 0, "TX queue A count (0..8)"),
@@ -413,7 +382,7 @@ pub const REGISTERS: &[Register] = &[
         index: TX_CMD,
         access: Access::Wo,
         desc: "Transmit command",
-        fields: &[f("push", 0, 1, 0, "append the staged frame to a TX queue (refused in reset mode or when full)")],
+        fields: &[cmd("push", 0, "append the staged frame to a TX queue (refused in reset mode or when full)")],
     },
     Register {
         name: "RX_ID",
@@ -456,7 +425,7 @@ pub const REGISTERS: &[Register] = &[
         index: RX_CMD,
         access: Access::Wo,
         desc: "Receive command",
-        fields: &[f("pop", 0, 1, 0, "remove the head of the RX FIFO (refused when empty)")],
+        fields: &[cmd("pop", 0, "remove the head of the RX FIFO (refused when empty)")],
     },
     Register {
         name: "STATS0",
@@ -490,133 +459,53 @@ pub const REGISTERS: &[Register] = &[
     },
 ];
 
-/// Main FSM state encodings (paper Table 1), for the header.
-pub const MAIN_STATES: &[(&str, u32)] = &[
-    ("IDLE1", 0),
-    ("WAIT1", 1),
-    ("CH1", 2),
-    ("ABORT1", 3),
-    ("WAIT2", 4),
-    ("IDLE2", 5),
-    ("WAIT3", 6),
-    ("CH2", 7),
-    ("ABORT2", 8),
-    ("WAIT4", 9),
-];
+/// Main FSM state encodings (paper Table 1), for the header (`DRCC_STATE_*`).
+pub const MAIN_STATES: &[super::map::Encoding] = MainState::ENCODING;
 
-/// Auxiliary FSM state encodings, for the header.
-pub const AUX_STATES: &[(&str, u32)] = &[
-    ("VALID", 0),
-    ("FAILED", 1),
-    ("RESTART", 2),
-    ("PROBATION", 3),
-];
+/// Auxiliary FSM state encodings, for the header (`DRCC_AUX_*`).
+pub const AUX_STATES: &[super::map::Encoding] = AuxState::ENCODING;
+
+/// The DRCC map with its document and header text.
+pub static MAP: RegisterMap = RegisterMap {
+    title: "DRCC register map",
+    prefix: "DRCC",
+    header: "drcc_regs.h",
+    source: "hdl/src/host/registers.rs",
+    intro: "Behaviour: `cosim/src/model/drcc_contract.md` §2, §3, §8, §9.\n\n\
+        Wishbone B4 classic slave, 32-bit words, `wb_adr_i` is the word index (byte offset = \
+        4 x index). Every access takes two clocks (request, ack). Unmapped addresses read 0; a \
+        write to a read-only or unmapped address, a cfg field written outside reset mode, a \
+        CTRL write with policy 3 or with redundancy and a listen-only channel (refused as a \
+        whole), a refused push or pop sets `INT_STATUS.illegal`.",
+    registers: REGISTERS,
+    lists: &[
+        CodeList {
+            name: "STATE",
+            desc: "Main FSM states (`STATUS.state`, DRCC paper Table 1)",
+            codes: MAIN_STATES,
+        },
+        CodeList {
+            name: "AUX",
+            desc: "Auxiliary FSM states (`STATUS.aux_x_state`, `AUX_x.state`)",
+            codes: AUX_STATES,
+        },
+    ],
+    defines: &[("ID_VALUE", ID_VALUE)],
+};
 
 /// The register named `name`.
 pub fn register(name: &str) -> Option<&'static Register> {
-    REGISTERS.iter().find(|r| r.name == name)
-}
-
-fn bits(f: &Field) -> String {
-    if f.width == 1 {
-        format!("[{}]", f.lsb)
-    } else {
-        format!("[{}:{}]", f.lsb + f.width - 1, f.lsb)
-    }
+    MAP.register(name)
 }
 
 /// `docs/registers.md`.
 pub fn markdown() -> String {
-    let mut s = String::new();
-    s.push_str("# DRCC register map\n\n");
-    s.push_str(
-        "Generated by `drcc generate` from `hdl/src/host/registers.rs` (the one source of \
-         truth); do not edit. Behaviour: `cosim/src/model/drcc_contract.md` §2, §3, §8, §9.\n\n",
-    );
-    s.push_str(
-        "Wishbone B4 classic slave, 32-bit words, `wb_adr_i` is the word index (byte offset = \
-         4 x index). Every access takes two clocks (request, ack). Unmapped addresses read 0; a \
-         write to a read-only or unmapped address, a cfg field written outside reset mode, a \
-         CTRL write with policy 3 or with redundancy and a listen-only channel (refused as a \
-         whole), a refused push or pop sets `INT_STATUS.illegal`.\n\n",
-    );
-    s.push_str(
-        "| index | offset | name | access | reset | description |\n|---|---|---|---|---|---|\n",
-    );
-    for r in REGISTERS {
-        let _ = writeln!(
-            s,
-            "| {} | 0x{:02X} | [`{}`](#{}) | {} | 0x{:08X} | {} |",
-            r.index,
-            r.offset(),
-            r.name,
-            r.name.to_lowercase(),
-            r.access.label(),
-            r.reset_value(),
-            r.desc
-        );
-    }
-    for r in REGISTERS {
-        let _ = write!(
-            s,
-            "\n## {}\n\nIndex {}, offset 0x{:02X}, {}, reset 0x{:08X}. {}.\n\n",
-            r.name,
-            r.index,
-            r.offset(),
-            r.access.label(),
-            r.reset_value(),
-            r.desc
-        );
-        s.push_str("| bits | field | reset | description |\n|---|---|---|---|\n");
-        for fl in r.fields {
-            let _ = writeln!(
-                s,
-                "| {} | `{}` | {} | {}{} |",
-                bits(fl),
-                fl.name,
-                if fl.width > 8 {
-                    format!("0x{:X}", fl.reset)
-                } else {
-                    fl.reset.to_string()
-                },
-                if fl.cfg { "(cfg) " } else { "" },
-                fl.desc
-            );
-        }
-    }
-    s
+    super::generate::markdown(&MAP)
 }
 
 /// `rtl-out/drcc_regs.h`.
 pub fn c_header() -> String {
-    let mut s = String::new();
-    s.push_str(
-        "/* drcc_regs.h: DRCC register map. Generated by `drcc generate` from\n \
-         * hdl/src/host/registers.rs; do not edit. Offsets are byte offsets. */\n\
-         #ifndef DRCC_REGS_H\n#define DRCC_REGS_H\n\n",
-    );
-    let _ = writeln!(s, "#define DRCC_ID_VALUE 0x{ID_VALUE:08X}u\n");
-    for r in REGISTERS {
-        let reg = r.name;
-        let _ = writeln!(s, "/* {reg}: {} ({}) */", r.desc, r.access.label());
-        let _ = writeln!(s, "#define DRCC_{reg}_OFFSET 0x{:02X}u", r.offset());
-        let _ = writeln!(s, "#define DRCC_{reg}_INDEX {}u", r.index);
-        let _ = writeln!(s, "#define DRCC_{reg}_RESET 0x{:08X}u", r.reset_value());
-        for fl in r.fields {
-            let fname = fl.name.to_uppercase();
-            let _ = writeln!(s, "#define DRCC_{reg}_{fname}_SHIFT {}u", fl.lsb);
-            let _ = writeln!(s, "#define DRCC_{reg}_{fname}_MASK 0x{:08X}u", fl.mask());
-        }
-        s.push('\n');
-    }
-    for (n, v) in MAIN_STATES {
-        let _ = writeln!(s, "#define DRCC_STATE_{n} {v}u");
-    }
-    for (n, v) in AUX_STATES {
-        let _ = writeln!(s, "#define DRCC_AUX_{n} {v}u");
-    }
-    s.push_str("\n#endif /* DRCC_REGS_H */\n");
-    s
+    super::generate::c_header(&MAP)
 }
 
 #[cfg(test)]
@@ -625,20 +514,29 @@ mod tests {
 
     #[test]
     fn table_is_consistent() {
+        MAP.check().unwrap();
         for (i, r) in REGISTERS.iter().enumerate() {
             assert_eq!(r.index as usize, i, "{} is out of order", r.name);
-            let mut used = 0u32;
-            for fl in r.fields {
-                assert!(fl.lsb + fl.width <= 32, "{}.{}", r.name, fl.name);
-                assert_eq!(used & fl.mask(), 0, "{}.{} overlaps", r.name, fl.name);
-                assert!(fl.width == 32 || fl.reset < (1 << fl.width));
-                used |= fl.mask();
-            }
         }
+        // reset values from the contract (§3)
         assert_eq!(register("CTRL").unwrap().reset_value(), 0x0000_0105);
         assert_eq!(register("BTR").unwrap().reset_value(), 0x0060_0500);
         let h = c_header();
         assert!(h.contains("#define DRCC_BTR_EWL_MASK 0x00FF0000u"));
+        assert!(h.contains("#define DRCC_CTRL_POLICY_ERROR_PASSIVE 1u"));
+        assert!(h.contains("#define DRCC_STATE_WAIT4 9u"));
         assert!(markdown().contains("| 24 | 0x60 | [`TIMES`]"));
+    }
+
+    #[test]
+    fn codes_are_the_contracts() {
+        // contract §3: policy 0 none, 1 error-passive, 2 k-failed; §C.7 modes
+        assert_eq!(SwitchPolicy::ErrorPassive.code(), 1);
+        assert_eq!(SwitchPolicy::KFailed.code(), 2);
+        assert_eq!(SwitchPolicy::from_code(3), None, "policy 3 is illegal");
+        assert_eq!(ChannelMode::ListenOnly.code(), 1);
+        assert_eq!(ChannelMode::Loopback.code(), 3);
+        assert_eq!(Mode::Redundancy.code(), 1);
+        assert!(markdown().contains("1 `ERROR_PASSIVE`"));
     }
 }

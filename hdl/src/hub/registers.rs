@@ -2,9 +2,10 @@
 //! Wishbone conventions of the DRCC contract §D.1/§D.2) and the decoupling state
 //! of §7 (ReCANcentrate paper section 5: definitive decoupling).
 //!
-//! - A transaction is taken at an edge where `cyc & stb & !ack`: `ack <= 1` and,
-//!   for a read, `dat_o <=` the register value before the edge; a write takes
-//!   effect at that edge. Otherwise `ack <= 0`, `dat_o <= 0`. Unmapped reads are 0.
+//! - The bus handshake and `INT_STATUS`/`INT_ENABLE`/`irq` are the shared
+//!   Wishbone slave (`crate::host::wb_slave`); word indices, field positions and
+//!   reset values come from the table (`crate::host::hub_registers`). Unmapped
+//!   reads are 0.
 //! - cfg fields (`CTRL.ack_interdep`, `BTR`, `GUARD_CFG`, `BF_CFG`, `RESTORE_CFG`)
 //!   are writable only in reset mode, with the clamps of §8; refused writes,
 //!   writes to RO/unmapped registers, a CTRL write whose `ack_interdep` differs
@@ -16,92 +17,108 @@
 //!   guard events and drives the command: no combinational cycle for Verilator).
 //! - §7: `no_twin` counts SAMPLE edges without an enabled sublink; it decouples
 //!   after `decouple_bits` of them. A command wins over that at the same edge.
-//! - `INT_STATUS` is W1C, an event at the same edge wins; `irq <=
-//!   |(INT_STATUS & INT_ENABLE)`.
 //! - Reset mode (`reset_mode` before the edge) holds `no_twin` and `decoupled` at
 //!   0; `INT_STATUS`/`INT_ENABLE` are kept.
 //!
 //! N node ports, M interlinks, P = N + M ports; the `PORT_p` word for the addressed
 //! port is selected by the top (`port_rd`).
 
+use crate::host::hub_registers::{self as map, BF_MIN, MAP, SD_MIN};
+use crate::host::map::{lsb, placed};
+use crate::host::wb_slave::WbSlave;
 use rust_hdl::prelude::*;
 
-/// Word indices of the hub register map (contract §8).
-pub const ID: u32 = 0;
-pub const CTRL: u32 = 1;
-pub const BTR: u32 = 2;
-pub const GUARD_CFG: u32 = 3;
-pub const BF_CFG: u32 = 4;
-pub const RESTORE_CFG: u32 = 5;
-pub const STATUS: u32 = 6;
-pub const INT_STATUS: u32 = 7;
-pub const INT_ENABLE: u32 = 8;
-pub const STATS: u32 = 9;
-/// `PORT_p` is at word index `PORT0 + p`.
-pub const PORT0: u32 = 16;
-/// Reset values (contract §8).
-pub const BTR_RESET: u32 = (4 << 6) | (1 << 10);
-pub const GUARD_CFG_RESET: u32 = 14 | (16 << 8) | (8 << 16);
-pub const BF_CFG_RESET: u32 = 32 | (64 << 8);
-pub const RESTORE_CFG_RESET: u32 = 1408 | (4096 << 16);
-
-/// The ID register value of a hub with N node ports and M interlinks.
-pub fn id_value(n: usize, m: usize) -> u32 {
-    0x4855_0000 | ((n as u32) << 8) | m as u32
-}
+/// The word indices, for the top's decode (the table is the one source).
+pub use crate::host::hub_registers::{CTRL, PORT0};
 
 fn adr(index: u32) -> Constant<Bits<6>> {
     Constant::new((index as u64).into())
 }
 
+/// Reset value of `reg.field` as an RTL constant.
+fn reset<const B: usize>(reg: &str, field: &str) -> Constant<Bits<B>> {
+    Constant::new((MAP.field(reg, field).reset as u64).into())
+}
+
 /// The hub's Wishbone register block.
 #[derive(LogicBlock)]
 pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
-    // clock and reset
+    // ---- clock and reset ----
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset: every register to its table reset value.
     pub rst: Signal<In, Bit>,
-    // Wishbone B4 classic slave
+    // ---- Wishbone B4 classic slave ----
+    /// Cycle in progress.
     pub wb_cyc_i: Signal<In, Bit>,
+    /// Strobe.
     pub wb_stb_i: Signal<In, Bit>,
+    /// Write enable.
     pub wb_we_i: Signal<In, Bit>,
+    /// Word index.
     pub wb_adr_i: Signal<In, Bits<6>>,
+    /// Write data.
     pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Read data (registered, with the ack).
     pub wb_dat_o: Signal<Out, Bits<32>>,
+    /// Acknowledge (registered).
     pub wb_ack_o: Signal<Out, Bit>,
+    /// Interrupt request (registered).
     pub irq: Signal<Out, Bit>,
-    // status inputs
+    // ---- status in ----
+    /// SAMPLE edge of the bit timing (§7 counts at these).
     pub sample: Signal<In, Bit>,
+    /// Some sublink port is enabled.
     pub any_sub_en: Signal<In, Bit>,
+    /// Frame tracker state (`STATUS.trk`).
     pub trk: Signal<In, Bits<2>>,
+    /// The tracker is in the ACK slot or delimiter.
     pub ack_window: Signal<In, Bit>,
+    /// Enabled ports, bit p = port p.
     pub port_en: Signal<In, Bits<P>>,
+    /// Frames tracked to their ACK slot.
     pub frames: Signal<In, Bits<16>>,
+    /// Tracker errors.
     pub errors: Signal<In, Bits<16>>,
     /// PORT_p word of the addressed port (0 when the address is no port).
     pub port_rd: Signal<In, Bits<32>>,
-    // events
+    // ---- events in ----
+    /// A port was isolated.
     pub ev_iso: Signal<In, Bit>,
+    /// A port was restored.
     pub ev_rest: Signal<In, Bit>,
-    // configuration and state outputs
+    // ---- configuration and state out ----
+    /// `CTRL.reset_mode`.
     pub reset_mode: Signal<Out, Bit>,
     /// `reset_mode` one edge earlier (1 after `rst`).
     pub reset_mode_d: Signal<Out, Bit>,
+    /// `CTRL.ack_interdep`.
     pub ack_interdep: Signal<Out, Bit>,
+    /// The hub is decoupled (§7).
     pub decoupled: Signal<Out, Bit>,
+    /// `BTR.brp`.
     pub brp: Signal<Out, Bits<6>>,
+    /// `BTR.tseg1`.
     pub tseg1: Signal<Out, Bits<4>>,
+    /// `BTR.tseg2`.
     pub tseg2: Signal<Out, Bits<3>>,
+    /// `BTR.sjw`.
     pub sjw: Signal<Out, Bits<2>>,
+    /// `GUARD_CFG.sd_run_up`.
     pub sd_run_up: Signal<Out, Bits<6>>,
+    /// `GUARD_CFG.sd_run_sub`.
     pub sd_run_sub: Signal<Out, Bits<6>>,
+    /// `GUARD_CFG.sr_frames`.
     pub sr_frames: Signal<Out, Bits<4>>,
+    /// `BF_CFG.bf_up`.
     pub bf_up: Signal<Out, Bits<8>>,
+    /// `BF_CFG.bf_sub`.
     pub bf_sub: Signal<Out, Bits<8>>,
+    /// `RESTORE_CFG.restore_bits`.
     pub restore_bits: Signal<Out, Bits<16>>,
-    // registers
-    ack_q: DFF<Bit>,
-    dat_q: DFF<Bits<32>>,
-    irq_q: DFF<Bit>,
+    // ---- blocks ----
+    bus: WbSlave<4>,
+    // ---- registers ----
     reset_mode_q: DFF<Bit>,
     reset_mode_dq: DFF<Bit>,
     ack_interdep_q: DFF<Bit>,
@@ -113,12 +130,9 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     bf_sub_q: DFF<Bits<8>>,
     restore_q: DFF<Bits<16>>,
     decouple_q: DFF<Bits<16>>,
-    int_status: DFF<Bits<4>>,
-    int_enable: DFF<Bits<4>>,
     decoupled_q: DFF<Bit>,
     no_twin: DFF<Bits<16>>,
-    // decode
-    taken: Signal<Local, Bit>,
+    // ---- decode ----
     wr: Signal<Local, Bit>,
     wdat: Signal<Local, Bits<32>>,
     rdata: Signal<Local, Bits<32>>,
@@ -127,8 +141,7 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     w1c: Signal<Local, Bits<4>>,
     dec_evt: Signal<Local, Bit>,
     no_twin_new: Signal<Local, Bits<16>>,
-    events: Signal<Local, Bits<4>>,
-    // register indices
+    // ---- word indices (from the table) ----
     a_id: Constant<Bits<6>>,
     a_ctrl: Constant<Bits<6>>,
     a_btr: Constant<Bits<6>>,
@@ -141,7 +154,34 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     a_stats: Constant<Bits<6>>,
     a_port0: Constant<Bits<6>>,
     a_port_end: Constant<Bits<6>>,
-    // constants
+    // ---- field positions (from the table; BTR's index the 15-bit register) ----
+    c_reset_mode: Constant<Bits<5>>,
+    c_force: Constant<Bits<5>>,
+    c_recouple: Constant<Bits<5>>,
+    c_ack_interdep: Constant<Bits<5>>,
+    b_brp: Constant<Bits<4>>,
+    b_tseg1: Constant<Bits<4>>,
+    b_tseg2: Constant<Bits<4>>,
+    b_sjw: Constant<Bits<4>>,
+    g_sd_up: Constant<Bits<5>>,
+    g_sd_sub: Constant<Bits<5>>,
+    g_sr: Constant<Bits<5>>,
+    f_bf_up: Constant<Bits<5>>,
+    f_bf_sub: Constant<Bits<5>>,
+    r_restore: Constant<Bits<5>>,
+    r_decouple: Constant<Bits<5>>,
+    s_reset_mode: Constant<Bits<5>>,
+    s_decoupled: Constant<Bits<5>>,
+    s_ack_window: Constant<Bits<5>>,
+    s_trk: Constant<Bits<5>>,
+    s_enabled: Constant<Bits<5>>,
+    i_isolation: Constant<Bits<5>>,
+    i_restoration: Constant<Bits<5>>,
+    i_decoupled: Constant<Bits<5>>,
+    i_illegal: Constant<Bits<5>>,
+    t_frames: Constant<Bits<5>>,
+    t_errors: Constant<Bits<5>>,
+    // ---- reset values and clamps ----
     id_val: Constant<Bits<32>>,
     btr_reset: Constant<Bits<15>>,
     sd_up_reset: Constant<Bits<6>>,
@@ -165,6 +205,25 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
         assert!((2..=8).contains(&N), "hub: N node ports must be 2..=8");
         assert!((1..=4).contains(&M), "hub: M interlinks must be 1..=4");
         assert_eq!(P, N + M, "hub: P must be N + M");
+        // fixed by structure: the ID word, BTR stored whole in 15 bits, the
+        // recouple command decoded by the top (`super::hub`) from CTRL[2:0]
+        placed(&MAP, "ID", "m", 0, 8);
+        placed(&MAP, "ID", "n", 8, 8);
+        placed(&MAP, "CTRL", "reset_mode", 0, 1);
+        placed(&MAP, "CTRL", "force_decouple", 1, 1);
+        placed(&MAP, "CTRL", "recouple", 2, 1);
+        let btr = map::register("BTR").unwrap();
+        assert!(
+            btr.defined() >> 15 == 0,
+            "register map HUB: BTR has fields above bit 14"
+        );
+        let ctrl = map::register("CTRL").unwrap();
+        assert_eq!(
+            ctrl.field("reset_mode").unwrap().reset,
+            1,
+            "CTRL resets into reset mode"
+        );
+        assert_eq!(ctrl.field("ack_interdep").unwrap().reset, 1);
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -200,9 +259,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             bf_up: Default::default(),
             bf_sub: Default::default(),
             restore_bits: Default::default(),
-            ack_q: Default::default(),
-            dat_q: Default::default(),
-            irq_q: Default::default(),
+            bus: Default::default(),
             reset_mode_q: Default::default(),
             reset_mode_dq: Default::default(),
             ack_interdep_q: Default::default(),
@@ -214,11 +271,8 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             bf_sub_q: Default::default(),
             restore_q: Default::default(),
             decouple_q: Default::default(),
-            int_status: Default::default(),
-            int_enable: Default::default(),
             decoupled_q: Default::default(),
             no_twin: Default::default(),
-            taken: Default::default(),
             wr: Default::default(),
             wdat: Default::default(),
             rdata: Default::default(),
@@ -227,30 +281,55 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             w1c: Default::default(),
             dec_evt: Default::default(),
             no_twin_new: Default::default(),
-            events: Default::default(),
-            a_id: adr(ID),
-            a_ctrl: adr(CTRL),
-            a_btr: adr(BTR),
-            a_guard: adr(GUARD_CFG),
-            a_bf: adr(BF_CFG),
-            a_restore: adr(RESTORE_CFG),
-            a_status: adr(STATUS),
-            a_int_status: adr(INT_STATUS),
-            a_int_enable: adr(INT_ENABLE),
-            a_stats: adr(STATS),
-            a_port0: adr(PORT0),
-            a_port_end: adr(PORT0 + P as u32),
-            id_val: Constant::new((id_value(N, M) as u64).into()),
-            btr_reset: Constant::new((BTR_RESET as u64).into()),
-            sd_up_reset: Constant::new(14.into()),
-            sd_sub_reset: Constant::new(16.into()),
-            sd_min: Constant::new(14.into()),
-            sr_reset: Constant::new(8.into()),
-            bf_up_reset: Constant::new(32.into()),
-            bf_sub_reset: Constant::new(64.into()),
-            bf_min: Constant::new(8.into()),
-            restore_reset: Constant::new(1408.into()),
-            decouple_reset: Constant::new(4096.into()),
+            a_id: adr(map::ID),
+            a_ctrl: adr(map::CTRL),
+            a_btr: adr(map::BTR),
+            a_guard: adr(map::GUARD_CFG),
+            a_bf: adr(map::BF_CFG),
+            a_restore: adr(map::RESTORE_CFG),
+            a_status: adr(map::STATUS),
+            a_int_status: adr(map::INT_STATUS),
+            a_int_enable: adr(map::INT_ENABLE),
+            a_stats: adr(map::STATS),
+            a_port0: adr(map::PORT0),
+            a_port_end: adr(map::PORT0 + P as u32),
+            c_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
+            c_force: lsb(&MAP, "CTRL", "force_decouple", 1),
+            c_recouple: lsb(&MAP, "CTRL", "recouple", 1),
+            c_ack_interdep: lsb(&MAP, "CTRL", "ack_interdep", 1),
+            b_brp: lsb(&MAP, "BTR", "brp", 6),
+            b_tseg1: lsb(&MAP, "BTR", "tseg1", 4),
+            b_tseg2: lsb(&MAP, "BTR", "tseg2", 3),
+            b_sjw: lsb(&MAP, "BTR", "sjw", 2),
+            g_sd_up: lsb(&MAP, "GUARD_CFG", "sd_run_up", 6),
+            g_sd_sub: lsb(&MAP, "GUARD_CFG", "sd_run_sub", 6),
+            g_sr: lsb(&MAP, "GUARD_CFG", "sr_frames", 4),
+            f_bf_up: lsb(&MAP, "BF_CFG", "bf_up", 8),
+            f_bf_sub: lsb(&MAP, "BF_CFG", "bf_sub", 8),
+            r_restore: lsb(&MAP, "RESTORE_CFG", "restore_bits", 16),
+            r_decouple: lsb(&MAP, "RESTORE_CFG", "decouple_bits", 16),
+            s_reset_mode: lsb(&MAP, "STATUS", "reset_mode", 1),
+            s_decoupled: lsb(&MAP, "STATUS", "decoupled", 1),
+            s_ack_window: lsb(&MAP, "STATUS", "ack_window", 1),
+            s_trk: lsb(&MAP, "STATUS", "trk", 2),
+            s_enabled: lsb(&MAP, "STATUS", "enabled", 16),
+            i_isolation: lsb(&MAP, "INT_STATUS", "isolation", 1),
+            i_restoration: lsb(&MAP, "INT_STATUS", "restoration", 1),
+            i_decoupled: lsb(&MAP, "INT_STATUS", "decoupled", 1),
+            i_illegal: lsb(&MAP, "INT_STATUS", "illegal", 1),
+            t_frames: lsb(&MAP, "STATS", "frames", 16),
+            t_errors: lsb(&MAP, "STATS", "errors", 16),
+            id_val: Constant::new((map::id_value(N as u32, M as u32) as u64).into()),
+            btr_reset: Constant::new((btr.reset_value() as u64).into()),
+            sd_up_reset: reset("GUARD_CFG", "sd_run_up"),
+            sd_sub_reset: reset("GUARD_CFG", "sd_run_sub"),
+            sd_min: Constant::new((SD_MIN as u64).into()),
+            sr_reset: reset("GUARD_CFG", "sr_frames"),
+            bf_up_reset: reset("BF_CFG", "bf_up"),
+            bf_sub_reset: reset("BF_CFG", "bf_sub"),
+            bf_min: Constant::new((BF_MIN as u64).into()),
+            restore_reset: reset("RESTORE_CFG", "restore_bits"),
+            decouple_reset: reset("RESTORE_CFG", "decouple_bits"),
             zero4: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             one16: Constant::new(1.into()),
@@ -266,9 +345,6 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         dff_setup!(
             self,
             clk,
-            ack_q,
-            dat_q,
-            irq_q,
             reset_mode_q,
             reset_mode_dq,
             ack_interdep_q,
@@ -280,13 +356,16 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
             bf_sub_q,
             restore_q,
             decouple_q,
-            int_status,
-            int_enable,
             decoupled_q,
             no_twin
         );
-        self.taken.next = self.wb_cyc_i.val() & self.wb_stb_i.val() & !self.ack_q.q.val();
-        self.wr.next = self.taken.val() & self.wb_we_i.val();
+        // ---- Wishbone slave ----
+        self.bus.clk.next = self.clk.val();
+        self.bus.rst.next = self.rst.val();
+        self.bus.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.bus.wb_stb_i.next = self.wb_stb_i.val();
+        self.bus.wb_we_i.next = self.wb_we_i.val();
+        self.wr.next = self.bus.wr.val();
         self.wdat.next = self.wb_dat_i.val();
         self.is_port.next = (self.wb_adr_i.val() >= self.a_port0.val())
             & (self.wb_adr_i.val() < self.a_port_end.val());
@@ -296,43 +375,41 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         if self.wb_adr_i.val() == self.a_id.val() {
             self.rdata.next = self.id_val.val();
         } else if self.wb_adr_i.val() == self.a_ctrl.val() {
-            self.rdata.next = bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
-                | (bit_cast::<32, 1>(self.ack_interdep_q.q.val().into()) << 8);
+            // the commands read 0
+            self.rdata.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
+                << self.c_reset_mode.val())
+                | (bit_cast::<32, 1>(self.ack_interdep_q.q.val().into())
+                    << self.c_ack_interdep.val());
         } else if self.wb_adr_i.val() == self.a_btr.val() {
             self.rdata.next = bit_cast::<32, 15>(self.btr_q.q.val());
         } else if self.wb_adr_i.val() == self.a_guard.val() {
-            self.rdata.next = bit_cast::<32, 6>(self.sd_up_q.q.val())
-                | (bit_cast::<32, 6>(self.sd_sub_q.q.val()) << 8)
-                | (bit_cast::<32, 4>(self.sr_q.q.val()) << 16);
+            self.rdata.next = (bit_cast::<32, 6>(self.sd_up_q.q.val()) << self.g_sd_up.val())
+                | (bit_cast::<32, 6>(self.sd_sub_q.q.val()) << self.g_sd_sub.val())
+                | (bit_cast::<32, 4>(self.sr_q.q.val()) << self.g_sr.val());
         } else if self.wb_adr_i.val() == self.a_bf.val() {
-            self.rdata.next = bit_cast::<32, 8>(self.bf_up_q.q.val())
-                | (bit_cast::<32, 8>(self.bf_sub_q.q.val()) << 8);
+            self.rdata.next = (bit_cast::<32, 8>(self.bf_up_q.q.val()) << self.f_bf_up.val())
+                | (bit_cast::<32, 8>(self.bf_sub_q.q.val()) << self.f_bf_sub.val());
         } else if self.wb_adr_i.val() == self.a_restore.val() {
-            self.rdata.next = bit_cast::<32, 16>(self.restore_q.q.val())
-                | (bit_cast::<32, 16>(self.decouple_q.q.val()) << 16);
+            self.rdata.next = (bit_cast::<32, 16>(self.restore_q.q.val()) << self.r_restore.val())
+                | (bit_cast::<32, 16>(self.decouple_q.q.val()) << self.r_decouple.val());
         } else if self.wb_adr_i.val() == self.a_status.val() {
-            self.rdata.next = bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
-                | (bit_cast::<32, 1>(self.decoupled_q.q.val().into()) << 1)
-                | (bit_cast::<32, 1>(self.ack_window.val().into()) << 2)
-                | (bit_cast::<32, 2>(self.trk.val()) << 4)
-                | (bit_cast::<32, P>(self.port_en.val()) << 16);
+            self.rdata.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
+                << self.s_reset_mode.val())
+                | (bit_cast::<32, 1>(self.decoupled_q.q.val().into()) << self.s_decoupled.val())
+                | (bit_cast::<32, 1>(self.ack_window.val().into()) << self.s_ack_window.val())
+                | (bit_cast::<32, 2>(self.trk.val()) << self.s_trk.val())
+                | (bit_cast::<32, P>(self.port_en.val()) << self.s_enabled.val());
         } else if self.wb_adr_i.val() == self.a_int_status.val() {
-            self.rdata.next = bit_cast::<32, 4>(self.int_status.q.val());
+            self.rdata.next = bit_cast::<32, 4>(self.bus.int_status.val());
         } else if self.wb_adr_i.val() == self.a_int_enable.val() {
-            self.rdata.next = bit_cast::<32, 4>(self.int_enable.q.val());
+            self.rdata.next = bit_cast::<32, 4>(self.bus.int_enable.val());
         } else if self.wb_adr_i.val() == self.a_stats.val() {
-            self.rdata.next = bit_cast::<32, 16>(self.frames.val())
-                | (bit_cast::<32, 16>(self.errors.val()) << 16);
+            self.rdata.next = (bit_cast::<32, 16>(self.frames.val()) << self.t_frames.val())
+                | (bit_cast::<32, 16>(self.errors.val()) << self.t_errors.val());
         } else if self.is_port.val() {
             self.rdata.next = self.port_rd.val();
         }
-
-        // ---- Wishbone handshake ----
-        self.ack_q.d.next = self.taken.val();
-        self.dat_q.d.next = self.zero32.val();
-        if self.taken.val() & !self.wb_we_i.val() {
-            self.dat_q.d.next = self.rdata.val();
-        }
+        self.bus.rdata.next = self.rdata.val();
         self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
 
         // ---- §7 decoupling (at SAMPLE edges) ----
@@ -355,29 +432,34 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
             }
         }
 
-        // ---- writes ----
+        // ---- writes (§8) ----
         self.illegal.next = false;
         self.w1c.next = self.zero4.val();
+        self.bus.int_enable_we.next = false;
+        self.bus.int_enable_d.next = self.wdat.val().get_bits::<4>(0);
         if self.wr.val() {
             if self.wb_adr_i.val() == self.a_ctrl.val() {
-                if self.wdat.val().get_bit(1) & self.wdat.val().get_bit(2) {
+                if self.wdat.val().get_bit(self.c_force.val().index())
+                    & self.wdat.val().get_bit(self.c_recouple.val().index())
+                {
                     // both commands in one write: refused
                     self.illegal.next = true;
                 } else {
-                    self.reset_mode_q.d.next = self.wdat.val().get_bit(0);
+                    self.reset_mode_q.d.next =
+                        self.wdat.val().get_bit(self.c_reset_mode.val().index());
                     if self.reset_mode_q.q.val() {
-                        self.ack_interdep_q.d.next = self.wdat.val().get_bit(8);
+                        self.ack_interdep_q.d.next =
+                            self.wdat.val().get_bit(self.c_ack_interdep.val().index());
                     } else {
                         self.illegal.next =
-                            self.wdat.val().get_bit(8) != self.ack_interdep_q.q.val();
-                        if !self.wdat.val().get_bit(0) {
-                            if self.wdat.val().get_bit(1) {
-                                // force_decouple
+                            self.wdat.val().get_bit(self.c_ack_interdep.val().index())
+                                != self.ack_interdep_q.q.val();
+                        if !self.wdat.val().get_bit(self.c_reset_mode.val().index()) {
+                            if self.wdat.val().get_bit(self.c_force.val().index()) {
                                 self.decoupled_q.d.next = true;
                                 self.dec_evt.next = true;
                             }
-                            if self.wdat.val().get_bit(2) {
-                                // recouple
+                            if self.wdat.val().get_bit(self.c_recouple.val().index()) {
                                 self.decoupled_q.d.next = false;
                                 self.no_twin.d.next = self.zero16.val();
                                 self.dec_evt.next = false;
@@ -393,46 +475,62 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                 }
             } else if self.wb_adr_i.val() == self.a_guard.val() {
                 if self.reset_mode_q.q.val() {
-                    if self.wdat.val().get_bits::<6>(0) < self.sd_min.val() {
+                    // stuck-dominant thresholds below SD_MIN are clamped
+                    if self.wdat.val().get_bits::<6>(self.g_sd_up.val().index()) < self.sd_min.val()
+                    {
                         self.sd_up_q.d.next = self.sd_min.val();
                     } else {
-                        self.sd_up_q.d.next = self.wdat.val().get_bits::<6>(0);
+                        self.sd_up_q.d.next =
+                            self.wdat.val().get_bits::<6>(self.g_sd_up.val().index());
                     }
-                    if self.wdat.val().get_bits::<6>(8) < self.sd_min.val() {
+                    if self.wdat.val().get_bits::<6>(self.g_sd_sub.val().index())
+                        < self.sd_min.val()
+                    {
                         self.sd_sub_q.d.next = self.sd_min.val();
                     } else {
-                        self.sd_sub_q.d.next = self.wdat.val().get_bits::<6>(8);
+                        self.sd_sub_q.d.next =
+                            self.wdat.val().get_bits::<6>(self.g_sd_sub.val().index());
                     }
-                    self.sr_q.d.next = self.wdat.val().get_bits::<4>(16);
+                    self.sr_q.d.next = self.wdat.val().get_bits::<4>(self.g_sr.val().index());
                 } else {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_bf.val() {
                 if self.reset_mode_q.q.val() {
-                    if self.wdat.val().get_bits::<8>(0) < self.bf_min.val() {
+                    // bit-flipping limits below BF_MIN are clamped
+                    if self.wdat.val().get_bits::<8>(self.f_bf_up.val().index()) < self.bf_min.val()
+                    {
                         self.bf_up_q.d.next = self.bf_min.val();
                     } else {
-                        self.bf_up_q.d.next = self.wdat.val().get_bits::<8>(0);
+                        self.bf_up_q.d.next =
+                            self.wdat.val().get_bits::<8>(self.f_bf_up.val().index());
                     }
-                    if self.wdat.val().get_bits::<8>(8) < self.bf_min.val() {
+                    if self.wdat.val().get_bits::<8>(self.f_bf_sub.val().index())
+                        < self.bf_min.val()
+                    {
                         self.bf_sub_q.d.next = self.bf_min.val();
                     } else {
-                        self.bf_sub_q.d.next = self.wdat.val().get_bits::<8>(8);
+                        self.bf_sub_q.d.next =
+                            self.wdat.val().get_bits::<8>(self.f_bf_sub.val().index());
                     }
                 } else {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_restore.val() {
                 if self.reset_mode_q.q.val() {
-                    self.restore_q.d.next = self.wdat.val().get_bits::<16>(0);
-                    self.decouple_q.d.next = self.wdat.val().get_bits::<16>(16);
+                    self.restore_q.d.next =
+                        self.wdat.val().get_bits::<16>(self.r_restore.val().index());
+                    self.decouple_q.d.next = self
+                        .wdat
+                        .val()
+                        .get_bits::<16>(self.r_decouple.val().index());
                 } else {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_int_status.val() {
                 self.w1c.next = self.wdat.val().get_bits::<4>(0);
             } else if self.wb_adr_i.val() == self.a_int_enable.val() {
-                self.int_enable.d.next = self.wdat.val().get_bits::<4>(0);
+                self.bus.int_enable_we.next = true;
             } else {
                 // read-only or unmapped
                 self.illegal.next = true;
@@ -447,17 +545,14 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         }
 
         // ---- interrupts ----
-        self.events.next = bit_cast::<4, 1>(self.ev_iso.val().into())
-            | (bit_cast::<4, 1>(self.ev_rest.val().into()) << 1)
-            | (bit_cast::<4, 1>(self.dec_evt.val().into()) << 2)
-            | (bit_cast::<4, 1>(self.illegal.val().into()) << 3);
-        self.int_status.d.next = (self.int_status.q.val() & !self.w1c.val()) | self.events.val();
-        self.irq_q.d.next = (self.int_status.q.val() & self.int_enable.q.val()) != self.zero4.val();
+        self.bus.events.next = (bit_cast::<4, 1>(self.ev_iso.val().into())
+            << self.i_isolation.val())
+            | (bit_cast::<4, 1>(self.ev_rest.val().into()) << self.i_restoration.val())
+            | (bit_cast::<4, 1>(self.dec_evt.val().into()) << self.i_decoupled.val())
+            | (bit_cast::<4, 1>(self.illegal.val().into()) << self.i_illegal.val());
+        self.bus.w1c.next = self.w1c.val();
 
         if self.rst.val() {
-            self.ack_q.d.next = false;
-            self.dat_q.d.next = self.zero32.val();
-            self.irq_q.d.next = false;
             self.reset_mode_q.d.next = true;
             self.reset_mode_dq.d.next = true;
             self.ack_interdep_q.d.next = true;
@@ -469,24 +564,22 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
             self.bf_sub_q.d.next = self.bf_sub_reset.val();
             self.restore_q.d.next = self.restore_reset.val();
             self.decouple_q.d.next = self.decouple_reset.val();
-            self.int_status.d.next = self.zero4.val();
-            self.int_enable.d.next = self.zero4.val();
             self.decoupled_q.d.next = false;
             self.no_twin.d.next = self.zero16.val();
         }
 
         // ---- outputs ----
-        self.wb_ack_o.next = self.ack_q.q.val();
-        self.wb_dat_o.next = self.dat_q.q.val();
-        self.irq.next = self.irq_q.q.val();
+        self.wb_ack_o.next = self.bus.wb_ack_o.val();
+        self.wb_dat_o.next = self.bus.wb_dat_o.val();
+        self.irq.next = self.bus.irq.val();
         self.reset_mode.next = self.reset_mode_q.q.val();
         self.reset_mode_d.next = self.reset_mode_dq.q.val();
         self.ack_interdep.next = self.ack_interdep_q.q.val();
         self.decoupled.next = self.decoupled_q.q.val();
-        self.brp.next = self.btr_q.q.val().get_bits::<6>(0);
-        self.tseg1.next = self.btr_q.q.val().get_bits::<4>(6);
-        self.tseg2.next = self.btr_q.q.val().get_bits::<3>(10);
-        self.sjw.next = self.btr_q.q.val().get_bits::<2>(13);
+        self.brp.next = self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index());
+        self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());
+        self.tseg2.next = self.btr_q.q.val().get_bits::<3>(self.b_tseg2.val().index());
+        self.sjw.next = self.btr_q.q.val().get_bits::<2>(self.b_sjw.val().index());
         self.sd_run_up.next = self.sd_up_q.q.val();
         self.sd_run_sub.next = self.sd_sub_q.q.val();
         self.sr_frames.next = self.sr_q.q.val();

@@ -2,8 +2,9 @@
 //! paper's auxiliary FSMs of section III). States (`aux_state[1:0]`): valid 0,
 //! failed 1, restart 2, probation 3.
 //!
-//! - valid -> failed when a cause holds (policy error-passive, bus-off,
-//!   k failed attempts, stall); the cause bits are latched, `failures` counts.
+//! - valid -> failed when a cause of the switch policy holds
+//!   (`super::switch_policy`: error passive, bus-off, k failed attempts, stall);
+//!   the cause bits are latched, `failures` counts.
 //! - failed -> restart when the channel is idle, not bus-off and not in use by
 //!   the main FSM.
 //! - restart -> probation after one clock, during which the channel is reset
@@ -23,6 +24,8 @@
 //! While `hold` (normal or reset mode) it sits in valid with the working counters
 //! and cause bits cleared; `failures` and `recoveries` clear with `rst` only.
 
+use super::switch_policy::FailureJudge;
+use crate::host::registers::{AuxState, ErrState};
 use rust_hdl::prelude::*;
 
 /// Auxiliary FSM of one channel.
@@ -67,10 +70,7 @@ pub struct AuxFsm {
     failures_q: DFF<Bits<8>>,
     recoveries_q: DFF<Bits<8>>,
     // judgement
-    c_passive: Signal<Local, Bit>,
-    c_busoff: Signal<Local, Bit>,
-    c_kfail: Signal<Local, Bit>,
-    c_stall: Signal<Local, Bit>,
+    judge: FailureJudge,
     now_causes: Signal<Local, Bits<4>>,
     rb_eff: Signal<Local, Bits<16>>,
     // constants
@@ -78,10 +78,6 @@ pub struct AuxFsm {
     s_failed: Constant<Bits<2>>,
     s_restart: Constant<Bits<2>>,
     s_probation: Constant<Bits<2>>,
-    p_none: Constant<Bits<2>>,
-    p_passive: Constant<Bits<2>>,
-    p_kfail: Constant<Bits<2>>,
-    es_active: Constant<Bits<2>>,
     es_busoff: Constant<Bits<2>>,
     one4: Constant<Bits<4>>,
     zero4: Constant<Bits<4>>,
@@ -129,21 +125,14 @@ impl Default for AuxFsm {
             causes_q: Default::default(),
             failures_q: Default::default(),
             recoveries_q: Default::default(),
-            c_passive: Default::default(),
-            c_busoff: Default::default(),
-            c_kfail: Default::default(),
-            c_stall: Default::default(),
+            judge: Default::default(),
             now_causes: Default::default(),
             rb_eff: Default::default(),
-            s_valid: Constant::new(0.into()),
-            s_failed: Constant::new(1.into()),
-            s_restart: Constant::new(2.into()),
-            s_probation: Constant::new(3.into()),
-            p_none: Constant::new(0.into()),
-            p_passive: Constant::new(1.into()),
-            p_kfail: Constant::new(2.into()),
-            es_active: Constant::new(0.into()),
-            es_busoff: Constant::new(2.into()),
+            s_valid: Constant::new((AuxState::Valid.code() as u64).into()),
+            s_failed: Constant::new((AuxState::Failed.code() as u64).into()),
+            s_restart: Constant::new((AuxState::Restart.code() as u64).into()),
+            s_probation: Constant::new((AuxState::Probation.code() as u64).into()),
+            es_busoff: Constant::new((ErrState::BusOff.code() as u64).into()),
             one4: Constant::new(1.into()),
             zero4: Constant::new(0.into()),
             max4: Constant::new(15.into()),
@@ -198,20 +187,14 @@ impl Logic for AuxFsm {
             self.stall_q.d.next = self.zero16.val();
         }
 
-        // failure causes, on registered values
-        self.c_passive.next = (self.policy.val() == self.p_passive.val())
-            & (self.err_state.val() != self.es_active.val());
-        self.c_busoff.next = (self.policy.val() != self.p_none.val())
-            & (self.err_state.val() == self.es_busoff.val());
-        self.c_kfail.next =
-            (self.policy.val() == self.p_kfail.val()) & (self.fail_q.q.val() >= self.k.val());
-        self.c_stall.next = (self.policy.val() != self.p_none.val())
-            & (self.stall_limit.val() != self.zero16.val())
-            & (self.stall_q.q.val() >= self.stall_limit.val());
-        self.now_causes.next = bit_cast::<4, 1>(self.c_passive.val().into())
-            | (bit_cast::<4, 1>(self.c_busoff.val().into()) << 1)
-            | (bit_cast::<4, 1>(self.c_kfail.val().into()) << 2)
-            | (bit_cast::<4, 1>(self.c_stall.val().into()) << 3);
+        // failure causes under the switch policy, on registered values
+        self.judge.policy.next = self.policy.val();
+        self.judge.k.next = self.k.val();
+        self.judge.stall_limit.next = self.stall_limit.val();
+        self.judge.err_state.next = self.err_state.val();
+        self.judge.fail_cnt.next = self.fail_q.q.val();
+        self.judge.stall_cnt.next = self.stall_q.q.val();
+        self.now_causes.next = self.judge.causes.val();
         if self.recovery_bits.val() == self.zero16.val() {
             self.rb_eff.next = self.one16.val();
         } else {
@@ -219,7 +202,7 @@ impl Logic for AuxFsm {
         }
 
         if self.st.q.val() == self.s_valid.val() {
-            if self.now_causes.val() != self.zero4.val() {
+            if self.judge.failed.val() {
                 self.st.d.next = self.s_failed.val();
                 self.causes_q.d.next = self.causes_q.q.val() | self.now_causes.val();
                 if self.failures_q.q.val() != self.max8.val() {

@@ -11,7 +11,13 @@
 //! `switch_evt` (`failover` changes at this edge), `in_use_a` / `in_use_b` (the
 //! FSM is in {wait1, ch1, abort1, wait2} / {wait3, ch2, abort2, wait4}).
 
+use crate::host::registers::MainState;
 use rust_hdl::prelude::*;
+
+/// A state code (paper Table 1, `STATUS.state`) as an RTL constant.
+fn state(s: MainState) -> Constant<Bits<4>> {
+    Constant::new((s.code() as u64).into())
+}
 
 /// Main FSM (paper Table 1).
 #[derive(LogicBlock)]
@@ -147,16 +153,16 @@ impl Default for MainFsm {
             tx_time: Default::default(),
             last_time_q: Default::default(),
             switch_time_q: Default::default(),
-            s_idle1: Constant::new(0.into()),
-            s_wait1: Constant::new(1.into()),
-            s_ch1: Constant::new(2.into()),
-            s_abort1: Constant::new(3.into()),
-            s_wait2: Constant::new(4.into()),
-            s_idle2: Constant::new(5.into()),
-            s_wait3: Constant::new(6.into()),
-            s_ch2: Constant::new(7.into()),
-            s_abort2: Constant::new(8.into()),
-            s_wait4: Constant::new(9.into()),
+            s_idle1: state(MainState::Idle1),
+            s_wait1: state(MainState::Wait1),
+            s_ch1: state(MainState::Ch1),
+            s_abort1: state(MainState::Abort1),
+            s_wait2: state(MainState::Wait2),
+            s_idle2: state(MainState::Idle2),
+            s_wait3: state(MainState::Wait3),
+            s_ch2: state(MainState::Ch2),
+            s_abort2: state(MainState::Abort2),
+            s_wait4: state(MainState::Wait4),
             ch_none: Constant::new(0.into()),
             ch_a: Constant::new(1.into()),
             ch_b: Constant::new(2.into()),

@@ -1,5 +1,7 @@
 //! Redundancy management block (DRCC paper section III, Table 1): the main FSM,
-//! one auxiliary FSM per channel and the nominal bit tick they count with.
+//! one auxiliary FSM per channel with the switch policy it judges by, and the
+//! nominal bit tick they count with.
 pub mod aux_fsm;
 pub mod bit_tick;
 pub mod main_fsm;
+pub mod switch_policy;

@@ -1,0 +1,188 @@
+//! The checks of a `CTRL` write (DRCC contract §9), combinational on the written
+//! word and the stored fields:
+//!
+//! - in reset mode a write with the illegal policy code, or with redundancy and
+//!   a listen-only channel, is refused as a whole;
+//! - outside reset mode only `reset_mode` is taken, and a write whose cfg fields
+//!   differ from the stored ones is flagged;
+//! - `k = 0` is stored as 1 (not illegal).
+//!
+//! Field positions and codes come from the table (`super::registers`).
+
+use super::map::lsb;
+use super::registers::{ChannelMode, MAP, POLICY_ILLEGAL};
+use rust_hdl::prelude::*;
+
+/// The §9 checks of a `CTRL` write.
+#[derive(LogicBlock)]
+pub struct CtrlCheck {
+    // ---- the write ----
+    /// The written word.
+    pub wdat: Signal<In, Bits<32>>,
+    // ---- the stored fields (super::ctrl_reg::CtrlReg) ----
+    /// Reset mode before the write.
+    pub reset_mode: Signal<In, Bit>,
+    /// Stored `redundancy`.
+    pub redundancy: Signal<In, Bit>,
+    /// Stored `policy`.
+    pub policy: Signal<In, Bits<2>>,
+    /// Stored `dual_tx`.
+    pub dual_tx: Signal<In, Bit>,
+    /// Stored `k`.
+    pub k: Signal<In, Bits<4>>,
+    /// Stored `mode_a`.
+    pub mode_a: Signal<In, Bits<2>>,
+    /// Stored `mode_b`.
+    pub mode_b: Signal<In, Bits<2>>,
+    /// Stored `single_shot`.
+    pub single_shot: Signal<In, Bit>,
+    // ---- verdict ----
+    /// The `k` to store: the written one, 0 read as 1.
+    pub k_in: Signal<Out, Bits<4>>,
+    /// The word is refused in reset mode (illegal policy, or redundancy with a
+    /// listen-only channel).
+    pub refused: Signal<Out, Bit>,
+    /// A write of this word now sets `INT_STATUS.illegal`.
+    pub illegal: Signal<Out, Bit>,
+    // ---- internals ----
+    cfg_differs: Signal<Local, Bit>,
+    p_redundancy: Constant<Bits<5>>,
+    p_policy: Constant<Bits<5>>,
+    p_dual_tx: Constant<Bits<5>>,
+    p_k: Constant<Bits<5>>,
+    p_mode_a: Constant<Bits<5>>,
+    p_mode_b: Constant<Bits<5>>,
+    p_single_shot: Constant<Bits<5>>,
+    policy_illegal: Constant<Bits<2>>,
+    mode_listen: Constant<Bits<2>>,
+    zero4: Constant<Bits<4>>,
+    one4: Constant<Bits<4>>,
+}
+
+impl Default for CtrlCheck {
+    fn default() -> Self {
+        Self {
+            wdat: Default::default(),
+            reset_mode: Default::default(),
+            redundancy: Default::default(),
+            policy: Default::default(),
+            dual_tx: Default::default(),
+            k: Default::default(),
+            mode_a: Default::default(),
+            mode_b: Default::default(),
+            single_shot: Default::default(),
+            k_in: Default::default(),
+            refused: Default::default(),
+            illegal: Default::default(),
+            cfg_differs: Default::default(),
+            p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
+            p_policy: lsb(&MAP, "CTRL", "policy", 2),
+            p_dual_tx: lsb(&MAP, "CTRL", "dual_tx", 1),
+            p_k: lsb(&MAP, "CTRL", "k", 4),
+            p_mode_a: lsb(&MAP, "CTRL", "mode_a", 2),
+            p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
+            p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
+            policy_illegal: Constant::new((POLICY_ILLEGAL as u64).into()),
+            mode_listen: Constant::new((ChannelMode::ListenOnly.code() as u64).into()),
+            zero4: Constant::new(0.into()),
+            one4: Constant::new(1.into()),
+        }
+    }
+}
+
+impl Logic for CtrlCheck {
+    #[hdl_gen]
+    fn update(&mut self) {
+        // k = 0 is stored as 1
+        if self.wdat.val().get_bits::<4>(self.p_k.val().index()) == self.zero4.val() {
+            self.k_in.next = self.one4.val();
+        } else {
+            self.k_in.next = self.wdat.val().get_bits::<4>(self.p_k.val().index());
+        }
+        // an illegal policy, or redundancy with a listen-only channel
+        self.refused.next = (self.wdat.val().get_bits::<2>(self.p_policy.val().index())
+            == self.policy_illegal.val())
+            | (self.wdat.val().get_bit(self.p_redundancy.val().index())
+                & ((self.wdat.val().get_bits::<2>(self.p_mode_a.val().index())
+                    == self.mode_listen.val())
+                    | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index())
+                        == self.mode_listen.val())));
+        self.cfg_differs.next = (self.wdat.val().get_bit(self.p_redundancy.val().index())
+            != self.redundancy.val())
+            | (self.wdat.val().get_bits::<2>(self.p_policy.val().index()) != self.policy.val())
+            | (self.wdat.val().get_bit(self.p_dual_tx.val().index()) != self.dual_tx.val())
+            | (self.k_in.val() != self.k.val())
+            | (self.wdat.val().get_bits::<2>(self.p_mode_a.val().index()) != self.mode_a.val())
+            | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index()) != self.mode_b.val())
+            | (self.wdat.val().get_bit(self.p_single_shot.val().index()) != self.single_shot.val());
+        if self.reset_mode.val() {
+            self.illegal.next = self.refused.val();
+        } else {
+            self.illegal.next = self.cfg_differs.val();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::host::registers::{Mode, SwitchPolicy};
+
+    fn ctrl(fields: &[(&str, u32)]) -> u32 {
+        fields
+            .iter()
+            .fold(0, |w, (n, v)| w | MAP.field("CTRL", n).put(*v))
+    }
+
+    /// (k_in, refused, illegal) for `word` against the reset-value fields.
+    fn check(reset_mode: bool, word: u32) -> (u64, bool, bool) {
+        let mut uut = CtrlCheck::default();
+        uut.connect_all();
+        let reset = |f: &str| MAP.field("CTRL", f).reset as u64;
+        uut.reset_mode.next = reset_mode;
+        uut.policy.next = reset("policy").into();
+        uut.k.next = reset("k").into();
+        uut.wdat.next = (word as u64).into();
+        assert!(simulate(&mut uut, 10));
+        (
+            uut.k_in.val().to_u64(),
+            uut.refused.val(),
+            uut.illegal.val(),
+        )
+    }
+
+    #[test]
+    fn ctrl_check_synthesizes() {
+        let mut uut = CtrlCheck::default();
+        uut.connect_all();
+        yosys_validate("ctrl_check", &generate_verilog(&uut)).unwrap();
+    }
+
+    /// Contract §9, with the words built from the table and the named codes.
+    #[test]
+    fn refusals_of_section_9() {
+        let ep = SwitchPolicy::ErrorPassive.code();
+        let base = [("reset_mode", 1), ("policy", ep), ("k", 1)];
+        assert_eq!(check(true, ctrl(&base)), (1, false, false));
+        // the illegal policy code: refused
+        let w = ctrl(&[("reset_mode", 1), ("policy", POLICY_ILLEGAL)]);
+        assert!(check(true, w).1 && check(true, w).2);
+        // redundancy with a listen-only channel: refused
+        let listen = ChannelMode::ListenOnly.code();
+        let w = ctrl(&[
+            ("redundancy", Mode::Redundancy.code()),
+            ("mode_b", listen),
+            ("policy", ep),
+        ]);
+        assert!(check(true, w).2);
+        // listen-only in normal mode is legal
+        let w = ctrl(&[("mode_b", listen), ("policy", ep)]);
+        assert!(!check(true, w).2);
+        // k = 0 is stored as 1, not refused
+        assert_eq!(check(true, ctrl(&[("policy", ep)])), (1, false, false));
+        // outside reset mode: a cfg change is flagged, the same cfg is not
+        let w = ctrl(&[("policy", ep), ("k", 1), ("dual_tx", 1)]);
+        assert!(check(false, w).2);
+        assert!(!check(false, ctrl(&[("policy", ep), ("k", 1)])).2);
+    }
+}

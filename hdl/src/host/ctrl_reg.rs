@@ -1,0 +1,215 @@
+//! The DRCC's `CTRL` register (DRCC contract §3, §9): the storage of reset
+//! mode, the operating mode ([`Mode`]), the switch policy, `dual_tx`, `k`, the
+//! channel modes ([`ChannelMode`]) and `single_shot`. The refusals of §9 are
+//! decided by [`CtrlCheck`] (combinational, beside it in the register block, so
+//! that no always block both takes the write and flags it):
+//!
+//! - in reset mode (before the write) the whole word is taken, except that a
+//!   write with the illegal policy code, or with redundancy and a listen-only
+//!   channel, is refused as a whole (`illegal`); `k = 0` is stored as 1;
+//! - outside reset mode only `reset_mode` is taken; a write whose cfg fields
+//!   differ from the stored ones sets `illegal`.
+//!
+//! Field positions and reset values come from the table (`super::registers`).
+
+#[cfg(doc)]
+use super::ctrl_check::CtrlCheck;
+use super::map::lsb;
+#[cfg(doc)]
+use super::registers::ChannelMode;
+use super::registers::{Mode, MAP};
+use rust_hdl::prelude::*;
+
+/// `CTRL`.
+#[derive(LogicBlock)]
+pub struct CtrlReg {
+    // ---- clock and reset ----
+    /// System clock.
+    pub clk: Signal<In, Clock>,
+    /// Synchronous reset: the table's reset value (reset mode).
+    pub rst: Signal<In, Bit>,
+    // ---- write (from the register decoder) ----
+    /// A write to `CTRL` is taken at this edge.
+    pub we: Signal<In, Bit>,
+    /// The written word.
+    pub wdat: Signal<In, Bits<32>>,
+    /// [`CtrlCheck::refused`]: in reset mode the write is not taken.
+    pub refused: Signal<In, Bit>,
+    /// [`CtrlCheck::k_in`]: the `k` to store.
+    pub k_in: Signal<In, Bits<4>>,
+    /// The register's value, for reads.
+    pub word: Signal<Out, Bits<32>>,
+    // ---- fields ----
+    /// `reset_mode`: channels held in reset, queues and FIFO emptied.
+    pub reset_mode: Signal<Out, Bit>,
+    /// `reset_mode` one edge earlier (1 after `rst`): the channels stay in reset
+    /// one clock after reset mode (contract §6).
+    pub reset_mode_d: Signal<Out, Bit>,
+    /// [`Mode`]: 1 = redundancy mode.
+    pub redundancy: Signal<Out, Bit>,
+    /// `SwitchPolicy` code.
+    pub policy: Signal<Out, Bits<2>>,
+    /// Redundancy mode: every message on A, then its copy on B.
+    pub dual_tx: Signal<Out, Bit>,
+    /// Failed attempts of the k-failed policy (1..15).
+    pub k: Signal<Out, Bits<4>>,
+    /// [`ChannelMode`] code of channel A.
+    pub mode_a: Signal<Out, Bits<2>>,
+    /// [`ChannelMode`] code of channel B.
+    pub mode_b: Signal<Out, Bits<2>>,
+    /// No automatic retransmission (normal mode).
+    pub single_shot: Signal<Out, Bit>,
+    // ---- state ----
+    reset_mode_q: DFF<Bit>,
+    reset_mode_dq: DFF<Bit>,
+    redundancy_q: DFF<Bit>,
+    policy_q: DFF<Bits<2>>,
+    dual_tx_q: DFF<Bit>,
+    k_q: DFF<Bits<4>>,
+    mode_a_q: DFF<Bits<2>>,
+    mode_b_q: DFF<Bits<2>>,
+    single_shot_q: DFF<Bit>,
+    // ---- field positions (from the table) ----
+    p_reset_mode: Constant<Bits<5>>,
+    p_redundancy: Constant<Bits<5>>,
+    p_policy: Constant<Bits<5>>,
+    p_dual_tx: Constant<Bits<5>>,
+    p_k: Constant<Bits<5>>,
+    p_mode_a: Constant<Bits<5>>,
+    p_mode_b: Constant<Bits<5>>,
+    p_single_shot: Constant<Bits<5>>,
+    // ---- codes and reset values ----
+    redundancy_reset: Constant<Bit>,
+    policy_reset: Constant<Bits<2>>,
+    k_reset: Constant<Bits<4>>,
+    mode_reset: Constant<Bits<2>>,
+}
+
+impl Default for CtrlReg {
+    fn default() -> Self {
+        let reset = |field: &str| MAP.field("CTRL", field).reset as u64;
+        assert_eq!(reset("reset_mode"), 1, "CTRL resets into reset mode (§3)");
+        assert_eq!(reset("dual_tx") + reset("single_shot"), 0);
+        assert_eq!(reset("mode_a"), reset("mode_b"));
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            we: Default::default(),
+            wdat: Default::default(),
+            refused: Default::default(),
+            k_in: Default::default(),
+            word: Default::default(),
+            reset_mode: Default::default(),
+            reset_mode_d: Default::default(),
+            redundancy: Default::default(),
+            policy: Default::default(),
+            dual_tx: Default::default(),
+            k: Default::default(),
+            mode_a: Default::default(),
+            mode_b: Default::default(),
+            single_shot: Default::default(),
+            reset_mode_q: Default::default(),
+            reset_mode_dq: Default::default(),
+            redundancy_q: Default::default(),
+            policy_q: Default::default(),
+            dual_tx_q: Default::default(),
+            k_q: Default::default(),
+            mode_a_q: Default::default(),
+            mode_b_q: Default::default(),
+            single_shot_q: Default::default(),
+            p_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
+            p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
+            p_policy: lsb(&MAP, "CTRL", "policy", 2),
+            p_dual_tx: lsb(&MAP, "CTRL", "dual_tx", 1),
+            p_k: lsb(&MAP, "CTRL", "k", 4),
+            p_mode_a: lsb(&MAP, "CTRL", "mode_a", 2),
+            p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
+            p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
+            redundancy_reset: Constant::new(reset("redundancy") == Mode::Redundancy.code() as u64),
+            policy_reset: Constant::new(reset("policy").into()),
+            k_reset: Constant::new(reset("k").into()),
+            mode_reset: Constant::new(reset("mode_a").into()),
+        }
+    }
+}
+
+impl Logic for CtrlReg {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clk,
+            reset_mode_q,
+            reset_mode_dq,
+            redundancy_q,
+            policy_q,
+            dual_tx_q,
+            k_q,
+            mode_a_q,
+            mode_b_q,
+            single_shot_q
+        );
+        self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
+        if self.we.val() {
+            if self.reset_mode_q.q.val() {
+                if !self.refused.val() {
+                    self.reset_mode_q.d.next =
+                        self.wdat.val().get_bit(self.p_reset_mode.val().index());
+                    self.redundancy_q.d.next =
+                        self.wdat.val().get_bit(self.p_redundancy.val().index());
+                    self.policy_q.d.next =
+                        self.wdat.val().get_bits::<2>(self.p_policy.val().index());
+                    self.dual_tx_q.d.next = self.wdat.val().get_bit(self.p_dual_tx.val().index());
+                    self.k_q.d.next = self.k_in.val();
+                    self.mode_a_q.d.next =
+                        self.wdat.val().get_bits::<2>(self.p_mode_a.val().index());
+                    self.mode_b_q.d.next =
+                        self.wdat.val().get_bits::<2>(self.p_mode_b.val().index());
+                    self.single_shot_q.d.next =
+                        self.wdat.val().get_bit(self.p_single_shot.val().index());
+                }
+            } else {
+                // outside reset mode only reset_mode is taken
+                self.reset_mode_q.d.next = self.wdat.val().get_bit(self.p_reset_mode.val().index());
+            }
+        }
+
+        if self.rst.val() {
+            self.reset_mode_q.d.next = true;
+            self.reset_mode_dq.d.next = true;
+            self.redundancy_q.d.next = self.redundancy_reset.val();
+            self.policy_q.d.next = self.policy_reset.val();
+            self.dual_tx_q.d.next = false;
+            self.k_q.d.next = self.k_reset.val();
+            self.mode_a_q.d.next = self.mode_reset.val();
+            self.mode_b_q.d.next = self.mode_reset.val();
+            self.single_shot_q.d.next = false;
+        }
+
+        self.word.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
+            << self.p_reset_mode.val())
+            | (bit_cast::<32, 1>(self.redundancy_q.q.val().into()) << self.p_redundancy.val())
+            | (bit_cast::<32, 2>(self.policy_q.q.val()) << self.p_policy.val())
+            | (bit_cast::<32, 1>(self.dual_tx_q.q.val().into()) << self.p_dual_tx.val())
+            | (bit_cast::<32, 4>(self.k_q.q.val()) << self.p_k.val())
+            | (bit_cast::<32, 2>(self.mode_a_q.q.val()) << self.p_mode_a.val())
+            | (bit_cast::<32, 2>(self.mode_b_q.q.val()) << self.p_mode_b.val())
+            | (bit_cast::<32, 1>(self.single_shot_q.q.val().into()) << self.p_single_shot.val());
+        self.reset_mode.next = self.reset_mode_q.q.val();
+        self.reset_mode_d.next = self.reset_mode_dq.q.val();
+        self.redundancy.next = self.redundancy_q.q.val();
+        self.policy.next = self.policy_q.q.val();
+        self.dual_tx.next = self.dual_tx_q.q.val();
+        self.k.next = self.k_q.q.val();
+        self.mode_a.next = self.mode_a_q.q.val();
+        self.mode_b.next = self.mode_b_q.q.val();
+        self.single_shot.next = self.single_shot_q.q.val();
+    }
+}
+
+#[test]
+fn ctrl_reg_synthesizes() {
+    let mut uut = CtrlReg::default();
+    uut.connect_all();
+    yosys_validate("ctrl_reg", &generate_verilog(&uut)).unwrap();
+}

@@ -36,7 +36,7 @@ pub struct ErrorCapture {
     /// The field of the sampled bit.
     pub field: Signal<In, Field>,
     /// Position of the sampled bit in its field.
-    pub bit_cnt: Signal<In, Bits<7>>,
+    pub bit_cnt: Signal<In, Bits<5>>,
     // to the host
     /// One clock: an error was captured.
     pub err_valid: Signal<Out, Bit>,
@@ -120,7 +120,7 @@ impl Logic for ErrorCapture {
         // Arbitration-lost position (contract §9).
         match self.field.val() {
             Field::IdA => {
-                self.alc_n.next = self.bit_cnt.val().get_bits::<5>(0);
+                self.alc_n.next = self.bit_cnt.val();
             }
             Field::SrrRtr => {
                 self.alc_n.next = self.n5_11.val();
@@ -129,7 +129,7 @@ impl Logic for ErrorCapture {
                 self.alc_n.next = self.n5_12.val();
             }
             Field::IdB => {
-                self.alc_n.next = self.n5_13.val() + self.bit_cnt.val().get_bits::<5>(0);
+                self.alc_n.next = self.n5_13.val() + self.bit_cnt.val();
             }
             _ => {
                 self.alc_n.next = self.n5_31.val();
@@ -142,6 +142,7 @@ impl Logic for ErrorCapture {
         self.p_cnt_form_max.d.next = self.cnt_form_q.q.val() == self.max8.val();
         self.p_cnt_ack_max.d.next = self.cnt_ack_q.q.val() == self.max8.val();
         // One kind per error, by the precedence of contract §9.
+        self.kind.next = self.k_crc.val();
         if self.bit_err.val() {
             self.kind.next = self.k_bit.val();
         } else if self.stuff_err.val() {
@@ -150,7 +151,7 @@ impl Logic for ErrorCapture {
             self.kind.next = self.k_form.val();
         } else if self.ack_err.val() {
             self.kind.next = self.k_ack.val();
-        } else {
+        } else if self.crc_err.val() {
             self.kind.next = self.k_crc.val();
         }
         self.err_valid_q.d.next = false;

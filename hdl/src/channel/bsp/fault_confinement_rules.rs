@@ -3,9 +3,12 @@
 //! error state that follows (timing contract §4.5). The counters themselves are
 //! in `fault_confinement`.
 //!
-//! The threshold comparisons are registered pre-decodes of the counters, so the
-//! state "after this sample's events" needs no combinational path back from the
-//! counters: the counters change only at sample points, several clocks apart.
+//! Combinational but for the threshold comparisons, registered pre-decodes of
+//! the counters, so the state "after this sample's events" needs no
+//! combinational path back from the counters: the counters change only at
+//! sample points, several clocks apart. The state the rules keep between bits
+//! (the delimiter's dominant-bit count, the deferred ACK error) is protocol
+//! state and lives in the protocol controller.
 
 use super::field::Field;
 use crate::channel::sized::Const;
@@ -16,8 +19,6 @@ use rust_hdl::prelude::*;
 pub struct FaultConfinementRules {
     /// Clock of the channel.
     pub clk: Signal<In, Clock>,
-    /// Synchronous reset.
-    pub rst: Signal<In, Bit>,
     /// The sample point of the current bit (one clock).
     pub sample: Signal<In, Bit>,
     /// The bus level at the sample point (true: recessive).
@@ -39,8 +40,14 @@ pub struct FaultConfinementRules {
     pub after_error_flag: Signal<In, Bit>,
     /// The bit counter is 0: in a delimiter, still waiting for recessive.
     pub bc0: Signal<In, Bit>,
-    /// At a sample point: a flag ended, its delimiter starts.
-    pub delim_start: Signal<In, Bit>,
+    /// The first bit after a flag is next (rule b).
+    pub delim_first: Signal<In, Bit>,
+    /// Seven dominant bits after a flag were counted: the next is the 8th
+    /// (rule f).
+    pub dom7: Signal<In, Bit>,
+    /// Rule c exception 1 is pending: a passive ACK error, counted only if a
+    /// dominant bit comes during its passive flag.
+    pub ack_pending: Signal<In, Bit>,
     /// At a sample point: the frame is valid for its transmitter (10.7).
     pub tx_valid: Signal<In, Bit>,
     /// Listen-only (contract §7): the counters never change, flags are passive.
@@ -81,14 +88,11 @@ pub struct FaultConfinementRules {
     pub passive_after: Signal<Out, Bit>,
     /// TEC > 255 after the events: bus-off at once.
     pub bus_off_after: Signal<Out, Bit>,
-    /// Rule c exception 1: an ACK error of a passive transmitter, counted only
-    /// if a dominant bit comes during its passive flag.
-    ack_passive_pending: DFF<Bit>,
-    /// The first bit after a flag (rule b).
-    delim_first: DFF<Bit>,
-    /// Consecutive dominant bits after a flag, modulo 8 (rule f).
-    dom_cnt: DFF<Bits<3>>,
-    p_dom7: DFF<Bit>,
+    // rule c exception 1, for the protocol controller's pending flag
+    /// Defer this ACK error of a passive transmitter to its passive flag.
+    pub ack_defer: Signal<Out, Bit>,
+    /// The deferred ACK error is counted now (a dominant bit in the flag).
+    pub ack_counted: Signal<Out, Bit>,
     p_passive: DFF<Bit>,
     p_bus_off: DFF<Bit>,
     p_tec_ge120: DFF<Bit>,
@@ -100,9 +104,6 @@ pub struct FaultConfinementRules {
     ev_rec_add1: Signal<Local, Bit>,
     ev_rec_add8: Signal<Local, Bit>,
     ev_rx_success: Signal<Local, Bit>,
-    zero3: Const<3, 0>,
-    one3: Const<3, 1>,
-    seven3: Const<3, 7>,
     n9_120: Const<9, 120>,
     n9_248: Const<9, 248>,
     n8_120: Const<8, 120>,
@@ -115,10 +116,6 @@ impl Logic for FaultConfinementRules {
         dff_setup!(
             self,
             clk,
-            ack_passive_pending,
-            delim_first,
-            dom_cnt,
-            p_dom7,
             p_passive,
             p_bus_off,
             p_tec_ge120,
@@ -126,7 +123,6 @@ impl Logic for FaultConfinementRules {
             p_rec_ge127,
             p_rec_ge120
         );
-        self.p_dom7.d.next = self.dom_cnt.q.val() == self.seven3.val();
         self.p_passive.d.next = self.error_passive.val();
         self.p_bus_off.d.next = self.bus_off.val();
         self.p_tec_ge120.d.next = self.tec.val() >= self.n9_120.val();
@@ -137,6 +133,8 @@ impl Logic for FaultConfinementRules {
         self.ev_rec_add1.next = false;
         self.ev_rec_add8.next = false;
         self.ev_rx_success.next = false;
+        self.ack_defer.next = false;
+        self.ack_counted.next = false;
         self.monitor.next = self.sample.val() && !self.at_stuff_bit.val();
         if self.monitor.val() {
             // Rule h: received up to the ACK slot and acknowledged it.
@@ -150,43 +148,31 @@ impl Logic for FaultConfinementRules {
             if (self.field.val() == Field::ErrorFlag) && self.flag_passive.val() {
                 // Rule c exception 1: a dominant bit during the passive flag that
                 // follows a passive ACK error costs TEC + 8 once.
-                if self.ack_passive_pending.q.val() && !self.sampled.val() {
+                if self.ack_pending.val() && !self.sampled.val() {
                     self.ev_tec_add8.next = true;
-                    self.ack_passive_pending.d.next = false;
-                }
-                if self.delim_start.val() {
-                    self.ack_passive_pending.d.next = false;
+                    self.ack_counted.next = true;
                 }
             }
-            if self.in_delim.val() && self.bc0.val() {
-                self.delim_first.d.next = false;
-                if !self.sampled.val() {
-                    // Rule b: a receiver's dominant first bit after its error flag.
-                    if self.delim_first.q.val() && self.after_error_flag.val() && !self.is_tx.val()
-                    {
+            if self.in_delim.val() && self.bc0.val() && !self.sampled.val() {
+                // Rule b: a receiver's dominant first bit after its error flag.
+                if self.delim_first.val() && self.after_error_flag.val() && !self.is_tx.val() {
+                    self.ev_rec_add8.next = true;
+                }
+                // Rule f: every 8th consecutive dominant bit after a flag.
+                if self.dom7.val() {
+                    if self.is_tx.val() {
+                        self.ev_tec_add8.next = true;
+                    } else {
                         self.ev_rec_add8.next = true;
                     }
-                    // Rule f: every 8th consecutive dominant bit after a flag.
-                    self.dom_cnt.d.next = self.dom_cnt.q.val() + self.one3.val();
-                    if self.p_dom7.q.val() {
-                        if self.is_tx.val() {
-                            self.ev_tec_add8.next = true;
-                        } else {
-                            self.ev_rec_add8.next = true;
-                        }
-                    }
                 }
             }
-        }
-        if self.delim_start.val() {
-            self.delim_first.d.next = true;
-            self.dom_cnt.d.next = self.zero3.val();
         }
         if self.error.val() {
             if self.as_tx.val() {
                 if self.ack_err.val() && self.p_passive.q.val() {
                     // Rule c exception 1: decided during the passive flag.
-                    self.ack_passive_pending.d.next = true;
+                    self.ack_defer.next = true;
                 } else if !self.tec_exempt.val() {
                     self.ev_tec_add8.next = true; // rule c
                 }
@@ -218,11 +204,6 @@ impl Logic for FaultConfinementRules {
         // Rule g: the frame was valid for its transmitter.
         self.tx_success.next = self.tx_valid.val() && !self.listen_only.val();
         self.rx_success.next = self.ev_rx_success.val() && !self.listen_only.val();
-        if self.rst.val() {
-            self.ack_passive_pending.d.next = false;
-            self.delim_first.d.next = false;
-            self.dom_cnt.d.next = self.zero3.val();
-        }
     }
 }
 

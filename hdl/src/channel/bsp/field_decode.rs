@@ -23,6 +23,8 @@ pub struct FieldDecode {
     pub bit_cnt: Signal<In, Bits<7>>,
     /// Bus-off recovery: sequences of 11 recessive bits seen.
     pub recovery_cnt: Signal<In, Bits<7>>,
+    /// Dominant bits counted after a flag (rule f).
+    pub dom_cnt: Signal<In, Bits<3>>,
     /// The node is transmitter of the frame.
     pub is_tx: Signal<In, Bit>,
     /// The node is error passive.
@@ -63,6 +65,8 @@ pub struct FieldDecode {
     pub recovery_end: Signal<Out, Bit>,
     /// An error-passive transmitter suspends after its frame (10.4.5).
     pub suspend_due: Signal<Out, Bit>,
+    /// dom_cnt == 7: the next dominant bit is the 8th (rule f).
+    pub dom7: Signal<Out, Bit>,
     p_in_arbitration: DFF<Bit>,
     p_ide: DFF<Bit>,
     p_in_frame: DFF<Bit>,
@@ -81,6 +85,8 @@ pub struct FieldDecode {
     p_bc17: DFF<Bit>,
     p_recovery_end: DFF<Bit>,
     p_suspend_due: DFF<Bit>,
+    p_dom7: DFF<Bit>,
+    n3_7: Const<3, 7>,
     n7_0: Const<7, 0>,
     n7_2: Const<7, 2>,
     n7_3: Const<7, 3>,
@@ -116,7 +122,8 @@ impl Logic for FieldDecode {
             p_bc14,
             p_bc17,
             p_recovery_end,
-            p_suspend_due
+            p_suspend_due,
+            p_dom7
         );
         // Field classification (10.4.2: the arbitration field is ID and RTR, plus
         // SRR and IDE in extended frames).
@@ -206,6 +213,7 @@ impl Logic for FieldDecode {
         self.p_bc17.d.next = self.bit_cnt.val() == self.n7_17.val();
         self.p_recovery_end.d.next = self.recovery_cnt.val() == self.n7_127.val();
         self.p_suspend_due.d.next = self.is_tx.val() && self.error_passive.val();
+        self.p_dom7.d.next = self.dom_cnt.val() == self.n3_7.val();
 
         self.in_arbitration.next =
             self.p_in_arbitration.q.val() || (self.p_ide.q.val() && self.frame_ide.val());
@@ -225,6 +233,7 @@ impl Logic for FieldDecode {
         self.bc17.next = self.p_bc17.q.val();
         self.recovery_end.next = self.p_recovery_end.q.val();
         self.suspend_due.next = self.p_suspend_due.q.val();
+        self.dom7.next = self.p_dom7.q.val();
     }
 }
 

@@ -27,7 +27,7 @@ pub struct FrameCrc {
     /// The next bit belongs to the CRC field (for the registered pre-decode).
     pub in_crc_field: Signal<In, Bit>,
     /// Position of the next bit in the CRC field.
-    pub bit_cnt: Signal<In, Bits<7>>,
+    pub bit_cnt: Signal<In, Bits<4>>,
     /// The CRC register (the sequence a transmitter sends).
     pub crc: Signal<Out, Bits<15>>,
     /// Every received CRC bit so far matched.
@@ -48,7 +48,7 @@ impl Logic for FrameCrc {
         dff_setup!(self, clk, crc_q, crc_ok_q, p_crc_bit);
         self.crc_step.crc.next = self.crc_q.q.val();
         self.crc_step.data_bit.next = self.sampled.val();
-        self.crc_rx_idx.next = self.n4_14.val() - self.bit_cnt.val().get_bits::<4>(0);
+        self.crc_rx_idx.next = self.n4_14.val() - self.bit_cnt.val();
         // (indexed only in the CRC field, where the index is in range)
         self.p_crc_bit.d.next = false;
         if self.in_crc_field.val() {

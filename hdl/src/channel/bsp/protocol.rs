@@ -32,6 +32,7 @@ use super::frame_crc::FrameCrc;
 use super::protocol_fsm::ProtocolFsm;
 use super::rx_frame::RxFrame;
 use super::tx_frame::TxFrame;
+use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
 /// The bit stream processor of one channel.
@@ -88,6 +89,12 @@ pub struct ProtocolController {
     pub cnt_crc: Signal<Out, Bits<8>>,
     pub cnt_form: Signal<Out, Bits<8>>,
     pub cnt_ack: Signal<Out, Bits<8>>,
+    // operating mode
+    listen_only: Signal<Local, Bit>,
+    ack_check_off: Signal<Local, Bit>,
+    loopback: Signal<Local, Bit>,
+    mode_listen_only: Const<2, 1>,
+    mode_loopback: Const<2, 3>,
     // the units
     fsm: ProtocolFsm,
     stuffing: BitStuffing,
@@ -97,7 +104,7 @@ pub struct ProtocolController {
     detect: ErrorDetection,
     rules: FaultConfinementRules,
     fc: FaultConfinement,
-    capture: ErrorCapture,
+    err_capture: ErrorCapture,
 }
 
 impl Logic for ProtocolController {
@@ -114,22 +121,27 @@ impl Logic for ProtocolController {
         self.rx_frame.clk.next = self.clk.val();
         self.rx_frame.rst.next = self.rst.val();
         self.rules.clk.next = self.clk.val();
-        self.rules.rst.next = self.rst.val();
         self.fc.clk.next = self.clk.val();
         self.fc.rst.next = self.rst.val();
-        self.capture.clk.next = self.clk.val();
-        self.capture.rst.next = self.rst.val();
+        self.err_capture.clk.next = self.clk.val();
+        self.err_capture.rst.next = self.rst.val();
+
+        // ---- operating mode (contract §7), decoded once for every unit
+        self.listen_only.next = self.mode.val() == self.mode_listen_only.val();
+        self.ack_check_off.next = self.mode.val().get_bit(1);
+        self.loopback.next = self.mode.val() == self.mode_loopback.val();
 
         // ---- protocol control
         self.fsm.sample.next = self.sample.val();
         self.fsm.sampled.next = self.sampled.val();
         self.fsm.bit_start.next = self.bit_start.val();
         self.fsm.hard_sync.next = self.hard_sync.val();
-        self.fsm.mode.next = self.mode.val();
+        self.fsm.listen_only.next = self.listen_only.val();
+        self.fsm.loopback.next = self.loopback.val();
         self.fsm.single_shot.next = self.single_shot.val();
         self.fsm.tx_req.next = self.tx_req.val();
         self.fsm.tx_abort.next = self.tx_abort.val();
-        self.fsm.frame_bit.next = self.tx_frame.bit.val();
+        self.fsm.frame_bit.next = self.tx_frame.frame_bit.val();
         self.fsm.frame_ide.next = self.tx_frame.frame_ide.val();
         self.fsm.stuff_insert.next = self.stuffing.insert.val();
         self.fsm.at_stuff_bit.next = self.stuffing.at_stuff_bit.val();
@@ -143,6 +155,8 @@ impl Logic for ProtocolController {
         self.fsm.sof_error.next = self.detect.sof_error.val();
         self.fsm.passive_after.next = self.rules.passive_after.val();
         self.fsm.bus_off_after.next = self.rules.bus_off_after.val();
+        self.fsm.ack_defer.next = self.rules.ack_defer.val();
+        self.fsm.ack_counted.next = self.rules.ack_counted.val();
         self.fsm.error_passive.next = self.fc.error_passive.val();
         self.fsm.bus_off.next = self.fc.bus_off.val();
 
@@ -157,7 +171,7 @@ impl Logic for ProtocolController {
         self.frame_crc.step.next = self.fsm.crc_step.val();
         self.frame_crc.check.next = self.fsm.crc_check.val();
         self.frame_crc.in_crc_field.next = self.fsm.in_crc_field.val();
-        self.frame_crc.bit_cnt.next = self.fsm.bit_cnt.val();
+        self.frame_crc.bit_cnt.next = self.fsm.bit_cnt.val().get_bits::<4>(0);
         self.tx_frame.load.next = self.fsm.tx_load.val();
         self.tx_frame.id.next = self.tx_id.val();
         self.tx_frame.ide.next = self.tx_ide.val();
@@ -198,8 +212,8 @@ impl Logic for ProtocolController {
         self.detect.last_bit_arb.next = self.fsm.last_bit_arb.val();
         self.detect.at_stuff_bit.next = self.stuffing.at_stuff_bit.val();
         self.detect.stuff_last.next = self.stuffing.last.val();
-        self.detect.listen_only.next = self.fsm.listen_only.val();
-        self.detect.ack_check_off.next = self.fsm.ack_check_off.val();
+        self.detect.listen_only.next = self.listen_only.val();
+        self.detect.ack_check_off.next = self.ack_check_off.val();
 
         // ---- fault confinement
         self.rules.sample.next = self.sample.val();
@@ -212,9 +226,11 @@ impl Logic for ProtocolController {
         self.rules.in_delim.next = self.fsm.in_delim.val();
         self.rules.after_error_flag.next = self.fsm.after_error_flag.val();
         self.rules.bc0.next = self.fsm.bc0.val();
-        self.rules.delim_start.next = self.fsm.delim_start.val();
+        self.rules.delim_first.next = self.fsm.delim_first.val();
+        self.rules.dom7.next = self.fsm.dom7.val();
+        self.rules.ack_pending.next = self.fsm.ack_pending.val();
         self.rules.tx_valid.next = self.fsm.tx_valid.val();
-        self.rules.listen_only.next = self.fsm.listen_only.val();
+        self.rules.listen_only.next = self.listen_only.val();
         self.rules.error.next = self.detect.error.val();
         self.rules.flag_error.next = self.detect.flag_error.val();
         self.rules.ack_err.next = self.detect.ack_err.val();
@@ -233,16 +249,16 @@ impl Logic for ProtocolController {
         self.fc.ewl.next = self.ewl.val();
 
         // ---- diagnostics (contract §9)
-        self.capture.capture.next = self.detect.error.val() || self.detect.flag_error.val();
-        self.capture.bit_err.next = self.detect.bit_err.val();
-        self.capture.stuff_err.next = self.detect.stuff_err.val();
-        self.capture.form_err.next = self.detect.form_err.val();
-        self.capture.ack_err.next = self.detect.ack_err.val();
-        self.capture.crc_err.next = self.detect.crc_err.val();
-        self.capture.as_tx.next = self.fsm.is_tx.val() || self.detect.sof_error.val();
-        self.capture.arb_lost.next = self.detect.lost.val();
-        self.capture.field.next = self.fsm.field.val();
-        self.capture.bit_cnt.next = self.fsm.bit_cnt.val();
+        self.err_capture.capture.next = self.detect.error.val() || self.detect.flag_error.val();
+        self.err_capture.bit_err.next = self.detect.bit_err.val();
+        self.err_capture.stuff_err.next = self.detect.stuff_err.val();
+        self.err_capture.form_err.next = self.detect.form_err.val();
+        self.err_capture.ack_err.next = self.detect.ack_err.val();
+        self.err_capture.crc_err.next = self.detect.crc_err.val();
+        self.err_capture.as_tx.next = self.fsm.is_tx.val() || self.detect.sof_error.val();
+        self.err_capture.arb_lost.next = self.detect.lost.val();
+        self.err_capture.field.next = self.fsm.field.val();
+        self.err_capture.bit_cnt.next = self.fsm.bit_cnt.val().get_bits::<5>(0);
 
         // ---- outputs
         self.hard_sync_enable.next = self.fsm.hard_sync_enable.val();
@@ -262,16 +278,16 @@ impl Logic for ProtocolController {
         self.rec.next = self.fc.rec.val();
         self.err_state.next = self.fc.err_state.val();
         self.err_warning.next = self.fc.warning.val();
-        self.err_valid.next = self.capture.err_valid.val();
-        self.err_kind.next = self.capture.err_kind.val();
-        self.err_field.next = self.capture.err_field.val();
-        self.err_tx.next = self.capture.err_tx.val();
-        self.alc.next = self.capture.alc.val();
-        self.cnt_bit.next = self.capture.cnt_bit.val();
-        self.cnt_stuff.next = self.capture.cnt_stuff.val();
-        self.cnt_crc.next = self.capture.cnt_crc.val();
-        self.cnt_form.next = self.capture.cnt_form.val();
-        self.cnt_ack.next = self.capture.cnt_ack.val();
+        self.err_valid.next = self.err_capture.err_valid.val();
+        self.err_kind.next = self.err_capture.err_kind.val();
+        self.err_field.next = self.err_capture.err_field.val();
+        self.err_tx.next = self.err_capture.err_tx.val();
+        self.alc.next = self.err_capture.alc.val();
+        self.cnt_bit.next = self.err_capture.cnt_bit.val();
+        self.cnt_stuff.next = self.err_capture.cnt_stuff.val();
+        self.cnt_crc.next = self.err_capture.cnt_crc.val();
+        self.cnt_form.next = self.err_capture.cnt_form.val();
+        self.cnt_ack.next = self.err_capture.cnt_ack.val();
     }
 }
 

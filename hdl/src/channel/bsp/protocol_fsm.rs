@@ -39,8 +39,10 @@ pub struct ProtocolFsm {
     /// The bit this node drives on the bus (true: recessive).
     pub tx: Signal<Out, Bit>,
     // configuration (held)
-    /// Operating mode: 0 normal, 1 listen-only, 2 self-test, 3 loop-back.
-    pub mode: Signal<In, Bits<2>>,
+    /// Listen-only mode (contract §7): no dominant bit, no transmission.
+    pub listen_only: Signal<In, Bit>,
+    /// Loop-back mode (contract §7): the transmitter receives its own frame.
+    pub loopback: Signal<In, Bit>,
     /// Single shot: a failed attempt drops the frame (contract §8).
     pub single_shot: Signal<In, Bit>,
     // host transmit control
@@ -87,6 +89,10 @@ pub struct ProtocolFsm {
     pub passive_after: Signal<In, Bit>,
     /// Rules: bus-off after this sample's counter events.
     pub bus_off_after: Signal<In, Bit>,
+    /// Rules: defer this ACK error to the passive flag (rule c exception 1).
+    pub ack_defer: Signal<In, Bit>,
+    /// Rules: the deferred ACK error was counted.
+    pub ack_counted: Signal<In, Bit>,
     /// Counters: the node is error passive.
     pub error_passive: Signal<In, Bit>,
     /// Counters: the node is bus-off.
@@ -94,8 +100,9 @@ pub struct ProtocolFsm {
     // state for the other units
     /// The field the next bit belongs to.
     pub field: Signal<Out, Field>,
-    /// Position of the next bit in its field.
-    pub bit_cnt: Signal<Out, Bits<7>>,
+    /// Position of the next bit in its field, low six bits (the field bit
+    /// indexes: at most 64 data bits).
+    pub bit_cnt: Signal<Out, Bits<6>>,
     /// `bit_cnt + 1`.
     pub bit_cnt_inc: Signal<Out, Bits<7>>,
     /// The node is transmitter of the frame.
@@ -104,10 +111,12 @@ pub struct ProtocolFsm {
     pub flag_passive: Signal<Out, Bit>,
     /// The last non-stuff bit was in the arbitration field.
     pub last_bit_arb: Signal<Out, Bit>,
-    /// Listen-only mode (contract §7).
-    pub listen_only: Signal<Out, Bit>,
-    /// Self-test or loop-back mode: no ACK check (contract §7).
-    pub ack_check_off: Signal<Out, Bit>,
+    /// The first bit after a flag is next (rule b).
+    pub delim_first: Signal<Out, Bit>,
+    /// Seven dominant bits after a flag were counted (rule f).
+    pub dom7: Signal<Out, Bit>,
+    /// An ACK error is deferred to the passive flag (rule c exception 1).
+    pub ack_pending: Signal<Out, Bit>,
     // registered pre-decodes of the field and the bit counter
     /// The field is part of the arbitration field (10.4.2.2).
     pub in_arbitration: Signal<Out, Bit>,
@@ -156,8 +165,6 @@ pub struct ProtocolFsm {
     pub rx_publish: Signal<Out, Bit>,
     /// The frame is valid for its transmitter (10.7, rule g).
     pub tx_valid: Signal<Out, Bit>,
-    /// A flag ended, its delimiter starts.
-    pub delim_start: Signal<Out, Bit>,
     /// Bus-off recovery completed (12.1.4.4).
     pub recovered: Signal<Out, Bit>,
     // protocol state
@@ -168,6 +175,11 @@ pub struct ProtocolFsm {
     recovery_cnt: DFF<Bits<7>>,
     tx_q: DFF<Bit>,
     last_bit_arb_q: DFF<Bit>,
+    // flag and delimiter state for the fault-confinement rules
+    ack_pending_q: DFF<Bit>,
+    delim_first_q: DFF<Bit>,
+    /// Consecutive dominant bits after a flag, modulo 8.
+    dom_cnt: DFF<Bits<3>>,
     // transmit control
     pending: DFF<Bit>,
     abort_pending: DFF<Bit>,
@@ -185,7 +197,6 @@ pub struct ProtocolFsm {
     tx_bit_n: Signal<Local, Bit>,
     tx_bit: Signal<Local, Bit>,
     // transmit decisions
-    loopback: Signal<Local, Bit>,
     start_ok: Signal<Local, Bit>,
     join_ok: Signal<Local, Bit>,
     starts: Signal<Local, Bit>,
@@ -194,8 +205,8 @@ pub struct ProtocolFsm {
     monitor: Signal<Local, Bit>,
     n7_0: Const<7, 0>,
     n7_1: Const<7, 1>,
-    n2_1: Const<2, 1>,
-    n2_3: Const<2, 3>,
+    zero3: Const<3, 0>,
+    one3: Const<3, 1>,
 }
 
 impl Logic for ProtocolFsm {
@@ -211,6 +222,9 @@ impl Logic for ProtocolFsm {
             recovery_cnt,
             tx_q,
             last_bit_arb_q,
+            ack_pending_q,
+            delim_first_q,
+            dom_cnt,
             pending,
             abort_pending,
             attempt,
@@ -222,6 +236,7 @@ impl Logic for ProtocolFsm {
         self.decode.field.next = self.field_q.q.val();
         self.decode.bit_cnt.next = self.bit_cnt_q.q.val();
         self.decode.recovery_cnt.next = self.recovery_cnt.q.val();
+        self.decode.dom_cnt.next = self.dom_cnt.q.val();
         self.decode.is_tx.next = self.is_tx_q.q.val();
         self.decode.error_passive.next = self.error_passive.val();
         self.decode.frame_ide.next = self.frame_ide.val();
@@ -232,10 +247,6 @@ impl Logic for ProtocolFsm {
         self.bit_cnt_inc.next = self.bit_cnt_q.q.val() + self.n7_1.val();
         self.is_tx_n.next = self.is_tx_q.q.val();
         self.flag_passive_n.next = self.flag_passive_q.q.val();
-        // Operating mode (contract §7).
-        self.listen_only.next = self.mode.val() == self.n2_1.val();
-        self.ack_check_off.next = self.mode.val().get_bit(1);
-        self.loopback.next = self.mode.val() == self.n2_3.val();
         // Contract §8: nothing starts in listen-only mode or while an abort is due.
         self.start_ok.next = self.pending.q.val()
             && !self.bus_off.val()
@@ -280,7 +291,6 @@ impl Logic for ProtocolFsm {
         self.rx_take_data.next = false;
         self.rx_publish.next = false;
         self.tx_valid.next = false;
-        self.delim_start.next = false;
         self.recovered.next = false;
 
         // ---- the sample point of a bit that is not a stuff bit
@@ -467,6 +477,10 @@ impl Logic for ProtocolFsm {
                 }
                 Field::ErrorFlag => {
                     if self.flag_passive_q.q.val() {
+                        // Rule c exception 1: counted once, by the rules.
+                        if self.ack_counted.val() {
+                            self.ack_pending_q.d.next = false;
+                        }
                         // 10.4.3: a passive flag ends after 6 equal consecutive bits.
                         if self.decode.bc0.val() || (self.sampled.val() != self.stuff_last.val()) {
                             self.bit_cnt_n.next = self.n7_1.val();
@@ -474,7 +488,9 @@ impl Logic for ProtocolFsm {
                         } else if self.decode.bc5.val() {
                             self.field_n.next = Field::ErrorDelim;
                             self.bit_cnt_n.next = self.n7_0.val();
-                            self.delim_start.next = true;
+                            self.delim_first_q.d.next = true;
+                            self.dom_cnt.d.next = self.zero3.val();
+                            self.ack_pending_q.d.next = false;
                         } else {
                             self.bit_cnt_n.next = self.bit_cnt_inc.val();
                         }
@@ -483,7 +499,8 @@ impl Logic for ProtocolFsm {
                     } else if self.decode.bc5.val() {
                         self.field_n.next = Field::ErrorDelim;
                         self.bit_cnt_n.next = self.n7_0.val();
-                        self.delim_start.next = true;
+                        self.delim_first_q.d.next = true;
+                        self.dom_cnt.d.next = self.zero3.val();
                     } else {
                         self.bit_cnt_n.next = self.bit_cnt_inc.val();
                     }
@@ -494,7 +511,8 @@ impl Logic for ProtocolFsm {
                     } else if self.decode.bc5.val() {
                         self.field_n.next = Field::OverloadDelim;
                         self.bit_cnt_n.next = self.n7_0.val();
-                        self.delim_start.next = true;
+                        self.delim_first_q.d.next = true;
+                        self.dom_cnt.d.next = self.zero3.val();
                     } else {
                         self.bit_cnt_n.next = self.bit_cnt_inc.val();
                     }
@@ -525,8 +543,12 @@ impl Logic for ProtocolFsm {
             // wait for recessive, then 8 recessive bits in all.
             if self.decode.in_delim.val() {
                 if self.decode.bc0.val() {
+                    self.delim_first_q.d.next = false;
                     if self.sampled.val() {
                         self.bit_cnt_n.next = self.n7_1.val();
+                    } else {
+                        // Rules b/f count the dominant bits after a flag.
+                        self.dom_cnt.d.next = self.dom_cnt.q.val() + self.one3.val();
                     }
                 } else if !self.sampled.val() {
                     if self.decode.bc7.val() {
@@ -557,6 +579,9 @@ impl Logic for ProtocolFsm {
                 self.stuff_stop.next = true;
                 // The flag type follows the state after this error's increment.
                 self.flag_passive_n.next = self.passive_after.val() || self.listen_only.val();
+            }
+            if self.ack_defer.val() {
+                self.ack_pending_q.d.next = true;
             }
             // Single shot or a due abort: a failed attempt drops the frame (§8).
             // An attempt runs from its SOF to tx_done, lost arbitration or the
@@ -678,7 +703,7 @@ impl Logic for ProtocolFsm {
         self.arb_lost.next = self.arb_lost_q.q.val();
         self.tx_failed.next = self.tx_failed_q.q.val();
         self.field.next = self.field_q.q.val();
-        self.bit_cnt.next = self.bit_cnt_q.q.val();
+        self.bit_cnt.next = self.bit_cnt_q.q.val().get_bits::<6>(0);
         self.is_tx.next = self.is_tx_q.q.val();
         self.flag_passive.next = self.flag_passive_q.q.val();
         self.last_bit_arb.next = self.last_bit_arb_q.q.val();
@@ -690,6 +715,9 @@ impl Logic for ProtocolFsm {
         self.bc0.next = self.decode.bc0.val();
         self.bc6.next = self.decode.bc6.val();
         self.bc7.next = self.decode.bc7.val();
+        self.dom7.next = self.decode.dom7.val();
+        self.delim_first.next = self.delim_first_q.q.val();
+        self.ack_pending.next = self.ack_pending_q.q.val();
         self.in_crc_field.next = self.field_q.q.val() == Field::Crc;
 
         // ---- synchronous reset
@@ -701,6 +729,9 @@ impl Logic for ProtocolFsm {
             self.recovery_cnt.d.next = self.n7_0.val();
             self.tx_q.d.next = true;
             self.last_bit_arb_q.d.next = false;
+            self.ack_pending_q.d.next = false;
+            self.delim_first_q.d.next = false;
+            self.dom_cnt.d.next = self.zero3.val();
             self.pending.d.next = false;
             self.abort_pending.d.next = false;
             self.attempt.d.next = false;

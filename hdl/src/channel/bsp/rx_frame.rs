@@ -19,7 +19,7 @@ pub struct RxFrame {
     /// The bus level at the sample point (true: recessive).
     pub sampled: Signal<In, Bit>,
     /// Position of the sampled bit in its field.
-    pub bit_cnt: Signal<In, Bits<7>>,
+    pub bit_cnt: Signal<In, Bits<6>>,
     /// `bit_cnt + 1`, the position of the next bit (shared adder).
     pub bit_cnt_inc: Signal<In, Bits<7>>,
     // capture strobes from the protocol controller (at a sample point)
@@ -81,6 +81,7 @@ pub struct RxFrame {
     zero7: Const<7, 0>,
     n7_64: Const<7, 64>,
     n6_63: Const<6, 63>,
+    zero3: Const<3, 0>,
     zero4: Const<4, 0>,
     zero29: Const<29, 0>,
     zero64: Const<64, 0>,
@@ -103,8 +104,13 @@ impl Logic for RxFrame {
         } else {
             self.data_bits.next = bit_cast::<7, 3>(self.dlc_n.val().get_bits::<3>(0)) << 3;
         }
-        self.no_data.next = self.data_bits.val() == self.zero7.val();
-        self.data_wr_idx.next = self.n6_63.val() - self.bit_cnt.val().get_bits::<6>(0);
+        // The same decision from the registers directly (data_bits is 0 exactly
+        // when RTR is recessive or the DLC is 0): this output feeds the protocol
+        // controller's next state, so it shares no signal with the capture logic
+        // that the controller's strobes drive (no false loop for Verilator).
+        self.no_data.next = self.rtr.q.val()
+            || ((self.dlc.q.val().get_bits::<3>(0) == self.zero3.val()) && !self.sampled.val());
+        self.data_wr_idx.next = self.n6_63.val() - self.bit_cnt.val();
         // Registered every clock; the next sample point is clocks away.
         self.data_end_q.d.next = self.bit_cnt_inc.val() == self.data_len.q.val();
         self.data_end.next = self.data_end_q.q.val();

@@ -31,12 +31,12 @@ pub struct TxFrame {
     /// The field the next bit belongs to.
     pub field: Signal<In, Field>,
     /// Position of the next bit in its field.
-    pub bit_cnt: Signal<In, Bits<7>>,
+    pub bit_cnt: Signal<In, Bits<6>>,
     /// The CRC register (the CRC sequence to send once the CRC field starts).
     pub crc: Signal<In, Bits<15>>,
     /// The latched frame's bit at `field`/`bit_cnt` (recessive outside the
     /// fields of a frame).
-    pub bit: Signal<Out, Bit>,
+    pub frame_bit: Signal<Out, Bit>,
     /// The latched frame is extended (its IDE bit is part of arbitration).
     pub frame_ide: Signal<Out, Bit>,
     // The identifier, aligned so the bit counter indexes it without an adder:
@@ -78,41 +78,41 @@ impl Logic for TxFrame {
         self.id_a_idx.next = !self.bit_cnt.val().get_bits::<4>(0);
         self.id_b_idx.next = !self.bit_cnt.val().get_bits::<5>(0);
         self.dlc_idx.next = !self.bit_cnt.val().get_bits::<2>(0);
-        self.data_idx.next = !self.bit_cnt.val().get_bits::<6>(0);
+        self.data_idx.next = !self.bit_cnt.val();
         self.crc_idx.next = !self.bit_cnt.val().get_bits::<4>(0);
         self.crc_tx.next = bit_cast::<16, 15>(self.crc.val()) << 1;
-        self.bit.next = true;
+        self.frame_bit.next = true;
         match self.field.val() {
             Field::IdA => {
-                self.bit.next = self.ida.q.val().get_bit(self.id_a_idx.val().index());
+                self.frame_bit.next = self.ida.q.val().get_bit(self.id_a_idx.val().index());
             }
             Field::SrrRtr => {
                 // SRR (recessive) in an extended frame, RTR in a base frame.
-                self.bit.next = self.ide_q.q.val() || self.rtr_q.q.val();
+                self.frame_bit.next = self.ide_q.q.val() || self.rtr_q.q.val();
             }
             Field::Ide => {
-                self.bit.next = self.ide_q.q.val();
+                self.frame_bit.next = self.ide_q.q.val();
             }
             Field::IdB => {
-                self.bit.next = self.idb.q.val().get_bit(self.id_b_idx.val().index());
+                self.frame_bit.next = self.idb.q.val().get_bit(self.id_b_idx.val().index());
             }
             Field::RtrExt => {
-                self.bit.next = self.rtr_q.q.val();
+                self.frame_bit.next = self.rtr_q.q.val();
             }
             Field::R1 => {
-                self.bit.next = false;
+                self.frame_bit.next = false;
             }
             Field::R0 => {
-                self.bit.next = false;
+                self.frame_bit.next = false;
             }
             Field::Dlc => {
-                self.bit.next = self.dlc_q.q.val().get_bit(self.dlc_idx.val().index());
+                self.frame_bit.next = self.dlc_q.q.val().get_bit(self.dlc_idx.val().index());
             }
             Field::Data => {
-                self.bit.next = self.data_q.q.val().get_bit(self.data_idx.val().index());
+                self.frame_bit.next = self.data_q.q.val().get_bit(self.data_idx.val().index());
             }
             Field::Crc => {
-                self.bit.next = self.crc_tx.val().get_bit(self.crc_idx.val().index());
+                self.frame_bit.next = self.crc_tx.val().get_bit(self.crc_idx.val().index());
             }
             _ => {}
         }
@@ -143,7 +143,7 @@ mod tests {
             uut.field.next = f;
             uut.bit_cnt.next = n.into();
             simulate(uut, 100);
-            bits.push(uut.bit.val() as u8);
+            bits.push(uut.frame_bit.val() as u8);
         };
         for n in 0..11 {
             read(&mut uut, Field::IdA, n);

@@ -39,55 +39,98 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock, Default)]
 pub struct ProtocolController {
     // clock and reset
+    /// Clock of the channel.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset.
     pub rst: Signal<In, Bit>,
     // from the bit timing logic
+    /// The sample point of the current bit (one clock).
     pub sample: Signal<In, Bit>,
+    /// The bus level at the sample point (true: recessive).
     pub sampled: Signal<In, Bit>,
+    /// The start of a bit: the `tx` pin may change.
     pub bit_start: Signal<In, Bit>,
+    /// This bit start is a hard synchronisation.
     pub hard_sync: Signal<In, Bit>,
     // to the bit timing logic and the pin
+    /// Hard synchronisation is allowed (between frames, 11.3.2.1).
     pub hard_sync_enable: Signal<Out, Bit>,
+    /// The CAN tx pin (true: recessive).
     pub tx: Signal<Out, Bit>,
     // configuration (held, from the configuration registers)
+    /// Operating mode: 0 normal, 1 listen-only, 2 self-test, 3 loop-back.
     pub mode: Signal<In, Bits<2>>,
+    /// Error warning limit.
     pub ewl: Signal<In, Bits<8>>,
+    /// No automatic retransmission.
     pub single_shot: Signal<In, Bit>,
     // host transmit interface
+    /// One clock: send the frame on tx_id..tx_data (taken while nothing is pending).
     pub tx_req: Signal<In, Bit>,
+    /// Identifier (base frame: ID[10:0]).
     pub tx_id: Signal<In, Bits<29>>,
+    /// Extended frame.
     pub tx_ide: Signal<In, Bit>,
+    /// Remote frame.
     pub tx_rtr: Signal<In, Bit>,
+    /// Data length code.
     pub tx_dlc: Signal<In, Bits<4>>,
+    /// Data, byte 0 in bits 63..56.
     pub tx_data: Signal<In, Bits<64>>,
+    /// Abort the pending frame (contract §8).
     pub tx_abort: Signal<In, Bit>,
+    /// A frame is pending.
     pub tx_pending: Signal<Out, Bit>,
+    /// One clock: the pending frame was dropped.
     pub tx_failed: Signal<Out, Bit>,
+    /// One clock: the frame was sent.
     pub tx_done: Signal<Out, Bit>,
+    /// One clock: arbitration was lost.
     pub arb_lost: Signal<Out, Bit>,
     // host receive interface
+    /// One clock: a frame was received.
     pub rx_valid: Signal<Out, Bit>,
+    /// Received identifier.
     pub rx_id: Signal<Out, Bits<29>>,
+    /// Received IDE bit.
     pub rx_ide: Signal<Out, Bit>,
+    /// Received RTR bit.
     pub rx_rtr: Signal<Out, Bit>,
+    /// Received data length code.
     pub rx_dlc: Signal<Out, Bits<4>>,
+    /// Received data, byte 0 in bits 63..56.
     pub rx_data: Signal<Out, Bits<64>>,
     // probes
+    /// The field the next bit belongs to (timing contract §4.1).
     pub field: Signal<Out, Field>,
+    /// Transmit error counter.
     pub tec: Signal<Out, Bits<9>>,
+    /// Receive error counter.
     pub rec: Signal<Out, Bits<8>>,
+    /// 0 error active, 1 error passive, 2 bus-off.
     pub err_state: Signal<Out, Bits<2>>,
     // diagnostics (contract §9)
+    /// TEC or REC at or above the error warning limit.
     pub err_warning: Signal<Out, Bit>,
+    /// One clock: an error was captured.
     pub err_valid: Signal<Out, Bit>,
+    /// Kind of the last error: 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK.
     pub err_kind: Signal<Out, Bits<3>>,
+    /// Field of the last error.
     pub err_field: Signal<Out, Field>,
+    /// The node was transmitter at the last error.
     pub err_tx: Signal<Out, Bit>,
+    /// Arbitration-lost position.
     pub alc: Signal<Out, Bits<5>>,
+    /// Bit errors counted (saturating).
     pub cnt_bit: Signal<Out, Bits<8>>,
+    /// Stuff errors counted (saturating).
     pub cnt_stuff: Signal<Out, Bits<8>>,
+    /// CRC errors counted (saturating).
     pub cnt_crc: Signal<Out, Bits<8>>,
+    /// Form errors counted (saturating).
     pub cnt_form: Signal<Out, Bits<8>>,
+    /// ACK errors counted (saturating).
     pub cnt_ack: Signal<Out, Bits<8>>,
     // operating mode
     listen_only: Signal<Local, Bit>,

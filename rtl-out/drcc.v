@@ -2283,47 +2283,8 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     output reg  [7:0] cnt_ack;
     
     // Constant declarations
-    localparam  k3_bit = 3'b1;
-    localparam  k3_stuff = 3'b10;
-    localparam  k3_crc = 3'b11;
-    localparam  k3_form = 3'b100;
-    localparam  k3_ack = 3'b101;
-    localparam  n2_1 = 2'b1;
-    localparam  n2_3m = 2'b11;
-    localparam  n5_11 = 5'b1011;
-    localparam  n5_12 = 5'b1100;
-    localparam  n5_13 = 5'b1101;
-    localparam  n5_31 = 5'b11111;
-    localparam  n8_1 = 8'h1;
-    localparam  n8_255 = 8'hff;
-    localparam  zero5 = 5'b0;
-    localparam  zero8 = 8'h0;
-    localparam  n7_0 = 7'b0;
-    localparam  n7_1 = 7'b1;
-    localparam  n7_2 = 7'b10;
-    localparam  n7_3 = 7'b11;
-    localparam  n7_5 = 7'b101;
-    localparam  n7_6 = 7'b110;
-    localparam  n7_7 = 7'b111;
-    localparam  n7_10 = 7'b1010;
-    localparam  n7_14 = 7'b1110;
-    localparam  n7_17 = 7'b10001;
-    localparam  n7_64 = 7'b1000000;
-    localparam  n7_127 = 7'b1111111;
-    localparam  n3_1 = 3'b1;
-    localparam  n3_5 = 3'b101;
-    localparam  n3_7 = 3'b111;
-    localparam  zero3 = 3'b0;
-    localparam  n9_120 = 9'b1111000;
-    localparam  n9_248 = 9'b11111000;
-    localparam  n8_120 = 8'h78;
-    localparam  n8_127 = 8'h7f;
-    localparam  n6_63 = 6'b111111;
-    localparam  n4_14 = 4'he;
-    localparam  zero4 = 4'h0;
-    localparam  zero15 = 15'b0;
-    localparam  zero29 = 29'h0;
-    localparam  zero64 = 64'h0;
+    localparam  mode_listen_only = 2'b1;
+    localparam  mode_loopback = 2'b11;
     
     // Enums
     localparam Field__Integrating = 0;
@@ -2351,15 +2312,869 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     localparam Field__BusOff = 22;
     
     // Stub signals
-    reg  abort_pending__d;
-    wire  abort_pending__q;
-    reg  abort_pending__clock;
-    reg  attempt__d;
-    wire  attempt__q;
-    reg  attempt__clock;
-    reg  tx_failed_q__d;
-    wire  tx_failed_q__q;
-    reg  tx_failed_q__clock;
+    reg  fsm__clk;
+    reg  fsm__rst;
+    reg  fsm__sample;
+    reg  fsm__sampled;
+    reg  fsm__bit_start;
+    reg  fsm__hard_sync;
+    wire  fsm__hard_sync_enable;
+    wire  fsm__tx;
+    reg  fsm__listen_only;
+    reg  fsm__loopback;
+    reg  fsm__single_shot;
+    reg  fsm__tx_req;
+    reg  fsm__tx_abort;
+    wire  fsm__tx_pending;
+    wire  fsm__tx_failed;
+    wire  fsm__tx_done;
+    wire  fsm__arb_lost;
+    wire  fsm__tx_load;
+    reg  fsm__frame_bit;
+    reg  fsm__frame_ide;
+    reg  fsm__stuff_insert;
+    reg  fsm__at_stuff_bit;
+    reg  fsm__stuff_last;
+    reg  fsm__crc_ok;
+    reg  fsm__no_data;
+    reg  fsm__data_end;
+    reg  fsm__error;
+    reg  fsm__flag_error;
+    reg  fsm__lost;
+    reg  fsm__sof_error;
+    reg  fsm__passive_after;
+    reg  fsm__bus_off_after;
+    reg  fsm__ack_defer;
+    reg  fsm__ack_counted;
+    reg  fsm__error_passive;
+    reg  fsm__bus_off;
+    wire  [4:0] fsm__field;
+    wire  [5:0] fsm__bit_cnt;
+    wire  [6:0] fsm__bit_cnt_inc;
+    wire  fsm__is_tx;
+    wire  fsm__flag_passive;
+    wire  fsm__last_bit_arb;
+    wire  fsm__delim_first;
+    wire  fsm__dom7;
+    wire  fsm__ack_pending;
+    wire  fsm__in_arbitration;
+    wire  fsm__in_frame;
+    wire  fsm__ack_slot;
+    wire  fsm__in_delim;
+    wire  fsm__after_error_flag;
+    wire  fsm__bc0;
+    wire  fsm__bc6;
+    wire  fsm__bc7;
+    wire  fsm__in_crc_field;
+    wire  fsm__sof;
+    wire  fsm__stuff_stop;
+    wire  fsm__stuff_resync;
+    wire  fsm__crc_step;
+    wire  fsm__crc_check;
+    wire  fsm__rx_shift_id;
+    wire  fsm__rx_take_srr_rtr;
+    wire  fsm__rx_take_ide;
+    wire  fsm__rx_take_rtr_ext;
+    wire  fsm__rx_take_dlc;
+    wire  fsm__rx_take_data_len;
+    wire  fsm__rx_take_data;
+    wire  fsm__rx_publish;
+    wire  fsm__tx_valid;
+    wire  fsm__recovered;
+    reg  stuffing__clk;
+    reg  stuffing__rst;
+    reg  stuffing__sample;
+    reg  stuffing__sampled;
+    reg  stuffing__start;
+    reg  stuffing__stop;
+    reg  stuffing__resync;
+    wire  stuffing__insert;
+    wire  stuffing__at_stuff_bit;
+    wire  stuffing__last;
+    reg  frame_crc__clk;
+    reg  frame_crc__rst;
+    reg  frame_crc__sampled;
+    reg  frame_crc__start;
+    reg  frame_crc__step;
+    reg  frame_crc__check;
+    reg  frame_crc__in_crc_field;
+    reg  [3:0] frame_crc__bit_cnt;
+    wire  [14:0] frame_crc__crc;
+    wire  frame_crc__crc_ok;
+    reg  tx_frame__clk;
+    reg  tx_frame__load;
+    reg  [28:0] tx_frame__id;
+    reg  tx_frame__ide;
+    reg  tx_frame__rtr;
+    reg  [3:0] tx_frame__dlc;
+    reg  [63:0] tx_frame__data;
+    reg  [4:0] tx_frame__field;
+    reg  [5:0] tx_frame__bit_cnt;
+    reg  [14:0] tx_frame__crc;
+    wire  tx_frame__frame_bit;
+    wire  tx_frame__frame_ide;
+    reg  rx_frame__clk;
+    reg  rx_frame__rst;
+    reg  rx_frame__sampled;
+    reg  [5:0] rx_frame__bit_cnt;
+    reg  [6:0] rx_frame__bit_cnt_inc;
+    reg  rx_frame__clear;
+    reg  rx_frame__shift_id;
+    reg  rx_frame__take_srr_rtr;
+    reg  rx_frame__take_ide;
+    reg  rx_frame__take_rtr_ext;
+    reg  rx_frame__take_dlc;
+    reg  rx_frame__take_data_len;
+    reg  rx_frame__take_data;
+    reg  rx_frame__publish;
+    wire  rx_frame__no_data;
+    wire  rx_frame__data_end;
+    wire  rx_frame__rx_valid;
+    wire  [28:0] rx_frame__rx_id;
+    wire  rx_frame__rx_ide;
+    wire  rx_frame__rx_rtr;
+    wire  [3:0] rx_frame__rx_dlc;
+    wire  [63:0] rx_frame__rx_data;
+    reg  detect__sample;
+    reg  detect__sampled;
+    reg  [4:0] detect__field;
+    reg  detect__is_tx;
+    reg  detect__tx_bit;
+    reg  detect__in_frame;
+    reg  detect__in_arbitration;
+    reg  detect__ack_slot;
+    reg  detect__in_delim;
+    reg  detect__bc0;
+    reg  detect__bc6;
+    reg  detect__bc7;
+    reg  detect__flag_passive;
+    reg  detect__crc_ok;
+    reg  detect__last_bit_arb;
+    reg  detect__at_stuff_bit;
+    reg  detect__stuff_last;
+    reg  detect__listen_only;
+    reg  detect__ack_check_off;
+    wire  detect__error;
+    wire  detect__flag_error;
+    wire  detect__bit_err;
+    wire  detect__stuff_err;
+    wire  detect__form_err;
+    wire  detect__crc_err;
+    wire  detect__ack_err;
+    wire  detect__sof_error;
+    wire  detect__lost;
+    wire  detect__tec_exempt;
+    reg  rules__clk;
+    reg  rules__sample;
+    reg  rules__sampled;
+    reg  rules__at_stuff_bit;
+    reg  [4:0] rules__field;
+    reg  rules__is_tx;
+    reg  rules__tx_bit;
+    reg  rules__flag_passive;
+    reg  rules__in_delim;
+    reg  rules__after_error_flag;
+    reg  rules__bc0;
+    reg  rules__delim_first;
+    reg  rules__dom7;
+    reg  rules__ack_pending;
+    reg  rules__tx_valid;
+    reg  rules__listen_only;
+    reg  rules__error;
+    reg  rules__flag_error;
+    reg  rules__ack_err;
+    reg  rules__tec_exempt;
+    reg  rules__as_tx;
+    reg  [8:0] rules__tec;
+    reg  [7:0] rules__rec;
+    reg  rules__error_passive;
+    reg  rules__bus_off;
+    wire  rules__tec_add8;
+    wire  rules__rec_add1;
+    wire  rules__rec_add8;
+    wire  rules__tx_success;
+    wire  rules__rx_success;
+    wire  rules__passive_after;
+    wire  rules__bus_off_after;
+    wire  rules__ack_defer;
+    wire  rules__ack_counted;
+    reg  fc__clk;
+    reg  fc__rst;
+    reg  fc__tec_add8;
+    reg  fc__rec_add1;
+    reg  fc__rec_add8;
+    reg  fc__tx_success;
+    reg  fc__rx_success;
+    reg  fc__recovered;
+    reg  [7:0] fc__ewl;
+    wire  [8:0] fc__tec;
+    wire  [7:0] fc__rec;
+    wire  [1:0] fc__err_state;
+    wire  fc__error_passive;
+    wire  fc__bus_off;
+    wire  fc__warning;
+    reg  err_capture__clk;
+    reg  err_capture__rst;
+    reg  err_capture__capture;
+    reg  err_capture__bit_err;
+    reg  err_capture__stuff_err;
+    reg  err_capture__form_err;
+    reg  err_capture__ack_err;
+    reg  err_capture__crc_err;
+    reg  err_capture__as_tx;
+    reg  err_capture__arb_lost;
+    reg  [4:0] err_capture__field;
+    reg  [4:0] err_capture__bit_cnt;
+    wire  err_capture__err_valid;
+    wire  [2:0] err_capture__err_kind;
+    wire  [4:0] err_capture__err_field;
+    wire  err_capture__err_tx;
+    wire  [4:0] err_capture__alc;
+    wire  [7:0] err_capture__cnt_bit;
+    wire  [7:0] err_capture__cnt_stuff;
+    wire  [7:0] err_capture__cnt_crc;
+    wire  [7:0] err_capture__cnt_form;
+    wire  [7:0] err_capture__cnt_ack;
+    
+    // Local signals
+    reg  listen_only;
+    reg  ack_check_off;
+    reg  loopback;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__fsm fsm(
+        .clk(fsm__clk),
+        .rst(fsm__rst),
+        .sample(fsm__sample),
+        .sampled(fsm__sampled),
+        .bit_start(fsm__bit_start),
+        .hard_sync(fsm__hard_sync),
+        .hard_sync_enable(fsm__hard_sync_enable),
+        .tx(fsm__tx),
+        .listen_only(fsm__listen_only),
+        .loopback(fsm__loopback),
+        .single_shot(fsm__single_shot),
+        .tx_req(fsm__tx_req),
+        .tx_abort(fsm__tx_abort),
+        .tx_pending(fsm__tx_pending),
+        .tx_failed(fsm__tx_failed),
+        .tx_done(fsm__tx_done),
+        .arb_lost(fsm__arb_lost),
+        .tx_load(fsm__tx_load),
+        .frame_bit(fsm__frame_bit),
+        .frame_ide(fsm__frame_ide),
+        .stuff_insert(fsm__stuff_insert),
+        .at_stuff_bit(fsm__at_stuff_bit),
+        .stuff_last(fsm__stuff_last),
+        .crc_ok(fsm__crc_ok),
+        .no_data(fsm__no_data),
+        .data_end(fsm__data_end),
+        .error(fsm__error),
+        .flag_error(fsm__flag_error),
+        .lost(fsm__lost),
+        .sof_error(fsm__sof_error),
+        .passive_after(fsm__passive_after),
+        .bus_off_after(fsm__bus_off_after),
+        .ack_defer(fsm__ack_defer),
+        .ack_counted(fsm__ack_counted),
+        .error_passive(fsm__error_passive),
+        .bus_off(fsm__bus_off),
+        .field(fsm__field),
+        .bit_cnt(fsm__bit_cnt),
+        .bit_cnt_inc(fsm__bit_cnt_inc),
+        .is_tx(fsm__is_tx),
+        .flag_passive(fsm__flag_passive),
+        .last_bit_arb(fsm__last_bit_arb),
+        .delim_first(fsm__delim_first),
+        .dom7(fsm__dom7),
+        .ack_pending(fsm__ack_pending),
+        .in_arbitration(fsm__in_arbitration),
+        .in_frame(fsm__in_frame),
+        .ack_slot(fsm__ack_slot),
+        .in_delim(fsm__in_delim),
+        .after_error_flag(fsm__after_error_flag),
+        .bc0(fsm__bc0),
+        .bc6(fsm__bc6),
+        .bc7(fsm__bc7),
+        .in_crc_field(fsm__in_crc_field),
+        .sof(fsm__sof),
+        .stuff_stop(fsm__stuff_stop),
+        .stuff_resync(fsm__stuff_resync),
+        .crc_step(fsm__crc_step),
+        .crc_check(fsm__crc_check),
+        .rx_shift_id(fsm__rx_shift_id),
+        .rx_take_srr_rtr(fsm__rx_take_srr_rtr),
+        .rx_take_ide(fsm__rx_take_ide),
+        .rx_take_rtr_ext(fsm__rx_take_rtr_ext),
+        .rx_take_dlc(fsm__rx_take_dlc),
+        .rx_take_data_len(fsm__rx_take_data_len),
+        .rx_take_data(fsm__rx_take_data),
+        .rx_publish(fsm__rx_publish),
+        .tx_valid(fsm__tx_valid),
+        .recovered(fsm__recovered)
+    );
+    drcc__chan_a__bsp__stuffing stuffing(
+        .clk(stuffing__clk),
+        .rst(stuffing__rst),
+        .sample(stuffing__sample),
+        .sampled(stuffing__sampled),
+        .start(stuffing__start),
+        .stop(stuffing__stop),
+        .resync(stuffing__resync),
+        .insert(stuffing__insert),
+        .at_stuff_bit(stuffing__at_stuff_bit),
+        .last(stuffing__last)
+    );
+    drcc__chan_a__bsp__frame_crc frame_crc(
+        .clk(frame_crc__clk),
+        .rst(frame_crc__rst),
+        .sampled(frame_crc__sampled),
+        .start(frame_crc__start),
+        .step(frame_crc__step),
+        .check(frame_crc__check),
+        .in_crc_field(frame_crc__in_crc_field),
+        .bit_cnt(frame_crc__bit_cnt),
+        .crc(frame_crc__crc),
+        .crc_ok(frame_crc__crc_ok)
+    );
+    drcc__chan_a__bsp__tx_frame tx_frame(
+        .clk(tx_frame__clk),
+        .load(tx_frame__load),
+        .id(tx_frame__id),
+        .ide(tx_frame__ide),
+        .rtr(tx_frame__rtr),
+        .dlc(tx_frame__dlc),
+        .data(tx_frame__data),
+        .field(tx_frame__field),
+        .bit_cnt(tx_frame__bit_cnt),
+        .crc(tx_frame__crc),
+        .frame_bit(tx_frame__frame_bit),
+        .frame_ide(tx_frame__frame_ide)
+    );
+    drcc__chan_a__bsp__rx_frame rx_frame(
+        .clk(rx_frame__clk),
+        .rst(rx_frame__rst),
+        .sampled(rx_frame__sampled),
+        .bit_cnt(rx_frame__bit_cnt),
+        .bit_cnt_inc(rx_frame__bit_cnt_inc),
+        .clear(rx_frame__clear),
+        .shift_id(rx_frame__shift_id),
+        .take_srr_rtr(rx_frame__take_srr_rtr),
+        .take_ide(rx_frame__take_ide),
+        .take_rtr_ext(rx_frame__take_rtr_ext),
+        .take_dlc(rx_frame__take_dlc),
+        .take_data_len(rx_frame__take_data_len),
+        .take_data(rx_frame__take_data),
+        .publish(rx_frame__publish),
+        .no_data(rx_frame__no_data),
+        .data_end(rx_frame__data_end),
+        .rx_valid(rx_frame__rx_valid),
+        .rx_id(rx_frame__rx_id),
+        .rx_ide(rx_frame__rx_ide),
+        .rx_rtr(rx_frame__rx_rtr),
+        .rx_dlc(rx_frame__rx_dlc),
+        .rx_data(rx_frame__rx_data)
+    );
+    drcc__chan_a__bsp__detect detect(
+        .sample(detect__sample),
+        .sampled(detect__sampled),
+        .field(detect__field),
+        .is_tx(detect__is_tx),
+        .tx_bit(detect__tx_bit),
+        .in_frame(detect__in_frame),
+        .in_arbitration(detect__in_arbitration),
+        .ack_slot(detect__ack_slot),
+        .in_delim(detect__in_delim),
+        .bc0(detect__bc0),
+        .bc6(detect__bc6),
+        .bc7(detect__bc7),
+        .flag_passive(detect__flag_passive),
+        .crc_ok(detect__crc_ok),
+        .last_bit_arb(detect__last_bit_arb),
+        .at_stuff_bit(detect__at_stuff_bit),
+        .stuff_last(detect__stuff_last),
+        .listen_only(detect__listen_only),
+        .ack_check_off(detect__ack_check_off),
+        .error(detect__error),
+        .flag_error(detect__flag_error),
+        .bit_err(detect__bit_err),
+        .stuff_err(detect__stuff_err),
+        .form_err(detect__form_err),
+        .crc_err(detect__crc_err),
+        .ack_err(detect__ack_err),
+        .sof_error(detect__sof_error),
+        .lost(detect__lost),
+        .tec_exempt(detect__tec_exempt)
+    );
+    drcc__chan_a__bsp__rules rules(
+        .clk(rules__clk),
+        .sample(rules__sample),
+        .sampled(rules__sampled),
+        .at_stuff_bit(rules__at_stuff_bit),
+        .field(rules__field),
+        .is_tx(rules__is_tx),
+        .tx_bit(rules__tx_bit),
+        .flag_passive(rules__flag_passive),
+        .in_delim(rules__in_delim),
+        .after_error_flag(rules__after_error_flag),
+        .bc0(rules__bc0),
+        .delim_first(rules__delim_first),
+        .dom7(rules__dom7),
+        .ack_pending(rules__ack_pending),
+        .tx_valid(rules__tx_valid),
+        .listen_only(rules__listen_only),
+        .error(rules__error),
+        .flag_error(rules__flag_error),
+        .ack_err(rules__ack_err),
+        .tec_exempt(rules__tec_exempt),
+        .as_tx(rules__as_tx),
+        .tec(rules__tec),
+        .rec(rules__rec),
+        .error_passive(rules__error_passive),
+        .bus_off(rules__bus_off),
+        .tec_add8(rules__tec_add8),
+        .rec_add1(rules__rec_add1),
+        .rec_add8(rules__rec_add8),
+        .tx_success(rules__tx_success),
+        .rx_success(rules__rx_success),
+        .passive_after(rules__passive_after),
+        .bus_off_after(rules__bus_off_after),
+        .ack_defer(rules__ack_defer),
+        .ack_counted(rules__ack_counted)
+    );
+    drcc__chan_a__bsp__fc fc(
+        .clk(fc__clk),
+        .rst(fc__rst),
+        .tec_add8(fc__tec_add8),
+        .rec_add1(fc__rec_add1),
+        .rec_add8(fc__rec_add8),
+        .tx_success(fc__tx_success),
+        .rx_success(fc__rx_success),
+        .recovered(fc__recovered),
+        .ewl(fc__ewl),
+        .tec(fc__tec),
+        .rec(fc__rec),
+        .err_state(fc__err_state),
+        .error_passive(fc__error_passive),
+        .bus_off(fc__bus_off),
+        .warning(fc__warning)
+    );
+    drcc__chan_a__bsp__err_capture err_capture(
+        .clk(err_capture__clk),
+        .rst(err_capture__rst),
+        .capture(err_capture__capture),
+        .bit_err(err_capture__bit_err),
+        .stuff_err(err_capture__stuff_err),
+        .form_err(err_capture__form_err),
+        .ack_err(err_capture__ack_err),
+        .crc_err(err_capture__crc_err),
+        .as_tx(err_capture__as_tx),
+        .arb_lost(err_capture__arb_lost),
+        .field(err_capture__field),
+        .bit_cnt(err_capture__bit_cnt),
+        .err_valid(err_capture__err_valid),
+        .err_kind(err_capture__err_kind),
+        .err_field(err_capture__err_field),
+        .err_tx(err_capture__err_tx),
+        .alc(err_capture__alc),
+        .cnt_bit(err_capture__cnt_bit),
+        .cnt_stuff(err_capture__cnt_stuff),
+        .cnt_crc(err_capture__cnt_crc),
+        .cnt_form(err_capture__cnt_form),
+        .cnt_ack(err_capture__cnt_ack)
+    );
+    
+    // Update code
+    always @(*) begin
+        fsm__clk = clk;
+        fsm__rst = rst;
+        stuffing__clk = clk;
+        stuffing__rst = rst;
+        frame_crc__clk = clk;
+        frame_crc__rst = rst;
+        tx_frame__clk = clk;
+        rx_frame__clk = clk;
+        rx_frame__rst = rst;
+        rules__clk = clk;
+        fc__clk = clk;
+        fc__rst = rst;
+        err_capture__clk = clk;
+        err_capture__rst = rst;
+        listen_only = mode == mode_listen_only;
+        ack_check_off = mode[32'h1];
+        loopback = mode == mode_loopback;
+        fsm__sample = sample;
+        fsm__sampled = sampled;
+        fsm__bit_start = bit_start;
+        fsm__hard_sync = hard_sync;
+        fsm__listen_only = listen_only;
+        fsm__loopback = loopback;
+        fsm__single_shot = single_shot;
+        fsm__tx_req = tx_req;
+        fsm__tx_abort = tx_abort;
+        fsm__frame_bit = tx_frame__frame_bit;
+        fsm__frame_ide = tx_frame__frame_ide;
+        fsm__stuff_insert = stuffing__insert;
+        fsm__at_stuff_bit = stuffing__at_stuff_bit;
+        fsm__stuff_last = stuffing__last;
+        fsm__crc_ok = frame_crc__crc_ok;
+        fsm__no_data = rx_frame__no_data;
+        fsm__data_end = rx_frame__data_end;
+        fsm__error = detect__error;
+        fsm__flag_error = detect__flag_error;
+        fsm__lost = detect__lost;
+        fsm__sof_error = detect__sof_error;
+        fsm__passive_after = rules__passive_after;
+        fsm__bus_off_after = rules__bus_off_after;
+        fsm__ack_defer = rules__ack_defer;
+        fsm__ack_counted = rules__ack_counted;
+        fsm__error_passive = fc__error_passive;
+        fsm__bus_off = fc__bus_off;
+        stuffing__sample = sample;
+        stuffing__sampled = sampled;
+        stuffing__start = fsm__sof;
+        stuffing__stop = fsm__stuff_stop;
+        stuffing__resync = fsm__stuff_resync;
+        frame_crc__sampled = sampled;
+        frame_crc__start = fsm__sof;
+        frame_crc__step = fsm__crc_step;
+        frame_crc__check = fsm__crc_check;
+        frame_crc__in_crc_field = fsm__in_crc_field;
+        frame_crc__bit_cnt = fsm__bit_cnt[(32'h0)+:(4)];
+        tx_frame__load = fsm__tx_load;
+        tx_frame__id = tx_id;
+        tx_frame__ide = tx_ide;
+        tx_frame__rtr = tx_rtr;
+        tx_frame__dlc = tx_dlc;
+        tx_frame__data = tx_data;
+        tx_frame__field = fsm__field;
+        tx_frame__bit_cnt = fsm__bit_cnt;
+        tx_frame__crc = frame_crc__crc;
+        rx_frame__sampled = sampled;
+        rx_frame__bit_cnt = fsm__bit_cnt;
+        rx_frame__bit_cnt_inc = fsm__bit_cnt_inc;
+        rx_frame__clear = fsm__sof;
+        rx_frame__shift_id = fsm__rx_shift_id;
+        rx_frame__take_srr_rtr = fsm__rx_take_srr_rtr;
+        rx_frame__take_ide = fsm__rx_take_ide;
+        rx_frame__take_rtr_ext = fsm__rx_take_rtr_ext;
+        rx_frame__take_dlc = fsm__rx_take_dlc;
+        rx_frame__take_data_len = fsm__rx_take_data_len;
+        rx_frame__take_data = fsm__rx_take_data;
+        rx_frame__publish = fsm__rx_publish;
+        detect__sample = sample;
+        detect__sampled = sampled;
+        detect__field = fsm__field;
+        detect__is_tx = fsm__is_tx;
+        detect__tx_bit = fsm__tx;
+        detect__in_frame = fsm__in_frame;
+        detect__in_arbitration = fsm__in_arbitration;
+        detect__ack_slot = fsm__ack_slot;
+        detect__in_delim = fsm__in_delim;
+        detect__bc0 = fsm__bc0;
+        detect__bc6 = fsm__bc6;
+        detect__bc7 = fsm__bc7;
+        detect__flag_passive = fsm__flag_passive;
+        detect__crc_ok = frame_crc__crc_ok;
+        detect__last_bit_arb = fsm__last_bit_arb;
+        detect__at_stuff_bit = stuffing__at_stuff_bit;
+        detect__stuff_last = stuffing__last;
+        detect__listen_only = listen_only;
+        detect__ack_check_off = ack_check_off;
+        rules__sample = sample;
+        rules__sampled = sampled;
+        rules__at_stuff_bit = stuffing__at_stuff_bit;
+        rules__field = fsm__field;
+        rules__is_tx = fsm__is_tx;
+        rules__tx_bit = fsm__tx;
+        rules__flag_passive = fsm__flag_passive;
+        rules__in_delim = fsm__in_delim;
+        rules__after_error_flag = fsm__after_error_flag;
+        rules__bc0 = fsm__bc0;
+        rules__delim_first = fsm__delim_first;
+        rules__dom7 = fsm__dom7;
+        rules__ack_pending = fsm__ack_pending;
+        rules__tx_valid = fsm__tx_valid;
+        rules__listen_only = listen_only;
+        rules__error = detect__error;
+        rules__flag_error = detect__flag_error;
+        rules__ack_err = detect__ack_err;
+        rules__tec_exempt = detect__tec_exempt;
+        rules__as_tx = fsm__is_tx || detect__sof_error;
+        rules__tec = fc__tec;
+        rules__rec = fc__rec;
+        rules__error_passive = fc__error_passive;
+        rules__bus_off = fc__bus_off;
+        fc__tec_add8 = rules__tec_add8;
+        fc__rec_add1 = rules__rec_add1;
+        fc__rec_add8 = rules__rec_add8;
+        fc__tx_success = rules__tx_success;
+        fc__rx_success = rules__rx_success;
+        fc__recovered = fsm__recovered;
+        fc__ewl = ewl;
+        err_capture__capture = detect__error || detect__flag_error;
+        err_capture__bit_err = detect__bit_err;
+        err_capture__stuff_err = detect__stuff_err;
+        err_capture__form_err = detect__form_err;
+        err_capture__ack_err = detect__ack_err;
+        err_capture__crc_err = detect__crc_err;
+        err_capture__as_tx = fsm__is_tx || detect__sof_error;
+        err_capture__arb_lost = detect__lost;
+        err_capture__field = fsm__field;
+        err_capture__bit_cnt = fsm__bit_cnt[(32'h0)+:(5)];
+        hard_sync_enable = fsm__hard_sync_enable;
+        tx = fsm__tx;
+        tx_pending = fsm__tx_pending;
+        tx_failed = fsm__tx_failed;
+        tx_done = fsm__tx_done;
+        arb_lost = fsm__arb_lost;
+        rx_valid = rx_frame__rx_valid;
+        rx_id = rx_frame__rx_id;
+        rx_ide = rx_frame__rx_ide;
+        rx_rtr = rx_frame__rx_rtr;
+        rx_dlc = rx_frame__rx_dlc;
+        rx_data = rx_frame__rx_data;
+        field = fsm__field;
+        tec = fc__tec;
+        rec = fc__rec;
+        err_state = fc__err_state;
+        err_warning = fc__warning;
+        err_valid = err_capture__err_valid;
+        err_kind = err_capture__err_kind;
+        err_field = err_capture__err_field;
+        err_tx = err_capture__err_tx;
+        alc = err_capture__alc;
+        cnt_bit = err_capture__cnt_bit;
+        cnt_stuff = err_capture__cnt_stuff;
+        cnt_crc = err_capture__cnt_crc;
+        cnt_form = err_capture__cnt_form;
+        cnt_ack = err_capture__cnt_ack;
+    end
+    
+endmodule // drcc__chan_a__bsp
+
+
+module drcc__chan_a__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  bit_mon;
+    reg  stuff_as_bit;
+    
+    // Update code
+    always @(*) begin
+        stuff_err = 1'b0;
+        stuff_as_bit = 1'b0;
+        tec_exempt = 1'b0;
+        bit_mon = 1'b0;
+        form_err = 1'b0;
+        crc_err = 1'b0;
+        ack_err = 1'b0;
+        flag_error = 1'b0;
+        sof_error = 1'b0;
+        lost = 1'b0;
+        if (sample && at_stuff_bit && (sampled == stuff_last)) begin
+            stuff_err = 1'b1;
+            if (is_tx && ~(last_bit_arb && tx_bit)) begin
+                stuff_as_bit = 1'b1;
+            end
+            if (is_tx && last_bit_arb && tx_bit) begin
+                tec_exempt = 1'b1;
+            end
+        end
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if (is_tx && in_frame && (sampled != tx_bit)) begin
+                if (in_arbitration && tx_bit) begin
+                    lost = 1'b1;
+                end
+                else if (ack_slot && tx_bit) begin
+                end
+                else begin
+                    bit_mon = 1'b1;
+                end
+            end
+            if (~is_tx && ack_slot && ~tx_bit && sampled) begin
+                bit_mon = 1'b1;
+            end
+            case (field)
+                Field__Idle:
+                    begin
+                        if (sampled && ~tx_bit) begin
+                            sof_error = 1'b1;
+                            bit_mon = 1'b1;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        form_err = ~sampled;
+                    end
+                Field__AckSlot:
+                    begin
+                        ack_err = is_tx && sampled && ~ack_check_off;
+                    end
+                Field__AckDelim:
+                    begin
+                        if (~sampled) begin
+                            form_err = 1'b1;
+                        end
+                        else if (~crc_ok && ~is_tx) begin
+                            crc_err = 1'b1;
+                        end
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled && ~(bc6 && ~is_tx)) begin
+                            form_err = 1'b1;
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        flag_error = ~flag_passive && sampled;
+                    end
+                Field__OverloadFlag:
+                    begin
+                        flag_error = sampled && ~listen_only;
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (in_delim && ~bc0 && ~sampled && ~bc7) begin
+                form_err = 1'b1;
+            end
+        end
+        error = stuff_err || bit_mon || form_err || crc_err || ack_err;
+        bit_err = stuff_as_bit || bit_mon || flag_error;
+    end
+    
+endmodule // drcc__chan_a__bsp__detect
+
+
+module drcc__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  capture;
+    input wire  bit_err;
+    input wire  stuff_err;
+    input wire  form_err;
+    input wire  ack_err;
+    input wire  crc_err;
+    input wire  as_tx;
+    input wire  arb_lost;
+    input wire  [4:0] field;
+    input wire  [4:0] bit_cnt;
+    output reg  err_valid;
+    output reg  [2:0] err_kind;
+    output reg  [4:0] err_field;
+    output reg  err_tx;
+    output reg  [4:0] alc;
+    output reg  [7:0] cnt_bit;
+    output reg  [7:0] cnt_stuff;
+    output reg  [7:0] cnt_crc;
+    output reg  [7:0] cnt_form;
+    output reg  [7:0] cnt_ack;
+    
+    // Constant declarations
+    localparam  k_bit = 3'b1;
+    localparam  k_stuff = 3'b10;
+    localparam  k_crc = 3'b11;
+    localparam  k_form = 3'b100;
+    localparam  k_ack = 3'b101;
+    localparam  zero3 = 3'b0;
+    localparam  n5_11 = 5'b1011;
+    localparam  n5_12 = 5'b1100;
+    localparam  n5_13 = 5'b1101;
+    localparam  n5_31 = 5'b11111;
+    localparam  zero5 = 5'b0;
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
     reg  err_valid_q__d;
     wire  err_valid_q__q;
     reg  err_valid_q__clock;
@@ -2390,154 +3205,9 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  [7:0] cnt_ack_q__d;
     wire  [7:0] cnt_ack_q__q;
     reg  cnt_ack_q__clock;
-    reg  [14:0] crc_step__crc;
-    reg  crc_step__data_bit;
-    wire  [14:0] crc_step__crc_next;
-    reg  fc__clk;
-    reg  fc__rst;
-    reg  fc__tec_add8;
-    reg  fc__rec_add1;
-    reg  fc__rec_add8;
-    reg  fc__tx_success;
-    reg  fc__rx_success;
-    reg  fc__recovered;
-    wire  [8:0] fc__tec;
-    wire  [7:0] fc__rec;
-    wire  [1:0] fc__err_state;
-    wire  fc__error_passive;
-    wire  fc__bus_off;
-    reg  [4:0] field_q__d;
-    wire  [4:0] field_q__q;
-    reg  field_q__clock;
-    reg  [6:0] bit_cnt__d;
-    wire  [6:0] bit_cnt__q;
-    reg  bit_cnt__clock;
-    reg  is_tx__d;
-    wire  is_tx__q;
-    reg  is_tx__clock;
-    reg  pending__d;
-    wire  pending__q;
-    reg  pending__clock;
-    reg  [2:0] stuff_cnt__d;
-    wire  [2:0] stuff_cnt__q;
-    reg  stuff_cnt__clock;
-    reg  stuff_last__d;
-    wire  stuff_last__q;
-    reg  stuff_last__clock;
-    reg  stuff_en__d;
-    wire  stuff_en__q;
-    reg  stuff_en__clock;
-    reg  [14:0] crc__d;
-    wire  [14:0] crc__q;
-    reg  crc__clock;
-    reg  crc_ok__d;
-    wire  crc_ok__q;
-    reg  crc_ok__clock;
-    reg  flag_passive__d;
-    wire  flag_passive__q;
-    reg  flag_passive__clock;
-    reg  [6:0] recovery_cnt__d;
-    wire  [6:0] recovery_cnt__q;
-    reg  recovery_cnt__clock;
-    reg  tx_q__d;
-    wire  tx_q__q;
-    reg  tx_q__clock;
-    reg  last_bit_arb__d;
-    wire  last_bit_arb__q;
-    reg  last_bit_arb__clock;
-    reg  [2:0] dom_cnt__d;
-    wire  [2:0] dom_cnt__q;
-    reg  dom_cnt__clock;
-    reg  delim_first__d;
-    wire  delim_first__q;
-    reg  delim_first__clock;
-    reg  ack_passive_pending__d;
-    wire  ack_passive_pending__q;
-    reg  ack_passive_pending__clock;
-    reg  p_in_arbitration__d;
-    wire  p_in_arbitration__q;
-    reg  p_in_arbitration__clock;
-    reg  p_ide__d;
-    wire  p_ide__q;
-    reg  p_ide__clock;
-    reg  p_in_frame__d;
-    wire  p_in_frame__q;
-    reg  p_in_frame__clock;
-    reg  p_crc_covered__d;
-    wire  p_crc_covered__q;
-    reg  p_crc_covered__clock;
-    reg  p_in_delim__d;
-    wire  p_in_delim__q;
-    reg  p_in_delim__clock;
-    reg  p_after_error_flag__d;
-    wire  p_after_error_flag__q;
-    reg  p_after_error_flag__clock;
-    reg  p_ack_slot__d;
-    wire  p_ack_slot__q;
-    reg  p_ack_slot__clock;
-    reg  p_stuff_bit__d;
-    wire  p_stuff_bit__q;
-    reg  p_stuff_bit__clock;
-    reg  p_bc0__d;
-    wire  p_bc0__q;
-    reg  p_bc0__clock;
-    reg  p_bc2__d;
-    wire  p_bc2__q;
-    reg  p_bc2__clock;
-    reg  p_bc3__d;
-    wire  p_bc3__q;
-    reg  p_bc3__clock;
-    reg  p_bc5__d;
-    wire  p_bc5__q;
-    reg  p_bc5__clock;
-    reg  p_bc6__d;
-    wire  p_bc6__q;
-    reg  p_bc6__clock;
-    reg  p_bc7__d;
-    wire  p_bc7__q;
-    reg  p_bc7__clock;
-    reg  p_bc10__d;
-    wire  p_bc10__q;
-    reg  p_bc10__clock;
-    reg  p_bc14__d;
-    wire  p_bc14__q;
-    reg  p_bc14__clock;
-    reg  p_bc17__d;
-    wire  p_bc17__q;
-    reg  p_bc17__clock;
-    reg  p_data_end__d;
-    wire  p_data_end__q;
-    reg  p_data_end__clock;
-    reg  p_recovery_end__d;
-    wire  p_recovery_end__q;
-    reg  p_recovery_end__clock;
-    reg  p_dom7__d;
-    wire  p_dom7__q;
-    reg  p_dom7__clock;
-    reg  p_crc_bit__d;
-    wire  p_crc_bit__q;
-    reg  p_crc_bit__clock;
-    reg  p_passive__d;
-    wire  p_passive__q;
-    reg  p_passive__clock;
-    reg  p_bus_off__d;
-    wire  p_bus_off__q;
-    reg  p_bus_off__clock;
-    reg  p_suspend_due__d;
-    wire  p_suspend_due__q;
-    reg  p_suspend_due__clock;
-    reg  p_tec_ge120__d;
-    wire  p_tec_ge120__q;
-    reg  p_tec_ge120__clock;
-    reg  p_tec_ge248__d;
-    wire  p_tec_ge248__q;
-    reg  p_tec_ge248__clock;
-    reg  p_rec_ge127__d;
-    wire  p_rec_ge127__q;
-    reg  p_rec_ge127__clock;
-    reg  p_rec_ge120__d;
-    wire  p_rec_ge120__q;
-    reg  p_rec_ge120__clock;
+    reg  [4:0] p_alc__d;
+    wire  [4:0] p_alc__q;
+    reg  p_alc__clock;
     reg  p_cnt_bit_max__d;
     wire  p_cnt_bit_max__q;
     reg  p_cnt_bit_max__clock;
@@ -2553,597 +3223,95 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  p_cnt_ack_max__d;
     wire  p_cnt_ack_max__q;
     reg  p_cnt_ack_max__clock;
-    reg  [4:0] p_alc__d;
-    wire  [4:0] p_alc__q;
-    reg  p_alc__clock;
-    reg  [15:0] txf_ida__d;
-    wire  [15:0] txf_ida__q;
-    reg  txf_ida__clock;
-    reg  [31:0] txf_idb__d;
-    wire  [31:0] txf_idb__q;
-    reg  txf_idb__clock;
-    reg  txf_ide__d;
-    wire  txf_ide__q;
-    reg  txf_ide__clock;
-    reg  txf_rtr__d;
-    wire  txf_rtr__q;
-    reg  txf_rtr__clock;
-    reg  [3:0] txf_dlc__d;
-    wire  [3:0] txf_dlc__q;
-    reg  txf_dlc__clock;
-    reg  [63:0] txf_data__d;
-    wire  [63:0] txf_data__q;
-    reg  txf_data__clock;
-    reg  [28:0] rxs_id__d;
-    wire  [28:0] rxs_id__q;
-    reg  rxs_id__clock;
-    reg  rxs_srr_rtr__d;
-    wire  rxs_srr_rtr__q;
-    reg  rxs_srr_rtr__clock;
-    reg  rxs_ide__d;
-    wire  rxs_ide__q;
-    reg  rxs_ide__clock;
-    reg  rxs_rtr__d;
-    wire  rxs_rtr__q;
-    reg  rxs_rtr__clock;
-    reg  [3:0] rxs_dlc__d;
-    wire  [3:0] rxs_dlc__q;
-    reg  rxs_dlc__clock;
-    reg  [63:0] rxs_data__d;
-    wire  [63:0] rxs_data__q;
-    reg  rxs_data__clock;
-    reg  [6:0] data_len__d;
-    wire  [6:0] data_len__q;
-    reg  data_len__clock;
-    reg  rx_valid_q__d;
-    wire  rx_valid_q__q;
-    reg  rx_valid_q__clock;
-    reg  tx_done_q__d;
-    wire  tx_done_q__q;
-    reg  tx_done_q__clock;
-    reg  arb_lost_q__d;
-    wire  arb_lost_q__q;
-    reg  arb_lost_q__clock;
-    reg  [28:0] rx_id_q__d;
-    wire  [28:0] rx_id_q__q;
-    reg  rx_id_q__clock;
-    reg  rx_ide_q__d;
-    wire  rx_ide_q__q;
-    reg  rx_ide_q__clock;
-    reg  rx_rtr_q__d;
-    wire  rx_rtr_q__q;
-    reg  rx_rtr_q__clock;
-    reg  [3:0] rx_dlc_q__d;
-    wire  [3:0] rx_dlc_q__q;
-    reg  rx_dlc_q__clock;
-    reg  [63:0] rx_data_q__d;
-    wire  [63:0] rx_data_q__q;
-    reg  rx_data_q__clock;
     
     // Local signals
-    reg  starts;
-    reg  join_starts;
-    reg  listen_only;
-    reg  ack_check_off;
-    reg  loopback;
-    reg  stuff_err;
-    reg  stuff_as_bit;
-    reg  bit_err;
-    reg  form_err;
-    reg  crc_err;
-    reg  lost;
-    reg  sof_error;
-    reg  [2:0] err_kind_n;
+    reg  [2:0] kind;
     reg  [4:0] alc_n;
-    reg  tx_bit;
-    reg  [4:0] field_n;
-    reg  [6:0] bit_cnt_n;
-    reg  [6:0] bit_cnt_inc;
-    reg  is_tx_n;
-    reg  [2:0] stuff_cnt_n;
-    reg  stuff_last_n;
-    reg  stuff_en_n;
-    reg  [14:0] crc_n;
-    reg  crc_ok_n;
-    reg  flag_passive_n;
-    reg  tx_bit_n;
-    reg  bus_bit;
-    reg  start_ok;
-    reg  in_arbitration;
-    reg  in_frame;
-    reg  in_delim;
-    reg  after_error_flag;
-    reg  sof;
-    reg  sof_as_tx;
-    reg  crc_covered;
-    reg  [3:0] dlc_n;
-    reg  [6:0] data_bits;
-    reg  error;
-    reg  flag_error;
-    reg  suspend_due;
-    reg  passive_after;
-    reg  ev_recovered;
-    reg  ev_rx_success;
-    reg  ev_tx_success;
-    reg  ev_rec_add8;
-    reg  ev_rec_add1;
-    reg  ev_tec_add8;
-    reg  bus_off_after;
-    reg  join_ok;
-    reg  tec_exempt;
-    reg  ack_error;
-    reg  [3:0] id_a_idx;
-    reg  [4:0] id_b_idx;
-    reg  [1:0] dlc_idx;
-    reg  [5:0] data_idx;
-    reg  [3:0] crc_idx;
-    reg  [15:0] crc_tx;
-    reg  [3:0] crc_rx_idx;
-    reg  [5:0] data_wr_idx;
     
     // Sub module instances
-    drcc__chan_a__bsp__abort_pending abort_pending(
-        .d(abort_pending__d),
-        .q(abort_pending__q),
-        .clock(abort_pending__clock)
-    );
-    drcc__chan_a__bsp__attempt attempt(
-        .d(attempt__d),
-        .q(attempt__q),
-        .clock(attempt__clock)
-    );
-    drcc__chan_a__bsp__tx_failed_q tx_failed_q(
-        .d(tx_failed_q__d),
-        .q(tx_failed_q__q),
-        .clock(tx_failed_q__clock)
-    );
-    drcc__chan_a__bsp__err_valid_q err_valid_q(
+    drcc__chan_a__bsp__err_capture__err_valid_q err_valid_q(
         .d(err_valid_q__d),
         .q(err_valid_q__q),
         .clock(err_valid_q__clock)
     );
-    drcc__chan_a__bsp__err_kind_q err_kind_q(
+    drcc__chan_a__bsp__err_capture__err_kind_q err_kind_q(
         .d(err_kind_q__d),
         .q(err_kind_q__q),
         .clock(err_kind_q__clock)
     );
-    drcc__chan_a__bsp__err_field_q err_field_q(
+    drcc__chan_a__bsp__err_capture__err_field_q err_field_q(
         .d(err_field_q__d),
         .q(err_field_q__q),
         .clock(err_field_q__clock)
     );
-    drcc__chan_a__bsp__err_tx_q err_tx_q(
+    drcc__chan_a__bsp__err_capture__err_tx_q err_tx_q(
         .d(err_tx_q__d),
         .q(err_tx_q__q),
         .clock(err_tx_q__clock)
     );
-    drcc__chan_a__bsp__alc_q alc_q(
+    drcc__chan_a__bsp__err_capture__alc_q alc_q(
         .d(alc_q__d),
         .q(alc_q__q),
         .clock(alc_q__clock)
     );
-    drcc__chan_a__bsp__cnt_bit_q cnt_bit_q(
+    drcc__chan_a__bsp__err_capture__cnt_bit_q cnt_bit_q(
         .d(cnt_bit_q__d),
         .q(cnt_bit_q__q),
         .clock(cnt_bit_q__clock)
     );
-    drcc__chan_a__bsp__cnt_stuff_q cnt_stuff_q(
+    drcc__chan_a__bsp__err_capture__cnt_stuff_q cnt_stuff_q(
         .d(cnt_stuff_q__d),
         .q(cnt_stuff_q__q),
         .clock(cnt_stuff_q__clock)
     );
-    drcc__chan_a__bsp__cnt_crc_q cnt_crc_q(
+    drcc__chan_a__bsp__err_capture__cnt_crc_q cnt_crc_q(
         .d(cnt_crc_q__d),
         .q(cnt_crc_q__q),
         .clock(cnt_crc_q__clock)
     );
-    drcc__chan_a__bsp__cnt_form_q cnt_form_q(
+    drcc__chan_a__bsp__err_capture__cnt_form_q cnt_form_q(
         .d(cnt_form_q__d),
         .q(cnt_form_q__q),
         .clock(cnt_form_q__clock)
     );
-    drcc__chan_a__bsp__cnt_ack_q cnt_ack_q(
+    drcc__chan_a__bsp__err_capture__cnt_ack_q cnt_ack_q(
         .d(cnt_ack_q__d),
         .q(cnt_ack_q__q),
         .clock(cnt_ack_q__clock)
     );
-    drcc__chan_a__bsp__crc_step crc_step(
-        .crc(crc_step__crc),
-        .data_bit(crc_step__data_bit),
-        .crc_next(crc_step__crc_next)
-    );
-    drcc__chan_a__bsp__fc fc(
-        .clk(fc__clk),
-        .rst(fc__rst),
-        .tec_add8(fc__tec_add8),
-        .rec_add1(fc__rec_add1),
-        .rec_add8(fc__rec_add8),
-        .tx_success(fc__tx_success),
-        .rx_success(fc__rx_success),
-        .recovered(fc__recovered),
-        .tec(fc__tec),
-        .rec(fc__rec),
-        .err_state(fc__err_state),
-        .error_passive(fc__error_passive),
-        .bus_off(fc__bus_off)
-    );
-    drcc__chan_a__bsp__field_q field_q(
-        .d(field_q__d),
-        .q(field_q__q),
-        .clock(field_q__clock)
-    );
-    drcc__chan_a__bsp__bit_cnt bit_cnt(
-        .d(bit_cnt__d),
-        .q(bit_cnt__q),
-        .clock(bit_cnt__clock)
-    );
-    drcc__chan_a__bsp__is_tx is_tx(
-        .d(is_tx__d),
-        .q(is_tx__q),
-        .clock(is_tx__clock)
-    );
-    drcc__chan_a__bsp__pending pending(
-        .d(pending__d),
-        .q(pending__q),
-        .clock(pending__clock)
-    );
-    drcc__chan_a__bsp__stuff_cnt stuff_cnt(
-        .d(stuff_cnt__d),
-        .q(stuff_cnt__q),
-        .clock(stuff_cnt__clock)
-    );
-    drcc__chan_a__bsp__stuff_last stuff_last(
-        .d(stuff_last__d),
-        .q(stuff_last__q),
-        .clock(stuff_last__clock)
-    );
-    drcc__chan_a__bsp__stuff_en stuff_en(
-        .d(stuff_en__d),
-        .q(stuff_en__q),
-        .clock(stuff_en__clock)
-    );
-    drcc__chan_a__bsp__crc crc(
-        .d(crc__d),
-        .q(crc__q),
-        .clock(crc__clock)
-    );
-    drcc__chan_a__bsp__crc_ok crc_ok(
-        .d(crc_ok__d),
-        .q(crc_ok__q),
-        .clock(crc_ok__clock)
-    );
-    drcc__chan_a__bsp__flag_passive flag_passive(
-        .d(flag_passive__d),
-        .q(flag_passive__q),
-        .clock(flag_passive__clock)
-    );
-    drcc__chan_a__bsp__recovery_cnt recovery_cnt(
-        .d(recovery_cnt__d),
-        .q(recovery_cnt__q),
-        .clock(recovery_cnt__clock)
-    );
-    drcc__chan_a__bsp__tx_q tx_q(
-        .d(tx_q__d),
-        .q(tx_q__q),
-        .clock(tx_q__clock)
-    );
-    drcc__chan_a__bsp__last_bit_arb last_bit_arb(
-        .d(last_bit_arb__d),
-        .q(last_bit_arb__q),
-        .clock(last_bit_arb__clock)
-    );
-    drcc__chan_a__bsp__dom_cnt dom_cnt(
-        .d(dom_cnt__d),
-        .q(dom_cnt__q),
-        .clock(dom_cnt__clock)
-    );
-    drcc__chan_a__bsp__delim_first delim_first(
-        .d(delim_first__d),
-        .q(delim_first__q),
-        .clock(delim_first__clock)
-    );
-    drcc__chan_a__bsp__ack_passive_pending ack_passive_pending(
-        .d(ack_passive_pending__d),
-        .q(ack_passive_pending__q),
-        .clock(ack_passive_pending__clock)
-    );
-    drcc__chan_a__bsp__p_in_arbitration p_in_arbitration(
-        .d(p_in_arbitration__d),
-        .q(p_in_arbitration__q),
-        .clock(p_in_arbitration__clock)
-    );
-    drcc__chan_a__bsp__p_ide p_ide(
-        .d(p_ide__d),
-        .q(p_ide__q),
-        .clock(p_ide__clock)
-    );
-    drcc__chan_a__bsp__p_in_frame p_in_frame(
-        .d(p_in_frame__d),
-        .q(p_in_frame__q),
-        .clock(p_in_frame__clock)
-    );
-    drcc__chan_a__bsp__p_crc_covered p_crc_covered(
-        .d(p_crc_covered__d),
-        .q(p_crc_covered__q),
-        .clock(p_crc_covered__clock)
-    );
-    drcc__chan_a__bsp__p_in_delim p_in_delim(
-        .d(p_in_delim__d),
-        .q(p_in_delim__q),
-        .clock(p_in_delim__clock)
-    );
-    drcc__chan_a__bsp__p_after_error_flag p_after_error_flag(
-        .d(p_after_error_flag__d),
-        .q(p_after_error_flag__q),
-        .clock(p_after_error_flag__clock)
-    );
-    drcc__chan_a__bsp__p_ack_slot p_ack_slot(
-        .d(p_ack_slot__d),
-        .q(p_ack_slot__q),
-        .clock(p_ack_slot__clock)
-    );
-    drcc__chan_a__bsp__p_stuff_bit p_stuff_bit(
-        .d(p_stuff_bit__d),
-        .q(p_stuff_bit__q),
-        .clock(p_stuff_bit__clock)
-    );
-    drcc__chan_a__bsp__p_bc0 p_bc0(
-        .d(p_bc0__d),
-        .q(p_bc0__q),
-        .clock(p_bc0__clock)
-    );
-    drcc__chan_a__bsp__p_bc2 p_bc2(
-        .d(p_bc2__d),
-        .q(p_bc2__q),
-        .clock(p_bc2__clock)
-    );
-    drcc__chan_a__bsp__p_bc3 p_bc3(
-        .d(p_bc3__d),
-        .q(p_bc3__q),
-        .clock(p_bc3__clock)
-    );
-    drcc__chan_a__bsp__p_bc5 p_bc5(
-        .d(p_bc5__d),
-        .q(p_bc5__q),
-        .clock(p_bc5__clock)
-    );
-    drcc__chan_a__bsp__p_bc6 p_bc6(
-        .d(p_bc6__d),
-        .q(p_bc6__q),
-        .clock(p_bc6__clock)
-    );
-    drcc__chan_a__bsp__p_bc7 p_bc7(
-        .d(p_bc7__d),
-        .q(p_bc7__q),
-        .clock(p_bc7__clock)
-    );
-    drcc__chan_a__bsp__p_bc10 p_bc10(
-        .d(p_bc10__d),
-        .q(p_bc10__q),
-        .clock(p_bc10__clock)
-    );
-    drcc__chan_a__bsp__p_bc14 p_bc14(
-        .d(p_bc14__d),
-        .q(p_bc14__q),
-        .clock(p_bc14__clock)
-    );
-    drcc__chan_a__bsp__p_bc17 p_bc17(
-        .d(p_bc17__d),
-        .q(p_bc17__q),
-        .clock(p_bc17__clock)
-    );
-    drcc__chan_a__bsp__p_data_end p_data_end(
-        .d(p_data_end__d),
-        .q(p_data_end__q),
-        .clock(p_data_end__clock)
-    );
-    drcc__chan_a__bsp__p_recovery_end p_recovery_end(
-        .d(p_recovery_end__d),
-        .q(p_recovery_end__q),
-        .clock(p_recovery_end__clock)
-    );
-    drcc__chan_a__bsp__p_dom7 p_dom7(
-        .d(p_dom7__d),
-        .q(p_dom7__q),
-        .clock(p_dom7__clock)
-    );
-    drcc__chan_a__bsp__p_crc_bit p_crc_bit(
-        .d(p_crc_bit__d),
-        .q(p_crc_bit__q),
-        .clock(p_crc_bit__clock)
-    );
-    drcc__chan_a__bsp__p_passive p_passive(
-        .d(p_passive__d),
-        .q(p_passive__q),
-        .clock(p_passive__clock)
-    );
-    drcc__chan_a__bsp__p_bus_off p_bus_off(
-        .d(p_bus_off__d),
-        .q(p_bus_off__q),
-        .clock(p_bus_off__clock)
-    );
-    drcc__chan_a__bsp__p_suspend_due p_suspend_due(
-        .d(p_suspend_due__d),
-        .q(p_suspend_due__q),
-        .clock(p_suspend_due__clock)
-    );
-    drcc__chan_a__bsp__p_tec_ge120 p_tec_ge120(
-        .d(p_tec_ge120__d),
-        .q(p_tec_ge120__q),
-        .clock(p_tec_ge120__clock)
-    );
-    drcc__chan_a__bsp__p_tec_ge248 p_tec_ge248(
-        .d(p_tec_ge248__d),
-        .q(p_tec_ge248__q),
-        .clock(p_tec_ge248__clock)
-    );
-    drcc__chan_a__bsp__p_rec_ge127 p_rec_ge127(
-        .d(p_rec_ge127__d),
-        .q(p_rec_ge127__q),
-        .clock(p_rec_ge127__clock)
-    );
-    drcc__chan_a__bsp__p_rec_ge120 p_rec_ge120(
-        .d(p_rec_ge120__d),
-        .q(p_rec_ge120__q),
-        .clock(p_rec_ge120__clock)
-    );
-    drcc__chan_a__bsp__p_cnt_bit_max p_cnt_bit_max(
-        .d(p_cnt_bit_max__d),
-        .q(p_cnt_bit_max__q),
-        .clock(p_cnt_bit_max__clock)
-    );
-    drcc__chan_a__bsp__p_cnt_stuff_max p_cnt_stuff_max(
-        .d(p_cnt_stuff_max__d),
-        .q(p_cnt_stuff_max__q),
-        .clock(p_cnt_stuff_max__clock)
-    );
-    drcc__chan_a__bsp__p_cnt_crc_max p_cnt_crc_max(
-        .d(p_cnt_crc_max__d),
-        .q(p_cnt_crc_max__q),
-        .clock(p_cnt_crc_max__clock)
-    );
-    drcc__chan_a__bsp__p_cnt_form_max p_cnt_form_max(
-        .d(p_cnt_form_max__d),
-        .q(p_cnt_form_max__q),
-        .clock(p_cnt_form_max__clock)
-    );
-    drcc__chan_a__bsp__p_cnt_ack_max p_cnt_ack_max(
-        .d(p_cnt_ack_max__d),
-        .q(p_cnt_ack_max__q),
-        .clock(p_cnt_ack_max__clock)
-    );
-    drcc__chan_a__bsp__p_alc p_alc(
+    drcc__chan_a__bsp__err_capture__p_alc p_alc(
         .d(p_alc__d),
         .q(p_alc__q),
         .clock(p_alc__clock)
     );
-    drcc__chan_a__bsp__txf_ida txf_ida(
-        .d(txf_ida__d),
-        .q(txf_ida__q),
-        .clock(txf_ida__clock)
+    drcc__chan_a__bsp__err_capture__p_cnt_bit_max p_cnt_bit_max(
+        .d(p_cnt_bit_max__d),
+        .q(p_cnt_bit_max__q),
+        .clock(p_cnt_bit_max__clock)
     );
-    drcc__chan_a__bsp__txf_idb txf_idb(
-        .d(txf_idb__d),
-        .q(txf_idb__q),
-        .clock(txf_idb__clock)
+    drcc__chan_a__bsp__err_capture__p_cnt_stuff_max p_cnt_stuff_max(
+        .d(p_cnt_stuff_max__d),
+        .q(p_cnt_stuff_max__q),
+        .clock(p_cnt_stuff_max__clock)
     );
-    drcc__chan_a__bsp__txf_ide txf_ide(
-        .d(txf_ide__d),
-        .q(txf_ide__q),
-        .clock(txf_ide__clock)
+    drcc__chan_a__bsp__err_capture__p_cnt_crc_max p_cnt_crc_max(
+        .d(p_cnt_crc_max__d),
+        .q(p_cnt_crc_max__q),
+        .clock(p_cnt_crc_max__clock)
     );
-    drcc__chan_a__bsp__txf_rtr txf_rtr(
-        .d(txf_rtr__d),
-        .q(txf_rtr__q),
-        .clock(txf_rtr__clock)
+    drcc__chan_a__bsp__err_capture__p_cnt_form_max p_cnt_form_max(
+        .d(p_cnt_form_max__d),
+        .q(p_cnt_form_max__q),
+        .clock(p_cnt_form_max__clock)
     );
-    drcc__chan_a__bsp__txf_dlc txf_dlc(
-        .d(txf_dlc__d),
-        .q(txf_dlc__q),
-        .clock(txf_dlc__clock)
-    );
-    drcc__chan_a__bsp__txf_data txf_data(
-        .d(txf_data__d),
-        .q(txf_data__q),
-        .clock(txf_data__clock)
-    );
-    drcc__chan_a__bsp__rxs_id rxs_id(
-        .d(rxs_id__d),
-        .q(rxs_id__q),
-        .clock(rxs_id__clock)
-    );
-    drcc__chan_a__bsp__rxs_srr_rtr rxs_srr_rtr(
-        .d(rxs_srr_rtr__d),
-        .q(rxs_srr_rtr__q),
-        .clock(rxs_srr_rtr__clock)
-    );
-    drcc__chan_a__bsp__rxs_ide rxs_ide(
-        .d(rxs_ide__d),
-        .q(rxs_ide__q),
-        .clock(rxs_ide__clock)
-    );
-    drcc__chan_a__bsp__rxs_rtr rxs_rtr(
-        .d(rxs_rtr__d),
-        .q(rxs_rtr__q),
-        .clock(rxs_rtr__clock)
-    );
-    drcc__chan_a__bsp__rxs_dlc rxs_dlc(
-        .d(rxs_dlc__d),
-        .q(rxs_dlc__q),
-        .clock(rxs_dlc__clock)
-    );
-    drcc__chan_a__bsp__rxs_data rxs_data(
-        .d(rxs_data__d),
-        .q(rxs_data__q),
-        .clock(rxs_data__clock)
-    );
-    drcc__chan_a__bsp__data_len data_len(
-        .d(data_len__d),
-        .q(data_len__q),
-        .clock(data_len__clock)
-    );
-    drcc__chan_a__bsp__rx_valid_q rx_valid_q(
-        .d(rx_valid_q__d),
-        .q(rx_valid_q__q),
-        .clock(rx_valid_q__clock)
-    );
-    drcc__chan_a__bsp__tx_done_q tx_done_q(
-        .d(tx_done_q__d),
-        .q(tx_done_q__q),
-        .clock(tx_done_q__clock)
-    );
-    drcc__chan_a__bsp__arb_lost_q arb_lost_q(
-        .d(arb_lost_q__d),
-        .q(arb_lost_q__q),
-        .clock(arb_lost_q__clock)
-    );
-    drcc__chan_a__bsp__rx_id_q rx_id_q(
-        .d(rx_id_q__d),
-        .q(rx_id_q__q),
-        .clock(rx_id_q__clock)
-    );
-    drcc__chan_a__bsp__rx_ide_q rx_ide_q(
-        .d(rx_ide_q__d),
-        .q(rx_ide_q__q),
-        .clock(rx_ide_q__clock)
-    );
-    drcc__chan_a__bsp__rx_rtr_q rx_rtr_q(
-        .d(rx_rtr_q__d),
-        .q(rx_rtr_q__q),
-        .clock(rx_rtr_q__clock)
-    );
-    drcc__chan_a__bsp__rx_dlc_q rx_dlc_q(
-        .d(rx_dlc_q__d),
-        .q(rx_dlc_q__q),
-        .clock(rx_dlc_q__clock)
-    );
-    drcc__chan_a__bsp__rx_data_q rx_data_q(
-        .d(rx_data_q__d),
-        .q(rx_data_q__q),
-        .clock(rx_data_q__clock)
+    drcc__chan_a__bsp__err_capture__p_cnt_ack_max p_cnt_ack_max(
+        .d(p_cnt_ack_max__d),
+        .q(p_cnt_ack_max__q),
+        .clock(p_cnt_ack_max__clock)
     );
     
     // Update code
     always @(*) begin
-        field_q__clock = clk;
-        bit_cnt__clock = clk;
-        is_tx__clock = clk;
-        pending__clock = clk;
-        stuff_cnt__clock = clk;
-        stuff_last__clock = clk;
-        stuff_en__clock = clk;
-        crc__clock = clk;
-        crc_ok__clock = clk;
-        flag_passive__clock = clk;
-        recovery_cnt__clock = clk;
-        tx_q__clock = clk;
-        last_bit_arb__clock = clk;
-        dom_cnt__clock = clk;
-        delim_first__clock = clk;
-        ack_passive_pending__clock = clk;
-        abort_pending__clock = clk;
-        attempt__clock = clk;
-        tx_failed_q__clock = clk;
         err_valid_q__clock = clk;
         err_kind_q__clock = clk;
         err_field_q__clock = clk;
@@ -3154,80 +3322,12 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__clock = clk;
         cnt_form_q__clock = clk;
         cnt_ack_q__clock = clk;
-        p_in_arbitration__clock = clk;
-        p_ide__clock = clk;
-        p_in_frame__clock = clk;
-        p_crc_covered__clock = clk;
-        p_in_delim__clock = clk;
-        p_after_error_flag__clock = clk;
-        p_ack_slot__clock = clk;
-        p_stuff_bit__clock = clk;
-        p_bc0__clock = clk;
-        p_bc2__clock = clk;
-        p_bc3__clock = clk;
-        p_bc5__clock = clk;
-        p_bc6__clock = clk;
-        p_bc7__clock = clk;
-        p_bc10__clock = clk;
-        p_bc14__clock = clk;
-        p_bc17__clock = clk;
-        p_data_end__clock = clk;
-        p_recovery_end__clock = clk;
-        p_dom7__clock = clk;
-        p_crc_bit__clock = clk;
-        p_passive__clock = clk;
-        p_bus_off__clock = clk;
-        p_suspend_due__clock = clk;
-        p_tec_ge120__clock = clk;
-        p_tec_ge248__clock = clk;
-        p_rec_ge127__clock = clk;
-        p_rec_ge120__clock = clk;
+        p_alc__clock = clk;
         p_cnt_bit_max__clock = clk;
         p_cnt_stuff_max__clock = clk;
         p_cnt_crc_max__clock = clk;
         p_cnt_form_max__clock = clk;
         p_cnt_ack_max__clock = clk;
-        p_alc__clock = clk;
-        txf_ida__clock = clk;
-        txf_idb__clock = clk;
-        txf_ide__clock = clk;
-        txf_rtr__clock = clk;
-        txf_dlc__clock = clk;
-        txf_data__clock = clk;
-        rxs_id__clock = clk;
-        rxs_srr_rtr__clock = clk;
-        rxs_ide__clock = clk;
-        rxs_rtr__clock = clk;
-        rxs_dlc__clock = clk;
-        rxs_data__clock = clk;
-        data_len__clock = clk;
-        rx_valid_q__clock = clk;
-        tx_done_q__clock = clk;
-        arb_lost_q__clock = clk;
-        rx_id_q__clock = clk;
-        rx_ide_q__clock = clk;
-        rx_rtr_q__clock = clk;
-        rx_dlc_q__clock = clk;
-        rx_data_q__clock = clk;
-        field_q__d = field_q__q;
-        bit_cnt__d = bit_cnt__q;
-        is_tx__d = is_tx__q;
-        pending__d = pending__q;
-        stuff_cnt__d = stuff_cnt__q;
-        stuff_last__d = stuff_last__q;
-        stuff_en__d = stuff_en__q;
-        crc__d = crc__q;
-        crc_ok__d = crc_ok__q;
-        flag_passive__d = flag_passive__q;
-        recovery_cnt__d = recovery_cnt__q;
-        tx_q__d = tx_q__q;
-        last_bit_arb__d = last_bit_arb__q;
-        dom_cnt__d = dom_cnt__q;
-        delim_first__d = delim_first__q;
-        ack_passive_pending__d = ack_passive_pending__q;
-        abort_pending__d = abort_pending__q;
-        attempt__d = attempt__q;
-        tx_failed_q__d = tx_failed_q__q;
         err_valid_q__d = err_valid_q__q;
         err_kind_q__d = err_kind_q__q;
         err_field_q__d = err_field_q__q;
@@ -3238,137 +3338,16 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__d = cnt_crc_q__q;
         cnt_form_q__d = cnt_form_q__q;
         cnt_ack_q__d = cnt_ack_q__q;
-        p_in_arbitration__d = p_in_arbitration__q;
-        p_ide__d = p_ide__q;
-        p_in_frame__d = p_in_frame__q;
-        p_crc_covered__d = p_crc_covered__q;
-        p_in_delim__d = p_in_delim__q;
-        p_after_error_flag__d = p_after_error_flag__q;
-        p_ack_slot__d = p_ack_slot__q;
-        p_stuff_bit__d = p_stuff_bit__q;
-        p_bc0__d = p_bc0__q;
-        p_bc2__d = p_bc2__q;
-        p_bc3__d = p_bc3__q;
-        p_bc5__d = p_bc5__q;
-        p_bc6__d = p_bc6__q;
-        p_bc7__d = p_bc7__q;
-        p_bc10__d = p_bc10__q;
-        p_bc14__d = p_bc14__q;
-        p_bc17__d = p_bc17__q;
-        p_data_end__d = p_data_end__q;
-        p_recovery_end__d = p_recovery_end__q;
-        p_dom7__d = p_dom7__q;
-        p_crc_bit__d = p_crc_bit__q;
-        p_passive__d = p_passive__q;
-        p_bus_off__d = p_bus_off__q;
-        p_suspend_due__d = p_suspend_due__q;
-        p_tec_ge120__d = p_tec_ge120__q;
-        p_tec_ge248__d = p_tec_ge248__q;
-        p_rec_ge127__d = p_rec_ge127__q;
-        p_rec_ge120__d = p_rec_ge120__q;
+        p_alc__d = p_alc__q;
         p_cnt_bit_max__d = p_cnt_bit_max__q;
         p_cnt_stuff_max__d = p_cnt_stuff_max__q;
         p_cnt_crc_max__d = p_cnt_crc_max__q;
         p_cnt_form_max__d = p_cnt_form_max__q;
         p_cnt_ack_max__d = p_cnt_ack_max__q;
-        p_alc__d = p_alc__q;
-        txf_ida__d = txf_ida__q;
-        txf_idb__d = txf_idb__q;
-        txf_ide__d = txf_ide__q;
-        txf_rtr__d = txf_rtr__q;
-        txf_dlc__d = txf_dlc__q;
-        txf_data__d = txf_data__q;
-        rxs_id__d = rxs_id__q;
-        rxs_srr_rtr__d = rxs_srr_rtr__q;
-        rxs_ide__d = rxs_ide__q;
-        rxs_rtr__d = rxs_rtr__q;
-        rxs_dlc__d = rxs_dlc__q;
-        rxs_data__d = rxs_data__q;
-        data_len__d = data_len__q;
-        rx_valid_q__d = rx_valid_q__q;
-        tx_done_q__d = tx_done_q__q;
-        arb_lost_q__d = arb_lost_q__q;
-        rx_id_q__d = rx_id_q__q;
-        rx_ide_q__d = rx_ide_q__q;
-        rx_rtr_q__d = rx_rtr_q__q;
-        rx_dlc_q__d = rx_dlc_q__q;
-        rx_data_q__d = rx_data_q__q;
-        fc__clk = clk;
-        fc__rst = rst;
-        crc_step__crc = crc__q;
-        crc_step__data_bit = sampled;
-        field_n = field_q__q;
-        bit_cnt_n = bit_cnt__q;
-        bit_cnt_inc = bit_cnt__q + n7_1;
-        is_tx_n = is_tx__q;
-        stuff_cnt_n = stuff_cnt__q;
-        stuff_last_n = stuff_last__q;
-        stuff_en_n = stuff_en__q;
-        crc_n = crc__q;
-        crc_ok_n = crc_ok__q;
-        flag_passive_n = flag_passive__q;
-        bus_bit = sampled;
-        listen_only = mode == n2_1;
-        ack_check_off = mode[32'h1];
-        loopback = mode == n2_3m;
-        start_ok = pending__q && ~fc__bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
-        stuff_err = 1'b0;
-        stuff_as_bit = 1'b0;
-        bit_err = 1'b0;
-        form_err = 1'b0;
-        crc_err = 1'b0;
-        lost = 1'b0;
-        sof_error = 1'b0;
-        tx_failed_q__d = 1'b0;
-        err_valid_q__d = 1'b0;
-        if (~pending__q) begin
-            abort_pending__d = 1'b0;
-        end
-        if ((tx_abort || abort_pending__q) && pending__q) begin
-            if (~is_tx__q && tx_q__q) begin
-                pending__d = 1'b0;
-                tx_failed_q__d = 1'b1;
-                abort_pending__d = 1'b0;
-            end
-            else begin
-                abort_pending__d = 1'b1;
-            end
-        end
-        sof = 1'b0;
-        sof_as_tx = 1'b0;
-        error = 1'b0;
-        flag_error = 1'b0;
-        passive_after = 1'b0;
-        bus_off_after = 1'b0;
-        suspend_due = p_suspend_due__q;
-        join_ok = start_ok && ~suspend_due;
-        starts = (~tx_q__q && pending__q) || start_ok;
-        join_starts = (~tx_q__q && pending__q) || join_ok;
-        tec_exempt = 1'b0;
-        ack_error = 1'b0;
-        ev_tec_add8 = 1'b0;
-        ev_rec_add1 = 1'b0;
-        ev_rec_add8 = 1'b0;
-        ev_tx_success = 1'b0;
-        ev_rx_success = 1'b0;
-        ev_recovered = 1'b0;
-        rx_valid_q__d = 1'b0;
-        tx_done_q__d = 1'b0;
-        arb_lost_q__d = 1'b0;
-        dlc_n = (rxs_dlc__q << 32'h1) | ((bus_bit) & 4'hf);
-        if (rxs_rtr__q) begin
-            data_bits = n7_0;
-        end
-        else if (dlc_n[32'h3]) begin
-            data_bits = n7_64;
-        end
-        else begin
-            data_bits = ((dlc_n[(32'h0)+:(3)]) & 7'h7f) << 32'h3;
-        end
-        case (field_q__q)
+        case (field)
             Field__IdA:
                 begin
-                    alc_n = bit_cnt__q[(32'h0)+:(5)];
+                    alc_n = bit_cnt;
                 end
             Field__SrrRtr:
                 begin
@@ -3380,831 +3359,61 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 end
             Field__IdB:
                 begin
-                    alc_n = n5_13 + bit_cnt__q[(32'h0)+:(5)];
+                    alc_n = n5_13 + bit_cnt;
                 end
             default:
                 begin
                     alc_n = n5_31;
                 end
         endcase
-        err_kind_n = k3_crc;
-        crc_rx_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
-        data_wr_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
-        p_in_arbitration__d = 1'b0;
-        p_ide__d = 1'b0;
-        p_in_frame__d = 1'b0;
-        p_crc_covered__d = 1'b0;
-        p_in_delim__d = 1'b0;
-        p_after_error_flag__d = 1'b0;
-        case (field_q__q)
-            Field__ErrorDelim:
-                begin
-                    p_in_delim__d = 1'b1;
-                    p_after_error_flag__d = 1'b1;
-                end
-            Field__OverloadDelim:
-                begin
-                    p_in_delim__d = 1'b1;
-                end
-            Field__IdA:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__SrrRtr:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Ide:
-                begin
-                    p_in_arbitration__d = 1'b0;
-                    p_ide__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__IdB:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__RtrExt:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__R1:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__R0:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Dlc:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Data:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Crc:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__CrcDelim:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__AckSlot:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__AckDelim:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__Eof:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            default:
-                begin
-                end
-        endcase
-        p_ack_slot__d = field_q__q == Field__AckSlot;
-        p_stuff_bit__d = stuff_en__q && (stuff_cnt__q == n3_5);
-        p_bc0__d = bit_cnt__q == n7_0;
-        p_bc2__d = bit_cnt__q == n7_2;
-        p_bc3__d = bit_cnt__q == n7_3;
-        p_bc5__d = bit_cnt__q == n7_5;
-        p_bc6__d = bit_cnt__q == n7_6;
-        p_bc7__d = bit_cnt__q == n7_7;
-        p_bc10__d = bit_cnt__q == n7_10;
-        p_bc14__d = bit_cnt__q == n7_14;
-        p_bc17__d = bit_cnt__q == n7_17;
-        p_data_end__d = bit_cnt_inc == data_len__q;
-        p_recovery_end__d = recovery_cnt__q == n7_127;
-        p_dom7__d = dom_cnt__q == n3_7;
-        p_crc_bit__d = 1'b0;
-        if (field_q__q == Field__Crc) begin
-            p_crc_bit__d = crc__q[crc_rx_idx];
-        end
         p_alc__d = alc_n;
-        p_passive__d = fc__error_passive;
-        p_bus_off__d = fc__bus_off;
-        p_suspend_due__d = is_tx__q && fc__error_passive;
-        p_tec_ge120__d = fc__tec >= n9_120;
-        p_tec_ge248__d = fc__tec >= n9_248;
-        p_rec_ge127__d = fc__rec >= n8_127;
-        p_rec_ge120__d = fc__rec >= n8_120;
-        p_cnt_bit_max__d = cnt_bit_q__q == n8_255;
-        p_cnt_stuff_max__d = cnt_stuff_q__q == n8_255;
-        p_cnt_crc_max__d = cnt_crc_q__q == n8_255;
-        p_cnt_form_max__d = cnt_form_q__q == n8_255;
-        p_cnt_ack_max__d = cnt_ack_q__q == n8_255;
-        in_arbitration = p_in_arbitration__q || (p_ide__q && txf_ide__q);
-        in_frame = p_in_frame__q;
-        crc_covered = p_crc_covered__q;
-        in_delim = p_in_delim__q;
-        after_error_flag = p_after_error_flag__q;
-        if (sample) begin
-            if (p_stuff_bit__q) begin
-                if (sampled == stuff_last__q) begin
-                    error = 1'b1;
-                    stuff_err = 1'b1;
-                    if (is_tx__q && ~(last_bit_arb__q && tx_q__q)) begin
-                        stuff_as_bit = 1'b1;
-                    end
-                    if (is_tx__q && last_bit_arb__q && tx_q__q) begin
-                        tec_exempt = 1'b1;
-                    end
-                end
-                else begin
-                    stuff_cnt_n = n3_1;
-                    stuff_last_n = sampled;
-                end
-            end
-            else begin
-                last_bit_arb__d = in_arbitration;
-                if (stuff_en__q) begin
-                    if (sampled == stuff_last__q) begin
-                        stuff_cnt_n = stuff_cnt__q + n3_1;
-                    end
-                    else begin
-                        stuff_cnt_n = n3_1;
-                        stuff_last_n = sampled;
-                    end
-                end
-                if (crc_covered) begin
-                    crc_n = crc_step__crc_next;
-                end
-                if (is_tx__q && in_frame && (sampled != tx_q__q)) begin
-                    if (in_arbitration && tx_q__q) begin
-                        is_tx_n = 1'b0;
-                        arb_lost_q__d = 1'b1;
-                        lost = 1'b1;
-                        alc_q__d = p_alc__q;
-                    end
-                    else if (p_ack_slot__q && tx_q__q) begin
-                    end
-                    else begin
-                        error = 1'b1;
-                        bit_err = 1'b1;
-                    end
-                end
-                if (~is_tx__q && p_ack_slot__q && ~tx_q__q && sampled) begin
-                    error = 1'b1;
-                    bit_err = 1'b1;
-                end
-                case (field_q__q)
-                    Field__Integrating:
-                        begin
-                            if (sampled) begin
-                                if (p_bc10__q) begin
-                                    field_n = Field__Idle;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                            else begin
-                                bit_cnt_n = n7_0;
-                            end
-                        end
-                    Field__Idle:
-                        begin
-                            if (~sampled) begin
-                                sof = 1'b1;
-                                sof_as_tx = starts;
-                            end
-                            else if (~tx_q__q) begin
-                                is_tx_n = 1'b1;
-                                sof_error = 1'b1;
-                                error = 1'b1;
-                                bit_err = 1'b1;
-                            end
-                        end
-                    Field__Suspend:
-                        begin
-                            if (~sampled) begin
-                                sof = 1'b1;
-                            end
-                            else if (p_bc7__q) begin
-                                field_n = Field__Idle;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__Intermission:
-                        begin
-                            if (~sampled) begin
-                                if (p_bc2__q) begin
-                                    sof = 1'b1;
-                                    sof_as_tx = join_starts;
-                                end
-                                else begin
-                                    field_n = Field__OverloadFlag;
-                                    bit_cnt_n = n7_0;
-                                end
-                            end
-                            else if (p_bc2__q) begin
-                                if (suspend_due) begin
-                                    field_n = Field__Suspend;
-                                end
-                                else begin
-                                    field_n = Field__Idle;
-                                end
-                                is_tx_n = 1'b0;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__IdA:
-                        begin
-                            rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (p_bc10__q) begin
-                                field_n = Field__SrrRtr;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__SrrRtr:
-                        begin
-                            rxs_srr_rtr__d = sampled;
-                            field_n = Field__Ide;
-                        end
-                    Field__Ide:
-                        begin
-                            rxs_ide__d = sampled;
-                            if (sampled) begin
-                                field_n = Field__IdB;
-                            end
-                            else begin
-                                rxs_rtr__d = rxs_srr_rtr__q;
-                                field_n = Field__R0;
-                            end
-                            bit_cnt_n = n7_0;
-                        end
-                    Field__IdB:
-                        begin
-                            rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (p_bc17__q) begin
-                                field_n = Field__RtrExt;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__RtrExt:
-                        begin
-                            rxs_rtr__d = sampled;
-                            field_n = Field__R1;
-                        end
-                    Field__R1:
-                        begin
-                            field_n = Field__R0;
-                        end
-                    Field__R0:
-                        begin
-                            field_n = Field__Dlc;
-                            bit_cnt_n = n7_0;
-                        end
-                    Field__Dlc:
-                        begin
-                            rxs_dlc__d = dlc_n;
-                            if (p_bc3__q) begin
-                                data_len__d = data_bits;
-                                if (data_bits == n7_0) begin
-                                    field_n = Field__Crc;
-                                end
-                                else begin
-                                    field_n = Field__Data;
-                                end
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__Data:
-                        begin
-                            rxs_data__d = (rxs_data__q & ~(1 << (data_wr_idx)) | ((sampled) << (data_wr_idx)));
-                            if (p_data_end__q) begin
-                                field_n = Field__Crc;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__Crc:
-                        begin
-                            if (sampled != p_crc_bit__q) begin
-                                crc_ok_n = 1'b0;
-                            end
-                            if (p_bc14__q) begin
-                                field_n = Field__CrcDelim;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__CrcDelim:
-                        begin
-                            stuff_en_n = 1'b0;
-                            if (~sampled) begin
-                                error = 1'b1;
-                                form_err = 1'b1;
-                            end
-                            field_n = Field__AckSlot;
-                        end
-                    Field__AckSlot:
-                        begin
-                            if (is_tx__q && sampled && ~ack_check_off) begin
-                                error = 1'b1;
-                                ack_error = 1'b1;
-                            end
-                            if (~is_tx__q && ~tx_q__q && ~sampled) begin
-                                ev_rx_success = 1'b1;
-                            end
-                            field_n = Field__AckDelim;
-                        end
-                    Field__AckDelim:
-                        begin
-                            if (~sampled) begin
-                                error = 1'b1;
-                                form_err = 1'b1;
-                            end
-                            else if (~crc_ok__q && ~is_tx__q) begin
-                                error = 1'b1;
-                                crc_err = 1'b1;
-                            end
-                            field_n = Field__Eof;
-                            bit_cnt_n = n7_0;
-                        end
-                    Field__Eof:
-                        begin
-                            if (~sampled) begin
-                                if ((p_bc6__q) && ~is_tx__q) begin
-                                    field_n = Field__OverloadFlag;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    error = 1'b1;
-                                    form_err = 1'b1;
-                                end
-                            end
-                            else begin
-                                if ((p_bc5__q) && (~is_tx__q || loopback)) begin
-                                    rx_valid_q__d = 1'b1;
-                                    rx_id_q__d = rxs_id__q;
-                                    rx_ide_q__d = rxs_ide__q;
-                                    rx_rtr_q__d = rxs_rtr__q;
-                                    rx_dlc_q__d = rxs_dlc__q;
-                                    rx_data_q__d = rxs_data__q;
-                                end
-                                if (p_bc6__q) begin
-                                    if (is_tx__q) begin
-                                        tx_done_q__d = 1'b1;
-                                        pending__d = 1'b0;
-                                        attempt__d = 1'b0;
-                                        abort_pending__d = 1'b0;
-                                        ev_tx_success = 1'b1;
-                                    end
-                                    field_n = Field__Intermission;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                        end
-                    Field__ErrorFlag:
-                        begin
-                            if (flag_passive__q) begin
-                                if (ack_passive_pending__q && ~sampled) begin
-                                    ev_tec_add8 = 1'b1;
-                                    ack_passive_pending__d = 1'b0;
-                                end
-                                if ((p_bc0__q) || (sampled != stuff_last__q)) begin
-                                    bit_cnt_n = n7_1;
-                                    stuff_last_n = sampled;
-                                end
-                                else if (p_bc5__q) begin
-                                    field_n = Field__ErrorDelim;
-                                    bit_cnt_n = n7_0;
-                                    delim_first__d = 1'b1;
-                                    dom_cnt__d = zero3;
-                                    ack_passive_pending__d = 1'b0;
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                            else if (sampled) begin
-                                flag_error = 1'b1;
-                            end
-                            else if (p_bc5__q) begin
-                                field_n = Field__ErrorDelim;
-                                bit_cnt_n = n7_0;
-                                delim_first__d = 1'b1;
-                                dom_cnt__d = zero3;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__OverloadFlag:
-                        begin
-                            if (sampled && ~listen_only) begin
-                                flag_error = 1'b1;
-                            end
-                            else if (p_bc5__q) begin
-                                field_n = Field__OverloadDelim;
-                                bit_cnt_n = n7_0;
-                                delim_first__d = 1'b1;
-                                dom_cnt__d = zero3;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__BusOff:
-                        begin
-                            if (sampled) begin
-                                if (p_bc10__q) begin
-                                    bit_cnt_n = n7_0;
-                                    if (p_recovery_end__q) begin
-                                        field_n = Field__Idle;
-                                        ev_recovered = 1'b1;
-                                        recovery_cnt__d = n7_0;
-                                    end
-                                    else begin
-                                        recovery_cnt__d = recovery_cnt__q + n7_1;
-                                    end
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                            else begin
-                                bit_cnt_n = n7_0;
-                            end
-                        end
-                    default:
-                        begin
-                        end
-                endcase
-                if (in_delim) begin
-                    if (p_bc0__q) begin
-                        delim_first__d = 1'b0;
-                        if (sampled) begin
-                            bit_cnt_n = n7_1;
-                        end
-                        else begin
-                            if (delim_first__q && after_error_flag && ~is_tx__q) begin
-                                ev_rec_add8 = 1'b1;
-                            end
-                            dom_cnt__d = dom_cnt__q + n3_1;
-                            if (p_dom7__q) begin
-                                if (is_tx__q) begin
-                                    ev_tec_add8 = 1'b1;
-                                end
-                                else begin
-                                    ev_rec_add8 = 1'b1;
-                                end
-                            end
-                        end
-                    end
-                    else if (~sampled) begin
-                        if (p_bc7__q) begin
-                            field_n = Field__OverloadFlag;
-                            bit_cnt_n = n7_0;
-                        end
-                        else begin
-                            error = 1'b1;
-                            form_err = 1'b1;
-                        end
-                    end
-                    else if (p_bc7__q) begin
-                        field_n = Field__Intermission;
-                        bit_cnt_n = n7_0;
-                    end
-                    else begin
-                        bit_cnt_n = bit_cnt_inc;
-                    end
-                end
-            end
-            if (sof) begin
-                field_n = Field__IdA;
-                bit_cnt_n = n7_0;
-                is_tx_n = sof_as_tx;
-                attempt__d = sof_as_tx;
-                stuff_en_n = 1'b1;
-                stuff_cnt_n = n3_1;
-                stuff_last_n = 1'b0;
-                crc_n = zero15;
-                crc_ok_n = 1'b1;
-                rxs_id__d = zero29;
-                rxs_data__d = zero64;
-                rxs_rtr__d = 1'b0;
-            end
-            if (stuff_as_bit || bit_err || flag_error) begin
-                err_kind_n = k3_bit;
-            end
-            else if (stuff_err) begin
-                err_kind_n = k3_stuff;
-            end
-            else if (form_err) begin
-                err_kind_n = k3_form;
-            end
-            else if (ack_error) begin
-                err_kind_n = k3_ack;
-            end
-            else if (crc_err) begin
-                err_kind_n = k3_crc;
-            end
-            if (error) begin
-                if (is_tx_n) begin
-                    if (ack_error && p_passive__q) begin
-                        ack_passive_pending__d = 1'b1;
-                    end
-                    else if (~tec_exempt) begin
-                        ev_tec_add8 = 1'b1;
-                    end
-                end
-                else begin
-                    ev_rec_add1 = 1'b1;
-                end
-            end
-            if (flag_error) begin
-                if (is_tx__q) begin
-                    ev_tec_add8 = 1'b1;
-                end
-                else begin
-                    ev_rec_add8 = 1'b1;
-                end
-            end
-            passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
-            bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
-            if (error || flag_error) begin
-                field_n = Field__ErrorFlag;
-                bit_cnt_n = n7_0;
-                stuff_en_n = 1'b0;
-                flag_passive_n = passive_after || listen_only;
-                err_valid_q__d = 1'b1;
-                err_kind_q__d = err_kind_n;
-                err_field_q__d = field_q__q;
-                err_tx_q__d = is_tx__q || sof_error;
-                if ((err_kind_n == k3_bit) && ~p_cnt_bit_max__q) begin
-                    cnt_bit_q__d = cnt_bit_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_stuff) && ~p_cnt_stuff_max__q) begin
-                    cnt_stuff_q__d = cnt_stuff_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_crc) && ~p_cnt_crc_max__q) begin
-                    cnt_crc_q__d = cnt_crc_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_form) && ~p_cnt_form_max__q) begin
-                    cnt_form_q__d = cnt_form_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_ack) && ~p_cnt_ack_max__q) begin
-                    cnt_ack_q__d = cnt_ack_q__q + n8_1;
-                end
-            end
-            if ((attempt__q && is_tx__q && (lost || error || flag_error)) || sof_error) begin
-                attempt__d = 1'b0;
-                if (single_shot || abort_pending__q) begin
-                    pending__d = 1'b0;
-                    tx_failed_q__d = 1'b1;
-                    abort_pending__d = 1'b0;
-                end
-            end
-            if (bus_off_after) begin
-                field_n = Field__BusOff;
-                is_tx_n = 1'b0;
-                attempt__d = 1'b0;
-                bit_cnt_n = n7_0;
-                recovery_cnt__d = n7_0;
-            end
-            field_q__d = field_n;
-            bit_cnt__d = bit_cnt_n;
-            is_tx__d = is_tx_n;
-            stuff_cnt__d = stuff_cnt_n;
-            stuff_last__d = stuff_last_n;
-            stuff_en__d = stuff_en_n;
-            crc__d = crc_n;
-            crc_ok__d = crc_ok_n;
-            flag_passive__d = flag_passive_n;
+        p_cnt_bit_max__d = cnt_bit_q__q == max8;
+        p_cnt_stuff_max__d = cnt_stuff_q__q == max8;
+        p_cnt_crc_max__d = cnt_crc_q__q == max8;
+        p_cnt_form_max__d = cnt_form_q__q == max8;
+        p_cnt_ack_max__d = cnt_ack_q__q == max8;
+        kind = k_crc;
+        if (bit_err) begin
+            kind = k_bit;
         end
-        fc__tec_add8 = ev_tec_add8 && ~listen_only;
-        fc__rec_add1 = ev_rec_add1 && ~listen_only;
-        fc__rec_add8 = ev_rec_add8 && ~listen_only;
-        fc__tx_success = ev_tx_success && ~listen_only;
-        fc__rx_success = ev_rx_success && ~listen_only;
-        fc__recovered = ev_recovered;
-        id_a_idx = ~bit_cnt__q[(32'h0)+:(4)];
-        id_b_idx = ~bit_cnt__q[(32'h0)+:(5)];
-        dlc_idx = ~bit_cnt__q[(32'h0)+:(2)];
-        data_idx = ~bit_cnt__q[(32'h0)+:(6)];
-        crc_idx = ~bit_cnt__q[(32'h0)+:(4)];
-        crc_tx = ((crc__q) & 16'hffff) << 32'h1;
-        tx_bit_n = 1'b1;
-        case (field_q__q)
-            Field__ErrorFlag:
-                begin
-                    tx_bit_n = flag_passive__q;
-                end
-            Field__OverloadFlag:
-                begin
-                    tx_bit_n = 1'b0;
-                end
-            Field__AckSlot:
-                begin
-                    tx_bit_n = is_tx__q || ~crc_ok__q;
-                end
-            default:
-                begin
-                    if (is_tx__q) begin
-                        if (stuff_en__q && (stuff_cnt__q == n3_5)) begin
-                            tx_bit_n = ~stuff_last__q;
-                        end
-                        else begin
-                            case (field_q__q)
-                                Field__IdA:
-                                    begin
-                                        tx_bit_n = txf_ida__q[id_a_idx];
-                                    end
-                                Field__SrrRtr:
-                                    begin
-                                        tx_bit_n = txf_ide__q || txf_rtr__q;
-                                    end
-                                Field__Ide:
-                                    begin
-                                        tx_bit_n = txf_ide__q;
-                                    end
-                                Field__IdB:
-                                    begin
-                                        tx_bit_n = txf_idb__q[id_b_idx];
-                                    end
-                                Field__RtrExt:
-                                    begin
-                                        tx_bit_n = txf_rtr__q;
-                                    end
-                                Field__R1:
-                                    begin
-                                        tx_bit_n = 1'b0;
-                                    end
-                                Field__R0:
-                                    begin
-                                        tx_bit_n = 1'b0;
-                                    end
-                                Field__Dlc:
-                                    begin
-                                        tx_bit_n = txf_dlc__q[dlc_idx];
-                                    end
-                                Field__Data:
-                                    begin
-                                        tx_bit_n = txf_data__q[data_idx];
-                                    end
-                                Field__Crc:
-                                    begin
-                                        tx_bit_n = crc_tx[crc_idx];
-                                    end
-                                default:
-                                    begin
-                                    end
-                            endcase
-                        end
-                    end
-                end
-        endcase
-        tx_bit = tx_bit_n || listen_only;
-        if (bit_start) begin
-            if (hard_sync && (field_q__q == Field__Idle)) begin
-                tx_q__d = ~starts;
+        else if (stuff_err) begin
+            kind = k_stuff;
+        end
+        else if (form_err) begin
+            kind = k_form;
+        end
+        else if (ack_err) begin
+            kind = k_ack;
+        end
+        else if (crc_err) begin
+            kind = k_crc;
+        end
+        err_valid_q__d = 1'b0;
+        if (capture) begin
+            err_valid_q__d = 1'b1;
+            err_kind_q__d = kind;
+            err_field_q__d = field;
+            err_tx_q__d = as_tx;
+            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
+                cnt_bit_q__d = cnt_bit_q__q + one8;
             end
-            else if (hard_sync && (field_q__q == Field__Intermission)) begin
-                tx_q__d = 1'b1;
+            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
+                cnt_stuff_q__d = cnt_stuff_q__q + one8;
             end
-            else if (hard_sync && (field_q__q == Field__Suspend)) begin
-                tx_q__d = 1'b1;
+            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
+                cnt_crc_q__d = cnt_crc_q__q + one8;
             end
-            else if (field_q__q == Field__Idle) begin
-                tx_q__d = ~starts;
+            if ((kind == k_form) && ~p_cnt_form_max__q) begin
+                cnt_form_q__d = cnt_form_q__q + one8;
             end
-            else begin
-                tx_q__d = tx_bit;
+            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
+                cnt_ack_q__d = cnt_ack_q__q + one8;
             end
         end
-        if (tx_req && ~pending__q && listen_only) begin
-            tx_failed_q__d = 1'b1;
+        if (arb_lost) begin
+            alc_q__d = p_alc__q;
         end
-        else if (tx_req && ~pending__q) begin
-            pending__d = 1'b1;
-            if (tx_ide) begin
-                txf_ida__d = ((tx_id[(32'h12)+:(11)]) & 16'hffff) << 32'h5;
-            end
-            else begin
-                txf_ida__d = ((tx_id[(32'h0)+:(11)]) & 16'hffff) << 32'h5;
-            end
-            txf_idb__d = ((tx_id[(32'h0)+:(18)]) & 32'hffffffff) << 32'he;
-            txf_ide__d = tx_ide;
-            txf_rtr__d = tx_rtr;
-            txf_dlc__d = tx_dlc;
-            txf_data__d = tx_data;
-        end
-        case (field_q__q)
-            Field__Integrating:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Idle:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Suspend:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__BusOff:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Intermission:
-                begin
-                    hard_sync_enable = bit_cnt__q[32'h1];
-                end
-            default:
-                begin
-                    hard_sync_enable = 1'b0;
-                end
-        endcase
-        tx = tx_q__q;
-        tx_pending = pending__q;
-        tx_done = tx_done_q__q;
-        arb_lost = arb_lost_q__q;
-        rx_valid = rx_valid_q__q;
-        rx_id = rx_id_q__q;
-        rx_ide = rx_ide_q__q;
-        rx_rtr = rx_rtr_q__q;
-        rx_dlc = rx_dlc_q__q;
-        rx_data = rx_data_q__q;
-        field = field_q__q;
-        tec = fc__tec;
-        rec = fc__rec;
-        err_state = fc__err_state;
-        tx_failed = tx_failed_q__q;
-        err_warning = (fc__tec >= ((ewl) & 9'h1ff)) || (fc__rec >= ewl);
-        err_valid = err_valid_q__q;
-        err_kind = err_kind_q__q;
-        err_field = err_field_q__q;
-        err_tx = err_tx_q__q;
-        alc = alc_q__q;
-        cnt_bit = cnt_bit_q__q;
-        cnt_stuff = cnt_stuff_q__q;
-        cnt_crc = cnt_crc_q__q;
-        cnt_form = cnt_form_q__q;
-        cnt_ack = cnt_ack_q__q;
         if (rst) begin
-            field_q__d = Field__Integrating;
-            bit_cnt__d = n7_0;
-            is_tx__d = 1'b0;
-            pending__d = 1'b0;
-            stuff_cnt__d = n3_1;
-            stuff_last__d = 1'b0;
-            stuff_en__d = 1'b0;
-            crc__d = zero15;
-            crc_ok__d = 1'b1;
-            flag_passive__d = 1'b0;
-            recovery_cnt__d = n7_0;
-            tx_q__d = 1'b1;
-            last_bit_arb__d = 1'b0;
-            dom_cnt__d = zero3;
-            delim_first__d = 1'b0;
-            ack_passive_pending__d = 1'b0;
-            abort_pending__d = 1'b0;
-            attempt__d = 1'b0;
-            tx_failed_q__d = 1'b0;
             err_valid_q__d = 1'b0;
             err_kind_q__d = zero3;
             err_field_q__d = Field__Integrating;
@@ -4215,53 +3424,23 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
             cnt_crc_q__d = zero8;
             cnt_form_q__d = zero8;
             cnt_ack_q__d = zero8;
-            rx_valid_q__d = 1'b0;
-            tx_done_q__d = 1'b0;
-            arb_lost_q__d = 1'b0;
-            rx_id_q__d = zero29;
-            rx_ide_q__d = 1'b0;
-            rx_rtr_q__d = 1'b0;
-            rx_dlc_q__d = zero4;
-            rx_data_q__d = zero64;
         end
+        err_valid = err_valid_q__q;
+        err_kind = err_kind_q__q;
+        err_field = err_field_q__q;
+        err_tx = err_tx_q__q;
+        alc = alc_q__q;
+        cnt_bit = cnt_bit_q__q;
+        cnt_stuff = cnt_stuff_q__q;
+        cnt_crc = cnt_crc_q__q;
+        cnt_form = cnt_form_q__q;
+        cnt_ack = cnt_ack_q__q;
     end
     
-endmodule // drcc__chan_a__bsp
+endmodule // drcc__chan_a__bsp__err_capture
 
 
-module drcc__chan_a__bsp__abort_pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__abort_pending
-
-
-module drcc__chan_a__bsp__ack_passive_pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__ack_passive_pending
-
-
-module drcc__chan_a__bsp__alc_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__alc_q(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -4274,58 +3453,10 @@ module drcc__chan_a__bsp__alc_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__alc_q
+endmodule // drcc__chan_a__bsp__err_capture__alc_q
 
 
-module drcc__chan_a__bsp__arb_lost_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__arb_lost_q
-
-
-module drcc__chan_a__bsp__attempt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__attempt
-
-
-module drcc__chan_a__bsp__bit_cnt(d,q,clock);
-    
-    // Module arguments
-    input wire  [6:0] d;
-    output reg  [6:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__bit_cnt
-
-
-module drcc__chan_a__bsp__cnt_ack_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__cnt_ack_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -4338,10 +3469,10 @@ module drcc__chan_a__bsp__cnt_ack_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__cnt_ack_q
+endmodule // drcc__chan_a__bsp__err_capture__cnt_ack_q
 
 
-module drcc__chan_a__bsp__cnt_bit_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__cnt_bit_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -4354,10 +3485,10 @@ module drcc__chan_a__bsp__cnt_bit_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__cnt_bit_q
+endmodule // drcc__chan_a__bsp__err_capture__cnt_bit_q
 
 
-module drcc__chan_a__bsp__cnt_crc_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__cnt_crc_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -4370,10 +3501,10 @@ module drcc__chan_a__bsp__cnt_crc_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__cnt_crc_q
+endmodule // drcc__chan_a__bsp__err_capture__cnt_crc_q
 
 
-module drcc__chan_a__bsp__cnt_form_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__cnt_form_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -4386,10 +3517,10 @@ module drcc__chan_a__bsp__cnt_form_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__cnt_form_q
+endmodule // drcc__chan_a__bsp__err_capture__cnt_form_q
 
 
-module drcc__chan_a__bsp__cnt_stuff_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__cnt_stuff_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -4402,118 +3533,10 @@ module drcc__chan_a__bsp__cnt_stuff_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__cnt_stuff_q
+endmodule // drcc__chan_a__bsp__err_capture__cnt_stuff_q
 
 
-module drcc__chan_a__bsp__crc(d,q,clock);
-    
-    // Module arguments
-    input wire  [14:0] d;
-    output reg  [14:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__crc
-
-
-module drcc__chan_a__bsp__crc_ok(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__crc_ok
-
-
-module drcc__chan_a__bsp__crc_step(crc,data_bit,crc_next);
-    
-    // Module arguments
-    input wire  [14:0] crc;
-    input wire  data_bit;
-    output reg  [14:0] crc_next;
-    
-    // Constant declarations
-    localparam  polynomial = 15'b100010110011001;
-    localparam  zero = 15'b0;
-    
-    // Local signals
-    reg  feedback;
-    
-    // Update code
-    always @(*) begin
-        feedback = crc[32'he] ^ data_bit;
-        if (feedback) begin
-            crc_next = (crc << 32'h1) ^ polynomial;
-        end
-        else begin
-            crc_next = (crc << 32'h1) ^ zero;
-        end
-    end
-    
-endmodule // drcc__chan_a__bsp__crc_step
-
-
-module drcc__chan_a__bsp__data_len(d,q,clock);
-    
-    // Module arguments
-    input wire  [6:0] d;
-    output reg  [6:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__data_len
-
-
-module drcc__chan_a__bsp__delim_first(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__delim_first
-
-
-module drcc__chan_a__bsp__dom_cnt(d,q,clock);
-    
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__dom_cnt
-
-
-module drcc__chan_a__bsp__err_field_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__err_field_q(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -4551,10 +3574,10 @@ module drcc__chan_a__bsp__err_field_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__err_field_q
+endmodule // drcc__chan_a__bsp__err_capture__err_field_q
 
 
-module drcc__chan_a__bsp__err_kind_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__err_kind_q(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -4567,10 +3590,10 @@ module drcc__chan_a__bsp__err_kind_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__err_kind_q
+endmodule // drcc__chan_a__bsp__err_capture__err_kind_q
 
 
-module drcc__chan_a__bsp__err_tx_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__err_tx_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4583,10 +3606,10 @@ module drcc__chan_a__bsp__err_tx_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__err_tx_q
+endmodule // drcc__chan_a__bsp__err_capture__err_tx_q
 
 
-module drcc__chan_a__bsp__err_valid_q(d,q,clock);
+module drcc__chan_a__bsp__err_capture__err_valid_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4599,10 +3622,106 @@ module drcc__chan_a__bsp__err_valid_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__err_valid_q
+endmodule // drcc__chan_a__bsp__err_capture__err_valid_q
 
 
-module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,tec,rec,err_state,error_passive,bus_off);
+module drcc__chan_a__bsp__err_capture__p_alc(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__err_capture__p_alc
+
+
+module drcc__chan_a__bsp__err_capture__p_cnt_ack_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__err_capture__p_cnt_ack_max
+
+
+module drcc__chan_a__bsp__err_capture__p_cnt_bit_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__err_capture__p_cnt_bit_max
+
+
+module drcc__chan_a__bsp__err_capture__p_cnt_crc_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__err_capture__p_cnt_crc_max
+
+
+module drcc__chan_a__bsp__err_capture__p_cnt_form_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__err_capture__p_cnt_form_max
+
+
+module drcc__chan_a__bsp__err_capture__p_cnt_stuff_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__err_capture__p_cnt_stuff_max
+
+
+module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,ewl,tec,rec,err_state,error_passive,bus_off,warning);
     
     // Module arguments
     input wire  clk;
@@ -4613,11 +3732,13 @@ module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
     input wire  tx_success;
     input wire  rx_success;
     input wire  recovered;
+    input wire  [7:0] ewl;
     output reg  [8:0] tec;
     output reg  [7:0] rec;
     output reg  [1:0] err_state;
     output reg  error_passive;
     output reg  bus_off;
+    output reg  warning;
     
     // Constant declarations
     localparam  eight9 = 9'b1000;
@@ -4697,6 +3818,7 @@ module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
         end
         tec = tec_q__q;
         rec = rec_q__q;
+        warning = (tec_q__q >= ((ewl) & 9'h1ff)) || (rec_q__q >= ewl);
         if (bus_off) begin
             err_state = state_bus_off;
         end
@@ -4743,7 +3865,1832 @@ module drcc__chan_a__bsp__fc__tec_q(d,q,clock);
 endmodule // drcc__chan_a__bsp__fc__tec_q
 
 
-module drcc__chan_a__bsp__field_q(d,q,clock);
+module drcc__chan_a__bsp__frame_crc(clk,rst,sampled,start,step,check,in_crc_field,bit_cnt,crc,crc_ok);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sampled;
+    input wire  start;
+    input wire  step;
+    input wire  check;
+    input wire  in_crc_field;
+    input wire  [3:0] bit_cnt;
+    output reg  [14:0] crc;
+    output reg  crc_ok;
+    
+    // Constant declarations
+    localparam  n4_14 = 4'he;
+    localparam  zero15 = 15'b0;
+    
+    // Stub signals
+    reg  [14:0] crc_q__d;
+    wire  [14:0] crc_q__q;
+    reg  crc_q__clock;
+    reg  crc_ok_q__d;
+    wire  crc_ok_q__q;
+    reg  crc_ok_q__clock;
+    reg  p_crc_bit__d;
+    wire  p_crc_bit__q;
+    reg  p_crc_bit__clock;
+    reg  [14:0] crc_step__crc;
+    reg  crc_step__data_bit;
+    wire  [14:0] crc_step__crc_next;
+    
+    // Local signals
+    reg  [3:0] crc_rx_idx;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__frame_crc__crc_q crc_q(
+        .d(crc_q__d),
+        .q(crc_q__q),
+        .clock(crc_q__clock)
+    );
+    drcc__chan_a__bsp__frame_crc__crc_ok_q crc_ok_q(
+        .d(crc_ok_q__d),
+        .q(crc_ok_q__q),
+        .clock(crc_ok_q__clock)
+    );
+    drcc__chan_a__bsp__frame_crc__p_crc_bit p_crc_bit(
+        .d(p_crc_bit__d),
+        .q(p_crc_bit__q),
+        .clock(p_crc_bit__clock)
+    );
+    drcc__chan_a__bsp__frame_crc__crc_step crc_step(
+        .crc(crc_step__crc),
+        .data_bit(crc_step__data_bit),
+        .crc_next(crc_step__crc_next)
+    );
+    
+    // Update code
+    always @(*) begin
+        crc_q__clock = clk;
+        crc_ok_q__clock = clk;
+        p_crc_bit__clock = clk;
+        crc_q__d = crc_q__q;
+        crc_ok_q__d = crc_ok_q__q;
+        p_crc_bit__d = p_crc_bit__q;
+        crc_step__crc = crc_q__q;
+        crc_step__data_bit = sampled;
+        crc_rx_idx = n4_14 - bit_cnt;
+        p_crc_bit__d = 1'b0;
+        if (in_crc_field) begin
+            p_crc_bit__d = crc_q__q[crc_rx_idx];
+        end
+        if (step) begin
+            crc_q__d = crc_step__crc_next;
+        end
+        if (check && (sampled != p_crc_bit__q)) begin
+            crc_ok_q__d = 1'b0;
+        end
+        if (start) begin
+            crc_q__d = zero15;
+            crc_ok_q__d = 1'b1;
+        end
+        if (rst) begin
+            crc_q__d = zero15;
+            crc_ok_q__d = 1'b1;
+        end
+        crc = crc_q__q;
+        crc_ok = crc_ok_q__q;
+    end
+    
+endmodule // drcc__chan_a__bsp__frame_crc
+
+
+module drcc__chan_a__bsp__frame_crc__crc_ok_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__frame_crc__crc_ok_q
+
+
+module drcc__chan_a__bsp__frame_crc__crc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [14:0] d;
+    output reg  [14:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__frame_crc__crc_q
+
+
+module drcc__chan_a__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
+    
+    // Module arguments
+    input wire  [14:0] crc;
+    input wire  data_bit;
+    output reg  [14:0] crc_next;
+    
+    // Constant declarations
+    localparam  polynomial = 15'b100010110011001;
+    localparam  zero = 15'b0;
+    
+    // Local signals
+    reg  feedback;
+    
+    // Update code
+    always @(*) begin
+        feedback = crc[32'he] ^ data_bit;
+        if (feedback) begin
+            crc_next = (crc << 32'h1) ^ polynomial;
+        end
+        else begin
+            crc_next = (crc << 32'h1) ^ zero;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__frame_crc__crc_step
+
+
+module drcc__chan_a__bsp__frame_crc__p_crc_bit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__frame_crc__p_crc_bit
+
+
+module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,listen_only,loopback,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,frame_bit,frame_ide,stuff_insert,at_stuff_bit,stuff_last,crc_ok,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,bus_off,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sample;
+    input wire  sampled;
+    input wire  bit_start;
+    input wire  hard_sync;
+    output reg  hard_sync_enable;
+    output reg  tx;
+    input wire  listen_only;
+    input wire  loopback;
+    input wire  single_shot;
+    input wire  tx_req;
+    input wire  tx_abort;
+    output reg  tx_pending;
+    output reg  tx_failed;
+    output reg  tx_done;
+    output reg  arb_lost;
+    output reg  tx_load;
+    input wire  frame_bit;
+    input wire  frame_ide;
+    input wire  stuff_insert;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  crc_ok;
+    input wire  no_data;
+    input wire  data_end;
+    input wire  error;
+    input wire  flag_error;
+    input wire  lost;
+    input wire  sof_error;
+    input wire  passive_after;
+    input wire  bus_off_after;
+    input wire  ack_defer;
+    input wire  ack_counted;
+    input wire  error_passive;
+    input wire  bus_off;
+    output reg  [4:0] field;
+    output reg  [5:0] bit_cnt;
+    output reg  [6:0] bit_cnt_inc;
+    output reg  is_tx;
+    output reg  flag_passive;
+    output reg  last_bit_arb;
+    output reg  delim_first;
+    output reg  dom7;
+    output reg  ack_pending;
+    output reg  in_arbitration;
+    output reg  in_frame;
+    output reg  ack_slot;
+    output reg  in_delim;
+    output reg  after_error_flag;
+    output reg  bc0;
+    output reg  bc6;
+    output reg  bc7;
+    output reg  in_crc_field;
+    output reg  sof;
+    output reg  stuff_stop;
+    output reg  stuff_resync;
+    output reg  crc_step;
+    output reg  crc_check;
+    output reg  rx_shift_id;
+    output reg  rx_take_srr_rtr;
+    output reg  rx_take_ide;
+    output reg  rx_take_rtr_ext;
+    output reg  rx_take_dlc;
+    output reg  rx_take_data_len;
+    output reg  rx_take_data;
+    output reg  rx_publish;
+    output reg  tx_valid;
+    output reg  recovered;
+    
+    // Constant declarations
+    localparam  n7_0 = 7'b0;
+    localparam  n7_1 = 7'b1;
+    localparam  zero3 = 3'b0;
+    localparam  one3 = 3'b1;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  [4:0] field_q__d;
+    wire  [4:0] field_q__q;
+    reg  field_q__clock;
+    reg  [6:0] bit_cnt_q__d;
+    wire  [6:0] bit_cnt_q__q;
+    reg  bit_cnt_q__clock;
+    reg  is_tx_q__d;
+    wire  is_tx_q__q;
+    reg  is_tx_q__clock;
+    reg  flag_passive_q__d;
+    wire  flag_passive_q__q;
+    reg  flag_passive_q__clock;
+    reg  [6:0] recovery_cnt__d;
+    wire  [6:0] recovery_cnt__q;
+    reg  recovery_cnt__clock;
+    reg  tx_q__d;
+    wire  tx_q__q;
+    reg  tx_q__clock;
+    reg  last_bit_arb_q__d;
+    wire  last_bit_arb_q__q;
+    reg  last_bit_arb_q__clock;
+    reg  ack_pending_q__d;
+    wire  ack_pending_q__q;
+    reg  ack_pending_q__clock;
+    reg  delim_first_q__d;
+    wire  delim_first_q__q;
+    reg  delim_first_q__clock;
+    reg  [2:0] dom_cnt__d;
+    wire  [2:0] dom_cnt__q;
+    reg  dom_cnt__clock;
+    reg  pending__d;
+    wire  pending__q;
+    reg  pending__clock;
+    reg  abort_pending__d;
+    wire  abort_pending__q;
+    reg  abort_pending__clock;
+    reg  attempt__d;
+    wire  attempt__q;
+    reg  attempt__clock;
+    reg  tx_failed_q__d;
+    wire  tx_failed_q__q;
+    reg  tx_failed_q__clock;
+    reg  tx_done_q__d;
+    wire  tx_done_q__q;
+    reg  tx_done_q__clock;
+    reg  arb_lost_q__d;
+    wire  arb_lost_q__q;
+    reg  arb_lost_q__clock;
+    reg  decode__clk;
+    reg  [4:0] decode__field;
+    reg  [6:0] decode__bit_cnt;
+    reg  [6:0] decode__recovery_cnt;
+    reg  [2:0] decode__dom_cnt;
+    reg  decode__is_tx;
+    reg  decode__error_passive;
+    reg  decode__frame_ide;
+    wire  decode__in_arbitration;
+    wire  decode__in_frame;
+    wire  decode__crc_covered;
+    wire  decode__in_delim;
+    wire  decode__after_error_flag;
+    wire  decode__ack_slot;
+    wire  decode__bc0;
+    wire  decode__bc2;
+    wire  decode__bc3;
+    wire  decode__bc5;
+    wire  decode__bc6;
+    wire  decode__bc7;
+    wire  decode__bc10;
+    wire  decode__bc14;
+    wire  decode__bc17;
+    wire  decode__recovery_end;
+    wire  decode__suspend_due;
+    wire  decode__dom7;
+    
+    // Local signals
+    reg  [4:0] field_n;
+    reg  [6:0] bit_cnt_n;
+    reg  is_tx_n;
+    reg  flag_passive_n;
+    reg  tx_bit_n;
+    reg  tx_bit;
+    reg  start_ok;
+    reg  join_ok;
+    reg  starts;
+    reg  join_starts;
+    reg  sof_as_tx;
+    reg  monitor;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__fsm__field_q field_q(
+        .d(field_q__d),
+        .q(field_q__q),
+        .clock(field_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__bit_cnt_q bit_cnt_q(
+        .d(bit_cnt_q__d),
+        .q(bit_cnt_q__q),
+        .clock(bit_cnt_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__is_tx_q is_tx_q(
+        .d(is_tx_q__d),
+        .q(is_tx_q__q),
+        .clock(is_tx_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__flag_passive_q flag_passive_q(
+        .d(flag_passive_q__d),
+        .q(flag_passive_q__q),
+        .clock(flag_passive_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__recovery_cnt recovery_cnt(
+        .d(recovery_cnt__d),
+        .q(recovery_cnt__q),
+        .clock(recovery_cnt__clock)
+    );
+    drcc__chan_a__bsp__fsm__tx_q tx_q(
+        .d(tx_q__d),
+        .q(tx_q__q),
+        .clock(tx_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__last_bit_arb_q last_bit_arb_q(
+        .d(last_bit_arb_q__d),
+        .q(last_bit_arb_q__q),
+        .clock(last_bit_arb_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__ack_pending_q ack_pending_q(
+        .d(ack_pending_q__d),
+        .q(ack_pending_q__q),
+        .clock(ack_pending_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__delim_first_q delim_first_q(
+        .d(delim_first_q__d),
+        .q(delim_first_q__q),
+        .clock(delim_first_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__dom_cnt dom_cnt(
+        .d(dom_cnt__d),
+        .q(dom_cnt__q),
+        .clock(dom_cnt__clock)
+    );
+    drcc__chan_a__bsp__fsm__pending pending(
+        .d(pending__d),
+        .q(pending__q),
+        .clock(pending__clock)
+    );
+    drcc__chan_a__bsp__fsm__abort_pending abort_pending(
+        .d(abort_pending__d),
+        .q(abort_pending__q),
+        .clock(abort_pending__clock)
+    );
+    drcc__chan_a__bsp__fsm__attempt attempt(
+        .d(attempt__d),
+        .q(attempt__q),
+        .clock(attempt__clock)
+    );
+    drcc__chan_a__bsp__fsm__tx_failed_q tx_failed_q(
+        .d(tx_failed_q__d),
+        .q(tx_failed_q__q),
+        .clock(tx_failed_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__tx_done_q tx_done_q(
+        .d(tx_done_q__d),
+        .q(tx_done_q__q),
+        .clock(tx_done_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__arb_lost_q arb_lost_q(
+        .d(arb_lost_q__d),
+        .q(arb_lost_q__q),
+        .clock(arb_lost_q__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode decode(
+        .clk(decode__clk),
+        .field(decode__field),
+        .bit_cnt(decode__bit_cnt),
+        .recovery_cnt(decode__recovery_cnt),
+        .dom_cnt(decode__dom_cnt),
+        .is_tx(decode__is_tx),
+        .error_passive(decode__error_passive),
+        .frame_ide(decode__frame_ide),
+        .in_arbitration(decode__in_arbitration),
+        .in_frame(decode__in_frame),
+        .crc_covered(decode__crc_covered),
+        .in_delim(decode__in_delim),
+        .after_error_flag(decode__after_error_flag),
+        .ack_slot(decode__ack_slot),
+        .bc0(decode__bc0),
+        .bc2(decode__bc2),
+        .bc3(decode__bc3),
+        .bc5(decode__bc5),
+        .bc6(decode__bc6),
+        .bc7(decode__bc7),
+        .bc10(decode__bc10),
+        .bc14(decode__bc14),
+        .bc17(decode__bc17),
+        .recovery_end(decode__recovery_end),
+        .suspend_due(decode__suspend_due),
+        .dom7(decode__dom7)
+    );
+    
+    // Update code
+    always @(*) begin
+        field_q__clock = clk;
+        bit_cnt_q__clock = clk;
+        is_tx_q__clock = clk;
+        flag_passive_q__clock = clk;
+        recovery_cnt__clock = clk;
+        tx_q__clock = clk;
+        last_bit_arb_q__clock = clk;
+        ack_pending_q__clock = clk;
+        delim_first_q__clock = clk;
+        dom_cnt__clock = clk;
+        pending__clock = clk;
+        abort_pending__clock = clk;
+        attempt__clock = clk;
+        tx_failed_q__clock = clk;
+        tx_done_q__clock = clk;
+        arb_lost_q__clock = clk;
+        field_q__d = field_q__q;
+        bit_cnt_q__d = bit_cnt_q__q;
+        is_tx_q__d = is_tx_q__q;
+        flag_passive_q__d = flag_passive_q__q;
+        recovery_cnt__d = recovery_cnt__q;
+        tx_q__d = tx_q__q;
+        last_bit_arb_q__d = last_bit_arb_q__q;
+        ack_pending_q__d = ack_pending_q__q;
+        delim_first_q__d = delim_first_q__q;
+        dom_cnt__d = dom_cnt__q;
+        pending__d = pending__q;
+        abort_pending__d = abort_pending__q;
+        attempt__d = attempt__q;
+        tx_failed_q__d = tx_failed_q__q;
+        tx_done_q__d = tx_done_q__q;
+        arb_lost_q__d = arb_lost_q__q;
+        decode__clk = clk;
+        decode__field = field_q__q;
+        decode__bit_cnt = bit_cnt_q__q;
+        decode__recovery_cnt = recovery_cnt__q;
+        decode__dom_cnt = dom_cnt__q;
+        decode__is_tx = is_tx_q__q;
+        decode__error_passive = error_passive;
+        decode__frame_ide = frame_ide;
+        field_n = field_q__q;
+        bit_cnt_n = bit_cnt_q__q;
+        bit_cnt_inc = bit_cnt_q__q + n7_1;
+        is_tx_n = is_tx_q__q;
+        flag_passive_n = flag_passive_q__q;
+        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
+        tx_failed_q__d = 1'b0;
+        if (~pending__q) begin
+            abort_pending__d = 1'b0;
+        end
+        if ((tx_abort || abort_pending__q) && pending__q) begin
+            if (~is_tx_q__q && tx_q__q) begin
+                pending__d = 1'b0;
+                tx_failed_q__d = 1'b1;
+                abort_pending__d = 1'b0;
+            end
+            else begin
+                abort_pending__d = 1'b1;
+            end
+        end
+        join_ok = start_ok && ~decode__suspend_due;
+        starts = (~tx_q__q && pending__q) || start_ok;
+        join_starts = (~tx_q__q && pending__q) || join_ok;
+        tx_done_q__d = 1'b0;
+        arb_lost_q__d = 1'b0;
+        sof = 1'b0;
+        sof_as_tx = 1'b0;
+        stuff_stop = 1'b0;
+        stuff_resync = 1'b0;
+        crc_step = 1'b0;
+        crc_check = 1'b0;
+        rx_shift_id = 1'b0;
+        rx_take_srr_rtr = 1'b0;
+        rx_take_ide = 1'b0;
+        rx_take_rtr_ext = 1'b0;
+        rx_take_dlc = 1'b0;
+        rx_take_data_len = 1'b0;
+        rx_take_data = 1'b0;
+        rx_publish = 1'b0;
+        tx_valid = 1'b0;
+        recovered = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            last_bit_arb_q__d = decode__in_arbitration;
+            crc_step = decode__crc_covered;
+            if (lost) begin
+                is_tx_n = 1'b0;
+                arb_lost_q__d = 1'b1;
+            end
+            case (field_q__q)
+                Field__Integrating:
+                    begin
+                        if (sampled) begin
+                            if (decode__bc10) begin
+                                field_n = Field__Idle;
+                                bit_cnt_n = n7_0;
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                        else begin
+                            bit_cnt_n = n7_0;
+                        end
+                    end
+                Field__Idle:
+                    begin
+                        if (~sampled) begin
+                            sof = 1'b1;
+                            sof_as_tx = starts;
+                        end
+                        else if (sof_error) begin
+                            is_tx_n = 1'b1;
+                        end
+                    end
+                Field__Suspend:
+                    begin
+                        if (~sampled) begin
+                            sof = 1'b1;
+                        end
+                        else if (decode__bc7) begin
+                            field_n = Field__Idle;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__Intermission:
+                    begin
+                        if (~sampled) begin
+                            if (decode__bc2) begin
+                                sof = 1'b1;
+                                sof_as_tx = join_starts;
+                            end
+                            else begin
+                                field_n = Field__OverloadFlag;
+                                bit_cnt_n = n7_0;
+                            end
+                        end
+                        else if (decode__bc2) begin
+                            if (decode__suspend_due) begin
+                                field_n = Field__Suspend;
+                            end
+                            else begin
+                                field_n = Field__Idle;
+                            end
+                            is_tx_n = 1'b0;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__IdA:
+                    begin
+                        rx_shift_id = 1'b1;
+                        if (decode__bc10) begin
+                            field_n = Field__SrrRtr;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__SrrRtr:
+                    begin
+                        rx_take_srr_rtr = 1'b1;
+                        field_n = Field__Ide;
+                    end
+                Field__Ide:
+                    begin
+                        rx_take_ide = 1'b1;
+                        if (sampled) begin
+                            field_n = Field__IdB;
+                        end
+                        else begin
+                            field_n = Field__R0;
+                        end
+                        bit_cnt_n = n7_0;
+                    end
+                Field__IdB:
+                    begin
+                        rx_shift_id = 1'b1;
+                        if (decode__bc17) begin
+                            field_n = Field__RtrExt;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__RtrExt:
+                    begin
+                        rx_take_rtr_ext = 1'b1;
+                        field_n = Field__R1;
+                    end
+                Field__R1:
+                    begin
+                        field_n = Field__R0;
+                    end
+                Field__R0:
+                    begin
+                        field_n = Field__Dlc;
+                        bit_cnt_n = n7_0;
+                    end
+                Field__Dlc:
+                    begin
+                        rx_take_dlc = 1'b1;
+                        if (decode__bc3) begin
+                            rx_take_data_len = 1'b1;
+                            if (no_data) begin
+                                field_n = Field__Crc;
+                            end
+                            else begin
+                                field_n = Field__Data;
+                            end
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__Data:
+                    begin
+                        rx_take_data = 1'b1;
+                        if (data_end) begin
+                            field_n = Field__Crc;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__Crc:
+                    begin
+                        crc_check = 1'b1;
+                        if (decode__bc14) begin
+                            field_n = Field__CrcDelim;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        stuff_stop = 1'b1;
+                        field_n = Field__AckSlot;
+                    end
+                Field__AckSlot:
+                    begin
+                        field_n = Field__AckDelim;
+                    end
+                Field__AckDelim:
+                    begin
+                        field_n = Field__Eof;
+                        bit_cnt_n = n7_0;
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled) begin
+                            if (decode__bc6 && ~is_tx_q__q) begin
+                                field_n = Field__OverloadFlag;
+                                bit_cnt_n = n7_0;
+                            end
+                        end
+                        else begin
+                            if (decode__bc5 && (~is_tx_q__q || loopback)) begin
+                                rx_publish = 1'b1;
+                            end
+                            if (decode__bc6) begin
+                                if (is_tx_q__q) begin
+                                    tx_done_q__d = 1'b1;
+                                    pending__d = 1'b0;
+                                    attempt__d = 1'b0;
+                                    abort_pending__d = 1'b0;
+                                    tx_valid = 1'b1;
+                                end
+                                field_n = Field__Intermission;
+                                bit_cnt_n = n7_0;
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        if (flag_passive_q__q) begin
+                            if (ack_counted) begin
+                                ack_pending_q__d = 1'b0;
+                            end
+                            if (decode__bc0 || (sampled != stuff_last)) begin
+                                bit_cnt_n = n7_1;
+                                stuff_resync = 1'b1;
+                            end
+                            else if (decode__bc5) begin
+                                field_n = Field__ErrorDelim;
+                                bit_cnt_n = n7_0;
+                                delim_first_q__d = 1'b1;
+                                dom_cnt__d = zero3;
+                                ack_pending_q__d = 1'b0;
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                        else if (sampled) begin
+                        end
+                        else if (decode__bc5) begin
+                            field_n = Field__ErrorDelim;
+                            bit_cnt_n = n7_0;
+                            delim_first_q__d = 1'b1;
+                            dom_cnt__d = zero3;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__OverloadFlag:
+                    begin
+                        if (sampled && ~listen_only) begin
+                        end
+                        else if (decode__bc5) begin
+                            field_n = Field__OverloadDelim;
+                            bit_cnt_n = n7_0;
+                            delim_first_q__d = 1'b1;
+                            dom_cnt__d = zero3;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__BusOff:
+                    begin
+                        if (sampled) begin
+                            if (decode__bc10) begin
+                                bit_cnt_n = n7_0;
+                                if (decode__recovery_end) begin
+                                    field_n = Field__Idle;
+                                    recovered = 1'b1;
+                                    recovery_cnt__d = n7_0;
+                                end
+                                else begin
+                                    recovery_cnt__d = recovery_cnt__q + n7_1;
+                                end
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                        else begin
+                            bit_cnt_n = n7_0;
+                        end
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (decode__in_delim) begin
+                if (decode__bc0) begin
+                    delim_first_q__d = 1'b0;
+                    if (sampled) begin
+                        bit_cnt_n = n7_1;
+                    end
+                    else begin
+                        dom_cnt__d = dom_cnt__q + one3;
+                    end
+                end
+                else if (~sampled) begin
+                    if (decode__bc7) begin
+                        field_n = Field__OverloadFlag;
+                        bit_cnt_n = n7_0;
+                    end
+                end
+                else if (decode__bc7) begin
+                    field_n = Field__Intermission;
+                    bit_cnt_n = n7_0;
+                end
+                else begin
+                    bit_cnt_n = bit_cnt_inc;
+                end
+            end
+        end
+        if (sample) begin
+            if (sof) begin
+                field_n = Field__IdA;
+                bit_cnt_n = n7_0;
+                is_tx_n = sof_as_tx;
+                attempt__d = sof_as_tx;
+            end
+            if (error || flag_error) begin
+                field_n = Field__ErrorFlag;
+                bit_cnt_n = n7_0;
+                stuff_stop = 1'b1;
+                flag_passive_n = passive_after || listen_only;
+            end
+            if (ack_defer) begin
+                ack_pending_q__d = 1'b1;
+            end
+            if ((attempt__q && is_tx_q__q && (lost || error || flag_error)) || sof_error) begin
+                attempt__d = 1'b0;
+                if (single_shot || abort_pending__q) begin
+                    pending__d = 1'b0;
+                    tx_failed_q__d = 1'b1;
+                    abort_pending__d = 1'b0;
+                end
+            end
+            if (bus_off_after) begin
+                field_n = Field__BusOff;
+                is_tx_n = 1'b0;
+                attempt__d = 1'b0;
+                bit_cnt_n = n7_0;
+                recovery_cnt__d = n7_0;
+            end
+            field_q__d = field_n;
+            bit_cnt_q__d = bit_cnt_n;
+            is_tx_q__d = is_tx_n;
+            flag_passive_q__d = flag_passive_n;
+        end
+        tx_bit_n = 1'b1;
+        case (field_q__q)
+            Field__ErrorFlag:
+                begin
+                    tx_bit_n = flag_passive_q__q;
+                end
+            Field__OverloadFlag:
+                begin
+                    tx_bit_n = 1'b0;
+                end
+            Field__AckSlot:
+                begin
+                    tx_bit_n = is_tx_q__q || ~crc_ok;
+                end
+            default:
+                begin
+                    if (is_tx_q__q) begin
+                        if (stuff_insert) begin
+                            tx_bit_n = ~stuff_last;
+                        end
+                        else begin
+                            tx_bit_n = frame_bit;
+                        end
+                    end
+                end
+        endcase
+        tx_bit = tx_bit_n || listen_only;
+        if (bit_start) begin
+            if (hard_sync && (field_q__q == Field__Idle)) begin
+                tx_q__d = ~starts;
+            end
+            else if (hard_sync && (field_q__q == Field__Intermission)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (hard_sync && (field_q__q == Field__Suspend)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (field_q__q == Field__Idle) begin
+                tx_q__d = ~starts;
+            end
+            else begin
+                tx_q__d = tx_bit;
+            end
+        end
+        tx_load = 1'b0;
+        if (tx_req && ~pending__q && listen_only) begin
+            tx_failed_q__d = 1'b1;
+        end
+        else if (tx_req && ~pending__q) begin
+            pending__d = 1'b1;
+            tx_load = 1'b1;
+        end
+        case (field_q__q)
+            Field__Integrating:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__Idle:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__Suspend:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__BusOff:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__Intermission:
+                begin
+                    hard_sync_enable = bit_cnt_q__q[32'h1];
+                end
+            default:
+                begin
+                    hard_sync_enable = 1'b0;
+                end
+        endcase
+        tx = tx_q__q;
+        tx_pending = pending__q;
+        tx_done = tx_done_q__q;
+        arb_lost = arb_lost_q__q;
+        tx_failed = tx_failed_q__q;
+        field = field_q__q;
+        bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
+        is_tx = is_tx_q__q;
+        flag_passive = flag_passive_q__q;
+        last_bit_arb = last_bit_arb_q__q;
+        in_arbitration = decode__in_arbitration;
+        in_frame = decode__in_frame;
+        ack_slot = decode__ack_slot;
+        in_delim = decode__in_delim;
+        after_error_flag = decode__after_error_flag;
+        bc0 = decode__bc0;
+        bc6 = decode__bc6;
+        bc7 = decode__bc7;
+        dom7 = decode__dom7;
+        delim_first = delim_first_q__q;
+        ack_pending = ack_pending_q__q;
+        in_crc_field = field_q__q == Field__Crc;
+        if (rst) begin
+            field_q__d = Field__Integrating;
+            bit_cnt_q__d = n7_0;
+            is_tx_q__d = 1'b0;
+            flag_passive_q__d = 1'b0;
+            recovery_cnt__d = n7_0;
+            tx_q__d = 1'b1;
+            last_bit_arb_q__d = 1'b0;
+            ack_pending_q__d = 1'b0;
+            delim_first_q__d = 1'b0;
+            dom_cnt__d = zero3;
+            pending__d = 1'b0;
+            abort_pending__d = 1'b0;
+            attempt__d = 1'b0;
+            tx_failed_q__d = 1'b0;
+            tx_done_q__d = 1'b0;
+            arb_lost_q__d = 1'b0;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__fsm
+
+
+module drcc__chan_a__bsp__fsm__abort_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__abort_pending
+
+
+module drcc__chan_a__bsp__fsm__ack_pending_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__ack_pending_q
+
+
+module drcc__chan_a__bsp__fsm__arb_lost_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__arb_lost_q
+
+
+module drcc__chan_a__bsp__fsm__attempt(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__attempt
+
+
+module drcc__chan_a__bsp__fsm__bit_cnt_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__bit_cnt_q
+
+
+module drcc__chan_a__bsp__fsm__decode(clk,field,bit_cnt,recovery_cnt,dom_cnt,is_tx,error_passive,frame_ide,in_arbitration,in_frame,crc_covered,in_delim,after_error_flag,ack_slot,bc0,bc2,bc3,bc5,bc6,bc7,bc10,bc14,bc17,recovery_end,suspend_due,dom7);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [4:0] field;
+    input wire  [6:0] bit_cnt;
+    input wire  [6:0] recovery_cnt;
+    input wire  [2:0] dom_cnt;
+    input wire  is_tx;
+    input wire  error_passive;
+    input wire  frame_ide;
+    output reg  in_arbitration;
+    output reg  in_frame;
+    output reg  crc_covered;
+    output reg  in_delim;
+    output reg  after_error_flag;
+    output reg  ack_slot;
+    output reg  bc0;
+    output reg  bc2;
+    output reg  bc3;
+    output reg  bc5;
+    output reg  bc6;
+    output reg  bc7;
+    output reg  bc10;
+    output reg  bc14;
+    output reg  bc17;
+    output reg  recovery_end;
+    output reg  suspend_due;
+    output reg  dom7;
+    
+    // Constant declarations
+    localparam  n3_7 = 3'b111;
+    localparam  n7_0 = 7'b0;
+    localparam  n7_2 = 7'b10;
+    localparam  n7_3 = 7'b11;
+    localparam  n7_5 = 7'b101;
+    localparam  n7_6 = 7'b110;
+    localparam  n7_7 = 7'b111;
+    localparam  n7_10 = 7'b1010;
+    localparam  n7_14 = 7'b1110;
+    localparam  n7_17 = 7'b10001;
+    localparam  n7_127 = 7'b1111111;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  p_in_arbitration__d;
+    wire  p_in_arbitration__q;
+    reg  p_in_arbitration__clock;
+    reg  p_ide__d;
+    wire  p_ide__q;
+    reg  p_ide__clock;
+    reg  p_in_frame__d;
+    wire  p_in_frame__q;
+    reg  p_in_frame__clock;
+    reg  p_crc_covered__d;
+    wire  p_crc_covered__q;
+    reg  p_crc_covered__clock;
+    reg  p_in_delim__d;
+    wire  p_in_delim__q;
+    reg  p_in_delim__clock;
+    reg  p_after_error_flag__d;
+    wire  p_after_error_flag__q;
+    reg  p_after_error_flag__clock;
+    reg  p_ack_slot__d;
+    wire  p_ack_slot__q;
+    reg  p_ack_slot__clock;
+    reg  p_bc0__d;
+    wire  p_bc0__q;
+    reg  p_bc0__clock;
+    reg  p_bc2__d;
+    wire  p_bc2__q;
+    reg  p_bc2__clock;
+    reg  p_bc3__d;
+    wire  p_bc3__q;
+    reg  p_bc3__clock;
+    reg  p_bc5__d;
+    wire  p_bc5__q;
+    reg  p_bc5__clock;
+    reg  p_bc6__d;
+    wire  p_bc6__q;
+    reg  p_bc6__clock;
+    reg  p_bc7__d;
+    wire  p_bc7__q;
+    reg  p_bc7__clock;
+    reg  p_bc10__d;
+    wire  p_bc10__q;
+    reg  p_bc10__clock;
+    reg  p_bc14__d;
+    wire  p_bc14__q;
+    reg  p_bc14__clock;
+    reg  p_bc17__d;
+    wire  p_bc17__q;
+    reg  p_bc17__clock;
+    reg  p_recovery_end__d;
+    wire  p_recovery_end__q;
+    reg  p_recovery_end__clock;
+    reg  p_suspend_due__d;
+    wire  p_suspend_due__q;
+    reg  p_suspend_due__clock;
+    reg  p_dom7__d;
+    wire  p_dom7__q;
+    reg  p_dom7__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__fsm__decode__p_in_arbitration p_in_arbitration(
+        .d(p_in_arbitration__d),
+        .q(p_in_arbitration__q),
+        .clock(p_in_arbitration__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_ide p_ide(
+        .d(p_ide__d),
+        .q(p_ide__q),
+        .clock(p_ide__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_in_frame p_in_frame(
+        .d(p_in_frame__d),
+        .q(p_in_frame__q),
+        .clock(p_in_frame__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_crc_covered p_crc_covered(
+        .d(p_crc_covered__d),
+        .q(p_crc_covered__q),
+        .clock(p_crc_covered__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_in_delim p_in_delim(
+        .d(p_in_delim__d),
+        .q(p_in_delim__q),
+        .clock(p_in_delim__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_after_error_flag p_after_error_flag(
+        .d(p_after_error_flag__d),
+        .q(p_after_error_flag__q),
+        .clock(p_after_error_flag__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_ack_slot p_ack_slot(
+        .d(p_ack_slot__d),
+        .q(p_ack_slot__q),
+        .clock(p_ack_slot__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc0 p_bc0(
+        .d(p_bc0__d),
+        .q(p_bc0__q),
+        .clock(p_bc0__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc2 p_bc2(
+        .d(p_bc2__d),
+        .q(p_bc2__q),
+        .clock(p_bc2__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc3 p_bc3(
+        .d(p_bc3__d),
+        .q(p_bc3__q),
+        .clock(p_bc3__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc5 p_bc5(
+        .d(p_bc5__d),
+        .q(p_bc5__q),
+        .clock(p_bc5__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc6 p_bc6(
+        .d(p_bc6__d),
+        .q(p_bc6__q),
+        .clock(p_bc6__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc7 p_bc7(
+        .d(p_bc7__d),
+        .q(p_bc7__q),
+        .clock(p_bc7__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc10 p_bc10(
+        .d(p_bc10__d),
+        .q(p_bc10__q),
+        .clock(p_bc10__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc14 p_bc14(
+        .d(p_bc14__d),
+        .q(p_bc14__q),
+        .clock(p_bc14__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_bc17 p_bc17(
+        .d(p_bc17__d),
+        .q(p_bc17__q),
+        .clock(p_bc17__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_recovery_end p_recovery_end(
+        .d(p_recovery_end__d),
+        .q(p_recovery_end__q),
+        .clock(p_recovery_end__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_suspend_due p_suspend_due(
+        .d(p_suspend_due__d),
+        .q(p_suspend_due__q),
+        .clock(p_suspend_due__clock)
+    );
+    drcc__chan_a__bsp__fsm__decode__p_dom7 p_dom7(
+        .d(p_dom7__d),
+        .q(p_dom7__q),
+        .clock(p_dom7__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        p_in_arbitration__clock = clk;
+        p_ide__clock = clk;
+        p_in_frame__clock = clk;
+        p_crc_covered__clock = clk;
+        p_in_delim__clock = clk;
+        p_after_error_flag__clock = clk;
+        p_ack_slot__clock = clk;
+        p_bc0__clock = clk;
+        p_bc2__clock = clk;
+        p_bc3__clock = clk;
+        p_bc5__clock = clk;
+        p_bc6__clock = clk;
+        p_bc7__clock = clk;
+        p_bc10__clock = clk;
+        p_bc14__clock = clk;
+        p_bc17__clock = clk;
+        p_recovery_end__clock = clk;
+        p_suspend_due__clock = clk;
+        p_dom7__clock = clk;
+        p_in_arbitration__d = p_in_arbitration__q;
+        p_ide__d = p_ide__q;
+        p_in_frame__d = p_in_frame__q;
+        p_crc_covered__d = p_crc_covered__q;
+        p_in_delim__d = p_in_delim__q;
+        p_after_error_flag__d = p_after_error_flag__q;
+        p_ack_slot__d = p_ack_slot__q;
+        p_bc0__d = p_bc0__q;
+        p_bc2__d = p_bc2__q;
+        p_bc3__d = p_bc3__q;
+        p_bc5__d = p_bc5__q;
+        p_bc6__d = p_bc6__q;
+        p_bc7__d = p_bc7__q;
+        p_bc10__d = p_bc10__q;
+        p_bc14__d = p_bc14__q;
+        p_bc17__d = p_bc17__q;
+        p_recovery_end__d = p_recovery_end__q;
+        p_suspend_due__d = p_suspend_due__q;
+        p_dom7__d = p_dom7__q;
+        p_in_arbitration__d = 1'b0;
+        p_ide__d = 1'b0;
+        p_in_frame__d = 1'b0;
+        p_crc_covered__d = 1'b0;
+        p_in_delim__d = 1'b0;
+        p_after_error_flag__d = 1'b0;
+        case (field)
+            Field__ErrorDelim:
+                begin
+                    p_in_delim__d = 1'b1;
+                    p_after_error_flag__d = 1'b1;
+                end
+            Field__OverloadDelim:
+                begin
+                    p_in_delim__d = 1'b1;
+                end
+            Field__IdA:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__SrrRtr:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Ide:
+                begin
+                    p_ide__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__IdB:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__RtrExt:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__R1:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__R0:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Dlc:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Data:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Crc:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__CrcDelim:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__AckSlot:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__AckDelim:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__Eof:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            default:
+                begin
+                end
+        endcase
+        p_ack_slot__d = field == Field__AckSlot;
+        p_bc0__d = bit_cnt == n7_0;
+        p_bc2__d = bit_cnt == n7_2;
+        p_bc3__d = bit_cnt == n7_3;
+        p_bc5__d = bit_cnt == n7_5;
+        p_bc6__d = bit_cnt == n7_6;
+        p_bc7__d = bit_cnt == n7_7;
+        p_bc10__d = bit_cnt == n7_10;
+        p_bc14__d = bit_cnt == n7_14;
+        p_bc17__d = bit_cnt == n7_17;
+        p_recovery_end__d = recovery_cnt == n7_127;
+        p_suspend_due__d = is_tx && error_passive;
+        p_dom7__d = dom_cnt == n3_7;
+        in_arbitration = p_in_arbitration__q || (p_ide__q && frame_ide);
+        in_frame = p_in_frame__q;
+        crc_covered = p_crc_covered__q;
+        in_delim = p_in_delim__q;
+        after_error_flag = p_after_error_flag__q;
+        ack_slot = p_ack_slot__q;
+        bc0 = p_bc0__q;
+        bc2 = p_bc2__q;
+        bc3 = p_bc3__q;
+        bc5 = p_bc5__q;
+        bc6 = p_bc6__q;
+        bc7 = p_bc7__q;
+        bc10 = p_bc10__q;
+        bc14 = p_bc14__q;
+        bc17 = p_bc17__q;
+        recovery_end = p_recovery_end__q;
+        suspend_due = p_suspend_due__q;
+        dom7 = p_dom7__q;
+    end
+    
+endmodule // drcc__chan_a__bsp__fsm__decode
+
+
+module drcc__chan_a__bsp__fsm__decode__p_ack_slot(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_ack_slot
+
+
+module drcc__chan_a__bsp__fsm__decode__p_after_error_flag(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_after_error_flag
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc0
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc10
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc14
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc17
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc2
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc3
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc5
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc6
+
+
+module drcc__chan_a__bsp__fsm__decode__p_bc7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_bc7
+
+
+module drcc__chan_a__bsp__fsm__decode__p_crc_covered(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_crc_covered
+
+
+module drcc__chan_a__bsp__fsm__decode__p_dom7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_dom7
+
+
+module drcc__chan_a__bsp__fsm__decode__p_ide(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_ide
+
+
+module drcc__chan_a__bsp__fsm__decode__p_in_arbitration(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_in_arbitration
+
+
+module drcc__chan_a__bsp__fsm__decode__p_in_delim(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_in_delim
+
+
+module drcc__chan_a__bsp__fsm__decode__p_in_frame(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_in_frame
+
+
+module drcc__chan_a__bsp__fsm__decode__p_recovery_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_recovery_end
+
+
+module drcc__chan_a__bsp__fsm__decode__p_suspend_due(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__decode__p_suspend_due
+
+
+module drcc__chan_a__bsp__fsm__delim_first_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__delim_first_q
+
+
+module drcc__chan_a__bsp__fsm__dom_cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__dom_cnt
+
+
+module drcc__chan_a__bsp__fsm__field_q(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -4781,10 +5728,10 @@ module drcc__chan_a__bsp__field_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__field_q
+endmodule // drcc__chan_a__bsp__fsm__field_q
 
 
-module drcc__chan_a__bsp__flag_passive(d,q,clock);
+module drcc__chan_a__bsp__fsm__flag_passive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4797,10 +5744,10 @@ module drcc__chan_a__bsp__flag_passive(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__flag_passive
+endmodule // drcc__chan_a__bsp__fsm__flag_passive_q
 
 
-module drcc__chan_a__bsp__is_tx(d,q,clock);
+module drcc__chan_a__bsp__fsm__is_tx_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4813,10 +5760,10 @@ module drcc__chan_a__bsp__is_tx(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__is_tx
+endmodule // drcc__chan_a__bsp__fsm__is_tx_q
 
 
-module drcc__chan_a__bsp__last_bit_arb(d,q,clock);
+module drcc__chan_a__bsp__fsm__last_bit_arb_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4829,10 +5776,10 @@ module drcc__chan_a__bsp__last_bit_arb(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__last_bit_arb
+endmodule // drcc__chan_a__bsp__fsm__last_bit_arb_q
 
 
-module drcc__chan_a__bsp__p_ack_slot(d,q,clock);
+module drcc__chan_a__bsp__fsm__pending(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4845,554 +5792,10 @@ module drcc__chan_a__bsp__p_ack_slot(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__p_ack_slot
+endmodule // drcc__chan_a__bsp__fsm__pending
 
 
-module drcc__chan_a__bsp__p_after_error_flag(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_after_error_flag
-
-
-module drcc__chan_a__bsp__p_alc(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_alc
-
-
-module drcc__chan_a__bsp__p_bc0(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc0
-
-
-module drcc__chan_a__bsp__p_bc10(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc10
-
-
-module drcc__chan_a__bsp__p_bc14(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc14
-
-
-module drcc__chan_a__bsp__p_bc17(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc17
-
-
-module drcc__chan_a__bsp__p_bc2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc2
-
-
-module drcc__chan_a__bsp__p_bc3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc3
-
-
-module drcc__chan_a__bsp__p_bc5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc5
-
-
-module drcc__chan_a__bsp__p_bc6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc6
-
-
-module drcc__chan_a__bsp__p_bc7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bc7
-
-
-module drcc__chan_a__bsp__p_bus_off(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_bus_off
-
-
-module drcc__chan_a__bsp__p_cnt_ack_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_cnt_ack_max
-
-
-module drcc__chan_a__bsp__p_cnt_bit_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_cnt_bit_max
-
-
-module drcc__chan_a__bsp__p_cnt_crc_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_cnt_crc_max
-
-
-module drcc__chan_a__bsp__p_cnt_form_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_cnt_form_max
-
-
-module drcc__chan_a__bsp__p_cnt_stuff_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_cnt_stuff_max
-
-
-module drcc__chan_a__bsp__p_crc_bit(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_crc_bit
-
-
-module drcc__chan_a__bsp__p_crc_covered(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_crc_covered
-
-
-module drcc__chan_a__bsp__p_data_end(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_data_end
-
-
-module drcc__chan_a__bsp__p_dom7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_dom7
-
-
-module drcc__chan_a__bsp__p_ide(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_ide
-
-
-module drcc__chan_a__bsp__p_in_arbitration(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_in_arbitration
-
-
-module drcc__chan_a__bsp__p_in_delim(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_in_delim
-
-
-module drcc__chan_a__bsp__p_in_frame(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_in_frame
-
-
-module drcc__chan_a__bsp__p_passive(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_passive
-
-
-module drcc__chan_a__bsp__p_rec_ge120(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_rec_ge120
-
-
-module drcc__chan_a__bsp__p_rec_ge127(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_rec_ge127
-
-
-module drcc__chan_a__bsp__p_recovery_end(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_recovery_end
-
-
-module drcc__chan_a__bsp__p_stuff_bit(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_stuff_bit
-
-
-module drcc__chan_a__bsp__p_suspend_due(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_suspend_due
-
-
-module drcc__chan_a__bsp__p_tec_ge120(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_tec_ge120
-
-
-module drcc__chan_a__bsp__p_tec_ge248(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__p_tec_ge248
-
-
-module drcc__chan_a__bsp__pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__pending
-
-
-module drcc__chan_a__bsp__recovery_cnt(d,q,clock);
+module drcc__chan_a__bsp__fsm__recovery_cnt(d,q,clock);
     
     // Module arguments
     input wire  [6:0] d;
@@ -5405,10 +5808,625 @@ module drcc__chan_a__bsp__recovery_cnt(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__recovery_cnt
+endmodule // drcc__chan_a__bsp__fsm__recovery_cnt
 
 
-module drcc__chan_a__bsp__rx_data_q(d,q,clock);
+module drcc__chan_a__bsp__fsm__tx_done_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__tx_done_q
+
+
+module drcc__chan_a__bsp__fsm__tx_failed_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__tx_failed_q
+
+
+module drcc__chan_a__bsp__fsm__tx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__tx_q
+
+
+module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  tx_valid;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  [8:0] tec;
+    input wire  [7:0] rec;
+    input wire  error_passive;
+    input wire  bus_off;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  tx_success;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Constant declarations
+    localparam  n9_120 = 9'b1111000;
+    localparam  n9_248 = 9'b11111000;
+    localparam  n8_120 = 8'h78;
+    localparam  n8_127 = 8'h7f;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  p_passive__d;
+    wire  p_passive__q;
+    reg  p_passive__clock;
+    reg  p_bus_off__d;
+    wire  p_bus_off__q;
+    reg  p_bus_off__clock;
+    reg  p_tec_ge120__d;
+    wire  p_tec_ge120__q;
+    reg  p_tec_ge120__clock;
+    reg  p_tec_ge248__d;
+    wire  p_tec_ge248__q;
+    reg  p_tec_ge248__clock;
+    reg  p_rec_ge127__d;
+    wire  p_rec_ge127__q;
+    reg  p_rec_ge127__clock;
+    reg  p_rec_ge120__d;
+    wire  p_rec_ge120__q;
+    reg  p_rec_ge120__clock;
+    
+    // Local signals
+    reg  monitor;
+    reg  ev_tec_add8;
+    reg  ev_rec_add1;
+    reg  ev_rec_add8;
+    reg  ev_rx_success;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__p_passive p_passive(
+        .d(p_passive__d),
+        .q(p_passive__q),
+        .clock(p_passive__clock)
+    );
+    drcc__chan_a__bsp__rules__p_bus_off p_bus_off(
+        .d(p_bus_off__d),
+        .q(p_bus_off__q),
+        .clock(p_bus_off__clock)
+    );
+    drcc__chan_a__bsp__rules__p_tec_ge120 p_tec_ge120(
+        .d(p_tec_ge120__d),
+        .q(p_tec_ge120__q),
+        .clock(p_tec_ge120__clock)
+    );
+    drcc__chan_a__bsp__rules__p_tec_ge248 p_tec_ge248(
+        .d(p_tec_ge248__d),
+        .q(p_tec_ge248__q),
+        .clock(p_tec_ge248__clock)
+    );
+    drcc__chan_a__bsp__rules__p_rec_ge127 p_rec_ge127(
+        .d(p_rec_ge127__d),
+        .q(p_rec_ge127__q),
+        .clock(p_rec_ge127__clock)
+    );
+    drcc__chan_a__bsp__rules__p_rec_ge120 p_rec_ge120(
+        .d(p_rec_ge120__d),
+        .q(p_rec_ge120__q),
+        .clock(p_rec_ge120__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        p_passive__clock = clk;
+        p_bus_off__clock = clk;
+        p_tec_ge120__clock = clk;
+        p_tec_ge248__clock = clk;
+        p_rec_ge127__clock = clk;
+        p_rec_ge120__clock = clk;
+        p_passive__d = p_passive__q;
+        p_bus_off__d = p_bus_off__q;
+        p_tec_ge120__d = p_tec_ge120__q;
+        p_tec_ge248__d = p_tec_ge248__q;
+        p_rec_ge127__d = p_rec_ge127__q;
+        p_rec_ge120__d = p_rec_ge120__q;
+        p_passive__d = error_passive;
+        p_bus_off__d = bus_off;
+        p_tec_ge120__d = tec >= n9_120;
+        p_tec_ge248__d = tec >= n9_248;
+        p_rec_ge127__d = rec >= n8_127;
+        p_rec_ge120__d = rec >= n8_120;
+        ev_tec_add8 = 1'b0;
+        ev_rec_add1 = 1'b0;
+        ev_rec_add8 = 1'b0;
+        ev_rx_success = 1'b0;
+        ack_defer = 1'b0;
+        ack_counted = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if ((field == Field__AckSlot) && ~is_tx && ~tx_bit && ~sampled) begin
+                ev_rx_success = 1'b1;
+            end
+            if ((field == Field__ErrorFlag) && flag_passive) begin
+                if (ack_pending && ~sampled) begin
+                    ev_tec_add8 = 1'b1;
+                    ack_counted = 1'b1;
+                end
+            end
+            if (in_delim && bc0 && ~sampled) begin
+                if (delim_first && after_error_flag && ~is_tx) begin
+                    ev_rec_add8 = 1'b1;
+                end
+                if (dom7) begin
+                    if (is_tx) begin
+                        ev_tec_add8 = 1'b1;
+                    end
+                    else begin
+                        ev_rec_add8 = 1'b1;
+                    end
+                end
+            end
+        end
+        if (error) begin
+            if (as_tx) begin
+                if (ack_err && p_passive__q) begin
+                    ack_defer = 1'b1;
+                end
+                else if (~tec_exempt) begin
+                    ev_tec_add8 = 1'b1;
+                end
+            end
+            else begin
+                ev_rec_add1 = 1'b1;
+            end
+        end
+        if (flag_error) begin
+            if (is_tx) begin
+                ev_tec_add8 = 1'b1;
+            end
+            else begin
+                ev_rec_add8 = 1'b1;
+            end
+        end
+        passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
+        bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
+        tec_add8 = ev_tec_add8 && ~listen_only;
+        rec_add1 = ev_rec_add1 && ~listen_only;
+        rec_add8 = ev_rec_add8 && ~listen_only;
+        tx_success = tx_valid && ~listen_only;
+        rx_success = ev_rx_success && ~listen_only;
+    end
+    
+endmodule // drcc__chan_a__bsp__rules
+
+
+module drcc__chan_a__bsp__rules__p_bus_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__p_bus_off
+
+
+module drcc__chan_a__bsp__rules__p_passive(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__p_passive
+
+
+module drcc__chan_a__bsp__rules__p_rec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__p_rec_ge120
+
+
+module drcc__chan_a__bsp__rules__p_rec_ge127(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__p_rec_ge127
+
+
+module drcc__chan_a__bsp__rules__p_tec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__p_tec_ge120
+
+
+module drcc__chan_a__bsp__rules__p_tec_ge248(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__p_tec_ge248
+
+
+module drcc__chan_a__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sampled;
+    input wire  [5:0] bit_cnt;
+    input wire  [6:0] bit_cnt_inc;
+    input wire  clear;
+    input wire  shift_id;
+    input wire  take_srr_rtr;
+    input wire  take_ide;
+    input wire  take_rtr_ext;
+    input wire  take_dlc;
+    input wire  take_data_len;
+    input wire  take_data;
+    input wire  publish;
+    output reg  no_data;
+    output reg  data_end;
+    output reg  rx_valid;
+    output reg  [28:0] rx_id;
+    output reg  rx_ide;
+    output reg  rx_rtr;
+    output reg  [3:0] rx_dlc;
+    output reg  [63:0] rx_data;
+    
+    // Constant declarations
+    localparam  zero7 = 7'b0;
+    localparam  n7_64 = 7'b1000000;
+    localparam  n6_63 = 6'b111111;
+    localparam  zero3 = 3'b0;
+    localparam  zero4 = 4'h0;
+    localparam  zero29 = 29'h0;
+    localparam  zero64 = 64'h0;
+    
+    // Stub signals
+    reg  [28:0] id__d;
+    wire  [28:0] id__q;
+    reg  id__clock;
+    reg  srr_rtr__d;
+    wire  srr_rtr__q;
+    reg  srr_rtr__clock;
+    reg  ide__d;
+    wire  ide__q;
+    reg  ide__clock;
+    reg  rtr__d;
+    wire  rtr__q;
+    reg  rtr__clock;
+    reg  [3:0] dlc__d;
+    wire  [3:0] dlc__q;
+    reg  dlc__clock;
+    reg  [63:0] data__d;
+    wire  [63:0] data__q;
+    reg  data__clock;
+    reg  [6:0] data_len__d;
+    wire  [6:0] data_len__q;
+    reg  data_len__clock;
+    reg  data_end_q__d;
+    wire  data_end_q__q;
+    reg  data_end_q__clock;
+    reg  rx_valid_q__d;
+    wire  rx_valid_q__q;
+    reg  rx_valid_q__clock;
+    reg  [28:0] rx_id_q__d;
+    wire  [28:0] rx_id_q__q;
+    reg  rx_id_q__clock;
+    reg  rx_ide_q__d;
+    wire  rx_ide_q__q;
+    reg  rx_ide_q__clock;
+    reg  rx_rtr_q__d;
+    wire  rx_rtr_q__q;
+    reg  rx_rtr_q__clock;
+    reg  [3:0] rx_dlc_q__d;
+    wire  [3:0] rx_dlc_q__q;
+    reg  rx_dlc_q__clock;
+    reg  [63:0] rx_data_q__d;
+    wire  [63:0] rx_data_q__q;
+    reg  rx_data_q__clock;
+    
+    // Local signals
+    reg  bus_bit;
+    reg  [3:0] dlc_n;
+    reg  [6:0] data_bits;
+    reg  [5:0] data_wr_idx;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rx_frame__id id(
+        .d(id__d),
+        .q(id__q),
+        .clock(id__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__srr_rtr srr_rtr(
+        .d(srr_rtr__d),
+        .q(srr_rtr__q),
+        .clock(srr_rtr__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__ide ide(
+        .d(ide__d),
+        .q(ide__q),
+        .clock(ide__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__rtr rtr(
+        .d(rtr__d),
+        .q(rtr__q),
+        .clock(rtr__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__dlc dlc(
+        .d(dlc__d),
+        .q(dlc__q),
+        .clock(dlc__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__data data(
+        .d(data__d),
+        .q(data__q),
+        .clock(data__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__data_len data_len(
+        .d(data_len__d),
+        .q(data_len__q),
+        .clock(data_len__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__data_end_q data_end_q(
+        .d(data_end_q__d),
+        .q(data_end_q__q),
+        .clock(data_end_q__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__rx_valid_q rx_valid_q(
+        .d(rx_valid_q__d),
+        .q(rx_valid_q__q),
+        .clock(rx_valid_q__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__rx_id_q rx_id_q(
+        .d(rx_id_q__d),
+        .q(rx_id_q__q),
+        .clock(rx_id_q__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__rx_ide_q rx_ide_q(
+        .d(rx_ide_q__d),
+        .q(rx_ide_q__q),
+        .clock(rx_ide_q__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__rx_rtr_q rx_rtr_q(
+        .d(rx_rtr_q__d),
+        .q(rx_rtr_q__q),
+        .clock(rx_rtr_q__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__rx_dlc_q rx_dlc_q(
+        .d(rx_dlc_q__d),
+        .q(rx_dlc_q__q),
+        .clock(rx_dlc_q__clock)
+    );
+    drcc__chan_a__bsp__rx_frame__rx_data_q rx_data_q(
+        .d(rx_data_q__d),
+        .q(rx_data_q__q),
+        .clock(rx_data_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        id__clock = clk;
+        srr_rtr__clock = clk;
+        ide__clock = clk;
+        rtr__clock = clk;
+        dlc__clock = clk;
+        data__clock = clk;
+        data_len__clock = clk;
+        data_end_q__clock = clk;
+        rx_valid_q__clock = clk;
+        rx_id_q__clock = clk;
+        rx_ide_q__clock = clk;
+        rx_rtr_q__clock = clk;
+        rx_dlc_q__clock = clk;
+        rx_data_q__clock = clk;
+        id__d = id__q;
+        srr_rtr__d = srr_rtr__q;
+        ide__d = ide__q;
+        rtr__d = rtr__q;
+        dlc__d = dlc__q;
+        data__d = data__q;
+        data_len__d = data_len__q;
+        data_end_q__d = data_end_q__q;
+        rx_valid_q__d = rx_valid_q__q;
+        rx_id_q__d = rx_id_q__q;
+        rx_ide_q__d = rx_ide_q__q;
+        rx_rtr_q__d = rx_rtr_q__q;
+        rx_dlc_q__d = rx_dlc_q__q;
+        rx_data_q__d = rx_data_q__q;
+        bus_bit = sampled;
+        dlc_n = (dlc__q << 32'h1) | ((bus_bit) & 4'hf);
+        if (rtr__q) begin
+            data_bits = zero7;
+        end
+        else if (dlc_n[32'h3]) begin
+            data_bits = n7_64;
+        end
+        else begin
+            data_bits = ((dlc_n[(32'h0)+:(3)]) & 7'h7f) << 32'h3;
+        end
+        no_data = rtr__q || ((dlc__q[(32'h0)+:(3)] == zero3) && ~sampled);
+        data_wr_idx = n6_63 - bit_cnt;
+        data_end_q__d = bit_cnt_inc == data_len__q;
+        data_end = data_end_q__q;
+        rx_valid_q__d = 1'b0;
+        if (shift_id) begin
+            id__d = (id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
+        end
+        if (take_srr_rtr) begin
+            srr_rtr__d = sampled;
+        end
+        if (take_ide) begin
+            ide__d = sampled;
+            if (~sampled) begin
+                rtr__d = srr_rtr__q;
+            end
+        end
+        if (take_rtr_ext) begin
+            rtr__d = sampled;
+        end
+        if (take_dlc) begin
+            dlc__d = dlc_n;
+        end
+        if (take_data_len) begin
+            data_len__d = data_bits;
+        end
+        if (take_data) begin
+            data__d = (data__q & ~(1 << (data_wr_idx)) | ((sampled) << (data_wr_idx)));
+        end
+        if (clear) begin
+            id__d = zero29;
+            data__d = zero64;
+            rtr__d = 1'b0;
+        end
+        if (publish) begin
+            rx_valid_q__d = 1'b1;
+            rx_id_q__d = id__q;
+            rx_ide_q__d = ide__q;
+            rx_rtr_q__d = rtr__q;
+            rx_dlc_q__d = dlc__q;
+            rx_data_q__d = data__q;
+        end
+        rx_valid = rx_valid_q__q;
+        rx_id = rx_id_q__q;
+        rx_ide = rx_ide_q__q;
+        rx_rtr = rx_rtr_q__q;
+        rx_dlc = rx_dlc_q__q;
+        rx_data = rx_data_q__q;
+        if (rst) begin
+            rx_valid_q__d = 1'b0;
+            rx_id_q__d = zero29;
+            rx_ide_q__d = 1'b0;
+            rx_rtr_q__d = 1'b0;
+            rx_dlc_q__d = zero4;
+            rx_data_q__d = zero64;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rx_frame
+
+
+module drcc__chan_a__bsp__rx_frame__data(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -5421,10 +6439,42 @@ module drcc__chan_a__bsp__rx_data_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rx_data_q
+endmodule // drcc__chan_a__bsp__rx_frame__data
 
 
-module drcc__chan_a__bsp__rx_dlc_q(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__data_end_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rx_frame__data_end_q
+
+
+module drcc__chan_a__bsp__rx_frame__data_len(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rx_frame__data_len
+
+
+module drcc__chan_a__bsp__rx_frame__dlc(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -5437,10 +6487,10 @@ module drcc__chan_a__bsp__rx_dlc_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rx_dlc_q
+endmodule // drcc__chan_a__bsp__rx_frame__dlc
 
 
-module drcc__chan_a__bsp__rx_id_q(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__id(d,q,clock);
     
     // Module arguments
     input wire  [28:0] d;
@@ -5453,10 +6503,10 @@ module drcc__chan_a__bsp__rx_id_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rx_id_q
+endmodule // drcc__chan_a__bsp__rx_frame__id
 
 
-module drcc__chan_a__bsp__rx_ide_q(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__ide(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5469,10 +6519,10 @@ module drcc__chan_a__bsp__rx_ide_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rx_ide_q
+endmodule // drcc__chan_a__bsp__rx_frame__ide
 
 
-module drcc__chan_a__bsp__rx_rtr_q(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__rtr(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5485,26 +6535,10 @@ module drcc__chan_a__bsp__rx_rtr_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rx_rtr_q
+endmodule // drcc__chan_a__bsp__rx_frame__rtr
 
 
-module drcc__chan_a__bsp__rx_valid_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__rx_valid_q
-
-
-module drcc__chan_a__bsp__rxs_data(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__rx_data_q(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -5517,10 +6551,10 @@ module drcc__chan_a__bsp__rxs_data(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rxs_data
+endmodule // drcc__chan_a__bsp__rx_frame__rx_data_q
 
 
-module drcc__chan_a__bsp__rxs_dlc(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__rx_dlc_q(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -5533,10 +6567,10 @@ module drcc__chan_a__bsp__rxs_dlc(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rxs_dlc
+endmodule // drcc__chan_a__bsp__rx_frame__rx_dlc_q
 
 
-module drcc__chan_a__bsp__rxs_id(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__rx_id_q(d,q,clock);
     
     // Module arguments
     input wire  [28:0] d;
@@ -5549,10 +6583,10 @@ module drcc__chan_a__bsp__rxs_id(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rxs_id
+endmodule // drcc__chan_a__bsp__rx_frame__rx_id_q
 
 
-module drcc__chan_a__bsp__rxs_ide(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__rx_ide_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5565,10 +6599,10 @@ module drcc__chan_a__bsp__rxs_ide(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rxs_ide
+endmodule // drcc__chan_a__bsp__rx_frame__rx_ide_q
 
 
-module drcc__chan_a__bsp__rxs_rtr(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__rx_rtr_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5581,10 +6615,10 @@ module drcc__chan_a__bsp__rxs_rtr(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rxs_rtr
+endmodule // drcc__chan_a__bsp__rx_frame__rx_rtr_q
 
 
-module drcc__chan_a__bsp__rxs_srr_rtr(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__rx_valid_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5597,10 +6631,148 @@ module drcc__chan_a__bsp__rxs_srr_rtr(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rxs_srr_rtr
+endmodule // drcc__chan_a__bsp__rx_frame__rx_valid_q
 
 
-module drcc__chan_a__bsp__stuff_cnt(d,q,clock);
+module drcc__chan_a__bsp__rx_frame__srr_rtr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rx_frame__srr_rtr
+
+
+module drcc__chan_a__bsp__stuffing(clk,rst,sample,sampled,start,stop,resync,insert,at_stuff_bit,last);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sample;
+    input wire  sampled;
+    input wire  start;
+    input wire  stop;
+    input wire  resync;
+    output reg  insert;
+    output reg  at_stuff_bit;
+    output reg  last;
+    
+    // Constant declarations
+    localparam  one = 3'b1;
+    localparam  five = 3'b101;
+    
+    // Stub signals
+    reg  [2:0] cnt__d;
+    wire  [2:0] cnt__q;
+    reg  cnt__clock;
+    reg  last_q__d;
+    wire  last_q__q;
+    reg  last_q__clock;
+    reg  en__d;
+    wire  en__q;
+    reg  en__clock;
+    reg  at_stuff_q__d;
+    wire  at_stuff_q__q;
+    reg  at_stuff_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__stuffing__cnt cnt(
+        .d(cnt__d),
+        .q(cnt__q),
+        .clock(cnt__clock)
+    );
+    drcc__chan_a__bsp__stuffing__last_q last_q(
+        .d(last_q__d),
+        .q(last_q__q),
+        .clock(last_q__clock)
+    );
+    drcc__chan_a__bsp__stuffing__en en(
+        .d(en__d),
+        .q(en__q),
+        .clock(en__clock)
+    );
+    drcc__chan_a__bsp__stuffing__at_stuff_q at_stuff_q(
+        .d(at_stuff_q__d),
+        .q(at_stuff_q__q),
+        .clock(at_stuff_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cnt__clock = clk;
+        last_q__clock = clk;
+        en__clock = clk;
+        at_stuff_q__clock = clk;
+        cnt__d = cnt__q;
+        last_q__d = last_q__q;
+        en__d = en__q;
+        at_stuff_q__d = at_stuff_q__q;
+        insert = en__q && (cnt__q == five);
+        at_stuff_q__d = insert;
+        at_stuff_bit = at_stuff_q__q;
+        last = last_q__q;
+        if (sample) begin
+            if (at_stuff_q__q) begin
+                if (sampled != last_q__q) begin
+                    cnt__d = one;
+                    last_q__d = sampled;
+                end
+            end
+            else if (en__q) begin
+                if (sampled == last_q__q) begin
+                    cnt__d = cnt__q + one;
+                end
+                else begin
+                    cnt__d = one;
+                    last_q__d = sampled;
+                end
+            end
+        end
+        if (resync) begin
+            last_q__d = sampled;
+        end
+        if (start) begin
+            en__d = 1'b1;
+            cnt__d = one;
+            last_q__d = 1'b0;
+        end
+        if (stop) begin
+            en__d = 1'b0;
+        end
+        if (rst) begin
+            cnt__d = one;
+            last_q__d = 1'b0;
+            en__d = 1'b0;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__stuffing
+
+
+module drcc__chan_a__bsp__stuffing__at_stuff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__stuffing__at_stuff_q
+
+
+module drcc__chan_a__bsp__stuffing__cnt(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -5613,10 +6785,10 @@ module drcc__chan_a__bsp__stuff_cnt(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__stuff_cnt
+endmodule // drcc__chan_a__bsp__stuffing__cnt
 
 
-module drcc__chan_a__bsp__stuff_en(d,q,clock);
+module drcc__chan_a__bsp__stuffing__en(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5629,10 +6801,10 @@ module drcc__chan_a__bsp__stuff_en(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__stuff_en
+endmodule // drcc__chan_a__bsp__stuffing__en
 
 
-module drcc__chan_a__bsp__stuff_last(d,q,clock);
+module drcc__chan_a__bsp__stuffing__last_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5645,58 +6817,196 @@ module drcc__chan_a__bsp__stuff_last(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__stuff_last
+endmodule // drcc__chan_a__bsp__stuffing__last_q
 
 
-module drcc__chan_a__bsp__tx_done_q(d,q,clock);
+module drcc__chan_a__bsp__tx_frame(clk,load,id,ide,rtr,dlc,data,field,bit_cnt,crc,frame_bit,frame_ide);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
+    input wire  clk;
+    input wire  load;
+    input wire  [28:0] id;
+    input wire  ide;
+    input wire  rtr;
+    input wire  [3:0] dlc;
+    input wire  [63:0] data;
+    input wire  [4:0] field;
+    input wire  [5:0] bit_cnt;
+    input wire  [14:0] crc;
+    output reg  frame_bit;
+    output reg  frame_ide;
     
-    // Update code (custom)
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
     
-    always @(posedge clock) begin
-       q <= d;
+    // Stub signals
+    reg  [15:0] ida__d;
+    wire  [15:0] ida__q;
+    reg  ida__clock;
+    reg  [31:0] idb__d;
+    wire  [31:0] idb__q;
+    reg  idb__clock;
+    reg  ide_q__d;
+    wire  ide_q__q;
+    reg  ide_q__clock;
+    reg  rtr_q__d;
+    wire  rtr_q__q;
+    reg  rtr_q__clock;
+    reg  [3:0] dlc_q__d;
+    wire  [3:0] dlc_q__q;
+    reg  dlc_q__clock;
+    reg  [63:0] data_q__d;
+    wire  [63:0] data_q__q;
+    reg  data_q__clock;
+    
+    // Local signals
+    reg  [3:0] id_a_idx;
+    reg  [4:0] id_b_idx;
+    reg  [1:0] dlc_idx;
+    reg  [5:0] data_idx;
+    reg  [3:0] crc_idx;
+    reg  [15:0] crc_tx;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__tx_frame__ida ida(
+        .d(ida__d),
+        .q(ida__q),
+        .clock(ida__clock)
+    );
+    drcc__chan_a__bsp__tx_frame__idb idb(
+        .d(idb__d),
+        .q(idb__q),
+        .clock(idb__clock)
+    );
+    drcc__chan_a__bsp__tx_frame__ide_q ide_q(
+        .d(ide_q__d),
+        .q(ide_q__q),
+        .clock(ide_q__clock)
+    );
+    drcc__chan_a__bsp__tx_frame__rtr_q rtr_q(
+        .d(rtr_q__d),
+        .q(rtr_q__q),
+        .clock(rtr_q__clock)
+    );
+    drcc__chan_a__bsp__tx_frame__dlc_q dlc_q(
+        .d(dlc_q__d),
+        .q(dlc_q__q),
+        .clock(dlc_q__clock)
+    );
+    drcc__chan_a__bsp__tx_frame__data_q data_q(
+        .d(data_q__d),
+        .q(data_q__q),
+        .clock(data_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ida__clock = clk;
+        idb__clock = clk;
+        ide_q__clock = clk;
+        rtr_q__clock = clk;
+        dlc_q__clock = clk;
+        data_q__clock = clk;
+        ida__d = ida__q;
+        idb__d = idb__q;
+        ide_q__d = ide_q__q;
+        rtr_q__d = rtr_q__q;
+        dlc_q__d = dlc_q__q;
+        data_q__d = data_q__q;
+        if (load) begin
+            if (ide) begin
+                ida__d = ((id[(32'h12)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            else begin
+                ida__d = ((id[(32'h0)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            idb__d = ((id[(32'h0)+:(18)]) & 32'hffffffff) << 32'he;
+            ide_q__d = ide;
+            rtr_q__d = rtr;
+            dlc_q__d = dlc;
+            data_q__d = data;
+        end
+        frame_ide = ide_q__q;
+        id_a_idx = ~bit_cnt[(32'h0)+:(4)];
+        id_b_idx = ~bit_cnt[(32'h0)+:(5)];
+        dlc_idx = ~bit_cnt[(32'h0)+:(2)];
+        data_idx = ~bit_cnt;
+        crc_idx = ~bit_cnt[(32'h0)+:(4)];
+        crc_tx = ((crc) & 16'hffff) << 32'h1;
+        frame_bit = 1'b1;
+        case (field)
+            Field__IdA:
+                begin
+                    frame_bit = ida__q[id_a_idx];
+                end
+            Field__SrrRtr:
+                begin
+                    frame_bit = ide_q__q || rtr_q__q;
+                end
+            Field__Ide:
+                begin
+                    frame_bit = ide_q__q;
+                end
+            Field__IdB:
+                begin
+                    frame_bit = idb__q[id_b_idx];
+                end
+            Field__RtrExt:
+                begin
+                    frame_bit = rtr_q__q;
+                end
+            Field__R1:
+                begin
+                    frame_bit = 1'b0;
+                end
+            Field__R0:
+                begin
+                    frame_bit = 1'b0;
+                end
+            Field__Dlc:
+                begin
+                    frame_bit = dlc_q__q[dlc_idx];
+                end
+            Field__Data:
+                begin
+                    frame_bit = data_q__q[data_idx];
+                end
+            Field__Crc:
+                begin
+                    frame_bit = crc_tx[crc_idx];
+                end
+            default:
+                begin
+                end
+        endcase
     end
-          
-endmodule // drcc__chan_a__bsp__tx_done_q
+    
+endmodule // drcc__chan_a__bsp__tx_frame
 
 
-module drcc__chan_a__bsp__tx_failed_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__tx_failed_q
-
-
-module drcc__chan_a__bsp__tx_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__tx_q
-
-
-module drcc__chan_a__bsp__txf_data(d,q,clock);
+module drcc__chan_a__bsp__tx_frame__data_q(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -5709,10 +7019,10 @@ module drcc__chan_a__bsp__txf_data(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__txf_data
+endmodule // drcc__chan_a__bsp__tx_frame__data_q
 
 
-module drcc__chan_a__bsp__txf_dlc(d,q,clock);
+module drcc__chan_a__bsp__tx_frame__dlc_q(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -5725,10 +7035,10 @@ module drcc__chan_a__bsp__txf_dlc(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__txf_dlc
+endmodule // drcc__chan_a__bsp__tx_frame__dlc_q
 
 
-module drcc__chan_a__bsp__txf_ida(d,q,clock);
+module drcc__chan_a__bsp__tx_frame__ida(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5741,10 +7051,10 @@ module drcc__chan_a__bsp__txf_ida(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__txf_ida
+endmodule // drcc__chan_a__bsp__tx_frame__ida
 
 
-module drcc__chan_a__bsp__txf_idb(d,q,clock);
+module drcc__chan_a__bsp__tx_frame__idb(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -5757,10 +7067,10 @@ module drcc__chan_a__bsp__txf_idb(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__txf_idb
+endmodule // drcc__chan_a__bsp__tx_frame__idb
 
 
-module drcc__chan_a__bsp__txf_ide(d,q,clock);
+module drcc__chan_a__bsp__tx_frame__ide_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5773,10 +7083,10 @@ module drcc__chan_a__bsp__txf_ide(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__txf_ide
+endmodule // drcc__chan_a__bsp__tx_frame__ide_q
 
 
-module drcc__chan_a__bsp__txf_rtr(d,q,clock);
+module drcc__chan_a__bsp__tx_frame__rtr_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5789,7 +7099,7 @@ module drcc__chan_a__bsp__txf_rtr(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__txf_rtr
+endmodule // drcc__chan_a__bsp__tx_frame__rtr_q
 
 
 module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
@@ -7277,47 +8587,8 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     output reg  [7:0] cnt_ack;
     
     // Constant declarations
-    localparam  k3_bit = 3'b1;
-    localparam  k3_stuff = 3'b10;
-    localparam  k3_crc = 3'b11;
-    localparam  k3_form = 3'b100;
-    localparam  k3_ack = 3'b101;
-    localparam  n2_1 = 2'b1;
-    localparam  n2_3m = 2'b11;
-    localparam  n5_11 = 5'b1011;
-    localparam  n5_12 = 5'b1100;
-    localparam  n5_13 = 5'b1101;
-    localparam  n5_31 = 5'b11111;
-    localparam  n8_1 = 8'h1;
-    localparam  n8_255 = 8'hff;
-    localparam  zero5 = 5'b0;
-    localparam  zero8 = 8'h0;
-    localparam  n7_0 = 7'b0;
-    localparam  n7_1 = 7'b1;
-    localparam  n7_2 = 7'b10;
-    localparam  n7_3 = 7'b11;
-    localparam  n7_5 = 7'b101;
-    localparam  n7_6 = 7'b110;
-    localparam  n7_7 = 7'b111;
-    localparam  n7_10 = 7'b1010;
-    localparam  n7_14 = 7'b1110;
-    localparam  n7_17 = 7'b10001;
-    localparam  n7_64 = 7'b1000000;
-    localparam  n7_127 = 7'b1111111;
-    localparam  n3_1 = 3'b1;
-    localparam  n3_5 = 3'b101;
-    localparam  n3_7 = 3'b111;
-    localparam  zero3 = 3'b0;
-    localparam  n9_120 = 9'b1111000;
-    localparam  n9_248 = 9'b11111000;
-    localparam  n8_120 = 8'h78;
-    localparam  n8_127 = 8'h7f;
-    localparam  n6_63 = 6'b111111;
-    localparam  n4_14 = 4'he;
-    localparam  zero4 = 4'h0;
-    localparam  zero15 = 15'b0;
-    localparam  zero29 = 29'h0;
-    localparam  zero64 = 64'h0;
+    localparam  mode_listen_only = 2'b1;
+    localparam  mode_loopback = 2'b11;
     
     // Enums
     localparam Field__Integrating = 0;
@@ -7345,15 +8616,869 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     localparam Field__BusOff = 22;
     
     // Stub signals
-    reg  abort_pending__d;
-    wire  abort_pending__q;
-    reg  abort_pending__clock;
-    reg  attempt__d;
-    wire  attempt__q;
-    reg  attempt__clock;
-    reg  tx_failed_q__d;
-    wire  tx_failed_q__q;
-    reg  tx_failed_q__clock;
+    reg  fsm__clk;
+    reg  fsm__rst;
+    reg  fsm__sample;
+    reg  fsm__sampled;
+    reg  fsm__bit_start;
+    reg  fsm__hard_sync;
+    wire  fsm__hard_sync_enable;
+    wire  fsm__tx;
+    reg  fsm__listen_only;
+    reg  fsm__loopback;
+    reg  fsm__single_shot;
+    reg  fsm__tx_req;
+    reg  fsm__tx_abort;
+    wire  fsm__tx_pending;
+    wire  fsm__tx_failed;
+    wire  fsm__tx_done;
+    wire  fsm__arb_lost;
+    wire  fsm__tx_load;
+    reg  fsm__frame_bit;
+    reg  fsm__frame_ide;
+    reg  fsm__stuff_insert;
+    reg  fsm__at_stuff_bit;
+    reg  fsm__stuff_last;
+    reg  fsm__crc_ok;
+    reg  fsm__no_data;
+    reg  fsm__data_end;
+    reg  fsm__error;
+    reg  fsm__flag_error;
+    reg  fsm__lost;
+    reg  fsm__sof_error;
+    reg  fsm__passive_after;
+    reg  fsm__bus_off_after;
+    reg  fsm__ack_defer;
+    reg  fsm__ack_counted;
+    reg  fsm__error_passive;
+    reg  fsm__bus_off;
+    wire  [4:0] fsm__field;
+    wire  [5:0] fsm__bit_cnt;
+    wire  [6:0] fsm__bit_cnt_inc;
+    wire  fsm__is_tx;
+    wire  fsm__flag_passive;
+    wire  fsm__last_bit_arb;
+    wire  fsm__delim_first;
+    wire  fsm__dom7;
+    wire  fsm__ack_pending;
+    wire  fsm__in_arbitration;
+    wire  fsm__in_frame;
+    wire  fsm__ack_slot;
+    wire  fsm__in_delim;
+    wire  fsm__after_error_flag;
+    wire  fsm__bc0;
+    wire  fsm__bc6;
+    wire  fsm__bc7;
+    wire  fsm__in_crc_field;
+    wire  fsm__sof;
+    wire  fsm__stuff_stop;
+    wire  fsm__stuff_resync;
+    wire  fsm__crc_step;
+    wire  fsm__crc_check;
+    wire  fsm__rx_shift_id;
+    wire  fsm__rx_take_srr_rtr;
+    wire  fsm__rx_take_ide;
+    wire  fsm__rx_take_rtr_ext;
+    wire  fsm__rx_take_dlc;
+    wire  fsm__rx_take_data_len;
+    wire  fsm__rx_take_data;
+    wire  fsm__rx_publish;
+    wire  fsm__tx_valid;
+    wire  fsm__recovered;
+    reg  stuffing__clk;
+    reg  stuffing__rst;
+    reg  stuffing__sample;
+    reg  stuffing__sampled;
+    reg  stuffing__start;
+    reg  stuffing__stop;
+    reg  stuffing__resync;
+    wire  stuffing__insert;
+    wire  stuffing__at_stuff_bit;
+    wire  stuffing__last;
+    reg  frame_crc__clk;
+    reg  frame_crc__rst;
+    reg  frame_crc__sampled;
+    reg  frame_crc__start;
+    reg  frame_crc__step;
+    reg  frame_crc__check;
+    reg  frame_crc__in_crc_field;
+    reg  [3:0] frame_crc__bit_cnt;
+    wire  [14:0] frame_crc__crc;
+    wire  frame_crc__crc_ok;
+    reg  tx_frame__clk;
+    reg  tx_frame__load;
+    reg  [28:0] tx_frame__id;
+    reg  tx_frame__ide;
+    reg  tx_frame__rtr;
+    reg  [3:0] tx_frame__dlc;
+    reg  [63:0] tx_frame__data;
+    reg  [4:0] tx_frame__field;
+    reg  [5:0] tx_frame__bit_cnt;
+    reg  [14:0] tx_frame__crc;
+    wire  tx_frame__frame_bit;
+    wire  tx_frame__frame_ide;
+    reg  rx_frame__clk;
+    reg  rx_frame__rst;
+    reg  rx_frame__sampled;
+    reg  [5:0] rx_frame__bit_cnt;
+    reg  [6:0] rx_frame__bit_cnt_inc;
+    reg  rx_frame__clear;
+    reg  rx_frame__shift_id;
+    reg  rx_frame__take_srr_rtr;
+    reg  rx_frame__take_ide;
+    reg  rx_frame__take_rtr_ext;
+    reg  rx_frame__take_dlc;
+    reg  rx_frame__take_data_len;
+    reg  rx_frame__take_data;
+    reg  rx_frame__publish;
+    wire  rx_frame__no_data;
+    wire  rx_frame__data_end;
+    wire  rx_frame__rx_valid;
+    wire  [28:0] rx_frame__rx_id;
+    wire  rx_frame__rx_ide;
+    wire  rx_frame__rx_rtr;
+    wire  [3:0] rx_frame__rx_dlc;
+    wire  [63:0] rx_frame__rx_data;
+    reg  detect__sample;
+    reg  detect__sampled;
+    reg  [4:0] detect__field;
+    reg  detect__is_tx;
+    reg  detect__tx_bit;
+    reg  detect__in_frame;
+    reg  detect__in_arbitration;
+    reg  detect__ack_slot;
+    reg  detect__in_delim;
+    reg  detect__bc0;
+    reg  detect__bc6;
+    reg  detect__bc7;
+    reg  detect__flag_passive;
+    reg  detect__crc_ok;
+    reg  detect__last_bit_arb;
+    reg  detect__at_stuff_bit;
+    reg  detect__stuff_last;
+    reg  detect__listen_only;
+    reg  detect__ack_check_off;
+    wire  detect__error;
+    wire  detect__flag_error;
+    wire  detect__bit_err;
+    wire  detect__stuff_err;
+    wire  detect__form_err;
+    wire  detect__crc_err;
+    wire  detect__ack_err;
+    wire  detect__sof_error;
+    wire  detect__lost;
+    wire  detect__tec_exempt;
+    reg  rules__clk;
+    reg  rules__sample;
+    reg  rules__sampled;
+    reg  rules__at_stuff_bit;
+    reg  [4:0] rules__field;
+    reg  rules__is_tx;
+    reg  rules__tx_bit;
+    reg  rules__flag_passive;
+    reg  rules__in_delim;
+    reg  rules__after_error_flag;
+    reg  rules__bc0;
+    reg  rules__delim_first;
+    reg  rules__dom7;
+    reg  rules__ack_pending;
+    reg  rules__tx_valid;
+    reg  rules__listen_only;
+    reg  rules__error;
+    reg  rules__flag_error;
+    reg  rules__ack_err;
+    reg  rules__tec_exempt;
+    reg  rules__as_tx;
+    reg  [8:0] rules__tec;
+    reg  [7:0] rules__rec;
+    reg  rules__error_passive;
+    reg  rules__bus_off;
+    wire  rules__tec_add8;
+    wire  rules__rec_add1;
+    wire  rules__rec_add8;
+    wire  rules__tx_success;
+    wire  rules__rx_success;
+    wire  rules__passive_after;
+    wire  rules__bus_off_after;
+    wire  rules__ack_defer;
+    wire  rules__ack_counted;
+    reg  fc__clk;
+    reg  fc__rst;
+    reg  fc__tec_add8;
+    reg  fc__rec_add1;
+    reg  fc__rec_add8;
+    reg  fc__tx_success;
+    reg  fc__rx_success;
+    reg  fc__recovered;
+    reg  [7:0] fc__ewl;
+    wire  [8:0] fc__tec;
+    wire  [7:0] fc__rec;
+    wire  [1:0] fc__err_state;
+    wire  fc__error_passive;
+    wire  fc__bus_off;
+    wire  fc__warning;
+    reg  err_capture__clk;
+    reg  err_capture__rst;
+    reg  err_capture__capture;
+    reg  err_capture__bit_err;
+    reg  err_capture__stuff_err;
+    reg  err_capture__form_err;
+    reg  err_capture__ack_err;
+    reg  err_capture__crc_err;
+    reg  err_capture__as_tx;
+    reg  err_capture__arb_lost;
+    reg  [4:0] err_capture__field;
+    reg  [4:0] err_capture__bit_cnt;
+    wire  err_capture__err_valid;
+    wire  [2:0] err_capture__err_kind;
+    wire  [4:0] err_capture__err_field;
+    wire  err_capture__err_tx;
+    wire  [4:0] err_capture__alc;
+    wire  [7:0] err_capture__cnt_bit;
+    wire  [7:0] err_capture__cnt_stuff;
+    wire  [7:0] err_capture__cnt_crc;
+    wire  [7:0] err_capture__cnt_form;
+    wire  [7:0] err_capture__cnt_ack;
+    
+    // Local signals
+    reg  listen_only;
+    reg  ack_check_off;
+    reg  loopback;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__fsm fsm(
+        .clk(fsm__clk),
+        .rst(fsm__rst),
+        .sample(fsm__sample),
+        .sampled(fsm__sampled),
+        .bit_start(fsm__bit_start),
+        .hard_sync(fsm__hard_sync),
+        .hard_sync_enable(fsm__hard_sync_enable),
+        .tx(fsm__tx),
+        .listen_only(fsm__listen_only),
+        .loopback(fsm__loopback),
+        .single_shot(fsm__single_shot),
+        .tx_req(fsm__tx_req),
+        .tx_abort(fsm__tx_abort),
+        .tx_pending(fsm__tx_pending),
+        .tx_failed(fsm__tx_failed),
+        .tx_done(fsm__tx_done),
+        .arb_lost(fsm__arb_lost),
+        .tx_load(fsm__tx_load),
+        .frame_bit(fsm__frame_bit),
+        .frame_ide(fsm__frame_ide),
+        .stuff_insert(fsm__stuff_insert),
+        .at_stuff_bit(fsm__at_stuff_bit),
+        .stuff_last(fsm__stuff_last),
+        .crc_ok(fsm__crc_ok),
+        .no_data(fsm__no_data),
+        .data_end(fsm__data_end),
+        .error(fsm__error),
+        .flag_error(fsm__flag_error),
+        .lost(fsm__lost),
+        .sof_error(fsm__sof_error),
+        .passive_after(fsm__passive_after),
+        .bus_off_after(fsm__bus_off_after),
+        .ack_defer(fsm__ack_defer),
+        .ack_counted(fsm__ack_counted),
+        .error_passive(fsm__error_passive),
+        .bus_off(fsm__bus_off),
+        .field(fsm__field),
+        .bit_cnt(fsm__bit_cnt),
+        .bit_cnt_inc(fsm__bit_cnt_inc),
+        .is_tx(fsm__is_tx),
+        .flag_passive(fsm__flag_passive),
+        .last_bit_arb(fsm__last_bit_arb),
+        .delim_first(fsm__delim_first),
+        .dom7(fsm__dom7),
+        .ack_pending(fsm__ack_pending),
+        .in_arbitration(fsm__in_arbitration),
+        .in_frame(fsm__in_frame),
+        .ack_slot(fsm__ack_slot),
+        .in_delim(fsm__in_delim),
+        .after_error_flag(fsm__after_error_flag),
+        .bc0(fsm__bc0),
+        .bc6(fsm__bc6),
+        .bc7(fsm__bc7),
+        .in_crc_field(fsm__in_crc_field),
+        .sof(fsm__sof),
+        .stuff_stop(fsm__stuff_stop),
+        .stuff_resync(fsm__stuff_resync),
+        .crc_step(fsm__crc_step),
+        .crc_check(fsm__crc_check),
+        .rx_shift_id(fsm__rx_shift_id),
+        .rx_take_srr_rtr(fsm__rx_take_srr_rtr),
+        .rx_take_ide(fsm__rx_take_ide),
+        .rx_take_rtr_ext(fsm__rx_take_rtr_ext),
+        .rx_take_dlc(fsm__rx_take_dlc),
+        .rx_take_data_len(fsm__rx_take_data_len),
+        .rx_take_data(fsm__rx_take_data),
+        .rx_publish(fsm__rx_publish),
+        .tx_valid(fsm__tx_valid),
+        .recovered(fsm__recovered)
+    );
+    drcc__chan_b__bsp__stuffing stuffing(
+        .clk(stuffing__clk),
+        .rst(stuffing__rst),
+        .sample(stuffing__sample),
+        .sampled(stuffing__sampled),
+        .start(stuffing__start),
+        .stop(stuffing__stop),
+        .resync(stuffing__resync),
+        .insert(stuffing__insert),
+        .at_stuff_bit(stuffing__at_stuff_bit),
+        .last(stuffing__last)
+    );
+    drcc__chan_b__bsp__frame_crc frame_crc(
+        .clk(frame_crc__clk),
+        .rst(frame_crc__rst),
+        .sampled(frame_crc__sampled),
+        .start(frame_crc__start),
+        .step(frame_crc__step),
+        .check(frame_crc__check),
+        .in_crc_field(frame_crc__in_crc_field),
+        .bit_cnt(frame_crc__bit_cnt),
+        .crc(frame_crc__crc),
+        .crc_ok(frame_crc__crc_ok)
+    );
+    drcc__chan_b__bsp__tx_frame tx_frame(
+        .clk(tx_frame__clk),
+        .load(tx_frame__load),
+        .id(tx_frame__id),
+        .ide(tx_frame__ide),
+        .rtr(tx_frame__rtr),
+        .dlc(tx_frame__dlc),
+        .data(tx_frame__data),
+        .field(tx_frame__field),
+        .bit_cnt(tx_frame__bit_cnt),
+        .crc(tx_frame__crc),
+        .frame_bit(tx_frame__frame_bit),
+        .frame_ide(tx_frame__frame_ide)
+    );
+    drcc__chan_b__bsp__rx_frame rx_frame(
+        .clk(rx_frame__clk),
+        .rst(rx_frame__rst),
+        .sampled(rx_frame__sampled),
+        .bit_cnt(rx_frame__bit_cnt),
+        .bit_cnt_inc(rx_frame__bit_cnt_inc),
+        .clear(rx_frame__clear),
+        .shift_id(rx_frame__shift_id),
+        .take_srr_rtr(rx_frame__take_srr_rtr),
+        .take_ide(rx_frame__take_ide),
+        .take_rtr_ext(rx_frame__take_rtr_ext),
+        .take_dlc(rx_frame__take_dlc),
+        .take_data_len(rx_frame__take_data_len),
+        .take_data(rx_frame__take_data),
+        .publish(rx_frame__publish),
+        .no_data(rx_frame__no_data),
+        .data_end(rx_frame__data_end),
+        .rx_valid(rx_frame__rx_valid),
+        .rx_id(rx_frame__rx_id),
+        .rx_ide(rx_frame__rx_ide),
+        .rx_rtr(rx_frame__rx_rtr),
+        .rx_dlc(rx_frame__rx_dlc),
+        .rx_data(rx_frame__rx_data)
+    );
+    drcc__chan_b__bsp__detect detect(
+        .sample(detect__sample),
+        .sampled(detect__sampled),
+        .field(detect__field),
+        .is_tx(detect__is_tx),
+        .tx_bit(detect__tx_bit),
+        .in_frame(detect__in_frame),
+        .in_arbitration(detect__in_arbitration),
+        .ack_slot(detect__ack_slot),
+        .in_delim(detect__in_delim),
+        .bc0(detect__bc0),
+        .bc6(detect__bc6),
+        .bc7(detect__bc7),
+        .flag_passive(detect__flag_passive),
+        .crc_ok(detect__crc_ok),
+        .last_bit_arb(detect__last_bit_arb),
+        .at_stuff_bit(detect__at_stuff_bit),
+        .stuff_last(detect__stuff_last),
+        .listen_only(detect__listen_only),
+        .ack_check_off(detect__ack_check_off),
+        .error(detect__error),
+        .flag_error(detect__flag_error),
+        .bit_err(detect__bit_err),
+        .stuff_err(detect__stuff_err),
+        .form_err(detect__form_err),
+        .crc_err(detect__crc_err),
+        .ack_err(detect__ack_err),
+        .sof_error(detect__sof_error),
+        .lost(detect__lost),
+        .tec_exempt(detect__tec_exempt)
+    );
+    drcc__chan_b__bsp__rules rules(
+        .clk(rules__clk),
+        .sample(rules__sample),
+        .sampled(rules__sampled),
+        .at_stuff_bit(rules__at_stuff_bit),
+        .field(rules__field),
+        .is_tx(rules__is_tx),
+        .tx_bit(rules__tx_bit),
+        .flag_passive(rules__flag_passive),
+        .in_delim(rules__in_delim),
+        .after_error_flag(rules__after_error_flag),
+        .bc0(rules__bc0),
+        .delim_first(rules__delim_first),
+        .dom7(rules__dom7),
+        .ack_pending(rules__ack_pending),
+        .tx_valid(rules__tx_valid),
+        .listen_only(rules__listen_only),
+        .error(rules__error),
+        .flag_error(rules__flag_error),
+        .ack_err(rules__ack_err),
+        .tec_exempt(rules__tec_exempt),
+        .as_tx(rules__as_tx),
+        .tec(rules__tec),
+        .rec(rules__rec),
+        .error_passive(rules__error_passive),
+        .bus_off(rules__bus_off),
+        .tec_add8(rules__tec_add8),
+        .rec_add1(rules__rec_add1),
+        .rec_add8(rules__rec_add8),
+        .tx_success(rules__tx_success),
+        .rx_success(rules__rx_success),
+        .passive_after(rules__passive_after),
+        .bus_off_after(rules__bus_off_after),
+        .ack_defer(rules__ack_defer),
+        .ack_counted(rules__ack_counted)
+    );
+    drcc__chan_b__bsp__fc fc(
+        .clk(fc__clk),
+        .rst(fc__rst),
+        .tec_add8(fc__tec_add8),
+        .rec_add1(fc__rec_add1),
+        .rec_add8(fc__rec_add8),
+        .tx_success(fc__tx_success),
+        .rx_success(fc__rx_success),
+        .recovered(fc__recovered),
+        .ewl(fc__ewl),
+        .tec(fc__tec),
+        .rec(fc__rec),
+        .err_state(fc__err_state),
+        .error_passive(fc__error_passive),
+        .bus_off(fc__bus_off),
+        .warning(fc__warning)
+    );
+    drcc__chan_b__bsp__err_capture err_capture(
+        .clk(err_capture__clk),
+        .rst(err_capture__rst),
+        .capture(err_capture__capture),
+        .bit_err(err_capture__bit_err),
+        .stuff_err(err_capture__stuff_err),
+        .form_err(err_capture__form_err),
+        .ack_err(err_capture__ack_err),
+        .crc_err(err_capture__crc_err),
+        .as_tx(err_capture__as_tx),
+        .arb_lost(err_capture__arb_lost),
+        .field(err_capture__field),
+        .bit_cnt(err_capture__bit_cnt),
+        .err_valid(err_capture__err_valid),
+        .err_kind(err_capture__err_kind),
+        .err_field(err_capture__err_field),
+        .err_tx(err_capture__err_tx),
+        .alc(err_capture__alc),
+        .cnt_bit(err_capture__cnt_bit),
+        .cnt_stuff(err_capture__cnt_stuff),
+        .cnt_crc(err_capture__cnt_crc),
+        .cnt_form(err_capture__cnt_form),
+        .cnt_ack(err_capture__cnt_ack)
+    );
+    
+    // Update code
+    always @(*) begin
+        fsm__clk = clk;
+        fsm__rst = rst;
+        stuffing__clk = clk;
+        stuffing__rst = rst;
+        frame_crc__clk = clk;
+        frame_crc__rst = rst;
+        tx_frame__clk = clk;
+        rx_frame__clk = clk;
+        rx_frame__rst = rst;
+        rules__clk = clk;
+        fc__clk = clk;
+        fc__rst = rst;
+        err_capture__clk = clk;
+        err_capture__rst = rst;
+        listen_only = mode == mode_listen_only;
+        ack_check_off = mode[32'h1];
+        loopback = mode == mode_loopback;
+        fsm__sample = sample;
+        fsm__sampled = sampled;
+        fsm__bit_start = bit_start;
+        fsm__hard_sync = hard_sync;
+        fsm__listen_only = listen_only;
+        fsm__loopback = loopback;
+        fsm__single_shot = single_shot;
+        fsm__tx_req = tx_req;
+        fsm__tx_abort = tx_abort;
+        fsm__frame_bit = tx_frame__frame_bit;
+        fsm__frame_ide = tx_frame__frame_ide;
+        fsm__stuff_insert = stuffing__insert;
+        fsm__at_stuff_bit = stuffing__at_stuff_bit;
+        fsm__stuff_last = stuffing__last;
+        fsm__crc_ok = frame_crc__crc_ok;
+        fsm__no_data = rx_frame__no_data;
+        fsm__data_end = rx_frame__data_end;
+        fsm__error = detect__error;
+        fsm__flag_error = detect__flag_error;
+        fsm__lost = detect__lost;
+        fsm__sof_error = detect__sof_error;
+        fsm__passive_after = rules__passive_after;
+        fsm__bus_off_after = rules__bus_off_after;
+        fsm__ack_defer = rules__ack_defer;
+        fsm__ack_counted = rules__ack_counted;
+        fsm__error_passive = fc__error_passive;
+        fsm__bus_off = fc__bus_off;
+        stuffing__sample = sample;
+        stuffing__sampled = sampled;
+        stuffing__start = fsm__sof;
+        stuffing__stop = fsm__stuff_stop;
+        stuffing__resync = fsm__stuff_resync;
+        frame_crc__sampled = sampled;
+        frame_crc__start = fsm__sof;
+        frame_crc__step = fsm__crc_step;
+        frame_crc__check = fsm__crc_check;
+        frame_crc__in_crc_field = fsm__in_crc_field;
+        frame_crc__bit_cnt = fsm__bit_cnt[(32'h0)+:(4)];
+        tx_frame__load = fsm__tx_load;
+        tx_frame__id = tx_id;
+        tx_frame__ide = tx_ide;
+        tx_frame__rtr = tx_rtr;
+        tx_frame__dlc = tx_dlc;
+        tx_frame__data = tx_data;
+        tx_frame__field = fsm__field;
+        tx_frame__bit_cnt = fsm__bit_cnt;
+        tx_frame__crc = frame_crc__crc;
+        rx_frame__sampled = sampled;
+        rx_frame__bit_cnt = fsm__bit_cnt;
+        rx_frame__bit_cnt_inc = fsm__bit_cnt_inc;
+        rx_frame__clear = fsm__sof;
+        rx_frame__shift_id = fsm__rx_shift_id;
+        rx_frame__take_srr_rtr = fsm__rx_take_srr_rtr;
+        rx_frame__take_ide = fsm__rx_take_ide;
+        rx_frame__take_rtr_ext = fsm__rx_take_rtr_ext;
+        rx_frame__take_dlc = fsm__rx_take_dlc;
+        rx_frame__take_data_len = fsm__rx_take_data_len;
+        rx_frame__take_data = fsm__rx_take_data;
+        rx_frame__publish = fsm__rx_publish;
+        detect__sample = sample;
+        detect__sampled = sampled;
+        detect__field = fsm__field;
+        detect__is_tx = fsm__is_tx;
+        detect__tx_bit = fsm__tx;
+        detect__in_frame = fsm__in_frame;
+        detect__in_arbitration = fsm__in_arbitration;
+        detect__ack_slot = fsm__ack_slot;
+        detect__in_delim = fsm__in_delim;
+        detect__bc0 = fsm__bc0;
+        detect__bc6 = fsm__bc6;
+        detect__bc7 = fsm__bc7;
+        detect__flag_passive = fsm__flag_passive;
+        detect__crc_ok = frame_crc__crc_ok;
+        detect__last_bit_arb = fsm__last_bit_arb;
+        detect__at_stuff_bit = stuffing__at_stuff_bit;
+        detect__stuff_last = stuffing__last;
+        detect__listen_only = listen_only;
+        detect__ack_check_off = ack_check_off;
+        rules__sample = sample;
+        rules__sampled = sampled;
+        rules__at_stuff_bit = stuffing__at_stuff_bit;
+        rules__field = fsm__field;
+        rules__is_tx = fsm__is_tx;
+        rules__tx_bit = fsm__tx;
+        rules__flag_passive = fsm__flag_passive;
+        rules__in_delim = fsm__in_delim;
+        rules__after_error_flag = fsm__after_error_flag;
+        rules__bc0 = fsm__bc0;
+        rules__delim_first = fsm__delim_first;
+        rules__dom7 = fsm__dom7;
+        rules__ack_pending = fsm__ack_pending;
+        rules__tx_valid = fsm__tx_valid;
+        rules__listen_only = listen_only;
+        rules__error = detect__error;
+        rules__flag_error = detect__flag_error;
+        rules__ack_err = detect__ack_err;
+        rules__tec_exempt = detect__tec_exempt;
+        rules__as_tx = fsm__is_tx || detect__sof_error;
+        rules__tec = fc__tec;
+        rules__rec = fc__rec;
+        rules__error_passive = fc__error_passive;
+        rules__bus_off = fc__bus_off;
+        fc__tec_add8 = rules__tec_add8;
+        fc__rec_add1 = rules__rec_add1;
+        fc__rec_add8 = rules__rec_add8;
+        fc__tx_success = rules__tx_success;
+        fc__rx_success = rules__rx_success;
+        fc__recovered = fsm__recovered;
+        fc__ewl = ewl;
+        err_capture__capture = detect__error || detect__flag_error;
+        err_capture__bit_err = detect__bit_err;
+        err_capture__stuff_err = detect__stuff_err;
+        err_capture__form_err = detect__form_err;
+        err_capture__ack_err = detect__ack_err;
+        err_capture__crc_err = detect__crc_err;
+        err_capture__as_tx = fsm__is_tx || detect__sof_error;
+        err_capture__arb_lost = detect__lost;
+        err_capture__field = fsm__field;
+        err_capture__bit_cnt = fsm__bit_cnt[(32'h0)+:(5)];
+        hard_sync_enable = fsm__hard_sync_enable;
+        tx = fsm__tx;
+        tx_pending = fsm__tx_pending;
+        tx_failed = fsm__tx_failed;
+        tx_done = fsm__tx_done;
+        arb_lost = fsm__arb_lost;
+        rx_valid = rx_frame__rx_valid;
+        rx_id = rx_frame__rx_id;
+        rx_ide = rx_frame__rx_ide;
+        rx_rtr = rx_frame__rx_rtr;
+        rx_dlc = rx_frame__rx_dlc;
+        rx_data = rx_frame__rx_data;
+        field = fsm__field;
+        tec = fc__tec;
+        rec = fc__rec;
+        err_state = fc__err_state;
+        err_warning = fc__warning;
+        err_valid = err_capture__err_valid;
+        err_kind = err_capture__err_kind;
+        err_field = err_capture__err_field;
+        err_tx = err_capture__err_tx;
+        alc = err_capture__alc;
+        cnt_bit = err_capture__cnt_bit;
+        cnt_stuff = err_capture__cnt_stuff;
+        cnt_crc = err_capture__cnt_crc;
+        cnt_form = err_capture__cnt_form;
+        cnt_ack = err_capture__cnt_ack;
+    end
+    
+endmodule // drcc__chan_b__bsp
+
+
+module drcc__chan_b__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  bit_mon;
+    reg  stuff_as_bit;
+    
+    // Update code
+    always @(*) begin
+        stuff_err = 1'b0;
+        stuff_as_bit = 1'b0;
+        tec_exempt = 1'b0;
+        bit_mon = 1'b0;
+        form_err = 1'b0;
+        crc_err = 1'b0;
+        ack_err = 1'b0;
+        flag_error = 1'b0;
+        sof_error = 1'b0;
+        lost = 1'b0;
+        if (sample && at_stuff_bit && (sampled == stuff_last)) begin
+            stuff_err = 1'b1;
+            if (is_tx && ~(last_bit_arb && tx_bit)) begin
+                stuff_as_bit = 1'b1;
+            end
+            if (is_tx && last_bit_arb && tx_bit) begin
+                tec_exempt = 1'b1;
+            end
+        end
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if (is_tx && in_frame && (sampled != tx_bit)) begin
+                if (in_arbitration && tx_bit) begin
+                    lost = 1'b1;
+                end
+                else if (ack_slot && tx_bit) begin
+                end
+                else begin
+                    bit_mon = 1'b1;
+                end
+            end
+            if (~is_tx && ack_slot && ~tx_bit && sampled) begin
+                bit_mon = 1'b1;
+            end
+            case (field)
+                Field__Idle:
+                    begin
+                        if (sampled && ~tx_bit) begin
+                            sof_error = 1'b1;
+                            bit_mon = 1'b1;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        form_err = ~sampled;
+                    end
+                Field__AckSlot:
+                    begin
+                        ack_err = is_tx && sampled && ~ack_check_off;
+                    end
+                Field__AckDelim:
+                    begin
+                        if (~sampled) begin
+                            form_err = 1'b1;
+                        end
+                        else if (~crc_ok && ~is_tx) begin
+                            crc_err = 1'b1;
+                        end
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled && ~(bc6 && ~is_tx)) begin
+                            form_err = 1'b1;
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        flag_error = ~flag_passive && sampled;
+                    end
+                Field__OverloadFlag:
+                    begin
+                        flag_error = sampled && ~listen_only;
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (in_delim && ~bc0 && ~sampled && ~bc7) begin
+                form_err = 1'b1;
+            end
+        end
+        error = stuff_err || bit_mon || form_err || crc_err || ack_err;
+        bit_err = stuff_as_bit || bit_mon || flag_error;
+    end
+    
+endmodule // drcc__chan_b__bsp__detect
+
+
+module drcc__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  capture;
+    input wire  bit_err;
+    input wire  stuff_err;
+    input wire  form_err;
+    input wire  ack_err;
+    input wire  crc_err;
+    input wire  as_tx;
+    input wire  arb_lost;
+    input wire  [4:0] field;
+    input wire  [4:0] bit_cnt;
+    output reg  err_valid;
+    output reg  [2:0] err_kind;
+    output reg  [4:0] err_field;
+    output reg  err_tx;
+    output reg  [4:0] alc;
+    output reg  [7:0] cnt_bit;
+    output reg  [7:0] cnt_stuff;
+    output reg  [7:0] cnt_crc;
+    output reg  [7:0] cnt_form;
+    output reg  [7:0] cnt_ack;
+    
+    // Constant declarations
+    localparam  k_bit = 3'b1;
+    localparam  k_stuff = 3'b10;
+    localparam  k_crc = 3'b11;
+    localparam  k_form = 3'b100;
+    localparam  k_ack = 3'b101;
+    localparam  zero3 = 3'b0;
+    localparam  n5_11 = 5'b1011;
+    localparam  n5_12 = 5'b1100;
+    localparam  n5_13 = 5'b1101;
+    localparam  n5_31 = 5'b11111;
+    localparam  zero5 = 5'b0;
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
     reg  err_valid_q__d;
     wire  err_valid_q__q;
     reg  err_valid_q__clock;
@@ -7384,154 +9509,9 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  [7:0] cnt_ack_q__d;
     wire  [7:0] cnt_ack_q__q;
     reg  cnt_ack_q__clock;
-    reg  [14:0] crc_step__crc;
-    reg  crc_step__data_bit;
-    wire  [14:0] crc_step__crc_next;
-    reg  fc__clk;
-    reg  fc__rst;
-    reg  fc__tec_add8;
-    reg  fc__rec_add1;
-    reg  fc__rec_add8;
-    reg  fc__tx_success;
-    reg  fc__rx_success;
-    reg  fc__recovered;
-    wire  [8:0] fc__tec;
-    wire  [7:0] fc__rec;
-    wire  [1:0] fc__err_state;
-    wire  fc__error_passive;
-    wire  fc__bus_off;
-    reg  [4:0] field_q__d;
-    wire  [4:0] field_q__q;
-    reg  field_q__clock;
-    reg  [6:0] bit_cnt__d;
-    wire  [6:0] bit_cnt__q;
-    reg  bit_cnt__clock;
-    reg  is_tx__d;
-    wire  is_tx__q;
-    reg  is_tx__clock;
-    reg  pending__d;
-    wire  pending__q;
-    reg  pending__clock;
-    reg  [2:0] stuff_cnt__d;
-    wire  [2:0] stuff_cnt__q;
-    reg  stuff_cnt__clock;
-    reg  stuff_last__d;
-    wire  stuff_last__q;
-    reg  stuff_last__clock;
-    reg  stuff_en__d;
-    wire  stuff_en__q;
-    reg  stuff_en__clock;
-    reg  [14:0] crc__d;
-    wire  [14:0] crc__q;
-    reg  crc__clock;
-    reg  crc_ok__d;
-    wire  crc_ok__q;
-    reg  crc_ok__clock;
-    reg  flag_passive__d;
-    wire  flag_passive__q;
-    reg  flag_passive__clock;
-    reg  [6:0] recovery_cnt__d;
-    wire  [6:0] recovery_cnt__q;
-    reg  recovery_cnt__clock;
-    reg  tx_q__d;
-    wire  tx_q__q;
-    reg  tx_q__clock;
-    reg  last_bit_arb__d;
-    wire  last_bit_arb__q;
-    reg  last_bit_arb__clock;
-    reg  [2:0] dom_cnt__d;
-    wire  [2:0] dom_cnt__q;
-    reg  dom_cnt__clock;
-    reg  delim_first__d;
-    wire  delim_first__q;
-    reg  delim_first__clock;
-    reg  ack_passive_pending__d;
-    wire  ack_passive_pending__q;
-    reg  ack_passive_pending__clock;
-    reg  p_in_arbitration__d;
-    wire  p_in_arbitration__q;
-    reg  p_in_arbitration__clock;
-    reg  p_ide__d;
-    wire  p_ide__q;
-    reg  p_ide__clock;
-    reg  p_in_frame__d;
-    wire  p_in_frame__q;
-    reg  p_in_frame__clock;
-    reg  p_crc_covered__d;
-    wire  p_crc_covered__q;
-    reg  p_crc_covered__clock;
-    reg  p_in_delim__d;
-    wire  p_in_delim__q;
-    reg  p_in_delim__clock;
-    reg  p_after_error_flag__d;
-    wire  p_after_error_flag__q;
-    reg  p_after_error_flag__clock;
-    reg  p_ack_slot__d;
-    wire  p_ack_slot__q;
-    reg  p_ack_slot__clock;
-    reg  p_stuff_bit__d;
-    wire  p_stuff_bit__q;
-    reg  p_stuff_bit__clock;
-    reg  p_bc0__d;
-    wire  p_bc0__q;
-    reg  p_bc0__clock;
-    reg  p_bc2__d;
-    wire  p_bc2__q;
-    reg  p_bc2__clock;
-    reg  p_bc3__d;
-    wire  p_bc3__q;
-    reg  p_bc3__clock;
-    reg  p_bc5__d;
-    wire  p_bc5__q;
-    reg  p_bc5__clock;
-    reg  p_bc6__d;
-    wire  p_bc6__q;
-    reg  p_bc6__clock;
-    reg  p_bc7__d;
-    wire  p_bc7__q;
-    reg  p_bc7__clock;
-    reg  p_bc10__d;
-    wire  p_bc10__q;
-    reg  p_bc10__clock;
-    reg  p_bc14__d;
-    wire  p_bc14__q;
-    reg  p_bc14__clock;
-    reg  p_bc17__d;
-    wire  p_bc17__q;
-    reg  p_bc17__clock;
-    reg  p_data_end__d;
-    wire  p_data_end__q;
-    reg  p_data_end__clock;
-    reg  p_recovery_end__d;
-    wire  p_recovery_end__q;
-    reg  p_recovery_end__clock;
-    reg  p_dom7__d;
-    wire  p_dom7__q;
-    reg  p_dom7__clock;
-    reg  p_crc_bit__d;
-    wire  p_crc_bit__q;
-    reg  p_crc_bit__clock;
-    reg  p_passive__d;
-    wire  p_passive__q;
-    reg  p_passive__clock;
-    reg  p_bus_off__d;
-    wire  p_bus_off__q;
-    reg  p_bus_off__clock;
-    reg  p_suspend_due__d;
-    wire  p_suspend_due__q;
-    reg  p_suspend_due__clock;
-    reg  p_tec_ge120__d;
-    wire  p_tec_ge120__q;
-    reg  p_tec_ge120__clock;
-    reg  p_tec_ge248__d;
-    wire  p_tec_ge248__q;
-    reg  p_tec_ge248__clock;
-    reg  p_rec_ge127__d;
-    wire  p_rec_ge127__q;
-    reg  p_rec_ge127__clock;
-    reg  p_rec_ge120__d;
-    wire  p_rec_ge120__q;
-    reg  p_rec_ge120__clock;
+    reg  [4:0] p_alc__d;
+    wire  [4:0] p_alc__q;
+    reg  p_alc__clock;
     reg  p_cnt_bit_max__d;
     wire  p_cnt_bit_max__q;
     reg  p_cnt_bit_max__clock;
@@ -7547,597 +9527,95 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  p_cnt_ack_max__d;
     wire  p_cnt_ack_max__q;
     reg  p_cnt_ack_max__clock;
-    reg  [4:0] p_alc__d;
-    wire  [4:0] p_alc__q;
-    reg  p_alc__clock;
-    reg  [15:0] txf_ida__d;
-    wire  [15:0] txf_ida__q;
-    reg  txf_ida__clock;
-    reg  [31:0] txf_idb__d;
-    wire  [31:0] txf_idb__q;
-    reg  txf_idb__clock;
-    reg  txf_ide__d;
-    wire  txf_ide__q;
-    reg  txf_ide__clock;
-    reg  txf_rtr__d;
-    wire  txf_rtr__q;
-    reg  txf_rtr__clock;
-    reg  [3:0] txf_dlc__d;
-    wire  [3:0] txf_dlc__q;
-    reg  txf_dlc__clock;
-    reg  [63:0] txf_data__d;
-    wire  [63:0] txf_data__q;
-    reg  txf_data__clock;
-    reg  [28:0] rxs_id__d;
-    wire  [28:0] rxs_id__q;
-    reg  rxs_id__clock;
-    reg  rxs_srr_rtr__d;
-    wire  rxs_srr_rtr__q;
-    reg  rxs_srr_rtr__clock;
-    reg  rxs_ide__d;
-    wire  rxs_ide__q;
-    reg  rxs_ide__clock;
-    reg  rxs_rtr__d;
-    wire  rxs_rtr__q;
-    reg  rxs_rtr__clock;
-    reg  [3:0] rxs_dlc__d;
-    wire  [3:0] rxs_dlc__q;
-    reg  rxs_dlc__clock;
-    reg  [63:0] rxs_data__d;
-    wire  [63:0] rxs_data__q;
-    reg  rxs_data__clock;
-    reg  [6:0] data_len__d;
-    wire  [6:0] data_len__q;
-    reg  data_len__clock;
-    reg  rx_valid_q__d;
-    wire  rx_valid_q__q;
-    reg  rx_valid_q__clock;
-    reg  tx_done_q__d;
-    wire  tx_done_q__q;
-    reg  tx_done_q__clock;
-    reg  arb_lost_q__d;
-    wire  arb_lost_q__q;
-    reg  arb_lost_q__clock;
-    reg  [28:0] rx_id_q__d;
-    wire  [28:0] rx_id_q__q;
-    reg  rx_id_q__clock;
-    reg  rx_ide_q__d;
-    wire  rx_ide_q__q;
-    reg  rx_ide_q__clock;
-    reg  rx_rtr_q__d;
-    wire  rx_rtr_q__q;
-    reg  rx_rtr_q__clock;
-    reg  [3:0] rx_dlc_q__d;
-    wire  [3:0] rx_dlc_q__q;
-    reg  rx_dlc_q__clock;
-    reg  [63:0] rx_data_q__d;
-    wire  [63:0] rx_data_q__q;
-    reg  rx_data_q__clock;
     
     // Local signals
-    reg  starts;
-    reg  join_starts;
-    reg  listen_only;
-    reg  ack_check_off;
-    reg  loopback;
-    reg  stuff_err;
-    reg  stuff_as_bit;
-    reg  bit_err;
-    reg  form_err;
-    reg  crc_err;
-    reg  lost;
-    reg  sof_error;
-    reg  [2:0] err_kind_n;
+    reg  [2:0] kind;
     reg  [4:0] alc_n;
-    reg  tx_bit;
-    reg  [4:0] field_n;
-    reg  [6:0] bit_cnt_n;
-    reg  [6:0] bit_cnt_inc;
-    reg  is_tx_n;
-    reg  [2:0] stuff_cnt_n;
-    reg  stuff_last_n;
-    reg  stuff_en_n;
-    reg  [14:0] crc_n;
-    reg  crc_ok_n;
-    reg  flag_passive_n;
-    reg  tx_bit_n;
-    reg  bus_bit;
-    reg  start_ok;
-    reg  in_arbitration;
-    reg  in_frame;
-    reg  in_delim;
-    reg  after_error_flag;
-    reg  sof;
-    reg  sof_as_tx;
-    reg  crc_covered;
-    reg  [3:0] dlc_n;
-    reg  [6:0] data_bits;
-    reg  error;
-    reg  flag_error;
-    reg  suspend_due;
-    reg  passive_after;
-    reg  ev_recovered;
-    reg  ev_rx_success;
-    reg  ev_tx_success;
-    reg  ev_rec_add8;
-    reg  ev_rec_add1;
-    reg  ev_tec_add8;
-    reg  bus_off_after;
-    reg  join_ok;
-    reg  tec_exempt;
-    reg  ack_error;
-    reg  [3:0] id_a_idx;
-    reg  [4:0] id_b_idx;
-    reg  [1:0] dlc_idx;
-    reg  [5:0] data_idx;
-    reg  [3:0] crc_idx;
-    reg  [15:0] crc_tx;
-    reg  [3:0] crc_rx_idx;
-    reg  [5:0] data_wr_idx;
     
     // Sub module instances
-    drcc__chan_b__bsp__abort_pending abort_pending(
-        .d(abort_pending__d),
-        .q(abort_pending__q),
-        .clock(abort_pending__clock)
-    );
-    drcc__chan_b__bsp__attempt attempt(
-        .d(attempt__d),
-        .q(attempt__q),
-        .clock(attempt__clock)
-    );
-    drcc__chan_b__bsp__tx_failed_q tx_failed_q(
-        .d(tx_failed_q__d),
-        .q(tx_failed_q__q),
-        .clock(tx_failed_q__clock)
-    );
-    drcc__chan_b__bsp__err_valid_q err_valid_q(
+    drcc__chan_b__bsp__err_capture__err_valid_q err_valid_q(
         .d(err_valid_q__d),
         .q(err_valid_q__q),
         .clock(err_valid_q__clock)
     );
-    drcc__chan_b__bsp__err_kind_q err_kind_q(
+    drcc__chan_b__bsp__err_capture__err_kind_q err_kind_q(
         .d(err_kind_q__d),
         .q(err_kind_q__q),
         .clock(err_kind_q__clock)
     );
-    drcc__chan_b__bsp__err_field_q err_field_q(
+    drcc__chan_b__bsp__err_capture__err_field_q err_field_q(
         .d(err_field_q__d),
         .q(err_field_q__q),
         .clock(err_field_q__clock)
     );
-    drcc__chan_b__bsp__err_tx_q err_tx_q(
+    drcc__chan_b__bsp__err_capture__err_tx_q err_tx_q(
         .d(err_tx_q__d),
         .q(err_tx_q__q),
         .clock(err_tx_q__clock)
     );
-    drcc__chan_b__bsp__alc_q alc_q(
+    drcc__chan_b__bsp__err_capture__alc_q alc_q(
         .d(alc_q__d),
         .q(alc_q__q),
         .clock(alc_q__clock)
     );
-    drcc__chan_b__bsp__cnt_bit_q cnt_bit_q(
+    drcc__chan_b__bsp__err_capture__cnt_bit_q cnt_bit_q(
         .d(cnt_bit_q__d),
         .q(cnt_bit_q__q),
         .clock(cnt_bit_q__clock)
     );
-    drcc__chan_b__bsp__cnt_stuff_q cnt_stuff_q(
+    drcc__chan_b__bsp__err_capture__cnt_stuff_q cnt_stuff_q(
         .d(cnt_stuff_q__d),
         .q(cnt_stuff_q__q),
         .clock(cnt_stuff_q__clock)
     );
-    drcc__chan_b__bsp__cnt_crc_q cnt_crc_q(
+    drcc__chan_b__bsp__err_capture__cnt_crc_q cnt_crc_q(
         .d(cnt_crc_q__d),
         .q(cnt_crc_q__q),
         .clock(cnt_crc_q__clock)
     );
-    drcc__chan_b__bsp__cnt_form_q cnt_form_q(
+    drcc__chan_b__bsp__err_capture__cnt_form_q cnt_form_q(
         .d(cnt_form_q__d),
         .q(cnt_form_q__q),
         .clock(cnt_form_q__clock)
     );
-    drcc__chan_b__bsp__cnt_ack_q cnt_ack_q(
+    drcc__chan_b__bsp__err_capture__cnt_ack_q cnt_ack_q(
         .d(cnt_ack_q__d),
         .q(cnt_ack_q__q),
         .clock(cnt_ack_q__clock)
     );
-    drcc__chan_b__bsp__crc_step crc_step(
-        .crc(crc_step__crc),
-        .data_bit(crc_step__data_bit),
-        .crc_next(crc_step__crc_next)
-    );
-    drcc__chan_b__bsp__fc fc(
-        .clk(fc__clk),
-        .rst(fc__rst),
-        .tec_add8(fc__tec_add8),
-        .rec_add1(fc__rec_add1),
-        .rec_add8(fc__rec_add8),
-        .tx_success(fc__tx_success),
-        .rx_success(fc__rx_success),
-        .recovered(fc__recovered),
-        .tec(fc__tec),
-        .rec(fc__rec),
-        .err_state(fc__err_state),
-        .error_passive(fc__error_passive),
-        .bus_off(fc__bus_off)
-    );
-    drcc__chan_b__bsp__field_q field_q(
-        .d(field_q__d),
-        .q(field_q__q),
-        .clock(field_q__clock)
-    );
-    drcc__chan_b__bsp__bit_cnt bit_cnt(
-        .d(bit_cnt__d),
-        .q(bit_cnt__q),
-        .clock(bit_cnt__clock)
-    );
-    drcc__chan_b__bsp__is_tx is_tx(
-        .d(is_tx__d),
-        .q(is_tx__q),
-        .clock(is_tx__clock)
-    );
-    drcc__chan_b__bsp__pending pending(
-        .d(pending__d),
-        .q(pending__q),
-        .clock(pending__clock)
-    );
-    drcc__chan_b__bsp__stuff_cnt stuff_cnt(
-        .d(stuff_cnt__d),
-        .q(stuff_cnt__q),
-        .clock(stuff_cnt__clock)
-    );
-    drcc__chan_b__bsp__stuff_last stuff_last(
-        .d(stuff_last__d),
-        .q(stuff_last__q),
-        .clock(stuff_last__clock)
-    );
-    drcc__chan_b__bsp__stuff_en stuff_en(
-        .d(stuff_en__d),
-        .q(stuff_en__q),
-        .clock(stuff_en__clock)
-    );
-    drcc__chan_b__bsp__crc crc(
-        .d(crc__d),
-        .q(crc__q),
-        .clock(crc__clock)
-    );
-    drcc__chan_b__bsp__crc_ok crc_ok(
-        .d(crc_ok__d),
-        .q(crc_ok__q),
-        .clock(crc_ok__clock)
-    );
-    drcc__chan_b__bsp__flag_passive flag_passive(
-        .d(flag_passive__d),
-        .q(flag_passive__q),
-        .clock(flag_passive__clock)
-    );
-    drcc__chan_b__bsp__recovery_cnt recovery_cnt(
-        .d(recovery_cnt__d),
-        .q(recovery_cnt__q),
-        .clock(recovery_cnt__clock)
-    );
-    drcc__chan_b__bsp__tx_q tx_q(
-        .d(tx_q__d),
-        .q(tx_q__q),
-        .clock(tx_q__clock)
-    );
-    drcc__chan_b__bsp__last_bit_arb last_bit_arb(
-        .d(last_bit_arb__d),
-        .q(last_bit_arb__q),
-        .clock(last_bit_arb__clock)
-    );
-    drcc__chan_b__bsp__dom_cnt dom_cnt(
-        .d(dom_cnt__d),
-        .q(dom_cnt__q),
-        .clock(dom_cnt__clock)
-    );
-    drcc__chan_b__bsp__delim_first delim_first(
-        .d(delim_first__d),
-        .q(delim_first__q),
-        .clock(delim_first__clock)
-    );
-    drcc__chan_b__bsp__ack_passive_pending ack_passive_pending(
-        .d(ack_passive_pending__d),
-        .q(ack_passive_pending__q),
-        .clock(ack_passive_pending__clock)
-    );
-    drcc__chan_b__bsp__p_in_arbitration p_in_arbitration(
-        .d(p_in_arbitration__d),
-        .q(p_in_arbitration__q),
-        .clock(p_in_arbitration__clock)
-    );
-    drcc__chan_b__bsp__p_ide p_ide(
-        .d(p_ide__d),
-        .q(p_ide__q),
-        .clock(p_ide__clock)
-    );
-    drcc__chan_b__bsp__p_in_frame p_in_frame(
-        .d(p_in_frame__d),
-        .q(p_in_frame__q),
-        .clock(p_in_frame__clock)
-    );
-    drcc__chan_b__bsp__p_crc_covered p_crc_covered(
-        .d(p_crc_covered__d),
-        .q(p_crc_covered__q),
-        .clock(p_crc_covered__clock)
-    );
-    drcc__chan_b__bsp__p_in_delim p_in_delim(
-        .d(p_in_delim__d),
-        .q(p_in_delim__q),
-        .clock(p_in_delim__clock)
-    );
-    drcc__chan_b__bsp__p_after_error_flag p_after_error_flag(
-        .d(p_after_error_flag__d),
-        .q(p_after_error_flag__q),
-        .clock(p_after_error_flag__clock)
-    );
-    drcc__chan_b__bsp__p_ack_slot p_ack_slot(
-        .d(p_ack_slot__d),
-        .q(p_ack_slot__q),
-        .clock(p_ack_slot__clock)
-    );
-    drcc__chan_b__bsp__p_stuff_bit p_stuff_bit(
-        .d(p_stuff_bit__d),
-        .q(p_stuff_bit__q),
-        .clock(p_stuff_bit__clock)
-    );
-    drcc__chan_b__bsp__p_bc0 p_bc0(
-        .d(p_bc0__d),
-        .q(p_bc0__q),
-        .clock(p_bc0__clock)
-    );
-    drcc__chan_b__bsp__p_bc2 p_bc2(
-        .d(p_bc2__d),
-        .q(p_bc2__q),
-        .clock(p_bc2__clock)
-    );
-    drcc__chan_b__bsp__p_bc3 p_bc3(
-        .d(p_bc3__d),
-        .q(p_bc3__q),
-        .clock(p_bc3__clock)
-    );
-    drcc__chan_b__bsp__p_bc5 p_bc5(
-        .d(p_bc5__d),
-        .q(p_bc5__q),
-        .clock(p_bc5__clock)
-    );
-    drcc__chan_b__bsp__p_bc6 p_bc6(
-        .d(p_bc6__d),
-        .q(p_bc6__q),
-        .clock(p_bc6__clock)
-    );
-    drcc__chan_b__bsp__p_bc7 p_bc7(
-        .d(p_bc7__d),
-        .q(p_bc7__q),
-        .clock(p_bc7__clock)
-    );
-    drcc__chan_b__bsp__p_bc10 p_bc10(
-        .d(p_bc10__d),
-        .q(p_bc10__q),
-        .clock(p_bc10__clock)
-    );
-    drcc__chan_b__bsp__p_bc14 p_bc14(
-        .d(p_bc14__d),
-        .q(p_bc14__q),
-        .clock(p_bc14__clock)
-    );
-    drcc__chan_b__bsp__p_bc17 p_bc17(
-        .d(p_bc17__d),
-        .q(p_bc17__q),
-        .clock(p_bc17__clock)
-    );
-    drcc__chan_b__bsp__p_data_end p_data_end(
-        .d(p_data_end__d),
-        .q(p_data_end__q),
-        .clock(p_data_end__clock)
-    );
-    drcc__chan_b__bsp__p_recovery_end p_recovery_end(
-        .d(p_recovery_end__d),
-        .q(p_recovery_end__q),
-        .clock(p_recovery_end__clock)
-    );
-    drcc__chan_b__bsp__p_dom7 p_dom7(
-        .d(p_dom7__d),
-        .q(p_dom7__q),
-        .clock(p_dom7__clock)
-    );
-    drcc__chan_b__bsp__p_crc_bit p_crc_bit(
-        .d(p_crc_bit__d),
-        .q(p_crc_bit__q),
-        .clock(p_crc_bit__clock)
-    );
-    drcc__chan_b__bsp__p_passive p_passive(
-        .d(p_passive__d),
-        .q(p_passive__q),
-        .clock(p_passive__clock)
-    );
-    drcc__chan_b__bsp__p_bus_off p_bus_off(
-        .d(p_bus_off__d),
-        .q(p_bus_off__q),
-        .clock(p_bus_off__clock)
-    );
-    drcc__chan_b__bsp__p_suspend_due p_suspend_due(
-        .d(p_suspend_due__d),
-        .q(p_suspend_due__q),
-        .clock(p_suspend_due__clock)
-    );
-    drcc__chan_b__bsp__p_tec_ge120 p_tec_ge120(
-        .d(p_tec_ge120__d),
-        .q(p_tec_ge120__q),
-        .clock(p_tec_ge120__clock)
-    );
-    drcc__chan_b__bsp__p_tec_ge248 p_tec_ge248(
-        .d(p_tec_ge248__d),
-        .q(p_tec_ge248__q),
-        .clock(p_tec_ge248__clock)
-    );
-    drcc__chan_b__bsp__p_rec_ge127 p_rec_ge127(
-        .d(p_rec_ge127__d),
-        .q(p_rec_ge127__q),
-        .clock(p_rec_ge127__clock)
-    );
-    drcc__chan_b__bsp__p_rec_ge120 p_rec_ge120(
-        .d(p_rec_ge120__d),
-        .q(p_rec_ge120__q),
-        .clock(p_rec_ge120__clock)
-    );
-    drcc__chan_b__bsp__p_cnt_bit_max p_cnt_bit_max(
-        .d(p_cnt_bit_max__d),
-        .q(p_cnt_bit_max__q),
-        .clock(p_cnt_bit_max__clock)
-    );
-    drcc__chan_b__bsp__p_cnt_stuff_max p_cnt_stuff_max(
-        .d(p_cnt_stuff_max__d),
-        .q(p_cnt_stuff_max__q),
-        .clock(p_cnt_stuff_max__clock)
-    );
-    drcc__chan_b__bsp__p_cnt_crc_max p_cnt_crc_max(
-        .d(p_cnt_crc_max__d),
-        .q(p_cnt_crc_max__q),
-        .clock(p_cnt_crc_max__clock)
-    );
-    drcc__chan_b__bsp__p_cnt_form_max p_cnt_form_max(
-        .d(p_cnt_form_max__d),
-        .q(p_cnt_form_max__q),
-        .clock(p_cnt_form_max__clock)
-    );
-    drcc__chan_b__bsp__p_cnt_ack_max p_cnt_ack_max(
-        .d(p_cnt_ack_max__d),
-        .q(p_cnt_ack_max__q),
-        .clock(p_cnt_ack_max__clock)
-    );
-    drcc__chan_b__bsp__p_alc p_alc(
+    drcc__chan_b__bsp__err_capture__p_alc p_alc(
         .d(p_alc__d),
         .q(p_alc__q),
         .clock(p_alc__clock)
     );
-    drcc__chan_b__bsp__txf_ida txf_ida(
-        .d(txf_ida__d),
-        .q(txf_ida__q),
-        .clock(txf_ida__clock)
+    drcc__chan_b__bsp__err_capture__p_cnt_bit_max p_cnt_bit_max(
+        .d(p_cnt_bit_max__d),
+        .q(p_cnt_bit_max__q),
+        .clock(p_cnt_bit_max__clock)
     );
-    drcc__chan_b__bsp__txf_idb txf_idb(
-        .d(txf_idb__d),
-        .q(txf_idb__q),
-        .clock(txf_idb__clock)
+    drcc__chan_b__bsp__err_capture__p_cnt_stuff_max p_cnt_stuff_max(
+        .d(p_cnt_stuff_max__d),
+        .q(p_cnt_stuff_max__q),
+        .clock(p_cnt_stuff_max__clock)
     );
-    drcc__chan_b__bsp__txf_ide txf_ide(
-        .d(txf_ide__d),
-        .q(txf_ide__q),
-        .clock(txf_ide__clock)
+    drcc__chan_b__bsp__err_capture__p_cnt_crc_max p_cnt_crc_max(
+        .d(p_cnt_crc_max__d),
+        .q(p_cnt_crc_max__q),
+        .clock(p_cnt_crc_max__clock)
     );
-    drcc__chan_b__bsp__txf_rtr txf_rtr(
-        .d(txf_rtr__d),
-        .q(txf_rtr__q),
-        .clock(txf_rtr__clock)
+    drcc__chan_b__bsp__err_capture__p_cnt_form_max p_cnt_form_max(
+        .d(p_cnt_form_max__d),
+        .q(p_cnt_form_max__q),
+        .clock(p_cnt_form_max__clock)
     );
-    drcc__chan_b__bsp__txf_dlc txf_dlc(
-        .d(txf_dlc__d),
-        .q(txf_dlc__q),
-        .clock(txf_dlc__clock)
-    );
-    drcc__chan_b__bsp__txf_data txf_data(
-        .d(txf_data__d),
-        .q(txf_data__q),
-        .clock(txf_data__clock)
-    );
-    drcc__chan_b__bsp__rxs_id rxs_id(
-        .d(rxs_id__d),
-        .q(rxs_id__q),
-        .clock(rxs_id__clock)
-    );
-    drcc__chan_b__bsp__rxs_srr_rtr rxs_srr_rtr(
-        .d(rxs_srr_rtr__d),
-        .q(rxs_srr_rtr__q),
-        .clock(rxs_srr_rtr__clock)
-    );
-    drcc__chan_b__bsp__rxs_ide rxs_ide(
-        .d(rxs_ide__d),
-        .q(rxs_ide__q),
-        .clock(rxs_ide__clock)
-    );
-    drcc__chan_b__bsp__rxs_rtr rxs_rtr(
-        .d(rxs_rtr__d),
-        .q(rxs_rtr__q),
-        .clock(rxs_rtr__clock)
-    );
-    drcc__chan_b__bsp__rxs_dlc rxs_dlc(
-        .d(rxs_dlc__d),
-        .q(rxs_dlc__q),
-        .clock(rxs_dlc__clock)
-    );
-    drcc__chan_b__bsp__rxs_data rxs_data(
-        .d(rxs_data__d),
-        .q(rxs_data__q),
-        .clock(rxs_data__clock)
-    );
-    drcc__chan_b__bsp__data_len data_len(
-        .d(data_len__d),
-        .q(data_len__q),
-        .clock(data_len__clock)
-    );
-    drcc__chan_b__bsp__rx_valid_q rx_valid_q(
-        .d(rx_valid_q__d),
-        .q(rx_valid_q__q),
-        .clock(rx_valid_q__clock)
-    );
-    drcc__chan_b__bsp__tx_done_q tx_done_q(
-        .d(tx_done_q__d),
-        .q(tx_done_q__q),
-        .clock(tx_done_q__clock)
-    );
-    drcc__chan_b__bsp__arb_lost_q arb_lost_q(
-        .d(arb_lost_q__d),
-        .q(arb_lost_q__q),
-        .clock(arb_lost_q__clock)
-    );
-    drcc__chan_b__bsp__rx_id_q rx_id_q(
-        .d(rx_id_q__d),
-        .q(rx_id_q__q),
-        .clock(rx_id_q__clock)
-    );
-    drcc__chan_b__bsp__rx_ide_q rx_ide_q(
-        .d(rx_ide_q__d),
-        .q(rx_ide_q__q),
-        .clock(rx_ide_q__clock)
-    );
-    drcc__chan_b__bsp__rx_rtr_q rx_rtr_q(
-        .d(rx_rtr_q__d),
-        .q(rx_rtr_q__q),
-        .clock(rx_rtr_q__clock)
-    );
-    drcc__chan_b__bsp__rx_dlc_q rx_dlc_q(
-        .d(rx_dlc_q__d),
-        .q(rx_dlc_q__q),
-        .clock(rx_dlc_q__clock)
-    );
-    drcc__chan_b__bsp__rx_data_q rx_data_q(
-        .d(rx_data_q__d),
-        .q(rx_data_q__q),
-        .clock(rx_data_q__clock)
+    drcc__chan_b__bsp__err_capture__p_cnt_ack_max p_cnt_ack_max(
+        .d(p_cnt_ack_max__d),
+        .q(p_cnt_ack_max__q),
+        .clock(p_cnt_ack_max__clock)
     );
     
     // Update code
     always @(*) begin
-        field_q__clock = clk;
-        bit_cnt__clock = clk;
-        is_tx__clock = clk;
-        pending__clock = clk;
-        stuff_cnt__clock = clk;
-        stuff_last__clock = clk;
-        stuff_en__clock = clk;
-        crc__clock = clk;
-        crc_ok__clock = clk;
-        flag_passive__clock = clk;
-        recovery_cnt__clock = clk;
-        tx_q__clock = clk;
-        last_bit_arb__clock = clk;
-        dom_cnt__clock = clk;
-        delim_first__clock = clk;
-        ack_passive_pending__clock = clk;
-        abort_pending__clock = clk;
-        attempt__clock = clk;
-        tx_failed_q__clock = clk;
         err_valid_q__clock = clk;
         err_kind_q__clock = clk;
         err_field_q__clock = clk;
@@ -8148,80 +9626,12 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__clock = clk;
         cnt_form_q__clock = clk;
         cnt_ack_q__clock = clk;
-        p_in_arbitration__clock = clk;
-        p_ide__clock = clk;
-        p_in_frame__clock = clk;
-        p_crc_covered__clock = clk;
-        p_in_delim__clock = clk;
-        p_after_error_flag__clock = clk;
-        p_ack_slot__clock = clk;
-        p_stuff_bit__clock = clk;
-        p_bc0__clock = clk;
-        p_bc2__clock = clk;
-        p_bc3__clock = clk;
-        p_bc5__clock = clk;
-        p_bc6__clock = clk;
-        p_bc7__clock = clk;
-        p_bc10__clock = clk;
-        p_bc14__clock = clk;
-        p_bc17__clock = clk;
-        p_data_end__clock = clk;
-        p_recovery_end__clock = clk;
-        p_dom7__clock = clk;
-        p_crc_bit__clock = clk;
-        p_passive__clock = clk;
-        p_bus_off__clock = clk;
-        p_suspend_due__clock = clk;
-        p_tec_ge120__clock = clk;
-        p_tec_ge248__clock = clk;
-        p_rec_ge127__clock = clk;
-        p_rec_ge120__clock = clk;
+        p_alc__clock = clk;
         p_cnt_bit_max__clock = clk;
         p_cnt_stuff_max__clock = clk;
         p_cnt_crc_max__clock = clk;
         p_cnt_form_max__clock = clk;
         p_cnt_ack_max__clock = clk;
-        p_alc__clock = clk;
-        txf_ida__clock = clk;
-        txf_idb__clock = clk;
-        txf_ide__clock = clk;
-        txf_rtr__clock = clk;
-        txf_dlc__clock = clk;
-        txf_data__clock = clk;
-        rxs_id__clock = clk;
-        rxs_srr_rtr__clock = clk;
-        rxs_ide__clock = clk;
-        rxs_rtr__clock = clk;
-        rxs_dlc__clock = clk;
-        rxs_data__clock = clk;
-        data_len__clock = clk;
-        rx_valid_q__clock = clk;
-        tx_done_q__clock = clk;
-        arb_lost_q__clock = clk;
-        rx_id_q__clock = clk;
-        rx_ide_q__clock = clk;
-        rx_rtr_q__clock = clk;
-        rx_dlc_q__clock = clk;
-        rx_data_q__clock = clk;
-        field_q__d = field_q__q;
-        bit_cnt__d = bit_cnt__q;
-        is_tx__d = is_tx__q;
-        pending__d = pending__q;
-        stuff_cnt__d = stuff_cnt__q;
-        stuff_last__d = stuff_last__q;
-        stuff_en__d = stuff_en__q;
-        crc__d = crc__q;
-        crc_ok__d = crc_ok__q;
-        flag_passive__d = flag_passive__q;
-        recovery_cnt__d = recovery_cnt__q;
-        tx_q__d = tx_q__q;
-        last_bit_arb__d = last_bit_arb__q;
-        dom_cnt__d = dom_cnt__q;
-        delim_first__d = delim_first__q;
-        ack_passive_pending__d = ack_passive_pending__q;
-        abort_pending__d = abort_pending__q;
-        attempt__d = attempt__q;
-        tx_failed_q__d = tx_failed_q__q;
         err_valid_q__d = err_valid_q__q;
         err_kind_q__d = err_kind_q__q;
         err_field_q__d = err_field_q__q;
@@ -8232,137 +9642,16 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         cnt_crc_q__d = cnt_crc_q__q;
         cnt_form_q__d = cnt_form_q__q;
         cnt_ack_q__d = cnt_ack_q__q;
-        p_in_arbitration__d = p_in_arbitration__q;
-        p_ide__d = p_ide__q;
-        p_in_frame__d = p_in_frame__q;
-        p_crc_covered__d = p_crc_covered__q;
-        p_in_delim__d = p_in_delim__q;
-        p_after_error_flag__d = p_after_error_flag__q;
-        p_ack_slot__d = p_ack_slot__q;
-        p_stuff_bit__d = p_stuff_bit__q;
-        p_bc0__d = p_bc0__q;
-        p_bc2__d = p_bc2__q;
-        p_bc3__d = p_bc3__q;
-        p_bc5__d = p_bc5__q;
-        p_bc6__d = p_bc6__q;
-        p_bc7__d = p_bc7__q;
-        p_bc10__d = p_bc10__q;
-        p_bc14__d = p_bc14__q;
-        p_bc17__d = p_bc17__q;
-        p_data_end__d = p_data_end__q;
-        p_recovery_end__d = p_recovery_end__q;
-        p_dom7__d = p_dom7__q;
-        p_crc_bit__d = p_crc_bit__q;
-        p_passive__d = p_passive__q;
-        p_bus_off__d = p_bus_off__q;
-        p_suspend_due__d = p_suspend_due__q;
-        p_tec_ge120__d = p_tec_ge120__q;
-        p_tec_ge248__d = p_tec_ge248__q;
-        p_rec_ge127__d = p_rec_ge127__q;
-        p_rec_ge120__d = p_rec_ge120__q;
+        p_alc__d = p_alc__q;
         p_cnt_bit_max__d = p_cnt_bit_max__q;
         p_cnt_stuff_max__d = p_cnt_stuff_max__q;
         p_cnt_crc_max__d = p_cnt_crc_max__q;
         p_cnt_form_max__d = p_cnt_form_max__q;
         p_cnt_ack_max__d = p_cnt_ack_max__q;
-        p_alc__d = p_alc__q;
-        txf_ida__d = txf_ida__q;
-        txf_idb__d = txf_idb__q;
-        txf_ide__d = txf_ide__q;
-        txf_rtr__d = txf_rtr__q;
-        txf_dlc__d = txf_dlc__q;
-        txf_data__d = txf_data__q;
-        rxs_id__d = rxs_id__q;
-        rxs_srr_rtr__d = rxs_srr_rtr__q;
-        rxs_ide__d = rxs_ide__q;
-        rxs_rtr__d = rxs_rtr__q;
-        rxs_dlc__d = rxs_dlc__q;
-        rxs_data__d = rxs_data__q;
-        data_len__d = data_len__q;
-        rx_valid_q__d = rx_valid_q__q;
-        tx_done_q__d = tx_done_q__q;
-        arb_lost_q__d = arb_lost_q__q;
-        rx_id_q__d = rx_id_q__q;
-        rx_ide_q__d = rx_ide_q__q;
-        rx_rtr_q__d = rx_rtr_q__q;
-        rx_dlc_q__d = rx_dlc_q__q;
-        rx_data_q__d = rx_data_q__q;
-        fc__clk = clk;
-        fc__rst = rst;
-        crc_step__crc = crc__q;
-        crc_step__data_bit = sampled;
-        field_n = field_q__q;
-        bit_cnt_n = bit_cnt__q;
-        bit_cnt_inc = bit_cnt__q + n7_1;
-        is_tx_n = is_tx__q;
-        stuff_cnt_n = stuff_cnt__q;
-        stuff_last_n = stuff_last__q;
-        stuff_en_n = stuff_en__q;
-        crc_n = crc__q;
-        crc_ok_n = crc_ok__q;
-        flag_passive_n = flag_passive__q;
-        bus_bit = sampled;
-        listen_only = mode == n2_1;
-        ack_check_off = mode[32'h1];
-        loopback = mode == n2_3m;
-        start_ok = pending__q && ~fc__bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
-        stuff_err = 1'b0;
-        stuff_as_bit = 1'b0;
-        bit_err = 1'b0;
-        form_err = 1'b0;
-        crc_err = 1'b0;
-        lost = 1'b0;
-        sof_error = 1'b0;
-        tx_failed_q__d = 1'b0;
-        err_valid_q__d = 1'b0;
-        if (~pending__q) begin
-            abort_pending__d = 1'b0;
-        end
-        if ((tx_abort || abort_pending__q) && pending__q) begin
-            if (~is_tx__q && tx_q__q) begin
-                pending__d = 1'b0;
-                tx_failed_q__d = 1'b1;
-                abort_pending__d = 1'b0;
-            end
-            else begin
-                abort_pending__d = 1'b1;
-            end
-        end
-        sof = 1'b0;
-        sof_as_tx = 1'b0;
-        error = 1'b0;
-        flag_error = 1'b0;
-        passive_after = 1'b0;
-        bus_off_after = 1'b0;
-        suspend_due = p_suspend_due__q;
-        join_ok = start_ok && ~suspend_due;
-        starts = (~tx_q__q && pending__q) || start_ok;
-        join_starts = (~tx_q__q && pending__q) || join_ok;
-        tec_exempt = 1'b0;
-        ack_error = 1'b0;
-        ev_tec_add8 = 1'b0;
-        ev_rec_add1 = 1'b0;
-        ev_rec_add8 = 1'b0;
-        ev_tx_success = 1'b0;
-        ev_rx_success = 1'b0;
-        ev_recovered = 1'b0;
-        rx_valid_q__d = 1'b0;
-        tx_done_q__d = 1'b0;
-        arb_lost_q__d = 1'b0;
-        dlc_n = (rxs_dlc__q << 32'h1) | ((bus_bit) & 4'hf);
-        if (rxs_rtr__q) begin
-            data_bits = n7_0;
-        end
-        else if (dlc_n[32'h3]) begin
-            data_bits = n7_64;
-        end
-        else begin
-            data_bits = ((dlc_n[(32'h0)+:(3)]) & 7'h7f) << 32'h3;
-        end
-        case (field_q__q)
+        case (field)
             Field__IdA:
                 begin
-                    alc_n = bit_cnt__q[(32'h0)+:(5)];
+                    alc_n = bit_cnt;
                 end
             Field__SrrRtr:
                 begin
@@ -8374,831 +9663,61 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
                 end
             Field__IdB:
                 begin
-                    alc_n = n5_13 + bit_cnt__q[(32'h0)+:(5)];
+                    alc_n = n5_13 + bit_cnt;
                 end
             default:
                 begin
                     alc_n = n5_31;
                 end
         endcase
-        err_kind_n = k3_crc;
-        crc_rx_idx = n4_14 - bit_cnt__q[(32'h0)+:(4)];
-        data_wr_idx = n6_63 - bit_cnt__q[(32'h0)+:(6)];
-        p_in_arbitration__d = 1'b0;
-        p_ide__d = 1'b0;
-        p_in_frame__d = 1'b0;
-        p_crc_covered__d = 1'b0;
-        p_in_delim__d = 1'b0;
-        p_after_error_flag__d = 1'b0;
-        case (field_q__q)
-            Field__ErrorDelim:
-                begin
-                    p_in_delim__d = 1'b1;
-                    p_after_error_flag__d = 1'b1;
-                end
-            Field__OverloadDelim:
-                begin
-                    p_in_delim__d = 1'b1;
-                end
-            Field__IdA:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__SrrRtr:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Ide:
-                begin
-                    p_in_arbitration__d = 1'b0;
-                    p_ide__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__IdB:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__RtrExt:
-                begin
-                    p_in_arbitration__d = 1'b1;
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__R1:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__R0:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Dlc:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Data:
-                begin
-                    p_in_frame__d = 1'b1;
-                    p_crc_covered__d = 1'b1;
-                end
-            Field__Crc:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__CrcDelim:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__AckSlot:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__AckDelim:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            Field__Eof:
-                begin
-                    p_in_frame__d = 1'b1;
-                end
-            default:
-                begin
-                end
-        endcase
-        p_ack_slot__d = field_q__q == Field__AckSlot;
-        p_stuff_bit__d = stuff_en__q && (stuff_cnt__q == n3_5);
-        p_bc0__d = bit_cnt__q == n7_0;
-        p_bc2__d = bit_cnt__q == n7_2;
-        p_bc3__d = bit_cnt__q == n7_3;
-        p_bc5__d = bit_cnt__q == n7_5;
-        p_bc6__d = bit_cnt__q == n7_6;
-        p_bc7__d = bit_cnt__q == n7_7;
-        p_bc10__d = bit_cnt__q == n7_10;
-        p_bc14__d = bit_cnt__q == n7_14;
-        p_bc17__d = bit_cnt__q == n7_17;
-        p_data_end__d = bit_cnt_inc == data_len__q;
-        p_recovery_end__d = recovery_cnt__q == n7_127;
-        p_dom7__d = dom_cnt__q == n3_7;
-        p_crc_bit__d = 1'b0;
-        if (field_q__q == Field__Crc) begin
-            p_crc_bit__d = crc__q[crc_rx_idx];
-        end
         p_alc__d = alc_n;
-        p_passive__d = fc__error_passive;
-        p_bus_off__d = fc__bus_off;
-        p_suspend_due__d = is_tx__q && fc__error_passive;
-        p_tec_ge120__d = fc__tec >= n9_120;
-        p_tec_ge248__d = fc__tec >= n9_248;
-        p_rec_ge127__d = fc__rec >= n8_127;
-        p_rec_ge120__d = fc__rec >= n8_120;
-        p_cnt_bit_max__d = cnt_bit_q__q == n8_255;
-        p_cnt_stuff_max__d = cnt_stuff_q__q == n8_255;
-        p_cnt_crc_max__d = cnt_crc_q__q == n8_255;
-        p_cnt_form_max__d = cnt_form_q__q == n8_255;
-        p_cnt_ack_max__d = cnt_ack_q__q == n8_255;
-        in_arbitration = p_in_arbitration__q || (p_ide__q && txf_ide__q);
-        in_frame = p_in_frame__q;
-        crc_covered = p_crc_covered__q;
-        in_delim = p_in_delim__q;
-        after_error_flag = p_after_error_flag__q;
-        if (sample) begin
-            if (p_stuff_bit__q) begin
-                if (sampled == stuff_last__q) begin
-                    error = 1'b1;
-                    stuff_err = 1'b1;
-                    if (is_tx__q && ~(last_bit_arb__q && tx_q__q)) begin
-                        stuff_as_bit = 1'b1;
-                    end
-                    if (is_tx__q && last_bit_arb__q && tx_q__q) begin
-                        tec_exempt = 1'b1;
-                    end
-                end
-                else begin
-                    stuff_cnt_n = n3_1;
-                    stuff_last_n = sampled;
-                end
-            end
-            else begin
-                last_bit_arb__d = in_arbitration;
-                if (stuff_en__q) begin
-                    if (sampled == stuff_last__q) begin
-                        stuff_cnt_n = stuff_cnt__q + n3_1;
-                    end
-                    else begin
-                        stuff_cnt_n = n3_1;
-                        stuff_last_n = sampled;
-                    end
-                end
-                if (crc_covered) begin
-                    crc_n = crc_step__crc_next;
-                end
-                if (is_tx__q && in_frame && (sampled != tx_q__q)) begin
-                    if (in_arbitration && tx_q__q) begin
-                        is_tx_n = 1'b0;
-                        arb_lost_q__d = 1'b1;
-                        lost = 1'b1;
-                        alc_q__d = p_alc__q;
-                    end
-                    else if (p_ack_slot__q && tx_q__q) begin
-                    end
-                    else begin
-                        error = 1'b1;
-                        bit_err = 1'b1;
-                    end
-                end
-                if (~is_tx__q && p_ack_slot__q && ~tx_q__q && sampled) begin
-                    error = 1'b1;
-                    bit_err = 1'b1;
-                end
-                case (field_q__q)
-                    Field__Integrating:
-                        begin
-                            if (sampled) begin
-                                if (p_bc10__q) begin
-                                    field_n = Field__Idle;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                            else begin
-                                bit_cnt_n = n7_0;
-                            end
-                        end
-                    Field__Idle:
-                        begin
-                            if (~sampled) begin
-                                sof = 1'b1;
-                                sof_as_tx = starts;
-                            end
-                            else if (~tx_q__q) begin
-                                is_tx_n = 1'b1;
-                                sof_error = 1'b1;
-                                error = 1'b1;
-                                bit_err = 1'b1;
-                            end
-                        end
-                    Field__Suspend:
-                        begin
-                            if (~sampled) begin
-                                sof = 1'b1;
-                            end
-                            else if (p_bc7__q) begin
-                                field_n = Field__Idle;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__Intermission:
-                        begin
-                            if (~sampled) begin
-                                if (p_bc2__q) begin
-                                    sof = 1'b1;
-                                    sof_as_tx = join_starts;
-                                end
-                                else begin
-                                    field_n = Field__OverloadFlag;
-                                    bit_cnt_n = n7_0;
-                                end
-                            end
-                            else if (p_bc2__q) begin
-                                if (suspend_due) begin
-                                    field_n = Field__Suspend;
-                                end
-                                else begin
-                                    field_n = Field__Idle;
-                                end
-                                is_tx_n = 1'b0;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__IdA:
-                        begin
-                            rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (p_bc10__q) begin
-                                field_n = Field__SrrRtr;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__SrrRtr:
-                        begin
-                            rxs_srr_rtr__d = sampled;
-                            field_n = Field__Ide;
-                        end
-                    Field__Ide:
-                        begin
-                            rxs_ide__d = sampled;
-                            if (sampled) begin
-                                field_n = Field__IdB;
-                            end
-                            else begin
-                                rxs_rtr__d = rxs_srr_rtr__q;
-                                field_n = Field__R0;
-                            end
-                            bit_cnt_n = n7_0;
-                        end
-                    Field__IdB:
-                        begin
-                            rxs_id__d = (rxs_id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
-                            if (p_bc17__q) begin
-                                field_n = Field__RtrExt;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__RtrExt:
-                        begin
-                            rxs_rtr__d = sampled;
-                            field_n = Field__R1;
-                        end
-                    Field__R1:
-                        begin
-                            field_n = Field__R0;
-                        end
-                    Field__R0:
-                        begin
-                            field_n = Field__Dlc;
-                            bit_cnt_n = n7_0;
-                        end
-                    Field__Dlc:
-                        begin
-                            rxs_dlc__d = dlc_n;
-                            if (p_bc3__q) begin
-                                data_len__d = data_bits;
-                                if (data_bits == n7_0) begin
-                                    field_n = Field__Crc;
-                                end
-                                else begin
-                                    field_n = Field__Data;
-                                end
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__Data:
-                        begin
-                            rxs_data__d = (rxs_data__q & ~(1 << (data_wr_idx)) | ((sampled) << (data_wr_idx)));
-                            if (p_data_end__q) begin
-                                field_n = Field__Crc;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__Crc:
-                        begin
-                            if (sampled != p_crc_bit__q) begin
-                                crc_ok_n = 1'b0;
-                            end
-                            if (p_bc14__q) begin
-                                field_n = Field__CrcDelim;
-                                bit_cnt_n = n7_0;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__CrcDelim:
-                        begin
-                            stuff_en_n = 1'b0;
-                            if (~sampled) begin
-                                error = 1'b1;
-                                form_err = 1'b1;
-                            end
-                            field_n = Field__AckSlot;
-                        end
-                    Field__AckSlot:
-                        begin
-                            if (is_tx__q && sampled && ~ack_check_off) begin
-                                error = 1'b1;
-                                ack_error = 1'b1;
-                            end
-                            if (~is_tx__q && ~tx_q__q && ~sampled) begin
-                                ev_rx_success = 1'b1;
-                            end
-                            field_n = Field__AckDelim;
-                        end
-                    Field__AckDelim:
-                        begin
-                            if (~sampled) begin
-                                error = 1'b1;
-                                form_err = 1'b1;
-                            end
-                            else if (~crc_ok__q && ~is_tx__q) begin
-                                error = 1'b1;
-                                crc_err = 1'b1;
-                            end
-                            field_n = Field__Eof;
-                            bit_cnt_n = n7_0;
-                        end
-                    Field__Eof:
-                        begin
-                            if (~sampled) begin
-                                if ((p_bc6__q) && ~is_tx__q) begin
-                                    field_n = Field__OverloadFlag;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    error = 1'b1;
-                                    form_err = 1'b1;
-                                end
-                            end
-                            else begin
-                                if ((p_bc5__q) && (~is_tx__q || loopback)) begin
-                                    rx_valid_q__d = 1'b1;
-                                    rx_id_q__d = rxs_id__q;
-                                    rx_ide_q__d = rxs_ide__q;
-                                    rx_rtr_q__d = rxs_rtr__q;
-                                    rx_dlc_q__d = rxs_dlc__q;
-                                    rx_data_q__d = rxs_data__q;
-                                end
-                                if (p_bc6__q) begin
-                                    if (is_tx__q) begin
-                                        tx_done_q__d = 1'b1;
-                                        pending__d = 1'b0;
-                                        attempt__d = 1'b0;
-                                        abort_pending__d = 1'b0;
-                                        ev_tx_success = 1'b1;
-                                    end
-                                    field_n = Field__Intermission;
-                                    bit_cnt_n = n7_0;
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                        end
-                    Field__ErrorFlag:
-                        begin
-                            if (flag_passive__q) begin
-                                if (ack_passive_pending__q && ~sampled) begin
-                                    ev_tec_add8 = 1'b1;
-                                    ack_passive_pending__d = 1'b0;
-                                end
-                                if ((p_bc0__q) || (sampled != stuff_last__q)) begin
-                                    bit_cnt_n = n7_1;
-                                    stuff_last_n = sampled;
-                                end
-                                else if (p_bc5__q) begin
-                                    field_n = Field__ErrorDelim;
-                                    bit_cnt_n = n7_0;
-                                    delim_first__d = 1'b1;
-                                    dom_cnt__d = zero3;
-                                    ack_passive_pending__d = 1'b0;
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                            else if (sampled) begin
-                                flag_error = 1'b1;
-                            end
-                            else if (p_bc5__q) begin
-                                field_n = Field__ErrorDelim;
-                                bit_cnt_n = n7_0;
-                                delim_first__d = 1'b1;
-                                dom_cnt__d = zero3;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__OverloadFlag:
-                        begin
-                            if (sampled && ~listen_only) begin
-                                flag_error = 1'b1;
-                            end
-                            else if (p_bc5__q) begin
-                                field_n = Field__OverloadDelim;
-                                bit_cnt_n = n7_0;
-                                delim_first__d = 1'b1;
-                                dom_cnt__d = zero3;
-                            end
-                            else begin
-                                bit_cnt_n = bit_cnt_inc;
-                            end
-                        end
-                    Field__BusOff:
-                        begin
-                            if (sampled) begin
-                                if (p_bc10__q) begin
-                                    bit_cnt_n = n7_0;
-                                    if (p_recovery_end__q) begin
-                                        field_n = Field__Idle;
-                                        ev_recovered = 1'b1;
-                                        recovery_cnt__d = n7_0;
-                                    end
-                                    else begin
-                                        recovery_cnt__d = recovery_cnt__q + n7_1;
-                                    end
-                                end
-                                else begin
-                                    bit_cnt_n = bit_cnt_inc;
-                                end
-                            end
-                            else begin
-                                bit_cnt_n = n7_0;
-                            end
-                        end
-                    default:
-                        begin
-                        end
-                endcase
-                if (in_delim) begin
-                    if (p_bc0__q) begin
-                        delim_first__d = 1'b0;
-                        if (sampled) begin
-                            bit_cnt_n = n7_1;
-                        end
-                        else begin
-                            if (delim_first__q && after_error_flag && ~is_tx__q) begin
-                                ev_rec_add8 = 1'b1;
-                            end
-                            dom_cnt__d = dom_cnt__q + n3_1;
-                            if (p_dom7__q) begin
-                                if (is_tx__q) begin
-                                    ev_tec_add8 = 1'b1;
-                                end
-                                else begin
-                                    ev_rec_add8 = 1'b1;
-                                end
-                            end
-                        end
-                    end
-                    else if (~sampled) begin
-                        if (p_bc7__q) begin
-                            field_n = Field__OverloadFlag;
-                            bit_cnt_n = n7_0;
-                        end
-                        else begin
-                            error = 1'b1;
-                            form_err = 1'b1;
-                        end
-                    end
-                    else if (p_bc7__q) begin
-                        field_n = Field__Intermission;
-                        bit_cnt_n = n7_0;
-                    end
-                    else begin
-                        bit_cnt_n = bit_cnt_inc;
-                    end
-                end
-            end
-            if (sof) begin
-                field_n = Field__IdA;
-                bit_cnt_n = n7_0;
-                is_tx_n = sof_as_tx;
-                attempt__d = sof_as_tx;
-                stuff_en_n = 1'b1;
-                stuff_cnt_n = n3_1;
-                stuff_last_n = 1'b0;
-                crc_n = zero15;
-                crc_ok_n = 1'b1;
-                rxs_id__d = zero29;
-                rxs_data__d = zero64;
-                rxs_rtr__d = 1'b0;
-            end
-            if (stuff_as_bit || bit_err || flag_error) begin
-                err_kind_n = k3_bit;
-            end
-            else if (stuff_err) begin
-                err_kind_n = k3_stuff;
-            end
-            else if (form_err) begin
-                err_kind_n = k3_form;
-            end
-            else if (ack_error) begin
-                err_kind_n = k3_ack;
-            end
-            else if (crc_err) begin
-                err_kind_n = k3_crc;
-            end
-            if (error) begin
-                if (is_tx_n) begin
-                    if (ack_error && p_passive__q) begin
-                        ack_passive_pending__d = 1'b1;
-                    end
-                    else if (~tec_exempt) begin
-                        ev_tec_add8 = 1'b1;
-                    end
-                end
-                else begin
-                    ev_rec_add1 = 1'b1;
-                end
-            end
-            if (flag_error) begin
-                if (is_tx__q) begin
-                    ev_tec_add8 = 1'b1;
-                end
-                else begin
-                    ev_rec_add8 = 1'b1;
-                end
-            end
-            passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
-            bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
-            if (error || flag_error) begin
-                field_n = Field__ErrorFlag;
-                bit_cnt_n = n7_0;
-                stuff_en_n = 1'b0;
-                flag_passive_n = passive_after || listen_only;
-                err_valid_q__d = 1'b1;
-                err_kind_q__d = err_kind_n;
-                err_field_q__d = field_q__q;
-                err_tx_q__d = is_tx__q || sof_error;
-                if ((err_kind_n == k3_bit) && ~p_cnt_bit_max__q) begin
-                    cnt_bit_q__d = cnt_bit_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_stuff) && ~p_cnt_stuff_max__q) begin
-                    cnt_stuff_q__d = cnt_stuff_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_crc) && ~p_cnt_crc_max__q) begin
-                    cnt_crc_q__d = cnt_crc_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_form) && ~p_cnt_form_max__q) begin
-                    cnt_form_q__d = cnt_form_q__q + n8_1;
-                end
-                if ((err_kind_n == k3_ack) && ~p_cnt_ack_max__q) begin
-                    cnt_ack_q__d = cnt_ack_q__q + n8_1;
-                end
-            end
-            if ((attempt__q && is_tx__q && (lost || error || flag_error)) || sof_error) begin
-                attempt__d = 1'b0;
-                if (single_shot || abort_pending__q) begin
-                    pending__d = 1'b0;
-                    tx_failed_q__d = 1'b1;
-                    abort_pending__d = 1'b0;
-                end
-            end
-            if (bus_off_after) begin
-                field_n = Field__BusOff;
-                is_tx_n = 1'b0;
-                attempt__d = 1'b0;
-                bit_cnt_n = n7_0;
-                recovery_cnt__d = n7_0;
-            end
-            field_q__d = field_n;
-            bit_cnt__d = bit_cnt_n;
-            is_tx__d = is_tx_n;
-            stuff_cnt__d = stuff_cnt_n;
-            stuff_last__d = stuff_last_n;
-            stuff_en__d = stuff_en_n;
-            crc__d = crc_n;
-            crc_ok__d = crc_ok_n;
-            flag_passive__d = flag_passive_n;
+        p_cnt_bit_max__d = cnt_bit_q__q == max8;
+        p_cnt_stuff_max__d = cnt_stuff_q__q == max8;
+        p_cnt_crc_max__d = cnt_crc_q__q == max8;
+        p_cnt_form_max__d = cnt_form_q__q == max8;
+        p_cnt_ack_max__d = cnt_ack_q__q == max8;
+        kind = k_crc;
+        if (bit_err) begin
+            kind = k_bit;
         end
-        fc__tec_add8 = ev_tec_add8 && ~listen_only;
-        fc__rec_add1 = ev_rec_add1 && ~listen_only;
-        fc__rec_add8 = ev_rec_add8 && ~listen_only;
-        fc__tx_success = ev_tx_success && ~listen_only;
-        fc__rx_success = ev_rx_success && ~listen_only;
-        fc__recovered = ev_recovered;
-        id_a_idx = ~bit_cnt__q[(32'h0)+:(4)];
-        id_b_idx = ~bit_cnt__q[(32'h0)+:(5)];
-        dlc_idx = ~bit_cnt__q[(32'h0)+:(2)];
-        data_idx = ~bit_cnt__q[(32'h0)+:(6)];
-        crc_idx = ~bit_cnt__q[(32'h0)+:(4)];
-        crc_tx = ((crc__q) & 16'hffff) << 32'h1;
-        tx_bit_n = 1'b1;
-        case (field_q__q)
-            Field__ErrorFlag:
-                begin
-                    tx_bit_n = flag_passive__q;
-                end
-            Field__OverloadFlag:
-                begin
-                    tx_bit_n = 1'b0;
-                end
-            Field__AckSlot:
-                begin
-                    tx_bit_n = is_tx__q || ~crc_ok__q;
-                end
-            default:
-                begin
-                    if (is_tx__q) begin
-                        if (stuff_en__q && (stuff_cnt__q == n3_5)) begin
-                            tx_bit_n = ~stuff_last__q;
-                        end
-                        else begin
-                            case (field_q__q)
-                                Field__IdA:
-                                    begin
-                                        tx_bit_n = txf_ida__q[id_a_idx];
-                                    end
-                                Field__SrrRtr:
-                                    begin
-                                        tx_bit_n = txf_ide__q || txf_rtr__q;
-                                    end
-                                Field__Ide:
-                                    begin
-                                        tx_bit_n = txf_ide__q;
-                                    end
-                                Field__IdB:
-                                    begin
-                                        tx_bit_n = txf_idb__q[id_b_idx];
-                                    end
-                                Field__RtrExt:
-                                    begin
-                                        tx_bit_n = txf_rtr__q;
-                                    end
-                                Field__R1:
-                                    begin
-                                        tx_bit_n = 1'b0;
-                                    end
-                                Field__R0:
-                                    begin
-                                        tx_bit_n = 1'b0;
-                                    end
-                                Field__Dlc:
-                                    begin
-                                        tx_bit_n = txf_dlc__q[dlc_idx];
-                                    end
-                                Field__Data:
-                                    begin
-                                        tx_bit_n = txf_data__q[data_idx];
-                                    end
-                                Field__Crc:
-                                    begin
-                                        tx_bit_n = crc_tx[crc_idx];
-                                    end
-                                default:
-                                    begin
-                                    end
-                            endcase
-                        end
-                    end
-                end
-        endcase
-        tx_bit = tx_bit_n || listen_only;
-        if (bit_start) begin
-            if (hard_sync && (field_q__q == Field__Idle)) begin
-                tx_q__d = ~starts;
+        else if (stuff_err) begin
+            kind = k_stuff;
+        end
+        else if (form_err) begin
+            kind = k_form;
+        end
+        else if (ack_err) begin
+            kind = k_ack;
+        end
+        else if (crc_err) begin
+            kind = k_crc;
+        end
+        err_valid_q__d = 1'b0;
+        if (capture) begin
+            err_valid_q__d = 1'b1;
+            err_kind_q__d = kind;
+            err_field_q__d = field;
+            err_tx_q__d = as_tx;
+            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
+                cnt_bit_q__d = cnt_bit_q__q + one8;
             end
-            else if (hard_sync && (field_q__q == Field__Intermission)) begin
-                tx_q__d = 1'b1;
+            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
+                cnt_stuff_q__d = cnt_stuff_q__q + one8;
             end
-            else if (hard_sync && (field_q__q == Field__Suspend)) begin
-                tx_q__d = 1'b1;
+            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
+                cnt_crc_q__d = cnt_crc_q__q + one8;
             end
-            else if (field_q__q == Field__Idle) begin
-                tx_q__d = ~starts;
+            if ((kind == k_form) && ~p_cnt_form_max__q) begin
+                cnt_form_q__d = cnt_form_q__q + one8;
             end
-            else begin
-                tx_q__d = tx_bit;
+            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
+                cnt_ack_q__d = cnt_ack_q__q + one8;
             end
         end
-        if (tx_req && ~pending__q && listen_only) begin
-            tx_failed_q__d = 1'b1;
+        if (arb_lost) begin
+            alc_q__d = p_alc__q;
         end
-        else if (tx_req && ~pending__q) begin
-            pending__d = 1'b1;
-            if (tx_ide) begin
-                txf_ida__d = ((tx_id[(32'h12)+:(11)]) & 16'hffff) << 32'h5;
-            end
-            else begin
-                txf_ida__d = ((tx_id[(32'h0)+:(11)]) & 16'hffff) << 32'h5;
-            end
-            txf_idb__d = ((tx_id[(32'h0)+:(18)]) & 32'hffffffff) << 32'he;
-            txf_ide__d = tx_ide;
-            txf_rtr__d = tx_rtr;
-            txf_dlc__d = tx_dlc;
-            txf_data__d = tx_data;
-        end
-        case (field_q__q)
-            Field__Integrating:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Idle:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Suspend:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__BusOff:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Intermission:
-                begin
-                    hard_sync_enable = bit_cnt__q[32'h1];
-                end
-            default:
-                begin
-                    hard_sync_enable = 1'b0;
-                end
-        endcase
-        tx = tx_q__q;
-        tx_pending = pending__q;
-        tx_done = tx_done_q__q;
-        arb_lost = arb_lost_q__q;
-        rx_valid = rx_valid_q__q;
-        rx_id = rx_id_q__q;
-        rx_ide = rx_ide_q__q;
-        rx_rtr = rx_rtr_q__q;
-        rx_dlc = rx_dlc_q__q;
-        rx_data = rx_data_q__q;
-        field = field_q__q;
-        tec = fc__tec;
-        rec = fc__rec;
-        err_state = fc__err_state;
-        tx_failed = tx_failed_q__q;
-        err_warning = (fc__tec >= ((ewl) & 9'h1ff)) || (fc__rec >= ewl);
-        err_valid = err_valid_q__q;
-        err_kind = err_kind_q__q;
-        err_field = err_field_q__q;
-        err_tx = err_tx_q__q;
-        alc = alc_q__q;
-        cnt_bit = cnt_bit_q__q;
-        cnt_stuff = cnt_stuff_q__q;
-        cnt_crc = cnt_crc_q__q;
-        cnt_form = cnt_form_q__q;
-        cnt_ack = cnt_ack_q__q;
         if (rst) begin
-            field_q__d = Field__Integrating;
-            bit_cnt__d = n7_0;
-            is_tx__d = 1'b0;
-            pending__d = 1'b0;
-            stuff_cnt__d = n3_1;
-            stuff_last__d = 1'b0;
-            stuff_en__d = 1'b0;
-            crc__d = zero15;
-            crc_ok__d = 1'b1;
-            flag_passive__d = 1'b0;
-            recovery_cnt__d = n7_0;
-            tx_q__d = 1'b1;
-            last_bit_arb__d = 1'b0;
-            dom_cnt__d = zero3;
-            delim_first__d = 1'b0;
-            ack_passive_pending__d = 1'b0;
-            abort_pending__d = 1'b0;
-            attempt__d = 1'b0;
-            tx_failed_q__d = 1'b0;
             err_valid_q__d = 1'b0;
             err_kind_q__d = zero3;
             err_field_q__d = Field__Integrating;
@@ -9209,53 +9728,23 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
             cnt_crc_q__d = zero8;
             cnt_form_q__d = zero8;
             cnt_ack_q__d = zero8;
-            rx_valid_q__d = 1'b0;
-            tx_done_q__d = 1'b0;
-            arb_lost_q__d = 1'b0;
-            rx_id_q__d = zero29;
-            rx_ide_q__d = 1'b0;
-            rx_rtr_q__d = 1'b0;
-            rx_dlc_q__d = zero4;
-            rx_data_q__d = zero64;
         end
+        err_valid = err_valid_q__q;
+        err_kind = err_kind_q__q;
+        err_field = err_field_q__q;
+        err_tx = err_tx_q__q;
+        alc = alc_q__q;
+        cnt_bit = cnt_bit_q__q;
+        cnt_stuff = cnt_stuff_q__q;
+        cnt_crc = cnt_crc_q__q;
+        cnt_form = cnt_form_q__q;
+        cnt_ack = cnt_ack_q__q;
     end
     
-endmodule // drcc__chan_b__bsp
+endmodule // drcc__chan_b__bsp__err_capture
 
 
-module drcc__chan_b__bsp__abort_pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__abort_pending
-
-
-module drcc__chan_b__bsp__ack_passive_pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__ack_passive_pending
-
-
-module drcc__chan_b__bsp__alc_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__alc_q(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -9268,58 +9757,10 @@ module drcc__chan_b__bsp__alc_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__alc_q
+endmodule // drcc__chan_b__bsp__err_capture__alc_q
 
 
-module drcc__chan_b__bsp__arb_lost_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__arb_lost_q
-
-
-module drcc__chan_b__bsp__attempt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__attempt
-
-
-module drcc__chan_b__bsp__bit_cnt(d,q,clock);
-    
-    // Module arguments
-    input wire  [6:0] d;
-    output reg  [6:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__bit_cnt
-
-
-module drcc__chan_b__bsp__cnt_ack_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__cnt_ack_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -9332,10 +9773,10 @@ module drcc__chan_b__bsp__cnt_ack_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__cnt_ack_q
+endmodule // drcc__chan_b__bsp__err_capture__cnt_ack_q
 
 
-module drcc__chan_b__bsp__cnt_bit_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__cnt_bit_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -9348,10 +9789,10 @@ module drcc__chan_b__bsp__cnt_bit_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__cnt_bit_q
+endmodule // drcc__chan_b__bsp__err_capture__cnt_bit_q
 
 
-module drcc__chan_b__bsp__cnt_crc_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__cnt_crc_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -9364,10 +9805,10 @@ module drcc__chan_b__bsp__cnt_crc_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__cnt_crc_q
+endmodule // drcc__chan_b__bsp__err_capture__cnt_crc_q
 
 
-module drcc__chan_b__bsp__cnt_form_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__cnt_form_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -9380,10 +9821,10 @@ module drcc__chan_b__bsp__cnt_form_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__cnt_form_q
+endmodule // drcc__chan_b__bsp__err_capture__cnt_form_q
 
 
-module drcc__chan_b__bsp__cnt_stuff_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__cnt_stuff_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -9396,118 +9837,10 @@ module drcc__chan_b__bsp__cnt_stuff_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__cnt_stuff_q
+endmodule // drcc__chan_b__bsp__err_capture__cnt_stuff_q
 
 
-module drcc__chan_b__bsp__crc(d,q,clock);
-    
-    // Module arguments
-    input wire  [14:0] d;
-    output reg  [14:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__crc
-
-
-module drcc__chan_b__bsp__crc_ok(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__crc_ok
-
-
-module drcc__chan_b__bsp__crc_step(crc,data_bit,crc_next);
-    
-    // Module arguments
-    input wire  [14:0] crc;
-    input wire  data_bit;
-    output reg  [14:0] crc_next;
-    
-    // Constant declarations
-    localparam  polynomial = 15'b100010110011001;
-    localparam  zero = 15'b0;
-    
-    // Local signals
-    reg  feedback;
-    
-    // Update code
-    always @(*) begin
-        feedback = crc[32'he] ^ data_bit;
-        if (feedback) begin
-            crc_next = (crc << 32'h1) ^ polynomial;
-        end
-        else begin
-            crc_next = (crc << 32'h1) ^ zero;
-        end
-    end
-    
-endmodule // drcc__chan_b__bsp__crc_step
-
-
-module drcc__chan_b__bsp__data_len(d,q,clock);
-    
-    // Module arguments
-    input wire  [6:0] d;
-    output reg  [6:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__data_len
-
-
-module drcc__chan_b__bsp__delim_first(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__delim_first
-
-
-module drcc__chan_b__bsp__dom_cnt(d,q,clock);
-    
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__dom_cnt
-
-
-module drcc__chan_b__bsp__err_field_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__err_field_q(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -9545,10 +9878,10 @@ module drcc__chan_b__bsp__err_field_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__err_field_q
+endmodule // drcc__chan_b__bsp__err_capture__err_field_q
 
 
-module drcc__chan_b__bsp__err_kind_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__err_kind_q(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -9561,10 +9894,10 @@ module drcc__chan_b__bsp__err_kind_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__err_kind_q
+endmodule // drcc__chan_b__bsp__err_capture__err_kind_q
 
 
-module drcc__chan_b__bsp__err_tx_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__err_tx_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9577,10 +9910,10 @@ module drcc__chan_b__bsp__err_tx_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__err_tx_q
+endmodule // drcc__chan_b__bsp__err_capture__err_tx_q
 
 
-module drcc__chan_b__bsp__err_valid_q(d,q,clock);
+module drcc__chan_b__bsp__err_capture__err_valid_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9593,10 +9926,106 @@ module drcc__chan_b__bsp__err_valid_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__err_valid_q
+endmodule // drcc__chan_b__bsp__err_capture__err_valid_q
 
 
-module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,tec,rec,err_state,error_passive,bus_off);
+module drcc__chan_b__bsp__err_capture__p_alc(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__err_capture__p_alc
+
+
+module drcc__chan_b__bsp__err_capture__p_cnt_ack_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__err_capture__p_cnt_ack_max
+
+
+module drcc__chan_b__bsp__err_capture__p_cnt_bit_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__err_capture__p_cnt_bit_max
+
+
+module drcc__chan_b__bsp__err_capture__p_cnt_crc_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__err_capture__p_cnt_crc_max
+
+
+module drcc__chan_b__bsp__err_capture__p_cnt_form_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__err_capture__p_cnt_form_max
+
+
+module drcc__chan_b__bsp__err_capture__p_cnt_stuff_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__err_capture__p_cnt_stuff_max
+
+
+module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,ewl,tec,rec,err_state,error_passive,bus_off,warning);
     
     // Module arguments
     input wire  clk;
@@ -9607,11 +10036,13 @@ module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
     input wire  tx_success;
     input wire  rx_success;
     input wire  recovered;
+    input wire  [7:0] ewl;
     output reg  [8:0] tec;
     output reg  [7:0] rec;
     output reg  [1:0] err_state;
     output reg  error_passive;
     output reg  bus_off;
+    output reg  warning;
     
     // Constant declarations
     localparam  eight9 = 9'b1000;
@@ -9691,6 +10122,7 @@ module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
         end
         tec = tec_q__q;
         rec = rec_q__q;
+        warning = (tec_q__q >= ((ewl) & 9'h1ff)) || (rec_q__q >= ewl);
         if (bus_off) begin
             err_state = state_bus_off;
         end
@@ -9737,7 +10169,1832 @@ module drcc__chan_b__bsp__fc__tec_q(d,q,clock);
 endmodule // drcc__chan_b__bsp__fc__tec_q
 
 
-module drcc__chan_b__bsp__field_q(d,q,clock);
+module drcc__chan_b__bsp__frame_crc(clk,rst,sampled,start,step,check,in_crc_field,bit_cnt,crc,crc_ok);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sampled;
+    input wire  start;
+    input wire  step;
+    input wire  check;
+    input wire  in_crc_field;
+    input wire  [3:0] bit_cnt;
+    output reg  [14:0] crc;
+    output reg  crc_ok;
+    
+    // Constant declarations
+    localparam  n4_14 = 4'he;
+    localparam  zero15 = 15'b0;
+    
+    // Stub signals
+    reg  [14:0] crc_q__d;
+    wire  [14:0] crc_q__q;
+    reg  crc_q__clock;
+    reg  crc_ok_q__d;
+    wire  crc_ok_q__q;
+    reg  crc_ok_q__clock;
+    reg  p_crc_bit__d;
+    wire  p_crc_bit__q;
+    reg  p_crc_bit__clock;
+    reg  [14:0] crc_step__crc;
+    reg  crc_step__data_bit;
+    wire  [14:0] crc_step__crc_next;
+    
+    // Local signals
+    reg  [3:0] crc_rx_idx;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__frame_crc__crc_q crc_q(
+        .d(crc_q__d),
+        .q(crc_q__q),
+        .clock(crc_q__clock)
+    );
+    drcc__chan_b__bsp__frame_crc__crc_ok_q crc_ok_q(
+        .d(crc_ok_q__d),
+        .q(crc_ok_q__q),
+        .clock(crc_ok_q__clock)
+    );
+    drcc__chan_b__bsp__frame_crc__p_crc_bit p_crc_bit(
+        .d(p_crc_bit__d),
+        .q(p_crc_bit__q),
+        .clock(p_crc_bit__clock)
+    );
+    drcc__chan_b__bsp__frame_crc__crc_step crc_step(
+        .crc(crc_step__crc),
+        .data_bit(crc_step__data_bit),
+        .crc_next(crc_step__crc_next)
+    );
+    
+    // Update code
+    always @(*) begin
+        crc_q__clock = clk;
+        crc_ok_q__clock = clk;
+        p_crc_bit__clock = clk;
+        crc_q__d = crc_q__q;
+        crc_ok_q__d = crc_ok_q__q;
+        p_crc_bit__d = p_crc_bit__q;
+        crc_step__crc = crc_q__q;
+        crc_step__data_bit = sampled;
+        crc_rx_idx = n4_14 - bit_cnt;
+        p_crc_bit__d = 1'b0;
+        if (in_crc_field) begin
+            p_crc_bit__d = crc_q__q[crc_rx_idx];
+        end
+        if (step) begin
+            crc_q__d = crc_step__crc_next;
+        end
+        if (check && (sampled != p_crc_bit__q)) begin
+            crc_ok_q__d = 1'b0;
+        end
+        if (start) begin
+            crc_q__d = zero15;
+            crc_ok_q__d = 1'b1;
+        end
+        if (rst) begin
+            crc_q__d = zero15;
+            crc_ok_q__d = 1'b1;
+        end
+        crc = crc_q__q;
+        crc_ok = crc_ok_q__q;
+    end
+    
+endmodule // drcc__chan_b__bsp__frame_crc
+
+
+module drcc__chan_b__bsp__frame_crc__crc_ok_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__frame_crc__crc_ok_q
+
+
+module drcc__chan_b__bsp__frame_crc__crc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [14:0] d;
+    output reg  [14:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__frame_crc__crc_q
+
+
+module drcc__chan_b__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
+    
+    // Module arguments
+    input wire  [14:0] crc;
+    input wire  data_bit;
+    output reg  [14:0] crc_next;
+    
+    // Constant declarations
+    localparam  polynomial = 15'b100010110011001;
+    localparam  zero = 15'b0;
+    
+    // Local signals
+    reg  feedback;
+    
+    // Update code
+    always @(*) begin
+        feedback = crc[32'he] ^ data_bit;
+        if (feedback) begin
+            crc_next = (crc << 32'h1) ^ polynomial;
+        end
+        else begin
+            crc_next = (crc << 32'h1) ^ zero;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__frame_crc__crc_step
+
+
+module drcc__chan_b__bsp__frame_crc__p_crc_bit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__frame_crc__p_crc_bit
+
+
+module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,listen_only,loopback,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,frame_bit,frame_ide,stuff_insert,at_stuff_bit,stuff_last,crc_ok,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,bus_off,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sample;
+    input wire  sampled;
+    input wire  bit_start;
+    input wire  hard_sync;
+    output reg  hard_sync_enable;
+    output reg  tx;
+    input wire  listen_only;
+    input wire  loopback;
+    input wire  single_shot;
+    input wire  tx_req;
+    input wire  tx_abort;
+    output reg  tx_pending;
+    output reg  tx_failed;
+    output reg  tx_done;
+    output reg  arb_lost;
+    output reg  tx_load;
+    input wire  frame_bit;
+    input wire  frame_ide;
+    input wire  stuff_insert;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  crc_ok;
+    input wire  no_data;
+    input wire  data_end;
+    input wire  error;
+    input wire  flag_error;
+    input wire  lost;
+    input wire  sof_error;
+    input wire  passive_after;
+    input wire  bus_off_after;
+    input wire  ack_defer;
+    input wire  ack_counted;
+    input wire  error_passive;
+    input wire  bus_off;
+    output reg  [4:0] field;
+    output reg  [5:0] bit_cnt;
+    output reg  [6:0] bit_cnt_inc;
+    output reg  is_tx;
+    output reg  flag_passive;
+    output reg  last_bit_arb;
+    output reg  delim_first;
+    output reg  dom7;
+    output reg  ack_pending;
+    output reg  in_arbitration;
+    output reg  in_frame;
+    output reg  ack_slot;
+    output reg  in_delim;
+    output reg  after_error_flag;
+    output reg  bc0;
+    output reg  bc6;
+    output reg  bc7;
+    output reg  in_crc_field;
+    output reg  sof;
+    output reg  stuff_stop;
+    output reg  stuff_resync;
+    output reg  crc_step;
+    output reg  crc_check;
+    output reg  rx_shift_id;
+    output reg  rx_take_srr_rtr;
+    output reg  rx_take_ide;
+    output reg  rx_take_rtr_ext;
+    output reg  rx_take_dlc;
+    output reg  rx_take_data_len;
+    output reg  rx_take_data;
+    output reg  rx_publish;
+    output reg  tx_valid;
+    output reg  recovered;
+    
+    // Constant declarations
+    localparam  n7_0 = 7'b0;
+    localparam  n7_1 = 7'b1;
+    localparam  zero3 = 3'b0;
+    localparam  one3 = 3'b1;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  [4:0] field_q__d;
+    wire  [4:0] field_q__q;
+    reg  field_q__clock;
+    reg  [6:0] bit_cnt_q__d;
+    wire  [6:0] bit_cnt_q__q;
+    reg  bit_cnt_q__clock;
+    reg  is_tx_q__d;
+    wire  is_tx_q__q;
+    reg  is_tx_q__clock;
+    reg  flag_passive_q__d;
+    wire  flag_passive_q__q;
+    reg  flag_passive_q__clock;
+    reg  [6:0] recovery_cnt__d;
+    wire  [6:0] recovery_cnt__q;
+    reg  recovery_cnt__clock;
+    reg  tx_q__d;
+    wire  tx_q__q;
+    reg  tx_q__clock;
+    reg  last_bit_arb_q__d;
+    wire  last_bit_arb_q__q;
+    reg  last_bit_arb_q__clock;
+    reg  ack_pending_q__d;
+    wire  ack_pending_q__q;
+    reg  ack_pending_q__clock;
+    reg  delim_first_q__d;
+    wire  delim_first_q__q;
+    reg  delim_first_q__clock;
+    reg  [2:0] dom_cnt__d;
+    wire  [2:0] dom_cnt__q;
+    reg  dom_cnt__clock;
+    reg  pending__d;
+    wire  pending__q;
+    reg  pending__clock;
+    reg  abort_pending__d;
+    wire  abort_pending__q;
+    reg  abort_pending__clock;
+    reg  attempt__d;
+    wire  attempt__q;
+    reg  attempt__clock;
+    reg  tx_failed_q__d;
+    wire  tx_failed_q__q;
+    reg  tx_failed_q__clock;
+    reg  tx_done_q__d;
+    wire  tx_done_q__q;
+    reg  tx_done_q__clock;
+    reg  arb_lost_q__d;
+    wire  arb_lost_q__q;
+    reg  arb_lost_q__clock;
+    reg  decode__clk;
+    reg  [4:0] decode__field;
+    reg  [6:0] decode__bit_cnt;
+    reg  [6:0] decode__recovery_cnt;
+    reg  [2:0] decode__dom_cnt;
+    reg  decode__is_tx;
+    reg  decode__error_passive;
+    reg  decode__frame_ide;
+    wire  decode__in_arbitration;
+    wire  decode__in_frame;
+    wire  decode__crc_covered;
+    wire  decode__in_delim;
+    wire  decode__after_error_flag;
+    wire  decode__ack_slot;
+    wire  decode__bc0;
+    wire  decode__bc2;
+    wire  decode__bc3;
+    wire  decode__bc5;
+    wire  decode__bc6;
+    wire  decode__bc7;
+    wire  decode__bc10;
+    wire  decode__bc14;
+    wire  decode__bc17;
+    wire  decode__recovery_end;
+    wire  decode__suspend_due;
+    wire  decode__dom7;
+    
+    // Local signals
+    reg  [4:0] field_n;
+    reg  [6:0] bit_cnt_n;
+    reg  is_tx_n;
+    reg  flag_passive_n;
+    reg  tx_bit_n;
+    reg  tx_bit;
+    reg  start_ok;
+    reg  join_ok;
+    reg  starts;
+    reg  join_starts;
+    reg  sof_as_tx;
+    reg  monitor;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__fsm__field_q field_q(
+        .d(field_q__d),
+        .q(field_q__q),
+        .clock(field_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__bit_cnt_q bit_cnt_q(
+        .d(bit_cnt_q__d),
+        .q(bit_cnt_q__q),
+        .clock(bit_cnt_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__is_tx_q is_tx_q(
+        .d(is_tx_q__d),
+        .q(is_tx_q__q),
+        .clock(is_tx_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__flag_passive_q flag_passive_q(
+        .d(flag_passive_q__d),
+        .q(flag_passive_q__q),
+        .clock(flag_passive_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__recovery_cnt recovery_cnt(
+        .d(recovery_cnt__d),
+        .q(recovery_cnt__q),
+        .clock(recovery_cnt__clock)
+    );
+    drcc__chan_b__bsp__fsm__tx_q tx_q(
+        .d(tx_q__d),
+        .q(tx_q__q),
+        .clock(tx_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__last_bit_arb_q last_bit_arb_q(
+        .d(last_bit_arb_q__d),
+        .q(last_bit_arb_q__q),
+        .clock(last_bit_arb_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__ack_pending_q ack_pending_q(
+        .d(ack_pending_q__d),
+        .q(ack_pending_q__q),
+        .clock(ack_pending_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__delim_first_q delim_first_q(
+        .d(delim_first_q__d),
+        .q(delim_first_q__q),
+        .clock(delim_first_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__dom_cnt dom_cnt(
+        .d(dom_cnt__d),
+        .q(dom_cnt__q),
+        .clock(dom_cnt__clock)
+    );
+    drcc__chan_b__bsp__fsm__pending pending(
+        .d(pending__d),
+        .q(pending__q),
+        .clock(pending__clock)
+    );
+    drcc__chan_b__bsp__fsm__abort_pending abort_pending(
+        .d(abort_pending__d),
+        .q(abort_pending__q),
+        .clock(abort_pending__clock)
+    );
+    drcc__chan_b__bsp__fsm__attempt attempt(
+        .d(attempt__d),
+        .q(attempt__q),
+        .clock(attempt__clock)
+    );
+    drcc__chan_b__bsp__fsm__tx_failed_q tx_failed_q(
+        .d(tx_failed_q__d),
+        .q(tx_failed_q__q),
+        .clock(tx_failed_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__tx_done_q tx_done_q(
+        .d(tx_done_q__d),
+        .q(tx_done_q__q),
+        .clock(tx_done_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__arb_lost_q arb_lost_q(
+        .d(arb_lost_q__d),
+        .q(arb_lost_q__q),
+        .clock(arb_lost_q__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode decode(
+        .clk(decode__clk),
+        .field(decode__field),
+        .bit_cnt(decode__bit_cnt),
+        .recovery_cnt(decode__recovery_cnt),
+        .dom_cnt(decode__dom_cnt),
+        .is_tx(decode__is_tx),
+        .error_passive(decode__error_passive),
+        .frame_ide(decode__frame_ide),
+        .in_arbitration(decode__in_arbitration),
+        .in_frame(decode__in_frame),
+        .crc_covered(decode__crc_covered),
+        .in_delim(decode__in_delim),
+        .after_error_flag(decode__after_error_flag),
+        .ack_slot(decode__ack_slot),
+        .bc0(decode__bc0),
+        .bc2(decode__bc2),
+        .bc3(decode__bc3),
+        .bc5(decode__bc5),
+        .bc6(decode__bc6),
+        .bc7(decode__bc7),
+        .bc10(decode__bc10),
+        .bc14(decode__bc14),
+        .bc17(decode__bc17),
+        .recovery_end(decode__recovery_end),
+        .suspend_due(decode__suspend_due),
+        .dom7(decode__dom7)
+    );
+    
+    // Update code
+    always @(*) begin
+        field_q__clock = clk;
+        bit_cnt_q__clock = clk;
+        is_tx_q__clock = clk;
+        flag_passive_q__clock = clk;
+        recovery_cnt__clock = clk;
+        tx_q__clock = clk;
+        last_bit_arb_q__clock = clk;
+        ack_pending_q__clock = clk;
+        delim_first_q__clock = clk;
+        dom_cnt__clock = clk;
+        pending__clock = clk;
+        abort_pending__clock = clk;
+        attempt__clock = clk;
+        tx_failed_q__clock = clk;
+        tx_done_q__clock = clk;
+        arb_lost_q__clock = clk;
+        field_q__d = field_q__q;
+        bit_cnt_q__d = bit_cnt_q__q;
+        is_tx_q__d = is_tx_q__q;
+        flag_passive_q__d = flag_passive_q__q;
+        recovery_cnt__d = recovery_cnt__q;
+        tx_q__d = tx_q__q;
+        last_bit_arb_q__d = last_bit_arb_q__q;
+        ack_pending_q__d = ack_pending_q__q;
+        delim_first_q__d = delim_first_q__q;
+        dom_cnt__d = dom_cnt__q;
+        pending__d = pending__q;
+        abort_pending__d = abort_pending__q;
+        attempt__d = attempt__q;
+        tx_failed_q__d = tx_failed_q__q;
+        tx_done_q__d = tx_done_q__q;
+        arb_lost_q__d = arb_lost_q__q;
+        decode__clk = clk;
+        decode__field = field_q__q;
+        decode__bit_cnt = bit_cnt_q__q;
+        decode__recovery_cnt = recovery_cnt__q;
+        decode__dom_cnt = dom_cnt__q;
+        decode__is_tx = is_tx_q__q;
+        decode__error_passive = error_passive;
+        decode__frame_ide = frame_ide;
+        field_n = field_q__q;
+        bit_cnt_n = bit_cnt_q__q;
+        bit_cnt_inc = bit_cnt_q__q + n7_1;
+        is_tx_n = is_tx_q__q;
+        flag_passive_n = flag_passive_q__q;
+        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
+        tx_failed_q__d = 1'b0;
+        if (~pending__q) begin
+            abort_pending__d = 1'b0;
+        end
+        if ((tx_abort || abort_pending__q) && pending__q) begin
+            if (~is_tx_q__q && tx_q__q) begin
+                pending__d = 1'b0;
+                tx_failed_q__d = 1'b1;
+                abort_pending__d = 1'b0;
+            end
+            else begin
+                abort_pending__d = 1'b1;
+            end
+        end
+        join_ok = start_ok && ~decode__suspend_due;
+        starts = (~tx_q__q && pending__q) || start_ok;
+        join_starts = (~tx_q__q && pending__q) || join_ok;
+        tx_done_q__d = 1'b0;
+        arb_lost_q__d = 1'b0;
+        sof = 1'b0;
+        sof_as_tx = 1'b0;
+        stuff_stop = 1'b0;
+        stuff_resync = 1'b0;
+        crc_step = 1'b0;
+        crc_check = 1'b0;
+        rx_shift_id = 1'b0;
+        rx_take_srr_rtr = 1'b0;
+        rx_take_ide = 1'b0;
+        rx_take_rtr_ext = 1'b0;
+        rx_take_dlc = 1'b0;
+        rx_take_data_len = 1'b0;
+        rx_take_data = 1'b0;
+        rx_publish = 1'b0;
+        tx_valid = 1'b0;
+        recovered = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            last_bit_arb_q__d = decode__in_arbitration;
+            crc_step = decode__crc_covered;
+            if (lost) begin
+                is_tx_n = 1'b0;
+                arb_lost_q__d = 1'b1;
+            end
+            case (field_q__q)
+                Field__Integrating:
+                    begin
+                        if (sampled) begin
+                            if (decode__bc10) begin
+                                field_n = Field__Idle;
+                                bit_cnt_n = n7_0;
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                        else begin
+                            bit_cnt_n = n7_0;
+                        end
+                    end
+                Field__Idle:
+                    begin
+                        if (~sampled) begin
+                            sof = 1'b1;
+                            sof_as_tx = starts;
+                        end
+                        else if (sof_error) begin
+                            is_tx_n = 1'b1;
+                        end
+                    end
+                Field__Suspend:
+                    begin
+                        if (~sampled) begin
+                            sof = 1'b1;
+                        end
+                        else if (decode__bc7) begin
+                            field_n = Field__Idle;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__Intermission:
+                    begin
+                        if (~sampled) begin
+                            if (decode__bc2) begin
+                                sof = 1'b1;
+                                sof_as_tx = join_starts;
+                            end
+                            else begin
+                                field_n = Field__OverloadFlag;
+                                bit_cnt_n = n7_0;
+                            end
+                        end
+                        else if (decode__bc2) begin
+                            if (decode__suspend_due) begin
+                                field_n = Field__Suspend;
+                            end
+                            else begin
+                                field_n = Field__Idle;
+                            end
+                            is_tx_n = 1'b0;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__IdA:
+                    begin
+                        rx_shift_id = 1'b1;
+                        if (decode__bc10) begin
+                            field_n = Field__SrrRtr;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__SrrRtr:
+                    begin
+                        rx_take_srr_rtr = 1'b1;
+                        field_n = Field__Ide;
+                    end
+                Field__Ide:
+                    begin
+                        rx_take_ide = 1'b1;
+                        if (sampled) begin
+                            field_n = Field__IdB;
+                        end
+                        else begin
+                            field_n = Field__R0;
+                        end
+                        bit_cnt_n = n7_0;
+                    end
+                Field__IdB:
+                    begin
+                        rx_shift_id = 1'b1;
+                        if (decode__bc17) begin
+                            field_n = Field__RtrExt;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__RtrExt:
+                    begin
+                        rx_take_rtr_ext = 1'b1;
+                        field_n = Field__R1;
+                    end
+                Field__R1:
+                    begin
+                        field_n = Field__R0;
+                    end
+                Field__R0:
+                    begin
+                        field_n = Field__Dlc;
+                        bit_cnt_n = n7_0;
+                    end
+                Field__Dlc:
+                    begin
+                        rx_take_dlc = 1'b1;
+                        if (decode__bc3) begin
+                            rx_take_data_len = 1'b1;
+                            if (no_data) begin
+                                field_n = Field__Crc;
+                            end
+                            else begin
+                                field_n = Field__Data;
+                            end
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__Data:
+                    begin
+                        rx_take_data = 1'b1;
+                        if (data_end) begin
+                            field_n = Field__Crc;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__Crc:
+                    begin
+                        crc_check = 1'b1;
+                        if (decode__bc14) begin
+                            field_n = Field__CrcDelim;
+                            bit_cnt_n = n7_0;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        stuff_stop = 1'b1;
+                        field_n = Field__AckSlot;
+                    end
+                Field__AckSlot:
+                    begin
+                        field_n = Field__AckDelim;
+                    end
+                Field__AckDelim:
+                    begin
+                        field_n = Field__Eof;
+                        bit_cnt_n = n7_0;
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled) begin
+                            if (decode__bc6 && ~is_tx_q__q) begin
+                                field_n = Field__OverloadFlag;
+                                bit_cnt_n = n7_0;
+                            end
+                        end
+                        else begin
+                            if (decode__bc5 && (~is_tx_q__q || loopback)) begin
+                                rx_publish = 1'b1;
+                            end
+                            if (decode__bc6) begin
+                                if (is_tx_q__q) begin
+                                    tx_done_q__d = 1'b1;
+                                    pending__d = 1'b0;
+                                    attempt__d = 1'b0;
+                                    abort_pending__d = 1'b0;
+                                    tx_valid = 1'b1;
+                                end
+                                field_n = Field__Intermission;
+                                bit_cnt_n = n7_0;
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        if (flag_passive_q__q) begin
+                            if (ack_counted) begin
+                                ack_pending_q__d = 1'b0;
+                            end
+                            if (decode__bc0 || (sampled != stuff_last)) begin
+                                bit_cnt_n = n7_1;
+                                stuff_resync = 1'b1;
+                            end
+                            else if (decode__bc5) begin
+                                field_n = Field__ErrorDelim;
+                                bit_cnt_n = n7_0;
+                                delim_first_q__d = 1'b1;
+                                dom_cnt__d = zero3;
+                                ack_pending_q__d = 1'b0;
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                        else if (sampled) begin
+                        end
+                        else if (decode__bc5) begin
+                            field_n = Field__ErrorDelim;
+                            bit_cnt_n = n7_0;
+                            delim_first_q__d = 1'b1;
+                            dom_cnt__d = zero3;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__OverloadFlag:
+                    begin
+                        if (sampled && ~listen_only) begin
+                        end
+                        else if (decode__bc5) begin
+                            field_n = Field__OverloadDelim;
+                            bit_cnt_n = n7_0;
+                            delim_first_q__d = 1'b1;
+                            dom_cnt__d = zero3;
+                        end
+                        else begin
+                            bit_cnt_n = bit_cnt_inc;
+                        end
+                    end
+                Field__BusOff:
+                    begin
+                        if (sampled) begin
+                            if (decode__bc10) begin
+                                bit_cnt_n = n7_0;
+                                if (decode__recovery_end) begin
+                                    field_n = Field__Idle;
+                                    recovered = 1'b1;
+                                    recovery_cnt__d = n7_0;
+                                end
+                                else begin
+                                    recovery_cnt__d = recovery_cnt__q + n7_1;
+                                end
+                            end
+                            else begin
+                                bit_cnt_n = bit_cnt_inc;
+                            end
+                        end
+                        else begin
+                            bit_cnt_n = n7_0;
+                        end
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (decode__in_delim) begin
+                if (decode__bc0) begin
+                    delim_first_q__d = 1'b0;
+                    if (sampled) begin
+                        bit_cnt_n = n7_1;
+                    end
+                    else begin
+                        dom_cnt__d = dom_cnt__q + one3;
+                    end
+                end
+                else if (~sampled) begin
+                    if (decode__bc7) begin
+                        field_n = Field__OverloadFlag;
+                        bit_cnt_n = n7_0;
+                    end
+                end
+                else if (decode__bc7) begin
+                    field_n = Field__Intermission;
+                    bit_cnt_n = n7_0;
+                end
+                else begin
+                    bit_cnt_n = bit_cnt_inc;
+                end
+            end
+        end
+        if (sample) begin
+            if (sof) begin
+                field_n = Field__IdA;
+                bit_cnt_n = n7_0;
+                is_tx_n = sof_as_tx;
+                attempt__d = sof_as_tx;
+            end
+            if (error || flag_error) begin
+                field_n = Field__ErrorFlag;
+                bit_cnt_n = n7_0;
+                stuff_stop = 1'b1;
+                flag_passive_n = passive_after || listen_only;
+            end
+            if (ack_defer) begin
+                ack_pending_q__d = 1'b1;
+            end
+            if ((attempt__q && is_tx_q__q && (lost || error || flag_error)) || sof_error) begin
+                attempt__d = 1'b0;
+                if (single_shot || abort_pending__q) begin
+                    pending__d = 1'b0;
+                    tx_failed_q__d = 1'b1;
+                    abort_pending__d = 1'b0;
+                end
+            end
+            if (bus_off_after) begin
+                field_n = Field__BusOff;
+                is_tx_n = 1'b0;
+                attempt__d = 1'b0;
+                bit_cnt_n = n7_0;
+                recovery_cnt__d = n7_0;
+            end
+            field_q__d = field_n;
+            bit_cnt_q__d = bit_cnt_n;
+            is_tx_q__d = is_tx_n;
+            flag_passive_q__d = flag_passive_n;
+        end
+        tx_bit_n = 1'b1;
+        case (field_q__q)
+            Field__ErrorFlag:
+                begin
+                    tx_bit_n = flag_passive_q__q;
+                end
+            Field__OverloadFlag:
+                begin
+                    tx_bit_n = 1'b0;
+                end
+            Field__AckSlot:
+                begin
+                    tx_bit_n = is_tx_q__q || ~crc_ok;
+                end
+            default:
+                begin
+                    if (is_tx_q__q) begin
+                        if (stuff_insert) begin
+                            tx_bit_n = ~stuff_last;
+                        end
+                        else begin
+                            tx_bit_n = frame_bit;
+                        end
+                    end
+                end
+        endcase
+        tx_bit = tx_bit_n || listen_only;
+        if (bit_start) begin
+            if (hard_sync && (field_q__q == Field__Idle)) begin
+                tx_q__d = ~starts;
+            end
+            else if (hard_sync && (field_q__q == Field__Intermission)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (hard_sync && (field_q__q == Field__Suspend)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (field_q__q == Field__Idle) begin
+                tx_q__d = ~starts;
+            end
+            else begin
+                tx_q__d = tx_bit;
+            end
+        end
+        tx_load = 1'b0;
+        if (tx_req && ~pending__q && listen_only) begin
+            tx_failed_q__d = 1'b1;
+        end
+        else if (tx_req && ~pending__q) begin
+            pending__d = 1'b1;
+            tx_load = 1'b1;
+        end
+        case (field_q__q)
+            Field__Integrating:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__Idle:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__Suspend:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__BusOff:
+                begin
+                    hard_sync_enable = 1'b1;
+                end
+            Field__Intermission:
+                begin
+                    hard_sync_enable = bit_cnt_q__q[32'h1];
+                end
+            default:
+                begin
+                    hard_sync_enable = 1'b0;
+                end
+        endcase
+        tx = tx_q__q;
+        tx_pending = pending__q;
+        tx_done = tx_done_q__q;
+        arb_lost = arb_lost_q__q;
+        tx_failed = tx_failed_q__q;
+        field = field_q__q;
+        bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
+        is_tx = is_tx_q__q;
+        flag_passive = flag_passive_q__q;
+        last_bit_arb = last_bit_arb_q__q;
+        in_arbitration = decode__in_arbitration;
+        in_frame = decode__in_frame;
+        ack_slot = decode__ack_slot;
+        in_delim = decode__in_delim;
+        after_error_flag = decode__after_error_flag;
+        bc0 = decode__bc0;
+        bc6 = decode__bc6;
+        bc7 = decode__bc7;
+        dom7 = decode__dom7;
+        delim_first = delim_first_q__q;
+        ack_pending = ack_pending_q__q;
+        in_crc_field = field_q__q == Field__Crc;
+        if (rst) begin
+            field_q__d = Field__Integrating;
+            bit_cnt_q__d = n7_0;
+            is_tx_q__d = 1'b0;
+            flag_passive_q__d = 1'b0;
+            recovery_cnt__d = n7_0;
+            tx_q__d = 1'b1;
+            last_bit_arb_q__d = 1'b0;
+            ack_pending_q__d = 1'b0;
+            delim_first_q__d = 1'b0;
+            dom_cnt__d = zero3;
+            pending__d = 1'b0;
+            abort_pending__d = 1'b0;
+            attempt__d = 1'b0;
+            tx_failed_q__d = 1'b0;
+            tx_done_q__d = 1'b0;
+            arb_lost_q__d = 1'b0;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__fsm
+
+
+module drcc__chan_b__bsp__fsm__abort_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__abort_pending
+
+
+module drcc__chan_b__bsp__fsm__ack_pending_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__ack_pending_q
+
+
+module drcc__chan_b__bsp__fsm__arb_lost_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__arb_lost_q
+
+
+module drcc__chan_b__bsp__fsm__attempt(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__attempt
+
+
+module drcc__chan_b__bsp__fsm__bit_cnt_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__bit_cnt_q
+
+
+module drcc__chan_b__bsp__fsm__decode(clk,field,bit_cnt,recovery_cnt,dom_cnt,is_tx,error_passive,frame_ide,in_arbitration,in_frame,crc_covered,in_delim,after_error_flag,ack_slot,bc0,bc2,bc3,bc5,bc6,bc7,bc10,bc14,bc17,recovery_end,suspend_due,dom7);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [4:0] field;
+    input wire  [6:0] bit_cnt;
+    input wire  [6:0] recovery_cnt;
+    input wire  [2:0] dom_cnt;
+    input wire  is_tx;
+    input wire  error_passive;
+    input wire  frame_ide;
+    output reg  in_arbitration;
+    output reg  in_frame;
+    output reg  crc_covered;
+    output reg  in_delim;
+    output reg  after_error_flag;
+    output reg  ack_slot;
+    output reg  bc0;
+    output reg  bc2;
+    output reg  bc3;
+    output reg  bc5;
+    output reg  bc6;
+    output reg  bc7;
+    output reg  bc10;
+    output reg  bc14;
+    output reg  bc17;
+    output reg  recovery_end;
+    output reg  suspend_due;
+    output reg  dom7;
+    
+    // Constant declarations
+    localparam  n3_7 = 3'b111;
+    localparam  n7_0 = 7'b0;
+    localparam  n7_2 = 7'b10;
+    localparam  n7_3 = 7'b11;
+    localparam  n7_5 = 7'b101;
+    localparam  n7_6 = 7'b110;
+    localparam  n7_7 = 7'b111;
+    localparam  n7_10 = 7'b1010;
+    localparam  n7_14 = 7'b1110;
+    localparam  n7_17 = 7'b10001;
+    localparam  n7_127 = 7'b1111111;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  p_in_arbitration__d;
+    wire  p_in_arbitration__q;
+    reg  p_in_arbitration__clock;
+    reg  p_ide__d;
+    wire  p_ide__q;
+    reg  p_ide__clock;
+    reg  p_in_frame__d;
+    wire  p_in_frame__q;
+    reg  p_in_frame__clock;
+    reg  p_crc_covered__d;
+    wire  p_crc_covered__q;
+    reg  p_crc_covered__clock;
+    reg  p_in_delim__d;
+    wire  p_in_delim__q;
+    reg  p_in_delim__clock;
+    reg  p_after_error_flag__d;
+    wire  p_after_error_flag__q;
+    reg  p_after_error_flag__clock;
+    reg  p_ack_slot__d;
+    wire  p_ack_slot__q;
+    reg  p_ack_slot__clock;
+    reg  p_bc0__d;
+    wire  p_bc0__q;
+    reg  p_bc0__clock;
+    reg  p_bc2__d;
+    wire  p_bc2__q;
+    reg  p_bc2__clock;
+    reg  p_bc3__d;
+    wire  p_bc3__q;
+    reg  p_bc3__clock;
+    reg  p_bc5__d;
+    wire  p_bc5__q;
+    reg  p_bc5__clock;
+    reg  p_bc6__d;
+    wire  p_bc6__q;
+    reg  p_bc6__clock;
+    reg  p_bc7__d;
+    wire  p_bc7__q;
+    reg  p_bc7__clock;
+    reg  p_bc10__d;
+    wire  p_bc10__q;
+    reg  p_bc10__clock;
+    reg  p_bc14__d;
+    wire  p_bc14__q;
+    reg  p_bc14__clock;
+    reg  p_bc17__d;
+    wire  p_bc17__q;
+    reg  p_bc17__clock;
+    reg  p_recovery_end__d;
+    wire  p_recovery_end__q;
+    reg  p_recovery_end__clock;
+    reg  p_suspend_due__d;
+    wire  p_suspend_due__q;
+    reg  p_suspend_due__clock;
+    reg  p_dom7__d;
+    wire  p_dom7__q;
+    reg  p_dom7__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__fsm__decode__p_in_arbitration p_in_arbitration(
+        .d(p_in_arbitration__d),
+        .q(p_in_arbitration__q),
+        .clock(p_in_arbitration__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_ide p_ide(
+        .d(p_ide__d),
+        .q(p_ide__q),
+        .clock(p_ide__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_in_frame p_in_frame(
+        .d(p_in_frame__d),
+        .q(p_in_frame__q),
+        .clock(p_in_frame__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_crc_covered p_crc_covered(
+        .d(p_crc_covered__d),
+        .q(p_crc_covered__q),
+        .clock(p_crc_covered__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_in_delim p_in_delim(
+        .d(p_in_delim__d),
+        .q(p_in_delim__q),
+        .clock(p_in_delim__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_after_error_flag p_after_error_flag(
+        .d(p_after_error_flag__d),
+        .q(p_after_error_flag__q),
+        .clock(p_after_error_flag__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_ack_slot p_ack_slot(
+        .d(p_ack_slot__d),
+        .q(p_ack_slot__q),
+        .clock(p_ack_slot__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc0 p_bc0(
+        .d(p_bc0__d),
+        .q(p_bc0__q),
+        .clock(p_bc0__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc2 p_bc2(
+        .d(p_bc2__d),
+        .q(p_bc2__q),
+        .clock(p_bc2__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc3 p_bc3(
+        .d(p_bc3__d),
+        .q(p_bc3__q),
+        .clock(p_bc3__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc5 p_bc5(
+        .d(p_bc5__d),
+        .q(p_bc5__q),
+        .clock(p_bc5__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc6 p_bc6(
+        .d(p_bc6__d),
+        .q(p_bc6__q),
+        .clock(p_bc6__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc7 p_bc7(
+        .d(p_bc7__d),
+        .q(p_bc7__q),
+        .clock(p_bc7__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc10 p_bc10(
+        .d(p_bc10__d),
+        .q(p_bc10__q),
+        .clock(p_bc10__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc14 p_bc14(
+        .d(p_bc14__d),
+        .q(p_bc14__q),
+        .clock(p_bc14__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_bc17 p_bc17(
+        .d(p_bc17__d),
+        .q(p_bc17__q),
+        .clock(p_bc17__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_recovery_end p_recovery_end(
+        .d(p_recovery_end__d),
+        .q(p_recovery_end__q),
+        .clock(p_recovery_end__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_suspend_due p_suspend_due(
+        .d(p_suspend_due__d),
+        .q(p_suspend_due__q),
+        .clock(p_suspend_due__clock)
+    );
+    drcc__chan_b__bsp__fsm__decode__p_dom7 p_dom7(
+        .d(p_dom7__d),
+        .q(p_dom7__q),
+        .clock(p_dom7__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        p_in_arbitration__clock = clk;
+        p_ide__clock = clk;
+        p_in_frame__clock = clk;
+        p_crc_covered__clock = clk;
+        p_in_delim__clock = clk;
+        p_after_error_flag__clock = clk;
+        p_ack_slot__clock = clk;
+        p_bc0__clock = clk;
+        p_bc2__clock = clk;
+        p_bc3__clock = clk;
+        p_bc5__clock = clk;
+        p_bc6__clock = clk;
+        p_bc7__clock = clk;
+        p_bc10__clock = clk;
+        p_bc14__clock = clk;
+        p_bc17__clock = clk;
+        p_recovery_end__clock = clk;
+        p_suspend_due__clock = clk;
+        p_dom7__clock = clk;
+        p_in_arbitration__d = p_in_arbitration__q;
+        p_ide__d = p_ide__q;
+        p_in_frame__d = p_in_frame__q;
+        p_crc_covered__d = p_crc_covered__q;
+        p_in_delim__d = p_in_delim__q;
+        p_after_error_flag__d = p_after_error_flag__q;
+        p_ack_slot__d = p_ack_slot__q;
+        p_bc0__d = p_bc0__q;
+        p_bc2__d = p_bc2__q;
+        p_bc3__d = p_bc3__q;
+        p_bc5__d = p_bc5__q;
+        p_bc6__d = p_bc6__q;
+        p_bc7__d = p_bc7__q;
+        p_bc10__d = p_bc10__q;
+        p_bc14__d = p_bc14__q;
+        p_bc17__d = p_bc17__q;
+        p_recovery_end__d = p_recovery_end__q;
+        p_suspend_due__d = p_suspend_due__q;
+        p_dom7__d = p_dom7__q;
+        p_in_arbitration__d = 1'b0;
+        p_ide__d = 1'b0;
+        p_in_frame__d = 1'b0;
+        p_crc_covered__d = 1'b0;
+        p_in_delim__d = 1'b0;
+        p_after_error_flag__d = 1'b0;
+        case (field)
+            Field__ErrorDelim:
+                begin
+                    p_in_delim__d = 1'b1;
+                    p_after_error_flag__d = 1'b1;
+                end
+            Field__OverloadDelim:
+                begin
+                    p_in_delim__d = 1'b1;
+                end
+            Field__IdA:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__SrrRtr:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Ide:
+                begin
+                    p_ide__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__IdB:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__RtrExt:
+                begin
+                    p_in_arbitration__d = 1'b1;
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__R1:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__R0:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Dlc:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Data:
+                begin
+                    p_in_frame__d = 1'b1;
+                    p_crc_covered__d = 1'b1;
+                end
+            Field__Crc:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__CrcDelim:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__AckSlot:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__AckDelim:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            Field__Eof:
+                begin
+                    p_in_frame__d = 1'b1;
+                end
+            default:
+                begin
+                end
+        endcase
+        p_ack_slot__d = field == Field__AckSlot;
+        p_bc0__d = bit_cnt == n7_0;
+        p_bc2__d = bit_cnt == n7_2;
+        p_bc3__d = bit_cnt == n7_3;
+        p_bc5__d = bit_cnt == n7_5;
+        p_bc6__d = bit_cnt == n7_6;
+        p_bc7__d = bit_cnt == n7_7;
+        p_bc10__d = bit_cnt == n7_10;
+        p_bc14__d = bit_cnt == n7_14;
+        p_bc17__d = bit_cnt == n7_17;
+        p_recovery_end__d = recovery_cnt == n7_127;
+        p_suspend_due__d = is_tx && error_passive;
+        p_dom7__d = dom_cnt == n3_7;
+        in_arbitration = p_in_arbitration__q || (p_ide__q && frame_ide);
+        in_frame = p_in_frame__q;
+        crc_covered = p_crc_covered__q;
+        in_delim = p_in_delim__q;
+        after_error_flag = p_after_error_flag__q;
+        ack_slot = p_ack_slot__q;
+        bc0 = p_bc0__q;
+        bc2 = p_bc2__q;
+        bc3 = p_bc3__q;
+        bc5 = p_bc5__q;
+        bc6 = p_bc6__q;
+        bc7 = p_bc7__q;
+        bc10 = p_bc10__q;
+        bc14 = p_bc14__q;
+        bc17 = p_bc17__q;
+        recovery_end = p_recovery_end__q;
+        suspend_due = p_suspend_due__q;
+        dom7 = p_dom7__q;
+    end
+    
+endmodule // drcc__chan_b__bsp__fsm__decode
+
+
+module drcc__chan_b__bsp__fsm__decode__p_ack_slot(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_ack_slot
+
+
+module drcc__chan_b__bsp__fsm__decode__p_after_error_flag(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_after_error_flag
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc0
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc10
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc14
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc17
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc2
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc3
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc5
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc6
+
+
+module drcc__chan_b__bsp__fsm__decode__p_bc7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_bc7
+
+
+module drcc__chan_b__bsp__fsm__decode__p_crc_covered(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_crc_covered
+
+
+module drcc__chan_b__bsp__fsm__decode__p_dom7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_dom7
+
+
+module drcc__chan_b__bsp__fsm__decode__p_ide(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_ide
+
+
+module drcc__chan_b__bsp__fsm__decode__p_in_arbitration(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_in_arbitration
+
+
+module drcc__chan_b__bsp__fsm__decode__p_in_delim(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_in_delim
+
+
+module drcc__chan_b__bsp__fsm__decode__p_in_frame(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_in_frame
+
+
+module drcc__chan_b__bsp__fsm__decode__p_recovery_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_recovery_end
+
+
+module drcc__chan_b__bsp__fsm__decode__p_suspend_due(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__decode__p_suspend_due
+
+
+module drcc__chan_b__bsp__fsm__delim_first_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__delim_first_q
+
+
+module drcc__chan_b__bsp__fsm__dom_cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__dom_cnt
+
+
+module drcc__chan_b__bsp__fsm__field_q(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -9775,10 +12032,10 @@ module drcc__chan_b__bsp__field_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__field_q
+endmodule // drcc__chan_b__bsp__fsm__field_q
 
 
-module drcc__chan_b__bsp__flag_passive(d,q,clock);
+module drcc__chan_b__bsp__fsm__flag_passive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9791,10 +12048,10 @@ module drcc__chan_b__bsp__flag_passive(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__flag_passive
+endmodule // drcc__chan_b__bsp__fsm__flag_passive_q
 
 
-module drcc__chan_b__bsp__is_tx(d,q,clock);
+module drcc__chan_b__bsp__fsm__is_tx_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9807,10 +12064,10 @@ module drcc__chan_b__bsp__is_tx(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__is_tx
+endmodule // drcc__chan_b__bsp__fsm__is_tx_q
 
 
-module drcc__chan_b__bsp__last_bit_arb(d,q,clock);
+module drcc__chan_b__bsp__fsm__last_bit_arb_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9823,10 +12080,10 @@ module drcc__chan_b__bsp__last_bit_arb(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__last_bit_arb
+endmodule // drcc__chan_b__bsp__fsm__last_bit_arb_q
 
 
-module drcc__chan_b__bsp__p_ack_slot(d,q,clock);
+module drcc__chan_b__bsp__fsm__pending(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9839,554 +12096,10 @@ module drcc__chan_b__bsp__p_ack_slot(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__p_ack_slot
+endmodule // drcc__chan_b__bsp__fsm__pending
 
 
-module drcc__chan_b__bsp__p_after_error_flag(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_after_error_flag
-
-
-module drcc__chan_b__bsp__p_alc(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_alc
-
-
-module drcc__chan_b__bsp__p_bc0(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc0
-
-
-module drcc__chan_b__bsp__p_bc10(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc10
-
-
-module drcc__chan_b__bsp__p_bc14(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc14
-
-
-module drcc__chan_b__bsp__p_bc17(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc17
-
-
-module drcc__chan_b__bsp__p_bc2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc2
-
-
-module drcc__chan_b__bsp__p_bc3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc3
-
-
-module drcc__chan_b__bsp__p_bc5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc5
-
-
-module drcc__chan_b__bsp__p_bc6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc6
-
-
-module drcc__chan_b__bsp__p_bc7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bc7
-
-
-module drcc__chan_b__bsp__p_bus_off(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_bus_off
-
-
-module drcc__chan_b__bsp__p_cnt_ack_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_cnt_ack_max
-
-
-module drcc__chan_b__bsp__p_cnt_bit_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_cnt_bit_max
-
-
-module drcc__chan_b__bsp__p_cnt_crc_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_cnt_crc_max
-
-
-module drcc__chan_b__bsp__p_cnt_form_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_cnt_form_max
-
-
-module drcc__chan_b__bsp__p_cnt_stuff_max(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_cnt_stuff_max
-
-
-module drcc__chan_b__bsp__p_crc_bit(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_crc_bit
-
-
-module drcc__chan_b__bsp__p_crc_covered(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_crc_covered
-
-
-module drcc__chan_b__bsp__p_data_end(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_data_end
-
-
-module drcc__chan_b__bsp__p_dom7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_dom7
-
-
-module drcc__chan_b__bsp__p_ide(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_ide
-
-
-module drcc__chan_b__bsp__p_in_arbitration(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_in_arbitration
-
-
-module drcc__chan_b__bsp__p_in_delim(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_in_delim
-
-
-module drcc__chan_b__bsp__p_in_frame(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_in_frame
-
-
-module drcc__chan_b__bsp__p_passive(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_passive
-
-
-module drcc__chan_b__bsp__p_rec_ge120(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_rec_ge120
-
-
-module drcc__chan_b__bsp__p_rec_ge127(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_rec_ge127
-
-
-module drcc__chan_b__bsp__p_recovery_end(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_recovery_end
-
-
-module drcc__chan_b__bsp__p_stuff_bit(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_stuff_bit
-
-
-module drcc__chan_b__bsp__p_suspend_due(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_suspend_due
-
-
-module drcc__chan_b__bsp__p_tec_ge120(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_tec_ge120
-
-
-module drcc__chan_b__bsp__p_tec_ge248(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__p_tec_ge248
-
-
-module drcc__chan_b__bsp__pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__pending
-
-
-module drcc__chan_b__bsp__recovery_cnt(d,q,clock);
+module drcc__chan_b__bsp__fsm__recovery_cnt(d,q,clock);
     
     // Module arguments
     input wire  [6:0] d;
@@ -10399,10 +12112,625 @@ module drcc__chan_b__bsp__recovery_cnt(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__recovery_cnt
+endmodule // drcc__chan_b__bsp__fsm__recovery_cnt
 
 
-module drcc__chan_b__bsp__rx_data_q(d,q,clock);
+module drcc__chan_b__bsp__fsm__tx_done_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__tx_done_q
+
+
+module drcc__chan_b__bsp__fsm__tx_failed_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__tx_failed_q
+
+
+module drcc__chan_b__bsp__fsm__tx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__tx_q
+
+
+module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  tx_valid;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  [8:0] tec;
+    input wire  [7:0] rec;
+    input wire  error_passive;
+    input wire  bus_off;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  tx_success;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Constant declarations
+    localparam  n9_120 = 9'b1111000;
+    localparam  n9_248 = 9'b11111000;
+    localparam  n8_120 = 8'h78;
+    localparam  n8_127 = 8'h7f;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  p_passive__d;
+    wire  p_passive__q;
+    reg  p_passive__clock;
+    reg  p_bus_off__d;
+    wire  p_bus_off__q;
+    reg  p_bus_off__clock;
+    reg  p_tec_ge120__d;
+    wire  p_tec_ge120__q;
+    reg  p_tec_ge120__clock;
+    reg  p_tec_ge248__d;
+    wire  p_tec_ge248__q;
+    reg  p_tec_ge248__clock;
+    reg  p_rec_ge127__d;
+    wire  p_rec_ge127__q;
+    reg  p_rec_ge127__clock;
+    reg  p_rec_ge120__d;
+    wire  p_rec_ge120__q;
+    reg  p_rec_ge120__clock;
+    
+    // Local signals
+    reg  monitor;
+    reg  ev_tec_add8;
+    reg  ev_rec_add1;
+    reg  ev_rec_add8;
+    reg  ev_rx_success;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__p_passive p_passive(
+        .d(p_passive__d),
+        .q(p_passive__q),
+        .clock(p_passive__clock)
+    );
+    drcc__chan_b__bsp__rules__p_bus_off p_bus_off(
+        .d(p_bus_off__d),
+        .q(p_bus_off__q),
+        .clock(p_bus_off__clock)
+    );
+    drcc__chan_b__bsp__rules__p_tec_ge120 p_tec_ge120(
+        .d(p_tec_ge120__d),
+        .q(p_tec_ge120__q),
+        .clock(p_tec_ge120__clock)
+    );
+    drcc__chan_b__bsp__rules__p_tec_ge248 p_tec_ge248(
+        .d(p_tec_ge248__d),
+        .q(p_tec_ge248__q),
+        .clock(p_tec_ge248__clock)
+    );
+    drcc__chan_b__bsp__rules__p_rec_ge127 p_rec_ge127(
+        .d(p_rec_ge127__d),
+        .q(p_rec_ge127__q),
+        .clock(p_rec_ge127__clock)
+    );
+    drcc__chan_b__bsp__rules__p_rec_ge120 p_rec_ge120(
+        .d(p_rec_ge120__d),
+        .q(p_rec_ge120__q),
+        .clock(p_rec_ge120__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        p_passive__clock = clk;
+        p_bus_off__clock = clk;
+        p_tec_ge120__clock = clk;
+        p_tec_ge248__clock = clk;
+        p_rec_ge127__clock = clk;
+        p_rec_ge120__clock = clk;
+        p_passive__d = p_passive__q;
+        p_bus_off__d = p_bus_off__q;
+        p_tec_ge120__d = p_tec_ge120__q;
+        p_tec_ge248__d = p_tec_ge248__q;
+        p_rec_ge127__d = p_rec_ge127__q;
+        p_rec_ge120__d = p_rec_ge120__q;
+        p_passive__d = error_passive;
+        p_bus_off__d = bus_off;
+        p_tec_ge120__d = tec >= n9_120;
+        p_tec_ge248__d = tec >= n9_248;
+        p_rec_ge127__d = rec >= n8_127;
+        p_rec_ge120__d = rec >= n8_120;
+        ev_tec_add8 = 1'b0;
+        ev_rec_add1 = 1'b0;
+        ev_rec_add8 = 1'b0;
+        ev_rx_success = 1'b0;
+        ack_defer = 1'b0;
+        ack_counted = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if ((field == Field__AckSlot) && ~is_tx && ~tx_bit && ~sampled) begin
+                ev_rx_success = 1'b1;
+            end
+            if ((field == Field__ErrorFlag) && flag_passive) begin
+                if (ack_pending && ~sampled) begin
+                    ev_tec_add8 = 1'b1;
+                    ack_counted = 1'b1;
+                end
+            end
+            if (in_delim && bc0 && ~sampled) begin
+                if (delim_first && after_error_flag && ~is_tx) begin
+                    ev_rec_add8 = 1'b1;
+                end
+                if (dom7) begin
+                    if (is_tx) begin
+                        ev_tec_add8 = 1'b1;
+                    end
+                    else begin
+                        ev_rec_add8 = 1'b1;
+                    end
+                end
+            end
+        end
+        if (error) begin
+            if (as_tx) begin
+                if (ack_err && p_passive__q) begin
+                    ack_defer = 1'b1;
+                end
+                else if (~tec_exempt) begin
+                    ev_tec_add8 = 1'b1;
+                end
+            end
+            else begin
+                ev_rec_add1 = 1'b1;
+            end
+        end
+        if (flag_error) begin
+            if (is_tx) begin
+                ev_tec_add8 = 1'b1;
+            end
+            else begin
+                ev_rec_add8 = 1'b1;
+            end
+        end
+        passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
+        bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
+        tec_add8 = ev_tec_add8 && ~listen_only;
+        rec_add1 = ev_rec_add1 && ~listen_only;
+        rec_add8 = ev_rec_add8 && ~listen_only;
+        tx_success = tx_valid && ~listen_only;
+        rx_success = ev_rx_success && ~listen_only;
+    end
+    
+endmodule // drcc__chan_b__bsp__rules
+
+
+module drcc__chan_b__bsp__rules__p_bus_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__p_bus_off
+
+
+module drcc__chan_b__bsp__rules__p_passive(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__p_passive
+
+
+module drcc__chan_b__bsp__rules__p_rec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__p_rec_ge120
+
+
+module drcc__chan_b__bsp__rules__p_rec_ge127(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__p_rec_ge127
+
+
+module drcc__chan_b__bsp__rules__p_tec_ge120(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__p_tec_ge120
+
+
+module drcc__chan_b__bsp__rules__p_tec_ge248(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__p_tec_ge248
+
+
+module drcc__chan_b__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sampled;
+    input wire  [5:0] bit_cnt;
+    input wire  [6:0] bit_cnt_inc;
+    input wire  clear;
+    input wire  shift_id;
+    input wire  take_srr_rtr;
+    input wire  take_ide;
+    input wire  take_rtr_ext;
+    input wire  take_dlc;
+    input wire  take_data_len;
+    input wire  take_data;
+    input wire  publish;
+    output reg  no_data;
+    output reg  data_end;
+    output reg  rx_valid;
+    output reg  [28:0] rx_id;
+    output reg  rx_ide;
+    output reg  rx_rtr;
+    output reg  [3:0] rx_dlc;
+    output reg  [63:0] rx_data;
+    
+    // Constant declarations
+    localparam  zero7 = 7'b0;
+    localparam  n7_64 = 7'b1000000;
+    localparam  n6_63 = 6'b111111;
+    localparam  zero3 = 3'b0;
+    localparam  zero4 = 4'h0;
+    localparam  zero29 = 29'h0;
+    localparam  zero64 = 64'h0;
+    
+    // Stub signals
+    reg  [28:0] id__d;
+    wire  [28:0] id__q;
+    reg  id__clock;
+    reg  srr_rtr__d;
+    wire  srr_rtr__q;
+    reg  srr_rtr__clock;
+    reg  ide__d;
+    wire  ide__q;
+    reg  ide__clock;
+    reg  rtr__d;
+    wire  rtr__q;
+    reg  rtr__clock;
+    reg  [3:0] dlc__d;
+    wire  [3:0] dlc__q;
+    reg  dlc__clock;
+    reg  [63:0] data__d;
+    wire  [63:0] data__q;
+    reg  data__clock;
+    reg  [6:0] data_len__d;
+    wire  [6:0] data_len__q;
+    reg  data_len__clock;
+    reg  data_end_q__d;
+    wire  data_end_q__q;
+    reg  data_end_q__clock;
+    reg  rx_valid_q__d;
+    wire  rx_valid_q__q;
+    reg  rx_valid_q__clock;
+    reg  [28:0] rx_id_q__d;
+    wire  [28:0] rx_id_q__q;
+    reg  rx_id_q__clock;
+    reg  rx_ide_q__d;
+    wire  rx_ide_q__q;
+    reg  rx_ide_q__clock;
+    reg  rx_rtr_q__d;
+    wire  rx_rtr_q__q;
+    reg  rx_rtr_q__clock;
+    reg  [3:0] rx_dlc_q__d;
+    wire  [3:0] rx_dlc_q__q;
+    reg  rx_dlc_q__clock;
+    reg  [63:0] rx_data_q__d;
+    wire  [63:0] rx_data_q__q;
+    reg  rx_data_q__clock;
+    
+    // Local signals
+    reg  bus_bit;
+    reg  [3:0] dlc_n;
+    reg  [6:0] data_bits;
+    reg  [5:0] data_wr_idx;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rx_frame__id id(
+        .d(id__d),
+        .q(id__q),
+        .clock(id__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__srr_rtr srr_rtr(
+        .d(srr_rtr__d),
+        .q(srr_rtr__q),
+        .clock(srr_rtr__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__ide ide(
+        .d(ide__d),
+        .q(ide__q),
+        .clock(ide__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__rtr rtr(
+        .d(rtr__d),
+        .q(rtr__q),
+        .clock(rtr__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__dlc dlc(
+        .d(dlc__d),
+        .q(dlc__q),
+        .clock(dlc__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__data data(
+        .d(data__d),
+        .q(data__q),
+        .clock(data__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__data_len data_len(
+        .d(data_len__d),
+        .q(data_len__q),
+        .clock(data_len__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__data_end_q data_end_q(
+        .d(data_end_q__d),
+        .q(data_end_q__q),
+        .clock(data_end_q__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__rx_valid_q rx_valid_q(
+        .d(rx_valid_q__d),
+        .q(rx_valid_q__q),
+        .clock(rx_valid_q__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__rx_id_q rx_id_q(
+        .d(rx_id_q__d),
+        .q(rx_id_q__q),
+        .clock(rx_id_q__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__rx_ide_q rx_ide_q(
+        .d(rx_ide_q__d),
+        .q(rx_ide_q__q),
+        .clock(rx_ide_q__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__rx_rtr_q rx_rtr_q(
+        .d(rx_rtr_q__d),
+        .q(rx_rtr_q__q),
+        .clock(rx_rtr_q__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__rx_dlc_q rx_dlc_q(
+        .d(rx_dlc_q__d),
+        .q(rx_dlc_q__q),
+        .clock(rx_dlc_q__clock)
+    );
+    drcc__chan_b__bsp__rx_frame__rx_data_q rx_data_q(
+        .d(rx_data_q__d),
+        .q(rx_data_q__q),
+        .clock(rx_data_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        id__clock = clk;
+        srr_rtr__clock = clk;
+        ide__clock = clk;
+        rtr__clock = clk;
+        dlc__clock = clk;
+        data__clock = clk;
+        data_len__clock = clk;
+        data_end_q__clock = clk;
+        rx_valid_q__clock = clk;
+        rx_id_q__clock = clk;
+        rx_ide_q__clock = clk;
+        rx_rtr_q__clock = clk;
+        rx_dlc_q__clock = clk;
+        rx_data_q__clock = clk;
+        id__d = id__q;
+        srr_rtr__d = srr_rtr__q;
+        ide__d = ide__q;
+        rtr__d = rtr__q;
+        dlc__d = dlc__q;
+        data__d = data__q;
+        data_len__d = data_len__q;
+        data_end_q__d = data_end_q__q;
+        rx_valid_q__d = rx_valid_q__q;
+        rx_id_q__d = rx_id_q__q;
+        rx_ide_q__d = rx_ide_q__q;
+        rx_rtr_q__d = rx_rtr_q__q;
+        rx_dlc_q__d = rx_dlc_q__q;
+        rx_data_q__d = rx_data_q__q;
+        bus_bit = sampled;
+        dlc_n = (dlc__q << 32'h1) | ((bus_bit) & 4'hf);
+        if (rtr__q) begin
+            data_bits = zero7;
+        end
+        else if (dlc_n[32'h3]) begin
+            data_bits = n7_64;
+        end
+        else begin
+            data_bits = ((dlc_n[(32'h0)+:(3)]) & 7'h7f) << 32'h3;
+        end
+        no_data = rtr__q || ((dlc__q[(32'h0)+:(3)] == zero3) && ~sampled);
+        data_wr_idx = n6_63 - bit_cnt;
+        data_end_q__d = bit_cnt_inc == data_len__q;
+        data_end = data_end_q__q;
+        rx_valid_q__d = 1'b0;
+        if (shift_id) begin
+            id__d = (id__q << 32'h1) | ((bus_bit) & 29'h1fffffff);
+        end
+        if (take_srr_rtr) begin
+            srr_rtr__d = sampled;
+        end
+        if (take_ide) begin
+            ide__d = sampled;
+            if (~sampled) begin
+                rtr__d = srr_rtr__q;
+            end
+        end
+        if (take_rtr_ext) begin
+            rtr__d = sampled;
+        end
+        if (take_dlc) begin
+            dlc__d = dlc_n;
+        end
+        if (take_data_len) begin
+            data_len__d = data_bits;
+        end
+        if (take_data) begin
+            data__d = (data__q & ~(1 << (data_wr_idx)) | ((sampled) << (data_wr_idx)));
+        end
+        if (clear) begin
+            id__d = zero29;
+            data__d = zero64;
+            rtr__d = 1'b0;
+        end
+        if (publish) begin
+            rx_valid_q__d = 1'b1;
+            rx_id_q__d = id__q;
+            rx_ide_q__d = ide__q;
+            rx_rtr_q__d = rtr__q;
+            rx_dlc_q__d = dlc__q;
+            rx_data_q__d = data__q;
+        end
+        rx_valid = rx_valid_q__q;
+        rx_id = rx_id_q__q;
+        rx_ide = rx_ide_q__q;
+        rx_rtr = rx_rtr_q__q;
+        rx_dlc = rx_dlc_q__q;
+        rx_data = rx_data_q__q;
+        if (rst) begin
+            rx_valid_q__d = 1'b0;
+            rx_id_q__d = zero29;
+            rx_ide_q__d = 1'b0;
+            rx_rtr_q__d = 1'b0;
+            rx_dlc_q__d = zero4;
+            rx_data_q__d = zero64;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rx_frame
+
+
+module drcc__chan_b__bsp__rx_frame__data(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -10415,10 +12743,42 @@ module drcc__chan_b__bsp__rx_data_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rx_data_q
+endmodule // drcc__chan_b__bsp__rx_frame__data
 
 
-module drcc__chan_b__bsp__rx_dlc_q(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__data_end_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rx_frame__data_end_q
+
+
+module drcc__chan_b__bsp__rx_frame__data_len(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rx_frame__data_len
+
+
+module drcc__chan_b__bsp__rx_frame__dlc(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -10431,10 +12791,10 @@ module drcc__chan_b__bsp__rx_dlc_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rx_dlc_q
+endmodule // drcc__chan_b__bsp__rx_frame__dlc
 
 
-module drcc__chan_b__bsp__rx_id_q(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__id(d,q,clock);
     
     // Module arguments
     input wire  [28:0] d;
@@ -10447,10 +12807,10 @@ module drcc__chan_b__bsp__rx_id_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rx_id_q
+endmodule // drcc__chan_b__bsp__rx_frame__id
 
 
-module drcc__chan_b__bsp__rx_ide_q(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__ide(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10463,10 +12823,10 @@ module drcc__chan_b__bsp__rx_ide_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rx_ide_q
+endmodule // drcc__chan_b__bsp__rx_frame__ide
 
 
-module drcc__chan_b__bsp__rx_rtr_q(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__rtr(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10479,26 +12839,10 @@ module drcc__chan_b__bsp__rx_rtr_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rx_rtr_q
+endmodule // drcc__chan_b__bsp__rx_frame__rtr
 
 
-module drcc__chan_b__bsp__rx_valid_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__rx_valid_q
-
-
-module drcc__chan_b__bsp__rxs_data(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__rx_data_q(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -10511,10 +12855,10 @@ module drcc__chan_b__bsp__rxs_data(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rxs_data
+endmodule // drcc__chan_b__bsp__rx_frame__rx_data_q
 
 
-module drcc__chan_b__bsp__rxs_dlc(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__rx_dlc_q(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -10527,10 +12871,10 @@ module drcc__chan_b__bsp__rxs_dlc(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rxs_dlc
+endmodule // drcc__chan_b__bsp__rx_frame__rx_dlc_q
 
 
-module drcc__chan_b__bsp__rxs_id(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__rx_id_q(d,q,clock);
     
     // Module arguments
     input wire  [28:0] d;
@@ -10543,10 +12887,10 @@ module drcc__chan_b__bsp__rxs_id(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rxs_id
+endmodule // drcc__chan_b__bsp__rx_frame__rx_id_q
 
 
-module drcc__chan_b__bsp__rxs_ide(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__rx_ide_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10559,10 +12903,10 @@ module drcc__chan_b__bsp__rxs_ide(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rxs_ide
+endmodule // drcc__chan_b__bsp__rx_frame__rx_ide_q
 
 
-module drcc__chan_b__bsp__rxs_rtr(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__rx_rtr_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10575,10 +12919,10 @@ module drcc__chan_b__bsp__rxs_rtr(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rxs_rtr
+endmodule // drcc__chan_b__bsp__rx_frame__rx_rtr_q
 
 
-module drcc__chan_b__bsp__rxs_srr_rtr(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__rx_valid_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10591,10 +12935,148 @@ module drcc__chan_b__bsp__rxs_srr_rtr(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rxs_srr_rtr
+endmodule // drcc__chan_b__bsp__rx_frame__rx_valid_q
 
 
-module drcc__chan_b__bsp__stuff_cnt(d,q,clock);
+module drcc__chan_b__bsp__rx_frame__srr_rtr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rx_frame__srr_rtr
+
+
+module drcc__chan_b__bsp__stuffing(clk,rst,sample,sampled,start,stop,resync,insert,at_stuff_bit,last);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sample;
+    input wire  sampled;
+    input wire  start;
+    input wire  stop;
+    input wire  resync;
+    output reg  insert;
+    output reg  at_stuff_bit;
+    output reg  last;
+    
+    // Constant declarations
+    localparam  one = 3'b1;
+    localparam  five = 3'b101;
+    
+    // Stub signals
+    reg  [2:0] cnt__d;
+    wire  [2:0] cnt__q;
+    reg  cnt__clock;
+    reg  last_q__d;
+    wire  last_q__q;
+    reg  last_q__clock;
+    reg  en__d;
+    wire  en__q;
+    reg  en__clock;
+    reg  at_stuff_q__d;
+    wire  at_stuff_q__q;
+    reg  at_stuff_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__stuffing__cnt cnt(
+        .d(cnt__d),
+        .q(cnt__q),
+        .clock(cnt__clock)
+    );
+    drcc__chan_b__bsp__stuffing__last_q last_q(
+        .d(last_q__d),
+        .q(last_q__q),
+        .clock(last_q__clock)
+    );
+    drcc__chan_b__bsp__stuffing__en en(
+        .d(en__d),
+        .q(en__q),
+        .clock(en__clock)
+    );
+    drcc__chan_b__bsp__stuffing__at_stuff_q at_stuff_q(
+        .d(at_stuff_q__d),
+        .q(at_stuff_q__q),
+        .clock(at_stuff_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cnt__clock = clk;
+        last_q__clock = clk;
+        en__clock = clk;
+        at_stuff_q__clock = clk;
+        cnt__d = cnt__q;
+        last_q__d = last_q__q;
+        en__d = en__q;
+        at_stuff_q__d = at_stuff_q__q;
+        insert = en__q && (cnt__q == five);
+        at_stuff_q__d = insert;
+        at_stuff_bit = at_stuff_q__q;
+        last = last_q__q;
+        if (sample) begin
+            if (at_stuff_q__q) begin
+                if (sampled != last_q__q) begin
+                    cnt__d = one;
+                    last_q__d = sampled;
+                end
+            end
+            else if (en__q) begin
+                if (sampled == last_q__q) begin
+                    cnt__d = cnt__q + one;
+                end
+                else begin
+                    cnt__d = one;
+                    last_q__d = sampled;
+                end
+            end
+        end
+        if (resync) begin
+            last_q__d = sampled;
+        end
+        if (start) begin
+            en__d = 1'b1;
+            cnt__d = one;
+            last_q__d = 1'b0;
+        end
+        if (stop) begin
+            en__d = 1'b0;
+        end
+        if (rst) begin
+            cnt__d = one;
+            last_q__d = 1'b0;
+            en__d = 1'b0;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__stuffing
+
+
+module drcc__chan_b__bsp__stuffing__at_stuff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__stuffing__at_stuff_q
+
+
+module drcc__chan_b__bsp__stuffing__cnt(d,q,clock);
     
     // Module arguments
     input wire  [2:0] d;
@@ -10607,10 +13089,10 @@ module drcc__chan_b__bsp__stuff_cnt(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__stuff_cnt
+endmodule // drcc__chan_b__bsp__stuffing__cnt
 
 
-module drcc__chan_b__bsp__stuff_en(d,q,clock);
+module drcc__chan_b__bsp__stuffing__en(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10623,10 +13105,10 @@ module drcc__chan_b__bsp__stuff_en(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__stuff_en
+endmodule // drcc__chan_b__bsp__stuffing__en
 
 
-module drcc__chan_b__bsp__stuff_last(d,q,clock);
+module drcc__chan_b__bsp__stuffing__last_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10639,58 +13121,196 @@ module drcc__chan_b__bsp__stuff_last(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__stuff_last
+endmodule // drcc__chan_b__bsp__stuffing__last_q
 
 
-module drcc__chan_b__bsp__tx_done_q(d,q,clock);
+module drcc__chan_b__bsp__tx_frame(clk,load,id,ide,rtr,dlc,data,field,bit_cnt,crc,frame_bit,frame_ide);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
+    input wire  clk;
+    input wire  load;
+    input wire  [28:0] id;
+    input wire  ide;
+    input wire  rtr;
+    input wire  [3:0] dlc;
+    input wire  [63:0] data;
+    input wire  [4:0] field;
+    input wire  [5:0] bit_cnt;
+    input wire  [14:0] crc;
+    output reg  frame_bit;
+    output reg  frame_ide;
     
-    // Update code (custom)
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
     
-    always @(posedge clock) begin
-       q <= d;
+    // Stub signals
+    reg  [15:0] ida__d;
+    wire  [15:0] ida__q;
+    reg  ida__clock;
+    reg  [31:0] idb__d;
+    wire  [31:0] idb__q;
+    reg  idb__clock;
+    reg  ide_q__d;
+    wire  ide_q__q;
+    reg  ide_q__clock;
+    reg  rtr_q__d;
+    wire  rtr_q__q;
+    reg  rtr_q__clock;
+    reg  [3:0] dlc_q__d;
+    wire  [3:0] dlc_q__q;
+    reg  dlc_q__clock;
+    reg  [63:0] data_q__d;
+    wire  [63:0] data_q__q;
+    reg  data_q__clock;
+    
+    // Local signals
+    reg  [3:0] id_a_idx;
+    reg  [4:0] id_b_idx;
+    reg  [1:0] dlc_idx;
+    reg  [5:0] data_idx;
+    reg  [3:0] crc_idx;
+    reg  [15:0] crc_tx;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__tx_frame__ida ida(
+        .d(ida__d),
+        .q(ida__q),
+        .clock(ida__clock)
+    );
+    drcc__chan_b__bsp__tx_frame__idb idb(
+        .d(idb__d),
+        .q(idb__q),
+        .clock(idb__clock)
+    );
+    drcc__chan_b__bsp__tx_frame__ide_q ide_q(
+        .d(ide_q__d),
+        .q(ide_q__q),
+        .clock(ide_q__clock)
+    );
+    drcc__chan_b__bsp__tx_frame__rtr_q rtr_q(
+        .d(rtr_q__d),
+        .q(rtr_q__q),
+        .clock(rtr_q__clock)
+    );
+    drcc__chan_b__bsp__tx_frame__dlc_q dlc_q(
+        .d(dlc_q__d),
+        .q(dlc_q__q),
+        .clock(dlc_q__clock)
+    );
+    drcc__chan_b__bsp__tx_frame__data_q data_q(
+        .d(data_q__d),
+        .q(data_q__q),
+        .clock(data_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ida__clock = clk;
+        idb__clock = clk;
+        ide_q__clock = clk;
+        rtr_q__clock = clk;
+        dlc_q__clock = clk;
+        data_q__clock = clk;
+        ida__d = ida__q;
+        idb__d = idb__q;
+        ide_q__d = ide_q__q;
+        rtr_q__d = rtr_q__q;
+        dlc_q__d = dlc_q__q;
+        data_q__d = data_q__q;
+        if (load) begin
+            if (ide) begin
+                ida__d = ((id[(32'h12)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            else begin
+                ida__d = ((id[(32'h0)+:(11)]) & 16'hffff) << 32'h5;
+            end
+            idb__d = ((id[(32'h0)+:(18)]) & 32'hffffffff) << 32'he;
+            ide_q__d = ide;
+            rtr_q__d = rtr;
+            dlc_q__d = dlc;
+            data_q__d = data;
+        end
+        frame_ide = ide_q__q;
+        id_a_idx = ~bit_cnt[(32'h0)+:(4)];
+        id_b_idx = ~bit_cnt[(32'h0)+:(5)];
+        dlc_idx = ~bit_cnt[(32'h0)+:(2)];
+        data_idx = ~bit_cnt;
+        crc_idx = ~bit_cnt[(32'h0)+:(4)];
+        crc_tx = ((crc) & 16'hffff) << 32'h1;
+        frame_bit = 1'b1;
+        case (field)
+            Field__IdA:
+                begin
+                    frame_bit = ida__q[id_a_idx];
+                end
+            Field__SrrRtr:
+                begin
+                    frame_bit = ide_q__q || rtr_q__q;
+                end
+            Field__Ide:
+                begin
+                    frame_bit = ide_q__q;
+                end
+            Field__IdB:
+                begin
+                    frame_bit = idb__q[id_b_idx];
+                end
+            Field__RtrExt:
+                begin
+                    frame_bit = rtr_q__q;
+                end
+            Field__R1:
+                begin
+                    frame_bit = 1'b0;
+                end
+            Field__R0:
+                begin
+                    frame_bit = 1'b0;
+                end
+            Field__Dlc:
+                begin
+                    frame_bit = dlc_q__q[dlc_idx];
+                end
+            Field__Data:
+                begin
+                    frame_bit = data_q__q[data_idx];
+                end
+            Field__Crc:
+                begin
+                    frame_bit = crc_tx[crc_idx];
+                end
+            default:
+                begin
+                end
+        endcase
     end
-          
-endmodule // drcc__chan_b__bsp__tx_done_q
+    
+endmodule // drcc__chan_b__bsp__tx_frame
 
 
-module drcc__chan_b__bsp__tx_failed_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__tx_failed_q
-
-
-module drcc__chan_b__bsp__tx_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__tx_q
-
-
-module drcc__chan_b__bsp__txf_data(d,q,clock);
+module drcc__chan_b__bsp__tx_frame__data_q(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -10703,10 +13323,10 @@ module drcc__chan_b__bsp__txf_data(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__txf_data
+endmodule // drcc__chan_b__bsp__tx_frame__data_q
 
 
-module drcc__chan_b__bsp__txf_dlc(d,q,clock);
+module drcc__chan_b__bsp__tx_frame__dlc_q(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -10719,10 +13339,10 @@ module drcc__chan_b__bsp__txf_dlc(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__txf_dlc
+endmodule // drcc__chan_b__bsp__tx_frame__dlc_q
 
 
-module drcc__chan_b__bsp__txf_ida(d,q,clock);
+module drcc__chan_b__bsp__tx_frame__ida(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10735,10 +13355,10 @@ module drcc__chan_b__bsp__txf_ida(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__txf_ida
+endmodule // drcc__chan_b__bsp__tx_frame__ida
 
 
-module drcc__chan_b__bsp__txf_idb(d,q,clock);
+module drcc__chan_b__bsp__tx_frame__idb(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -10751,10 +13371,10 @@ module drcc__chan_b__bsp__txf_idb(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__txf_idb
+endmodule // drcc__chan_b__bsp__tx_frame__idb
 
 
-module drcc__chan_b__bsp__txf_ide(d,q,clock);
+module drcc__chan_b__bsp__tx_frame__ide_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10767,10 +13387,10 @@ module drcc__chan_b__bsp__txf_ide(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__txf_ide
+endmodule // drcc__chan_b__bsp__tx_frame__ide_q
 
 
-module drcc__chan_b__bsp__txf_rtr(d,q,clock);
+module drcc__chan_b__bsp__tx_frame__rtr_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10783,7 +13403,7 @@ module drcc__chan_b__bsp__txf_rtr(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__txf_rtr
+endmodule // drcc__chan_b__bsp__tx_frame__rtr_q
 
 
 module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);

@@ -5,3 +5,4 @@ pub mod btl;
 pub mod bus_sampling;
 pub mod can_channel;
 pub mod config;
+pub mod sized;

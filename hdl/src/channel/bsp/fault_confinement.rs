@@ -1,8 +1,8 @@
 //! Fault confinement (ISO 11898-1:2015, 12.1.4): the transmit and receive error
 //! counters and the error state derived from them.
 //!
-//! The protocol controller decides which rule applies and raises one event per
-//! SAMPLE edge; this block applies it:
+//! The rules block (`fault_confinement_rules`) decides which rule applies and
+//! raises one event per SAMPLE edge; this block applies it:
 //! - rules b, d, e, f for a receiver (+8 to REC) -> `rec_add8`;
 //! - rule a (+1 to REC) -> `rec_add1`;
 //! - rules c, d, e, f for a transmitter (+8 to TEC) -> `tec_add8`;
@@ -13,84 +13,64 @@
 //! - bus-off recovery (128 x 11 recessive bits) -> `recovered` clears both.
 //!
 //! Error passive at TEC >= 128 or REC >= 128; bus-off at TEC > 255. REC
-//! saturates at 255 instead of wrapping.
+//! saturates at 255 instead of wrapping. The error warning (contract §9) is
+//! TEC or REC at or above the configured limit.
 
+use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
 /// TEC/REC and the error state.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Default)]
 pub struct FaultConfinement {
-    // clock and reset
+    /// Clock of the channel.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset: both counters to 0.
     pub rst: Signal<In, Bit>,
-    // events from the protocol controller (one clock each)
+    // events from the fault-confinement rules (one clock each)
+    /// TEC + 8 (rules c, d, e, f for a transmitter).
     pub tec_add8: Signal<In, Bit>,
+    /// REC + 1 (rule a).
     pub rec_add1: Signal<In, Bit>,
+    /// REC + 8 (rules b, d, e, f for a receiver).
     pub rec_add8: Signal<In, Bit>,
+    /// TEC - 1 (rule g).
     pub tx_success: Signal<In, Bit>,
+    /// REC - 1, or back to 127 from above (rule h).
     pub rx_success: Signal<In, Bit>,
+    /// Bus-off recovery completed: both counters to 0.
     pub recovered: Signal<In, Bit>,
+    /// Error warning limit (contract §9).
+    pub ewl: Signal<In, Bits<8>>,
     // counters and state
+    /// Transmit error counter (256 and above: bus-off).
     pub tec: Signal<Out, Bits<9>>,
+    /// Receive error counter (saturates at 255).
     pub rec: Signal<Out, Bits<8>>,
     /// 0 error active, 1 error passive, 2 bus-off.
     pub err_state: Signal<Out, Bits<2>>,
+    /// TEC >= 128 or REC >= 128.
     pub error_passive: Signal<Out, Bit>,
+    /// TEC > 255.
     pub bus_off: Signal<Out, Bit>,
+    /// TEC or REC at or above the error warning limit.
+    pub warning: Signal<Out, Bit>,
     tec_q: DFF<Bits<9>>,
     rec_q: DFF<Bits<8>>,
-    eight9: Constant<Bits<9>>,
-    one9: Constant<Bits<9>>,
-    zero9: Constant<Bits<9>>,
-    limit9: Constant<Bits<9>>,
-    busoff9: Constant<Bits<9>>,
-    one8: Constant<Bits<8>>,
-    eight8: Constant<Bits<8>>,
-    zero8: Constant<Bits<8>>,
-    limit8: Constant<Bits<8>>,
-    max8: Constant<Bits<8>>,
-    rec_top8: Constant<Bits<8>>,
-    rec_top1: Constant<Bits<8>>,
-    state_active: Constant<Bits<2>>,
-    state_passive: Constant<Bits<2>>,
-    state_bus_off: Constant<Bits<2>>,
-}
-
-impl Default for FaultConfinement {
-    fn default() -> Self {
-        Self {
-            clk: Default::default(),
-            rst: Default::default(),
-            tec_add8: Default::default(),
-            rec_add1: Default::default(),
-            rec_add8: Default::default(),
-            tx_success: Default::default(),
-            rx_success: Default::default(),
-            recovered: Default::default(),
-            tec: Default::default(),
-            rec: Default::default(),
-            err_state: Default::default(),
-            error_passive: Default::default(),
-            bus_off: Default::default(),
-            tec_q: Default::default(),
-            rec_q: Default::default(),
-            eight9: Constant::new(8.into()),
-            one9: Constant::new(1.into()),
-            zero9: Constant::new(0.into()),
-            limit9: Constant::new(128.into()),
-            busoff9: Constant::new(255.into()),
-            one8: Constant::new(1.into()),
-            eight8: Constant::new(8.into()),
-            zero8: Constant::new(0.into()),
-            limit8: Constant::new(128.into()),
-            max8: Constant::new(255.into()),
-            rec_top8: Constant::new(247.into()),
-            rec_top1: Constant::new(127.into()),
-            state_active: Constant::new(0.into()),
-            state_passive: Constant::new(1.into()),
-            state_bus_off: Constant::new(2.into()),
-        }
-    }
+    eight9: Const<9, 8>,
+    one9: Const<9, 1>,
+    zero9: Const<9, 0>,
+    limit9: Const<9, 128>,
+    busoff9: Const<9, 255>,
+    one8: Const<8, 1>,
+    eight8: Const<8, 8>,
+    zero8: Const<8, 0>,
+    limit8: Const<8, 128>,
+    max8: Const<8, 255>,
+    rec_top8: Const<8, 247>,
+    rec_top1: Const<8, 127>,
+    state_active: Const<2, 0>,
+    state_passive: Const<2, 1>,
+    state_bus_off: Const<2, 2>,
 }
 
 impl Logic for FaultConfinement {
@@ -133,6 +113,8 @@ impl Logic for FaultConfinement {
         }
         self.tec.next = self.tec_q.q.val();
         self.rec.next = self.rec_q.q.val();
+        self.warning.next = (self.tec_q.q.val() >= bit_cast::<9, 8>(self.ewl.val()))
+            || (self.rec_q.q.val() >= self.ewl.val());
         if self.bus_off.val() {
             self.err_state.next = self.state_bus_off.val();
         } else if self.error_passive.val() {

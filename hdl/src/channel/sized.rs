@@ -1,0 +1,104 @@
+//! A sized constant that carries its value in its type, so a block built only
+//! of signals, flip-flops and these constants can `#[derive(Default)]`.
+//!
+//! rust-hdl's `Constant<T>` has no `Default` (its value is given at run time),
+//! which forces a hand-written `Default` listing every field of the block.
+//! `Const<N, V>` is the same atom (a Verilog `localparam` of N bits), with the
+//! value fixed at compile time: adding one is a one-line field declaration.
+
+use rust_hdl::prelude::*;
+
+/// An N-bit constant of value V, emitted as a sized `localparam`.
+#[derive(Copy, Clone, Debug)]
+pub struct Const<const N: usize, const V: u64>(Constant<Bits<N>>);
+
+impl<const N: usize, const V: u64> Default for Const<N, V> {
+    fn default() -> Self {
+        Self(Constant::new(Bits::<N>::from(V)))
+    }
+}
+
+impl<const N: usize, const V: u64> Const<N, V> {
+    /// The value, usable in HDL kernels (`self.k.val()`).
+    pub fn val(&self) -> Bits<N> {
+        self.0.val()
+    }
+}
+
+impl<const N: usize, const V: u64> Logic for Const<N, V> {
+    fn update(&mut self) {}
+}
+
+impl<const N: usize, const V: u64> Atom for Const<N, V> {
+    fn bits(&self) -> usize {
+        self.0.bits()
+    }
+    fn connected(&self) -> bool {
+        true
+    }
+    fn changed(&self) -> bool {
+        false
+    }
+    fn kind(&self) -> AtomKind {
+        AtomKind::Constant
+    }
+    fn descriptor(&self) -> TypeDescriptor {
+        self.0.descriptor()
+    }
+    fn vcd(&self) -> VCDValue {
+        self.0.vcd()
+    }
+    fn verilog(&self) -> VerilogLiteral {
+        self.0.verilog()
+    }
+    fn id(&self) -> usize {
+        self.0.id()
+    }
+    fn constraints(&self) -> Vec<PinConstraint> {
+        vec![]
+    }
+}
+
+impl<const N: usize, const V: u64> Block for Const<N, V> {
+    fn connect_all(&mut self) {}
+    fn update_all(&mut self) {}
+    fn has_changed(&self) -> bool {
+        false
+    }
+    fn accept(&self, name: &str, probe: &mut dyn Probe) {
+        probe.visit_atom(name, self);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A block whose only non-signal fields are `Const`s derives `Default`, and
+    /// the constant is emitted as a sized localparam.
+    #[derive(LogicBlock, Default)]
+    struct AddFive {
+        a: Signal<In, Bits<7>>,
+        y: Signal<Out, Bits<7>>,
+        five: Const<7, 5>,
+    }
+
+    impl Logic for AddFive {
+        #[hdl_gen]
+        fn update(&mut self) {
+            self.y.next = self.a.val() + self.five.val();
+        }
+    }
+
+    #[test]
+    fn const_is_a_sized_localparam() {
+        let mut uut = AddFive::default();
+        uut.connect_all();
+        let v = generate_verilog(&uut);
+        assert!(v.contains("localparam  five = 7'b101;"), "{v}");
+        uut.a.next = 3.into();
+        simulate(&mut uut, 10);
+        assert_eq!(uut.y.val(), Bits::<7>::from(8));
+        yosys_validate("sized_const", &v).unwrap();
+    }
+}

@@ -30,23 +30,7 @@ fn capture_stuff_error_in_arbitration_transmitter() {
     // 0x03F: SOF + ID bits 10..7 are five dominant bits, the stuff bit is the first
     // recessive bit the transmitter sends.
     bus.step(&[Some(frame(0x03F, &[1])), None]);
-    let mut outs = Vec::new();
-    let mut forced = false;
-    let mut prev_tx = true;
-    for _ in 0..100 * 8 {
-        let o = bus.step(&[]);
-        outs.push(o.clone());
-        let rising = !prev_tx && o[0].tx;
-        prev_tx = o[0].tx;
-        if !forced && rising && o[0].probes.field == code::ID_A {
-            forced = true;
-            bus.force_dominant = true;
-            for _ in 0..8 {
-                outs.push(bus.step(&[]));
-            }
-            bus.force_dominant = false;
-        }
-    }
+    let outs = force_first_recessive_bit(&mut bus, code::ID_A);
     let n0: Vec<ChannelOutputs> = outs.iter().map(|o| o[0]).collect();
     let n1: Vec<ChannelOutputs> = outs.iter().map(|o| o[1]).collect();
     let (d, _) = first_error(&n0);
@@ -155,24 +139,8 @@ fn capture_bit_error_transmitter() {
     bus.reset();
     bus.integrate();
     bus.step(&[Some(f), None]);
-    let mut outs = Vec::new();
-    let mut forced = false;
-    let mut prev_tx = true;
-    for _ in 0..100 * 8 {
-        let o = bus.step(&[]);
-        outs.push(o.clone());
-        // The bit_start of the first recessive data bit (after dominant ones).
-        let rising = !prev_tx && o[0].tx;
-        prev_tx = o[0].tx;
-        if !forced && rising && o[0].probes.field == code::DATA {
-            forced = true;
-            bus.force_dominant = true;
-            for _ in 0..8 {
-                outs.push(bus.step(&[]));
-            }
-            bus.force_dominant = false;
-        }
-    }
+    // The bit_start of the first recessive data bit (after dominant ones).
+    let outs = force_first_recessive_bit(&mut bus, code::DATA);
     let n0: Vec<ChannelOutputs> = outs.iter().map(|o| o[0]).collect();
     let n1: Vec<ChannelOutputs> = outs.iter().map(|o| o[1]).collect();
     let (d, before) = first_error(&n0);
@@ -217,4 +185,28 @@ fn capture_bit_error_receiver_ack() {
         (KIND_BIT, code::ACK_SLOT, false)
     );
     assert_eq!(before, code::ACK_SLOT);
+}
+
+/// Runs the bus for 100 bit times (8 clocks a bit) and, at the first rising edge
+/// of node 0's `tx` while its next bit is in `field`, forces the bus dominant for
+/// that one bit (8 clocks). Returns every clock's outputs.
+fn force_first_recessive_bit(bus: &mut Bus, field: u8) -> Vec<Vec<ChannelOutputs>> {
+    let mut outs = Vec::new();
+    let mut forced = false;
+    let mut prev_tx = true;
+    for _ in 0..100 * 8 {
+        let o = bus.step(&[]);
+        outs.push(o.clone());
+        let rising = !prev_tx && o[0].tx;
+        prev_tx = o[0].tx;
+        if !forced && rising && o[0].probes.field == field {
+            forced = true;
+            bus.force_dominant = true;
+            for _ in 0..8 {
+                outs.push(bus.step(&[]));
+            }
+            bus.force_dominant = false;
+        }
+    }
+    outs
 }

@@ -11,82 +11,11 @@
 
 use super::map::{cfg, cmd, f, CodeList, RegisterMap};
 pub use super::map::{Access, Field, Register};
-use crate::register_enum;
 
-register_enum! {
-    /// `CTRL.redundancy`: how the two channels are used (DRCC paper section III).
-    pub enum Mode {
-        /// two independent controllers
-        Normal = 0 => "NORMAL",
-        /// one redundant channel pair, the main FSM switches between them
-        Redundancy = 1 => "REDUNDANCY",
-    }
-}
-
-register_enum! {
-    /// `CTRL.policy`: when an auxiliary FSM judges its channel failed (DRCC paper
-    /// section III; code 3 is refused, contract §9).
-    pub enum SwitchPolicy {
-        /// never (the main FSM stays on its channel)
-        None = 0 => "NONE",
-        /// when the channel is error passive (the paper's policy)
-        ErrorPassive = 1 => "ERROR_PASSIVE",
-        /// after `k` failed attempts since the last success
-        KFailed = 2 => "K_FAILED",
-    }
-}
-
-/// `CTRL.policy` code that is refused (contract §9).
-pub const POLICY_ILLEGAL: u32 = 3;
-
-register_enum! {
-    /// `CTRL.mode_a`/`mode_b`: operating mode of one channel (contract §C.7).
-    pub enum ChannelMode {
-        /// ISO 11898-1 operation
-        Normal = 0 => "NORMAL",
-        /// receive only, never drives dominant (bus monitoring, ISO 11898-1 10.14)
-        ListenOnly = 1 => "LISTEN_ONLY",
-        /// a frame is successful without an acknowledgement
-        SelfTest = 2 => "SELF_TEST",
-        /// the channel hears its own transmit output only
-        Loopback = 3 => "LOOPBACK",
-    }
-}
-
-register_enum! {
-    /// `CHAN_x_ERR.err_state`: fault confinement state (ISO 11898-1 12.1.4).
-    pub enum ErrState {
-        ErrorActive = 0 => "ERROR_ACTIVE",
-        ErrorPassive = 1 => "ERROR_PASSIVE",
-        BusOff = 2 => "BUS_OFF",
-    }
-}
-
-register_enum! {
-    /// Auxiliary FSM state (`AUX_x.state`, `STATUS.aux_x_state`; contract §5).
-    pub enum AuxState {
-        Valid = 0 => "VALID",
-        Failed = 1 => "FAILED",
-        Restart = 2 => "RESTART",
-        Probation = 3 => "PROBATION",
-    }
-}
-
-register_enum! {
-    /// Main FSM state (`STATUS.state`; DRCC paper Table 1).
-    pub enum MainState {
-        Idle1 = 0 => "IDLE1",
-        Wait1 = 1 => "WAIT1",
-        Ch1 = 2 => "CH1",
-        Abort1 = 3 => "ABORT1",
-        Wait2 = 4 => "WAIT2",
-        Idle2 = 5 => "IDLE2",
-        Wait3 = 6 => "WAIT3",
-        Ch2 = 7 => "CH2",
-        Abort2 = 8 => "ABORT2",
-        Wait4 = 9 => "WAIT4",
-    }
-}
+pub use super::codes::{
+    AuxState, ChannelMode, DmrCause, DmrState, ErrState, MainState, Mode, SwitchPolicy,
+    POLICY_ILLEGAL,
+};
 
 // Word indices (the Wishbone decoder uses these).
 pub const ID: u32 = 0;
@@ -114,6 +43,17 @@ pub const RX_CMD: u32 = 21;
 pub const STATS0: u32 = 22;
 pub const STATS1: u32 = 23;
 pub const TIMES: u32 = 24;
+pub const DMR_CFG: u32 = 25;
+pub const DMR_TIME: u32 = 26;
+pub const DMR_CS: u32 = 27;
+pub const DMR_STATUS: u32 = 28;
+pub const DMR_CS_COUNT: u32 = 29;
+pub const DMR_RX_STATS: u32 = 30;
+pub const MB_SEL: u32 = 31;
+pub const MB_ID: u32 = 32;
+pub const MB_MASK: u32 = 33;
+pub const MB_CFG: u32 = 34;
+pub const MB_STATE: u32 = 35;
 
 /// The constant read from `ID`: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
@@ -162,6 +102,13 @@ const INT_FIELDS: &[Field] = &[
         1,
         0,
         "an auxiliary FSM judged a channel failed, or recovered it",
+    ),
+    f(
+        "dmr",
+        8,
+        1,
+        0,
+        "DMR mode: the DMR state or the active CAN line changed",
     ),
 ];
 
@@ -248,6 +195,7 @@ pub const REGISTERS: &[Register] = &[
             cfg("mode_a", 12, 2, 0, "channel A mode").coded(ChannelMode::ENCODING),
             cfg("mode_b", 14, 2, 0, "channel B mode").coded(ChannelMode::ENCODING),
             cfg("single_shot", 16, 1, 0, "no automatic retransmission (normal mode only)"),
+            cfg("dmr", 17, 1, 0, "CiA 701 DMR mode (DMR contract; refused with redundancy or a listen-only channel)"),
         ],
     },
     Register {
@@ -457,6 +405,17 @@ pub const REGISTERS: &[Register] = &[
             f("switch_time", 16, 16, 0, "bit times from the first request to the failover of the last switch"),
         ],
     },
+    super::dmr_registers::DMR_CFG_REG,
+    super::dmr_registers::DMR_TIME_REG,
+    super::dmr_registers::DMR_CS_REG,
+    super::dmr_registers::DMR_STATUS_REG,
+    super::dmr_registers::DMR_CS_COUNT_REG,
+    super::dmr_registers::DMR_RX_STATS_REG,
+    super::dmr_registers::MB_SEL_REG,
+    super::dmr_registers::MB_ID_REG,
+    super::dmr_registers::MB_MASK_REG,
+    super::dmr_registers::MB_CFG_REG,
+    super::dmr_registers::MB_STATE_REG,
 ];
 
 /// Main FSM state encodings (paper Table 1), for the header (`DRCC_STATE_*`).
@@ -476,7 +435,8 @@ pub static MAP: RegisterMap = RegisterMap {
         4 x index). Every access takes two clocks (request, ack). Unmapped addresses read 0; a \
         write to a read-only or unmapped address, a cfg field written outside reset mode, a \
         CTRL write with policy 3 or with redundancy and a listen-only channel (refused as a \
-        whole), a refused push or pop sets `INT_STATUS.illegal`.",
+        whole), a refused push or pop sets `INT_STATUS.illegal`. DMR mode (registers 25..35): \
+        `cosim/src/model/dmr_contract.md` §2; its illegal configurations are refused the same way.",
     registers: REGISTERS,
     lists: &[
         CodeList {
@@ -488,6 +448,11 @@ pub static MAP: RegisterMap = RegisterMap {
             name: "AUX",
             desc: "Auxiliary FSM states (`STATUS.aux_x_state`, `AUX_x.state`)",
             codes: AUX_STATES,
+        },
+        CodeList {
+            name: "DMR",
+            desc: "DMR states (`DMR_STATUS.dmr_state`, CiA 701)",
+            codes: DmrState::ENCODING,
         },
     ],
     defines: &[("ID_VALUE", ID_VALUE)],

@@ -238,6 +238,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  regs__ev_aux;
     reg  regs__ev_recover_a;
     reg  regs__ev_recover_b;
+    reg  regs__ext_hit;
+    reg  [31:0] regs__ext_word;
+    reg  regs__ext_writable;
+    reg  regs__ext_illegal;
+    reg  regs__ev_dmr;
+    wire  regs__wr_o;
     wire  regs__reset_mode;
     wire  regs__reset_mode_d;
     wire  regs__redundancy;
@@ -247,6 +253,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  [1:0] regs__mode_a;
     wire  [1:0] regs__mode_b;
     wire  regs__single_shot;
+    wire  regs__dmr;
     wire  [5:0] regs__brp;
     wire  [3:0] regs__tseg1;
     wire  [2:0] regs__tseg2;
@@ -262,6 +269,54 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  regs__pop;
     wire  [15:0] regs__switches;
     wire  [15:0] regs__recoveries;
+    reg  [5:0] dmr_check__adr;
+    reg  [31:0] dmr_check__wdat;
+    reg  dmr_check__reset_mode;
+    reg  [31:0] dmr_check__cfg_word;
+    reg  [31:0] dmr_check__time_word;
+    reg  [10:0] dmr_check__cs_id_dcl;
+    reg  [10:0] dmr_check__cs_id_rcl;
+    reg  [3:0] dmr_check__mb_sel;
+    reg  [15:0] dmr_check__mb_enable;
+    reg  [127:0] dmr_check__mb_limits;
+    reg  [30:0] dmr_check__mb_id_word;
+    reg  [28:0] dmr_check__mb_mask;
+    reg  [31:0] dmr_check__status_word;
+    reg  [31:0] dmr_check__cs_count_word;
+    reg  [31:0] dmr_check__rx_stats_word;
+    reg  [31:0] dmr_check__mb_state_word;
+    wire  dmr_check__hit;
+    wire  [31:0] dmr_check__word;
+    wire  dmr_check__writable;
+    wire  dmr_check__illegal;
+    reg  dmr_regs__clk;
+    reg  dmr_regs__rst;
+    reg  dmr_regs__wr;
+    reg  [5:0] dmr_regs__adr;
+    reg  [31:0] dmr_regs__wdat;
+    reg  dmr_regs__writable;
+    reg  dmr_regs__refused;
+    wire  [31:0] dmr_regs__cfg_word;
+    wire  [31:0] dmr_regs__time_word;
+    wire  [15:0] dmr_regs__timeout;
+    wire  [15:0] dmr_regs__cs_period;
+    wire  [15:0] dmr_regs__tick_bits;
+    wire  [15:0] dmr_regs__recovery_delay;
+    wire  [10:0] dmr_regs__cs_id_dcl;
+    wire  [10:0] dmr_regs__cs_id_rcl;
+    wire  [3:0] dmr_regs__mb_sel;
+    wire  [15:0] dmr_regs__mb_enable;
+    wire  [127:0] dmr_regs__mb_limits;
+    wire  dmr_regs__mb_we_id;
+    wire  dmr_regs__mb_we_mask;
+    reg  mailbox_cfg__clk;
+    reg  [3:0] mailbox_cfg__read_address;
+    wire  [30:0] mailbox_cfg__id_word;
+    wire  [28:0] mailbox_cfg__mask;
+    reg  [3:0] mailbox_cfg__write_address;
+    reg  mailbox_cfg__we_id;
+    reg  mailbox_cfg__we_mask;
+    reg  [30:0] mailbox_cfg__wdat;
     reg  [5:0] status__adr;
     wire  [31:0] status__word;
     reg  [3:0] status__state;
@@ -553,6 +608,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .ev_aux(regs__ev_aux),
         .ev_recover_a(regs__ev_recover_a),
         .ev_recover_b(regs__ev_recover_b),
+        .ext_hit(regs__ext_hit),
+        .ext_word(regs__ext_word),
+        .ext_writable(regs__ext_writable),
+        .ext_illegal(regs__ext_illegal),
+        .ev_dmr(regs__ev_dmr),
+        .wr_o(regs__wr_o),
         .reset_mode(regs__reset_mode),
         .reset_mode_d(regs__reset_mode_d),
         .redundancy(regs__redundancy),
@@ -562,6 +623,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .mode_a(regs__mode_a),
         .mode_b(regs__mode_b),
         .single_shot(regs__single_shot),
+        .dmr(regs__dmr),
         .brp(regs__brp),
         .tseg1(regs__tseg1),
         .tseg2(regs__tseg2),
@@ -577,6 +639,60 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .pop(regs__pop),
         .switches(regs__switches),
         .recoveries(regs__recoveries)
+    );
+    drcc__dmr_check dmr_check(
+        .adr(dmr_check__adr),
+        .wdat(dmr_check__wdat),
+        .reset_mode(dmr_check__reset_mode),
+        .cfg_word(dmr_check__cfg_word),
+        .time_word(dmr_check__time_word),
+        .cs_id_dcl(dmr_check__cs_id_dcl),
+        .cs_id_rcl(dmr_check__cs_id_rcl),
+        .mb_sel(dmr_check__mb_sel),
+        .mb_enable(dmr_check__mb_enable),
+        .mb_limits(dmr_check__mb_limits),
+        .mb_id_word(dmr_check__mb_id_word),
+        .mb_mask(dmr_check__mb_mask),
+        .status_word(dmr_check__status_word),
+        .cs_count_word(dmr_check__cs_count_word),
+        .rx_stats_word(dmr_check__rx_stats_word),
+        .mb_state_word(dmr_check__mb_state_word),
+        .hit(dmr_check__hit),
+        .word(dmr_check__word),
+        .writable(dmr_check__writable),
+        .illegal(dmr_check__illegal)
+    );
+    drcc__dmr_regs dmr_regs(
+        .clk(dmr_regs__clk),
+        .rst(dmr_regs__rst),
+        .wr(dmr_regs__wr),
+        .adr(dmr_regs__adr),
+        .wdat(dmr_regs__wdat),
+        .writable(dmr_regs__writable),
+        .refused(dmr_regs__refused),
+        .cfg_word(dmr_regs__cfg_word),
+        .time_word(dmr_regs__time_word),
+        .timeout(dmr_regs__timeout),
+        .cs_period(dmr_regs__cs_period),
+        .tick_bits(dmr_regs__tick_bits),
+        .recovery_delay(dmr_regs__recovery_delay),
+        .cs_id_dcl(dmr_regs__cs_id_dcl),
+        .cs_id_rcl(dmr_regs__cs_id_rcl),
+        .mb_sel(dmr_regs__mb_sel),
+        .mb_enable(dmr_regs__mb_enable),
+        .mb_limits(dmr_regs__mb_limits),
+        .mb_we_id(dmr_regs__mb_we_id),
+        .mb_we_mask(dmr_regs__mb_we_mask)
+    );
+    drcc__mailbox_cfg mailbox_cfg(
+        .clk(mailbox_cfg__clk),
+        .read_address(mailbox_cfg__read_address),
+        .id_word(mailbox_cfg__id_word),
+        .mask(mailbox_cfg__mask),
+        .write_address(mailbox_cfg__write_address),
+        .we_id(mailbox_cfg__we_id),
+        .we_mask(mailbox_cfg__we_mask),
+        .wdat(mailbox_cfg__wdat)
     );
     drcc__status status(
         .adr(status__adr),
@@ -887,6 +1003,40 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
         irq = regs__irq;
+        regs__ext_hit = dmr_check__hit;
+        regs__ext_word = dmr_check__word;
+        regs__ext_writable = dmr_check__writable;
+        regs__ext_illegal = dmr_check__illegal;
+        regs__ev_dmr = 1'b0;
+        dmr_check__adr = wb_adr_i;
+        dmr_check__wdat = wb_dat_i;
+        dmr_check__reset_mode = regs__reset_mode;
+        dmr_check__cfg_word = dmr_regs__cfg_word;
+        dmr_check__time_word = dmr_regs__time_word;
+        dmr_check__cs_id_dcl = dmr_regs__cs_id_dcl;
+        dmr_check__cs_id_rcl = dmr_regs__cs_id_rcl;
+        dmr_check__mb_sel = dmr_regs__mb_sel;
+        dmr_check__mb_enable = dmr_regs__mb_enable;
+        dmr_check__mb_limits = dmr_regs__mb_limits;
+        dmr_check__mb_id_word = mailbox_cfg__id_word;
+        dmr_check__mb_mask = mailbox_cfg__mask;
+        dmr_check__status_word = 32'h0;
+        dmr_check__cs_count_word = 32'h0;
+        dmr_check__rx_stats_word = 32'h0;
+        dmr_check__mb_state_word = 32'h0;
+        dmr_regs__clk = clk;
+        dmr_regs__rst = rst;
+        dmr_regs__wr = regs__wr_o;
+        dmr_regs__adr = wb_adr_i;
+        dmr_regs__wdat = wb_dat_i;
+        dmr_regs__writable = dmr_check__writable;
+        dmr_regs__refused = dmr_check__illegal;
+        mailbox_cfg__clk = clk;
+        mailbox_cfg__read_address = dmr_regs__mb_sel;
+        mailbox_cfg__write_address = dmr_regs__mb_sel;
+        mailbox_cfg__we_id = dmr_regs__mb_we_id;
+        mailbox_cfg__we_mask = dmr_regs__mb_we_mask;
+        mailbox_cfg__wdat = wb_dat_i[(32'h0)+:(31)];
         status__adr = wb_adr_i;
         status__reset_mode = regs__reset_mode;
         status__state = main__state;
@@ -14885,6 +15035,552 @@ module drcc__chan_b__rx_sync__rx_sync(d,q,clock);
 endmodule // drcc__chan_b__rx_sync__rx_sync
 
 
+module drcc__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_id_word,mb_mask,status_word,cs_count_word,rx_stats_word,mb_state_word,hit,word,writable,illegal);
+    
+    // Module arguments
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  reset_mode;
+    input wire  [31:0] cfg_word;
+    input wire  [31:0] time_word;
+    input wire  [10:0] cs_id_dcl;
+    input wire  [10:0] cs_id_rcl;
+    input wire  [3:0] mb_sel;
+    input wire  [15:0] mb_enable;
+    input wire  [127:0] mb_limits;
+    input wire  [30:0] mb_id_word;
+    input wire  [28:0] mb_mask;
+    input wire  [31:0] status_word;
+    input wire  [31:0] cs_count_word;
+    input wire  [31:0] rx_stats_word;
+    input wire  [31:0] mb_state_word;
+    output reg  hit;
+    output reg  [31:0] word;
+    output reg  writable;
+    output reg  illegal;
+    
+    // Constant declarations
+    localparam  a_cfg = 6'b11001;
+    localparam  a_time = 6'b11010;
+    localparam  a_cs = 6'b11011;
+    localparam  a_status = 6'b11100;
+    localparam  a_cs_count = 6'b11101;
+    localparam  a_rx_stats = 6'b11110;
+    localparam  a_sel = 6'b11111;
+    localparam  a_id = 6'b100000;
+    localparam  a_mask = 6'b100001;
+    localparam  a_mbcfg = 6'b100010;
+    localparam  a_state = 6'b100011;
+    localparam  mailboxes = 5'b10000;
+    localparam  enable_bit = 32'h80000000;
+    localparam  zero7 = 7'b0;
+    localparam  zero16 = 16'h0;
+    localparam  zero32 = 32'h0;
+    
+    // Local signals
+    reg  sel_enabled;
+    reg  [6:0] sel_limit;
+    reg  [31:0] sel_enable_word;
+    reg  wr_is_cs;
+    reg  stored_is_cs;
+    
+    // Update code
+    always @(*) begin
+        sel_enabled = mb_enable[mb_sel];
+        sel_limit = mb_limits[(mb_sel * 32'h8)+:(7)];
+        sel_enable_word = zero32;
+        if (sel_enabled) begin
+            sel_enable_word = enable_bit;
+        end
+        wr_is_cs = ~wdat[32'h1d] & ((wdat[(32'h0)+:(11)] == cs_id_dcl) | (wdat[(32'h0)+:(11)] == cs_id_rcl));
+        stored_is_cs = ~mb_id_word[32'h1d] & ((mb_id_word[(32'h0)+:(11)] == cs_id_dcl) | (mb_id_word[(32'h0)+:(11)] == cs_id_rcl));
+        hit = 1'b1;
+        writable = 1'b1;
+        word = zero32;
+        if (adr == a_cfg) begin
+            word = cfg_word;
+        end
+        else if (adr == a_time) begin
+            word = time_word;
+        end
+        else if (adr == a_cs) begin
+            word = ((cs_id_dcl) & 32'hffffffff) | (((cs_id_rcl) & 32'hffffffff) << 32'h10);
+        end
+        else if (adr == a_sel) begin
+            word = ((mb_sel) & 32'hffffffff);
+        end
+        else if (adr == a_id) begin
+            if (reset_mode) begin
+                word = ((mb_id_word) & 32'hffffffff);
+            end
+        end
+        else if (adr == a_mask) begin
+            if (reset_mode) begin
+                word = ((mb_mask) & 32'hffffffff);
+            end
+        end
+        else if (adr == a_mbcfg) begin
+            if (reset_mode) begin
+                word = ((sel_limit) & 32'hffffffff) | sel_enable_word;
+            end
+        end
+        else if (adr == a_status) begin
+            writable = 1'b0;
+            word = status_word;
+        end
+        else if (adr == a_cs_count) begin
+            writable = 1'b0;
+            word = cs_count_word;
+        end
+        else if (adr == a_rx_stats) begin
+            writable = 1'b0;
+            word = rx_stats_word;
+        end
+        else if (adr == a_state) begin
+            writable = 1'b0;
+            word = mb_state_word;
+        end
+        else begin
+            hit = 1'b0;
+            writable = 1'b0;
+        end
+        illegal = 1'b0;
+        if (adr == a_sel) begin
+            illegal = ((wdat[(32'h0)+:(4)]) & 5'h1f) >= mailboxes;
+        end
+        else if (writable & ~reset_mode) begin
+            illegal = 1'b1;
+        end
+        else if (adr == a_cfg) begin
+            illegal = wdat[(32'h0)+:(16)] == zero16;
+        end
+        else if (adr == a_time) begin
+            illegal = (wdat[(32'h0)+:(16)] == zero16) | (wdat[(32'h10)+:(16)] == zero16);
+        end
+        else if (adr == a_cs) begin
+            illegal = (wdat[(32'h0)+:(11)] == wdat[(32'h10)+:(11)]) | |mb_enable;
+        end
+        else if (adr == a_id) begin
+            illegal = sel_enabled & wr_is_cs;
+        end
+        else if (adr == a_mbcfg) begin
+            illegal = wdat[32'h1f] & ((wdat[(32'h0)+:(7)] == zero7) | stored_is_cs);
+        end
+    end
+    
+endmodule // drcc__dmr_check
+
+
+module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_we_id,mb_we_mask);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wr;
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  writable;
+    input wire  refused;
+    output reg  [31:0] cfg_word;
+    output reg  [31:0] time_word;
+    output reg  [15:0] timeout;
+    output reg  [15:0] cs_period;
+    output reg  [15:0] tick_bits;
+    output reg  [15:0] recovery_delay;
+    output reg  [10:0] cs_id_dcl;
+    output reg  [10:0] cs_id_rcl;
+    output reg  [3:0] mb_sel;
+    output reg  [15:0] mb_enable;
+    output reg  [127:0] mb_limits;
+    output reg  mb_we_id;
+    output reg  mb_we_mask;
+    
+    // Constant declarations
+    localparam  a_cfg = 6'b11001;
+    localparam  a_time = 6'b11010;
+    localparam  a_cs = 6'b11011;
+    localparam  a_sel = 6'b11111;
+    localparam  a_id = 6'b100000;
+    localparam  a_mask = 6'b100001;
+    localparam  a_mbcfg = 6'b100010;
+    localparam  cfg_reset = 32'h64;
+    localparam  time_reset = 32'h7d0007d;
+    localparam  cs_dcl_reset = 11'b11111101010;
+    localparam  cs_rcl_reset = 11'b11111101011;
+    localparam  limits_reset = 128'h3030303030303030303030303030303;
+    localparam  slot_mask = 128'hff;
+    localparam  zero4 = 4'h0;
+    localparam  zero16 = 16'h0;
+    
+    // Stub signals
+    reg  [31:0] cfg_q__d;
+    wire  [31:0] cfg_q__q;
+    reg  cfg_q__clock;
+    reg  [31:0] time_q__d;
+    wire  [31:0] time_q__q;
+    reg  time_q__clock;
+    reg  [10:0] cs_dcl_q__d;
+    wire  [10:0] cs_dcl_q__q;
+    reg  cs_dcl_q__clock;
+    reg  [10:0] cs_rcl_q__d;
+    wire  [10:0] cs_rcl_q__q;
+    reg  cs_rcl_q__clock;
+    reg  [3:0] sel_q__d;
+    wire  [3:0] sel_q__q;
+    reg  sel_q__clock;
+    reg  [15:0] enable_q__d;
+    wire  [15:0] enable_q__q;
+    reg  enable_q__clock;
+    reg  [127:0] limits_q__d;
+    wire  [127:0] limits_q__q;
+    reg  limits_q__clock;
+    
+    // Local signals
+    reg  take;
+    reg  [7:0] shift;
+    
+    // Sub module instances
+    drcc__dmr_regs__cfg_q cfg_q(
+        .d(cfg_q__d),
+        .q(cfg_q__q),
+        .clock(cfg_q__clock)
+    );
+    drcc__dmr_regs__time_q time_q(
+        .d(time_q__d),
+        .q(time_q__q),
+        .clock(time_q__clock)
+    );
+    drcc__dmr_regs__cs_dcl_q cs_dcl_q(
+        .d(cs_dcl_q__d),
+        .q(cs_dcl_q__q),
+        .clock(cs_dcl_q__clock)
+    );
+    drcc__dmr_regs__cs_rcl_q cs_rcl_q(
+        .d(cs_rcl_q__d),
+        .q(cs_rcl_q__q),
+        .clock(cs_rcl_q__clock)
+    );
+    drcc__dmr_regs__sel_q sel_q(
+        .d(sel_q__d),
+        .q(sel_q__q),
+        .clock(sel_q__clock)
+    );
+    drcc__dmr_regs__enable_q enable_q(
+        .d(enable_q__d),
+        .q(enable_q__q),
+        .clock(enable_q__clock)
+    );
+    drcc__dmr_regs__limits_q limits_q(
+        .d(limits_q__d),
+        .q(limits_q__q),
+        .clock(limits_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cfg_q__clock = clk;
+        time_q__clock = clk;
+        cs_dcl_q__clock = clk;
+        cs_rcl_q__clock = clk;
+        sel_q__clock = clk;
+        enable_q__clock = clk;
+        limits_q__clock = clk;
+        cfg_q__d = cfg_q__q;
+        time_q__d = time_q__q;
+        cs_dcl_q__d = cs_dcl_q__q;
+        cs_rcl_q__d = cs_rcl_q__q;
+        sel_q__d = sel_q__q;
+        enable_q__d = enable_q__q;
+        limits_q__d = limits_q__q;
+        take = wr & writable & ~refused;
+        shift = ((sel_q__q) & 8'hff) << 32'h3;
+        mb_we_id = take & (adr == a_id);
+        mb_we_mask = take & (adr == a_mask);
+        if (take) begin
+            if (adr == a_cfg) begin
+                cfg_q__d = wdat;
+            end
+            else if (adr == a_time) begin
+                time_q__d = wdat;
+            end
+            else if (adr == a_cs) begin
+                cs_dcl_q__d = wdat[(32'h0)+:(11)];
+                cs_rcl_q__d = wdat[(32'h10)+:(11)];
+            end
+            else if (adr == a_sel) begin
+                sel_q__d = wdat[(32'h0)+:(4)];
+            end
+            else if (adr == a_mbcfg) begin
+                enable_q__d = (enable_q__q & ~(1 << (sel_q__q)) | ((wdat[32'h1f]) << (sel_q__q)));
+                limits_q__d = (limits_q__q & ~(slot_mask << shift)) | (((wdat[(32'h0)+:(7)]) & 128'hffffffffffffffffffffffffffffffff) << shift);
+            end
+        end
+        if (rst) begin
+            cfg_q__d = cfg_reset;
+            time_q__d = time_reset;
+            cs_dcl_q__d = cs_dcl_reset;
+            cs_rcl_q__d = cs_rcl_reset;
+            sel_q__d = zero4;
+            enable_q__d = zero16;
+            limits_q__d = limits_reset;
+        end
+        cfg_word = cfg_q__q;
+        time_word = time_q__q;
+        timeout = cfg_q__q[(32'h0)+:(16)];
+        cs_period = cfg_q__q[(32'h10)+:(16)];
+        tick_bits = time_q__q[(32'h0)+:(16)];
+        recovery_delay = time_q__q[(32'h10)+:(16)];
+        cs_id_dcl = cs_dcl_q__q;
+        cs_id_rcl = cs_rcl_q__q;
+        mb_sel = sel_q__q;
+        mb_enable = enable_q__q;
+        mb_limits = limits_q__q;
+    end
+    
+endmodule // drcc__dmr_regs
+
+
+module drcc__dmr_regs__cfg_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__cfg_q
+
+
+module drcc__dmr_regs__cs_dcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__cs_dcl_q
+
+
+module drcc__dmr_regs__cs_rcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__cs_rcl_q
+
+
+module drcc__dmr_regs__enable_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__enable_q
+
+
+module drcc__dmr_regs__limits_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [127:0] d;
+    output reg  [127:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__limits_q
+
+
+module drcc__dmr_regs__sel_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__sel_q
+
+
+module drcc__dmr_regs__time_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__time_q
+
+
+module drcc__mailbox_cfg(clk,read_address,id_word,mask,write_address,we_id,we_mask,wdat);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [3:0] read_address;
+    output reg  [30:0] id_word;
+    output reg  [28:0] mask;
+    input wire  [3:0] write_address;
+    input wire  we_id;
+    input wire  we_mask;
+    input wire  [30:0] wdat;
+    
+    // Stub signals
+    reg  id_ram__clk;
+    reg  [3:0] id_ram__read_address;
+    reg  id_ram__read_enable;
+    wire  [30:0] id_ram__read_data;
+    reg  [3:0] id_ram__write_address;
+    reg  [30:0] id_ram__write_data;
+    reg  id_ram__write_enable;
+    reg  mask_ram__clk;
+    reg  [3:0] mask_ram__read_address;
+    reg  mask_ram__read_enable;
+    wire  [28:0] mask_ram__read_data;
+    reg  [3:0] mask_ram__write_address;
+    reg  [28:0] mask_ram__write_data;
+    reg  mask_ram__write_enable;
+    
+    // Sub module instances
+    drcc__mailbox_cfg__id_ram id_ram(
+        .clk(id_ram__clk),
+        .read_address(id_ram__read_address),
+        .read_enable(id_ram__read_enable),
+        .read_data(id_ram__read_data),
+        .write_address(id_ram__write_address),
+        .write_data(id_ram__write_data),
+        .write_enable(id_ram__write_enable)
+    );
+    drcc__mailbox_cfg__mask_ram mask_ram(
+        .clk(mask_ram__clk),
+        .read_address(mask_ram__read_address),
+        .read_enable(mask_ram__read_enable),
+        .read_data(mask_ram__read_data),
+        .write_address(mask_ram__write_address),
+        .write_data(mask_ram__write_data),
+        .write_enable(mask_ram__write_enable)
+    );
+    
+    // Update code
+    always @(*) begin
+        id_ram__clk = clk;
+        id_ram__read_address = read_address;
+        id_ram__read_enable = 1'b1;
+        id_ram__write_address = write_address;
+        id_ram__write_data = wdat;
+        id_ram__write_enable = we_id;
+        mask_ram__clk = clk;
+        mask_ram__read_address = read_address;
+        mask_ram__read_enable = 1'b1;
+        mask_ram__write_address = write_address;
+        mask_ram__write_data = wdat[(32'h0)+:(29)];
+        mask_ram__write_enable = we_mask;
+        id_word = id_ram__read_data;
+        mask = mask_ram__read_data;
+    end
+    
+endmodule // drcc__mailbox_cfg
+
+
+module drcc__mailbox_cfg__id_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [3:0] read_address;
+    input wire  read_enable;
+    output reg  [30:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [30:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[30:0] mem[15:0];
+    
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+    
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // drcc__mailbox_cfg__id_ram
+
+
+module drcc__mailbox_cfg__mask_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [3:0] read_address;
+    input wire  read_enable;
+    output reg  [28:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [28:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[28:0] mem[15:0];
+    
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+    
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // drcc__mailbox_cfg__mask_ram
+
+
 module drcc__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
     
     // Module arguments
@@ -15588,7 +16284,7 @@ module drcc__main__tx_time(d,q,clock);
 endmodule // drcc__main__tx_time
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,switches,recoveries);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,switches,recoveries);
     
     // Module arguments
     input wire  clk;
@@ -15615,6 +16311,12 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     input wire  ev_aux;
     input wire  ev_recover_a;
     input wire  ev_recover_b;
+    input wire  ext_hit;
+    input wire  [31:0] ext_word;
+    input wire  ext_writable;
+    input wire  ext_illegal;
+    input wire  ev_dmr;
+    output reg  wr_o;
     output reg  reset_mode;
     output reg  reset_mode_d;
     output reg  redundancy;
@@ -15624,6 +16326,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     output reg  [1:0] mode_a;
     output reg  [1:0] mode_b;
     output reg  single_shot;
+    output reg  dmr;
     output reg  [5:0] brp;
     output reg  [3:0] tseg1;
     output reg  [2:0] tseg2;
@@ -15674,6 +16377,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     localparam  i_tx_failure = 5'b101;
     localparam  i_illegal = 5'b110;
     localparam  i_aux = 5'b111;
+    localparam  i_dmr = 5'b1000;
     localparam  btr_reset = 24'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
@@ -15681,7 +16385,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
-    localparam  zero8 = 8'h0;
+    localparam  zero9 = 9'b0;
     localparam  zero15 = 15'b0;
     localparam  zero16 = 16'h0;
     localparam  one16 = 16'h1;
@@ -15701,13 +16405,13 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     wire  bus__wb_ack_o;
     wire  bus__irq;
     wire  bus__wr;
-    wire  [7:0] bus__int_status;
-    wire  [7:0] bus__int_enable;
+    wire  [8:0] bus__int_status;
+    wire  [8:0] bus__int_enable;
     reg  [31:0] bus__rdata;
-    reg  [7:0] bus__events;
-    reg  [7:0] bus__w1c;
+    reg  [8:0] bus__events;
+    reg  [8:0] bus__w1c;
     reg  bus__int_enable_we;
-    reg  [7:0] bus__int_enable_d;
+    reg  [8:0] bus__int_enable_d;
     reg  ctrl__clk;
     reg  ctrl__rst;
     reg  ctrl__we;
@@ -15724,6 +16428,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     wire  [1:0] ctrl__mode_a;
     wire  [1:0] ctrl__mode_b;
     wire  ctrl__single_shot;
+    wire  ctrl__dmr;
     reg  [31:0] ctrl_check__wdat;
     reg  ctrl_check__reset_mode;
     reg  ctrl_check__redundancy;
@@ -15733,6 +16438,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  [1:0] ctrl_check__mode_a;
     reg  [1:0] ctrl_check__mode_b;
     reg  ctrl_check__single_shot;
+    reg  ctrl_check__dmr;
     wire  [3:0] ctrl_check__k_in;
     wire  ctrl_check__refused;
     wire  ctrl_check__illegal;
@@ -15778,7 +16484,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
-    reg  [7:0] w1c;
+    reg  [8:0] w1c;
     reg  [3:0] target_count;
     reg  es_evt;
     reg  [63:0] tx_data64;
@@ -15818,7 +16524,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .k(ctrl__k),
         .mode_a(ctrl__mode_a),
         .mode_b(ctrl__mode_b),
-        .single_shot(ctrl__single_shot)
+        .single_shot(ctrl__single_shot),
+        .dmr(ctrl__dmr)
     );
     drcc__regs__ctrl_check ctrl_check(
         .wdat(ctrl_check__wdat),
@@ -15830,6 +16537,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .mode_a(ctrl_check__mode_a),
         .mode_b(ctrl_check__mode_b),
         .single_shot(ctrl_check__single_shot),
+        .dmr(ctrl_check__dmr),
         .k_in(ctrl_check__k_in),
         .refused(ctrl_check__refused),
         .illegal(ctrl_check__illegal)
@@ -15960,6 +16668,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         else if (wb_adr_i == a_tx_data1) begin
             rdata = tx_data1_q__q;
         end
+        else if (ext_hit) begin
+            rdata = ext_word;
+        end
         else begin
             rdata = ro_word;
         end
@@ -15979,10 +16690,11 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         ctrl_check__mode_a = ctrl__mode_a;
         ctrl_check__mode_b = ctrl__mode_b;
         ctrl_check__single_shot = ctrl__single_shot;
+        ctrl_check__dmr = ctrl__dmr;
         illegal = 1'b0;
-        w1c = zero8;
+        w1c = zero9;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wdat[(32'h0)+:(8)];
+        bus__int_enable_d = wdat[(32'h0)+:(9)];
         push = 1'b0;
         pop = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy) begin
@@ -16020,7 +16732,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wdat[(32'h0)+:(8)];
+                w1c = wdat[(32'h0)+:(9)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -16058,11 +16770,14 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                     end
                 end
             end
+            else if (ext_writable) begin
+                illegal = ext_illegal;
+            end
             else begin
                 illegal = 1'b1;
             end
         end
-        bus__events = (((ev_rx) & 8'hff) << i_rx) | (((ev_tx_done) & 8'hff) << i_tx_done) | (((ev_switch) & 8'hff) << i_switch) | (((es_evt) & 8'hff) << i_err_state) | (((ev_overrun) & 8'hff) << i_overrun) | (((ev_tx_failure) & 8'hff) << i_tx_failure) | (((illegal) & 8'hff) << i_illegal) | (((ev_aux) & 8'hff) << i_aux);
+        bus__events = (((ev_rx) & 9'h1ff) << i_rx) | (((ev_tx_done) & 9'h1ff) << i_tx_done) | (((ev_switch) & 9'h1ff) << i_switch) | (((es_evt) & 9'h1ff) << i_err_state) | (((ev_overrun) & 9'h1ff) << i_overrun) | (((ev_tx_failure) & 9'h1ff) << i_tx_failure) | (((illegal) & 9'h1ff) << i_illegal) | (((ev_aux) & 9'h1ff) << i_aux) | (((ev_dmr) & 9'h1ff) << i_dmr);
         bus__w1c = w1c;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
@@ -16108,6 +16823,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         mode_a = ctrl__mode_a;
         mode_b = ctrl__mode_b;
         single_shot = ctrl__single_shot;
+        dmr = ctrl__dmr;
+        wr_o = wr;
         brp = btr_q__q[(b_brp)+:(6)];
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
         tseg2 = btr_q__q[(b_tseg2)+:(3)];
@@ -16154,16 +16871,16 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,w
     output reg  wb_ack_o;
     output reg  irq;
     output reg  wr;
-    output reg  [7:0] int_status;
-    output reg  [7:0] int_enable;
+    output reg  [8:0] int_status;
+    output reg  [8:0] int_enable;
     input wire  [31:0] rdata;
-    input wire  [7:0] events;
-    input wire  [7:0] w1c;
+    input wire  [8:0] events;
+    input wire  [8:0] w1c;
     input wire  int_enable_we;
-    input wire  [7:0] int_enable_d;
+    input wire  [8:0] int_enable_d;
     
     // Constant declarations
-    localparam  zero_w = 8'h0;
+    localparam  zero_w = 9'b0;
     localparam  zero32 = 32'h0;
     
     // Stub signals
@@ -16176,11 +16893,11 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,w
     reg  irq_q__d;
     wire  irq_q__q;
     reg  irq_q__clock;
-    reg  [7:0] int_status_q__d;
-    wire  [7:0] int_status_q__q;
+    reg  [8:0] int_status_q__d;
+    wire  [8:0] int_status_q__q;
     reg  int_status_q__clock;
-    reg  [7:0] int_enable_q__d;
-    wire  [7:0] int_enable_q__q;
+    reg  [8:0] int_enable_q__d;
+    wire  [8:0] int_enable_q__q;
     reg  int_enable_q__clock;
     
     // Local signals
@@ -16290,8 +17007,8 @@ endmodule // drcc__regs__bus__dat_q
 module drcc__regs__bus__int_enable_q(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [8:0] d;
+    output reg  [8:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -16306,8 +17023,8 @@ endmodule // drcc__regs__bus__int_enable_q
 module drcc__regs__bus__int_status_q(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [8:0] d;
+    output reg  [8:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -16335,7 +17052,7 @@ module drcc__regs__bus__irq_q(d,q,clock);
 endmodule // drcc__regs__bus__irq_q
 
 
-module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot);
+module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr);
     
     // Module arguments
     input wire  clk;
@@ -16354,6 +17071,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
     output reg  [1:0] mode_a;
     output reg  [1:0] mode_b;
     output reg  single_shot;
+    output reg  dmr;
     
     // Constant declarations
     localparam  p_reset_mode = 5'b0;
@@ -16364,6 +17082,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
     localparam  p_mode_a = 5'b1100;
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
+    localparam  p_dmr = 5'b10001;
     localparam  redundancy_reset = 1'b0;
     localparam  policy_reset = 2'b1;
     localparam  k_reset = 4'h1;
@@ -16397,6 +17116,9 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
     reg  single_shot_q__d;
     wire  single_shot_q__q;
     reg  single_shot_q__clock;
+    reg  dmr_q__d;
+    wire  dmr_q__q;
+    reg  dmr_q__clock;
     
     // Sub module instances
     drcc__regs__ctrl__reset_mode_q reset_mode_q(
@@ -16444,6 +17166,11 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         .q(single_shot_q__q),
         .clock(single_shot_q__clock)
     );
+    drcc__regs__ctrl__dmr_q dmr_q(
+        .d(dmr_q__d),
+        .q(dmr_q__q),
+        .clock(dmr_q__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -16456,6 +17183,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         mode_a_q__clock = clk;
         mode_b_q__clock = clk;
         single_shot_q__clock = clk;
+        dmr_q__clock = clk;
         reset_mode_q__d = reset_mode_q__q;
         reset_mode_dq__d = reset_mode_dq__q;
         redundancy_q__d = redundancy_q__q;
@@ -16465,6 +17193,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         mode_a_q__d = mode_a_q__q;
         mode_b_q__d = mode_b_q__q;
         single_shot_q__d = single_shot_q__q;
+        dmr_q__d = dmr_q__q;
         reset_mode_dq__d = reset_mode_q__q;
         if (we) begin
             if (reset_mode_q__q) begin
@@ -16477,6 +17206,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
                     mode_a_q__d = wdat[(p_mode_a)+:(2)];
                     mode_b_q__d = wdat[(p_mode_b)+:(2)];
                     single_shot_q__d = wdat[p_single_shot];
+                    dmr_q__d = wdat[p_dmr];
                 end
             end
             else begin
@@ -16493,8 +17223,9 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
             mode_a_q__d = mode_reset;
             mode_b_q__d = mode_reset;
             single_shot_q__d = 1'b0;
+            dmr_q__d = 1'b0;
         end
-        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot);
+        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr);
         reset_mode = reset_mode_q__q;
         reset_mode_d = reset_mode_dq__q;
         redundancy = redundancy_q__q;
@@ -16504,9 +17235,26 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         mode_a = mode_a_q__q;
         mode_b = mode_b_q__q;
         single_shot = single_shot_q__q;
+        dmr = dmr_q__q;
     end
     
 endmodule // drcc__regs__ctrl
+
+
+module drcc__regs__ctrl__dmr_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__dmr_q
 
 
 module drcc__regs__ctrl__dual_tx_q(d,q,clock);
@@ -16653,7 +17401,7 @@ module drcc__regs__ctrl__single_shot_q(d,q,clock);
 endmodule // drcc__regs__ctrl__single_shot_q
 
 
-module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,k_in,refused,illegal);
+module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
     
     // Module arguments
     input wire  [31:0] wdat;
@@ -16665,6 +17413,7 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
     input wire  [1:0] mode_a;
     input wire  [1:0] mode_b;
     input wire  single_shot;
+    input wire  dmr;
     output reg  [3:0] k_in;
     output reg  refused;
     output reg  illegal;
@@ -16677,6 +17426,7 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
     localparam  p_mode_a = 5'b1100;
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
+    localparam  p_dmr = 5'b10001;
     localparam  policy_illegal = 2'b11;
     localparam  mode_listen = 2'b1;
     localparam  zero4 = 4'h0;
@@ -16684,6 +17434,7 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
     
     // Local signals
     reg  cfg_differs;
+    reg  listen;
     
     // Update code
     always @(*) begin
@@ -16693,8 +17444,9 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
         else begin
             k_in = wdat[(p_k)+:(4)];
         end
-        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | (wdat[p_redundancy] & ((wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen)));
-        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot);
+        listen = (wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen);
+        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]);
+        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr);
         if (reset_mode) begin
             illegal = refused;
         end

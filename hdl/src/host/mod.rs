@@ -5,6 +5,7 @@
 pub mod codes;
 pub mod ctrl_check;
 pub mod ctrl_reg;
+pub mod dmr_check;
 pub mod dmr_registers;
 pub mod dmr_regs;
 pub mod generate;

@@ -104,9 +104,17 @@ fn deviation_verdict_against_the_rcl_on_a_positive_counter() {
         (st.cause(), st.cause_line(), st.cause_mb()),
         (DEVIATION, RCL, 2)
     );
-    assert_eq!(st.state(), PASSIVE, "§6: an rx fault only -> redundancy passive");
+    assert_eq!(
+        st.state(),
+        PASSIVE,
+        "§6: an rx fault only -> redundancy passive"
+    );
     assert_eq!(st.acl(), DCL, "a fault against the PCL does not switch");
-    assert_eq!(mb_state(&mut sys, 0, 2), (0, 0), "counter and timer cleared");
+    assert_eq!(
+        mb_state(&mut sys, 0, 2),
+        (0, 0),
+        "counter and timer cleared"
+    );
     let p = sys.probes(0);
     assert!(p.rcl_rx_fault && !p.dcl_rx_fault && p.dmr_state == PASSIVE && !p.acl);
 }
@@ -137,7 +145,10 @@ fn timeout_verdict_against_the_dcl_on_a_negative_counter_switches_the_acl() {
     // the ACL and the RCL has no flag -> the ACL switches to the RCL (§6).
     let st = status(&mut sys, 0);
     assert_eq!(st.flags(), [false, true, false, false]);
-    assert_eq!((st.cause(), st.cause_line(), st.cause_mb()), (TIMEOUT, DCL, 7));
+    assert_eq!(
+        (st.cause(), st.cause_line(), st.cause_mb()),
+        (TIMEOUT, DCL, 7)
+    );
     assert_eq!((st.state(), st.acl()), (PASSIVE, RCL));
     assert_eq!((st.state_changes(), st.acl_switches()), (1, 1));
     assert_ne!(sys.read(0, INT_STATUS) & I_DMR, 0, "INT_STATUS.dmr");
@@ -178,8 +189,14 @@ fn an_event_is_served_in_m_plus_2_clocks() {
         let mut all = counter_seen(m, 0);
         all.extend(counter_seen(m, 1));
         let n = m as u64;
-        assert!(all.iter().any(|&(d, _)| d == n + 3), "M = {m}: read at R+M+3");
-        assert!(all.iter().any(|&(d, _)| d == n + 4), "M = {m}: read at R+M+4");
+        assert!(
+            all.iter().any(|&(d, _)| d == n + 3),
+            "M = {m}: read at R+M+3"
+        );
+        assert!(
+            all.iter().any(|&(d, _)| d == n + 4),
+            "M = {m}: read at R+M+4"
+        );
         for (d, v) in all {
             assert_eq!(v, (d >= n + 4) as i8, "M = {m}: read at R+{d}");
         }

@@ -308,7 +308,11 @@ impl Sys {
         self.write(n, MB_ID, id);
         self.write(n, MB_MASK, mask);
         self.write(n, MB_CFG, limit | MB_ENABLE);
-        assert_eq!(self.read(n, INT_STATUS) & I_ILLEGAL, 0, "mailbox {i} set up");
+        assert_eq!(
+            self.read(n, INT_STATUS) & I_ILLEGAL,
+            0,
+            "mailbox {i} set up"
+        );
     }
 
     /// DMR timing of node `n` (reset mode): `tick_bits`, `timeout`, `recovery_delay`.

@@ -23,7 +23,7 @@ fn network(
     for d in 0..n {
         // 100 bits per tick, timeouts of 10 ticks, no recovery within the test.
         sys.dmr_times(d, 100, 10, 5000);
-        sys.mailbox(d, 0, 0x100 + d as u32 | MB_TX, 0x7FF, 3);
+        sys.mailbox(d, 0, (0x100 + d as u32) | MB_TX, 0x7FF, 3);
         // One receive mailbox per other device's message (seed: a counter per
         // mailbox; one mailbox for all would let one sender balance another).
         for k in (0..n).filter(|&k| k != d) {
@@ -57,10 +57,10 @@ fn seed_table_1_dev3_cut_from_the_dcl() {
     assert_eq!((st[2].cause_line(), st[2].acl()), (DCL, RCL));
     // DEV1, DEV2: "detect an error condition by detecting a receive counter
     // difference": D3 frames on the RCL only -> negative -> the DCL, rx.
-    for d in 0..2 {
-        assert_eq!(st[d].state(), PASSIVE, "DEV{}", d + 1);
-        assert_eq!(st[d].flags(), [false, true, false, false], "DEV{}", d + 1);
-        assert_eq!(st[d].acl(), RCL, "DEV{}: the fault was against the ACL", d + 1);
+    for (d, s) in st.iter().enumerate().take(2) {
+        assert_eq!(s.state(), PASSIVE, "DEV{}", d + 1);
+        assert_eq!(s.flags(), [false, true, false, false], "DEV{}", d + 1);
+        assert_eq!(s.acl(), RCL, "DEV{}: the fault was against the ACL", d + 1);
         let p = sys.probes(d);
         assert!(p.dcl_rx_fault && p.dmr_state == PASSIVE && p.acl);
     }
@@ -95,7 +95,10 @@ fn seed_table_3_rcl_startup_failure() {
             // miss the cut device's RCL copies.
             let rcl_tx = want == DISABLED;
             assert_eq!(s.flags()[2], rcl_tx, "F{fault}, device {d}: rcl_tx_fault");
-            assert!(!s.flags()[0] && !s.flags()[1], "F{fault}, device {d}: DCL sound");
+            assert!(
+                !s.flags()[0] && !s.flags()[1],
+                "F{fault}, device {d}: DCL sound"
+            );
         }
     }
 }

@@ -49,7 +49,11 @@ fn pcl_frames_held_and_released_at_the_acl_switch() {
     sys.send(pb, f[4]);
     sys.run(100);
     assert_eq!(sys.drain(0), vec![(f[3], 1), (f[4], 1)]);
-    assert_eq!(sys.read(0, STATS0) & 0xFFFF, 2, "duplicates: F1, F4 on the DCL");
+    assert_eq!(
+        sys.read(0, STATS0) & 0xFFFF,
+        2,
+        "duplicates: F1, F4 on the DCL"
+    );
     // pcl_frames: 3 + F1, F4, F5 on the DCL = 6; released 3; expired 0.
     assert_eq!(sys.read(0, DMR_RX_STATS), 6 | 3 << 16);
 }

@@ -20,7 +20,11 @@ fn cs_frames_at_start_and_good_counts() {
     sys.run(300 * CPB);
     // Node 0 heard node 1's CS frames: DCL good 1, RCL good 1.
     assert_eq!(sys.read(0, DMR_CS_COUNT), 1 | 1 << 16);
-    assert_eq!(sys.read(1, DMR_CS_COUNT), 0, "node 0's came before node 1 ran");
+    assert_eq!(
+        sys.read(1, DMR_CS_COUNT),
+        0,
+        "node 0's came before node 1 ran"
+    );
     // CS frames never reach the host nor a mailbox.
     assert_eq!(rx_count(&mut sys, 0), 0);
     assert_eq!(mb_state(&mut sys, 0, 0), (0, 0));
@@ -81,7 +85,11 @@ fn bus_off_sets_tx_fault_switches_the_acl_and_recovers() {
     sys.run_until(2000 * CPB, "bus-off", |s| s.probes(0).dcl_tx_fault);
     let t0 = sys.nodes[0].ticks;
     sys.short[DCL] = false;
-    assert_eq!(sys.probes(0).chan_a_err_state, 2, "the DCL channel is bus-off");
+    assert_eq!(
+        sys.probes(0).chan_a_err_state,
+        2,
+        "the DCL channel is bus-off"
+    );
     let p = sys.probes(0);
     // §6: bus-off -> tx_fault; the DCL was the ACL and the RCL is sound -> switch.
     // (`dmr_state` is loaded from the flags one edge later.)
@@ -101,19 +109,25 @@ fn bus_off_sets_tx_fault_switches_the_acl_and_recovers() {
     // §7 recovery: `rec_timer` = recovery_delay counts DMR ticks; at 0 the line
     // restarts and sends its CS frame (the bus-off recovery, 128 x 11 bits, is
     // over long before: 30 ticks are 3000 bits).
-    sys.run_until(
-        (RECOVERY + 3) * 100 * CPB,
-        "the recovery CS frame",
-        |s| s.got(pa, &cs(0x7EA)) == 2,
+    sys.run_until((RECOVERY + 3) * 100 * CPB, "the recovery CS frame", |s| {
+        s.got(pa, &cs(0x7EA)) == 2
+    });
+    assert_eq!(
+        sys.nodes[0].ticks - t0,
+        RECOVERY,
+        "CS in the tick after the delay"
     );
-    assert_eq!(sys.nodes[0].ticks - t0, RECOVERY, "CS in the tick after the delay");
     sys.run(10);
     let st = status(&mut sys, 0);
     assert_eq!(st.flags(), [false; 4], "CS success clears the flags");
     // Non-revertive: the RCL stays the ACL.
     assert_eq!((st.state(), st.acl()), (ACTIVE, RCL));
     assert_eq!((st.state_changes(), st.acl_switches()), (2, 1));
-    assert_eq!(sys.read(0, 8) >> 24 & 3, 0, "the DCL channel is error active");
+    assert_eq!(
+        sys.read(0, 8) >> 24 & 3,
+        0,
+        "the DCL channel is error active"
+    );
 }
 
 #[test]

@@ -26,7 +26,13 @@ fn dmr_registers_reset_values() {
     // Probes: all 0 outside DMR mode (§9).
     let p = sys.probes(0);
     assert_eq!(
-        (p.dmr_state, p.acl, p.dcl_tx_fault, p.rcl_rx_fault, p.dmr_tick),
+        (
+            p.dmr_state,
+            p.acl,
+            p.dcl_tx_fault,
+            p.rcl_rx_fault,
+            p.dmr_tick
+        ),
         (0, false, false, false, false)
     );
 }
@@ -70,7 +76,7 @@ fn mailbox_window_and_memory() {
 fn illegal_configurations_are_refused() {
     let mut sys = Sys::with_mailboxes(1, 4);
     // §2.2: zero times.
-    assert!(sys.refused(0, DMR_CFG, 0 | 7 << 16), "timeout 0");
+    assert!(sys.refused(0, DMR_CFG, 7 << 16), "timeout 0");
     assert_eq!(sys.read(0, DMR_CFG), 100, "nothing stored");
     assert!(sys.refused(0, DMR_TIME, 2000 << 16), "tick_bits 0");
     assert!(sys.refused(0, DMR_TIME, 125), "recovery_delay 0");
@@ -84,17 +90,26 @@ fn illegal_configurations_are_refused() {
     sys.write(0, MB_SEL, 1);
     assert!(sys.refused(0, MB_CFG, MB_ENABLE));
     assert_eq!(sys.read(0, MB_CFG), 3);
-    assert!(!sys.refused(0, MB_CFG, 0), "limit 0 while disabled is legal");
+    assert!(
+        !sys.refused(0, MB_CFG, 0),
+        "limit 0 while disabled is legal"
+    );
     // §2.2: a mailbox identifier equal to a CS identifier.
     sys.write(0, MB_ID, 0x7EB);
-    assert!(sys.refused(0, MB_CFG, 2 | MB_ENABLE), "stored id is cs_id_rcl");
+    assert!(
+        sys.refused(0, MB_CFG, 2 | MB_ENABLE),
+        "stored id is cs_id_rcl"
+    );
     assert_eq!(sys.read(0, MB_CFG), 0);
     sys.write(0, MB_ID, 0x7EB | MB_IDE);
     assert!(
         !sys.refused(0, MB_CFG, 2 | MB_ENABLE),
         "an extended identifier is not a CS identifier"
     );
-    assert!(sys.refused(0, MB_ID, 0x7EA), "enabled mailbox takes cs_id_dcl");
+    assert!(
+        sys.refused(0, MB_ID, 0x7EA),
+        "enabled mailbox takes cs_id_dcl"
+    );
     assert_eq!(sys.read(0, MB_ID), 0x7EB | MB_IDE);
     assert!(!sys.refused(0, MB_ID, 0x7EC), "another base id is fine");
     // §2.2: DMR_CS while a mailbox is enabled.
@@ -122,7 +137,10 @@ fn illegal_configurations_are_refused() {
         (MB_MASK, 0x55),
         (MB_CFG, 1),
     ] {
-        assert!(sys.refused(0, adr, v), "cfg register {adr} outside reset mode");
+        assert!(
+            sys.refused(0, adr, v),
+            "cfg register {adr} outside reset mode"
+        );
     }
     assert!(sys.refused(0, CTRL, REDUNDANCY), "the mode never changes");
     assert_eq!(sys.read(0, CTRL) & (DMR | REDUNDANCY), DMR);

@@ -30,11 +30,18 @@ fn both_lines_send_at_once_and_the_host_gets_one_tx_done() {
     });
     sys.run(20 * CPB);
     // One tx_done (a bit set once), never tx_failure in DMR mode (§2.1).
-    assert_eq!(sys.read(0, INT_STATUS) & (I_TX_DONE | I_TX_FAILURE), I_TX_DONE);
+    assert_eq!(
+        sys.read(0, INT_STATUS) & (I_TX_DONE | I_TX_FAILURE),
+        I_TX_DONE
+    );
     sys.write(0, INT_STATUS, I_TX_DONE);
     sys.run(200 * CPB);
     assert_eq!(sys.read(0, INT_STATUS) & I_TX_DONE, 0, "no second tx_done");
-    assert_eq!((sys.got(pa, &f), sys.got(pb, &f)), (1, 1), "one copy per line");
+    assert_eq!(
+        (sys.got(pa, &f), sys.got(pb, &f)),
+        (1, 1),
+        "one copy per line"
+    );
     assert_eq!(txq_count(&mut sys, 0), 0, "both lines sent it: freed");
     // §4.1: one TX per line -> +1 -1 = balanced, timer stopped.
     assert_eq!(mb_state(&mut sys, 0, 0), (0, 0));
@@ -61,7 +68,11 @@ fn first_copy_completes_the_message_second_copy_only_counts() {
     assert_eq!(mb_state(&mut sys, 0, 0).0, 1, "TX(DCL) counted");
     sys.run_until(300 * CPB, "the RCL copy", |s| s.got(pb, &f) == 1);
     sys.run(20 * CPB);
-    assert_eq!(sys.read(0, INT_STATUS) & I_TX_DONE, 0, "the second copy is silent");
+    assert_eq!(
+        sys.read(0, INT_STATUS) & I_TX_DONE,
+        0,
+        "the second copy is silent"
+    );
     assert_eq!(txq_count(&mut sys, 0), 0);
     assert_eq!(mb_state(&mut sys, 0, 0), (0, 0), "TX(RCL) balanced it");
 }
@@ -72,7 +83,9 @@ fn faulty_line_copies_are_deleted_and_it_returns_after_recovery() {
     let (mut sys, pa, pb) = sender(200, 8, RECOVERY as u32);
     // Cut the RCL at the device: its transceiver hears only itself, no ACK.
     sys.nodes[0].wire[RCL] = None;
-    let m: Vec<Frame> = (1..=3).map(|i| frame(0x300 + i, false, 1, &[i as u8])).collect();
+    let m: Vec<Frame> = (1..=3)
+        .map(|i| frame(0x300 + i, false, 1, &[i as u8]))
+        .collect();
     for f in &m {
         sys.push(0, f);
     }
@@ -89,8 +102,15 @@ fn faulty_line_copies_are_deleted_and_it_returns_after_recovery() {
     sys.run(10);
     let st = status(&mut sys, 0);
     assert_eq!(st.flags(), [false, false, true, false]);
-    assert_eq!((st.cause(), st.cause_line(), st.cause_mb()), (TIMEOUT, RCL, 0));
-    assert_eq!((st.state(), st.acl()), (DISABLED, DCL), "the PCL failed: no switch");
+    assert_eq!(
+        (st.cause(), st.cause_line(), st.cause_mb()),
+        (TIMEOUT, RCL, 0)
+    );
+    assert_eq!(
+        (st.state(), st.acl()),
+        (DISABLED, DCL),
+        "the PCL failed: no switch"
+    );
     // Deletion: the RCL's pending copies are gone, the queue is free.
     assert_eq!(txq_count(&mut sys, 0), 0);
     // Its attempt was aborted: the RCL pin goes quiet (after the running attempt).
@@ -111,11 +131,9 @@ fn faulty_line_copies_are_deleted_and_it_returns_after_recovery() {
     // Repair the RCL; after `recovery_delay` ticks the line restarts and sends its
     // CS frame; success clears the flag (§7).
     sys.nodes[0].wire[RCL] = Some(RCL);
-    sys.run_until(
-        (RECOVERY + 5) * 200 * CPB,
-        "the recovery CS frame",
-        |s| s.got(pb, &cs(0x7EB)) == 2,
-    );
+    sys.run_until((RECOVERY + 5) * 200 * CPB, "the recovery CS frame", |s| {
+        s.got(pb, &cs(0x7EB)) == 2
+    });
     sys.run(20 * CPB);
     let st = status(&mut sys, 0);
     assert_eq!(st.flags(), [false; 4]);
@@ -130,5 +148,9 @@ fn faulty_line_copies_are_deleted_and_it_returns_after_recovery() {
         assert_eq!(sys.got(pb, f), 0, "{f:?} was deleted from the RCL");
     }
     sys.run(20 * CPB);
-    assert_eq!(mb_state(&mut sys, 0, 0), (0, 0), "both copies counted again");
+    assert_eq!(
+        mb_state(&mut sys, 0, 0),
+        (0, 0),
+        "both copies counted again"
+    );
 }

@@ -156,10 +156,7 @@ impl Engine {
                 let b = &mut mbx.mb[c.e_i as usize];
                 if b.enable {
                     if let Some(verdict) = b.evaluate() {
-                        fault = Some(EvalFault {
-                            verdict,
-                            mb: c.e_i,
-                        });
+                        fault = Some(EvalFault { verdict, mb: c.e_i });
                     }
                 }
                 if c.e_i >= last {

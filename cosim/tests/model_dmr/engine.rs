@@ -213,3 +213,47 @@ fn no_mailboxes_no_counting() {
     assert!(sys.refused(0, MB_SEL, 0));
     assert_eq!(sys.read(0, MB_STATE), 0);
 }
+
+/// Every MB_STATE timer read of the last mailbox after a DMR tick, as (request
+/// clock - tick clock, timer), reading from `phase` clocks after the tick.
+fn timer_seen(m: usize, phase: u64) -> Vec<(u64, u16)> {
+    let (mut sys, pa, _) = device(m, |s| {
+        s.dmr_times(0, 500, 40, 1000);
+        s.mailbox(0, m as u32 - 1, 0x0, 0x0, 3);
+    });
+    sys.write(0, MB_SEL, m as u32 - 1);
+    sys.send(pa, frame(0x12, false, 0, &[]));
+    sys.run(40);
+    let t = sys.nodes[0].ticks;
+    sys.run_until(600 * CPB, "a tick", |s| s.nodes[0].ticks > t);
+    let tick = sys.nodes[0].last_tick;
+    let before = sys.read(0, MB_STATE) >> 16;
+    sys.run(phase);
+    let mut seen = vec![(1, before as u16)];
+    while sys.clock < tick + m as u64 + 10 {
+        let at = sys.clock + 1;
+        seen.push((at - tick, (sys.read(0, MB_STATE) >> 16) as u16));
+    }
+    seen
+}
+
+#[test]
+fn an_evaluation_visits_mailbox_i_at_m_plus_1_clocks() {
+    for m in [16usize, 5] {
+        // `dmr_tick` after edge T; pend_eval set at T+1 (§4.3), taken at T+2 (the
+        // engine is idle), EVAL of mailbox i at edge T+3+i: the last mailbox
+        // (i = M-1) at T+M+2, the evaluation's (M+1)-th edge. A read taken at
+        // T+M+2 sees the old timer, one at T+M+3 the decremented one.
+        let mut all = timer_seen(m, 0);
+        all.extend(timer_seen(m, 1));
+        let n = m as u64;
+        let old = all[0].1;
+        assert!(old > 1, "the timer runs");
+        assert!(all.iter().any(|&(d, _)| d == n + 2));
+        assert!(all.iter().any(|&(d, _)| d == n + 3));
+        for (d, v) in all {
+            let want = if d >= n + 3 { old - 1 } else { old };
+            assert_eq!(v, want, "M = {m}: read at T+{d}");
+        }
+    }
+}

@@ -124,8 +124,9 @@ struct Node {
     /// The line each channel is wired to; `None`: the stub is cut and the
     /// transceiver hears only itself (§10).
     wire: [Option<usize>; 2],
-    /// Every clock's probes (for timing checks).
+    /// DMR tick pulses seen (probe `dmr_tick`) and the clock of the last one.
     ticks: u64,
+    last_tick: u64,
 }
 
 /// A plain channel on one line: acknowledges, receives, transmits on request.
@@ -165,6 +166,7 @@ impl Sys {
                 wb: DrccInputs::default(),
                 wire: [Some(DCL), Some(RCL)],
                 ticks: 0,
+                last_tick: 0,
             })
             .collect();
         Sys {
@@ -214,6 +216,7 @@ impl Sys {
     /// One clock of everything.
     fn step(&mut self) {
         let l = self.levels();
+        let clock = self.clock + 1;
         for n in &mut self.nodes {
             let mut i = n.wb;
             let own = [n.out.chan_a_tx, n.out.chan_b_tx];
@@ -221,7 +224,10 @@ impl Sys {
             i.chan_a_rx = rx(0);
             i.chan_b_rx = rx(1);
             n.out = n.engine.step(&i);
-            n.ticks += n.out.probes.dmr_tick as u64;
+            if n.out.probes.dmr_tick {
+                n.ticks += 1;
+                n.last_tick = clock;
+            }
         }
         for p in &mut self.plain {
             let r = p.req.take();

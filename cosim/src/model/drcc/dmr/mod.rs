@@ -21,6 +21,13 @@
 //! 4. `MB_SEL`, `MB_ID`, `MB_MASK`, `MB_CFG` with `M = 0`: every write is refused
 //!    (`illegal`), the window reads 0. `MB_SEL` takes `[3:0]`.
 //! 5. A CS fault and a CS success of the same line at one edge: the fault wins.
+//! 6. Literal §5: a host request issued at the edge where a tx fault is set
+//!    against the same line still leaves (its `abort` is computed from the
+//!    pre-edge `busy`), and a restart pulse due at the edge of a fault still fires.
+//! 7. §8 (in `super::rx_path`): a PCL copy that hits an entry of the ACL still
+//!    waiting for its release does not mark it used (else that frame is never
+//!    released); the `RSCAN` decision at `scan_i = 32` includes entry 31 judged
+//!    at that edge.
 #![doc = include_str!("../../dmr_contract.md")]
 
 pub mod engine;
@@ -194,17 +201,6 @@ impl DmrBlock {
     /// The channel `tx_req` of line `l` (§5).
     pub fn tx_req(&self, l: usize) -> bool {
         self.req[l] || self.cs_req[l]
-    }
-
-    /// Probe `dcl_tx_fault`, etc. (§9).
-    pub fn probes(&self) -> (u8, bool, [bool; 2], [bool; 2], bool) {
-        (
-            self.dmr_state,
-            self.acl != 0,
-            self.tx_fault,
-            self.rx_fault,
-            self.dmr_tick,
-        )
     }
 
     /// Hold the reset-mode state (reset mode, or a mode other than DMR).

@@ -257,3 +257,27 @@ fn an_evaluation_visits_mailbox_i_at_m_plus_1_clocks() {
         }
     }
 }
+
+#[test]
+fn dmr_tick_every_tick_bits_nominal_bits() {
+    // §3: `tb_cnt` counts nominal bit ticks and wraps at tick_bits - 1; the
+    // `dmr_tick` register pulses at the wrap: one pulse per tick_bits x 8 clocks.
+    let (mut sys, _, _) = device(16, |s| s.dmr_times(0, 37, 20, 1000));
+    let mut at = Vec::new();
+    while at.len() < 4 {
+        sys.step();
+        if sys.probes(0).dmr_tick {
+            at.push(sys.clock);
+        }
+    }
+    // (A pulse longer than one clock would show as two entries one clock apart.)
+    for w in at.windows(2) {
+        assert_eq!(w[1] - w[0], 37 * CPB);
+    }
+    // Outside DMR mode the probe stays 0 (§9).
+    sys.write(0, CTRL, RESET_MODE);
+    for _ in 0..100 * CPB {
+        sys.step();
+        assert!(!sys.probes(0).dmr_tick);
+    }
+}

@@ -15211,6 +15211,7 @@ module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,ti
     localparam  slot_mask = 128'hff;
     localparam  zero4 = 4'h0;
     localparam  zero16 = 16'h0;
+    localparam  one16 = 16'h1;
     
     // Stub signals
     reg  [31:0] cfg_q__d;
@@ -15311,7 +15312,12 @@ module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,ti
                 sel_q__d = wdat[(32'h0)+:(4)];
             end
             else if (adr == a_mbcfg) begin
-                enable_q__d = (enable_q__q & ~(1 << (sel_q__q)) | ((wdat[32'h1f]) << (sel_q__q)));
+                if (wdat[32'h1f]) begin
+                    enable_q__d = enable_q__q | (one16 << sel_q__q);
+                end
+                else begin
+                    enable_q__d = enable_q__q & ~(one16 << sel_q__q);
+                end
                 limits_q__d = (limits_q__q & ~(slot_mask << shift)) | (((wdat[(32'h0)+:(7)]) & 128'hffffffffffffffffffffffffffffffff) << shift);
             end
         end

@@ -9,6 +9,7 @@
 
 pub mod drcc;
 pub mod drcc_model;
+pub mod drcc_rusthdl;
 pub mod drcc_verilator;
 pub mod hub;
 pub mod hub_model;

@@ -117,7 +117,7 @@ impl ChannelEngine for RustHdlEngine {
 
 /// The probe encoding of a field (`field`, `err_field`): its declaration index
 /// (timing contract §4.1), as in the emitted Verilog.
-fn field_code(f: &drcc_hdl::channel::bsp::field::Field) -> u8 {
+pub(crate) fn field_code(f: &drcc_hdl::channel::bsp::field::Field) -> u8 {
     use drcc_hdl::channel::bsp::field::Field::*;
     match f {
         Integrating => 0,

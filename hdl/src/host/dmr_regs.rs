@@ -83,12 +83,14 @@ pub struct DmrRegs {
     slot_mask: Constant<Bits<128>>,
     zero4: Constant<Bits<4>>,
     zero16: Constant<Bits<16>>,
+    one16: Constant<Bits<16>>,
 }
 
 impl Default for DmrRegs {
     fn default() -> Self {
         let adr = |i: u32| Constant::new((i as u64).into());
-        let reset = |r: &str| Constant::new((map::register(r).unwrap().reset_value() as u64).into());
+        let reset =
+            |r: &str| Constant::new((map::register(r).unwrap().reset_value() as u64).into());
         let field = |r: &str, f: &str| MAP.field(r, f).reset as u64;
         let limit = field("MB_CFG", "limit");
         let mut limits = Bits::<128>::default();
@@ -146,6 +148,7 @@ impl Default for DmrRegs {
             slot_mask: Constant::new(slot),
             zero4: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
+            one16: Constant::new(1.into()),
         }
     }
 }
@@ -169,11 +172,13 @@ impl Logic for DmrRegs {
             } else if self.adr.val() == self.a_sel.val() {
                 self.sel_q.d.next = self.wdat.val().get_bits::<4>(0);
             } else if self.adr.val() == self.a_mbcfg.val() {
-                self.enable_q.d.next = self
-                    .enable_q
-                    .q
-                    .val()
-                    .replace_bit(self.sel_q.q.val().index(), self.wdat.val().get_bit(31));
+                if self.wdat.val().get_bit(31) {
+                    self.enable_q.d.next =
+                        self.enable_q.q.val() | (self.one16.val() << self.sel_q.q.val());
+                } else {
+                    self.enable_q.d.next =
+                        self.enable_q.q.val() & !(self.one16.val() << self.sel_q.q.val());
+                }
                 self.limits_q.d.next = (self.limits_q.q.val()
                     & !(self.slot_mask.val() << self.shift.val()))
                     | (bit_cast::<128, 7>(self.wdat.val().get_bits::<7>(0)) << self.shift.val());

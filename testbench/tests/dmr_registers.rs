@@ -1,0 +1,221 @@
+//! DMR register interface on all three engines (DMR contract §2; issue 12 "bad
+//! input"): every illegal DMR configuration of §2.2 is refused (nothing stored,
+//! `INT_STATUS.illegal` set), legal ones are stored and read back, and a mode
+//! change outside reset mode is refused. One Wishbone script drives the model,
+//! rust-hdl's simulator and the Verilated RTL in lock step (every output compared
+//! at every clock); the expected read values come from the contract and the
+//! register table, checked on the model's reads.
+//!
+//! The DRCC never leaves reset mode in DMR mode here: the DMR function itself
+//! (§3-§8) is compared by the DMR network tests.
+
+use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
+use drcc_cosim::engine::drcc_model::DrccModelEngine;
+use drcc_cosim::engine::drcc_rusthdl::DrccRustHdlEngine;
+use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_hdl::host::registers::{self as map, ChannelMode, Mode, SwitchPolicy, MAP};
+use drcc_testbench::engines::verilator_required;
+
+/// The engines in lock step; reads return the model's data.
+struct Bench {
+    engines: Vec<Box<dyn DrccEngine>>,
+    cycle: u64,
+}
+
+impl Bench {
+    fn new() -> Self {
+        let mut engines: Vec<Box<dyn DrccEngine>> = vec![
+            Box::new(DrccModelEngine::new()),
+            Box::new(DrccRustHdlEngine::new()),
+        ];
+        match DrccVerilatorEngine::new() {
+            Ok(v) => engines.push(Box::new(v)),
+            Err(e) => assert!(!verilator_required(), "Verilator is required here: {e}"),
+        }
+        let mut b = Bench { engines, cycle: 0 };
+        for _ in 0..3 {
+            b.step(DrccInputs {
+                rst: true,
+                chan_a_rx: true,
+                chan_b_rx: true,
+                ..Default::default()
+            });
+        }
+        b
+    }
+
+    /// One clock on every engine; the CAN pins read recessive (no bus).
+    fn step(&mut self, i: DrccInputs) -> DrccOutputs {
+        let outs: Vec<DrccOutputs> = self.engines.iter_mut().map(|e| e.step(&i)).collect();
+        for (e, o) in self.engines.iter().zip(&outs).skip(1) {
+            assert_eq!(
+                o,
+                &outs[0],
+                "cycle {}: {} differs from the model",
+                self.cycle,
+                e.name()
+            );
+        }
+        self.cycle += 1;
+        outs[0]
+    }
+
+    fn access(&mut self, we: bool, adr: u32, dat: u32) -> u32 {
+        let idle = DrccInputs {
+            chan_a_rx: true,
+            chan_b_rx: true,
+            ..Default::default()
+        };
+        let o = self.step(DrccInputs {
+            wb_cyc: true,
+            wb_stb: true,
+            wb_we: we,
+            wb_adr: adr as u8,
+            wb_dat_w: dat,
+            ..idle
+        });
+        assert!(o.wb_ack, "no ack");
+        self.step(idle);
+        o.wb_dat_r
+    }
+
+    fn write(&mut self, adr: u32, dat: u32) {
+        self.access(true, adr, dat);
+    }
+
+    fn read(&mut self, adr: u32) -> u32 {
+        self.access(false, adr, 0)
+    }
+
+    /// Writes `dat` to `adr` and tells whether it was refused (INT_STATUS.illegal,
+    /// which is cleared again).
+    fn refused(&mut self, adr: u32, dat: u32) -> bool {
+        let illegal = MAP.field("INT_STATUS", "illegal").put(1);
+        assert_eq!(self.read(map::INT_STATUS) & illegal, 0, "illegal was clear");
+        self.write(adr, dat);
+        let r = self.read(map::INT_STATUS) & illegal != 0;
+        self.write(map::INT_STATUS, illegal);
+        r
+    }
+}
+
+fn put(reg: &str, field: &str, v: u32) -> u32 {
+    MAP.field(reg, field).put(v)
+}
+
+/// A CTRL word in reset mode with the given extra fields (policy error-passive, k 1).
+fn ctrl(reset_mode: bool, fields: &[(&str, u32)]) -> u32 {
+    fields.iter().fold(
+        put("CTRL", "reset_mode", reset_mode as u32)
+            | put("CTRL", "policy", SwitchPolicy::ErrorPassive.code())
+            | put("CTRL", "k", 1),
+        |w, (f, v)| w | put("CTRL", f, *v),
+    )
+}
+
+#[test]
+fn dmr_configuration_is_refused_or_stored_as_the_contract_says() {
+    let mut b = Bench::new();
+    // reset values (§2.1, the table)
+    assert_eq!(
+        b.read(map::DMR_CFG),
+        100,
+        "timeout 100 ticks, no periodic CS"
+    );
+    assert_eq!(
+        b.read(map::DMR_TIME),
+        125 | (2000 << 16),
+        "1 ms ticks, 2 s delay"
+    );
+    assert_eq!(b.read(map::DMR_CS), 0x7EA | (0x7EB << 16));
+    assert_eq!(b.read(map::MB_SEL), 0);
+    assert_eq!(b.read(map::MB_CFG), 3, "limit 3, disabled");
+    assert_eq!(b.read(map::DMR_STATUS), 0, "redundancy active, ACL = DCL");
+
+    // §2.2: zero durations are refused and nothing is stored
+    assert!(b.refused(map::DMR_CFG, 7 << 16), "timeout 0");
+    assert!(b.refused(map::DMR_TIME, 2000 << 16), "tick_bits 0");
+    assert!(b.refused(map::DMR_TIME, 125), "recovery_delay 0");
+    assert_eq!(b.read(map::DMR_CFG), 100);
+    assert_eq!(b.read(map::DMR_TIME), 125 | (2000 << 16));
+    assert!(!b.refused(map::DMR_CFG, 50 | (7 << 16)));
+    assert!(!b.refused(map::DMR_TIME, 16 | (300 << 16)));
+    assert_eq!(b.read(map::DMR_CFG), 50 | (7 << 16));
+    assert_eq!(b.read(map::DMR_TIME), 16 | (300 << 16));
+
+    // §2.2: equal CS identifiers are refused
+    assert!(b.refused(map::DMR_CS, 0x100 | (0x100 << 16)));
+    assert!(!b.refused(map::DMR_CS, 0x120 | (0x121 << 16)));
+    assert_eq!(b.read(map::DMR_CS), 0x120 | (0x121 << 16));
+
+    // mailbox 2: an identifier equal to a CS identifier cannot be enabled
+    let enable = put("MB_CFG", "enable", 1);
+    assert!(!b.refused(map::MB_SEL, 2));
+    assert!(
+        !b.refused(map::MB_ID, 0x120),
+        "stored while the mailbox is disabled"
+    );
+    assert_eq!(b.read(map::MB_ID), 0x120);
+    assert!(
+        b.refused(map::MB_CFG, enable | 5),
+        "enabling a CS identifier"
+    );
+    assert_eq!(b.read(map::MB_CFG), 3, "nothing stored");
+    // an extended identifier with the same low bits is not a CS identifier
+    let ext = put("MB_ID", "ide", 1);
+    assert!(!b.refused(map::MB_ID, ext | 0x120));
+    assert!(!b.refused(map::MB_CFG, enable | 5));
+    assert!(!b.refused(map::MB_ID, 0x300 | put("MB_ID", "dir", 1)));
+    assert_eq!(b.read(map::MB_CFG), enable | 5);
+    assert!(
+        b.refused(map::MB_ID, 0x121),
+        "a CS identifier into an enabled mailbox"
+    );
+    assert_eq!(b.read(map::MB_ID), 0x300 | put("MB_ID", "dir", 1));
+    assert!(b.refused(map::MB_CFG, enable), "limit 0");
+    assert!(!b.refused(map::MB_CFG, 9), "limit 9, disabled");
+    assert!(!b.refused(map::MB_CFG, enable | 9));
+    // §2.2: the CS identifiers cannot change while a mailbox is enabled
+    assert!(b.refused(map::DMR_CS, 0x130 | (0x131 << 16)));
+    assert!(!b.refused(map::MB_MASK, 0x1FFF_FFFF));
+    assert_eq!(b.read(map::MB_MASK), 0x1FFF_FFFF);
+    // mailbox 0 kept its reset values
+    assert!(!b.refused(map::MB_SEL, 0));
+    assert_eq!(b.read(map::MB_CFG), 3);
+    assert_eq!(b.read(map::MB_ID), 0);
+
+    // §2: DMR with redundancy, or with a listen-only channel, is refused as a whole
+    let listen = ChannelMode::ListenOnly.code();
+    let red = Mode::Redundancy.code();
+    assert!(b.refused(map::CTRL, ctrl(true, &[("dmr", 1), ("redundancy", red)])));
+    assert!(b.refused(map::CTRL, ctrl(true, &[("dmr", 1), ("mode_b", listen)])));
+    assert_eq!(b.read(map::CTRL) & put("CTRL", "dmr", 1), 0);
+    assert!(!b.refused(map::CTRL, ctrl(true, &[("dmr", 1)])));
+    assert_eq!(b.read(map::CTRL), ctrl(true, &[("dmr", 1)]));
+    assert!(!b.refused(map::CTRL, ctrl(true, &[])));
+
+    // outside reset mode (normal mode): no mode change, no DMR configuration;
+    // the mailbox configuration reads 0, MB_SEL stays writable
+    assert!(!b.refused(map::CTRL, ctrl(false, &[])));
+    assert!(
+        b.refused(map::CTRL, ctrl(false, &[("dmr", 1)])),
+        "mode change"
+    );
+    assert_eq!(b.read(map::CTRL), ctrl(false, &[]));
+    assert!(b.refused(map::DMR_CFG, 60));
+    assert!(b.refused(map::DMR_TIME, 125 | (2000 << 16)));
+    assert!(b.refused(map::MB_CFG, 4));
+    assert!(b.refused(map::MB_ID, 0x200));
+    assert!(!b.refused(map::MB_SEL, 2));
+    assert_eq!(b.read(map::MB_SEL), 2);
+    assert_eq!(b.read(map::MB_ID), 0);
+    assert_eq!(b.read(map::MB_CFG), 0);
+    assert_eq!(b.read(map::DMR_CFG), 50 | (7 << 16), "unchanged");
+    // read-only DMR registers refuse writes
+    assert!(b.refused(map::DMR_STATUS, 1));
+    assert!(b.refused(map::MB_STATE, 1));
+    // back in reset mode the stored mailbox 2 reads back again
+    assert!(!b.refused(map::CTRL, ctrl(true, &[])));
+    assert_eq!(b.read(map::MB_CFG), enable | 9);
+    assert_eq!(b.read(map::MB_MASK), 0x1FFF_FFFF);
+}

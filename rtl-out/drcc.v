@@ -236,8 +236,6 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  regs__ev_overrun;
     reg  regs__ev_tx_failure;
     reg  regs__ev_aux;
-    reg  regs__ev_recover_a;
-    reg  regs__ev_recover_b;
     reg  regs__ext_hit;
     reg  [31:0] regs__ext_word;
     reg  regs__ext_writable;
@@ -267,8 +265,6 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  regs__push_q;
     wire  [98:0] regs__tx_frame;
     wire  regs__pop;
-    wire  [15:0] regs__switches;
-    wire  [15:0] regs__recoveries;
     reg  [5:0] dmr_check__adr;
     reg  [31:0] dmr_check__wdat;
     reg  dmr_check__reset_mode;
@@ -359,6 +355,13 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  [2:0] ticker__tseg2;
     wire  ticker__tick;
     wire  [15:0] ticker__now;
+    reg  stats__clk;
+    reg  stats__rst;
+    reg  stats__switch_evt;
+    reg  stats__recover_a;
+    reg  stats__recover_b;
+    wire  [15:0] stats__switches;
+    wire  [15:0] stats__recoveries;
     reg  main__clk;
     reg  main__rst;
     reg  main__hold;
@@ -606,8 +609,6 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .ev_overrun(regs__ev_overrun),
         .ev_tx_failure(regs__ev_tx_failure),
         .ev_aux(regs__ev_aux),
-        .ev_recover_a(regs__ev_recover_a),
-        .ev_recover_b(regs__ev_recover_b),
         .ext_hit(regs__ext_hit),
         .ext_word(regs__ext_word),
         .ext_writable(regs__ext_writable),
@@ -636,9 +637,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .push(regs__push),
         .push_q(regs__push_q),
         .tx_frame(regs__tx_frame),
-        .pop(regs__pop),
-        .switches(regs__switches),
-        .recoveries(regs__recoveries)
+        .pop(regs__pop)
     );
     drcc__dmr_check dmr_check(
         .adr(dmr_check__adr),
@@ -739,6 +738,15 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .tseg2(ticker__tseg2),
         .tick(ticker__tick),
         .now(ticker__now)
+    );
+    drcc__stats stats(
+        .clk(stats__clk),
+        .rst(stats__rst),
+        .switch_evt(stats__switch_evt),
+        .recover_a(stats__recover_a),
+        .recover_b(stats__recover_b),
+        .switches(stats__switches),
+        .recoveries(stats__recoveries)
     );
     drcc__main main(
         .clk(main__clk),
@@ -998,8 +1006,6 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         regs__ev_overrun = rxw__overrun_evt;
         regs__ev_tx_failure = txbuf__failed_evt | main__fail_evt;
         regs__ev_aux = aux_a__fail_evt | aux_a__recover_evt | aux_b__fail_evt | aux_b__recover_evt;
-        regs__ev_recover_a = aux_a__recover_evt;
-        regs__ev_recover_b = aux_b__recover_evt;
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
         irq = regs__irq;
@@ -1069,8 +1075,13 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         status__rx_ready = rxfifo__rx_ready;
         status__duplicates = rxw__duplicates;
         status__overruns = rxw__overruns;
-        status__switches = regs__switches;
-        status__recoveries = regs__recoveries;
+        status__switches = stats__switches;
+        status__recoveries = stats__recoveries;
+        stats__clk = clk;
+        stats__rst = rst;
+        stats__switch_evt = main__switch_evt;
+        stats__recover_a = aux_a__recover_evt;
+        stats__recover_b = aux_b__recover_evt;
         ticker__clk = clk;
         ticker__hold = clear;
         ticker__brp = regs__brp;
@@ -16290,7 +16301,7 @@ module drcc__main__tx_time(d,q,clock);
 endmodule // drcc__main__tx_time
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,switches,recoveries);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
     
     // Module arguments
     input wire  clk;
@@ -16315,8 +16326,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     input wire  ev_overrun;
     input wire  ev_tx_failure;
     input wire  ev_aux;
-    input wire  ev_recover_a;
-    input wire  ev_recover_b;
     input wire  ext_hit;
     input wire  [31:0] ext_word;
     input wire  ext_writable;
@@ -16346,8 +16355,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     output reg  push_q;
     output reg  [98:0] tx_frame;
     output reg  pop;
-    output reg  [15:0] switches;
-    output reg  [15:0] recoveries;
     
     // Constant declarations
     localparam  a_ctrl = 6'b1;
@@ -16394,10 +16401,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     localparam  zero9 = 9'b0;
     localparam  zero15 = 15'b0;
     localparam  zero16 = 16'h0;
-    localparam  one16 = 16'h1;
-    localparam  two16 = 16'h2;
-    localparam  max16 = 16'hffff;
-    localparam  max16m1 = 16'hfffe;
     localparam  zero31 = 31'h0;
     localparam  zero32 = 32'h0;
     
@@ -16472,12 +16475,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  [31:0] tx_data1_q__d;
     wire  [31:0] tx_data1_q__q;
     reg  tx_data1_q__clock;
-    reg  [15:0] switches_q__d;
-    wire  [15:0] switches_q__q;
-    reg  switches_q__clock;
-    reg  [15:0] recov_q__d;
-    wire  [15:0] recov_q__q;
-    reg  recov_q__clock;
     reg  [1:0] es_a_prev__d;
     wire  [1:0] es_a_prev__q;
     reg  es_a_prev__clock;
@@ -16588,16 +16585,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .q(tx_data1_q__q),
         .clock(tx_data1_q__clock)
     );
-    drcc__regs__switches_q switches_q(
-        .d(switches_q__d),
-        .q(switches_q__q),
-        .clock(switches_q__clock)
-    );
-    drcc__regs__recov_q recov_q(
-        .d(recov_q__d),
-        .q(recov_q__q),
-        .clock(recov_q__clock)
-    );
     drcc__regs__es_a_prev es_a_prev(
         .d(es_a_prev__d),
         .q(es_a_prev__q),
@@ -16619,8 +16606,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         tx_queue_q__clock = clk;
         tx_data0_q__clock = clk;
         tx_data1_q__clock = clk;
-        switches_q__clock = clk;
-        recov_q__clock = clk;
         es_a_prev__clock = clk;
         es_b_prev__clock = clk;
         btr_q__d = btr_q__q;
@@ -16631,8 +16616,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         tx_queue_q__d = tx_queue_q__q;
         tx_data0_q__d = tx_data0_q__q;
         tx_data1_q__d = tx_data1_q__q;
-        switches_q__d = switches_q__q;
-        recov_q__d = recov_q__q;
         es_a_prev__d = es_a_prev__q;
         es_b_prev__d = es_b_prev__q;
         bus__clk = clk;
@@ -16787,20 +16770,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         bus__w1c = w1c;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
-        if (ev_switch & (switches_q__q != max16)) begin
-            switches_q__d = switches_q__q + one16;
-        end
-        if (ev_recover_a & ev_recover_b) begin
-            if (recov_q__q >= max16m1) begin
-                recov_q__d = max16;
-            end
-            else begin
-                recov_q__d = recov_q__q + two16;
-            end
-        end
-        else if ((ev_recover_a | ev_recover_b) & (recov_q__q != max16)) begin
-            recov_q__d = recov_q__q + one16;
-        end
         if (rst) begin
             btr_q__d = btr_reset;
             rmb_cfg_q__d = rmb_cfg_reset;
@@ -16810,8 +16779,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
             tx_queue_q__d = 1'b0;
             tx_data0_q__d = zero32;
             tx_data1_q__d = zero32;
-            switches_q__d = zero16;
-            recov_q__d = zero16;
             es_a_prev__d = zero2;
             es_b_prev__d = zero2;
             push = 1'b0;
@@ -16840,8 +16807,6 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         recovery_bits = rmb_cfg_q__q[(r_recovery)+:(16)];
         stall_limit = rmb_cfg_q__q[(r_stall)+:(16)];
         window = window_q__q;
-        switches = switches_q__q;
-        recoveries = recov_q__q;
         push_q = tx_queue_q__q & ~ctrl__redundancy;
         tx_frame = (((tx_id_q__q) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((tx_dlc_q__q) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((tx_data64) & 99'h7ffffffffffffffffffffffff);
     end
@@ -17496,22 +17461,6 @@ module drcc__regs__es_b_prev(d,q,clock);
 endmodule // drcc__regs__es_b_prev
 
 
-module drcc__regs__recov_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__recov_q
-
-
 module drcc__regs__rmb_cfg_q(d,q,clock);
     
     // Module arguments
@@ -17526,22 +17475,6 @@ module drcc__regs__rmb_cfg_q(d,q,clock);
     end
           
 endmodule // drcc__regs__rmb_cfg_q
-
-
-module drcc__regs__switches_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__regs__switches_q
 
 
 module drcc__regs__tx_data0_q(d,q,clock);
@@ -18591,6 +18524,107 @@ module drcc__rxw__w_state(d,q,clock);
     end
           
 endmodule // drcc__rxw__w_state
+
+
+module drcc__stats(clk,rst,switch_evt,recover_a,recover_b,switches,recoveries);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  switch_evt;
+    input wire  recover_a;
+    input wire  recover_b;
+    output reg  [15:0] switches;
+    output reg  [15:0] recoveries;
+    
+    // Constant declarations
+    localparam  zero16 = 16'h0;
+    localparam  one16 = 16'h1;
+    localparam  two16 = 16'h2;
+    localparam  max16 = 16'hffff;
+    localparam  max16m1 = 16'hfffe;
+    
+    // Stub signals
+    reg  [15:0] switches_q__d;
+    wire  [15:0] switches_q__q;
+    reg  switches_q__clock;
+    reg  [15:0] recov_q__d;
+    wire  [15:0] recov_q__q;
+    reg  recov_q__clock;
+    
+    // Sub module instances
+    drcc__stats__switches_q switches_q(
+        .d(switches_q__d),
+        .q(switches_q__q),
+        .clock(switches_q__clock)
+    );
+    drcc__stats__recov_q recov_q(
+        .d(recov_q__d),
+        .q(recov_q__q),
+        .clock(recov_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        switches_q__clock = clk;
+        recov_q__clock = clk;
+        switches_q__d = switches_q__q;
+        recov_q__d = recov_q__q;
+        if (switch_evt & (switches_q__q != max16)) begin
+            switches_q__d = switches_q__q + one16;
+        end
+        if (recover_a & recover_b) begin
+            if (recov_q__q >= max16m1) begin
+                recov_q__d = max16;
+            end
+            else begin
+                recov_q__d = recov_q__q + two16;
+            end
+        end
+        else if ((recover_a | recover_b) & (recov_q__q != max16)) begin
+            recov_q__d = recov_q__q + one16;
+        end
+        if (rst) begin
+            switches_q__d = zero16;
+            recov_q__d = zero16;
+        end
+        switches = switches_q__q;
+        recoveries = recov_q__q;
+    end
+    
+endmodule // drcc__stats
+
+
+module drcc__stats__recov_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__stats__recov_q
+
+
+module drcc__stats__switches_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__stats__switches_q
 
 
 module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,switches,recoveries);

@@ -1,6 +1,6 @@
 //! The DRCC's register block (DRCC contract §2, §3, §8, §9): the Wishbone slave
 //! front end (`super::wb_slave`), the write side of the map (configuration,
-//! the staged TX frame, commands), the interrupt events and `STATS1`. Word
+//! the staged TX frame, commands), and the interrupt events (`STATS1` is counted by `crate::rmb::stats`). Word
 //! indices and field positions come from the table (`super::registers`); the
 //! read-only words are assembled beside it by `super::status_words` and come in
 //! as `ro_word`.
@@ -71,10 +71,6 @@ pub struct WbRegs {
     pub ev_tx_failure: Signal<In, Bit>,
     /// An aux FSM judged a channel failed or recovered it.
     pub ev_aux: Signal<In, Bit>,
-    /// Channel A recovered.
-    pub ev_recover_a: Signal<In, Bit>,
-    /// Channel B recovered.
-    pub ev_recover_b: Signal<In, Bit>,
     // ---- the DMR registers (super::dmr_regs) ----
     /// `wb_adr_i` is a DMR register: `ext_word` is its value.
     pub ext_hit: Signal<In, Bit>,
@@ -137,11 +133,6 @@ pub struct WbRegs {
     pub tx_frame: Signal<Out, Bits<99>>,
     /// `RX_CMD.pop` accepted.
     pub pop: Signal<Out, Bit>,
-    // ---- statistics out (STATS1) ----
-    /// Channel switches (saturating).
-    pub switches: Signal<Out, Bits<16>>,
-    /// Channel recoveries, both channels (saturating).
-    pub recoveries: Signal<Out, Bits<16>>,
     // ---- blocks ----
     bus: WbSlave<9>,
     ctrl: CtrlReg,
@@ -155,8 +146,6 @@ pub struct WbRegs {
     tx_queue_q: DFF<Bit>,
     tx_data0_q: DFF<Bits<32>>,
     tx_data1_q: DFF<Bits<32>>,
-    switches_q: DFF<Bits<16>>,
-    recov_q: DFF<Bits<16>>,
     es_a_prev: DFF<Bits<2>>,
     es_b_prev: DFF<Bits<2>>,
     // ---- decode ----
@@ -215,10 +204,6 @@ pub struct WbRegs {
     zero9: Constant<Bits<9>>,
     zero15: Constant<Bits<15>>,
     zero16: Constant<Bits<16>>,
-    one16: Constant<Bits<16>>,
-    two16: Constant<Bits<16>>,
-    max16: Constant<Bits<16>>,
-    max16m1: Constant<Bits<16>>,
     zero31: Constant<Bits<31>>,
     zero32: Constant<Bits<32>>,
 }
@@ -270,8 +255,6 @@ impl Default for WbRegs {
             ev_overrun: Default::default(),
             ev_tx_failure: Default::default(),
             ev_aux: Default::default(),
-            ev_recover_a: Default::default(),
-            ev_recover_b: Default::default(),
             reset_mode: Default::default(),
             reset_mode_d: Default::default(),
             redundancy: Default::default(),
@@ -301,8 +284,6 @@ impl Default for WbRegs {
             push_q: Default::default(),
             tx_frame: Default::default(),
             pop: Default::default(),
-            switches: Default::default(),
-            recoveries: Default::default(),
             bus: Default::default(),
             ctrl: Default::default(),
             ctrl_check: Default::default(),
@@ -314,8 +295,6 @@ impl Default for WbRegs {
             tx_queue_q: Default::default(),
             tx_data0_q: Default::default(),
             tx_data1_q: Default::default(),
-            switches_q: Default::default(),
-            recov_q: Default::default(),
             es_a_prev: Default::default(),
             es_b_prev: Default::default(),
             wr: Default::default(),
@@ -370,10 +349,6 @@ impl Default for WbRegs {
             zero9: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
-            one16: Constant::new(1.into()),
-            two16: Constant::new(2.into()),
-            max16: Constant::new(0xFFFF.into()),
-            max16m1: Constant::new(0xFFFE.into()),
             zero31: Constant::new(0.into()),
             zero32: Constant::new(0.into()),
         }
@@ -385,7 +360,7 @@ impl Logic for WbRegs {
     fn update(&mut self) {
         dff_setup!(
             self, clk, btr_q, rmb_cfg_q, window_q, tx_id_q, tx_dlc_q, tx_queue_q, tx_data0_q,
-            tx_data1_q, switches_q, recov_q, es_a_prev, es_b_prev
+            tx_data1_q, es_a_prev, es_b_prev
         );
         // ---- Wishbone slave (§2) ----
         self.bus.clk.next = self.clk.val();
@@ -543,20 +518,6 @@ impl Logic for WbRegs {
         self.bus.w1c.next = self.w1c.val();
         self.es_a_prev.d.next = self.es_a.val();
         self.es_b_prev.d.next = self.es_b.val();
-        if self.ev_switch.val() & (self.switches_q.q.val() != self.max16.val()) {
-            self.switches_q.d.next = self.switches_q.q.val() + self.one16.val();
-        }
-        if self.ev_recover_a.val() & self.ev_recover_b.val() {
-            if self.recov_q.q.val() >= self.max16m1.val() {
-                self.recov_q.d.next = self.max16.val();
-            } else {
-                self.recov_q.d.next = self.recov_q.q.val() + self.two16.val();
-            }
-        } else if (self.ev_recover_a.val() | self.ev_recover_b.val())
-            & (self.recov_q.q.val() != self.max16.val())
-        {
-            self.recov_q.d.next = self.recov_q.q.val() + self.one16.val();
-        }
 
         if self.rst.val() {
             self.btr_q.d.next = self.btr_reset.val();
@@ -567,8 +528,6 @@ impl Logic for WbRegs {
             self.tx_queue_q.d.next = false;
             self.tx_data0_q.d.next = self.zero32.val();
             self.tx_data1_q.d.next = self.zero32.val();
-            self.switches_q.d.next = self.zero16.val();
-            self.recov_q.d.next = self.zero16.val();
             self.es_a_prev.d.next = self.zero2.val();
             self.es_b_prev.d.next = self.zero2.val();
             self.push.next = false;
@@ -607,8 +566,6 @@ impl Logic for WbRegs {
             .val()
             .get_bits::<16>(self.r_stall.val().index());
         self.window.next = self.window_q.q.val();
-        self.switches.next = self.switches_q.q.val();
-        self.recoveries.next = self.recov_q.q.val();
         self.push_q.next = self.tx_queue_q.q.val() & !self.ctrl.redundancy.val();
         self.tx_frame.next = (bit_cast::<99, 31>(self.tx_id_q.q.val()) << 68)
             | (bit_cast::<99, 4>(self.tx_dlc_q.q.val()) << 64)

@@ -4,4 +4,5 @@
 pub mod aux_fsm;
 pub mod bit_tick;
 pub mod main_fsm;
+pub mod stats;
 pub mod switch_policy;

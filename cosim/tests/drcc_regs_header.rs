@@ -54,6 +54,17 @@ fn model_host_and_generated_header_agree_on_every_register() {
         ("STATS0", idx::STATS0, reg::STATS0),
         ("STATS1", idx::STATS1, reg::STATS1),
         ("TIMES", idx::TIMES, reg::TIMES),
+        ("DMR_CFG", idx::DMR_CFG, reg::DMR_CFG),
+        ("DMR_TIME", idx::DMR_TIME, reg::DMR_TIME),
+        ("DMR_CS", idx::DMR_CS, reg::DMR_CS),
+        ("DMR_STATUS", idx::DMR_STATUS, reg::DMR_STATUS),
+        ("DMR_CS_COUNT", idx::DMR_CS_COUNT, reg::DMR_CS_COUNT),
+        ("DMR_RX_STATS", idx::DMR_RX_STATS, reg::DMR_RX_STATS),
+        ("MB_SEL", idx::MB_SEL, reg::MB_SEL),
+        ("MB_ID", idx::MB_ID, reg::MB_ID),
+        ("MB_MASK", idx::MB_MASK, reg::MB_MASK),
+        ("MB_CFG", idx::MB_CFG, reg::MB_CFG),
+        ("MB_STATE", idx::MB_STATE, reg::MB_STATE),
     ];
     let header = header_offsets();
     assert_eq!(

@@ -49,6 +49,17 @@ pub mod reg {
     pub const STATS0: u8 = map::STATS0 as u8;
     pub const STATS1: u8 = map::STATS1 as u8;
     pub const TIMES: u8 = map::TIMES as u8;
+    pub const DMR_CFG: u8 = map::DMR_CFG as u8;
+    pub const DMR_TIME: u8 = map::DMR_TIME as u8;
+    pub const DMR_CS: u8 = map::DMR_CS as u8;
+    pub const DMR_STATUS: u8 = map::DMR_STATUS as u8;
+    pub const DMR_CS_COUNT: u8 = map::DMR_CS_COUNT as u8;
+    pub const DMR_RX_STATS: u8 = map::DMR_RX_STATS as u8;
+    pub const MB_SEL: u8 = map::MB_SEL as u8;
+    pub const MB_ID: u8 = map::MB_ID as u8;
+    pub const MB_MASK: u8 = map::MB_MASK as u8;
+    pub const MB_CFG: u8 = map::MB_CFG as u8;
+    pub const MB_STATE: u8 = map::MB_STATE as u8;
 }
 
 /// `reg.field` placed in a register word (positions from the table).

@@ -173,7 +173,8 @@ impl Mailboxes {
         }
     }
 
-    /// Reset mode (and every mode but DMR): counters and timers clear (§2.1).
+    /// Reset mode (and every mode but DMR), and a recovery (§7): counters and
+    /// timers clear (§2.1).
     pub fn clear_state(&mut self) {
         for b in &mut self.mb {
             b.counter = 0;

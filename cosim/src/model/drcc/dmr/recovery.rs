@@ -30,6 +30,7 @@ impl DmrBlock {
     ) -> [bool; 2] {
         let dt = c.dmr_tick;
         let mut faults: Vec<Fault> = Vec::new();
+        let mut recovered = false;
         for l in 0..2 {
             // §7 CS attempt: its timeout counts DMR ticks while it is live.
             if c.cs_busy[l] && c.cs_live[l] && dt {
@@ -49,6 +50,12 @@ impl DmrBlock {
                 self.tx_fault[l] = false;
                 self.rx_fault[l] = false;
                 self.rec_timer[l] = 0;
+                // A recovery (the line had a flag): the counts of the fault period
+                // are no evidence about the restored line; every mailbox restarts
+                // balanced (§7).
+                if c.tx_fault[l] || c.rx_fault[l] {
+                    recovered = true;
+                }
             }
         }
         for l in 0..2 {
@@ -113,6 +120,19 @@ impl DmrBlock {
         let mut tx_set = [false; 2];
         for f in &faults {
             let l = f.line;
+            // §6: a receive fault against a line already unable to transmit only
+            // records itself: the imbalance it saw is the deleted copies of that
+            // known fault (its own and the other devices'); it neither reloads the
+            // recovery delay nor cancels the line's CS, which alone decides.
+            if !f.tx && c.tx_fault[l] {
+                self.rx_fault[l] = true;
+                self.cause = f.cause;
+                self.cause_line = l as u8;
+                if let Some(mb) = f.mb {
+                    self.cause_mb = mb;
+                }
+                continue;
+            }
             against[l] = true;
             if f.tx {
                 self.tx_fault[l] = true;
@@ -137,6 +157,9 @@ impl DmrBlock {
             if c.cs_busy[l] {
                 self.abort[l] = true;
             }
+        }
+        if recovered {
+            self.mbx.clear_state();
         }
         // ACL switch: a fault against the ACL while the other line is sound.
         let a = c.acl as usize;

@@ -7,6 +7,7 @@
 //! Clock contract as for one channel: the `rx` inputs of clock n are computed from
 //! the `tx` outputs of step n-1.
 
+pub mod dmr_config;
 pub mod fault;
 pub mod host;
 pub mod lockstep;

@@ -89,11 +89,16 @@ fn check_readback(c: &PlanConfig, sys: &DualBusSystem, row: Row) -> Result<(), S
             return Err(format!(
                 "{}: the {} engine did not take the DMR configuration on {}: CTRL reads \
                  {ctrl:#010x} (dmr = {}), DMR_CFG reads {cfg:#010x} (written {want:#010x}); \
-                 this engine does not implement DMR mode (DMR contract §2): use --engine model",
+                 this engine does not implement DMR mode (DMR contract §2){}",
                 row.name(),
                 n.engine.name(),
                 DEVICES[d],
                 MAP.field("CTRL", "dmr").get(ctrl),
+                if n.engine.name() == "model" {
+                    ""
+                } else {
+                    ": run the plan on --engine model"
+                }
             ));
         }
     }

@@ -203,11 +203,11 @@ fn details(r: &RowReport) {
         r.pushed,
         r.deliveries
     );
-    for d in 0..DEVICES.len() {
+    for (d, name) in DEVICES.iter().enumerate() {
         eprintln!(
-            "  {}: DMR_STATUS {:#010x} at the end of the fault window, {:#010x} at the end; \
+            "  {name}: DMR_STATUS {:#010x} at the end of the fault window, {:#010x} at the end; \
              DMR_RX_STATS {:#010x}, DMR_CS_COUNT {:#010x}",
-            DEVICES[d], r.during[d].word, r.end[d].word, r.rx_stats_end[d], r.cs_count_end[d]
+            r.during[d].word, r.end[d].word, r.rx_stats_end[d], r.cs_count_end[d]
         );
     }
     for &(rx, tx, seq) in r.lost.iter().take(10) {

@@ -1,5 +1,8 @@
 //! One row of the test plan on one engine, or on two in lock step.
 //!
+//! Node `i < 4` is device `DEVICES[i]`; with [`PlanConfig::monitor`] node 4 is the
+//! test system's monitor on both lines (it only acknowledges and receives).
+//!
 //! The four hosts configure DMR mode, read back `CTRL` and `DMR_CFG` (an engine that
 //! does not take the DMR configuration is refused with a message naming it, instead of
 //! producing a meaningless row), then submit their traffic ([`super::load`]). Each host
@@ -15,7 +18,7 @@ use drcc_cosim::dual::fault::Detach;
 use drcc_cosim::dual::host::{reg, HostRead};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::vcd::DrccVcdWriter;
-use drcc_cosim::dual::DualBusSystem;
+use drcc_cosim::dual::{DualBusSystem, DualNode};
 use drcc_hdl::host::registers::MAP;
 
 use super::load::{decode, schedule};
@@ -48,10 +51,13 @@ pub fn run_row(
 /// The system of one engine kind for `row`: engines, host configurations, the fault,
 /// the traffic and the read-back of the configuration.
 fn build(c: &PlanConfig, row: Row, kind: EngineKind) -> Result<DualBusSystem, String> {
-    let engines = (0..DEVICES.len())
+    let engines = (0..c.nodes())
         .map(|_| drcc_engine(kind))
         .collect::<Result<Vec<_>, _>>()?;
-    let configs = (0..DEVICES.len()).map(|d| c.host_config(d)).collect();
+    let mut configs: Vec<_> = (0..DEVICES.len()).map(|d| c.host_config(d)).collect();
+    if c.monitor {
+        configs.push(c.monitor_config());
+    }
     let mut sys = DualBusSystem::new(engines, configs)?;
     let start = c.onset_clock(&row);
     let cycles = c.fault_end_clock() - start;
@@ -79,10 +85,15 @@ fn build(c: &PlanConfig, row: Row, kind: EngineKind) -> Result<DualBusSystem, St
     Ok(sys)
 }
 
+/// The four devices of the plan (without the monitor node, `PlanConfig::monitor`).
+fn devices(sys: &DualBusSystem) -> &[DualNode] {
+    &sys.nodes()[..DEVICES.len()]
+}
+
 /// Refuses an engine that did not take the DMR configuration (e.g. an RTL without
 /// DMR mode): `CTRL.dmr` must read 1 and `DMR_CFG` as written.
 fn check_readback(c: &PlanConfig, sys: &DualBusSystem, row: Row) -> Result<(), String> {
-    for (d, n) in sys.nodes().iter().enumerate() {
+    for (d, n) in devices(sys).iter().enumerate() {
         let (ctrl, cfg) = (n.host.reads[0].value, n.host.reads[1].value);
         let want = c.dmr_config(d).dmr_cfg();
         if MAP.field("CTRL", "dmr").get(ctrl) != 1 || cfg != want {
@@ -121,10 +132,10 @@ pub fn run_row_traced(
             DrccVcdWriter::new(
                 buf,
                 CLOCK_HZ,
-                DEVICES.len(),
+                c.nodes(),
                 &format!(
                     "DRCC CiA 701 DMR test plan, {} (nodes 0..3 = COS1, COS2, COS3, COM1; \
-                     line_a = DCL, line_b = RCL)",
+                     line_a = DCL, line_b = RCL; node 4 = the monitor)",
                     row.name()
                 ),
             )
@@ -147,7 +158,7 @@ pub fn run_row_traced(
     let mut checked = false;
     loop {
         let cycle = main.cycle();
-        if cycle >= total && main.nodes().iter().all(|n| n.host.reads.len() >= READS) {
+        if cycle >= total && devices(&main).iter().all(|n| n.host.reads.len() >= READS) {
             break;
         }
         if cycle > total + READ_GRACE {
@@ -184,14 +195,14 @@ pub fn run_row_traced(
                 ));
             }
         }
-        if !checked && main.nodes().iter().all(|n| n.host.reads.len() >= 2) {
+        if !checked && devices(&main).iter().all(|n| n.host.reads.len() >= 2) {
             check_readback(c, &main, row)?;
             if let Some(o) = other.as_ref() {
                 check_readback(c, o, row)?;
             }
             checked = true;
         }
-        for (d, n) in main.nodes().iter().enumerate() {
+        for (d, n) in devices(&main).iter().enumerate() {
             let p = probe(&n.outputs);
             if cycle == onset {
                 acl_at_onset[d] = p.acl;
@@ -213,7 +224,7 @@ pub fn run_row_traced(
         w.finish(main.cycle()).map_err(|e| e.to_string())?;
     }
     r.cycles = main.cycle();
-    r.all_active_at_end = main.nodes().iter().all(|n| probe(&n.outputs).state == 0);
+    r.all_active_at_end = devices(&main).iter().all(|n| probe(&n.outputs).state == 0);
     tally(c, &main, &mut r);
     r.wall = wall.elapsed();
     Ok(r)
@@ -224,7 +235,7 @@ pub fn run_row_traced(
 fn tally(c: &PlanConfig, sys: &DualBusSystem, r: &mut RowReport) {
     let submitted: usize = schedule(c).iter().map(Vec::len).sum();
     let mut pushed: Vec<Vec<u16>> = vec![Vec::new(); DEVICES.len()];
-    for (d, n) in sys.nodes().iter().enumerate() {
+    for (d, n) in devices(sys).iter().enumerate() {
         pushed[d] = n
             .host
             .sent
@@ -235,7 +246,7 @@ fn tally(c: &PlanConfig, sys: &DualBusSystem, r: &mut RowReport) {
     }
     r.pushed = pushed.iter().map(Vec::len).sum();
     r.unpushed = submitted - r.pushed;
-    for (rx, n) in sys.nodes().iter().enumerate() {
+    for (rx, n) in devices(sys).iter().enumerate() {
         let mut pops: HashMap<(usize, u16), u64> = HashMap::new();
         let mut count: HashMap<(usize, u16), usize> = HashMap::new();
         for got in &n.host.received {

@@ -24,6 +24,15 @@
 //!   recovery path (delay, restart, connection service) ten times faster.
 //!   [`PlanConfig::with_recovery`] gives any other delay (`drcc dmr --recovery-ms`).
 //!
+//! **Monitor.** The seed's test setup (Figure 9) is run by a test system with its
+//! own CAN interface on the lines; the plan has it as a fifth node on both lines, a
+//! DRCC in normal mode that sends nothing and acknowledges every frame. It matters
+//! for the connection service: every device sends the *same* CS frame (one
+//! identifier per line, DLC 0, no source address), and devices that start together
+//! send it in lock step, as one frame with no receiver left to acknowledge it. The
+//! monitor is what a real network always has: some node that is not transmitting.
+//! (`monitor: false` runs the four devices alone.)
+//!
 //! **Time line** (ms): traffic from 5 ms to 100 ms before the end; a startup fault is
 //! present from clock 0, a run-time one from 100 ms; both end at 400 ms; the run lasts
 //! three recovery delays plus 100 ms beyond (a sender's recovery, then its receivers',
@@ -65,6 +74,8 @@ pub struct PlanConfig {
     pub traffic_end_ms: u64,
     /// Run length, ms.
     pub run_ms: u64,
+    /// A monitor node on both lines (module docs).
+    pub monitor: bool,
 }
 
 impl PlanConfig {
@@ -94,6 +105,7 @@ impl PlanConfig {
             traffic_start_ms: 5,
             traffic_end_ms: run_ms - 100,
             run_ms,
+            monitor: true,
         }
     }
 
@@ -129,6 +141,24 @@ impl PlanConfig {
             self.dmr_config(device),
             self.window_bits,
         )
+    }
+
+    /// Nodes of the system: the devices and the monitor.
+    pub fn nodes(&self) -> usize {
+        DEVICES.len() + self.monitor as usize
+    }
+
+    /// The monitor: a DRCC in normal mode on both lines, sending nothing, its host
+    /// draining what it receives (it acknowledges every frame, as a CAN interface in
+    /// normal mode does).
+    pub fn monitor_config(&self) -> HostConfig {
+        HostConfig {
+            btr: btr(0, 5, 2, 1, false, 96),
+            redundancy: false,
+            dedup_window: 0,
+            dmr: None,
+            ..HostConfig::default()
+        }
     }
 
     /// Clock at which the fault of `row` starts.

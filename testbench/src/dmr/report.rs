@@ -6,7 +6,8 @@
 //! the run, application frames lost and duplicated (every frame a host pushed must be
 //! popped exactly once by every other host), the times from the fault's onset (clock 0
 //! for a startup failure) to the first fault flag of any device and to the first ACL
-//! switch, from the fault's removal to "redundancy active" on every device, and the
+//! switch (inside the fault window), from the fault's removal to "redundancy active"
+//! on every device (with the first relapse after it, if any), and the
 //! worst extra delivery latency of any message against the fault-free baseline (same
 //! traffic; a message is matched by sender and sequence number at each receiver).
 //! Times in ms (bit times / 125).
@@ -88,11 +89,17 @@ pub struct RowReport {
     /// Popped frames that no other host pushed.
     pub foreign: usize,
     /// Clocks from the onset to the first fault flag of any device, and to the first
-    /// ACL switch.
+    /// ACL switch, inside the fault window (the baseline: the whole run).
     pub detection: Option<u64>,
     pub acl_switch: Option<u64>,
     /// The last clock at which some device was not "redundancy active".
     pub last_not_active: Option<u64>,
+    /// The first clock at or after the fault's end at which every device was
+    /// "redundancy active".
+    pub recovered: Option<u64>,
+    /// The first clock after `recovered` at which a device was not active again, and
+    /// that device (a relapse: a fault flag without a fault).
+    pub relapse: Option<(u64, usize)>,
     /// Every device "redundancy active" at the end.
     pub all_active_at_end: bool,
     /// Per receiver: the clock of the first pop of each (sender, sequence number).
@@ -108,12 +115,9 @@ impl RowReport {
     }
 
     /// Clocks from the fault's removal to "redundancy active" on every device (0 if
-    /// they were all active already), `None` if some device is not active at the end.
+    /// they were all active already), `None` if that never happened.
     pub fn recovery(&self) -> Option<u64> {
-        self.all_active_at_end.then(|| {
-            self.last_not_active
-                .map_or(0, |l| (l + 1).saturating_sub(self.fault_end))
-        })
+        self.recovered.map(|c| c - self.fault_end)
     }
 
     /// The worst extra delivery latency, in clocks, of any message at any receiver
@@ -169,9 +173,15 @@ pub fn row_line(r: &RowReport, base: Option<&RowReport>) -> String {
     for s in &r.during {
         line.push_str(&format!(" {} |", s.cell()));
     }
-    let recovery = match r.recovery() {
-        Some(c) => format!("{:.1}", ms(c)),
-        None => "not active at the end".to_string(),
+    let recovery = match (r.recovery(), r.relapse) {
+        (Some(c), None) => format!("{:.1}", ms(c)),
+        (Some(c), Some((at, d))) => format!(
+            "{:.1}, relapse of {} {:.1} ms after the removal",
+            ms(c),
+            DEVICES[d],
+            ms(at - r.fault_end)
+        ),
+        (None, _) => "not within the run".to_string(),
     };
     let latency = match base.and_then(|b| r.extra_latency(b)) {
         Some(c) => format!("{:.1}", c.max(0) as f64 / super::CLOCKS_PER_MS as f64),
@@ -252,6 +262,7 @@ mod tests {
             acl_switch: None,
             fault_end: 400_000,
             last_not_active: Some(699_999),
+            recovered: Some(700_000),
             all_active_at_end: true,
             pops: vec![HashMap::from([((1, 0), 3500)])],
             ..RowReport::default()
@@ -271,12 +282,16 @@ mod tests {
     }
 
     #[test]
-    fn recovery_is_missing_when_a_device_is_not_active_at_the_end() {
-        let r = RowReport {
-            all_active_at_end: false,
+    fn recovery_is_missing_or_relapses() {
+        let mut r = RowReport {
+            fault_end: 400_000,
             ..RowReport::default()
         };
         assert_eq!(r.recovery(), None);
-        assert!(row_line(&r, None).contains("not active at the end"));
+        assert!(row_line(&r, None).contains("not within the run"));
+        r.recovered = Some(500_000);
+        r.relapse = Some((650_000, 2));
+        assert_eq!(r.recovery(), Some(100_000));
+        assert!(row_line(&r, None).contains("100.0, relapse of COS3 250.0 ms after the removal"));
     }
 }

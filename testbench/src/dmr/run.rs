@@ -8,8 +8,9 @@
 //! producing a meaningless row), then submit their traffic ([`super::load`]). Each host
 //! reads `DMR_STATUS` 1 ms before the fault ends ("at the end of the fault window")
 //! and `DMR_STATUS`, `DMR_RX_STATS` and `DMR_CS_COUNT` at the end of the run. Every
-//! clock the DMR probes give the times of the first fault flag, the first ACL switch
-//! and the last clock at which some device was not "redundancy active".
+//! clock the DMR probes give the times of the first fault flag and the first ACL
+//! switch inside the fault window, the first clock after the fault at which every
+//! device is "redundancy active" again, and the first relapse after that.
 
 use std::collections::HashMap;
 use std::time::Instant;
@@ -147,6 +148,13 @@ pub fn run_row_traced(
     let fault_end = c.fault_end_clock();
     let total = c.run_clocks();
     let read_during = fault_end - CLOCKS_PER_MS;
+    // Detection and ACL switch count inside the fault window (the whole run for the
+    // baseline, where any fault flag is a finding).
+    let window_end = if row.marker.is_none() {
+        u64::MAX
+    } else {
+        fault_end
+    };
     let mut r = RowReport {
         row,
         engine: kind.name().to_string(),
@@ -202,12 +210,13 @@ pub fn run_row_traced(
             }
             checked = true;
         }
+        let mut first_inactive = None;
         for (d, n) in devices(&main).iter().enumerate() {
             let p = probe(&n.outputs);
             if cycle == onset {
                 acl_at_onset[d] = p.acl;
             }
-            if cycle >= onset {
+            if cycle >= onset && cycle < window_end {
                 if p.fault && r.detection.is_none() {
                     r.detection = Some(cycle - onset);
                 }
@@ -217,6 +226,14 @@ pub fn run_row_traced(
             }
             if p.state != 0 {
                 r.last_not_active = Some(cycle);
+                first_inactive.get_or_insert(d);
+            }
+        }
+        if cycle >= fault_end {
+            match (r.recovered, first_inactive) {
+                (None, None) => r.recovered = Some(cycle),
+                (Some(_), Some(d)) if r.relapse.is_none() => r.relapse = Some((cycle, d)),
+                _ => {}
             }
         }
     }

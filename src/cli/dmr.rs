@@ -165,13 +165,14 @@ fn one(
             ))
         })?;
     }
+    let mut buf = Vec::new();
+    let r = run_row_traced(plan, row, kind, other, vcd.map(|_| &mut buf)).map_err(error)?;
+    // The fault-free run of the same traffic, for the latency column.
     let base = if row == Row::BASELINE {
         None
     } else {
         Some(run_row(plan, Row::BASELINE, kind, None).map_err(error)?)
     };
-    let mut buf = Vec::new();
-    let r = run_row_traced(plan, row, kind, other, vcd.map(|_| &mut buf)).map_err(error)?;
     if let Some(path) = vcd {
         std::fs::write(path, &buf)
             .map_err(|e| error(format!("cannot write {}: {e}", path.display())))?;

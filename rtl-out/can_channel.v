@@ -626,26 +626,14 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  fsm__rst;
     reg  fsm__sample;
     reg  fsm__sampled;
-    reg  fsm__bit_start;
-    reg  fsm__hard_sync;
     wire  fsm__hard_sync_enable;
-    wire  fsm__tx;
     reg  fsm__listen_only;
     reg  fsm__loopback;
-    reg  fsm__single_shot;
-    reg  fsm__tx_req;
-    reg  fsm__tx_abort;
-    wire  fsm__tx_pending;
-    wire  fsm__tx_failed;
-    wire  fsm__tx_done;
-    wire  fsm__arb_lost;
-    wire  fsm__tx_load;
-    reg  fsm__frame_bit;
+    reg  fsm__tx_starts;
+    reg  fsm__tx_joins;
     reg  fsm__frame_ide;
-    reg  fsm__stuff_insert;
     reg  fsm__at_stuff_bit;
     reg  fsm__stuff_last;
-    reg  fsm__crc_ok;
     reg  fsm__no_data;
     reg  fsm__data_end;
     reg  fsm__error;
@@ -657,7 +645,6 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  fsm__ack_defer;
     reg  fsm__ack_counted;
     reg  fsm__error_passive;
-    reg  fsm__bus_off;
     wire  [4:0] fsm__field;
     wire  [5:0] fsm__bit_cnt;
     wire  [6:0] fsm__bit_cnt_inc;
@@ -677,6 +664,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     wire  fsm__bc7;
     wire  fsm__in_crc_field;
     wire  fsm__sof;
+    wire  fsm__sof_as_tx;
     wire  fsm__stuff_stop;
     wire  fsm__stuff_resync;
     wire  fsm__crc_step;
@@ -691,6 +679,47 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     wire  fsm__rx_publish;
     wire  fsm__tx_valid;
     wire  fsm__recovered;
+    wire  fsm__suspend_due;
+    reg  tx_request__clk;
+    reg  tx_request__rst;
+    reg  tx_request__listen_only;
+    reg  tx_request__single_shot;
+    reg  tx_request__tx_req;
+    reg  tx_request__tx_abort;
+    wire  tx_request__tx_pending;
+    wire  tx_request__tx_failed;
+    wire  tx_request__tx_done;
+    wire  tx_request__arb_lost;
+    wire  tx_request__tx_load;
+    reg  tx_request__bus_off;
+    reg  tx_request__suspend_due;
+    reg  tx_request__is_tx;
+    reg  tx_request__tx_pin;
+    reg  tx_request__sample;
+    reg  tx_request__sof;
+    reg  tx_request__sof_as_tx;
+    reg  tx_request__sent;
+    reg  tx_request__lost;
+    reg  tx_request__error;
+    reg  tx_request__flag_error;
+    reg  tx_request__sof_error;
+    reg  tx_request__bus_off_after;
+    wire  tx_request__starts;
+    wire  tx_request__joins;
+    reg  tx_pin__clk;
+    reg  tx_pin__rst;
+    reg  tx_pin__bit_start;
+    reg  tx_pin__hard_sync;
+    reg  tx_pin__listen_only;
+    reg  [4:0] tx_pin__field;
+    reg  tx_pin__is_tx;
+    reg  tx_pin__flag_passive;
+    reg  tx_pin__tx_starts;
+    reg  tx_pin__frame_bit;
+    reg  tx_pin__stuff_insert;
+    reg  tx_pin__stuff_last;
+    reg  tx_pin__crc_ok;
+    wire  tx_pin__tx;
     reg  stuffing__clk;
     reg  stuffing__rst;
     reg  stuffing__sample;
@@ -857,26 +886,14 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .rst(fsm__rst),
         .sample(fsm__sample),
         .sampled(fsm__sampled),
-        .bit_start(fsm__bit_start),
-        .hard_sync(fsm__hard_sync),
         .hard_sync_enable(fsm__hard_sync_enable),
-        .tx(fsm__tx),
         .listen_only(fsm__listen_only),
         .loopback(fsm__loopback),
-        .single_shot(fsm__single_shot),
-        .tx_req(fsm__tx_req),
-        .tx_abort(fsm__tx_abort),
-        .tx_pending(fsm__tx_pending),
-        .tx_failed(fsm__tx_failed),
-        .tx_done(fsm__tx_done),
-        .arb_lost(fsm__arb_lost),
-        .tx_load(fsm__tx_load),
-        .frame_bit(fsm__frame_bit),
+        .tx_starts(fsm__tx_starts),
+        .tx_joins(fsm__tx_joins),
         .frame_ide(fsm__frame_ide),
-        .stuff_insert(fsm__stuff_insert),
         .at_stuff_bit(fsm__at_stuff_bit),
         .stuff_last(fsm__stuff_last),
-        .crc_ok(fsm__crc_ok),
         .no_data(fsm__no_data),
         .data_end(fsm__data_end),
         .error(fsm__error),
@@ -888,7 +905,6 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .ack_defer(fsm__ack_defer),
         .ack_counted(fsm__ack_counted),
         .error_passive(fsm__error_passive),
-        .bus_off(fsm__bus_off),
         .field(fsm__field),
         .bit_cnt(fsm__bit_cnt),
         .bit_cnt_inc(fsm__bit_cnt_inc),
@@ -908,6 +924,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .bc7(fsm__bc7),
         .in_crc_field(fsm__in_crc_field),
         .sof(fsm__sof),
+        .sof_as_tx(fsm__sof_as_tx),
         .stuff_stop(fsm__stuff_stop),
         .stuff_resync(fsm__stuff_resync),
         .crc_step(fsm__crc_step),
@@ -921,7 +938,52 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .rx_take_data(fsm__rx_take_data),
         .rx_publish(fsm__rx_publish),
         .tx_valid(fsm__tx_valid),
-        .recovered(fsm__recovered)
+        .recovered(fsm__recovered),
+        .suspend_due(fsm__suspend_due)
+    );
+    can_channel__bsp__tx_request tx_request(
+        .clk(tx_request__clk),
+        .rst(tx_request__rst),
+        .listen_only(tx_request__listen_only),
+        .single_shot(tx_request__single_shot),
+        .tx_req(tx_request__tx_req),
+        .tx_abort(tx_request__tx_abort),
+        .tx_pending(tx_request__tx_pending),
+        .tx_failed(tx_request__tx_failed),
+        .tx_done(tx_request__tx_done),
+        .arb_lost(tx_request__arb_lost),
+        .tx_load(tx_request__tx_load),
+        .bus_off(tx_request__bus_off),
+        .suspend_due(tx_request__suspend_due),
+        .is_tx(tx_request__is_tx),
+        .tx_pin(tx_request__tx_pin),
+        .sample(tx_request__sample),
+        .sof(tx_request__sof),
+        .sof_as_tx(tx_request__sof_as_tx),
+        .sent(tx_request__sent),
+        .lost(tx_request__lost),
+        .error(tx_request__error),
+        .flag_error(tx_request__flag_error),
+        .sof_error(tx_request__sof_error),
+        .bus_off_after(tx_request__bus_off_after),
+        .starts(tx_request__starts),
+        .joins(tx_request__joins)
+    );
+    can_channel__bsp__tx_pin tx_pin(
+        .clk(tx_pin__clk),
+        .rst(tx_pin__rst),
+        .bit_start(tx_pin__bit_start),
+        .hard_sync(tx_pin__hard_sync),
+        .listen_only(tx_pin__listen_only),
+        .field(tx_pin__field),
+        .is_tx(tx_pin__is_tx),
+        .flag_passive(tx_pin__flag_passive),
+        .tx_starts(tx_pin__tx_starts),
+        .frame_bit(tx_pin__frame_bit),
+        .stuff_insert(tx_pin__stuff_insert),
+        .stuff_last(tx_pin__stuff_last),
+        .crc_ok(tx_pin__crc_ok),
+        .tx(tx_pin__tx)
     );
     can_channel__bsp__stuffing stuffing(
         .clk(stuffing__clk),
@@ -1098,6 +1160,10 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     always @(*) begin
         fsm__clk = clk;
         fsm__rst = rst;
+        tx_request__clk = clk;
+        tx_request__rst = rst;
+        tx_pin__clk = clk;
+        tx_pin__rst = rst;
         stuffing__clk = clk;
         stuffing__rst = rst;
         frame_crc__clk = clk;
@@ -1115,19 +1181,13 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         loopback = mode == mode_loopback;
         fsm__sample = sample;
         fsm__sampled = sampled;
-        fsm__bit_start = bit_start;
-        fsm__hard_sync = hard_sync;
         fsm__listen_only = listen_only;
         fsm__loopback = loopback;
-        fsm__single_shot = single_shot;
-        fsm__tx_req = tx_req;
-        fsm__tx_abort = tx_abort;
-        fsm__frame_bit = tx_frame__frame_bit;
+        fsm__tx_starts = tx_request__starts;
+        fsm__tx_joins = tx_request__joins;
         fsm__frame_ide = tx_frame__frame_ide;
-        fsm__stuff_insert = stuffing__insert;
         fsm__at_stuff_bit = stuffing__at_stuff_bit;
         fsm__stuff_last = stuffing__last;
-        fsm__crc_ok = frame_crc__crc_ok;
         fsm__no_data = rx_frame__no_data;
         fsm__data_end = rx_frame__data_end;
         fsm__error = detect__error;
@@ -1139,7 +1199,34 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         fsm__ack_defer = rules__ack_defer;
         fsm__ack_counted = rules__ack_counted;
         fsm__error_passive = fc__error_passive;
-        fsm__bus_off = fc__bus_off;
+        tx_request__listen_only = listen_only;
+        tx_request__single_shot = single_shot;
+        tx_request__tx_req = tx_req;
+        tx_request__tx_abort = tx_abort;
+        tx_request__bus_off = fc__bus_off;
+        tx_request__suspend_due = fsm__suspend_due;
+        tx_request__is_tx = fsm__is_tx;
+        tx_request__tx_pin = tx_pin__tx;
+        tx_request__sample = sample;
+        tx_request__sof = fsm__sof;
+        tx_request__sof_as_tx = fsm__sof_as_tx;
+        tx_request__sent = fsm__tx_valid;
+        tx_request__lost = detect__lost;
+        tx_request__error = detect__error;
+        tx_request__flag_error = detect__flag_error;
+        tx_request__sof_error = detect__sof_error;
+        tx_request__bus_off_after = rules__bus_off_after;
+        tx_pin__bit_start = bit_start;
+        tx_pin__hard_sync = hard_sync;
+        tx_pin__listen_only = listen_only;
+        tx_pin__field = fsm__field;
+        tx_pin__is_tx = fsm__is_tx;
+        tx_pin__flag_passive = fsm__flag_passive;
+        tx_pin__tx_starts = tx_request__starts;
+        tx_pin__frame_bit = tx_frame__frame_bit;
+        tx_pin__stuff_insert = stuffing__insert;
+        tx_pin__stuff_last = stuffing__last;
+        tx_pin__crc_ok = frame_crc__crc_ok;
         stuffing__sample = sample;
         stuffing__sampled = sampled;
         stuffing__start = fsm__sof;
@@ -1151,7 +1238,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         frame_crc__check = fsm__crc_check;
         frame_crc__in_crc_field = fsm__in_crc_field;
         frame_crc__bit_cnt = fsm__bit_cnt[(32'h0)+:(4)];
-        tx_frame__load = fsm__tx_load;
+        tx_frame__load = tx_request__tx_load;
         tx_frame__id = tx_id;
         tx_frame__ide = tx_ide;
         tx_frame__rtr = tx_rtr;
@@ -1176,7 +1263,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         detect__sampled = sampled;
         detect__field = fsm__field;
         detect__is_tx = fsm__is_tx;
-        detect__tx_bit = fsm__tx;
+        detect__tx_bit = tx_pin__tx;
         detect__in_frame = fsm__in_frame;
         detect__in_arbitration = fsm__in_arbitration;
         detect__ack_slot = fsm__ack_slot;
@@ -1196,7 +1283,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         rules__at_stuff_bit = stuffing__at_stuff_bit;
         rules__field = fsm__field;
         rules__is_tx = fsm__is_tx;
-        rules__tx_bit = fsm__tx;
+        rules__tx_bit = tx_pin__tx;
         rules__flag_passive = fsm__flag_passive;
         rules__in_delim = fsm__in_delim;
         rules__after_error_flag = fsm__after_error_flag;
@@ -1233,11 +1320,11 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         err_capture__field = fsm__field;
         err_capture__bit_cnt = fsm__bit_cnt[(32'h0)+:(5)];
         hard_sync_enable = fsm__hard_sync_enable;
-        tx = fsm__tx;
-        tx_pending = fsm__tx_pending;
-        tx_failed = fsm__tx_failed;
-        tx_done = fsm__tx_done;
-        arb_lost = fsm__arb_lost;
+        tx = tx_pin__tx;
+        tx_pending = tx_request__tx_pending;
+        tx_failed = tx_request__tx_failed;
+        tx_done = tx_request__tx_done;
+        arb_lost = tx_request__arb_lost;
         rx_valid = rx_frame__rx_valid;
         rx_id = rx_frame__rx_id;
         rx_ide = rx_frame__rx_ide;
@@ -2344,33 +2431,21 @@ module can_channel__bsp__frame_crc__p_crc_bit(d,q,clock);
 endmodule // can_channel__bsp__frame_crc__p_crc_bit
 
 
-module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,listen_only,loopback,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,frame_bit,frame_ide,stuff_insert,at_stuff_bit,stuff_last,crc_ok,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,bus_off,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered);
+module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  sample;
     input wire  sampled;
-    input wire  bit_start;
-    input wire  hard_sync;
     output reg  hard_sync_enable;
-    output reg  tx;
     input wire  listen_only;
     input wire  loopback;
-    input wire  single_shot;
-    input wire  tx_req;
-    input wire  tx_abort;
-    output reg  tx_pending;
-    output reg  tx_failed;
-    output reg  tx_done;
-    output reg  arb_lost;
-    output reg  tx_load;
-    input wire  frame_bit;
+    input wire  tx_starts;
+    input wire  tx_joins;
     input wire  frame_ide;
-    input wire  stuff_insert;
     input wire  at_stuff_bit;
     input wire  stuff_last;
-    input wire  crc_ok;
     input wire  no_data;
     input wire  data_end;
     input wire  error;
@@ -2382,7 +2457,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
     input wire  ack_defer;
     input wire  ack_counted;
     input wire  error_passive;
-    input wire  bus_off;
     output reg  [4:0] field;
     output reg  [5:0] bit_cnt;
     output reg  [6:0] bit_cnt_inc;
@@ -2402,6 +2476,7 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
     output reg  bc7;
     output reg  in_crc_field;
     output reg  sof;
+    output reg  sof_as_tx;
     output reg  stuff_stop;
     output reg  stuff_resync;
     output reg  crc_step;
@@ -2416,6 +2491,7 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
     output reg  rx_publish;
     output reg  tx_valid;
     output reg  recovered;
+    output reg  suspend_due;
     
     // Constant declarations
     localparam  n7_0 = 7'b0;
@@ -2464,9 +2540,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
     reg  [6:0] recovery_cnt__d;
     wire  [6:0] recovery_cnt__q;
     reg  recovery_cnt__clock;
-    reg  tx_q__d;
-    wire  tx_q__q;
-    reg  tx_q__clock;
     reg  last_bit_arb_q__d;
     wire  last_bit_arb_q__q;
     reg  last_bit_arb_q__clock;
@@ -2479,24 +2552,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
     reg  [2:0] dom_cnt__d;
     wire  [2:0] dom_cnt__q;
     reg  dom_cnt__clock;
-    reg  pending__d;
-    wire  pending__q;
-    reg  pending__clock;
-    reg  abort_pending__d;
-    wire  abort_pending__q;
-    reg  abort_pending__clock;
-    reg  attempt__d;
-    wire  attempt__q;
-    reg  attempt__clock;
-    reg  tx_failed_q__d;
-    wire  tx_failed_q__q;
-    reg  tx_failed_q__clock;
-    reg  tx_done_q__d;
-    wire  tx_done_q__q;
-    reg  tx_done_q__clock;
-    reg  arb_lost_q__d;
-    wire  arb_lost_q__q;
-    reg  arb_lost_q__clock;
     reg  decode__clk;
     reg  [4:0] decode__field;
     reg  [6:0] decode__bit_cnt;
@@ -2529,13 +2584,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
     reg  [6:0] bit_cnt_n;
     reg  is_tx_n;
     reg  flag_passive_n;
-    reg  tx_bit_n;
-    reg  tx_bit;
-    reg  start_ok;
-    reg  join_ok;
-    reg  starts;
-    reg  join_starts;
-    reg  sof_as_tx;
     reg  monitor;
     
     // Sub module instances
@@ -2564,11 +2612,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
         .q(recovery_cnt__q),
         .clock(recovery_cnt__clock)
     );
-    can_channel__bsp__fsm__tx_q tx_q(
-        .d(tx_q__d),
-        .q(tx_q__q),
-        .clock(tx_q__clock)
-    );
     can_channel__bsp__fsm__last_bit_arb_q last_bit_arb_q(
         .d(last_bit_arb_q__d),
         .q(last_bit_arb_q__q),
@@ -2588,36 +2631,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
         .d(dom_cnt__d),
         .q(dom_cnt__q),
         .clock(dom_cnt__clock)
-    );
-    can_channel__bsp__fsm__pending pending(
-        .d(pending__d),
-        .q(pending__q),
-        .clock(pending__clock)
-    );
-    can_channel__bsp__fsm__abort_pending abort_pending(
-        .d(abort_pending__d),
-        .q(abort_pending__q),
-        .clock(abort_pending__clock)
-    );
-    can_channel__bsp__fsm__attempt attempt(
-        .d(attempt__d),
-        .q(attempt__q),
-        .clock(attempt__clock)
-    );
-    can_channel__bsp__fsm__tx_failed_q tx_failed_q(
-        .d(tx_failed_q__d),
-        .q(tx_failed_q__q),
-        .clock(tx_failed_q__clock)
-    );
-    can_channel__bsp__fsm__tx_done_q tx_done_q(
-        .d(tx_done_q__d),
-        .q(tx_done_q__q),
-        .clock(tx_done_q__clock)
-    );
-    can_channel__bsp__fsm__arb_lost_q arb_lost_q(
-        .d(arb_lost_q__d),
-        .q(arb_lost_q__q),
-        .clock(arb_lost_q__clock)
     );
     can_channel__bsp__fsm__decode decode(
         .clk(decode__clk),
@@ -2655,33 +2668,19 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
         is_tx_q__clock = clk;
         flag_passive_q__clock = clk;
         recovery_cnt__clock = clk;
-        tx_q__clock = clk;
         last_bit_arb_q__clock = clk;
         ack_pending_q__clock = clk;
         delim_first_q__clock = clk;
         dom_cnt__clock = clk;
-        pending__clock = clk;
-        abort_pending__clock = clk;
-        attempt__clock = clk;
-        tx_failed_q__clock = clk;
-        tx_done_q__clock = clk;
-        arb_lost_q__clock = clk;
         field_q__d = field_q__q;
         bit_cnt_q__d = bit_cnt_q__q;
         is_tx_q__d = is_tx_q__q;
         flag_passive_q__d = flag_passive_q__q;
         recovery_cnt__d = recovery_cnt__q;
-        tx_q__d = tx_q__q;
         last_bit_arb_q__d = last_bit_arb_q__q;
         ack_pending_q__d = ack_pending_q__q;
         delim_first_q__d = delim_first_q__q;
         dom_cnt__d = dom_cnt__q;
-        pending__d = pending__q;
-        abort_pending__d = abort_pending__q;
-        attempt__d = attempt__q;
-        tx_failed_q__d = tx_failed_q__q;
-        tx_done_q__d = tx_done_q__q;
-        arb_lost_q__d = arb_lost_q__q;
         decode__clk = clk;
         decode__field = field_q__q;
         decode__bit_cnt = bit_cnt_q__q;
@@ -2695,26 +2694,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
         bit_cnt_inc = bit_cnt_q__q + n7_1;
         is_tx_n = is_tx_q__q;
         flag_passive_n = flag_passive_q__q;
-        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
-        tx_failed_q__d = 1'b0;
-        if (~pending__q) begin
-            abort_pending__d = 1'b0;
-        end
-        if ((tx_abort || abort_pending__q) && pending__q) begin
-            if (~is_tx_q__q && tx_q__q) begin
-                pending__d = 1'b0;
-                tx_failed_q__d = 1'b1;
-                abort_pending__d = 1'b0;
-            end
-            else begin
-                abort_pending__d = 1'b1;
-            end
-        end
-        join_ok = start_ok && ~decode__suspend_due;
-        starts = (~tx_q__q && pending__q) || start_ok;
-        join_starts = (~tx_q__q && pending__q) || join_ok;
-        tx_done_q__d = 1'b0;
-        arb_lost_q__d = 1'b0;
         sof = 1'b0;
         sof_as_tx = 1'b0;
         stuff_stop = 1'b0;
@@ -2737,7 +2716,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
             crc_step = decode__crc_covered;
             if (lost) begin
                 is_tx_n = 1'b0;
-                arb_lost_q__d = 1'b1;
             end
             case (field_q__q)
                 Field__Integrating:
@@ -2759,7 +2737,7 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
                     begin
                         if (~sampled) begin
                             sof = 1'b1;
-                            sof_as_tx = starts;
+                            sof_as_tx = tx_starts;
                         end
                         else if (sof_error) begin
                             is_tx_n = 1'b1;
@@ -2783,7 +2761,7 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
                         if (~sampled) begin
                             if (decode__bc2) begin
                                 sof = 1'b1;
-                                sof_as_tx = join_starts;
+                                sof_as_tx = tx_joins;
                             end
                             else begin
                                 field_n = Field__OverloadFlag;
@@ -2923,10 +2901,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
                             end
                             if (decode__bc6) begin
                                 if (is_tx_q__q) begin
-                                    tx_done_q__d = 1'b1;
-                                    pending__d = 1'b0;
-                                    attempt__d = 1'b0;
-                                    abort_pending__d = 1'b0;
                                     tx_valid = 1'b1;
                                 end
                                 field_n = Field__Intermission;
@@ -3040,7 +3014,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
                 field_n = Field__IdA;
                 bit_cnt_n = n7_0;
                 is_tx_n = sof_as_tx;
-                attempt__d = sof_as_tx;
             end
             if (error || flag_error) begin
                 field_n = Field__ErrorFlag;
@@ -3051,18 +3024,9 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
             if (ack_defer) begin
                 ack_pending_q__d = 1'b1;
             end
-            if ((attempt__q && is_tx_q__q && (lost || error || flag_error)) || sof_error) begin
-                attempt__d = 1'b0;
-                if (single_shot || abort_pending__q) begin
-                    pending__d = 1'b0;
-                    tx_failed_q__d = 1'b1;
-                    abort_pending__d = 1'b0;
-                end
-            end
             if (bus_off_after) begin
                 field_n = Field__BusOff;
                 is_tx_n = 1'b0;
-                attempt__d = 1'b0;
                 bit_cnt_n = n7_0;
                 recovery_cnt__d = n7_0;
             end
@@ -3070,58 +3034,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
             bit_cnt_q__d = bit_cnt_n;
             is_tx_q__d = is_tx_n;
             flag_passive_q__d = flag_passive_n;
-        end
-        tx_bit_n = 1'b1;
-        case (field_q__q)
-            Field__ErrorFlag:
-                begin
-                    tx_bit_n = flag_passive_q__q;
-                end
-            Field__OverloadFlag:
-                begin
-                    tx_bit_n = 1'b0;
-                end
-            Field__AckSlot:
-                begin
-                    tx_bit_n = is_tx_q__q || ~crc_ok;
-                end
-            default:
-                begin
-                    if (is_tx_q__q) begin
-                        if (stuff_insert) begin
-                            tx_bit_n = ~stuff_last;
-                        end
-                        else begin
-                            tx_bit_n = frame_bit;
-                        end
-                    end
-                end
-        endcase
-        tx_bit = tx_bit_n || listen_only;
-        if (bit_start) begin
-            if (hard_sync && (field_q__q == Field__Idle)) begin
-                tx_q__d = ~starts;
-            end
-            else if (hard_sync && (field_q__q == Field__Intermission)) begin
-                tx_q__d = 1'b1;
-            end
-            else if (hard_sync && (field_q__q == Field__Suspend)) begin
-                tx_q__d = 1'b1;
-            end
-            else if (field_q__q == Field__Idle) begin
-                tx_q__d = ~starts;
-            end
-            else begin
-                tx_q__d = tx_bit;
-            end
-        end
-        tx_load = 1'b0;
-        if (tx_req && ~pending__q && listen_only) begin
-            tx_failed_q__d = 1'b1;
-        end
-        else if (tx_req && ~pending__q) begin
-            pending__d = 1'b1;
-            tx_load = 1'b1;
         end
         case (field_q__q)
             Field__Integrating:
@@ -3149,11 +3061,6 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
                     hard_sync_enable = 1'b0;
                 end
         endcase
-        tx = tx_q__q;
-        tx_pending = pending__q;
-        tx_done = tx_done_q__q;
-        arb_lost = arb_lost_q__q;
-        tx_failed = tx_failed_q__q;
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
@@ -3171,43 +3078,21 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_syn
         delim_first = delim_first_q__q;
         ack_pending = ack_pending_q__q;
         in_crc_field = field_q__q == Field__Crc;
+        suspend_due = decode__suspend_due;
         if (rst) begin
             field_q__d = Field__Integrating;
             bit_cnt_q__d = n7_0;
             is_tx_q__d = 1'b0;
             flag_passive_q__d = 1'b0;
             recovery_cnt__d = n7_0;
-            tx_q__d = 1'b1;
             last_bit_arb_q__d = 1'b0;
             ack_pending_q__d = 1'b0;
             delim_first_q__d = 1'b0;
             dom_cnt__d = zero3;
-            pending__d = 1'b0;
-            abort_pending__d = 1'b0;
-            attempt__d = 1'b0;
-            tx_failed_q__d = 1'b0;
-            tx_done_q__d = 1'b0;
-            arb_lost_q__d = 1'b0;
         end
     end
     
 endmodule // can_channel__bsp__fsm
-
-
-module can_channel__bsp__fsm__abort_pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__bsp__fsm__abort_pending
 
 
 module can_channel__bsp__fsm__ack_pending_q(d,q,clock);
@@ -3224,38 +3109,6 @@ module can_channel__bsp__fsm__ack_pending_q(d,q,clock);
     end
           
 endmodule // can_channel__bsp__fsm__ack_pending_q
-
-
-module can_channel__bsp__fsm__arb_lost_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__bsp__fsm__arb_lost_q
-
-
-module can_channel__bsp__fsm__attempt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__bsp__fsm__attempt
 
 
 module can_channel__bsp__fsm__bit_cnt_q(d,q,clock);
@@ -4089,22 +3942,6 @@ module can_channel__bsp__fsm__last_bit_arb_q(d,q,clock);
 endmodule // can_channel__bsp__fsm__last_bit_arb_q
 
 
-module can_channel__bsp__fsm__pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__bsp__fsm__pending
-
-
 module can_channel__bsp__fsm__recovery_cnt(d,q,clock);
     
     // Module arguments
@@ -4119,54 +3956,6 @@ module can_channel__bsp__fsm__recovery_cnt(d,q,clock);
     end
           
 endmodule // can_channel__bsp__fsm__recovery_cnt
-
-
-module can_channel__bsp__fsm__tx_done_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__bsp__fsm__tx_done_q
-
-
-module can_channel__bsp__fsm__tx_failed_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__bsp__fsm__tx_failed_q
-
-
-module can_channel__bsp__fsm__tx_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // can_channel__bsp__fsm__tx_q
 
 
 module can_channel__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
@@ -5410,6 +5199,404 @@ module can_channel__bsp__tx_frame__rtr_q(d,q,clock);
     end
           
 endmodule // can_channel__bsp__tx_frame__rtr_q
+
+
+module can_channel__bsp__tx_pin(clk,rst,bit_start,hard_sync,listen_only,field,is_tx,flag_passive,tx_starts,frame_bit,stuff_insert,stuff_last,crc_ok,tx);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  bit_start;
+    input wire  hard_sync;
+    input wire  listen_only;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  flag_passive;
+    input wire  tx_starts;
+    input wire  frame_bit;
+    input wire  stuff_insert;
+    input wire  stuff_last;
+    input wire  crc_ok;
+    output reg  tx;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  tx_q__d;
+    wire  tx_q__q;
+    reg  tx_q__clock;
+    
+    // Local signals
+    reg  tx_bit_n;
+    reg  tx_bit;
+    
+    // Sub module instances
+    can_channel__bsp__tx_pin__tx_q tx_q(
+        .d(tx_q__d),
+        .q(tx_q__q),
+        .clock(tx_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tx_q__clock = clk;
+        tx_q__d = tx_q__q;
+        tx_bit_n = 1'b1;
+        case (field)
+            Field__ErrorFlag:
+                begin
+                    tx_bit_n = flag_passive;
+                end
+            Field__OverloadFlag:
+                begin
+                    tx_bit_n = 1'b0;
+                end
+            Field__AckSlot:
+                begin
+                    tx_bit_n = is_tx || ~crc_ok;
+                end
+            default:
+                begin
+                    if (is_tx) begin
+                        if (stuff_insert) begin
+                            tx_bit_n = ~stuff_last;
+                        end
+                        else begin
+                            tx_bit_n = frame_bit;
+                        end
+                    end
+                end
+        endcase
+        tx_bit = tx_bit_n || listen_only;
+        if (bit_start) begin
+            if (hard_sync && (field == Field__Idle)) begin
+                tx_q__d = ~tx_starts;
+            end
+            else if (hard_sync && (field == Field__Intermission)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (hard_sync && (field == Field__Suspend)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (field == Field__Idle) begin
+                tx_q__d = ~tx_starts;
+            end
+            else begin
+                tx_q__d = tx_bit;
+            end
+        end
+        tx = tx_q__q;
+        if (rst) begin
+            tx_q__d = 1'b1;
+        end
+    end
+    
+endmodule // can_channel__bsp__tx_pin
+
+
+module can_channel__bsp__tx_pin__tx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_pin__tx_q
+
+
+module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  listen_only;
+    input wire  single_shot;
+    input wire  tx_req;
+    input wire  tx_abort;
+    output reg  tx_pending;
+    output reg  tx_failed;
+    output reg  tx_done;
+    output reg  arb_lost;
+    output reg  tx_load;
+    input wire  bus_off;
+    input wire  suspend_due;
+    input wire  is_tx;
+    input wire  tx_pin;
+    input wire  sample;
+    input wire  sof;
+    input wire  sof_as_tx;
+    input wire  sent;
+    input wire  lost;
+    input wire  error;
+    input wire  flag_error;
+    input wire  sof_error;
+    input wire  bus_off_after;
+    output reg  starts;
+    output reg  joins;
+    
+    // Stub signals
+    reg  pending__d;
+    wire  pending__q;
+    reg  pending__clock;
+    reg  abort_pending__d;
+    wire  abort_pending__q;
+    reg  abort_pending__clock;
+    reg  attempt__d;
+    wire  attempt__q;
+    reg  attempt__clock;
+    reg  tx_failed_q__d;
+    wire  tx_failed_q__q;
+    reg  tx_failed_q__clock;
+    reg  tx_done_q__d;
+    wire  tx_done_q__q;
+    reg  tx_done_q__clock;
+    reg  arb_lost_q__d;
+    wire  arb_lost_q__q;
+    reg  arb_lost_q__clock;
+    
+    // Local signals
+    reg  start_ok;
+    reg  join_ok;
+    
+    // Sub module instances
+    can_channel__bsp__tx_request__pending pending(
+        .d(pending__d),
+        .q(pending__q),
+        .clock(pending__clock)
+    );
+    can_channel__bsp__tx_request__abort_pending abort_pending(
+        .d(abort_pending__d),
+        .q(abort_pending__q),
+        .clock(abort_pending__clock)
+    );
+    can_channel__bsp__tx_request__attempt attempt(
+        .d(attempt__d),
+        .q(attempt__q),
+        .clock(attempt__clock)
+    );
+    can_channel__bsp__tx_request__tx_failed_q tx_failed_q(
+        .d(tx_failed_q__d),
+        .q(tx_failed_q__q),
+        .clock(tx_failed_q__clock)
+    );
+    can_channel__bsp__tx_request__tx_done_q tx_done_q(
+        .d(tx_done_q__d),
+        .q(tx_done_q__q),
+        .clock(tx_done_q__clock)
+    );
+    can_channel__bsp__tx_request__arb_lost_q arb_lost_q(
+        .d(arb_lost_q__d),
+        .q(arb_lost_q__q),
+        .clock(arb_lost_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        pending__clock = clk;
+        abort_pending__clock = clk;
+        attempt__clock = clk;
+        tx_failed_q__clock = clk;
+        tx_done_q__clock = clk;
+        arb_lost_q__clock = clk;
+        pending__d = pending__q;
+        abort_pending__d = abort_pending__q;
+        attempt__d = attempt__q;
+        tx_failed_q__d = tx_failed_q__q;
+        tx_done_q__d = tx_done_q__q;
+        arb_lost_q__d = arb_lost_q__q;
+        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
+        tx_failed_q__d = 1'b0;
+        if (~pending__q) begin
+            abort_pending__d = 1'b0;
+        end
+        if ((tx_abort || abort_pending__q) && pending__q) begin
+            if (~is_tx && tx_pin) begin
+                pending__d = 1'b0;
+                tx_failed_q__d = 1'b1;
+                abort_pending__d = 1'b0;
+            end
+            else begin
+                abort_pending__d = 1'b1;
+            end
+        end
+        join_ok = start_ok && ~suspend_due;
+        starts = (~tx_pin && pending__q) || start_ok;
+        joins = (~tx_pin && pending__q) || join_ok;
+        tx_done_q__d = 1'b0;
+        arb_lost_q__d = 1'b0;
+        if (lost) begin
+            arb_lost_q__d = 1'b1;
+        end
+        if (sent) begin
+            tx_done_q__d = 1'b1;
+            pending__d = 1'b0;
+            attempt__d = 1'b0;
+            abort_pending__d = 1'b0;
+        end
+        if (sample) begin
+            if (sof) begin
+                attempt__d = sof_as_tx;
+            end
+            if ((attempt__q && is_tx && (lost || error || flag_error)) || sof_error) begin
+                attempt__d = 1'b0;
+                if (single_shot || abort_pending__q) begin
+                    pending__d = 1'b0;
+                    tx_failed_q__d = 1'b1;
+                    abort_pending__d = 1'b0;
+                end
+            end
+            if (bus_off_after) begin
+                attempt__d = 1'b0;
+            end
+        end
+        tx_load = 1'b0;
+        if (tx_req && ~pending__q && listen_only) begin
+            tx_failed_q__d = 1'b1;
+        end
+        else if (tx_req && ~pending__q) begin
+            pending__d = 1'b1;
+            tx_load = 1'b1;
+        end
+        tx_pending = pending__q;
+        tx_done = tx_done_q__q;
+        arb_lost = arb_lost_q__q;
+        tx_failed = tx_failed_q__q;
+        if (rst) begin
+            pending__d = 1'b0;
+            abort_pending__d = 1'b0;
+            attempt__d = 1'b0;
+            tx_failed_q__d = 1'b0;
+            tx_done_q__d = 1'b0;
+            arb_lost_q__d = 1'b0;
+        end
+    end
+    
+endmodule // can_channel__bsp__tx_request
+
+
+module can_channel__bsp__tx_request__abort_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_request__abort_pending
+
+
+module can_channel__bsp__tx_request__arb_lost_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_request__arb_lost_q
+
+
+module can_channel__bsp__tx_request__attempt(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_request__attempt
+
+
+module can_channel__bsp__tx_request__pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_request__pending
+
+
+module can_channel__bsp__tx_request__tx_done_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_request__tx_done_q
+
+
+module can_channel__bsp__tx_request__tx_failed_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // can_channel__bsp__tx_request__tx_failed_q
 
 
 module can_channel__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);

@@ -238,6 +238,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  regs__ev_aux;
     reg  regs__ev_recover_a;
     reg  regs__ev_recover_b;
+    reg  regs__ext_hit;
+    reg  [31:0] regs__ext_word;
+    reg  regs__ext_writable;
+    reg  regs__ext_illegal;
+    reg  regs__ev_dmr;
+    wire  regs__wr_o;
     wire  regs__reset_mode;
     wire  regs__reset_mode_d;
     wire  regs__redundancy;
@@ -247,6 +253,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  [1:0] regs__mode_a;
     wire  [1:0] regs__mode_b;
     wire  regs__single_shot;
+    wire  regs__dmr;
     wire  [5:0] regs__brp;
     wire  [3:0] regs__tseg1;
     wire  [2:0] regs__tseg2;
@@ -262,6 +269,54 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  regs__pop;
     wire  [15:0] regs__switches;
     wire  [15:0] regs__recoveries;
+    reg  [5:0] dmr_check__adr;
+    reg  [31:0] dmr_check__wdat;
+    reg  dmr_check__reset_mode;
+    reg  [31:0] dmr_check__cfg_word;
+    reg  [31:0] dmr_check__time_word;
+    reg  [10:0] dmr_check__cs_id_dcl;
+    reg  [10:0] dmr_check__cs_id_rcl;
+    reg  [3:0] dmr_check__mb_sel;
+    reg  [15:0] dmr_check__mb_enable;
+    reg  [127:0] dmr_check__mb_limits;
+    reg  [30:0] dmr_check__mb_id_word;
+    reg  [28:0] dmr_check__mb_mask;
+    reg  [31:0] dmr_check__status_word;
+    reg  [31:0] dmr_check__cs_count_word;
+    reg  [31:0] dmr_check__rx_stats_word;
+    reg  [31:0] dmr_check__mb_state_word;
+    wire  dmr_check__hit;
+    wire  [31:0] dmr_check__word;
+    wire  dmr_check__writable;
+    wire  dmr_check__illegal;
+    reg  dmr_regs__clk;
+    reg  dmr_regs__rst;
+    reg  dmr_regs__wr;
+    reg  [5:0] dmr_regs__adr;
+    reg  [31:0] dmr_regs__wdat;
+    reg  dmr_regs__writable;
+    reg  dmr_regs__refused;
+    wire  [31:0] dmr_regs__cfg_word;
+    wire  [31:0] dmr_regs__time_word;
+    wire  [15:0] dmr_regs__timeout;
+    wire  [15:0] dmr_regs__cs_period;
+    wire  [15:0] dmr_regs__tick_bits;
+    wire  [15:0] dmr_regs__recovery_delay;
+    wire  [10:0] dmr_regs__cs_id_dcl;
+    wire  [10:0] dmr_regs__cs_id_rcl;
+    wire  [3:0] dmr_regs__mb_sel;
+    wire  [15:0] dmr_regs__mb_enable;
+    wire  [127:0] dmr_regs__mb_limits;
+    wire  dmr_regs__mb_we_id;
+    wire  dmr_regs__mb_we_mask;
+    reg  mailbox_cfg__clk;
+    reg  [3:0] mailbox_cfg__read_address;
+    wire  [30:0] mailbox_cfg__id_word;
+    wire  [28:0] mailbox_cfg__mask;
+    reg  [3:0] mailbox_cfg__write_address;
+    reg  mailbox_cfg__we_id;
+    reg  mailbox_cfg__we_mask;
+    reg  [30:0] mailbox_cfg__wdat;
     reg  [5:0] status__adr;
     wire  [31:0] status__word;
     reg  [3:0] status__state;
@@ -553,6 +608,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .ev_aux(regs__ev_aux),
         .ev_recover_a(regs__ev_recover_a),
         .ev_recover_b(regs__ev_recover_b),
+        .ext_hit(regs__ext_hit),
+        .ext_word(regs__ext_word),
+        .ext_writable(regs__ext_writable),
+        .ext_illegal(regs__ext_illegal),
+        .ev_dmr(regs__ev_dmr),
+        .wr_o(regs__wr_o),
         .reset_mode(regs__reset_mode),
         .reset_mode_d(regs__reset_mode_d),
         .redundancy(regs__redundancy),
@@ -562,6 +623,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .mode_a(regs__mode_a),
         .mode_b(regs__mode_b),
         .single_shot(regs__single_shot),
+        .dmr(regs__dmr),
         .brp(regs__brp),
         .tseg1(regs__tseg1),
         .tseg2(regs__tseg2),
@@ -577,6 +639,60 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .pop(regs__pop),
         .switches(regs__switches),
         .recoveries(regs__recoveries)
+    );
+    drcc__dmr_check dmr_check(
+        .adr(dmr_check__adr),
+        .wdat(dmr_check__wdat),
+        .reset_mode(dmr_check__reset_mode),
+        .cfg_word(dmr_check__cfg_word),
+        .time_word(dmr_check__time_word),
+        .cs_id_dcl(dmr_check__cs_id_dcl),
+        .cs_id_rcl(dmr_check__cs_id_rcl),
+        .mb_sel(dmr_check__mb_sel),
+        .mb_enable(dmr_check__mb_enable),
+        .mb_limits(dmr_check__mb_limits),
+        .mb_id_word(dmr_check__mb_id_word),
+        .mb_mask(dmr_check__mb_mask),
+        .status_word(dmr_check__status_word),
+        .cs_count_word(dmr_check__cs_count_word),
+        .rx_stats_word(dmr_check__rx_stats_word),
+        .mb_state_word(dmr_check__mb_state_word),
+        .hit(dmr_check__hit),
+        .word(dmr_check__word),
+        .writable(dmr_check__writable),
+        .illegal(dmr_check__illegal)
+    );
+    drcc__dmr_regs dmr_regs(
+        .clk(dmr_regs__clk),
+        .rst(dmr_regs__rst),
+        .wr(dmr_regs__wr),
+        .adr(dmr_regs__adr),
+        .wdat(dmr_regs__wdat),
+        .writable(dmr_regs__writable),
+        .refused(dmr_regs__refused),
+        .cfg_word(dmr_regs__cfg_word),
+        .time_word(dmr_regs__time_word),
+        .timeout(dmr_regs__timeout),
+        .cs_period(dmr_regs__cs_period),
+        .tick_bits(dmr_regs__tick_bits),
+        .recovery_delay(dmr_regs__recovery_delay),
+        .cs_id_dcl(dmr_regs__cs_id_dcl),
+        .cs_id_rcl(dmr_regs__cs_id_rcl),
+        .mb_sel(dmr_regs__mb_sel),
+        .mb_enable(dmr_regs__mb_enable),
+        .mb_limits(dmr_regs__mb_limits),
+        .mb_we_id(dmr_regs__mb_we_id),
+        .mb_we_mask(dmr_regs__mb_we_mask)
+    );
+    drcc__mailbox_cfg mailbox_cfg(
+        .clk(mailbox_cfg__clk),
+        .read_address(mailbox_cfg__read_address),
+        .id_word(mailbox_cfg__id_word),
+        .mask(mailbox_cfg__mask),
+        .write_address(mailbox_cfg__write_address),
+        .we_id(mailbox_cfg__we_id),
+        .we_mask(mailbox_cfg__we_mask),
+        .wdat(mailbox_cfg__wdat)
     );
     drcc__status status(
         .adr(status__adr),
@@ -887,6 +1003,40 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
         irq = regs__irq;
+        regs__ext_hit = dmr_check__hit;
+        regs__ext_word = dmr_check__word;
+        regs__ext_writable = dmr_check__writable;
+        regs__ext_illegal = dmr_check__illegal;
+        regs__ev_dmr = 1'b0;
+        dmr_check__adr = wb_adr_i;
+        dmr_check__wdat = wb_dat_i;
+        dmr_check__reset_mode = regs__reset_mode;
+        dmr_check__cfg_word = dmr_regs__cfg_word;
+        dmr_check__time_word = dmr_regs__time_word;
+        dmr_check__cs_id_dcl = dmr_regs__cs_id_dcl;
+        dmr_check__cs_id_rcl = dmr_regs__cs_id_rcl;
+        dmr_check__mb_sel = dmr_regs__mb_sel;
+        dmr_check__mb_enable = dmr_regs__mb_enable;
+        dmr_check__mb_limits = dmr_regs__mb_limits;
+        dmr_check__mb_id_word = mailbox_cfg__id_word;
+        dmr_check__mb_mask = mailbox_cfg__mask;
+        dmr_check__status_word = 32'h0;
+        dmr_check__cs_count_word = 32'h0;
+        dmr_check__rx_stats_word = 32'h0;
+        dmr_check__mb_state_word = 32'h0;
+        dmr_regs__clk = clk;
+        dmr_regs__rst = rst;
+        dmr_regs__wr = regs__wr_o;
+        dmr_regs__adr = wb_adr_i;
+        dmr_regs__wdat = wb_dat_i;
+        dmr_regs__writable = dmr_check__writable;
+        dmr_regs__refused = dmr_check__illegal;
+        mailbox_cfg__clk = clk;
+        mailbox_cfg__read_address = dmr_regs__mb_sel;
+        mailbox_cfg__write_address = dmr_regs__mb_sel;
+        mailbox_cfg__we_id = dmr_regs__mb_we_id;
+        mailbox_cfg__we_mask = dmr_regs__mb_we_mask;
+        mailbox_cfg__wdat = wb_dat_i[(32'h0)+:(31)];
         status__adr = wb_adr_i;
         status__reset_mode = regs__reset_mode;
         status__state = main__state;
@@ -2316,26 +2466,14 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  fsm__rst;
     reg  fsm__sample;
     reg  fsm__sampled;
-    reg  fsm__bit_start;
-    reg  fsm__hard_sync;
     wire  fsm__hard_sync_enable;
-    wire  fsm__tx;
     reg  fsm__listen_only;
     reg  fsm__loopback;
-    reg  fsm__single_shot;
-    reg  fsm__tx_req;
-    reg  fsm__tx_abort;
-    wire  fsm__tx_pending;
-    wire  fsm__tx_failed;
-    wire  fsm__tx_done;
-    wire  fsm__arb_lost;
-    wire  fsm__tx_load;
-    reg  fsm__frame_bit;
+    reg  fsm__tx_starts;
+    reg  fsm__tx_joins;
     reg  fsm__frame_ide;
-    reg  fsm__stuff_insert;
     reg  fsm__at_stuff_bit;
     reg  fsm__stuff_last;
-    reg  fsm__crc_ok;
     reg  fsm__no_data;
     reg  fsm__data_end;
     reg  fsm__error;
@@ -2347,7 +2485,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  fsm__ack_defer;
     reg  fsm__ack_counted;
     reg  fsm__error_passive;
-    reg  fsm__bus_off;
     wire  [4:0] fsm__field;
     wire  [5:0] fsm__bit_cnt;
     wire  [6:0] fsm__bit_cnt_inc;
@@ -2367,6 +2504,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  fsm__bc7;
     wire  fsm__in_crc_field;
     wire  fsm__sof;
+    wire  fsm__sof_as_tx;
     wire  fsm__stuff_stop;
     wire  fsm__stuff_resync;
     wire  fsm__crc_step;
@@ -2381,6 +2519,47 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  fsm__rx_publish;
     wire  fsm__tx_valid;
     wire  fsm__recovered;
+    wire  fsm__suspend_due;
+    reg  tx_request__clk;
+    reg  tx_request__rst;
+    reg  tx_request__listen_only;
+    reg  tx_request__single_shot;
+    reg  tx_request__tx_req;
+    reg  tx_request__tx_abort;
+    wire  tx_request__tx_pending;
+    wire  tx_request__tx_failed;
+    wire  tx_request__tx_done;
+    wire  tx_request__arb_lost;
+    wire  tx_request__tx_load;
+    reg  tx_request__bus_off;
+    reg  tx_request__suspend_due;
+    reg  tx_request__is_tx;
+    reg  tx_request__tx_pin;
+    reg  tx_request__sample;
+    reg  tx_request__sof;
+    reg  tx_request__sof_as_tx;
+    reg  tx_request__sent;
+    reg  tx_request__lost;
+    reg  tx_request__error;
+    reg  tx_request__flag_error;
+    reg  tx_request__sof_error;
+    reg  tx_request__bus_off_after;
+    wire  tx_request__starts;
+    wire  tx_request__joins;
+    reg  tx_pin__clk;
+    reg  tx_pin__rst;
+    reg  tx_pin__bit_start;
+    reg  tx_pin__hard_sync;
+    reg  tx_pin__listen_only;
+    reg  [4:0] tx_pin__field;
+    reg  tx_pin__is_tx;
+    reg  tx_pin__flag_passive;
+    reg  tx_pin__tx_starts;
+    reg  tx_pin__frame_bit;
+    reg  tx_pin__stuff_insert;
+    reg  tx_pin__stuff_last;
+    reg  tx_pin__crc_ok;
+    wire  tx_pin__tx;
     reg  stuffing__clk;
     reg  stuffing__rst;
     reg  stuffing__sample;
@@ -2547,26 +2726,14 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .rst(fsm__rst),
         .sample(fsm__sample),
         .sampled(fsm__sampled),
-        .bit_start(fsm__bit_start),
-        .hard_sync(fsm__hard_sync),
         .hard_sync_enable(fsm__hard_sync_enable),
-        .tx(fsm__tx),
         .listen_only(fsm__listen_only),
         .loopback(fsm__loopback),
-        .single_shot(fsm__single_shot),
-        .tx_req(fsm__tx_req),
-        .tx_abort(fsm__tx_abort),
-        .tx_pending(fsm__tx_pending),
-        .tx_failed(fsm__tx_failed),
-        .tx_done(fsm__tx_done),
-        .arb_lost(fsm__arb_lost),
-        .tx_load(fsm__tx_load),
-        .frame_bit(fsm__frame_bit),
+        .tx_starts(fsm__tx_starts),
+        .tx_joins(fsm__tx_joins),
         .frame_ide(fsm__frame_ide),
-        .stuff_insert(fsm__stuff_insert),
         .at_stuff_bit(fsm__at_stuff_bit),
         .stuff_last(fsm__stuff_last),
-        .crc_ok(fsm__crc_ok),
         .no_data(fsm__no_data),
         .data_end(fsm__data_end),
         .error(fsm__error),
@@ -2578,7 +2745,6 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .ack_defer(fsm__ack_defer),
         .ack_counted(fsm__ack_counted),
         .error_passive(fsm__error_passive),
-        .bus_off(fsm__bus_off),
         .field(fsm__field),
         .bit_cnt(fsm__bit_cnt),
         .bit_cnt_inc(fsm__bit_cnt_inc),
@@ -2598,6 +2764,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .bc7(fsm__bc7),
         .in_crc_field(fsm__in_crc_field),
         .sof(fsm__sof),
+        .sof_as_tx(fsm__sof_as_tx),
         .stuff_stop(fsm__stuff_stop),
         .stuff_resync(fsm__stuff_resync),
         .crc_step(fsm__crc_step),
@@ -2611,7 +2778,52 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .rx_take_data(fsm__rx_take_data),
         .rx_publish(fsm__rx_publish),
         .tx_valid(fsm__tx_valid),
-        .recovered(fsm__recovered)
+        .recovered(fsm__recovered),
+        .suspend_due(fsm__suspend_due)
+    );
+    drcc__chan_a__bsp__tx_request tx_request(
+        .clk(tx_request__clk),
+        .rst(tx_request__rst),
+        .listen_only(tx_request__listen_only),
+        .single_shot(tx_request__single_shot),
+        .tx_req(tx_request__tx_req),
+        .tx_abort(tx_request__tx_abort),
+        .tx_pending(tx_request__tx_pending),
+        .tx_failed(tx_request__tx_failed),
+        .tx_done(tx_request__tx_done),
+        .arb_lost(tx_request__arb_lost),
+        .tx_load(tx_request__tx_load),
+        .bus_off(tx_request__bus_off),
+        .suspend_due(tx_request__suspend_due),
+        .is_tx(tx_request__is_tx),
+        .tx_pin(tx_request__tx_pin),
+        .sample(tx_request__sample),
+        .sof(tx_request__sof),
+        .sof_as_tx(tx_request__sof_as_tx),
+        .sent(tx_request__sent),
+        .lost(tx_request__lost),
+        .error(tx_request__error),
+        .flag_error(tx_request__flag_error),
+        .sof_error(tx_request__sof_error),
+        .bus_off_after(tx_request__bus_off_after),
+        .starts(tx_request__starts),
+        .joins(tx_request__joins)
+    );
+    drcc__chan_a__bsp__tx_pin tx_pin(
+        .clk(tx_pin__clk),
+        .rst(tx_pin__rst),
+        .bit_start(tx_pin__bit_start),
+        .hard_sync(tx_pin__hard_sync),
+        .listen_only(tx_pin__listen_only),
+        .field(tx_pin__field),
+        .is_tx(tx_pin__is_tx),
+        .flag_passive(tx_pin__flag_passive),
+        .tx_starts(tx_pin__tx_starts),
+        .frame_bit(tx_pin__frame_bit),
+        .stuff_insert(tx_pin__stuff_insert),
+        .stuff_last(tx_pin__stuff_last),
+        .crc_ok(tx_pin__crc_ok),
+        .tx(tx_pin__tx)
     );
     drcc__chan_a__bsp__stuffing stuffing(
         .clk(stuffing__clk),
@@ -2788,6 +3000,10 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     always @(*) begin
         fsm__clk = clk;
         fsm__rst = rst;
+        tx_request__clk = clk;
+        tx_request__rst = rst;
+        tx_pin__clk = clk;
+        tx_pin__rst = rst;
         stuffing__clk = clk;
         stuffing__rst = rst;
         frame_crc__clk = clk;
@@ -2805,19 +3021,13 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         loopback = mode == mode_loopback;
         fsm__sample = sample;
         fsm__sampled = sampled;
-        fsm__bit_start = bit_start;
-        fsm__hard_sync = hard_sync;
         fsm__listen_only = listen_only;
         fsm__loopback = loopback;
-        fsm__single_shot = single_shot;
-        fsm__tx_req = tx_req;
-        fsm__tx_abort = tx_abort;
-        fsm__frame_bit = tx_frame__frame_bit;
+        fsm__tx_starts = tx_request__starts;
+        fsm__tx_joins = tx_request__joins;
         fsm__frame_ide = tx_frame__frame_ide;
-        fsm__stuff_insert = stuffing__insert;
         fsm__at_stuff_bit = stuffing__at_stuff_bit;
         fsm__stuff_last = stuffing__last;
-        fsm__crc_ok = frame_crc__crc_ok;
         fsm__no_data = rx_frame__no_data;
         fsm__data_end = rx_frame__data_end;
         fsm__error = detect__error;
@@ -2829,7 +3039,34 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fsm__ack_defer = rules__ack_defer;
         fsm__ack_counted = rules__ack_counted;
         fsm__error_passive = fc__error_passive;
-        fsm__bus_off = fc__bus_off;
+        tx_request__listen_only = listen_only;
+        tx_request__single_shot = single_shot;
+        tx_request__tx_req = tx_req;
+        tx_request__tx_abort = tx_abort;
+        tx_request__bus_off = fc__bus_off;
+        tx_request__suspend_due = fsm__suspend_due;
+        tx_request__is_tx = fsm__is_tx;
+        tx_request__tx_pin = tx_pin__tx;
+        tx_request__sample = sample;
+        tx_request__sof = fsm__sof;
+        tx_request__sof_as_tx = fsm__sof_as_tx;
+        tx_request__sent = fsm__tx_valid;
+        tx_request__lost = detect__lost;
+        tx_request__error = detect__error;
+        tx_request__flag_error = detect__flag_error;
+        tx_request__sof_error = detect__sof_error;
+        tx_request__bus_off_after = rules__bus_off_after;
+        tx_pin__bit_start = bit_start;
+        tx_pin__hard_sync = hard_sync;
+        tx_pin__listen_only = listen_only;
+        tx_pin__field = fsm__field;
+        tx_pin__is_tx = fsm__is_tx;
+        tx_pin__flag_passive = fsm__flag_passive;
+        tx_pin__tx_starts = tx_request__starts;
+        tx_pin__frame_bit = tx_frame__frame_bit;
+        tx_pin__stuff_insert = stuffing__insert;
+        tx_pin__stuff_last = stuffing__last;
+        tx_pin__crc_ok = frame_crc__crc_ok;
         stuffing__sample = sample;
         stuffing__sampled = sampled;
         stuffing__start = fsm__sof;
@@ -2841,7 +3078,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         frame_crc__check = fsm__crc_check;
         frame_crc__in_crc_field = fsm__in_crc_field;
         frame_crc__bit_cnt = fsm__bit_cnt[(32'h0)+:(4)];
-        tx_frame__load = fsm__tx_load;
+        tx_frame__load = tx_request__tx_load;
         tx_frame__id = tx_id;
         tx_frame__ide = tx_ide;
         tx_frame__rtr = tx_rtr;
@@ -2866,7 +3103,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         detect__sampled = sampled;
         detect__field = fsm__field;
         detect__is_tx = fsm__is_tx;
-        detect__tx_bit = fsm__tx;
+        detect__tx_bit = tx_pin__tx;
         detect__in_frame = fsm__in_frame;
         detect__in_arbitration = fsm__in_arbitration;
         detect__ack_slot = fsm__ack_slot;
@@ -2886,7 +3123,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         rules__at_stuff_bit = stuffing__at_stuff_bit;
         rules__field = fsm__field;
         rules__is_tx = fsm__is_tx;
-        rules__tx_bit = fsm__tx;
+        rules__tx_bit = tx_pin__tx;
         rules__flag_passive = fsm__flag_passive;
         rules__in_delim = fsm__in_delim;
         rules__after_error_flag = fsm__after_error_flag;
@@ -2923,11 +3160,11 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         err_capture__field = fsm__field;
         err_capture__bit_cnt = fsm__bit_cnt[(32'h0)+:(5)];
         hard_sync_enable = fsm__hard_sync_enable;
-        tx = fsm__tx;
-        tx_pending = fsm__tx_pending;
-        tx_failed = fsm__tx_failed;
-        tx_done = fsm__tx_done;
-        arb_lost = fsm__arb_lost;
+        tx = tx_pin__tx;
+        tx_pending = tx_request__tx_pending;
+        tx_failed = tx_request__tx_failed;
+        tx_done = tx_request__tx_done;
+        arb_lost = tx_request__arb_lost;
         rx_valid = rx_frame__rx_valid;
         rx_id = rx_frame__rx_id;
         rx_ide = rx_frame__rx_ide;
@@ -4034,33 +4271,21 @@ module drcc__chan_a__bsp__frame_crc__p_crc_bit(d,q,clock);
 endmodule // drcc__chan_a__bsp__frame_crc__p_crc_bit
 
 
-module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,listen_only,loopback,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,frame_bit,frame_ide,stuff_insert,at_stuff_bit,stuff_last,crc_ok,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,bus_off,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered);
+module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  sample;
     input wire  sampled;
-    input wire  bit_start;
-    input wire  hard_sync;
     output reg  hard_sync_enable;
-    output reg  tx;
     input wire  listen_only;
     input wire  loopback;
-    input wire  single_shot;
-    input wire  tx_req;
-    input wire  tx_abort;
-    output reg  tx_pending;
-    output reg  tx_failed;
-    output reg  tx_done;
-    output reg  arb_lost;
-    output reg  tx_load;
-    input wire  frame_bit;
+    input wire  tx_starts;
+    input wire  tx_joins;
     input wire  frame_ide;
-    input wire  stuff_insert;
     input wire  at_stuff_bit;
     input wire  stuff_last;
-    input wire  crc_ok;
     input wire  no_data;
     input wire  data_end;
     input wire  error;
@@ -4072,7 +4297,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     input wire  ack_defer;
     input wire  ack_counted;
     input wire  error_passive;
-    input wire  bus_off;
     output reg  [4:0] field;
     output reg  [5:0] bit_cnt;
     output reg  [6:0] bit_cnt_inc;
@@ -4092,6 +4316,7 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     output reg  bc7;
     output reg  in_crc_field;
     output reg  sof;
+    output reg  sof_as_tx;
     output reg  stuff_stop;
     output reg  stuff_resync;
     output reg  crc_step;
@@ -4106,6 +4331,7 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     output reg  rx_publish;
     output reg  tx_valid;
     output reg  recovered;
+    output reg  suspend_due;
     
     // Constant declarations
     localparam  n7_0 = 7'b0;
@@ -4154,9 +4380,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     reg  [6:0] recovery_cnt__d;
     wire  [6:0] recovery_cnt__q;
     reg  recovery_cnt__clock;
-    reg  tx_q__d;
-    wire  tx_q__q;
-    reg  tx_q__clock;
     reg  last_bit_arb_q__d;
     wire  last_bit_arb_q__q;
     reg  last_bit_arb_q__clock;
@@ -4169,24 +4392,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     reg  [2:0] dom_cnt__d;
     wire  [2:0] dom_cnt__q;
     reg  dom_cnt__clock;
-    reg  pending__d;
-    wire  pending__q;
-    reg  pending__clock;
-    reg  abort_pending__d;
-    wire  abort_pending__q;
-    reg  abort_pending__clock;
-    reg  attempt__d;
-    wire  attempt__q;
-    reg  attempt__clock;
-    reg  tx_failed_q__d;
-    wire  tx_failed_q__q;
-    reg  tx_failed_q__clock;
-    reg  tx_done_q__d;
-    wire  tx_done_q__q;
-    reg  tx_done_q__clock;
-    reg  arb_lost_q__d;
-    wire  arb_lost_q__q;
-    reg  arb_lost_q__clock;
     reg  decode__clk;
     reg  [4:0] decode__field;
     reg  [6:0] decode__bit_cnt;
@@ -4219,13 +4424,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     reg  [6:0] bit_cnt_n;
     reg  is_tx_n;
     reg  flag_passive_n;
-    reg  tx_bit_n;
-    reg  tx_bit;
-    reg  start_ok;
-    reg  join_ok;
-    reg  starts;
-    reg  join_starts;
-    reg  sof_as_tx;
     reg  monitor;
     
     // Sub module instances
@@ -4254,11 +4452,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         .q(recovery_cnt__q),
         .clock(recovery_cnt__clock)
     );
-    drcc__chan_a__bsp__fsm__tx_q tx_q(
-        .d(tx_q__d),
-        .q(tx_q__q),
-        .clock(tx_q__clock)
-    );
     drcc__chan_a__bsp__fsm__last_bit_arb_q last_bit_arb_q(
         .d(last_bit_arb_q__d),
         .q(last_bit_arb_q__q),
@@ -4278,36 +4471,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         .d(dom_cnt__d),
         .q(dom_cnt__q),
         .clock(dom_cnt__clock)
-    );
-    drcc__chan_a__bsp__fsm__pending pending(
-        .d(pending__d),
-        .q(pending__q),
-        .clock(pending__clock)
-    );
-    drcc__chan_a__bsp__fsm__abort_pending abort_pending(
-        .d(abort_pending__d),
-        .q(abort_pending__q),
-        .clock(abort_pending__clock)
-    );
-    drcc__chan_a__bsp__fsm__attempt attempt(
-        .d(attempt__d),
-        .q(attempt__q),
-        .clock(attempt__clock)
-    );
-    drcc__chan_a__bsp__fsm__tx_failed_q tx_failed_q(
-        .d(tx_failed_q__d),
-        .q(tx_failed_q__q),
-        .clock(tx_failed_q__clock)
-    );
-    drcc__chan_a__bsp__fsm__tx_done_q tx_done_q(
-        .d(tx_done_q__d),
-        .q(tx_done_q__q),
-        .clock(tx_done_q__clock)
-    );
-    drcc__chan_a__bsp__fsm__arb_lost_q arb_lost_q(
-        .d(arb_lost_q__d),
-        .q(arb_lost_q__q),
-        .clock(arb_lost_q__clock)
     );
     drcc__chan_a__bsp__fsm__decode decode(
         .clk(decode__clk),
@@ -4345,33 +4508,19 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         is_tx_q__clock = clk;
         flag_passive_q__clock = clk;
         recovery_cnt__clock = clk;
-        tx_q__clock = clk;
         last_bit_arb_q__clock = clk;
         ack_pending_q__clock = clk;
         delim_first_q__clock = clk;
         dom_cnt__clock = clk;
-        pending__clock = clk;
-        abort_pending__clock = clk;
-        attempt__clock = clk;
-        tx_failed_q__clock = clk;
-        tx_done_q__clock = clk;
-        arb_lost_q__clock = clk;
         field_q__d = field_q__q;
         bit_cnt_q__d = bit_cnt_q__q;
         is_tx_q__d = is_tx_q__q;
         flag_passive_q__d = flag_passive_q__q;
         recovery_cnt__d = recovery_cnt__q;
-        tx_q__d = tx_q__q;
         last_bit_arb_q__d = last_bit_arb_q__q;
         ack_pending_q__d = ack_pending_q__q;
         delim_first_q__d = delim_first_q__q;
         dom_cnt__d = dom_cnt__q;
-        pending__d = pending__q;
-        abort_pending__d = abort_pending__q;
-        attempt__d = attempt__q;
-        tx_failed_q__d = tx_failed_q__q;
-        tx_done_q__d = tx_done_q__q;
-        arb_lost_q__d = arb_lost_q__q;
         decode__clk = clk;
         decode__field = field_q__q;
         decode__bit_cnt = bit_cnt_q__q;
@@ -4385,26 +4534,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         bit_cnt_inc = bit_cnt_q__q + n7_1;
         is_tx_n = is_tx_q__q;
         flag_passive_n = flag_passive_q__q;
-        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
-        tx_failed_q__d = 1'b0;
-        if (~pending__q) begin
-            abort_pending__d = 1'b0;
-        end
-        if ((tx_abort || abort_pending__q) && pending__q) begin
-            if (~is_tx_q__q && tx_q__q) begin
-                pending__d = 1'b0;
-                tx_failed_q__d = 1'b1;
-                abort_pending__d = 1'b0;
-            end
-            else begin
-                abort_pending__d = 1'b1;
-            end
-        end
-        join_ok = start_ok && ~decode__suspend_due;
-        starts = (~tx_q__q && pending__q) || start_ok;
-        join_starts = (~tx_q__q && pending__q) || join_ok;
-        tx_done_q__d = 1'b0;
-        arb_lost_q__d = 1'b0;
         sof = 1'b0;
         sof_as_tx = 1'b0;
         stuff_stop = 1'b0;
@@ -4427,7 +4556,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
             crc_step = decode__crc_covered;
             if (lost) begin
                 is_tx_n = 1'b0;
-                arb_lost_q__d = 1'b1;
             end
             case (field_q__q)
                 Field__Integrating:
@@ -4449,7 +4577,7 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                     begin
                         if (~sampled) begin
                             sof = 1'b1;
-                            sof_as_tx = starts;
+                            sof_as_tx = tx_starts;
                         end
                         else if (sof_error) begin
                             is_tx_n = 1'b1;
@@ -4473,7 +4601,7 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                         if (~sampled) begin
                             if (decode__bc2) begin
                                 sof = 1'b1;
-                                sof_as_tx = join_starts;
+                                sof_as_tx = tx_joins;
                             end
                             else begin
                                 field_n = Field__OverloadFlag;
@@ -4613,10 +4741,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                             end
                             if (decode__bc6) begin
                                 if (is_tx_q__q) begin
-                                    tx_done_q__d = 1'b1;
-                                    pending__d = 1'b0;
-                                    attempt__d = 1'b0;
-                                    abort_pending__d = 1'b0;
                                     tx_valid = 1'b1;
                                 end
                                 field_n = Field__Intermission;
@@ -4730,7 +4854,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                 field_n = Field__IdA;
                 bit_cnt_n = n7_0;
                 is_tx_n = sof_as_tx;
-                attempt__d = sof_as_tx;
             end
             if (error || flag_error) begin
                 field_n = Field__ErrorFlag;
@@ -4741,18 +4864,9 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
             if (ack_defer) begin
                 ack_pending_q__d = 1'b1;
             end
-            if ((attempt__q && is_tx_q__q && (lost || error || flag_error)) || sof_error) begin
-                attempt__d = 1'b0;
-                if (single_shot || abort_pending__q) begin
-                    pending__d = 1'b0;
-                    tx_failed_q__d = 1'b1;
-                    abort_pending__d = 1'b0;
-                end
-            end
             if (bus_off_after) begin
                 field_n = Field__BusOff;
                 is_tx_n = 1'b0;
-                attempt__d = 1'b0;
                 bit_cnt_n = n7_0;
                 recovery_cnt__d = n7_0;
             end
@@ -4760,58 +4874,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
             bit_cnt_q__d = bit_cnt_n;
             is_tx_q__d = is_tx_n;
             flag_passive_q__d = flag_passive_n;
-        end
-        tx_bit_n = 1'b1;
-        case (field_q__q)
-            Field__ErrorFlag:
-                begin
-                    tx_bit_n = flag_passive_q__q;
-                end
-            Field__OverloadFlag:
-                begin
-                    tx_bit_n = 1'b0;
-                end
-            Field__AckSlot:
-                begin
-                    tx_bit_n = is_tx_q__q || ~crc_ok;
-                end
-            default:
-                begin
-                    if (is_tx_q__q) begin
-                        if (stuff_insert) begin
-                            tx_bit_n = ~stuff_last;
-                        end
-                        else begin
-                            tx_bit_n = frame_bit;
-                        end
-                    end
-                end
-        endcase
-        tx_bit = tx_bit_n || listen_only;
-        if (bit_start) begin
-            if (hard_sync && (field_q__q == Field__Idle)) begin
-                tx_q__d = ~starts;
-            end
-            else if (hard_sync && (field_q__q == Field__Intermission)) begin
-                tx_q__d = 1'b1;
-            end
-            else if (hard_sync && (field_q__q == Field__Suspend)) begin
-                tx_q__d = 1'b1;
-            end
-            else if (field_q__q == Field__Idle) begin
-                tx_q__d = ~starts;
-            end
-            else begin
-                tx_q__d = tx_bit;
-            end
-        end
-        tx_load = 1'b0;
-        if (tx_req && ~pending__q && listen_only) begin
-            tx_failed_q__d = 1'b1;
-        end
-        else if (tx_req && ~pending__q) begin
-            pending__d = 1'b1;
-            tx_load = 1'b1;
         end
         case (field_q__q)
             Field__Integrating:
@@ -4839,11 +4901,6 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                     hard_sync_enable = 1'b0;
                 end
         endcase
-        tx = tx_q__q;
-        tx_pending = pending__q;
-        tx_done = tx_done_q__q;
-        arb_lost = arb_lost_q__q;
-        tx_failed = tx_failed_q__q;
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
@@ -4861,43 +4918,21 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         delim_first = delim_first_q__q;
         ack_pending = ack_pending_q__q;
         in_crc_field = field_q__q == Field__Crc;
+        suspend_due = decode__suspend_due;
         if (rst) begin
             field_q__d = Field__Integrating;
             bit_cnt_q__d = n7_0;
             is_tx_q__d = 1'b0;
             flag_passive_q__d = 1'b0;
             recovery_cnt__d = n7_0;
-            tx_q__d = 1'b1;
             last_bit_arb_q__d = 1'b0;
             ack_pending_q__d = 1'b0;
             delim_first_q__d = 1'b0;
             dom_cnt__d = zero3;
-            pending__d = 1'b0;
-            abort_pending__d = 1'b0;
-            attempt__d = 1'b0;
-            tx_failed_q__d = 1'b0;
-            tx_done_q__d = 1'b0;
-            arb_lost_q__d = 1'b0;
         end
     end
     
 endmodule // drcc__chan_a__bsp__fsm
-
-
-module drcc__chan_a__bsp__fsm__abort_pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__fsm__abort_pending
 
 
 module drcc__chan_a__bsp__fsm__ack_pending_q(d,q,clock);
@@ -4914,38 +4949,6 @@ module drcc__chan_a__bsp__fsm__ack_pending_q(d,q,clock);
     end
           
 endmodule // drcc__chan_a__bsp__fsm__ack_pending_q
-
-
-module drcc__chan_a__bsp__fsm__arb_lost_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__fsm__arb_lost_q
-
-
-module drcc__chan_a__bsp__fsm__attempt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__fsm__attempt
 
 
 module drcc__chan_a__bsp__fsm__bit_cnt_q(d,q,clock);
@@ -5779,22 +5782,6 @@ module drcc__chan_a__bsp__fsm__last_bit_arb_q(d,q,clock);
 endmodule // drcc__chan_a__bsp__fsm__last_bit_arb_q
 
 
-module drcc__chan_a__bsp__fsm__pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__fsm__pending
-
-
 module drcc__chan_a__bsp__fsm__recovery_cnt(d,q,clock);
     
     // Module arguments
@@ -5809,54 +5796,6 @@ module drcc__chan_a__bsp__fsm__recovery_cnt(d,q,clock);
     end
           
 endmodule // drcc__chan_a__bsp__fsm__recovery_cnt
-
-
-module drcc__chan_a__bsp__fsm__tx_done_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__fsm__tx_done_q
-
-
-module drcc__chan_a__bsp__fsm__tx_failed_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__fsm__tx_failed_q
-
-
-module drcc__chan_a__bsp__fsm__tx_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__fsm__tx_q
 
 
 module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
@@ -7100,6 +7039,404 @@ module drcc__chan_a__bsp__tx_frame__rtr_q(d,q,clock);
     end
           
 endmodule // drcc__chan_a__bsp__tx_frame__rtr_q
+
+
+module drcc__chan_a__bsp__tx_pin(clk,rst,bit_start,hard_sync,listen_only,field,is_tx,flag_passive,tx_starts,frame_bit,stuff_insert,stuff_last,crc_ok,tx);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  bit_start;
+    input wire  hard_sync;
+    input wire  listen_only;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  flag_passive;
+    input wire  tx_starts;
+    input wire  frame_bit;
+    input wire  stuff_insert;
+    input wire  stuff_last;
+    input wire  crc_ok;
+    output reg  tx;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  tx_q__d;
+    wire  tx_q__q;
+    reg  tx_q__clock;
+    
+    // Local signals
+    reg  tx_bit_n;
+    reg  tx_bit;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__tx_pin__tx_q tx_q(
+        .d(tx_q__d),
+        .q(tx_q__q),
+        .clock(tx_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tx_q__clock = clk;
+        tx_q__d = tx_q__q;
+        tx_bit_n = 1'b1;
+        case (field)
+            Field__ErrorFlag:
+                begin
+                    tx_bit_n = flag_passive;
+                end
+            Field__OverloadFlag:
+                begin
+                    tx_bit_n = 1'b0;
+                end
+            Field__AckSlot:
+                begin
+                    tx_bit_n = is_tx || ~crc_ok;
+                end
+            default:
+                begin
+                    if (is_tx) begin
+                        if (stuff_insert) begin
+                            tx_bit_n = ~stuff_last;
+                        end
+                        else begin
+                            tx_bit_n = frame_bit;
+                        end
+                    end
+                end
+        endcase
+        tx_bit = tx_bit_n || listen_only;
+        if (bit_start) begin
+            if (hard_sync && (field == Field__Idle)) begin
+                tx_q__d = ~tx_starts;
+            end
+            else if (hard_sync && (field == Field__Intermission)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (hard_sync && (field == Field__Suspend)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (field == Field__Idle) begin
+                tx_q__d = ~tx_starts;
+            end
+            else begin
+                tx_q__d = tx_bit;
+            end
+        end
+        tx = tx_q__q;
+        if (rst) begin
+            tx_q__d = 1'b1;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__tx_pin
+
+
+module drcc__chan_a__bsp__tx_pin__tx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__tx_pin__tx_q
+
+
+module drcc__chan_a__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  listen_only;
+    input wire  single_shot;
+    input wire  tx_req;
+    input wire  tx_abort;
+    output reg  tx_pending;
+    output reg  tx_failed;
+    output reg  tx_done;
+    output reg  arb_lost;
+    output reg  tx_load;
+    input wire  bus_off;
+    input wire  suspend_due;
+    input wire  is_tx;
+    input wire  tx_pin;
+    input wire  sample;
+    input wire  sof;
+    input wire  sof_as_tx;
+    input wire  sent;
+    input wire  lost;
+    input wire  error;
+    input wire  flag_error;
+    input wire  sof_error;
+    input wire  bus_off_after;
+    output reg  starts;
+    output reg  joins;
+    
+    // Stub signals
+    reg  pending__d;
+    wire  pending__q;
+    reg  pending__clock;
+    reg  abort_pending__d;
+    wire  abort_pending__q;
+    reg  abort_pending__clock;
+    reg  attempt__d;
+    wire  attempt__q;
+    reg  attempt__clock;
+    reg  tx_failed_q__d;
+    wire  tx_failed_q__q;
+    reg  tx_failed_q__clock;
+    reg  tx_done_q__d;
+    wire  tx_done_q__q;
+    reg  tx_done_q__clock;
+    reg  arb_lost_q__d;
+    wire  arb_lost_q__q;
+    reg  arb_lost_q__clock;
+    
+    // Local signals
+    reg  start_ok;
+    reg  join_ok;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__tx_request__pending pending(
+        .d(pending__d),
+        .q(pending__q),
+        .clock(pending__clock)
+    );
+    drcc__chan_a__bsp__tx_request__abort_pending abort_pending(
+        .d(abort_pending__d),
+        .q(abort_pending__q),
+        .clock(abort_pending__clock)
+    );
+    drcc__chan_a__bsp__tx_request__attempt attempt(
+        .d(attempt__d),
+        .q(attempt__q),
+        .clock(attempt__clock)
+    );
+    drcc__chan_a__bsp__tx_request__tx_failed_q tx_failed_q(
+        .d(tx_failed_q__d),
+        .q(tx_failed_q__q),
+        .clock(tx_failed_q__clock)
+    );
+    drcc__chan_a__bsp__tx_request__tx_done_q tx_done_q(
+        .d(tx_done_q__d),
+        .q(tx_done_q__q),
+        .clock(tx_done_q__clock)
+    );
+    drcc__chan_a__bsp__tx_request__arb_lost_q arb_lost_q(
+        .d(arb_lost_q__d),
+        .q(arb_lost_q__q),
+        .clock(arb_lost_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        pending__clock = clk;
+        abort_pending__clock = clk;
+        attempt__clock = clk;
+        tx_failed_q__clock = clk;
+        tx_done_q__clock = clk;
+        arb_lost_q__clock = clk;
+        pending__d = pending__q;
+        abort_pending__d = abort_pending__q;
+        attempt__d = attempt__q;
+        tx_failed_q__d = tx_failed_q__q;
+        tx_done_q__d = tx_done_q__q;
+        arb_lost_q__d = arb_lost_q__q;
+        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
+        tx_failed_q__d = 1'b0;
+        if (~pending__q) begin
+            abort_pending__d = 1'b0;
+        end
+        if ((tx_abort || abort_pending__q) && pending__q) begin
+            if (~is_tx && tx_pin) begin
+                pending__d = 1'b0;
+                tx_failed_q__d = 1'b1;
+                abort_pending__d = 1'b0;
+            end
+            else begin
+                abort_pending__d = 1'b1;
+            end
+        end
+        join_ok = start_ok && ~suspend_due;
+        starts = (~tx_pin && pending__q) || start_ok;
+        joins = (~tx_pin && pending__q) || join_ok;
+        tx_done_q__d = 1'b0;
+        arb_lost_q__d = 1'b0;
+        if (lost) begin
+            arb_lost_q__d = 1'b1;
+        end
+        if (sent) begin
+            tx_done_q__d = 1'b1;
+            pending__d = 1'b0;
+            attempt__d = 1'b0;
+            abort_pending__d = 1'b0;
+        end
+        if (sample) begin
+            if (sof) begin
+                attempt__d = sof_as_tx;
+            end
+            if ((attempt__q && is_tx && (lost || error || flag_error)) || sof_error) begin
+                attempt__d = 1'b0;
+                if (single_shot || abort_pending__q) begin
+                    pending__d = 1'b0;
+                    tx_failed_q__d = 1'b1;
+                    abort_pending__d = 1'b0;
+                end
+            end
+            if (bus_off_after) begin
+                attempt__d = 1'b0;
+            end
+        end
+        tx_load = 1'b0;
+        if (tx_req && ~pending__q && listen_only) begin
+            tx_failed_q__d = 1'b1;
+        end
+        else if (tx_req && ~pending__q) begin
+            pending__d = 1'b1;
+            tx_load = 1'b1;
+        end
+        tx_pending = pending__q;
+        tx_done = tx_done_q__q;
+        arb_lost = arb_lost_q__q;
+        tx_failed = tx_failed_q__q;
+        if (rst) begin
+            pending__d = 1'b0;
+            abort_pending__d = 1'b0;
+            attempt__d = 1'b0;
+            tx_failed_q__d = 1'b0;
+            tx_done_q__d = 1'b0;
+            arb_lost_q__d = 1'b0;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__tx_request
+
+
+module drcc__chan_a__bsp__tx_request__abort_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__tx_request__abort_pending
+
+
+module drcc__chan_a__bsp__tx_request__arb_lost_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__tx_request__arb_lost_q
+
+
+module drcc__chan_a__bsp__tx_request__attempt(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__tx_request__attempt
+
+
+module drcc__chan_a__bsp__tx_request__pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__tx_request__pending
+
+
+module drcc__chan_a__bsp__tx_request__tx_done_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__tx_request__tx_done_q
+
+
+module drcc__chan_a__bsp__tx_request__tx_failed_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__tx_request__tx_failed_q
 
 
 module drcc__chan_a__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
@@ -8620,26 +8957,14 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  fsm__rst;
     reg  fsm__sample;
     reg  fsm__sampled;
-    reg  fsm__bit_start;
-    reg  fsm__hard_sync;
     wire  fsm__hard_sync_enable;
-    wire  fsm__tx;
     reg  fsm__listen_only;
     reg  fsm__loopback;
-    reg  fsm__single_shot;
-    reg  fsm__tx_req;
-    reg  fsm__tx_abort;
-    wire  fsm__tx_pending;
-    wire  fsm__tx_failed;
-    wire  fsm__tx_done;
-    wire  fsm__arb_lost;
-    wire  fsm__tx_load;
-    reg  fsm__frame_bit;
+    reg  fsm__tx_starts;
+    reg  fsm__tx_joins;
     reg  fsm__frame_ide;
-    reg  fsm__stuff_insert;
     reg  fsm__at_stuff_bit;
     reg  fsm__stuff_last;
-    reg  fsm__crc_ok;
     reg  fsm__no_data;
     reg  fsm__data_end;
     reg  fsm__error;
@@ -8651,7 +8976,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  fsm__ack_defer;
     reg  fsm__ack_counted;
     reg  fsm__error_passive;
-    reg  fsm__bus_off;
     wire  [4:0] fsm__field;
     wire  [5:0] fsm__bit_cnt;
     wire  [6:0] fsm__bit_cnt_inc;
@@ -8671,6 +8995,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  fsm__bc7;
     wire  fsm__in_crc_field;
     wire  fsm__sof;
+    wire  fsm__sof_as_tx;
     wire  fsm__stuff_stop;
     wire  fsm__stuff_resync;
     wire  fsm__crc_step;
@@ -8685,6 +9010,47 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  fsm__rx_publish;
     wire  fsm__tx_valid;
     wire  fsm__recovered;
+    wire  fsm__suspend_due;
+    reg  tx_request__clk;
+    reg  tx_request__rst;
+    reg  tx_request__listen_only;
+    reg  tx_request__single_shot;
+    reg  tx_request__tx_req;
+    reg  tx_request__tx_abort;
+    wire  tx_request__tx_pending;
+    wire  tx_request__tx_failed;
+    wire  tx_request__tx_done;
+    wire  tx_request__arb_lost;
+    wire  tx_request__tx_load;
+    reg  tx_request__bus_off;
+    reg  tx_request__suspend_due;
+    reg  tx_request__is_tx;
+    reg  tx_request__tx_pin;
+    reg  tx_request__sample;
+    reg  tx_request__sof;
+    reg  tx_request__sof_as_tx;
+    reg  tx_request__sent;
+    reg  tx_request__lost;
+    reg  tx_request__error;
+    reg  tx_request__flag_error;
+    reg  tx_request__sof_error;
+    reg  tx_request__bus_off_after;
+    wire  tx_request__starts;
+    wire  tx_request__joins;
+    reg  tx_pin__clk;
+    reg  tx_pin__rst;
+    reg  tx_pin__bit_start;
+    reg  tx_pin__hard_sync;
+    reg  tx_pin__listen_only;
+    reg  [4:0] tx_pin__field;
+    reg  tx_pin__is_tx;
+    reg  tx_pin__flag_passive;
+    reg  tx_pin__tx_starts;
+    reg  tx_pin__frame_bit;
+    reg  tx_pin__stuff_insert;
+    reg  tx_pin__stuff_last;
+    reg  tx_pin__crc_ok;
+    wire  tx_pin__tx;
     reg  stuffing__clk;
     reg  stuffing__rst;
     reg  stuffing__sample;
@@ -8851,26 +9217,14 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .rst(fsm__rst),
         .sample(fsm__sample),
         .sampled(fsm__sampled),
-        .bit_start(fsm__bit_start),
-        .hard_sync(fsm__hard_sync),
         .hard_sync_enable(fsm__hard_sync_enable),
-        .tx(fsm__tx),
         .listen_only(fsm__listen_only),
         .loopback(fsm__loopback),
-        .single_shot(fsm__single_shot),
-        .tx_req(fsm__tx_req),
-        .tx_abort(fsm__tx_abort),
-        .tx_pending(fsm__tx_pending),
-        .tx_failed(fsm__tx_failed),
-        .tx_done(fsm__tx_done),
-        .arb_lost(fsm__arb_lost),
-        .tx_load(fsm__tx_load),
-        .frame_bit(fsm__frame_bit),
+        .tx_starts(fsm__tx_starts),
+        .tx_joins(fsm__tx_joins),
         .frame_ide(fsm__frame_ide),
-        .stuff_insert(fsm__stuff_insert),
         .at_stuff_bit(fsm__at_stuff_bit),
         .stuff_last(fsm__stuff_last),
-        .crc_ok(fsm__crc_ok),
         .no_data(fsm__no_data),
         .data_end(fsm__data_end),
         .error(fsm__error),
@@ -8882,7 +9236,6 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .ack_defer(fsm__ack_defer),
         .ack_counted(fsm__ack_counted),
         .error_passive(fsm__error_passive),
-        .bus_off(fsm__bus_off),
         .field(fsm__field),
         .bit_cnt(fsm__bit_cnt),
         .bit_cnt_inc(fsm__bit_cnt_inc),
@@ -8902,6 +9255,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .bc7(fsm__bc7),
         .in_crc_field(fsm__in_crc_field),
         .sof(fsm__sof),
+        .sof_as_tx(fsm__sof_as_tx),
         .stuff_stop(fsm__stuff_stop),
         .stuff_resync(fsm__stuff_resync),
         .crc_step(fsm__crc_step),
@@ -8915,7 +9269,52 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .rx_take_data(fsm__rx_take_data),
         .rx_publish(fsm__rx_publish),
         .tx_valid(fsm__tx_valid),
-        .recovered(fsm__recovered)
+        .recovered(fsm__recovered),
+        .suspend_due(fsm__suspend_due)
+    );
+    drcc__chan_b__bsp__tx_request tx_request(
+        .clk(tx_request__clk),
+        .rst(tx_request__rst),
+        .listen_only(tx_request__listen_only),
+        .single_shot(tx_request__single_shot),
+        .tx_req(tx_request__tx_req),
+        .tx_abort(tx_request__tx_abort),
+        .tx_pending(tx_request__tx_pending),
+        .tx_failed(tx_request__tx_failed),
+        .tx_done(tx_request__tx_done),
+        .arb_lost(tx_request__arb_lost),
+        .tx_load(tx_request__tx_load),
+        .bus_off(tx_request__bus_off),
+        .suspend_due(tx_request__suspend_due),
+        .is_tx(tx_request__is_tx),
+        .tx_pin(tx_request__tx_pin),
+        .sample(tx_request__sample),
+        .sof(tx_request__sof),
+        .sof_as_tx(tx_request__sof_as_tx),
+        .sent(tx_request__sent),
+        .lost(tx_request__lost),
+        .error(tx_request__error),
+        .flag_error(tx_request__flag_error),
+        .sof_error(tx_request__sof_error),
+        .bus_off_after(tx_request__bus_off_after),
+        .starts(tx_request__starts),
+        .joins(tx_request__joins)
+    );
+    drcc__chan_b__bsp__tx_pin tx_pin(
+        .clk(tx_pin__clk),
+        .rst(tx_pin__rst),
+        .bit_start(tx_pin__bit_start),
+        .hard_sync(tx_pin__hard_sync),
+        .listen_only(tx_pin__listen_only),
+        .field(tx_pin__field),
+        .is_tx(tx_pin__is_tx),
+        .flag_passive(tx_pin__flag_passive),
+        .tx_starts(tx_pin__tx_starts),
+        .frame_bit(tx_pin__frame_bit),
+        .stuff_insert(tx_pin__stuff_insert),
+        .stuff_last(tx_pin__stuff_last),
+        .crc_ok(tx_pin__crc_ok),
+        .tx(tx_pin__tx)
     );
     drcc__chan_b__bsp__stuffing stuffing(
         .clk(stuffing__clk),
@@ -9092,6 +9491,10 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     always @(*) begin
         fsm__clk = clk;
         fsm__rst = rst;
+        tx_request__clk = clk;
+        tx_request__rst = rst;
+        tx_pin__clk = clk;
+        tx_pin__rst = rst;
         stuffing__clk = clk;
         stuffing__rst = rst;
         frame_crc__clk = clk;
@@ -9109,19 +9512,13 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         loopback = mode == mode_loopback;
         fsm__sample = sample;
         fsm__sampled = sampled;
-        fsm__bit_start = bit_start;
-        fsm__hard_sync = hard_sync;
         fsm__listen_only = listen_only;
         fsm__loopback = loopback;
-        fsm__single_shot = single_shot;
-        fsm__tx_req = tx_req;
-        fsm__tx_abort = tx_abort;
-        fsm__frame_bit = tx_frame__frame_bit;
+        fsm__tx_starts = tx_request__starts;
+        fsm__tx_joins = tx_request__joins;
         fsm__frame_ide = tx_frame__frame_ide;
-        fsm__stuff_insert = stuffing__insert;
         fsm__at_stuff_bit = stuffing__at_stuff_bit;
         fsm__stuff_last = stuffing__last;
-        fsm__crc_ok = frame_crc__crc_ok;
         fsm__no_data = rx_frame__no_data;
         fsm__data_end = rx_frame__data_end;
         fsm__error = detect__error;
@@ -9133,7 +9530,34 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fsm__ack_defer = rules__ack_defer;
         fsm__ack_counted = rules__ack_counted;
         fsm__error_passive = fc__error_passive;
-        fsm__bus_off = fc__bus_off;
+        tx_request__listen_only = listen_only;
+        tx_request__single_shot = single_shot;
+        tx_request__tx_req = tx_req;
+        tx_request__tx_abort = tx_abort;
+        tx_request__bus_off = fc__bus_off;
+        tx_request__suspend_due = fsm__suspend_due;
+        tx_request__is_tx = fsm__is_tx;
+        tx_request__tx_pin = tx_pin__tx;
+        tx_request__sample = sample;
+        tx_request__sof = fsm__sof;
+        tx_request__sof_as_tx = fsm__sof_as_tx;
+        tx_request__sent = fsm__tx_valid;
+        tx_request__lost = detect__lost;
+        tx_request__error = detect__error;
+        tx_request__flag_error = detect__flag_error;
+        tx_request__sof_error = detect__sof_error;
+        tx_request__bus_off_after = rules__bus_off_after;
+        tx_pin__bit_start = bit_start;
+        tx_pin__hard_sync = hard_sync;
+        tx_pin__listen_only = listen_only;
+        tx_pin__field = fsm__field;
+        tx_pin__is_tx = fsm__is_tx;
+        tx_pin__flag_passive = fsm__flag_passive;
+        tx_pin__tx_starts = tx_request__starts;
+        tx_pin__frame_bit = tx_frame__frame_bit;
+        tx_pin__stuff_insert = stuffing__insert;
+        tx_pin__stuff_last = stuffing__last;
+        tx_pin__crc_ok = frame_crc__crc_ok;
         stuffing__sample = sample;
         stuffing__sampled = sampled;
         stuffing__start = fsm__sof;
@@ -9145,7 +9569,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         frame_crc__check = fsm__crc_check;
         frame_crc__in_crc_field = fsm__in_crc_field;
         frame_crc__bit_cnt = fsm__bit_cnt[(32'h0)+:(4)];
-        tx_frame__load = fsm__tx_load;
+        tx_frame__load = tx_request__tx_load;
         tx_frame__id = tx_id;
         tx_frame__ide = tx_ide;
         tx_frame__rtr = tx_rtr;
@@ -9170,7 +9594,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         detect__sampled = sampled;
         detect__field = fsm__field;
         detect__is_tx = fsm__is_tx;
-        detect__tx_bit = fsm__tx;
+        detect__tx_bit = tx_pin__tx;
         detect__in_frame = fsm__in_frame;
         detect__in_arbitration = fsm__in_arbitration;
         detect__ack_slot = fsm__ack_slot;
@@ -9190,7 +9614,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         rules__at_stuff_bit = stuffing__at_stuff_bit;
         rules__field = fsm__field;
         rules__is_tx = fsm__is_tx;
-        rules__tx_bit = fsm__tx;
+        rules__tx_bit = tx_pin__tx;
         rules__flag_passive = fsm__flag_passive;
         rules__in_delim = fsm__in_delim;
         rules__after_error_flag = fsm__after_error_flag;
@@ -9227,11 +9651,11 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         err_capture__field = fsm__field;
         err_capture__bit_cnt = fsm__bit_cnt[(32'h0)+:(5)];
         hard_sync_enable = fsm__hard_sync_enable;
-        tx = fsm__tx;
-        tx_pending = fsm__tx_pending;
-        tx_failed = fsm__tx_failed;
-        tx_done = fsm__tx_done;
-        arb_lost = fsm__arb_lost;
+        tx = tx_pin__tx;
+        tx_pending = tx_request__tx_pending;
+        tx_failed = tx_request__tx_failed;
+        tx_done = tx_request__tx_done;
+        arb_lost = tx_request__arb_lost;
         rx_valid = rx_frame__rx_valid;
         rx_id = rx_frame__rx_id;
         rx_ide = rx_frame__rx_ide;
@@ -10338,33 +10762,21 @@ module drcc__chan_b__bsp__frame_crc__p_crc_bit(d,q,clock);
 endmodule // drcc__chan_b__bsp__frame_crc__p_crc_bit
 
 
-module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,listen_only,loopback,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,frame_bit,frame_ide,stuff_insert,at_stuff_bit,stuff_last,crc_ok,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,bus_off,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered);
+module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  sample;
     input wire  sampled;
-    input wire  bit_start;
-    input wire  hard_sync;
     output reg  hard_sync_enable;
-    output reg  tx;
     input wire  listen_only;
     input wire  loopback;
-    input wire  single_shot;
-    input wire  tx_req;
-    input wire  tx_abort;
-    output reg  tx_pending;
-    output reg  tx_failed;
-    output reg  tx_done;
-    output reg  arb_lost;
-    output reg  tx_load;
-    input wire  frame_bit;
+    input wire  tx_starts;
+    input wire  tx_joins;
     input wire  frame_ide;
-    input wire  stuff_insert;
     input wire  at_stuff_bit;
     input wire  stuff_last;
-    input wire  crc_ok;
     input wire  no_data;
     input wire  data_end;
     input wire  error;
@@ -10376,7 +10788,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     input wire  ack_defer;
     input wire  ack_counted;
     input wire  error_passive;
-    input wire  bus_off;
     output reg  [4:0] field;
     output reg  [5:0] bit_cnt;
     output reg  [6:0] bit_cnt_inc;
@@ -10396,6 +10807,7 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     output reg  bc7;
     output reg  in_crc_field;
     output reg  sof;
+    output reg  sof_as_tx;
     output reg  stuff_stop;
     output reg  stuff_resync;
     output reg  crc_step;
@@ -10410,6 +10822,7 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     output reg  rx_publish;
     output reg  tx_valid;
     output reg  recovered;
+    output reg  suspend_due;
     
     // Constant declarations
     localparam  n7_0 = 7'b0;
@@ -10458,9 +10871,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     reg  [6:0] recovery_cnt__d;
     wire  [6:0] recovery_cnt__q;
     reg  recovery_cnt__clock;
-    reg  tx_q__d;
-    wire  tx_q__q;
-    reg  tx_q__clock;
     reg  last_bit_arb_q__d;
     wire  last_bit_arb_q__q;
     reg  last_bit_arb_q__clock;
@@ -10473,24 +10883,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     reg  [2:0] dom_cnt__d;
     wire  [2:0] dom_cnt__q;
     reg  dom_cnt__clock;
-    reg  pending__d;
-    wire  pending__q;
-    reg  pending__clock;
-    reg  abort_pending__d;
-    wire  abort_pending__q;
-    reg  abort_pending__clock;
-    reg  attempt__d;
-    wire  attempt__q;
-    reg  attempt__clock;
-    reg  tx_failed_q__d;
-    wire  tx_failed_q__q;
-    reg  tx_failed_q__clock;
-    reg  tx_done_q__d;
-    wire  tx_done_q__q;
-    reg  tx_done_q__clock;
-    reg  arb_lost_q__d;
-    wire  arb_lost_q__q;
-    reg  arb_lost_q__clock;
     reg  decode__clk;
     reg  [4:0] decode__field;
     reg  [6:0] decode__bit_cnt;
@@ -10523,13 +10915,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
     reg  [6:0] bit_cnt_n;
     reg  is_tx_n;
     reg  flag_passive_n;
-    reg  tx_bit_n;
-    reg  tx_bit;
-    reg  start_ok;
-    reg  join_ok;
-    reg  starts;
-    reg  join_starts;
-    reg  sof_as_tx;
     reg  monitor;
     
     // Sub module instances
@@ -10558,11 +10943,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         .q(recovery_cnt__q),
         .clock(recovery_cnt__clock)
     );
-    drcc__chan_b__bsp__fsm__tx_q tx_q(
-        .d(tx_q__d),
-        .q(tx_q__q),
-        .clock(tx_q__clock)
-    );
     drcc__chan_b__bsp__fsm__last_bit_arb_q last_bit_arb_q(
         .d(last_bit_arb_q__d),
         .q(last_bit_arb_q__q),
@@ -10582,36 +10962,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         .d(dom_cnt__d),
         .q(dom_cnt__q),
         .clock(dom_cnt__clock)
-    );
-    drcc__chan_b__bsp__fsm__pending pending(
-        .d(pending__d),
-        .q(pending__q),
-        .clock(pending__clock)
-    );
-    drcc__chan_b__bsp__fsm__abort_pending abort_pending(
-        .d(abort_pending__d),
-        .q(abort_pending__q),
-        .clock(abort_pending__clock)
-    );
-    drcc__chan_b__bsp__fsm__attempt attempt(
-        .d(attempt__d),
-        .q(attempt__q),
-        .clock(attempt__clock)
-    );
-    drcc__chan_b__bsp__fsm__tx_failed_q tx_failed_q(
-        .d(tx_failed_q__d),
-        .q(tx_failed_q__q),
-        .clock(tx_failed_q__clock)
-    );
-    drcc__chan_b__bsp__fsm__tx_done_q tx_done_q(
-        .d(tx_done_q__d),
-        .q(tx_done_q__q),
-        .clock(tx_done_q__clock)
-    );
-    drcc__chan_b__bsp__fsm__arb_lost_q arb_lost_q(
-        .d(arb_lost_q__d),
-        .q(arb_lost_q__q),
-        .clock(arb_lost_q__clock)
     );
     drcc__chan_b__bsp__fsm__decode decode(
         .clk(decode__clk),
@@ -10649,33 +10999,19 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         is_tx_q__clock = clk;
         flag_passive_q__clock = clk;
         recovery_cnt__clock = clk;
-        tx_q__clock = clk;
         last_bit_arb_q__clock = clk;
         ack_pending_q__clock = clk;
         delim_first_q__clock = clk;
         dom_cnt__clock = clk;
-        pending__clock = clk;
-        abort_pending__clock = clk;
-        attempt__clock = clk;
-        tx_failed_q__clock = clk;
-        tx_done_q__clock = clk;
-        arb_lost_q__clock = clk;
         field_q__d = field_q__q;
         bit_cnt_q__d = bit_cnt_q__q;
         is_tx_q__d = is_tx_q__q;
         flag_passive_q__d = flag_passive_q__q;
         recovery_cnt__d = recovery_cnt__q;
-        tx_q__d = tx_q__q;
         last_bit_arb_q__d = last_bit_arb_q__q;
         ack_pending_q__d = ack_pending_q__q;
         delim_first_q__d = delim_first_q__q;
         dom_cnt__d = dom_cnt__q;
-        pending__d = pending__q;
-        abort_pending__d = abort_pending__q;
-        attempt__d = attempt__q;
-        tx_failed_q__d = tx_failed_q__q;
-        tx_done_q__d = tx_done_q__q;
-        arb_lost_q__d = arb_lost_q__q;
         decode__clk = clk;
         decode__field = field_q__q;
         decode__bit_cnt = bit_cnt_q__q;
@@ -10689,26 +11025,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         bit_cnt_inc = bit_cnt_q__q + n7_1;
         is_tx_n = is_tx_q__q;
         flag_passive_n = flag_passive_q__q;
-        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
-        tx_failed_q__d = 1'b0;
-        if (~pending__q) begin
-            abort_pending__d = 1'b0;
-        end
-        if ((tx_abort || abort_pending__q) && pending__q) begin
-            if (~is_tx_q__q && tx_q__q) begin
-                pending__d = 1'b0;
-                tx_failed_q__d = 1'b1;
-                abort_pending__d = 1'b0;
-            end
-            else begin
-                abort_pending__d = 1'b1;
-            end
-        end
-        join_ok = start_ok && ~decode__suspend_due;
-        starts = (~tx_q__q && pending__q) || start_ok;
-        join_starts = (~tx_q__q && pending__q) || join_ok;
-        tx_done_q__d = 1'b0;
-        arb_lost_q__d = 1'b0;
         sof = 1'b0;
         sof_as_tx = 1'b0;
         stuff_stop = 1'b0;
@@ -10731,7 +11047,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
             crc_step = decode__crc_covered;
             if (lost) begin
                 is_tx_n = 1'b0;
-                arb_lost_q__d = 1'b1;
             end
             case (field_q__q)
                 Field__Integrating:
@@ -10753,7 +11068,7 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                     begin
                         if (~sampled) begin
                             sof = 1'b1;
-                            sof_as_tx = starts;
+                            sof_as_tx = tx_starts;
                         end
                         else if (sof_error) begin
                             is_tx_n = 1'b1;
@@ -10777,7 +11092,7 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                         if (~sampled) begin
                             if (decode__bc2) begin
                                 sof = 1'b1;
-                                sof_as_tx = join_starts;
+                                sof_as_tx = tx_joins;
                             end
                             else begin
                                 field_n = Field__OverloadFlag;
@@ -10917,10 +11232,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                             end
                             if (decode__bc6) begin
                                 if (is_tx_q__q) begin
-                                    tx_done_q__d = 1'b1;
-                                    pending__d = 1'b0;
-                                    attempt__d = 1'b0;
-                                    abort_pending__d = 1'b0;
                                     tx_valid = 1'b1;
                                 end
                                 field_n = Field__Intermission;
@@ -11034,7 +11345,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                 field_n = Field__IdA;
                 bit_cnt_n = n7_0;
                 is_tx_n = sof_as_tx;
-                attempt__d = sof_as_tx;
             end
             if (error || flag_error) begin
                 field_n = Field__ErrorFlag;
@@ -11045,18 +11355,9 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
             if (ack_defer) begin
                 ack_pending_q__d = 1'b1;
             end
-            if ((attempt__q && is_tx_q__q && (lost || error || flag_error)) || sof_error) begin
-                attempt__d = 1'b0;
-                if (single_shot || abort_pending__q) begin
-                    pending__d = 1'b0;
-                    tx_failed_q__d = 1'b1;
-                    abort_pending__d = 1'b0;
-                end
-            end
             if (bus_off_after) begin
                 field_n = Field__BusOff;
                 is_tx_n = 1'b0;
-                attempt__d = 1'b0;
                 bit_cnt_n = n7_0;
                 recovery_cnt__d = n7_0;
             end
@@ -11064,58 +11365,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
             bit_cnt_q__d = bit_cnt_n;
             is_tx_q__d = is_tx_n;
             flag_passive_q__d = flag_passive_n;
-        end
-        tx_bit_n = 1'b1;
-        case (field_q__q)
-            Field__ErrorFlag:
-                begin
-                    tx_bit_n = flag_passive_q__q;
-                end
-            Field__OverloadFlag:
-                begin
-                    tx_bit_n = 1'b0;
-                end
-            Field__AckSlot:
-                begin
-                    tx_bit_n = is_tx_q__q || ~crc_ok;
-                end
-            default:
-                begin
-                    if (is_tx_q__q) begin
-                        if (stuff_insert) begin
-                            tx_bit_n = ~stuff_last;
-                        end
-                        else begin
-                            tx_bit_n = frame_bit;
-                        end
-                    end
-                end
-        endcase
-        tx_bit = tx_bit_n || listen_only;
-        if (bit_start) begin
-            if (hard_sync && (field_q__q == Field__Idle)) begin
-                tx_q__d = ~starts;
-            end
-            else if (hard_sync && (field_q__q == Field__Intermission)) begin
-                tx_q__d = 1'b1;
-            end
-            else if (hard_sync && (field_q__q == Field__Suspend)) begin
-                tx_q__d = 1'b1;
-            end
-            else if (field_q__q == Field__Idle) begin
-                tx_q__d = ~starts;
-            end
-            else begin
-                tx_q__d = tx_bit;
-            end
-        end
-        tx_load = 1'b0;
-        if (tx_req && ~pending__q && listen_only) begin
-            tx_failed_q__d = 1'b1;
-        end
-        else if (tx_req && ~pending__q) begin
-            pending__d = 1'b1;
-            tx_load = 1'b1;
         end
         case (field_q__q)
             Field__Integrating:
@@ -11143,11 +11392,6 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
                     hard_sync_enable = 1'b0;
                 end
         endcase
-        tx = tx_q__q;
-        tx_pending = pending__q;
-        tx_done = tx_done_q__q;
-        arb_lost = arb_lost_q__q;
-        tx_failed = tx_failed_q__q;
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
@@ -11165,43 +11409,21 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,bit_start,hard_sync,hard_sy
         delim_first = delim_first_q__q;
         ack_pending = ack_pending_q__q;
         in_crc_field = field_q__q == Field__Crc;
+        suspend_due = decode__suspend_due;
         if (rst) begin
             field_q__d = Field__Integrating;
             bit_cnt_q__d = n7_0;
             is_tx_q__d = 1'b0;
             flag_passive_q__d = 1'b0;
             recovery_cnt__d = n7_0;
-            tx_q__d = 1'b1;
             last_bit_arb_q__d = 1'b0;
             ack_pending_q__d = 1'b0;
             delim_first_q__d = 1'b0;
             dom_cnt__d = zero3;
-            pending__d = 1'b0;
-            abort_pending__d = 1'b0;
-            attempt__d = 1'b0;
-            tx_failed_q__d = 1'b0;
-            tx_done_q__d = 1'b0;
-            arb_lost_q__d = 1'b0;
         end
     end
     
 endmodule // drcc__chan_b__bsp__fsm
-
-
-module drcc__chan_b__bsp__fsm__abort_pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__fsm__abort_pending
 
 
 module drcc__chan_b__bsp__fsm__ack_pending_q(d,q,clock);
@@ -11218,38 +11440,6 @@ module drcc__chan_b__bsp__fsm__ack_pending_q(d,q,clock);
     end
           
 endmodule // drcc__chan_b__bsp__fsm__ack_pending_q
-
-
-module drcc__chan_b__bsp__fsm__arb_lost_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__fsm__arb_lost_q
-
-
-module drcc__chan_b__bsp__fsm__attempt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__fsm__attempt
 
 
 module drcc__chan_b__bsp__fsm__bit_cnt_q(d,q,clock);
@@ -12083,22 +12273,6 @@ module drcc__chan_b__bsp__fsm__last_bit_arb_q(d,q,clock);
 endmodule // drcc__chan_b__bsp__fsm__last_bit_arb_q
 
 
-module drcc__chan_b__bsp__fsm__pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__fsm__pending
-
-
 module drcc__chan_b__bsp__fsm__recovery_cnt(d,q,clock);
     
     // Module arguments
@@ -12113,54 +12287,6 @@ module drcc__chan_b__bsp__fsm__recovery_cnt(d,q,clock);
     end
           
 endmodule // drcc__chan_b__bsp__fsm__recovery_cnt
-
-
-module drcc__chan_b__bsp__fsm__tx_done_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__fsm__tx_done_q
-
-
-module drcc__chan_b__bsp__fsm__tx_failed_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__fsm__tx_failed_q
-
-
-module drcc__chan_b__bsp__fsm__tx_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__fsm__tx_q
 
 
 module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
@@ -13406,6 +13532,404 @@ module drcc__chan_b__bsp__tx_frame__rtr_q(d,q,clock);
 endmodule // drcc__chan_b__bsp__tx_frame__rtr_q
 
 
+module drcc__chan_b__bsp__tx_pin(clk,rst,bit_start,hard_sync,listen_only,field,is_tx,flag_passive,tx_starts,frame_bit,stuff_insert,stuff_last,crc_ok,tx);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  bit_start;
+    input wire  hard_sync;
+    input wire  listen_only;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  flag_passive;
+    input wire  tx_starts;
+    input wire  frame_bit;
+    input wire  stuff_insert;
+    input wire  stuff_last;
+    input wire  crc_ok;
+    output reg  tx;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  tx_q__d;
+    wire  tx_q__q;
+    reg  tx_q__clock;
+    
+    // Local signals
+    reg  tx_bit_n;
+    reg  tx_bit;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__tx_pin__tx_q tx_q(
+        .d(tx_q__d),
+        .q(tx_q__q),
+        .clock(tx_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tx_q__clock = clk;
+        tx_q__d = tx_q__q;
+        tx_bit_n = 1'b1;
+        case (field)
+            Field__ErrorFlag:
+                begin
+                    tx_bit_n = flag_passive;
+                end
+            Field__OverloadFlag:
+                begin
+                    tx_bit_n = 1'b0;
+                end
+            Field__AckSlot:
+                begin
+                    tx_bit_n = is_tx || ~crc_ok;
+                end
+            default:
+                begin
+                    if (is_tx) begin
+                        if (stuff_insert) begin
+                            tx_bit_n = ~stuff_last;
+                        end
+                        else begin
+                            tx_bit_n = frame_bit;
+                        end
+                    end
+                end
+        endcase
+        tx_bit = tx_bit_n || listen_only;
+        if (bit_start) begin
+            if (hard_sync && (field == Field__Idle)) begin
+                tx_q__d = ~tx_starts;
+            end
+            else if (hard_sync && (field == Field__Intermission)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (hard_sync && (field == Field__Suspend)) begin
+                tx_q__d = 1'b1;
+            end
+            else if (field == Field__Idle) begin
+                tx_q__d = ~tx_starts;
+            end
+            else begin
+                tx_q__d = tx_bit;
+            end
+        end
+        tx = tx_q__q;
+        if (rst) begin
+            tx_q__d = 1'b1;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__tx_pin
+
+
+module drcc__chan_b__bsp__tx_pin__tx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__tx_pin__tx_q
+
+
+module drcc__chan_b__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  listen_only;
+    input wire  single_shot;
+    input wire  tx_req;
+    input wire  tx_abort;
+    output reg  tx_pending;
+    output reg  tx_failed;
+    output reg  tx_done;
+    output reg  arb_lost;
+    output reg  tx_load;
+    input wire  bus_off;
+    input wire  suspend_due;
+    input wire  is_tx;
+    input wire  tx_pin;
+    input wire  sample;
+    input wire  sof;
+    input wire  sof_as_tx;
+    input wire  sent;
+    input wire  lost;
+    input wire  error;
+    input wire  flag_error;
+    input wire  sof_error;
+    input wire  bus_off_after;
+    output reg  starts;
+    output reg  joins;
+    
+    // Stub signals
+    reg  pending__d;
+    wire  pending__q;
+    reg  pending__clock;
+    reg  abort_pending__d;
+    wire  abort_pending__q;
+    reg  abort_pending__clock;
+    reg  attempt__d;
+    wire  attempt__q;
+    reg  attempt__clock;
+    reg  tx_failed_q__d;
+    wire  tx_failed_q__q;
+    reg  tx_failed_q__clock;
+    reg  tx_done_q__d;
+    wire  tx_done_q__q;
+    reg  tx_done_q__clock;
+    reg  arb_lost_q__d;
+    wire  arb_lost_q__q;
+    reg  arb_lost_q__clock;
+    
+    // Local signals
+    reg  start_ok;
+    reg  join_ok;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__tx_request__pending pending(
+        .d(pending__d),
+        .q(pending__q),
+        .clock(pending__clock)
+    );
+    drcc__chan_b__bsp__tx_request__abort_pending abort_pending(
+        .d(abort_pending__d),
+        .q(abort_pending__q),
+        .clock(abort_pending__clock)
+    );
+    drcc__chan_b__bsp__tx_request__attempt attempt(
+        .d(attempt__d),
+        .q(attempt__q),
+        .clock(attempt__clock)
+    );
+    drcc__chan_b__bsp__tx_request__tx_failed_q tx_failed_q(
+        .d(tx_failed_q__d),
+        .q(tx_failed_q__q),
+        .clock(tx_failed_q__clock)
+    );
+    drcc__chan_b__bsp__tx_request__tx_done_q tx_done_q(
+        .d(tx_done_q__d),
+        .q(tx_done_q__q),
+        .clock(tx_done_q__clock)
+    );
+    drcc__chan_b__bsp__tx_request__arb_lost_q arb_lost_q(
+        .d(arb_lost_q__d),
+        .q(arb_lost_q__q),
+        .clock(arb_lost_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        pending__clock = clk;
+        abort_pending__clock = clk;
+        attempt__clock = clk;
+        tx_failed_q__clock = clk;
+        tx_done_q__clock = clk;
+        arb_lost_q__clock = clk;
+        pending__d = pending__q;
+        abort_pending__d = abort_pending__q;
+        attempt__d = attempt__q;
+        tx_failed_q__d = tx_failed_q__q;
+        tx_done_q__d = tx_done_q__q;
+        arb_lost_q__d = arb_lost_q__q;
+        start_ok = pending__q && ~bus_off && ~listen_only && ~tx_abort && ~abort_pending__q;
+        tx_failed_q__d = 1'b0;
+        if (~pending__q) begin
+            abort_pending__d = 1'b0;
+        end
+        if ((tx_abort || abort_pending__q) && pending__q) begin
+            if (~is_tx && tx_pin) begin
+                pending__d = 1'b0;
+                tx_failed_q__d = 1'b1;
+                abort_pending__d = 1'b0;
+            end
+            else begin
+                abort_pending__d = 1'b1;
+            end
+        end
+        join_ok = start_ok && ~suspend_due;
+        starts = (~tx_pin && pending__q) || start_ok;
+        joins = (~tx_pin && pending__q) || join_ok;
+        tx_done_q__d = 1'b0;
+        arb_lost_q__d = 1'b0;
+        if (lost) begin
+            arb_lost_q__d = 1'b1;
+        end
+        if (sent) begin
+            tx_done_q__d = 1'b1;
+            pending__d = 1'b0;
+            attempt__d = 1'b0;
+            abort_pending__d = 1'b0;
+        end
+        if (sample) begin
+            if (sof) begin
+                attempt__d = sof_as_tx;
+            end
+            if ((attempt__q && is_tx && (lost || error || flag_error)) || sof_error) begin
+                attempt__d = 1'b0;
+                if (single_shot || abort_pending__q) begin
+                    pending__d = 1'b0;
+                    tx_failed_q__d = 1'b1;
+                    abort_pending__d = 1'b0;
+                end
+            end
+            if (bus_off_after) begin
+                attempt__d = 1'b0;
+            end
+        end
+        tx_load = 1'b0;
+        if (tx_req && ~pending__q && listen_only) begin
+            tx_failed_q__d = 1'b1;
+        end
+        else if (tx_req && ~pending__q) begin
+            pending__d = 1'b1;
+            tx_load = 1'b1;
+        end
+        tx_pending = pending__q;
+        tx_done = tx_done_q__q;
+        arb_lost = arb_lost_q__q;
+        tx_failed = tx_failed_q__q;
+        if (rst) begin
+            pending__d = 1'b0;
+            abort_pending__d = 1'b0;
+            attempt__d = 1'b0;
+            tx_failed_q__d = 1'b0;
+            tx_done_q__d = 1'b0;
+            arb_lost_q__d = 1'b0;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__tx_request
+
+
+module drcc__chan_b__bsp__tx_request__abort_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__tx_request__abort_pending
+
+
+module drcc__chan_b__bsp__tx_request__arb_lost_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__tx_request__arb_lost_q
+
+
+module drcc__chan_b__bsp__tx_request__attempt(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__tx_request__attempt
+
+
+module drcc__chan_b__bsp__tx_request__pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__tx_request__pending
+
+
+module drcc__chan_b__bsp__tx_request__tx_done_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__tx_request__tx_done_q
+
+
+module drcc__chan_b__bsp__tx_request__tx_failed_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__tx_request__tx_failed_q
+
+
 module drcc__chan_b__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
     
     // Module arguments
@@ -14511,6 +15035,552 @@ module drcc__chan_b__rx_sync__rx_sync(d,q,clock);
 endmodule // drcc__chan_b__rx_sync__rx_sync
 
 
+module drcc__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_id_word,mb_mask,status_word,cs_count_word,rx_stats_word,mb_state_word,hit,word,writable,illegal);
+    
+    // Module arguments
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  reset_mode;
+    input wire  [31:0] cfg_word;
+    input wire  [31:0] time_word;
+    input wire  [10:0] cs_id_dcl;
+    input wire  [10:0] cs_id_rcl;
+    input wire  [3:0] mb_sel;
+    input wire  [15:0] mb_enable;
+    input wire  [127:0] mb_limits;
+    input wire  [30:0] mb_id_word;
+    input wire  [28:0] mb_mask;
+    input wire  [31:0] status_word;
+    input wire  [31:0] cs_count_word;
+    input wire  [31:0] rx_stats_word;
+    input wire  [31:0] mb_state_word;
+    output reg  hit;
+    output reg  [31:0] word;
+    output reg  writable;
+    output reg  illegal;
+    
+    // Constant declarations
+    localparam  a_cfg = 6'b11001;
+    localparam  a_time = 6'b11010;
+    localparam  a_cs = 6'b11011;
+    localparam  a_status = 6'b11100;
+    localparam  a_cs_count = 6'b11101;
+    localparam  a_rx_stats = 6'b11110;
+    localparam  a_sel = 6'b11111;
+    localparam  a_id = 6'b100000;
+    localparam  a_mask = 6'b100001;
+    localparam  a_mbcfg = 6'b100010;
+    localparam  a_state = 6'b100011;
+    localparam  mailboxes = 5'b10000;
+    localparam  enable_bit = 32'h80000000;
+    localparam  zero7 = 7'b0;
+    localparam  zero16 = 16'h0;
+    localparam  zero32 = 32'h0;
+    
+    // Local signals
+    reg  sel_enabled;
+    reg  [6:0] sel_limit;
+    reg  [31:0] sel_enable_word;
+    reg  wr_is_cs;
+    reg  stored_is_cs;
+    
+    // Update code
+    always @(*) begin
+        sel_enabled = mb_enable[mb_sel];
+        sel_limit = mb_limits[(mb_sel * 32'h8)+:(7)];
+        sel_enable_word = zero32;
+        if (sel_enabled) begin
+            sel_enable_word = enable_bit;
+        end
+        wr_is_cs = ~wdat[32'h1d] & ((wdat[(32'h0)+:(11)] == cs_id_dcl) | (wdat[(32'h0)+:(11)] == cs_id_rcl));
+        stored_is_cs = ~mb_id_word[32'h1d] & ((mb_id_word[(32'h0)+:(11)] == cs_id_dcl) | (mb_id_word[(32'h0)+:(11)] == cs_id_rcl));
+        hit = 1'b1;
+        writable = 1'b1;
+        word = zero32;
+        if (adr == a_cfg) begin
+            word = cfg_word;
+        end
+        else if (adr == a_time) begin
+            word = time_word;
+        end
+        else if (adr == a_cs) begin
+            word = ((cs_id_dcl) & 32'hffffffff) | (((cs_id_rcl) & 32'hffffffff) << 32'h10);
+        end
+        else if (adr == a_sel) begin
+            word = ((mb_sel) & 32'hffffffff);
+        end
+        else if (adr == a_id) begin
+            if (reset_mode) begin
+                word = ((mb_id_word) & 32'hffffffff);
+            end
+        end
+        else if (adr == a_mask) begin
+            if (reset_mode) begin
+                word = ((mb_mask) & 32'hffffffff);
+            end
+        end
+        else if (adr == a_mbcfg) begin
+            if (reset_mode) begin
+                word = ((sel_limit) & 32'hffffffff) | sel_enable_word;
+            end
+        end
+        else if (adr == a_status) begin
+            writable = 1'b0;
+            word = status_word;
+        end
+        else if (adr == a_cs_count) begin
+            writable = 1'b0;
+            word = cs_count_word;
+        end
+        else if (adr == a_rx_stats) begin
+            writable = 1'b0;
+            word = rx_stats_word;
+        end
+        else if (adr == a_state) begin
+            writable = 1'b0;
+            word = mb_state_word;
+        end
+        else begin
+            hit = 1'b0;
+            writable = 1'b0;
+        end
+        illegal = 1'b0;
+        if (adr == a_sel) begin
+            illegal = ((wdat[(32'h0)+:(4)]) & 5'h1f) >= mailboxes;
+        end
+        else if (writable & ~reset_mode) begin
+            illegal = 1'b1;
+        end
+        else if (adr == a_cfg) begin
+            illegal = wdat[(32'h0)+:(16)] == zero16;
+        end
+        else if (adr == a_time) begin
+            illegal = (wdat[(32'h0)+:(16)] == zero16) | (wdat[(32'h10)+:(16)] == zero16);
+        end
+        else if (adr == a_cs) begin
+            illegal = (wdat[(32'h0)+:(11)] == wdat[(32'h10)+:(11)]) | |mb_enable;
+        end
+        else if (adr == a_id) begin
+            illegal = sel_enabled & wr_is_cs;
+        end
+        else if (adr == a_mbcfg) begin
+            illegal = wdat[32'h1f] & ((wdat[(32'h0)+:(7)] == zero7) | stored_is_cs);
+        end
+    end
+    
+endmodule // drcc__dmr_check
+
+
+module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_we_id,mb_we_mask);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wr;
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  writable;
+    input wire  refused;
+    output reg  [31:0] cfg_word;
+    output reg  [31:0] time_word;
+    output reg  [15:0] timeout;
+    output reg  [15:0] cs_period;
+    output reg  [15:0] tick_bits;
+    output reg  [15:0] recovery_delay;
+    output reg  [10:0] cs_id_dcl;
+    output reg  [10:0] cs_id_rcl;
+    output reg  [3:0] mb_sel;
+    output reg  [15:0] mb_enable;
+    output reg  [127:0] mb_limits;
+    output reg  mb_we_id;
+    output reg  mb_we_mask;
+    
+    // Constant declarations
+    localparam  a_cfg = 6'b11001;
+    localparam  a_time = 6'b11010;
+    localparam  a_cs = 6'b11011;
+    localparam  a_sel = 6'b11111;
+    localparam  a_id = 6'b100000;
+    localparam  a_mask = 6'b100001;
+    localparam  a_mbcfg = 6'b100010;
+    localparam  cfg_reset = 32'h64;
+    localparam  time_reset = 32'h7d0007d;
+    localparam  cs_dcl_reset = 11'b11111101010;
+    localparam  cs_rcl_reset = 11'b11111101011;
+    localparam  limits_reset = 128'h3030303030303030303030303030303;
+    localparam  slot_mask = 128'hff;
+    localparam  zero4 = 4'h0;
+    localparam  zero16 = 16'h0;
+    
+    // Stub signals
+    reg  [31:0] cfg_q__d;
+    wire  [31:0] cfg_q__q;
+    reg  cfg_q__clock;
+    reg  [31:0] time_q__d;
+    wire  [31:0] time_q__q;
+    reg  time_q__clock;
+    reg  [10:0] cs_dcl_q__d;
+    wire  [10:0] cs_dcl_q__q;
+    reg  cs_dcl_q__clock;
+    reg  [10:0] cs_rcl_q__d;
+    wire  [10:0] cs_rcl_q__q;
+    reg  cs_rcl_q__clock;
+    reg  [3:0] sel_q__d;
+    wire  [3:0] sel_q__q;
+    reg  sel_q__clock;
+    reg  [15:0] enable_q__d;
+    wire  [15:0] enable_q__q;
+    reg  enable_q__clock;
+    reg  [127:0] limits_q__d;
+    wire  [127:0] limits_q__q;
+    reg  limits_q__clock;
+    
+    // Local signals
+    reg  take;
+    reg  [7:0] shift;
+    
+    // Sub module instances
+    drcc__dmr_regs__cfg_q cfg_q(
+        .d(cfg_q__d),
+        .q(cfg_q__q),
+        .clock(cfg_q__clock)
+    );
+    drcc__dmr_regs__time_q time_q(
+        .d(time_q__d),
+        .q(time_q__q),
+        .clock(time_q__clock)
+    );
+    drcc__dmr_regs__cs_dcl_q cs_dcl_q(
+        .d(cs_dcl_q__d),
+        .q(cs_dcl_q__q),
+        .clock(cs_dcl_q__clock)
+    );
+    drcc__dmr_regs__cs_rcl_q cs_rcl_q(
+        .d(cs_rcl_q__d),
+        .q(cs_rcl_q__q),
+        .clock(cs_rcl_q__clock)
+    );
+    drcc__dmr_regs__sel_q sel_q(
+        .d(sel_q__d),
+        .q(sel_q__q),
+        .clock(sel_q__clock)
+    );
+    drcc__dmr_regs__enable_q enable_q(
+        .d(enable_q__d),
+        .q(enable_q__q),
+        .clock(enable_q__clock)
+    );
+    drcc__dmr_regs__limits_q limits_q(
+        .d(limits_q__d),
+        .q(limits_q__q),
+        .clock(limits_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cfg_q__clock = clk;
+        time_q__clock = clk;
+        cs_dcl_q__clock = clk;
+        cs_rcl_q__clock = clk;
+        sel_q__clock = clk;
+        enable_q__clock = clk;
+        limits_q__clock = clk;
+        cfg_q__d = cfg_q__q;
+        time_q__d = time_q__q;
+        cs_dcl_q__d = cs_dcl_q__q;
+        cs_rcl_q__d = cs_rcl_q__q;
+        sel_q__d = sel_q__q;
+        enable_q__d = enable_q__q;
+        limits_q__d = limits_q__q;
+        take = wr & writable & ~refused;
+        shift = ((sel_q__q) & 8'hff) << 32'h3;
+        mb_we_id = take & (adr == a_id);
+        mb_we_mask = take & (adr == a_mask);
+        if (take) begin
+            if (adr == a_cfg) begin
+                cfg_q__d = wdat;
+            end
+            else if (adr == a_time) begin
+                time_q__d = wdat;
+            end
+            else if (adr == a_cs) begin
+                cs_dcl_q__d = wdat[(32'h0)+:(11)];
+                cs_rcl_q__d = wdat[(32'h10)+:(11)];
+            end
+            else if (adr == a_sel) begin
+                sel_q__d = wdat[(32'h0)+:(4)];
+            end
+            else if (adr == a_mbcfg) begin
+                enable_q__d = (enable_q__q & ~(1 << (sel_q__q)) | ((wdat[32'h1f]) << (sel_q__q)));
+                limits_q__d = (limits_q__q & ~(slot_mask << shift)) | (((wdat[(32'h0)+:(7)]) & 128'hffffffffffffffffffffffffffffffff) << shift);
+            end
+        end
+        if (rst) begin
+            cfg_q__d = cfg_reset;
+            time_q__d = time_reset;
+            cs_dcl_q__d = cs_dcl_reset;
+            cs_rcl_q__d = cs_rcl_reset;
+            sel_q__d = zero4;
+            enable_q__d = zero16;
+            limits_q__d = limits_reset;
+        end
+        cfg_word = cfg_q__q;
+        time_word = time_q__q;
+        timeout = cfg_q__q[(32'h0)+:(16)];
+        cs_period = cfg_q__q[(32'h10)+:(16)];
+        tick_bits = time_q__q[(32'h0)+:(16)];
+        recovery_delay = time_q__q[(32'h10)+:(16)];
+        cs_id_dcl = cs_dcl_q__q;
+        cs_id_rcl = cs_rcl_q__q;
+        mb_sel = sel_q__q;
+        mb_enable = enable_q__q;
+        mb_limits = limits_q__q;
+    end
+    
+endmodule // drcc__dmr_regs
+
+
+module drcc__dmr_regs__cfg_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__cfg_q
+
+
+module drcc__dmr_regs__cs_dcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__cs_dcl_q
+
+
+module drcc__dmr_regs__cs_rcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__cs_rcl_q
+
+
+module drcc__dmr_regs__enable_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__enable_q
+
+
+module drcc__dmr_regs__limits_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [127:0] d;
+    output reg  [127:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__limits_q
+
+
+module drcc__dmr_regs__sel_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__sel_q
+
+
+module drcc__dmr_regs__time_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_regs__time_q
+
+
+module drcc__mailbox_cfg(clk,read_address,id_word,mask,write_address,we_id,we_mask,wdat);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [3:0] read_address;
+    output reg  [30:0] id_word;
+    output reg  [28:0] mask;
+    input wire  [3:0] write_address;
+    input wire  we_id;
+    input wire  we_mask;
+    input wire  [30:0] wdat;
+    
+    // Stub signals
+    reg  id_ram__clk;
+    reg  [3:0] id_ram__read_address;
+    reg  id_ram__read_enable;
+    wire  [30:0] id_ram__read_data;
+    reg  [3:0] id_ram__write_address;
+    reg  [30:0] id_ram__write_data;
+    reg  id_ram__write_enable;
+    reg  mask_ram__clk;
+    reg  [3:0] mask_ram__read_address;
+    reg  mask_ram__read_enable;
+    wire  [28:0] mask_ram__read_data;
+    reg  [3:0] mask_ram__write_address;
+    reg  [28:0] mask_ram__write_data;
+    reg  mask_ram__write_enable;
+    
+    // Sub module instances
+    drcc__mailbox_cfg__id_ram id_ram(
+        .clk(id_ram__clk),
+        .read_address(id_ram__read_address),
+        .read_enable(id_ram__read_enable),
+        .read_data(id_ram__read_data),
+        .write_address(id_ram__write_address),
+        .write_data(id_ram__write_data),
+        .write_enable(id_ram__write_enable)
+    );
+    drcc__mailbox_cfg__mask_ram mask_ram(
+        .clk(mask_ram__clk),
+        .read_address(mask_ram__read_address),
+        .read_enable(mask_ram__read_enable),
+        .read_data(mask_ram__read_data),
+        .write_address(mask_ram__write_address),
+        .write_data(mask_ram__write_data),
+        .write_enable(mask_ram__write_enable)
+    );
+    
+    // Update code
+    always @(*) begin
+        id_ram__clk = clk;
+        id_ram__read_address = read_address;
+        id_ram__read_enable = 1'b1;
+        id_ram__write_address = write_address;
+        id_ram__write_data = wdat;
+        id_ram__write_enable = we_id;
+        mask_ram__clk = clk;
+        mask_ram__read_address = read_address;
+        mask_ram__read_enable = 1'b1;
+        mask_ram__write_address = write_address;
+        mask_ram__write_data = wdat[(32'h0)+:(29)];
+        mask_ram__write_enable = we_mask;
+        id_word = id_ram__read_data;
+        mask = mask_ram__read_data;
+    end
+    
+endmodule // drcc__mailbox_cfg
+
+
+module drcc__mailbox_cfg__id_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [3:0] read_address;
+    input wire  read_enable;
+    output reg  [30:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [30:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[30:0] mem[15:0];
+    
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+    
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // drcc__mailbox_cfg__id_ram
+
+
+module drcc__mailbox_cfg__mask_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [3:0] read_address;
+    input wire  read_enable;
+    output reg  [28:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [28:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[28:0] mem[15:0];
+    
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+    
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // drcc__mailbox_cfg__mask_ram
+
+
 module drcc__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
     
     // Module arguments
@@ -15214,7 +16284,7 @@ module drcc__main__tx_time(d,q,clock);
 endmodule // drcc__main__tx_time
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,switches,recoveries);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ev_recover_a,ev_recover_b,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,switches,recoveries);
     
     // Module arguments
     input wire  clk;
@@ -15241,6 +16311,12 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     input wire  ev_aux;
     input wire  ev_recover_a;
     input wire  ev_recover_b;
+    input wire  ext_hit;
+    input wire  [31:0] ext_word;
+    input wire  ext_writable;
+    input wire  ext_illegal;
+    input wire  ev_dmr;
+    output reg  wr_o;
     output reg  reset_mode;
     output reg  reset_mode_d;
     output reg  redundancy;
@@ -15250,6 +16326,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     output reg  [1:0] mode_a;
     output reg  [1:0] mode_b;
     output reg  single_shot;
+    output reg  dmr;
     output reg  [5:0] brp;
     output reg  [3:0] tseg1;
     output reg  [2:0] tseg2;
@@ -15300,6 +16377,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     localparam  i_tx_failure = 5'b101;
     localparam  i_illegal = 5'b110;
     localparam  i_aux = 5'b111;
+    localparam  i_dmr = 5'b1000;
     localparam  btr_reset = 24'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
@@ -15307,7 +16385,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
-    localparam  zero8 = 8'h0;
+    localparam  zero9 = 9'b0;
     localparam  zero15 = 15'b0;
     localparam  zero16 = 16'h0;
     localparam  one16 = 16'h1;
@@ -15327,13 +16405,13 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     wire  bus__wb_ack_o;
     wire  bus__irq;
     wire  bus__wr;
-    wire  [7:0] bus__int_status;
-    wire  [7:0] bus__int_enable;
+    wire  [8:0] bus__int_status;
+    wire  [8:0] bus__int_enable;
     reg  [31:0] bus__rdata;
-    reg  [7:0] bus__events;
-    reg  [7:0] bus__w1c;
+    reg  [8:0] bus__events;
+    reg  [8:0] bus__w1c;
     reg  bus__int_enable_we;
-    reg  [7:0] bus__int_enable_d;
+    reg  [8:0] bus__int_enable_d;
     reg  ctrl__clk;
     reg  ctrl__rst;
     reg  ctrl__we;
@@ -15350,6 +16428,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     wire  [1:0] ctrl__mode_a;
     wire  [1:0] ctrl__mode_b;
     wire  ctrl__single_shot;
+    wire  ctrl__dmr;
     reg  [31:0] ctrl_check__wdat;
     reg  ctrl_check__reset_mode;
     reg  ctrl_check__redundancy;
@@ -15359,6 +16438,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  [1:0] ctrl_check__mode_a;
     reg  [1:0] ctrl_check__mode_b;
     reg  ctrl_check__single_shot;
+    reg  ctrl_check__dmr;
     wire  [3:0] ctrl_check__k_in;
     wire  ctrl_check__refused;
     wire  ctrl_check__illegal;
@@ -15404,7 +16484,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
-    reg  [7:0] w1c;
+    reg  [8:0] w1c;
     reg  [3:0] target_count;
     reg  es_evt;
     reg  [63:0] tx_data64;
@@ -15444,7 +16524,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .k(ctrl__k),
         .mode_a(ctrl__mode_a),
         .mode_b(ctrl__mode_b),
-        .single_shot(ctrl__single_shot)
+        .single_shot(ctrl__single_shot),
+        .dmr(ctrl__dmr)
     );
     drcc__regs__ctrl_check ctrl_check(
         .wdat(ctrl_check__wdat),
@@ -15456,6 +16537,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         .mode_a(ctrl_check__mode_a),
         .mode_b(ctrl_check__mode_b),
         .single_shot(ctrl_check__single_shot),
+        .dmr(ctrl_check__dmr),
         .k_in(ctrl_check__k_in),
         .refused(ctrl_check__refused),
         .illegal(ctrl_check__illegal)
@@ -15586,6 +16668,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         else if (wb_adr_i == a_tx_data1) begin
             rdata = tx_data1_q__q;
         end
+        else if (ext_hit) begin
+            rdata = ext_word;
+        end
         else begin
             rdata = ro_word;
         end
@@ -15605,10 +16690,11 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         ctrl_check__mode_a = ctrl__mode_a;
         ctrl_check__mode_b = ctrl__mode_b;
         ctrl_check__single_shot = ctrl__single_shot;
+        ctrl_check__dmr = ctrl__dmr;
         illegal = 1'b0;
-        w1c = zero8;
+        w1c = zero9;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wdat[(32'h0)+:(8)];
+        bus__int_enable_d = wdat[(32'h0)+:(9)];
         push = 1'b0;
         pop = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy) begin
@@ -15646,7 +16732,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wdat[(32'h0)+:(8)];
+                w1c = wdat[(32'h0)+:(9)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -15684,11 +16770,14 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
                     end
                 end
             end
+            else if (ext_writable) begin
+                illegal = ext_illegal;
+            end
             else begin
                 illegal = 1'b1;
             end
         end
-        bus__events = (((ev_rx) & 8'hff) << i_rx) | (((ev_tx_done) & 8'hff) << i_tx_done) | (((ev_switch) & 8'hff) << i_switch) | (((es_evt) & 8'hff) << i_err_state) | (((ev_overrun) & 8'hff) << i_overrun) | (((ev_tx_failure) & 8'hff) << i_tx_failure) | (((illegal) & 8'hff) << i_illegal) | (((ev_aux) & 8'hff) << i_aux);
+        bus__events = (((ev_rx) & 9'h1ff) << i_rx) | (((ev_tx_done) & 9'h1ff) << i_tx_done) | (((ev_switch) & 9'h1ff) << i_switch) | (((es_evt) & 9'h1ff) << i_err_state) | (((ev_overrun) & 9'h1ff) << i_overrun) | (((ev_tx_failure) & 9'h1ff) << i_tx_failure) | (((illegal) & 9'h1ff) << i_illegal) | (((ev_aux) & 9'h1ff) << i_aux) | (((ev_dmr) & 9'h1ff) << i_dmr);
         bus__w1c = w1c;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
@@ -15734,6 +16823,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         mode_a = ctrl__mode_a;
         mode_b = ctrl__mode_b;
         single_shot = ctrl__single_shot;
+        dmr = ctrl__dmr;
+        wr_o = wr;
         brp = btr_q__q[(b_brp)+:(6)];
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
         tseg2 = btr_q__q[(b_tseg2)+:(3)];
@@ -15780,16 +16871,16 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,w
     output reg  wb_ack_o;
     output reg  irq;
     output reg  wr;
-    output reg  [7:0] int_status;
-    output reg  [7:0] int_enable;
+    output reg  [8:0] int_status;
+    output reg  [8:0] int_enable;
     input wire  [31:0] rdata;
-    input wire  [7:0] events;
-    input wire  [7:0] w1c;
+    input wire  [8:0] events;
+    input wire  [8:0] w1c;
     input wire  int_enable_we;
-    input wire  [7:0] int_enable_d;
+    input wire  [8:0] int_enable_d;
     
     // Constant declarations
-    localparam  zero_w = 8'h0;
+    localparam  zero_w = 9'b0;
     localparam  zero32 = 32'h0;
     
     // Stub signals
@@ -15802,11 +16893,11 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,w
     reg  irq_q__d;
     wire  irq_q__q;
     reg  irq_q__clock;
-    reg  [7:0] int_status_q__d;
-    wire  [7:0] int_status_q__q;
+    reg  [8:0] int_status_q__d;
+    wire  [8:0] int_status_q__q;
     reg  int_status_q__clock;
-    reg  [7:0] int_enable_q__d;
-    wire  [7:0] int_enable_q__q;
+    reg  [8:0] int_enable_q__d;
+    wire  [8:0] int_enable_q__q;
     reg  int_enable_q__clock;
     
     // Local signals
@@ -15916,8 +17007,8 @@ endmodule // drcc__regs__bus__dat_q
 module drcc__regs__bus__int_enable_q(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [8:0] d;
+    output reg  [8:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -15932,8 +17023,8 @@ endmodule // drcc__regs__bus__int_enable_q
 module drcc__regs__bus__int_status_q(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [8:0] d;
+    output reg  [8:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -15961,7 +17052,7 @@ module drcc__regs__bus__irq_q(d,q,clock);
 endmodule // drcc__regs__bus__irq_q
 
 
-module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot);
+module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr);
     
     // Module arguments
     input wire  clk;
@@ -15980,6 +17071,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
     output reg  [1:0] mode_a;
     output reg  [1:0] mode_b;
     output reg  single_shot;
+    output reg  dmr;
     
     // Constant declarations
     localparam  p_reset_mode = 5'b0;
@@ -15990,6 +17082,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
     localparam  p_mode_a = 5'b1100;
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
+    localparam  p_dmr = 5'b10001;
     localparam  redundancy_reset = 1'b0;
     localparam  policy_reset = 2'b1;
     localparam  k_reset = 4'h1;
@@ -16023,6 +17116,9 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
     reg  single_shot_q__d;
     wire  single_shot_q__q;
     reg  single_shot_q__clock;
+    reg  dmr_q__d;
+    wire  dmr_q__q;
+    reg  dmr_q__clock;
     
     // Sub module instances
     drcc__regs__ctrl__reset_mode_q reset_mode_q(
@@ -16070,6 +17166,11 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         .q(single_shot_q__q),
         .clock(single_shot_q__clock)
     );
+    drcc__regs__ctrl__dmr_q dmr_q(
+        .d(dmr_q__d),
+        .q(dmr_q__q),
+        .clock(dmr_q__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -16082,6 +17183,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         mode_a_q__clock = clk;
         mode_b_q__clock = clk;
         single_shot_q__clock = clk;
+        dmr_q__clock = clk;
         reset_mode_q__d = reset_mode_q__q;
         reset_mode_dq__d = reset_mode_dq__q;
         redundancy_q__d = redundancy_q__q;
@@ -16091,6 +17193,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         mode_a_q__d = mode_a_q__q;
         mode_b_q__d = mode_b_q__q;
         single_shot_q__d = single_shot_q__q;
+        dmr_q__d = dmr_q__q;
         reset_mode_dq__d = reset_mode_q__q;
         if (we) begin
             if (reset_mode_q__q) begin
@@ -16103,6 +17206,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
                     mode_a_q__d = wdat[(p_mode_a)+:(2)];
                     mode_b_q__d = wdat[(p_mode_b)+:(2)];
                     single_shot_q__d = wdat[p_single_shot];
+                    dmr_q__d = wdat[p_dmr];
                 end
             end
             else begin
@@ -16119,8 +17223,9 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
             mode_a_q__d = mode_reset;
             mode_b_q__d = mode_reset;
             single_shot_q__d = 1'b0;
+            dmr_q__d = 1'b0;
         end
-        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot);
+        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr);
         reset_mode = reset_mode_q__q;
         reset_mode_d = reset_mode_dq__q;
         redundancy = redundancy_q__q;
@@ -16130,9 +17235,26 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
         mode_a = mode_a_q__q;
         mode_b = mode_b_q__q;
         single_shot = single_shot_q__q;
+        dmr = dmr_q__q;
     end
     
 endmodule // drcc__regs__ctrl
+
+
+module drcc__regs__ctrl__dmr_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__regs__ctrl__dmr_q
 
 
 module drcc__regs__ctrl__dual_tx_q(d,q,clock);
@@ -16279,7 +17401,7 @@ module drcc__regs__ctrl__single_shot_q(d,q,clock);
 endmodule // drcc__regs__ctrl__single_shot_q
 
 
-module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,k_in,refused,illegal);
+module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
     
     // Module arguments
     input wire  [31:0] wdat;
@@ -16291,6 +17413,7 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
     input wire  [1:0] mode_a;
     input wire  [1:0] mode_b;
     input wire  single_shot;
+    input wire  dmr;
     output reg  [3:0] k_in;
     output reg  refused;
     output reg  illegal;
@@ -16303,6 +17426,7 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
     localparam  p_mode_a = 5'b1100;
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
+    localparam  p_dmr = 5'b10001;
     localparam  policy_illegal = 2'b11;
     localparam  mode_listen = 2'b1;
     localparam  zero4 = 4'h0;
@@ -16310,6 +17434,7 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
     
     // Local signals
     reg  cfg_differs;
+    reg  listen;
     
     // Update code
     always @(*) begin
@@ -16319,8 +17444,9 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a
         else begin
             k_in = wdat[(p_k)+:(4)];
         end
-        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | (wdat[p_redundancy] & ((wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen)));
-        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot);
+        listen = (wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen);
+        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]);
+        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr);
         if (reset_mode) begin
             illegal = refused;
         end

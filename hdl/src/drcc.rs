@@ -9,6 +9,9 @@
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;
+use crate::dmr::mailbox_cfg::MailboxCfg;
+use crate::host::dmr_check::DmrCheck;
+use crate::host::dmr_regs::DmrRegs;
 use crate::host::status_words::StatusWords;
 use crate::host::wishbone::WbRegs;
 use crate::memory::dedup::RxWriter;
@@ -120,6 +123,9 @@ pub struct Drcc {
     pub chan_b_err_state: Signal<Out, Bits<2>>,
     // blocks
     regs: WbRegs,
+    dmr_check: DmrCheck,
+    dmr_regs: DmrRegs,
+    mailbox_cfg: MailboxCfg,
     status: StatusWords,
     ticker: BitTick,
     main: MainFsm,
@@ -172,6 +178,44 @@ impl Logic for Drcc {
         self.wb_dat_o.next = self.regs.wb_dat_o.val();
         self.wb_ack_o.next = self.regs.wb_ack_o.val();
         self.irq.next = self.regs.irq.val();
+        self.regs.ext_hit.next = self.dmr_check.hit.val();
+        self.regs.ext_word.next = self.dmr_check.word.val();
+        self.regs.ext_writable.next = self.dmr_check.writable.val();
+        self.regs.ext_illegal.next = self.dmr_check.illegal.val();
+        // the DMR function (DMR contract §3-§8) is not in the RTL yet: no DMR events,
+        // and the status words of a DRCC that never ran in DMR mode
+        self.regs.ev_dmr.next = false;
+
+        // ---- DMR registers and mailbox memory (DMR contract §2) ----
+        self.dmr_check.adr.next = self.wb_adr_i.val();
+        self.dmr_check.wdat.next = self.wb_dat_i.val();
+        self.dmr_check.reset_mode.next = self.regs.reset_mode.val();
+        self.dmr_check.cfg_word.next = self.dmr_regs.cfg_word.val();
+        self.dmr_check.time_word.next = self.dmr_regs.time_word.val();
+        self.dmr_check.cs_id_dcl.next = self.dmr_regs.cs_id_dcl.val();
+        self.dmr_check.cs_id_rcl.next = self.dmr_regs.cs_id_rcl.val();
+        self.dmr_check.mb_sel.next = self.dmr_regs.mb_sel.val();
+        self.dmr_check.mb_enable.next = self.dmr_regs.mb_enable.val();
+        self.dmr_check.mb_limits.next = self.dmr_regs.mb_limits.val();
+        self.dmr_check.mb_id_word.next = self.mailbox_cfg.id_word.val();
+        self.dmr_check.mb_mask.next = self.mailbox_cfg.mask.val();
+        self.dmr_check.status_word.next = 0.into();
+        self.dmr_check.cs_count_word.next = 0.into();
+        self.dmr_check.rx_stats_word.next = 0.into();
+        self.dmr_check.mb_state_word.next = 0.into();
+        self.dmr_regs.clk.next = self.clk.val();
+        self.dmr_regs.rst.next = self.rst.val();
+        self.dmr_regs.wr.next = self.regs.wr_o.val();
+        self.dmr_regs.adr.next = self.wb_adr_i.val();
+        self.dmr_regs.wdat.next = self.wb_dat_i.val();
+        self.dmr_regs.writable.next = self.dmr_check.writable.val();
+        self.dmr_regs.refused.next = self.dmr_check.illegal.val();
+        self.mailbox_cfg.clk.next = self.clk.val();
+        self.mailbox_cfg.read_address.next = self.dmr_regs.mb_sel.val();
+        self.mailbox_cfg.write_address.next = self.dmr_regs.mb_sel.val();
+        self.mailbox_cfg.we_id.next = self.dmr_regs.mb_we_id.val();
+        self.mailbox_cfg.we_mask.next = self.dmr_regs.mb_we_mask.val();
+        self.mailbox_cfg.wdat.next = self.wb_dat_i.val().get_bits::<31>(0);
 
         // ---- read-only registers ----
         self.status.adr.next = self.wb_adr_i.val();

@@ -52,6 +52,16 @@ pub struct DrccProbes {
     pub chan_b_rec: u8,
     pub chan_a_err_state: u8,
     pub chan_b_err_state: u8,
+    /// DMR mode (dmr_contract.md §9): `dmr_state` (0 redundancy active, 1 passive,
+    /// 2 disabled, 3 network disconnected), the active line (false DCL, true RCL),
+    /// the fault flags per line and the DMR time base pulse. All 0 outside DMR mode.
+    pub dmr_state: u8,
+    pub acl: bool,
+    pub dcl_tx_fault: bool,
+    pub dcl_rx_fault: bool,
+    pub rcl_tx_fault: bool,
+    pub rcl_rx_fault: bool,
+    pub dmr_tick: bool,
 }
 
 /// Outputs of the DRCC top right after a clock edge.

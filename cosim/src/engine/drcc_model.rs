@@ -18,6 +18,14 @@ impl DrccModelEngine {
             model: DrccModel::new(),
         }
     }
+
+    /// A model engine with `m` DMR mailboxes (generation parameter `M`, 0..16;
+    /// dmr_contract.md §2).
+    pub fn with_mailboxes(m: usize) -> Self {
+        DrccModelEngine {
+            model: DrccModel::with_mailboxes(m),
+        }
+    }
 }
 
 impl DrccEngine for DrccModelEngine {

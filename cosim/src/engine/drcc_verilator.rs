@@ -99,6 +99,14 @@ fn decode(o: &DrccOut) -> DrccOutputs {
             chan_b_rec: o.chan_b_rec,
             chan_a_err_state: o.chan_a_err_state,
             chan_b_err_state: o.chan_b_err_state,
+            // TODO(lead): wire the DMR probes (dmr_contract.md §9) from the RTL ports.
+            dmr_state: 0,
+            acl: false,
+            dcl_tx_fault: false,
+            dcl_rx_fault: false,
+            rcl_tx_fault: false,
+            rcl_rx_fault: false,
+            dmr_tick: false,
         },
     }
 }

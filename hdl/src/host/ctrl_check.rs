@@ -1,8 +1,9 @@
 //! The checks of a `CTRL` write (DRCC contract §9), combinational on the written
 //! word and the stored fields:
 //!
-//! - in reset mode a write with the illegal policy code, or with redundancy and
-//!   a listen-only channel, is refused as a whole;
+//! - in reset mode a write with the illegal policy code, with redundancy or
+//!   DMR and a listen-only channel, or with both redundancy and DMR (DMR
+//!   contract §2), is refused as a whole;
 //! - outside reset mode only `reset_mode` is taken, and a write whose cfg fields
 //!   differ from the stored ones is flagged;
 //! - `k = 0` is stored as 1 (not illegal).
@@ -36,6 +37,8 @@ pub struct CtrlCheck {
     pub mode_b: Signal<In, Bits<2>>,
     /// Stored `single_shot`.
     pub single_shot: Signal<In, Bit>,
+    /// Stored `dmr`.
+    pub dmr: Signal<In, Bit>,
     // ---- verdict ----
     /// The `k` to store: the written one, 0 read as 1.
     pub k_in: Signal<Out, Bits<4>>,
@@ -46,6 +49,7 @@ pub struct CtrlCheck {
     pub illegal: Signal<Out, Bit>,
     // ---- internals ----
     cfg_differs: Signal<Local, Bit>,
+    listen: Signal<Local, Bit>,
     p_redundancy: Constant<Bits<5>>,
     p_policy: Constant<Bits<5>>,
     p_dual_tx: Constant<Bits<5>>,
@@ -53,6 +57,7 @@ pub struct CtrlCheck {
     p_mode_a: Constant<Bits<5>>,
     p_mode_b: Constant<Bits<5>>,
     p_single_shot: Constant<Bits<5>>,
+    p_dmr: Constant<Bits<5>>,
     policy_illegal: Constant<Bits<2>>,
     mode_listen: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
@@ -71,10 +76,12 @@ impl Default for CtrlCheck {
             mode_a: Default::default(),
             mode_b: Default::default(),
             single_shot: Default::default(),
+            dmr: Default::default(),
             k_in: Default::default(),
             refused: Default::default(),
             illegal: Default::default(),
             cfg_differs: Default::default(),
+            listen: Default::default(),
             p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
             p_policy: lsb(&MAP, "CTRL", "policy", 2),
             p_dual_tx: lsb(&MAP, "CTRL", "dual_tx", 1),
@@ -82,6 +89,7 @@ impl Default for CtrlCheck {
             p_mode_a: lsb(&MAP, "CTRL", "mode_a", 2),
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
+            p_dmr: lsb(&MAP, "CTRL", "dmr", 1),
             policy_illegal: Constant::new((POLICY_ILLEGAL as u64).into()),
             mode_listen: Constant::new((ChannelMode::ListenOnly.code() as u64).into()),
             zero4: Constant::new(0.into()),
@@ -99,14 +107,19 @@ impl Logic for CtrlCheck {
         } else {
             self.k_in.next = self.wdat.val().get_bits::<4>(self.p_k.val().index());
         }
-        // an illegal policy, or redundancy with a listen-only channel
+        // an illegal policy; redundancy or DMR (both need two transmitting
+        // channels) with a listen-only channel; redundancy and DMR together
+        self.listen.next = (self.wdat.val().get_bits::<2>(self.p_mode_a.val().index())
+            == self.mode_listen.val())
+            | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index())
+                == self.mode_listen.val());
         self.refused.next = (self.wdat.val().get_bits::<2>(self.p_policy.val().index())
             == self.policy_illegal.val())
+            | ((self.wdat.val().get_bit(self.p_redundancy.val().index())
+                | self.wdat.val().get_bit(self.p_dmr.val().index()))
+                & self.listen.val())
             | (self.wdat.val().get_bit(self.p_redundancy.val().index())
-                & ((self.wdat.val().get_bits::<2>(self.p_mode_a.val().index())
-                    == self.mode_listen.val())
-                    | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index())
-                        == self.mode_listen.val())));
+                & self.wdat.val().get_bit(self.p_dmr.val().index()));
         self.cfg_differs.next = (self.wdat.val().get_bit(self.p_redundancy.val().index())
             != self.redundancy.val())
             | (self.wdat.val().get_bits::<2>(self.p_policy.val().index()) != self.policy.val())
@@ -114,7 +127,8 @@ impl Logic for CtrlCheck {
             | (self.k_in.val() != self.k.val())
             | (self.wdat.val().get_bits::<2>(self.p_mode_a.val().index()) != self.mode_a.val())
             | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index()) != self.mode_b.val())
-            | (self.wdat.val().get_bit(self.p_single_shot.val().index()) != self.single_shot.val());
+            | (self.wdat.val().get_bit(self.p_single_shot.val().index()) != self.single_shot.val())
+            | (self.wdat.val().get_bit(self.p_dmr.val().index()) != self.dmr.val());
         if self.reset_mode.val() {
             self.illegal.next = self.refused.val();
         } else {
@@ -175,6 +189,12 @@ mod tests {
             ("policy", ep),
         ]);
         assert!(check(true, w).2);
+        // DMR with a listen-only channel, and DMR with redundancy: refused (DMR §2)
+        let w = ctrl(&[("dmr", 1), ("mode_a", listen), ("policy", ep)]);
+        assert!(check(true, w).2);
+        let w = ctrl(&[("dmr", 1), ("redundancy", Mode::Redundancy.code()), ("policy", ep)]);
+        assert!(check(true, w).2);
+        assert!(!check(true, ctrl(&[("dmr", 1), ("policy", ep), ("k", 1)])).2);
         // listen-only in normal mode is legal
         let w = ctrl(&[("mode_b", listen), ("policy", ep)]);
         assert!(!check(true, w).2);

@@ -1,5 +1,5 @@
 //! The DRCC's `CTRL` register (DRCC contract §3, §9): the storage of reset
-//! mode, the operating mode ([`Mode`]), the switch policy, `dual_tx`, `k`, the
+//! mode, the operating mode ([`Mode`], and `dmr`), the switch policy, `dual_tx`, `k`, the
 //! channel modes ([`ChannelMode`]) and `single_shot`. The refusals of §9 are
 //! decided by [`CtrlCheck`] (combinational, beside it in the register block, so
 //! that no always block both takes the write and flags it):
@@ -59,6 +59,8 @@ pub struct CtrlReg {
     pub mode_b: Signal<Out, Bits<2>>,
     /// No automatic retransmission (normal mode).
     pub single_shot: Signal<Out, Bit>,
+    /// CiA 701 DMR mode (DMR contract §2).
+    pub dmr: Signal<Out, Bit>,
     // ---- state ----
     reset_mode_q: DFF<Bit>,
     reset_mode_dq: DFF<Bit>,
@@ -69,6 +71,7 @@ pub struct CtrlReg {
     mode_a_q: DFF<Bits<2>>,
     mode_b_q: DFF<Bits<2>>,
     single_shot_q: DFF<Bit>,
+    dmr_q: DFF<Bit>,
     // ---- field positions (from the table) ----
     p_reset_mode: Constant<Bits<5>>,
     p_redundancy: Constant<Bits<5>>,
@@ -78,6 +81,7 @@ pub struct CtrlReg {
     p_mode_a: Constant<Bits<5>>,
     p_mode_b: Constant<Bits<5>>,
     p_single_shot: Constant<Bits<5>>,
+    p_dmr: Constant<Bits<5>>,
     // ---- codes and reset values ----
     redundancy_reset: Constant<Bit>,
     policy_reset: Constant<Bits<2>>,
@@ -89,7 +93,7 @@ impl Default for CtrlReg {
     fn default() -> Self {
         let reset = |field: &str| MAP.field("CTRL", field).reset as u64;
         assert_eq!(reset("reset_mode"), 1, "CTRL resets into reset mode (§3)");
-        assert_eq!(reset("dual_tx") + reset("single_shot"), 0);
+        assert_eq!(reset("dual_tx") + reset("single_shot") + reset("dmr"), 0);
         assert_eq!(reset("mode_a"), reset("mode_b"));
         Self {
             clk: Default::default(),
@@ -108,6 +112,7 @@ impl Default for CtrlReg {
             mode_a: Default::default(),
             mode_b: Default::default(),
             single_shot: Default::default(),
+            dmr: Default::default(),
             reset_mode_q: Default::default(),
             reset_mode_dq: Default::default(),
             redundancy_q: Default::default(),
@@ -117,6 +122,7 @@ impl Default for CtrlReg {
             mode_a_q: Default::default(),
             mode_b_q: Default::default(),
             single_shot_q: Default::default(),
+            dmr_q: Default::default(),
             p_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
             p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
             p_policy: lsb(&MAP, "CTRL", "policy", 2),
@@ -125,6 +131,7 @@ impl Default for CtrlReg {
             p_mode_a: lsb(&MAP, "CTRL", "mode_a", 2),
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
+            p_dmr: lsb(&MAP, "CTRL", "dmr", 1),
             redundancy_reset: Constant::new(reset("redundancy") == Mode::Redundancy.code() as u64),
             policy_reset: Constant::new(reset("policy").into()),
             k_reset: Constant::new(reset("k").into()),
@@ -147,7 +154,8 @@ impl Logic for CtrlReg {
             k_q,
             mode_a_q,
             mode_b_q,
-            single_shot_q
+            single_shot_q,
+            dmr_q
         );
         self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
         if self.we.val() {
@@ -167,6 +175,7 @@ impl Logic for CtrlReg {
                         self.wdat.val().get_bits::<2>(self.p_mode_b.val().index());
                     self.single_shot_q.d.next =
                         self.wdat.val().get_bit(self.p_single_shot.val().index());
+                    self.dmr_q.d.next = self.wdat.val().get_bit(self.p_dmr.val().index());
                 }
             } else {
                 // outside reset mode only reset_mode is taken
@@ -184,6 +193,7 @@ impl Logic for CtrlReg {
             self.mode_a_q.d.next = self.mode_reset.val();
             self.mode_b_q.d.next = self.mode_reset.val();
             self.single_shot_q.d.next = false;
+            self.dmr_q.d.next = false;
         }
 
         self.word.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
@@ -194,7 +204,8 @@ impl Logic for CtrlReg {
             | (bit_cast::<32, 4>(self.k_q.q.val()) << self.p_k.val())
             | (bit_cast::<32, 2>(self.mode_a_q.q.val()) << self.p_mode_a.val())
             | (bit_cast::<32, 2>(self.mode_b_q.q.val()) << self.p_mode_b.val())
-            | (bit_cast::<32, 1>(self.single_shot_q.q.val().into()) << self.p_single_shot.val());
+            | (bit_cast::<32, 1>(self.single_shot_q.q.val().into()) << self.p_single_shot.val())
+            | (bit_cast::<32, 1>(self.dmr_q.q.val().into()) << self.p_dmr.val());
         self.reset_mode.next = self.reset_mode_q.q.val();
         self.reset_mode_d.next = self.reset_mode_dq.q.val();
         self.redundancy.next = self.redundancy_q.q.val();
@@ -204,6 +215,7 @@ impl Logic for CtrlReg {
         self.mode_a.next = self.mode_a_q.q.val();
         self.mode_b.next = self.mode_b_q.q.val();
         self.single_shot.next = self.single_shot_q.q.val();
+        self.dmr.next = self.dmr_q.q.val();
     }
 }
 

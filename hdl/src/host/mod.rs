@@ -5,7 +5,9 @@
 pub mod codes;
 pub mod ctrl_check;
 pub mod ctrl_reg;
+pub mod dmr_check;
 pub mod dmr_registers;
+pub mod dmr_regs;
 pub mod generate;
 pub mod hub_registers;
 pub mod map;

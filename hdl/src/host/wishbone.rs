@@ -75,6 +75,19 @@ pub struct WbRegs {
     pub ev_recover_a: Signal<In, Bit>,
     /// Channel B recovered.
     pub ev_recover_b: Signal<In, Bit>,
+    // ---- the DMR registers (super::dmr_regs) ----
+    /// `wb_adr_i` is a DMR register: `ext_word` is its value.
+    pub ext_hit: Signal<In, Bit>,
+    /// The addressed DMR register's value.
+    pub ext_word: Signal<In, Bits<32>>,
+    /// `wb_adr_i` is a writable DMR register: its block decides the refusal.
+    pub ext_writable: Signal<In, Bit>,
+    /// The DMR block refuses the write at this edge.
+    pub ext_illegal: Signal<In, Bit>,
+    /// The DMR state or the active line changed (`INT_STATUS.dmr`).
+    pub ev_dmr: Signal<In, Bit>,
+    /// A write is taken at this edge.
+    pub wr_o: Signal<Out, Bit>,
     // ---- configuration out ----
     /// `CTRL.reset_mode`.
     pub reset_mode: Signal<Out, Bit>,
@@ -95,6 +108,8 @@ pub struct WbRegs {
     pub mode_b: Signal<Out, Bits<2>>,
     /// `CTRL.single_shot`.
     pub single_shot: Signal<Out, Bit>,
+    /// `CTRL.dmr`: CiA 701 DMR mode.
+    pub dmr: Signal<Out, Bit>,
     /// `BTR.brp`.
     pub brp: Signal<Out, Bits<6>>,
     /// `BTR.tseg1`.
@@ -128,7 +143,7 @@ pub struct WbRegs {
     /// Channel recoveries, both channels (saturating).
     pub recoveries: Signal<Out, Bits<16>>,
     // ---- blocks ----
-    bus: WbSlave<8>,
+    bus: WbSlave<9>,
     ctrl: CtrlReg,
     ctrl_check: CtrlCheck,
     // ---- registers ----
@@ -149,7 +164,7 @@ pub struct WbRegs {
     rdata: Signal<Local, Bits<32>>,
     wdat: Signal<Local, Bits<32>>,
     illegal: Signal<Local, Bit>,
-    w1c: Signal<Local, Bits<8>>,
+    w1c: Signal<Local, Bits<9>>,
     target_count: Signal<Local, Bits<4>>,
     es_evt: Signal<Local, Bit>,
     tx_data64: Signal<Local, Bits<64>>,
@@ -188,6 +203,7 @@ pub struct WbRegs {
     i_tx_failure: Constant<Bits<5>>,
     i_illegal: Constant<Bits<5>>,
     i_aux: Constant<Bits<5>>,
+    i_dmr: Constant<Bits<5>>,
     // ---- reset values and codes ----
     btr_reset: Constant<Bits<24>>,
     rmb_cfg_reset: Constant<Bits<32>>,
@@ -196,7 +212,7 @@ pub struct WbRegs {
     zero2: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     zero6: Constant<Bits<6>>,
-    zero8: Constant<Bits<8>>,
+    zero9: Constant<Bits<9>>,
     zero15: Constant<Bits<15>>,
     zero16: Constant<Bits<16>>,
     one16: Constant<Bits<16>>,
@@ -265,6 +281,13 @@ impl Default for WbRegs {
             mode_a: Default::default(),
             mode_b: Default::default(),
             single_shot: Default::default(),
+            dmr: Default::default(),
+            ext_hit: Default::default(),
+            ext_word: Default::default(),
+            ext_writable: Default::default(),
+            ext_illegal: Default::default(),
+            ev_dmr: Default::default(),
+            wr_o: Default::default(),
             brp: Default::default(),
             tseg1: Default::default(),
             tseg2: Default::default(),
@@ -336,6 +359,7 @@ impl Default for WbRegs {
             i_tx_failure: lsb(&MAP, "INT_STATUS", "tx_failure", 1),
             i_illegal: lsb(&MAP, "INT_STATUS", "illegal", 1),
             i_aux: lsb(&MAP, "INT_STATUS", "aux", 1),
+            i_dmr: lsb(&MAP, "INT_STATUS", "dmr", 1),
             btr_reset: reset(map::register("BTR").unwrap().reset_value()),
             rmb_cfg_reset: reset(map::register("RMB_CFG").unwrap().reset_value()),
             window_reset: reset(field_reset("DEDUP_CFG", "window")),
@@ -343,7 +367,7 @@ impl Default for WbRegs {
             zero2: Constant::new(0.into()),
             zero4: Constant::new(0.into()),
             zero6: Constant::new(0.into()),
-            zero8: Constant::new(0.into()),
+            zero9: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             one16: Constant::new(1.into()),
@@ -393,9 +417,9 @@ impl Logic for WbRegs {
         } else if self.wb_adr_i.val() == self.a_dedup_cfg.val() {
             self.rdata.next = bit_cast::<32, 15>(self.window_q.q.val()) << self.d_window.val();
         } else if self.wb_adr_i.val() == self.a_int_status.val() {
-            self.rdata.next = bit_cast::<32, 8>(self.bus.int_status.val());
+            self.rdata.next = bit_cast::<32, 9>(self.bus.int_status.val());
         } else if self.wb_adr_i.val() == self.a_int_enable.val() {
-            self.rdata.next = bit_cast::<32, 8>(self.bus.int_enable.val());
+            self.rdata.next = bit_cast::<32, 9>(self.bus.int_enable.val());
         } else if self.wb_adr_i.val() == self.a_tx_id.val() {
             self.rdata.next = bit_cast::<32, 31>(self.tx_id_q.q.val());
         } else if self.wb_adr_i.val() == self.a_tx_ctrl.val() {
@@ -405,6 +429,8 @@ impl Logic for WbRegs {
             self.rdata.next = self.tx_data0_q.q.val();
         } else if self.wb_adr_i.val() == self.a_tx_data1.val() {
             self.rdata.next = self.tx_data1_q.q.val();
+        } else if self.ext_hit.val() {
+            self.rdata.next = self.ext_word.val();
         } else {
             self.rdata.next = self.ro_word.val();
         }
@@ -428,10 +454,11 @@ impl Logic for WbRegs {
         self.ctrl_check.mode_a.next = self.ctrl.mode_a.val();
         self.ctrl_check.mode_b.next = self.ctrl.mode_b.val();
         self.ctrl_check.single_shot.next = self.ctrl.single_shot.val();
+        self.ctrl_check.dmr.next = self.ctrl.dmr.val();
         self.illegal.next = false;
-        self.w1c.next = self.zero8.val();
+        self.w1c.next = self.zero9.val();
         self.bus.int_enable_we.next = false;
-        self.bus.int_enable_d.next = self.wdat.val().get_bits::<8>(0);
+        self.bus.int_enable_d.next = self.wdat.val().get_bits::<9>(0);
         self.push.next = false;
         self.pop.next = false;
 
@@ -465,7 +492,7 @@ impl Logic for WbRegs {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_int_status.val() {
-                self.w1c.next = self.wdat.val().get_bits::<8>(0);
+                self.w1c.next = self.wdat.val().get_bits::<9>(0);
             } else if self.wb_adr_i.val() == self.a_int_enable.val() {
                 self.bus.int_enable_we.next = true;
             } else if self.wb_adr_i.val() == self.a_tx_id.val() {
@@ -495,6 +522,8 @@ impl Logic for WbRegs {
                         self.pop.next = true;
                     }
                 }
+            } else if self.ext_writable.val() {
+                self.illegal.next = self.ext_illegal.val();
             } else {
                 // read-only or unmapped
                 self.illegal.next = true;
@@ -502,14 +531,15 @@ impl Logic for WbRegs {
         }
 
         // ---- interrupts (§8) and statistics ----
-        self.bus.events.next = (bit_cast::<8, 1>(self.ev_rx.val().into()) << self.i_rx.val())
-            | (bit_cast::<8, 1>(self.ev_tx_done.val().into()) << self.i_tx_done.val())
-            | (bit_cast::<8, 1>(self.ev_switch.val().into()) << self.i_switch.val())
-            | (bit_cast::<8, 1>(self.es_evt.val().into()) << self.i_err_state.val())
-            | (bit_cast::<8, 1>(self.ev_overrun.val().into()) << self.i_overrun.val())
-            | (bit_cast::<8, 1>(self.ev_tx_failure.val().into()) << self.i_tx_failure.val())
-            | (bit_cast::<8, 1>(self.illegal.val().into()) << self.i_illegal.val())
-            | (bit_cast::<8, 1>(self.ev_aux.val().into()) << self.i_aux.val());
+        self.bus.events.next = (bit_cast::<9, 1>(self.ev_rx.val().into()) << self.i_rx.val())
+            | (bit_cast::<9, 1>(self.ev_tx_done.val().into()) << self.i_tx_done.val())
+            | (bit_cast::<9, 1>(self.ev_switch.val().into()) << self.i_switch.val())
+            | (bit_cast::<9, 1>(self.es_evt.val().into()) << self.i_err_state.val())
+            | (bit_cast::<9, 1>(self.ev_overrun.val().into()) << self.i_overrun.val())
+            | (bit_cast::<9, 1>(self.ev_tx_failure.val().into()) << self.i_tx_failure.val())
+            | (bit_cast::<9, 1>(self.illegal.val().into()) << self.i_illegal.val())
+            | (bit_cast::<9, 1>(self.ev_aux.val().into()) << self.i_aux.val())
+            | (bit_cast::<9, 1>(self.ev_dmr.val().into()) << self.i_dmr.val());
         self.bus.w1c.next = self.w1c.val();
         self.es_a_prev.d.next = self.es_a.val();
         self.es_b_prev.d.next = self.es_b.val();
@@ -558,6 +588,8 @@ impl Logic for WbRegs {
         self.mode_a.next = self.ctrl.mode_a.val();
         self.mode_b.next = self.ctrl.mode_b.val();
         self.single_shot.next = self.ctrl.single_shot.val();
+        self.dmr.next = self.ctrl.dmr.val();
+        self.wr_o.next = self.wr.val();
         self.brp.next = self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index());
         self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());
         self.tseg2.next = self.btr_q.q.val().get_bits::<3>(self.b_tseg2.val().index());

@@ -4,7 +4,8 @@
 //! paired under the redundancy manager: main FSM ([`main_fsm`]), one auxiliary FSM
 //! per channel ([`aux_fsm`]), the TX queues ([`tx_queues`]), the RX FIFO with
 //! duplicate removal ([`rx_path`]) and the Wishbone register file (this file, map in
-//! [`regs`]).
+//! [`regs`]). The third mode, CiA 701 dual-modular redundancy (`CTRL.dmr`), is the
+//! DMR block ([`dmr`], `dmr_contract.md`).
 //!
 //! Step order (a registered design): every next-state value is computed from the
 //! values before the edge. The channel outputs the DRCC logic sees at an edge are
@@ -57,6 +58,7 @@
 #![doc = include_str!("../drcc_contract.md")]
 
 pub mod aux_fsm;
+pub mod dmr;
 pub mod main_fsm;
 pub mod regs;
 pub mod rx_path;
@@ -67,7 +69,9 @@ use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, 
 use crate::frame::Frame;
 use crate::model::ChannelModel;
 use aux_fsm::{AuxFsm, AuxInputs};
+use dmr::{DmrBlock, DmrInputs};
 use main_fsm::{FsmInputs, MainFsm};
+use regs::dmr as dmr_regs;
 use regs::*;
 use rx_path::{RxInputs, RxPath};
 use tx_queues::{TxQueues, TxqInputs};
@@ -128,6 +132,10 @@ impl Regs {
     fn redundancy(&self) -> bool {
         self.ctrl & ctrl::REDUNDANCY != 0
     }
+    /// DMR mode (dmr_contract.md §2).
+    fn dmr(&self) -> bool {
+        self.ctrl & ctrl::DMR != 0
+    }
     fn policy(&self) -> u32 {
         (self.ctrl & ctrl::POLICY_MASK) >> ctrl::POLICY_SHIFT
     }
@@ -182,6 +190,7 @@ pub struct DrccModel {
     aux: [AuxFsm; 2],
     txq: TxQueues,
     rx: RxPath,
+    dmr: DmrBlock,
 }
 
 impl Default for DrccModel {
@@ -191,8 +200,14 @@ impl Default for DrccModel {
 }
 
 impl DrccModel {
-    /// A DRCC in its reset state (reset mode, both channels held in reset).
+    /// A DRCC in its reset state (reset mode, both channels held in reset), with
+    /// the default 16 DMR mailboxes.
     pub fn new() -> Self {
+        Self::with_mailboxes(dmr_regs::M_DEFAULT)
+    }
+
+    /// A DRCC with `m` DMR mailboxes (generation parameter `M`, 0..16).
+    pub fn with_mailboxes(m: usize) -> Self {
         let chan = [ChannelModel::new(), ChannelModel::new()];
         let out = [chan[0].outputs(), chan[1].outputs()];
         DrccModel {
@@ -203,6 +218,7 @@ impl DrccModel {
             aux: [AuxFsm::default(); 2],
             txq: TxQueues::default(),
             rx: RxPath::default(),
+            dmr: DmrBlock::new(m),
         }
     }
 
@@ -211,7 +227,11 @@ impl DrccModel {
         let r = &self.r;
         let b = r.btr;
         ChannelInputs {
-            rst: rst || r.reset_mode() || r.reset_mode_q || self.aux[c].restarting(),
+            rst: rst
+                || r.reset_mode()
+                || r.reset_mode_q
+                || self.aux[c].restarting()
+                || self.dmr.restart[c],
             rx,
             timing: BitTiming {
                 brp: r.brp(),
@@ -230,20 +250,27 @@ impl DrccModel {
                         }) as u8,
                 ),
                 ewl: (b >> btr::EWL_SHIFT) as u8,
-                single_shot: r.ctrl & ctrl::SINGLE_SHOT != 0 && !r.redundancy(),
+                single_shot: r.ctrl & ctrl::SINGLE_SHOT != 0 && !r.redundancy() && !r.dmr(),
             },
             tx_req: self.txq.req[c]
+                || self.dmr.tx_req(c)
                 || if c == 0 {
                     self.fsm.req_a
                 } else {
                     self.fsm.req_b
                 },
-            tx_frame: self.txq.rd,
-            tx_abort: if c == 0 {
-                self.fsm.abort_a
+            // DMR §5: the CS frame of the line while its `cs_req` is 1.
+            tx_frame: if self.dmr.cs_req[c] {
+                self.dmr.cs_frame(c)
             } else {
-                self.fsm.abort_b
+                self.txq.rd
             },
+            tx_abort: self.dmr.abort[c]
+                || if c == 0 {
+                    self.fsm.abort_a
+                } else {
+                    self.fsm.abort_b
+                },
         }
     }
 
@@ -302,8 +329,12 @@ impl DrccModel {
             idx::STATS0 => self.rx.duplicates as u32 | (self.rx.overruns as u32) << 16,
             idx::STATS1 => self.fsm.switches as u32 | (r.recoveries as u32) << 16,
             idx::TIMES => self.fsm.last_tx_time as u32 | (self.fsm.switch_time as u32) << 16,
-            // TX_CMD, RX_CMD (write only) and unmapped words.
-            _ => 0,
+            // DMR registers (dmr_contract.md §2.1); TX_CMD, RX_CMD (write only) and
+            // unmapped words read 0.
+            _ => self
+                .dmr
+                .read(adr, r.reset_mode(), self.rx.dmr_stats())
+                .unwrap_or(0),
         }
     }
 
@@ -314,11 +345,16 @@ impl DrccModel {
         let cb = self.chan_inputs(1, i.rst, i.chan_b_rx);
         if i.rst {
             let redundancy = self.r.redundancy();
+            let dmr_off = self
+                .r
+                .dmr()
+                .then(|| self.dmr.off[self.txq.rd_sel as usize & 1]);
             self.r = Regs::reset();
             self.fsm = MainFsm::default();
             self.aux = [AuxFsm::default(); 2];
-            self.txq.reset(redundancy);
+            self.txq.reset(redundancy, dmr_off);
             self.rx.reset();
+            self.dmr.rst();
         } else {
             self.edge(i);
         }
@@ -333,6 +369,7 @@ impl DrccModel {
         let [pa, pb] = &self.out;
         let reset_mode = r.reset_mode();
         let redundancy = r.redundancy();
+        let dmr_mode = r.dmr();
         let running = redundancy && !reset_mode;
 
         // Nominal bit tick (§4.3).
@@ -356,6 +393,7 @@ impl DrccModel {
         let mut w1c = 0u32;
         let mut push = None;
         let mut pop = false;
+        let mut dmr_write = None;
         let take = i.wb_cyc && i.wb_stb && !r.wb_ack;
         n.wb_ack = take;
         n.wb_dat = 0;
@@ -370,10 +408,14 @@ impl DrccModel {
                         let w = clamp_k(d & ctrl::DEFINED);
                         if reset_mode {
                             let listen_only = |shift: u32| (w >> shift) & 3 == 1;
+                            let any_listen_only =
+                                listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
+                            let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
                             if (w & ctrl::POLICY_MASK) >> ctrl::POLICY_SHIFT == ctrl::POLICY_ILLEGAL
-                                || (w & ctrl::REDUNDANCY != 0
-                                    && (listen_only(ctrl::MODE_A_SHIFT)
-                                        || listen_only(ctrl::MODE_B_SHIFT)))
+                                || (red && any_listen_only)
+                                // DMR §2: one mode at a time; both lines must transmit.
+                                || (red && dmr)
+                                || (dmr && any_listen_only)
                             {
                                 ints |= int::ILLEGAL;
                             } else {
@@ -405,7 +447,7 @@ impl DrccModel {
                     idx::TX_DATA1 => n.tx_data[1] = d,
                     idx::TX_CMD => {
                         if d & 1 != 0 {
-                            let q = if redundancy {
+                            let q = if redundancy || dmr_mode {
                                 0
                             } else {
                                 (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
@@ -414,6 +456,8 @@ impl DrccModel {
                         }
                     }
                     idx::RX_CMD => pop = d & 1 != 0,
+                    // DMR registers: applied after the DMR block's edge.
+                    idx::DMR_CFG..=idx::MB_STATE => dmr_write = Some((adr, d)),
                     // Read-only and unmapped words.
                     _ => ints |= int::ILLEGAL,
                 }
@@ -472,10 +516,39 @@ impl DrccModel {
             }
         }
 
+        // DMR block (dmr_contract.md §3-§7), on pre-edge channel outputs and queue.
+        let dmr_off = self.dmr.off[self.txq.rd_sel as usize & 1];
+        let acl_q = self.dmr.acl;
+        let dev = self.dmr.edge(&DmrInputs {
+            running: dmr_mode && !reset_mode,
+            tick,
+            reset_mode_q: r.reset_mode_q,
+            done: [pa.tx_done, pb.tx_done],
+            failed: [pa.tx_failed, pb.tx_failed],
+            rx_valid: [pa.rx_valid, pb.rx_valid],
+            rx_frame: [pa.rx_frame, pb.rx_frame],
+            err_state: [pa.probes.err_state, pb.probes.err_state],
+            q_count: self.txq.count[0],
+            rd: self.txq.rd,
+            rd_sel: self.txq.rd_sel,
+        });
+        if let Some((adr, d)) = dmr_write {
+            if self.dmr.write(adr, d, reset_mode) != Some(true) {
+                ints |= int::ILLEGAL;
+            }
+        }
+        if dev.tx_done {
+            ints |= int::TX_DONE;
+        }
+        if dev.int {
+            ints |= int::DMR;
+        }
+
         // TX queues (§6).
         let tev = self.txq.edge(&TxqInputs {
             reset_mode,
             redundancy,
+            dmr: dmr_mode.then_some((dmr_off, dev.pop)),
             push,
             fsm_pop: fev.pop,
             done: [pa.tx_done, pb.tx_done],
@@ -495,11 +568,19 @@ impl DrccModel {
         let rev = self.rx.edge(
             &RxInputs {
                 reset_mode,
-                dedup_on: redundancy && r.window() != 0,
+                dedup_on: (redundancy || dmr_mode) && r.window() != 0,
+                dmr: dmr_mode,
+                acl: acl_q,
+                release_set: dev.acl_switch,
                 window: r.window(),
                 tick,
                 pop,
-                rx_valid: [pa.rx_valid, pb.rx_valid],
+                // DMR §7: CS frames never reach the RX path.
+                rx_valid: if dmr_mode && !reset_mode {
+                    dev.rx_deliver
+                } else {
+                    [pa.rx_valid, pb.rx_valid]
+                },
             },
             [&pa.rx_frame, &pb.rx_frame],
         );
@@ -559,6 +640,13 @@ impl DrccModel {
                 chan_b_rec: b.probes.rec,
                 chan_a_err_state: a.probes.err_state,
                 chan_b_err_state: b.probes.err_state,
+                dmr_state: self.dmr.dmr_state,
+                acl: self.dmr.acl != 0,
+                dcl_tx_fault: self.dmr.tx_fault[0],
+                dcl_rx_fault: self.dmr.rx_fault[0],
+                rcl_tx_fault: self.dmr.tx_fault[1],
+                rcl_rx_fault: self.dmr.rx_fault[1],
+                dmr_tick: self.dmr.dmr_tick,
             },
         }
     }

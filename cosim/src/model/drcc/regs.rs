@@ -31,6 +31,18 @@ pub mod idx {
     pub const STATS0: u8 = 22;
     pub const STATS1: u8 = 23;
     pub const TIMES: u8 = 24;
+    // DMR mode (dmr_contract.md §2.1).
+    pub const DMR_CFG: u8 = 25;
+    pub const DMR_TIME: u8 = 26;
+    pub const DMR_CS: u8 = 27;
+    pub const DMR_STATUS: u8 = 28;
+    pub const DMR_CS_COUNT: u8 = 29;
+    pub const DMR_RX_STATS: u8 = 30;
+    pub const MB_SEL: u8 = 31;
+    pub const MB_ID: u8 = 32;
+    pub const MB_MASK: u8 = 33;
+    pub const MB_CFG: u8 = 34;
+    pub const MB_STATE: u8 = 35;
 }
 
 /// `CTRL` fields.
@@ -45,8 +57,10 @@ pub mod ctrl {
     pub const MODE_A_SHIFT: u32 = 12;
     pub const MODE_B_SHIFT: u32 = 14;
     pub const SINGLE_SHOT: u32 = 1 << 16;
+    /// DMR mode (dmr_contract.md §2): the third DRCC mode.
+    pub const DMR: u32 = 1 << 17;
     /// Every defined bit (reserved bits read 0).
-    pub const DEFINED: u32 = 0x1_FF1F;
+    pub const DEFINED: u32 = 0x3_FF1F;
     /// Every cfg field (all defined bits but `reset_mode`).
     pub const CFG: u32 = DEFINED & !RESET_MODE;
     /// Reset value: reset mode, policy error-passive, k = 1.
@@ -92,7 +106,9 @@ pub mod int {
     pub const TX_FAILURE: u32 = 1 << 5;
     pub const ILLEGAL: u32 = 1 << 6;
     pub const AUX: u32 = 1 << 7;
-    pub const ALL: u32 = 0xFF;
+    /// DMR state or ACL changed (dmr_contract.md §2.1).
+    pub const DMR: u32 = 1 << 8;
+    pub const ALL: u32 = 0x1FF;
 }
 
 /// `TX_ID` / `RX_ID` fields.
@@ -136,4 +152,35 @@ pub mod aux {
     pub const CAUSE_BUSOFF: u8 = 1 << 1;
     pub const CAUSE_KFAIL: u8 = 1 << 2;
     pub const CAUSE_STALL: u8 = 1 << 3;
+}
+
+/// DMR registers (dmr_contract.md §2.1): fields and reset values.
+pub mod dmr {
+    /// `DMR_CFG`: [15:0] timeout [100], [31:16] cs_period [0].
+    pub const CFG_RESET: u32 = 100;
+    /// `DMR_TIME`: [15:0] tick_bits [125], [31:16] recovery_delay [2000].
+    pub const TIME_RESET: u32 = 125 | 2000 << 16;
+    /// `DMR_CS`: [10:0] cs_id_dcl [0x7EA], [26:16] cs_id_rcl [0x7EB].
+    pub const CS_RESET: u32 = 0x7EA | 0x7EB << 16;
+    pub const CS_DEFINED: u32 = 0x07FF_07FF;
+    /// `MB_ID`: [28:0] id, [29] ide, [30] dir.
+    pub const MB_ID_DEFINED: u32 = 0x7FFF_FFFF;
+    pub const MB_IDE: u32 = 1 << 29;
+    pub const MB_DIR: u32 = 1 << 30;
+    /// `MB_CFG`: [6:0] limit [3], [31] enable [0].
+    pub const MB_LIMIT_MASK: u32 = 0x7F;
+    pub const MB_ENABLE: u32 = 1 << 31;
+    pub const LIMIT_RESET: u8 = 3;
+    /// `dmr_state` encoding (§1).
+    pub const ACTIVE: u8 = 0;
+    pub const PASSIVE: u8 = 1;
+    pub const DISABLED: u8 = 2;
+    pub const DISCONNECTED: u8 = 3;
+    /// `DMR_STATUS.cause` encoding.
+    pub const CAUSE_TIMEOUT: u8 = 0;
+    pub const CAUSE_DEVIATION: u8 = 1;
+    pub const CAUSE_BUSOFF: u8 = 2;
+    pub const CAUSE_CS_FAILED: u8 = 3;
+    /// Default number of mailboxes (generation parameter `M`).
+    pub const M_DEFAULT: usize = 16;
 }

@@ -1,6 +1,9 @@
 //! RX FIFO and duplicate removal (contract §7): the 32 x 100-bit RX RAM with its
 //! registered read port, the writer FSM (idle, scan, decide, write), the 32-entry
-//! history of delivered frames and the `now` / `hist_idle` tick counters.
+//! history of delivered frames and the `now` / `hist_idle` tick counters. In DMR
+//! mode (dmr_contract.md §8) the first-copy-wins rule is replaced by the ACL rule:
+//! frames of the passive line wait in the history (`hd` = 0) and are released,
+//! oldest first, at an ACL switch (states `RSCAN`, `FETCH`, `RELEASE`).
 
 use crate::frame::Frame;
 
@@ -9,6 +12,10 @@ pub const W_IDLE: u8 = 0;
 pub const W_SCAN: u8 = 1;
 pub const W_DECIDE: u8 = 2;
 pub const W_WRITE: u8 = 3;
+/// DMR mode (dmr_contract.md §8): the release of waiting PCL frames.
+pub const W_RSCAN: u8 = 4;
+pub const W_FETCH: u8 = 5;
+pub const W_RELEASE: u8 = 6;
 
 /// `hist_idle` saturation value: every history entry is dropped there.
 const HIST_IDLE_MAX: u16 = 32767;
@@ -20,8 +27,14 @@ pub const HIST: usize = 32;
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RxInputs {
     pub reset_mode: bool,
-    /// `redundancy && window != 0`.
+    /// `redundancy && window != 0`; in DMR mode `hist_on = window != 0`.
     pub dedup_on: bool,
+    /// DMR mode (dmr_contract.md §8): the ACL rule.
+    pub dmr: bool,
+    /// The ACL register before the edge (0 DCL = A, 1 RCL = B).
+    pub acl: u8,
+    /// An ACL switch at this edge: `release <= 1`.
+    pub release_set: bool,
     pub window: u16,
     pub tick: bool,
     /// An `RX_CMD.pop` write at this edge.
@@ -76,14 +89,42 @@ pub struct RxPath {
     // Statistics, cleared only by `rst`.
     pub duplicates: u16,
     pub overruns: u16,
+    // DMR mode (dmr_contract.md §8).
+    /// Delivered: the entry's frame reached the FIFO.
+    pub hd: u32,
+    pub release: bool,
+    pub rel_found: bool,
+    pub rel_e: u8,
+    pub rel_age: u16,
+    pub w_fifo: bool,
+    pub w_hist: bool,
+    pub w_pcl: bool,
+    // DMR statistics (DMR_RX_STATS), cleared only by `rst`.
+    pub pcl_frames: u16,
+    pub released: u8,
+    pub expired: u8,
 }
 
 impl RxPath {
+    /// `DMR_RX_STATS`: [15:0] pcl_frames, [23:16] released, [31:24] expired.
+    pub fn dmr_stats(&self) -> u32 {
+        self.pcl_frames as u32 | (self.released as u32) << 16 | (self.expired as u32) << 24
+    }
+
+    /// History read address: `rel_e` in `FETCH`, else `scan_i[4:0]`.
+    fn hist_addr(w_state: u8, scan_i: u8, rel_e: u8) -> usize {
+        if w_state == W_FETCH {
+            (rel_e & 31) as usize
+        } else {
+            (scan_i & 31) as usize
+        }
+    }
+
     /// A `rst` edge: the read ports load as at every edge (RAM contents are not
     /// reset), every register and statistic clears.
     pub fn reset(&mut self) {
         let rd = self.ram[self.head as usize];
-        let hist_rd = self.hist[(self.scan_i & 31) as usize];
+        let hist_rd = self.hist[Self::hist_addr(self.w_state, self.scan_i, self.rel_e)];
         *self = RxPath {
             ram: self.ram,
             hist: self.hist,
@@ -99,7 +140,7 @@ impl RxPath {
         let c = self.clone_regs();
         // Registered read ports (read-first: the RAM contents before the edge).
         self.rd = self.ram[c.head as usize];
-        self.hist_rd = self.hist[(c.scan_i & 31) as usize];
+        self.hist_rd = self.hist[Self::hist_addr(c.w_state, c.scan_i, c.rel_e)];
         ev.pop_refused = i.pop && c.count == 0;
         self.rx_ready = !i.reset_mode && c.count != 0;
         if i.reset_mode {
@@ -118,6 +159,14 @@ impl RxPath {
             self.hist_ptr = 0;
             self.hist_idle = 0;
             self.now = 0;
+            self.hd = 0;
+            self.release = false;
+            self.rel_found = false;
+            self.rel_e = 0;
+            self.rel_age = 0;
+            self.w_fifo = false;
+            self.w_hist = false;
+            self.w_pcl = false;
             return ev;
         }
         if i.tick {
@@ -128,6 +177,14 @@ impl RxPath {
             self.hv = 0;
         }
         self.rxp = [c.rxp[0] | i.rx_valid[0], c.rxp[1] | i.rx_valid[1]];
+        // Expiry of a history entry; in DMR mode an undelivered, unmatched one
+        // counts in `expired` (§8).
+        let expire = |s: &mut Self, bit: u32| {
+            s.hv &= !bit;
+            if i.dmr && c.hu & bit == 0 && c.hd & bit == 0 {
+                s.expired = c.expired.saturating_add(1);
+            }
+        };
         let mut pushed = false;
         match c.w_state {
             W_IDLE => {
@@ -137,10 +194,23 @@ impl RxPath {
                     // A new rx_valid at this edge sets it again (set wins).
                     self.rxp[s] = i.rx_valid[s];
                     self.hist_idle = 0;
-                    self.w_state = if i.dedup_on { W_SCAN } else { W_WRITE };
+                    self.w_state = if i.dedup_on {
+                        W_SCAN
+                    } else if i.dmr {
+                        W_DECIDE
+                    } else {
+                        W_WRITE
+                    };
+                    // Outside DMR mode every frame goes to the FIFO (§D.7).
+                    self.w_fifo = true;
+                    self.w_hist = i.dedup_on;
                     self.scan_i = 0;
                     self.hit = false;
                     self.free_found = false;
+                } else if i.dmr && c.release && i.dedup_on {
+                    self.w_state = W_RSCAN;
+                    self.scan_i = 0;
+                    self.rel_found = false;
                 }
             }
             W_SCAN => {
@@ -155,7 +225,7 @@ impl RxPath {
                         self.free_e = e;
                     }
                     if c.hv & bit != 0 && age > i.window {
-                        self.hv &= !bit;
+                        expire(self, bit);
                     } else if c.hv & bit != 0
                         && c.hu & bit == 0
                         && entry.ch != c.sel
@@ -171,6 +241,36 @@ impl RxPath {
                     self.w_state = W_DECIDE;
                 }
             }
+            W_DECIDE if i.dmr => {
+                // §8 the ACL rule.
+                let pcl = c.sel != i.acl;
+                if pcl {
+                    self.pcl_frames = c.pcl_frames.saturating_add(1);
+                }
+                self.w_pcl = pcl;
+                if c.hit {
+                    let bit = 1u32 << c.hit_e;
+                    // Interpretation: a PCL copy of a frame still waiting on the
+                    // ACL (recorded before the switch, not yet released) leaves the
+                    // entry for the release, or that frame would be lost.
+                    if !(pcl && c.hd & bit == 0) {
+                        self.hu |= bit;
+                    }
+                    if c.hd & bit == 0 && !pcl {
+                        // The PCL copy came first and waited: delivered now.
+                        self.w_fifo = true;
+                        self.w_hist = false;
+                        self.w_state = W_WRITE;
+                    } else {
+                        self.duplicates = c.duplicates.saturating_add(1);
+                        self.w_state = W_IDLE;
+                    }
+                } else {
+                    self.w_fifo = !pcl;
+                    self.w_hist = i.dedup_on;
+                    self.w_state = W_WRITE;
+                }
+            }
             W_DECIDE => {
                 if c.hit {
                     self.hu |= 1 << c.hit_e;
@@ -180,9 +280,57 @@ impl RxPath {
                     self.w_state = W_WRITE;
                 }
             }
+            W_RSCAN => {
+                if c.scan_i >= 1 {
+                    let e = c.scan_i - 1;
+                    let bit = 1u32 << e;
+                    let entry = c.hist_rd;
+                    let age = c.now.wrapping_sub(entry.ts);
+                    if c.hv & bit != 0 && age > i.window {
+                        expire(self, bit);
+                    } else if c.hv & bit != 0
+                        && c.hu & bit == 0
+                        && c.hd & bit == 0
+                        && entry.ch == i.acl
+                        && (!c.rel_found || age > c.rel_age)
+                    {
+                        // The oldest waiting frame of the new ACL.
+                        self.rel_found = true;
+                        self.rel_e = e;
+                        self.rel_age = age;
+                    }
+                }
+                self.scan_i = c.scan_i + 1;
+                if c.scan_i == HIST as u8 {
+                    // Interpretation: entry 31, judged at this edge, counts.
+                    if self.rel_found {
+                        self.w_state = W_FETCH;
+                    } else {
+                        self.release = false;
+                        self.w_state = W_IDLE;
+                    }
+                }
+            }
+            W_FETCH => self.w_state = W_RELEASE,
+            W_RELEASE => {
+                let frame = c.hist_rd.frame;
+                if c.count >= 32 {
+                    self.overruns = c.overruns.saturating_add(1);
+                    ev.overrun = true;
+                } else {
+                    self.ram[((c.head + c.count) & 31) as usize] = (frame, i.acl);
+                    pushed = true;
+                    ev.rx = true;
+                }
+                self.hd |= 1 << c.rel_e;
+                self.released = c.released.saturating_add(1);
+                self.w_state = W_IDLE;
+            }
             _ => {
                 let frame = *rx_frame[c.sel as usize];
-                if c.count >= 32 {
+                if !c.w_fifo {
+                    // A PCL frame: it waits in the history (§8).
+                } else if c.count >= 32 {
                     self.overruns = c.overruns.saturating_add(1);
                     ev.overrun = true;
                 } else {
@@ -190,7 +338,7 @@ impl RxPath {
                     pushed = true;
                     ev.rx = true;
                 }
-                if i.dedup_on {
+                if c.w_hist {
                     let p = if c.free_found {
                         c.free_e
                     } else {
@@ -203,12 +351,20 @@ impl RxPath {
                     };
                     self.hv |= 1 << p;
                     self.hu &= !(1 << p);
+                    if c.w_pcl && i.dmr {
+                        self.hd &= !(1 << p);
+                    } else {
+                        self.hd |= 1 << p;
+                    }
                     if !c.free_found {
                         self.hist_ptr = (p + 1) & 31;
                     }
                 }
                 self.w_state = W_IDLE;
             }
+        }
+        if i.release_set {
+            self.release = true;
         }
         let popped = i.pop && c.count > 0;
         if popped {
@@ -239,6 +395,17 @@ impl RxPath {
             now: self.now,
             duplicates: self.duplicates,
             overruns: self.overruns,
+            hd: self.hd,
+            release: self.release,
+            rel_found: self.rel_found,
+            rel_e: self.rel_e,
+            rel_age: self.rel_age,
+            w_fifo: self.w_fifo,
+            w_hist: self.w_hist,
+            w_pcl: self.w_pcl,
+            pcl_frames: self.pcl_frames,
+            released: self.released,
+            expired: self.expired,
         }
     }
 }
@@ -263,4 +430,15 @@ struct RxRegs {
     now: u16,
     duplicates: u16,
     overruns: u16,
+    hd: u32,
+    release: bool,
+    rel_found: bool,
+    rel_e: u8,
+    rel_age: u16,
+    w_fifo: bool,
+    w_hist: bool,
+    w_pcl: bool,
+    pcl_frames: u16,
+    released: u8,
+    expired: u8,
 }

@@ -1,6 +1,8 @@
 //! TX buffer RAM and its two queues (contract §6): 16 x 99-bit synchronous RAM,
 //! queue A = entries 0..7, queue B = 8..15; the registered read port feeding both
-//! channels; the normal-mode request / busy logic of each channel.
+//! channels; the normal-mode request / busy logic of each channel. In DMR mode
+//! (dmr_contract.md §5) queue A is the one logical queue, read at `head + off[L]`
+//! for the line the read port serves; the DMR block pops what both lines sent.
 
 use crate::frame::Frame;
 
@@ -13,6 +15,8 @@ pub struct TxqInputs {
     pub push: Option<(usize, Frame)>,
     /// Redundancy mode: the main FSM's "finish" pops queue A.
     pub fsm_pop: bool,
+    /// DMR mode: the read offset `off[rd_sel]` and the entries to pop (§5).
+    pub dmr: Option<(u8, u8)>,
     /// Channel `tx_done` / `tx_failed` pulses (registered channel outputs).
     pub done: [bool; 2],
     pub failed: [bool; 2],
@@ -46,9 +50,8 @@ pub struct TxQueues {
 impl TxQueues {
     /// A `rst` edge: the read port loads as at every edge (RAM contents are not
     /// reset), every register clears.
-    pub fn reset(&mut self, redundancy: bool) {
-        let q = if redundancy { 0 } else { self.rd_sel as usize };
-        let rd = self.ram[q * 8 + self.head[q] as usize];
+    pub fn reset(&mut self, redundancy: bool, dmr_off: Option<u8>) {
+        let rd = self.read_port(redundancy, dmr_off);
         *self = TxQueues {
             ram: self.ram,
             rd,
@@ -56,16 +59,20 @@ impl TxQueues {
         };
     }
 
+    /// The entry the read port addresses (pre-edge registers).
+    fn read_port(&self, redundancy: bool, dmr_off: Option<u8>) -> Frame {
+        if let Some(off) = dmr_off {
+            return self.ram[((self.head[0] + off) & 7) as usize];
+        }
+        let q = if redundancy { 0 } else { self.rd_sel as usize };
+        self.ram[q * 8 + self.head[q] as usize]
+    }
+
     /// One rising edge.
     pub fn edge(&mut self, i: &TxqInputs) -> TxqEvents {
         let mut ev = TxqEvents::default();
         // Registered read port, from the pre-edge address and RAM (read-first).
-        let q = if i.redundancy {
-            0
-        } else {
-            self.rd_sel as usize
-        };
-        self.rd = self.ram[q * 8 + self.head[q] as usize];
+        self.rd = self.read_port(i.redundancy, i.dmr.map(|d| d.0));
         if i.reset_mode {
             ev.push_refused = i.push.is_some();
             self.head = [0; 2];
@@ -77,7 +84,14 @@ impl TxQueues {
         }
         let (head, count) = (self.head, self.count);
         let mut pop = [false; 2];
-        if i.redundancy {
+        let mut dmr_pop = 0;
+        if let Some((_, p)) = i.dmr {
+            // DMR: the lines' own request logic lives in the DMR block (§5).
+            dmr_pop = p.min(count[0]);
+            self.req = [false; 2];
+            self.busy = [false; 2];
+            self.rd_sel ^= 1;
+        } else if i.redundancy {
             pop[0] = i.fsm_pop;
             self.req = [false; 2];
             self.busy = [false; 2];
@@ -107,11 +121,13 @@ impl TxQueues {
             }
         }
         for c in 0..2 {
-            let popped = pop[c] && count[c] > 0;
-            if popped {
-                self.head[c] = (head[c] + 1) & 7;
-            }
-            self.count[c] = count[c] + (push_q == Some(c)) as u8 - popped as u8;
+            let popped = if c == 0 && dmr_pop > 0 {
+                dmr_pop
+            } else {
+                (pop[c] && count[c] > 0) as u8
+            };
+            self.head[c] = (head[c] + popped) & 7;
+            self.count[c] = count[c] + (push_q == Some(c)) as u8 - popped;
         }
         ev
     }

@@ -14,3 +14,5 @@ pub mod protocol;
 pub mod protocol_fsm;
 pub mod rx_frame;
 pub mod tx_frame;
+pub mod tx_pin;
+pub mod tx_request;

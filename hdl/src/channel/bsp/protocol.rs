@@ -2,8 +2,11 @@
 //! §4): the protocol units of one channel, wired together. Each unit does one
 //! concern and is a sub-module of the emitted Verilog:
 //! - `protocol_fsm`: frame fields, interframe, error and overload frames,
-//!   arbitration, transmit control and the `tx` pin (with `field_decode`, its
-//!   registered pre-decodes);
+//!   arbitration and the transmitter role (with `field_decode`, its registered
+//!   pre-decodes);
+//! - `tx_request`: the host's transmit request, its attempts and abort
+//!   (contract §8);
+//! - `tx_pin`: the bit this node drives on the `tx` pin (contract §4.2);
 //! - `bit_stuffing`: stuffing and destuffing (10.5);
 //! - `frame_crc`: the CRC-15 register and check (10.4.2.6);
 //! - `tx_frame` / `rx_frame`: the frame sent and the frame received (10.4.2);
@@ -20,7 +23,8 @@
 //! - The counting rules follow contract §4.5 rule by rule (rule letters of
 //!   ISO 11898-1 12.1.4.2); REC is decremented at the ACK slot (rule h).
 //! - A transmitter's frame is latched by a one-clock `tx_req` and stays pending
-//!   through lost arbitration and errors until sent (automatic retransmission).
+//!   through lost arbitration and errors until sent (automatic retransmission,
+//!   `tx_request`).
 
 use super::bit_stuffing::BitStuffing;
 use super::error_capture::ErrorCapture;
@@ -32,6 +36,8 @@ use super::frame_crc::FrameCrc;
 use super::protocol_fsm::ProtocolFsm;
 use super::rx_frame::RxFrame;
 use super::tx_frame::TxFrame;
+use super::tx_pin::TxPin;
+use super::tx_request::TxRequest;
 use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
@@ -140,6 +146,8 @@ pub struct ProtocolController {
     mode_loopback: Const<2, 3>,
     // the units
     fsm: ProtocolFsm,
+    tx_request: TxRequest,
+    tx_pin: TxPin,
     stuffing: BitStuffing,
     frame_crc: FrameCrc,
     tx_frame: TxFrame,
@@ -156,6 +164,10 @@ impl Logic for ProtocolController {
         // ---- clocks and resets
         self.fsm.clk.next = self.clk.val();
         self.fsm.rst.next = self.rst.val();
+        self.tx_request.clk.next = self.clk.val();
+        self.tx_request.rst.next = self.rst.val();
+        self.tx_pin.clk.next = self.clk.val();
+        self.tx_pin.rst.next = self.rst.val();
         self.stuffing.clk.next = self.clk.val();
         self.stuffing.rst.next = self.rst.val();
         self.frame_crc.clk.next = self.clk.val();
@@ -177,19 +189,13 @@ impl Logic for ProtocolController {
         // ---- protocol control
         self.fsm.sample.next = self.sample.val();
         self.fsm.sampled.next = self.sampled.val();
-        self.fsm.bit_start.next = self.bit_start.val();
-        self.fsm.hard_sync.next = self.hard_sync.val();
         self.fsm.listen_only.next = self.listen_only.val();
         self.fsm.loopback.next = self.loopback.val();
-        self.fsm.single_shot.next = self.single_shot.val();
-        self.fsm.tx_req.next = self.tx_req.val();
-        self.fsm.tx_abort.next = self.tx_abort.val();
-        self.fsm.frame_bit.next = self.tx_frame.frame_bit.val();
+        self.fsm.tx_starts.next = self.tx_request.starts.val();
+        self.fsm.tx_joins.next = self.tx_request.joins.val();
         self.fsm.frame_ide.next = self.tx_frame.frame_ide.val();
-        self.fsm.stuff_insert.next = self.stuffing.insert.val();
         self.fsm.at_stuff_bit.next = self.stuffing.at_stuff_bit.val();
         self.fsm.stuff_last.next = self.stuffing.last.val();
-        self.fsm.crc_ok.next = self.frame_crc.crc_ok.val();
         self.fsm.no_data.next = self.rx_frame.no_data.val();
         self.fsm.data_end.next = self.rx_frame.data_end.val();
         self.fsm.error.next = self.detect.error.val();
@@ -201,7 +207,36 @@ impl Logic for ProtocolController {
         self.fsm.ack_defer.next = self.rules.ack_defer.val();
         self.fsm.ack_counted.next = self.rules.ack_counted.val();
         self.fsm.error_passive.next = self.fc.error_passive.val();
-        self.fsm.bus_off.next = self.fc.bus_off.val();
+
+        // ---- transmit request (contract §8) and the tx pin (contract §4.2)
+        self.tx_request.listen_only.next = self.listen_only.val();
+        self.tx_request.single_shot.next = self.single_shot.val();
+        self.tx_request.tx_req.next = self.tx_req.val();
+        self.tx_request.tx_abort.next = self.tx_abort.val();
+        self.tx_request.bus_off.next = self.fc.bus_off.val();
+        self.tx_request.suspend_due.next = self.fsm.suspend_due.val();
+        self.tx_request.is_tx.next = self.fsm.is_tx.val();
+        self.tx_request.tx_pin.next = self.tx_pin.tx.val();
+        self.tx_request.sample.next = self.sample.val();
+        self.tx_request.sof.next = self.fsm.sof.val();
+        self.tx_request.sof_as_tx.next = self.fsm.sof_as_tx.val();
+        self.tx_request.sent.next = self.fsm.tx_valid.val();
+        self.tx_request.lost.next = self.detect.lost.val();
+        self.tx_request.error.next = self.detect.error.val();
+        self.tx_request.flag_error.next = self.detect.flag_error.val();
+        self.tx_request.sof_error.next = self.detect.sof_error.val();
+        self.tx_request.bus_off_after.next = self.rules.bus_off_after.val();
+        self.tx_pin.bit_start.next = self.bit_start.val();
+        self.tx_pin.hard_sync.next = self.hard_sync.val();
+        self.tx_pin.listen_only.next = self.listen_only.val();
+        self.tx_pin.field.next = self.fsm.field.val();
+        self.tx_pin.is_tx.next = self.fsm.is_tx.val();
+        self.tx_pin.flag_passive.next = self.fsm.flag_passive.val();
+        self.tx_pin.tx_starts.next = self.tx_request.starts.val();
+        self.tx_pin.frame_bit.next = self.tx_frame.frame_bit.val();
+        self.tx_pin.stuff_insert.next = self.stuffing.insert.val();
+        self.tx_pin.stuff_last.next = self.stuffing.last.val();
+        self.tx_pin.crc_ok.next = self.frame_crc.crc_ok.val();
 
         // ---- stuffing, CRC and the frames
         self.stuffing.sample.next = self.sample.val();
@@ -215,7 +250,7 @@ impl Logic for ProtocolController {
         self.frame_crc.check.next = self.fsm.crc_check.val();
         self.frame_crc.in_crc_field.next = self.fsm.in_crc_field.val();
         self.frame_crc.bit_cnt.next = self.fsm.bit_cnt.val().get_bits::<4>(0);
-        self.tx_frame.load.next = self.fsm.tx_load.val();
+        self.tx_frame.load.next = self.tx_request.tx_load.val();
         self.tx_frame.id.next = self.tx_id.val();
         self.tx_frame.ide.next = self.tx_ide.val();
         self.tx_frame.rtr.next = self.tx_rtr.val();
@@ -242,7 +277,7 @@ impl Logic for ProtocolController {
         self.detect.sampled.next = self.sampled.val();
         self.detect.field.next = self.fsm.field.val();
         self.detect.is_tx.next = self.fsm.is_tx.val();
-        self.detect.tx_bit.next = self.fsm.tx.val();
+        self.detect.tx_bit.next = self.tx_pin.tx.val();
         self.detect.in_frame.next = self.fsm.in_frame.val();
         self.detect.in_arbitration.next = self.fsm.in_arbitration.val();
         self.detect.ack_slot.next = self.fsm.ack_slot.val();
@@ -264,7 +299,7 @@ impl Logic for ProtocolController {
         self.rules.at_stuff_bit.next = self.stuffing.at_stuff_bit.val();
         self.rules.field.next = self.fsm.field.val();
         self.rules.is_tx.next = self.fsm.is_tx.val();
-        self.rules.tx_bit.next = self.fsm.tx.val();
+        self.rules.tx_bit.next = self.tx_pin.tx.val();
         self.rules.flag_passive.next = self.fsm.flag_passive.val();
         self.rules.in_delim.next = self.fsm.in_delim.val();
         self.rules.after_error_flag.next = self.fsm.after_error_flag.val();
@@ -305,11 +340,11 @@ impl Logic for ProtocolController {
 
         // ---- outputs
         self.hard_sync_enable.next = self.fsm.hard_sync_enable.val();
-        self.tx.next = self.fsm.tx.val();
-        self.tx_pending.next = self.fsm.tx_pending.val();
-        self.tx_failed.next = self.fsm.tx_failed.val();
-        self.tx_done.next = self.fsm.tx_done.val();
-        self.arb_lost.next = self.fsm.arb_lost.val();
+        self.tx.next = self.tx_pin.tx.val();
+        self.tx_pending.next = self.tx_request.tx_pending.val();
+        self.tx_failed.next = self.tx_request.tx_failed.val();
+        self.tx_done.next = self.tx_request.tx_done.val();
+        self.arb_lost.next = self.tx_request.arb_lost.val();
         self.rx_valid.next = self.rx_frame.rx_valid.val();
         self.rx_id.next = self.rx_frame.rx_id.val();
         self.rx_ide.next = self.rx_frame.rx_ide.val();

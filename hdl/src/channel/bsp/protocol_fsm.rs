@@ -1,16 +1,15 @@
 //! Protocol control (ISO 11898-1:2015, clauses 10 and 12; timing contract §4):
 //! the frame field and bit counter, the transmitter role, frame coding field by
 //! field, error and overload frames (10.4.3, 10.4.4), intermission and suspend
-//! transmission (10.4.5), bus integration and bus-off recovery (12.1.4.4), the
-//! transmit request and its retransmission, and the `tx` pin.
+//! transmission (10.4.5), bus integration and bus-off recovery (12.1.4.4).
 //!
-//! State changes only at the sample point (`sample`); the `tx` pin is loaded
-//! only at `bit_start`. The other units of the bit stream processor do one
-//! concern each and are told by strobes from here what the sampled bit is:
-//! stuffing, CRC, the receive and transmit frame, error detection and the
-//! fault-confinement rules. A transmitter's frame is latched by a one-clock
-//! `tx_req` and stays pending through lost arbitration and errors until sent
-//! (automatic retransmission, contract §8).
+//! State changes only at the sample point (`sample`). The other units of the
+//! bit stream processor do one concern each and are told by strobes from here
+//! what the sampled bit is: stuffing, CRC, the receive and transmit frame, error
+//! detection and the fault-confinement rules. Whether a SOF is this node's frame
+//! comes from the transmit request (`tx_request`, contract §8), which is told in
+//! turn when an attempt starts (`sof_as_tx`) and when the frame was sent
+//! (`tx_valid`); the `tx` pin (`tx_pin`) sends the bit this state asks for.
 
 use super::field::Field;
 use super::field_decode::FieldDecode;
@@ -29,50 +28,26 @@ pub struct ProtocolFsm {
     pub sample: Signal<In, Bit>,
     /// The bus level at the sample point (true: recessive).
     pub sampled: Signal<In, Bit>,
-    /// The start of a bit: the `tx` pin may change.
-    pub bit_start: Signal<In, Bit>,
-    /// This bit start is a hard synchronisation.
-    pub hard_sync: Signal<In, Bit>,
-    // to the bit timing logic and the pin
+    // to the bit timing logic
     /// Hard synchronisation is allowed (between frames, 11.3.2.1).
     pub hard_sync_enable: Signal<Out, Bit>,
-    /// The bit this node drives on the bus (true: recessive).
-    pub tx: Signal<Out, Bit>,
     // configuration (held)
     /// Listen-only mode (contract §7): no dominant bit, no transmission.
     pub listen_only: Signal<In, Bit>,
     /// Loop-back mode (contract §7): the transmitter receives its own frame.
     pub loopback: Signal<In, Bit>,
-    /// Single shot: a failed attempt drops the frame (contract §8).
-    pub single_shot: Signal<In, Bit>,
-    // host transmit control
-    /// One clock: a frame to send (latched while nothing is pending).
-    pub tx_req: Signal<In, Bit>,
-    /// Abort the pending frame at the first bit it is not on the bus.
-    pub tx_abort: Signal<In, Bit>,
-    /// A frame is pending.
-    pub tx_pending: Signal<Out, Bit>,
-    /// One clock: the pending frame was dropped (abort, single shot, refused).
-    pub tx_failed: Signal<Out, Bit>,
-    /// One clock: the frame was sent (10.7).
-    pub tx_done: Signal<Out, Bit>,
-    /// One clock: arbitration was lost (the frame stays pending).
-    pub arb_lost: Signal<Out, Bit>,
-    /// Latch the host's frame into the transmit frame.
-    pub tx_load: Signal<Out, Bit>,
+    // from the transmit request
+    /// A SOF from idle is this node's frame (or its SOF is already on `tx`).
+    pub tx_starts: Signal<In, Bit>,
+    /// A SOF at intermission bit 3 is this node's frame (10.4.5).
+    pub tx_joins: Signal<In, Bit>,
     // from the other units
-    /// Transmit frame: the frame's bit at the current field position.
-    pub frame_bit: Signal<In, Bit>,
     /// Transmit frame: the latched frame is extended.
     pub frame_ide: Signal<In, Bit>,
-    /// Stuffing: the next bit is a stuff bit.
-    pub stuff_insert: Signal<In, Bit>,
     /// Stuffing: the sampled bit is a stuff bit (registered).
     pub at_stuff_bit: Signal<In, Bit>,
     /// Stuffing: the last bit counted.
     pub stuff_last: Signal<In, Bit>,
-    /// CRC: every received CRC bit matched.
-    pub crc_ok: Signal<In, Bit>,
     /// Receive frame: the data field is empty.
     pub no_data: Signal<In, Bit>,
     /// Receive frame: the sampled bit is the last data bit (registered).
@@ -95,8 +70,6 @@ pub struct ProtocolFsm {
     pub ack_counted: Signal<In, Bit>,
     /// Counters: the node is error passive.
     pub error_passive: Signal<In, Bit>,
-    /// Counters: the node is bus-off.
-    pub bus_off: Signal<In, Bit>,
     // state for the other units
     /// The field the next bit belongs to.
     pub field: Signal<Out, Field>,
@@ -139,6 +112,8 @@ pub struct ProtocolFsm {
     // strobes at a sample point, for the other units
     /// SOF: a frame starts (stuffing, CRC, receive frame).
     pub sof: Signal<Out, Bit>,
+    /// The node is transmitter of the frame this SOF starts.
+    pub sof_as_tx: Signal<Out, Bit>,
     /// The stuffed region ends (CRC delimiter or an error).
     pub stuff_stop: Signal<Out, Bit>,
     /// A passive error flag restarts its run of equal bits.
@@ -167,26 +142,20 @@ pub struct ProtocolFsm {
     pub tx_valid: Signal<Out, Bit>,
     /// Bus-off recovery completed (12.1.4.4).
     pub recovered: Signal<Out, Bit>,
+    /// An error-passive transmitter suspends after this frame (10.4.5).
+    pub suspend_due: Signal<Out, Bit>,
     // protocol state
     field_q: DFF<Field>,
     bit_cnt_q: DFF<Bits<7>>,
     is_tx_q: DFF<Bit>,
     flag_passive_q: DFF<Bit>,
     recovery_cnt: DFF<Bits<7>>,
-    tx_q: DFF<Bit>,
     last_bit_arb_q: DFF<Bit>,
     // flag and delimiter state for the fault-confinement rules
     ack_pending_q: DFF<Bit>,
     delim_first_q: DFF<Bit>,
     /// Consecutive dominant bits after a flag, modulo 8.
     dom_cnt: DFF<Bits<3>>,
-    // transmit control
-    pending: DFF<Bit>,
-    abort_pending: DFF<Bit>,
-    attempt: DFF<Bit>,
-    tx_failed_q: DFF<Bit>,
-    tx_done_q: DFF<Bit>,
-    arb_lost_q: DFF<Bit>,
     // registered pre-decodes of the state the next SAMPLE edge sees
     decode: FieldDecode,
     // next-state values of the sample-point update
@@ -194,14 +163,6 @@ pub struct ProtocolFsm {
     bit_cnt_n: Signal<Local, Bits<7>>,
     is_tx_n: Signal<Local, Bit>,
     flag_passive_n: Signal<Local, Bit>,
-    tx_bit_n: Signal<Local, Bit>,
-    tx_bit: Signal<Local, Bit>,
-    // transmit decisions
-    start_ok: Signal<Local, Bit>,
-    join_ok: Signal<Local, Bit>,
-    starts: Signal<Local, Bit>,
-    join_starts: Signal<Local, Bit>,
-    sof_as_tx: Signal<Local, Bit>,
     monitor: Signal<Local, Bit>,
     n7_0: Const<7, 0>,
     n7_1: Const<7, 1>,
@@ -220,17 +181,10 @@ impl Logic for ProtocolFsm {
             is_tx_q,
             flag_passive_q,
             recovery_cnt,
-            tx_q,
             last_bit_arb_q,
             ack_pending_q,
             delim_first_q,
-            dom_cnt,
-            pending,
-            abort_pending,
-            attempt,
-            tx_failed_q,
-            tx_done_q,
-            arb_lost_q
+            dom_cnt
         );
         self.decode.clk.next = self.clk.val();
         self.decode.field.next = self.field_q.q.val();
@@ -247,35 +201,6 @@ impl Logic for ProtocolFsm {
         self.bit_cnt_inc.next = self.bit_cnt_q.q.val() + self.n7_1.val();
         self.is_tx_n.next = self.is_tx_q.q.val();
         self.flag_passive_n.next = self.flag_passive_q.q.val();
-        // Contract §8: nothing starts in listen-only mode or while an abort is due.
-        self.start_ok.next = self.pending.q.val()
-            && !self.bus_off.val()
-            && !self.listen_only.val()
-            && !self.tx_abort.val()
-            && !self.abort_pending.q.val();
-        self.tx_failed_q.d.next = false;
-        if !self.pending.q.val() {
-            self.abort_pending.d.next = false;
-        }
-        // Transmit abort (contract §8), new or remembered: carried out at the first
-        // edge where the frame is not on the bus.
-        if (self.tx_abort.val() || self.abort_pending.q.val()) && self.pending.q.val() {
-            if !self.is_tx_q.q.val() && self.tx_q.q.val() {
-                self.pending.d.next = false;
-                self.tx_failed_q.d.next = true;
-                self.abort_pending.d.next = false;
-            } else {
-                self.abort_pending.d.next = true;
-            }
-        }
-        // 10.4.5: an error-passive transmitter suspends after its frame and does
-        // not join a SOF at intermission bit 3.
-        self.join_ok.next = self.start_ok.val() && !self.decode.suspend_due.val();
-        // A node whose own SOF is already on `tx` keeps its attempt (contract §8).
-        self.starts.next = (!self.tx_q.q.val() && self.pending.q.val()) || self.start_ok.val();
-        self.join_starts.next = (!self.tx_q.q.val() && self.pending.q.val()) || self.join_ok.val();
-        self.tx_done_q.d.next = false;
-        self.arb_lost_q.d.next = false;
         self.sof.next = false;
         self.sof_as_tx.next = false;
         self.stuff_stop.next = false;
@@ -301,7 +226,6 @@ impl Logic for ProtocolFsm {
             // 12.1.2: a transmitter that lost arbitration becomes receiver.
             if self.lost.val() {
                 self.is_tx_n.next = false;
-                self.arb_lost_q.d.next = true;
             }
             match self.field_q.q.val() {
                 Field::Integrating => {
@@ -320,7 +244,7 @@ impl Logic for ProtocolFsm {
                 Field::Idle => {
                     if !self.sampled.val() {
                         self.sof.next = true;
-                        self.sof_as_tx.next = self.starts.val();
+                        self.sof_as_tx.next = self.tx_starts.val();
                     } else if self.sof_error.val() {
                         // Having sent a frame bit, it is transmitter of what follows.
                         self.is_tx_n.next = true;
@@ -342,7 +266,7 @@ impl Logic for ProtocolFsm {
                         if self.decode.bc2.val() {
                             // 10.4.5: dominant third intermission bit is a SOF.
                             self.sof.next = true;
-                            self.sof_as_tx.next = self.join_starts.val();
+                            self.sof_as_tx.next = self.tx_joins.val();
                         } else {
                             // 10.4.4: dominant intermission bit 1 or 2: overload.
                             self.field_n.next = Field::OverloadFlag;
@@ -462,10 +386,6 @@ impl Logic for ProtocolFsm {
                         if self.decode.bc6.val() {
                             if self.is_tx_q.q.val() {
                                 // 10.7: valid for the transmitter at the end of EOF.
-                                self.tx_done_q.d.next = true;
-                                self.pending.d.next = false;
-                                self.attempt.d.next = false;
-                                self.abort_pending.d.next = false;
                                 self.tx_valid.next = true;
                             }
                             self.field_n.next = Field::Intermission;
@@ -570,7 +490,6 @@ impl Logic for ProtocolFsm {
                 self.field_n.next = Field::IdA;
                 self.bit_cnt_n.next = self.n7_0.val();
                 self.is_tx_n.next = self.sof_as_tx.val();
-                self.attempt.d.next = self.sof_as_tx.val();
             }
             // Any error: error flag from the next bit on (10.4.3).
             if self.error.val() || self.flag_error.val() {
@@ -583,26 +502,10 @@ impl Logic for ProtocolFsm {
             if self.ack_defer.val() {
                 self.ack_pending_q.d.next = true;
             }
-            // Single shot or a due abort: a failed attempt drops the frame (§8).
-            // An attempt runs from its SOF to tx_done, lost arbitration or the
-            // first error it detects as transmitter (contract §8).
-            if (self.attempt.q.val()
-                && self.is_tx_q.q.val()
-                && (self.lost.val() || self.error.val() || self.flag_error.val()))
-                || self.sof_error.val()
-            {
-                self.attempt.d.next = false;
-                if self.single_shot.val() || self.abort_pending.q.val() {
-                    self.pending.d.next = false;
-                    self.tx_failed_q.d.next = true;
-                    self.abort_pending.d.next = false;
-                }
-            }
             // 12.1.4.4: TEC > 255 makes the node bus-off at once.
             if self.bus_off_after.val() {
                 self.field_n.next = Field::BusOff;
                 self.is_tx_n.next = false;
-                self.attempt.d.next = false;
                 self.bit_cnt_n.next = self.n7_0.val();
                 self.recovery_cnt.d.next = self.n7_0.val();
             }
@@ -610,64 +513,6 @@ impl Logic for ProtocolFsm {
             self.bit_cnt_q.d.next = self.bit_cnt_n.val();
             self.is_tx_q.d.next = self.is_tx_n.val();
             self.flag_passive_q.d.next = self.flag_passive_n.val();
-        }
-
-        // ---- the bit this node sends next (contract §4.2), prepared from the state
-        // the last SAMPLE edge left: the state changes only at SAMPLE edges and no
-        // bit_start falls on one, so it is the bit of that edge, and the sample
-        // decision stays off this path. (The latched frame can change only while
-        // nothing is pending, and then the node sends no frame bit.)
-        self.tx_bit_n.next = true;
-        match self.field_q.q.val() {
-            Field::ErrorFlag => {
-                self.tx_bit_n.next = self.flag_passive_q.q.val();
-            }
-            Field::OverloadFlag => {
-                self.tx_bit_n.next = false;
-            }
-            Field::AckSlot => {
-                // 10.4.2.7: receivers that found the CRC correct send ACK.
-                self.tx_bit_n.next = self.is_tx_q.q.val() || !self.crc_ok.val();
-            }
-            _ => {
-                if self.is_tx_q.q.val() {
-                    if self.stuff_insert.val() {
-                        // 10.5: the stuff bit is the complement of the last five.
-                        self.tx_bit_n.next = !self.stuff_last.val();
-                    } else {
-                        self.tx_bit_n.next = self.frame_bit.val();
-                    }
-                }
-            }
-        }
-        // Listen-only: the node never drives a dominant bit (contract §7).
-        self.tx_bit.next = self.tx_bit_n.val() || self.listen_only.val();
-
-        // ---- the tx pin changes only at the start of a bit
-        if self.bit_start.val() {
-            if self.hard_sync.val() && (self.field_q.q.val() == Field::Idle) {
-                self.tx_q.d.next = !self.starts.val();
-            } else if self.hard_sync.val() && (self.field_q.q.val() == Field::Intermission) {
-                // 10.4.6: a node joining at intermission bit 3 sends no SOF bit;
-                // its first identifier bit follows.
-                self.tx_q.d.next = true;
-            } else if self.hard_sync.val() && (self.field_q.q.val() == Field::Suspend) {
-                self.tx_q.d.next = true;
-            } else if self.field_q.q.val() == Field::Idle {
-                self.tx_q.d.next = !self.starts.val();
-            } else {
-                self.tx_q.d.next = self.tx_bit.val();
-            }
-        }
-
-        // ---- host transmit request: latched while nothing is pending
-        self.tx_load.next = false;
-        if self.tx_req.val() && !self.pending.q.val() && self.listen_only.val() {
-            // Contract §7: listen-only refuses transmit requests.
-            self.tx_failed_q.d.next = true;
-        } else if self.tx_req.val() && !self.pending.q.val() {
-            self.pending.d.next = true;
-            self.tx_load.next = true;
         }
 
         // ---- hard synchronisation is allowed between frames (11.3.2.1)
@@ -697,11 +542,6 @@ impl Logic for ProtocolFsm {
         }
 
         // ---- outputs
-        self.tx.next = self.tx_q.q.val();
-        self.tx_pending.next = self.pending.q.val();
-        self.tx_done.next = self.tx_done_q.q.val();
-        self.arb_lost.next = self.arb_lost_q.q.val();
-        self.tx_failed.next = self.tx_failed_q.q.val();
         self.field.next = self.field_q.q.val();
         self.bit_cnt.next = self.bit_cnt_q.q.val().get_bits::<6>(0);
         self.is_tx.next = self.is_tx_q.q.val();
@@ -719,6 +559,7 @@ impl Logic for ProtocolFsm {
         self.delim_first.next = self.delim_first_q.q.val();
         self.ack_pending.next = self.ack_pending_q.q.val();
         self.in_crc_field.next = self.field_q.q.val() == Field::Crc;
+        self.suspend_due.next = self.decode.suspend_due.val();
 
         // ---- synchronous reset
         if self.rst.val() {
@@ -727,17 +568,10 @@ impl Logic for ProtocolFsm {
             self.is_tx_q.d.next = false;
             self.flag_passive_q.d.next = false;
             self.recovery_cnt.d.next = self.n7_0.val();
-            self.tx_q.d.next = true;
             self.last_bit_arb_q.d.next = false;
             self.ack_pending_q.d.next = false;
             self.delim_first_q.d.next = false;
             self.dom_cnt.d.next = self.zero3.val();
-            self.pending.d.next = false;
-            self.abort_pending.d.next = false;
-            self.attempt.d.next = false;
-            self.tx_failed_q.d.next = false;
-            self.tx_done_q.d.next = false;
-            self.arb_lost_q.d.next = false;
         }
     }
 }

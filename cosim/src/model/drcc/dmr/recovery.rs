@@ -1,0 +1,165 @@
+//! DMR state machine, connection service and fault recovery (dmr_contract.md §6
+//! and §7, the seed's Figures 6, 7 and 8): the fault flags per line and their
+//! sources (evaluation, bus-off, failed CS attempt), the ACL switch, `dmr_state`,
+//! the CS timeout, the periodic CS, the recovery delay and the channel restart.
+
+use super::super::regs::dmr::*;
+use super::engine::EvalFault;
+use super::{DmrBlock, DmrEvents, DmrInputs};
+
+/// A fault set against a line at this edge.
+#[derive(Clone, Copy, Debug)]
+struct Fault {
+    line: usize,
+    /// `tx_fault` (true) or `rx_fault`.
+    tx: bool,
+    cause: u8,
+    mb: Option<u8>,
+}
+
+impl DmrBlock {
+    /// Faults, CS outcome, recovery and the state machine at one edge, on pre-edge
+    /// values `c`; `eval` is this edge's evaluation verdict (§4.2). Returns the lines
+    /// whose `tx_fault` is set at this edge (the deletion of §5).
+    pub(super) fn faults(
+        &mut self,
+        c: &DmrBlock,
+        i: &DmrInputs,
+        eval: Option<EvalFault>,
+        ev: &mut DmrEvents,
+    ) -> [bool; 2] {
+        let dt = c.dmr_tick;
+        let mut faults: Vec<Fault> = Vec::new();
+        for l in 0..2 {
+            // §7 CS attempt: its timeout counts DMR ticks while it is live.
+            if c.cs_busy[l] && c.cs_live[l] && dt {
+                self.cs_timer[l] = c.cs_timer[l].saturating_sub(1);
+                if c.cs_timer[l] == 1 {
+                    faults.push(Fault {
+                        line: l,
+                        tx: true,
+                        cause: CAUSE_CS_FAILED,
+                        mb: None,
+                    });
+                }
+            }
+            // §7 success: "Upon successful transmission of the DMR Connection
+            // Service the DMR state is updated".
+            if i.done[l] && c.cs_busy[l] && c.cs_live[l] {
+                self.tx_fault[l] = false;
+                self.rx_fault[l] = false;
+                self.rec_timer[l] = 0;
+            }
+        }
+        for l in 0..2 {
+            // §6 bus-off: the channel enters bus-off at this edge.
+            let busoff = i.err_state[l] == 2;
+            self.busoff_q[l] = busoff;
+            if busoff && !c.busoff_q[l] {
+                faults.push(Fault {
+                    line: l,
+                    tx: true,
+                    cause: CAUSE_BUSOFF,
+                    mb: None,
+                });
+            }
+        }
+        if let Some(f) = eval {
+            faults.push(Fault {
+                line: f.verdict.line,
+                tx: f.verdict.dir,
+                cause: if f.verdict.deviation {
+                    CAUSE_DEVIATION
+                } else {
+                    CAUSE_TIMEOUT
+                },
+                mb: Some(f.mb),
+            });
+        }
+        // §7 recovery: while L has a flag, `rec_timer` counts DMR ticks; at 1 -> 0
+        // the line is due for a restart and a CS frame.
+        for l in 0..2 {
+            let flagged = c.tx_fault[l] || c.rx_fault[l];
+            if flagged && dt && c.rec_timer[l] != 0 {
+                self.rec_timer[l] = c.rec_timer[l] - 1;
+                if c.rec_timer[l] == 1 {
+                    self.rec_pending[l] = true;
+                    self.cs_due[l] = true;
+                }
+            }
+            // The restart pulse waits for the line to be quiet; a bus-off channel
+            // recovers by itself (ISO 11898-1 12.1.4.2), never cut short.
+            self.restart[l] = false;
+            if c.rec_pending[l] && !c.busy[l] && !c.cs_busy[l] && i.err_state[l] != 2 {
+                self.rec_pending[l] = false;
+                self.restart[l] = true;
+            }
+        }
+        // §7 periodic CS for each line without a flag and no CS due or busy.
+        if dt && c.cs_period() != 0 {
+            if c.period_cnt >= c.cs_period() - 1 {
+                self.period_cnt = 0;
+                for l in 0..2 {
+                    if !c.tx_fault[l] && !c.rx_fault[l] && !c.cs_due[l] && !c.cs_busy[l] {
+                        self.cs_due[l] = true;
+                    }
+                }
+            } else {
+                self.period_cnt = c.period_cnt + 1;
+            }
+        }
+        // §6 set the faults (they win over a success at the same edge).
+        let mut against = [false; 2];
+        let mut tx_set = [false; 2];
+        for f in &faults {
+            let l = f.line;
+            against[l] = true;
+            if f.tx {
+                self.tx_fault[l] = true;
+                tx_set[l] = true;
+                // Deletion (§5): the attempt on the bus runs on, further ones abort.
+                if c.busy[l] {
+                    self.abort[l] = true;
+                }
+            } else {
+                self.rx_fault[l] = true;
+            }
+            self.cause = f.cause;
+            self.cause_line = l as u8;
+            if let Some(mb) = f.mb {
+                self.cause_mb = mb;
+            }
+            self.rec_timer[l] = c.recovery_delay();
+            // L's connection service is cancelled.
+            self.cs_due[l] = false;
+            self.cs_live[l] = false;
+            self.rec_pending[l] = false;
+            if c.cs_busy[l] {
+                self.abort[l] = true;
+            }
+        }
+        // ACL switch: a fault against the ACL while the other line is sound.
+        let a = c.acl as usize;
+        let o = 1 - a;
+        if against[a] && !c.tx_fault[o] && !c.rx_fault[o] && !against[o] {
+            self.acl = c.acl ^ 1;
+            ev.acl_switch = true;
+        }
+        // `dmr_state` from the flags before the edge (seed Figure 6).
+        self.dmr_state = match (c.tx_fault[0] as u8 + c.tx_fault[1] as u8, c.rx_fault) {
+            (2, _) => DISCONNECTED,
+            (1, _) => DISABLED,
+            (_, [false, false]) => ACTIVE,
+            _ => PASSIVE,
+        };
+        if self.dmr_state != c.dmr_state {
+            self.state_changes = c.state_changes.saturating_add(1);
+            ev.int = true;
+        }
+        if self.acl != c.acl {
+            self.acl_switches = c.acl_switches.saturating_add(1);
+            ev.int = true;
+        }
+        tx_set
+    }
+}

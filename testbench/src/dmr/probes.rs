@@ -17,7 +17,10 @@ pub struct DmrProbe {
 
 /// The DMR probes of `o`.
 pub fn probe(o: &DrccOutputs) -> DmrProbe {
-    // TODO(dmr-model merge): read o.probes.dmr_state, acl and the fault flags.
-    let _ = o;
-    DmrProbe::default()
+    let p = &o.probes;
+    DmrProbe {
+        state: p.dmr_state,
+        acl: p.acl,
+        fault: p.dcl_tx_fault || p.dcl_rx_fault || p.rcl_tx_fault || p.rcl_rx_fault,
+    }
 }

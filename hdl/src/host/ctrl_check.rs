@@ -192,7 +192,11 @@ mod tests {
         // DMR with a listen-only channel, and DMR with redundancy: refused (DMR §2)
         let w = ctrl(&[("dmr", 1), ("mode_a", listen), ("policy", ep)]);
         assert!(check(true, w).2);
-        let w = ctrl(&[("dmr", 1), ("redundancy", Mode::Redundancy.code()), ("policy", ep)]);
+        let w = ctrl(&[
+            ("dmr", 1),
+            ("redundancy", Mode::Redundancy.code()),
+            ("policy", ep),
+        ]);
         assert!(check(true, w).2);
         assert!(!check(true, ctrl(&[("dmr", 1), ("policy", ep), ("k", 1)])).2);
         // listen-only in normal mode is legal

@@ -87,7 +87,10 @@ pub struct DmrCheck {
 impl DmrCheck {
     /// The checks of a DRCC generated with `mailboxes` DMR mailboxes (0..16).
     pub fn new(mailboxes: u32) -> Self {
-        assert!(mailboxes <= 16, "at most 16 DMR mailboxes (MB_SEL is 4 bits)");
+        assert!(
+            mailboxes <= 16,
+            "at most 16 DMR mailboxes (MB_SEL is 4 bits)"
+        );
         // the positions this block fixes structurally
         for (reg, field, lsb, width) in [
             ("DMR_CFG", "timeout", 0, 16),

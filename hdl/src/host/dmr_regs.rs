@@ -88,7 +88,8 @@ pub struct DmrRegs {
 impl Default for DmrRegs {
     fn default() -> Self {
         let adr = |i: u32| Constant::new((i as u64).into());
-        let reset = |r: &str| Constant::new((map::register(r).unwrap().reset_value() as u64).into());
+        let reset =
+            |r: &str| Constant::new((map::register(r).unwrap().reset_value() as u64).into());
         let field = |r: &str, f: &str| MAP.field(r, f).reset as u64;
         let limit = field("MB_CFG", "limit");
         let mut limits = Bits::<128>::default();

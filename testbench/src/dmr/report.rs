@@ -137,7 +137,9 @@ impl RowReport {
     /// "all active / DCL", or each device's cell when they differ.
     fn summary(states: &[DeviceStatus]) -> String {
         match states.first() {
-            Some(first) if states.iter().all(|s| s == first) => format!("all {}", first.cell()),
+            Some(first) if states.iter().all(|s| s.cell() == first.cell()) => {
+                format!("all {}", first.cell())
+            }
             _ => states
                 .iter()
                 .zip(DEVICES)

@@ -15,7 +15,8 @@
 //!   (both lines carry the same traffic; a copy lags by a few frames, about 1 ms each
 //!   at 125 kbit/s), short enough that a fault is found within a few messages;
 //! - deviation `limit = 3` (the table's reset value): a device's messages come every
-//!   ~4.5 ms, so a line that misses them exceeds it after ~18 ms, about the timeout;
+//!   ~4.4 ms, so a line that misses them exceeds it at the 4th, ~13 ms after the first
+//!   (before the timeout);
 //! - `DEDUP_CFG.window = 4000` bit times (32 ms) > `timeout x tick_bits` + one
 //!   evaluation = 2500 + 125 bit times (contract §8: a frame that waits on the PCL
 //!   must not expire before the ACL switch releases it);

@@ -130,7 +130,7 @@ pub fn run_row_traced(
     let mut other = cosim.map(|k| build(c, row, k)).transpose()?;
     let mut writer = match vcd {
         Some(buf) => Some(
-            DrccVcdWriter::new(
+            DrccVcdWriter::with_dmr(
                 buf,
                 CLOCK_HZ,
                 c.nodes(),

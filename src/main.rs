@@ -130,7 +130,7 @@ enum Command {
         /// With `table`: rewrite the table in README.md and docs/dmr.md.
         #[arg(long)]
         markdown: bool,
-        /// Engine: model or verilator.
+        /// Engine: model or verilator (verilator runs with the model in lock step).
         #[arg(long, default_value = "model")]
         engine: String,
         /// Also run this engine in lock step and compare every clock.

@@ -3,7 +3,8 @@
 //! baseline, F1..F10 as startup failure and at run time) and prints the Markdown table
 //! (`--markdown` also rewrites it between the `dmr-table` markers of README.md and
 //! docs/dmr.md, both or neither); `F1` .. `F10` (or `baseline`) runs one row
-//! (`--startup`, the default, or `--runtime`), with `--vcd` and `--cosim`.
+//! (`--startup`, the default, or `--runtime`), with `--vcd` and `--cosim`. An engine
+//! other than the model always runs with the model in lock step (the plan's oracle).
 
 use super::{rewrite_between_atomic, workspace_path, CliError, CliResult};
 use drcc_testbench::dmr::load::{schedule, summary};

@@ -39,7 +39,8 @@ const READS: usize = 6;
 const READ_GRACE: u64 = 100_000;
 
 /// Runs `row` of the plan `c` on `kind`, or on `kind` and `cosim` in lock step (then
-/// the first divergence is an error).
+/// the first divergence is an error). An engine other than the model runs in lock
+/// step with the model when `cosim` is `None`.
 pub fn run_row(
     c: &PlanConfig,
     row: Row,
@@ -126,6 +127,10 @@ pub fn run_row_traced(
     vcd: Option<&mut Vec<u8>>,
 ) -> Result<RowReport, String> {
     let wall = Instant::now();
+    // The reference model is the plan's oracle: another engine alone always runs with
+    // it in lock step, so an engine without (or with a wrong) DMR mode fails at its
+    // first divergence instead of printing a row of its own.
+    let cosim = cosim.or((kind != EngineKind::Model).then_some(EngineKind::Model));
     let mut main = build(c, row, kind)?;
     let mut other = cosim.map(|k| build(c, row, k)).transpose()?;
     let mut writer = match vcd {

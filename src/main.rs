@@ -5,6 +5,7 @@
 //! - `sim` runs a scenario on one engine, `cosim` on two in lock step,
 //! - `wave-diff` compares two VCD files,
 //! - `demo` runs the bundled demo scenario, `bench` compares engine speeds,
+//! - `dmr` runs the CiA 701 DMR test plan (`table` or one fault row),
 //! - `synth` synthesises a top for an FPGA family (yosys; nextpnr and icepack
 //!   for iCE40) and reports its area and Fmax.
 //!
@@ -113,6 +114,35 @@ enum Command {
         #[arg(long)]
         markdown: bool,
     },
+    /// The CiA 701 DMR test plan (seed Figure 9, Tables 2 and 3) on four DRCC devices
+    /// COS1, COS2, COS3, COM1: `table` (every row as Markdown), or one row: a fault
+    /// marker `F1` .. `F10` (F1..F8: a device disconnected from the DCL / RCL; F9 / F10:
+    /// the DCL / RCL short-circuited) or `baseline`.
+    Dmr {
+        /// `table`, `baseline` or `F1` .. `F10`.
+        what: String,
+        /// The fault is present at power-on (the default).
+        #[arg(long)]
+        startup: bool,
+        /// The fault arises at run time.
+        #[arg(long)]
+        runtime: bool,
+        /// With `table`: rewrite the table in README.md and docs/dmr.md.
+        #[arg(long)]
+        markdown: bool,
+        /// Engine: model or verilator (verilator runs with the model in lock step).
+        #[arg(long, default_value = "model")]
+        engine: String,
+        /// Also run this engine in lock step and compare every clock.
+        #[arg(long, value_name = "ENGINE")]
+        cosim: Option<String>,
+        /// One row: write its trace (every device's signals and probes).
+        #[arg(long, value_name = "FILE")]
+        vcd: Option<PathBuf>,
+        /// DMR recovery delay in ms (default 200; the seed's is 2000).
+        #[arg(long, value_name = "MS")]
+        recovery_ms: Option<u16>,
+    },
     /// Measure simulated clock cycles per second of every available engine.
     Bench {
         /// Seconds per measurement.
@@ -177,6 +207,25 @@ fn main() -> ExitCode {
             cosim,
             markdown,
         } => cli::star::run(&what, &engine, cosim.as_deref(), markdown),
+        Command::Dmr {
+            what,
+            startup,
+            runtime,
+            markdown,
+            engine,
+            cosim,
+            vcd,
+            recovery_ms,
+        } => cli::dmr::run(&cli::dmr::DmrArgs {
+            what: &what,
+            startup,
+            runtime,
+            markdown,
+            engine: &engine,
+            cosim: cosim.as_deref(),
+            vcd: vcd.as_deref(),
+            recovery_ms,
+        }),
         Command::Bench { seconds } => cli::bench(seconds),
         Command::Synth {
             target,

@@ -1,6 +1,7 @@
 //! The `drcc` subcommands, the error type shared by them (check failure: exit 1;
 //! error: exit 2) and the panic hook that turns an internal error into one line.
 
+pub mod dmr;
 pub mod generate;
 pub mod redundancy;
 pub mod run;
@@ -115,4 +116,115 @@ pub fn rewrite_between(path: &std::path::Path, begin: &str, end: &str, body: &st
         .map_err(|m| CliError::Error(format!("{}: {m}", path.display())))?;
     std::fs::write(path, new)
         .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())))
+}
+
+/// Rewrites the generated block between `begin` and `end` in every file of `paths`,
+/// all or none: every new text is computed and written to a temporary file beside its
+/// target first, and only when all of them are written are they renamed over the
+/// targets (a rename within a directory is atomic). A missing marker, an unreadable
+/// file or an unwritable directory leaves every file as it was.
+pub fn rewrite_between_atomic(paths: &[PathBuf], begin: &str, end: &str, body: &str) -> CliResult {
+    let mut staged: Vec<(PathBuf, PathBuf)> = Vec::new();
+    let cleanup = |staged: &[(PathBuf, PathBuf)]| {
+        for (tmp, _) in staged {
+            let _ = std::fs::remove_file(tmp);
+        }
+    };
+    for path in paths {
+        let step = || -> Result<PathBuf, String> {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+            let new = replace_between(&text, begin, end, body)
+                .map_err(|m| format!("{}: {m}", path.display()))?;
+            let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
+            let tmp = path.with_file_name(format!(".{name}.drcc-tmp"));
+            std::fs::write(&tmp, new).map_err(|e| {
+                format!(
+                    "cannot write {} ({e}): make its directory writable",
+                    tmp.display()
+                )
+            })?;
+            Ok(tmp)
+        };
+        match step() {
+            Ok(tmp) => staged.push((tmp, path.clone())),
+            Err(m) => {
+                cleanup(&staged);
+                return Err(CliError::Error(format!("{m}; no file was changed")));
+            }
+        }
+    }
+    for (i, (tmp, path)) in staged.iter().enumerate() {
+        if let Err(e) = std::fs::rename(tmp, path) {
+            cleanup(&staged[i..]);
+            return Err(CliError::Error(format!(
+                "cannot replace {}: {e}",
+                path.display()
+            )));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const B: &str = "<!-- t:begin -->";
+    const E: &str = "<!-- t:end -->";
+
+    fn dir(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("drcc-cli-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[test]
+    fn atomic_rewrite_changes_every_file() {
+        let d = dir("atomic-ok");
+        let (a, b) = (d.join("a.md"), d.join("b.md"));
+        std::fs::write(&a, format!("x\n{B}\nold\n{E}\n")).unwrap();
+        std::fs::write(&b, format!("{B}\n{E}\ny\n")).unwrap();
+        rewrite_between_atomic(&[a.clone(), b.clone()], B, E, "new\n").unwrap();
+        assert_eq!(
+            std::fs::read_to_string(&a).unwrap(),
+            format!("x\n{B}\nnew\n{E}\n")
+        );
+        assert_eq!(
+            std::fs::read_to_string(&b).unwrap(),
+            format!("{B}\nnew\n{E}\ny\n")
+        );
+        assert_eq!(
+            std::fs::read_dir(&d).unwrap().count(),
+            2,
+            "no temporary file left"
+        );
+    }
+
+    #[test]
+    fn atomic_rewrite_changes_nothing_when_one_file_is_bad() {
+        let d = dir("atomic-bad");
+        let (a, b) = (d.join("a.md"), d.join("b.md"));
+        let before = format!("{B}\nold\n{E}\n");
+        std::fs::write(&a, &before).unwrap();
+        std::fs::write(&b, "no markers\n").unwrap();
+        let m = match rewrite_between_atomic(&[a.clone(), b.clone()], B, E, "new\n") {
+            Err(CliError::Error(m)) => m,
+            other => panic!("expected an error, got {other:?}"),
+        };
+        assert!(
+            m.contains("no file was changed") && m.contains("b.md"),
+            "{m}"
+        );
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), before);
+        assert_eq!(
+            std::fs::read_dir(&d).unwrap().count(),
+            2,
+            "no temporary file left"
+        );
+        let missing = d.join("missing.md");
+        assert!(rewrite_between_atomic(&[a.clone(), missing], B, E, "x").is_err());
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), before);
+    }
 }

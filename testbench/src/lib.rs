@@ -6,6 +6,7 @@
 pub mod bench;
 pub mod bitrate;
 pub mod conformance;
+pub mod dmr;
 pub mod dual;
 pub mod engines;
 pub mod fault_gen;

@@ -79,6 +79,7 @@ fn random_config(rng: &mut SplitMix64, timing: u32) -> HostConfig {
         },
         dedup_window: rng.below(3000) as u16,
         int_enable: rng.below(256) as u32,
+        dmr: None,
     }
 }
 

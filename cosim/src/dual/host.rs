@@ -2,7 +2,8 @@
 //! driver program, the way firmware on a soft CPU would:
 //!
 //! 1. configuration: `CTRL` (reset mode + configuration), `BTR`, `RMB_CFG`,
-//!    `DEDUP_CFG`, `INT_ENABLE`, then `CTRL` with reset mode cleared;
+//!    `DEDUP_CFG`, in DMR mode the DMR registers and mailboxes
+//!    ([`super::dmr_config`]), `INT_ENABLE`, then `CTRL` with reset mode cleared;
 //! 2. forever: when a submitted frame is due, read `STATUS` and, if its TX queue has
 //!    room, write `TX_ID`, `TX_CTRL`, `TX_DATA0/1` and `TX_CMD.push`; otherwise poll
 //!    `RX_ID` and, when the FIFO is not empty, read the frame and pop it; explicit
@@ -15,6 +16,7 @@
 //! from that header; the reference model keeps its own copy, checked against the
 //! table by `cosim/tests/register_maps.rs`.
 
+use super::dmr_config::DmrConfig;
 use crate::engine::drcc::{DrccInputs, DrccOutputs};
 use crate::frame::Frame;
 use drcc_hdl::host::registers::{SwitchPolicy, MAP};
@@ -105,6 +107,9 @@ pub struct HostConfig {
     pub dedup_window: u16,
     /// `INT_ENABLE`.
     pub int_enable: u32,
+    /// CiA 701 DMR mode (`CTRL.dmr`) with its configuration; `redundancy` must then
+    /// be false (the DRCC refuses both, DMR contract §2).
+    pub dmr: Option<DmrConfig>,
 }
 
 impl Default for HostConfig {
@@ -122,6 +127,7 @@ impl Default for HostConfig {
             dedup_window: 1024,
             // every interrupt
             int_enable: MAP.register("INT_ENABLE").map_or(0, |r| r.defined()),
+            dmr: None,
         }
     }
 }
@@ -151,6 +157,26 @@ impl HostConfig {
             | put("CTRL", "k", k)
             | put("CTRL", "mode_a", self.mode_a as u32)
             | put("CTRL", "mode_b", self.mode_b as u32)
+            | put("CTRL", "dmr", self.dmr.is_some() as u32)
+    }
+
+    /// DMR mode (redundancy off) with `dmr`, the given bit timing and duplicate
+    /// window (in DMR mode the window of the ACL rule, DMR contract §8).
+    pub fn dmr(btr: u32, dmr: DmrConfig, dedup_window: u16) -> Self {
+        HostConfig {
+            btr,
+            redundancy: false,
+            dual_tx: false,
+            dedup_window,
+            dmr: Some(dmr),
+            ..HostConfig::default()
+        }
+    }
+
+    /// Whether the host hands every frame to TX queue A: redundancy mode, and DMR
+    /// mode (its one logical queue, DMR contract §5).
+    fn one_queue(&self) -> bool {
+        self.redundancy || self.dmr.is_some()
     }
 }
 
@@ -246,7 +272,7 @@ impl HostDriver {
             configured: false,
         };
         let c = config;
-        for (reg, value) in [
+        let mut writes = vec![
             (reg::CTRL, c.ctrl(true)),
             (reg::BTR, c.btr),
             (
@@ -258,9 +284,13 @@ impl HostDriver {
                 reg::DEDUP_CFG,
                 put("DEDUP_CFG", "window", c.dedup_window as u32),
             ),
-            (reg::INT_ENABLE, c.int_enable),
-            (reg::CTRL, c.ctrl(false)),
-        ] {
+        ];
+        if let Some(dmr) = c.dmr {
+            writes.extend(dmr.writes());
+        }
+        writes.push((reg::INT_ENABLE, c.int_enable));
+        writes.push((reg::CTRL, c.ctrl(false)));
+        for (reg, value) in writes {
             d.ops.push_back(Op {
                 write: true,
                 reg,
@@ -398,7 +428,7 @@ impl HostDriver {
             }),
             Purpose::TxSpace => {
                 let Some(s) = self.pushing else { return };
-                let count = if s.queue == 0 || self.config.redundancy {
+                let count = if s.queue == 0 || self.config.one_queue() {
                     get("STATUS", "txq_a_count", data)
                 } else {
                     get("STATUS", "txq_b_count", data)

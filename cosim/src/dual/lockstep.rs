@@ -5,7 +5,7 @@
 //! identical; the first divergence is reported with cycle, node, signal and both
 //! values.
 
-use super::vcd::{DRCC_SIGNALS, EXTRA_SIGNALS};
+use super::vcd::{DMR_SIGNALS, DRCC_SIGNALS, EXTRA_SIGNALS};
 use super::DualBusSystem;
 
 /// The first clock at which two systems differ.
@@ -42,7 +42,7 @@ pub fn compare(left: &DualBusSystem, right: &DualBusSystem) -> Option<DrccDiverg
         if l.outputs == r.outputs && l.inputs == r.inputs {
             continue;
         }
-        for s in DRCC_SIGNALS.iter().chain(EXTRA_SIGNALS) {
+        for s in DRCC_SIGNALS.iter().chain(EXTRA_SIGNALS).chain(DMR_SIGNALS) {
             let (a, b) = ((s.get)(l), (s.get)(r));
             if a != b {
                 return Some(DrccDivergence {

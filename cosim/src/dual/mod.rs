@@ -1,17 +1,21 @@
 //! A dual-bus network of DRCC nodes: every node's channel A on line A, channel B on
 //! line B (two independent wired-AND lines, DRCC paper Fig. 1), each node driven by
 //! its own [`host::HostDriver`]. Faults: everything [`crate::bus::Bus`] injects, per
-//! line, plus a cut of a line between two nodes ([`LineCut`]).
+//! line, plus a cut of a line between two nodes ([`LineCut`]), a node detached from a
+//! line ([`fault::Detach`]) and the short circuit of a line ([`fault::short_circuit`]).
 //!
 //! Clock contract as for one channel: the `rx` inputs of clock n are computed from
 //! the `tx` outputs of step n-1.
 
+pub mod dmr_config;
+pub mod fault;
 pub mod host;
 pub mod lockstep;
 pub mod vcd;
 
 use crate::bus::{Bus, Fault};
 use crate::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
+use fault::Detach;
 use host::{HostConfig, HostDriver};
 
 /// Which line.
@@ -40,6 +44,9 @@ impl LineCut {
 struct Wire {
     bus: Bus,
     cuts: Vec<LineCut>,
+    detaches: Vec<Detach>,
+    /// `tx` of the detached nodes, kept while the line is resolved without them.
+    detached_tx: Vec<(usize, bool)>,
     tx: Vec<bool>,
     rx: Vec<bool>,
     scratch_tx: Vec<bool>,
@@ -51,6 +58,8 @@ impl Wire {
         Wire {
             bus: Bus::new(n),
             cuts: Vec::new(),
+            detaches: Vec::new(),
+            detached_tx: Vec::new(),
             tx: vec![true; n],
             rx: vec![true; n],
             scratch_tx: Vec::new(),
@@ -58,8 +67,32 @@ impl Wire {
         }
     }
 
-    /// Computes `rx` for `cycle` from `tx`.
+    /// Computes `rx` for `cycle` from `tx`. A detached node drives recessive into
+    /// the line of the others and hears only its own `tx` (`fault` module docs).
     fn resolve(&mut self, cycle: u64) -> bool {
+        self.detached_tx.clear();
+        for d in &self.detaches {
+            if d.active(cycle) && !self.detached_tx.iter().any(|&(i, _)| i == d.node) {
+                self.detached_tx.push((d.node, self.tx[d.node]));
+            }
+        }
+        if self.detached_tx.is_empty() {
+            return self.resolve_connected(cycle);
+        }
+        for &(i, _) in &self.detached_tx {
+            self.tx[i] = true;
+        }
+        let line = self.resolve_connected(cycle);
+        for &(i, t) in &self.detached_tx {
+            self.tx[i] = t;
+            self.rx[i] = t;
+        }
+        line
+    }
+
+    /// Computes `rx` for `cycle` from `tx` for nodes connected to the line (bus
+    /// faults and cuts apply).
+    fn resolve_connected(&mut self, cycle: u64) -> bool {
         let cut = self.cuts.iter().find(|c| c.active(cycle)).copied();
         match cut {
             None => self.bus.resolve(cycle, &self.tx, &mut self.rx),
@@ -171,6 +204,30 @@ impl DualBusSystem {
         Ok(())
     }
 
+    /// Detaches node `d.node` from one line for a while (`fault::Detach`): F1..F8 of
+    /// the CiA 701 test plan. Refuses a node index out of range or an empty window.
+    pub fn detach(&mut self, line: Line, d: Detach) -> Result<(), String> {
+        let n = self.nodes.len();
+        if d.node >= n {
+            return Err(format!(
+                "cannot detach node {}: the system has {n} nodes (0..={})",
+                d.node,
+                n - 1
+            ));
+        }
+        if d.cycles == 0 {
+            return Err("a detach lasting 0 cycles: give a duration of at least 1".into());
+        }
+        self.wire(line).detaches.push(d);
+        Ok(())
+    }
+
+    /// Short-circuits one whole line for a while (`fault::short_circuit`: every node
+    /// reads recessive): F9/F10 of the CiA 701 test plan.
+    pub fn short_circuit(&mut self, line: Line, start: u64, cycles: u64) -> Result<(), String> {
+        self.add_fault(line, fault::short_circuit(start, cycles))
+    }
+
     /// Number of nodes.
     pub fn len(&self) -> usize {
         self.nodes.len()
@@ -251,5 +308,72 @@ impl DualBusSystem {
             }
         }
         false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bus::FaultTarget;
+
+    fn wire(n: usize) -> Wire {
+        Wire::new(n)
+    }
+
+    #[test]
+    fn a_detached_node_hears_only_itself_and_the_others_do_not_see_it() {
+        let mut w = wire(3);
+        w.detaches.push(Detach {
+            node: 1,
+            start: 5,
+            cycles: 10,
+        });
+        // Before the window node 1's dominant bit reaches everyone.
+        w.tx = vec![true, false, true];
+        assert!(!w.resolve(4));
+        assert_eq!(w.rx, [false, false, false]);
+        // Inside it the line ignores node 1, which hears its own dominant bit.
+        assert!(w.resolve(5));
+        assert_eq!(w.rx, [true, false, true]);
+        assert_eq!(w.tx, [true, false, true], "tx is left as driven");
+        // Another node's dominant bit does not reach node 1 (no acknowledgement).
+        w.tx = vec![false, true, true];
+        assert!(!w.resolve(6));
+        assert_eq!(w.rx, [false, true, false]);
+        // After the window it is connected again.
+        assert!(!w.resolve(15));
+        assert_eq!(w.rx, [false, false, false]);
+    }
+
+    #[test]
+    fn line_faults_act_on_the_connected_nodes_only_while_one_is_detached() {
+        let mut w = wire(3);
+        w.detaches.push(Detach {
+            node: 0,
+            start: 0,
+            cycles: u64::MAX,
+        });
+        w.bus
+            .add_fault(fault::short_circuit(0, 100))
+            .expect("a valid fault");
+        w.tx = vec![false, false, true];
+        // The short circuit hides node 1's dominant bit from node 1 and node 2; node
+        // 0's open stub still echoes its own.
+        assert!(w.resolve(0));
+        assert_eq!(w.rx, [false, true, true]);
+        assert_eq!(w.bus.faults()[0].target, FaultTarget::Bus);
+    }
+
+    #[test]
+    fn a_short_circuit_makes_every_node_read_recessive() {
+        let mut w = wire(4);
+        w.bus
+            .add_fault(fault::short_circuit(2, 3))
+            .expect("a valid fault");
+        w.tx = vec![false, true, false, true];
+        assert!(!w.resolve(1));
+        assert!(w.resolve(2));
+        assert_eq!(w.rx, [true; 4]);
+        assert!(!w.resolve(5));
     }
 }

@@ -64,6 +64,18 @@ pub const DRCC_SIGNALS: &[DrccSignal] = &[
     },
 ];
 
+/// The DMR probes (DMR contract §9), traced by [`DrccVcdWriter::with_dmr`] after
+/// [`DRCC_SIGNALS`] and named by the lock-step comparison: the CiA 701 names.
+pub const DMR_SIGNALS: &[DrccSignal] = &[
+    probe!(dmr_state, 2),
+    probe!(acl, 1),
+    probe!(dcl_tx_fault, 1),
+    probe!(dcl_rx_fault, 1),
+    probe!(rcl_tx_fault, 1),
+    probe!(rcl_rx_fault, 1),
+    probe!(dmr_tick, 1),
+];
+
 struct Var {
     id: IdCode,
     width: u32,
@@ -76,6 +88,7 @@ pub struct DrccVcdWriter<W: Write> {
     tb: TimeBase,
     lines: [Var; 2],
     nodes: Vec<Vec<Var>>,
+    signals: Vec<&'static DrccSignal>,
     last_time: Option<u64>,
 }
 
@@ -89,8 +102,24 @@ fn add<W: Write>(w: &mut vcd::Writer<W>, name: &str, width: u32) -> io::Result<V
 }
 
 impl<W: Write> DrccVcdWriter<W> {
-    /// Header for `nodes` nodes at `clock_hz`.
+    /// Header for `nodes` nodes at `clock_hz`, tracing [`DRCC_SIGNALS`].
     pub fn new(out: W, clock_hz: u64, nodes: usize, comment: &str) -> io::Result<Self> {
+        Self::with_signals(out, clock_hz, nodes, comment, DRCC_SIGNALS.iter().collect())
+    }
+
+    /// As [`DrccVcdWriter::new`], also tracing the DMR probes ([`DMR_SIGNALS`]).
+    pub fn with_dmr(out: W, clock_hz: u64, nodes: usize, comment: &str) -> io::Result<Self> {
+        let signals = DRCC_SIGNALS.iter().chain(DMR_SIGNALS).collect();
+        Self::with_signals(out, clock_hz, nodes, comment, signals)
+    }
+
+    fn with_signals(
+        out: W,
+        clock_hz: u64,
+        nodes: usize,
+        comment: &str,
+        signals: Vec<&'static DrccSignal>,
+    ) -> io::Result<Self> {
         let tb = TimeBase::new(clock_hz);
         let mut w = vcd::Writer::new(out);
         w.comment(comment)?;
@@ -101,7 +130,7 @@ impl<W: Write> DrccVcdWriter<W> {
         for i in 0..nodes {
             w.add_module(&format!("node{i}"))?;
             nv.push(
-                DRCC_SIGNALS
+                signals
                     .iter()
                     .map(|s| add(&mut w, s.name, s.width))
                     .collect::<io::Result<Vec<_>>>()?,
@@ -115,6 +144,7 @@ impl<W: Write> DrccVcdWriter<W> {
             tb,
             lines,
             nodes: nv,
+            signals,
             last_time: None,
         })
     }
@@ -158,7 +188,7 @@ impl<W: Write> DrccVcdWriter<W> {
             Self::change(&mut self.w, var, v as u64, time, &mut self.last_time)?;
         }
         for (vars, node) in self.nodes.iter_mut().zip(sys.nodes()) {
-            for (var, s) in vars.iter_mut().zip(DRCC_SIGNALS) {
+            for (var, s) in vars.iter_mut().zip(&self.signals) {
                 Self::change(&mut self.w, var, (s.get)(node), time, &mut self.last_time)?;
             }
         }

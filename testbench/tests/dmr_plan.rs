@@ -1,0 +1,261 @@
+//! The CiA 701 DMR test plan (seed 001 Figure 9, Tables 2 and 3; DMR contract §10) on
+//! the reference model: four DRCC devices COS1, COS2, COS3, COM1 in DMR mode on the
+//! DCL and the RCL, 125 kbit/s, 85 % load (`drcc_testbench::dmr`).
+//!
+//! - Table 3 cell for cell: the RCL startup failures F2, F4, F6, F8, F10 give exactly
+//!   the seed's DMR state and ACL of every device (read from `DMR_STATUS` at the end of
+//!   the fault window);
+//! - no application frame lost or duplicated in any single-fault row (one line always
+//!   works), startup and run time;
+//! - the fault-free baseline raises no DMR fault and every device stays "redundancy
+//!   active" on the DCL.
+//!
+//! The engine is a parameter ([`ENGINE`], [`COSIM`]): the lock-step run with the
+//! Verilated RTL only has to set `COSIM` once the RTL implements DMR mode.
+//!
+//! Besides, the plan's network faults (a node detached from a line, a line
+//! short-circuited; `drcc_cosim::dual::fault`) are exercised in redundancy mode,
+//! which needs no DMR behaviour.
+
+use std::collections::HashMap;
+use std::sync::{Mutex, OnceLock};
+
+use drcc_cosim::dual::fault::Detach;
+use drcc_cosim::dual::host::{btr, HostConfig, Policy};
+use drcc_cosim::dual::{DualBusSystem, Line};
+use drcc_cosim::Frame;
+use drcc_hdl::host::registers::DmrState;
+use drcc_testbench::dmr::{run_row, Marker, Onset, PlanConfig, Row, RowReport, DEVICES};
+use drcc_testbench::dual::drcc_engine;
+use drcc_testbench::EngineKind;
+
+/// The engine the plan runs on.
+const ENGINE: EngineKind = EngineKind::Model;
+/// A second engine in lock step (the Verilated RTL, once it implements DMR mode).
+const COSIM: Option<EngineKind> = None;
+
+/// Each row runs once per test binary, shared by the tests that look at it.
+fn report(row: Row) -> RowReport {
+    static CACHE: OnceLock<Mutex<HashMap<Row, RowReport>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
+    if let Some(r) = cache.lock().unwrap().get(&row) {
+        return r.clone();
+    }
+    let r = run_row(&PlanConfig::standard(), row, ENGINE, COSIM)
+        .unwrap_or_else(|e| panic!("{}: {e}", row.name()));
+    cache.lock().unwrap().insert(row, r.clone());
+    r
+}
+
+fn startup(m: Marker) -> Row {
+    Row {
+        marker: Some(m),
+        onset: Onset::Startup,
+    }
+}
+
+use DmrState::{RedundancyDisabled as DISABLED, RedundancyPassive as PASSIVE};
+
+/// Seed 001, Table 3 "Acceptance criteria upon RCL startup failure": per fault, the
+/// DMR state and ACL of COS1, COS2, COS3, COM1 (every ACL is the DCL).
+const TABLE_3: [(Marker, [DmrState; 4]); 5] = [
+    (Marker::F2, [DISABLED, PASSIVE, PASSIVE, PASSIVE]),
+    (Marker::F4, [PASSIVE, DISABLED, PASSIVE, PASSIVE]),
+    (Marker::F6, [PASSIVE, PASSIVE, DISABLED, PASSIVE]),
+    (Marker::F8, [PASSIVE, PASSIVE, PASSIVE, DISABLED]),
+    (Marker::F10, [DISABLED, DISABLED, DISABLED, DISABLED]),
+];
+
+#[test]
+fn table_3_rcl_startup_failures_cell_for_cell() {
+    let mut differ = Vec::new();
+    for (m, states) in TABLE_3 {
+        let r = report(startup(m));
+        for (d, want) in states.into_iter().enumerate() {
+            let got = r.during[d];
+            if got.state() != Some(want) || got.acl() != Line::A {
+                differ.push(format!(
+                    "{} {}: seed {want:?} / DCL, model {} (DMR_STATUS {:#010x})",
+                    m.name(),
+                    DEVICES[d],
+                    got.cell(),
+                    got.word
+                ));
+            }
+        }
+    }
+    assert!(
+        differ.is_empty(),
+        "cells differing from seed Table 3:\n{}",
+        differ.join("\n")
+    );
+}
+
+#[test]
+fn no_single_fault_loses_or_duplicates_a_frame() {
+    let mut bad = Vec::new();
+    for row in Row::all() {
+        let r = report(row);
+        if !r.exactly_once() || r.unpushed != 0 {
+            bad.push(format!(
+                "{}: {} lost (first {:?}), {} duplicated (first {:?}), {} foreign, {} never pushed",
+                row.name(),
+                r.lost.len(),
+                r.lost.first(),
+                r.duplicated.len(),
+                r.duplicated.first(),
+                r.foreign,
+                r.unpushed
+            ));
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "(receiver, sender, seq):\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn the_baseline_raises_no_dmr_fault() {
+    let r = report(Row::BASELINE);
+    assert_eq!(r.detection, None, "a fault flag in the fault-free run");
+    assert_eq!(r.acl_switch, None);
+    assert_eq!(
+        r.last_not_active, None,
+        "some device left redundancy active"
+    );
+    for (d, s) in r.during.iter().chain(&r.end).enumerate() {
+        assert_eq!(
+            (s.state(), s.acl()),
+            (Some(DmrState::RedundancyActive), Line::A),
+            "{} ({:#010x})",
+            DEVICES[d % 4],
+            s.word
+        );
+    }
+    assert!(r.exactly_once());
+    assert!(r.pushed > 800, "the 85 % load pushes ~900 frames in 1 s");
+}
+
+// ---- the plan's network faults, in redundancy mode (no DMR behaviour needed) ----
+
+/// Clocks per bit of the redundancy-mode runs (8 one-clock quanta).
+const CPB: u64 = 8;
+
+fn redundancy_system(frames: usize) -> DualBusSystem {
+    let config = HostConfig {
+        btr: btr(0, 5, 2, 1, false, 96),
+        redundancy: true,
+        policy: Policy::KFailed(2),
+        dual_tx: true,
+        dedup_window: 2000,
+        ..HostConfig::default()
+    };
+    let engines = (0..4)
+        .map(|_| drcc_engine(EngineKind::Model).unwrap())
+        .collect();
+    let mut sys = DualBusSystem::new(engines, vec![config; 4]).unwrap();
+    for n in 0..4 {
+        for k in 0..frames {
+            let f = Frame {
+                id: 0x100 + 0x20 * n as u32 + k as u32 % 0x20,
+                ide: false,
+                rtr: false,
+                dlc: 2,
+                data: [n as u8, k as u8, 0, 0, 0, 0, 0, 0],
+            };
+            sys.node_mut(n)
+                .host
+                .submit((100 + 600 * k as u64 + 37 * n as u64) * CPB, f, 0);
+        }
+    }
+    sys
+}
+
+/// Steps `sys` until its hosts are done and the lines quiet; returns per node
+/// whether its auxiliary FSM ever judged channel A failed (left `valid`).
+fn run_tracking_a(sys: &mut DualBusSystem) -> Vec<bool> {
+    let mut failed = vec![false; 4];
+    for _ in 0..20_000 * CPB {
+        sys.step();
+        for (n, f) in failed.iter_mut().enumerate() {
+            *f |= sys.node(n).outputs.probes.aux_a_state != 0;
+        }
+    }
+    assert!(
+        sys.run_until_quiet(200 * CPB, 20_000 * CPB),
+        "did not settle"
+    );
+    failed
+}
+
+/// Every host got every other host's frames exactly once.
+fn assert_exactly_once(sys: &DualBusSystem, frames: usize, what: &str) {
+    for (rx, n) in sys.nodes().iter().enumerate() {
+        let mut seen = vec![vec![0; frames]; 4];
+        for got in &n.host.received {
+            seen[got.frame.data[0] as usize][got.frame.data[1] as usize] += 1;
+        }
+        for (tx, counts) in seen.iter().enumerate() {
+            if tx != rx {
+                assert!(
+                    counts.iter().all(|&c| c == 1),
+                    "{what}: node {rx} got node {tx}'s frames {counts:?} times"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_node_detached_from_line_a_reaches_everyone_over_line_b() {
+    let frames = 12;
+    let mut sys = redundancy_system(frames);
+    sys.detach(
+        Line::A,
+        Detach {
+            node: 0,
+            start: 0,
+            cycles: u64::MAX,
+        },
+    )
+    .unwrap();
+    let worst = run_tracking_a(&mut sys);
+    assert_exactly_once(&sys, frames, "node 0 detached from line A");
+    // Its stub is open: its channel A hears no acknowledgement, so its own frames
+    // fail there (ACK errors) and it leaves channel A; the others never notice.
+    assert_eq!(worst, [true, false, false, false]);
+    assert!(sys
+        .detach(
+            Line::B,
+            Detach {
+                node: 4,
+                start: 0,
+                cycles: 1
+            }
+        )
+        .is_err());
+    assert!(sys
+        .detach(
+            Line::B,
+            Detach {
+                node: 1,
+                start: 0,
+                cycles: 0
+            }
+        )
+        .is_err());
+}
+
+#[test]
+fn a_short_circuited_line_a_takes_every_node_off_it() {
+    let frames = 12;
+    let mut sys = redundancy_system(frames);
+    sys.short_circuit(Line::A, 0, u64::MAX).unwrap();
+    let worst = run_tracking_a(&mut sys);
+    assert_exactly_once(&sys, frames, "line A short-circuited");
+    // No transmitter ever reads back its dominant bits on line A: bit errors, and
+    // every node leaves channel A.
+    assert_eq!(worst, [true; 4]);
+}

@@ -15250,6 +15250,9 @@ module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,ti
     // Local signals
     reg  take;
     reg  [7:0] shift;
+    reg  [127:0] slot_we;
+    reg  [127:0] limit7;
+    reg  [127:0] limit_rep;
     
     // Sub module instances
     drcc__dmr_regs__cfg_q cfg_q(
@@ -15306,6 +15309,9 @@ module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,ti
         limits_q__d = limits_q__q;
         take = wr & writable & ~refused;
         shift = ((sel_q__q) & 8'hff) << 32'h3;
+        slot_we = slot_mask << shift;
+        limit7 = ((wdat[(32'h0)+:(7)]) & 128'hffffffffffffffffffffffffffffffff);
+        limit_rep = limit7 | (limit7 << 32'h8) | (limit7 << 32'h10) | (limit7 << 32'h18) | (limit7 << 32'h20) | (limit7 << 32'h28) | (limit7 << 32'h30) | (limit7 << 32'h38) | (limit7 << 32'h40) | (limit7 << 32'h48) | (limit7 << 32'h50) | (limit7 << 32'h58) | (limit7 << 32'h60) | (limit7 << 32'h68) | (limit7 << 32'h70) | (limit7 << 32'h78);
         mb_we_id = take & (adr == a_id);
         mb_we_mask = take & (adr == a_mask);
         if (take) begin
@@ -15329,7 +15335,7 @@ module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,ti
                 else begin
                     enable_q__d = enable_q__q & ~(one16 << sel_q__q);
                 end
-                limits_q__d = (limits_q__q & ~(slot_mask << shift)) | (((wdat[(32'h0)+:(7)]) & 128'hffffffffffffffffffffffffffffffff) << shift);
+                limits_q__d = (limits_q__q & ~slot_we) | (limit_rep & slot_we);
             end
         end
         if (rst) begin

@@ -68,6 +68,9 @@ pub struct DmrRegs {
     // ---- internals ----
     take: Signal<Local, Bit>,
     shift: Signal<Local, Bits<8>>,
+    slot_we: Signal<Local, Bits<128>>,
+    limit7: Signal<Local, Bits<128>>,
+    limit_rep: Signal<Local, Bits<128>>,
     a_cfg: Constant<Bits<6>>,
     a_time: Constant<Bits<6>>,
     a_cs: Constant<Bits<6>>,
@@ -133,6 +136,9 @@ impl Default for DmrRegs {
             limits_q: Default::default(),
             take: Default::default(),
             shift: Default::default(),
+            slot_we: Default::default(),
+            limit7: Default::default(),
+            limit_rep: Default::default(),
             a_cfg: adr(map::DMR_CFG),
             a_time: adr(map::DMR_TIME),
             a_cs: adr(map::DMR_CS),
@@ -159,6 +165,24 @@ impl Logic for DmrRegs {
         dff_setup!(self, clk, cfg_q, time_q, cs_dcl_q, cs_rcl_q, sel_q, enable_q, limits_q);
         self.take.next = self.wr.val() & self.writable.val() & !self.refused.val();
         self.shift.next = bit_cast::<8, 4>(self.sel_q.q.val()) << 3;
+        self.slot_we.next = self.slot_mask.val() << self.shift.val();
+        self.limit7.next = bit_cast::<128, 7>(self.wdat.val().get_bits::<7>(0));
+        self.limit_rep.next = self.limit7.val()
+            | (self.limit7.val() << 8)
+            | (self.limit7.val() << 16)
+            | (self.limit7.val() << 24)
+            | (self.limit7.val() << 32)
+            | (self.limit7.val() << 40)
+            | (self.limit7.val() << 48)
+            | (self.limit7.val() << 56)
+            | (self.limit7.val() << 64)
+            | (self.limit7.val() << 72)
+            | (self.limit7.val() << 80)
+            | (self.limit7.val() << 88)
+            | (self.limit7.val() << 96)
+            | (self.limit7.val() << 104)
+            | (self.limit7.val() << 112)
+            | (self.limit7.val() << 120);
         self.mb_we_id.next = self.take.val() & (self.adr.val() == self.a_id.val());
         self.mb_we_mask.next = self.take.val() & (self.adr.val() == self.a_mask.val());
         if self.take.val() {
@@ -179,9 +203,10 @@ impl Logic for DmrRegs {
                     self.enable_q.d.next =
                         self.enable_q.q.val() & !(self.one16.val() << self.sel_q.q.val());
                 }
-                self.limits_q.d.next = (self.limits_q.q.val()
-                    & !(self.slot_mask.val() << self.shift.val()))
-                    | (bit_cast::<128, 7>(self.wdat.val().get_bits::<7>(0)) << self.shift.val());
+                // a write enable per slot and the limit repeated in every slot: no
+                // variable shift of the 128 bits (a barrel shifter on the FPGA)
+                self.limits_q.d.next = (self.limits_q.q.val() & !self.slot_we.val())
+                    | (self.limit_rep.val() & self.slot_we.val());
             }
         }
         if self.rst.val() {

@@ -60,124 +60,22 @@
 pub mod aux_fsm;
 pub mod dmr;
 pub mod main_fsm;
+mod register_file;
 pub mod regs;
 pub mod rx_path;
 pub mod tx_queues;
 
 use crate::engine::drcc::{DrccInputs, DrccOutputs, DrccProbes};
 use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Mode};
-use crate::frame::Frame;
 use crate::model::ChannelModel;
 use aux_fsm::{AuxFsm, AuxInputs};
 use dmr::{DmrBlock, DmrInputs};
 use main_fsm::{FsmInputs, MainFsm};
+use register_file::{clamp_k, Regs};
 use regs::dmr as dmr_regs;
 use regs::*;
 use rx_path::{RxInputs, RxPath};
 use tx_queues::{TxQueues, TxqInputs};
-
-/// The register file and the small top-level registers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Regs {
-    ctrl: u32,
-    btr: u32,
-    rmb: u32,
-    dedup: u32,
-    int_status: u32,
-    int_enable: u32,
-    irq: bool,
-    wb_ack: bool,
-    wb_dat: u32,
-    tx_id: u32,
-    tx_ctrl: u32,
-    tx_data: [u32; 2],
-    /// Nominal bit tick counters (§4.3).
-    tq_cnt: u8,
-    bit_cnt: u8,
-    /// Channel `err_state` one clock earlier (INT_STATUS.err_state).
-    err_q: [u8; 2],
-    /// STATS1[31:16].
-    recoveries: u16,
-    /// `reset_mode` one edge earlier: the channels stay in reset one clock longer
-    /// so that they capture the configuration written with the write that leaves
-    /// reset mode (contract §6).
-    reset_mode_q: bool,
-}
-
-impl Regs {
-    fn reset() -> Self {
-        Regs {
-            ctrl: ctrl::RESET,
-            btr: btr::RESET,
-            rmb: rmb::RESET,
-            dedup: dedup::RESET,
-            int_status: 0,
-            int_enable: 0,
-            irq: false,
-            wb_ack: false,
-            wb_dat: 0,
-            tx_id: 0,
-            tx_ctrl: 0,
-            tx_data: [0; 2],
-            tq_cnt: 0,
-            bit_cnt: 0,
-            err_q: [0; 2],
-            recoveries: 0,
-            reset_mode_q: true,
-        }
-    }
-    fn reset_mode(&self) -> bool {
-        self.ctrl & ctrl::RESET_MODE != 0
-    }
-    fn redundancy(&self) -> bool {
-        self.ctrl & ctrl::REDUNDANCY != 0
-    }
-    /// DMR mode (dmr_contract.md §2).
-    fn dmr(&self) -> bool {
-        self.ctrl & ctrl::DMR != 0
-    }
-    fn policy(&self) -> u32 {
-        (self.ctrl & ctrl::POLICY_MASK) >> ctrl::POLICY_SHIFT
-    }
-    fn dual_tx(&self) -> bool {
-        self.ctrl & ctrl::DUAL_TX != 0
-    }
-    fn k(&self) -> u8 {
-        ((self.ctrl & ctrl::K_MASK) >> ctrl::K_SHIFT) as u8
-    }
-    fn window(&self) -> u16 {
-        (self.dedup & dedup::WINDOW_MASK) as u16
-    }
-    fn brp(&self) -> u8 {
-        (self.btr & btr::BRP_MASK) as u8
-    }
-    /// `1 + (tseg1+1) + (tseg2+1)` from the fields as written.
-    fn tq_per_bit(&self) -> u8 {
-        (((self.btr >> btr::TSEG1_SHIFT) & 0xF) + ((self.btr >> btr::TSEG2_SHIFT) & 0x7) + 3) as u8
-    }
-    /// The frame staged in TX_ID..TX_DATA1.
-    fn staged(&self) -> Frame {
-        let mut data = [0u8; 8];
-        data[..4].copy_from_slice(&self.tx_data[0].to_le_bytes());
-        data[4..].copy_from_slice(&self.tx_data[1].to_le_bytes());
-        Frame {
-            id: self.tx_id & frame_id::ID_MASK,
-            ide: self.tx_id & frame_id::IDE != 0,
-            rtr: self.tx_id & frame_id::RTR != 0,
-            dlc: (self.tx_ctrl & frame_ctrl::DLC_MASK) as u8,
-            data,
-        }
-    }
-}
-
-/// `CTRL` write value with `k = 0` clamped to 1 (§9).
-fn clamp_k(w: u32) -> u32 {
-    if w & ctrl::K_MASK == 0 {
-        w | (1 << ctrl::K_SHIFT)
-    } else {
-        w
-    }
-}
 
 /// The DRCC top, simulated clock by clock.
 #[derive(Clone, Debug)]
@@ -271,70 +169,6 @@ impl DrccModel {
                 } else {
                     self.fsm.abort_b
                 },
-        }
-    }
-
-    /// The value a Wishbone read of word `adr` returns (registers before the edge).
-    fn read_reg(&self, adr: u8) -> u32 {
-        let r = &self.r;
-        let chan_err = |o: &ChannelOutputs| {
-            (o.probes.tec as u32 & 0x1FF)
-                | (o.probes.rec as u32) << 16
-                | (o.probes.err_state as u32 & 3) << 24
-                | (o.diag.err_warning as u32) << 26
-        };
-        let (rx_frame, rx_ch) = self.rx.rd;
-        match adr {
-            idx::ID => ID_VALUE,
-            idx::CTRL => r.ctrl,
-            idx::BTR => r.btr,
-            idx::RMB_CFG => r.rmb,
-            idx::DEDUP_CFG => r.dedup,
-            idx::STATUS => {
-                self.fsm.state as u32
-                    | (self.fsm.tx_channel() as u32) << 4
-                    | (self.aux[0].state as u32) << 5
-                    | (self.aux[1].state as u32) << 7
-                    | (self.out[0].probes.err_state as u32 & 3) << 9
-                    | (self.out[1].probes.err_state as u32 & 3) << 11
-                    | (r.reset_mode() as u32) << 13
-                    | (self.fsm.tx_going_on() as u32) << 14
-                    | (self.txq.count[0] as u32) << 16
-                    | (self.txq.count[1] as u32) << 20
-                    | (self.rx.count as u32) << 24
-            }
-            idx::INT_STATUS => r.int_status,
-            idx::INT_ENABLE => r.int_enable,
-            idx::CHAN_A_ERR => chan_err(&self.out[0]),
-            idx::CHAN_B_ERR => chan_err(&self.out[1]),
-            idx::AUX_A => self.aux[0].reg(),
-            idx::AUX_B => self.aux[1].reg(),
-            idx::TX_ID => r.tx_id,
-            idx::TX_CTRL => r.tx_ctrl,
-            idx::TX_DATA0 => r.tx_data[0],
-            idx::TX_DATA1 => r.tx_data[1],
-            idx::RX_ID => {
-                (rx_frame.id & frame_id::ID_MASK)
-                    | if rx_frame.ide { frame_id::IDE } else { 0 }
-                    | if rx_frame.rtr { frame_id::RTR } else { 0 }
-                    | if self.rx.rx_ready {
-                        frame_id::NOT_EMPTY
-                    } else {
-                        0
-                    }
-            }
-            idx::RX_CTRL => (rx_frame.dlc as u32 & 0xF) | (rx_ch as u32 & 1) << 8,
-            idx::RX_DATA0 => u32::from_le_bytes(rx_frame.data[..4].try_into().unwrap()),
-            idx::RX_DATA1 => u32::from_le_bytes(rx_frame.data[4..].try_into().unwrap()),
-            idx::STATS0 => self.rx.duplicates as u32 | (self.rx.overruns as u32) << 16,
-            idx::STATS1 => self.fsm.switches as u32 | (r.recoveries as u32) << 16,
-            idx::TIMES => self.fsm.last_tx_time as u32 | (self.fsm.switch_time as u32) << 16,
-            // DMR registers (dmr_contract.md §2.1); TX_CMD, RX_CMD (write only) and
-            // unmapped words read 0.
-            _ => self
-                .dmr
-                .read(adr, r.reset_mode(), self.rx.dmr_stats())
-                .unwrap_or(0),
         }
     }
 

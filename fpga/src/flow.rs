@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use drcc_hdl::tops::Top;
 
-use crate::report::{Measured, Pnr, Reference, SynthReport, WrapperSummary};
+use crate::report::{Measured, NoFit, Pnr, Reference, SynthReport, WrapperSummary};
 use crate::scan::{scan_wrapper, Wrapper};
 use crate::target::{Target, RECOMMENDED_CLOCK_MHZ};
 use crate::tools::{ToolEnv, NEXTPNR_ICE40};
@@ -112,9 +112,21 @@ impl Flow<'_> {
         });
         let (top_area, wrapper_area) = (top_area?, wrapper_area?);
 
-        let pnr = match t.pnr {
-            Some(device) => Some(self.place_and_route(top, t, device, &dir, &wrapper)?),
-            None => None,
+        let (pnr, no_fit) = match t.pnr {
+            Some(device) => match self.place_and_route(top, t, device, &dir, &wrapper)? {
+                Ok(p) => (Some(p), None),
+                Err(nf) => {
+                    (self.progress)(&format!(
+                        "{} on {}: does not fit the {}: {}",
+                        top.name,
+                        t.name,
+                        t.device,
+                        nf.describe()
+                    ));
+                    (None, Some(nf))
+                }
+            },
+            None => (None, None),
         };
         report.measured = Some(Measured {
             reference: Reference::of(t, &top_area),
@@ -128,12 +140,15 @@ impl Flow<'_> {
                 can_pins: wrapper.can.len(),
             },
             pnr,
+            no_fit,
             build_dir: dir,
         });
         Ok(report)
     }
 
-    /// nextpnr-ice40 on the wrapper netlist with the board's pins, then icepack.
+    /// nextpnr-ice40 on the wrapper netlist with the board's pins, then icepack;
+    /// `Err(NoFit)` inside when the design does not fit the part (a result, not a
+    /// failure of the flow: `--all` goes on with the next top).
     fn place_and_route(
         &self,
         top: &Top,
@@ -141,7 +156,7 @@ impl Flow<'_> {
         device: &[&str],
         dir: &Path,
         wrapper: &Wrapper,
-    ) -> Result<Pnr, Error> {
+    ) -> Result<Result<Pnr, NoFit>, Error> {
         let pcf = abs(&self.workspace.join(t.constraints))?;
         (self.progress)(&format!(
             "{} on {}: nextpnr-ice40 {} with {}",
@@ -150,9 +165,12 @@ impl Flow<'_> {
             device.join(" "),
             t.constraints
         ));
-        let log = nextpnr::run(dir, device, &wrapper.module, &pcf)?;
+        let log = match nextpnr::run(dir, device, &wrapper.module, &pcf)? {
+            Ok(log) => log,
+            Err(nf) => return Ok(Err(nf)),
+        };
         let bitstream = icepack::run(dir, &wrapper.module)?;
-        Ok(Pnr {
+        Ok(Ok(Pnr {
             tool: NEXTPNR_ICE40.cmd.to_string(),
             version: self.env.nextpnr_version.clone().unwrap_or_default(),
             fmax_mhz: log.fmax_mhz,
@@ -162,7 +180,7 @@ impl Flow<'_> {
             utilisation: log.utilisation,
             critical_path: log.critical_path,
             bitstream,
-        })
+        }))
     }
 }
 

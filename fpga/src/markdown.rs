@@ -15,6 +15,9 @@ pub const README_BEGIN: &str =
 pub const README_END: &str = "<!-- synth-results:end -->";
 
 fn fmax_cell(r: &SynthReport) -> String {
+    if let Some(nf) = r.measured.as_ref().and_then(|m| m.no_fit.as_ref()) {
+        return format!("does not fit: {}/{} LCs", nf.used, nf.available);
+    }
     match r.measured.as_ref().and_then(|m| m.pnr.as_ref()) {
         Some(p) => format!(
             "{:.1} MHz ({:.2}x {} MHz)",
@@ -84,7 +87,7 @@ pub fn doc(results: &[SynthReport], env: &ToolEnv) -> String {
     let _ = writeln!(
         s,
         "\nyosys `synth_ice40 -flatten`, `synth_xilinx -family xc3s -flatten`, `synth_xilinx\n\
-         -family xc7 -flatten` on `rtl-out/<top>.v` alone. LUTs are logic LUTs (`SB_LUT4`;\n\
+         -family xc7 -flatten -abc9` on `rtl-out/<top>.v` alone. LUTs are logic LUTs (`SB_LUT4`;\n\
          `LUT1`..`LUT4` on Spartan-3, where wider functions also use `MUXF5`..`MUXF8`;\n\
          `LUT1`..`LUT6` on 7-series); FFs every flip-flop cell; carry the carry cells\n\
          (one bit each, four bits per `CARRY4`); BRAM the block-RAM cells. The\n\
@@ -94,7 +97,16 @@ pub fn doc(results: &[SynthReport], env: &ToolEnv) -> String {
          is what nextpnr-ice40 reports after routing the scan wrapper below on the\n\
          board (seed 1, clock constrained to the board's 12 MHz), as a multiple of the\n\
          recommended {} MHz; the Xilinx families have no place and route among the\n\
-         Debian tools (see their constraint folders for ISE / Vivado).\n",
+         Debian tools (see their constraint folders for ISE / Vivado).\n\
+         \n\
+         Why `-abc9` on 7-series only: the default `abc` mapper packs wide functions\n\
+         into `MUXF` trees fed by `LUT1` buffers, and its count swings by up to 22 %\n\
+         (Spartan-3) and 15 % (7-series) between netlists proven equivalent (yosys\n\
+         `equiv_induct`); `abc9` maps\n\
+         with the cells' delays and counts stay within a few percent of the logic. yosys\n\
+         0.23 refuses `-abc9` for Spartan-3 (LUT4), whose reference was measured with\n\
+         the default mapper, so `xc3s` keeps it: read its LUT column with that swing in\n\
+         mind.\n",
         fmt_mhz(RECOMMENDED_CLOCK_MHZ)
     );
     wrapper_section(&mut s, results);
@@ -126,11 +138,11 @@ fn wrapper_section(s: &mut String, results: &[SynthReport]) {
             continue;
         };
         let (w, o) = (&m.wrapper, &m.wrapper_overhead);
-        let dev = m
-            .pnr
-            .as_ref()
-            .and_then(|p| p.logic_cells())
-            .unwrap_or_else(|| "not placed".to_string());
+        let dev = match (&m.pnr, &m.no_fit) {
+            (_, Some(nf)) => format!("does not fit: {}", nf.describe()),
+            (Some(p), None) => p.logic_cells().unwrap_or_else(|| "placed".to_string()),
+            (None, None) => "not placed".to_string(),
+        };
         let _ = writeln!(
             s,
             "| {} | `{}` | {} + {} | {} | {} / {} | +{} / +{} | {dev} |",
@@ -223,6 +235,31 @@ fn clock_section(s: &mut String, results: &[SynthReport]) {
 mod tests {
     use super::*;
     use crate::report::tests::sample;
+
+    #[test]
+    fn a_top_that_does_not_fit_says_so_in_both_tables() {
+        let mut r = sample("ice40");
+        let m = r.measured.as_mut().unwrap();
+        m.pnr = None;
+        m.no_fit = Some(crate::report::NoFit {
+            resource: "ICESTORM_LC".into(),
+            used: 5308,
+            available: 5280,
+        });
+        let t = table(std::slice::from_ref(&r));
+        assert!(t.contains("| does not fit: 5308/5280 LCs |"), "{t}");
+        let mut s = String::new();
+        wrapper_section(&mut s, std::slice::from_ref(&r));
+        assert!(
+            s.contains("does not fit: 5308/5280 ICESTORM_LC (100.5 %)"),
+            "{s}"
+        );
+        assert!(
+            r.text().contains("DOES NOT FIT the iCE40UP5K-SG48"),
+            "{}",
+            r.text()
+        );
+    }
 
     #[test]
     fn table_rows_give_area_carry_cell_and_fmax() {

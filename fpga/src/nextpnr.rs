@@ -8,6 +8,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::json::round3;
+use crate::report::NoFit;
 use crate::tools::{run_logged, NEXTPNR_ICE40};
 use crate::Error;
 
@@ -86,12 +87,50 @@ pub fn args(device: &[&str], module: &str, pcf: &Path) -> Vec<String> {
     args
 }
 
-/// Places and routes `<module>.json` in `dir`; returns the parsed log.
-pub fn run(dir: &Path, device: &[&str], module: &str, pcf: &Path) -> Result<NextpnrLog, Error> {
+/// Places and routes `<module>.json` in `dir`; returns the parsed log, or
+/// `Err(NoFit)` inside when nextpnr stopped because the design needs more of a
+/// resource than the part has (any other failure is an [`Error`]).
+pub fn run(
+    dir: &Path,
+    device: &[&str],
+    module: &str,
+    pcf: &Path,
+) -> Result<Result<NextpnrLog, NoFit>, Error> {
     let _ = std::fs::remove_file(dir.join(LOG));
-    run_logged(&NEXTPNR_ICE40, &args(device, module, pcf), dir, LOG)?;
+    let ran = run_logged(&NEXTPNR_ICE40, &args(device, module, pcf), dir, LOG);
     let log = std::fs::read_to_string(dir.join(LOG)).unwrap_or_default();
-    parse_log(&log).map_err(|msg| Error(format!("{}: {msg}", dir.join(LOG).display())))
+    if let Err(e) = ran {
+        return match no_fit(&log) {
+            Some(nf) => Ok(Err(nf)),
+            None => Err(e),
+        };
+    }
+    parse_log(&log)
+        .map(Ok)
+        .map_err(|msg| Error(format!("{}: {msg}", dir.join(LOG).display())))
+}
+
+/// The first resource (in nextpnr's order) the design uses more of than the part
+/// has, from the utilisation block nextpnr logs before it gives up placing.
+pub fn no_fit(text: &str) -> Option<NoFit> {
+    let at = text.rfind("Device utilisation:")?;
+    text[at..]
+        .lines()
+        .skip(1)
+        .map_while(|l| {
+            let body = l.trim_start_matches("Info:").trim();
+            let (name, counts) = body.split_once(':')?;
+            let (used, total) = counts.split_once('/')?;
+            let used: u64 = used.trim().parse().ok()?;
+            let total: u64 = total.split_whitespace().next()?.parse().ok()?;
+            Some((name.trim().to_string(), used, total))
+        })
+        .find(|(_, used, total)| used > total)
+        .map(|(resource, used, available)| NoFit {
+            resource,
+            used,
+            available,
+        })
 }
 
 /// Parses a nextpnr log: the last `Max frequency for clock` line (after
@@ -280,5 +319,32 @@ Info: Program finished normally.\n";
             "{joined}"
         );
         assert!(joined.ends_with("--log nextpnr.log"), "{joined}");
+    }
+
+    /// The log of nextpnr-ice40 0.4 giving up on the UP5K (drcc, 2026-11-25).
+    const NO_FIT_LOG: &str = "\
+Info: Device utilisation:
+Info: \t         ICESTORM_LC:  5308/ 5280   100%
+Info: \t        ICESTORM_RAM:    26/   30    86%
+Info: \t               SB_IO:    10/   96    10%
+Info: \t               SB_GB:     8/    8   100%
+
+Info: Placed 10 cells based on constraints.
+ERROR: Failed to expand region (0, 0) |_> (25, 31) of 5308 ICESTORM_LCs
+0 warnings, 1 error
+";
+
+    #[test]
+    fn a_design_over_the_part_is_a_no_fit_naming_the_resource() {
+        let nf = no_fit(NO_FIT_LOG).expect("5308 > 5280 logic cells");
+        assert_eq!(
+            (nf.resource.as_str(), nf.used, nf.available),
+            ("ICESTORM_LC", 5308, 5280)
+        );
+        assert_eq!(nf.describe(), "5308/5280 ICESTORM_LC (100.5 %)");
+        // A full resource (8/8 global buffers) is not over the part.
+        assert!(no_fit(&NO_FIT_LOG.replace("5308/", "5280/")).is_none());
+        // A failure without a utilisation block is not a no-fit.
+        assert!(no_fit("ERROR: cannot open file\n").is_none());
     }
 }

@@ -66,8 +66,12 @@ pub struct Measured {
     pub wrapper: WrapperSummary,
     /// The OpenCores CAN controller on this family, if measured.
     pub reference: Option<Reference>,
-    /// iCE40 place and route (none for the Xilinx families).
+    /// iCE40 place and route (none for the Xilinx families, or when the design
+    /// does not fit the part).
     pub pnr: Option<Pnr>,
+    /// The design does not fit the board's part: nextpnr stopped, this says why.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub no_fit: Option<NoFit>,
     /// Build directory (netlists, logs, the wrapper, the bitstream).
     pub build_dir: PathBuf,
 }
@@ -113,6 +117,30 @@ impl Reference {
             lut_ratio: ratio(a.lut, lut),
             ff_ratio: ratio(a.ff, ff),
         })
+    }
+}
+
+/// A design that does not fit the part: the first resource nextpnr had too few of.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct NoFit {
+    /// nextpnr's resource name (`ICESTORM_LC`, `ICESTORM_RAM` ...).
+    pub resource: String,
+    /// How many the wrapper netlist needs.
+    pub used: u64,
+    /// How many the part has.
+    pub available: u64,
+}
+
+impl NoFit {
+    /// `5308/5280 ICESTORM_LC (100.5 %)`.
+    pub fn describe(&self) -> String {
+        format!(
+            "{}/{} {} ({:.1} %)",
+            self.used,
+            self.available,
+            self.resource,
+            100.0 * ratio(self.used, self.available)
+        )
     }
 }
 
@@ -256,9 +284,17 @@ impl SynthReport {
                 ratio(a.ff, r.ff)
             );
         }
-        match &m.pnr {
-            Some(p) => pnr_text(&mut s, p),
-            None => {
+        match (&m.pnr, &m.no_fit) {
+            (Some(p), _) => pnr_text(&mut s, p),
+            (None, Some(nf)) => {
+                let _ = writeln!(
+                    s,
+                    "  place and route: DOES NOT FIT the {}: the scan wrapper needs {}",
+                    t.device,
+                    nf.describe()
+                );
+            }
+            (None, None) => {
                 let _ = writeln!(
                     s,
                     "  place and route: not run (no {} place-and-route among the Debian tools; see {})",
@@ -400,6 +436,7 @@ pub(crate) mod tests {
                     can_pins: 1,
                 },
                 pnr,
+                no_fit: None,
                 build_dir: PathBuf::from("/b"),
             }),
         }

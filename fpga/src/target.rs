@@ -102,7 +102,7 @@ pub const TARGETS: &[Target] = &[
         name: "xc7",
         family: "Xilinx Artix-7",
         arch: Arch::Xilinx,
-        synth: "synth_xilinx -family xc7 -flatten",
+        synth: "synth_xilinx -family xc7 -flatten -abc9",
         family_option: Some("xc7"),
         lut: "LUT6",
         board: "Digilent Arty A7-35T",

@@ -286,7 +286,7 @@ mod tests {
         let rtl = Path::new("/w/rtl-out/can_channel.v");
         assert_eq!(
             top_script(xc7, rtl, "can_channel"),
-            "read_verilog /w/rtl-out/can_channel.v\nsynth_xilinx -family xc7 -flatten -top can_channel\n"
+            "read_verilog /w/rtl-out/can_channel.v\nsynth_xilinx -family xc7 -flatten -abc9 -top can_channel\n"
         );
         let w = wrapper_script(ice40, rtl, "can_channel_scan.v", "can_channel_scan");
         assert!(w.ends_with(

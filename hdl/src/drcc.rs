@@ -9,6 +9,8 @@
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;
+use crate::dmr::control::DmrControl;
+use crate::dmr::engine::DmrEngine;
 use crate::dmr::mailbox_cfg::MailboxCfg;
 use crate::host::dmr_check::DmrCheck;
 use crate::host::dmr_regs::DmrRegs;
@@ -122,11 +124,29 @@ pub struct Drcc {
     pub chan_a_err_state: Signal<Out, Bits<2>>,
     /// Channel B `err_state`: 0 error active, 1 error passive, 2 bus-off.
     pub chan_b_err_state: Signal<Out, Bits<2>>,
+    // DMR probes (dmr_contract.md §9; CiA 701 names), all 0 outside DMR mode
+    /// DMR state: 0 redundancy active, 1 redundancy passive, 2 redundancy disabled,
+    /// 3 network disconnected.
+    pub dmr_state: Signal<Out, Bits<2>>,
+    /// Active CAN line: 0 = DCL (channel A), 1 = RCL (channel B).
+    pub acl: Signal<Out, Bit>,
+    /// The DCL cannot transmit (a transmit fault was found on it).
+    pub dcl_tx_fault: Signal<Out, Bit>,
+    /// A fault on reception was found on the DCL.
+    pub dcl_rx_fault: Signal<Out, Bit>,
+    /// The RCL cannot transmit.
+    pub rcl_tx_fault: Signal<Out, Bit>,
+    /// A fault on reception was found on the RCL.
+    pub rcl_rx_fault: Signal<Out, Bit>,
+    /// One-clock pulse every `DMR_TIME.tick_bits` nominal bit times (the DMR tick).
+    pub dmr_tick: Signal<Out, Bit>,
     // blocks
     regs: WbRegs,
     dmr_check: DmrCheck,
     dmr_regs: DmrRegs,
     mailbox_cfg: MailboxCfg,
+    dmr_ctl: DmrControl,
+    dmr_eng: DmrEngine,
     status: StatusWords,
     ticker: BitTick,
     stats: RedundancyStats,
@@ -141,6 +161,7 @@ pub struct Drcc {
     // glue
     clear: Signal<Local, Bit>,
     rmb_hold: Signal<Local, Bit>,
+    dmr_hold: Signal<Local, Bit>,
 }
 
 impl Logic for Drcc {
@@ -151,6 +172,8 @@ impl Logic for Drcc {
         self.clear.next = self.rst.val() | self.regs.reset_mode.val();
         self.rmb_hold.next =
             self.rst.val() | self.regs.reset_mode.val() | !self.regs.redundancy.val();
+        // the DMR function runs in DMR mode outside reset mode (DMR contract §2)
+        self.dmr_hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
 
         // ---- register block ----
         self.regs.clk.next = self.clk.val();
@@ -167,7 +190,9 @@ impl Logic for Drcc {
         self.regs.txq_b.next = self.txbuf.count_b.val();
         self.regs.rx_count.next = self.rxfifo.count.val();
         self.regs.ev_rx.next = self.rxw.rx_evt.val();
-        self.regs.ev_tx_done.next = self.txbuf.done_evt.val() | self.main.success_evt.val();
+        self.regs.ev_tx_done.next = self.txbuf.done_evt.val()
+            | self.main.success_evt.val()
+            | self.dmr_ctl.tx_done_evt.val();
         self.regs.ev_switch.next = self.main.switch_evt.val();
         self.regs.ev_overrun.next = self.rxw.overrun_evt.val();
         self.regs.ev_tx_failure.next = self.txbuf.failed_evt.val() | self.main.fail_evt.val();
@@ -182,9 +207,7 @@ impl Logic for Drcc {
         self.regs.ext_word.next = self.dmr_check.word.val();
         self.regs.ext_writable.next = self.dmr_check.writable.val();
         self.regs.ext_illegal.next = self.dmr_check.illegal.val();
-        // the DMR function (DMR contract §3-§8) is not in the RTL yet: no DMR events,
-        // and the status words of a DRCC that never ran in DMR mode
-        self.regs.ev_dmr.next = false;
+        self.regs.ev_dmr.next = self.dmr_ctl.int_evt.val();
 
         // ---- DMR registers and mailbox memory (DMR contract §2) ----
         self.dmr_check.adr.next = self.wb_adr_i.val();
@@ -199,10 +222,12 @@ impl Logic for Drcc {
         self.dmr_check.mb_limits.next = self.dmr_regs.mb_limits.val();
         self.dmr_check.mb_id_word.next = self.mailbox_cfg.id_word.val();
         self.dmr_check.mb_mask.next = self.mailbox_cfg.mask.val();
-        self.dmr_check.status_word.next = 0.into();
-        self.dmr_check.cs_count_word.next = 0.into();
-        self.dmr_check.rx_stats_word.next = 0.into();
-        self.dmr_check.mb_state_word.next = 0.into();
+        self.dmr_check.status_word.next = self.dmr_ctl.status_word.val();
+        self.dmr_check.cs_count_word.next = self.dmr_ctl.cs_count_word.val();
+        self.dmr_check.rx_stats_word.next = (bit_cast::<32, 8>(self.rxw.expired.val()) << 24)
+            | (bit_cast::<32, 8>(self.rxw.released.val()) << 16)
+            | bit_cast::<32, 16>(self.rxw.pcl_frames.val());
+        self.dmr_check.mb_state_word.next = self.dmr_eng.mb_state_word.val();
         self.dmr_regs.clk.next = self.clk.val();
         self.dmr_regs.rst.next = self.rst.val();
         self.dmr_regs.wr.next = self.regs.wr_o.val();
@@ -211,11 +236,77 @@ impl Logic for Drcc {
         self.dmr_regs.writable.next = self.dmr_check.writable.val();
         self.dmr_regs.refused.next = self.dmr_check.illegal.val();
         self.mailbox_cfg.clk.next = self.clk.val();
-        self.mailbox_cfg.read_address.next = self.dmr_regs.mb_sel.val();
+        // the memory's read port is the host's in reset mode, the engine's while
+        // DMR runs (DMR contract §2.1)
+        if self.dmr_hold.val() {
+            self.mailbox_cfg.read_address.next = self.dmr_regs.mb_sel.val();
+        } else {
+            self.mailbox_cfg.read_address.next = self.dmr_eng.cfg_addr.val();
+        }
         self.mailbox_cfg.write_address.next = self.dmr_regs.mb_sel.val();
         self.mailbox_cfg.we_id.next = self.dmr_regs.mb_we_id.val();
         self.mailbox_cfg.we_mask.next = self.dmr_regs.mb_we_mask.val();
         self.mailbox_cfg.wdat.next = self.wb_dat_i.val().get_bits::<31>(0);
+
+        // ---- DMR function (DMR contract §3-§7): control and mailbox engine ----
+        self.dmr_ctl.clk.next = self.clk.val();
+        self.dmr_ctl.rst.next = self.rst.val();
+        self.dmr_ctl.hold.next = self.dmr_hold.val();
+        self.dmr_ctl.timeout.next = self.dmr_regs.timeout.val();
+        self.dmr_ctl.cs_period.next = self.dmr_regs.cs_period.val();
+        self.dmr_ctl.tick_bits.next = self.dmr_regs.tick_bits.val();
+        self.dmr_ctl.recovery_delay.next = self.dmr_regs.recovery_delay.val();
+        self.dmr_ctl.cs_id_dcl.next = self.dmr_regs.cs_id_dcl.val();
+        self.dmr_ctl.cs_id_rcl.next = self.dmr_regs.cs_id_rcl.val();
+        self.dmr_ctl.tick.next = self.ticker.tick.val();
+        self.dmr_ctl.reset_mode_q.next = self.regs.reset_mode_d.val();
+        self.dmr_ctl.done_dcl.next = self.chan_a.tx_done.val();
+        self.dmr_ctl.failed_dcl.next = self.chan_a.tx_failed.val();
+        self.dmr_ctl.rx_valid_dcl.next = self.chan_a.rx_valid.val();
+        self.dmr_ctl.rx_ide_dcl.next = self.chan_a.rx_ide.val();
+        self.dmr_ctl.rx_rtr_dcl.next = self.chan_a.rx_rtr.val();
+        self.dmr_ctl.rx_dlc_dcl.next = self.chan_a.rx_dlc.val();
+        self.dmr_ctl.rx_id_dcl.next = self.chan_a.rx_id.val();
+        self.dmr_ctl.err_state_dcl.next = self.chan_a.err_state.val();
+        self.dmr_ctl.done_rcl.next = self.chan_b.tx_done.val();
+        self.dmr_ctl.failed_rcl.next = self.chan_b.tx_failed.val();
+        self.dmr_ctl.rx_valid_rcl.next = self.chan_b.rx_valid.val();
+        self.dmr_ctl.rx_ide_rcl.next = self.chan_b.rx_ide.val();
+        self.dmr_ctl.rx_rtr_rcl.next = self.chan_b.rx_rtr.val();
+        self.dmr_ctl.rx_dlc_rcl.next = self.chan_b.rx_dlc.val();
+        self.dmr_ctl.rx_id_rcl.next = self.chan_b.rx_id.val();
+        self.dmr_ctl.err_state_rcl.next = self.chan_b.err_state.val();
+        self.dmr_ctl.q_count.next = self.txbuf.count_a.val();
+        self.dmr_ctl.rd_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+        self.dmr_ctl.rd_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+        self.dmr_ctl.rd_sel.next = self.txbuf.rd_sel_o.val();
+        self.dmr_ctl.eval_fault.next = self.dmr_eng.fault.val();
+        self.dmr_ctl.eval_line.next = self.dmr_eng.fault_line.val();
+        self.dmr_ctl.eval_tx.next = self.dmr_eng.fault_tx.val();
+        self.dmr_ctl.eval_deviation.next = self.dmr_eng.fault_deviation.val();
+        self.dmr_ctl.eval_mb.next = self.dmr_eng.fault_mb.val();
+        self.dmr_eng.clk.next = self.clk.val();
+        self.dmr_eng.hold.next = self.dmr_hold.val();
+        self.dmr_eng.clear_state.next = self.dmr_ctl.clear_mailboxes.val();
+        self.dmr_eng.timeout.next = self.dmr_regs.timeout.val();
+        self.dmr_eng.tx_dcl.next = self.dmr_ctl.raise_tx_dcl.val();
+        self.dmr_eng.tx_rcl.next = self.dmr_ctl.raise_tx_rcl.val();
+        self.dmr_eng.rx_dcl.next = self.dmr_ctl.raise_rx_dcl.val();
+        self.dmr_eng.rx_rcl.next = self.dmr_ctl.raise_rx_rcl.val();
+        self.dmr_eng.req_dcl.next = self.dmr_ctl.raise_req_dcl.val();
+        self.dmr_eng.req_rcl.next = self.dmr_ctl.raise_req_rcl.val();
+        self.dmr_eng.key_tx_dcl.next = self.dmr_ctl.key_tx_dcl.val();
+        self.dmr_eng.key_tx_rcl.next = self.dmr_ctl.key_tx_rcl.val();
+        self.dmr_eng.key_rx_dcl.next = self.dmr_ctl.key_rx_dcl.val();
+        self.dmr_eng.key_rx_rcl.next = self.dmr_ctl.key_rx_rcl.val();
+        self.dmr_eng.key_req_dcl.next = self.dmr_ctl.key_req_dcl.val();
+        self.dmr_eng.key_req_rcl.next = self.dmr_ctl.key_req_rcl.val();
+        self.dmr_eng.eval.next = self.dmr_ctl.raise_eval.val();
+        self.dmr_eng.mb_enable.next = self.dmr_regs.mb_enable.val();
+        self.dmr_eng.mb_limits.next = self.dmr_regs.mb_limits.val();
+        self.dmr_eng.cfg_id_word.next = self.mailbox_cfg.id_word.val();
+        self.dmr_eng.cfg_mask.next = self.mailbox_cfg.mask.val();
+        self.dmr_eng.mb_sel.next = self.dmr_regs.mb_sel.val();
 
         // ---- read-only registers ----
         self.status.adr.next = self.wb_adr_i.val();
@@ -317,6 +408,10 @@ impl Logic for Drcc {
         self.txbuf.clk.next = self.clk.val();
         self.txbuf.clear.next = self.clear.val();
         self.txbuf.redundancy.next = self.regs.redundancy.val();
+        self.txbuf.dmr.next = self.regs.dmr.val();
+        self.txbuf.off_dcl.next = self.dmr_ctl.off_dcl.val();
+        self.txbuf.off_rcl.next = self.dmr_ctl.off_rcl.val();
+        self.txbuf.dmr_pop.next = self.dmr_ctl.pop.val();
         self.txbuf.push.next = self.regs.push.val();
         self.txbuf.push_q.next = self.regs.push_q.val();
         self.txbuf.push_frame.next = self.regs.tx_frame.val();
@@ -335,12 +430,22 @@ impl Logic for Drcc {
         self.rxw.clk.next = self.clk.val();
         self.rxw.rst.next = self.rst.val();
         self.rxw.clear.next = self.clear.val();
-        self.rxw.dedup_on.next = self.regs.redundancy.val() & self.regs.window.val().any();
+        self.rxw.dedup_on.next =
+            (self.regs.redundancy.val() | self.regs.dmr.val()) & self.regs.window.val().any();
+        // DMR: the ACL rule (DMR contract §8); CS frames never reach the RX path
+        self.rxw.dmr.next = self.regs.dmr.val();
+        self.rxw.acl.next = self.dmr_ctl.acl.val();
+        self.rxw.release_set.next = self.dmr_ctl.acl_switch.val();
         self.rxw.window.next = self.regs.window.val();
         self.rxw.now.next = self.ticker.now.val();
         self.rxw.tick.next = self.ticker.tick.val();
-        self.rxw.rxv_a.next = self.chan_a.rx_valid.val();
-        self.rxw.rxv_b.next = self.chan_b.rx_valid.val();
+        if self.dmr_hold.val() {
+            self.rxw.rxv_a.next = self.chan_a.rx_valid.val();
+            self.rxw.rxv_b.next = self.chan_b.rx_valid.val();
+        } else {
+            self.rxw.rxv_a.next = self.dmr_ctl.rx_deliver_dcl.val();
+            self.rxw.rxv_b.next = self.dmr_ctl.rx_deliver_rcl.val();
+        }
         self.rxw.frame_a.next = (bit_cast::<99, 1>(self.chan_a.rx_rtr.val().into()) << 98)
             | (bit_cast::<99, 1>(self.chan_a.rx_ide.val().into()) << 97)
             | (bit_cast::<99, 29>(self.chan_a.rx_id.val()) << 68)
@@ -357,8 +462,10 @@ impl Logic for Drcc {
         // channel rst = rst | reset_mode | reset_mode one edge earlier | restart
         // (contract §6): the channels capture their configuration while in reset
         self.chan_a.clk.next = self.clk.val();
-        self.chan_a.rst.next =
-            self.clear.val() | self.regs.reset_mode_d.val() | self.aux_a.chan_rst.val();
+        self.chan_a.rst.next = self.clear.val()
+            | self.regs.reset_mode_d.val()
+            | self.aux_a.chan_rst.val()
+            | self.dmr_ctl.restart_dcl.val();
         self.chan_a.cfg_brp.next = self.regs.brp.val();
         self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
@@ -367,18 +474,30 @@ impl Logic for Drcc {
         self.chan_a.cfg_mode.next = self.regs.mode_a.val();
         self.chan_a.cfg_ewl.next = self.regs.ewl.val();
         self.chan_a.cfg_single_shot.next =
-            self.regs.single_shot.val() & !self.regs.redundancy.val();
+            self.regs.single_shot.val() & !self.regs.redundancy.val() & !self.regs.dmr.val();
         self.chan_a.rx.next = self.chan_a_rx.val();
-        self.chan_a.tx_req.next = self.main.req_a.val() | self.txbuf.req_a.val();
-        self.chan_a.tx_abort.next = self.main.abort_a.val();
-        self.chan_a.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
-        self.chan_a.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
-        self.chan_a.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
-        self.chan_a.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
-        self.chan_a.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        self.chan_a.tx_req.next =
+            self.main.req_a.val() | self.txbuf.req_a.val() | self.dmr_ctl.tx_req_dcl.val();
+        self.chan_a.tx_abort.next = self.main.abort_a.val() | self.dmr_ctl.tx_abort_dcl.val();
+        if self.dmr_ctl.cs_req_dcl.val() {
+            // the CS frame of the line: base format, DLC 0, data frame (§7)
+            self.chan_a.tx_rtr.next = false;
+            self.chan_a.tx_ide.next = false;
+            self.chan_a.tx_id.next = bit_cast::<29, 11>(self.dmr_regs.cs_id_dcl.val());
+            self.chan_a.tx_dlc.next = 0.into();
+            self.chan_a.tx_data.next = 0.into();
+        } else {
+            self.chan_a.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
+            self.chan_a.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+            self.chan_a.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+            self.chan_a.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
+            self.chan_a.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        }
         self.chan_b.clk.next = self.clk.val();
-        self.chan_b.rst.next =
-            self.clear.val() | self.regs.reset_mode_d.val() | self.aux_b.chan_rst.val();
+        self.chan_b.rst.next = self.clear.val()
+            | self.regs.reset_mode_d.val()
+            | self.aux_b.chan_rst.val()
+            | self.dmr_ctl.restart_rcl.val();
         self.chan_b.cfg_brp.next = self.regs.brp.val();
         self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();
@@ -387,15 +506,25 @@ impl Logic for Drcc {
         self.chan_b.cfg_mode.next = self.regs.mode_b.val();
         self.chan_b.cfg_ewl.next = self.regs.ewl.val();
         self.chan_b.cfg_single_shot.next =
-            self.regs.single_shot.val() & !self.regs.redundancy.val();
+            self.regs.single_shot.val() & !self.regs.redundancy.val() & !self.regs.dmr.val();
         self.chan_b.rx.next = self.chan_b_rx.val();
-        self.chan_b.tx_req.next = self.main.req_b.val() | self.txbuf.req_b.val();
-        self.chan_b.tx_abort.next = self.main.abort_b.val();
-        self.chan_b.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
-        self.chan_b.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
-        self.chan_b.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
-        self.chan_b.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
-        self.chan_b.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        self.chan_b.tx_req.next =
+            self.main.req_b.val() | self.txbuf.req_b.val() | self.dmr_ctl.tx_req_rcl.val();
+        self.chan_b.tx_abort.next = self.main.abort_b.val() | self.dmr_ctl.tx_abort_rcl.val();
+        if self.dmr_ctl.cs_req_rcl.val() {
+            // the CS frame of the line: base format, DLC 0, data frame (§7)
+            self.chan_b.tx_rtr.next = false;
+            self.chan_b.tx_ide.next = false;
+            self.chan_b.tx_id.next = bit_cast::<29, 11>(self.dmr_regs.cs_id_rcl.val());
+            self.chan_b.tx_dlc.next = 0.into();
+            self.chan_b.tx_data.next = 0.into();
+        } else {
+            self.chan_b.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
+            self.chan_b.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+            self.chan_b.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+            self.chan_b.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
+            self.chan_b.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        }
         self.chan_a_tx.next = self.chan_a.tx.val();
         self.chan_b_tx.next = self.chan_b.tx.val();
 
@@ -424,6 +553,13 @@ impl Logic for Drcc {
         self.chan_b_rec.next = self.chan_b.rec.val();
         self.chan_a_err_state.next = self.chan_a.err_state.val();
         self.chan_b_err_state.next = self.chan_b.err_state.val();
+        self.dmr_state.next = self.dmr_ctl.dmr_state.val();
+        self.acl.next = self.dmr_ctl.acl.val();
+        self.dcl_tx_fault.next = self.dmr_ctl.dcl_tx_fault.val();
+        self.dcl_rx_fault.next = self.dmr_ctl.dcl_rx_fault.val();
+        self.rcl_tx_fault.next = self.dmr_ctl.rcl_tx_fault.val();
+        self.rcl_rx_fault.next = self.dmr_ctl.rcl_rx_fault.val();
+        self.dmr_tick.next = self.dmr_ctl.dmr_tick.val();
     }
 }
 

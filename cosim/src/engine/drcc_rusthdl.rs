@@ -102,9 +102,13 @@ impl DrccEngine for DrccRustHdlEngine {
                 chan_b_rec: u.chan_b_rec.val().to_u64() as u8,
                 chan_a_err_state: u.chan_a_err_state.val().to_u64() as u8,
                 chan_b_err_state: u.chan_b_err_state.val().to_u64() as u8,
-                // the DMR probes (dmr_contract.md §9) are not RTL ports yet: the
-                // values of a DRCC outside DMR mode
-                ..DrccProbes::default()
+                dmr_state: u.dmr_state.val().to_u64() as u8,
+                acl: b(&u.acl),
+                dcl_tx_fault: b(&u.dcl_tx_fault),
+                dcl_rx_fault: b(&u.dcl_rx_fault),
+                rcl_tx_fault: b(&u.rcl_tx_fault),
+                rcl_rx_fault: b(&u.rcl_rx_fault),
+                dmr_tick: b(&u.dmr_tick),
             },
         }
     }

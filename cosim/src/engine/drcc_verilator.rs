@@ -99,14 +99,13 @@ fn decode(o: &DrccOut) -> DrccOutputs {
             chan_b_rec: o.chan_b_rec,
             chan_a_err_state: o.chan_a_err_state,
             chan_b_err_state: o.chan_b_err_state,
-            // TODO(lead): wire the DMR probes (dmr_contract.md §9) from the RTL ports.
-            dmr_state: 0,
-            acl: false,
-            dcl_tx_fault: false,
-            dcl_rx_fault: false,
-            rcl_tx_fault: false,
-            rcl_rx_fault: false,
-            dmr_tick: false,
+            dmr_state: o.dmr_state,
+            acl: o.acl != 0,
+            dcl_tx_fault: o.dcl_tx_fault != 0,
+            dcl_rx_fault: o.dcl_rx_fault != 0,
+            rcl_tx_fault: o.rcl_tx_fault != 0,
+            rcl_rx_fault: o.rcl_rx_fault != 0,
+            dmr_tick: o.dmr_tick != 0,
         },
     }
 }

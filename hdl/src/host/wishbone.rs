@@ -437,8 +437,9 @@ impl Logic for WbRegs {
         self.push.next = false;
         self.pop.next = false;
 
-        // target queue of a push: A in redundancy mode, else TX_CTRL.queue
-        if self.tx_queue_q.q.val() & !self.ctrl.redundancy.val() {
+        // target queue of a push: A in redundancy and DMR modes (one logical
+        // queue), else TX_CTRL.queue
+        if self.tx_queue_q.q.val() & !self.ctrl.redundancy.val() & !self.ctrl.dmr.val() {
             self.target_count.next = self.txq_b.val();
         } else {
             self.target_count.next = self.txq_a.val();
@@ -566,7 +567,8 @@ impl Logic for WbRegs {
             .val()
             .get_bits::<16>(self.r_stall.val().index());
         self.window.next = self.window_q.q.val();
-        self.push_q.next = self.tx_queue_q.q.val() & !self.ctrl.redundancy.val();
+        self.push_q.next =
+            self.tx_queue_q.q.val() & !self.ctrl.redundancy.val() & !self.ctrl.dmr.val();
         self.tx_frame.next = (bit_cast::<99, 31>(self.tx_id_q.q.val()) << 68)
             | (bit_cast::<99, 4>(self.tx_dlc_q.q.val()) << 64)
             | bit_cast::<99, 64>(self.tx_data64.val());

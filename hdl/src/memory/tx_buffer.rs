@@ -17,7 +17,15 @@
 //! a channel takes `tx_*` only at an edge where its `tx_req` is high, and the
 //! request of the next edge needs the queue non-empty before this one (normal
 //! mode: `count_c != 0`; redundancy mode: the main FSM requests only in `wait1`
-//! / `wait3`, which hold the frame being sent in queue A until its pop).
+//! / `wait3`, which hold the frame being sent in queue A until its pop; DMR
+//! mode: a line requests only while its offset is below `count`, so its entry
+//! is never the one a push writes).
+//!
+//! DMR mode (dmr_contract.md §5): queue A is the one logical queue, read at
+//! `head_a + off[rd_sel]` for the line the read port serves (`rd_sel` toggles
+//! as in normal mode); the line logic lives in the DMR control
+//! (`crate::dmr`), which pops the entries both lines have sent (`dmr_pop`,
+//! any number at one edge).
 
 use super::bram::Bram;
 use rust_hdl::prelude::*;
@@ -29,6 +37,15 @@ pub struct TxBuffer {
     pub clk: Signal<In, Clock>,
     pub clear: Signal<In, Bit>,
     pub redundancy: Signal<In, Bit>,
+    // DMR mode: the lines' read offsets and the entries they left behind
+    /// `CTRL.dmr`: queue A is read at `head_a + off[rd_sel]`, popped by `dmr_pop`.
+    pub dmr: Signal<In, Bit>,
+    /// DMR: the DCL's offset `off[0]` (0..8), a register of the DMR control.
+    pub off_dcl: Signal<In, Bits<4>>,
+    /// DMR: the RCL's offset `off[1]` (0..8).
+    pub off_rcl: Signal<In, Bits<4>>,
+    /// DMR: entries of queue A both lines have sent, popped at this edge.
+    pub dmr_pop: Signal<In, Bits<4>>,
     // push (already accepted by the register block) and the staged frame
     pub push: Signal<In, Bit>,
     pub push_q: Signal<In, Bit>,
@@ -44,6 +61,8 @@ pub struct TxBuffer {
     pub count_a: Signal<Out, Bits<4>>,
     pub count_b: Signal<Out, Bits<4>>,
     pub rd_frame: Signal<Out, Bits<99>>,
+    /// The line (queue in normal mode) the read port serves before this edge.
+    pub rd_sel_o: Signal<Out, Bit>,
     pub req_a: Signal<Out, Bit>,
     pub req_b: Signal<Out, Bit>,
     pub done_evt: Signal<Out, Bit>,
@@ -60,6 +79,8 @@ pub struct TxBuffer {
     busy_a: DFF<Bit>,
     busy_b: DFF<Bit>,
     pop_a: Signal<Local, Bit>,
+    pop_n: Signal<Local, Bits<4>>,
+    dmr_off: Signal<Local, Bits<4>>,
     pop_b: Signal<Local, Bit>,
     push_a: Signal<Local, Bit>,
     push_b: Signal<Local, Bit>,
@@ -77,6 +98,10 @@ impl Default for TxBuffer {
             clk: Default::default(),
             clear: Default::default(),
             redundancy: Default::default(),
+            dmr: Default::default(),
+            off_dcl: Default::default(),
+            off_rcl: Default::default(),
+            dmr_pop: Default::default(),
             push: Default::default(),
             push_q: Default::default(),
             push_frame: Default::default(),
@@ -88,6 +113,7 @@ impl Default for TxBuffer {
             count_a: Default::default(),
             count_b: Default::default(),
             rd_frame: Default::default(),
+            rd_sel_o: Default::default(),
             req_a: Default::default(),
             req_b: Default::default(),
             done_evt: Default::default(),
@@ -103,6 +129,8 @@ impl Default for TxBuffer {
             busy_a: Default::default(),
             busy_b: Default::default(),
             pop_a: Default::default(),
+            pop_n: Default::default(),
+            dmr_off: Default::default(),
             pop_b: Default::default(),
             push_a: Default::default(),
             push_b: Default::default(),
@@ -128,7 +156,11 @@ impl Logic for TxBuffer {
         // pops: redundancy mode by the main FSM, normal mode at each channel
         // tx_done / tx_failed
         // (never below empty)
-        if self.redundancy.val() {
+        if self.dmr.val() {
+            // the DMR control pops what both lines sent (`pop_n` below)
+            self.pop_a.next = false;
+            self.pop_b.next = false;
+        } else if self.redundancy.val() {
             self.pop_a.next = self.pop_red.val() & (self.cnt_a.q.val() != self.zero4.val());
             self.pop_b.next = false;
         } else {
@@ -136,6 +168,16 @@ impl Logic for TxBuffer {
                 & (self.cnt_a.q.val() != self.zero4.val());
             self.pop_b.next = (self.done_b.val() | self.failed_b.val())
                 & (self.cnt_b.q.val() != self.zero4.val());
+        }
+        // entries queue A frees at this edge (never below empty)
+        if self.dmr.val() {
+            if self.dmr_pop.val() > self.cnt_a.q.val() {
+                self.pop_n.next = self.cnt_a.q.val();
+            } else {
+                self.pop_n.next = self.dmr_pop.val();
+            }
+        } else {
+            self.pop_n.next = bit_cast::<4, 1>(self.pop_a.val().into());
         }
         self.push_a.next = self.push.val() & !self.push_q.val();
         self.push_b.next = self.push.val() & self.push_q.val();
@@ -157,7 +199,15 @@ impl Logic for TxBuffer {
         } else {
             self.rd_slot.next = self.head_a.q.val();
         }
-        if self.redundancy.val() {
+        if self.rd_sel.q.val() {
+            self.dmr_off.next = self.off_rcl.val();
+        } else {
+            self.dmr_off.next = self.off_dcl.val();
+        }
+        if self.dmr.val() {
+            self.ram.read_address.next =
+                bit_cast::<4, 3>(self.head_a.q.val() + self.dmr_off.val().get_bits::<3>(0));
+        } else if self.redundancy.val() {
             self.ram.read_address.next = bit_cast::<4, 3>(self.head_a.q.val());
         } else {
             self.ram.read_address.next = (bit_cast::<4, 1>(self.rd_sel.q.val().into()) << 3)
@@ -168,17 +218,13 @@ impl Logic for TxBuffer {
         // queue pointers
         self.head_a.d.next = self.head_a.q.val();
         self.head_b.d.next = self.head_b.q.val();
-        if self.pop_a.val() {
-            self.head_a.d.next = self.head_a.q.val() + self.one3.val();
-        }
+        self.head_a.d.next = self.head_a.q.val() + self.pop_n.val().get_bits::<3>(0);
         if self.pop_b.val() {
             self.head_b.d.next = self.head_b.q.val() + self.one3.val();
         }
-        self.cnt_a.d.next = self.cnt_a.q.val();
-        if self.push_a.val() & !self.pop_a.val() {
-            self.cnt_a.d.next = self.cnt_a.q.val() + self.one4.val();
-        } else if !self.push_a.val() & self.pop_a.val() {
-            self.cnt_a.d.next = self.cnt_a.q.val() - self.one4.val();
+        self.cnt_a.d.next = self.cnt_a.q.val() - self.pop_n.val();
+        if self.push_a.val() {
+            self.cnt_a.d.next = self.cnt_a.q.val() - self.pop_n.val() + self.one4.val();
         }
         self.cnt_b.d.next = self.cnt_b.q.val();
         if self.push_b.val() & !self.pop_b.val() {
@@ -188,27 +234,33 @@ impl Logic for TxBuffer {
         }
 
         // normal mode: req_c <= (rd_sel == c) && count_c > 0 && !busy_c && !req_c
+        // the read port alternates between the queues (normal mode) or the
+        // lines (DMR mode, whose requests are the DMR control's)
         self.rd_sel.d.next = !self.rd_sel.q.val() & !self.redundancy.val();
         self.req_a_q.d.next = !self.redundancy.val()
+            & !self.dmr.val()
             & !self.rd_sel.q.val()
             & (self.cnt_a.q.val() != self.zero4.val())
             & !self.busy_a.q.val()
             & !self.req_a_q.q.val();
         self.req_b_q.d.next = !self.redundancy.val()
+            & !self.dmr.val()
             & self.rd_sel.q.val()
             & (self.cnt_b.q.val() != self.zero4.val())
             & !self.busy_b.q.val()
             & !self.req_b_q.q.val();
         self.busy_a.d.next = self.busy_a.q.val() | self.req_a_q.d.val();
         self.busy_b.d.next = self.busy_b.q.val() | self.req_b_q.d.val();
-        if !self.redundancy.val() & (self.done_a.val() | self.failed_a.val()) {
+        if self.dmr.val() | (!self.redundancy.val() & (self.done_a.val() | self.failed_a.val())) {
             self.busy_a.d.next = false;
         }
-        if !self.redundancy.val() & (self.done_b.val() | self.failed_b.val()) {
+        if self.dmr.val() | (!self.redundancy.val() & (self.done_b.val() | self.failed_b.val())) {
             self.busy_b.d.next = false;
         }
-        self.done_evt.next = !self.redundancy.val() & (self.done_a.val() | self.done_b.val());
-        self.failed_evt.next = !self.redundancy.val() & (self.failed_a.val() | self.failed_b.val());
+        self.done_evt.next =
+            !self.redundancy.val() & !self.dmr.val() & (self.done_a.val() | self.done_b.val());
+        self.failed_evt.next =
+            !self.redundancy.val() & !self.dmr.val() & (self.failed_a.val() | self.failed_b.val());
 
         if self.clear.val() {
             self.head_a.d.next = self.zero3.val();
@@ -227,6 +279,7 @@ impl Logic for TxBuffer {
         self.count_b.next = self.cnt_b.q.val();
         self.req_a.next = self.req_a_q.q.val();
         self.req_b.next = self.req_b_q.q.val();
+        self.rd_sel_o.next = self.rd_sel.q.val();
     }
 }
 

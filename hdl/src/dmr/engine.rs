@@ -134,7 +134,10 @@ pub struct DmrEngine {
     mbx: MailboxState,
     // ---- internals ----
     mb: Signal<Local, Bits<4>>,
-    mb_lim: Signal<Local, Bits<7>>,
+    mb_c: Signal<Local, Bits<7>>,
+    mb_t: Signal<Local, Bits<8>>,
+    win_c: Signal<Local, Bits<7>>,
+    win_t: Signal<Local, Bits<8>>,
     en: Signal<Local, Bit>,
     limit: Signal<Local, Bits<8>>,
     c: Signal<Local, Bits<8>>,
@@ -201,17 +204,35 @@ impl Logic for DmrEngine {
             self.mb.next = self.e_i.q.val();
         }
         self.mbx.sel.next = self.mb.val();
-        self.mbx.win_sel.next = self.mb_sel.val();
-        self.mb_state_word.next = self.mbx.win_word.val();
-        self.c.next = self.mbx.counter.val();
-        self.t.next = self.mbx.timer.val();
-        self.mb_lim.next = bit_cast::<7, 4>(self.mb.val()) << 3;
-        self.en.next = self.mb_enable.val().get_bit(self.mb.val().index());
-        self.limit.next = bit_cast::<8, 7>(
-            self.mb_limits
+        self.mb_c.next = bit_cast::<7, 4>(self.mb.val()) << 3;
+        self.mb_t.next = bit_cast::<8, 4>(self.mb.val()) << 4;
+        self.c.next = self
+            .mbx
+            .counters
+            .val()
+            .get_bits::<8>(self.mb_c.val().index());
+        self.t.next = self
+            .mbx
+            .timers
+            .val()
+            .get_bits::<16>(self.mb_t.val().index());
+        // The host window (`MB_STATE`), live.
+        self.win_c.next = bit_cast::<7, 4>(self.mb_sel.val()) << 3;
+        self.win_t.next = bit_cast::<8, 4>(self.mb_sel.val()) << 4;
+        self.mb_state_word.next = bit_cast::<32, 8>(
+            self.mbx
+                .counters
                 .val()
-                .get_bits::<7>(self.mb_lim.val().index()),
-        );
+                .get_bits::<8>(self.win_c.val().index()),
+        ) | (bit_cast::<32, 16>(
+            self.mbx
+                .timers
+                .val()
+                .get_bits::<16>(self.win_t.val().index()),
+        ) << 16);
+        self.en.next = self.mb_enable.val().get_bit(self.mb.val().index());
+        self.limit.next =
+            bit_cast::<8, 7>(self.mb_limits.val().get_bits::<7>(self.mb_c.val().index()));
         // The identifier memory: mailbox e_i + 1 is read while scanning or
         // evaluating (the data of e_i is there now), mailbox 0 in IDLE.
         if (self.state.q.val() == self.s_scan.val()) | (self.state.q.val() == self.s_eval.val()) {

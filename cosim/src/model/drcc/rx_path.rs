@@ -63,7 +63,8 @@ pub struct HistEntry {
 /// The RX FIFO, the writer FSM and the dedup history.
 #[derive(Clone, Debug, Default)]
 pub struct RxPath {
-    ram: [(Frame, u8); 32],
+    /// RX RAM: frame and channel (public for the block-level lock-step test).
+    pub ram: [(Frame, u8); 32],
     pub head: u8,
     pub count: u8,
     /// RAM read data register (the RX_* registers).

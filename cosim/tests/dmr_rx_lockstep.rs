@@ -143,6 +143,8 @@ struct Coverage {
     acl_switches: u64,
     rscans: u64,
     rscan_empty: u64,
+    /// A release candidate as old as the one already chosen (the first stays).
+    release_ties: u64,
     releases: u64,
     release_overruns: u64,
     hist_recorded_pcl: u64,
@@ -392,6 +394,15 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
             if pre.w_state == W_RSCAN && m.w_state == W_IDLE {
                 cov.rscan_empty += 1;
             }
+            if pre.w_state == W_RSCAN && pre.scan_i >= 1 && pre.rel_found {
+                let e = pre.scan_i as usize - 1;
+                let h = pre.hist[e];
+                let age = pre.now.wrapping_sub(h.ts);
+                let free = (pre.hv & !pre.hu & !pre.hd) >> e & 1 != 0;
+                if free && h.ch == acl && age <= run.window && age == pre.rel_age {
+                    cov.release_ties += 1;
+                }
+            }
             if pre.w_state == W_RSCAN && m.w_state == W_FETCH {
                 assert!(pre.scan_i == 32);
             }
@@ -441,6 +452,7 @@ fn assert_dmr_coverage(cov: &Coverage) {
         ("ACL switches", c.acl_switches),
         ("release scans", c.rscans),
         ("release scans without a candidate", c.rscan_empty),
+        ("release candidates of equal age", c.release_ties),
         ("releases", c.releases),
         ("release overruns", c.release_overruns),
         ("reset mode episodes", c.resets),

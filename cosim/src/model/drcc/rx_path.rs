@@ -77,7 +77,8 @@ pub struct RxPath {
     pub scan_i: u8,
     pub hit: bool,
     pub hit_e: u8,
-    hist: [HistEntry; HIST],
+    /// History RAM (public for the block-level lock-step test).
+    pub hist: [HistEntry; HIST],
     /// History RAM read data register.
     hist_rd: HistEntry,
     pub hv: u32,

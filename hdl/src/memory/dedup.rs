@@ -1,6 +1,6 @@
 //! Receive writer and duplicate removal (DRCC contract §7). Each channel's
 //! `rx_valid` pulse sets `rxp_a` / `rxp_b`; the writer FSM (`w_state`: idle 0,
-//! scan 1, decide 2, write 3) takes A before B, and in redundancy mode with a
+//! scan 1, decide 2, write 3; DMR: rscan 4, fetch 5, release 6) takes A before B, and in redundancy mode with a
 //! non-zero window scans the 32-entry history (a synchronous RAM of 32 x 116 bits:
 //! [115:17] frame, [16] channel, [15:0] timestamp `now`; stored as two RAMs, see
 //! below) for an identical frame
@@ -33,10 +33,24 @@
 //! `hv` / `hu` are rotated right by one at every `scan` edge with `scan_i >= 1`,
 //! so the entry being judged is always bit 0 (no 32-way index multiplexer, no
 //! decoder of `scan_i`); the 32 rotations of a scan bring them back into place
-//! before `decide` and `write` use them. One decoder serves `decide` (`hit_e`)
-//! and `write` (the recorded slot).
+//! before `decide` and `write` use them. One decoder serves `decide` (`hit_e`),
+//! `write` (the recorded slot) and `release` (`rel_e`).
+//!
+//! DMR mode (DMR contract §8, `dmr` = 1): the ACL rule replaces first-copy-wins.
+//! `decide` delivers a frame of the ACL (`sel == acl`) and records one of the
+//! passive line (PCL) undelivered (`hd` = 0); a PCL frame waits for its ACL copy,
+//! which then delivers it (no second history entry). At an ACL switch
+//! (`release_set`) `release` is set, and every free idle edge runs a release scan
+//! (`rscan`, 33 clocks as `scan`, with the same expiry and rotations; `hd` rotates
+//! with `hv` / `hu`): the oldest waiting frame of the new ACL (`release_scan.rs`)
+//! is read back (`fetch`, history address `rel_e`) and written to the FIFO with
+//! channel `acl` (`release`). A scan that finds none ends the release. The
+//! history read in `release` was loaded at the `fetch` edge, where nothing is
+//! written. Outside DMR mode nothing here differs from §7.
 
 use super::bram::Bram;
+use super::dmr_rx_stats::DmrRxStats;
+use super::release_scan::ReleaseScan;
 use rust_hdl::prelude::*;
 
 /// Receive writer with the duplicate-removal history.
@@ -65,11 +79,27 @@ pub struct RxWriter {
     pub overrun_evt: Signal<Out, Bit>,
     pub duplicates: Signal<Out, Bits<16>>,
     pub overruns: Signal<Out, Bits<16>>,
+    // ---- DMR mode (DMR contract §8) ----
+    /// `CTRL.dmr`: the ACL rule instead of first-copy-wins.
+    pub dmr: Signal<In, Bit>,
+    /// The ACL register before the edge (0 DCL = channel A, 1 RCL = channel B).
+    pub acl: Signal<In, Bit>,
+    /// An ACL switch at this edge: the waiting frames of the new ACL are released.
+    pub release_set: Signal<In, Bit>,
+    /// `DMR_RX_STATS[15:0]`: frames taken from the passive line (saturating).
+    pub pcl_frames: Signal<Out, Bits<16>>,
+    /// `DMR_RX_STATS[23:16]`: waiting frames released (saturating).
+    pub released: Signal<Out, Bits<8>>,
+    /// `DMR_RX_STATS[31:24]`: undelivered, unmatched entries expired (saturating).
+    pub expired: Signal<Out, Bits<8>>,
     // history
     hist: Bram<Bits<100>, 5>,
     hist_ts: Bram<Bits<16>, 5>,
-    // registers
-    w_state: DFF<Bits<2>>,
+    rel: ReleaseScan,
+    stats: DmrRxStats,
+    // registers (the state and the history flags are public for lock-step probes)
+    /// Writer FSM state (idle 0, scan 1, decide 2, write 3, rscan 4, fetch 5, release 6).
+    pub w_state: DFF<Bits<3>>,
     rxp_a: DFF<Bit>,
     rxp_b: DFF<Bit>,
     sel: DFF<Bit>,
@@ -81,8 +111,18 @@ pub struct RxWriter {
     hist_ptr: DFF<Bits<5>>,
     exp_q: DFF<Bit>,
     hist_idle: DFF<Bits<15>>,
-    hv: DFF<Bits<32>>,
-    hu: DFF<Bits<32>>,
+    /// History entry valid (rotated right by one at every judging scan edge).
+    pub hv: DFF<Bits<32>>,
+    /// History entry used: it cancelled a copy (rotated as `hv`).
+    pub hu: DFF<Bits<32>>,
+    /// DMR: history entry delivered to the FIFO (rotated as `hv`).
+    pub hd: DFF<Bits<32>>,
+    /// DMR: an ACL switch left frames to release.
+    pub release: DFF<Bit>,
+    /// DMR: the frame in `decide` came from the passive line.
+    w_pcl: DFF<Bit>,
+    /// DMR: `hd` of the hit entry, taken with `hit`.
+    hit_hd: DFF<Bit>,
     dups_q: DFF<Bits<16>>,
     overruns_q: DFF<Bits<16>>,
     // judgement of the history entry being read
@@ -94,6 +134,7 @@ pub struct RxWriter {
     e_frame: Signal<Local, Bits<99>>,
     e_hv: Signal<Local, Bit>,
     e_hu: Signal<Local, Bit>,
+    e_hd: Signal<Local, Bit>,
     e_expired: Signal<Local, Bit>,
     e_gt: Signal<Local, Bit>,
     e_ge: Signal<Local, Bit>,
@@ -103,11 +144,19 @@ pub struct RxWriter {
     mask: Signal<Local, Bits<32>>,
     fifo_full: Signal<Local, Bit>,
     hv_base: Signal<Local, Bits<32>>,
+    in_scan: Signal<Local, Bit>,
+    judging: Signal<Local, Bit>,
+    pcl: Signal<Local, Bit>,
+    w_fifo: Signal<Local, Bit>,
+    w_hist: Signal<Local, Bit>,
     // constants
-    s_idle: Constant<Bits<2>>,
-    s_scan: Constant<Bits<2>>,
-    s_decide: Constant<Bits<2>>,
-    s_write: Constant<Bits<2>>,
+    s_idle: Constant<Bits<3>>,
+    s_scan: Constant<Bits<3>>,
+    s_decide: Constant<Bits<3>>,
+    s_write: Constant<Bits<3>>,
+    s_rscan: Constant<Bits<3>>,
+    s_fetch: Constant<Bits<3>>,
+    s_release: Constant<Bits<3>>,
     zero5: Constant<Bits<5>>,
     one5: Constant<Bits<5>>,
     zero6: Constant<Bits<6>>,
@@ -145,8 +194,16 @@ impl Default for RxWriter {
             overrun_evt: Default::default(),
             duplicates: Default::default(),
             overruns: Default::default(),
+            dmr: Default::default(),
+            acl: Default::default(),
+            release_set: Default::default(),
+            pcl_frames: Default::default(),
+            released: Default::default(),
+            expired: Default::default(),
             hist: Default::default(),
             hist_ts: Default::default(),
+            rel: Default::default(),
+            stats: Default::default(),
             w_state: Default::default(),
             rxp_a: Default::default(),
             rxp_b: Default::default(),
@@ -161,6 +218,10 @@ impl Default for RxWriter {
             hist_idle: Default::default(),
             hv: Default::default(),
             hu: Default::default(),
+            hd: Default::default(),
+            release: Default::default(),
+            w_pcl: Default::default(),
+            hit_hd: Default::default(),
             dups_q: Default::default(),
             overruns_q: Default::default(),
             frame_sel: Default::default(),
@@ -171,6 +232,7 @@ impl Default for RxWriter {
             e_frame: Default::default(),
             e_hv: Default::default(),
             e_hu: Default::default(),
+            e_hd: Default::default(),
             e_expired: Default::default(),
             e_gt: Default::default(),
             e_ge: Default::default(),
@@ -180,10 +242,18 @@ impl Default for RxWriter {
             mask: Default::default(),
             fifo_full: Default::default(),
             hv_base: Default::default(),
+            in_scan: Default::default(),
+            judging: Default::default(),
+            pcl: Default::default(),
+            w_fifo: Default::default(),
+            w_hist: Default::default(),
             s_idle: Constant::new(0.into()),
             s_scan: Constant::new(1.into()),
             s_decide: Constant::new(2.into()),
             s_write: Constant::new(3.into()),
+            s_rscan: Constant::new(4.into()),
+            s_fetch: Constant::new(5.into()),
+            s_release: Constant::new(6.into()),
             zero5: Constant::new(0.into()),
             one5: Constant::new(1.into()),
             zero6: Constant::new(0.into()),
@@ -207,12 +277,16 @@ impl Logic for RxWriter {
     fn update(&mut self) {
         dff_setup!(
             self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, free_found, free_e,
-            hist_ptr, exp_q, hist_idle, hv, hu, dups_q, overruns_q
+            hist_ptr, exp_q, hist_idle, hv, hu, hd, release, w_pcl, hit_hd, dups_q, overruns_q
         );
         self.hist.clk.next = self.clk.val();
         self.hist.read_enable.next = true;
         self.hist_ts.clk.next = self.clk.val();
         self.hist_ts.read_enable.next = true;
+        self.rel.clk.next = self.clk.val();
+        self.rel.clear.next = self.clear.val();
+        self.stats.clk.next = self.clk.val();
+        self.stats.rst.next = self.rst.val();
 
         // the frame being processed, and the history entry being read
         if self.sel.q.val() {
@@ -227,9 +301,12 @@ impl Logic for RxWriter {
         } else {
             self.slot.next = self.hist_ptr.q.val();
         }
-        // one decoder: the hit entry in decide, the recorded slot in write
+        // one decoder: the hit entry in decide, the released entry in release,
+        // the recorded slot in write
         if self.w_state.q.val() == self.s_decide.val() {
             self.mask_e.next = self.hit_e.q.val();
+        } else if self.w_state.q.val() == self.s_release.val() {
+            self.mask_e.next = self.rel.rel_e.val();
         } else {
             self.mask_e.next = self.slot.val();
         }
@@ -251,16 +328,31 @@ impl Logic for RxWriter {
         // in scan, entry scan_e has been rotated into bit 0
         self.e_hv.next = self.hv.q.val().get_bit(0);
         self.e_hu.next = self.hu.q.val().get_bit(0);
+        self.e_hd.next = self.hd.q.val().get_bit(0);
         self.e_expired.next = self.exp_q.q.val();
         self.fifo_full.next = self.fifo_count.val() == self.full6.val();
+        // both scans judge one entry per edge with scan_i >= 1
+        self.in_scan.next = (self.w_state.q.val() == self.s_scan.val())
+            | (self.w_state.q.val() == self.s_rscan.val());
+        self.judging.next = self.in_scan.val() & (self.scan_i.q.val() != self.zero6.val());
+        // §8: the frame in decide came from the passive line
+        self.pcl.next = self.sel.q.val() != self.acl.val();
+        // write: to the FIFO unless a PCL frame (it waits); to the history unless
+        // it was the ACL copy of a waiting frame (hit)
+        self.w_fifo.next = !(self.dmr.val() & self.w_pcl.q.val());
+        self.w_hist.next = self.dedup_on.val() & !self.hit.q.val();
 
-        self.hist.read_address.next = self.scan_i.q.val().get_bits::<5>(0);
+        if self.w_state.q.val() == self.s_fetch.val() {
+            self.hist.read_address.next = self.rel.rel_e.val();
+        } else {
+            self.hist.read_address.next = self.scan_i.q.val().get_bits::<5>(0);
+        }
         self.hist.write_enable.next = false;
         self.hist.write_address.next = self.slot.val();
         self.hist.write_data.next = (bit_cast::<100, 99>(self.frame_sel.val()) << 1)
             | bit_cast::<100, 1>(self.sel.q.val().into());
         // one entry ahead of `hist` (module doc)
-        if self.w_state.q.val() == self.s_scan.val() {
+        if self.in_scan.val() {
             self.hist_ts.read_address.next = self.scan_i.q.val().get_bits::<5>(0) + self.one5.val();
         } else {
             self.hist_ts.read_address.next = self.zero5.val();
@@ -269,10 +361,37 @@ impl Logic for RxWriter {
         self.hist_ts.write_address.next = self.slot.val();
         self.hist_ts.write_data.next = self.now.val();
         self.fifo_wr.next = false;
-        self.fifo_data.next = (bit_cast::<100, 1>(self.sel.q.val().into()) << 99)
-            | bit_cast::<100, 99>(self.frame_sel.val());
+        if self.w_state.q.val() == self.s_release.val() {
+            // §8: a released frame goes to the FIFO with channel acl
+            self.fifo_data.next = (bit_cast::<100, 1>(self.acl.val().into()) << 99)
+                | bit_cast::<100, 99>(self.e_frame.val());
+        } else {
+            self.fifo_data.next = (bit_cast::<100, 1>(self.sel.q.val().into()) << 99)
+                | bit_cast::<100, 99>(self.frame_sel.val());
+        }
         self.rx_evt.next = false;
         self.overrun_evt.next = false;
+        // release scan: a candidate is a waiting frame of the ACL (§8)
+        self.rel.start.next = false;
+        self.rel.cand.next = (self.w_state.q.val() == self.s_rscan.val())
+            & self.judging.val()
+            & self.e_hv.val()
+            & !self.e_expired.val()
+            & !self.e_hu.val()
+            & !self.e_hd.val()
+            & (self.e_ch.val() == self.acl.val());
+        self.rel.scan_e.next = self.scan_e.val();
+        self.rel.next_age.next = self.e_age.val();
+        self.rel.tick.next = self.tick.val();
+        self.stats.pcl_inc.next = false;
+        self.stats.released_inc.next = false;
+        // §8: an undelivered, unmatched entry that expires in either scan
+        self.stats.expired_inc.next = self.dmr.val()
+            & self.judging.val()
+            & self.e_hv.val()
+            & self.e_expired.val()
+            & !self.e_hu.val()
+            & !self.e_hd.val();
 
         // defaults
         self.w_state.d.next = self.w_state.q.val();
@@ -282,10 +401,14 @@ impl Logic for RxWriter {
         self.scan_i.d.next = self.scan_i.q.val();
         self.hit.d.next = self.hit.q.val();
         self.hit_e.d.next = self.hit_e.q.val();
+        self.hit_hd.d.next = self.hit_hd.q.val();
         self.free_found.d.next = self.free_found.q.val();
         self.free_e.d.next = self.free_e.q.val();
         self.hist_ptr.d.next = self.hist_ptr.q.val();
         self.hu.d.next = self.hu.q.val();
+        self.hd.d.next = self.hd.q.val();
+        self.release.d.next = self.release.q.val();
+        self.w_pcl.d.next = self.w_pcl.q.val();
         self.dups_q.d.next = self.dups_q.q.val();
         self.overruns_q.d.next = self.overruns_q.q.val();
         self.hist_idle.d.next = self.hist_idle.q.val();
@@ -303,6 +426,16 @@ impl Logic for RxWriter {
         self.e_keep.next = self.hv_base.val().get_bit(0) & !self.e_expired.val();
         self.hv.d.next = self.hv_base.val();
 
+        if self.judging.val() {
+            // rotate right: entry scan_e (bit 0) goes to bit 31, expired
+            // entries leave hv
+            self.hv.d.next = (self.hv_base.val() >> self.one32.val())
+                | (bit_cast::<32, 1>(self.e_keep.val().into()) << 31);
+            self.hu.d.next = (self.hu.q.val() >> self.one32.val())
+                | (bit_cast::<32, 1>(self.hu.q.val().get_bit(0).into()) << 31);
+            self.hd.d.next = (self.hd.q.val() >> self.one32.val())
+                | (bit_cast::<32, 1>(self.hd.q.val().get_bit(0).into()) << 31);
+        }
         if self.w_state.q.val() == self.s_idle.val() {
             if self.rxp_a.q.val() | self.rxp_b.q.val() {
                 if self.rxp_a.q.val() {
@@ -318,52 +451,107 @@ impl Logic for RxWriter {
                 self.free_found.d.next = false;
                 if self.dedup_on.val() {
                     self.w_state.d.next = self.s_scan.val();
+                } else if self.dmr.val() {
+                    self.w_state.d.next = self.s_decide.val();
                 } else {
                     self.w_state.d.next = self.s_write.val();
                 }
+            } else if self.dmr.val() & self.release.q.val() & self.dedup_on.val() {
+                // §8: a free idle edge looks for the next frame to release
+                self.w_state.d.next = self.s_rscan.val();
+                self.scan_i.d.next = self.zero6.val();
+                self.rel.start.next = true;
             }
-        } else if self.w_state.q.val() == self.s_scan.val() {
-            if self.scan_i.q.val() != self.zero6.val() {
-                if (!self.e_hv.val() | self.e_hu.val() | self.e_expired.val())
-                    & !self.free_found.q.val()
-                {
-                    self.free_found.d.next = true;
-                    self.free_e.d.next = self.scan_e.val();
-                }
-                // rotate right: entry scan_e (bit 0) goes to bit 31, expired
-                // entries leave hv
-                self.hv.d.next = (self.hv_base.val() >> self.one32.val())
-                    | (bit_cast::<32, 1>(self.e_keep.val().into()) << 31);
-                self.hu.d.next = (self.hu.q.val() >> self.one32.val())
-                    | (bit_cast::<32, 1>(self.hu.q.val().get_bit(0).into()) << 31);
-                if self.e_hv.val()
-                    & !self.e_expired.val()
-                    & !self.e_hu.val()
-                    & (self.e_ch.val() != self.sel.q.val())
-                    & (self.e_frame.val() == self.frame_sel.val())
-                    & !self.hit.q.val()
-                {
-                    self.hit.d.next = true;
-                    self.hit_e.d.next = self.scan_e.val();
-                }
+        } else if self.in_scan.val() {
+            if self.judging.val()
+                & (self.w_state.q.val() == self.s_scan.val())
+                & (!self.e_hv.val() | self.e_hu.val() | self.e_expired.val())
+                & !self.free_found.q.val()
+            {
+                self.free_found.d.next = true;
+                self.free_e.d.next = self.scan_e.val();
+            }
+            if self.judging.val()
+                & (self.w_state.q.val() == self.s_scan.val())
+                & self.e_hv.val()
+                & !self.e_expired.val()
+                & !self.e_hu.val()
+                & (self.e_ch.val() != self.sel.q.val())
+                & (self.e_frame.val() == self.frame_sel.val())
+                & !self.hit.q.val()
+            {
+                self.hit.d.next = true;
+                self.hit_e.d.next = self.scan_e.val();
+                self.hit_hd.d.next = self.e_hd.val();
             }
             self.scan_i.d.next = self.scan_i.q.val() + self.one6.val();
             if self.scan_i.q.val() == self.last_scan.val() {
-                self.w_state.d.next = self.s_decide.val();
+                if self.w_state.q.val() == self.s_scan.val() {
+                    self.w_state.d.next = self.s_decide.val();
+                } else if self.rel.found.val() {
+                    // entry 31, judged at this edge, counts
+                    self.w_state.d.next = self.s_fetch.val();
+                } else {
+                    self.release.d.next = false;
+                    self.w_state.d.next = self.s_idle.val();
+                }
             }
         } else if self.w_state.q.val() == self.s_decide.val() {
+            if self.dmr.val() {
+                self.w_pcl.d.next = self.pcl.val();
+                self.stats.pcl_inc.next = self.pcl.val();
+            }
             if self.hit.q.val() {
-                // duplicate: it cancels the history entry and is dropped
-                self.hu.d.next = self.hu.q.val() | self.mask.val();
-                if self.dups_q.q.val() != self.max16.val() {
-                    self.dups_q.d.next = self.dups_q.q.val() + self.one16.val();
+                // duplicate: it cancels the history entry and is dropped. DMR:
+                // a PCL copy of a frame still waiting on the ACL leaves the entry
+                // for the release
+                if !self.dmr.val() | !self.pcl.val() | self.hit_hd.q.val() {
+                    self.hu.d.next = self.hu.q.val() | self.mask.val();
                 }
-                self.w_state.d.next = self.s_idle.val();
+                if self.dmr.val() & !self.hit_hd.q.val() & !self.pcl.val() {
+                    // DMR: the PCL copy came first and waited: delivered now
+                    self.w_state.d.next = self.s_write.val();
+                } else {
+                    if self.dups_q.q.val() != self.max16.val() {
+                        self.dups_q.d.next = self.dups_q.q.val() + self.one16.val();
+                    }
+                    self.w_state.d.next = self.s_idle.val();
+                }
             } else {
                 self.w_state.d.next = self.s_write.val();
             }
+        } else if self.w_state.q.val() == self.s_write.val() {
+            if !self.w_fifo.val() {
+                // DMR: a PCL frame waits in the history
+            } else if self.fifo_full.val() {
+                if self.overruns_q.q.val() != self.max16.val() {
+                    self.overruns_q.d.next = self.overruns_q.q.val() + self.one16.val();
+                }
+                self.overrun_evt.next = true;
+            } else {
+                self.fifo_wr.next = true;
+                self.rx_evt.next = true;
+            }
+            if self.w_hist.val() {
+                self.hist.write_enable.next = true;
+                self.hist_ts.write_enable.next = true;
+                self.hv.d.next = self.hv_base.val() | self.mask.val();
+                self.hu.d.next = self.hu.q.val() & !self.mask.val();
+                if !self.w_fifo.val() {
+                    self.hd.d.next = self.hd.q.val() & !self.mask.val();
+                } else {
+                    self.hd.d.next = self.hd.q.val() | self.mask.val();
+                }
+                if !self.free_found.q.val() {
+                    self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one5.val();
+                }
+            }
+            self.w_state.d.next = self.s_idle.val();
+        } else if self.w_state.q.val() == self.s_fetch.val() {
+            // the history read address is rel_e at this edge
+            self.w_state.d.next = self.s_release.val();
         } else {
-            // write
+            // release (§8): the waiting frame is delivered on the ACL
             if self.fifo_full.val() {
                 if self.overruns_q.q.val() != self.max16.val() {
                     self.overruns_q.d.next = self.overruns_q.q.val() + self.one16.val();
@@ -373,23 +561,19 @@ impl Logic for RxWriter {
                 self.fifo_wr.next = true;
                 self.rx_evt.next = true;
             }
-            if self.dedup_on.val() {
-                self.hist.write_enable.next = true;
-                self.hist_ts.write_enable.next = true;
-                self.hv.d.next = self.hv_base.val() | self.mask.val();
-                self.hu.d.next = self.hu.q.val() & !self.mask.val();
-                if !self.free_found.q.val() {
-                    self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one5.val();
-                }
-            }
+            self.hd.d.next = self.hd.q.val() | self.mask.val();
+            self.stats.released_inc.next = true;
             self.w_state.d.next = self.s_idle.val();
         }
-        // rx_valid pulses (a new pulse wins over the clear above)
+        // rx_valid pulses and ACL switches (a new event wins over the clear above)
         if self.rxv_a.val() {
             self.rxp_a.d.next = true;
         }
         if self.rxv_b.val() {
             self.rxp_b.d.next = true;
+        }
+        if self.release_set.val() {
+            self.release.d.next = true;
         }
 
         if self.clear.val() {
@@ -400,12 +584,16 @@ impl Logic for RxWriter {
             self.scan_i.d.next = self.zero6.val();
             self.hit.d.next = false;
             self.hit_e.d.next = self.zero5.val();
+            self.hit_hd.d.next = false;
             self.free_found.d.next = false;
             self.free_e.d.next = self.zero5.val();
             self.hist_ptr.d.next = self.zero5.val();
             self.hist_idle.d.next = self.zero15.val();
             self.hv.d.next = self.zero32.val();
             self.hu.d.next = self.zero32.val();
+            self.hd.d.next = self.zero32.val();
+            self.release.d.next = false;
+            self.w_pcl.d.next = false;
             self.fifo_wr.next = false;
             self.rx_evt.next = false;
             self.overrun_evt.next = false;
@@ -413,6 +601,9 @@ impl Logic for RxWriter {
             self.hist_ts.write_enable.next = false;
             self.dups_q.d.next = self.dups_q.q.val();
             self.overruns_q.d.next = self.overruns_q.q.val();
+            self.stats.pcl_inc.next = false;
+            self.stats.released_inc.next = false;
+            self.stats.expired_inc.next = false;
         }
         if self.rst.val() {
             self.dups_q.d.next = self.zero16.val();
@@ -420,6 +611,9 @@ impl Logic for RxWriter {
         }
         self.duplicates.next = self.dups_q.q.val();
         self.overruns.next = self.overruns_q.q.val();
+        self.pcl_frames.next = self.stats.pcl_frames.val();
+        self.released.next = self.stats.released.val();
+        self.expired.next = self.stats.expired.val();
     }
 }
 

@@ -4,5 +4,7 @@
 //! block RAM with no read-before-write emulation.
 pub mod bram;
 pub mod dedup;
+pub mod dmr_rx_stats;
+pub mod release_scan;
 pub mod rx_fifo;
 pub mod tx_buffer;

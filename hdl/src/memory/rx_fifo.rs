@@ -35,7 +35,8 @@ pub struct RxFifo {
     pub rd_data: Signal<Out, Bits<100>>,
     pub rx_ready: Signal<Out, Bit>,
     ram: Bram<Bits<100>, 5>,
-    head: DFF<Bits<5>>,
+    /// FIFO head (public for lock-step probes).
+    pub head: DFF<Bits<5>>,
     cnt: DFF<Bits<6>>,
     ready: DFF<Bit>,
     pop5: Signal<Local, Bits<5>>,

@@ -63,7 +63,8 @@ pub struct HistEntry {
 /// The RX FIFO, the writer FSM and the dedup history.
 #[derive(Clone, Debug, Default)]
 pub struct RxPath {
-    ram: [(Frame, u8); 32],
+    /// RX RAM: frame and channel (public for the block-level lock-step test).
+    pub ram: [(Frame, u8); 32],
     pub head: u8,
     pub count: u8,
     /// RAM read data register (the RX_* registers).
@@ -76,7 +77,8 @@ pub struct RxPath {
     pub scan_i: u8,
     pub hit: bool,
     pub hit_e: u8,
-    hist: [HistEntry; HIST],
+    /// History RAM (public for the block-level lock-step test).
+    pub hist: [HistEntry; HIST],
     /// History RAM read data register.
     hist_rd: HistEntry,
     pub hv: u32,

@@ -1,0 +1,509 @@
+//! Block-level lock-step of the receive writer (DRCC contract §7, DMR contract
+//! §8): `RxWriter` + `RxFifo` + a `now` counter in rust-hdl's simulator against
+//! the reference model's `RxPath` (`edge`, `reset` for `rst`), clock by clock,
+//! on seeded random traffic of a dual network: the same frame on both lines a few
+//! hundred clocks apart in random order, some on one line only, some lost; random
+//! pops with stalls (FIFO overruns), ACL switches at random (`release_set` with
+//! `acl` toggling at that edge), windows small enough that entries expire, reset
+//! mode episodes, and runs with `dmr` = 0 (redundancy dedup, regression).
+//!
+//! Compared at every clock: the FIFO write (`fifo_wr`, `fifo_data` against the
+//! model's RAM slot written), `rx_evt`, `overrun_evt`, FIFO `head`, `count`,
+//! `rx_ready` and read data, `duplicates`, `overruns`, the three `DMR_RX_STATS`
+//! counts, `w_state`, and `hv` / `hu` / `hd` (un-rotated during scans: the block
+//! rotates them right by one at every judging scan edge, the model does not).
+
+use drcc_cosim::frame::Frame;
+use drcc_cosim::model::drcc::rx_path::{
+    RxInputs, RxPath, W_DECIDE, W_FETCH, W_IDLE, W_RELEASE, W_RSCAN, W_SCAN, W_WRITE,
+};
+use drcc_hdl::memory::dedup::RxWriter;
+use drcc_hdl::memory::rx_fifo::RxFifo;
+use rust_hdl::prelude::*;
+use std::collections::BTreeSet;
+
+/// Test-only wrapper: the writer, the FIFO and `now` as `BitTick` provides it
+/// (counts `tick`s, cleared by `clear`). Pops are gated by `count != 0` as the
+/// register block does.
+#[derive(LogicBlock, Default)]
+struct RxBench {
+    clk: Signal<In, Clock>,
+    rst: Signal<In, Bit>,
+    reset_mode: Signal<In, Bit>,
+    dedup_on: Signal<In, Bit>,
+    dmr: Signal<In, Bit>,
+    acl: Signal<In, Bit>,
+    release_set: Signal<In, Bit>,
+    window: Signal<In, Bits<15>>,
+    tick: Signal<In, Bit>,
+    pop: Signal<In, Bit>,
+    rxv_a: Signal<In, Bit>,
+    rxv_b: Signal<In, Bit>,
+    frame_a: Signal<In, Bits<99>>,
+    frame_b: Signal<In, Bits<99>>,
+    rxw: RxWriter,
+    fifo: RxFifo,
+    now: DFF<Bits<16>>,
+}
+
+impl Logic for RxBench {
+    fn update(&mut self) {
+        dff_setup!(self, clk, now);
+        let clear = self.rst.val() | self.reset_mode.val();
+        if self.tick.val() {
+            self.now.d.next = self.now.q.val() + Bits::<16>::from(1u64);
+        }
+        if clear {
+            self.now.d.next = Bits::<16>::from(0u64);
+        }
+        let w = &mut self.rxw;
+        w.clk.next = self.clk.val();
+        w.rst.next = self.rst.val();
+        w.clear.next = clear;
+        w.dedup_on.next = self.dedup_on.val();
+        w.window.next = self.window.val();
+        w.now.next = self.now.q.val();
+        w.tick.next = self.tick.val();
+        w.rxv_a.next = self.rxv_a.val();
+        w.rxv_b.next = self.rxv_b.val();
+        w.frame_a.next = self.frame_a.val();
+        w.frame_b.next = self.frame_b.val();
+        w.fifo_count.next = self.fifo.count.val();
+        w.dmr.next = self.dmr.val();
+        w.acl.next = self.acl.val();
+        w.release_set.next = self.release_set.val();
+        let nonempty = self.fifo.count.val().any();
+        let f = &mut self.fifo;
+        f.clk.next = self.clk.val();
+        f.clear.next = clear;
+        f.wr.next = self.rxw.fifo_wr.val();
+        f.wr_data.next = self.rxw.fifo_data.val();
+        f.pop.next = self.pop.val() & nonempty;
+    }
+}
+
+/// The 99 frame bits of the channel `rx_*` ports: [98] rtr, [97] ide,
+/// [96:68] id, [67:64] dlc, [63:0] data (byte 0 in [63:56]).
+fn frame_bits(f: &Frame) -> Bits<99> {
+    let mut b = Bits::<99>::default();
+    b.set_bits::<64>(0, f.data_word().into());
+    b.set_bits::<4>(64, (f.dlc as u64).into());
+    b.set_bits::<29>(68, (f.id as u64).into());
+    b.replace_bit(97, f.ide).replace_bit(98, f.rtr)
+}
+
+/// A FIFO entry: [99] channel, [98:0] frame.
+fn entry_bits(e: &(Frame, u8)) -> Bits<100> {
+    bit_cast::<100, 99>(frame_bits(&e.0)).replace_bit(99, e.1 != 0)
+}
+
+/// xorshift64*: deterministic, seeded.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n
+    }
+    fn chance(&mut self, num: u64, den: u64) -> bool {
+        self.below(den) < num
+    }
+}
+
+/// One run's configuration.
+struct Run {
+    seed: u64,
+    clocks: usize,
+    dmr: bool,
+    /// `DEDUP_CFG.window`, bit times.
+    window: u16,
+    /// Clocks per bit `tick`.
+    tick_period: usize,
+    /// Largest delay of the second copy, clocks.
+    max_delay: u64,
+    /// ACL switch probability per clock (1 in `acl_every`), DMR runs.
+    acl_every: u64,
+}
+
+/// Paths reached (asserted non-zero so the stimulus keeps reaching them).
+#[derive(Default, Debug)]
+struct Coverage {
+    frames: u64,
+    duplicates: u64,
+    overruns: u64,
+    expired_scan: u64,
+    expired_rscan: u64,
+    pcl_frames: u64,
+    waiting_delivered: u64,
+    pcl_copy_of_waiting: u64,
+    acl_switches: u64,
+    rscans: u64,
+    rscan_empty: u64,
+    /// A release candidate as old as the one already chosen (the first stays).
+    release_ties: u64,
+    releases: u64,
+    release_overruns: u64,
+    hist_recorded_pcl: u64,
+    resets: u64,
+}
+
+/// Arrival times per line: `clock -> frame`, at least `GAP` clocks apart.
+const GAP: u64 = 40;
+
+fn place(occupied: &mut BTreeSet<u64>, mut t: u64) -> u64 {
+    while occupied
+        .range(t.saturating_sub(GAP - 1)..t + GAP)
+        .next()
+        .is_some()
+    {
+        t += 1;
+    }
+    occupied.insert(t);
+    t
+}
+
+fn schedule(run: &Run, rng: &mut Rng) -> [Vec<Option<Frame>>; 2] {
+    let n = run.clocks as u64;
+    let mut lines: [Vec<Option<Frame>>; 2] = [vec![None; run.clocks], vec![None; run.clocks]];
+    let mut occ: [BTreeSet<u64>; 2] = Default::default();
+    // a small pool, so that distinct messages can be identical frames
+    let ids = [0x123u32, 0x124, 0x7EA, 0x1ABC_DEF0, 0x10, 0x5A5];
+    let datas = [0u64, 0x0102_0304_0506_0708, 0xFFFF_0000_FFFF_0000];
+    let mut t = 30u64;
+    while t < n {
+        let ide = rng.chance(1, 4);
+        let id = ids[rng.below(ids.len() as u64) as usize] & if ide { 0x1FFF_FFFF } else { 0x7FF };
+        let f = Frame {
+            id,
+            ide,
+            rtr: rng.chance(1, 10),
+            dlc: [0u8, 1, 8][rng.below(3) as usize],
+            data: datas[rng.below(3) as usize].to_be_bytes(),
+        };
+        let first = rng.below(2) as usize;
+        let d = rng.below(run.max_delay + 1);
+        let kind = rng.below(100);
+        let mut put = |line: usize, at: u64| {
+            let at = place(&mut occ[line], at);
+            if at < n {
+                lines[line][at as usize] = Some(f);
+            }
+        };
+        if kind < 60 {
+            put(first, t);
+            put(1 - first, t + d);
+        } else if kind < 80 {
+            put(first, t);
+        } else if kind < 92 {
+            put(1 - first, t + d);
+        } // else lost on both lines
+          // bursts and pauses
+        t += if rng.chance(1, 20) {
+            300 + rng.below(1500)
+        } else {
+            20 + rng.below(120)
+        };
+    }
+    lines
+}
+
+fn rot_back(v: Bits<32>, w_state: u8, scan_i: u8) -> u32 {
+    let v = v.to_u32();
+    if w_state == W_SCAN || w_state == W_RSCAN {
+        v.rotate_left(scan_i.max(1) as u32 - 1)
+    } else {
+        v
+    }
+}
+
+fn run_lockstep(run: &Run, cov: &mut Coverage) {
+    let mut rng = Rng(run.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+    let arrivals = schedule(run, &mut rng);
+    let mut uut = RxBench::default();
+    uut.connect_all();
+    uut.clk.next = Clock::from(false);
+    assert!(simulate(&mut uut, 200));
+    let mut m = RxPath::default();
+    let mut frame = [Frame::default(); 2];
+    let mut acl = 0u8;
+    let mut pop_num = 1u64;
+    let mut prev_pop = false;
+    let mut reset_left = 0usize;
+    let dedup_on = run.window != 0;
+    for clk in 0..run.clocks {
+        // ---- stimulus for this clock ----
+        let rst = clk < 3;
+        if clk == 3 || (clk > 100 && rng.chance(1, 15000)) {
+            reset_left = 4 + rng.below(8) as usize;
+            cov.resets += 1;
+        }
+        let reset_mode = reset_left > 0;
+        reset_left = reset_left.saturating_sub(1);
+        if clk % 2000 == 0 {
+            // pop phases: a stall (overruns), slow, fast
+            pop_num = [0, 1, 1, 20, 60][rng.below(5) as usize];
+        }
+        let pop = !prev_pop && rng.below(200) < pop_num;
+        let tick = clk % run.tick_period == 0;
+        let mut rxv = [false; 2];
+        for l in 0..2 {
+            if let Some(f) = arrivals[l][clk] {
+                frame[l] = f;
+                rxv[l] = true;
+            }
+        }
+        let release_set =
+            run.dmr && !rst && !reset_mode && clk > 50 && rng.chance(1, run.acl_every);
+        if rst || reset_mode {
+            // the ACL register reads DCL in reset mode (DMR contract §6)
+            acl = 0;
+        }
+        let inputs = RxInputs {
+            reset_mode,
+            dedup_on,
+            dmr: run.dmr,
+            acl,
+            release_set,
+            window: run.window,
+            tick,
+            pop,
+            rx_valid: rxv,
+        };
+
+        // ---- drive the block, read its pre-edge outputs ----
+        uut.clk.next = Clock::from(false);
+        uut.rst.next = rst;
+        uut.reset_mode.next = reset_mode;
+        uut.dedup_on.next = dedup_on;
+        uut.dmr.next = run.dmr;
+        uut.acl.next = acl != 0;
+        uut.release_set.next = release_set;
+        uut.window.next = (run.window as u64).into();
+        uut.tick.next = tick;
+        uut.pop.next = pop;
+        uut.rxv_a.next = rxv[0];
+        uut.rxv_b.next = rxv[1];
+        uut.frame_a.next = frame_bits(&frame[0]);
+        uut.frame_b.next = frame_bits(&frame[1]);
+        assert!(simulate(&mut uut, 200), "settle");
+        let fifo_wr = uut.rxw.fifo_wr.val();
+        let fifo_data = uut.rxw.fifo_data.val();
+        let rx_evt = uut.rxw.rx_evt.val();
+        let overrun_evt = uut.rxw.overrun_evt.val();
+
+        // ---- the model's edge ----
+        let pre = m.clone();
+        let ev = if rst {
+            m.reset();
+            Default::default()
+        } else {
+            m.edge(&inputs, [&frame[0], &frame[1]])
+        };
+        uut.clk.next = Clock::from(true);
+        assert!(simulate(&mut uut, 200), "settle");
+
+        // ---- compare ----
+        let ctx = || {
+            format!(
+                "seed {} clock {} (pre w_state {} scan_i {} sel {} hit {} hit_e {}; inputs {:?})",
+                run.seed, clk, pre.w_state, pre.scan_i, pre.sel, pre.hit, pre.hit_e, inputs
+            )
+        };
+        assert_eq!(rx_evt, ev.rx, "rx_evt, {}", ctx());
+        assert_eq!(fifo_wr, ev.rx, "fifo_wr, {}", ctx());
+        assert_eq!(overrun_evt, ev.overrun, "overrun_evt, {}", ctx());
+        if ev.rx {
+            let slot = ((pre.head + pre.count) & 31) as usize;
+            assert_eq!(fifo_data, entry_bits(&m.ram[slot]), "fifo_data, {}", ctx());
+        }
+        let w = &uut.rxw;
+        assert_eq!(w.w_state.q.val().to_u8(), m.w_state, "w_state, {}", ctx());
+        let (ws, si) = (m.w_state, m.scan_i);
+        assert_eq!(rot_back(w.hv.q.val(), ws, si), m.hv, "hv, {}", ctx());
+        assert_eq!(rot_back(w.hu.q.val(), ws, si), m.hu, "hu, {}", ctx());
+        assert_eq!(rot_back(w.hd.q.val(), ws, si), m.hd, "hd, {}", ctx());
+        assert_eq!(w.release.q.val(), m.release, "release, {}", ctx());
+        assert_eq!(
+            w.duplicates.val().to_u16(),
+            m.duplicates,
+            "duplicates, {}",
+            ctx()
+        );
+        assert_eq!(w.overruns.val().to_u16(), m.overruns, "overruns, {}", ctx());
+        assert_eq!(
+            w.pcl_frames.val().to_u16(),
+            m.pcl_frames,
+            "pcl_frames, {}",
+            ctx()
+        );
+        assert_eq!(w.released.val().to_u8(), m.released, "released, {}", ctx());
+        assert_eq!(w.expired.val().to_u8(), m.expired, "expired, {}", ctx());
+        let f = &uut.fifo;
+        assert_eq!(f.head.q.val().to_u8(), m.head, "head, {}", ctx());
+        assert_eq!(f.count.val().to_u8(), m.count, "count, {}", ctx());
+        assert_eq!(f.rx_ready.val(), m.rx_ready, "rx_ready, {}", ctx());
+        // the block's read data runs one pop ahead at a pop edge (rx_fifo.rs),
+        // never observed: the register block blocks the access after a pop
+        let popped = pop && pre.count != 0 && !rst && !reset_mode;
+        if m.rx_ready && !popped {
+            assert_eq!(
+                f.rd_data.val(),
+                entry_bits(&m.rd),
+                "FIFO head data, {}",
+                ctx()
+            );
+        }
+        prev_pop = pop;
+
+        // ---- coverage (from the model's pre-edge state and what it did) ----
+        if !rst && !reset_mode {
+            cov.frames += rxv.iter().filter(|&&v| v).count() as u64;
+            cov.duplicates += (m.duplicates != pre.duplicates) as u64;
+            cov.overruns += ev.overrun as u64;
+            cov.pcl_frames += (m.pcl_frames != pre.pcl_frames) as u64;
+            cov.acl_switches += release_set as u64;
+            // an undelivered, unmatched entry left hv in a scan (§8 `expired`)
+            let expired_now = run.dmr && pre.hv & !m.hv & !pre.hu & !pre.hd != 0;
+            if expired_now && pre.w_state == W_SCAN {
+                cov.expired_scan += 1;
+            }
+            if expired_now && pre.w_state == W_RSCAN {
+                cov.expired_rscan += 1;
+            }
+            if run.dmr && pre.w_state == W_DECIDE && pre.hit {
+                let waiting = pre.hd & (1 << pre.hit_e) == 0;
+                let pcl = pre.sel != acl;
+                if waiting && !pcl {
+                    assert_eq!(m.w_state, W_WRITE);
+                    cov.waiting_delivered += 1;
+                }
+                if waiting && pcl {
+                    cov.pcl_copy_of_waiting += 1;
+                }
+            }
+            if run.dmr && pre.w_state == W_WRITE && pre.w_hist && pre.w_pcl {
+                cov.hist_recorded_pcl += 1;
+            }
+            if pre.w_state == W_IDLE && m.w_state == W_RSCAN {
+                cov.rscans += 1;
+            }
+            if pre.w_state == W_RSCAN && m.w_state == W_IDLE {
+                cov.rscan_empty += 1;
+            }
+            if pre.w_state == W_RSCAN && pre.scan_i >= 1 && pre.rel_found {
+                let e = pre.scan_i as usize - 1;
+                let h = pre.hist[e];
+                let age = pre.now.wrapping_sub(h.ts);
+                let free = (pre.hv & !pre.hu & !pre.hd) >> e & 1 != 0;
+                if free && h.ch == acl && age <= run.window && age == pre.rel_age {
+                    cov.release_ties += 1;
+                }
+            }
+            if pre.w_state == W_RSCAN && m.w_state == W_FETCH {
+                assert!(pre.scan_i == 32);
+            }
+            if pre.w_state == W_RELEASE {
+                cov.releases += 1;
+                cov.release_overruns += ev.overrun as u64;
+            }
+        }
+        if release_set {
+            acl ^= 1;
+        }
+    }
+}
+
+fn dmr_run(seed: u64) -> Run {
+    let mut r = Rng(seed ^ 0xD1B5_4A32_D192_ED03);
+    let tick_period = [4usize, 8, 16, 64][r.below(4) as usize];
+    // a window of 150..1500 clocks: copies up to 600 clocks apart sometimes expire
+    let window = ((150 + r.below(1350)) as usize / tick_period).max(1) as u16;
+    Run {
+        seed,
+        clocks: 60_000,
+        dmr: true,
+        window,
+        tick_period,
+        max_delay: 600,
+        acl_every: 1200,
+    }
+}
+
+fn assert_dmr_coverage(cov: &Coverage) {
+    println!("{cov:#?}");
+    let c = cov;
+    for (name, v) in [
+        ("frames", c.frames),
+        ("duplicates", c.duplicates),
+        ("overruns", c.overruns),
+        ("expired in scan", c.expired_scan),
+        ("expired in rscan", c.expired_rscan),
+        ("pcl_frames", c.pcl_frames),
+        (
+            "waiting frame delivered by its ACL copy",
+            c.waiting_delivered,
+        ),
+        ("PCL copy of a waiting frame", c.pcl_copy_of_waiting),
+        ("PCL frame recorded undelivered", c.hist_recorded_pcl),
+        ("ACL switches", c.acl_switches),
+        ("release scans", c.rscans),
+        ("release scans without a candidate", c.rscan_empty),
+        ("release candidates of equal age", c.release_ties),
+        ("releases", c.releases),
+        ("release overruns", c.release_overruns),
+        ("reset mode episodes", c.resets),
+    ] {
+        assert!(v > 0, "coverage: {name} never reached");
+    }
+}
+
+#[test]
+fn dmr_rx_lockstep_dmr_seeds() {
+    let mut cov = Coverage::default();
+    for seed in 1..=8 {
+        run_lockstep(&dmr_run(seed), &mut cov);
+    }
+    assert_dmr_coverage(&cov);
+}
+
+/// DMR mode with `window = 0` (no history): ACL frames delivered, PCL dropped.
+#[test]
+fn dmr_rx_lockstep_dmr_no_history() {
+    let mut cov = Coverage::default();
+    for seed in 11..=12 {
+        let run = Run {
+            window: 0,
+            ..dmr_run(seed)
+        };
+        run_lockstep(&run, &mut cov);
+    }
+    println!("{cov:#?}");
+    assert!(cov.pcl_frames > 0 && cov.acl_switches > 0 && cov.frames > 0);
+    assert_eq!(cov.rscans, 0, "no release scan without a history");
+}
+
+/// Regression: `dmr` = 0, redundancy dedup (first copy wins) and normal mode.
+#[test]
+fn dmr_rx_lockstep_redundancy_regression() {
+    let mut cov = Coverage::default();
+    for seed in 21..=23 {
+        let run = Run {
+            dmr: false,
+            ..dmr_run(seed)
+        };
+        run_lockstep(&run, &mut cov);
+    }
+    let run = Run {
+        dmr: false,
+        window: 0,
+        ..dmr_run(24)
+    };
+    run_lockstep(&run, &mut cov);
+    println!("{cov:#?}");
+    assert!(cov.duplicates > 0 && cov.overruns > 0 && cov.frames > 0);
+    assert_eq!(cov.pcl_frames + cov.releases + cov.rscans, 0);
+}

@@ -90,6 +90,18 @@
 //                                              passive, 2 bus-off.
 // output     2  chan_b_err_state               Channel B `err_state`: 0 error active, 1 error
 //                                              passive, 2 bus-off.
+// output     2  dmr_state                      DMR state: 0 redundancy active, 1 redundancy
+//                                              passive, 2 redundancy disabled, 3 network
+//                                              disconnected.
+// output     1  acl                            Active CAN line: 0 = DCL (channel A), 1 = RCL
+//                                              (channel B).
+// output     1  dcl_tx_fault                   The DCL cannot transmit (a transmit fault was found
+//                                              on it).
+// output     1  dcl_rx_fault                   A fault on reception was found on the DCL.
+// output     1  rcl_tx_fault                   The RCL cannot transmit.
+// output     1  rcl_rx_fault                   A fault on reception was found on the RCL.
+// output     1  dmr_tick                       One-clock pulse every `DMR_TIME.tick_bits` nominal
+//                                              bit times (the DMR tick).
 //
 // Registers: docs/registers.md, C header rtl-out/drcc_regs.h. In TX_DATA0/1 and
 // RX_DATA0/1 byte 0 (the first on the bus) is in [7:0]; on can_channel's ports it
@@ -97,7 +109,7 @@
 
 
 
-module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state);
+module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick);
     
     // Module arguments
     // Clock. Every register changes at its rising edge; the channels' bit timing (register `BTR`)
@@ -187,6 +199,21 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     output reg  [1:0] chan_a_err_state;
     // Channel B `err_state`: 0 error active, 1 error passive, 2 bus-off.
     output reg  [1:0] chan_b_err_state;
+    // DMR state: 0 redundancy active, 1 redundancy passive, 2 redundancy disabled, 3 network
+    // disconnected.
+    output reg  [1:0] dmr_state;
+    // Active CAN line: 0 = DCL (channel A), 1 = RCL (channel B).
+    output reg  acl;
+    // The DCL cannot transmit (a transmit fault was found on it).
+    output reg  dcl_tx_fault;
+    // A fault on reception was found on the DCL.
+    output reg  dcl_rx_fault;
+    // The RCL cannot transmit.
+    output reg  rcl_tx_fault;
+    // A fault on reception was found on the RCL.
+    output reg  rcl_rx_fault;
+    // One-clock pulse every `DMR_TIME.tick_bits` nominal bit times (the DMR tick).
+    output reg  dmr_tick;
     
     // Enums
     localparam Field__Integrating = 0;
@@ -313,6 +340,111 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  mailbox_cfg__we_id;
     reg  mailbox_cfg__we_mask;
     reg  [30:0] mailbox_cfg__wdat;
+    reg  dmr_ctl__clk;
+    reg  dmr_ctl__rst;
+    reg  dmr_ctl__hold;
+    reg  [15:0] dmr_ctl__timeout;
+    reg  [15:0] dmr_ctl__cs_period;
+    reg  [15:0] dmr_ctl__tick_bits;
+    reg  [15:0] dmr_ctl__recovery_delay;
+    reg  [10:0] dmr_ctl__cs_id_dcl;
+    reg  [10:0] dmr_ctl__cs_id_rcl;
+    reg  dmr_ctl__tick;
+    reg  dmr_ctl__reset_mode_q;
+    reg  dmr_ctl__done_dcl;
+    reg  dmr_ctl__failed_dcl;
+    reg  dmr_ctl__rx_valid_dcl;
+    reg  dmr_ctl__rx_ide_dcl;
+    reg  dmr_ctl__rx_rtr_dcl;
+    reg  [3:0] dmr_ctl__rx_dlc_dcl;
+    reg  [28:0] dmr_ctl__rx_id_dcl;
+    reg  [1:0] dmr_ctl__err_state_dcl;
+    reg  dmr_ctl__done_rcl;
+    reg  dmr_ctl__failed_rcl;
+    reg  dmr_ctl__rx_valid_rcl;
+    reg  dmr_ctl__rx_ide_rcl;
+    reg  dmr_ctl__rx_rtr_rcl;
+    reg  [3:0] dmr_ctl__rx_dlc_rcl;
+    reg  [28:0] dmr_ctl__rx_id_rcl;
+    reg  [1:0] dmr_ctl__err_state_rcl;
+    reg  [3:0] dmr_ctl__q_count;
+    reg  dmr_ctl__rd_ide;
+    reg  [28:0] dmr_ctl__rd_id;
+    reg  dmr_ctl__rd_sel;
+    reg  dmr_ctl__eval_fault;
+    reg  dmr_ctl__eval_line;
+    reg  dmr_ctl__eval_tx;
+    reg  dmr_ctl__eval_deviation;
+    reg  [3:0] dmr_ctl__eval_mb;
+    wire  dmr_ctl__tx_req_dcl;
+    wire  dmr_ctl__tx_req_rcl;
+    wire  dmr_ctl__cs_req_dcl;
+    wire  dmr_ctl__cs_req_rcl;
+    wire  dmr_ctl__tx_abort_dcl;
+    wire  dmr_ctl__tx_abort_rcl;
+    wire  dmr_ctl__restart_dcl;
+    wire  dmr_ctl__restart_rcl;
+    wire  [3:0] dmr_ctl__off_dcl;
+    wire  [3:0] dmr_ctl__off_rcl;
+    wire  [3:0] dmr_ctl__pop;
+    wire  dmr_ctl__raise_tx_dcl;
+    wire  dmr_ctl__raise_tx_rcl;
+    wire  dmr_ctl__raise_rx_dcl;
+    wire  dmr_ctl__raise_rx_rcl;
+    wire  dmr_ctl__raise_req_dcl;
+    wire  dmr_ctl__raise_req_rcl;
+    wire  [29:0] dmr_ctl__key_tx_dcl;
+    wire  [29:0] dmr_ctl__key_tx_rcl;
+    wire  [29:0] dmr_ctl__key_rx_dcl;
+    wire  [29:0] dmr_ctl__key_rx_rcl;
+    wire  [29:0] dmr_ctl__key_req_dcl;
+    wire  [29:0] dmr_ctl__key_req_rcl;
+    wire  dmr_ctl__raise_eval;
+    wire  dmr_ctl__clear_mailboxes;
+    wire  dmr_ctl__rx_deliver_dcl;
+    wire  dmr_ctl__rx_deliver_rcl;
+    wire  dmr_ctl__acl_switch;
+    wire  dmr_ctl__tx_done_evt;
+    wire  dmr_ctl__int_evt;
+    wire  [1:0] dmr_ctl__dmr_state;
+    wire  dmr_ctl__acl;
+    wire  dmr_ctl__dcl_tx_fault;
+    wire  dmr_ctl__dcl_rx_fault;
+    wire  dmr_ctl__rcl_tx_fault;
+    wire  dmr_ctl__rcl_rx_fault;
+    wire  dmr_ctl__dmr_tick;
+    wire  [31:0] dmr_ctl__status_word;
+    wire  [31:0] dmr_ctl__cs_count_word;
+    reg  dmr_eng__clk;
+    reg  dmr_eng__hold;
+    reg  dmr_eng__clear_state;
+    reg  [15:0] dmr_eng__timeout;
+    reg  dmr_eng__tx_dcl;
+    reg  dmr_eng__tx_rcl;
+    reg  dmr_eng__rx_dcl;
+    reg  dmr_eng__rx_rcl;
+    reg  dmr_eng__req_dcl;
+    reg  dmr_eng__req_rcl;
+    reg  [29:0] dmr_eng__key_tx_dcl;
+    reg  [29:0] dmr_eng__key_tx_rcl;
+    reg  [29:0] dmr_eng__key_rx_dcl;
+    reg  [29:0] dmr_eng__key_rx_rcl;
+    reg  [29:0] dmr_eng__key_req_dcl;
+    reg  [29:0] dmr_eng__key_req_rcl;
+    reg  dmr_eng__eval;
+    reg  [15:0] dmr_eng__mb_enable;
+    reg  [127:0] dmr_eng__mb_limits;
+    wire  [3:0] dmr_eng__cfg_addr;
+    reg  [30:0] dmr_eng__cfg_id_word;
+    reg  [28:0] dmr_eng__cfg_mask;
+    reg  [3:0] dmr_eng__mb_sel;
+    wire  [31:0] dmr_eng__mb_state_word;
+    wire  dmr_eng__fault;
+    wire  dmr_eng__fault_line;
+    wire  dmr_eng__fault_tx;
+    wire  dmr_eng__fault_deviation;
+    wire  [3:0] dmr_eng__fault_mb;
+    wire  [1:0] dmr_eng__e_state;
     reg  [5:0] status__adr;
     wire  [31:0] status__word;
     reg  [3:0] status__state;
@@ -447,6 +579,10 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  txbuf__clk;
     reg  txbuf__clear;
     reg  txbuf__redundancy;
+    reg  txbuf__dmr;
+    reg  [2:0] txbuf__off_dcl;
+    reg  [2:0] txbuf__off_rcl;
+    reg  [3:0] txbuf__dmr_pop;
     reg  txbuf__push;
     reg  txbuf__push_q;
     reg  [98:0] txbuf__push_frame;
@@ -458,6 +594,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  [3:0] txbuf__count_a;
     wire  [3:0] txbuf__count_b;
     wire  [98:0] txbuf__rd_frame;
+    wire  txbuf__rd_sel_o;
     wire  txbuf__req_a;
     wire  txbuf__req_b;
     wire  txbuf__done_evt;
@@ -488,6 +625,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  rxw__overrun_evt;
     wire  [15:0] rxw__duplicates;
     wire  [15:0] rxw__overruns;
+    reg  rxw__dmr;
+    reg  rxw__acl;
+    reg  rxw__release_set;
+    wire  [15:0] rxw__pcl_frames;
+    wire  [7:0] rxw__released;
+    wire  [7:0] rxw__expired;
     reg  chan_a__clk;
     reg  chan_a__rst;
     reg  [5:0] chan_a__cfg_brp;
@@ -584,6 +727,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     // Local signals
     reg  clear;
     reg  rmb_hold;
+    reg  dmr_hold;
     
     // Sub module instances
     drcc__regs regs(
@@ -692,6 +836,115 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .we_id(mailbox_cfg__we_id),
         .we_mask(mailbox_cfg__we_mask),
         .wdat(mailbox_cfg__wdat)
+    );
+    drcc__dmr_ctl dmr_ctl(
+        .clk(dmr_ctl__clk),
+        .rst(dmr_ctl__rst),
+        .hold(dmr_ctl__hold),
+        .timeout(dmr_ctl__timeout),
+        .cs_period(dmr_ctl__cs_period),
+        .tick_bits(dmr_ctl__tick_bits),
+        .recovery_delay(dmr_ctl__recovery_delay),
+        .cs_id_dcl(dmr_ctl__cs_id_dcl),
+        .cs_id_rcl(dmr_ctl__cs_id_rcl),
+        .tick(dmr_ctl__tick),
+        .reset_mode_q(dmr_ctl__reset_mode_q),
+        .done_dcl(dmr_ctl__done_dcl),
+        .failed_dcl(dmr_ctl__failed_dcl),
+        .rx_valid_dcl(dmr_ctl__rx_valid_dcl),
+        .rx_ide_dcl(dmr_ctl__rx_ide_dcl),
+        .rx_rtr_dcl(dmr_ctl__rx_rtr_dcl),
+        .rx_dlc_dcl(dmr_ctl__rx_dlc_dcl),
+        .rx_id_dcl(dmr_ctl__rx_id_dcl),
+        .err_state_dcl(dmr_ctl__err_state_dcl),
+        .done_rcl(dmr_ctl__done_rcl),
+        .failed_rcl(dmr_ctl__failed_rcl),
+        .rx_valid_rcl(dmr_ctl__rx_valid_rcl),
+        .rx_ide_rcl(dmr_ctl__rx_ide_rcl),
+        .rx_rtr_rcl(dmr_ctl__rx_rtr_rcl),
+        .rx_dlc_rcl(dmr_ctl__rx_dlc_rcl),
+        .rx_id_rcl(dmr_ctl__rx_id_rcl),
+        .err_state_rcl(dmr_ctl__err_state_rcl),
+        .q_count(dmr_ctl__q_count),
+        .rd_ide(dmr_ctl__rd_ide),
+        .rd_id(dmr_ctl__rd_id),
+        .rd_sel(dmr_ctl__rd_sel),
+        .eval_fault(dmr_ctl__eval_fault),
+        .eval_line(dmr_ctl__eval_line),
+        .eval_tx(dmr_ctl__eval_tx),
+        .eval_deviation(dmr_ctl__eval_deviation),
+        .eval_mb(dmr_ctl__eval_mb),
+        .tx_req_dcl(dmr_ctl__tx_req_dcl),
+        .tx_req_rcl(dmr_ctl__tx_req_rcl),
+        .cs_req_dcl(dmr_ctl__cs_req_dcl),
+        .cs_req_rcl(dmr_ctl__cs_req_rcl),
+        .tx_abort_dcl(dmr_ctl__tx_abort_dcl),
+        .tx_abort_rcl(dmr_ctl__tx_abort_rcl),
+        .restart_dcl(dmr_ctl__restart_dcl),
+        .restart_rcl(dmr_ctl__restart_rcl),
+        .off_dcl(dmr_ctl__off_dcl),
+        .off_rcl(dmr_ctl__off_rcl),
+        .pop(dmr_ctl__pop),
+        .raise_tx_dcl(dmr_ctl__raise_tx_dcl),
+        .raise_tx_rcl(dmr_ctl__raise_tx_rcl),
+        .raise_rx_dcl(dmr_ctl__raise_rx_dcl),
+        .raise_rx_rcl(dmr_ctl__raise_rx_rcl),
+        .raise_req_dcl(dmr_ctl__raise_req_dcl),
+        .raise_req_rcl(dmr_ctl__raise_req_rcl),
+        .key_tx_dcl(dmr_ctl__key_tx_dcl),
+        .key_tx_rcl(dmr_ctl__key_tx_rcl),
+        .key_rx_dcl(dmr_ctl__key_rx_dcl),
+        .key_rx_rcl(dmr_ctl__key_rx_rcl),
+        .key_req_dcl(dmr_ctl__key_req_dcl),
+        .key_req_rcl(dmr_ctl__key_req_rcl),
+        .raise_eval(dmr_ctl__raise_eval),
+        .clear_mailboxes(dmr_ctl__clear_mailboxes),
+        .rx_deliver_dcl(dmr_ctl__rx_deliver_dcl),
+        .rx_deliver_rcl(dmr_ctl__rx_deliver_rcl),
+        .acl_switch(dmr_ctl__acl_switch),
+        .tx_done_evt(dmr_ctl__tx_done_evt),
+        .int_evt(dmr_ctl__int_evt),
+        .dmr_state(dmr_ctl__dmr_state),
+        .acl(dmr_ctl__acl),
+        .dcl_tx_fault(dmr_ctl__dcl_tx_fault),
+        .dcl_rx_fault(dmr_ctl__dcl_rx_fault),
+        .rcl_tx_fault(dmr_ctl__rcl_tx_fault),
+        .rcl_rx_fault(dmr_ctl__rcl_rx_fault),
+        .dmr_tick(dmr_ctl__dmr_tick),
+        .status_word(dmr_ctl__status_word),
+        .cs_count_word(dmr_ctl__cs_count_word)
+    );
+    drcc__dmr_eng dmr_eng(
+        .clk(dmr_eng__clk),
+        .hold(dmr_eng__hold),
+        .clear_state(dmr_eng__clear_state),
+        .timeout(dmr_eng__timeout),
+        .tx_dcl(dmr_eng__tx_dcl),
+        .tx_rcl(dmr_eng__tx_rcl),
+        .rx_dcl(dmr_eng__rx_dcl),
+        .rx_rcl(dmr_eng__rx_rcl),
+        .req_dcl(dmr_eng__req_dcl),
+        .req_rcl(dmr_eng__req_rcl),
+        .key_tx_dcl(dmr_eng__key_tx_dcl),
+        .key_tx_rcl(dmr_eng__key_tx_rcl),
+        .key_rx_dcl(dmr_eng__key_rx_dcl),
+        .key_rx_rcl(dmr_eng__key_rx_rcl),
+        .key_req_dcl(dmr_eng__key_req_dcl),
+        .key_req_rcl(dmr_eng__key_req_rcl),
+        .eval(dmr_eng__eval),
+        .mb_enable(dmr_eng__mb_enable),
+        .mb_limits(dmr_eng__mb_limits),
+        .cfg_addr(dmr_eng__cfg_addr),
+        .cfg_id_word(dmr_eng__cfg_id_word),
+        .cfg_mask(dmr_eng__cfg_mask),
+        .mb_sel(dmr_eng__mb_sel),
+        .mb_state_word(dmr_eng__mb_state_word),
+        .fault(dmr_eng__fault),
+        .fault_line(dmr_eng__fault_line),
+        .fault_tx(dmr_eng__fault_tx),
+        .fault_deviation(dmr_eng__fault_deviation),
+        .fault_mb(dmr_eng__fault_mb),
+        .e_state(dmr_eng__e_state)
     );
     drcc__status status(
         .adr(status__adr),
@@ -840,6 +1093,10 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .clk(txbuf__clk),
         .clear(txbuf__clear),
         .redundancy(txbuf__redundancy),
+        .dmr(txbuf__dmr),
+        .off_dcl(txbuf__off_dcl),
+        .off_rcl(txbuf__off_rcl),
+        .dmr_pop(txbuf__dmr_pop),
         .push(txbuf__push),
         .push_q(txbuf__push_q),
         .push_frame(txbuf__push_frame),
@@ -851,6 +1108,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .count_a(txbuf__count_a),
         .count_b(txbuf__count_b),
         .rd_frame(txbuf__rd_frame),
+        .rd_sel_o(txbuf__rd_sel_o),
         .req_a(txbuf__req_a),
         .req_b(txbuf__req_b),
         .done_evt(txbuf__done_evt),
@@ -884,7 +1142,13 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .rx_evt(rxw__rx_evt),
         .overrun_evt(rxw__overrun_evt),
         .duplicates(rxw__duplicates),
-        .overruns(rxw__overruns)
+        .overruns(rxw__overruns),
+        .dmr(rxw__dmr),
+        .acl(rxw__acl),
+        .release_set(rxw__release_set),
+        .pcl_frames(rxw__pcl_frames),
+        .released(rxw__released),
+        .expired(rxw__expired)
     );
     drcc__chan_a chan_a(
         .clk(chan_a__clk),
@@ -987,6 +1251,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     always @(*) begin
         clear = rst | regs__reset_mode;
         rmb_hold = rst | regs__reset_mode | ~regs__redundancy;
+        dmr_hold = regs__reset_mode | ~regs__dmr;
         regs__clk = clk;
         regs__rst = rst;
         regs__wb_cyc_i = wb_cyc_i;
@@ -1001,7 +1266,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         regs__txq_b = txbuf__count_b;
         regs__rx_count = rxfifo__count;
         regs__ev_rx = rxw__rx_evt;
-        regs__ev_tx_done = txbuf__done_evt | main__success_evt;
+        regs__ev_tx_done = txbuf__done_evt | main__success_evt | dmr_ctl__tx_done_evt;
         regs__ev_switch = main__switch_evt;
         regs__ev_overrun = rxw__overrun_evt;
         regs__ev_tx_failure = txbuf__failed_evt | main__fail_evt;
@@ -1013,7 +1278,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         regs__ext_word = dmr_check__word;
         regs__ext_writable = dmr_check__writable;
         regs__ext_illegal = dmr_check__illegal;
-        regs__ev_dmr = 1'b0;
+        regs__ev_dmr = dmr_ctl__int_evt;
         dmr_check__adr = wb_adr_i;
         dmr_check__wdat = wb_dat_i;
         dmr_check__reset_mode = regs__reset_mode;
@@ -1026,10 +1291,10 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         dmr_check__mb_limits = dmr_regs__mb_limits;
         dmr_check__mb_id_word = mailbox_cfg__id_word;
         dmr_check__mb_mask = mailbox_cfg__mask;
-        dmr_check__status_word = 32'h0;
-        dmr_check__cs_count_word = 32'h0;
-        dmr_check__rx_stats_word = 32'h0;
-        dmr_check__mb_state_word = 32'h0;
+        dmr_check__status_word = dmr_ctl__status_word;
+        dmr_check__cs_count_word = dmr_ctl__cs_count_word;
+        dmr_check__rx_stats_word = (((rxw__expired) & 32'hffffffff) << 32'h18) | (((rxw__released) & 32'hffffffff) << 32'h10) | ((rxw__pcl_frames) & 32'hffffffff);
+        dmr_check__mb_state_word = dmr_eng__mb_state_word;
         dmr_regs__clk = clk;
         dmr_regs__rst = rst;
         dmr_regs__wr = regs__wr_o;
@@ -1038,11 +1303,74 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         dmr_regs__writable = dmr_check__writable;
         dmr_regs__refused = dmr_check__illegal;
         mailbox_cfg__clk = clk;
-        mailbox_cfg__read_address = dmr_regs__mb_sel;
+        if (dmr_hold) begin
+            mailbox_cfg__read_address = dmr_regs__mb_sel;
+        end
+        else begin
+            mailbox_cfg__read_address = dmr_eng__cfg_addr;
+        end
         mailbox_cfg__write_address = dmr_regs__mb_sel;
         mailbox_cfg__we_id = dmr_regs__mb_we_id;
         mailbox_cfg__we_mask = dmr_regs__mb_we_mask;
         mailbox_cfg__wdat = wb_dat_i[(32'h0)+:(31)];
+        dmr_ctl__clk = clk;
+        dmr_ctl__rst = rst;
+        dmr_ctl__hold = dmr_hold;
+        dmr_ctl__timeout = dmr_regs__timeout;
+        dmr_ctl__cs_period = dmr_regs__cs_period;
+        dmr_ctl__tick_bits = dmr_regs__tick_bits;
+        dmr_ctl__recovery_delay = dmr_regs__recovery_delay;
+        dmr_ctl__cs_id_dcl = dmr_regs__cs_id_dcl;
+        dmr_ctl__cs_id_rcl = dmr_regs__cs_id_rcl;
+        dmr_ctl__tick = ticker__tick;
+        dmr_ctl__reset_mode_q = regs__reset_mode_d;
+        dmr_ctl__done_dcl = chan_a__tx_done;
+        dmr_ctl__failed_dcl = chan_a__tx_failed;
+        dmr_ctl__rx_valid_dcl = chan_a__rx_valid;
+        dmr_ctl__rx_ide_dcl = chan_a__rx_ide;
+        dmr_ctl__rx_rtr_dcl = chan_a__rx_rtr;
+        dmr_ctl__rx_dlc_dcl = chan_a__rx_dlc;
+        dmr_ctl__rx_id_dcl = chan_a__rx_id;
+        dmr_ctl__err_state_dcl = chan_a__err_state;
+        dmr_ctl__done_rcl = chan_b__tx_done;
+        dmr_ctl__failed_rcl = chan_b__tx_failed;
+        dmr_ctl__rx_valid_rcl = chan_b__rx_valid;
+        dmr_ctl__rx_ide_rcl = chan_b__rx_ide;
+        dmr_ctl__rx_rtr_rcl = chan_b__rx_rtr;
+        dmr_ctl__rx_dlc_rcl = chan_b__rx_dlc;
+        dmr_ctl__rx_id_rcl = chan_b__rx_id;
+        dmr_ctl__err_state_rcl = chan_b__err_state;
+        dmr_ctl__q_count = txbuf__count_a;
+        dmr_ctl__rd_ide = txbuf__rd_frame[32'h61];
+        dmr_ctl__rd_id = txbuf__rd_frame[(32'h44)+:(29)];
+        dmr_ctl__rd_sel = txbuf__rd_sel_o;
+        dmr_ctl__eval_fault = dmr_eng__fault;
+        dmr_ctl__eval_line = dmr_eng__fault_line;
+        dmr_ctl__eval_tx = dmr_eng__fault_tx;
+        dmr_ctl__eval_deviation = dmr_eng__fault_deviation;
+        dmr_ctl__eval_mb = dmr_eng__fault_mb;
+        dmr_eng__clk = clk;
+        dmr_eng__hold = dmr_hold;
+        dmr_eng__clear_state = dmr_ctl__clear_mailboxes;
+        dmr_eng__timeout = dmr_regs__timeout;
+        dmr_eng__tx_dcl = dmr_ctl__raise_tx_dcl;
+        dmr_eng__tx_rcl = dmr_ctl__raise_tx_rcl;
+        dmr_eng__rx_dcl = dmr_ctl__raise_rx_dcl;
+        dmr_eng__rx_rcl = dmr_ctl__raise_rx_rcl;
+        dmr_eng__req_dcl = dmr_ctl__raise_req_dcl;
+        dmr_eng__req_rcl = dmr_ctl__raise_req_rcl;
+        dmr_eng__key_tx_dcl = dmr_ctl__key_tx_dcl;
+        dmr_eng__key_tx_rcl = dmr_ctl__key_tx_rcl;
+        dmr_eng__key_rx_dcl = dmr_ctl__key_rx_dcl;
+        dmr_eng__key_rx_rcl = dmr_ctl__key_rx_rcl;
+        dmr_eng__key_req_dcl = dmr_ctl__key_req_dcl;
+        dmr_eng__key_req_rcl = dmr_ctl__key_req_rcl;
+        dmr_eng__eval = dmr_ctl__raise_eval;
+        dmr_eng__mb_enable = dmr_regs__mb_enable;
+        dmr_eng__mb_limits = dmr_regs__mb_limits;
+        dmr_eng__cfg_id_word = mailbox_cfg__id_word;
+        dmr_eng__cfg_mask = mailbox_cfg__mask;
+        dmr_eng__mb_sel = dmr_regs__mb_sel;
         status__adr = wb_adr_i;
         status__reset_mode = regs__reset_mode;
         status__state = main__state;
@@ -1134,6 +1462,10 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         txbuf__clk = clk;
         txbuf__clear = clear;
         txbuf__redundancy = regs__redundancy;
+        txbuf__dmr = regs__dmr;
+        txbuf__off_dcl = dmr_ctl__off_dcl[(32'h0)+:(3)];
+        txbuf__off_rcl = dmr_ctl__off_rcl[(32'h0)+:(3)];
+        txbuf__dmr_pop = dmr_ctl__pop;
         txbuf__push = regs__push;
         txbuf__push_q = regs__push_q;
         txbuf__push_frame = regs__tx_frame;
@@ -1150,17 +1482,26 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         rxw__clk = clk;
         rxw__rst = rst;
         rxw__clear = clear;
-        rxw__dedup_on = regs__redundancy & |regs__window;
+        rxw__dedup_on = (regs__redundancy | regs__dmr) & |regs__window;
+        rxw__dmr = regs__dmr;
+        rxw__acl = dmr_ctl__acl;
+        rxw__release_set = dmr_ctl__acl_switch;
         rxw__window = regs__window;
         rxw__now = ticker__now;
         rxw__tick = ticker__tick;
-        rxw__rxv_a = chan_a__rx_valid;
-        rxw__rxv_b = chan_b__rx_valid;
+        if (dmr_hold) begin
+            rxw__rxv_a = chan_a__rx_valid;
+            rxw__rxv_b = chan_b__rx_valid;
+        end
+        else begin
+            rxw__rxv_a = dmr_ctl__rx_deliver_dcl;
+            rxw__rxv_b = dmr_ctl__rx_deliver_rcl;
+        end
         rxw__frame_a = (((chan_a__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_a__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_a__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_a__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_a__rx_data) & 99'h7ffffffffffffffffffffffff);
         rxw__frame_b = (((chan_b__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_b__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_b__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_b__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_b__rx_data) & 99'h7ffffffffffffffffffffffff);
         rxw__fifo_count = rxfifo__count;
         chan_a__clk = clk;
-        chan_a__rst = clear | regs__reset_mode_d | aux_a__chan_rst;
+        chan_a__rst = clear | regs__reset_mode_d | aux_a__chan_rst | dmr_ctl__restart_dcl;
         chan_a__cfg_brp = regs__brp;
         chan_a__cfg_tseg1 = regs__tseg1;
         chan_a__cfg_tseg2 = regs__tseg2;
@@ -1168,17 +1509,26 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         chan_a__cfg_triple = regs__triple;
         chan_a__cfg_mode = regs__mode_a;
         chan_a__cfg_ewl = regs__ewl;
-        chan_a__cfg_single_shot = regs__single_shot & ~regs__redundancy;
+        chan_a__cfg_single_shot = regs__single_shot & ~regs__redundancy & ~regs__dmr;
         chan_a__rx = chan_a_rx;
-        chan_a__tx_req = main__req_a | txbuf__req_a;
-        chan_a__tx_abort = main__abort_a;
-        chan_a__tx_rtr = txbuf__rd_frame[32'h62];
-        chan_a__tx_ide = txbuf__rd_frame[32'h61];
-        chan_a__tx_id = txbuf__rd_frame[(32'h44)+:(29)];
-        chan_a__tx_dlc = txbuf__rd_frame[(32'h40)+:(4)];
-        chan_a__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
+        chan_a__tx_req = main__req_a | txbuf__req_a | dmr_ctl__tx_req_dcl;
+        chan_a__tx_abort = main__abort_a | dmr_ctl__tx_abort_dcl;
+        if (dmr_ctl__cs_req_dcl) begin
+            chan_a__tx_rtr = 1'b0;
+            chan_a__tx_ide = 1'b0;
+            chan_a__tx_id = ((dmr_regs__cs_id_dcl) & 29'h1fffffff);
+            chan_a__tx_dlc = ((1'b0) & 4'hf);
+            chan_a__tx_data = ((1'b0) & 64'hffffffffffffffff);
+        end
+        else begin
+            chan_a__tx_rtr = txbuf__rd_frame[32'h62];
+            chan_a__tx_ide = txbuf__rd_frame[32'h61];
+            chan_a__tx_id = txbuf__rd_frame[(32'h44)+:(29)];
+            chan_a__tx_dlc = txbuf__rd_frame[(32'h40)+:(4)];
+            chan_a__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
+        end
         chan_b__clk = clk;
-        chan_b__rst = clear | regs__reset_mode_d | aux_b__chan_rst;
+        chan_b__rst = clear | regs__reset_mode_d | aux_b__chan_rst | dmr_ctl__restart_rcl;
         chan_b__cfg_brp = regs__brp;
         chan_b__cfg_tseg1 = regs__tseg1;
         chan_b__cfg_tseg2 = regs__tseg2;
@@ -1186,15 +1536,24 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         chan_b__cfg_triple = regs__triple;
         chan_b__cfg_mode = regs__mode_b;
         chan_b__cfg_ewl = regs__ewl;
-        chan_b__cfg_single_shot = regs__single_shot & ~regs__redundancy;
+        chan_b__cfg_single_shot = regs__single_shot & ~regs__redundancy & ~regs__dmr;
         chan_b__rx = chan_b_rx;
-        chan_b__tx_req = main__req_b | txbuf__req_b;
-        chan_b__tx_abort = main__abort_b;
-        chan_b__tx_rtr = txbuf__rd_frame[32'h62];
-        chan_b__tx_ide = txbuf__rd_frame[32'h61];
-        chan_b__tx_id = txbuf__rd_frame[(32'h44)+:(29)];
-        chan_b__tx_dlc = txbuf__rd_frame[(32'h40)+:(4)];
-        chan_b__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
+        chan_b__tx_req = main__req_b | txbuf__req_b | dmr_ctl__tx_req_rcl;
+        chan_b__tx_abort = main__abort_b | dmr_ctl__tx_abort_rcl;
+        if (dmr_ctl__cs_req_rcl) begin
+            chan_b__tx_rtr = 1'b0;
+            chan_b__tx_ide = 1'b0;
+            chan_b__tx_id = ((dmr_regs__cs_id_rcl) & 29'h1fffffff);
+            chan_b__tx_dlc = ((1'b0) & 4'hf);
+            chan_b__tx_data = ((1'b0) & 64'hffffffffffffffff);
+        end
+        else begin
+            chan_b__tx_rtr = txbuf__rd_frame[32'h62];
+            chan_b__tx_ide = txbuf__rd_frame[32'h61];
+            chan_b__tx_id = txbuf__rd_frame[(32'h44)+:(29)];
+            chan_b__tx_dlc = txbuf__rd_frame[(32'h40)+:(4)];
+            chan_b__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
+        end
         chan_a_tx = chan_a__tx;
         chan_b_tx = chan_b__tx;
         state = main__state;
@@ -1221,6 +1580,13 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         chan_b_rec = chan_b__rec;
         chan_a_err_state = chan_a__err_state;
         chan_b_err_state = chan_b__err_state;
+        dmr_state = dmr_ctl__dmr_state;
+        acl = dmr_ctl__acl;
+        dcl_tx_fault = dmr_ctl__dcl_tx_fault;
+        dcl_rx_fault = dmr_ctl__dcl_rx_fault;
+        rcl_tx_fault = dmr_ctl__rcl_tx_fault;
+        rcl_rx_fault = dmr_ctl__rcl_rx_fault;
+        dmr_tick = dmr_ctl__dmr_tick;
     end
     
 endmodule // top
@@ -15182,6 +15548,3523 @@ module drcc__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rc
 endmodule // drcc__dmr_check
 
 
+module drcc__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,tick,reset_mode_q,done_dcl,failed_dcl,rx_valid_dcl,rx_ide_dcl,rx_rtr_dcl,rx_dlc_dcl,rx_id_dcl,err_state_dcl,done_rcl,failed_rcl,rx_valid_rcl,rx_ide_rcl,rx_rtr_rcl,rx_dlc_rcl,rx_id_rcl,err_state_rcl,q_count,rd_ide,rd_id,rd_sel,eval_fault,eval_line,eval_tx,eval_deviation,eval_mb,tx_req_dcl,tx_req_rcl,cs_req_dcl,cs_req_rcl,tx_abort_dcl,tx_abort_rcl,restart_dcl,restart_rcl,off_dcl,off_rcl,pop,raise_tx_dcl,raise_tx_rcl,raise_rx_dcl,raise_rx_rcl,raise_req_dcl,raise_req_rcl,key_tx_dcl,key_tx_rcl,key_rx_dcl,key_rx_rcl,key_req_dcl,key_req_rcl,raise_eval,clear_mailboxes,rx_deliver_dcl,rx_deliver_rcl,acl_switch,tx_done_evt,int_evt,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,status_word,cs_count_word);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  hold;
+    input wire  [15:0] timeout;
+    input wire  [15:0] cs_period;
+    input wire  [15:0] tick_bits;
+    input wire  [15:0] recovery_delay;
+    input wire  [10:0] cs_id_dcl;
+    input wire  [10:0] cs_id_rcl;
+    input wire  tick;
+    input wire  reset_mode_q;
+    input wire  done_dcl;
+    input wire  failed_dcl;
+    input wire  rx_valid_dcl;
+    input wire  rx_ide_dcl;
+    input wire  rx_rtr_dcl;
+    input wire  [3:0] rx_dlc_dcl;
+    input wire  [28:0] rx_id_dcl;
+    input wire  [1:0] err_state_dcl;
+    input wire  done_rcl;
+    input wire  failed_rcl;
+    input wire  rx_valid_rcl;
+    input wire  rx_ide_rcl;
+    input wire  rx_rtr_rcl;
+    input wire  [3:0] rx_dlc_rcl;
+    input wire  [28:0] rx_id_rcl;
+    input wire  [1:0] err_state_rcl;
+    input wire  [3:0] q_count;
+    input wire  rd_ide;
+    input wire  [28:0] rd_id;
+    input wire  rd_sel;
+    input wire  eval_fault;
+    input wire  eval_line;
+    input wire  eval_tx;
+    input wire  eval_deviation;
+    input wire  [3:0] eval_mb;
+    output reg  tx_req_dcl;
+    output reg  tx_req_rcl;
+    output reg  cs_req_dcl;
+    output reg  cs_req_rcl;
+    output reg  tx_abort_dcl;
+    output reg  tx_abort_rcl;
+    output reg  restart_dcl;
+    output reg  restart_rcl;
+    output reg  [3:0] off_dcl;
+    output reg  [3:0] off_rcl;
+    output reg  [3:0] pop;
+    output reg  raise_tx_dcl;
+    output reg  raise_tx_rcl;
+    output reg  raise_rx_dcl;
+    output reg  raise_rx_rcl;
+    output reg  raise_req_dcl;
+    output reg  raise_req_rcl;
+    output reg  [29:0] key_tx_dcl;
+    output reg  [29:0] key_tx_rcl;
+    output reg  [29:0] key_rx_dcl;
+    output reg  [29:0] key_rx_rcl;
+    output reg  [29:0] key_req_dcl;
+    output reg  [29:0] key_req_rcl;
+    output reg  raise_eval;
+    output reg  clear_mailboxes;
+    output reg  rx_deliver_dcl;
+    output reg  rx_deliver_rcl;
+    output reg  acl_switch;
+    output reg  tx_done_evt;
+    output reg  int_evt;
+    output reg  [1:0] dmr_state;
+    output reg  acl;
+    output reg  dcl_tx_fault;
+    output reg  dcl_rx_fault;
+    output reg  rcl_tx_fault;
+    output reg  rcl_rx_fault;
+    output reg  dmr_tick;
+    output reg  [31:0] status_word;
+    output reg  [31:0] cs_count_word;
+    
+    // Stub signals
+    reg  time_base__clk;
+    reg  time_base__clear;
+    reg  [15:0] time_base__tick_bits;
+    reg  [15:0] time_base__cs_period;
+    reg  time_base__tick;
+    wire  time_base__dmr_tick;
+    wire  time_base__period_due;
+    reg  cs_rx__clk;
+    reg  cs_rx__rst;
+    reg  cs_rx__run;
+    reg  [10:0] cs_rx__cs_id_dcl;
+    reg  [10:0] cs_rx__cs_id_rcl;
+    reg  cs_rx__rx_valid_dcl;
+    reg  cs_rx__rx_ide_dcl;
+    reg  cs_rx__rx_rtr_dcl;
+    reg  [3:0] cs_rx__rx_dlc_dcl;
+    reg  [28:0] cs_rx__rx_id_dcl;
+    reg  cs_rx__rx_valid_rcl;
+    reg  cs_rx__rx_ide_rcl;
+    reg  cs_rx__rx_rtr_rcl;
+    reg  [3:0] cs_rx__rx_dlc_rcl;
+    reg  [28:0] cs_rx__rx_id_rcl;
+    wire  cs_rx__deliver_dcl;
+    wire  cs_rx__deliver_rcl;
+    wire  [31:0] cs_rx__cs_count_word;
+    reg  dcl__clk;
+    reg  dcl__rst;
+    reg  dcl__hold;
+    reg  [15:0] dcl__timeout;
+    reg  [15:0] dcl__recovery_delay;
+    reg  dcl__dmr_tick;
+    reg  dcl__period_due;
+    reg  dcl__mine;
+    reg  dcl__more;
+    reg  [29:0] dcl__rd_key;
+    reg  dcl__reset_mode_q;
+    reg  dcl__done;
+    reg  dcl__failed;
+    reg  [1:0] dcl__err_state;
+    wire  dcl__tx_req;
+    wire  dcl__cs_req;
+    wire  dcl__abort;
+    wire  dcl__restart;
+    reg  dcl__other_sends;
+    reg  dcl__eval_here;
+    reg  dcl__eval_tx;
+    wire  dcl__raise_req;
+    wire  dcl__raise_tx;
+    wire  [29:0] dcl__key_tx;
+    wire  dcl__complete;
+    wire  dcl__cs_fail;
+    wire  dcl__busoff;
+    wire  dcl__against;
+    wire  dcl__sends_next;
+    wire  dcl__recovered;
+    wire  dcl__tx_fault;
+    wire  dcl__rx_fault;
+    reg  rcl__clk;
+    reg  rcl__rst;
+    reg  rcl__hold;
+    reg  [15:0] rcl__timeout;
+    reg  [15:0] rcl__recovery_delay;
+    reg  rcl__dmr_tick;
+    reg  rcl__period_due;
+    reg  rcl__mine;
+    reg  rcl__more;
+    reg  [29:0] rcl__rd_key;
+    reg  rcl__reset_mode_q;
+    reg  rcl__done;
+    reg  rcl__failed;
+    reg  [1:0] rcl__err_state;
+    wire  rcl__tx_req;
+    wire  rcl__cs_req;
+    wire  rcl__abort;
+    wire  rcl__restart;
+    reg  rcl__other_sends;
+    reg  rcl__eval_here;
+    reg  rcl__eval_tx;
+    wire  rcl__raise_req;
+    wire  rcl__raise_tx;
+    wire  [29:0] rcl__key_tx;
+    wire  rcl__complete;
+    wire  rcl__cs_fail;
+    wire  rcl__busoff;
+    wire  rcl__against;
+    wire  rcl__sends_next;
+    wire  rcl__recovered;
+    wire  rcl__tx_fault;
+    wire  rcl__rx_fault;
+    reg  offsets__clk;
+    reg  offsets__clear;
+    reg  [3:0] offsets__q_count;
+    wire  [3:0] offsets__pop;
+    wire  [3:0] offsets__off_dcl;
+    wire  [3:0] offsets__off_rcl;
+    wire  offsets__more_dcl;
+    wire  offsets__more_rcl;
+    reg  offsets__tx_fault_dcl;
+    reg  offsets__tx_fault_rcl;
+    reg  offsets__sends_next_dcl;
+    reg  offsets__sends_next_rcl;
+    reg  offsets__complete_dcl;
+    reg  offsets__complete_rcl;
+    wire  offsets__first;
+    reg  status__clk;
+    reg  status__rst;
+    reg  status__hold;
+    reg  status__tx_fault_dcl;
+    reg  status__rx_fault_dcl;
+    reg  status__tx_fault_rcl;
+    reg  status__rx_fault_rcl;
+    reg  status__against_dcl;
+    reg  status__against_rcl;
+    reg  status__cs_fail_dcl;
+    reg  status__cs_fail_rcl;
+    reg  status__busoff_dcl;
+    reg  status__busoff_rcl;
+    reg  status__eval_fault;
+    reg  status__eval_line;
+    reg  status__eval_deviation;
+    reg  [3:0] status__eval_mb;
+    wire  status__acl;
+    wire  [1:0] status__dmr_state;
+    wire  status__acl_switch;
+    wire  status__int_evt;
+    wire  [31:0] status__status_word;
+    
+    // Local signals
+    reg  clear;
+    reg  run;
+    reg  [29:0] rd_key;
+    
+    // Sub module instances
+    drcc__dmr_ctl__time_base time_base(
+        .clk(time_base__clk),
+        .clear(time_base__clear),
+        .tick_bits(time_base__tick_bits),
+        .cs_period(time_base__cs_period),
+        .tick(time_base__tick),
+        .dmr_tick(time_base__dmr_tick),
+        .period_due(time_base__period_due)
+    );
+    drcc__dmr_ctl__cs_rx cs_rx(
+        .clk(cs_rx__clk),
+        .rst(cs_rx__rst),
+        .run(cs_rx__run),
+        .cs_id_dcl(cs_rx__cs_id_dcl),
+        .cs_id_rcl(cs_rx__cs_id_rcl),
+        .rx_valid_dcl(cs_rx__rx_valid_dcl),
+        .rx_ide_dcl(cs_rx__rx_ide_dcl),
+        .rx_rtr_dcl(cs_rx__rx_rtr_dcl),
+        .rx_dlc_dcl(cs_rx__rx_dlc_dcl),
+        .rx_id_dcl(cs_rx__rx_id_dcl),
+        .rx_valid_rcl(cs_rx__rx_valid_rcl),
+        .rx_ide_rcl(cs_rx__rx_ide_rcl),
+        .rx_rtr_rcl(cs_rx__rx_rtr_rcl),
+        .rx_dlc_rcl(cs_rx__rx_dlc_rcl),
+        .rx_id_rcl(cs_rx__rx_id_rcl),
+        .deliver_dcl(cs_rx__deliver_dcl),
+        .deliver_rcl(cs_rx__deliver_rcl),
+        .cs_count_word(cs_rx__cs_count_word)
+    );
+    drcc__dmr_ctl__dcl dcl(
+        .clk(dcl__clk),
+        .rst(dcl__rst),
+        .hold(dcl__hold),
+        .timeout(dcl__timeout),
+        .recovery_delay(dcl__recovery_delay),
+        .dmr_tick(dcl__dmr_tick),
+        .period_due(dcl__period_due),
+        .mine(dcl__mine),
+        .more(dcl__more),
+        .rd_key(dcl__rd_key),
+        .reset_mode_q(dcl__reset_mode_q),
+        .done(dcl__done),
+        .failed(dcl__failed),
+        .err_state(dcl__err_state),
+        .tx_req(dcl__tx_req),
+        .cs_req(dcl__cs_req),
+        .abort(dcl__abort),
+        .restart(dcl__restart),
+        .other_sends(dcl__other_sends),
+        .eval_here(dcl__eval_here),
+        .eval_tx(dcl__eval_tx),
+        .raise_req(dcl__raise_req),
+        .raise_tx(dcl__raise_tx),
+        .key_tx(dcl__key_tx),
+        .complete(dcl__complete),
+        .cs_fail(dcl__cs_fail),
+        .busoff(dcl__busoff),
+        .against(dcl__against),
+        .sends_next(dcl__sends_next),
+        .recovered(dcl__recovered),
+        .tx_fault(dcl__tx_fault),
+        .rx_fault(dcl__rx_fault)
+    );
+    drcc__dmr_ctl__rcl rcl(
+        .clk(rcl__clk),
+        .rst(rcl__rst),
+        .hold(rcl__hold),
+        .timeout(rcl__timeout),
+        .recovery_delay(rcl__recovery_delay),
+        .dmr_tick(rcl__dmr_tick),
+        .period_due(rcl__period_due),
+        .mine(rcl__mine),
+        .more(rcl__more),
+        .rd_key(rcl__rd_key),
+        .reset_mode_q(rcl__reset_mode_q),
+        .done(rcl__done),
+        .failed(rcl__failed),
+        .err_state(rcl__err_state),
+        .tx_req(rcl__tx_req),
+        .cs_req(rcl__cs_req),
+        .abort(rcl__abort),
+        .restart(rcl__restart),
+        .other_sends(rcl__other_sends),
+        .eval_here(rcl__eval_here),
+        .eval_tx(rcl__eval_tx),
+        .raise_req(rcl__raise_req),
+        .raise_tx(rcl__raise_tx),
+        .key_tx(rcl__key_tx),
+        .complete(rcl__complete),
+        .cs_fail(rcl__cs_fail),
+        .busoff(rcl__busoff),
+        .against(rcl__against),
+        .sends_next(rcl__sends_next),
+        .recovered(rcl__recovered),
+        .tx_fault(rcl__tx_fault),
+        .rx_fault(rcl__rx_fault)
+    );
+    drcc__dmr_ctl__offsets offsets(
+        .clk(offsets__clk),
+        .clear(offsets__clear),
+        .q_count(offsets__q_count),
+        .pop(offsets__pop),
+        .off_dcl(offsets__off_dcl),
+        .off_rcl(offsets__off_rcl),
+        .more_dcl(offsets__more_dcl),
+        .more_rcl(offsets__more_rcl),
+        .tx_fault_dcl(offsets__tx_fault_dcl),
+        .tx_fault_rcl(offsets__tx_fault_rcl),
+        .sends_next_dcl(offsets__sends_next_dcl),
+        .sends_next_rcl(offsets__sends_next_rcl),
+        .complete_dcl(offsets__complete_dcl),
+        .complete_rcl(offsets__complete_rcl),
+        .first(offsets__first)
+    );
+    drcc__dmr_ctl__status status(
+        .clk(status__clk),
+        .rst(status__rst),
+        .hold(status__hold),
+        .tx_fault_dcl(status__tx_fault_dcl),
+        .rx_fault_dcl(status__rx_fault_dcl),
+        .tx_fault_rcl(status__tx_fault_rcl),
+        .rx_fault_rcl(status__rx_fault_rcl),
+        .against_dcl(status__against_dcl),
+        .against_rcl(status__against_rcl),
+        .cs_fail_dcl(status__cs_fail_dcl),
+        .cs_fail_rcl(status__cs_fail_rcl),
+        .busoff_dcl(status__busoff_dcl),
+        .busoff_rcl(status__busoff_rcl),
+        .eval_fault(status__eval_fault),
+        .eval_line(status__eval_line),
+        .eval_deviation(status__eval_deviation),
+        .eval_mb(status__eval_mb),
+        .acl(status__acl),
+        .dmr_state(status__dmr_state),
+        .acl_switch(status__acl_switch),
+        .int_evt(status__int_evt),
+        .status_word(status__status_word)
+    );
+    
+    // Update code
+    always @(*) begin
+        clear = rst | hold;
+        run = ~clear;
+        rd_key = ((rd_id) & 30'h3fffffff) | (((rd_ide) & 30'h3fffffff) << 32'h1d);
+        time_base__clk = clk;
+        time_base__clear = clear;
+        time_base__tick_bits = tick_bits;
+        time_base__cs_period = cs_period;
+        time_base__tick = tick;
+        cs_rx__clk = clk;
+        cs_rx__rst = rst;
+        cs_rx__run = run;
+        cs_rx__cs_id_dcl = cs_id_dcl;
+        cs_rx__cs_id_rcl = cs_id_rcl;
+        cs_rx__rx_valid_dcl = rx_valid_dcl;
+        cs_rx__rx_ide_dcl = rx_ide_dcl;
+        cs_rx__rx_rtr_dcl = rx_rtr_dcl;
+        cs_rx__rx_dlc_dcl = rx_dlc_dcl;
+        cs_rx__rx_id_dcl = rx_id_dcl;
+        cs_rx__rx_valid_rcl = rx_valid_rcl;
+        cs_rx__rx_ide_rcl = rx_ide_rcl;
+        cs_rx__rx_rtr_rcl = rx_rtr_rcl;
+        cs_rx__rx_dlc_rcl = rx_dlc_rcl;
+        cs_rx__rx_id_rcl = rx_id_rcl;
+        dcl__clk = clk;
+        dcl__rst = rst;
+        dcl__hold = hold;
+        dcl__timeout = timeout;
+        dcl__recovery_delay = recovery_delay;
+        dcl__dmr_tick = time_base__dmr_tick;
+        dcl__period_due = time_base__period_due;
+        dcl__mine = ~rd_sel;
+        dcl__more = offsets__more_dcl;
+        dcl__rd_key = rd_key;
+        dcl__reset_mode_q = reset_mode_q;
+        dcl__done = done_dcl;
+        dcl__failed = failed_dcl;
+        dcl__err_state = err_state_dcl;
+        dcl__other_sends = ~rcl__tx_fault;
+        dcl__eval_here = eval_fault & ~eval_line;
+        dcl__eval_tx = eval_tx;
+        rcl__clk = clk;
+        rcl__rst = rst;
+        rcl__hold = hold;
+        rcl__timeout = timeout;
+        rcl__recovery_delay = recovery_delay;
+        rcl__dmr_tick = time_base__dmr_tick;
+        rcl__period_due = time_base__period_due;
+        rcl__mine = rd_sel;
+        rcl__more = offsets__more_rcl;
+        rcl__rd_key = rd_key;
+        rcl__reset_mode_q = reset_mode_q;
+        rcl__done = done_rcl;
+        rcl__failed = failed_rcl;
+        rcl__err_state = err_state_rcl;
+        rcl__other_sends = ~dcl__tx_fault;
+        rcl__eval_here = eval_fault & eval_line;
+        rcl__eval_tx = eval_tx;
+        offsets__clk = clk;
+        offsets__clear = clear;
+        offsets__q_count = q_count;
+        offsets__tx_fault_dcl = dcl__tx_fault;
+        offsets__tx_fault_rcl = rcl__tx_fault;
+        offsets__sends_next_dcl = dcl__sends_next;
+        offsets__sends_next_rcl = rcl__sends_next;
+        offsets__complete_dcl = dcl__complete;
+        offsets__complete_rcl = rcl__complete;
+        status__clk = clk;
+        status__rst = rst;
+        status__hold = hold;
+        status__tx_fault_dcl = dcl__tx_fault;
+        status__rx_fault_dcl = dcl__rx_fault;
+        status__tx_fault_rcl = rcl__tx_fault;
+        status__rx_fault_rcl = rcl__rx_fault;
+        status__against_dcl = dcl__against;
+        status__against_rcl = rcl__against;
+        status__cs_fail_dcl = dcl__cs_fail;
+        status__cs_fail_rcl = rcl__cs_fail;
+        status__busoff_dcl = dcl__busoff;
+        status__busoff_rcl = rcl__busoff;
+        status__eval_fault = eval_fault;
+        status__eval_line = eval_line;
+        status__eval_deviation = eval_deviation;
+        status__eval_mb = eval_mb;
+        tx_req_dcl = dcl__tx_req;
+        tx_req_rcl = rcl__tx_req;
+        cs_req_dcl = dcl__cs_req;
+        cs_req_rcl = rcl__cs_req;
+        tx_abort_dcl = dcl__abort;
+        tx_abort_rcl = rcl__abort;
+        restart_dcl = dcl__restart;
+        restart_rcl = rcl__restart;
+        off_dcl = offsets__off_dcl;
+        off_rcl = offsets__off_rcl;
+        pop = offsets__pop;
+        raise_tx_dcl = run & dcl__raise_tx;
+        raise_tx_rcl = run & rcl__raise_tx;
+        raise_rx_dcl = cs_rx__deliver_dcl;
+        raise_rx_rcl = cs_rx__deliver_rcl;
+        raise_req_dcl = run & dcl__raise_req;
+        raise_req_rcl = run & rcl__raise_req;
+        key_tx_dcl = dcl__key_tx;
+        key_tx_rcl = rcl__key_tx;
+        key_rx_dcl = ((rx_id_dcl) & 30'h3fffffff) | (((rx_ide_dcl) & 30'h3fffffff) << 32'h1d);
+        key_rx_rcl = ((rx_id_rcl) & 30'h3fffffff) | (((rx_ide_rcl) & 30'h3fffffff) << 32'h1d);
+        key_req_dcl = rd_key;
+        key_req_rcl = rd_key;
+        raise_eval = time_base__dmr_tick;
+        clear_mailboxes = run & (dcl__recovered | rcl__recovered);
+        rx_deliver_dcl = cs_rx__deliver_dcl;
+        rx_deliver_rcl = cs_rx__deliver_rcl;
+        acl_switch = status__acl_switch;
+        tx_done_evt = offsets__first;
+        int_evt = status__int_evt;
+        dmr_state = status__dmr_state;
+        acl = status__acl;
+        dcl_tx_fault = dcl__tx_fault;
+        dcl_rx_fault = dcl__rx_fault;
+        rcl_tx_fault = rcl__tx_fault;
+        rcl_rx_fault = rcl__rx_fault;
+        dmr_tick = time_base__dmr_tick;
+        status_word = status__status_word;
+        cs_count_word = cs_rx__cs_count_word;
+    end
+    
+endmodule // drcc__dmr_ctl
+
+
+module drcc__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_ide_dcl,rx_rtr_dcl,rx_dlc_dcl,rx_id_dcl,rx_valid_rcl,rx_ide_rcl,rx_rtr_rcl,rx_dlc_rcl,rx_id_rcl,deliver_dcl,deliver_rcl,cs_count_word);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  run;
+    input wire  [10:0] cs_id_dcl;
+    input wire  [10:0] cs_id_rcl;
+    input wire  rx_valid_dcl;
+    input wire  rx_ide_dcl;
+    input wire  rx_rtr_dcl;
+    input wire  [3:0] rx_dlc_dcl;
+    input wire  [28:0] rx_id_dcl;
+    input wire  rx_valid_rcl;
+    input wire  rx_ide_rcl;
+    input wire  rx_rtr_rcl;
+    input wire  [3:0] rx_dlc_rcl;
+    input wire  [28:0] rx_id_rcl;
+    output reg  deliver_dcl;
+    output reg  deliver_rcl;
+    output reg  [31:0] cs_count_word;
+    
+    // Constant declarations
+    localparam  zero4 = 4'h0;
+    localparam  zero18 = 18'b0;
+    
+    // Stub signals
+    reg  dcl_good__clk;
+    reg  dcl_good__rst;
+    reg  dcl_good__inc;
+    wire  [7:0] dcl_good__count;
+    reg  dcl_bad__clk;
+    reg  dcl_bad__rst;
+    reg  dcl_bad__inc;
+    wire  [7:0] dcl_bad__count;
+    reg  rcl_good__clk;
+    reg  rcl_good__rst;
+    reg  rcl_good__inc;
+    wire  [7:0] rcl_good__count;
+    reg  rcl_bad__clk;
+    reg  rcl_bad__rst;
+    reg  rcl_bad__inc;
+    wire  [7:0] rcl_bad__count;
+    
+    // Local signals
+    reg  base_dcl;
+    reg  base_rcl;
+    reg  dcl_id_dcl;
+    reg  dcl_id_rcl;
+    reg  rcl_id_dcl;
+    reg  rcl_id_rcl;
+    reg  cs_dcl;
+    reg  cs_rcl;
+    
+    // Sub module instances
+    drcc__dmr_ctl__cs_rx__dcl_good dcl_good(
+        .clk(dcl_good__clk),
+        .rst(dcl_good__rst),
+        .inc(dcl_good__inc),
+        .count(dcl_good__count)
+    );
+    drcc__dmr_ctl__cs_rx__dcl_bad dcl_bad(
+        .clk(dcl_bad__clk),
+        .rst(dcl_bad__rst),
+        .inc(dcl_bad__inc),
+        .count(dcl_bad__count)
+    );
+    drcc__dmr_ctl__cs_rx__rcl_good rcl_good(
+        .clk(rcl_good__clk),
+        .rst(rcl_good__rst),
+        .inc(rcl_good__inc),
+        .count(rcl_good__count)
+    );
+    drcc__dmr_ctl__cs_rx__rcl_bad rcl_bad(
+        .clk(rcl_bad__clk),
+        .rst(rcl_bad__rst),
+        .inc(rcl_bad__inc),
+        .count(rcl_bad__count)
+    );
+    
+    // Update code
+    always @(*) begin
+        dcl_good__clk = clk;
+        dcl_bad__clk = clk;
+        rcl_good__clk = clk;
+        rcl_bad__clk = clk;
+        base_dcl = rx_valid_dcl & ~rx_ide_dcl & ~rx_rtr_dcl & (rx_dlc_dcl == zero4) & (rx_id_dcl[(32'hb)+:(18)] == zero18);
+        dcl_id_dcl = rx_id_dcl[(32'h0)+:(11)] == cs_id_dcl;
+        dcl_id_rcl = rx_id_dcl[(32'h0)+:(11)] == cs_id_rcl;
+        cs_dcl = base_dcl & (dcl_id_dcl | dcl_id_rcl);
+        base_rcl = rx_valid_rcl & ~rx_ide_rcl & ~rx_rtr_rcl & (rx_dlc_rcl == zero4) & (rx_id_rcl[(32'hb)+:(18)] == zero18);
+        rcl_id_dcl = rx_id_rcl[(32'h0)+:(11)] == cs_id_dcl;
+        rcl_id_rcl = rx_id_rcl[(32'h0)+:(11)] == cs_id_rcl;
+        cs_rcl = base_rcl & (rcl_id_dcl | rcl_id_rcl);
+        dcl_good__inc = run & cs_dcl & dcl_id_dcl;
+        dcl_bad__inc = run & cs_dcl & ~dcl_id_dcl;
+        rcl_good__inc = run & cs_rcl & rcl_id_rcl;
+        rcl_bad__inc = run & cs_rcl & ~rcl_id_rcl;
+        dcl_good__rst = rst;
+        dcl_bad__rst = rst;
+        rcl_good__rst = rst;
+        rcl_bad__rst = rst;
+        deliver_dcl = run & rx_valid_dcl & ~cs_dcl;
+        deliver_rcl = run & rx_valid_rcl & ~cs_rcl;
+        cs_count_word = ((dcl_good__count) & 32'hffffffff) | (((dcl_bad__count) & 32'hffffffff) << 32'h8) | (((rcl_good__count) & 32'hffffffff) << 32'h10) | (((rcl_bad__count) & 32'hffffffff) << 32'h18);
+    end
+    
+endmodule // drcc__dmr_ctl__cs_rx
+
+
+module drcc__dmr_ctl__cs_rx__dcl_bad(clk,rst,inc,count);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  inc;
+    output reg  [7:0] count;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Stub signals
+    reg  [7:0] q__d;
+    wire  [7:0] q__q;
+    reg  q__clock;
+    
+    // Sub module instances
+    drcc__dmr_ctl__cs_rx__dcl_bad__q q(
+        .d(q__d),
+        .q(q__q),
+        .clock(q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        q__clock = clk;
+        q__d = q__q;
+        if (inc & (q__q != max8)) begin
+            q__d = q__q + one8;
+        end
+        if (rst) begin
+            q__d = zero8;
+        end
+        count = q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__cs_rx__dcl_bad
+
+
+module drcc__dmr_ctl__cs_rx__dcl_bad__q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__cs_rx__dcl_bad__q
+
+
+module drcc__dmr_ctl__cs_rx__dcl_good(clk,rst,inc,count);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  inc;
+    output reg  [7:0] count;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Stub signals
+    reg  [7:0] q__d;
+    wire  [7:0] q__q;
+    reg  q__clock;
+    
+    // Sub module instances
+    drcc__dmr_ctl__cs_rx__dcl_good__q q(
+        .d(q__d),
+        .q(q__q),
+        .clock(q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        q__clock = clk;
+        q__d = q__q;
+        if (inc & (q__q != max8)) begin
+            q__d = q__q + one8;
+        end
+        if (rst) begin
+            q__d = zero8;
+        end
+        count = q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__cs_rx__dcl_good
+
+
+module drcc__dmr_ctl__cs_rx__dcl_good__q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__cs_rx__dcl_good__q
+
+
+module drcc__dmr_ctl__cs_rx__rcl_bad(clk,rst,inc,count);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  inc;
+    output reg  [7:0] count;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Stub signals
+    reg  [7:0] q__d;
+    wire  [7:0] q__q;
+    reg  q__clock;
+    
+    // Sub module instances
+    drcc__dmr_ctl__cs_rx__rcl_bad__q q(
+        .d(q__d),
+        .q(q__q),
+        .clock(q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        q__clock = clk;
+        q__d = q__q;
+        if (inc & (q__q != max8)) begin
+            q__d = q__q + one8;
+        end
+        if (rst) begin
+            q__d = zero8;
+        end
+        count = q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__cs_rx__rcl_bad
+
+
+module drcc__dmr_ctl__cs_rx__rcl_bad__q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__cs_rx__rcl_bad__q
+
+
+module drcc__dmr_ctl__cs_rx__rcl_good(clk,rst,inc,count);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  inc;
+    output reg  [7:0] count;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Stub signals
+    reg  [7:0] q__d;
+    wire  [7:0] q__q;
+    reg  q__clock;
+    
+    // Sub module instances
+    drcc__dmr_ctl__cs_rx__rcl_good__q q(
+        .d(q__d),
+        .q(q__q),
+        .clock(q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        q__clock = clk;
+        q__d = q__q;
+        if (inc & (q__q != max8)) begin
+            q__d = q__q + one8;
+        end
+        if (rst) begin
+            q__d = zero8;
+        end
+        count = q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__cs_rx__rcl_good
+
+
+module drcc__dmr_ctl__cs_rx__rcl_good__q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__cs_rx__rcl_good__q
+
+
+module drcc__dmr_ctl__dcl(clk,rst,hold,timeout,recovery_delay,dmr_tick,period_due,mine,more,rd_key,reset_mode_q,done,failed,err_state,tx_req,cs_req,abort,restart,other_sends,eval_here,eval_tx,raise_req,raise_tx,key_tx,complete,cs_fail,busoff,against,sends_next,recovered,tx_fault,rx_fault);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  hold;
+    input wire  [15:0] timeout;
+    input wire  [15:0] recovery_delay;
+    input wire  dmr_tick;
+    input wire  period_due;
+    input wire  mine;
+    input wire  more;
+    input wire  [29:0] rd_key;
+    input wire  reset_mode_q;
+    input wire  done;
+    input wire  failed;
+    input wire  [1:0] err_state;
+    output reg  tx_req;
+    output reg  cs_req;
+    output reg  abort;
+    output reg  restart;
+    input wire  other_sends;
+    input wire  eval_here;
+    input wire  eval_tx;
+    output reg  raise_req;
+    output reg  raise_tx;
+    output reg  [29:0] key_tx;
+    output reg  complete;
+    output reg  cs_fail;
+    output reg  busoff;
+    output reg  against;
+    output reg  sends_next;
+    output reg  recovered;
+    output reg  tx_fault;
+    output reg  rx_fault;
+    
+    // Constant declarations
+    localparam  busoff2 = 2'b10;
+    localparam  one16 = 16'h1;
+    localparam  zero16 = 16'h0;
+    localparam  zero30 = 30'h0;
+    
+    // Stub signals
+    reg  req_q__d;
+    wire  req_q__q;
+    reg  req_q__clock;
+    reg  busy_q__d;
+    wire  busy_q__q;
+    reg  busy_q__clock;
+    reg  cs_req_q__d;
+    wire  cs_req_q__q;
+    reg  cs_req_q__clock;
+    reg  cs_busy_q__d;
+    wire  cs_busy_q__q;
+    reg  cs_busy_q__clock;
+    reg  cs_live_q__d;
+    wire  cs_live_q__q;
+    reg  cs_live_q__clock;
+    reg  cs_due_q__d;
+    wire  cs_due_q__q;
+    reg  cs_due_q__clock;
+    reg  [15:0] timer_q__d;
+    wire  [15:0] timer_q__q;
+    reg  timer_q__clock;
+    reg  abort_q__d;
+    wire  abort_q__q;
+    reg  abort_q__clock;
+    reg  [29:0] key_sent_q__d;
+    wire  [29:0] key_sent_q__q;
+    reg  key_sent_q__clock;
+    reg  tx_fault_q__d;
+    wire  tx_fault_q__q;
+    reg  tx_fault_q__clock;
+    reg  rx_fault_q__d;
+    wire  rx_fault_q__q;
+    reg  rx_fault_q__clock;
+    reg  rec_pending_q__d;
+    wire  rec_pending_q__q;
+    reg  rec_pending_q__clock;
+    reg  restart_q__d;
+    wire  restart_q__q;
+    reg  restart_q__clock;
+    reg  busoff_q__d;
+    wire  busoff_q__q;
+    reg  busoff_q__clock;
+    
+    // Local signals
+    reg  free;
+    reg  cs_mode;
+    reg  take_cs;
+    reg  take_req;
+    reg  is_busoff;
+    reg  [15:0] timer_dec;
+    reg  timer_one;
+    reg  success;
+    reg  tx_set;
+    reg  rx_set;
+    reg  against_l;
+    
+    // Sub module instances
+    drcc__dmr_ctl__dcl__req_q req_q(
+        .d(req_q__d),
+        .q(req_q__q),
+        .clock(req_q__clock)
+    );
+    drcc__dmr_ctl__dcl__busy_q busy_q(
+        .d(busy_q__d),
+        .q(busy_q__q),
+        .clock(busy_q__clock)
+    );
+    drcc__dmr_ctl__dcl__cs_req_q cs_req_q(
+        .d(cs_req_q__d),
+        .q(cs_req_q__q),
+        .clock(cs_req_q__clock)
+    );
+    drcc__dmr_ctl__dcl__cs_busy_q cs_busy_q(
+        .d(cs_busy_q__d),
+        .q(cs_busy_q__q),
+        .clock(cs_busy_q__clock)
+    );
+    drcc__dmr_ctl__dcl__cs_live_q cs_live_q(
+        .d(cs_live_q__d),
+        .q(cs_live_q__q),
+        .clock(cs_live_q__clock)
+    );
+    drcc__dmr_ctl__dcl__cs_due_q cs_due_q(
+        .d(cs_due_q__d),
+        .q(cs_due_q__q),
+        .clock(cs_due_q__clock)
+    );
+    drcc__dmr_ctl__dcl__timer_q timer_q(
+        .d(timer_q__d),
+        .q(timer_q__q),
+        .clock(timer_q__clock)
+    );
+    drcc__dmr_ctl__dcl__abort_q abort_q(
+        .d(abort_q__d),
+        .q(abort_q__q),
+        .clock(abort_q__clock)
+    );
+    drcc__dmr_ctl__dcl__key_sent_q key_sent_q(
+        .d(key_sent_q__d),
+        .q(key_sent_q__q),
+        .clock(key_sent_q__clock)
+    );
+    drcc__dmr_ctl__dcl__tx_fault_q tx_fault_q(
+        .d(tx_fault_q__d),
+        .q(tx_fault_q__q),
+        .clock(tx_fault_q__clock)
+    );
+    drcc__dmr_ctl__dcl__rx_fault_q rx_fault_q(
+        .d(rx_fault_q__d),
+        .q(rx_fault_q__q),
+        .clock(rx_fault_q__clock)
+    );
+    drcc__dmr_ctl__dcl__rec_pending_q rec_pending_q(
+        .d(rec_pending_q__d),
+        .q(rec_pending_q__q),
+        .clock(rec_pending_q__clock)
+    );
+    drcc__dmr_ctl__dcl__restart_q restart_q(
+        .d(restart_q__d),
+        .q(restart_q__q),
+        .clock(restart_q__clock)
+    );
+    drcc__dmr_ctl__dcl__busoff_q busoff_q(
+        .d(busoff_q__d),
+        .q(busoff_q__q),
+        .clock(busoff_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        req_q__clock = clk;
+        busy_q__clock = clk;
+        cs_req_q__clock = clk;
+        cs_busy_q__clock = clk;
+        cs_live_q__clock = clk;
+        cs_due_q__clock = clk;
+        timer_q__clock = clk;
+        abort_q__clock = clk;
+        key_sent_q__clock = clk;
+        tx_fault_q__clock = clk;
+        rx_fault_q__clock = clk;
+        rec_pending_q__clock = clk;
+        restart_q__clock = clk;
+        busoff_q__clock = clk;
+        req_q__d = req_q__q;
+        busy_q__d = busy_q__q;
+        cs_req_q__d = cs_req_q__q;
+        cs_busy_q__d = cs_busy_q__q;
+        cs_live_q__d = cs_live_q__q;
+        cs_due_q__d = cs_due_q__q;
+        timer_q__d = timer_q__q;
+        abort_q__d = abort_q__q;
+        key_sent_q__d = key_sent_q__q;
+        tx_fault_q__d = tx_fault_q__q;
+        rx_fault_q__d = rx_fault_q__q;
+        rec_pending_q__d = rec_pending_q__q;
+        restart_q__d = restart_q__q;
+        busoff_q__d = busoff_q__q;
+        free = ~busy_q__q & ~req_q__q & ~cs_busy_q__q & ~cs_req_q__q & ~reset_mode_q & ~restart_q__q & ~rec_pending_q__q;
+        cs_mode = cs_busy_q__q & cs_live_q__q;
+        take_cs = mine & cs_due_q__q & free;
+        take_req = mine & ~tx_fault_q__q & more & ~cs_due_q__q & free;
+        timer_one = timer_q__q == one16;
+        timer_dec = timer_q__q - one16;
+        is_busoff = err_state == busoff2;
+        cs_req_q__d = take_cs;
+        req_q__d = take_req;
+        abort_q__d = 1'b0;
+        restart_q__d = 1'b0;
+        if (take_cs) begin
+            cs_busy_q__d = 1'b1;
+            cs_due_q__d = 1'b0;
+            cs_live_q__d = 1'b1;
+            timer_q__d = timeout;
+        end
+        if (take_req) begin
+            busy_q__d = 1'b1;
+        end
+        if (req_q__q) begin
+            key_sent_q__d = rd_key;
+        end
+        complete = done & ~cs_busy_q__q & busy_q__q & ~tx_fault_q__q;
+        if (done) begin
+            if (cs_busy_q__q) begin
+                cs_busy_q__d = 1'b0;
+            end
+            else if (busy_q__q) begin
+                busy_q__d = 1'b0;
+            end
+        end
+        else if (failed) begin
+            if (cs_busy_q__q) begin
+                cs_busy_q__d = 1'b0;
+            end
+            else begin
+                busy_q__d = 1'b0;
+            end
+        end
+        cs_fail = cs_mode & dmr_tick & timer_one;
+        if (cs_mode & dmr_tick & (timer_q__q != zero16)) begin
+            timer_q__d = timer_dec;
+        end
+        success = done & cs_mode;
+        recovered = success & (tx_fault_q__q | rx_fault_q__q);
+        if (success) begin
+            tx_fault_q__d = 1'b0;
+            rx_fault_q__d = 1'b0;
+        end
+        if ((done | failed) & cs_mode) begin
+            timer_q__d = zero16;
+        end
+        busoff = is_busoff & ~busoff_q__q;
+        busoff_q__d = is_busoff;
+        if (~cs_mode & (tx_fault_q__q | rx_fault_q__q) & dmr_tick & (timer_q__q != zero16)) begin
+            timer_q__d = timer_dec;
+            if (timer_one) begin
+                rec_pending_q__d = 1'b1;
+                cs_due_q__d = 1'b1;
+            end
+        end
+        if (rec_pending_q__q & ~busy_q__q & ~cs_busy_q__q & ~is_busoff) begin
+            rec_pending_q__d = 1'b0;
+            restart_q__d = 1'b1;
+        end
+        if (period_due & ~tx_fault_q__q & ~rx_fault_q__q & ~cs_due_q__q & ~cs_busy_q__q) begin
+            cs_due_q__d = 1'b1;
+        end
+        tx_set = cs_fail | busoff | (eval_here & eval_tx);
+        rx_set = eval_here & ~eval_tx;
+        against_l = tx_set | (rx_set & ~tx_fault_q__q);
+        if (rx_set) begin
+            rx_fault_q__d = 1'b1;
+        end
+        if (tx_set) begin
+            tx_fault_q__d = 1'b1;
+            if (busy_q__q) begin
+                abort_q__d = 1'b1;
+            end
+        end
+        if (against_l) begin
+            timer_q__d = recovery_delay;
+            cs_due_q__d = 1'b0;
+            cs_live_q__d = 1'b0;
+            rec_pending_q__d = 1'b0;
+            if (cs_busy_q__q) begin
+                abort_q__d = 1'b1;
+            end
+        end
+        sends_next = ~(tx_set | (tx_fault_q__q & ~success));
+        if (hold | rst) begin
+            req_q__d = 1'b0;
+            busy_q__d = 1'b0;
+            cs_req_q__d = 1'b0;
+            cs_busy_q__d = 1'b0;
+            cs_live_q__d = 1'b0;
+            cs_due_q__d = 1'b1;
+            timer_q__d = zero16;
+            abort_q__d = 1'b0;
+            key_sent_q__d = zero30;
+            tx_fault_q__d = 1'b0;
+            rx_fault_q__d = 1'b0;
+            rec_pending_q__d = 1'b0;
+            restart_q__d = 1'b0;
+        end
+        if (rst) begin
+            busoff_q__d = 1'b0;
+        end
+        tx_req = req_q__q | cs_req_q__q;
+        cs_req = cs_req_q__q;
+        abort = abort_q__q;
+        restart = restart_q__q;
+        raise_req = req_q__q;
+        raise_tx = complete & other_sends;
+        key_tx = key_sent_q__q;
+        against = against_l;
+        tx_fault = tx_fault_q__q;
+        rx_fault = rx_fault_q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__dcl
+
+
+module drcc__dmr_ctl__dcl__abort_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__abort_q
+
+
+module drcc__dmr_ctl__dcl__busoff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__busoff_q
+
+
+module drcc__dmr_ctl__dcl__busy_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__busy_q
+
+
+module drcc__dmr_ctl__dcl__cs_busy_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__cs_busy_q
+
+
+module drcc__dmr_ctl__dcl__cs_due_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__cs_due_q
+
+
+module drcc__dmr_ctl__dcl__cs_live_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__cs_live_q
+
+
+module drcc__dmr_ctl__dcl__cs_req_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__cs_req_q
+
+
+module drcc__dmr_ctl__dcl__key_sent_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__key_sent_q
+
+
+module drcc__dmr_ctl__dcl__rec_pending_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__rec_pending_q
+
+
+module drcc__dmr_ctl__dcl__req_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__req_q
+
+
+module drcc__dmr_ctl__dcl__restart_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__restart_q
+
+
+module drcc__dmr_ctl__dcl__rx_fault_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__rx_fault_q
+
+
+module drcc__dmr_ctl__dcl__timer_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__timer_q
+
+
+module drcc__dmr_ctl__dcl__tx_fault_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__dcl__tx_fault_q
+
+
+module drcc__dmr_ctl__offsets(clk,clear,q_count,pop,off_dcl,off_rcl,more_dcl,more_rcl,tx_fault_dcl,tx_fault_rcl,sends_next_dcl,sends_next_rcl,complete_dcl,complete_rcl,first);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  clear;
+    input wire  [3:0] q_count;
+    output reg  [3:0] pop;
+    output reg  [3:0] off_dcl;
+    output reg  [3:0] off_rcl;
+    output reg  more_dcl;
+    output reg  more_rcl;
+    input wire  tx_fault_dcl;
+    input wire  tx_fault_rcl;
+    input wire  sends_next_dcl;
+    input wire  sends_next_rcl;
+    input wire  complete_dcl;
+    input wire  complete_rcl;
+    output reg  first;
+    
+    // Constant declarations
+    localparam  zero4 = 4'h0;
+    
+    // Stub signals
+    reg  [3:0] off_dcl_q__d;
+    wire  [3:0] off_dcl_q__q;
+    reg  off_dcl_q__clock;
+    reg  [3:0] off_rcl_q__d;
+    wire  [3:0] off_rcl_q__q;
+    reg  off_rcl_q__clock;
+    
+    // Local signals
+    reg  [3:0] base_dcl;
+    reg  [3:0] base_rcl;
+    reg  [3:0] next_dcl;
+    reg  [3:0] next_rcl;
+    reg  [3:0] left;
+    
+    // Sub module instances
+    drcc__dmr_ctl__offsets__off_dcl_q off_dcl_q(
+        .d(off_dcl_q__d),
+        .q(off_dcl_q__q),
+        .clock(off_dcl_q__clock)
+    );
+    drcc__dmr_ctl__offsets__off_rcl_q off_rcl_q(
+        .d(off_rcl_q__d),
+        .q(off_rcl_q__q),
+        .clock(off_rcl_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        off_dcl_q__clock = clk;
+        off_rcl_q__clock = clk;
+        off_dcl_q__d = off_dcl_q__q;
+        off_rcl_q__d = off_rcl_q__q;
+        more_dcl = off_dcl_q__q < q_count;
+        more_rcl = off_rcl_q__q < q_count;
+        first = (complete_dcl & (tx_fault_rcl | (off_dcl_q__q >= off_rcl_q__q))) | (complete_rcl & (tx_fault_dcl | (off_rcl_q__q >= off_dcl_q__q)));
+        base_dcl = zero4;
+        if (sends_next_dcl & ~tx_fault_dcl) begin
+            base_dcl = off_dcl_q__q + ((complete_dcl) & 4'hf);
+        end
+        base_rcl = zero4;
+        if (sends_next_rcl & ~tx_fault_rcl) begin
+            base_rcl = off_rcl_q__q + ((complete_rcl) & 4'hf);
+        end
+        next_dcl = base_dcl;
+        if (tx_fault_dcl) begin
+            next_dcl = zero4;
+            if (sends_next_dcl) begin
+                next_dcl = base_rcl;
+            end
+        end
+        next_rcl = base_rcl;
+        if (tx_fault_rcl) begin
+            next_rcl = zero4;
+            if (sends_next_rcl) begin
+                next_rcl = base_dcl;
+            end
+        end
+        left = next_rcl;
+        if (sends_next_dcl) begin
+            left = next_dcl;
+            if (sends_next_rcl & (next_rcl < next_dcl)) begin
+                left = next_rcl;
+            end
+        end
+        off_dcl_q__d = zero4;
+        if (sends_next_dcl) begin
+            off_dcl_q__d = next_dcl - left;
+        end
+        off_rcl_q__d = zero4;
+        if (sends_next_rcl) begin
+            off_rcl_q__d = next_rcl - left;
+        end
+        pop = left;
+        if (clear) begin
+            off_dcl_q__d = zero4;
+            off_rcl_q__d = zero4;
+            pop = zero4;
+            first = 1'b0;
+        end
+        off_dcl = off_dcl_q__q;
+        off_rcl = off_rcl_q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__offsets
+
+
+module drcc__dmr_ctl__offsets__off_dcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__offsets__off_dcl_q
+
+
+module drcc__dmr_ctl__offsets__off_rcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__offsets__off_rcl_q
+
+
+module drcc__dmr_ctl__rcl(clk,rst,hold,timeout,recovery_delay,dmr_tick,period_due,mine,more,rd_key,reset_mode_q,done,failed,err_state,tx_req,cs_req,abort,restart,other_sends,eval_here,eval_tx,raise_req,raise_tx,key_tx,complete,cs_fail,busoff,against,sends_next,recovered,tx_fault,rx_fault);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  hold;
+    input wire  [15:0] timeout;
+    input wire  [15:0] recovery_delay;
+    input wire  dmr_tick;
+    input wire  period_due;
+    input wire  mine;
+    input wire  more;
+    input wire  [29:0] rd_key;
+    input wire  reset_mode_q;
+    input wire  done;
+    input wire  failed;
+    input wire  [1:0] err_state;
+    output reg  tx_req;
+    output reg  cs_req;
+    output reg  abort;
+    output reg  restart;
+    input wire  other_sends;
+    input wire  eval_here;
+    input wire  eval_tx;
+    output reg  raise_req;
+    output reg  raise_tx;
+    output reg  [29:0] key_tx;
+    output reg  complete;
+    output reg  cs_fail;
+    output reg  busoff;
+    output reg  against;
+    output reg  sends_next;
+    output reg  recovered;
+    output reg  tx_fault;
+    output reg  rx_fault;
+    
+    // Constant declarations
+    localparam  busoff2 = 2'b10;
+    localparam  one16 = 16'h1;
+    localparam  zero16 = 16'h0;
+    localparam  zero30 = 30'h0;
+    
+    // Stub signals
+    reg  req_q__d;
+    wire  req_q__q;
+    reg  req_q__clock;
+    reg  busy_q__d;
+    wire  busy_q__q;
+    reg  busy_q__clock;
+    reg  cs_req_q__d;
+    wire  cs_req_q__q;
+    reg  cs_req_q__clock;
+    reg  cs_busy_q__d;
+    wire  cs_busy_q__q;
+    reg  cs_busy_q__clock;
+    reg  cs_live_q__d;
+    wire  cs_live_q__q;
+    reg  cs_live_q__clock;
+    reg  cs_due_q__d;
+    wire  cs_due_q__q;
+    reg  cs_due_q__clock;
+    reg  [15:0] timer_q__d;
+    wire  [15:0] timer_q__q;
+    reg  timer_q__clock;
+    reg  abort_q__d;
+    wire  abort_q__q;
+    reg  abort_q__clock;
+    reg  [29:0] key_sent_q__d;
+    wire  [29:0] key_sent_q__q;
+    reg  key_sent_q__clock;
+    reg  tx_fault_q__d;
+    wire  tx_fault_q__q;
+    reg  tx_fault_q__clock;
+    reg  rx_fault_q__d;
+    wire  rx_fault_q__q;
+    reg  rx_fault_q__clock;
+    reg  rec_pending_q__d;
+    wire  rec_pending_q__q;
+    reg  rec_pending_q__clock;
+    reg  restart_q__d;
+    wire  restart_q__q;
+    reg  restart_q__clock;
+    reg  busoff_q__d;
+    wire  busoff_q__q;
+    reg  busoff_q__clock;
+    
+    // Local signals
+    reg  free;
+    reg  cs_mode;
+    reg  take_cs;
+    reg  take_req;
+    reg  is_busoff;
+    reg  [15:0] timer_dec;
+    reg  timer_one;
+    reg  success;
+    reg  tx_set;
+    reg  rx_set;
+    reg  against_l;
+    
+    // Sub module instances
+    drcc__dmr_ctl__rcl__req_q req_q(
+        .d(req_q__d),
+        .q(req_q__q),
+        .clock(req_q__clock)
+    );
+    drcc__dmr_ctl__rcl__busy_q busy_q(
+        .d(busy_q__d),
+        .q(busy_q__q),
+        .clock(busy_q__clock)
+    );
+    drcc__dmr_ctl__rcl__cs_req_q cs_req_q(
+        .d(cs_req_q__d),
+        .q(cs_req_q__q),
+        .clock(cs_req_q__clock)
+    );
+    drcc__dmr_ctl__rcl__cs_busy_q cs_busy_q(
+        .d(cs_busy_q__d),
+        .q(cs_busy_q__q),
+        .clock(cs_busy_q__clock)
+    );
+    drcc__dmr_ctl__rcl__cs_live_q cs_live_q(
+        .d(cs_live_q__d),
+        .q(cs_live_q__q),
+        .clock(cs_live_q__clock)
+    );
+    drcc__dmr_ctl__rcl__cs_due_q cs_due_q(
+        .d(cs_due_q__d),
+        .q(cs_due_q__q),
+        .clock(cs_due_q__clock)
+    );
+    drcc__dmr_ctl__rcl__timer_q timer_q(
+        .d(timer_q__d),
+        .q(timer_q__q),
+        .clock(timer_q__clock)
+    );
+    drcc__dmr_ctl__rcl__abort_q abort_q(
+        .d(abort_q__d),
+        .q(abort_q__q),
+        .clock(abort_q__clock)
+    );
+    drcc__dmr_ctl__rcl__key_sent_q key_sent_q(
+        .d(key_sent_q__d),
+        .q(key_sent_q__q),
+        .clock(key_sent_q__clock)
+    );
+    drcc__dmr_ctl__rcl__tx_fault_q tx_fault_q(
+        .d(tx_fault_q__d),
+        .q(tx_fault_q__q),
+        .clock(tx_fault_q__clock)
+    );
+    drcc__dmr_ctl__rcl__rx_fault_q rx_fault_q(
+        .d(rx_fault_q__d),
+        .q(rx_fault_q__q),
+        .clock(rx_fault_q__clock)
+    );
+    drcc__dmr_ctl__rcl__rec_pending_q rec_pending_q(
+        .d(rec_pending_q__d),
+        .q(rec_pending_q__q),
+        .clock(rec_pending_q__clock)
+    );
+    drcc__dmr_ctl__rcl__restart_q restart_q(
+        .d(restart_q__d),
+        .q(restart_q__q),
+        .clock(restart_q__clock)
+    );
+    drcc__dmr_ctl__rcl__busoff_q busoff_q(
+        .d(busoff_q__d),
+        .q(busoff_q__q),
+        .clock(busoff_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        req_q__clock = clk;
+        busy_q__clock = clk;
+        cs_req_q__clock = clk;
+        cs_busy_q__clock = clk;
+        cs_live_q__clock = clk;
+        cs_due_q__clock = clk;
+        timer_q__clock = clk;
+        abort_q__clock = clk;
+        key_sent_q__clock = clk;
+        tx_fault_q__clock = clk;
+        rx_fault_q__clock = clk;
+        rec_pending_q__clock = clk;
+        restart_q__clock = clk;
+        busoff_q__clock = clk;
+        req_q__d = req_q__q;
+        busy_q__d = busy_q__q;
+        cs_req_q__d = cs_req_q__q;
+        cs_busy_q__d = cs_busy_q__q;
+        cs_live_q__d = cs_live_q__q;
+        cs_due_q__d = cs_due_q__q;
+        timer_q__d = timer_q__q;
+        abort_q__d = abort_q__q;
+        key_sent_q__d = key_sent_q__q;
+        tx_fault_q__d = tx_fault_q__q;
+        rx_fault_q__d = rx_fault_q__q;
+        rec_pending_q__d = rec_pending_q__q;
+        restart_q__d = restart_q__q;
+        busoff_q__d = busoff_q__q;
+        free = ~busy_q__q & ~req_q__q & ~cs_busy_q__q & ~cs_req_q__q & ~reset_mode_q & ~restart_q__q & ~rec_pending_q__q;
+        cs_mode = cs_busy_q__q & cs_live_q__q;
+        take_cs = mine & cs_due_q__q & free;
+        take_req = mine & ~tx_fault_q__q & more & ~cs_due_q__q & free;
+        timer_one = timer_q__q == one16;
+        timer_dec = timer_q__q - one16;
+        is_busoff = err_state == busoff2;
+        cs_req_q__d = take_cs;
+        req_q__d = take_req;
+        abort_q__d = 1'b0;
+        restart_q__d = 1'b0;
+        if (take_cs) begin
+            cs_busy_q__d = 1'b1;
+            cs_due_q__d = 1'b0;
+            cs_live_q__d = 1'b1;
+            timer_q__d = timeout;
+        end
+        if (take_req) begin
+            busy_q__d = 1'b1;
+        end
+        if (req_q__q) begin
+            key_sent_q__d = rd_key;
+        end
+        complete = done & ~cs_busy_q__q & busy_q__q & ~tx_fault_q__q;
+        if (done) begin
+            if (cs_busy_q__q) begin
+                cs_busy_q__d = 1'b0;
+            end
+            else if (busy_q__q) begin
+                busy_q__d = 1'b0;
+            end
+        end
+        else if (failed) begin
+            if (cs_busy_q__q) begin
+                cs_busy_q__d = 1'b0;
+            end
+            else begin
+                busy_q__d = 1'b0;
+            end
+        end
+        cs_fail = cs_mode & dmr_tick & timer_one;
+        if (cs_mode & dmr_tick & (timer_q__q != zero16)) begin
+            timer_q__d = timer_dec;
+        end
+        success = done & cs_mode;
+        recovered = success & (tx_fault_q__q | rx_fault_q__q);
+        if (success) begin
+            tx_fault_q__d = 1'b0;
+            rx_fault_q__d = 1'b0;
+        end
+        if ((done | failed) & cs_mode) begin
+            timer_q__d = zero16;
+        end
+        busoff = is_busoff & ~busoff_q__q;
+        busoff_q__d = is_busoff;
+        if (~cs_mode & (tx_fault_q__q | rx_fault_q__q) & dmr_tick & (timer_q__q != zero16)) begin
+            timer_q__d = timer_dec;
+            if (timer_one) begin
+                rec_pending_q__d = 1'b1;
+                cs_due_q__d = 1'b1;
+            end
+        end
+        if (rec_pending_q__q & ~busy_q__q & ~cs_busy_q__q & ~is_busoff) begin
+            rec_pending_q__d = 1'b0;
+            restart_q__d = 1'b1;
+        end
+        if (period_due & ~tx_fault_q__q & ~rx_fault_q__q & ~cs_due_q__q & ~cs_busy_q__q) begin
+            cs_due_q__d = 1'b1;
+        end
+        tx_set = cs_fail | busoff | (eval_here & eval_tx);
+        rx_set = eval_here & ~eval_tx;
+        against_l = tx_set | (rx_set & ~tx_fault_q__q);
+        if (rx_set) begin
+            rx_fault_q__d = 1'b1;
+        end
+        if (tx_set) begin
+            tx_fault_q__d = 1'b1;
+            if (busy_q__q) begin
+                abort_q__d = 1'b1;
+            end
+        end
+        if (against_l) begin
+            timer_q__d = recovery_delay;
+            cs_due_q__d = 1'b0;
+            cs_live_q__d = 1'b0;
+            rec_pending_q__d = 1'b0;
+            if (cs_busy_q__q) begin
+                abort_q__d = 1'b1;
+            end
+        end
+        sends_next = ~(tx_set | (tx_fault_q__q & ~success));
+        if (hold | rst) begin
+            req_q__d = 1'b0;
+            busy_q__d = 1'b0;
+            cs_req_q__d = 1'b0;
+            cs_busy_q__d = 1'b0;
+            cs_live_q__d = 1'b0;
+            cs_due_q__d = 1'b1;
+            timer_q__d = zero16;
+            abort_q__d = 1'b0;
+            key_sent_q__d = zero30;
+            tx_fault_q__d = 1'b0;
+            rx_fault_q__d = 1'b0;
+            rec_pending_q__d = 1'b0;
+            restart_q__d = 1'b0;
+        end
+        if (rst) begin
+            busoff_q__d = 1'b0;
+        end
+        tx_req = req_q__q | cs_req_q__q;
+        cs_req = cs_req_q__q;
+        abort = abort_q__q;
+        restart = restart_q__q;
+        raise_req = req_q__q;
+        raise_tx = complete & other_sends;
+        key_tx = key_sent_q__q;
+        against = against_l;
+        tx_fault = tx_fault_q__q;
+        rx_fault = rx_fault_q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__rcl
+
+
+module drcc__dmr_ctl__rcl__abort_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__abort_q
+
+
+module drcc__dmr_ctl__rcl__busoff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__busoff_q
+
+
+module drcc__dmr_ctl__rcl__busy_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__busy_q
+
+
+module drcc__dmr_ctl__rcl__cs_busy_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__cs_busy_q
+
+
+module drcc__dmr_ctl__rcl__cs_due_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__cs_due_q
+
+
+module drcc__dmr_ctl__rcl__cs_live_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__cs_live_q
+
+
+module drcc__dmr_ctl__rcl__cs_req_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__cs_req_q
+
+
+module drcc__dmr_ctl__rcl__key_sent_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__key_sent_q
+
+
+module drcc__dmr_ctl__rcl__rec_pending_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__rec_pending_q
+
+
+module drcc__dmr_ctl__rcl__req_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__req_q
+
+
+module drcc__dmr_ctl__rcl__restart_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__restart_q
+
+
+module drcc__dmr_ctl__rcl__rx_fault_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__rx_fault_q
+
+
+module drcc__dmr_ctl__rcl__timer_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__timer_q
+
+
+module drcc__dmr_ctl__rcl__tx_fault_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__rcl__tx_fault_q
+
+
+module drcc__dmr_ctl__status(clk,rst,hold,tx_fault_dcl,rx_fault_dcl,tx_fault_rcl,rx_fault_rcl,against_dcl,against_rcl,cs_fail_dcl,cs_fail_rcl,busoff_dcl,busoff_rcl,eval_fault,eval_line,eval_deviation,eval_mb,acl,dmr_state,acl_switch,int_evt,status_word);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  hold;
+    input wire  tx_fault_dcl;
+    input wire  rx_fault_dcl;
+    input wire  tx_fault_rcl;
+    input wire  rx_fault_rcl;
+    input wire  against_dcl;
+    input wire  against_rcl;
+    input wire  cs_fail_dcl;
+    input wire  cs_fail_rcl;
+    input wire  busoff_dcl;
+    input wire  busoff_rcl;
+    input wire  eval_fault;
+    input wire  eval_line;
+    input wire  eval_deviation;
+    input wire  [3:0] eval_mb;
+    output reg  acl;
+    output reg  [1:0] dmr_state;
+    output reg  acl_switch;
+    output reg  int_evt;
+    output reg  [31:0] status_word;
+    
+    // Constant declarations
+    localparam  c_timeout = 2'b0;
+    localparam  c_deviation = 2'b1;
+    localparam  c_busoff = 2'b10;
+    localparam  c_cs_failed = 2'b11;
+    localparam  s_active = 2'b0;
+    localparam  s_passive = 2'b1;
+    localparam  s_disabled = 2'b10;
+    localparam  s_disconnected = 2'b11;
+    localparam  zero4 = 4'h0;
+    
+    // Stub signals
+    reg  acl_q__d;
+    wire  acl_q__q;
+    reg  acl_q__clock;
+    reg  [1:0] state_q__d;
+    wire  [1:0] state_q__q;
+    reg  state_q__clock;
+    reg  [1:0] cause_q__d;
+    wire  [1:0] cause_q__q;
+    reg  cause_q__clock;
+    reg  cause_line_q__d;
+    wire  cause_line_q__q;
+    reg  cause_line_q__clock;
+    reg  [3:0] cause_mb_q__d;
+    wire  [3:0] cause_mb_q__q;
+    reg  cause_mb_q__clock;
+    reg  state_changes__clk;
+    reg  state_changes__rst;
+    reg  state_changes__inc;
+    wire  [7:0] state_changes__count;
+    reg  acl_switches__clk;
+    reg  acl_switches__rst;
+    reg  acl_switches__inc;
+    wire  [7:0] acl_switches__count;
+    
+    // Local signals
+    reg  switch;
+    reg  [1:0] state_next;
+    reg  changed;
+    
+    // Sub module instances
+    drcc__dmr_ctl__status__acl_q acl_q(
+        .d(acl_q__d),
+        .q(acl_q__q),
+        .clock(acl_q__clock)
+    );
+    drcc__dmr_ctl__status__state_q state_q(
+        .d(state_q__d),
+        .q(state_q__q),
+        .clock(state_q__clock)
+    );
+    drcc__dmr_ctl__status__cause_q cause_q(
+        .d(cause_q__d),
+        .q(cause_q__q),
+        .clock(cause_q__clock)
+    );
+    drcc__dmr_ctl__status__cause_line_q cause_line_q(
+        .d(cause_line_q__d),
+        .q(cause_line_q__q),
+        .clock(cause_line_q__clock)
+    );
+    drcc__dmr_ctl__status__cause_mb_q cause_mb_q(
+        .d(cause_mb_q__d),
+        .q(cause_mb_q__q),
+        .clock(cause_mb_q__clock)
+    );
+    drcc__dmr_ctl__status__state_changes state_changes(
+        .clk(state_changes__clk),
+        .rst(state_changes__rst),
+        .inc(state_changes__inc),
+        .count(state_changes__count)
+    );
+    drcc__dmr_ctl__status__acl_switches acl_switches(
+        .clk(acl_switches__clk),
+        .rst(acl_switches__rst),
+        .inc(acl_switches__inc),
+        .count(acl_switches__count)
+    );
+    
+    // Update code
+    always @(*) begin
+        acl_q__clock = clk;
+        state_q__clock = clk;
+        cause_q__clock = clk;
+        cause_line_q__clock = clk;
+        cause_mb_q__clock = clk;
+        acl_q__d = acl_q__q;
+        state_q__d = state_q__q;
+        cause_q__d = cause_q__q;
+        cause_line_q__d = cause_line_q__q;
+        cause_mb_q__d = cause_mb_q__q;
+        state_changes__clk = clk;
+        acl_switches__clk = clk;
+        if (cs_fail_dcl) begin
+            cause_q__d = c_cs_failed;
+            cause_line_q__d = 1'b0;
+        end
+        if (cs_fail_rcl) begin
+            cause_q__d = c_cs_failed;
+            cause_line_q__d = 1'b1;
+        end
+        if (busoff_dcl) begin
+            cause_q__d = c_busoff;
+            cause_line_q__d = 1'b0;
+        end
+        if (busoff_rcl) begin
+            cause_q__d = c_busoff;
+            cause_line_q__d = 1'b1;
+        end
+        if (eval_fault) begin
+            if (eval_deviation) begin
+                cause_q__d = c_deviation;
+            end
+            else begin
+                cause_q__d = c_timeout;
+            end
+            cause_line_q__d = eval_line;
+            cause_mb_q__d = eval_mb;
+        end
+        if (acl_q__q) begin
+            switch = against_rcl & ~tx_fault_dcl & ~rx_fault_dcl & ~against_dcl;
+        end
+        else begin
+            switch = against_dcl & ~tx_fault_rcl & ~rx_fault_rcl & ~against_rcl;
+        end
+        if (switch) begin
+            acl_q__d = ~acl_q__q;
+        end
+        if (tx_fault_dcl & tx_fault_rcl) begin
+            state_next = s_disconnected;
+        end
+        else if (tx_fault_dcl | tx_fault_rcl) begin
+            state_next = s_disabled;
+        end
+        else if (rx_fault_dcl | rx_fault_rcl) begin
+            state_next = s_passive;
+        end
+        else begin
+            state_next = s_active;
+        end
+        state_q__d = state_next;
+        changed = state_next != state_q__q;
+        state_changes__rst = rst;
+        acl_switches__rst = rst;
+        state_changes__inc = changed & ~hold;
+        acl_switches__inc = switch & ~hold;
+        acl_switch = switch & ~hold & ~rst;
+        int_evt = (changed | switch) & ~hold & ~rst;
+        if (hold | rst) begin
+            acl_q__d = 1'b0;
+            state_q__d = s_active;
+            cause_q__d = c_timeout;
+            cause_line_q__d = 1'b0;
+            cause_mb_q__d = zero4;
+        end
+        acl = acl_q__q;
+        dmr_state = state_q__q;
+        status_word = ((state_q__q) & 32'hffffffff) | (((acl_q__q) & 32'hffffffff) << 32'h2) | (((tx_fault_dcl) & 32'hffffffff) << 32'h3) | (((rx_fault_dcl) & 32'hffffffff) << 32'h4) | (((tx_fault_rcl) & 32'hffffffff) << 32'h5) | (((rx_fault_rcl) & 32'hffffffff) << 32'h6) | (((cause_q__q) & 32'hffffffff) << 32'h8) | (((cause_line_q__q) & 32'hffffffff) << 32'ha) | (((cause_mb_q__q) & 32'hffffffff) << 32'hc) | (((state_changes__count) & 32'hffffffff) << 32'h10) | (((acl_switches__count) & 32'hffffffff) << 32'h18);
+    end
+    
+endmodule // drcc__dmr_ctl__status
+
+
+module drcc__dmr_ctl__status__acl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__status__acl_q
+
+
+module drcc__dmr_ctl__status__acl_switches(clk,rst,inc,count);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  inc;
+    output reg  [7:0] count;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Stub signals
+    reg  [7:0] q__d;
+    wire  [7:0] q__q;
+    reg  q__clock;
+    
+    // Sub module instances
+    drcc__dmr_ctl__status__acl_switches__q q(
+        .d(q__d),
+        .q(q__q),
+        .clock(q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        q__clock = clk;
+        q__d = q__q;
+        if (inc & (q__q != max8)) begin
+            q__d = q__q + one8;
+        end
+        if (rst) begin
+            q__d = zero8;
+        end
+        count = q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__status__acl_switches
+
+
+module drcc__dmr_ctl__status__acl_switches__q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__status__acl_switches__q
+
+
+module drcc__dmr_ctl__status__cause_line_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__status__cause_line_q
+
+
+module drcc__dmr_ctl__status__cause_mb_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__status__cause_mb_q
+
+
+module drcc__dmr_ctl__status__cause_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__status__cause_q
+
+
+module drcc__dmr_ctl__status__state_changes(clk,rst,inc,count);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  inc;
+    output reg  [7:0] count;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    
+    // Stub signals
+    reg  [7:0] q__d;
+    wire  [7:0] q__q;
+    reg  q__clock;
+    
+    // Sub module instances
+    drcc__dmr_ctl__status__state_changes__q q(
+        .d(q__d),
+        .q(q__q),
+        .clock(q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        q__clock = clk;
+        q__d = q__q;
+        if (inc & (q__q != max8)) begin
+            q__d = q__q + one8;
+        end
+        if (rst) begin
+            q__d = zero8;
+        end
+        count = q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__status__state_changes
+
+
+module drcc__dmr_ctl__status__state_changes__q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__status__state_changes__q
+
+
+module drcc__dmr_ctl__status__state_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__status__state_q
+
+
+module drcc__dmr_ctl__time_base(clk,clear,tick_bits,cs_period,tick,dmr_tick,period_due);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  clear;
+    input wire  [15:0] tick_bits;
+    input wire  [15:0] cs_period;
+    input wire  tick;
+    output reg  dmr_tick;
+    output reg  period_due;
+    
+    // Constant declarations
+    localparam  one16 = 16'h1;
+    localparam  zero16 = 16'h0;
+    
+    // Stub signals
+    reg  [15:0] tb_cnt__d;
+    wire  [15:0] tb_cnt__q;
+    reg  tb_cnt__clock;
+    reg  tick_q__d;
+    wire  tick_q__q;
+    reg  tick_q__clock;
+    reg  [15:0] period_cnt__d;
+    wire  [15:0] period_cnt__q;
+    reg  period_cnt__clock;
+    
+    // Local signals
+    reg  [15:0] tb_next;
+    reg  [15:0] period_next;
+    reg  period_on;
+    
+    // Sub module instances
+    drcc__dmr_ctl__time_base__tb_cnt tb_cnt(
+        .d(tb_cnt__d),
+        .q(tb_cnt__q),
+        .clock(tb_cnt__clock)
+    );
+    drcc__dmr_ctl__time_base__tick_q tick_q(
+        .d(tick_q__d),
+        .q(tick_q__q),
+        .clock(tick_q__clock)
+    );
+    drcc__dmr_ctl__time_base__period_cnt period_cnt(
+        .d(period_cnt__d),
+        .q(period_cnt__q),
+        .clock(period_cnt__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tb_cnt__clock = clk;
+        tick_q__clock = clk;
+        period_cnt__clock = clk;
+        tb_cnt__d = tb_cnt__q;
+        tick_q__d = tick_q__q;
+        period_cnt__d = period_cnt__q;
+        tb_next = tb_cnt__q + one16;
+        tick_q__d = 1'b0;
+        if (tick) begin
+            if (tb_next == tick_bits) begin
+                tb_cnt__d = zero16;
+                tick_q__d = 1'b1;
+            end
+            else begin
+                tb_cnt__d = tb_next;
+            end
+        end
+        period_next = period_cnt__q + one16;
+        period_on = tick_q__q & (cs_period != zero16);
+        period_due = period_on & (period_next == cs_period);
+        if (period_on) begin
+            if (period_next == cs_period) begin
+                period_cnt__d = zero16;
+            end
+            else begin
+                period_cnt__d = period_next;
+            end
+        end
+        if (clear) begin
+            tb_cnt__d = zero16;
+            tick_q__d = 1'b0;
+            period_cnt__d = zero16;
+            period_due = 1'b0;
+        end
+        dmr_tick = tick_q__q;
+    end
+    
+endmodule // drcc__dmr_ctl__time_base
+
+
+module drcc__dmr_ctl__time_base__period_cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__time_base__period_cnt
+
+
+module drcc__dmr_ctl__time_base__tb_cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__time_base__tb_cnt
+
+
+module drcc__dmr_ctl__time_base__tick_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_ctl__time_base__tick_q
+
+
+module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,req_dcl,req_rcl,key_tx_dcl,key_tx_rcl,key_rx_dcl,key_rx_rcl,key_req_dcl,key_req_rcl,eval,mb_enable,mb_limits,cfg_addr,cfg_id_word,cfg_mask,mb_sel,mb_state_word,fault,fault_line,fault_tx,fault_deviation,fault_mb,e_state);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  hold;
+    input wire  clear_state;
+    input wire  [15:0] timeout;
+    input wire  tx_dcl;
+    input wire  tx_rcl;
+    input wire  rx_dcl;
+    input wire  rx_rcl;
+    input wire  req_dcl;
+    input wire  req_rcl;
+    input wire  [29:0] key_tx_dcl;
+    input wire  [29:0] key_tx_rcl;
+    input wire  [29:0] key_rx_dcl;
+    input wire  [29:0] key_rx_rcl;
+    input wire  [29:0] key_req_dcl;
+    input wire  [29:0] key_req_rcl;
+    input wire  eval;
+    input wire  [15:0] mb_enable;
+    input wire  [127:0] mb_limits;
+    output reg  [3:0] cfg_addr;
+    input wire  [30:0] cfg_id_word;
+    input wire  [28:0] cfg_mask;
+    input wire  [3:0] mb_sel;
+    output reg  [31:0] mb_state_word;
+    output reg  fault;
+    output reg  fault_line;
+    output reg  fault_tx;
+    output reg  fault_deviation;
+    output reg  [3:0] fault_mb;
+    output reg  [1:0] e_state;
+    
+    // Constant declarations
+    localparam  s_idle = 2'b0;
+    localparam  s_scan = 2'b1;
+    localparam  s_update = 2'b10;
+    localparam  s_eval = 2'b11;
+    localparam  k_tx = 2'b0;
+    localparam  k_rx = 2'b1;
+    localparam  k_req = 2'b10;
+    localparam  last = 4'hf;
+    localparam  one4 = 4'h1;
+    localparam  zero4 = 4'h0;
+    localparam  zero8 = 8'h0;
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'h7f;
+    localparam  min8 = 8'h80;
+    localparam  zero16 = 16'h0;
+    localparam  one16 = 16'h1;
+    localparam  zero29 = 29'h0;
+    
+    // Stub signals
+    reg  pend_tx_dcl__d;
+    wire  pend_tx_dcl__q;
+    reg  pend_tx_dcl__clock;
+    reg  pend_tx_rcl__d;
+    wire  pend_tx_rcl__q;
+    reg  pend_tx_rcl__clock;
+    reg  pend_rx_dcl__d;
+    wire  pend_rx_dcl__q;
+    reg  pend_rx_dcl__clock;
+    reg  pend_rx_rcl__d;
+    wire  pend_rx_rcl__q;
+    reg  pend_rx_rcl__clock;
+    reg  pend_req_dcl__d;
+    wire  pend_req_dcl__q;
+    reg  pend_req_dcl__clock;
+    reg  pend_req_rcl__d;
+    wire  pend_req_rcl__q;
+    reg  pend_req_rcl__clock;
+    reg  pend_eval__d;
+    wire  pend_eval__q;
+    reg  pend_eval__clock;
+    reg  [29:0] k_tx_dcl__d;
+    wire  [29:0] k_tx_dcl__q;
+    reg  k_tx_dcl__clock;
+    reg  [29:0] k_tx_rcl__d;
+    wire  [29:0] k_tx_rcl__q;
+    reg  k_tx_rcl__clock;
+    reg  [29:0] k_rx_dcl__d;
+    wire  [29:0] k_rx_dcl__q;
+    reg  k_rx_dcl__clock;
+    reg  [29:0] k_rx_rcl__d;
+    wire  [29:0] k_rx_rcl__q;
+    reg  k_rx_rcl__clock;
+    reg  [29:0] k_req_dcl__d;
+    wire  [29:0] k_req_dcl__q;
+    reg  k_req_dcl__clock;
+    reg  [29:0] k_req_rcl__d;
+    wire  [29:0] k_req_rcl__q;
+    reg  k_req_rcl__clock;
+    reg  [1:0] state__d;
+    wire  [1:0] state__q;
+    reg  state__clock;
+    reg  [3:0] e_i__d;
+    wire  [3:0] e_i__q;
+    reg  e_i__clock;
+    reg  [1:0] e_kind__d;
+    wire  [1:0] e_kind__q;
+    reg  e_kind__clock;
+    reg  e_line__d;
+    wire  e_line__q;
+    reg  e_line__clock;
+    reg  [29:0] e_key__d;
+    wire  [29:0] e_key__q;
+    reg  e_key__clock;
+    reg  e_found__d;
+    wire  e_found__q;
+    reg  e_found__clock;
+    reg  [3:0] e_hit__d;
+    wire  [3:0] e_hit__q;
+    reg  e_hit__clock;
+    reg  mbx__clk;
+    reg  mbx__clear;
+    reg  [3:0] mbx__sel;
+    reg  mbx__we;
+    reg  [7:0] mbx__counter_d;
+    reg  [15:0] mbx__timer_d;
+    wire  [127:0] mbx__counters;
+    wire  [255:0] mbx__timers;
+    
+    // Local signals
+    reg  [3:0] mb;
+    reg  [6:0] mb_c;
+    reg  [7:0] mb_t;
+    reg  [6:0] win_c;
+    reg  [7:0] win_t;
+    reg  en;
+    reg  [7:0] limit;
+    reg  [7:0] c;
+    reg  [15:0] t;
+    reg  hit;
+    reg  [7:0] c_step;
+    reg  toward;
+    reg  [15:0] t_step;
+    reg  [7:0] c_abs;
+    reg  [15:0] t_dec;
+    reg  deviation;
+    reg  expired;
+    
+    // Sub module instances
+    drcc__dmr_eng__pend_tx_dcl pend_tx_dcl(
+        .d(pend_tx_dcl__d),
+        .q(pend_tx_dcl__q),
+        .clock(pend_tx_dcl__clock)
+    );
+    drcc__dmr_eng__pend_tx_rcl pend_tx_rcl(
+        .d(pend_tx_rcl__d),
+        .q(pend_tx_rcl__q),
+        .clock(pend_tx_rcl__clock)
+    );
+    drcc__dmr_eng__pend_rx_dcl pend_rx_dcl(
+        .d(pend_rx_dcl__d),
+        .q(pend_rx_dcl__q),
+        .clock(pend_rx_dcl__clock)
+    );
+    drcc__dmr_eng__pend_rx_rcl pend_rx_rcl(
+        .d(pend_rx_rcl__d),
+        .q(pend_rx_rcl__q),
+        .clock(pend_rx_rcl__clock)
+    );
+    drcc__dmr_eng__pend_req_dcl pend_req_dcl(
+        .d(pend_req_dcl__d),
+        .q(pend_req_dcl__q),
+        .clock(pend_req_dcl__clock)
+    );
+    drcc__dmr_eng__pend_req_rcl pend_req_rcl(
+        .d(pend_req_rcl__d),
+        .q(pend_req_rcl__q),
+        .clock(pend_req_rcl__clock)
+    );
+    drcc__dmr_eng__pend_eval pend_eval(
+        .d(pend_eval__d),
+        .q(pend_eval__q),
+        .clock(pend_eval__clock)
+    );
+    drcc__dmr_eng__k_tx_dcl k_tx_dcl(
+        .d(k_tx_dcl__d),
+        .q(k_tx_dcl__q),
+        .clock(k_tx_dcl__clock)
+    );
+    drcc__dmr_eng__k_tx_rcl k_tx_rcl(
+        .d(k_tx_rcl__d),
+        .q(k_tx_rcl__q),
+        .clock(k_tx_rcl__clock)
+    );
+    drcc__dmr_eng__k_rx_dcl k_rx_dcl(
+        .d(k_rx_dcl__d),
+        .q(k_rx_dcl__q),
+        .clock(k_rx_dcl__clock)
+    );
+    drcc__dmr_eng__k_rx_rcl k_rx_rcl(
+        .d(k_rx_rcl__d),
+        .q(k_rx_rcl__q),
+        .clock(k_rx_rcl__clock)
+    );
+    drcc__dmr_eng__k_req_dcl k_req_dcl(
+        .d(k_req_dcl__d),
+        .q(k_req_dcl__q),
+        .clock(k_req_dcl__clock)
+    );
+    drcc__dmr_eng__k_req_rcl k_req_rcl(
+        .d(k_req_rcl__d),
+        .q(k_req_rcl__q),
+        .clock(k_req_rcl__clock)
+    );
+    drcc__dmr_eng__state state(
+        .d(state__d),
+        .q(state__q),
+        .clock(state__clock)
+    );
+    drcc__dmr_eng__e_i e_i(
+        .d(e_i__d),
+        .q(e_i__q),
+        .clock(e_i__clock)
+    );
+    drcc__dmr_eng__e_kind e_kind(
+        .d(e_kind__d),
+        .q(e_kind__q),
+        .clock(e_kind__clock)
+    );
+    drcc__dmr_eng__e_line e_line(
+        .d(e_line__d),
+        .q(e_line__q),
+        .clock(e_line__clock)
+    );
+    drcc__dmr_eng__e_key e_key(
+        .d(e_key__d),
+        .q(e_key__q),
+        .clock(e_key__clock)
+    );
+    drcc__dmr_eng__e_found e_found(
+        .d(e_found__d),
+        .q(e_found__q),
+        .clock(e_found__clock)
+    );
+    drcc__dmr_eng__e_hit e_hit(
+        .d(e_hit__d),
+        .q(e_hit__q),
+        .clock(e_hit__clock)
+    );
+    drcc__dmr_eng__mbx mbx(
+        .clk(mbx__clk),
+        .clear(mbx__clear),
+        .sel(mbx__sel),
+        .we(mbx__we),
+        .counter_d(mbx__counter_d),
+        .timer_d(mbx__timer_d),
+        .counters(mbx__counters),
+        .timers(mbx__timers)
+    );
+    
+    // Update code
+    always @(*) begin
+        pend_tx_dcl__clock = clk;
+        pend_tx_rcl__clock = clk;
+        pend_rx_dcl__clock = clk;
+        pend_rx_rcl__clock = clk;
+        pend_req_dcl__clock = clk;
+        pend_req_rcl__clock = clk;
+        pend_eval__clock = clk;
+        k_tx_dcl__clock = clk;
+        k_tx_rcl__clock = clk;
+        k_rx_dcl__clock = clk;
+        k_rx_rcl__clock = clk;
+        k_req_dcl__clock = clk;
+        k_req_rcl__clock = clk;
+        state__clock = clk;
+        e_i__clock = clk;
+        e_kind__clock = clk;
+        e_line__clock = clk;
+        e_key__clock = clk;
+        e_found__clock = clk;
+        e_hit__clock = clk;
+        pend_tx_dcl__d = pend_tx_dcl__q;
+        pend_tx_rcl__d = pend_tx_rcl__q;
+        pend_rx_dcl__d = pend_rx_dcl__q;
+        pend_rx_rcl__d = pend_rx_rcl__q;
+        pend_req_dcl__d = pend_req_dcl__q;
+        pend_req_rcl__d = pend_req_rcl__q;
+        pend_eval__d = pend_eval__q;
+        k_tx_dcl__d = k_tx_dcl__q;
+        k_tx_rcl__d = k_tx_rcl__q;
+        k_rx_dcl__d = k_rx_dcl__q;
+        k_rx_rcl__d = k_rx_rcl__q;
+        k_req_dcl__d = k_req_dcl__q;
+        k_req_rcl__d = k_req_rcl__q;
+        state__d = state__q;
+        e_i__d = e_i__q;
+        e_kind__d = e_kind__q;
+        e_line__d = e_line__q;
+        e_key__d = e_key__q;
+        e_found__d = e_found__q;
+        e_hit__d = e_hit__q;
+        mbx__clk = clk;
+        if (state__q == s_update) begin
+            mb = e_hit__q;
+        end
+        else begin
+            mb = e_i__q;
+        end
+        mbx__sel = mb;
+        mb_c = ((mb) & 7'h7f) << 32'h3;
+        mb_t = ((mb) & 8'hff) << 32'h4;
+        c = mbx__counters[(mb_c)+:(8)];
+        t = mbx__timers[(mb_t)+:(16)];
+        win_c = ((mb_sel) & 7'h7f) << 32'h3;
+        win_t = ((mb_sel) & 8'hff) << 32'h4;
+        mb_state_word = ((mbx__counters[(win_c)+:(8)]) & 32'hffffffff) | (((mbx__timers[(win_t)+:(16)]) & 32'hffffffff) << 32'h10);
+        en = mb_enable[mb];
+        limit = ((mb_limits[(mb_c)+:(7)]) & 8'hff);
+        if ((state__q == s_scan) | (state__q == s_eval)) begin
+            cfg_addr = e_i__q + one4;
+        end
+        else begin
+            cfg_addr = zero4;
+        end
+        hit = en & (cfg_id_word[32'h1e] == (e_kind__q != k_rx)) & (cfg_id_word[32'h1d] == e_key__q[32'h1d]) & (((e_key__q[(32'h0)+:(29)] ^ cfg_id_word[(32'h0)+:(29)]) & cfg_mask) == zero29);
+        if (~e_line__q) begin
+            if (c == max8) begin
+                c_step = c;
+            end
+            else begin
+                c_step = c + one8;
+            end
+            toward = c[32'h7];
+        end
+        else begin
+            if (c == min8) begin
+                c_step = c;
+            end
+            else begin
+                c_step = c - one8;
+            end
+            toward = ~c[32'h7] & (c != zero8);
+        end
+        if (c_step == zero8) begin
+            t_step = zero16;
+        end
+        else if ((c == zero8) | toward) begin
+            t_step = timeout;
+        end
+        else begin
+            t_step = t;
+        end
+        if (c[32'h7]) begin
+            c_abs = zero8 - c;
+        end
+        else begin
+            c_abs = c;
+        end
+        if (t == zero16) begin
+            t_dec = zero16;
+        end
+        else begin
+            t_dec = t - one16;
+        end
+        deviation = c_abs > limit;
+        expired = (c != zero8) & (t_dec == zero16);
+        fault = ~hold & (state__q == s_eval) & en & (deviation | expired);
+        fault_line = ~c[32'h7];
+        fault_tx = cfg_id_word[32'h1e];
+        fault_deviation = deviation;
+        fault_mb = e_i__q;
+        e_state = state__q;
+        mbx__we = 1'b0;
+        mbx__counter_d = c;
+        mbx__timer_d = t;
+        mbx__clear = hold | clear_state;
+        if (tx_dcl) begin
+            pend_tx_dcl__d = 1'b1;
+            k_tx_dcl__d = key_tx_dcl;
+        end
+        if (tx_rcl) begin
+            pend_tx_rcl__d = 1'b1;
+            k_tx_rcl__d = key_tx_rcl;
+        end
+        if (rx_dcl) begin
+            pend_rx_dcl__d = 1'b1;
+            k_rx_dcl__d = key_rx_dcl;
+        end
+        if (rx_rcl) begin
+            pend_rx_rcl__d = 1'b1;
+            k_rx_rcl__d = key_rx_rcl;
+        end
+        if (req_dcl) begin
+            pend_req_dcl__d = 1'b1;
+            k_req_dcl__d = key_req_dcl;
+        end
+        if (req_rcl) begin
+            pend_req_rcl__d = 1'b1;
+            k_req_rcl__d = key_req_rcl;
+        end
+        if (eval) begin
+            pend_eval__d = 1'b1;
+        end
+        if (state__q == s_idle) begin
+            e_i__d = zero4;
+            e_found__d = 1'b0;
+            if (pend_tx_dcl__q) begin
+                pend_tx_dcl__d = tx_dcl;
+                e_kind__d = k_tx;
+                e_line__d = 1'b0;
+                e_key__d = k_tx_dcl__q;
+                state__d = s_scan;
+            end
+            else if (pend_tx_rcl__q) begin
+                pend_tx_rcl__d = tx_rcl;
+                e_kind__d = k_tx;
+                e_line__d = 1'b1;
+                e_key__d = k_tx_rcl__q;
+                state__d = s_scan;
+            end
+            else if (pend_rx_dcl__q) begin
+                pend_rx_dcl__d = rx_dcl;
+                e_kind__d = k_rx;
+                e_line__d = 1'b0;
+                e_key__d = k_rx_dcl__q;
+                state__d = s_scan;
+            end
+            else if (pend_rx_rcl__q) begin
+                pend_rx_rcl__d = rx_rcl;
+                e_kind__d = k_rx;
+                e_line__d = 1'b1;
+                e_key__d = k_rx_rcl__q;
+                state__d = s_scan;
+            end
+            else if (pend_req_dcl__q) begin
+                pend_req_dcl__d = req_dcl;
+                e_kind__d = k_req;
+                e_line__d = 1'b0;
+                e_key__d = k_req_dcl__q;
+                state__d = s_scan;
+            end
+            else if (pend_req_rcl__q) begin
+                pend_req_rcl__d = req_rcl;
+                e_kind__d = k_req;
+                e_line__d = 1'b1;
+                e_key__d = k_req_rcl__q;
+                state__d = s_scan;
+            end
+            else if (pend_eval__q) begin
+                pend_eval__d = eval;
+                state__d = s_eval;
+            end
+        end
+        else if (state__q == s_scan) begin
+            if (~e_found__q & hit) begin
+                e_found__d = 1'b1;
+                e_hit__d = e_i__q;
+            end
+            if (e_i__q == last) begin
+                state__d = s_update;
+            end
+            else begin
+                e_i__d = e_i__q + one4;
+            end
+        end
+        else if (state__q == s_update) begin
+            if (e_found__q) begin
+                mbx__we = 1'b1;
+                if (e_kind__q == k_req) begin
+                    mbx__timer_d = timeout;
+                end
+                else begin
+                    mbx__counter_d = c_step;
+                    mbx__timer_d = t_step;
+                end
+            end
+            state__d = s_idle;
+        end
+        else begin
+            if (en) begin
+                mbx__we = 1'b1;
+                if (deviation | expired) begin
+                    mbx__counter_d = zero8;
+                    mbx__timer_d = zero16;
+                end
+                else begin
+                    mbx__timer_d = t_dec;
+                end
+            end
+            if (e_i__q == last) begin
+                state__d = s_idle;
+            end
+            else begin
+                e_i__d = e_i__q + one4;
+            end
+        end
+        if (hold) begin
+            pend_tx_dcl__d = 1'b0;
+            pend_tx_rcl__d = 1'b0;
+            pend_rx_dcl__d = 1'b0;
+            pend_rx_rcl__d = 1'b0;
+            pend_req_dcl__d = 1'b0;
+            pend_req_rcl__d = 1'b0;
+            pend_eval__d = 1'b0;
+            state__d = s_idle;
+            e_i__d = zero4;
+            e_found__d = 1'b0;
+        end
+    end
+    
+endmodule // drcc__dmr_eng
+
+
+module drcc__dmr_eng__e_found(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__e_found
+
+
+module drcc__dmr_eng__e_hit(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__e_hit
+
+
+module drcc__dmr_eng__e_i(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__e_i
+
+
+module drcc__dmr_eng__e_key(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__e_key
+
+
+module drcc__dmr_eng__e_kind(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__e_kind
+
+
+module drcc__dmr_eng__e_line(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__e_line
+
+
+module drcc__dmr_eng__k_req_dcl(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__k_req_dcl
+
+
+module drcc__dmr_eng__k_req_rcl(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__k_req_rcl
+
+
+module drcc__dmr_eng__k_rx_dcl(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__k_rx_dcl
+
+
+module drcc__dmr_eng__k_rx_rcl(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__k_rx_rcl
+
+
+module drcc__dmr_eng__k_tx_dcl(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__k_tx_dcl
+
+
+module drcc__dmr_eng__k_tx_rcl(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__k_tx_rcl
+
+
+module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,counters,timers);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  clear;
+    input wire  [3:0] sel;
+    input wire  we;
+    input wire  [7:0] counter_d;
+    input wire  [15:0] timer_d;
+    output reg  [127:0] counters;
+    output reg  [255:0] timers;
+    
+    // Constant declarations
+    localparam  slot_mask_c = 128'hff;
+    localparam  slot_mask_t = 256'hffff;
+    localparam  zero128 = 128'h0;
+    localparam  zero256 = 256'h0;
+    
+    // Stub signals
+    reg  [127:0] cnt_q__d;
+    wire  [127:0] cnt_q__q;
+    reg  cnt_q__clock;
+    reg  [255:0] tmr_q__d;
+    wire  [255:0] tmr_q__q;
+    reg  tmr_q__clock;
+    
+    // Local signals
+    reg  [6:0] sel_c;
+    reg  [7:0] sel_t;
+    reg  [127:0] slot_c;
+    reg  [255:0] slot_t;
+    reg  [127:0] c128;
+    reg  [255:0] t256;
+    reg  [127:0] rep_c;
+    reg  [255:0] rep_t;
+    
+    // Sub module instances
+    drcc__dmr_eng__mbx__cnt_q cnt_q(
+        .d(cnt_q__d),
+        .q(cnt_q__q),
+        .clock(cnt_q__clock)
+    );
+    drcc__dmr_eng__mbx__tmr_q tmr_q(
+        .d(tmr_q__d),
+        .q(tmr_q__q),
+        .clock(tmr_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cnt_q__clock = clk;
+        tmr_q__clock = clk;
+        cnt_q__d = cnt_q__q;
+        tmr_q__d = tmr_q__q;
+        counters = cnt_q__q;
+        timers = tmr_q__q;
+        sel_c = ((sel) & 7'h7f) << 32'h3;
+        sel_t = ((sel) & 8'hff) << 32'h4;
+        slot_c = slot_mask_c << sel_c;
+        slot_t = slot_mask_t << sel_t;
+        c128 = ((counter_d) & 128'hffffffffffffffffffffffffffffffff);
+        t256 = ((timer_d) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff);
+        rep_c = c128 | (c128 << 32'h8) | (c128 << 32'h10) | (c128 << 32'h18) | (c128 << 32'h20) | (c128 << 32'h28) | (c128 << 32'h30) | (c128 << 32'h38) | (c128 << 32'h40) | (c128 << 32'h48) | (c128 << 32'h50) | (c128 << 32'h58) | (c128 << 32'h60) | (c128 << 32'h68) | (c128 << 32'h70) | (c128 << 32'h78);
+        rep_t = t256 | (t256 << 32'h10) | (t256 << 32'h20) | (t256 << 32'h30) | (t256 << 32'h40) | (t256 << 32'h50) | (t256 << 32'h60) | (t256 << 32'h70) | (t256 << 32'h80) | (t256 << 32'h90) | (t256 << 32'ha0) | (t256 << 32'hb0) | (t256 << 32'hc0) | (t256 << 32'hd0) | (t256 << 32'he0) | (t256 << 32'hf0);
+        if (we) begin
+            cnt_q__d = (cnt_q__q & ~slot_c) | (rep_c & slot_c);
+            tmr_q__d = (tmr_q__q & ~slot_t) | (rep_t & slot_t);
+        end
+        if (clear) begin
+            cnt_q__d = zero128;
+            tmr_q__d = zero256;
+        end
+    end
+    
+endmodule // drcc__dmr_eng__mbx
+
+
+module drcc__dmr_eng__mbx__cnt_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [127:0] d;
+    output reg  [127:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__cnt_q
+
+
+module drcc__dmr_eng__mbx__tmr_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [255:0] d;
+    output reg  [255:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__tmr_q
+
+
+module drcc__dmr_eng__pend_eval(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__pend_eval
+
+
+module drcc__dmr_eng__pend_req_dcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__pend_req_dcl
+
+
+module drcc__dmr_eng__pend_req_rcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__pend_req_rcl
+
+
+module drcc__dmr_eng__pend_rx_dcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__pend_rx_dcl
+
+
+module drcc__dmr_eng__pend_rx_rcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__pend_rx_rcl
+
+
+module drcc__dmr_eng__pend_tx_dcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__pend_tx_dcl
+
+
+module drcc__dmr_eng__pend_tx_rcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__pend_tx_rcl
+
+
+module drcc__dmr_eng__state(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__state
+
+
 module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_we_id,mb_we_mask);
     
     // Module arguments
@@ -16692,7 +20575,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         bus__int_enable_d = wdat[(32'h0)+:(9)];
         push = 1'b0;
         pop = 1'b0;
-        if (tx_queue_q__q & ~ctrl__redundancy) begin
+        if (tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr) begin
             target_count = txq_b;
         end
         else begin
@@ -16813,7 +20696,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,w
         recovery_bits = rmb_cfg_q__q[(r_recovery)+:(16)];
         stall_limit = rmb_cfg_q__q[(r_stall)+:(16)];
         window = window_q__q;
-        push_q = tx_queue_q__q & ~ctrl__redundancy;
+        push_q = tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr;
         tx_frame = (((tx_id_q__q) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((tx_dlc_q__q) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((tx_data64) & 99'h7ffffffffffffffffffffffff);
     end
     
@@ -17762,7 +21645,7 @@ module drcc__rxfifo__ready(d,q,clock);
 endmodule // drcc__rxfifo__ready
 
 
-module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns);
+module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,dmr,acl,release_set,pcl_frames,released,expired);
     
     // Module arguments
     input wire  clk;
@@ -17783,12 +21666,21 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     output reg  overrun_evt;
     output reg  [15:0] duplicates;
     output reg  [15:0] overruns;
+    input wire  dmr;
+    input wire  acl;
+    input wire  release_set;
+    output reg  [15:0] pcl_frames;
+    output reg  [7:0] released;
+    output reg  [7:0] expired;
     
     // Constant declarations
-    localparam  s_idle = 2'b0;
-    localparam  s_scan = 2'b1;
-    localparam  s_decide = 2'b10;
-    localparam  s_write = 2'b11;
+    localparam  s_idle = 3'b0;
+    localparam  s_scan = 3'b1;
+    localparam  s_decide = 3'b10;
+    localparam  s_write = 3'b11;
+    localparam  s_rscan = 3'b100;
+    localparam  s_fetch = 3'b101;
+    localparam  s_release = 3'b110;
     localparam  zero5 = 5'b0;
     localparam  one5 = 5'b1;
     localparam  zero6 = 6'b0;
@@ -17819,8 +21711,25 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [4:0] hist_ts__write_address;
     reg  [15:0] hist_ts__write_data;
     reg  hist_ts__write_enable;
-    reg  [1:0] w_state__d;
-    wire  [1:0] w_state__q;
+    reg  rel__clk;
+    reg  rel__clear;
+    reg  rel__start;
+    reg  rel__cand;
+    reg  [4:0] rel__scan_e;
+    reg  [15:0] rel__next_age;
+    reg  rel__tick;
+    wire  rel__found;
+    wire  [4:0] rel__rel_e;
+    reg  stats__clk;
+    reg  stats__rst;
+    reg  stats__pcl_inc;
+    reg  stats__released_inc;
+    reg  stats__expired_inc;
+    wire  [15:0] stats__pcl_frames;
+    wire  [7:0] stats__released;
+    wire  [7:0] stats__expired;
+    reg  [2:0] w_state__d;
+    wire  [2:0] w_state__q;
     reg  w_state__clock;
     reg  rxp_a__d;
     wire  rxp_a__q;
@@ -17861,6 +21770,18 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [31:0] hu__d;
     wire  [31:0] hu__q;
     reg  hu__clock;
+    reg  [31:0] hd__d;
+    wire  [31:0] hd__q;
+    reg  hd__clock;
+    reg  rel_pending__d;
+    wire  rel_pending__q;
+    reg  rel_pending__clock;
+    reg  w_pcl__d;
+    wire  w_pcl__q;
+    reg  w_pcl__clock;
+    reg  hit_hd__d;
+    wire  hit_hd__q;
+    reg  hit_hd__clock;
     reg  [15:0] dups_q__d;
     wire  [15:0] dups_q__q;
     reg  dups_q__clock;
@@ -17877,6 +21798,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [98:0] e_frame;
     reg  e_hv;
     reg  e_hu;
+    reg  e_hd;
     reg  e_expired;
     reg  e_gt;
     reg  e_ge;
@@ -17886,6 +21808,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [31:0] mask;
     reg  fifo_full;
     reg  [31:0] hv_base;
+    reg  in_scan;
+    reg  judging;
+    reg  pcl;
+    reg  w_fifo;
+    reg  w_hist;
     
     // Sub module instances
     drcc__rxw__hist hist(
@@ -17905,6 +21832,27 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .write_address(hist_ts__write_address),
         .write_data(hist_ts__write_data),
         .write_enable(hist_ts__write_enable)
+    );
+    drcc__rxw__rel rel(
+        .clk(rel__clk),
+        .clear(rel__clear),
+        .start(rel__start),
+        .cand(rel__cand),
+        .scan_e(rel__scan_e),
+        .next_age(rel__next_age),
+        .tick(rel__tick),
+        .found(rel__found),
+        .rel_e(rel__rel_e)
+    );
+    drcc__rxw__stats stats(
+        .clk(stats__clk),
+        .rst(stats__rst),
+        .pcl_inc(stats__pcl_inc),
+        .released_inc(stats__released_inc),
+        .expired_inc(stats__expired_inc),
+        .pcl_frames(stats__pcl_frames),
+        .released(stats__released),
+        .expired(stats__expired)
     );
     drcc__rxw__w_state w_state(
         .d(w_state__d),
@@ -17976,6 +21924,26 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .q(hu__q),
         .clock(hu__clock)
     );
+    drcc__rxw__hd hd(
+        .d(hd__d),
+        .q(hd__q),
+        .clock(hd__clock)
+    );
+    drcc__rxw__rel_pending rel_pending(
+        .d(rel_pending__d),
+        .q(rel_pending__q),
+        .clock(rel_pending__clock)
+    );
+    drcc__rxw__w_pcl w_pcl(
+        .d(w_pcl__d),
+        .q(w_pcl__q),
+        .clock(w_pcl__clock)
+    );
+    drcc__rxw__hit_hd hit_hd(
+        .d(hit_hd__d),
+        .q(hit_hd__q),
+        .clock(hit_hd__clock)
+    );
     drcc__rxw__dups_q dups_q(
         .d(dups_q__d),
         .q(dups_q__q),
@@ -18003,6 +21971,10 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hist_idle__clock = clk;
         hv__clock = clk;
         hu__clock = clk;
+        hd__clock = clk;
+        rel_pending__clock = clk;
+        w_pcl__clock = clk;
+        hit_hd__clock = clk;
         dups_q__clock = clk;
         overruns_q__clock = clk;
         w_state__d = w_state__q;
@@ -18019,12 +21991,20 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hist_idle__d = hist_idle__q;
         hv__d = hv__q;
         hu__d = hu__q;
+        hd__d = hd__q;
+        rel_pending__d = rel_pending__q;
+        w_pcl__d = w_pcl__q;
+        hit_hd__d = hit_hd__q;
         dups_q__d = dups_q__q;
         overruns_q__d = overruns_q__q;
         hist__clk = clk;
         hist__read_enable = 1'b1;
         hist_ts__clk = clk;
         hist_ts__read_enable = 1'b1;
+        rel__clk = clk;
+        rel__clear = clear;
+        stats__clk = clk;
+        stats__rst = rst;
         if (sel__q) begin
             frame_sel = frame_b;
         end
@@ -18040,6 +22020,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         if (w_state__q == s_decide) begin
             mask_e = hit_e__q;
+        end
+        else if (w_state__q == s_release) begin
+            mask_e = rel__rel_e;
         end
         else begin
             mask_e = slot;
@@ -18059,13 +22042,24 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         e_hv = hv__q[32'h0];
         e_hu = hu__q[32'h0];
+        e_hd = hd__q[32'h0];
         e_expired = exp_q__q;
         fifo_full = fifo_count == full6;
-        hist__read_address = scan_i__q[(32'h0)+:(5)];
+        in_scan = (w_state__q == s_scan) | (w_state__q == s_rscan);
+        judging = in_scan & (scan_i__q != zero6);
+        pcl = sel__q != acl;
+        w_fifo = ~(dmr & w_pcl__q);
+        w_hist = dedup_on & ~hit__q;
+        if (w_state__q == s_fetch) begin
+            hist__read_address = rel__rel_e;
+        end
+        else begin
+            hist__read_address = scan_i__q[(32'h0)+:(5)];
+        end
         hist__write_enable = 1'b0;
         hist__write_address = slot;
         hist__write_data = (((frame_sel) & 100'hfffffffffffffffffffffffff) << 32'h1) | ((sel__q) & 100'hfffffffffffffffffffffffff);
-        if (w_state__q == s_scan) begin
+        if (in_scan) begin
             hist_ts__read_address = scan_i__q[(32'h0)+:(5)] + one5;
         end
         else begin
@@ -18075,9 +22069,22 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hist_ts__write_address = slot;
         hist_ts__write_data = now;
         fifo_wr = 1'b0;
-        fifo_data = (((sel__q) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 100'hfffffffffffffffffffffffff);
+        if (w_state__q == s_release) begin
+            fifo_data = (((acl) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((e_frame) & 100'hfffffffffffffffffffffffff);
+        end
+        else begin
+            fifo_data = (((sel__q) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 100'hfffffffffffffffffffffffff);
+        end
         rx_evt = 1'b0;
         overrun_evt = 1'b0;
+        rel__start = 1'b0;
+        rel__cand = (w_state__q == s_rscan) & judging & e_hv & ~e_expired & ~e_hu & ~e_hd & (e_ch == acl);
+        rel__scan_e = scan_e;
+        rel__next_age = e_age;
+        rel__tick = tick;
+        stats__pcl_inc = 1'b0;
+        stats__released_inc = 1'b0;
+        stats__expired_inc = dmr & judging & e_hv & e_expired & ~e_hu & ~e_hd;
         w_state__d = w_state__q;
         rxp_a__d = rxp_a__q;
         rxp_b__d = rxp_b__q;
@@ -18085,10 +22092,14 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         scan_i__d = scan_i__q;
         hit__d = hit__q;
         hit_e__d = hit_e__q;
+        hit_hd__d = hit_hd__q;
         free_found__d = free_found__q;
         free_e__d = free_e__q;
         hist_ptr__d = hist_ptr__q;
         hu__d = hu__q;
+        hd__d = hd__q;
+        rel_pending__d = rel_pending__q;
+        w_pcl__d = w_pcl__q;
         dups_q__d = dups_q__q;
         overruns_q__d = overruns_q__q;
         hist_idle__d = hist_idle__q;
@@ -18103,6 +22114,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         e_keep = hv_base[32'h0] & ~e_expired;
         hv__d = hv_base;
+        if (judging) begin
+            hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << 32'h1f);
+            hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << 32'h1f);
+            hd__d = (hd__q >> one32) | (((hd__q[32'h0]) & 32'hffffffff) << 32'h1f);
+        end
         if (w_state__q == s_idle) begin
             if (rxp_a__q | rxp_b__q) begin
                 if (rxp_a__q) begin
@@ -18120,40 +22136,98 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                 if (dedup_on) begin
                     w_state__d = s_scan;
                 end
+                else if (dmr) begin
+                    w_state__d = s_decide;
+                end
                 else begin
                     w_state__d = s_write;
                 end
             end
+            else if (dmr & rel_pending__q & dedup_on) begin
+                w_state__d = s_rscan;
+                scan_i__d = zero6;
+                rel__start = 1'b1;
+            end
         end
-        else if (w_state__q == s_scan) begin
-            if (scan_i__q != zero6) begin
-                if ((~e_hv | e_hu | e_expired) & ~free_found__q) begin
-                    free_found__d = 1'b1;
-                    free_e__d = scan_e;
-                end
-                hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << 32'h1f);
-                hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << 32'h1f);
-                if (e_hv & ~e_expired & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
-                    hit__d = 1'b1;
-                    hit_e__d = scan_e;
-                end
+        else if (in_scan) begin
+            if (judging & (w_state__q == s_scan) & (~e_hv | e_hu | e_expired) & ~free_found__q) begin
+                free_found__d = 1'b1;
+                free_e__d = scan_e;
+            end
+            if (judging & (w_state__q == s_scan) & e_hv & ~e_expired & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
+                hit__d = 1'b1;
+                hit_e__d = scan_e;
+                hit_hd__d = e_hd;
             end
             scan_i__d = scan_i__q + one6;
             if (scan_i__q == last_scan) begin
-                w_state__d = s_decide;
+                if (w_state__q == s_scan) begin
+                    w_state__d = s_decide;
+                end
+                else if (rel__found) begin
+                    w_state__d = s_fetch;
+                end
+                else begin
+                    rel_pending__d = 1'b0;
+                    w_state__d = s_idle;
+                end
             end
         end
         else if (w_state__q == s_decide) begin
+            if (dmr) begin
+                w_pcl__d = pcl;
+                stats__pcl_inc = pcl;
+            end
             if (hit__q) begin
-                hu__d = hu__q | mask;
-                if (dups_q__q != max16) begin
-                    dups_q__d = dups_q__q + one16;
+                if (~dmr | ~pcl | hit_hd__q) begin
+                    hu__d = hu__q | mask;
                 end
-                w_state__d = s_idle;
+                if (dmr & ~hit_hd__q & ~pcl) begin
+                    w_state__d = s_write;
+                end
+                else begin
+                    if (dups_q__q != max16) begin
+                        dups_q__d = dups_q__q + one16;
+                    end
+                    w_state__d = s_idle;
+                end
             end
             else begin
                 w_state__d = s_write;
             end
+        end
+        else if (w_state__q == s_write) begin
+            if (~w_fifo) begin
+            end
+            else if (fifo_full) begin
+                if (overruns_q__q != max16) begin
+                    overruns_q__d = overruns_q__q + one16;
+                end
+                overrun_evt = 1'b1;
+            end
+            else begin
+                fifo_wr = 1'b1;
+                rx_evt = 1'b1;
+            end
+            if (w_hist) begin
+                hist__write_enable = 1'b1;
+                hist_ts__write_enable = 1'b1;
+                hv__d = hv_base | mask;
+                hu__d = hu__q & ~mask;
+                if (~w_fifo) begin
+                    hd__d = hd__q & ~mask;
+                end
+                else begin
+                    hd__d = hd__q | mask;
+                end
+                if (~free_found__q) begin
+                    hist_ptr__d = hist_ptr__q + one5;
+                end
+            end
+            w_state__d = s_idle;
+        end
+        else if (w_state__q == s_fetch) begin
+            w_state__d = s_release;
         end
         else begin
             if (fifo_full) begin
@@ -18166,15 +22240,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                 fifo_wr = 1'b1;
                 rx_evt = 1'b1;
             end
-            if (dedup_on) begin
-                hist__write_enable = 1'b1;
-                hist_ts__write_enable = 1'b1;
-                hv__d = hv_base | mask;
-                hu__d = hu__q & ~mask;
-                if (~free_found__q) begin
-                    hist_ptr__d = hist_ptr__q + one5;
-                end
-            end
+            hd__d = hd__q | mask;
+            stats__released_inc = 1'b1;
             w_state__d = s_idle;
         end
         if (rxv_a) begin
@@ -18182,6 +22249,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         if (rxv_b) begin
             rxp_b__d = 1'b1;
+        end
+        if (release_set) begin
+            rel_pending__d = 1'b1;
         end
         if (clear) begin
             w_state__d = s_idle;
@@ -18191,12 +22261,16 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             scan_i__d = zero6;
             hit__d = 1'b0;
             hit_e__d = zero5;
+            hit_hd__d = 1'b0;
             free_found__d = 1'b0;
             free_e__d = zero5;
             hist_ptr__d = zero5;
             hist_idle__d = zero15;
             hv__d = zero32;
             hu__d = zero32;
+            hd__d = zero32;
+            rel_pending__d = 1'b0;
+            w_pcl__d = 1'b0;
             fifo_wr = 1'b0;
             rx_evt = 1'b0;
             overrun_evt = 1'b0;
@@ -18204,6 +22278,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             hist_ts__write_enable = 1'b0;
             dups_q__d = dups_q__q;
             overruns_q__d = overruns_q__q;
+            stats__pcl_inc = 1'b0;
+            stats__released_inc = 1'b0;
+            stats__expired_inc = 1'b0;
         end
         if (rst) begin
             dups_q__d = zero16;
@@ -18211,6 +22288,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         duplicates = dups_q__q;
         overruns = overruns_q__q;
+        pcl_frames = stats__pcl_frames;
+        released = stats__released;
+        expired = stats__expired;
     end
     
 endmodule // drcc__rxw
@@ -18278,6 +22358,22 @@ module drcc__rxw__free_found(d,q,clock);
     end
           
 endmodule // drcc__rxw__free_found
+
+
+module drcc__rxw__hd(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__hd
 
 
 module drcc__rxw__hist(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
@@ -18404,6 +22500,22 @@ module drcc__rxw__hit_e(d,q,clock);
 endmodule // drcc__rxw__hit_e
 
 
+module drcc__rxw__hit_hd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__hit_hd
+
+
 module drcc__rxw__hu(d,q,clock);
     
     // Module arguments
@@ -18450,6 +22562,176 @@ module drcc__rxw__overruns_q(d,q,clock);
     end
           
 endmodule // drcc__rxw__overruns_q
+
+
+module drcc__rxw__rel(clk,clear,start,cand,scan_e,next_age,tick,found,rel_e);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  clear;
+    input wire  start;
+    input wire  cand;
+    input wire  [4:0] scan_e;
+    input wire  [15:0] next_age;
+    input wire  tick;
+    output reg  found;
+    output reg  [4:0] rel_e;
+    
+    // Constant declarations
+    localparam  zero5 = 5'b0;
+    localparam  zero16 = 16'h0;
+    
+    // Stub signals
+    reg  [15:0] age_q__d;
+    wire  [15:0] age_q__q;
+    reg  age_q__clock;
+    reg  rel_found__d;
+    wire  rel_found__q;
+    reg  rel_found__clock;
+    reg  [4:0] rel_e_q__d;
+    wire  [4:0] rel_e_q__q;
+    reg  rel_e_q__clock;
+    reg  [15:0] rel_age__d;
+    wire  [15:0] rel_age__q;
+    reg  rel_age__clock;
+    
+    // Local signals
+    reg  take;
+    
+    // Sub module instances
+    drcc__rxw__rel__age_q age_q(
+        .d(age_q__d),
+        .q(age_q__q),
+        .clock(age_q__clock)
+    );
+    drcc__rxw__rel__rel_found rel_found(
+        .d(rel_found__d),
+        .q(rel_found__q),
+        .clock(rel_found__clock)
+    );
+    drcc__rxw__rel__rel_e_q rel_e_q(
+        .d(rel_e_q__d),
+        .q(rel_e_q__q),
+        .clock(rel_e_q__clock)
+    );
+    drcc__rxw__rel__rel_age rel_age(
+        .d(rel_age__d),
+        .q(rel_age__q),
+        .clock(rel_age__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        age_q__clock = clk;
+        rel_found__clock = clk;
+        rel_e_q__clock = clk;
+        rel_age__clock = clk;
+        age_q__d = age_q__q;
+        rel_found__d = rel_found__q;
+        rel_e_q__d = rel_e_q__q;
+        rel_age__d = rel_age__q;
+        age_q__d = next_age + ((tick) & 16'hffff);
+        take = cand & (~rel_found__q | (age_q__q > rel_age__q));
+        rel_found__d = rel_found__q | take;
+        rel_e_q__d = rel_e_q__q;
+        rel_age__d = rel_age__q;
+        if (take) begin
+            rel_e_q__d = scan_e;
+            rel_age__d = age_q__q;
+        end
+        if (start) begin
+            rel_found__d = 1'b0;
+        end
+        if (clear) begin
+            rel_found__d = 1'b0;
+            rel_e_q__d = zero5;
+            rel_age__d = zero16;
+        end
+        found = rel_found__q | take;
+        rel_e = rel_e_q__q;
+    end
+    
+endmodule // drcc__rxw__rel
+
+
+module drcc__rxw__rel__age_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__age_q
+
+
+module drcc__rxw__rel__rel_age(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__rel_age
+
+
+module drcc__rxw__rel__rel_e_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__rel_e_q
+
+
+module drcc__rxw__rel__rel_found(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__rel_found
+
+
+module drcc__rxw__rel_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel_pending
 
 
 module drcc__rxw__rxp_a(d,q,clock);
@@ -18516,11 +22798,156 @@ module drcc__rxw__sel(d,q,clock);
 endmodule // drcc__rxw__sel
 
 
+module drcc__rxw__stats(clk,rst,pcl_inc,released_inc,expired_inc,pcl_frames,released,expired);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  pcl_inc;
+    input wire  released_inc;
+    input wire  expired_inc;
+    output reg  [15:0] pcl_frames;
+    output reg  [7:0] released;
+    output reg  [7:0] expired;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    localparam  one16 = 16'h1;
+    localparam  max16 = 16'hffff;
+    localparam  zero16 = 16'h0;
+    
+    // Stub signals
+    reg  [15:0] pcl_q__d;
+    wire  [15:0] pcl_q__q;
+    reg  pcl_q__clock;
+    reg  [7:0] released_q__d;
+    wire  [7:0] released_q__q;
+    reg  released_q__clock;
+    reg  [7:0] expired_q__d;
+    wire  [7:0] expired_q__q;
+    reg  expired_q__clock;
+    
+    // Sub module instances
+    drcc__rxw__stats__pcl_q pcl_q(
+        .d(pcl_q__d),
+        .q(pcl_q__q),
+        .clock(pcl_q__clock)
+    );
+    drcc__rxw__stats__released_q released_q(
+        .d(released_q__d),
+        .q(released_q__q),
+        .clock(released_q__clock)
+    );
+    drcc__rxw__stats__expired_q expired_q(
+        .d(expired_q__d),
+        .q(expired_q__q),
+        .clock(expired_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        pcl_q__clock = clk;
+        released_q__clock = clk;
+        expired_q__clock = clk;
+        pcl_q__d = pcl_q__q;
+        released_q__d = released_q__q;
+        expired_q__d = expired_q__q;
+        pcl_q__d = pcl_q__q;
+        if (pcl_inc & (pcl_q__q != max16)) begin
+            pcl_q__d = pcl_q__q + one16;
+        end
+        released_q__d = released_q__q;
+        if (released_inc & (released_q__q != max8)) begin
+            released_q__d = released_q__q + one8;
+        end
+        expired_q__d = expired_q__q;
+        if (expired_inc & (expired_q__q != max8)) begin
+            expired_q__d = expired_q__q + one8;
+        end
+        if (rst) begin
+            pcl_q__d = zero16;
+            released_q__d = zero8;
+            expired_q__d = zero8;
+        end
+        pcl_frames = pcl_q__q;
+        released = released_q__q;
+        expired = expired_q__q;
+    end
+    
+endmodule // drcc__rxw__stats
+
+
+module drcc__rxw__stats__expired_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__stats__expired_q
+
+
+module drcc__rxw__stats__pcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__stats__pcl_q
+
+
+module drcc__rxw__stats__released_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__stats__released_q
+
+
+module drcc__rxw__w_pcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__w_pcl
+
+
 module drcc__rxw__w_state(d,q,clock);
     
     // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -18907,12 +23334,16 @@ module drcc__ticker__tq_cnt(d,q,clock);
 endmodule // drcc__ticker__tq_cnt
 
 
-module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,req_a,req_b,done_evt,failed_evt);
+module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
     
     // Module arguments
     input wire  clk;
     input wire  clear;
     input wire  redundancy;
+    input wire  dmr;
+    input wire  [2:0] off_dcl;
+    input wire  [2:0] off_rcl;
+    input wire  [3:0] dmr_pop;
     input wire  push;
     input wire  push_q;
     input wire  [98:0] push_frame;
@@ -18924,6 +23355,7 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
     output reg  [3:0] count_a;
     output reg  [3:0] count_b;
     output reg  [98:0] rd_frame;
+    output reg  rd_sel_o;
     output reg  req_a;
     output reg  req_b;
     output reg  done_evt;
@@ -18973,6 +23405,8 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
     
     // Local signals
     reg  pop_a;
+    reg  [3:0] pop_n;
+    reg  [2:0] dmr_off;
     reg  pop_b;
     reg  push_a;
     reg  push_b;
@@ -19057,13 +23491,28 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
         busy_b__d = busy_b__q;
         ram__clk = clk;
         ram__read_enable = 1'b1;
-        if (redundancy) begin
+        if (dmr) begin
+            pop_a = 1'b0;
+            pop_b = 1'b0;
+        end
+        else if (redundancy) begin
             pop_a = pop_red & (cnt_a__q != zero4);
             pop_b = 1'b0;
         end
         else begin
             pop_a = (done_a | failed_a) & (cnt_a__q != zero4);
             pop_b = (done_b | failed_b) & (cnt_b__q != zero4);
+        end
+        if (dmr) begin
+            if (dmr_pop > cnt_a__q) begin
+                pop_n = cnt_a__q;
+            end
+            else begin
+                pop_n = dmr_pop;
+            end
+        end
+        else begin
+            pop_n = ((pop_a) & 4'hf);
         end
         push_a = push & ~push_q;
         push_b = push & push_q;
@@ -19082,7 +23531,16 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
         else begin
             rd_slot = head_a__q;
         end
-        if (redundancy) begin
+        if (rd_sel__q) begin
+            dmr_off = off_rcl;
+        end
+        else begin
+            dmr_off = off_dcl;
+        end
+        if (dmr) begin
+            ram__read_address = ((head_a__q + dmr_off) & 4'hf);
+        end
+        else if (redundancy) begin
             ram__read_address = ((head_a__q) & 4'hf);
         end
         else begin
@@ -19091,18 +23549,13 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
         rd_frame = ram__read_data;
         head_a__d = head_a__q;
         head_b__d = head_b__q;
-        if (pop_a) begin
-            head_a__d = head_a__q + one3;
-        end
+        head_a__d = head_a__q + pop_n[(32'h0)+:(3)];
         if (pop_b) begin
             head_b__d = head_b__q + one3;
         end
-        cnt_a__d = cnt_a__q;
-        if (push_a & ~pop_a) begin
-            cnt_a__d = cnt_a__q + one4;
-        end
-        else if (~push_a & pop_a) begin
-            cnt_a__d = cnt_a__q - one4;
+        cnt_a__d = cnt_a__q - pop_n;
+        if (push_a) begin
+            cnt_a__d = cnt_a__q - pop_n + one4;
         end
         cnt_b__d = cnt_b__q;
         if (push_b & ~pop_b) begin
@@ -19112,18 +23565,18 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
             cnt_b__d = cnt_b__q - one4;
         end
         rd_sel__d = ~rd_sel__q & ~redundancy;
-        req_a_q__d = ~redundancy & ~rd_sel__q & (cnt_a__q != zero4) & ~busy_a__q & ~req_a_q__q;
-        req_b_q__d = ~redundancy & rd_sel__q & (cnt_b__q != zero4) & ~busy_b__q & ~req_b_q__q;
+        req_a_q__d = ~redundancy & ~dmr & ~rd_sel__q & (cnt_a__q != zero4) & ~busy_a__q & ~req_a_q__q;
+        req_b_q__d = ~redundancy & ~dmr & rd_sel__q & (cnt_b__q != zero4) & ~busy_b__q & ~req_b_q__q;
         busy_a__d = busy_a__q | req_a_q__d;
         busy_b__d = busy_b__q | req_b_q__d;
-        if (~redundancy & (done_a | failed_a)) begin
+        if (dmr | (~redundancy & (done_a | failed_a))) begin
             busy_a__d = 1'b0;
         end
-        if (~redundancy & (done_b | failed_b)) begin
+        if (dmr | (~redundancy & (done_b | failed_b))) begin
             busy_b__d = 1'b0;
         end
-        done_evt = ~redundancy & (done_a | done_b);
-        failed_evt = ~redundancy & (failed_a | failed_b);
+        done_evt = ~redundancy & ~dmr & (done_a | done_b);
+        failed_evt = ~redundancy & ~dmr & (failed_a | failed_b);
         if (clear) begin
             head_a__d = zero3;
             head_b__d = zero3;
@@ -19141,6 +23594,7 @@ module drcc__txbuf(clk,clear,redundancy,push,push_q,push_frame,pop_red,done_a,fa
         count_b = cnt_b__q;
         req_a = req_a_q__q;
         req_b = req_b_q__q;
+        rd_sel_o = rd_sel__q;
     end
     
 endmodule // drcc__txbuf

@@ -326,7 +326,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         assert_eq!(rot_back(w.hv.q.val(), ws, si), m.hv, "hv, {}", ctx());
         assert_eq!(rot_back(w.hu.q.val(), ws, si), m.hu, "hu, {}", ctx());
         assert_eq!(rot_back(w.hd.q.val(), ws, si), m.hd, "hd, {}", ctx());
-        assert_eq!(w.release.q.val(), m.release, "release, {}", ctx());
+        assert_eq!(w.rel_pending.q.val(), m.release, "release, {}", ctx());
         assert_eq!(
             w.duplicates.val().to_u16(),
             m.duplicates,

@@ -409,8 +409,8 @@ impl Logic for Drcc {
         self.txbuf.clear.next = self.clear.val();
         self.txbuf.redundancy.next = self.regs.redundancy.val();
         self.txbuf.dmr.next = self.regs.dmr.val();
-        self.txbuf.off_dcl.next = self.dmr_ctl.off_dcl.val();
-        self.txbuf.off_rcl.next = self.dmr_ctl.off_rcl.val();
+        self.txbuf.off_dcl.next = self.dmr_ctl.off_dcl.val().get_bits::<3>(0);
+        self.txbuf.off_rcl.next = self.dmr_ctl.off_rcl.val().get_bits::<3>(0);
         self.txbuf.dmr_pop.next = self.dmr_ctl.pop.val();
         self.txbuf.push.next = self.regs.push.val();
         self.txbuf.push_q.next = self.regs.push_q.val();
@@ -484,8 +484,8 @@ impl Logic for Drcc {
             self.chan_a.tx_rtr.next = false;
             self.chan_a.tx_ide.next = false;
             self.chan_a.tx_id.next = bit_cast::<29, 11>(self.dmr_regs.cs_id_dcl.val());
-            self.chan_a.tx_dlc.next = 0.into();
-            self.chan_a.tx_data.next = 0.into();
+            self.chan_a.tx_dlc.next = bit_cast::<4, 1>(false.into());
+            self.chan_a.tx_data.next = bit_cast::<64, 1>(false.into());
         } else {
             self.chan_a.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
             self.chan_a.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
@@ -516,8 +516,8 @@ impl Logic for Drcc {
             self.chan_b.tx_rtr.next = false;
             self.chan_b.tx_ide.next = false;
             self.chan_b.tx_id.next = bit_cast::<29, 11>(self.dmr_regs.cs_id_rcl.val());
-            self.chan_b.tx_dlc.next = 0.into();
-            self.chan_b.tx_data.next = 0.into();
+            self.chan_b.tx_dlc.next = bit_cast::<4, 1>(false.into());
+            self.chan_b.tx_data.next = bit_cast::<64, 1>(false.into());
         } else {
             self.chan_b.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
             self.chan_b.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);

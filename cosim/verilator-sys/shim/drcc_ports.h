@@ -60,7 +60,14 @@
     X(uint8_t,  chan_a_rec,                     8)  /* Channel A receive error counter (its `rec`). */ \
     X(uint8_t,  chan_b_rec,                     8)  /* Channel B receive error counter (its `rec`). */ \
     X(uint8_t,  chan_a_err_state,               2)  /* Channel A `err_state`: 0 error active, 1 error passive, 2 bus-off. */ \
-    X(uint8_t,  chan_b_err_state,               2)  /* Channel B `err_state`: 0 error active, 1 error passive, 2 bus-off. */
+    X(uint8_t,  chan_b_err_state,               2)  /* Channel B `err_state`: 0 error active, 1 error passive, 2 bus-off. */ \
+    X(uint8_t,  dmr_state,                      2)  /* DMR state: 0 redundancy active, 1 redundancy passive, 2 redundancy disabled, 3 network disconnected. */ \
+    X(uint8_t,  acl,                            1)  /* Active CAN line: 0 = DCL (channel A), 1 = RCL (channel B). */ \
+    X(uint8_t,  dcl_tx_fault,                   1)  /* The DCL cannot transmit (a transmit fault was found on it). */ \
+    X(uint8_t,  dcl_rx_fault,                   1)  /* A fault on reception was found on the DCL. */ \
+    X(uint8_t,  rcl_tx_fault,                   1)  /* The RCL cannot transmit. */ \
+    X(uint8_t,  rcl_rx_fault,                   1)  /* A fault on reception was found on the RCL. */ \
+    X(uint8_t,  dmr_tick,                       1)  /* One-clock pulse every `DMR_TIME.tick_bits` nominal bit times (the DMR tick). */
 // clang-format on
 
 #define DRCC_PORT_FIELD(type, name, width) type name;

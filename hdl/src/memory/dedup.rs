@@ -118,7 +118,7 @@ pub struct RxWriter {
     /// DMR: history entry delivered to the FIFO (rotated as `hv`).
     pub hd: DFF<Bits<32>>,
     /// DMR: an ACL switch left frames to release.
-    pub release: DFF<Bit>,
+    pub rel_pending: DFF<Bit>,
     /// DMR: the frame in `decide` came from the passive line.
     w_pcl: DFF<Bit>,
     /// DMR: `hd` of the hit entry, taken with `hit`.
@@ -219,7 +219,7 @@ impl Default for RxWriter {
             hv: Default::default(),
             hu: Default::default(),
             hd: Default::default(),
-            release: Default::default(),
+            rel_pending: Default::default(),
             w_pcl: Default::default(),
             hit_hd: Default::default(),
             dups_q: Default::default(),
@@ -277,7 +277,7 @@ impl Logic for RxWriter {
     fn update(&mut self) {
         dff_setup!(
             self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, free_found, free_e,
-            hist_ptr, exp_q, hist_idle, hv, hu, hd, release, w_pcl, hit_hd, dups_q, overruns_q
+            hist_ptr, exp_q, hist_idle, hv, hu, hd, rel_pending, w_pcl, hit_hd, dups_q, overruns_q
         );
         self.hist.clk.next = self.clk.val();
         self.hist.read_enable.next = true;
@@ -407,7 +407,7 @@ impl Logic for RxWriter {
         self.hist_ptr.d.next = self.hist_ptr.q.val();
         self.hu.d.next = self.hu.q.val();
         self.hd.d.next = self.hd.q.val();
-        self.release.d.next = self.release.q.val();
+        self.rel_pending.d.next = self.rel_pending.q.val();
         self.w_pcl.d.next = self.w_pcl.q.val();
         self.dups_q.d.next = self.dups_q.q.val();
         self.overruns_q.d.next = self.overruns_q.q.val();
@@ -456,7 +456,7 @@ impl Logic for RxWriter {
                 } else {
                     self.w_state.d.next = self.s_write.val();
                 }
-            } else if self.dmr.val() & self.release.q.val() & self.dedup_on.val() {
+            } else if self.dmr.val() & self.rel_pending.q.val() & self.dedup_on.val() {
                 // §8: a free idle edge looks for the next frame to release
                 self.w_state.d.next = self.s_rscan.val();
                 self.scan_i.d.next = self.zero6.val();
@@ -492,7 +492,7 @@ impl Logic for RxWriter {
                     // entry 31, judged at this edge, counts
                     self.w_state.d.next = self.s_fetch.val();
                 } else {
-                    self.release.d.next = false;
+                    self.rel_pending.d.next = false;
                     self.w_state.d.next = self.s_idle.val();
                 }
             }
@@ -573,7 +573,7 @@ impl Logic for RxWriter {
             self.rxp_b.d.next = true;
         }
         if self.release_set.val() {
-            self.release.d.next = true;
+            self.rel_pending.d.next = true;
         }
 
         if self.clear.val() {
@@ -592,7 +592,7 @@ impl Logic for RxWriter {
             self.hv.d.next = self.zero32.val();
             self.hu.d.next = self.zero32.val();
             self.hd.d.next = self.zero32.val();
-            self.release.d.next = false;
+            self.rel_pending.d.next = false;
             self.w_pcl.d.next = false;
             self.fifo_wr.next = false;
             self.rx_evt.next = false;

@@ -40,10 +40,10 @@ pub struct TxBuffer {
     // DMR mode: the lines' read offsets and the entries they left behind
     /// `CTRL.dmr`: queue A is read at `head_a + off[rd_sel]`, popped by `dmr_pop`.
     pub dmr: Signal<In, Bit>,
-    /// DMR: the DCL's offset `off[0]` (0..8), a register of the DMR control.
-    pub off_dcl: Signal<In, Bits<4>>,
-    /// DMR: the RCL's offset `off[1]` (0..8).
-    pub off_rcl: Signal<In, Bits<4>>,
+    /// DMR: the DCL's offset `off[0]` mod 8 (a register of the DMR control).
+    pub off_dcl: Signal<In, Bits<3>>,
+    /// DMR: the RCL's offset `off[1]` mod 8.
+    pub off_rcl: Signal<In, Bits<3>>,
     /// DMR: entries of queue A both lines have sent, popped at this edge.
     pub dmr_pop: Signal<In, Bits<4>>,
     // push (already accepted by the register block) and the staged frame
@@ -80,7 +80,7 @@ pub struct TxBuffer {
     busy_b: DFF<Bit>,
     pop_a: Signal<Local, Bit>,
     pop_n: Signal<Local, Bits<4>>,
-    dmr_off: Signal<Local, Bits<4>>,
+    dmr_off: Signal<Local, Bits<3>>,
     pop_b: Signal<Local, Bit>,
     push_a: Signal<Local, Bit>,
     push_b: Signal<Local, Bit>,
@@ -206,7 +206,7 @@ impl Logic for TxBuffer {
         }
         if self.dmr.val() {
             self.ram.read_address.next =
-                bit_cast::<4, 3>(self.head_a.q.val() + self.dmr_off.val().get_bits::<3>(0));
+                bit_cast::<4, 3>(self.head_a.q.val() + self.dmr_off.val());
         } else if self.redundancy.val() {
             self.ram.read_address.next = bit_cast::<4, 3>(self.head_a.q.val());
         } else {

@@ -167,7 +167,21 @@ fn one(
         })?;
     }
     let mut buf = Vec::new();
-    let r = run_row_traced(plan, row, kind, other, vcd.map(|_| &mut buf)).map_err(error)?;
+    let r = match run_row_traced(plan, row, kind, other, vcd.map(|_| &mut buf)) {
+        Ok(r) => r,
+        Err(e) => {
+            // A divergence is what the trace is for: keep it up to that clock.
+            if let Some(path) = vcd {
+                if !buf.is_empty() && std::fs::write(path, &buf).is_ok() {
+                    return Err(error(format!(
+                        "{e}; the trace up to there is in {}",
+                        path.display()
+                    )));
+                }
+            }
+            return Err(error(e));
+        }
+    };
     // The fault-free run of the same traffic, for the latency column.
     let base = if row == Row::BASELINE {
         None

@@ -6,8 +6,9 @@
 //! at every clock); the expected read values come from the contract and the
 //! register table, checked on the model's reads.
 //!
-//! The DRCC never leaves reset mode in DMR mode here: the DMR function itself
-//! (§3-§8) is compared by the DMR network tests.
+//! The last test leaves reset mode in DMR mode with each channel alone on its own
+//! wire: the DMR function (§3-§7) runs on all three engines in lock step; the plan's
+//! network runs (`dmr_cosim.rs`) compare it on four devices with the Verilated RTL.
 
 use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
@@ -20,6 +21,9 @@ use drcc_testbench::engines::verilator_required;
 struct Bench {
     engines: Vec<Box<dyn DrccEngine>>,
     cycle: u64,
+    /// Each channel's rx pin reads its own tx pin (a wire with no other node).
+    self_loop: bool,
+    last: DrccOutputs,
 }
 
 impl Bench {
@@ -32,7 +36,12 @@ impl Bench {
             Ok(v) => engines.push(Box::new(v)),
             Err(e) => assert!(!verilator_required(), "Verilator is required here: {e}"),
         }
-        let mut b = Bench { engines, cycle: 0 };
+        let mut b = Bench {
+            engines,
+            cycle: 0,
+            self_loop: false,
+            last: DrccOutputs::default(),
+        };
         for _ in 0..3 {
             b.step(DrccInputs {
                 rst: true,
@@ -45,7 +54,11 @@ impl Bench {
     }
 
     /// One clock on every engine; the CAN pins read recessive (no bus).
-    fn step(&mut self, i: DrccInputs) -> DrccOutputs {
+    fn step(&mut self, mut i: DrccInputs) -> DrccOutputs {
+        if self.self_loop {
+            i.chan_a_rx = self.last.chan_a_tx;
+            i.chan_b_rx = self.last.chan_b_tx;
+        }
         let outs: Vec<DrccOutputs> = self.engines.iter_mut().map(|e| e.step(&i)).collect();
         for (e, o) in self.engines.iter().zip(&outs).skip(1) {
             assert_eq!(
@@ -57,6 +70,7 @@ impl Bench {
             );
         }
         self.cycle += 1;
+        self.last = outs[0];
         outs[0]
     }
 
@@ -218,4 +232,72 @@ fn dmr_configuration_is_refused_or_stored_as_the_contract_says() {
     assert!(!b.refused(map::CTRL, ctrl(true, &[])));
     assert_eq!(b.read(map::MB_CFG), enable | 9);
     assert_eq!(b.read(map::MB_MASK), 0x1FFF_FFFF);
+}
+
+/// `DMR_STATUS` fields (§2.1): (dmr_state, acl, cause, state_changes, acl_switches).
+fn dmr_status(w: u32) -> (u32, u32, u32, u32, u32) {
+    (w & 3, w >> 2 & 1, w >> 8 & 3, w >> 16 & 0xFF, w >> 24)
+}
+
+#[test]
+fn dmr_function_alone_on_its_wires_on_three_engines() {
+    let mut b = Bench::new();
+    b.self_loop = true;
+    // 1 DMR tick = 16 bit times = 128 clocks (8 clocks per bit at the reset BTR);
+    // CS timeout 8 ticks, recovery delay 4 ticks
+    b.write(map::DMR_TIME, 16 | (4 << 16));
+    b.write(map::DMR_CFG, 8);
+    // mailbox 0: transmit, identifier 0x100
+    b.write(map::MB_SEL, 0);
+    b.write(map::MB_ID, 0x100 | put("MB_ID", "dir", 1));
+    b.write(map::MB_MASK, 0x7FF);
+    b.write(map::MB_CFG, put("MB_CFG", "enable", 1) | 2);
+    b.write(map::INT_ENABLE, put("INT_STATUS", "dmr", 1));
+    b.write(map::CTRL, ctrl(true, &[("dmr", 1)]));
+    b.write(map::CTRL, ctrl(false, &[("dmr", 1)]));
+    for _ in 0..2 {
+        b.write(map::TX_ID, 0x100);
+        b.write(map::TX_CTRL, 1);
+        b.write(map::TX_DATA0, 0x55);
+        b.write(map::TX_CMD, 1);
+    }
+    let idle = DrccInputs {
+        chan_a_rx: true,
+        chan_b_rx: true,
+        ..Default::default()
+    };
+    // Every clock the engines agree (Bench::step). Watch the DCL's transmit error
+    // counter: ACK errors raise it, the recovery's channel restart clears it.
+    let (mut tec_max, mut restarted, mut first_fault) = (0, false, None);
+    while b.cycle < 4_000 {
+        let o = b.step(idle);
+        let tec = o.probes.chan_a_bsp_tx_err_cnt;
+        if tec_max > 0 && tec == 0 {
+            restarted = true;
+        }
+        tec_max = tec_max.max(tec);
+        if first_fault.is_none() && o.probes.dcl_tx_fault && o.probes.rcl_tx_fault {
+            first_fault = Some(b.cycle);
+        }
+    }
+    // §7: no other node acknowledges the CS frames (ISO 11898-1: a transmitter does
+    // not acknowledge its own frame), so each line's attempt fails after the CS
+    // timeout: 8 ticks = 1024 clocks after it started, both lines at the same tick.
+    let at = first_fault.expect("both lines failed their CS attempt");
+    assert!((1024..1024 + 2 * 128 + 200).contains(&at), "CS failure at {at}");
+    let (state, acl, cause, changes, switches) = dmr_status(b.read(map::DMR_STATUS));
+    assert_eq!(state, 3, "network disconnected");
+    assert_eq!(cause, 3, "CS failed");
+    assert_eq!(
+        (acl, switches),
+        (0, 0),
+        "both lines failed at one edge: no ACL switch (§6)"
+    );
+    assert_eq!(changes, 1, "active -> disconnected, then it stays");
+    assert!(tec_max >= 8, "ACK errors on the CS frames");
+    assert!(restarted, "the recovery restarted the DCL channel (§7)");
+    // §5: the host copies wait behind the CS frame and then behind the faults
+    assert_eq!(b.read(map::STATUS) >> 16 & 0xF, 2, "both messages still queued");
+    assert_ne!(b.read(map::INT_STATUS) & put("INT_STATUS", "dmr", 1), 0);
+    assert_eq!(b.read(map::DMR_CS_COUNT), 0, "no CS frame was received");
 }

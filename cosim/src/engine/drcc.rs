@@ -81,4 +81,10 @@ pub trait DrccEngine {
     fn name(&self) -> &'static str;
     /// One clock: see the module documentation.
     fn step(&mut self, inputs: &DrccInputs) -> DrccOutputs;
+    /// Starts a VCD trace of every internal RTL signal from the next clock on (the
+    /// Verilated engine; the others have none and say so).
+    fn open_rtl_trace(&mut self, path: &std::path::Path) -> Result<(), String> {
+        let _ = path;
+        Err(format!("the {} engine has no RTL trace", self.name()))
+    }
 }

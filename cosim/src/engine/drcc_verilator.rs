@@ -50,6 +50,11 @@ impl DrccEngine for DrccVerilatorEngine {
     }
 
     #[inline]
+    fn open_rtl_trace(&mut self, path: &Path) -> Result<(), String> {
+        self.open_vcd(path)
+            .map_err(|e| format!("{}: {e}", path.display()))
+    }
+
     fn step(&mut self, i: &DrccInputs) -> DrccOutputs {
         self.ports_in = DrccIn {
             rst: i.rst as u8,

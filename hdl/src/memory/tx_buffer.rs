@@ -80,7 +80,7 @@ pub struct TxBuffer {
     busy_b: DFF<Bit>,
     pop_a: Signal<Local, Bit>,
     pop_n: Signal<Local, Bits<4>>,
-    dmr_off: Signal<Local, Bits<3>>,
+    dmr_slot: Signal<Local, Bits<3>>,
     pop_b: Signal<Local, Bit>,
     push_a: Signal<Local, Bit>,
     push_b: Signal<Local, Bit>,
@@ -130,7 +130,7 @@ impl Default for TxBuffer {
             busy_b: Default::default(),
             pop_a: Default::default(),
             pop_n: Default::default(),
-            dmr_off: Default::default(),
+            dmr_slot: Default::default(),
             pop_b: Default::default(),
             push_a: Default::default(),
             push_b: Default::default(),
@@ -199,14 +199,15 @@ impl Logic for TxBuffer {
         } else {
             self.rd_slot.next = self.head_a.q.val();
         }
+        // DMR: the entry `head_a + off[rd_sel]` mod 8, summed in a 3-bit signal of
+        // its own (inside a wider expression Verilog would keep the carry)
         if self.rd_sel.q.val() {
-            self.dmr_off.next = self.off_rcl.val();
+            self.dmr_slot.next = self.head_a.q.val() + self.off_rcl.val();
         } else {
-            self.dmr_off.next = self.off_dcl.val();
+            self.dmr_slot.next = self.head_a.q.val() + self.off_dcl.val();
         }
         if self.dmr.val() {
-            self.ram.read_address.next =
-                bit_cast::<4, 3>(self.head_a.q.val() + self.dmr_off.val());
+            self.ram.read_address.next = bit_cast::<4, 3>(self.dmr_slot.val());
         } else if self.redundancy.val() {
             self.ram.read_address.next = bit_cast::<4, 3>(self.head_a.q.val());
         } else {

@@ -194,6 +194,16 @@ pub fn run_row_traced(
                 }
             }
         }
+        if let Ok(spec) = std::env::var("DRCC_DEBUG_RTL_TRACE") {
+            // debugging aid: NODE:CYCLE:FILE opens the RTL trace of one device
+            let p: Vec<&str> = spec.splitn(3, ':').collect();
+            if p.len() == 3 && p[1].parse::<u64>().ok() == Some(cycle) {
+                let n: usize = p[0].parse().unwrap_or(0);
+                main.node_mut(n)
+                    .engine
+                    .open_rtl_trace(std::path::Path::new(p[2]))?;
+            }
+        }
         main.step();
         if let Some(w) = writer.as_mut() {
             w.write_cycle(&main).map_err(|e| e.to_string())?;

@@ -1,18 +1,33 @@
 //! The DMR mailboxes' state (DMR contract §4.1, §4.2, `MB_STATE` of §2.1): the
 //! `counter` (8-bit two's complement) and `timer` (16 bits) of every mailbox,
-//! packed in two registers. The engine writes one mailbox per clock (`sel`).
+//! in registers, read by the host window live, and a copy in block RAM, read by
+//! the engine. The engine writes one mailbox per clock (`sel`).
 //!
 //! One register per mailbox, written by its own enable (a one-hot decode of
 //! `sel`) with the shared value: on the iCE40 each bit is a flip-flop with clock
 //! enable and synchronous reset and no LUT (a packed register written as
 //! `q & !slot | value & slot` costs one LUT per bit, 384 here). `clear` zeroes
 //! every mailbox at once (reset mode, another DRCC mode, a recovery: §2.1, §7)
-//! and wins over a write. The outputs are the registers themselves: the readers (the engine's
+//! and wins over a write.
+//!
+//! The engine's copy: a block RAM with a registered read (the engine gives the
+//! address one edge ahead, `rd_addr`) saves the engine a 24-bit 16-way
+//! multiplexer (about 250 LUT4) for two `SB_RAM40_4K`. A block RAM cannot clear
+//! at once, so a `valid` bit per mailbox clears with `clear`, sets with a write,
+//! and the read data of a mailbox whose bit is 0 reads 0. Collisions (the read
+//! and write addresses meet at an edge, the RAM's read data is undefined there,
+//! `crate::memory::bram`): the engine writes only in `UPDATE` and `EVAL`; in
+//! `EVAL` it writes `e_i` while it loads `e_i + 1`, and the data loaded at the
+//! last `EVAL` edge and at the `UPDATE` edge belongs to the `IDLE` clock after
+//! them, which does not read it.
+//!
+//! The register outputs are the registers themselves: the readers (the engine's
 //! mailbox, the host window) slice them in the parent, so no combinational path
 //! runs from this block's inputs to its outputs (one `always` block per module:
 //! a read here would close a false loop through the engine's write data).
 
 use crate::channel::sized::Const;
+use crate::memory::bram::Bram;
 use rust_hdl::prelude::*;
 
 /// Counter and timer of 16 mailboxes.
@@ -31,6 +46,13 @@ pub struct MailboxState {
     pub counter_d: Signal<In, Bits<8>>,
     /// The new timer of mailbox `sel`.
     pub timer_d: Signal<In, Bits<16>>,
+    // ---- the engine's read port (block RAM copy) ----
+    /// The mailbox whose state `rd_counter` / `rd_timer` show after this edge.
+    pub rd_addr: Signal<In, Bits<4>>,
+    /// `counter` of the mailbox `rd_addr` named at the previous edge.
+    pub rd_counter: Signal<Out, Bits<8>>,
+    /// `timer` of the mailbox `rd_addr` named at the previous edge.
+    pub rd_timer: Signal<Out, Bits<16>>,
     // ---- the state ----
     /// Every counter (two's complement): mailbox i in `[8i+7:8i]`.
     pub counters: Signal<Out, Bits<128>>,
@@ -53,24 +75,47 @@ pub struct MailboxState {
     mb13: DFF<Bits<24>>,
     mb14: DFF<Bits<24>>,
     mb15: DFF<Bits<24>>,
+    copy: Bram<Bits<24>, 4>,
+    valid: DFF<Bits<16>>,
+    rd_q: DFF<Bits<4>>,
     // ---- internals ----
+    rd_word: Signal<Local, Bits<24>>,
     slot: Signal<Local, Bits<16>>,
     word: Signal<Local, Bits<24>>,
     one16: Const<16, 1>,
     zero24: Const<24, 0>,
+    zero16: Const<16, 0>,
 }
 
 impl Logic for MailboxState {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, mb0, mb1, mb2, mb3, mb4, mb5, mb6, mb7, mb8, mb9, mb10, mb11, mb12, mb13,
-            mb14, mb15
+            self, clk, valid, rd_q, mb0, mb1, mb2, mb3, mb4, mb5, mb6, mb7, mb8, mb9, mb10, mb11,
+            mb12, mb13, mb14, mb15
         );
         // the write: one enable per mailbox, the same word to all
         self.slot.next = self.one16.val() << self.sel.val();
         self.word.next =
             bit_cast::<24, 8>(self.counter_d.val()) | (bit_cast::<24, 16>(self.timer_d.val()) << 8);
+        // the engine's copy: written with the registers, read one edge ahead
+        self.copy.clk.next = self.clk.val();
+        self.copy.write_address.next = self.sel.val();
+        self.copy.write_data.next = self.word.val();
+        self.copy.write_enable.next = self.we.val();
+        self.copy.read_address.next = self.rd_addr.val();
+        self.copy.read_enable.next = true;
+        self.rd_q.d.next = self.rd_addr.val();
+        if self.valid.q.val().get_bit(self.rd_q.q.val().index()) {
+            self.rd_word.next = self.copy.read_data.val();
+        } else {
+            self.rd_word.next = self.zero24.val();
+        }
+        self.rd_counter.next = self.rd_word.val().get_bits::<8>(0);
+        self.rd_timer.next = self.rd_word.val().get_bits::<16>(8);
+        if self.we.val() {
+            self.valid.d.next = self.valid.q.val() | self.slot.val();
+        }
         if self.we.val() & self.slot.val().get_bit(0) {
             self.mb0.d.next = self.word.val();
         }
@@ -120,6 +165,7 @@ impl Logic for MailboxState {
             self.mb15.d.next = self.word.val();
         }
         if self.clear.val() {
+            self.valid.d.next = self.zero16.val();
             self.mb0.d.next = self.zero24.val();
             self.mb1.d.next = self.zero24.val();
             self.mb2.d.next = self.zero24.val();

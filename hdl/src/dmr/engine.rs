@@ -14,6 +14,9 @@
 //! The identifier memory (`super::mailbox_cfg`) is outside: the engine asks for
 //! mailbox `e_i + 1` during `SCAN` and `EVAL` and for 0 in `IDLE`, so the read
 //! data is always mailbox `e_i` (registered read, the address one edge ahead).
+//! The state copy the engine reads (`super::mailbox_state`, block RAM) follows
+//! the same addresses, except at the last `SCAN` edge, where it loads `e_hit`
+//! for `UPDATE`.
 //!
 //! `hold` resets the flags and the FSM and zeroes the state; the latched keys and
 //! `e_kind`, `e_line`, `e_key`, `e_hit` are not reset: each is written before it

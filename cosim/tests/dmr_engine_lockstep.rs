@@ -308,11 +308,11 @@ impl Lockstep {
             pre.pend_req[0],
             pre.pend_req[1],
         ];
-        for s in 0..6 {
-            if pend[s] && i.ev[s].is_some() {
-                c.again += 1;
-            }
-        }
+        c.again += pend
+            .iter()
+            .zip(i.ev.iter())
+            .filter(|(p, e)| **p && e.is_some())
+            .count() as u64;
         if pre.pend_eval && i.eval {
             c.eval_overrun += 1;
         }
@@ -460,7 +460,7 @@ impl Lockstep {
                     i.ev[s] = Some(self.key(s, p.match_bias, p.focus));
                 }
             }
-            i.eval = p.eval_every != 0 && self.clock % p.eval_every == 0;
+            i.eval = p.eval_every != 0 && self.clock.is_multiple_of(p.eval_every);
             i.clear_state = p.clear_every != 0 && self.rng.one_in(p.clear_every);
             if p.clear_every != 0 && self.rng.one_in(6000) {
                 // A short stretch in reset mode, the configuration kept.

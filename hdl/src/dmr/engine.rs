@@ -14,6 +14,9 @@
 //! The identifier memory (`super::mailbox_cfg`) is outside: the engine asks for
 //! mailbox `e_i + 1` during `SCAN` and `EVAL` and for 0 in `IDLE`, so the read
 //! data is always mailbox `e_i` (registered read, the address one edge ahead).
+//! The state copy the engine reads (`super::mailbox_state`, block RAM) follows
+//! the same addresses, except at the last `SCAN` edge, where it loads `e_hit`
+//! for `UPDATE`.
 //!
 //! `hold` resets the flags and the FSM and zeroes the state; the latched keys and
 //! `e_kind`, `e_line`, `e_key`, `e_hit` are not reset: each is written before it
@@ -135,7 +138,6 @@ pub struct DmrEngine {
     // ---- internals ----
     mb: Signal<Local, Bits<4>>,
     mb_c: Signal<Local, Bits<7>>,
-    mb_t: Signal<Local, Bits<8>>,
     win_c: Signal<Local, Bits<7>>,
     win_t: Signal<Local, Bits<8>>,
     en: Signal<Local, Bit>,
@@ -205,17 +207,9 @@ impl Logic for DmrEngine {
         }
         self.mbx.sel.next = self.mb.val();
         self.mb_c.next = bit_cast::<7, 4>(self.mb.val()) << 3;
-        self.mb_t.next = bit_cast::<8, 4>(self.mb.val()) << 4;
-        self.c.next = self
-            .mbx
-            .counters
-            .val()
-            .get_bits::<8>(self.mb_c.val().index());
-        self.t.next = self
-            .mbx
-            .timers
-            .val()
-            .get_bits::<16>(self.mb_t.val().index());
+        // Its state, from the block RAM copy read at the previous edge.
+        self.c.next = self.mbx.rd_counter.val();
+        self.t.next = self.mbx.rd_timer.val();
         // The host window (`MB_STATE`), live.
         self.win_c.next = bit_cast::<7, 4>(self.mb_sel.val()) << 3;
         self.win_t.next = bit_cast::<8, 4>(self.mb_sel.val()) << 4;
@@ -248,6 +242,17 @@ impl Logic for DmrEngine {
             & (((self.e_key.q.val().get_bits::<29>(0) ^ self.cfg_id_word.val().get_bits::<29>(0))
                 & self.cfg_mask.val())
                 == self.zero29.val());
+        // The state read for the next clock: `e_hit` (found at this edge or
+        // before) for UPDATE, otherwise the mailbox of the identifier memory.
+        if (self.state.q.val() == self.s_scan.val()) & (self.e_i.q.val() == self.last.val()) {
+            if !self.e_found.q.val() & self.hit.val() {
+                self.mbx.rd_addr.next = self.e_i.q.val();
+            } else {
+                self.mbx.rd_addr.next = self.e_hit.q.val();
+            }
+        } else {
+            self.mbx.rd_addr.next = self.cfg_addr.val();
+        }
         // §4.1 counter step: DCL +1, RCL -1, saturating; `toward` = the copy of
         // the lagging line (|c'| < |c|).
         if !self.e_line.q.val() {

@@ -18248,13 +18248,15 @@ module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,re
     reg  mbx__we;
     reg  [7:0] mbx__counter_d;
     reg  [15:0] mbx__timer_d;
+    reg  [3:0] mbx__rd_addr;
+    wire  [7:0] mbx__rd_counter;
+    wire  [15:0] mbx__rd_timer;
     wire  [127:0] mbx__counters;
     wire  [255:0] mbx__timers;
     
     // Local signals
     reg  [3:0] mb;
     reg  [6:0] mb_c;
-    reg  [7:0] mb_t;
     reg  [6:0] win_c;
     reg  [7:0] win_t;
     reg  en;
@@ -18378,6 +18380,9 @@ module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,re
         .we(mbx__we),
         .counter_d(mbx__counter_d),
         .timer_d(mbx__timer_d),
+        .rd_addr(mbx__rd_addr),
+        .rd_counter(mbx__rd_counter),
+        .rd_timer(mbx__rd_timer),
         .counters(mbx__counters),
         .timers(mbx__timers)
     );
@@ -18433,9 +18438,8 @@ module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,re
         end
         mbx__sel = mb;
         mb_c = ((mb) & 7'h7f) << 32'h3;
-        mb_t = ((mb) & 8'hff) << 32'h4;
-        c = mbx__counters[(mb_c)+:(8)];
-        t = mbx__timers[(mb_t)+:(16)];
+        c = mbx__rd_counter;
+        t = mbx__rd_timer;
         win_c = ((mb_sel) & 7'h7f) << 32'h3;
         win_t = ((mb_sel) & 8'hff) << 32'h4;
         mb_state_word = ((mbx__counters[(win_c)+:(8)]) & 32'hffffffff) | (((mbx__timers[(win_t)+:(16)]) & 32'hffffffff) << 32'h10);
@@ -18448,6 +18452,17 @@ module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,re
             cfg_addr = zero4;
         end
         hit = en & (cfg_id_word[32'h1e] == (e_kind__q != k_rx)) & (cfg_id_word[32'h1d] == e_key__q[32'h1d]) & (((e_key__q[(32'h0)+:(29)] ^ cfg_id_word[(32'h0)+:(29)]) & cfg_mask) == zero29);
+        if ((state__q == s_scan) & (e_i__q == last)) begin
+            if (~e_found__q & hit) begin
+                mbx__rd_addr = e_i__q;
+            end
+            else begin
+                mbx__rd_addr = e_hit__q;
+            end
+        end
+        else begin
+            mbx__rd_addr = cfg_addr;
+        end
         if (~e_line__q) begin
             if (c == max8) begin
                 c_step = c;
@@ -18828,7 +18843,7 @@ module drcc__dmr_eng__k_tx_rcl(d,q,clock);
 endmodule // drcc__dmr_eng__k_tx_rcl
 
 
-module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,counters,timers);
+module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers);
     
     // Module arguments
     input wire  clk;
@@ -18837,79 +18852,353 @@ module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,counters,timers);
     input wire  we;
     input wire  [7:0] counter_d;
     input wire  [15:0] timer_d;
+    input wire  [3:0] rd_addr;
+    output reg  [7:0] rd_counter;
+    output reg  [15:0] rd_timer;
     output reg  [127:0] counters;
     output reg  [255:0] timers;
     
     // Constant declarations
-    localparam  slot_mask_c = 128'hff;
-    localparam  slot_mask_t = 256'hffff;
-    localparam  zero128 = 128'h0;
-    localparam  zero256 = 256'h0;
+    localparam  one16 = 16'h1;
+    localparam  zero24 = 24'h0;
+    localparam  zero16 = 16'h0;
     
     // Stub signals
-    reg  [127:0] cnt_q__d;
-    wire  [127:0] cnt_q__q;
-    reg  cnt_q__clock;
-    reg  [255:0] tmr_q__d;
-    wire  [255:0] tmr_q__q;
-    reg  tmr_q__clock;
+    reg  [23:0] mb0__d;
+    wire  [23:0] mb0__q;
+    reg  mb0__clock;
+    reg  [23:0] mb1__d;
+    wire  [23:0] mb1__q;
+    reg  mb1__clock;
+    reg  [23:0] mb2__d;
+    wire  [23:0] mb2__q;
+    reg  mb2__clock;
+    reg  [23:0] mb3__d;
+    wire  [23:0] mb3__q;
+    reg  mb3__clock;
+    reg  [23:0] mb4__d;
+    wire  [23:0] mb4__q;
+    reg  mb4__clock;
+    reg  [23:0] mb5__d;
+    wire  [23:0] mb5__q;
+    reg  mb5__clock;
+    reg  [23:0] mb6__d;
+    wire  [23:0] mb6__q;
+    reg  mb6__clock;
+    reg  [23:0] mb7__d;
+    wire  [23:0] mb7__q;
+    reg  mb7__clock;
+    reg  [23:0] mb8__d;
+    wire  [23:0] mb8__q;
+    reg  mb8__clock;
+    reg  [23:0] mb9__d;
+    wire  [23:0] mb9__q;
+    reg  mb9__clock;
+    reg  [23:0] mb10__d;
+    wire  [23:0] mb10__q;
+    reg  mb10__clock;
+    reg  [23:0] mb11__d;
+    wire  [23:0] mb11__q;
+    reg  mb11__clock;
+    reg  [23:0] mb12__d;
+    wire  [23:0] mb12__q;
+    reg  mb12__clock;
+    reg  [23:0] mb13__d;
+    wire  [23:0] mb13__q;
+    reg  mb13__clock;
+    reg  [23:0] mb14__d;
+    wire  [23:0] mb14__q;
+    reg  mb14__clock;
+    reg  [23:0] mb15__d;
+    wire  [23:0] mb15__q;
+    reg  mb15__clock;
+    reg  copy__clk;
+    reg  [3:0] copy__read_address;
+    reg  copy__read_enable;
+    wire  [23:0] copy__read_data;
+    reg  [3:0] copy__write_address;
+    reg  [23:0] copy__write_data;
+    reg  copy__write_enable;
+    reg  [15:0] valid__d;
+    wire  [15:0] valid__q;
+    reg  valid__clock;
+    reg  [3:0] rd_q__d;
+    wire  [3:0] rd_q__q;
+    reg  rd_q__clock;
     
     // Local signals
-    reg  [6:0] sel_c;
-    reg  [7:0] sel_t;
-    reg  [127:0] slot_c;
-    reg  [255:0] slot_t;
-    reg  [127:0] c128;
-    reg  [255:0] t256;
-    reg  [127:0] rep_c;
-    reg  [255:0] rep_t;
+    reg  [23:0] rd_word;
+    reg  [15:0] slot;
+    reg  [23:0] word;
     
     // Sub module instances
-    drcc__dmr_eng__mbx__cnt_q cnt_q(
-        .d(cnt_q__d),
-        .q(cnt_q__q),
-        .clock(cnt_q__clock)
+    drcc__dmr_eng__mbx__mb0 mb0(
+        .d(mb0__d),
+        .q(mb0__q),
+        .clock(mb0__clock)
     );
-    drcc__dmr_eng__mbx__tmr_q tmr_q(
-        .d(tmr_q__d),
-        .q(tmr_q__q),
-        .clock(tmr_q__clock)
+    drcc__dmr_eng__mbx__mb1 mb1(
+        .d(mb1__d),
+        .q(mb1__q),
+        .clock(mb1__clock)
+    );
+    drcc__dmr_eng__mbx__mb2 mb2(
+        .d(mb2__d),
+        .q(mb2__q),
+        .clock(mb2__clock)
+    );
+    drcc__dmr_eng__mbx__mb3 mb3(
+        .d(mb3__d),
+        .q(mb3__q),
+        .clock(mb3__clock)
+    );
+    drcc__dmr_eng__mbx__mb4 mb4(
+        .d(mb4__d),
+        .q(mb4__q),
+        .clock(mb4__clock)
+    );
+    drcc__dmr_eng__mbx__mb5 mb5(
+        .d(mb5__d),
+        .q(mb5__q),
+        .clock(mb5__clock)
+    );
+    drcc__dmr_eng__mbx__mb6 mb6(
+        .d(mb6__d),
+        .q(mb6__q),
+        .clock(mb6__clock)
+    );
+    drcc__dmr_eng__mbx__mb7 mb7(
+        .d(mb7__d),
+        .q(mb7__q),
+        .clock(mb7__clock)
+    );
+    drcc__dmr_eng__mbx__mb8 mb8(
+        .d(mb8__d),
+        .q(mb8__q),
+        .clock(mb8__clock)
+    );
+    drcc__dmr_eng__mbx__mb9 mb9(
+        .d(mb9__d),
+        .q(mb9__q),
+        .clock(mb9__clock)
+    );
+    drcc__dmr_eng__mbx__mb10 mb10(
+        .d(mb10__d),
+        .q(mb10__q),
+        .clock(mb10__clock)
+    );
+    drcc__dmr_eng__mbx__mb11 mb11(
+        .d(mb11__d),
+        .q(mb11__q),
+        .clock(mb11__clock)
+    );
+    drcc__dmr_eng__mbx__mb12 mb12(
+        .d(mb12__d),
+        .q(mb12__q),
+        .clock(mb12__clock)
+    );
+    drcc__dmr_eng__mbx__mb13 mb13(
+        .d(mb13__d),
+        .q(mb13__q),
+        .clock(mb13__clock)
+    );
+    drcc__dmr_eng__mbx__mb14 mb14(
+        .d(mb14__d),
+        .q(mb14__q),
+        .clock(mb14__clock)
+    );
+    drcc__dmr_eng__mbx__mb15 mb15(
+        .d(mb15__d),
+        .q(mb15__q),
+        .clock(mb15__clock)
+    );
+    drcc__dmr_eng__mbx__copy copy(
+        .clk(copy__clk),
+        .read_address(copy__read_address),
+        .read_enable(copy__read_enable),
+        .read_data(copy__read_data),
+        .write_address(copy__write_address),
+        .write_data(copy__write_data),
+        .write_enable(copy__write_enable)
+    );
+    drcc__dmr_eng__mbx__valid valid(
+        .d(valid__d),
+        .q(valid__q),
+        .clock(valid__clock)
+    );
+    drcc__dmr_eng__mbx__rd_q rd_q(
+        .d(rd_q__d),
+        .q(rd_q__q),
+        .clock(rd_q__clock)
     );
     
     // Update code
     always @(*) begin
-        cnt_q__clock = clk;
-        tmr_q__clock = clk;
-        cnt_q__d = cnt_q__q;
-        tmr_q__d = tmr_q__q;
-        counters = cnt_q__q;
-        timers = tmr_q__q;
-        sel_c = ((sel) & 7'h7f) << 32'h3;
-        sel_t = ((sel) & 8'hff) << 32'h4;
-        slot_c = slot_mask_c << sel_c;
-        slot_t = slot_mask_t << sel_t;
-        c128 = ((counter_d) & 128'hffffffffffffffffffffffffffffffff);
-        t256 = ((timer_d) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff);
-        rep_c = c128 | (c128 << 32'h8) | (c128 << 32'h10) | (c128 << 32'h18) | (c128 << 32'h20) | (c128 << 32'h28) | (c128 << 32'h30) | (c128 << 32'h38) | (c128 << 32'h40) | (c128 << 32'h48) | (c128 << 32'h50) | (c128 << 32'h58) | (c128 << 32'h60) | (c128 << 32'h68) | (c128 << 32'h70) | (c128 << 32'h78);
-        rep_t = t256 | (t256 << 32'h10) | (t256 << 32'h20) | (t256 << 32'h30) | (t256 << 32'h40) | (t256 << 32'h50) | (t256 << 32'h60) | (t256 << 32'h70) | (t256 << 32'h80) | (t256 << 32'h90) | (t256 << 32'ha0) | (t256 << 32'hb0) | (t256 << 32'hc0) | (t256 << 32'hd0) | (t256 << 32'he0) | (t256 << 32'hf0);
+        valid__clock = clk;
+        rd_q__clock = clk;
+        mb0__clock = clk;
+        mb1__clock = clk;
+        mb2__clock = clk;
+        mb3__clock = clk;
+        mb4__clock = clk;
+        mb5__clock = clk;
+        mb6__clock = clk;
+        mb7__clock = clk;
+        mb8__clock = clk;
+        mb9__clock = clk;
+        mb10__clock = clk;
+        mb11__clock = clk;
+        mb12__clock = clk;
+        mb13__clock = clk;
+        mb14__clock = clk;
+        mb15__clock = clk;
+        valid__d = valid__q;
+        rd_q__d = rd_q__q;
+        mb0__d = mb0__q;
+        mb1__d = mb1__q;
+        mb2__d = mb2__q;
+        mb3__d = mb3__q;
+        mb4__d = mb4__q;
+        mb5__d = mb5__q;
+        mb6__d = mb6__q;
+        mb7__d = mb7__q;
+        mb8__d = mb8__q;
+        mb9__d = mb9__q;
+        mb10__d = mb10__q;
+        mb11__d = mb11__q;
+        mb12__d = mb12__q;
+        mb13__d = mb13__q;
+        mb14__d = mb14__q;
+        mb15__d = mb15__q;
+        slot = one16 << sel;
+        word = ((counter_d) & 24'hffffff) | (((timer_d) & 24'hffffff) << 32'h8);
+        copy__clk = clk;
+        copy__write_address = sel;
+        copy__write_data = word;
+        copy__write_enable = we;
+        copy__read_address = rd_addr;
+        copy__read_enable = 1'b1;
+        rd_q__d = rd_addr;
+        if (valid__q[rd_q__q]) begin
+            rd_word = copy__read_data;
+        end
+        else begin
+            rd_word = zero24;
+        end
+        rd_counter = rd_word[(32'h0)+:(8)];
+        rd_timer = rd_word[(32'h8)+:(16)];
         if (we) begin
-            cnt_q__d = (cnt_q__q & ~slot_c) | (rep_c & slot_c);
-            tmr_q__d = (tmr_q__q & ~slot_t) | (rep_t & slot_t);
+            valid__d = valid__q | slot;
+        end
+        if (we & slot[32'h0]) begin
+            mb0__d = word;
+        end
+        if (we & slot[32'h1]) begin
+            mb1__d = word;
+        end
+        if (we & slot[32'h2]) begin
+            mb2__d = word;
+        end
+        if (we & slot[32'h3]) begin
+            mb3__d = word;
+        end
+        if (we & slot[32'h4]) begin
+            mb4__d = word;
+        end
+        if (we & slot[32'h5]) begin
+            mb5__d = word;
+        end
+        if (we & slot[32'h6]) begin
+            mb6__d = word;
+        end
+        if (we & slot[32'h7]) begin
+            mb7__d = word;
+        end
+        if (we & slot[32'h8]) begin
+            mb8__d = word;
+        end
+        if (we & slot[32'h9]) begin
+            mb9__d = word;
+        end
+        if (we & slot[32'ha]) begin
+            mb10__d = word;
+        end
+        if (we & slot[32'hb]) begin
+            mb11__d = word;
+        end
+        if (we & slot[32'hc]) begin
+            mb12__d = word;
+        end
+        if (we & slot[32'hd]) begin
+            mb13__d = word;
+        end
+        if (we & slot[32'he]) begin
+            mb14__d = word;
+        end
+        if (we & slot[32'hf]) begin
+            mb15__d = word;
         end
         if (clear) begin
-            cnt_q__d = zero128;
-            tmr_q__d = zero256;
+            valid__d = zero16;
+            mb0__d = zero24;
+            mb1__d = zero24;
+            mb2__d = zero24;
+            mb3__d = zero24;
+            mb4__d = zero24;
+            mb5__d = zero24;
+            mb6__d = zero24;
+            mb7__d = zero24;
+            mb8__d = zero24;
+            mb9__d = zero24;
+            mb10__d = zero24;
+            mb11__d = zero24;
+            mb12__d = zero24;
+            mb13__d = zero24;
+            mb14__d = zero24;
+            mb15__d = zero24;
         end
+        counters = (((mb0__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h0) | (((mb1__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h8) | (((mb2__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h10) | (((mb3__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h18) | (((mb4__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h20) | (((mb5__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h28) | (((mb6__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h30) | (((mb7__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h38) | (((mb8__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h40) | (((mb9__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h48) | (((mb10__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h50) | (((mb11__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h58) | (((mb12__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h60) | (((mb13__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h68) | (((mb14__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h70) | (((mb15__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h78);
+        timers = (((mb0__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h0) | (((mb1__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h10) | (((mb2__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h20) | (((mb3__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h30) | (((mb4__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h40) | (((mb5__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h50) | (((mb6__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h60) | (((mb7__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h70) | (((mb8__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h80) | (((mb9__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h90) | (((mb10__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'ha0) | (((mb11__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hb0) | (((mb12__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hc0) | (((mb13__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hd0) | (((mb14__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'he0) | (((mb15__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hf0);
     end
     
 endmodule // drcc__dmr_eng__mbx
 
 
-module drcc__dmr_eng__mbx__cnt_q(d,q,clock);
+module drcc__dmr_eng__mbx__copy(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
     
     // Module arguments
-    input wire  [127:0] d;
-    output reg  [127:0] q;
+    input wire  clk;
+    input wire  [3:0] read_address;
+    input wire  read_enable;
+    output reg  [23:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [23:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[23:0] mem[15:0];
+    
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+    
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // drcc__dmr_eng__mbx__copy
+
+
+module drcc__dmr_eng__mbx__mb0(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -18918,14 +19207,14 @@ module drcc__dmr_eng__mbx__cnt_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__cnt_q
+endmodule // drcc__dmr_eng__mbx__mb0
 
 
-module drcc__dmr_eng__mbx__tmr_q(d,q,clock);
+module drcc__dmr_eng__mbx__mb1(d,q,clock);
     
     // Module arguments
-    input wire  [255:0] d;
-    output reg  [255:0] q;
+    input wire  [23:0] d;
+    output reg  [23:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -18934,7 +19223,263 @@ module drcc__dmr_eng__mbx__tmr_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__tmr_q
+endmodule // drcc__dmr_eng__mbx__mb1
+
+
+module drcc__dmr_eng__mbx__mb10(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb10
+
+
+module drcc__dmr_eng__mbx__mb11(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb11
+
+
+module drcc__dmr_eng__mbx__mb12(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb12
+
+
+module drcc__dmr_eng__mbx__mb13(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb13
+
+
+module drcc__dmr_eng__mbx__mb14(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb14
+
+
+module drcc__dmr_eng__mbx__mb15(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb15
+
+
+module drcc__dmr_eng__mbx__mb2(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb2
+
+
+module drcc__dmr_eng__mbx__mb3(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb3
+
+
+module drcc__dmr_eng__mbx__mb4(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb4
+
+
+module drcc__dmr_eng__mbx__mb5(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb5
+
+
+module drcc__dmr_eng__mbx__mb6(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb6
+
+
+module drcc__dmr_eng__mbx__mb7(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb7
+
+
+module drcc__dmr_eng__mbx__mb8(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb8
+
+
+module drcc__dmr_eng__mbx__mb9(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__mb9
+
+
+module drcc__dmr_eng__mbx__rd_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__rd_q
+
+
+module drcc__dmr_eng__mbx__valid(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__mbx__valid
 
 
 module drcc__dmr_eng__pend_eval(d,q,clock);
@@ -23406,7 +23951,7 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
     // Local signals
     reg  pop_a;
     reg  [3:0] pop_n;
-    reg  [2:0] dmr_off;
+    reg  [2:0] dmr_slot;
     reg  pop_b;
     reg  push_a;
     reg  push_b;
@@ -23532,13 +24077,13 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
             rd_slot = head_a__q;
         end
         if (rd_sel__q) begin
-            dmr_off = off_rcl;
+            dmr_slot = head_a__q + off_rcl;
         end
         else begin
-            dmr_off = off_dcl;
+            dmr_slot = head_a__q + off_dcl;
         end
         if (dmr) begin
-            ram__read_address = ((head_a__q + dmr_off) & 4'hf);
+            ram__read_address = ((dmr_slot) & 4'hf);
         end
         else if (redundancy) begin
             ram__read_address = ((head_a__q) & 4'hf);

@@ -488,6 +488,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  rxw__overrun_evt;
     wire  [15:0] rxw__duplicates;
     wire  [15:0] rxw__overruns;
+    reg  rxw__dmr;
+    reg  rxw__acl;
+    reg  rxw__release_set;
+    wire  [15:0] rxw__pcl_frames;
+    wire  [7:0] rxw__released;
+    wire  [7:0] rxw__expired;
     reg  chan_a__clk;
     reg  chan_a__rst;
     reg  [5:0] chan_a__cfg_brp;
@@ -884,7 +890,13 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .rx_evt(rxw__rx_evt),
         .overrun_evt(rxw__overrun_evt),
         .duplicates(rxw__duplicates),
-        .overruns(rxw__overruns)
+        .overruns(rxw__overruns),
+        .dmr(rxw__dmr),
+        .acl(rxw__acl),
+        .release_set(rxw__release_set),
+        .pcl_frames(rxw__pcl_frames),
+        .released(rxw__released),
+        .expired(rxw__expired)
     );
     drcc__chan_a chan_a(
         .clk(chan_a__clk),
@@ -1159,6 +1171,9 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         rxw__frame_a = (((chan_a__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_a__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_a__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_a__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_a__rx_data) & 99'h7ffffffffffffffffffffffff);
         rxw__frame_b = (((chan_b__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_b__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_b__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_b__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_b__rx_data) & 99'h7ffffffffffffffffffffffff);
         rxw__fifo_count = rxfifo__count;
+        rxw__dmr = 1'b0;
+        rxw__acl = 1'b0;
+        rxw__release_set = 1'b0;
         chan_a__clk = clk;
         chan_a__rst = clear | regs__reset_mode_d | aux_a__chan_rst;
         chan_a__cfg_brp = regs__brp;
@@ -17762,7 +17777,7 @@ module drcc__rxfifo__ready(d,q,clock);
 endmodule // drcc__rxfifo__ready
 
 
-module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns);
+module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,dmr,acl,release_set,pcl_frames,released,expired);
     
     // Module arguments
     input wire  clk;
@@ -17783,12 +17798,21 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     output reg  overrun_evt;
     output reg  [15:0] duplicates;
     output reg  [15:0] overruns;
+    input wire  dmr;
+    input wire  acl;
+    input wire  release_set;
+    output reg  [15:0] pcl_frames;
+    output reg  [7:0] released;
+    output reg  [7:0] expired;
     
     // Constant declarations
-    localparam  s_idle = 2'b0;
-    localparam  s_scan = 2'b1;
-    localparam  s_decide = 2'b10;
-    localparam  s_write = 2'b11;
+    localparam  s_idle = 3'b0;
+    localparam  s_scan = 3'b1;
+    localparam  s_decide = 3'b10;
+    localparam  s_write = 3'b11;
+    localparam  s_rscan = 3'b100;
+    localparam  s_fetch = 3'b101;
+    localparam  s_release = 3'b110;
     localparam  zero5 = 5'b0;
     localparam  one5 = 5'b1;
     localparam  zero6 = 6'b0;
@@ -17819,8 +17843,25 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [4:0] hist_ts__write_address;
     reg  [15:0] hist_ts__write_data;
     reg  hist_ts__write_enable;
-    reg  [1:0] w_state__d;
-    wire  [1:0] w_state__q;
+    reg  rel__clk;
+    reg  rel__clear;
+    reg  rel__start;
+    reg  rel__cand;
+    reg  [4:0] rel__scan_e;
+    reg  [15:0] rel__next_age;
+    reg  rel__tick;
+    wire  rel__found;
+    wire  [4:0] rel__rel_e;
+    reg  stats__clk;
+    reg  stats__rst;
+    reg  stats__pcl_inc;
+    reg  stats__released_inc;
+    reg  stats__expired_inc;
+    wire  [15:0] stats__pcl_frames;
+    wire  [7:0] stats__released;
+    wire  [7:0] stats__expired;
+    reg  [2:0] w_state__d;
+    wire  [2:0] w_state__q;
     reg  w_state__clock;
     reg  rxp_a__d;
     wire  rxp_a__q;
@@ -17861,6 +17902,18 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [31:0] hu__d;
     wire  [31:0] hu__q;
     reg  hu__clock;
+    reg  [31:0] hd__d;
+    wire  [31:0] hd__q;
+    reg  hd__clock;
+    reg  release_q__d;
+    wire  release_q__q;
+    reg  release_q__clock;
+    reg  w_pcl__d;
+    wire  w_pcl__q;
+    reg  w_pcl__clock;
+    reg  hit_hd__d;
+    wire  hit_hd__q;
+    reg  hit_hd__clock;
     reg  [15:0] dups_q__d;
     wire  [15:0] dups_q__q;
     reg  dups_q__clock;
@@ -17877,6 +17930,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [98:0] e_frame;
     reg  e_hv;
     reg  e_hu;
+    reg  e_hd;
     reg  e_expired;
     reg  e_gt;
     reg  e_ge;
@@ -17886,6 +17940,12 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [31:0] mask;
     reg  fifo_full;
     reg  [31:0] hv_base;
+    reg  in_scan;
+    reg  judging;
+    reg  pcl;
+    reg  r_cand;
+    reg  w_fifo;
+    reg  w_hist;
     
     // Sub module instances
     drcc__rxw__hist hist(
@@ -17905,6 +17965,27 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .write_address(hist_ts__write_address),
         .write_data(hist_ts__write_data),
         .write_enable(hist_ts__write_enable)
+    );
+    drcc__rxw__rel rel(
+        .clk(rel__clk),
+        .clear(rel__clear),
+        .start(rel__start),
+        .cand(rel__cand),
+        .scan_e(rel__scan_e),
+        .next_age(rel__next_age),
+        .tick(rel__tick),
+        .found(rel__found),
+        .rel_e(rel__rel_e)
+    );
+    drcc__rxw__stats stats(
+        .clk(stats__clk),
+        .rst(stats__rst),
+        .pcl_inc(stats__pcl_inc),
+        .released_inc(stats__released_inc),
+        .expired_inc(stats__expired_inc),
+        .pcl_frames(stats__pcl_frames),
+        .released(stats__released),
+        .expired(stats__expired)
     );
     drcc__rxw__w_state w_state(
         .d(w_state__d),
@@ -17976,6 +18057,26 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .q(hu__q),
         .clock(hu__clock)
     );
+    drcc__rxw__hd hd(
+        .d(hd__d),
+        .q(hd__q),
+        .clock(hd__clock)
+    );
+    drcc__rxw__release_q release_q(
+        .d(release_q__d),
+        .q(release_q__q),
+        .clock(release_q__clock)
+    );
+    drcc__rxw__w_pcl w_pcl(
+        .d(w_pcl__d),
+        .q(w_pcl__q),
+        .clock(w_pcl__clock)
+    );
+    drcc__rxw__hit_hd hit_hd(
+        .d(hit_hd__d),
+        .q(hit_hd__q),
+        .clock(hit_hd__clock)
+    );
     drcc__rxw__dups_q dups_q(
         .d(dups_q__d),
         .q(dups_q__q),
@@ -18003,6 +18104,10 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hist_idle__clock = clk;
         hv__clock = clk;
         hu__clock = clk;
+        hd__clock = clk;
+        release_q__clock = clk;
+        w_pcl__clock = clk;
+        hit_hd__clock = clk;
         dups_q__clock = clk;
         overruns_q__clock = clk;
         w_state__d = w_state__q;
@@ -18019,12 +18124,20 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hist_idle__d = hist_idle__q;
         hv__d = hv__q;
         hu__d = hu__q;
+        hd__d = hd__q;
+        release_q__d = release_q__q;
+        w_pcl__d = w_pcl__q;
+        hit_hd__d = hit_hd__q;
         dups_q__d = dups_q__q;
         overruns_q__d = overruns_q__q;
         hist__clk = clk;
         hist__read_enable = 1'b1;
         hist_ts__clk = clk;
         hist_ts__read_enable = 1'b1;
+        rel__clk = clk;
+        rel__clear = clear;
+        stats__clk = clk;
+        stats__rst = rst;
         if (sel__q) begin
             frame_sel = frame_b;
         end
@@ -18040,6 +18153,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         if (w_state__q == s_decide) begin
             mask_e = hit_e__q;
+        end
+        else if (w_state__q == s_release) begin
+            mask_e = rel__rel_e;
         end
         else begin
             mask_e = slot;
@@ -18059,13 +18175,24 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         e_hv = hv__q[32'h0];
         e_hu = hu__q[32'h0];
+        e_hd = hd__q[32'h0];
         e_expired = exp_q__q;
         fifo_full = fifo_count == full6;
-        hist__read_address = scan_i__q[(32'h0)+:(5)];
+        in_scan = (w_state__q == s_scan) | (w_state__q == s_rscan);
+        judging = in_scan & (scan_i__q != zero6);
+        pcl = sel__q != acl;
+        w_fifo = ~(dmr & w_pcl__q);
+        w_hist = dedup_on & ~hit__q;
+        if (w_state__q == s_fetch) begin
+            hist__read_address = rel__rel_e;
+        end
+        else begin
+            hist__read_address = scan_i__q[(32'h0)+:(5)];
+        end
         hist__write_enable = 1'b0;
         hist__write_address = slot;
         hist__write_data = (((frame_sel) & 100'hfffffffffffffffffffffffff) << 32'h1) | ((sel__q) & 100'hfffffffffffffffffffffffff);
-        if (w_state__q == s_scan) begin
+        if (in_scan) begin
             hist_ts__read_address = scan_i__q[(32'h0)+:(5)] + one5;
         end
         else begin
@@ -18075,9 +18202,23 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hist_ts__write_address = slot;
         hist_ts__write_data = now;
         fifo_wr = 1'b0;
-        fifo_data = (((sel__q) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 100'hfffffffffffffffffffffffff);
+        if (w_state__q == s_release) begin
+            fifo_data = (((acl) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((e_frame) & 100'hfffffffffffffffffffffffff);
+        end
+        else begin
+            fifo_data = (((sel__q) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 100'hfffffffffffffffffffffffff);
+        end
         rx_evt = 1'b0;
         overrun_evt = 1'b0;
+        rel__start = 1'b0;
+        r_cand = (w_state__q == s_rscan) & judging & e_hv & ~e_expired & ~e_hu & ~e_hd & (e_ch == acl);
+        rel__cand = r_cand;
+        rel__scan_e = scan_e;
+        rel__next_age = e_age;
+        rel__tick = tick;
+        stats__pcl_inc = 1'b0;
+        stats__released_inc = 1'b0;
+        stats__expired_inc = dmr & judging & e_hv & e_expired & ~e_hu & ~e_hd;
         w_state__d = w_state__q;
         rxp_a__d = rxp_a__q;
         rxp_b__d = rxp_b__q;
@@ -18085,10 +18226,14 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         scan_i__d = scan_i__q;
         hit__d = hit__q;
         hit_e__d = hit_e__q;
+        hit_hd__d = hit_hd__q;
         free_found__d = free_found__q;
         free_e__d = free_e__q;
         hist_ptr__d = hist_ptr__q;
         hu__d = hu__q;
+        hd__d = hd__q;
+        release_q__d = release_q__q;
+        w_pcl__d = w_pcl__q;
         dups_q__d = dups_q__q;
         overruns_q__d = overruns_q__q;
         hist_idle__d = hist_idle__q;
@@ -18103,6 +18248,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         e_keep = hv_base[32'h0] & ~e_expired;
         hv__d = hv_base;
+        if (judging) begin
+            hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << 32'h1f);
+            hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << 32'h1f);
+            hd__d = (hd__q >> one32) | (((hd__q[32'h0]) & 32'hffffffff) << 32'h1f);
+        end
         if (w_state__q == s_idle) begin
             if (rxp_a__q | rxp_b__q) begin
                 if (rxp_a__q) begin
@@ -18120,40 +18270,98 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                 if (dedup_on) begin
                     w_state__d = s_scan;
                 end
+                else if (dmr) begin
+                    w_state__d = s_decide;
+                end
                 else begin
                     w_state__d = s_write;
                 end
             end
+            else if (dmr & release_q__q & dedup_on) begin
+                w_state__d = s_rscan;
+                scan_i__d = zero6;
+                rel__start = 1'b1;
+            end
         end
-        else if (w_state__q == s_scan) begin
-            if (scan_i__q != zero6) begin
-                if ((~e_hv | e_hu | e_expired) & ~free_found__q) begin
-                    free_found__d = 1'b1;
-                    free_e__d = scan_e;
-                end
-                hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << 32'h1f);
-                hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << 32'h1f);
-                if (e_hv & ~e_expired & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
-                    hit__d = 1'b1;
-                    hit_e__d = scan_e;
-                end
+        else if (in_scan) begin
+            if (judging & (w_state__q == s_scan) & (~e_hv | e_hu | e_expired) & ~free_found__q) begin
+                free_found__d = 1'b1;
+                free_e__d = scan_e;
+            end
+            if (judging & (w_state__q == s_scan) & e_hv & ~e_expired & ~e_hu & (e_ch != sel__q) & (e_frame == frame_sel) & ~hit__q) begin
+                hit__d = 1'b1;
+                hit_e__d = scan_e;
+                hit_hd__d = e_hd;
             end
             scan_i__d = scan_i__q + one6;
             if (scan_i__q == last_scan) begin
-                w_state__d = s_decide;
+                if (w_state__q == s_scan) begin
+                    w_state__d = s_decide;
+                end
+                else if (rel__found | r_cand) begin
+                    w_state__d = s_fetch;
+                end
+                else begin
+                    release_q__d = 1'b0;
+                    w_state__d = s_idle;
+                end
             end
         end
         else if (w_state__q == s_decide) begin
+            if (dmr) begin
+                w_pcl__d = pcl;
+                stats__pcl_inc = pcl;
+            end
             if (hit__q) begin
-                hu__d = hu__q | mask;
-                if (dups_q__q != max16) begin
-                    dups_q__d = dups_q__q + one16;
+                if (~dmr | ~pcl | hit_hd__q) begin
+                    hu__d = hu__q | mask;
                 end
-                w_state__d = s_idle;
+                if (dmr & ~hit_hd__q & ~pcl) begin
+                    w_state__d = s_write;
+                end
+                else begin
+                    if (dups_q__q != max16) begin
+                        dups_q__d = dups_q__q + one16;
+                    end
+                    w_state__d = s_idle;
+                end
             end
             else begin
                 w_state__d = s_write;
             end
+        end
+        else if (w_state__q == s_write) begin
+            if (~w_fifo) begin
+            end
+            else if (fifo_full) begin
+                if (overruns_q__q != max16) begin
+                    overruns_q__d = overruns_q__q + one16;
+                end
+                overrun_evt = 1'b1;
+            end
+            else begin
+                fifo_wr = 1'b1;
+                rx_evt = 1'b1;
+            end
+            if (w_hist) begin
+                hist__write_enable = 1'b1;
+                hist_ts__write_enable = 1'b1;
+                hv__d = hv_base | mask;
+                hu__d = hu__q & ~mask;
+                if (~w_fifo) begin
+                    hd__d = hd__q & ~mask;
+                end
+                else begin
+                    hd__d = hd__q | mask;
+                end
+                if (~free_found__q) begin
+                    hist_ptr__d = hist_ptr__q + one5;
+                end
+            end
+            w_state__d = s_idle;
+        end
+        else if (w_state__q == s_fetch) begin
+            w_state__d = s_release;
         end
         else begin
             if (fifo_full) begin
@@ -18166,15 +18374,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                 fifo_wr = 1'b1;
                 rx_evt = 1'b1;
             end
-            if (dedup_on) begin
-                hist__write_enable = 1'b1;
-                hist_ts__write_enable = 1'b1;
-                hv__d = hv_base | mask;
-                hu__d = hu__q & ~mask;
-                if (~free_found__q) begin
-                    hist_ptr__d = hist_ptr__q + one5;
-                end
-            end
+            hd__d = hd__q | mask;
+            stats__released_inc = 1'b1;
             w_state__d = s_idle;
         end
         if (rxv_a) begin
@@ -18182,6 +18383,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         if (rxv_b) begin
             rxp_b__d = 1'b1;
+        end
+        if (release_set) begin
+            release_q__d = 1'b1;
         end
         if (clear) begin
             w_state__d = s_idle;
@@ -18191,12 +18395,16 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             scan_i__d = zero6;
             hit__d = 1'b0;
             hit_e__d = zero5;
+            hit_hd__d = 1'b0;
             free_found__d = 1'b0;
             free_e__d = zero5;
             hist_ptr__d = zero5;
             hist_idle__d = zero15;
             hv__d = zero32;
             hu__d = zero32;
+            hd__d = zero32;
+            release_q__d = 1'b0;
+            w_pcl__d = 1'b0;
             fifo_wr = 1'b0;
             rx_evt = 1'b0;
             overrun_evt = 1'b0;
@@ -18204,6 +18412,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             hist_ts__write_enable = 1'b0;
             dups_q__d = dups_q__q;
             overruns_q__d = overruns_q__q;
+            stats__pcl_inc = 1'b0;
+            stats__released_inc = 1'b0;
+            stats__expired_inc = 1'b0;
         end
         if (rst) begin
             dups_q__d = zero16;
@@ -18211,6 +18422,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         end
         duplicates = dups_q__q;
         overruns = overruns_q__q;
+        pcl_frames = stats__pcl_frames;
+        released = stats__released;
+        expired = stats__expired;
     end
     
 endmodule // drcc__rxw
@@ -18278,6 +18492,22 @@ module drcc__rxw__free_found(d,q,clock);
     end
           
 endmodule // drcc__rxw__free_found
+
+
+module drcc__rxw__hd(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__hd
 
 
 module drcc__rxw__hist(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
@@ -18404,6 +18634,22 @@ module drcc__rxw__hit_e(d,q,clock);
 endmodule // drcc__rxw__hit_e
 
 
+module drcc__rxw__hit_hd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__hit_hd
+
+
 module drcc__rxw__hu(d,q,clock);
     
     // Module arguments
@@ -18450,6 +18696,176 @@ module drcc__rxw__overruns_q(d,q,clock);
     end
           
 endmodule // drcc__rxw__overruns_q
+
+
+module drcc__rxw__rel(clk,clear,start,cand,scan_e,next_age,tick,found,rel_e);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  clear;
+    input wire  start;
+    input wire  cand;
+    input wire  [4:0] scan_e;
+    input wire  [15:0] next_age;
+    input wire  tick;
+    output reg  found;
+    output reg  [4:0] rel_e;
+    
+    // Constant declarations
+    localparam  zero5 = 5'b0;
+    localparam  zero16 = 16'h0;
+    
+    // Stub signals
+    reg  [15:0] age_q__d;
+    wire  [15:0] age_q__q;
+    reg  age_q__clock;
+    reg  rel_found__d;
+    wire  rel_found__q;
+    reg  rel_found__clock;
+    reg  [4:0] rel_e_q__d;
+    wire  [4:0] rel_e_q__q;
+    reg  rel_e_q__clock;
+    reg  [15:0] rel_age__d;
+    wire  [15:0] rel_age__q;
+    reg  rel_age__clock;
+    
+    // Local signals
+    reg  take;
+    
+    // Sub module instances
+    drcc__rxw__rel__age_q age_q(
+        .d(age_q__d),
+        .q(age_q__q),
+        .clock(age_q__clock)
+    );
+    drcc__rxw__rel__rel_found rel_found(
+        .d(rel_found__d),
+        .q(rel_found__q),
+        .clock(rel_found__clock)
+    );
+    drcc__rxw__rel__rel_e_q rel_e_q(
+        .d(rel_e_q__d),
+        .q(rel_e_q__q),
+        .clock(rel_e_q__clock)
+    );
+    drcc__rxw__rel__rel_age rel_age(
+        .d(rel_age__d),
+        .q(rel_age__q),
+        .clock(rel_age__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        age_q__clock = clk;
+        rel_found__clock = clk;
+        rel_e_q__clock = clk;
+        rel_age__clock = clk;
+        age_q__d = age_q__q;
+        rel_found__d = rel_found__q;
+        rel_e_q__d = rel_e_q__q;
+        rel_age__d = rel_age__q;
+        age_q__d = next_age + ((tick) & 16'hffff);
+        take = cand & (~rel_found__q | (age_q__q > rel_age__q));
+        rel_found__d = rel_found__q | take;
+        rel_e_q__d = rel_e_q__q;
+        rel_age__d = rel_age__q;
+        if (take) begin
+            rel_e_q__d = scan_e;
+            rel_age__d = age_q__q;
+        end
+        if (start) begin
+            rel_found__d = 1'b0;
+        end
+        if (clear) begin
+            rel_found__d = 1'b0;
+            rel_e_q__d = zero5;
+            rel_age__d = zero16;
+        end
+        found = rel_found__q;
+        rel_e = rel_e_q__q;
+    end
+    
+endmodule // drcc__rxw__rel
+
+
+module drcc__rxw__rel__age_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__age_q
+
+
+module drcc__rxw__rel__rel_age(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__rel_age
+
+
+module drcc__rxw__rel__rel_e_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__rel_e_q
+
+
+module drcc__rxw__rel__rel_found(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__rel__rel_found
+
+
+module drcc__rxw__release_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__release_q
 
 
 module drcc__rxw__rxp_a(d,q,clock);
@@ -18516,11 +18932,156 @@ module drcc__rxw__sel(d,q,clock);
 endmodule // drcc__rxw__sel
 
 
+module drcc__rxw__stats(clk,rst,pcl_inc,released_inc,expired_inc,pcl_frames,released,expired);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  pcl_inc;
+    input wire  released_inc;
+    input wire  expired_inc;
+    output reg  [15:0] pcl_frames;
+    output reg  [7:0] released;
+    output reg  [7:0] expired;
+    
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+    localparam  one16 = 16'h1;
+    localparam  max16 = 16'hffff;
+    localparam  zero16 = 16'h0;
+    
+    // Stub signals
+    reg  [15:0] pcl_q__d;
+    wire  [15:0] pcl_q__q;
+    reg  pcl_q__clock;
+    reg  [7:0] released_q__d;
+    wire  [7:0] released_q__q;
+    reg  released_q__clock;
+    reg  [7:0] expired_q__d;
+    wire  [7:0] expired_q__q;
+    reg  expired_q__clock;
+    
+    // Sub module instances
+    drcc__rxw__stats__pcl_q pcl_q(
+        .d(pcl_q__d),
+        .q(pcl_q__q),
+        .clock(pcl_q__clock)
+    );
+    drcc__rxw__stats__released_q released_q(
+        .d(released_q__d),
+        .q(released_q__q),
+        .clock(released_q__clock)
+    );
+    drcc__rxw__stats__expired_q expired_q(
+        .d(expired_q__d),
+        .q(expired_q__q),
+        .clock(expired_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        pcl_q__clock = clk;
+        released_q__clock = clk;
+        expired_q__clock = clk;
+        pcl_q__d = pcl_q__q;
+        released_q__d = released_q__q;
+        expired_q__d = expired_q__q;
+        pcl_q__d = pcl_q__q;
+        if (pcl_inc & (pcl_q__q != max16)) begin
+            pcl_q__d = pcl_q__q + one16;
+        end
+        released_q__d = released_q__q;
+        if (released_inc & (released_q__q != max8)) begin
+            released_q__d = released_q__q + one8;
+        end
+        expired_q__d = expired_q__q;
+        if (expired_inc & (expired_q__q != max8)) begin
+            expired_q__d = expired_q__q + one8;
+        end
+        if (rst) begin
+            pcl_q__d = zero16;
+            released_q__d = zero8;
+            expired_q__d = zero8;
+        end
+        pcl_frames = pcl_q__q;
+        released = released_q__q;
+        expired = expired_q__q;
+    end
+    
+endmodule // drcc__rxw__stats
+
+
+module drcc__rxw__stats__expired_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__stats__expired_q
+
+
+module drcc__rxw__stats__pcl_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__stats__pcl_q
+
+
+module drcc__rxw__stats__released_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__stats__released_q
+
+
+module drcc__rxw__w_pcl(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__rxw__w_pcl
+
+
 module drcc__rxw__w_state(d,q,clock);
     
     // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
     input wire  clock;
     
     // Update code (custom)

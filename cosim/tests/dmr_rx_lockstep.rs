@@ -326,7 +326,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         assert_eq!(rot_back(w.hv.q.val(), ws, si), m.hv, "hv, {}", ctx());
         assert_eq!(rot_back(w.hu.q.val(), ws, si), m.hu, "hu, {}", ctx());
         assert_eq!(rot_back(w.hd.q.val(), ws, si), m.hd, "hd, {}", ctx());
-        assert_eq!(w.release.q.val(), m.release, "release, {}", ctx());
+        assert_eq!(w.release_q.q.val(), m.release, "release, {}", ctx());
         assert_eq!(
             w.duplicates.val().to_u16(),
             m.duplicates,
@@ -506,4 +506,18 @@ fn dmr_rx_lockstep_redundancy_regression() {
     println!("{cov:#?}");
     assert!(cov.duplicates > 0 && cov.overruns > 0 && cov.frames > 0);
     assert_eq!(cov.pcl_frames + cov.releases + cov.rscans, 0);
+}
+
+/// Writes the Verilog of `RxWriter` (with `ReleaseScan` and `DmrRxStats`) to
+/// `$DRCC_RX_VERILOG_OUT`, for the Verilator lint and the iCE40 area count
+/// (`cargo test --release -p drcc-cosim --test dmr_rx_lockstep -- --ignored`).
+#[test]
+#[ignore]
+fn write_rx_writer_verilog() {
+    let Ok(path) = std::env::var("DRCC_RX_VERILOG_OUT") else {
+        return;
+    };
+    let mut uut = RxWriter::default();
+    uut.connect_all();
+    std::fs::write(path, generate_verilog(&uut)).unwrap();
 }

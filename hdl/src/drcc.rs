@@ -352,6 +352,10 @@ impl Logic for Drcc {
             | (bit_cast::<99, 4>(self.chan_b.rx_dlc.val()) << 64)
             | bit_cast::<99, 64>(self.chan_b.rx_data.val());
         self.rxw.fifo_count.next = self.rxfifo.count.val();
+        // DMR reception (DMR contract §8): held off until the DMR function is wired
+        self.rxw.dmr.next = false;
+        self.rxw.acl.next = false;
+        self.rxw.release_set.next = false;
 
         // ---- channels: shared bit timing, own mode, TX RAM read data ----
         // channel rst = rst | reset_mode | reset_mode one edge earlier | restart

@@ -22318,9 +22318,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  [31:0] hd__d;
     wire  [31:0] hd__q;
     reg  hd__clock;
-    reg  rel_pending__d;
-    wire  rel_pending__q;
-    reg  rel_pending__clock;
+    reg  release_q__d;
+    wire  release_q__q;
+    reg  release_q__clock;
     reg  w_pcl__d;
     wire  w_pcl__q;
     reg  w_pcl__clock;
@@ -22356,6 +22356,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     reg  in_scan;
     reg  judging;
     reg  pcl;
+    reg  r_cand;
     reg  w_fifo;
     reg  w_hist;
     
@@ -22474,10 +22475,10 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         .q(hd__q),
         .clock(hd__clock)
     );
-    drcc__rxw__rel_pending rel_pending(
-        .d(rel_pending__d),
-        .q(rel_pending__q),
-        .clock(rel_pending__clock)
+    drcc__rxw__release_q release_q(
+        .d(release_q__d),
+        .q(release_q__q),
+        .clock(release_q__clock)
     );
     drcc__rxw__w_pcl w_pcl(
         .d(w_pcl__d),
@@ -22517,7 +22518,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hv__clock = clk;
         hu__clock = clk;
         hd__clock = clk;
-        rel_pending__clock = clk;
+        release_q__clock = clk;
         w_pcl__clock = clk;
         hit_hd__clock = clk;
         dups_q__clock = clk;
@@ -22537,7 +22538,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hv__d = hv__q;
         hu__d = hu__q;
         hd__d = hd__q;
-        rel_pending__d = rel_pending__q;
+        release_q__d = release_q__q;
         w_pcl__d = w_pcl__q;
         hit_hd__d = hit_hd__q;
         dups_q__d = dups_q__q;
@@ -22623,7 +22624,8 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         rx_evt = 1'b0;
         overrun_evt = 1'b0;
         rel__start = 1'b0;
-        rel__cand = (w_state__q == s_rscan) & judging & e_hv & ~e_expired & ~e_hu & ~e_hd & (e_ch == acl);
+        r_cand = (w_state__q == s_rscan) & judging & e_hv & ~e_expired & ~e_hu & ~e_hd & (e_ch == acl);
+        rel__cand = r_cand;
         rel__scan_e = scan_e;
         rel__next_age = e_age;
         rel__tick = tick;
@@ -22643,7 +22645,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
         hist_ptr__d = hist_ptr__q;
         hu__d = hu__q;
         hd__d = hd__q;
-        rel_pending__d = rel_pending__q;
+        release_q__d = release_q__q;
         w_pcl__d = w_pcl__q;
         dups_q__d = dups_q__q;
         overruns_q__d = overruns_q__q;
@@ -22688,7 +22690,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                     w_state__d = s_write;
                 end
             end
-            else if (dmr & rel_pending__q & dedup_on) begin
+            else if (dmr & release_q__q & dedup_on) begin
                 w_state__d = s_rscan;
                 scan_i__d = zero6;
                 rel__start = 1'b1;
@@ -22709,11 +22711,11 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
                 if (w_state__q == s_scan) begin
                     w_state__d = s_decide;
                 end
-                else if (rel__found) begin
+                else if (rel__found | r_cand) begin
                     w_state__d = s_fetch;
                 end
                 else begin
-                    rel_pending__d = 1'b0;
+                    release_q__d = 1'b0;
                     w_state__d = s_idle;
                 end
             end
@@ -22796,7 +22798,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             rxp_b__d = 1'b1;
         end
         if (release_set) begin
-            rel_pending__d = 1'b1;
+            release_q__d = 1'b1;
         end
         if (clear) begin
             w_state__d = s_idle;
@@ -22814,7 +22816,7 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
             hv__d = zero32;
             hu__d = zero32;
             hd__d = zero32;
-            rel_pending__d = 1'b0;
+            release_q__d = 1'b0;
             w_pcl__d = 1'b0;
             fifo_wr = 1'b0;
             rx_evt = 1'b0;
@@ -23192,7 +23194,7 @@ module drcc__rxw__rel(clk,clear,start,cand,scan_e,next_age,tick,found,rel_e);
             rel_e_q__d = zero5;
             rel_age__d = zero16;
         end
-        found = rel_found__q | take;
+        found = rel_found__q;
         rel_e = rel_e_q__q;
     end
     
@@ -23263,7 +23265,7 @@ module drcc__rxw__rel__rel_found(d,q,clock);
 endmodule // drcc__rxw__rel__rel_found
 
 
-module drcc__rxw__rel_pending(d,q,clock);
+module drcc__rxw__release_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -23276,7 +23278,7 @@ module drcc__rxw__rel_pending(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__rxw__rel_pending
+endmodule // drcc__rxw__release_q
 
 
 module drcc__rxw__rxp_a(d,q,clock);

@@ -151,7 +151,7 @@ struct Coverage {
     resets: u64,
 }
 
-/// Arrival times per line: `clock -> frame`, at least `GAP` clocks apart.
+/// Arrivals per clock and line, at least `GAP` clocks apart on a line.
 const GAP: u64 = 40;
 
 fn place(occupied: &mut BTreeSet<u64>, mut t: u64) -> u64 {
@@ -166,9 +166,9 @@ fn place(occupied: &mut BTreeSet<u64>, mut t: u64) -> u64 {
     t
 }
 
-fn schedule(run: &Run, rng: &mut Rng) -> [Vec<Option<Frame>>; 2] {
+fn schedule(run: &Run, rng: &mut Rng) -> Vec<[Option<Frame>; 2]> {
     let n = run.clocks as u64;
-    let mut lines: [Vec<Option<Frame>>; 2] = [vec![None; run.clocks], vec![None; run.clocks]];
+    let mut lines: Vec<[Option<Frame>; 2]> = vec![[None; 2]; run.clocks];
     let mut occ: [BTreeSet<u64>; 2] = Default::default();
     // a small pool, so that distinct messages can be identical frames
     let ids = [0x123u32, 0x124, 0x7EA, 0x1ABC_DEF0, 0x10, 0x5A5];
@@ -190,7 +190,7 @@ fn schedule(run: &Run, rng: &mut Rng) -> [Vec<Option<Frame>>; 2] {
         let mut put = |line: usize, at: u64| {
             let at = place(&mut occ[line], at);
             if at < n {
-                lines[line][at as usize] = Some(f);
+                lines[at as usize][line] = Some(f);
             }
         };
         if kind < 60 {
@@ -234,7 +234,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
     let mut prev_pop = false;
     let mut reset_left = 0usize;
     let dedup_on = run.window != 0;
-    for clk in 0..run.clocks {
+    for (clk, arrived) in arrivals.iter().enumerate() {
         // ---- stimulus for this clock ----
         let rst = clk < 3;
         if clk == 3 || (clk > 100 && rng.chance(1, 15000)) {
@@ -250,9 +250,9 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         let pop = !prev_pop && rng.below(200) < pop_num;
         let tick = clk % run.tick_period == 0;
         let mut rxv = [false; 2];
-        for l in 0..2 {
-            if let Some(f) = arrivals[l][clk] {
-                frame[l] = f;
+        for (l, a) in arrived.iter().enumerate() {
+            if let Some(f) = a {
+                frame[l] = *f;
                 rxv[l] = true;
             }
         }
@@ -326,7 +326,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         assert_eq!(rot_back(w.hv.q.val(), ws, si), m.hv, "hv, {}", ctx());
         assert_eq!(rot_back(w.hu.q.val(), ws, si), m.hu, "hu, {}", ctx());
         assert_eq!(rot_back(w.hd.q.val(), ws, si), m.hd, "hd, {}", ctx());
-        assert_eq!(w.rel_pending.q.val(), m.release, "release, {}", ctx());
+        assert_eq!(w.release_q.q.val(), m.release, "release, {}", ctx());
         assert_eq!(
             w.duplicates.val().to_u16(),
             m.duplicates,
@@ -506,4 +506,18 @@ fn dmr_rx_lockstep_redundancy_regression() {
     println!("{cov:#?}");
     assert!(cov.duplicates > 0 && cov.overruns > 0 && cov.frames > 0);
     assert_eq!(cov.pcl_frames + cov.releases + cov.rscans, 0);
+}
+
+/// Writes the Verilog of `RxWriter` (with `ReleaseScan` and `DmrRxStats`) to
+/// `$DRCC_RX_VERILOG_OUT`, for the Verilator lint and the iCE40 area count
+/// (`cargo test --release -p drcc-cosim --test dmr_rx_lockstep -- --ignored`).
+#[test]
+#[ignore]
+fn write_rx_writer_verilog() {
+    let Ok(path) = std::env::var("DRCC_RX_VERILOG_OUT") else {
+        return;
+    };
+    let mut uut = RxWriter::default();
+    uut.connect_all();
+    std::fs::write(path, generate_verilog(&uut)).unwrap();
 }

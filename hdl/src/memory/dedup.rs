@@ -117,8 +117,8 @@ pub struct RxWriter {
     pub hu: DFF<Bits<32>>,
     /// DMR: history entry delivered to the FIFO (rotated as `hv`).
     pub hd: DFF<Bits<32>>,
-    /// DMR: an ACL switch left frames to release.
-    pub rel_pending: DFF<Bit>,
+    /// DMR: an ACL switch left frames to release (`release` of §8; a Verilog keyword).
+    pub release_q: DFF<Bit>,
     /// DMR: the frame in `decide` came from the passive line.
     w_pcl: DFF<Bit>,
     /// DMR: `hd` of the hit entry, taken with `hit`.
@@ -147,6 +147,7 @@ pub struct RxWriter {
     in_scan: Signal<Local, Bit>,
     judging: Signal<Local, Bit>,
     pcl: Signal<Local, Bit>,
+    r_cand: Signal<Local, Bit>,
     w_fifo: Signal<Local, Bit>,
     w_hist: Signal<Local, Bit>,
     // constants
@@ -219,7 +220,7 @@ impl Default for RxWriter {
             hv: Default::default(),
             hu: Default::default(),
             hd: Default::default(),
-            rel_pending: Default::default(),
+            release_q: Default::default(),
             w_pcl: Default::default(),
             hit_hd: Default::default(),
             dups_q: Default::default(),
@@ -245,6 +246,7 @@ impl Default for RxWriter {
             in_scan: Default::default(),
             judging: Default::default(),
             pcl: Default::default(),
+            r_cand: Default::default(),
             w_fifo: Default::default(),
             w_hist: Default::default(),
             s_idle: Constant::new(0.into()),
@@ -277,7 +279,7 @@ impl Logic for RxWriter {
     fn update(&mut self) {
         dff_setup!(
             self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, free_found, free_e,
-            hist_ptr, exp_q, hist_idle, hv, hu, hd, rel_pending, w_pcl, hit_hd, dups_q, overruns_q
+            hist_ptr, exp_q, hist_idle, hv, hu, hd, release_q, w_pcl, hit_hd, dups_q, overruns_q
         );
         self.hist.clk.next = self.clk.val();
         self.hist.read_enable.next = true;
@@ -373,13 +375,14 @@ impl Logic for RxWriter {
         self.overrun_evt.next = false;
         // release scan: a candidate is a waiting frame of the ACL (§8)
         self.rel.start.next = false;
-        self.rel.cand.next = (self.w_state.q.val() == self.s_rscan.val())
+        self.r_cand.next = (self.w_state.q.val() == self.s_rscan.val())
             & self.judging.val()
             & self.e_hv.val()
             & !self.e_expired.val()
             & !self.e_hu.val()
             & !self.e_hd.val()
             & (self.e_ch.val() == self.acl.val());
+        self.rel.cand.next = self.r_cand.val();
         self.rel.scan_e.next = self.scan_e.val();
         self.rel.next_age.next = self.e_age.val();
         self.rel.tick.next = self.tick.val();
@@ -407,7 +410,7 @@ impl Logic for RxWriter {
         self.hist_ptr.d.next = self.hist_ptr.q.val();
         self.hu.d.next = self.hu.q.val();
         self.hd.d.next = self.hd.q.val();
-        self.rel_pending.d.next = self.rel_pending.q.val();
+        self.release_q.d.next = self.release_q.q.val();
         self.w_pcl.d.next = self.w_pcl.q.val();
         self.dups_q.d.next = self.dups_q.q.val();
         self.overruns_q.d.next = self.overruns_q.q.val();
@@ -456,7 +459,7 @@ impl Logic for RxWriter {
                 } else {
                     self.w_state.d.next = self.s_write.val();
                 }
-            } else if self.dmr.val() & self.rel_pending.q.val() & self.dedup_on.val() {
+            } else if self.dmr.val() & self.release_q.q.val() & self.dedup_on.val() {
                 // §8: a free idle edge looks for the next frame to release
                 self.w_state.d.next = self.s_rscan.val();
                 self.scan_i.d.next = self.zero6.val();
@@ -488,11 +491,11 @@ impl Logic for RxWriter {
             if self.scan_i.q.val() == self.last_scan.val() {
                 if self.w_state.q.val() == self.s_scan.val() {
                     self.w_state.d.next = self.s_decide.val();
-                } else if self.rel.found.val() {
+                } else if self.rel.found.val() | self.r_cand.val() {
                     // entry 31, judged at this edge, counts
                     self.w_state.d.next = self.s_fetch.val();
                 } else {
-                    self.rel_pending.d.next = false;
+                    self.release_q.d.next = false;
                     self.w_state.d.next = self.s_idle.val();
                 }
             }
@@ -573,7 +576,7 @@ impl Logic for RxWriter {
             self.rxp_b.d.next = true;
         }
         if self.release_set.val() {
-            self.rel_pending.d.next = true;
+            self.release_q.d.next = true;
         }
 
         if self.clear.val() {
@@ -592,7 +595,7 @@ impl Logic for RxWriter {
             self.hv.d.next = self.zero32.val();
             self.hu.d.next = self.zero32.val();
             self.hd.d.next = self.zero32.val();
-            self.rel_pending.d.next = false;
+            self.release_q.d.next = false;
             self.w_pcl.d.next = false;
             self.fifo_wr.next = false;
             self.rx_evt.next = false;

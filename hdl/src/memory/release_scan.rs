@@ -30,7 +30,8 @@ pub struct ReleaseScan {
     /// Bit tick: `now` advances at this edge.
     pub tick: Signal<In, Bit>,
     // ---- the choice ----
-    /// A candidate has been found, including the one judged at this edge.
+    /// A candidate was found at an earlier edge of this scan (registered; with
+    /// the candidate judged at this edge, `found | cand`, as `take` would be).
     pub found: Signal<Out, Bit>,
     /// Entry chosen so far (registered).
     pub rel_e: Signal<Out, Bits<5>>,
@@ -90,7 +91,7 @@ impl Logic for ReleaseScan {
             self.rel_e_q.d.next = self.zero5.val();
             self.rel_age.d.next = self.zero16.val();
         }
-        self.found.next = self.rel_found.q.val() | self.take.val();
+        self.found.next = self.rel_found.q.val();
         self.rel_e.next = self.rel_e_q.q.val();
     }
 }

@@ -66,7 +66,11 @@ fn sat_count8_saturates() {
         uut.rst.next = false;
         // 255 is the largest value of the field (§2.1 "saturating 255")
         let want = if cycle == 0 { 0 } else { cycle.min(255) };
-        assert_eq!(uut.count.val(), Bits::<8>::from(want as u64), "cycle {cycle}");
+        assert_eq!(
+            uut.count.val(),
+            Bits::<8>::from(want as u64),
+            "cycle {cycle}"
+        );
     }
 }
 

@@ -224,12 +224,12 @@ impl Logic for DmrControl {
         self.cs_rx.rx_ide_dcl.next = self.rx_ide_dcl.val();
         self.cs_rx.rx_rtr_dcl.next = self.rx_rtr_dcl.val();
         self.cs_rx.rx_dlc_dcl.next = self.rx_dlc_dcl.val();
-        self.cs_rx.rx_id_dcl.next = self.rx_id_dcl.val();
+        self.cs_rx.rx_id_dcl.next = self.rx_id_dcl.val().get_bits::<11>(0);
         self.cs_rx.rx_valid_rcl.next = self.rx_valid_rcl.val();
         self.cs_rx.rx_ide_rcl.next = self.rx_ide_rcl.val();
         self.cs_rx.rx_rtr_rcl.next = self.rx_rtr_rcl.val();
         self.cs_rx.rx_dlc_rcl.next = self.rx_dlc_rcl.val();
-        self.cs_rx.rx_id_rcl.next = self.rx_id_rcl.val();
+        self.cs_rx.rx_id_rcl.next = self.rx_id_rcl.val().get_bits::<11>(0);
         // §5-§7 the DCL (channel A).
         self.dcl.clk.next = self.clk.val();
         self.dcl.rst.next = self.rst.val();
@@ -323,8 +323,10 @@ impl Logic for DmrControl {
         self.key_req_dcl.next = self.rd_key.val();
         self.key_req_rcl.next = self.rd_key.val();
         self.raise_eval.next = self.time_base.dmr_tick.val();
-        self.clear_mailboxes.next =
-            self.run.val() & (self.dcl.recovered.val() | self.rcl.recovered.val());
+        // from the ports, not `run`: Verilator would see a false loop through
+        // this always block (UNOPTFLAT) via `time_base.clear`
+        self.clear_mailboxes.next = !(self.rst.val() | self.hold.val())
+            & (self.dcl.recovered.val() | self.rcl.recovered.val());
         // To the RX path and the register block.
         self.rx_deliver_dcl.next = self.cs_rx.deliver_dcl.val();
         self.rx_deliver_rcl.next = self.cs_rx.deliver_rcl.val();

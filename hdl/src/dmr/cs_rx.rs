@@ -32,8 +32,8 @@ pub struct DmrCsRx {
     pub rx_rtr_dcl: Signal<In, Bit>,
     /// `rx_dlc`.
     pub rx_dlc_dcl: Signal<In, Bits<4>>,
-    /// `rx_id` (a base frame's identifier in [10:0], [28:11] read 0).
-    pub rx_id_dcl: Signal<In, Bits<29>>,
+    /// `rx_id[10:0]` (a base frame's `rx_id[28:11]` read 0).
+    pub rx_id_dcl: Signal<In, Bits<11>>,
     // ---- the RCL channel's received frame ----
     /// `rx_valid`.
     pub rx_valid_rcl: Signal<In, Bit>,
@@ -43,8 +43,8 @@ pub struct DmrCsRx {
     pub rx_rtr_rcl: Signal<In, Bit>,
     /// `rx_dlc`.
     pub rx_dlc_rcl: Signal<In, Bits<4>>,
-    /// `rx_id`.
-    pub rx_id_rcl: Signal<In, Bits<29>>,
+    /// `rx_id[10:0]`.
+    pub rx_id_rcl: Signal<In, Bits<11>>,
     // ---- outputs ----
     /// A DCL frame that is not a CS frame: `RX(DCL)` and the RX path (combinational).
     pub deliver_dcl: Signal<Out, Bit>,
@@ -124,15 +124,15 @@ impl Logic for DmrCsRx {
             & !self.rx_ide_dcl.val()
             & !self.rx_rtr_dcl.val()
             & (self.rx_dlc_dcl.val() == self.zero4.val());
-        self.dcl_id_dcl.next = self.rx_id_dcl.val().get_bits::<11>(0) == self.cs_id_dcl.val();
-        self.dcl_id_rcl.next = self.rx_id_dcl.val().get_bits::<11>(0) == self.cs_id_rcl.val();
+        self.dcl_id_dcl.next = self.rx_id_dcl.val() == self.cs_id_dcl.val();
+        self.dcl_id_rcl.next = self.rx_id_dcl.val() == self.cs_id_rcl.val();
         self.cs_dcl.next = self.base_dcl.val() & (self.dcl_id_dcl.val() | self.dcl_id_rcl.val());
         self.base_rcl.next = self.rx_valid_rcl.val()
             & !self.rx_ide_rcl.val()
             & !self.rx_rtr_rcl.val()
             & (self.rx_dlc_rcl.val() == self.zero4.val());
-        self.rcl_id_dcl.next = self.rx_id_rcl.val().get_bits::<11>(0) == self.cs_id_dcl.val();
-        self.rcl_id_rcl.next = self.rx_id_rcl.val().get_bits::<11>(0) == self.cs_id_rcl.val();
+        self.rcl_id_dcl.next = self.rx_id_rcl.val() == self.cs_id_dcl.val();
+        self.rcl_id_rcl.next = self.rx_id_rcl.val() == self.cs_id_rcl.val();
         self.cs_rcl.next = self.base_rcl.val() & (self.rcl_id_dcl.val() | self.rcl_id_rcl.val());
         // Good: the line's own identifier; bad: the other line's (miswiring).
         self.dcl_good.inc.next = self.run.val() & self.cs_dcl.val() & self.dcl_id_dcl.val();

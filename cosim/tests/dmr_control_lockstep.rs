@@ -80,7 +80,7 @@ fn check_coverage(cov: &Coverage, mailboxes: bool) {
     }
 }
 
-const CLOCKS: u64 = 25_000;
+const CLOCKS: u64 = 40_000;
 
 /// Every mailbox disabled: the engine never judges; everything else of the block.
 #[test]

@@ -32,8 +32,8 @@ pub struct DmrCsRx {
     pub rx_rtr_dcl: Signal<In, Bit>,
     /// `rx_dlc`.
     pub rx_dlc_dcl: Signal<In, Bits<4>>,
-    /// `rx_id` (base identifiers right-aligned).
-    pub rx_id_dcl: Signal<In, Bits<29>>,
+    /// `rx_id[10:0]` (a base frame's `rx_id[28:11]` read 0).
+    pub rx_id_dcl: Signal<In, Bits<11>>,
     // ---- the RCL channel's received frame ----
     /// `rx_valid`.
     pub rx_valid_rcl: Signal<In, Bit>,
@@ -43,8 +43,8 @@ pub struct DmrCsRx {
     pub rx_rtr_rcl: Signal<In, Bit>,
     /// `rx_dlc`.
     pub rx_dlc_rcl: Signal<In, Bits<4>>,
-    /// `rx_id`.
-    pub rx_id_rcl: Signal<In, Bits<29>>,
+    /// `rx_id[10:0]`.
+    pub rx_id_rcl: Signal<In, Bits<11>>,
     // ---- outputs ----
     /// A DCL frame that is not a CS frame: `RX(DCL)` and the RX path (combinational).
     pub deliver_dcl: Signal<Out, Bit>,
@@ -71,7 +71,6 @@ pub struct DmrCsRx {
     cs_dcl: Signal<Local, Bit>,
     cs_rcl: Signal<Local, Bit>,
     zero4: Constant<Bits<4>>,
-    zero18: Constant<Bits<18>>,
 }
 
 impl Default for DmrCsRx {
@@ -108,7 +107,6 @@ impl Default for DmrCsRx {
             cs_dcl: Default::default(),
             cs_rcl: Default::default(),
             zero4: Constant::new(0.into()),
-            zero18: Constant::new(0.into()),
         }
     }
 }
@@ -120,22 +118,21 @@ impl Logic for DmrCsRx {
         self.dcl_bad.clk.next = self.clk.val();
         self.rcl_good.clk.next = self.clk.val();
         self.rcl_bad.clk.next = self.clk.val();
-        // §7 a CS frame: base data frame, DLC 0, one of the two CS identifiers.
+        // §7 a CS frame: base data frame, DLC 0, one of the two CS identifiers
+        // (a base frame's rx_id[28:11] read 0, timing contract: only [10:0] compare).
         self.base_dcl.next = self.rx_valid_dcl.val()
             & !self.rx_ide_dcl.val()
             & !self.rx_rtr_dcl.val()
-            & (self.rx_dlc_dcl.val() == self.zero4.val())
-            & (self.rx_id_dcl.val().get_bits::<18>(11) == self.zero18.val());
-        self.dcl_id_dcl.next = self.rx_id_dcl.val().get_bits::<11>(0) == self.cs_id_dcl.val();
-        self.dcl_id_rcl.next = self.rx_id_dcl.val().get_bits::<11>(0) == self.cs_id_rcl.val();
+            & (self.rx_dlc_dcl.val() == self.zero4.val());
+        self.dcl_id_dcl.next = self.rx_id_dcl.val() == self.cs_id_dcl.val();
+        self.dcl_id_rcl.next = self.rx_id_dcl.val() == self.cs_id_rcl.val();
         self.cs_dcl.next = self.base_dcl.val() & (self.dcl_id_dcl.val() | self.dcl_id_rcl.val());
         self.base_rcl.next = self.rx_valid_rcl.val()
             & !self.rx_ide_rcl.val()
             & !self.rx_rtr_rcl.val()
-            & (self.rx_dlc_rcl.val() == self.zero4.val())
-            & (self.rx_id_rcl.val().get_bits::<18>(11) == self.zero18.val());
-        self.rcl_id_dcl.next = self.rx_id_rcl.val().get_bits::<11>(0) == self.cs_id_dcl.val();
-        self.rcl_id_rcl.next = self.rx_id_rcl.val().get_bits::<11>(0) == self.cs_id_rcl.val();
+            & (self.rx_dlc_rcl.val() == self.zero4.val());
+        self.rcl_id_dcl.next = self.rx_id_rcl.val() == self.cs_id_dcl.val();
+        self.rcl_id_rcl.next = self.rx_id_rcl.val() == self.cs_id_rcl.val();
         self.cs_rcl.next = self.base_rcl.val() & (self.rcl_id_dcl.val() | self.rcl_id_rcl.val());
         // Good: the line's own identifier; bad: the other line's (miswiring).
         self.dcl_good.inc.next = self.run.val() & self.cs_dcl.val() & self.dcl_id_dcl.val();

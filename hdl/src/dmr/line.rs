@@ -280,8 +280,7 @@ impl Logic for DmrLine {
         }
         // §7 CS timeout: a live attempt counts DMR ticks, fails at 1 -> 0.
         self.cs_fail.next = self.cs_mode.val() & self.dmr_tick.val() & self.timer_one.val();
-        if self.cs_mode.val() & self.dmr_tick.val() & (self.timer_q.q.val() != self.zero16.val())
-        {
+        if self.cs_mode.val() & self.dmr_tick.val() & (self.timer_q.q.val() != self.zero16.val()) {
             self.timer_q.d.next = self.timer_dec.val();
         }
         // §7 success: "Upon successful transmission of the DMR Connection Service
@@ -331,13 +330,11 @@ impl Logic for DmrLine {
             self.cs_due_q.d.next = true;
         }
         // §6 faults set against the line (they win over a CS success).
-        self.tx_set.next = self.cs_fail.val()
-            | self.busoff.val()
-            | (self.eval_here.val() & self.eval_tx.val());
+        self.tx_set.next =
+            self.cs_fail.val() | self.busoff.val() | (self.eval_here.val() & self.eval_tx.val());
         self.rx_set.next = self.eval_here.val() & !self.eval_tx.val();
         // A receive fault on a line already unable to transmit only records itself.
-        self.against_l.next =
-            self.tx_set.val() | (self.rx_set.val() & !self.tx_fault_q.q.val());
+        self.against_l.next = self.tx_set.val() | (self.rx_set.val() & !self.tx_fault_q.q.val());
         if self.rx_set.val() {
             self.rx_fault_q.d.next = true;
         }
@@ -358,8 +355,8 @@ impl Logic for DmrLine {
                 self.abort_q.d.next = true;
             }
         }
-        self.sends_next.next = !(self.tx_set.val()
-            | (self.tx_fault_q.q.val() & !self.success.val()));
+        self.sends_next.next =
+            !(self.tx_set.val() | (self.tx_fault_q.q.val() & !self.success.val()));
         // Held: the reset-mode state (cs_due = 1: the CS leaves with the channel).
         if self.hold.val() | self.rst.val() {
             self.req_q.d.next = false;

@@ -96,8 +96,7 @@ impl Logic for DmrOffsets {
         self.first.next = (self.complete_dcl.val()
             & (self.tx_fault_rcl.val() | (self.off_dcl_q.q.val() >= self.off_rcl_q.q.val())))
             | (self.complete_rcl.val()
-                & (self.tx_fault_dcl.val()
-                    | (self.off_rcl_q.q.val() >= self.off_dcl_q.q.val())));
+                & (self.tx_fault_dcl.val() | (self.off_rcl_q.q.val() >= self.off_dcl_q.q.val())));
         // A line that sent and still sends steps at its completion; any other is 0.
         self.base_dcl.next = self.zero4.val();
         if self.sends_next_dcl.val() & !self.tx_fault_dcl.val() {

@@ -16,7 +16,7 @@ pub struct SatCount8 {
     /// The count (stays at 255).
     pub count: Signal<Out, Bits<8>>,
     /// The count register.
-    pub q: DFF<Bits<8>>,
+    pub count_q: DFF<Bits<8>>,
     one8: Constant<Bits<8>>,
     max8: Constant<Bits<8>>,
     zero8: Constant<Bits<8>>,
@@ -29,7 +29,7 @@ impl Default for SatCount8 {
             rst: Default::default(),
             inc: Default::default(),
             count: Default::default(),
-            q: Default::default(),
+            count_q: Default::default(),
             one8: Constant::new(1.into()),
             max8: Constant::new(0xFF.into()),
             zero8: Constant::new(0.into()),
@@ -40,14 +40,14 @@ impl Default for SatCount8 {
 impl Logic for SatCount8 {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, q);
-        if self.inc.val() & (self.q.q.val() != self.max8.val()) {
-            self.q.d.next = self.q.q.val() + self.one8.val();
+        dff_setup!(self, clk, count_q);
+        if self.inc.val() & (self.count_q.q.val() != self.max8.val()) {
+            self.count_q.d.next = self.count_q.q.val() + self.one8.val();
         }
         if self.rst.val() {
-            self.q.d.next = self.zero8.val();
+            self.count_q.d.next = self.zero8.val();
         }
-        self.count.next = self.q.q.val();
+        self.count.next = self.count_q.q.val();
     }
 }
 
@@ -66,7 +66,11 @@ fn sat_count8_saturates() {
         uut.rst.next = false;
         // 255 is the largest value of the field (§2.1 "saturating 255")
         let want = if cycle == 0 { 0 } else { cycle.min(255) };
-        assert_eq!(uut.count.val(), Bits::<8>::from(want as u64), "cycle {cycle}");
+        assert_eq!(
+            uut.count.val(),
+            Bits::<8>::from(want as u64),
+            "cycle {cycle}"
+        );
     }
 }
 

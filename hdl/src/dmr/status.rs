@@ -203,7 +203,8 @@ impl Logic for DmrStatus {
         self.state_changes.inc.next = self.changed.val() & !self.hold.val();
         self.acl_switches.inc.next = self.switch.val() & !self.hold.val();
         self.acl_switch.next = self.switch.val() & !self.hold.val() & !self.rst.val();
-        self.int_evt.next = (self.changed.val() | self.switch.val()) & !self.hold.val() & !self.rst.val();
+        self.int_evt.next =
+            (self.changed.val() | self.switch.val()) & !self.hold.val() & !self.rst.val();
         if self.hold.val() | self.rst.val() {
             self.acl_q.d.next = false;
             self.state_q.d.next = self.s_active.val();

@@ -80,7 +80,8 @@ impl Logic for DmrTimeBase {
         // §7: every cs_period DMR ticks (cs_period = 0: none).
         self.period_next.next = self.period_cnt.q.val() + self.one16.val();
         self.period_on.next = self.tick_q.q.val() & (self.cs_period.val() != self.zero16.val());
-        self.period_due.next = self.period_on.val() & (self.period_next.val() == self.cs_period.val());
+        self.period_due.next =
+            self.period_on.val() & (self.period_next.val() == self.cs_period.val());
         if self.period_on.val() {
             if self.period_next.val() == self.cs_period.val() {
                 self.period_cnt.d.next = self.zero16.val();

@@ -15644,12 +15644,12 @@ module drcc__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,cs_
     reg  cs_rx__rx_ide_dcl;
     reg  cs_rx__rx_rtr_dcl;
     reg  [3:0] cs_rx__rx_dlc_dcl;
-    reg  [28:0] cs_rx__rx_id_dcl;
+    reg  [10:0] cs_rx__rx_id_dcl;
     reg  cs_rx__rx_valid_rcl;
     reg  cs_rx__rx_ide_rcl;
     reg  cs_rx__rx_rtr_rcl;
     reg  [3:0] cs_rx__rx_dlc_rcl;
-    reg  [28:0] cs_rx__rx_id_rcl;
+    reg  [10:0] cs_rx__rx_id_rcl;
     wire  cs_rx__deliver_dcl;
     wire  cs_rx__deliver_rcl;
     wire  [31:0] cs_rx__cs_count_word;
@@ -15919,12 +15919,12 @@ module drcc__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,cs_
         cs_rx__rx_ide_dcl = rx_ide_dcl;
         cs_rx__rx_rtr_dcl = rx_rtr_dcl;
         cs_rx__rx_dlc_dcl = rx_dlc_dcl;
-        cs_rx__rx_id_dcl = rx_id_dcl;
+        cs_rx__rx_id_dcl = rx_id_dcl[(32'h0)+:(11)];
         cs_rx__rx_valid_rcl = rx_valid_rcl;
         cs_rx__rx_ide_rcl = rx_ide_rcl;
         cs_rx__rx_rtr_rcl = rx_rtr_rcl;
         cs_rx__rx_dlc_rcl = rx_dlc_rcl;
-        cs_rx__rx_id_rcl = rx_id_rcl;
+        cs_rx__rx_id_rcl = rx_id_rcl[(32'h0)+:(11)];
         dcl__clk = clk;
         dcl__rst = rst;
         dcl__hold = hold;
@@ -15998,8 +15998,8 @@ module drcc__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,cs_
         pop = offsets__pop;
         raise_tx_dcl = run & dcl__raise_tx;
         raise_tx_rcl = run & rcl__raise_tx;
-        raise_rx_dcl = cs_rx__deliver_dcl;
-        raise_rx_rcl = cs_rx__deliver_rcl;
+        raise_rx_dcl = run & cs_rx__deliver_dcl;
+        raise_rx_rcl = run & cs_rx__deliver_rcl;
         raise_req_dcl = run & dcl__raise_req;
         raise_req_rcl = run & rcl__raise_req;
         key_tx_dcl = dcl__key_tx;
@@ -16009,9 +16009,9 @@ module drcc__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,cs_
         key_req_dcl = rd_key;
         key_req_rcl = rd_key;
         raise_eval = time_base__dmr_tick;
-        clear_mailboxes = run & (dcl__recovered | rcl__recovered);
-        rx_deliver_dcl = cs_rx__deliver_dcl;
-        rx_deliver_rcl = cs_rx__deliver_rcl;
+        clear_mailboxes = ~(rst | hold) & (dcl__recovered | rcl__recovered);
+        rx_deliver_dcl = run & cs_rx__deliver_dcl;
+        rx_deliver_rcl = run & cs_rx__deliver_rcl;
         acl_switch = status__acl_switch;
         tx_done_evt = offsets__first;
         int_evt = status__int_evt;
@@ -16041,19 +16041,18 @@ module drcc__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_ide_
     input wire  rx_ide_dcl;
     input wire  rx_rtr_dcl;
     input wire  [3:0] rx_dlc_dcl;
-    input wire  [28:0] rx_id_dcl;
+    input wire  [10:0] rx_id_dcl;
     input wire  rx_valid_rcl;
     input wire  rx_ide_rcl;
     input wire  rx_rtr_rcl;
     input wire  [3:0] rx_dlc_rcl;
-    input wire  [28:0] rx_id_rcl;
+    input wire  [10:0] rx_id_rcl;
     output reg  deliver_dcl;
     output reg  deliver_rcl;
     output reg  [31:0] cs_count_word;
     
     // Constant declarations
     localparam  zero4 = 4'h0;
-    localparam  zero18 = 18'b0;
     
     // Stub signals
     reg  dcl_good__clk;
@@ -16115,13 +16114,13 @@ module drcc__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_ide_
         dcl_bad__clk = clk;
         rcl_good__clk = clk;
         rcl_bad__clk = clk;
-        base_dcl = rx_valid_dcl & ~rx_ide_dcl & ~rx_rtr_dcl & (rx_dlc_dcl == zero4) & (rx_id_dcl[(32'hb)+:(18)] == zero18);
-        dcl_id_dcl = rx_id_dcl[(32'h0)+:(11)] == cs_id_dcl;
-        dcl_id_rcl = rx_id_dcl[(32'h0)+:(11)] == cs_id_rcl;
+        base_dcl = rx_valid_dcl & ~rx_ide_dcl & ~rx_rtr_dcl & (rx_dlc_dcl == zero4);
+        dcl_id_dcl = rx_id_dcl == cs_id_dcl;
+        dcl_id_rcl = rx_id_dcl == cs_id_rcl;
         cs_dcl = base_dcl & (dcl_id_dcl | dcl_id_rcl);
-        base_rcl = rx_valid_rcl & ~rx_ide_rcl & ~rx_rtr_rcl & (rx_dlc_rcl == zero4) & (rx_id_rcl[(32'hb)+:(18)] == zero18);
-        rcl_id_dcl = rx_id_rcl[(32'h0)+:(11)] == cs_id_dcl;
-        rcl_id_rcl = rx_id_rcl[(32'h0)+:(11)] == cs_id_rcl;
+        base_rcl = rx_valid_rcl & ~rx_ide_rcl & ~rx_rtr_rcl & (rx_dlc_rcl == zero4);
+        rcl_id_dcl = rx_id_rcl == cs_id_dcl;
+        rcl_id_rcl = rx_id_rcl == cs_id_rcl;
         cs_rcl = base_rcl & (rcl_id_dcl | rcl_id_rcl);
         dcl_good__inc = run & cs_dcl & dcl_id_dcl;
         dcl_bad__inc = run & cs_dcl & ~dcl_id_dcl;
@@ -16131,8 +16130,8 @@ module drcc__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_ide_
         dcl_bad__rst = rst;
         rcl_good__rst = rst;
         rcl_bad__rst = rst;
-        deliver_dcl = run & rx_valid_dcl & ~cs_dcl;
-        deliver_rcl = run & rx_valid_rcl & ~cs_rcl;
+        deliver_dcl = rx_valid_dcl & ~cs_dcl;
+        deliver_rcl = rx_valid_rcl & ~cs_rcl;
         cs_count_word = ((dcl_good__count) & 32'hffffffff) | (((dcl_bad__count) & 32'hffffffff) << 32'h8) | (((rcl_good__count) & 32'hffffffff) << 32'h10) | (((rcl_bad__count) & 32'hffffffff) << 32'h18);
     end
     
@@ -16153,34 +16152,34 @@ module drcc__dmr_ctl__cs_rx__dcl_bad(clk,rst,inc,count);
     localparam  zero8 = 8'h0;
     
     // Stub signals
-    reg  [7:0] q__d;
-    wire  [7:0] q__q;
-    reg  q__clock;
+    reg  [7:0] count_q__d;
+    wire  [7:0] count_q__q;
+    reg  count_q__clock;
     
     // Sub module instances
-    drcc__dmr_ctl__cs_rx__dcl_bad__q q(
-        .d(q__d),
-        .q(q__q),
-        .clock(q__clock)
+    drcc__dmr_ctl__cs_rx__dcl_bad__count_q count_q(
+        .d(count_q__d),
+        .q(count_q__q),
+        .clock(count_q__clock)
     );
     
     // Update code
     always @(*) begin
-        q__clock = clk;
-        q__d = q__q;
-        if (inc & (q__q != max8)) begin
-            q__d = q__q + one8;
+        count_q__clock = clk;
+        count_q__d = count_q__q;
+        if (inc & (count_q__q != max8)) begin
+            count_q__d = count_q__q + one8;
         end
         if (rst) begin
-            q__d = zero8;
+            count_q__d = zero8;
         end
-        count = q__q;
+        count = count_q__q;
     end
     
 endmodule // drcc__dmr_ctl__cs_rx__dcl_bad
 
 
-module drcc__dmr_ctl__cs_rx__dcl_bad__q(d,q,clock);
+module drcc__dmr_ctl__cs_rx__dcl_bad__count_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16193,7 +16192,7 @@ module drcc__dmr_ctl__cs_rx__dcl_bad__q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_ctl__cs_rx__dcl_bad__q
+endmodule // drcc__dmr_ctl__cs_rx__dcl_bad__count_q
 
 
 module drcc__dmr_ctl__cs_rx__dcl_good(clk,rst,inc,count);
@@ -16210,34 +16209,34 @@ module drcc__dmr_ctl__cs_rx__dcl_good(clk,rst,inc,count);
     localparam  zero8 = 8'h0;
     
     // Stub signals
-    reg  [7:0] q__d;
-    wire  [7:0] q__q;
-    reg  q__clock;
+    reg  [7:0] count_q__d;
+    wire  [7:0] count_q__q;
+    reg  count_q__clock;
     
     // Sub module instances
-    drcc__dmr_ctl__cs_rx__dcl_good__q q(
-        .d(q__d),
-        .q(q__q),
-        .clock(q__clock)
+    drcc__dmr_ctl__cs_rx__dcl_good__count_q count_q(
+        .d(count_q__d),
+        .q(count_q__q),
+        .clock(count_q__clock)
     );
     
     // Update code
     always @(*) begin
-        q__clock = clk;
-        q__d = q__q;
-        if (inc & (q__q != max8)) begin
-            q__d = q__q + one8;
+        count_q__clock = clk;
+        count_q__d = count_q__q;
+        if (inc & (count_q__q != max8)) begin
+            count_q__d = count_q__q + one8;
         end
         if (rst) begin
-            q__d = zero8;
+            count_q__d = zero8;
         end
-        count = q__q;
+        count = count_q__q;
     end
     
 endmodule // drcc__dmr_ctl__cs_rx__dcl_good
 
 
-module drcc__dmr_ctl__cs_rx__dcl_good__q(d,q,clock);
+module drcc__dmr_ctl__cs_rx__dcl_good__count_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16250,7 +16249,7 @@ module drcc__dmr_ctl__cs_rx__dcl_good__q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_ctl__cs_rx__dcl_good__q
+endmodule // drcc__dmr_ctl__cs_rx__dcl_good__count_q
 
 
 module drcc__dmr_ctl__cs_rx__rcl_bad(clk,rst,inc,count);
@@ -16267,34 +16266,34 @@ module drcc__dmr_ctl__cs_rx__rcl_bad(clk,rst,inc,count);
     localparam  zero8 = 8'h0;
     
     // Stub signals
-    reg  [7:0] q__d;
-    wire  [7:0] q__q;
-    reg  q__clock;
+    reg  [7:0] count_q__d;
+    wire  [7:0] count_q__q;
+    reg  count_q__clock;
     
     // Sub module instances
-    drcc__dmr_ctl__cs_rx__rcl_bad__q q(
-        .d(q__d),
-        .q(q__q),
-        .clock(q__clock)
+    drcc__dmr_ctl__cs_rx__rcl_bad__count_q count_q(
+        .d(count_q__d),
+        .q(count_q__q),
+        .clock(count_q__clock)
     );
     
     // Update code
     always @(*) begin
-        q__clock = clk;
-        q__d = q__q;
-        if (inc & (q__q != max8)) begin
-            q__d = q__q + one8;
+        count_q__clock = clk;
+        count_q__d = count_q__q;
+        if (inc & (count_q__q != max8)) begin
+            count_q__d = count_q__q + one8;
         end
         if (rst) begin
-            q__d = zero8;
+            count_q__d = zero8;
         end
-        count = q__q;
+        count = count_q__q;
     end
     
 endmodule // drcc__dmr_ctl__cs_rx__rcl_bad
 
 
-module drcc__dmr_ctl__cs_rx__rcl_bad__q(d,q,clock);
+module drcc__dmr_ctl__cs_rx__rcl_bad__count_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16307,7 +16306,7 @@ module drcc__dmr_ctl__cs_rx__rcl_bad__q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_ctl__cs_rx__rcl_bad__q
+endmodule // drcc__dmr_ctl__cs_rx__rcl_bad__count_q
 
 
 module drcc__dmr_ctl__cs_rx__rcl_good(clk,rst,inc,count);
@@ -16324,34 +16323,34 @@ module drcc__dmr_ctl__cs_rx__rcl_good(clk,rst,inc,count);
     localparam  zero8 = 8'h0;
     
     // Stub signals
-    reg  [7:0] q__d;
-    wire  [7:0] q__q;
-    reg  q__clock;
+    reg  [7:0] count_q__d;
+    wire  [7:0] count_q__q;
+    reg  count_q__clock;
     
     // Sub module instances
-    drcc__dmr_ctl__cs_rx__rcl_good__q q(
-        .d(q__d),
-        .q(q__q),
-        .clock(q__clock)
+    drcc__dmr_ctl__cs_rx__rcl_good__count_q count_q(
+        .d(count_q__d),
+        .q(count_q__q),
+        .clock(count_q__clock)
     );
     
     // Update code
     always @(*) begin
-        q__clock = clk;
-        q__d = q__q;
-        if (inc & (q__q != max8)) begin
-            q__d = q__q + one8;
+        count_q__clock = clk;
+        count_q__d = count_q__q;
+        if (inc & (count_q__q != max8)) begin
+            count_q__d = count_q__q + one8;
         end
         if (rst) begin
-            q__d = zero8;
+            count_q__d = zero8;
         end
-        count = q__q;
+        count = count_q__q;
     end
     
 endmodule // drcc__dmr_ctl__cs_rx__rcl_good
 
 
-module drcc__dmr_ctl__cs_rx__rcl_good__q(d,q,clock);
+module drcc__dmr_ctl__cs_rx__rcl_good__count_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -16364,7 +16363,7 @@ module drcc__dmr_ctl__cs_rx__rcl_good__q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_ctl__cs_rx__rcl_good__q
+endmodule // drcc__dmr_ctl__cs_rx__rcl_good__count_q
 
 
 module drcc__dmr_ctl__dcl(clk,rst,hold,timeout,recovery_delay,dmr_tick,period_due,mine,more,rd_key,reset_mode_q,done,failed,err_state,tx_req,cs_req,abort,restart,other_sends,eval_here,eval_tx,raise_req,raise_tx,key_tx,complete,cs_fail,busoff,against,sends_next,recovered,tx_fault,rx_fault);
@@ -17826,34 +17825,34 @@ module drcc__dmr_ctl__status__acl_switches(clk,rst,inc,count);
     localparam  zero8 = 8'h0;
     
     // Stub signals
-    reg  [7:0] q__d;
-    wire  [7:0] q__q;
-    reg  q__clock;
+    reg  [7:0] count_q__d;
+    wire  [7:0] count_q__q;
+    reg  count_q__clock;
     
     // Sub module instances
-    drcc__dmr_ctl__status__acl_switches__q q(
-        .d(q__d),
-        .q(q__q),
-        .clock(q__clock)
+    drcc__dmr_ctl__status__acl_switches__count_q count_q(
+        .d(count_q__d),
+        .q(count_q__q),
+        .clock(count_q__clock)
     );
     
     // Update code
     always @(*) begin
-        q__clock = clk;
-        q__d = q__q;
-        if (inc & (q__q != max8)) begin
-            q__d = q__q + one8;
+        count_q__clock = clk;
+        count_q__d = count_q__q;
+        if (inc & (count_q__q != max8)) begin
+            count_q__d = count_q__q + one8;
         end
         if (rst) begin
-            q__d = zero8;
+            count_q__d = zero8;
         end
-        count = q__q;
+        count = count_q__q;
     end
     
 endmodule // drcc__dmr_ctl__status__acl_switches
 
 
-module drcc__dmr_ctl__status__acl_switches__q(d,q,clock);
+module drcc__dmr_ctl__status__acl_switches__count_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17866,7 +17865,7 @@ module drcc__dmr_ctl__status__acl_switches__q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_ctl__status__acl_switches__q
+endmodule // drcc__dmr_ctl__status__acl_switches__count_q
 
 
 module drcc__dmr_ctl__status__cause_line_q(d,q,clock);
@@ -17931,34 +17930,34 @@ module drcc__dmr_ctl__status__state_changes(clk,rst,inc,count);
     localparam  zero8 = 8'h0;
     
     // Stub signals
-    reg  [7:0] q__d;
-    wire  [7:0] q__q;
-    reg  q__clock;
+    reg  [7:0] count_q__d;
+    wire  [7:0] count_q__q;
+    reg  count_q__clock;
     
     // Sub module instances
-    drcc__dmr_ctl__status__state_changes__q q(
-        .d(q__d),
-        .q(q__q),
-        .clock(q__clock)
+    drcc__dmr_ctl__status__state_changes__count_q count_q(
+        .d(count_q__d),
+        .q(count_q__q),
+        .clock(count_q__clock)
     );
     
     // Update code
     always @(*) begin
-        q__clock = clk;
-        q__d = q__q;
-        if (inc & (q__q != max8)) begin
-            q__d = q__q + one8;
+        count_q__clock = clk;
+        count_q__d = count_q__q;
+        if (inc & (count_q__q != max8)) begin
+            count_q__d = count_q__q + one8;
         end
         if (rst) begin
-            q__d = zero8;
+            count_q__d = zero8;
         end
-        count = q__q;
+        count = count_q__q;
     end
     
 endmodule // drcc__dmr_ctl__status__state_changes
 
 
-module drcc__dmr_ctl__status__state_changes__q(d,q,clock);
+module drcc__dmr_ctl__status__state_changes__count_q(d,q,clock);
     
     // Module arguments
     input wire  [7:0] d;
@@ -17971,7 +17970,7 @@ module drcc__dmr_ctl__status__state_changes__q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_ctl__status__state_changes__q
+endmodule // drcc__dmr_ctl__status__state_changes__count_q
 
 
 module drcc__dmr_ctl__status__state_q(d,q,clock);

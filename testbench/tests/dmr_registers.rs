@@ -284,7 +284,10 @@ fn dmr_function_alone_on_its_wires_on_three_engines() {
     // not acknowledge its own frame), so each line's attempt fails after the CS
     // timeout: 8 ticks = 1024 clocks after it started, both lines at the same tick.
     let at = first_fault.expect("both lines failed their CS attempt");
-    assert!((1024..1024 + 2 * 128 + 200).contains(&at), "CS failure at {at}");
+    assert!(
+        (1024..1024 + 2 * 128 + 200).contains(&at),
+        "CS failure at {at}"
+    );
     let (state, acl, cause, changes, switches) = dmr_status(b.read(map::DMR_STATUS));
     assert_eq!(state, 3, "network disconnected");
     assert_eq!(cause, 3, "CS failed");
@@ -297,7 +300,11 @@ fn dmr_function_alone_on_its_wires_on_three_engines() {
     assert!(tec_max >= 8, "ACK errors on the CS frames");
     assert!(restarted, "the recovery restarted the DCL channel (§7)");
     // §5: the host copies wait behind the CS frame and then behind the faults
-    assert_eq!(b.read(map::STATUS) >> 16 & 0xF, 2, "both messages still queued");
+    assert_eq!(
+        b.read(map::STATUS) >> 16 & 0xF,
+        2,
+        "both messages still queued"
+    );
     assert_ne!(b.read(map::INT_STATUS) & put("INT_STATUS", "dmr", 1), 0);
     assert_eq!(b.read(map::DMR_CS_COUNT), 0, "no CS frame was received");
 }

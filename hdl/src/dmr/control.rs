@@ -310,8 +310,8 @@ impl Logic for DmrControl {
         // To the engine: events only while the function runs.
         self.raise_tx_dcl.next = self.run.val() & self.dcl.raise_tx.val();
         self.raise_tx_rcl.next = self.run.val() & self.rcl.raise_tx.val();
-        self.raise_rx_dcl.next = self.cs_rx.deliver_dcl.val();
-        self.raise_rx_rcl.next = self.cs_rx.deliver_rcl.val();
+        self.raise_rx_dcl.next = self.run.val() & self.cs_rx.deliver_dcl.val();
+        self.raise_rx_rcl.next = self.run.val() & self.cs_rx.deliver_rcl.val();
         self.raise_req_dcl.next = self.run.val() & self.dcl.raise_req.val();
         self.raise_req_rcl.next = self.run.val() & self.rcl.raise_req.val();
         self.key_tx_dcl.next = self.dcl.key_tx.val();
@@ -328,8 +328,8 @@ impl Logic for DmrControl {
         self.clear_mailboxes.next = !(self.rst.val() | self.hold.val())
             & (self.dcl.recovered.val() | self.rcl.recovered.val());
         // To the RX path and the register block.
-        self.rx_deliver_dcl.next = self.cs_rx.deliver_dcl.val();
-        self.rx_deliver_rcl.next = self.cs_rx.deliver_rcl.val();
+        self.rx_deliver_dcl.next = self.run.val() & self.cs_rx.deliver_dcl.val();
+        self.rx_deliver_rcl.next = self.run.val() & self.cs_rx.deliver_rcl.val();
         self.acl_switch.next = self.status.acl_switch.val();
         self.tx_done_evt.next = self.offsets.first.val();
         self.int_evt.next = self.status.int_evt.val();

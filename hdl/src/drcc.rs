@@ -4,8 +4,11 @@
 //! channel 1, B = channel 2) share one bit timing; the redundancy management
 //! block (main FSM of Table 1, one auxiliary FSM per channel, bit tick), the TX
 //! buffer, the RX FIFO with duplicate removal and the Wishbone register block
-//! complete it. Ports (contract §1): clock/reset, Wishbone slave, irq, CAN pins,
-//! the paper's probes, the channel probes.
+//! complete it. The third mode, CiA 701 dual-modular redundancy
+//! (`dmr_contract.md`), adds the DMR control and mailbox engine (`crate::dmr`)
+//! and the DMR paths of the TX buffer and the RX writer. Ports (contract §1):
+//! clock/reset, Wishbone slave, irq, CAN pins, the paper's probes, the channel
+//! probes, the DMR probes (DMR contract §9).
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;

@@ -1,6 +1,9 @@
 //! The CiA 701 DMR test plan (seed 001 Figure 9, Tables 2 and 3; DMR contract §10) on
-//! the reference model: four DRCC devices COS1, COS2, COS3, COM1 in DMR mode on the
-//! DCL and the RCL, 125 kbit/s, 85 % load (`drcc_testbench::dmr`).
+//! the Verilated RTL in lock step with the reference model: four DRCC devices COS1,
+//! COS2, COS3, COM1 in DMR mode on the DCL and the RCL, 125 kbit/s, 85 % load
+//! (`drcc_testbench::dmr`). Every row runs on both engines with every output of every
+//! device compared at every clock (the first divergence fails the row); the checks
+//! below read the rows' outcome.
 //!
 //! - Table 3 cell for cell: the RCL startup failures F2, F4, F6, F8, F10 give exactly
 //!   the seed's DMR state and ACL of every device (read from `DMR_STATUS` at the end of
@@ -10,8 +13,11 @@
 //! - the fault-free baseline raises no DMR fault and every device stays "redundancy
 //!   active" on the DCL.
 //!
-//! The engine is a parameter ([`ENGINE`], [`COSIM`]): the lock-step run with the
-//! Verilated RTL only has to set `COSIM` once the RTL implements DMR mode.
+//! - rows that reach the rest of the DMR function: F1 at run time (a receive fault
+//!   against the ACL, the ACL switch and the release of waiting frames), F9 at run
+//!   time (every device loses the DCL at once; CS attempts fail; it returns).
+//!
+//! Without Verilator (outside CI) the rows run on the model alone, and say so.
 //!
 //! Besides, the plan's network faults (a node detached from a line, a line
 //! short-circuited; `drcc_cosim::dual::fault`) are exercised in redundancy mode,
@@ -27,12 +33,23 @@ use drcc_cosim::Frame;
 use drcc_hdl::host::registers::DmrState;
 use drcc_testbench::dmr::{run_row, Marker, Onset, PlanConfig, Row, RowReport, DEVICES};
 use drcc_testbench::dual::drcc_engine;
+use drcc_testbench::engines::{available, verilator_required};
 use drcc_testbench::EngineKind;
 
-/// The engine the plan runs on.
-const ENGINE: EngineKind = EngineKind::Model;
-/// A second engine in lock step (the Verilated RTL, once it implements DMR mode).
-const COSIM: Option<EngineKind> = None;
+/// The engine the plan runs on: the Verilated RTL (in lock step with the model, which
+/// `run_row` adds as the plan's oracle), or the model alone where Verilator is
+/// missing outside CI.
+fn engine() -> EngineKind {
+    static KIND: OnceLock<EngineKind> = OnceLock::new();
+    *KIND.get_or_init(|| match available(EngineKind::Verilator) {
+        Ok(()) => EngineKind::Verilator,
+        Err(e) if verilator_required() => panic!("Verilator is required here: {e}"),
+        Err(e) => {
+            eprintln!("the plan runs on the model alone (no lock step with the RTL): {e}");
+            EngineKind::Model
+        }
+    })
+}
 
 /// Each row runs once per test binary, shared by the tests that look at it.
 fn report(row: Row) -> RowReport {
@@ -41,7 +58,7 @@ fn report(row: Row) -> RowReport {
     if let Some(r) = cache.lock().unwrap().get(&row) {
         return r.clone();
     }
-    let r = run_row(&PlanConfig::standard(), row, ENGINE, COSIM)
+    let r = run_row(&PlanConfig::standard(), row, engine(), None)
         .unwrap_or_else(|e| panic!("{}: {e}", row.name()));
     cache.lock().unwrap().insert(row, r.clone());
     r
@@ -93,8 +110,16 @@ fn table_3_rcl_startup_failures_cell_for_cell() {
 
 #[test]
 fn no_single_fault_loses_or_duplicates_a_frame() {
+    // the rows are independent: run them on two threads (the other tests of this
+    // binary take theirs from the cache)
+    let rows = Row::all();
+    std::thread::scope(|s| {
+        for half in rows.chunks(rows.len().div_ceil(2)) {
+            s.spawn(move || half.iter().for_each(|&row| drop(report(row))));
+        }
+    });
     let mut bad = Vec::new();
-    for row in Row::all() {
+    for row in rows {
         let r = report(row);
         if !r.exactly_once() || r.unpushed != 0 {
             bad.push(format!(
@@ -136,6 +161,42 @@ fn the_baseline_raises_no_dmr_fault() {
     }
     assert!(r.exactly_once());
     assert!(r.pushed > 800, "the 85 % load pushes ~900 frames in 1 s");
+}
+
+fn runtime(m: Marker) -> Row {
+    Row {
+        marker: Some(m),
+        onset: Onset::Runtime,
+    }
+}
+
+#[test]
+fn f1_at_run_time_switches_cos1_to_the_rcl_for_good() {
+    let r = report(runtime(Marker::F1));
+    assert!(r.detection.is_some(), "the cut was detected");
+    assert!(r.acl_switch.is_some(), "COS1 switched its ACL to the RCL");
+    // §6: the switch is non-revertive
+    assert_eq!(r.end[0].acl(), Line::B, "COS1 stays on the RCL");
+    assert_eq!(
+        r.end[1].acl(),
+        Line::B,
+        "COS2 switched too: COS1's frames were missing on its DCL"
+    );
+}
+
+#[test]
+fn f9_at_run_time_moves_every_device_to_the_rcl_and_the_dcl_returns() {
+    let r = report(runtime(Marker::F9));
+    for (d, s) in r.during.iter().enumerate() {
+        assert_eq!(
+            (s.state(), s.acl()),
+            (Some(DISABLED), Line::B),
+            "{} during the short circuit ({:#010x})",
+            DEVICES[d],
+            s.word
+        );
+    }
+    assert!(r.recovered.is_some(), "the DCL returned after the fault");
 }
 
 // ---- the plan's network faults, in redundancy mode (no DMR behaviour needed) ----

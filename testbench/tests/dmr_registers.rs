@@ -8,7 +8,7 @@
 //!
 //! The last test leaves reset mode in DMR mode with each channel alone on its own
 //! wire: the DMR function (§3-§7) runs on all three engines in lock step; the plan's
-//! network runs (`dmr_cosim.rs`) compare it on four devices with the Verilated RTL.
+//! network runs (`dmr_plan.rs`) compare it on four devices with the Verilated RTL.
 
 use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use drcc_cosim::engine::drcc_model::DrccModelEngine;

@@ -15,8 +15,8 @@ use drcc_hdl::dmr::engine::{DmrEngine, MAILBOXES};
 use drcc_hdl::dmr::mailbox_cfg::MailboxCfg;
 use rust_hdl::prelude::*;
 
-/// Settling budget per half clock.
-const MAX_SETTLE_ITERS: usize = 200;
+mod block_support;
+use block_support::{settle, Rng};
 
 /// `MailboxCfg` + `DmrEngine`, wired as the DRCC top will: the memory's read port
 /// is the host's (`MB_SEL`) while held, the engine's while running.
@@ -74,25 +74,6 @@ impl Logic for Bench {
         e.cfg_id_word.next = self.cfg.id_word.val();
         e.cfg_mask.next = self.cfg.mask.val();
         e.mb_sel.next = self.mb_sel.val();
-    }
-}
-
-/// xorshift64*: deterministic, seeded.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        (self.next() >> 11) % n
-    }
-    /// true with probability 1/n.
-    fn one_in(&mut self, n: u64) -> bool {
-        self.below(n) == 0
     }
 }
 
@@ -168,7 +149,7 @@ impl Lockstep {
             uut,
             eng: Engine::default(),
             mbx: Mailboxes::new(MAILBOXES),
-            rng: Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1),
+            rng: Rng::new(seed),
             timeout: 100,
             clock: 0,
             cov: Coverage::default(),
@@ -178,10 +159,7 @@ impl Lockstep {
     }
 
     fn settle(&mut self) {
-        assert!(
-            simulate(self.uut.as_mut(), MAX_SETTLE_ITERS),
-            "dmr engine bench did not settle"
-        );
+        settle(self.uut.as_mut(), "the DMR engine bench");
     }
 
     /// The configuration inputs the HDL reads from the (model's) registers.
@@ -597,17 +575,6 @@ fn dmr_engine_lockstep_with_the_model() {
     assert!(t.eval_overrun > 0, "pend_eval set while pending");
     assert!(t.clear_over_write > 0, "clear_state over an engine write");
     assert!(t.holds > 0);
-}
-
-/// The engine's Verilog, for the Verilator lint and the iCE40 area count:
-/// `DMR_ENGINE_V=/path/dmr_engine.v cargo test ... -- --ignored`.
-#[test]
-#[ignore]
-fn dmr_engine_verilog_dump() {
-    let mut uut = DmrEngine::default();
-    uut.connect_all();
-    let path = std::env::var("DMR_ENGINE_V").unwrap_or_else(|_| "dmr_engine.v".into());
-    std::fs::write(path, generate_verilog(&uut)).unwrap();
 }
 
 #[test]

@@ -20,6 +20,9 @@ use drcc_cosim::model::drcc::rx_path::{
 use drcc_hdl::memory::dedup::RxWriter;
 use drcc_hdl::memory::rx_fifo::RxFifo;
 use rust_hdl::prelude::*;
+
+mod block_support;
+use block_support::{settle, Rng};
 use std::collections::BTreeSet;
 
 /// Test-only wrapper: the writer, the FIFO and `now` as `BitTick` provides it
@@ -95,23 +98,6 @@ fn frame_bits(f: &Frame) -> Bits<99> {
 /// A FIFO entry: [99] channel, [98:0] frame.
 fn entry_bits(e: &(Frame, u8)) -> Bits<100> {
     bit_cast::<100, 99>(frame_bits(&e.0)).replace_bit(99, e.1 != 0)
-}
-
-/// xorshift64*: deterministic, seeded.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
-    }
-    fn chance(&mut self, num: u64, den: u64) -> bool {
-        self.below(den) < num
-    }
 }
 
 /// One run's configuration.
@@ -221,12 +207,12 @@ fn rot_back(v: Bits<32>, w_state: u8, scan_i: u8) -> u32 {
 }
 
 fn run_lockstep(run: &Run, cov: &mut Coverage) {
-    let mut rng = Rng(run.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+    let mut rng = Rng::new(run.seed);
     let arrivals = schedule(run, &mut rng);
     let mut uut = RxBench::default();
     uut.connect_all();
     uut.clk.next = Clock::from(false);
-    assert!(simulate(&mut uut, 200));
+    settle(&mut uut, "the RX writer bench");
     let mut m = RxPath::default();
     let mut frame = [Frame::default(); 2];
     let mut acl = 0u8;
@@ -289,7 +275,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         uut.rxv_b.next = rxv[1];
         uut.frame_a.next = frame_bits(&frame[0]);
         uut.frame_b.next = frame_bits(&frame[1]);
-        assert!(simulate(&mut uut, 200), "settle");
+        settle(&mut uut, "the RX writer bench");
         let fifo_wr = uut.rxw.fifo_wr.val();
         let fifo_data = uut.rxw.fifo_data.val();
         let rx_evt = uut.rxw.rx_evt.val();
@@ -304,7 +290,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
             m.edge(&inputs, [&frame[0], &frame[1]])
         };
         uut.clk.next = Clock::from(true);
-        assert!(simulate(&mut uut, 200), "settle");
+        settle(&mut uut, "the RX writer bench");
 
         // ---- compare ----
         let ctx = || {
@@ -418,7 +404,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
 }
 
 fn dmr_run(seed: u64) -> Run {
-    let mut r = Rng(seed ^ 0xD1B5_4A32_D192_ED03);
+    let mut r = Rng::new(seed ^ 0xD1B5_4A32_D192_ED03);
     let tick_period = [4usize, 8, 16, 64][r.below(4) as usize];
     // a window of 150..1500 clocks: copies up to 600 clocks apart sometimes expire
     let window = ((150 + r.below(1350)) as usize / tick_period).max(1) as u16;
@@ -506,18 +492,4 @@ fn dmr_rx_lockstep_redundancy_regression() {
     println!("{cov:#?}");
     assert!(cov.duplicates > 0 && cov.overruns > 0 && cov.frames > 0);
     assert_eq!(cov.pcl_frames + cov.releases + cov.rscans, 0);
-}
-
-/// Writes the Verilog of `RxWriter` (with `ReleaseScan` and `DmrRxStats`) to
-/// `$DRCC_RX_VERILOG_OUT`, for the Verilator lint and the iCE40 area count
-/// (`cargo test --release -p drcc-cosim --test dmr_rx_lockstep -- --ignored`).
-#[test]
-#[ignore]
-fn write_rx_writer_verilog() {
-    let Ok(path) = std::env::var("DRCC_RX_VERILOG_OUT") else {
-        return;
-    };
-    let mut uut = RxWriter::default();
-    uut.connect_all();
-    std::fs::write(path, generate_verilog(&uut)).unwrap();
 }

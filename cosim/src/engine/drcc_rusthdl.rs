@@ -8,7 +8,7 @@
 //! read the outputs (inputs change away from the clock edge).
 
 use super::drcc::{DrccEngine, DrccInputs, DrccOutputs, DrccProbes};
-use super::rusthdl::field_code;
+use super::rusthdl::{field_code, settle};
 use drcc_hdl::drcc::Drcc;
 use rust_hdl::prelude::*;
 
@@ -44,9 +44,7 @@ impl DrccRustHdlEngine {
     }
 
     fn settle(&mut self) {
-        if !simulate(self.uut.as_mut(), MAX_SETTLE_ITERS) {
-            panic!("rust-hdl engine: drcc did not settle (combinational loop?)");
-        }
+        settle(self.uut.as_mut(), MAX_SETTLE_ITERS, "drcc");
     }
 }
 

@@ -10,6 +10,7 @@
 //! a small object-safe trait, picked from (N, M) at construction.
 
 use super::hub::{HubEngine, HubInputs, HubOutputs, HubProbes, MAX_INTERLINKS, MAX_NODE_PORTS};
+use super::rusthdl::settle;
 use drcc_hdl::hub::hub::Hub;
 use rust_hdl::prelude::*;
 
@@ -36,9 +37,7 @@ impl<const N: usize, const M: usize, const P: usize> Sim<N, M, P> {
     }
 
     fn settle(&mut self) {
-        if !simulate(self.uut.as_mut(), MAX_SETTLE_ITERS) {
-            panic!("rust-hdl engine: hub did not settle (combinational loop?)");
-        }
+        settle(self.uut.as_mut(), MAX_SETTLE_ITERS, "hub");
     }
 }
 

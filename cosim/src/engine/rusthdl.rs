@@ -26,6 +26,16 @@ impl Default for RustHdlEngine {
     }
 }
 
+/// Lets a rust-hdl block settle after its inputs or its clock changed, within
+/// `iters` delta cycles. One that does not has a combinational loop, a design bug
+/// rust-hdl's checks catch at generation time: reported loudly rather than hung on.
+/// Shared by the rust-hdl engines and the block-level lock-step tests.
+pub fn settle<B: Block>(uut: &mut B, iters: usize, what: &str) {
+    if !simulate(uut, iters) {
+        panic!("rust-hdl engine: {what} did not settle (combinational loop?)");
+    }
+}
+
 impl RustHdlEngine {
     /// A fresh channel, clock low, not yet reset (drive `rst` for a few steps).
     pub fn new() -> Self {
@@ -37,11 +47,7 @@ impl RustHdlEngine {
     }
 
     fn settle(&mut self) {
-        if !simulate(self.uut.as_mut(), MAX_SETTLE_ITERS) {
-            // A combinational loop would be a design bug caught by rust-hdl's
-            // checks at generation time; report it loudly rather than hang.
-            panic!("rust-hdl engine: can_channel did not settle (combinational loop?)");
-        }
+        settle(self.uut.as_mut(), MAX_SETTLE_ITERS, "can_channel");
     }
 }
 

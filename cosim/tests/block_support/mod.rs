@@ -39,8 +39,5 @@ impl Rng {
 
 /// Lets `uut` settle after its inputs or its clock changed.
 pub fn settle<B: Block>(uut: &mut B, what: &str) {
-    assert!(
-        simulate(uut, MAX_SETTLE_ITERS),
-        "{what} did not settle (combinational loop?)"
-    );
+    drcc_cosim::engine::rusthdl::settle(uut, MAX_SETTLE_ITERS, what);
 }

@@ -4,8 +4,8 @@
 // drcc: the dual-redundancy CAN controller: two channels, redundancy management, TX buffer, RX
 // FIFO, Wishbone.
 // Contract:   cosim/src/model/drcc_contract.md
-// Source:     hdl/src/drcc.rs (`Drcc`, port docs from its `///` comments)
-// Parameters: none
+// Source:     hdl/src/drcc.rs (`DrccCore`, port docs from its `///` comments)
+// Parameters: M = 16
 //
 // Ports:
 // dir    width  port                           meaning
@@ -103,7 +103,8 @@
 // output     1  dmr_tick                       One-clock pulse every `DMR_TIME.tick_bits` nominal
 //                                              bit times (the DMR tick).
 //
-// Registers: docs/registers.md, C header rtl-out/drcc_regs.h. In TX_DATA0/1 and
+// M DMR mailboxes (cosim/src/model/dmr_contract.md section 2). Registers:
+// docs/registers.md, C header rtl-out/drcc_regs.h. In TX_DATA0/1 and
 // RX_DATA0/1 byte 0 (the first on the bus) is in [7:0]; on can_channel's ports it
 // is in [63:56] (see the table in can_channel.v).
 
@@ -214,6 +215,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     output reg  rcl_rx_fault;
     // One-clock pulse every `DMR_TIME.tick_bits` nominal bit times (the DMR tick).
     output reg  dmr_tick;
+    
+    // Constant declarations
+    localparam  zero4 = 4'h0;
+    localparam  zero29 = 29'h0;
+    localparam  zero31 = 31'h0;
+    localparam  zero32 = 32'h0;
     
     // Enums
     localparam Field__Integrating = 0;
@@ -332,14 +339,14 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  [127:0] dmr_regs__mb_limits;
     wire  dmr_regs__mb_we_id;
     wire  dmr_regs__mb_we_mask;
-    reg  mailbox_cfg__clk;
-    reg  [3:0] mailbox_cfg__read_address;
-    wire  [30:0] mailbox_cfg__id_word;
-    wire  [28:0] mailbox_cfg__mask;
-    reg  [3:0] mailbox_cfg__write_address;
-    reg  mailbox_cfg__we_id;
-    reg  mailbox_cfg__we_mask;
-    reg  [30:0] mailbox_cfg__wdat;
+    reg  mailbox_cfg__0__clk;
+    reg  [3:0] mailbox_cfg__0__read_address;
+    wire  [30:0] mailbox_cfg__0__id_word;
+    wire  [28:0] mailbox_cfg__0__mask;
+    reg  [3:0] mailbox_cfg__0__write_address;
+    reg  mailbox_cfg__0__we_id;
+    reg  mailbox_cfg__0__we_mask;
+    reg  [30:0] mailbox_cfg__0__wdat;
     reg  dmr_ctl__clk;
     reg  dmr_ctl__rst;
     reg  dmr_ctl__hold;
@@ -415,36 +422,36 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  dmr_ctl__dmr_tick;
     wire  [31:0] dmr_ctl__status_word;
     wire  [31:0] dmr_ctl__cs_count_word;
-    reg  dmr_eng__clk;
-    reg  dmr_eng__hold;
-    reg  dmr_eng__clear_state;
-    reg  [15:0] dmr_eng__timeout;
-    reg  dmr_eng__tx_dcl;
-    reg  dmr_eng__tx_rcl;
-    reg  dmr_eng__rx_dcl;
-    reg  dmr_eng__rx_rcl;
-    reg  dmr_eng__req_dcl;
-    reg  dmr_eng__req_rcl;
-    reg  [29:0] dmr_eng__key_tx_dcl;
-    reg  [29:0] dmr_eng__key_tx_rcl;
-    reg  [29:0] dmr_eng__key_rx_dcl;
-    reg  [29:0] dmr_eng__key_rx_rcl;
-    reg  [29:0] dmr_eng__key_req_dcl;
-    reg  [29:0] dmr_eng__key_req_rcl;
-    reg  dmr_eng__eval;
-    reg  [15:0] dmr_eng__mb_enable;
-    reg  [127:0] dmr_eng__mb_limits;
-    wire  [3:0] dmr_eng__cfg_addr;
-    reg  [30:0] dmr_eng__cfg_id_word;
-    reg  [28:0] dmr_eng__cfg_mask;
-    reg  [3:0] dmr_eng__mb_sel;
-    wire  [31:0] dmr_eng__mb_state_word;
-    wire  dmr_eng__fault;
-    wire  dmr_eng__fault_line;
-    wire  dmr_eng__fault_tx;
-    wire  dmr_eng__fault_deviation;
-    wire  [3:0] dmr_eng__fault_mb;
-    wire  [1:0] dmr_eng__e_state;
+    reg  dmr_eng__0__clk;
+    reg  dmr_eng__0__hold;
+    reg  dmr_eng__0__clear_state;
+    reg  [15:0] dmr_eng__0__timeout;
+    reg  dmr_eng__0__tx_dcl;
+    reg  dmr_eng__0__tx_rcl;
+    reg  dmr_eng__0__rx_dcl;
+    reg  dmr_eng__0__rx_rcl;
+    reg  dmr_eng__0__req_dcl;
+    reg  dmr_eng__0__req_rcl;
+    reg  [29:0] dmr_eng__0__key_tx_dcl;
+    reg  [29:0] dmr_eng__0__key_tx_rcl;
+    reg  [29:0] dmr_eng__0__key_rx_dcl;
+    reg  [29:0] dmr_eng__0__key_rx_rcl;
+    reg  [29:0] dmr_eng__0__key_req_dcl;
+    reg  [29:0] dmr_eng__0__key_req_rcl;
+    reg  dmr_eng__0__eval;
+    reg  [15:0] dmr_eng__0__mb_enable;
+    reg  [127:0] dmr_eng__0__mb_limits;
+    wire  [3:0] dmr_eng__0__cfg_addr;
+    reg  [30:0] dmr_eng__0__cfg_id_word;
+    reg  [28:0] dmr_eng__0__cfg_mask;
+    reg  [3:0] dmr_eng__0__mb_sel;
+    wire  [31:0] dmr_eng__0__mb_state_word;
+    wire  dmr_eng__0__fault;
+    wire  dmr_eng__0__fault_line;
+    wire  dmr_eng__0__fault_tx;
+    wire  dmr_eng__0__fault_deviation;
+    wire  [3:0] dmr_eng__0__fault_mb;
+    wire  [1:0] dmr_eng__0__e_state;
     reg  [5:0] status__adr;
     wire  [31:0] status__word;
     reg  [3:0] status__state;
@@ -728,6 +735,14 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  clear;
     reg  rmb_hold;
     reg  dmr_hold;
+    reg  [30:0] mb_id_word;
+    reg  [28:0] mb_mask;
+    reg  [31:0] mb_state_word;
+    reg  eval_fault;
+    reg  eval_line;
+    reg  eval_tx;
+    reg  eval_deviation;
+    reg  [3:0] eval_mb;
     
     // Sub module instances
     drcc__regs regs(
@@ -827,15 +842,15 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .mb_we_id(dmr_regs__mb_we_id),
         .mb_we_mask(dmr_regs__mb_we_mask)
     );
-    drcc__mailbox_cfg mailbox_cfg(
-        .clk(mailbox_cfg__clk),
-        .read_address(mailbox_cfg__read_address),
-        .id_word(mailbox_cfg__id_word),
-        .mask(mailbox_cfg__mask),
-        .write_address(mailbox_cfg__write_address),
-        .we_id(mailbox_cfg__we_id),
-        .we_mask(mailbox_cfg__we_mask),
-        .wdat(mailbox_cfg__wdat)
+    drcc__mailbox_cfg__0 mailbox_cfg__0(
+        .clk(mailbox_cfg__0__clk),
+        .read_address(mailbox_cfg__0__read_address),
+        .id_word(mailbox_cfg__0__id_word),
+        .mask(mailbox_cfg__0__mask),
+        .write_address(mailbox_cfg__0__write_address),
+        .we_id(mailbox_cfg__0__we_id),
+        .we_mask(mailbox_cfg__0__we_mask),
+        .wdat(mailbox_cfg__0__wdat)
     );
     drcc__dmr_ctl dmr_ctl(
         .clk(dmr_ctl__clk),
@@ -914,37 +929,37 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .status_word(dmr_ctl__status_word),
         .cs_count_word(dmr_ctl__cs_count_word)
     );
-    drcc__dmr_eng dmr_eng(
-        .clk(dmr_eng__clk),
-        .hold(dmr_eng__hold),
-        .clear_state(dmr_eng__clear_state),
-        .timeout(dmr_eng__timeout),
-        .tx_dcl(dmr_eng__tx_dcl),
-        .tx_rcl(dmr_eng__tx_rcl),
-        .rx_dcl(dmr_eng__rx_dcl),
-        .rx_rcl(dmr_eng__rx_rcl),
-        .req_dcl(dmr_eng__req_dcl),
-        .req_rcl(dmr_eng__req_rcl),
-        .key_tx_dcl(dmr_eng__key_tx_dcl),
-        .key_tx_rcl(dmr_eng__key_tx_rcl),
-        .key_rx_dcl(dmr_eng__key_rx_dcl),
-        .key_rx_rcl(dmr_eng__key_rx_rcl),
-        .key_req_dcl(dmr_eng__key_req_dcl),
-        .key_req_rcl(dmr_eng__key_req_rcl),
-        .eval(dmr_eng__eval),
-        .mb_enable(dmr_eng__mb_enable),
-        .mb_limits(dmr_eng__mb_limits),
-        .cfg_addr(dmr_eng__cfg_addr),
-        .cfg_id_word(dmr_eng__cfg_id_word),
-        .cfg_mask(dmr_eng__cfg_mask),
-        .mb_sel(dmr_eng__mb_sel),
-        .mb_state_word(dmr_eng__mb_state_word),
-        .fault(dmr_eng__fault),
-        .fault_line(dmr_eng__fault_line),
-        .fault_tx(dmr_eng__fault_tx),
-        .fault_deviation(dmr_eng__fault_deviation),
-        .fault_mb(dmr_eng__fault_mb),
-        .e_state(dmr_eng__e_state)
+    drcc__dmr_eng__0 dmr_eng__0(
+        .clk(dmr_eng__0__clk),
+        .hold(dmr_eng__0__hold),
+        .clear_state(dmr_eng__0__clear_state),
+        .timeout(dmr_eng__0__timeout),
+        .tx_dcl(dmr_eng__0__tx_dcl),
+        .tx_rcl(dmr_eng__0__tx_rcl),
+        .rx_dcl(dmr_eng__0__rx_dcl),
+        .rx_rcl(dmr_eng__0__rx_rcl),
+        .req_dcl(dmr_eng__0__req_dcl),
+        .req_rcl(dmr_eng__0__req_rcl),
+        .key_tx_dcl(dmr_eng__0__key_tx_dcl),
+        .key_tx_rcl(dmr_eng__0__key_tx_rcl),
+        .key_rx_dcl(dmr_eng__0__key_rx_dcl),
+        .key_rx_rcl(dmr_eng__0__key_rx_rcl),
+        .key_req_dcl(dmr_eng__0__key_req_dcl),
+        .key_req_rcl(dmr_eng__0__key_req_rcl),
+        .eval(dmr_eng__0__eval),
+        .mb_enable(dmr_eng__0__mb_enable),
+        .mb_limits(dmr_eng__0__mb_limits),
+        .cfg_addr(dmr_eng__0__cfg_addr),
+        .cfg_id_word(dmr_eng__0__cfg_id_word),
+        .cfg_mask(dmr_eng__0__cfg_mask),
+        .mb_sel(dmr_eng__0__mb_sel),
+        .mb_state_word(dmr_eng__0__mb_state_word),
+        .fault(dmr_eng__0__fault),
+        .fault_line(dmr_eng__0__fault_line),
+        .fault_tx(dmr_eng__0__fault_tx),
+        .fault_deviation(dmr_eng__0__fault_deviation),
+        .fault_mb(dmr_eng__0__fault_mb),
+        .e_state(dmr_eng__0__e_state)
     );
     drcc__status status(
         .adr(status__adr),
@@ -1279,6 +1294,55 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         regs__ext_writable = dmr_check__writable;
         regs__ext_illegal = dmr_check__illegal;
         regs__ev_dmr = dmr_ctl__int_evt;
+        mb_id_word = zero31;
+        mb_mask = zero29;
+        mb_state_word = zero32;
+        eval_fault = 1'b0;
+        eval_line = 1'b0;
+        eval_tx = 1'b0;
+        eval_deviation = 1'b0;
+        eval_mb = zero4;
+        mailbox_cfg__0__clk = clk;
+        if (dmr_hold) begin
+            mailbox_cfg__0__read_address = dmr_regs__mb_sel;
+        end
+        else begin
+            mailbox_cfg__0__read_address = dmr_eng__0__cfg_addr;
+        end
+        mailbox_cfg__0__write_address = dmr_regs__mb_sel;
+        mailbox_cfg__0__we_id = dmr_regs__mb_we_id;
+        mailbox_cfg__0__we_mask = dmr_regs__mb_we_mask;
+        mailbox_cfg__0__wdat = wb_dat_i[(32'h0)+:(31)];
+        mb_id_word = mailbox_cfg__0__id_word;
+        mb_mask = mailbox_cfg__0__mask;
+        dmr_eng__0__clk = clk;
+        dmr_eng__0__hold = dmr_hold;
+        dmr_eng__0__clear_state = dmr_ctl__clear_mailboxes;
+        dmr_eng__0__timeout = dmr_regs__timeout;
+        dmr_eng__0__tx_dcl = dmr_ctl__raise_tx_dcl;
+        dmr_eng__0__tx_rcl = dmr_ctl__raise_tx_rcl;
+        dmr_eng__0__rx_dcl = dmr_ctl__raise_rx_dcl;
+        dmr_eng__0__rx_rcl = dmr_ctl__raise_rx_rcl;
+        dmr_eng__0__req_dcl = dmr_ctl__raise_req_dcl;
+        dmr_eng__0__req_rcl = dmr_ctl__raise_req_rcl;
+        dmr_eng__0__key_tx_dcl = dmr_ctl__key_tx_dcl;
+        dmr_eng__0__key_tx_rcl = dmr_ctl__key_tx_rcl;
+        dmr_eng__0__key_rx_dcl = dmr_ctl__key_rx_dcl;
+        dmr_eng__0__key_rx_rcl = dmr_ctl__key_rx_rcl;
+        dmr_eng__0__key_req_dcl = dmr_ctl__key_req_dcl;
+        dmr_eng__0__key_req_rcl = dmr_ctl__key_req_rcl;
+        dmr_eng__0__eval = dmr_ctl__raise_eval;
+        dmr_eng__0__mb_enable = dmr_regs__mb_enable;
+        dmr_eng__0__mb_limits = dmr_regs__mb_limits;
+        dmr_eng__0__cfg_id_word = mailbox_cfg__0__id_word;
+        dmr_eng__0__cfg_mask = mailbox_cfg__0__mask;
+        dmr_eng__0__mb_sel = dmr_regs__mb_sel;
+        mb_state_word = dmr_eng__0__mb_state_word;
+        eval_fault = dmr_eng__0__fault;
+        eval_line = dmr_eng__0__fault_line;
+        eval_tx = dmr_eng__0__fault_tx;
+        eval_deviation = dmr_eng__0__fault_deviation;
+        eval_mb = dmr_eng__0__fault_mb;
         dmr_check__adr = wb_adr_i;
         dmr_check__wdat = wb_dat_i;
         dmr_check__reset_mode = regs__reset_mode;
@@ -1289,12 +1353,12 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         dmr_check__mb_sel = dmr_regs__mb_sel;
         dmr_check__mb_enable = dmr_regs__mb_enable;
         dmr_check__mb_limits = dmr_regs__mb_limits;
-        dmr_check__mb_id_word = mailbox_cfg__id_word;
-        dmr_check__mb_mask = mailbox_cfg__mask;
+        dmr_check__mb_id_word = mb_id_word;
+        dmr_check__mb_mask = mb_mask;
         dmr_check__status_word = dmr_ctl__status_word;
         dmr_check__cs_count_word = dmr_ctl__cs_count_word;
         dmr_check__rx_stats_word = (((rxw__expired) & 32'hffffffff) << 32'h18) | (((rxw__released) & 32'hffffffff) << 32'h10) | ((rxw__pcl_frames) & 32'hffffffff);
-        dmr_check__mb_state_word = dmr_eng__mb_state_word;
+        dmr_check__mb_state_word = mb_state_word;
         dmr_regs__clk = clk;
         dmr_regs__rst = rst;
         dmr_regs__wr = regs__wr_o;
@@ -1302,17 +1366,6 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         dmr_regs__wdat = wb_dat_i;
         dmr_regs__writable = dmr_check__writable;
         dmr_regs__refused = dmr_check__illegal;
-        mailbox_cfg__clk = clk;
-        if (dmr_hold) begin
-            mailbox_cfg__read_address = dmr_regs__mb_sel;
-        end
-        else begin
-            mailbox_cfg__read_address = dmr_eng__cfg_addr;
-        end
-        mailbox_cfg__write_address = dmr_regs__mb_sel;
-        mailbox_cfg__we_id = dmr_regs__mb_we_id;
-        mailbox_cfg__we_mask = dmr_regs__mb_we_mask;
-        mailbox_cfg__wdat = wb_dat_i[(32'h0)+:(31)];
         dmr_ctl__clk = clk;
         dmr_ctl__rst = rst;
         dmr_ctl__hold = dmr_hold;
@@ -1344,33 +1397,11 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         dmr_ctl__rd_ide = txbuf__rd_frame[32'h61];
         dmr_ctl__rd_id = txbuf__rd_frame[(32'h44)+:(29)];
         dmr_ctl__rd_sel = txbuf__rd_sel_o;
-        dmr_ctl__eval_fault = dmr_eng__fault;
-        dmr_ctl__eval_line = dmr_eng__fault_line;
-        dmr_ctl__eval_tx = dmr_eng__fault_tx;
-        dmr_ctl__eval_deviation = dmr_eng__fault_deviation;
-        dmr_ctl__eval_mb = dmr_eng__fault_mb;
-        dmr_eng__clk = clk;
-        dmr_eng__hold = dmr_hold;
-        dmr_eng__clear_state = dmr_ctl__clear_mailboxes;
-        dmr_eng__timeout = dmr_regs__timeout;
-        dmr_eng__tx_dcl = dmr_ctl__raise_tx_dcl;
-        dmr_eng__tx_rcl = dmr_ctl__raise_tx_rcl;
-        dmr_eng__rx_dcl = dmr_ctl__raise_rx_dcl;
-        dmr_eng__rx_rcl = dmr_ctl__raise_rx_rcl;
-        dmr_eng__req_dcl = dmr_ctl__raise_req_dcl;
-        dmr_eng__req_rcl = dmr_ctl__raise_req_rcl;
-        dmr_eng__key_tx_dcl = dmr_ctl__key_tx_dcl;
-        dmr_eng__key_tx_rcl = dmr_ctl__key_tx_rcl;
-        dmr_eng__key_rx_dcl = dmr_ctl__key_rx_dcl;
-        dmr_eng__key_rx_rcl = dmr_ctl__key_rx_rcl;
-        dmr_eng__key_req_dcl = dmr_ctl__key_req_dcl;
-        dmr_eng__key_req_rcl = dmr_ctl__key_req_rcl;
-        dmr_eng__eval = dmr_ctl__raise_eval;
-        dmr_eng__mb_enable = dmr_regs__mb_enable;
-        dmr_eng__mb_limits = dmr_regs__mb_limits;
-        dmr_eng__cfg_id_word = mailbox_cfg__id_word;
-        dmr_eng__cfg_mask = mailbox_cfg__mask;
-        dmr_eng__mb_sel = dmr_regs__mb_sel;
+        dmr_ctl__eval_fault = eval_fault;
+        dmr_ctl__eval_line = eval_line;
+        dmr_ctl__eval_tx = eval_tx;
+        dmr_ctl__eval_deviation = eval_deviation;
+        dmr_ctl__eval_mb = eval_mb;
         status__adr = wb_adr_i;
         status__reset_mode = regs__reset_mode;
         status__state = main__state;
@@ -15449,6 +15480,7 @@ module drcc__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rc
     localparam  a_mbcfg = 6'b100010;
     localparam  a_state = 6'b100011;
     localparam  mailboxes = 5'b10000;
+    localparam  no_mailboxes = 1'b0;
     localparam  enable_bit = 32'h80000000;
     localparam  zero7 = 7'b0;
     localparam  zero16 = 16'h0;
@@ -15487,17 +15519,17 @@ module drcc__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rc
             word = ((mb_sel) & 32'hffffffff);
         end
         else if (adr == a_id) begin
-            if (reset_mode) begin
+            if (reset_mode & ~no_mailboxes) begin
                 word = ((mb_id_word) & 32'hffffffff);
             end
         end
         else if (adr == a_mask) begin
-            if (reset_mode) begin
+            if (reset_mode & ~no_mailboxes) begin
                 word = ((mb_mask) & 32'hffffffff);
             end
         end
         else if (adr == a_mbcfg) begin
-            if (reset_mode) begin
+            if (reset_mode & ~no_mailboxes) begin
                 word = ((sel_limit) & 32'hffffffff) | sel_enable_word;
             end
         end
@@ -15515,7 +15547,9 @@ module drcc__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rc
         end
         else if (adr == a_state) begin
             writable = 1'b0;
-            word = mb_state_word;
+            if (~no_mailboxes) begin
+                word = mb_state_word;
+            end
         end
         else begin
             hit = 1'b0;
@@ -15526,6 +15560,9 @@ module drcc__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rc
             illegal = ((wdat[(32'h0)+:(4)]) & 5'h1f) >= mailboxes;
         end
         else if (writable & ~reset_mode) begin
+            illegal = 1'b1;
+        end
+        else if (no_mailboxes & ((adr == a_id) | (adr == a_mask) | (adr == a_mbcfg))) begin
             illegal = 1'b1;
         end
         else if (adr == a_cfg) begin
@@ -18127,7 +18164,7 @@ module drcc__dmr_ctl__time_base__tick_q(d,q,clock);
 endmodule // drcc__dmr_ctl__time_base__tick_q
 
 
-module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,req_dcl,req_rcl,key_tx_dcl,key_tx_rcl,key_rx_dcl,key_rx_rcl,key_req_dcl,key_req_rcl,eval,mb_enable,mb_limits,cfg_addr,cfg_id_word,cfg_mask,mb_sel,mb_state_word,fault,fault_line,fault_tx,fault_deviation,fault_mb,e_state);
+module drcc__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,req_dcl,req_rcl,key_tx_dcl,key_tx_rcl,key_rx_dcl,key_rx_rcl,key_req_dcl,key_req_rcl,eval,mb_enable,mb_limits,cfg_addr,cfg_id_word,cfg_mask,mb_sel,mb_state_word,fault,fault_line,fault_tx,fault_deviation,fault_mb,e_state);
     
     // Module arguments
     input wire  clk;
@@ -18272,107 +18309,107 @@ module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,re
     reg  expired;
     
     // Sub module instances
-    drcc__dmr_eng__pend_tx_dcl pend_tx_dcl(
+    drcc__dmr_eng__0__pend_tx_dcl pend_tx_dcl(
         .d(pend_tx_dcl__d),
         .q(pend_tx_dcl__q),
         .clock(pend_tx_dcl__clock)
     );
-    drcc__dmr_eng__pend_tx_rcl pend_tx_rcl(
+    drcc__dmr_eng__0__pend_tx_rcl pend_tx_rcl(
         .d(pend_tx_rcl__d),
         .q(pend_tx_rcl__q),
         .clock(pend_tx_rcl__clock)
     );
-    drcc__dmr_eng__pend_rx_dcl pend_rx_dcl(
+    drcc__dmr_eng__0__pend_rx_dcl pend_rx_dcl(
         .d(pend_rx_dcl__d),
         .q(pend_rx_dcl__q),
         .clock(pend_rx_dcl__clock)
     );
-    drcc__dmr_eng__pend_rx_rcl pend_rx_rcl(
+    drcc__dmr_eng__0__pend_rx_rcl pend_rx_rcl(
         .d(pend_rx_rcl__d),
         .q(pend_rx_rcl__q),
         .clock(pend_rx_rcl__clock)
     );
-    drcc__dmr_eng__pend_req_dcl pend_req_dcl(
+    drcc__dmr_eng__0__pend_req_dcl pend_req_dcl(
         .d(pend_req_dcl__d),
         .q(pend_req_dcl__q),
         .clock(pend_req_dcl__clock)
     );
-    drcc__dmr_eng__pend_req_rcl pend_req_rcl(
+    drcc__dmr_eng__0__pend_req_rcl pend_req_rcl(
         .d(pend_req_rcl__d),
         .q(pend_req_rcl__q),
         .clock(pend_req_rcl__clock)
     );
-    drcc__dmr_eng__pend_eval pend_eval(
+    drcc__dmr_eng__0__pend_eval pend_eval(
         .d(pend_eval__d),
         .q(pend_eval__q),
         .clock(pend_eval__clock)
     );
-    drcc__dmr_eng__k_tx_dcl k_tx_dcl(
+    drcc__dmr_eng__0__k_tx_dcl k_tx_dcl(
         .d(k_tx_dcl__d),
         .q(k_tx_dcl__q),
         .clock(k_tx_dcl__clock)
     );
-    drcc__dmr_eng__k_tx_rcl k_tx_rcl(
+    drcc__dmr_eng__0__k_tx_rcl k_tx_rcl(
         .d(k_tx_rcl__d),
         .q(k_tx_rcl__q),
         .clock(k_tx_rcl__clock)
     );
-    drcc__dmr_eng__k_rx_dcl k_rx_dcl(
+    drcc__dmr_eng__0__k_rx_dcl k_rx_dcl(
         .d(k_rx_dcl__d),
         .q(k_rx_dcl__q),
         .clock(k_rx_dcl__clock)
     );
-    drcc__dmr_eng__k_rx_rcl k_rx_rcl(
+    drcc__dmr_eng__0__k_rx_rcl k_rx_rcl(
         .d(k_rx_rcl__d),
         .q(k_rx_rcl__q),
         .clock(k_rx_rcl__clock)
     );
-    drcc__dmr_eng__k_req_dcl k_req_dcl(
+    drcc__dmr_eng__0__k_req_dcl k_req_dcl(
         .d(k_req_dcl__d),
         .q(k_req_dcl__q),
         .clock(k_req_dcl__clock)
     );
-    drcc__dmr_eng__k_req_rcl k_req_rcl(
+    drcc__dmr_eng__0__k_req_rcl k_req_rcl(
         .d(k_req_rcl__d),
         .q(k_req_rcl__q),
         .clock(k_req_rcl__clock)
     );
-    drcc__dmr_eng__state state(
+    drcc__dmr_eng__0__state state(
         .d(state__d),
         .q(state__q),
         .clock(state__clock)
     );
-    drcc__dmr_eng__e_i e_i(
+    drcc__dmr_eng__0__e_i e_i(
         .d(e_i__d),
         .q(e_i__q),
         .clock(e_i__clock)
     );
-    drcc__dmr_eng__e_kind e_kind(
+    drcc__dmr_eng__0__e_kind e_kind(
         .d(e_kind__d),
         .q(e_kind__q),
         .clock(e_kind__clock)
     );
-    drcc__dmr_eng__e_line e_line(
+    drcc__dmr_eng__0__e_line e_line(
         .d(e_line__d),
         .q(e_line__q),
         .clock(e_line__clock)
     );
-    drcc__dmr_eng__e_key e_key(
+    drcc__dmr_eng__0__e_key e_key(
         .d(e_key__d),
         .q(e_key__q),
         .clock(e_key__clock)
     );
-    drcc__dmr_eng__e_found e_found(
+    drcc__dmr_eng__0__e_found e_found(
         .d(e_found__d),
         .q(e_found__q),
         .clock(e_found__clock)
     );
-    drcc__dmr_eng__e_hit e_hit(
+    drcc__dmr_eng__0__e_hit e_hit(
         .d(e_hit__d),
         .q(e_hit__q),
         .clock(e_hit__clock)
     );
-    drcc__dmr_eng__mbx mbx(
+    drcc__dmr_eng__0__mbx mbx(
         .clk(mbx__clk),
         .clear(mbx__clear),
         .sel(mbx__sel),
@@ -18647,10 +18684,10 @@ module drcc__dmr_eng(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl,re
         end
     end
     
-endmodule // drcc__dmr_eng
+endmodule // drcc__dmr_eng__0
 
 
-module drcc__dmr_eng__e_found(d,q,clock);
+module drcc__dmr_eng__0__e_found(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -18663,10 +18700,10 @@ module drcc__dmr_eng__e_found(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__e_found
+endmodule // drcc__dmr_eng__0__e_found
 
 
-module drcc__dmr_eng__e_hit(d,q,clock);
+module drcc__dmr_eng__0__e_hit(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -18679,10 +18716,10 @@ module drcc__dmr_eng__e_hit(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__e_hit
+endmodule // drcc__dmr_eng__0__e_hit
 
 
-module drcc__dmr_eng__e_i(d,q,clock);
+module drcc__dmr_eng__0__e_i(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -18695,10 +18732,10 @@ module drcc__dmr_eng__e_i(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__e_i
+endmodule // drcc__dmr_eng__0__e_i
 
 
-module drcc__dmr_eng__e_key(d,q,clock);
+module drcc__dmr_eng__0__e_key(d,q,clock);
     
     // Module arguments
     input wire  [29:0] d;
@@ -18711,10 +18748,10 @@ module drcc__dmr_eng__e_key(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__e_key
+endmodule // drcc__dmr_eng__0__e_key
 
 
-module drcc__dmr_eng__e_kind(d,q,clock);
+module drcc__dmr_eng__0__e_kind(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -18727,10 +18764,10 @@ module drcc__dmr_eng__e_kind(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__e_kind
+endmodule // drcc__dmr_eng__0__e_kind
 
 
-module drcc__dmr_eng__e_line(d,q,clock);
+module drcc__dmr_eng__0__e_line(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -18743,10 +18780,10 @@ module drcc__dmr_eng__e_line(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__e_line
+endmodule // drcc__dmr_eng__0__e_line
 
 
-module drcc__dmr_eng__k_req_dcl(d,q,clock);
+module drcc__dmr_eng__0__k_req_dcl(d,q,clock);
     
     // Module arguments
     input wire  [29:0] d;
@@ -18759,10 +18796,10 @@ module drcc__dmr_eng__k_req_dcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__k_req_dcl
+endmodule // drcc__dmr_eng__0__k_req_dcl
 
 
-module drcc__dmr_eng__k_req_rcl(d,q,clock);
+module drcc__dmr_eng__0__k_req_rcl(d,q,clock);
     
     // Module arguments
     input wire  [29:0] d;
@@ -18775,10 +18812,10 @@ module drcc__dmr_eng__k_req_rcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__k_req_rcl
+endmodule // drcc__dmr_eng__0__k_req_rcl
 
 
-module drcc__dmr_eng__k_rx_dcl(d,q,clock);
+module drcc__dmr_eng__0__k_rx_dcl(d,q,clock);
     
     // Module arguments
     input wire  [29:0] d;
@@ -18791,10 +18828,10 @@ module drcc__dmr_eng__k_rx_dcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__k_rx_dcl
+endmodule // drcc__dmr_eng__0__k_rx_dcl
 
 
-module drcc__dmr_eng__k_rx_rcl(d,q,clock);
+module drcc__dmr_eng__0__k_rx_rcl(d,q,clock);
     
     // Module arguments
     input wire  [29:0] d;
@@ -18807,10 +18844,10 @@ module drcc__dmr_eng__k_rx_rcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__k_rx_rcl
+endmodule // drcc__dmr_eng__0__k_rx_rcl
 
 
-module drcc__dmr_eng__k_tx_dcl(d,q,clock);
+module drcc__dmr_eng__0__k_tx_dcl(d,q,clock);
     
     // Module arguments
     input wire  [29:0] d;
@@ -18823,10 +18860,10 @@ module drcc__dmr_eng__k_tx_dcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__k_tx_dcl
+endmodule // drcc__dmr_eng__0__k_tx_dcl
 
 
-module drcc__dmr_eng__k_tx_rcl(d,q,clock);
+module drcc__dmr_eng__0__k_tx_rcl(d,q,clock);
     
     // Module arguments
     input wire  [29:0] d;
@@ -18839,10 +18876,10 @@ module drcc__dmr_eng__k_tx_rcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__k_tx_rcl
+endmodule // drcc__dmr_eng__0__k_tx_rcl
 
 
-module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers);
+module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers);
     
     // Module arguments
     input wire  clk;
@@ -18861,56 +18898,90 @@ module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,
     localparam  one16 = 16'h1;
     localparam  zero24 = 24'h0;
     localparam  zero16 = 16'h0;
+    localparam  zero128 = 128'h0;
+    localparam  zero256 = 256'h0;
+    localparam  at_c__0 = 8'h0;
+    localparam  at_c__1 = 8'h8;
+    localparam  at_c__2 = 8'h10;
+    localparam  at_c__3 = 8'h18;
+    localparam  at_c__4 = 8'h20;
+    localparam  at_c__5 = 8'h28;
+    localparam  at_c__6 = 8'h30;
+    localparam  at_c__7 = 8'h38;
+    localparam  at_c__8 = 8'h40;
+    localparam  at_c__9 = 8'h48;
+    localparam  at_c__10 = 8'h50;
+    localparam  at_c__11 = 8'h58;
+    localparam  at_c__12 = 8'h60;
+    localparam  at_c__13 = 8'h68;
+    localparam  at_c__14 = 8'h70;
+    localparam  at_c__15 = 8'h78;
+    localparam  at_t__0 = 9'b0;
+    localparam  at_t__1 = 9'b10000;
+    localparam  at_t__2 = 9'b100000;
+    localparam  at_t__3 = 9'b110000;
+    localparam  at_t__4 = 9'b1000000;
+    localparam  at_t__5 = 9'b1010000;
+    localparam  at_t__6 = 9'b1100000;
+    localparam  at_t__7 = 9'b1110000;
+    localparam  at_t__8 = 9'b10000000;
+    localparam  at_t__9 = 9'b10010000;
+    localparam  at_t__10 = 9'b10100000;
+    localparam  at_t__11 = 9'b10110000;
+    localparam  at_t__12 = 9'b11000000;
+    localparam  at_t__13 = 9'b11010000;
+    localparam  at_t__14 = 9'b11100000;
+    localparam  at_t__15 = 9'b11110000;
     
     // Stub signals
-    reg  [23:0] mb0__d;
-    wire  [23:0] mb0__q;
-    reg  mb0__clock;
-    reg  [23:0] mb1__d;
-    wire  [23:0] mb1__q;
-    reg  mb1__clock;
-    reg  [23:0] mb2__d;
-    wire  [23:0] mb2__q;
-    reg  mb2__clock;
-    reg  [23:0] mb3__d;
-    wire  [23:0] mb3__q;
-    reg  mb3__clock;
-    reg  [23:0] mb4__d;
-    wire  [23:0] mb4__q;
-    reg  mb4__clock;
-    reg  [23:0] mb5__d;
-    wire  [23:0] mb5__q;
-    reg  mb5__clock;
-    reg  [23:0] mb6__d;
-    wire  [23:0] mb6__q;
-    reg  mb6__clock;
-    reg  [23:0] mb7__d;
-    wire  [23:0] mb7__q;
-    reg  mb7__clock;
-    reg  [23:0] mb8__d;
-    wire  [23:0] mb8__q;
-    reg  mb8__clock;
-    reg  [23:0] mb9__d;
-    wire  [23:0] mb9__q;
-    reg  mb9__clock;
-    reg  [23:0] mb10__d;
-    wire  [23:0] mb10__q;
-    reg  mb10__clock;
-    reg  [23:0] mb11__d;
-    wire  [23:0] mb11__q;
-    reg  mb11__clock;
-    reg  [23:0] mb12__d;
-    wire  [23:0] mb12__q;
-    reg  mb12__clock;
-    reg  [23:0] mb13__d;
-    wire  [23:0] mb13__q;
-    reg  mb13__clock;
-    reg  [23:0] mb14__d;
-    wire  [23:0] mb14__q;
-    reg  mb14__clock;
-    reg  [23:0] mb15__d;
-    wire  [23:0] mb15__q;
-    reg  mb15__clock;
+    reg  [23:0] mb__0__d;
+    wire  [23:0] mb__0__q;
+    reg  mb__0__clock;
+    reg  [23:0] mb__1__d;
+    wire  [23:0] mb__1__q;
+    reg  mb__1__clock;
+    reg  [23:0] mb__2__d;
+    wire  [23:0] mb__2__q;
+    reg  mb__2__clock;
+    reg  [23:0] mb__3__d;
+    wire  [23:0] mb__3__q;
+    reg  mb__3__clock;
+    reg  [23:0] mb__4__d;
+    wire  [23:0] mb__4__q;
+    reg  mb__4__clock;
+    reg  [23:0] mb__5__d;
+    wire  [23:0] mb__5__q;
+    reg  mb__5__clock;
+    reg  [23:0] mb__6__d;
+    wire  [23:0] mb__6__q;
+    reg  mb__6__clock;
+    reg  [23:0] mb__7__d;
+    wire  [23:0] mb__7__q;
+    reg  mb__7__clock;
+    reg  [23:0] mb__8__d;
+    wire  [23:0] mb__8__q;
+    reg  mb__8__clock;
+    reg  [23:0] mb__9__d;
+    wire  [23:0] mb__9__q;
+    reg  mb__9__clock;
+    reg  [23:0] mb__10__d;
+    wire  [23:0] mb__10__q;
+    reg  mb__10__clock;
+    reg  [23:0] mb__11__d;
+    wire  [23:0] mb__11__q;
+    reg  mb__11__clock;
+    reg  [23:0] mb__12__d;
+    wire  [23:0] mb__12__q;
+    reg  mb__12__clock;
+    reg  [23:0] mb__13__d;
+    wire  [23:0] mb__13__q;
+    reg  mb__13__clock;
+    reg  [23:0] mb__14__d;
+    wire  [23:0] mb__14__q;
+    reg  mb__14__clock;
+    reg  [23:0] mb__15__d;
+    wire  [23:0] mb__15__q;
+    reg  mb__15__clock;
     reg  copy__clk;
     reg  [3:0] copy__read_address;
     reg  copy__read_enable;
@@ -18929,89 +19000,91 @@ module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,
     reg  [23:0] rd_word;
     reg  [15:0] slot;
     reg  [23:0] word;
+    reg  [7:0] mb_counter;
+    reg  [15:0] mb_timer;
     
     // Sub module instances
-    drcc__dmr_eng__mbx__mb0 mb0(
-        .d(mb0__d),
-        .q(mb0__q),
-        .clock(mb0__clock)
+    drcc__dmr_eng__0__mbx__mb__0 mb__0(
+        .d(mb__0__d),
+        .q(mb__0__q),
+        .clock(mb__0__clock)
     );
-    drcc__dmr_eng__mbx__mb1 mb1(
-        .d(mb1__d),
-        .q(mb1__q),
-        .clock(mb1__clock)
+    drcc__dmr_eng__0__mbx__mb__1 mb__1(
+        .d(mb__1__d),
+        .q(mb__1__q),
+        .clock(mb__1__clock)
     );
-    drcc__dmr_eng__mbx__mb2 mb2(
-        .d(mb2__d),
-        .q(mb2__q),
-        .clock(mb2__clock)
+    drcc__dmr_eng__0__mbx__mb__2 mb__2(
+        .d(mb__2__d),
+        .q(mb__2__q),
+        .clock(mb__2__clock)
     );
-    drcc__dmr_eng__mbx__mb3 mb3(
-        .d(mb3__d),
-        .q(mb3__q),
-        .clock(mb3__clock)
+    drcc__dmr_eng__0__mbx__mb__3 mb__3(
+        .d(mb__3__d),
+        .q(mb__3__q),
+        .clock(mb__3__clock)
     );
-    drcc__dmr_eng__mbx__mb4 mb4(
-        .d(mb4__d),
-        .q(mb4__q),
-        .clock(mb4__clock)
+    drcc__dmr_eng__0__mbx__mb__4 mb__4(
+        .d(mb__4__d),
+        .q(mb__4__q),
+        .clock(mb__4__clock)
     );
-    drcc__dmr_eng__mbx__mb5 mb5(
-        .d(mb5__d),
-        .q(mb5__q),
-        .clock(mb5__clock)
+    drcc__dmr_eng__0__mbx__mb__5 mb__5(
+        .d(mb__5__d),
+        .q(mb__5__q),
+        .clock(mb__5__clock)
     );
-    drcc__dmr_eng__mbx__mb6 mb6(
-        .d(mb6__d),
-        .q(mb6__q),
-        .clock(mb6__clock)
+    drcc__dmr_eng__0__mbx__mb__6 mb__6(
+        .d(mb__6__d),
+        .q(mb__6__q),
+        .clock(mb__6__clock)
     );
-    drcc__dmr_eng__mbx__mb7 mb7(
-        .d(mb7__d),
-        .q(mb7__q),
-        .clock(mb7__clock)
+    drcc__dmr_eng__0__mbx__mb__7 mb__7(
+        .d(mb__7__d),
+        .q(mb__7__q),
+        .clock(mb__7__clock)
     );
-    drcc__dmr_eng__mbx__mb8 mb8(
-        .d(mb8__d),
-        .q(mb8__q),
-        .clock(mb8__clock)
+    drcc__dmr_eng__0__mbx__mb__8 mb__8(
+        .d(mb__8__d),
+        .q(mb__8__q),
+        .clock(mb__8__clock)
     );
-    drcc__dmr_eng__mbx__mb9 mb9(
-        .d(mb9__d),
-        .q(mb9__q),
-        .clock(mb9__clock)
+    drcc__dmr_eng__0__mbx__mb__9 mb__9(
+        .d(mb__9__d),
+        .q(mb__9__q),
+        .clock(mb__9__clock)
     );
-    drcc__dmr_eng__mbx__mb10 mb10(
-        .d(mb10__d),
-        .q(mb10__q),
-        .clock(mb10__clock)
+    drcc__dmr_eng__0__mbx__mb__10 mb__10(
+        .d(mb__10__d),
+        .q(mb__10__q),
+        .clock(mb__10__clock)
     );
-    drcc__dmr_eng__mbx__mb11 mb11(
-        .d(mb11__d),
-        .q(mb11__q),
-        .clock(mb11__clock)
+    drcc__dmr_eng__0__mbx__mb__11 mb__11(
+        .d(mb__11__d),
+        .q(mb__11__q),
+        .clock(mb__11__clock)
     );
-    drcc__dmr_eng__mbx__mb12 mb12(
-        .d(mb12__d),
-        .q(mb12__q),
-        .clock(mb12__clock)
+    drcc__dmr_eng__0__mbx__mb__12 mb__12(
+        .d(mb__12__d),
+        .q(mb__12__q),
+        .clock(mb__12__clock)
     );
-    drcc__dmr_eng__mbx__mb13 mb13(
-        .d(mb13__d),
-        .q(mb13__q),
-        .clock(mb13__clock)
+    drcc__dmr_eng__0__mbx__mb__13 mb__13(
+        .d(mb__13__d),
+        .q(mb__13__q),
+        .clock(mb__13__clock)
     );
-    drcc__dmr_eng__mbx__mb14 mb14(
-        .d(mb14__d),
-        .q(mb14__q),
-        .clock(mb14__clock)
+    drcc__dmr_eng__0__mbx__mb__14 mb__14(
+        .d(mb__14__d),
+        .q(mb__14__q),
+        .clock(mb__14__clock)
     );
-    drcc__dmr_eng__mbx__mb15 mb15(
-        .d(mb15__d),
-        .q(mb15__q),
-        .clock(mb15__clock)
+    drcc__dmr_eng__0__mbx__mb__15 mb__15(
+        .d(mb__15__d),
+        .q(mb__15__q),
+        .clock(mb__15__clock)
     );
-    drcc__dmr_eng__mbx__copy copy(
+    drcc__dmr_eng__0__mbx__copy copy(
         .clk(copy__clk),
         .read_address(copy__read_address),
         .read_enable(copy__read_enable),
@@ -19020,12 +19093,12 @@ module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,
         .write_data(copy__write_data),
         .write_enable(copy__write_enable)
     );
-    drcc__dmr_eng__mbx__valid valid(
+    drcc__dmr_eng__0__mbx__valid valid(
         .d(valid__d),
         .q(valid__q),
         .clock(valid__clock)
     );
-    drcc__dmr_eng__mbx__rd_q rd_q(
+    drcc__dmr_eng__0__mbx__rd_q rd_q(
         .d(rd_q__d),
         .q(rd_q__q),
         .clock(rd_q__clock)
@@ -19035,40 +19108,8 @@ module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,
     always @(*) begin
         valid__clock = clk;
         rd_q__clock = clk;
-        mb0__clock = clk;
-        mb1__clock = clk;
-        mb2__clock = clk;
-        mb3__clock = clk;
-        mb4__clock = clk;
-        mb5__clock = clk;
-        mb6__clock = clk;
-        mb7__clock = clk;
-        mb8__clock = clk;
-        mb9__clock = clk;
-        mb10__clock = clk;
-        mb11__clock = clk;
-        mb12__clock = clk;
-        mb13__clock = clk;
-        mb14__clock = clk;
-        mb15__clock = clk;
         valid__d = valid__q;
         rd_q__d = rd_q__q;
-        mb0__d = mb0__q;
-        mb1__d = mb1__q;
-        mb2__d = mb2__q;
-        mb3__d = mb3__q;
-        mb4__d = mb4__q;
-        mb5__d = mb5__q;
-        mb6__d = mb6__q;
-        mb7__d = mb7__q;
-        mb8__d = mb8__q;
-        mb9__d = mb9__q;
-        mb10__d = mb10__q;
-        mb11__d = mb11__q;
-        mb12__d = mb12__q;
-        mb13__d = mb13__q;
-        mb14__d = mb14__q;
-        mb15__d = mb15__q;
         slot = one16 << sel;
         word = ((counter_d) & 24'hffffff) | (((timer_d) & 24'hffffff) << 32'h8);
         copy__clk = clk;
@@ -19089,81 +19130,209 @@ module drcc__dmr_eng__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,
         if (we) begin
             valid__d = valid__q | slot;
         end
-        if (we & slot[32'h0]) begin
-            mb0__d = word;
-        end
-        if (we & slot[32'h1]) begin
-            mb1__d = word;
-        end
-        if (we & slot[32'h2]) begin
-            mb2__d = word;
-        end
-        if (we & slot[32'h3]) begin
-            mb3__d = word;
-        end
-        if (we & slot[32'h4]) begin
-            mb4__d = word;
-        end
-        if (we & slot[32'h5]) begin
-            mb5__d = word;
-        end
-        if (we & slot[32'h6]) begin
-            mb6__d = word;
-        end
-        if (we & slot[32'h7]) begin
-            mb7__d = word;
-        end
-        if (we & slot[32'h8]) begin
-            mb8__d = word;
-        end
-        if (we & slot[32'h9]) begin
-            mb9__d = word;
-        end
-        if (we & slot[32'ha]) begin
-            mb10__d = word;
-        end
-        if (we & slot[32'hb]) begin
-            mb11__d = word;
-        end
-        if (we & slot[32'hc]) begin
-            mb12__d = word;
-        end
-        if (we & slot[32'hd]) begin
-            mb13__d = word;
-        end
-        if (we & slot[32'he]) begin
-            mb14__d = word;
-        end
-        if (we & slot[32'hf]) begin
-            mb15__d = word;
-        end
         if (clear) begin
             valid__d = zero16;
-            mb0__d = zero24;
-            mb1__d = zero24;
-            mb2__d = zero24;
-            mb3__d = zero24;
-            mb4__d = zero24;
-            mb5__d = zero24;
-            mb6__d = zero24;
-            mb7__d = zero24;
-            mb8__d = zero24;
-            mb9__d = zero24;
-            mb10__d = zero24;
-            mb11__d = zero24;
-            mb12__d = zero24;
-            mb13__d = zero24;
-            mb14__d = zero24;
-            mb15__d = zero24;
         end
-        counters = (((mb0__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h0) | (((mb1__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h8) | (((mb2__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h10) | (((mb3__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h18) | (((mb4__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h20) | (((mb5__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h28) | (((mb6__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h30) | (((mb7__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h38) | (((mb8__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h40) | (((mb9__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h48) | (((mb10__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h50) | (((mb11__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h58) | (((mb12__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h60) | (((mb13__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h68) | (((mb14__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h70) | (((mb15__q[(32'h0)+:(8)]) & 128'hffffffffffffffffffffffffffffffff) << 32'h78);
-        timers = (((mb0__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h0) | (((mb1__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h10) | (((mb2__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h20) | (((mb3__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h30) | (((mb4__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h40) | (((mb5__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h50) | (((mb6__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h60) | (((mb7__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h70) | (((mb8__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h80) | (((mb9__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'h90) | (((mb10__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'ha0) | (((mb11__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hb0) | (((mb12__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hc0) | (((mb13__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hd0) | (((mb14__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'he0) | (((mb15__q[(32'h8)+:(16)]) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << 32'hf0);
+        counters = zero128;
+        timers = zero256;
+        mb__0__clock = clk;
+        mb__0__d = mb__0__q;
+        if (we & slot[0]) begin
+            mb__0__d = word;
+        end
+        if (clear) begin
+            mb__0__d = zero24;
+        end
+        mb_counter = mb__0__q[(32'h0)+:(8)];
+        mb_timer = mb__0__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__0);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__0);
+        mb__1__clock = clk;
+        mb__1__d = mb__1__q;
+        if (we & slot[1]) begin
+            mb__1__d = word;
+        end
+        if (clear) begin
+            mb__1__d = zero24;
+        end
+        mb_counter = mb__1__q[(32'h0)+:(8)];
+        mb_timer = mb__1__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__1);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__1);
+        mb__2__clock = clk;
+        mb__2__d = mb__2__q;
+        if (we & slot[2]) begin
+            mb__2__d = word;
+        end
+        if (clear) begin
+            mb__2__d = zero24;
+        end
+        mb_counter = mb__2__q[(32'h0)+:(8)];
+        mb_timer = mb__2__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__2);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__2);
+        mb__3__clock = clk;
+        mb__3__d = mb__3__q;
+        if (we & slot[3]) begin
+            mb__3__d = word;
+        end
+        if (clear) begin
+            mb__3__d = zero24;
+        end
+        mb_counter = mb__3__q[(32'h0)+:(8)];
+        mb_timer = mb__3__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__3);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__3);
+        mb__4__clock = clk;
+        mb__4__d = mb__4__q;
+        if (we & slot[4]) begin
+            mb__4__d = word;
+        end
+        if (clear) begin
+            mb__4__d = zero24;
+        end
+        mb_counter = mb__4__q[(32'h0)+:(8)];
+        mb_timer = mb__4__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__4);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__4);
+        mb__5__clock = clk;
+        mb__5__d = mb__5__q;
+        if (we & slot[5]) begin
+            mb__5__d = word;
+        end
+        if (clear) begin
+            mb__5__d = zero24;
+        end
+        mb_counter = mb__5__q[(32'h0)+:(8)];
+        mb_timer = mb__5__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__5);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__5);
+        mb__6__clock = clk;
+        mb__6__d = mb__6__q;
+        if (we & slot[6]) begin
+            mb__6__d = word;
+        end
+        if (clear) begin
+            mb__6__d = zero24;
+        end
+        mb_counter = mb__6__q[(32'h0)+:(8)];
+        mb_timer = mb__6__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__6);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__6);
+        mb__7__clock = clk;
+        mb__7__d = mb__7__q;
+        if (we & slot[7]) begin
+            mb__7__d = word;
+        end
+        if (clear) begin
+            mb__7__d = zero24;
+        end
+        mb_counter = mb__7__q[(32'h0)+:(8)];
+        mb_timer = mb__7__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__7);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__7);
+        mb__8__clock = clk;
+        mb__8__d = mb__8__q;
+        if (we & slot[8]) begin
+            mb__8__d = word;
+        end
+        if (clear) begin
+            mb__8__d = zero24;
+        end
+        mb_counter = mb__8__q[(32'h0)+:(8)];
+        mb_timer = mb__8__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__8);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__8);
+        mb__9__clock = clk;
+        mb__9__d = mb__9__q;
+        if (we & slot[9]) begin
+            mb__9__d = word;
+        end
+        if (clear) begin
+            mb__9__d = zero24;
+        end
+        mb_counter = mb__9__q[(32'h0)+:(8)];
+        mb_timer = mb__9__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__9);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__9);
+        mb__10__clock = clk;
+        mb__10__d = mb__10__q;
+        if (we & slot[10]) begin
+            mb__10__d = word;
+        end
+        if (clear) begin
+            mb__10__d = zero24;
+        end
+        mb_counter = mb__10__q[(32'h0)+:(8)];
+        mb_timer = mb__10__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__10);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__10);
+        mb__11__clock = clk;
+        mb__11__d = mb__11__q;
+        if (we & slot[11]) begin
+            mb__11__d = word;
+        end
+        if (clear) begin
+            mb__11__d = zero24;
+        end
+        mb_counter = mb__11__q[(32'h0)+:(8)];
+        mb_timer = mb__11__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__11);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__11);
+        mb__12__clock = clk;
+        mb__12__d = mb__12__q;
+        if (we & slot[12]) begin
+            mb__12__d = word;
+        end
+        if (clear) begin
+            mb__12__d = zero24;
+        end
+        mb_counter = mb__12__q[(32'h0)+:(8)];
+        mb_timer = mb__12__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__12);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__12);
+        mb__13__clock = clk;
+        mb__13__d = mb__13__q;
+        if (we & slot[13]) begin
+            mb__13__d = word;
+        end
+        if (clear) begin
+            mb__13__d = zero24;
+        end
+        mb_counter = mb__13__q[(32'h0)+:(8)];
+        mb_timer = mb__13__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__13);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__13);
+        mb__14__clock = clk;
+        mb__14__d = mb__14__q;
+        if (we & slot[14]) begin
+            mb__14__d = word;
+        end
+        if (clear) begin
+            mb__14__d = zero24;
+        end
+        mb_counter = mb__14__q[(32'h0)+:(8)];
+        mb_timer = mb__14__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__14);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__14);
+        mb__15__clock = clk;
+        mb__15__d = mb__15__q;
+        if (we & slot[15]) begin
+            mb__15__d = word;
+        end
+        if (clear) begin
+            mb__15__d = zero24;
+        end
+        mb_counter = mb__15__q[(32'h0)+:(8)];
+        mb_timer = mb__15__q[(32'h8)+:(16)];
+        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__15);
+        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__15);
     end
     
-endmodule // drcc__dmr_eng__mbx
+endmodule // drcc__dmr_eng__0__mbx
 
 
-module drcc__dmr_eng__mbx__copy(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc__dmr_eng__0__mbx__copy(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clk;
@@ -19190,10 +19359,10 @@ module drcc__dmr_eng__mbx__copy(clk,read_address,read_enable,read_data,write_add
        end
     end
                 
-endmodule // drcc__dmr_eng__mbx__copy
+endmodule // drcc__dmr_eng__0__mbx__copy
 
 
-module drcc__dmr_eng__mbx__mb0(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__0(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19206,10 +19375,10 @@ module drcc__dmr_eng__mbx__mb0(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb0
+endmodule // drcc__dmr_eng__0__mbx__mb__0
 
 
-module drcc__dmr_eng__mbx__mb1(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__1(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19222,10 +19391,10 @@ module drcc__dmr_eng__mbx__mb1(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb1
+endmodule // drcc__dmr_eng__0__mbx__mb__1
 
 
-module drcc__dmr_eng__mbx__mb10(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__10(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19238,10 +19407,10 @@ module drcc__dmr_eng__mbx__mb10(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb10
+endmodule // drcc__dmr_eng__0__mbx__mb__10
 
 
-module drcc__dmr_eng__mbx__mb11(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__11(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19254,10 +19423,10 @@ module drcc__dmr_eng__mbx__mb11(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb11
+endmodule // drcc__dmr_eng__0__mbx__mb__11
 
 
-module drcc__dmr_eng__mbx__mb12(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__12(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19270,10 +19439,10 @@ module drcc__dmr_eng__mbx__mb12(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb12
+endmodule // drcc__dmr_eng__0__mbx__mb__12
 
 
-module drcc__dmr_eng__mbx__mb13(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__13(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19286,10 +19455,10 @@ module drcc__dmr_eng__mbx__mb13(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb13
+endmodule // drcc__dmr_eng__0__mbx__mb__13
 
 
-module drcc__dmr_eng__mbx__mb14(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__14(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19302,10 +19471,10 @@ module drcc__dmr_eng__mbx__mb14(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb14
+endmodule // drcc__dmr_eng__0__mbx__mb__14
 
 
-module drcc__dmr_eng__mbx__mb15(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__15(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19318,10 +19487,10 @@ module drcc__dmr_eng__mbx__mb15(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb15
+endmodule // drcc__dmr_eng__0__mbx__mb__15
 
 
-module drcc__dmr_eng__mbx__mb2(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__2(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19334,10 +19503,10 @@ module drcc__dmr_eng__mbx__mb2(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb2
+endmodule // drcc__dmr_eng__0__mbx__mb__2
 
 
-module drcc__dmr_eng__mbx__mb3(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__3(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19350,10 +19519,10 @@ module drcc__dmr_eng__mbx__mb3(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb3
+endmodule // drcc__dmr_eng__0__mbx__mb__3
 
 
-module drcc__dmr_eng__mbx__mb4(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__4(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19366,10 +19535,10 @@ module drcc__dmr_eng__mbx__mb4(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb4
+endmodule // drcc__dmr_eng__0__mbx__mb__4
 
 
-module drcc__dmr_eng__mbx__mb5(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__5(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19382,10 +19551,10 @@ module drcc__dmr_eng__mbx__mb5(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb5
+endmodule // drcc__dmr_eng__0__mbx__mb__5
 
 
-module drcc__dmr_eng__mbx__mb6(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__6(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19398,10 +19567,10 @@ module drcc__dmr_eng__mbx__mb6(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb6
+endmodule // drcc__dmr_eng__0__mbx__mb__6
 
 
-module drcc__dmr_eng__mbx__mb7(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__7(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19414,10 +19583,10 @@ module drcc__dmr_eng__mbx__mb7(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb7
+endmodule // drcc__dmr_eng__0__mbx__mb__7
 
 
-module drcc__dmr_eng__mbx__mb8(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__8(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19430,10 +19599,10 @@ module drcc__dmr_eng__mbx__mb8(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb8
+endmodule // drcc__dmr_eng__0__mbx__mb__8
 
 
-module drcc__dmr_eng__mbx__mb9(d,q,clock);
+module drcc__dmr_eng__0__mbx__mb__9(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -19446,10 +19615,10 @@ module drcc__dmr_eng__mbx__mb9(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__mb9
+endmodule // drcc__dmr_eng__0__mbx__mb__9
 
 
-module drcc__dmr_eng__mbx__rd_q(d,q,clock);
+module drcc__dmr_eng__0__mbx__rd_q(d,q,clock);
     
     // Module arguments
     input wire  [3:0] d;
@@ -19462,10 +19631,10 @@ module drcc__dmr_eng__mbx__rd_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__rd_q
+endmodule // drcc__dmr_eng__0__mbx__rd_q
 
 
-module drcc__dmr_eng__mbx__valid(d,q,clock);
+module drcc__dmr_eng__0__mbx__valid(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19478,10 +19647,10 @@ module drcc__dmr_eng__mbx__valid(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__mbx__valid
+endmodule // drcc__dmr_eng__0__mbx__valid
 
 
-module drcc__dmr_eng__pend_eval(d,q,clock);
+module drcc__dmr_eng__0__pend_eval(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -19494,10 +19663,10 @@ module drcc__dmr_eng__pend_eval(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__pend_eval
+endmodule // drcc__dmr_eng__0__pend_eval
 
 
-module drcc__dmr_eng__pend_req_dcl(d,q,clock);
+module drcc__dmr_eng__0__pend_req_dcl(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -19510,10 +19679,10 @@ module drcc__dmr_eng__pend_req_dcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__pend_req_dcl
+endmodule // drcc__dmr_eng__0__pend_req_dcl
 
 
-module drcc__dmr_eng__pend_req_rcl(d,q,clock);
+module drcc__dmr_eng__0__pend_req_rcl(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -19526,10 +19695,10 @@ module drcc__dmr_eng__pend_req_rcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__pend_req_rcl
+endmodule // drcc__dmr_eng__0__pend_req_rcl
 
 
-module drcc__dmr_eng__pend_rx_dcl(d,q,clock);
+module drcc__dmr_eng__0__pend_rx_dcl(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -19542,10 +19711,10 @@ module drcc__dmr_eng__pend_rx_dcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__pend_rx_dcl
+endmodule // drcc__dmr_eng__0__pend_rx_dcl
 
 
-module drcc__dmr_eng__pend_rx_rcl(d,q,clock);
+module drcc__dmr_eng__0__pend_rx_rcl(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -19558,10 +19727,10 @@ module drcc__dmr_eng__pend_rx_rcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__pend_rx_rcl
+endmodule // drcc__dmr_eng__0__pend_rx_rcl
 
 
-module drcc__dmr_eng__pend_tx_dcl(d,q,clock);
+module drcc__dmr_eng__0__pend_tx_dcl(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -19574,10 +19743,10 @@ module drcc__dmr_eng__pend_tx_dcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__pend_tx_dcl
+endmodule // drcc__dmr_eng__0__pend_tx_dcl
 
 
-module drcc__dmr_eng__pend_tx_rcl(d,q,clock);
+module drcc__dmr_eng__0__pend_tx_rcl(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -19590,10 +19759,10 @@ module drcc__dmr_eng__pend_tx_rcl(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__pend_tx_rcl
+endmodule // drcc__dmr_eng__0__pend_tx_rcl
 
 
-module drcc__dmr_eng__state(d,q,clock);
+module drcc__dmr_eng__0__state(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -19606,7 +19775,7 @@ module drcc__dmr_eng__state(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__dmr_eng__state
+endmodule // drcc__dmr_eng__0__state
 
 
 module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_we_id,mb_we_mask);
@@ -19647,6 +19816,8 @@ module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,ti
     localparam  cs_rcl_reset = 11'b11111101011;
     localparam  limits_reset = 128'h3030303030303030303030303030303;
     localparam  slot_mask = 128'hff;
+    localparam  present = 16'hffff;
+    localparam  present_limits = 128'h7f7f7f7f7f7f7f7f7f7f7f7f7f7f7f7f;
     localparam  zero4 = 4'h0;
     localparam  zero16 = 16'h0;
     localparam  one16 = 16'h1;
@@ -19783,8 +19954,8 @@ module drcc__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,ti
         cs_id_dcl = cs_dcl_q__q;
         cs_id_rcl = cs_rcl_q__q;
         mb_sel = sel_q__q;
-        mb_enable = enable_q__q;
-        mb_limits = limits_q__q;
+        mb_enable = enable_q__q & present;
+        mb_limits = limits_q__q & present_limits;
     end
     
 endmodule // drcc__dmr_regs
@@ -19902,7 +20073,7 @@ module drcc__dmr_regs__time_q(d,q,clock);
 endmodule // drcc__dmr_regs__time_q
 
 
-module drcc__mailbox_cfg(clk,read_address,id_word,mask,write_address,we_id,we_mask,wdat);
+module drcc__mailbox_cfg__0(clk,read_address,id_word,mask,write_address,we_id,we_mask,wdat);
     
     // Module arguments
     input wire  clk;
@@ -19931,7 +20102,7 @@ module drcc__mailbox_cfg(clk,read_address,id_word,mask,write_address,we_id,we_ma
     reg  mask_ram__write_enable;
     
     // Sub module instances
-    drcc__mailbox_cfg__id_ram id_ram(
+    drcc__mailbox_cfg__0__id_ram id_ram(
         .clk(id_ram__clk),
         .read_address(id_ram__read_address),
         .read_enable(id_ram__read_enable),
@@ -19940,7 +20111,7 @@ module drcc__mailbox_cfg(clk,read_address,id_word,mask,write_address,we_id,we_ma
         .write_data(id_ram__write_data),
         .write_enable(id_ram__write_enable)
     );
-    drcc__mailbox_cfg__mask_ram mask_ram(
+    drcc__mailbox_cfg__0__mask_ram mask_ram(
         .clk(mask_ram__clk),
         .read_address(mask_ram__read_address),
         .read_enable(mask_ram__read_enable),
@@ -19968,10 +20139,10 @@ module drcc__mailbox_cfg(clk,read_address,id_word,mask,write_address,we_id,we_ma
         mask = mask_ram__read_data;
     end
     
-endmodule // drcc__mailbox_cfg
+endmodule // drcc__mailbox_cfg__0
 
 
-module drcc__mailbox_cfg__id_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc__mailbox_cfg__0__id_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clk;
@@ -19998,10 +20169,10 @@ module drcc__mailbox_cfg__id_ram(clk,read_address,read_enable,read_data,write_ad
        end
     end
                 
-endmodule // drcc__mailbox_cfg__id_ram
+endmodule // drcc__mailbox_cfg__0__id_ram
 
 
-module drcc__mailbox_cfg__mask_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc__mailbox_cfg__0__mask_ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clk;
@@ -20028,7 +20199,7 @@ module drcc__mailbox_cfg__mask_ram(clk,read_address,read_enable,read_data,write_
        end
     end
                 
-endmodule // drcc__mailbox_cfg__mask_ram
+endmodule // drcc__mailbox_cfg__0__mask_ram
 
 
 module drcc__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);

@@ -9,11 +9,17 @@
 //! and the DMR paths of the TX buffer and the RX writer. Ports (contract §1):
 //! clock/reset, Wishbone slave, irq, CAN pins, the paper's probes, the channel
 //! probes, the DMR probes (DMR contract §9).
+//!
+//! Generation parameter `M`, the DMR mailboxes (0..16, DMR contract §2): `drcc` is
+//! [`Drcc`] (`M = 16`), `drcc_m0` is [`DrccM0`] (`M = 0`: no mailbox engine, no
+//! identifier memory; DMR faults are then found by bus-off and the connection
+//! service only).
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;
 use crate::dmr::control::DmrControl;
-use crate::dmr::engine::DmrEngine;
+use crate::dmr::engine::{DmrEngine, MAILBOXES};
+use crate::dmr::if_mailboxes::IfMailboxes;
 use crate::dmr::mailbox_cfg::MailboxCfg;
 use crate::host::dmr_check::DmrCheck;
 use crate::host::dmr_regs::DmrRegs;
@@ -26,11 +32,18 @@ use crate::rmb::aux_fsm::AuxFsm;
 use crate::rmb::bit_tick::BitTick;
 use crate::rmb::main_fsm::MainFsm;
 use crate::rmb::stats::RedundancyStats;
+use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
-/// The DRCC top.
+/// The DRCC with the default 16 DMR mailboxes (`rtl-out/drcc.v`).
+pub type Drcc = DrccCore<MAILBOXES>;
+
+/// The DRCC without DMR mailboxes (`rtl-out/drcc_m0.v`).
+pub type DrccM0 = DrccCore<0>;
+
+/// The DRCC top, generated with `M` DMR mailboxes (0..16).
 #[derive(LogicBlock, Default)]
-pub struct Drcc {
+pub struct DrccCore<const M: usize> {
     // clock and reset
     /// Clock. Every register changes at its rising edge; the channels' bit timing
     /// (register `BTR`) is counted in its periods.
@@ -145,11 +158,11 @@ pub struct Drcc {
     pub dmr_tick: Signal<Out, Bit>,
     // blocks
     regs: WbRegs,
-    dmr_check: DmrCheck,
-    dmr_regs: DmrRegs,
-    mailbox_cfg: MailboxCfg,
+    dmr_check: DmrCheck<M>,
+    dmr_regs: DmrRegs<M>,
+    mailbox_cfg: IfMailboxes<MailboxCfg, M>,
     dmr_ctl: DmrControl,
-    dmr_eng: DmrEngine,
+    dmr_eng: IfMailboxes<DmrEngine<M>, M>,
     status: StatusWords,
     ticker: BitTick,
     stats: RedundancyStats,
@@ -165,9 +178,22 @@ pub struct Drcc {
     clear: Signal<Local, Bit>,
     rmb_hold: Signal<Local, Bit>,
     dmr_hold: Signal<Local, Bit>,
+    // the mailbox blocks' outputs (0 with M = 0)
+    mb_id_word: Signal<Local, Bits<31>>,
+    mb_mask: Signal<Local, Bits<29>>,
+    mb_state_word: Signal<Local, Bits<32>>,
+    eval_fault: Signal<Local, Bit>,
+    eval_line: Signal<Local, Bit>,
+    eval_tx: Signal<Local, Bit>,
+    eval_deviation: Signal<Local, Bit>,
+    eval_mb: Signal<Local, Bits<4>>,
+    zero4: Const<4, 0>,
+    zero29: Const<29, 0>,
+    zero31: Const<31, 0>,
+    zero32: Const<32, 0>,
 }
 
-impl Logic for Drcc {
+impl<const M: usize> Logic for DrccCore<M> {
     #[hdl_gen]
     fn update(&mut self) {
         // reset mode empties the queues and the FIFO; the RMB runs in redundancy
@@ -212,6 +238,60 @@ impl Logic for Drcc {
         self.regs.ext_illegal.next = self.dmr_check.illegal.val();
         self.regs.ev_dmr.next = self.dmr_ctl.int_evt.val();
 
+        // ---- the mailboxes (DMR contract §4), generated with M > 0 ----
+        self.mb_id_word.next = self.zero31.val();
+        self.mb_mask.next = self.zero29.val();
+        self.mb_state_word.next = self.zero32.val();
+        self.eval_fault.next = false;
+        self.eval_line.next = false;
+        self.eval_tx.next = false;
+        self.eval_deviation.next = false;
+        self.eval_mb.next = self.zero4.val();
+        for i in 0..M.min(1) {
+            self.mailbox_cfg[i].clk.next = self.clk.val();
+            // the memory's read port is the host's in reset mode, the engine's
+            // while DMR runs (DMR contract §2.1)
+            if self.dmr_hold.val() {
+                self.mailbox_cfg[i].read_address.next = self.dmr_regs.mb_sel.val();
+            } else {
+                self.mailbox_cfg[i].read_address.next = self.dmr_eng[i].cfg_addr.val();
+            }
+            self.mailbox_cfg[i].write_address.next = self.dmr_regs.mb_sel.val();
+            self.mailbox_cfg[i].we_id.next = self.dmr_regs.mb_we_id.val();
+            self.mailbox_cfg[i].we_mask.next = self.dmr_regs.mb_we_mask.val();
+            self.mailbox_cfg[i].wdat.next = self.wb_dat_i.val().get_bits::<31>(0);
+            self.mb_id_word.next = self.mailbox_cfg[i].id_word.val();
+            self.mb_mask.next = self.mailbox_cfg[i].mask.val();
+            self.dmr_eng[i].clk.next = self.clk.val();
+            self.dmr_eng[i].hold.next = self.dmr_hold.val();
+            self.dmr_eng[i].clear_state.next = self.dmr_ctl.clear_mailboxes.val();
+            self.dmr_eng[i].timeout.next = self.dmr_regs.timeout.val();
+            self.dmr_eng[i].tx_dcl.next = self.dmr_ctl.raise_tx_dcl.val();
+            self.dmr_eng[i].tx_rcl.next = self.dmr_ctl.raise_tx_rcl.val();
+            self.dmr_eng[i].rx_dcl.next = self.dmr_ctl.raise_rx_dcl.val();
+            self.dmr_eng[i].rx_rcl.next = self.dmr_ctl.raise_rx_rcl.val();
+            self.dmr_eng[i].req_dcl.next = self.dmr_ctl.raise_req_dcl.val();
+            self.dmr_eng[i].req_rcl.next = self.dmr_ctl.raise_req_rcl.val();
+            self.dmr_eng[i].key_tx_dcl.next = self.dmr_ctl.key_tx_dcl.val();
+            self.dmr_eng[i].key_tx_rcl.next = self.dmr_ctl.key_tx_rcl.val();
+            self.dmr_eng[i].key_rx_dcl.next = self.dmr_ctl.key_rx_dcl.val();
+            self.dmr_eng[i].key_rx_rcl.next = self.dmr_ctl.key_rx_rcl.val();
+            self.dmr_eng[i].key_req_dcl.next = self.dmr_ctl.key_req_dcl.val();
+            self.dmr_eng[i].key_req_rcl.next = self.dmr_ctl.key_req_rcl.val();
+            self.dmr_eng[i].eval.next = self.dmr_ctl.raise_eval.val();
+            self.dmr_eng[i].mb_enable.next = self.dmr_regs.mb_enable.val();
+            self.dmr_eng[i].mb_limits.next = self.dmr_regs.mb_limits.val();
+            self.dmr_eng[i].cfg_id_word.next = self.mailbox_cfg[i].id_word.val();
+            self.dmr_eng[i].cfg_mask.next = self.mailbox_cfg[i].mask.val();
+            self.dmr_eng[i].mb_sel.next = self.dmr_regs.mb_sel.val();
+            self.mb_state_word.next = self.dmr_eng[i].mb_state_word.val();
+            self.eval_fault.next = self.dmr_eng[i].fault.val();
+            self.eval_line.next = self.dmr_eng[i].fault_line.val();
+            self.eval_tx.next = self.dmr_eng[i].fault_tx.val();
+            self.eval_deviation.next = self.dmr_eng[i].fault_deviation.val();
+            self.eval_mb.next = self.dmr_eng[i].fault_mb.val();
+        }
+
         // ---- DMR registers and mailbox memory (DMR contract §2) ----
         self.dmr_check.adr.next = self.wb_adr_i.val();
         self.dmr_check.wdat.next = self.wb_dat_i.val();
@@ -223,14 +303,14 @@ impl Logic for Drcc {
         self.dmr_check.mb_sel.next = self.dmr_regs.mb_sel.val();
         self.dmr_check.mb_enable.next = self.dmr_regs.mb_enable.val();
         self.dmr_check.mb_limits.next = self.dmr_regs.mb_limits.val();
-        self.dmr_check.mb_id_word.next = self.mailbox_cfg.id_word.val();
-        self.dmr_check.mb_mask.next = self.mailbox_cfg.mask.val();
+        self.dmr_check.mb_id_word.next = self.mb_id_word.val();
+        self.dmr_check.mb_mask.next = self.mb_mask.val();
         self.dmr_check.status_word.next = self.dmr_ctl.status_word.val();
         self.dmr_check.cs_count_word.next = self.dmr_ctl.cs_count_word.val();
         self.dmr_check.rx_stats_word.next = (bit_cast::<32, 8>(self.rxw.expired.val()) << 24)
             | (bit_cast::<32, 8>(self.rxw.released.val()) << 16)
             | bit_cast::<32, 16>(self.rxw.pcl_frames.val());
-        self.dmr_check.mb_state_word.next = self.dmr_eng.mb_state_word.val();
+        self.dmr_check.mb_state_word.next = self.mb_state_word.val();
         self.dmr_regs.clk.next = self.clk.val();
         self.dmr_regs.rst.next = self.rst.val();
         self.dmr_regs.wr.next = self.regs.wr_o.val();
@@ -238,19 +318,6 @@ impl Logic for Drcc {
         self.dmr_regs.wdat.next = self.wb_dat_i.val();
         self.dmr_regs.writable.next = self.dmr_check.writable.val();
         self.dmr_regs.refused.next = self.dmr_check.illegal.val();
-        self.mailbox_cfg.clk.next = self.clk.val();
-        // the memory's read port is the host's in reset mode, the engine's while
-        // DMR runs (DMR contract §2.1)
-        if self.dmr_hold.val() {
-            self.mailbox_cfg.read_address.next = self.dmr_regs.mb_sel.val();
-        } else {
-            self.mailbox_cfg.read_address.next = self.dmr_eng.cfg_addr.val();
-        }
-        self.mailbox_cfg.write_address.next = self.dmr_regs.mb_sel.val();
-        self.mailbox_cfg.we_id.next = self.dmr_regs.mb_we_id.val();
-        self.mailbox_cfg.we_mask.next = self.dmr_regs.mb_we_mask.val();
-        self.mailbox_cfg.wdat.next = self.wb_dat_i.val().get_bits::<31>(0);
-
         // ---- DMR function (DMR contract §3-§7): control and mailbox engine ----
         self.dmr_ctl.clk.next = self.clk.val();
         self.dmr_ctl.rst.next = self.rst.val();
@@ -283,33 +350,11 @@ impl Logic for Drcc {
         self.dmr_ctl.rd_ide.next = self.txbuf.rd_frame.val().get_bit(97);
         self.dmr_ctl.rd_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
         self.dmr_ctl.rd_sel.next = self.txbuf.rd_sel_o.val();
-        self.dmr_ctl.eval_fault.next = self.dmr_eng.fault.val();
-        self.dmr_ctl.eval_line.next = self.dmr_eng.fault_line.val();
-        self.dmr_ctl.eval_tx.next = self.dmr_eng.fault_tx.val();
-        self.dmr_ctl.eval_deviation.next = self.dmr_eng.fault_deviation.val();
-        self.dmr_ctl.eval_mb.next = self.dmr_eng.fault_mb.val();
-        self.dmr_eng.clk.next = self.clk.val();
-        self.dmr_eng.hold.next = self.dmr_hold.val();
-        self.dmr_eng.clear_state.next = self.dmr_ctl.clear_mailboxes.val();
-        self.dmr_eng.timeout.next = self.dmr_regs.timeout.val();
-        self.dmr_eng.tx_dcl.next = self.dmr_ctl.raise_tx_dcl.val();
-        self.dmr_eng.tx_rcl.next = self.dmr_ctl.raise_tx_rcl.val();
-        self.dmr_eng.rx_dcl.next = self.dmr_ctl.raise_rx_dcl.val();
-        self.dmr_eng.rx_rcl.next = self.dmr_ctl.raise_rx_rcl.val();
-        self.dmr_eng.req_dcl.next = self.dmr_ctl.raise_req_dcl.val();
-        self.dmr_eng.req_rcl.next = self.dmr_ctl.raise_req_rcl.val();
-        self.dmr_eng.key_tx_dcl.next = self.dmr_ctl.key_tx_dcl.val();
-        self.dmr_eng.key_tx_rcl.next = self.dmr_ctl.key_tx_rcl.val();
-        self.dmr_eng.key_rx_dcl.next = self.dmr_ctl.key_rx_dcl.val();
-        self.dmr_eng.key_rx_rcl.next = self.dmr_ctl.key_rx_rcl.val();
-        self.dmr_eng.key_req_dcl.next = self.dmr_ctl.key_req_dcl.val();
-        self.dmr_eng.key_req_rcl.next = self.dmr_ctl.key_req_rcl.val();
-        self.dmr_eng.eval.next = self.dmr_ctl.raise_eval.val();
-        self.dmr_eng.mb_enable.next = self.dmr_regs.mb_enable.val();
-        self.dmr_eng.mb_limits.next = self.dmr_regs.mb_limits.val();
-        self.dmr_eng.cfg_id_word.next = self.mailbox_cfg.id_word.val();
-        self.dmr_eng.cfg_mask.next = self.mailbox_cfg.mask.val();
-        self.dmr_eng.mb_sel.next = self.dmr_regs.mb_sel.val();
+        self.dmr_ctl.eval_fault.next = self.eval_fault.val();
+        self.dmr_ctl.eval_line.next = self.eval_line.val();
+        self.dmr_ctl.eval_tx.next = self.eval_tx.val();
+        self.dmr_ctl.eval_deviation.next = self.eval_deviation.val();
+        self.dmr_ctl.eval_mb.next = self.eval_mb.val();
 
         // ---- read-only registers ----
         self.status.adr.next = self.wb_adr_i.val();

@@ -27,7 +27,7 @@ pub mod shim_table;
 pub mod verilog;
 
 use crate::channel::can_channel::CanChannel;
-use crate::drcc::Drcc;
+use crate::drcc::{Drcc, DrccM0};
 use crate::hub::hub::Hub4x2;
 use rust_hdl::prelude::*;
 
@@ -157,15 +157,30 @@ pub static TOPS: &[Top] = &[
         name: "drcc",
         summary: "the dual-redundancy CAN controller: two channels, redundancy management, TX buffer, RX FIFO, Wishbone",
         contract: "cosim/src/model/drcc_contract.md",
-        params: &[],
-        block: "Drcc",
+        params: &[("M", "16")],
+        block: "DrccCore",
         source_path: "hdl/src/drcc.rs",
         source: include_str!("drcc.rs"),
-        notes: "Registers: docs/registers.md, C header rtl-out/drcc_regs.h. In TX_DATA0/1 and\n\
+        notes: "M DMR mailboxes (cosim/src/model/dmr_contract.md section 2). Registers:\n\
+                docs/registers.md, C header rtl-out/drcc_regs.h. In TX_DATA0/1 and\n\
                 RX_DATA0/1 byte 0 (the first on the bus) is in [7:0]; on can_channel's ports it\n\
                 is in [63:56] (see the table in can_channel.v).",
         raw_verilog: raw_verilog_of::<Drcc>,
         ports: ports_of::<Drcc>,
+    },
+    Top {
+        name: "drcc_m0",
+        summary: "the DRCC without DMR mailboxes (M = 0): DMR faults found by bus-off and the connection service only",
+        contract: "cosim/src/model/drcc_contract.md",
+        params: &[("M", "0")],
+        block: "DrccCore",
+        source_path: "hdl/src/drcc.rs",
+        source: include_str!("drcc.rs"),
+        notes: "The drcc with M = 0 DMR mailboxes (cosim/src/model/dmr_contract.md section 2):\n\
+                the same ports and registers; MB_SEL and the mailbox window refuse every\n\
+                write and read 0. Registers: docs/registers.md, rtl-out/drcc_regs.h.",
+        raw_verilog: raw_verilog_of::<DrccM0>,
+        ports: ports_of::<DrccM0>,
     },
     Top {
         name: "hub",

@@ -25,50 +25,78 @@ impl<const N: usize, const V: u64> Const<N, V> {
     }
 }
 
-impl<const N: usize, const V: u64> Logic for Const<N, V> {
-    fn update(&mut self) {}
+/// The atom and block traits of a sized constant newtype (`Const`, `LastIndex`).
+macro_rules! sized_constant_atom {
+    ($ty:ident, $p:ident, $pt:ty) => {
+        impl<const N: usize, const $p: $pt> Logic for $ty<N, $p> {
+            fn update(&mut self) {}
+        }
+
+        impl<const N: usize, const $p: $pt> Atom for $ty<N, $p> {
+            fn bits(&self) -> usize {
+                self.0.bits()
+            }
+            fn connected(&self) -> bool {
+                true
+            }
+            fn changed(&self) -> bool {
+                false
+            }
+            fn kind(&self) -> AtomKind {
+                AtomKind::Constant
+            }
+            fn descriptor(&self) -> TypeDescriptor {
+                self.0.descriptor()
+            }
+            fn vcd(&self) -> VCDValue {
+                self.0.vcd()
+            }
+            fn verilog(&self) -> VerilogLiteral {
+                self.0.verilog()
+            }
+            fn id(&self) -> usize {
+                self.0.id()
+            }
+            fn constraints(&self) -> Vec<PinConstraint> {
+                vec![]
+            }
+        }
+
+        impl<const N: usize, const $p: $pt> Block for $ty<N, $p> {
+            fn connect_all(&mut self) {}
+            fn update_all(&mut self) {}
+            fn has_changed(&self) -> bool {
+                false
+            }
+            fn accept(&self, name: &str, probe: &mut dyn Probe) {
+                probe.visit_atom(name, self);
+            }
+        }
+    };
 }
 
-impl<const N: usize, const V: u64> Atom for Const<N, V> {
-    fn bits(&self) -> usize {
-        self.0.bits()
-    }
-    fn connected(&self) -> bool {
-        true
-    }
-    fn changed(&self) -> bool {
-        false
-    }
-    fn kind(&self) -> AtomKind {
-        AtomKind::Constant
-    }
-    fn descriptor(&self) -> TypeDescriptor {
-        self.0.descriptor()
-    }
-    fn vcd(&self) -> VCDValue {
-        self.0.vcd()
-    }
-    fn verilog(&self) -> VerilogLiteral {
-        self.0.verilog()
-    }
-    fn id(&self) -> usize {
-        self.0.id()
-    }
-    fn constraints(&self) -> Vec<PinConstraint> {
-        vec![]
+sized_constant_atom!(Const, V, u64);
+
+/// An N-bit constant of value `M - 1` (0 for `M = 0`): the last index of a block
+/// generated with `M` of something (mailboxes), which `Const` cannot spell while
+/// `M` is a generic parameter (no arithmetic on const generics in stable Rust).
+#[derive(Copy, Clone, Debug)]
+pub struct LastIndex<const N: usize, const M: usize>(Constant<Bits<N>>);
+
+impl<const N: usize, const M: usize> Default for LastIndex<N, M> {
+    fn default() -> Self {
+        Self(Constant::new(Bits::<N>::from(M.saturating_sub(1) as u64)))
     }
 }
 
-impl<const N: usize, const V: u64> Block for Const<N, V> {
-    fn connect_all(&mut self) {}
-    fn update_all(&mut self) {}
-    fn has_changed(&self) -> bool {
-        false
-    }
-    fn accept(&self, name: &str, probe: &mut dyn Probe) {
-        probe.visit_atom(name, self);
+impl<const N: usize, const M: usize> LastIndex<N, M> {
+    /// The value, usable in HDL kernels (`self.last.val()`).
+    pub fn val(&self) -> Bits<N> {
+        self.0.val()
     }
 }
+
+sized_constant_atom!(LastIndex, M, usize);
 
 #[cfg(test)]
 mod tests {

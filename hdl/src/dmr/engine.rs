@@ -23,10 +23,10 @@
 //! is read (a flag with its key, a job's fields when the job is taken).
 
 use super::mailbox_state::MailboxState;
-use crate::channel::sized::Const;
+use crate::channel::sized::{Const, LastIndex};
 use rust_hdl::prelude::*;
 
-/// Mailboxes `M` (generation parameter, contract §2).
+/// Mailboxes `M` of the default DRCC (generation parameter, contract §2).
 pub const MAILBOXES: usize = 16;
 
 /// Engine states (§4.3), the `e_state` probe.
@@ -40,9 +40,9 @@ const K_TX: u64 = 0;
 const K_RX: u64 = 1;
 const K_REQ: u64 = 2;
 
-/// The DMR engine with the mailbox state.
+/// The DMR engine with the state of `M` mailboxes (1..16).
 #[derive(LogicBlock, Default)]
-pub struct DmrEngine {
+pub struct DmrEngine<const M: usize> {
     /// System clock.
     pub clk: Signal<In, Clock>,
     // ---- control ----
@@ -134,7 +134,7 @@ pub struct DmrEngine {
     e_found: DFF<Bit>,
     e_hit: DFF<Bits<4>>,
     // ---- mailbox state ----
-    mbx: MailboxState,
+    mbx: MailboxState<M>,
     // ---- internals ----
     mb: Signal<Local, Bits<4>>,
     mb_c: Signal<Local, Bits<7>>,
@@ -159,7 +159,7 @@ pub struct DmrEngine {
     k_tx: Const<2, K_TX>,
     k_rx: Const<2, K_RX>,
     k_req: Const<2, K_REQ>,
-    last: Const<4, { MAILBOXES as u64 - 1 }>,
+    last: LastIndex<4, M>,
     one4: Const<4, 1>,
     zero4: Const<4, 0>,
     zero8: Const<8, 0>,
@@ -171,7 +171,7 @@ pub struct DmrEngine {
     zero29: Const<29, 0>,
 }
 
-impl Logic for DmrEngine {
+impl<const M: usize> Logic for DmrEngine<M> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -440,7 +440,7 @@ impl Logic for DmrEngine {
 
 #[test]
 fn dmr_engine_synthesizes() {
-    let mut uut = DmrEngine::default();
+    let mut uut = DmrEngine::<MAILBOXES>::default();
     uut.connect_all();
     yosys_validate("dmr_engine", &generate_verilog(&uut)).unwrap();
 }

@@ -1,12 +1,13 @@
 //! The DMR mailboxes' state (DMR contract §4.1, §4.2, `MB_STATE` of §2.1): the
-//! `counter` (8-bit two's complement) and `timer` (16 bits) of every mailbox,
+//! `counter` (8-bit two's complement) and `timer` (16 bits) of each of the `M`
+//! mailboxes (generation parameter, 1..16),
 //! in registers, read by the host window live, and a copy in block RAM, read by
 //! the engine. The engine writes one mailbox per clock (`sel`).
 //!
 //! One register per mailbox, written by its own enable (a one-hot decode of
 //! `sel`) with the shared value: on the iCE40 each bit is a flip-flop with clock
 //! enable and synchronous reset and no LUT (a packed register written as
-//! `q & !slot | value & slot` costs one LUT per bit, 384 here). `clear` zeroes
+//! `q & !slot | value & slot` costs one LUT per bit, 384 for 16). `clear` zeroes
 //! every mailbox at once (reset mode, another DRCC mode, a recovery: §2.1, §7)
 //! and wins over a write.
 //!
@@ -30,9 +31,9 @@ use crate::channel::sized::Const;
 use crate::memory::bram::Bram;
 use rust_hdl::prelude::*;
 
-/// Counter and timer of 16 mailboxes.
-#[derive(LogicBlock, Default)]
-pub struct MailboxState {
+/// Counter and timer of `M` mailboxes (1..16).
+#[derive(LogicBlock)]
+pub struct MailboxState<const M: usize> {
     /// System clock.
     pub clk: Signal<In, Clock>,
     /// Every counter and timer becomes 0 at this edge (over a write).
@@ -54,27 +55,12 @@ pub struct MailboxState {
     /// `timer` of the mailbox `rd_addr` named at the previous edge.
     pub rd_timer: Signal<Out, Bits<16>>,
     // ---- the state ----
-    /// Every counter (two's complement): mailbox i in `[8i+7:8i]`.
+    /// Every counter (two's complement): mailbox i in `[8i+7:8i]` (0 beyond `M`).
     pub counters: Signal<Out, Bits<128>>,
     /// Every timer (DMR ticks left, 0 = stopped): mailbox i in `[16i+15:16i]`.
     pub timers: Signal<Out, Bits<256>>,
     // ---- registers: mailbox i = {timer [23:8], counter [7:0]} ----
-    mb0: DFF<Bits<24>>,
-    mb1: DFF<Bits<24>>,
-    mb2: DFF<Bits<24>>,
-    mb3: DFF<Bits<24>>,
-    mb4: DFF<Bits<24>>,
-    mb5: DFF<Bits<24>>,
-    mb6: DFF<Bits<24>>,
-    mb7: DFF<Bits<24>>,
-    mb8: DFF<Bits<24>>,
-    mb9: DFF<Bits<24>>,
-    mb10: DFF<Bits<24>>,
-    mb11: DFF<Bits<24>>,
-    mb12: DFF<Bits<24>>,
-    mb13: DFF<Bits<24>>,
-    mb14: DFF<Bits<24>>,
-    mb15: DFF<Bits<24>>,
+    mb: [DFF<Bits<24>>; M],
     copy: Bram<Bits<24>, 4>,
     valid: DFF<Bits<16>>,
     rd_q: DFF<Bits<4>>,
@@ -82,18 +68,56 @@ pub struct MailboxState {
     rd_word: Signal<Local, Bits<24>>,
     slot: Signal<Local, Bits<16>>,
     word: Signal<Local, Bits<24>>,
+    mb_counter: Signal<Local, Bits<8>>,
+    mb_timer: Signal<Local, Bits<16>>,
     one16: Const<16, 1>,
     zero24: Const<24, 0>,
     zero16: Const<16, 0>,
+    zero128: Const<128, 0>,
+    zero256: Const<256, 0>,
+    at_c: [Constant<Bits<8>>; M],
+    at_t: [Constant<Bits<9>>; M],
 }
 
-impl Logic for MailboxState {
+impl<const M: usize> Default for MailboxState<M> {
+    fn default() -> Self {
+        assert!((1..=16).contains(&M), "mailbox state: M is 1..16");
+        Self {
+            clk: Default::default(),
+            clear: Default::default(),
+            sel: Default::default(),
+            we: Default::default(),
+            counter_d: Default::default(),
+            timer_d: Default::default(),
+            rd_addr: Default::default(),
+            rd_counter: Default::default(),
+            rd_timer: Default::default(),
+            counters: Default::default(),
+            timers: Default::default(),
+            mb: std::array::from_fn(|_| Default::default()),
+            copy: Default::default(),
+            valid: Default::default(),
+            rd_q: Default::default(),
+            rd_word: Default::default(),
+            slot: Default::default(),
+            word: Default::default(),
+            mb_counter: Default::default(),
+            mb_timer: Default::default(),
+            one16: Default::default(),
+            zero24: Default::default(),
+            zero16: Default::default(),
+            zero128: Default::default(),
+            zero256: Default::default(),
+            at_c: std::array::from_fn(|i| Constant::new(((8 * i) as u64).into())),
+            at_t: std::array::from_fn(|i| Constant::new(((16 * i) as u64).into())),
+        }
+    }
+}
+
+impl<const M: usize> Logic for MailboxState<M> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clk, valid, rd_q, mb0, mb1, mb2, mb3, mb4, mb5, mb6, mb7, mb8, mb9, mb10, mb11,
-            mb12, mb13, mb14, mb15
-        );
+        dff_setup!(self, clk, valid, rd_q);
         // the write: one enable per mailbox, the same word to all
         self.slot.next = self.one16.val() << self.sel.val();
         self.word.next =
@@ -116,112 +140,34 @@ impl Logic for MailboxState {
         if self.we.val() {
             self.valid.d.next = self.valid.q.val() | self.slot.val();
         }
-        if self.we.val() & self.slot.val().get_bit(0) {
-            self.mb0.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(1) {
-            self.mb1.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(2) {
-            self.mb2.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(3) {
-            self.mb3.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(4) {
-            self.mb4.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(5) {
-            self.mb5.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(6) {
-            self.mb6.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(7) {
-            self.mb7.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(8) {
-            self.mb8.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(9) {
-            self.mb9.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(10) {
-            self.mb10.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(11) {
-            self.mb11.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(12) {
-            self.mb12.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(13) {
-            self.mb13.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(14) {
-            self.mb14.d.next = self.word.val();
-        }
-        if self.we.val() & self.slot.val().get_bit(15) {
-            self.mb15.d.next = self.word.val();
-        }
         if self.clear.val() {
             self.valid.d.next = self.zero16.val();
-            self.mb0.d.next = self.zero24.val();
-            self.mb1.d.next = self.zero24.val();
-            self.mb2.d.next = self.zero24.val();
-            self.mb3.d.next = self.zero24.val();
-            self.mb4.d.next = self.zero24.val();
-            self.mb5.d.next = self.zero24.val();
-            self.mb6.d.next = self.zero24.val();
-            self.mb7.d.next = self.zero24.val();
-            self.mb8.d.next = self.zero24.val();
-            self.mb9.d.next = self.zero24.val();
-            self.mb10.d.next = self.zero24.val();
-            self.mb11.d.next = self.zero24.val();
-            self.mb12.d.next = self.zero24.val();
-            self.mb13.d.next = self.zero24.val();
-            self.mb14.d.next = self.zero24.val();
-            self.mb15.d.next = self.zero24.val();
         }
-        // the packed outputs (wiring)
-        self.counters.next = (bit_cast::<128, 8>(self.mb0.q.val().get_bits::<8>(0)) << 0)
-            | (bit_cast::<128, 8>(self.mb1.q.val().get_bits::<8>(0)) << 8)
-            | (bit_cast::<128, 8>(self.mb2.q.val().get_bits::<8>(0)) << 16)
-            | (bit_cast::<128, 8>(self.mb3.q.val().get_bits::<8>(0)) << 24)
-            | (bit_cast::<128, 8>(self.mb4.q.val().get_bits::<8>(0)) << 32)
-            | (bit_cast::<128, 8>(self.mb5.q.val().get_bits::<8>(0)) << 40)
-            | (bit_cast::<128, 8>(self.mb6.q.val().get_bits::<8>(0)) << 48)
-            | (bit_cast::<128, 8>(self.mb7.q.val().get_bits::<8>(0)) << 56)
-            | (bit_cast::<128, 8>(self.mb8.q.val().get_bits::<8>(0)) << 64)
-            | (bit_cast::<128, 8>(self.mb9.q.val().get_bits::<8>(0)) << 72)
-            | (bit_cast::<128, 8>(self.mb10.q.val().get_bits::<8>(0)) << 80)
-            | (bit_cast::<128, 8>(self.mb11.q.val().get_bits::<8>(0)) << 88)
-            | (bit_cast::<128, 8>(self.mb12.q.val().get_bits::<8>(0)) << 96)
-            | (bit_cast::<128, 8>(self.mb13.q.val().get_bits::<8>(0)) << 104)
-            | (bit_cast::<128, 8>(self.mb14.q.val().get_bits::<8>(0)) << 112)
-            | (bit_cast::<128, 8>(self.mb15.q.val().get_bits::<8>(0)) << 120);
-        self.timers.next = (bit_cast::<256, 16>(self.mb0.q.val().get_bits::<16>(8)) << 0)
-            | (bit_cast::<256, 16>(self.mb1.q.val().get_bits::<16>(8)) << 16)
-            | (bit_cast::<256, 16>(self.mb2.q.val().get_bits::<16>(8)) << 32)
-            | (bit_cast::<256, 16>(self.mb3.q.val().get_bits::<16>(8)) << 48)
-            | (bit_cast::<256, 16>(self.mb4.q.val().get_bits::<16>(8)) << 64)
-            | (bit_cast::<256, 16>(self.mb5.q.val().get_bits::<16>(8)) << 80)
-            | (bit_cast::<256, 16>(self.mb6.q.val().get_bits::<16>(8)) << 96)
-            | (bit_cast::<256, 16>(self.mb7.q.val().get_bits::<16>(8)) << 112)
-            | (bit_cast::<256, 16>(self.mb8.q.val().get_bits::<16>(8)) << 128)
-            | (bit_cast::<256, 16>(self.mb9.q.val().get_bits::<16>(8)) << 144)
-            | (bit_cast::<256, 16>(self.mb10.q.val().get_bits::<16>(8)) << 160)
-            | (bit_cast::<256, 16>(self.mb11.q.val().get_bits::<16>(8)) << 176)
-            | (bit_cast::<256, 16>(self.mb12.q.val().get_bits::<16>(8)) << 192)
-            | (bit_cast::<256, 16>(self.mb13.q.val().get_bits::<16>(8)) << 208)
-            | (bit_cast::<256, 16>(self.mb14.q.val().get_bits::<16>(8)) << 224)
-            | (bit_cast::<256, 16>(self.mb15.q.val().get_bits::<16>(8)) << 240);
+        // the registers, and the packed outputs (wiring)
+        self.counters.next = self.zero128.val();
+        self.timers.next = self.zero256.val();
+        for i in 0..M {
+            self.mb[i].clock.next = self.clk.val();
+            self.mb[i].d.next = self.mb[i].q.val();
+            if self.we.val() & self.slot.val().get_bit(i) {
+                self.mb[i].d.next = self.word.val();
+            }
+            if self.clear.val() {
+                self.mb[i].d.next = self.zero24.val();
+            }
+            self.mb_counter.next = self.mb[i].q.val().get_bits::<8>(0);
+            self.mb_timer.next = self.mb[i].q.val().get_bits::<16>(8);
+            self.counters.next = self.counters.val()
+                | (bit_cast::<128, 8>(self.mb_counter.val()) << self.at_c[i].val());
+            self.timers.next =
+                self.timers.val() | (bit_cast::<256, 16>(self.mb_timer.val()) << self.at_t[i].val());
+        }
     }
 }
 
 #[test]
 fn mailbox_state_synthesizes() {
-    let mut uut = MailboxState::default();
+    let mut uut = MailboxState::<16>::default();
     uut.connect_all();
     yosys_validate("mailbox_state", &generate_verilog(&uut)).unwrap();
 }

@@ -4,6 +4,7 @@
 pub mod control;
 pub mod cs_rx;
 pub mod engine;
+pub mod if_mailboxes;
 pub mod line;
 pub mod mailbox_cfg;
 pub mod mailbox_state;

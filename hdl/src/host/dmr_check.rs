@@ -6,16 +6,17 @@
 //! timeout, tick or recovery delay; an enabled mailbox with limit 0; equal
 //! connection-service identifiers, or new ones while a mailbox is enabled; a
 //! mailbox identifier equal to a connection-service identifier; `MB_SEL` beyond
-//! the generated mailboxes; any cfg register outside reset mode. `MB_ID`,
-//! `MB_MASK` and `MB_CFG` read 0 outside reset mode (§2.1).
+//! the generated mailboxes; any cfg register outside reset mode; with `M = 0`
+//! every window write. `MB_ID`, `MB_MASK` and `MB_CFG` read 0 outside reset mode
+//! (§2.1), and the window reads 0 with `M = 0`.
 
 use super::map::placed;
 use super::registers::{self as map, MAP};
 use rust_hdl::prelude::*;
 
-/// Decode, reads and refusals of the DMR registers.
+/// Decode, reads and refusals of the DMR registers of a DRCC with `M` mailboxes.
 #[derive(LogicBlock)]
-pub struct DmrCheck {
+pub struct DmrCheck<const M: usize> {
     // ---- the access ----
     /// Word index on the bus.
     pub adr: Signal<In, Bits<6>>,
@@ -78,15 +79,17 @@ pub struct DmrCheck {
     a_mbcfg: Constant<Bits<6>>,
     a_state: Constant<Bits<6>>,
     mailboxes: Constant<Bits<5>>,
+    no_mailboxes: Constant<Bit>,
     enable_bit: Constant<Bits<32>>,
     zero7: Constant<Bits<7>>,
     zero16: Constant<Bits<16>>,
     zero32: Constant<Bits<32>>,
 }
 
-impl DmrCheck {
-    /// The checks of a DRCC generated with `mailboxes` DMR mailboxes (0..16).
-    pub fn new(mailboxes: u32) -> Self {
+impl<const M: usize> DmrCheck<M> {
+    /// The checks of a DRCC generated with `M` DMR mailboxes (0..16).
+    pub fn new() -> Self {
+        let mailboxes = M as u32;
         assert!(
             mailboxes <= 16,
             "at most 16 DMR mailboxes (MB_SEL is 4 bits)"
@@ -147,6 +150,7 @@ impl DmrCheck {
             a_mbcfg: adr(map::MB_CFG),
             a_state: adr(map::MB_STATE),
             mailboxes: Constant::new((mailboxes as u64).into()),
+            no_mailboxes: Constant::new(mailboxes == 0),
             enable_bit: Constant::new((1u64 << 31).into()),
             zero7: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
@@ -155,13 +159,13 @@ impl DmrCheck {
     }
 }
 
-impl Default for DmrCheck {
+impl<const M: usize> Default for DmrCheck<M> {
     fn default() -> Self {
-        Self::new(super::dmr_registers::MAILBOXES)
+        Self::new()
     }
 }
 
-impl Logic for DmrCheck {
+impl<const M: usize> Logic for DmrCheck<M> {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- the selected mailbox ----
@@ -197,15 +201,15 @@ impl Logic for DmrCheck {
         } else if self.adr.val() == self.a_sel.val() {
             self.word.next = bit_cast::<32, 4>(self.mb_sel.val());
         } else if self.adr.val() == self.a_id.val() {
-            if self.reset_mode.val() {
+            if self.reset_mode.val() & !self.no_mailboxes.val() {
                 self.word.next = bit_cast::<32, 31>(self.mb_id_word.val());
             }
         } else if self.adr.val() == self.a_mask.val() {
-            if self.reset_mode.val() {
+            if self.reset_mode.val() & !self.no_mailboxes.val() {
                 self.word.next = bit_cast::<32, 29>(self.mb_mask.val());
             }
         } else if self.adr.val() == self.a_mbcfg.val() {
-            if self.reset_mode.val() {
+            if self.reset_mode.val() & !self.no_mailboxes.val() {
                 self.word.next =
                     bit_cast::<32, 7>(self.sel_limit.val()) | self.sel_enable_word.val();
             }
@@ -220,7 +224,9 @@ impl Logic for DmrCheck {
             self.word.next = self.rx_stats_word.val();
         } else if self.adr.val() == self.a_state.val() {
             self.writable.next = false;
-            self.word.next = self.mb_state_word.val();
+            if !self.no_mailboxes.val() {
+                self.word.next = self.mb_state_word.val();
+            }
         } else {
             self.hit.next = false;
             self.writable.next = false;
@@ -233,6 +239,13 @@ impl Logic for DmrCheck {
             self.illegal.next =
                 bit_cast::<5, 4>(self.wdat.val().get_bits::<4>(0)) >= self.mailboxes.val();
         } else if self.writable.val() & !self.reset_mode.val() {
+            self.illegal.next = true;
+        } else if self.no_mailboxes.val()
+            & ((self.adr.val() == self.a_id.val())
+                | (self.adr.val() == self.a_mask.val())
+                | (self.adr.val() == self.a_mbcfg.val()))
+        {
+            // M = 0: there is no mailbox for the window to address (§2)
             self.illegal.next = true;
         } else if self.adr.val() == self.a_cfg.val() {
             self.illegal.next = self.wdat.val().get_bits::<16>(0) == self.zero16.val();
@@ -255,7 +268,7 @@ impl Logic for DmrCheck {
 
 #[test]
 fn dmr_check_synthesizes() {
-    let mut uut = DmrCheck::default();
+    let mut uut = DmrCheck::<16>::default();
     uut.connect_all();
     yosys_validate("dmr_check", &generate_verilog(&uut)).unwrap();
 }

@@ -2,7 +2,9 @@
 //! `DMR_CS`, `MB_SEL` and the per-mailbox `MB_CFG` fields (`limit`, `enable`);
 //! `MB_ID` and `MB_MASK` go to the mailbox memory (`crate::dmr::mailbox_cfg`) as
 //! write strobes. A taken write is stored unless `super::dmr_check` refuses it;
-//! reset values come from the table.
+//! reset values come from the table. Generated for `M` mailboxes (0..16): the
+//! `limit` and `enable` of a mailbox beyond `M` read 0 on the outputs, so
+//! synthesis drops their registers (`MB_SEL` never selects one, `dmr_check`).
 
 use super::registers::{self as map, MAP};
 use rust_hdl::prelude::*;
@@ -10,9 +12,9 @@ use rust_hdl::prelude::*;
 /// `limit` slot width in `mb_limits` (7 bits used).
 const SLOT: usize = 8;
 
-/// The DMR registers' storage.
+/// The DMR registers' storage, for `M` mailboxes.
 #[derive(LogicBlock)]
-pub struct DmrRegs {
+pub struct DmrRegs<const M: usize> {
     // ---- clock and reset ----
     /// System clock.
     pub clk: Signal<In, Clock>,
@@ -48,9 +50,9 @@ pub struct DmrRegs {
     pub cs_id_rcl: Signal<Out, Bits<11>>,
     /// `MB_SEL`: the mailbox of the window registers.
     pub mb_sel: Signal<Out, Bits<4>>,
-    /// `MB_CFG.enable` of every mailbox, bit i = mailbox i.
+    /// `MB_CFG.enable` of every mailbox, bit i = mailbox i (0 beyond `M`).
     pub mb_enable: Signal<Out, Bits<16>>,
-    /// `MB_CFG.limit` of every mailbox, mailbox i in `[8i+6:8i]`.
+    /// `MB_CFG.limit` of every mailbox, mailbox i in `[8i+6:8i]` (0 beyond `M`).
     pub mb_limits: Signal<Out, Bits<128>>,
     // ---- mailbox memory writes (address `mb_sel`, data `wdat`) ----
     /// Write `MB_ID` at this edge.
@@ -84,12 +86,14 @@ pub struct DmrRegs {
     cs_rcl_reset: Constant<Bits<11>>,
     limits_reset: Constant<Bits<128>>,
     slot_mask: Constant<Bits<128>>,
+    present: Constant<Bits<16>>,
+    present_limits: Constant<Bits<128>>,
     zero4: Constant<Bits<4>>,
     zero16: Constant<Bits<16>>,
     one16: Constant<Bits<16>>,
 }
 
-impl Default for DmrRegs {
+impl<const M: usize> Default for DmrRegs<M> {
     fn default() -> Self {
         let adr = |i: u32| Constant::new((i as u64).into());
         let reset =
@@ -101,10 +105,15 @@ impl Default for DmrRegs {
         for b in 0..SLOT {
             slot = slot.replace_bit(b, true);
         }
+        assert!(M <= 16, "DMR registers: M is 0..16 (MB_SEL is 4 bits)");
+        let mut present = Bits::<16>::default();
+        let mut present_limits = Bits::<128>::default();
         for i in 0..16 {
             for b in 0..7 {
                 limits = limits.replace_bit(i * SLOT + b, limit & (1 << b) != 0);
+                present_limits = present_limits.replace_bit(i * SLOT + b, i < M);
             }
+            present = present.replace_bit(i, i < M);
         }
         Self {
             clk: Default::default(),
@@ -152,6 +161,8 @@ impl Default for DmrRegs {
             cs_rcl_reset: Constant::new(field("DMR_CS", "cs_id_rcl").into()),
             limits_reset: Constant::new(limits),
             slot_mask: Constant::new(slot),
+            present: Constant::new(present),
+            present_limits: Constant::new(present_limits),
             zero4: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             one16: Constant::new(1.into()),
@@ -159,7 +170,7 @@ impl Default for DmrRegs {
     }
 }
 
-impl Logic for DmrRegs {
+impl<const M: usize> Logic for DmrRegs<M> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, cfg_q, time_q, cs_dcl_q, cs_rcl_q, sel_q, enable_q, limits_q);
@@ -227,14 +238,14 @@ impl Logic for DmrRegs {
         self.cs_id_dcl.next = self.cs_dcl_q.q.val();
         self.cs_id_rcl.next = self.cs_rcl_q.q.val();
         self.mb_sel.next = self.sel_q.q.val();
-        self.mb_enable.next = self.enable_q.q.val();
-        self.mb_limits.next = self.limits_q.q.val();
+        self.mb_enable.next = self.enable_q.q.val() & self.present.val();
+        self.mb_limits.next = self.limits_q.q.val() & self.present_limits.val();
     }
 }
 
 #[test]
 fn dmr_regs_synthesizes() {
-    let mut uut = DmrRegs::default();
+    let mut uut = DmrRegs::<16>::default();
     uut.connect_all();
     yosys_validate("dmr_regs", &generate_verilog(&uut)).unwrap();
 }

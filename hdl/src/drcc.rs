@@ -17,6 +17,7 @@
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;
+use crate::channel::sized::Const;
 use crate::dmr::control::DmrControl;
 use crate::dmr::engine::{DmrEngine, MAILBOXES};
 use crate::dmr::if_mailboxes::IfMailboxes;
@@ -32,7 +33,6 @@ use crate::rmb::aux_fsm::AuxFsm;
 use crate::rmb::bit_tick::BitTick;
 use crate::rmb::main_fsm::MainFsm;
 use crate::rmb::stats::RedundancyStats;
-use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
 /// The DRCC with the default 16 DMR mailboxes (`rtl-out/drcc.v`).

@@ -12,8 +12,8 @@
 
 use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
-use drcc_cosim::engine::drcc_rusthdl::DrccRustHdlEngine;
-use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_cosim::engine::drcc_rusthdl::{DrccM0RustHdlEngine, DrccRustHdlEngine};
+use drcc_cosim::engine::drcc_verilator::{DrccM0VerilatorEngine, DrccVerilatorEngine};
 use drcc_hdl::host::registers::{self as map, ChannelMode, Mode, SwitchPolicy, MAP};
 use drcc_testbench::engines::verilator_required;
 
@@ -27,6 +27,7 @@ struct Bench {
 }
 
 impl Bench {
+    /// The `drcc` top (16 DMR mailboxes) on three engines.
     fn new() -> Self {
         let mut engines: Vec<Box<dyn DrccEngine>> = vec![
             Box::new(DrccModelEngine::new()),
@@ -36,6 +37,24 @@ impl Bench {
             Ok(v) => engines.push(Box::new(v)),
             Err(e) => assert!(!verilator_required(), "Verilator is required here: {e}"),
         }
+        Self::start(engines)
+    }
+
+    /// The `drcc_m0` top (no DMR mailboxes) on three engines; the model is built
+    /// with `M = 0`.
+    fn without_mailboxes() -> Self {
+        let mut engines: Vec<Box<dyn DrccEngine>> = vec![
+            Box::new(DrccModelEngine::with_mailboxes(0)),
+            Box::new(DrccM0RustHdlEngine::new()),
+        ];
+        match DrccM0VerilatorEngine::new() {
+            Ok(v) => engines.push(Box::new(v)),
+            Err(e) => assert!(!verilator_required(), "Verilator is required here: {e}"),
+        }
+        Self::start(engines)
+    }
+
+    fn start(engines: Vec<Box<dyn DrccEngine>>) -> Self {
         let mut b = Bench {
             engines,
             cycle: 0,
@@ -242,16 +261,66 @@ fn dmr_status(w: u32) -> (u32, u32, u32, u32, u32) {
 #[test]
 fn dmr_function_alone_on_its_wires_on_three_engines() {
     let mut b = Bench::new();
-    b.self_loop = true;
-    // 1 DMR tick = 16 bit times = 128 clocks (8 clocks per bit at the reset BTR);
-    // CS timeout 8 ticks, recovery delay 4 ticks
-    b.write(map::DMR_TIME, 16 | (4 << 16));
-    b.write(map::DMR_CFG, 8);
     // mailbox 0: transmit, identifier 0x100
     b.write(map::MB_SEL, 0);
     b.write(map::MB_ID, 0x100 | put("MB_ID", "dir", 1));
     b.write(map::MB_MASK, 0x7FF);
     b.write(map::MB_CFG, put("MB_CFG", "enable", 1) | 2);
+    alone_on_its_wires(b);
+}
+
+/// `drcc_m0` (§2, `M = 0`): `MB_SEL` and every window write are refused, the window
+/// reads 0, the rest of the DMR configuration is taken; on model, rust-hdl and
+/// Verilator in lock step.
+#[test]
+fn dmr_without_mailboxes_refuses_the_window_on_three_engines() {
+    let mut b = Bench::without_mailboxes();
+    let enable = put("MB_CFG", "enable", 1);
+    assert!(b.refused(map::MB_SEL, 0), "MB_SEL 0 >= M = 0");
+    assert!(b.refused(map::MB_SEL, 3));
+    assert!(b.refused(map::MB_ID, 0x100 | put("MB_ID", "dir", 1)));
+    assert!(b.refused(map::MB_MASK, 0x7FF));
+    assert!(b.refused(map::MB_CFG, enable | 2));
+    assert!(b.refused(map::MB_CFG, 2), "a disabled mailbox too");
+    for reg in [
+        map::MB_SEL,
+        map::MB_ID,
+        map::MB_MASK,
+        map::MB_CFG,
+        map::MB_STATE,
+    ] {
+        assert_eq!(b.read(reg), 0, "window register {reg} reads 0 with M = 0");
+    }
+    // the rest of §2.2 holds as with mailboxes
+    assert!(b.refused(map::DMR_CFG, 7 << 16), "timeout 0");
+    assert!(
+        b.refused(map::DMR_CS, 0x100 | (0x100 << 16)),
+        "equal CS ids"
+    );
+    assert!(!b.refused(map::DMR_CS, 0x120 | (0x121 << 16)));
+    assert_eq!(b.read(map::DMR_CS), 0x120 | (0x121 << 16));
+    // outside reset mode the window stays refused
+    assert!(!b.refused(map::CTRL, ctrl(false, &[])));
+    assert!(b.refused(map::MB_SEL, 0));
+    assert_eq!(b.read(map::MB_STATE), 0);
+}
+
+/// `drcc_m0` in DMR mode alone on its wires: no mailbox can judge a line, and the
+/// connection service still finds both (§7), as with mailboxes.
+#[test]
+fn dmr_without_mailboxes_alone_on_its_wires_on_three_engines() {
+    alone_on_its_wires(Bench::without_mailboxes());
+}
+
+/// DMR mode with each channel alone on its own wire, two host messages queued:
+/// both CS attempts fail at the CS timeout (nobody acknowledges), the device is
+/// "network disconnected", and the recovery restarts the DCL channel.
+fn alone_on_its_wires(mut b: Bench) {
+    b.self_loop = true;
+    // 1 DMR tick = 16 bit times = 128 clocks (8 clocks per bit at the reset BTR);
+    // CS timeout 8 ticks, recovery delay 4 ticks
+    b.write(map::DMR_TIME, 16 | (4 << 16));
+    b.write(map::DMR_CFG, 8);
     b.write(map::INT_ENABLE, put("INT_STATUS", "dmr", 1));
     b.write(map::CTRL, ctrl(true, &[("dmr", 1)]));
     b.write(map::CTRL, ctrl(false, &[("dmr", 1)]));

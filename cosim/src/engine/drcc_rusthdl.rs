@@ -1,4 +1,5 @@
-//! The `rust-hdl` engine of the DRCC top: the `drcc_hdl::drcc::Drcc` block in
+//! The `rust-hdl` engine of the DRCC tops: the `drcc_hdl::drcc::DrccCore<M>` block
+//! (`M` DMR mailboxes: `drcc` 16, `drcc_m0` 0) in
 //! rust-hdl's own simulator. It runs the Rust description `rtl-out/drcc.v` is
 //! emitted from, so comparing it with the model and the Verilated RTL checks that
 //! the Verilog means what the Rust means. Slow (every clock settles the whole
@@ -9,36 +10,42 @@
 
 use super::drcc::{DrccEngine, DrccInputs, DrccOutputs, DrccProbes};
 use super::rusthdl::{field_code, settle};
-use drcc_hdl::drcc::Drcc;
+use drcc_hdl::drcc::DrccCore;
 use rust_hdl::prelude::*;
 
 /// Settling budget per half clock.
 const MAX_SETTLE_ITERS: usize = 400;
 
-/// The DRCC block in rust-hdl's simulator.
-pub struct DrccRustHdlEngine {
-    uut: Box<Drcc>,
+/// The DRCC block with `M` DMR mailboxes in rust-hdl's simulator.
+pub struct DrccCoreRustHdlEngine<const M: usize> {
+    uut: Box<DrccCore<M>>,
 }
 
-impl std::fmt::Debug for DrccRustHdlEngine {
+/// The `drcc` top (16 DMR mailboxes) in rust-hdl's simulator.
+pub type DrccRustHdlEngine = DrccCoreRustHdlEngine<16>;
+
+/// The `drcc_m0` top (no DMR mailboxes) in rust-hdl's simulator.
+pub type DrccM0RustHdlEngine = DrccCoreRustHdlEngine<0>;
+
+impl<const M: usize> std::fmt::Debug for DrccCoreRustHdlEngine<M> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("DrccRustHdlEngine").finish_non_exhaustive()
     }
 }
 
-impl Default for DrccRustHdlEngine {
+impl<const M: usize> Default for DrccCoreRustHdlEngine<M> {
     fn default() -> Self {
         Self::new()
     }
 }
 
-impl DrccRustHdlEngine {
+impl<const M: usize> DrccCoreRustHdlEngine<M> {
     /// A fresh DRCC, clock low, not yet reset (drive `rst` for a few steps).
     pub fn new() -> Self {
-        let mut uut = Box::<Drcc>::default();
+        let mut uut = Box::<DrccCore<M>>::default();
         uut.connect_all();
         uut.clk.next = Clock::from(false);
-        let mut e = DrccRustHdlEngine { uut };
+        let mut e = DrccCoreRustHdlEngine { uut };
         e.settle();
         e
     }
@@ -48,7 +55,7 @@ impl DrccRustHdlEngine {
     }
 }
 
-impl DrccEngine for DrccRustHdlEngine {
+impl<const M: usize> DrccEngine for DrccCoreRustHdlEngine<M> {
     fn name(&self) -> &'static str {
         "rust-hdl"
     }

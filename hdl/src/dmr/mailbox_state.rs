@@ -159,8 +159,8 @@ impl<const M: usize> Logic for MailboxState<M> {
             self.mb_timer.next = self.mb[i].q.val().get_bits::<16>(8);
             self.counters.next = self.counters.val()
                 | (bit_cast::<128, 8>(self.mb_counter.val()) << self.at_c[i].val());
-            self.timers.next =
-                self.timers.val() | (bit_cast::<256, 16>(self.mb_timer.val()) << self.at_t[i].val());
+            self.timers.next = self.timers.val()
+                | (bit_cast::<256, 16>(self.mb_timer.val()) << self.at_t[i].val());
         }
     }
 }

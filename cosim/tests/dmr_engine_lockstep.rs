@@ -113,6 +113,8 @@ struct Coverage {
     eval_overrun: u64,
     clear_over_write: u64,
     holds: u64,
+    /// §4.2 settling: a receive mailbox's first timeout after a recovery re-balanced.
+    rebalanced: u64,
 }
 
 /// A run phase's character.
@@ -222,7 +224,7 @@ impl<const M: usize> Lockstep<M> {
             };
             let f = self.eng.edge(&r, &mut self.mbx, self.timeout);
             if i.clear_state {
-                self.mbx.clear_state();
+                self.mbx.clear_for_recovery();
             }
             f.map(|f| {
                 (
@@ -326,6 +328,12 @@ impl<const M: usize> Lockstep<M> {
             } else {
                 c.missed += 1;
             }
+        }
+        if pre.e_state == E_EVAL && !i.hold {
+            let b = &pre_mbx.mb[pre.e_i as usize];
+            let expired = b.counter != 0 && b.timer <= 1;
+            let within = (b.counter as i16).abs() <= b.limit as i16;
+            c.rebalanced += (b.enable && b.settle && b.dir == RECEIVE && expired && within) as u64;
         }
         if pre.e_state == E_EVAL && i.clear_state && pre_mbx.mb[pre.e_i as usize].enable {
             c.clear_over_write += 1;
@@ -556,6 +564,7 @@ fn lockstep_covers_every_case<const M: usize>(seeds: std::ops::RangeInclusive<u6
         total.eval_overrun += c.eval_overrun;
         total.clear_over_write += c.clear_over_write;
         total.holds += c.holds;
+        total.rebalanced += c.rebalanced;
     }
     println!("coverage (M = {M}): {total:#?}");
     let t = &total;
@@ -587,6 +596,7 @@ fn lockstep_covers_every_case<const M: usize>(seeds: std::ops::RangeInclusive<u6
     assert!(t.eval_overrun > 0, "pend_eval set while pending");
     assert!(t.clear_over_write > 0, "clear_state over an engine write");
     assert!(t.holds > 0);
+    assert!(t.rebalanced > 0, "a settling receive mailbox re-balanced");
 }
 
 #[test]

@@ -9,7 +9,8 @@
 //!   the seed's DMR state and ACL of every device (read from `DMR_STATUS` at the end of
 //!   the fault window);
 //! - no application frame lost or duplicated in any single-fault row (one line always
-//!   works), startup and run time;
+//!   works), startup and run time, and every device back to "redundancy active"
+//!   after the fault without a relapse (§4.2 settling);
 //! - the fault-free baseline raises no DMR fault and every device stays "redundancy
 //!   active" on the DCL.
 //!
@@ -109,7 +110,7 @@ fn table_3_rcl_startup_failures_cell_for_cell() {
 }
 
 #[test]
-fn no_single_fault_loses_or_duplicates_a_frame() {
+fn no_single_fault_loses_or_duplicates_a_frame_or_relapses() {
     // the rows are independent: run them on two threads (the other tests of this
     // binary take theirs from the cache)
     let rows = Row::all();
@@ -121,6 +122,16 @@ fn no_single_fault_loses_or_duplicates_a_frame() {
     let mut bad = Vec::new();
     for row in rows {
         let r = report(row);
+        // §4.2 settling and §7: after the fault every device is "redundancy
+        // active" again and stays so (no false fault when the traffic pauses)
+        if r.row.marker.is_some() && (r.recovery().is_none() || r.relapse.is_some()) {
+            bad.push(format!(
+                "{}: back to redundancy active {:?} clocks after the removal, relapse {:?}",
+                row.name(),
+                r.recovery(),
+                r.relapse
+            ));
+        }
         if !r.exactly_once() || r.unpushed != 0 {
             bad.push(format!(
                 "{}: {} lost (first {:?}), {} duplicated (first {:?}), {} foreign, {} never pushed",

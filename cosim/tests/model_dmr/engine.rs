@@ -121,6 +121,7 @@ fn deviation_verdict_against_the_rcl_on_a_positive_counter() {
 
 #[test]
 fn timeout_verdict_against_the_dcl_on_a_negative_counter_switches_the_acl() {
+    // (power-on does not settle, §4.2: the first timeout is judged)
     const TO: u64 = 6;
     let (mut sys, _, pb) = device(16, |s| {
         s.dmr_times(0, 1000, TO as u32, 1000);

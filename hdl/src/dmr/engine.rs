@@ -18,6 +18,9 @@
 //! the same addresses, except at the last `SCAN` edge, where it loads `e_hit`
 //! for `UPDATE`.
 //!
+//! The evaluation's settling bits (§4.2: a receive mailbox's first timeout after
+//! a recovery re-balances it) are one register, set by the recovery's clearing.
+//!
 //! `hold` resets the flags and the FSM and zeroes the state; the latched keys and
 //! `e_kind`, `e_line`, `e_key`, `e_hit` are not reset: each is written before it
 //! is read (a flag with its key, a job's fields when the job is taken).
@@ -133,6 +136,9 @@ pub struct DmrEngine<const M: usize> {
     e_key: DFF<Bits<30>>,
     e_found: DFF<Bit>,
     e_hit: DFF<Bits<4>>,
+    /// §4.2 settling, bit i = mailbox i: set by a recovery's `clear_state`,
+    /// cleared by the mailbox's first judgement and by `hold`.
+    settle: DFF<Bits<16>>,
     // ---- mailbox state ----
     mbx: MailboxState<M>,
     // ---- internals ----
@@ -152,6 +158,7 @@ pub struct DmrEngine<const M: usize> {
     t_dec: Signal<Local, Bits<16>>,
     deviation: Signal<Local, Bit>,
     expired: Signal<Local, Bit>,
+    rebalance: Signal<Local, Bit>,
     s_idle: Const<2, E_IDLE>,
     s_scan: Const<2, E_SCAN>,
     s_update: Const<2, E_UPDATE>,
@@ -168,6 +175,7 @@ pub struct DmrEngine<const M: usize> {
     min8: Const<8, 0x80>,
     zero16: Const<16, 0>,
     one16: Const<16, 1>,
+    ones16: Const<16, 0xFFFF>,
     zero29: Const<29, 0>,
 }
 
@@ -196,7 +204,8 @@ impl<const M: usize> Logic for DmrEngine<M> {
             e_line,
             e_key,
             e_found,
-            e_hit
+            e_hit,
+            settle
         );
         self.mbx.clk.next = self.clk.val();
         // The mailbox the engine works on: `e_hit` in UPDATE, `e_i` otherwise.
@@ -293,12 +302,19 @@ impl<const M: usize> Logic for DmrEngine<M> {
         self.deviation.next = self.c_abs.val() > self.limit.val();
         self.expired.next =
             (self.c.val() != self.zero8.val()) & (self.t_dec.val() == self.zero16.val());
+        // §4.2 settling: a receive mailbox's first timeout after its counters
+        // were cleared re-balances it instead of judging a line.
+        self.rebalance.next = self.expired.val()
+            & !self.deviation.val()
+            & self.settle.q.val().get_bit(self.e_i.q.val().index())
+            & !self.cfg_id_word.val().get_bit(30);
         // The verdict, on the values before the edge. A fault's counter is not 0:
         // its sign names the line ("a positive value ... hence the RCL is faulty").
         self.fault.next = !self.hold.val()
             & (self.state.q.val() == self.s_eval.val())
             & self.en.val()
-            & (self.deviation.val() | self.expired.val());
+            & (self.deviation.val() | self.expired.val())
+            & !self.rebalance.val();
         self.fault_line.next = !self.c.val().get_bit(7);
         self.fault_tx.next = self.cfg_id_word.val().get_bit(30);
         self.fault_deviation.next = self.deviation.val();
@@ -413,6 +429,8 @@ impl<const M: usize> Logic for DmrEngine<M> {
                 if self.deviation.val() | self.expired.val() {
                     self.mbx.counter_d.next = self.zero8.val();
                     self.mbx.timer_d.next = self.zero16.val();
+                    self.settle.d.next =
+                        self.settle.q.val() & !(self.one16.val() << self.e_i.q.val());
                 } else {
                     self.mbx.timer_d.next = self.t_dec.val();
                 }
@@ -423,7 +441,13 @@ impl<const M: usize> Logic for DmrEngine<M> {
                 self.e_i.d.next = self.e_i.q.val() + self.one4.val();
             }
         }
+        // a recovery clears the counters (mailbox_state) and every mailbox
+        // settles; `hold` (below) clears the counters without settling
+        if self.clear_state.val() {
+            self.settle.d.next = self.ones16.val();
+        }
         if self.hold.val() {
+            self.settle.d.next = self.zero16.val();
             self.pend_tx_dcl.d.next = false;
             self.pend_tx_rcl.d.next = false;
             self.pend_rx_dcl.d.next = false;

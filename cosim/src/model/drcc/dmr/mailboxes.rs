@@ -41,6 +41,9 @@ pub struct Mailbox {
     pub counter: i8,
     /// DMR ticks left, 0 = stopped.
     pub timer: u16,
+    /// §4.2 settling: set where a recovery clears counter and timer; a receive
+    /// mailbox's first timeout after that re-balances it. 0 in reset mode.
+    pub settle: bool,
 }
 
 impl Default for Mailbox {
@@ -54,6 +57,7 @@ impl Default for Mailbox {
             enable: false,
             counter: 0,
             timer: 0,
+            settle: false,
         }
     }
 }
@@ -123,16 +127,27 @@ impl Mailbox {
             line: if c > 0 { 1 } else { 0 },
             dir: self.dir,
         };
-        let v = if c.abs() > self.limit as i16 {
-            Some(verdict(true))
+        let (v, judged) = if c.abs() > self.limit as i16 {
+            (Some(verdict(true)), true)
         } else if c != 0 && t1 == 0 {
-            Some(verdict(false))
+            // A receive mailbox's first timeout after a clearing is a new balance
+            // point: the skew of the copies in flight at the clearing (§4.2).
+            let rebalance = self.settle && self.dir == RECEIVE;
+            (
+                if rebalance {
+                    None
+                } else {
+                    Some(verdict(false))
+                },
+                true,
+            )
         } else {
-            None
+            (None, false)
         };
-        if v.is_some() {
+        if judged {
             self.counter = 0;
             self.timer = 0;
+            self.settle = false;
         } else {
             self.timer = t1;
         }
@@ -173,12 +188,22 @@ impl Mailboxes {
         }
     }
 
-    /// Reset mode (and every mode but DMR), and a recovery (§7): counters and
-    /// timers clear (§2.1).
+    /// Reset mode (and every mode but DMR): counters and timers clear (§2.1), no
+    /// mailbox settles (§4.2).
     pub fn clear_state(&mut self) {
         for b in &mut self.mb {
             b.counter = 0;
             b.timer = 0;
+            b.settle = false;
+        }
+    }
+
+    /// A recovery (§7): counters and timers clear and every mailbox settles (§4.2).
+    pub fn clear_for_recovery(&mut self) {
+        for b in &mut self.mb {
+            b.counter = 0;
+            b.timer = 0;
+            b.settle = true;
         }
     }
 

@@ -159,7 +159,7 @@ impl DmrBlock {
             }
         }
         if recovered {
-            self.mbx.clear_state();
+            self.mbx.clear_for_recovery();
         }
         // ACL switch: a fault against the ACL while the other line is sound.
         let a = c.acl as usize;

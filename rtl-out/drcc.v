@@ -18289,6 +18289,10 @@ module drcc__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl
     wire  [15:0] mbx__rd_timer;
     wire  [127:0] mbx__counters;
     wire  [255:0] mbx__timers;
+    reg  mbx__settle_all;
+    reg  mbx__settle_none;
+    reg  mbx__settle_drop;
+    wire  [15:0] mbx__settles;
     
     // Local signals
     reg  [3:0] mb;
@@ -18307,6 +18311,7 @@ module drcc__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl
     reg  [15:0] t_dec;
     reg  deviation;
     reg  expired;
+    reg  rebalance;
     
     // Sub module instances
     drcc__dmr_eng__0__pend_tx_dcl pend_tx_dcl(
@@ -18420,7 +18425,11 @@ module drcc__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl
         .rd_counter(mbx__rd_counter),
         .rd_timer(mbx__rd_timer),
         .counters(mbx__counters),
-        .timers(mbx__timers)
+        .timers(mbx__timers),
+        .settle_all(mbx__settle_all),
+        .settle_none(mbx__settle_none),
+        .settle_drop(mbx__settle_drop),
+        .settles(mbx__settles)
     );
     
     // Update code
@@ -18540,7 +18549,8 @@ module drcc__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl
         end
         deviation = c_abs > limit;
         expired = (c != zero8) & (t_dec == zero16);
-        fault = ~hold & (state__q == s_eval) & en & (deviation | expired);
+        rebalance = expired & ~deviation & mbx__settles[e_i__q] & ~cfg_id_word[32'h1e];
+        fault = ~hold & (state__q == s_eval) & en & (deviation | expired) & ~rebalance;
         fault_line = ~c[32'h7];
         fault_tx = cfg_id_word[32'h1e];
         fault_deviation = deviation;
@@ -18550,6 +18560,9 @@ module drcc__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl
         mbx__counter_d = c;
         mbx__timer_d = t;
         mbx__clear = hold | clear_state;
+        mbx__settle_all = clear_state;
+        mbx__settle_none = hold;
+        mbx__settle_drop = 1'b0;
         if (tx_dcl) begin
             pend_tx_dcl__d = 1'b1;
             k_tx_dcl__d = key_tx_dcl;
@@ -18658,6 +18671,7 @@ module drcc__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_rcl,rx_dcl,rx_rcl
                 if (deviation | expired) begin
                     mbx__counter_d = zero8;
                     mbx__timer_d = zero16;
+                    mbx__settle_drop = 1'b1;
                 end
                 else begin
                     mbx__timer_d = t_dec;
@@ -18879,7 +18893,7 @@ module drcc__dmr_eng__0__k_tx_rcl(d,q,clock);
 endmodule // drcc__dmr_eng__0__k_tx_rcl
 
 
-module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers);
+module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers,settle_all,settle_none,settle_drop,settles);
     
     // Module arguments
     input wire  clk;
@@ -18893,11 +18907,16 @@ module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_count
     output reg  [15:0] rd_timer;
     output reg  [127:0] counters;
     output reg  [255:0] timers;
+    input wire  settle_all;
+    input wire  settle_none;
+    input wire  settle_drop;
+    output reg  [15:0] settles;
     
     // Constant declarations
     localparam  one16 = 16'h1;
     localparam  zero24 = 24'h0;
     localparam  zero16 = 16'h0;
+    localparam  ones16 = 16'hffff;
     localparam  zero128 = 128'h0;
     localparam  zero256 = 256'h0;
     localparam  at_c__0 = 8'h0;
@@ -18992,6 +19011,9 @@ module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_count
     reg  [15:0] valid__d;
     wire  [15:0] valid__q;
     reg  valid__clock;
+    reg  [15:0] settle__d;
+    wire  [15:0] settle__q;
+    reg  settle__clock;
     reg  [3:0] rd_q__d;
     wire  [3:0] rd_q__q;
     reg  rd_q__clock;
@@ -19098,6 +19120,11 @@ module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_count
         .q(valid__q),
         .clock(valid__clock)
     );
+    drcc__dmr_eng__0__mbx__settle settle(
+        .d(settle__d),
+        .q(settle__q),
+        .clock(settle__clock)
+    );
     drcc__dmr_eng__0__mbx__rd_q rd_q(
         .d(rd_q__d),
         .q(rd_q__q),
@@ -19107,8 +19134,10 @@ module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_count
     // Update code
     always @(*) begin
         valid__clock = clk;
+        settle__clock = clk;
         rd_q__clock = clk;
         valid__d = valid__q;
+        settle__d = settle__q;
         rd_q__d = rd_q__q;
         slot = one16 << sel;
         word = ((counter_d) & 24'hffffff) | (((timer_d) & 24'hffffff) << 32'h8);
@@ -19133,6 +19162,16 @@ module drcc__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_count
         if (clear) begin
             valid__d = zero16;
         end
+        if (settle_drop) begin
+            settle__d = settle__q & ~slot;
+        end
+        if (settle_all) begin
+            settle__d = ones16;
+        end
+        if (settle_none) begin
+            settle__d = zero16;
+        end
+        settles = settle__q;
         counters = zero128;
         timers = zero256;
         mb__0__clock = clk;
@@ -19632,6 +19671,22 @@ module drcc__dmr_eng__0__mbx__rd_q(d,q,clock);
     end
           
 endmodule // drcc__dmr_eng__0__mbx__rd_q
+
+
+module drcc__dmr_eng__0__mbx__settle(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__dmr_eng__0__mbx__settle
 
 
 module drcc__dmr_eng__0__mbx__valid(d,q,clock);

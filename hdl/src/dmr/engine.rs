@@ -19,7 +19,7 @@
 //! for `UPDATE`.
 //!
 //! The evaluation's settling bits (§4.2: a receive mailbox's first timeout after
-//! a recovery re-balances it) are one register, set by the recovery's clearing.
+//! a recovery re-balances it) live with the state (`super::mailbox_state`).
 //!
 //! `hold` resets the flags and the FSM and zeroes the state; the latched keys and
 //! `e_kind`, `e_line`, `e_key`, `e_hit` are not reset: each is written before it
@@ -136,9 +136,6 @@ pub struct DmrEngine<const M: usize> {
     e_key: DFF<Bits<30>>,
     e_found: DFF<Bit>,
     e_hit: DFF<Bits<4>>,
-    /// §4.2 settling, bit i = mailbox i: set by a recovery's `clear_state`,
-    /// cleared by the mailbox's first judgement and by `hold`.
-    settle: DFF<Bits<16>>,
     // ---- mailbox state ----
     mbx: MailboxState<M>,
     // ---- internals ----
@@ -175,7 +172,6 @@ pub struct DmrEngine<const M: usize> {
     min8: Const<8, 0x80>,
     zero16: Const<16, 0>,
     one16: Const<16, 1>,
-    ones16: Const<16, 0xFFFF>,
     zero29: Const<29, 0>,
 }
 
@@ -204,8 +200,7 @@ impl<const M: usize> Logic for DmrEngine<M> {
             e_line,
             e_key,
             e_found,
-            e_hit,
-            settle
+            e_hit
         );
         self.mbx.clk.next = self.clk.val();
         // The mailbox the engine works on: `e_hit` in UPDATE, `e_i` otherwise.
@@ -306,7 +301,7 @@ impl<const M: usize> Logic for DmrEngine<M> {
         // were cleared re-balances it instead of judging a line.
         self.rebalance.next = self.expired.val()
             & !self.deviation.val()
-            & self.settle.q.val().get_bit(self.e_i.q.val().index())
+            & self.mbx.settles.val().get_bit(self.e_i.q.val().index())
             & !self.cfg_id_word.val().get_bit(30);
         // The verdict, on the values before the edge. A fault's counter is not 0:
         // its sign names the line ("a positive value ... hence the RCL is faulty").
@@ -325,6 +320,10 @@ impl<const M: usize> Logic for DmrEngine<M> {
         self.mbx.counter_d.next = self.c.val();
         self.mbx.timer_d.next = self.t.val();
         self.mbx.clear.next = self.hold.val() | self.clear_state.val();
+        // §4.2 settling: a recovery's clearing settles every mailbox, `hold` none
+        self.mbx.settle_all.next = self.clear_state.val();
+        self.mbx.settle_none.next = self.hold.val();
+        self.mbx.settle_drop.next = false;
         // §4.3: the sources set their flags (the newer key wins).
         if self.tx_dcl.val() {
             self.pend_tx_dcl.d.next = true;
@@ -429,8 +428,7 @@ impl<const M: usize> Logic for DmrEngine<M> {
                 if self.deviation.val() | self.expired.val() {
                     self.mbx.counter_d.next = self.zero8.val();
                     self.mbx.timer_d.next = self.zero16.val();
-                    self.settle.d.next =
-                        self.settle.q.val() & !(self.one16.val() << self.e_i.q.val());
+                    self.mbx.settle_drop.next = true;
                 } else {
                     self.mbx.timer_d.next = self.t_dec.val();
                 }
@@ -441,13 +439,7 @@ impl<const M: usize> Logic for DmrEngine<M> {
                 self.e_i.d.next = self.e_i.q.val() + self.one4.val();
             }
         }
-        // a recovery clears the counters (mailbox_state) and every mailbox
-        // settles; `hold` (below) clears the counters without settling
-        if self.clear_state.val() {
-            self.settle.d.next = self.ones16.val();
-        }
         if self.hold.val() {
-            self.settle.d.next = self.zero16.val();
             self.pend_tx_dcl.d.next = false;
             self.pend_tx_rcl.d.next = false;
             self.pend_rx_dcl.d.next = false;

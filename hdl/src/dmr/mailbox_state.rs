@@ -59,10 +59,20 @@ pub struct MailboxState<const M: usize> {
     pub counters: Signal<Out, Bits<128>>,
     /// Every timer (DMR ticks left, 0 = stopped): mailbox i in `[16i+15:16i]`.
     pub timers: Signal<Out, Bits<256>>,
+    // ---- §4.2 settling ----
+    /// A recovery: every mailbox settles at this edge (over `settle_drop`).
+    pub settle_all: Signal<In, Bit>,
+    /// No mailbox settles after this edge (reset mode; over `settle_all`).
+    pub settle_none: Signal<In, Bit>,
+    /// Mailbox `sel` was judged at this edge: it no longer settles.
+    pub settle_drop: Signal<In, Bit>,
+    /// The settling bits, bit i = mailbox i.
+    pub settles: Signal<Out, Bits<16>>,
     // ---- registers: mailbox i = {timer [23:8], counter [7:0]} ----
     mb: [DFF<Bits<24>>; M],
     copy: Bram<Bits<24>, 4>,
     valid: DFF<Bits<16>>,
+    settle: DFF<Bits<16>>,
     rd_q: DFF<Bits<4>>,
     // ---- internals ----
     rd_word: Signal<Local, Bits<24>>,
@@ -73,6 +83,7 @@ pub struct MailboxState<const M: usize> {
     one16: Const<16, 1>,
     zero24: Const<24, 0>,
     zero16: Const<16, 0>,
+    ones16: Const<16, 0xFFFF>,
     zero128: Const<128, 0>,
     zero256: Const<256, 0>,
     at_c: [Constant<Bits<8>>; M],
@@ -94,9 +105,14 @@ impl<const M: usize> Default for MailboxState<M> {
             rd_timer: Default::default(),
             counters: Default::default(),
             timers: Default::default(),
+            settle_all: Default::default(),
+            settle_none: Default::default(),
+            settle_drop: Default::default(),
+            settles: Default::default(),
             mb: std::array::from_fn(|_| Default::default()),
             copy: Default::default(),
             valid: Default::default(),
+            settle: Default::default(),
             rd_q: Default::default(),
             rd_word: Default::default(),
             slot: Default::default(),
@@ -106,6 +122,7 @@ impl<const M: usize> Default for MailboxState<M> {
             one16: Default::default(),
             zero24: Default::default(),
             zero16: Default::default(),
+            ones16: Default::default(),
             zero128: Default::default(),
             zero256: Default::default(),
             at_c: std::array::from_fn(|i| Constant::new(((8 * i) as u64).into())),
@@ -117,7 +134,7 @@ impl<const M: usize> Default for MailboxState<M> {
 impl<const M: usize> Logic for MailboxState<M> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, valid, rd_q);
+        dff_setup!(self, clk, valid, settle, rd_q);
         // the write: one enable per mailbox, the same word to all
         self.slot.next = self.one16.val() << self.sel.val();
         self.word.next =
@@ -143,6 +160,16 @@ impl<const M: usize> Logic for MailboxState<M> {
         if self.clear.val() {
             self.valid.d.next = self.zero16.val();
         }
+        if self.settle_drop.val() {
+            self.settle.d.next = self.settle.q.val() & !self.slot.val();
+        }
+        if self.settle_all.val() {
+            self.settle.d.next = self.ones16.val();
+        }
+        if self.settle_none.val() {
+            self.settle.d.next = self.zero16.val();
+        }
+        self.settles.next = self.settle.q.val();
         // the registers, and the packed outputs (wiring)
         self.counters.next = self.zero128.val();
         self.timers.next = self.zero256.val();

@@ -142,6 +142,10 @@ enum Command {
         /// DMR recovery delay in ms (default 200; the seed's is 2000).
         #[arg(long, value_name = "MS")]
         recovery_ms: Option<u16>,
+        /// Deviation limit of every mailbox, 1..127 (default 3): a smaller one finds
+        /// a line fault sooner (less extra latency) and tolerates less skew.
+        #[arg(long, value_name = "N")]
+        limit: Option<u8>,
     },
     /// Measure simulated clock cycles per second of every available engine.
     Bench {
@@ -216,6 +220,7 @@ fn main() -> ExitCode {
             cosim,
             vcd,
             recovery_ms,
+            limit,
         } => cli::dmr::run(&cli::dmr::DmrArgs {
             what: &what,
             startup,
@@ -225,6 +230,7 @@ fn main() -> ExitCode {
             cosim: cosim.as_deref(),
             vcd: vcd.as_deref(),
             recovery_ms,
+            limit,
         }),
         Command::Bench { seconds } => cli::bench(seconds),
         Command::Synth {

@@ -27,6 +27,7 @@ pub struct DmrArgs<'a> {
     pub cosim: Option<&'a str>,
     pub vcd: Option<&'a Path>,
     pub recovery_ms: Option<u16>,
+    pub limit: Option<u8>,
 }
 
 /// What `drcc dmr` was asked to run.
@@ -58,6 +59,21 @@ pub fn parse(a: &DmrArgs) -> Result<(Job, PlanConfig, EngineKind, Option<EngineK
             ))
         }
         Some(ms) => PlanConfig::with_recovery(ms),
+    };
+    let plan = match a.limit {
+        None => plan,
+        Some(n @ 1..=127) if !a.markdown => PlanConfig { limit: n, ..plan },
+        Some(1..=127) => {
+            return Err(error(
+                "--limit with --markdown: the table in README.md and docs/dmr.md is the                  standard plan (limit 3); print a table with another limit without --markdown"
+                    .to_string(),
+            ))
+        }
+        Some(n) => {
+            return Err(error(format!(
+                "--limit {n}: MB_CFG.limit is 1 .. 127 (0 is refused, DMR contract §2.2; the                  field has 7 bits); give 1 .. 127 (the plan's default is 3)"
+            )))
+        }
     };
     if a.startup && a.runtime {
         return Err(error(
@@ -112,11 +128,12 @@ pub fn run(a: &DmrArgs) -> CliResult {
     eprintln!(
         "traffic: 125 kbit/s (1 MHz clock, 8 clocks per bit), offered load {:.2} % from exact \
          frame lengths ({} .. {} bit times with stuff bits and intermission), recovery delay \
-         {} ms, run {} ms",
+         {} ms, deviation limit {}, run {} ms",
         load.load * 100.0,
         load.min_bits,
         load.max_bits,
         plan.recovery_ms,
+        plan.limit,
         plan.run_ms
     );
     for (d, (frames, bits, period)) in load.devices.iter().enumerate() {
@@ -321,6 +338,25 @@ mod tests {
             ..args("F1")
         };
         assert!(err(&zero).contains("1 .. 65535"));
+        // §2.2: limit 0 is refused; the field has 7 bits
+        for n in [0u8, 128, 255] {
+            let bad = DmrArgs {
+                limit: Some(n),
+                ..args("F1")
+            };
+            assert!(err(&bad).contains("give 1 .. 127"), "--limit {n}");
+        }
+        let md_limit = DmrArgs {
+            limit: Some(1),
+            markdown: true,
+            ..args("table")
+        };
+        assert!(err(&md_limit).contains("without --markdown"));
+        let one = DmrArgs {
+            limit: Some(1),
+            ..args("F1")
+        };
+        assert_eq!(parse(&one).unwrap().1.limit, 1);
         let engine = DmrArgs {
             engine: "spice",
             ..args("F1")

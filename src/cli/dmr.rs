@@ -6,7 +6,7 @@
 //! (`--startup`, the default, or `--runtime`), with `--vcd` and `--cosim`. An engine
 //! other than the model always runs with the model in lock step (the plan's oracle).
 
-use super::{rewrite_between_atomic, workspace_path, CliError, CliResult};
+use super::{project_root, rewrite_between_atomic, CliError, CliResult};
 use drcc_testbench::dmr::load::{schedule, summary};
 use drcc_testbench::dmr::report::table_header;
 use drcc_testbench::dmr::{
@@ -65,13 +65,13 @@ pub fn parse(a: &DmrArgs) -> Result<(Job, PlanConfig, EngineKind, Option<EngineK
         Some(n @ 1..=127) if !a.markdown => PlanConfig { limit: n, ..plan },
         Some(1..=127) => {
             return Err(error(
-                "--limit with --markdown: the table in README.md and docs/dmr.md is the                  standard plan (limit 3); print a table with another limit without --markdown"
+                "--limit with --markdown: the table in README.md and docs/dmr.md is the standard plan (limit 3); print a table with another limit without --markdown"
                     .to_string(),
             ))
         }
         Some(n) => {
             return Err(error(format!(
-                "--limit {n}: MB_CFG.limit is 1 .. 127 (0 is refused, DMR contract §2.2; the                  field has 7 bits); give 1 .. 127 (the plan's default is 3)"
+                "--limit {n}: MB_CFG.limit is 1 .. 127 (0 is refused, DMR contract §2.2; the field has 7 bits); give 1 .. 127 (the plan's default is 3)"
             )))
         }
     };
@@ -123,6 +123,13 @@ pub fn parse(a: &DmrArgs) -> Result<(Job, PlanConfig, EngineKind, Option<EngineK
 /// Runs `drcc dmr` (see the module docs).
 pub fn run(a: &DmrArgs) -> CliResult {
     let (job, plan, kind, other) = parse(a)?;
+    // the checkout whose tables --markdown rewrites, found before the run
+    let root = match job {
+        Job::Table { markdown: true } => Some(project_root(
+            ", or leave out --markdown to print the table only",
+        )?),
+        _ => None,
+    };
     let sched = schedule(&plan);
     let load = summary(&plan, &sched);
     eprintln!(
@@ -154,8 +161,8 @@ pub fn run(a: &DmrArgs) -> CliResult {
             })
             .map_err(error)?;
             print!("{table}");
-            if markdown {
-                let paths = [workspace_path("README.md"), workspace_path("docs/dmr.md")];
+            if let (true, Some(root)) = (markdown, &root) {
+                let paths = [root.join("README.md"), root.join("docs/dmr.md")];
                 rewrite_between_atomic(&paths, TABLE_BEGIN, TABLE_END, &table)?;
                 for p in &paths {
                     println!("wrote the table in {}", p.display());

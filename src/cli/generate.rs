@@ -3,28 +3,39 @@
 //! them and the register documentation `docs/registers.md` (into DIR too when
 //! `--out` is given), both generated from `drcc_hdl::host::registers`; or checks
 //! that the files on disk are current.
+//!
+//! Without `--out` the files go into the DRCC checkout the command runs in (the
+//! current directory or its nearest ancestor with the checkout's marker files,
+//! `super::project_root`), and `--check` compares that checkout; outside a checkout
+//! it refuses. Every file is written through a temporary file and a rename.
 
 use std::path::{Path, PathBuf};
 
-use super::{workspace_path, CliError, CliResult};
+use super::{project_root, write_atomic, CliError, CliResult};
 
 /// Runs the command.
 pub fn run(out: Option<PathBuf>, check: bool) -> CliResult {
-    let out_flat = out.clone();
-    let dir = out.unwrap_or_else(|| workspace_path("rtl-out"));
+    // Where the files go: flat into `--out DIR`, or each at its place in the
+    // checkout the command runs in.
+    let (dir, place): (PathBuf, Box<dyn Fn(&Path) -> PathBuf>) = match out {
+        Some(d) => (
+            d.clone(),
+            Box::new(move |rel: &Path| {
+                d.join(rel.file_name().expect("generated path has a file name"))
+            }),
+        ),
+        None => {
+            let root = project_root(", or give --out DIR to write the files there")?;
+            (
+                root.join("rtl-out"),
+                Box::new(move |rel: &Path| root.join(rel)),
+            )
+        }
+    };
     let tops = drcc_hdl::tops::emit_all();
-    // Repository-relative paths of the other generated files; with `--out DIR`
-    // every file goes flat into DIR.
     let extras: Vec<(PathBuf, String)> = drcc_hdl::generated::extras()
         .into_iter()
-        .map(|f| {
-            let rel = Path::new(f.path);
-            let path = match &out_flat {
-                Some(d) => d.join(rel.file_name().expect("generated path has a file name")),
-                None => workspace_path(f.path),
-            };
-            (path, f.text)
-        })
+        .map(|f| (place(Path::new(f.path)), f.text))
         .collect();
     if check {
         let verilog = check_dir(&dir, &tops);
@@ -52,8 +63,7 @@ fn write_files(files: &[(PathBuf, String)]) -> CliResult {
             println!("unchanged {}", path.display());
             continue;
         }
-        std::fs::write(path, text)
-            .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())))?;
+        write_atomic(path, text)?;
         println!("wrote {} ({} lines)", path.display(), text.lines().count());
     }
     Ok(())
@@ -88,8 +98,7 @@ fn write_dir(dir: &Path, tops: &[(&'static str, String)]) -> CliResult {
             println!("unchanged {}", path.display());
             continue;
         }
-        std::fs::write(&path, text)
-            .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())))?;
+        write_atomic(&path, text)?;
         println!("wrote {} ({} lines)", path.display(), text.lines().count());
     }
     Ok(())

@@ -66,8 +66,56 @@ pub fn install_panic_hook() {
     }));
 }
 
-/// A path of the workspace: as given if it exists relative to the current
-/// directory, else relative to the workspace this binary was built from.
+/// The files that mark a DRCC checkout: the project whose generated files
+/// (`rtl-out/`, `docs/registers.md`, the tables in README.md and `docs/`) the
+/// commands write.
+pub const PROJECT_MARKERS: [&str; 3] = [
+    "Cargo.toml",
+    "hdl/src/tops.rs",
+    "cosim/src/model/drcc_contract.md",
+];
+
+/// The DRCC checkout a command writes generated files into: the current directory
+/// or its nearest ancestor that holds every file of [`PROJECT_MARKERS`]. Never the
+/// checkout the binary was built from, and never a directory that merely has a
+/// `docs/` or `rtl-out/`. `instead` says what the user can do outside a checkout.
+pub fn project_root(instead: &str) -> Result<PathBuf, CliError> {
+    let cwd = std::env::current_dir()
+        .map_err(|e| CliError::Error(format!("cannot read the current directory: {e}")))?;
+    cwd.ancestors()
+        .find(|d| PROJECT_MARKERS.iter().all(|m| d.join(m).is_file()))
+        .map(Path::to_path_buf)
+        .ok_or_else(|| {
+            CliError::Error(format!(
+                "{} is not inside a DRCC checkout (no directory from here up holds {}): run \
+                 this from the checkout whose files it regenerates{instead}",
+                cwd.display(),
+                PROJECT_MARKERS[1]
+            ))
+        })
+}
+
+/// Writes `text` to `path` through a temporary file beside it and a rename, so an
+/// interrupted write leaves the old file or the new one, never a truncated one.
+pub fn write_atomic(path: &Path, text: &str) -> Result<(), CliError> {
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
+    let tmp = path.with_file_name(format!(".{name}.drcc-tmp"));
+    std::fs::write(&tmp, text).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        CliError::Error(format!(
+            "cannot write {} ({e}): make its directory writable",
+            tmp.display()
+        ))
+    })?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        CliError::Error(format!("cannot replace {}: {e}", path.display()))
+    })
+}
+
+/// A path to *read* from the workspace: as given if it exists relative to the
+/// current directory, else relative to the workspace this binary was built from.
+/// Commands never write through it (see [`project_root`]).
 pub fn workspace_path(rel: &str) -> PathBuf {
     let here = Path::new(rel);
     if here.exists() {
@@ -106,16 +154,6 @@ pub fn replace_between(text: &str, begin: &str, end: &str, body: &str) -> Result
         .map(|i| b + i)
         .ok_or_else(|| format!("no `{end}` marker after the begin marker"))?;
     Ok(format!("{}\n{}{}", &text[..b], body, &text[e..]))
-}
-
-/// Rewrites the generated block between `begin` and `end` in the file at `path`.
-pub fn rewrite_between(path: &std::path::Path, begin: &str, end: &str, body: &str) -> CliResult {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Error(format!("cannot read {}: {e}", path.display())))?;
-    let new = replace_between(&text, begin, end, body)
-        .map_err(|m| CliError::Error(format!("{}: {m}", path.display())))?;
-    std::fs::write(path, new)
-        .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())))
 }
 
 /// Rewrites the generated block between `begin` and `end` in every file of `paths`,

@@ -4,7 +4,7 @@
 //! `table --markdown` also rewrites the table between the `star-table` markers of
 //! README.md and docs/hub.md.
 
-use super::{rewrite_between, workspace_path, CliError, CliResult};
+use super::{project_root, rewrite_between_atomic, CliError, CliResult};
 use drcc_testbench::star::{run_star, star_table, table_row, StarFault, StarScenario};
 use drcc_testbench::EngineKind;
 
@@ -22,13 +22,20 @@ pub fn run(what: &str, engine_name: &str, cosim: Option<&str>, markdown: bool) -
         ));
     }
     if what == "table" {
+        // the checkout whose tables --markdown rewrites, found before the run
+        let root = match markdown {
+            true => Some(project_root(
+                ", or leave out --markdown to print the table only",
+            )?),
+            false => None,
+        };
         let table = star_table(kind, other).map_err(CliError::Error)?;
         print!("{table}");
-        if markdown {
-            for file in ["README.md", "docs/hub.md"] {
-                let path = workspace_path(file);
-                rewrite_between(&path, TABLE_BEGIN, TABLE_END, &table)?;
-                println!("wrote the table in {}", path.display());
+        if let Some(root) = root {
+            let paths = [root.join("README.md"), root.join("docs/hub.md")];
+            rewrite_between_atomic(&paths, TABLE_BEGIN, TABLE_END, &table)?;
+            for p in &paths {
+                println!("wrote the table in {}", p.display());
             }
         }
         return Ok(());

@@ -13,7 +13,9 @@ use drcc_fpga::markdown::{self, README_BEGIN, README_END};
 use drcc_fpga::{tools, Flow, SynthReport, Target, ToolEnv, TARGETS};
 use drcc_hdl::tops::{self, Top};
 
-use super::{workspace_path, CliError, CliResult};
+use super::{
+    project_root, rewrite_between_atomic, workspace_path, write_atomic, CliError, CliResult,
+};
 
 /// The options of `drcc synth`.
 #[derive(Debug, Default)]
@@ -81,6 +83,11 @@ fn selection(args: &SynthArgs) -> Result<(Vec<&'static Top>, Vec<&'static Target
 pub fn run(args: SynthArgs) -> CliResult {
     let (tops, targets) = selection(&args)?;
     tools::check(&targets)?;
+    // the checkout whose tables --markdown rewrites, found before the long run
+    let root = match args.markdown {
+        true => Some(project_root(", or leave out --markdown (or use --json)")?),
+        false => None,
+    };
     let progress = |m: &str| eprintln!("drcc synth: {m}");
     let flow = Flow {
         // rtl-out/ and constraints/ of the current directory, else of the
@@ -117,12 +124,19 @@ pub fn run(args: SynthArgs) -> CliResult {
         let json = drcc_fpga::json::reports(&results, args.all)?;
         println!("{json}");
     }
-    if args.markdown {
+    if let Some(root) = root {
         let table = markdown::table(&results);
-        let doc_path = workspace_path("docs").join("synthesis.md");
-        drcc_fpga::write_file(&doc_path, &markdown::doc(&results, &flow.env))?;
-        let readme_path = workspace_path("README.md");
-        super::rewrite_between(&readme_path, README_BEGIN, README_END, &table)?;
+        let doc_path = root.join("docs/synthesis.md");
+        let readme_path = root.join("README.md");
+        // the README's markers are checked (and its new text staged) before the
+        // document is replaced, so a bad README changes neither file
+        rewrite_between_atomic(
+            std::slice::from_ref(&readme_path),
+            README_BEGIN,
+            README_END,
+            &table,
+        )?;
+        write_atomic(&doc_path, &markdown::doc(&results, &flow.env))?;
         if !args.json {
             print!("{table}");
             println!(

@@ -89,9 +89,9 @@ enum Command {
         /// Also run this engine in lock step and compare every clock.
         #[arg(long, value_name = "ENGINE")]
         cosim: Option<String>,
-        /// Switch policy of `paper`: error-passive, none, k1 .. k15.
-        #[arg(long, default_value = "error-passive")]
-        policy: String,
+        /// Switch policy of `paper`: error-passive (the default), none, k1 .. k15.
+        #[arg(long)]
+        policy: Option<String>,
         /// `paper` or a fault: write the trace with the paper's signal names
         /// (with `all`: one file per fault, named after it).
         #[arg(long, value_name = "FILE")]
@@ -204,7 +204,13 @@ fn main() -> ExitCode {
             cosim,
             policy,
             vcd,
-        } => cli::redundancy::run(&what, &engine, cosim.as_deref(), &policy, vcd.as_deref()),
+        } => cli::redundancy::run(
+            &what,
+            &engine,
+            cosim.as_deref(),
+            policy.as_deref(),
+            vcd.as_deref(),
+        ),
         Command::Star {
             what,
             engine,

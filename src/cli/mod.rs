@@ -97,7 +97,7 @@ pub fn project_root(instead: &str) -> Result<PathBuf, CliError> {
 
 /// Writes `text` to `path` through a temporary file beside it and a rename, so an
 /// interrupted write leaves the old file or the new one, never a truncated one.
-pub fn write_atomic(path: &Path, text: &str) -> Result<(), CliError> {
+pub fn write_atomic(path: &Path, text: impl AsRef<[u8]>) -> Result<(), CliError> {
     let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
     let tmp = path.with_file_name(format!(".{name}.drcc-tmp"));
     std::fs::write(&tmp, text).map_err(|e| {
@@ -111,6 +111,108 @@ pub fn write_atomic(path: &Path, text: &str) -> Result<(), CliError> {
         let _ = std::fs::remove_file(&tmp);
         CliError::Error(format!("cannot replace {}: {e}", path.display()))
     })
+}
+
+/// Whether two paths name the same file: the same file on disk if both exist,
+/// else the same path once made absolute, `.` and `..` resolved and the longest
+/// existing ancestor canonicalized (symbolic links).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    fn canon(p: &Path) -> Option<PathBuf> {
+        if let Ok(c) = p.canonicalize() {
+            return Some(c);
+        }
+        let mut abs = PathBuf::new();
+        for c in std::env::current_dir().ok()?.join(p).components() {
+            match c {
+                std::path::Component::ParentDir => {
+                    abs.pop();
+                }
+                std::path::Component::CurDir => {}
+                other => abs.push(other),
+            }
+        }
+        let base = abs.ancestors().find(|d| d.exists())?.to_path_buf();
+        let rest = abs.strip_prefix(&base).ok()?.to_path_buf();
+        Some(base.canonicalize().ok()?.join(rest))
+    }
+    match (canon(a), canon(b)) {
+        (Some(x), Some(y)) => x == y,
+        _ => a == b,
+    }
+}
+
+/// Refuses output files that would destroy an input or each other: each output
+/// (`(option, path)`) must differ from every input and from every other output.
+pub fn check_outputs(inputs: &[&Path], outputs: &[(&str, &Path)]) -> CliResult {
+    for (i, (opt, out)) in outputs.iter().enumerate() {
+        if let Some(inp) = inputs.iter().find(|inp| same_file(inp, out)) {
+            return Err(CliError::Error(format!(
+                "{opt} {}: that is the input {}, which the output would replace; give \
+                 another file name",
+                out.display(),
+                inp.display()
+            )));
+        }
+        if let Some((other, _)) = outputs[..i].iter().find(|(_, o)| same_file(o, out)) {
+            return Err(CliError::Error(format!(
+                "{other} and {opt} both name {}: each output needs a file of its own",
+                out.display()
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// An output file written under a temporary name beside it and renamed into place
+/// by [`AtomicFile::commit`]; dropped uncommitted (an error, an interrupt), it
+/// removes the temporary file and leaves the old file, if any, as it was.
+pub struct AtomicFile {
+    path: PathBuf,
+    tmp: PathBuf,
+    writer: Option<std::io::BufWriter<std::fs::File>>,
+}
+
+impl AtomicFile {
+    /// Creates the temporary file (and the missing directories of `path`).
+    pub fn create(path: &Path) -> Result<Self, CliError> {
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir)
+                .map_err(|e| CliError::Error(format!("cannot create {}: {e}", dir.display())))?;
+        }
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
+        let tmp = path.with_file_name(format!(".{name}.drcc-tmp"));
+        let f = std::fs::File::create(&tmp)
+            .map_err(|e| CliError::Error(format!("cannot create {}: {e}", path.display())))?;
+        Ok(AtomicFile {
+            path: path.to_path_buf(),
+            tmp,
+            writer: Some(std::io::BufWriter::new(f)),
+        })
+    }
+
+    /// The writer of the temporary file.
+    pub fn writer(&mut self) -> &mut std::io::BufWriter<std::fs::File> {
+        self.writer.as_mut().expect("not committed")
+    }
+
+    /// Flushes the temporary file and renames it over `path`.
+    pub fn commit(mut self) -> CliResult {
+        use std::io::Write;
+        let mut w = self.writer.take().expect("not committed");
+        w.flush()
+            .map_err(|e| CliError::Error(format!("cannot write {}: {e}", self.path.display())))?;
+        drop(w);
+        std::fs::rename(&self.tmp, &self.path)
+            .map_err(|e| CliError::Error(format!("cannot replace {}: {e}", self.path.display())))
+    }
+}
+
+impl Drop for AtomicFile {
+    fn drop(&mut self) {
+        if self.writer.take().is_some() {
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
 }
 
 /// A path to *read* from the workspace: as given if it exists relative to the

@@ -3,7 +3,7 @@
 //! `a_stuck_dominant`, ..., or `all`), and the switchover table (`switchover`) — on
 //! one engine, or on two in lock step with `--cosim`.
 
-use super::{CliError, CliResult};
+use super::{write_atomic, CliError, CliResult};
 use drcc_cosim::dual::host::Policy;
 use drcc_testbench::dual::{run_dual_traced, DualFault, DualScenario};
 use drcc_testbench::paper::{run_paper, switchover_table, Rate};
@@ -35,21 +35,34 @@ pub fn run(
     what: &str,
     engine_name: &str,
     cosim: Option<&str>,
-    policy_name: &str,
+    policy_name: Option<&str>,
     vcd: Option<&Path>,
 ) -> CliResult {
     let kind = engine(engine_name)?;
     let other = cosim.map(engine).transpose()?;
+    if let (Some(p), false) = (policy_name, what == "paper") {
+        policy(p)?;
+        return Err(CliError::Error(format!(
+            "--policy {p} applies to `drcc redundancy paper` only: the fault scenarios and \
+             tables run their own documented policies (docs/drcc.md); leave out --policy"
+        )));
+    }
+    if let (Some(path), "table" | "switchover") = (vcd, what) {
+        return Err(CliError::Error(format!(
+            "--vcd {}: `{what}` runs many scenarios and writes no trace; give `paper` or \
+             one fault (or `all`, one file per fault) to trace it",
+            path.display()
+        )));
+    }
     match what {
         "paper" => {
+            let policy_name = policy_name.unwrap_or("error-passive");
             let p = policy(policy_name)?;
             let mut buf = Vec::new();
             let r = run_paper(p, Rate::M1, kind, other, vcd.map(|_| &mut buf))
                 .map_err(CliError::Error)?;
             if let Some(path) = vcd {
-                std::fs::write(path, &buf).map_err(|e| {
-                    CliError::Error(format!("cannot write {}: {e}", path.display()))
-                })?;
+                write_atomic(path, &buf)?;
                 println!("wrote {}", path.display());
             }
             println!(
@@ -105,9 +118,7 @@ pub fn run(
                     } else {
                         path.to_path_buf()
                     };
-                    std::fs::write(&path, &buf).map_err(|e| {
-                        CliError::Error(format!("cannot write {}: {e}", path.display()))
-                    })?;
+                    write_atomic(&path, &buf)?;
                     println!("wrote {}", path.display());
                 }
                 let ok = r.exactly_once();

@@ -1,8 +1,6 @@
 //! `drcc sim`, `drcc cosim` and `drcc demo`: run scenarios, print per-node tables
 //! of sent and received frames, check expectations, write traces.
 
-use std::fs::File;
-use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use drcc_cosim::cosim::CosimError;
@@ -15,7 +13,7 @@ use drcc_testbench::run::{self, RunResult};
 use drcc_testbench::scenario::mode_name;
 use drcc_testbench::Scenario;
 
-use super::{CliError, CliResult};
+use super::{check_outputs, AtomicFile, CliError, CliResult};
 
 /// The demo scenario, built in so `drcc demo` runs from anywhere.
 const DEMO_TOML: &str = include_str!("../../testbench/scenarios/demo.toml");
@@ -146,16 +144,6 @@ fn verdict(r: &RunResult) -> CliResult {
     }
 }
 
-fn create(path: &Path) -> Result<BufWriter<File>, CliError> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| CliError::Error(format!("cannot create {}: {e}", dir.display())))?;
-    }
-    File::create(path)
-        .map(BufWriter::new)
-        .map_err(|e| CliError::Error(format!("cannot create {}: {e}", path.display())))
-}
-
 /// Runs a scenario on one engine, writing the requested traces.
 fn run_traced(
     sc: &Scenario,
@@ -163,8 +151,8 @@ fn run_traced(
     vcd: Option<&Path>,
     bus_vcd: Option<&Path>,
 ) -> Result<RunResult, CliError> {
-    let mut full_buf = vcd.map(create).transpose()?;
-    let mut bus_buf = bus_vcd.map(create).transpose()?;
+    let mut full_file = vcd.map(AtomicFile::create).transpose()?;
+    let mut bus_file = bus_vcd.map(AtomicFile::create).transpose()?;
     let comment = format!(
         "drcc sim {} on {}; clock_hz={}",
         sc.name,
@@ -175,16 +163,18 @@ fn run_traced(
         let p = p.map(|p| p.display().to_string()).unwrap_or_default();
         move |e: std::io::Error| format!("cannot write {p}: {e}")
     };
-    let mut full = match full_buf.as_mut() {
-        Some(b) => Some(
-            VcdWriter::new(b, sc.clock_hz, &[("tb", sc.nodes.len())], &comment).map_err(io(vcd))?,
+    let mut full = match full_file.as_mut() {
+        Some(f) => Some(
+            VcdWriter::new(f.writer(), sc.clock_hz, &[("tb", sc.nodes.len())], &comment)
+                .map_err(io(vcd))?,
         ),
         None => None,
     };
-    let mut bus = match bus_buf.as_mut() {
-        Some(b) => {
-            Some(BusVcdWriter::new(b, sc.clock_hz, sc.nodes.len(), &comment).map_err(io(bus_vcd))?)
-        }
+    let mut bus = match bus_file.as_mut() {
+        Some(f) => Some(
+            BusVcdWriter::new(f.writer(), sc.clock_hz, sc.nodes.len(), &comment)
+                .map_err(io(bus_vcd))?,
+        ),
         None => None,
     };
     let result = run::run_observed(sc, kind, |s: &Sample| {
@@ -204,11 +194,8 @@ fn run_traced(
     }
     drop(full);
     drop(bus);
-    if let Some(b) = full_buf.as_mut() {
-        b.flush().map_err(io(vcd))?;
-    }
-    if let Some(b) = bus_buf.as_mut() {
-        b.flush().map_err(io(bus_vcd))?;
+    for f in [full_file, bus_file].into_iter().flatten() {
+        f.commit()?;
     }
     Ok(result)
 }
@@ -216,6 +203,11 @@ fn run_traced(
 /// `drcc sim SCENARIO [--engine E] [--vcd FILE] [--bus-vcd FILE]`.
 pub fn sim(path: &Path, engine: &str, vcd: Option<&Path>, bus_vcd: Option<&Path>) -> CliResult {
     let kind: EngineKind = engine.parse()?;
+    let outputs: Vec<(&str, &Path)> = [("--vcd", vcd), ("--bus-vcd", bus_vcd)]
+        .into_iter()
+        .filter_map(|(o, p)| p.map(|p| (o, p)))
+        .collect();
+    check_outputs(&[path], &outputs)?;
     let sc = load(path)?;
     available(kind)?;
     print_header(&sc, &format!("{} ({})", kind.name(), engine_role(kind)));

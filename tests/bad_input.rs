@@ -1,0 +1,142 @@
+//! Bad input on the command line (issue 15, part 1): every case exits 2 with one
+//! message that names what is wrong and how to fix it, and changes no file; the
+//! run does not start. (Generated files and the checkout rule:
+//! `tests/generated_files.rs`.)
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn drcc_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_drcc"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .expect("cannot run the drcc binary")
+}
+
+/// A scratch directory holding a copy of the demo scenario as `x.toml`.
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("drcc-bad-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    let demo = Path::new(env!("CARGO_MANIFEST_DIR")).join("testbench/scenarios/demo.toml");
+    std::fs::copy(demo, d.join("x.toml")).unwrap();
+    d
+}
+
+/// Every file in `d` (not recursive) with its content.
+fn files(d: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut v: Vec<_> = std::fs::read_dir(d)
+        .unwrap()
+        .flatten()
+        .map(|e| (e.path(), std::fs::read(e.path()).unwrap_or_default()))
+        .collect();
+    v.sort();
+    v
+}
+
+/// Runs `args` in `d` and checks: exit 2, one line naming `what` and `fix`, and
+/// every file of `d` as it was.
+fn refused(d: &Path, args: &[&str], what: &str, fix: &str) {
+    let before = files(d);
+    let o = drcc_in(d, args);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(
+        err.trim_end().lines().count(),
+        1,
+        "{args:?}: one message: {err}"
+    );
+    assert!(
+        err.contains(what),
+        "{args:?} names the problem ({what}): {err}"
+    );
+    assert!(err.contains(fix), "{args:?} names the fix ({fix}): {err}");
+    assert!(o.stdout.is_empty(), "{args:?}: the run did not start");
+    assert_eq!(files(d), before, "{args:?} changed a file");
+}
+
+#[test]
+fn an_output_never_replaces_the_input_or_another_output() {
+    let d = scratch("outputs");
+    refused(
+        &d,
+        &["sim", "x.toml", "--vcd", "x.toml"],
+        "that is the input x.toml",
+        "give another file name",
+    );
+    refused(
+        &d,
+        &["sim", "x.toml", "--bus-vcd", "./x.toml"],
+        "that is the input",
+        "give another file name",
+    );
+    refused(
+        &d,
+        &[
+            "sim",
+            "x.toml",
+            "--vcd",
+            "t.vcd",
+            "--bus-vcd",
+            "sub/../t.vcd",
+        ],
+        "--vcd and --bus-vcd both name",
+        "each output needs a file of its own",
+    );
+    // a good run writes both traces, through temporary files that do not stay
+    let o = drcc_in(
+        &d,
+        &["sim", "x.toml", "--vcd", "t.vcd", "--bus-vcd", "b.vcd"],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let names: Vec<String> = files(&d)
+        .iter()
+        .map(|(p, _)| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        ["b.vcd", "t.vcd", "x.toml"],
+        "no temporary file left"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn redundancy_options_that_would_be_ignored_are_refused() {
+    let d = scratch("redundancy");
+    let policies = "the policies are error-passive, none, k1 .. k15";
+    refused(
+        &d,
+        &["redundancy", "cut_a", "--policy", "bogus"],
+        "--policy bogus",
+        policies,
+    );
+    refused(
+        &d,
+        &["redundancy", "table", "--policy", "bogus"],
+        "--policy bogus",
+        policies,
+    );
+    refused(
+        &d,
+        &["redundancy", "paper", "--policy", "k16"],
+        "--policy k16",
+        "k1 .. k15",
+    );
+    refused(
+        &d,
+        &["redundancy", "table", "--policy", "k2"],
+        "applies to `drcc redundancy paper` only",
+        "leave out --policy",
+    );
+    for what in ["table", "switchover"] {
+        refused(
+            &d,
+            &["redundancy", what, "--vcd", "t.vcd"],
+            "writes no trace",
+            "give `paper` or one fault",
+        );
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -24,10 +24,22 @@ impl fmt::Display for ScenarioError {
         }
         write!(f, ": ")?;
         if let Some(field) = &self.field {
-            write!(f, "{field}: ")?;
+            write!(f, "{}: ", clip(field, 80))?;
         }
-        write!(f, "{}", self.message)
+        write!(f, "{}", clip(&self.message, 400))
     }
+}
+
+/// At most `n` characters of `s` (text from the file can be anything, e.g. a
+/// 200 KB key), on one line, saying how much was left out.
+pub(super) fn clip(s: &str, n: usize) -> String {
+    let one_line = s.replace(['\n', '\r'], " ");
+    let total = one_line.chars().count();
+    if total <= n {
+        return one_line;
+    }
+    let head: String = one_line.chars().take(n).collect();
+    format!("{head}... ({} more characters)", total - n)
 }
 
 impl std::error::Error for ScenarioError {}

@@ -108,16 +108,29 @@ impl Loader<'_> {
         field: &str,
         cpb: u64,
     ) -> Result<u64, ScenarioError> {
-        match (at_cycle, at_bit) {
-            (Some(_), Some(b)) => Err(self.err(
-                b.span(),
-                &format!("{field}.at_bit"),
-                "give either `at_cycle` or `at_bit`, not both",
-            )),
-            (Some(c), None) => Ok(*c.get_ref()),
-            (None, Some(b)) => Ok(b.get_ref().saturating_mul(cpb)),
-            (None, None) => Ok(0),
+        let (at, span, key) = match (at_cycle, at_bit) {
+            (Some(_), Some(b)) => {
+                return Err(self.err(
+                    b.span(),
+                    &format!("{field}.at_bit"),
+                    "give either `at_cycle` or `at_bit`, not both",
+                ))
+            }
+            (Some(c), None) => (*c.get_ref(), c.span(), "at_cycle"),
+            (None, Some(b)) => (b.get_ref().saturating_mul(cpb), b.span(), "at_bit"),
+            (None, None) => return Ok(0),
+        };
+        if at > MAX_RUN_CYCLES {
+            return Err(self.err(
+                span,
+                &format!("{field}.{key}"),
+                format!(
+                    "due at clock cycle {at}, beyond the longest run drcc simulates \
+                     ({MAX_RUN_CYCLES} cycles): give an earlier time"
+                ),
+            ));
         }
+        Ok(at)
     }
 
     pub(super) fn frame(

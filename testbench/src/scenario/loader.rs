@@ -9,7 +9,74 @@ pub(super) struct Loader<'a> {
     pub(super) file: &'a str,
 }
 
+/// The longest node name.
+const MAX_NAME_CHARS: usize = 64;
+
 impl Loader<'_> {
+    /// The run's length is at most [`MAX_RUN_CYCLES`], and every frame, fault and
+    /// abort is due before its end (one scheduled later would never happen, and
+    /// the run would still pass).
+    fn within_run(
+        &self,
+        raw: &RawScenario,
+        frames: &[ScheduledFrame],
+        faults: &[Fault],
+        aborts: &[ScheduledAbort],
+        max_cycles: u64,
+    ) -> Result<(), ScenarioError> {
+        let limit = [
+            raw.max_cycles.as_ref().map(|s| (s.span(), "max_cycles")),
+            raw.max_bits.as_ref().map(|s| (s.span(), "max_bits")),
+            raw.max_ms.as_ref().map(|s| (s.span(), "max_ms")),
+        ]
+        .into_iter()
+        .flatten()
+        .next();
+        if max_cycles > MAX_RUN_CYCLES {
+            let (span, key) = limit.unwrap_or((raw.name.span(), "max_cycles"));
+            return Err(self.err(
+                span,
+                key,
+                format!(
+                    "the run would last {max_cycles} clock cycles, more than the longest run \
+                     drcc simulates ({MAX_RUN_CYCLES}): give a shorter limit"
+                ),
+            ));
+        }
+        let at_span = |c: &Option<Spanned<u64>>, b: &Option<Spanned<u64>>, whole: Range<usize>| {
+            c.as_ref().or(b.as_ref()).map(|s| s.span()).unwrap_or(whole)
+        };
+        let late = |what: String, at: u64, span: Range<usize>| {
+            self.err(
+                span,
+                &what,
+                format!(
+                    "due at clock cycle {at}, after the run's end (cycle {max_cycles}): it would \
+                     never happen; give an earlier time or a longer max_cycles / max_bits / max_ms"
+                ),
+            )
+        };
+        for (i, (f, r)) in frames.iter().zip(&raw.frame).enumerate() {
+            if f.at_cycle >= max_cycles {
+                let rf = r.get_ref();
+                return Err(late(format!("frame[{i}]"), f.at_cycle, at_span(&rf.at_cycle, &rf.at_bit, r.span())));
+            }
+        }
+        for (i, (f, r)) in faults.iter().zip(&raw.fault).enumerate() {
+            if f.start >= max_cycles {
+                let rf = r.get_ref();
+                return Err(late(format!("fault[{i}]"), f.start, at_span(&rf.at_cycle, &rf.at_bit, r.span())));
+            }
+        }
+        for (i, (a, r)) in aborts.iter().zip(&raw.abort).enumerate() {
+            if a.at_cycle >= max_cycles {
+                let ra = r.get_ref();
+                return Err(late(format!("abort[{i}]"), a.at_cycle, at_span(&ra.at_cycle, &ra.at_bit, r.span())));
+            }
+        }
+        Ok(())
+    }
+
     pub(super) fn err(
         &self,
         span: Range<usize>,
@@ -71,7 +138,10 @@ impl Loader<'_> {
                 for item in list {
                     match item {
                         toml::Value::String(s)
-                            if !s.is_empty() && !s.contains(char::is_whitespace) =>
+                            if !s.is_empty()
+                                && s.chars().count() <= MAX_NAME_CHARS
+                                && !s.contains(char::is_whitespace)
+                                && !s.contains(char::is_control) =>
                         {
                             if v.contains(s) {
                                 return Err(self.err(
@@ -86,7 +156,11 @@ impl Loader<'_> {
                             return Err(self.err(
                                 raw.nodes.span(),
                                 "nodes",
-                                "node names must be non-empty strings without spaces",
+                                format!(
+                                    "node names must be non-empty strings of at most \
+                                     {MAX_NAME_CHARS} characters, without spaces or control \
+                                     characters"
+                                ),
                             ))
                         }
                     }
@@ -116,6 +190,17 @@ impl Loader<'_> {
         let clock_hz = *raw.clock_hz.get_ref();
         if clock_hz == 0 {
             return Err(self.err(raw.clock_hz.span(), "clock_hz", "must be at least 1 Hz"));
+        }
+        if clock_hz > MAX_CLOCK_HZ {
+            return Err(self.err(
+                raw.clock_hz.span(),
+                "clock_hz",
+                format!(
+                    "{clock_hz} Hz: the traces' timescale is 1 ns and a half clock period \
+                     must last at least 1 ns, so no clock edge is lost; give at most \
+                     {MAX_CLOCK_HZ} (500 MHz)"
+                ),
+            ));
         }
         let timing = match (&raw.bitrate, &raw.timing) {
             (Some(_), Some(t)) => {
@@ -193,6 +278,20 @@ impl Loader<'_> {
                     }
                     let check = |l: &Option<Spanned<Vec<usize>>>, what: &str| {
                         if let Some(l) = l {
+                            let list = l.get_ref();
+                            if let Some((k, _)) =
+                                list.iter().enumerate().find(|(k, x)| list[..*k].contains(x))
+                            {
+                                return Err(self.err(
+                                    l.span(),
+                                    &format!("expect[{i}].{what}"),
+                                    format!(
+                                        "frame {} is listed twice: each frame is expected \
+                                         exactly once; list it once",
+                                        list[k]
+                                    ),
+                                ));
+                            }
                             if let Some(bad) = l.get_ref().iter().find(|&&k| k >= frames.len()) {
                                 return Err(self.err(
                                     l.span(),
@@ -267,6 +366,7 @@ impl Loader<'_> {
         } else {
             Scenario::default_max_cycles(&frames, cpb)
         };
+        self.within_run(&raw, &frames, &faults, &aborts, max_cycles)?;
         let reset_cycles = match &raw.reset_cycles {
             Some(r) if (1..=1000).contains(r.get_ref()) => *r.get_ref(),
             Some(r) => return Err(self.err(r.span(), "reset_cycles", "legal values are 1..=1000")),

@@ -80,6 +80,19 @@ use error::{field_at, friendly, line_of};
 use loader::Loader;
 use raw::*;
 
+/// The longest run a scenario may ask for, in clock cycles (about 5 minutes of
+/// the model on one core for a few nodes): a due time, a fault or a run limit
+/// beyond it is refused instead of running for days.
+pub const MAX_RUN_CYCLES: u64 = 1_000_000_000;
+
+/// The largest scenario file read (a scenario is a small TOML file; `drcc sim
+/// /dev/zero` must not read without end).
+pub const MAX_SCENARIO_BYTES: u64 = 1 << 20;
+
+/// The largest clock: the traces' timescale is 1 ns and a half clock period must
+/// be at least one of its steps, so that no clock edge is lost.
+pub const MAX_CLOCK_HZ: u64 = 500_000_000;
+
 /// A frame to send: by whom, when, what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ScheduledFrame {
@@ -181,19 +194,60 @@ impl Scenario {
 
     /// Loads and checks a scenario file.
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
+        use std::io::Read;
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| ScenarioError {
+        let err = |message: String| ScenarioError {
             file: file.clone(),
             line: None,
             field: None,
-            message: format!("cannot read the scenario file: {e}"),
-        })?;
+            message,
+        };
+        let mut bytes = Vec::new();
+        std::fs::File::open(path)
+            .and_then(|f| f.take(MAX_SCENARIO_BYTES + 1).read_to_end(&mut bytes))
+            .map_err(|e| err(format!("cannot read the scenario file: {e}")))?;
+        if bytes.len() as u64 > MAX_SCENARIO_BYTES {
+            return Err(err(format!(
+                "larger than {MAX_SCENARIO_BYTES} bytes: a scenario is a small TOML file; \
+                 give one (see README.md, \"Scenario format\")"
+            )));
+        }
+        let text = String::from_utf8(bytes)
+            .map_err(|e| err(format!("not UTF-8 text (byte {}): give a TOML file", e.utf8_error().valid_up_to())))?;
         Scenario::parse(&text, &file)
     }
 
     /// Parses and checks scenario text; `file` names it in errors.
     pub fn parse(text: &str, file: &str) -> Result<Scenario, ScenarioError> {
         let raw: RawScenario = toml::from_str(text).map_err(|e| {
+            // a missing key has no place of its own: serde reports the table that
+            // lacks it (for the top level the whole document, i.e. line 1 and
+            // whatever key is there), so name the key and the table
+            if let Some(key) = e
+                .message()
+                .strip_prefix("missing field `")
+                .and_then(|m| m.split('`').next())
+            {
+                let table = e
+                    .span()
+                    .filter(|s| s.start > 0)
+                    .and_then(|s| field_at(text, s.start).map(|f| (line_of(text, s.start), f)));
+                let (line, field, place) = match table {
+                    Some((l, t)) => {
+                        let t = t.split('.').next().unwrap_or(&t).to_string();
+                        (Some(l), Some(format!("{t}.{key}")), format!("in {t}"))
+                    }
+                    None => (None, Some(key.to_string()), "at the top level".to_string()),
+                };
+                return ScenarioError {
+                    file: file.to_string(),
+                    line,
+                    field,
+                    message: format!(
+                        "missing: `{key}` is required {place} (see README.md, \"Scenario format\")"
+                    ),
+                };
+            }
             let span = e.span();
             let (line, field) = match &span {
                 Some(s) => (Some(line_of(text, s.start)), field_at(text, s.start)),

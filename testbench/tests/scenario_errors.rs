@@ -277,3 +277,127 @@ fn controller_configuration_keys() {
     assert!(sc.to_toml().contains("\newl = 7\n"));
     assert!(!sc.to_toml().contains("node_config"));
 }
+
+/// Issue 15: what cannot finish, or would be silently ignored, is refused with the
+/// limit or the fix named (no run for days, no PASS with a fault never applied).
+#[test]
+fn refused_before_the_run_with_the_limit_named() {
+    let contains = |body: &str, line: &str, parts: &[&str]| {
+        let e = err(body);
+        assert!(e.starts_with(&format!("bad.toml:{line}")), "{e}");
+        for p in parts {
+            assert!(e.contains(p), "{p:?} in: {e}");
+        }
+        assert_eq!(e.lines().count(), 1, "{e}");
+    };
+    // a due time no run reaches (issue: at_bit = 1e12, at_cycle = i64::MAX)
+    contains(
+        &format!("{FRAME}at_bit = 1_000_000_000_000\n"),
+        "8: frame[0].at_bit",
+        &[
+            "beyond the longest run",
+            "1000000000 cycles",
+            "give an earlier time",
+        ],
+    );
+    contains(
+        &format!("{FRAME}at_cycle = 9223372036854775807\n"),
+        "8: frame[0].at_cycle",
+        &["beyond the longest run"],
+    );
+    // a run limit beyond the longest run
+    contains(
+        &format!("max_bits = 1_000_000_000\n{FRAME}"),
+        "4: max_bits",
+        &[
+            "would last 16000000000 clock cycles",
+            "give a shorter limit",
+        ],
+    );
+    // a fault or an abort after the run's end would never be applied
+    contains(
+        &format!("max_bits = 1000\n{FRAME}[[fault]]\nkind = \"flip\"\nat_bit = 2000\n"),
+        "11: fault[0]",
+        &[
+            "after the run's end (cycle 16000)",
+            "never happen",
+            "max_cycles / max_bits / max_ms",
+        ],
+    );
+    contains(
+        &format!("max_cycles = 500\n{FRAME}[[abort]]\nnode = \"a\"\nat_cycle = 500\n"),
+        "11: abort[0]",
+        &["after the run's end (cycle 500)"],
+    );
+    // a frame expected twice is refused, not reported as "not received"
+    contains(
+        &format!("{FRAME}[[expect]]\nnode = \"b\"\nreceives = [0, 0]\n"),
+        "10: expect[0].receives",
+        &["frame 0 is listed twice", "list it once"],
+    );
+}
+
+#[test]
+fn names_clocks_and_keys_are_checked_and_messages_stay_short() {
+    let text = |head: &str, body: &str| format!("name = \"bad\"\n{head}{body}");
+    let parse = |t: &str| Scenario::parse(t, "bad.toml").unwrap_err().to_string();
+    // a control character in a node name would reach the terminal raw
+    let e = parse(&text(
+        "clock_hz = 8_000_000\nnodes = [\"a\", \"b\\u001b[2J\"]\n",
+        "bitrate = 500_000\n",
+    ));
+    assert!(
+        e.contains("bad.toml:3: nodes:") && e.contains("without spaces or control characters"),
+        "{e}"
+    );
+    assert!(!e.contains('\u{1b}'), "{e:?}");
+    // a clock whose half period is under the traces' 1 ns step
+    let e = parse(&text(
+        "clock_hz = 600_000_000\nnodes = 2\n",
+        "bitrate = 500_000\n",
+    ));
+    assert!(
+        e.contains("bad.toml:2: clock_hz:") && e.contains("give at most 500000000"),
+        "{e}"
+    );
+    // a missing required key is named where it is missing, not at line 1
+    let e = parse(&text("nodes = 2\n", "bitrate = 500_000\n"));
+    assert!(
+        e.starts_with("bad.toml: clock_hz: missing: `clock_hz` is required at the top level"),
+        "{e}"
+    );
+    let e = parse(&text(
+        "clock_hz = 8_000_000\nnodes = 2\n",
+        "bitrate = 500_000\n[[frame]]\nnode = 0\n",
+    ));
+    assert!(
+        e.starts_with("bad.toml:5: frame[0].id: missing: `id` is required in frame[0]"),
+        "{e}"
+    );
+    // a pathological key does not make a 200 KB message
+    let key = "k".repeat(200_000);
+    let e = parse(&text(
+        "clock_hz = 8_000_000\nnodes = 2\n",
+        &format!("{key} = 1\n"),
+    ));
+    assert!(e.len() < 1200, "{} characters", e.len());
+    assert!(e.contains("more characters)"), "{}", &e[..200]);
+}
+
+#[test]
+fn an_endless_or_huge_file_is_not_read_to_the_end() {
+    let dir = std::env::temp_dir().join(format!("drcc-scenario-big-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let big = dir.join("big.toml");
+    std::fs::write(&big, "# x\n".repeat(300_000)).unwrap();
+    let e = Scenario::load(&big).unwrap_err().to_string();
+    assert!(
+        e.contains("larger than 1048576 bytes") && e.contains("a scenario is a small TOML file"),
+        "{e}"
+    );
+    let e = Scenario::load(std::path::Path::new("/dev/zero"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("larger than 1048576 bytes"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -59,19 +59,31 @@ impl Loader<'_> {
         for (i, (f, r)) in frames.iter().zip(&raw.frame).enumerate() {
             if f.at_cycle >= max_cycles {
                 let rf = r.get_ref();
-                return Err(late(format!("frame[{i}]"), f.at_cycle, at_span(&rf.at_cycle, &rf.at_bit, r.span())));
+                return Err(late(
+                    format!("frame[{i}]"),
+                    f.at_cycle,
+                    at_span(&rf.at_cycle, &rf.at_bit, r.span()),
+                ));
             }
         }
         for (i, (f, r)) in faults.iter().zip(&raw.fault).enumerate() {
             if f.start >= max_cycles {
                 let rf = r.get_ref();
-                return Err(late(format!("fault[{i}]"), f.start, at_span(&rf.at_cycle, &rf.at_bit, r.span())));
+                return Err(late(
+                    format!("fault[{i}]"),
+                    f.start,
+                    at_span(&rf.at_cycle, &rf.at_bit, r.span()),
+                ));
             }
         }
         for (i, (a, r)) in aborts.iter().zip(&raw.abort).enumerate() {
             if a.at_cycle >= max_cycles {
                 let ra = r.get_ref();
-                return Err(late(format!("abort[{i}]"), a.at_cycle, at_span(&ra.at_cycle, &ra.at_bit, r.span())));
+                return Err(late(
+                    format!("abort[{i}]"),
+                    a.at_cycle,
+                    at_span(&ra.at_cycle, &ra.at_bit, r.span()),
+                ));
             }
         }
         Ok(())
@@ -279,8 +291,10 @@ impl Loader<'_> {
                     let check = |l: &Option<Spanned<Vec<usize>>>, what: &str| {
                         if let Some(l) = l {
                             let list = l.get_ref();
-                            if let Some((k, _)) =
-                                list.iter().enumerate().find(|(k, x)| list[..*k].contains(x))
+                            if let Some((k, _)) = list
+                                .iter()
+                                .enumerate()
+                                .find(|(k, x)| list[..*k].contains(x))
                             {
                                 return Err(self.err(
                                     l.span(),

@@ -212,8 +212,12 @@ impl Scenario {
                  give one (see README.md, \"Scenario format\")"
             )));
         }
-        let text = String::from_utf8(bytes)
-            .map_err(|e| err(format!("not UTF-8 text (byte {}): give a TOML file", e.utf8_error().valid_up_to())))?;
+        let text = String::from_utf8(bytes).map_err(|e| {
+            err(format!(
+                "not UTF-8 text (byte {}): give a TOML file",
+                e.utf8_error().valid_up_to()
+            ))
+        })?;
         Scenario::parse(&text, &file)
     }
 

@@ -140,3 +140,52 @@ fn redundancy_options_that_would_be_ignored_are_refused() {
     }
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// `wave-diff` names the real cause: a file cut inside a line is not a VCD (exit 2);
+/// one cut at a line is a valid but shorter trace, which is not equal to the whole
+/// one (exit 1, naming the shorter file), even though every signal agrees over the
+/// span both cover; a different timescale alone is no difference.
+#[test]
+fn wave_diff_names_truncated_files_and_compares_across_timescales() {
+    let d = scratch("wave");
+    let o = drcc_in(&d, &["sim", "x.toml", "--vcd", "a.vcd"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let full = std::fs::read_to_string(d.join("a.vcd")).unwrap();
+    // cut inside a line
+    std::fs::write(d.join("cut.vcd"), &full[..full.len() / 2 + 3]).unwrap();
+    // cut at a line, half way
+    let lines: Vec<&str> = full.lines().collect();
+    std::fs::write(
+        d.join("short.vcd"),
+        lines[..lines.len() / 2].join("\n") + "\n",
+    )
+    .unwrap();
+    // the same trace in picoseconds
+    let ps: Vec<String> = lines
+        .iter()
+        .map(|l| match l.strip_prefix('#') {
+            Some(t) => format!("#{}", t.parse::<u64>().unwrap() * 1000),
+            None => l.replace("$timescale 1 ns $end", "$timescale 1 ps $end"),
+        })
+        .collect();
+    assert!(
+        full.contains("$timescale 1 ns $end"),
+        "the writer's timescale"
+    );
+    std::fs::write(d.join("ps.vcd"), ps.join("\n") + "\n").unwrap();
+
+    let o = drcc_in(&d, &["wave-diff", "a.vcd", "cut.vcd"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("cut.vcd: not a valid VCD file"), "{err}");
+
+    let o = drcc_in(&d, &["wave-diff", "a.vcd", "short.vcd"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("the files end at different times"), "{err}");
+    assert!(err.contains("short.vcd is shorter"), "{err}");
+
+    let o = drcc_in(&d, &["wave-diff", "ps.vcd", "a.vcd"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -16,8 +16,26 @@ pub fn diff(a: &Path, b: &Path, signals: &[String]) -> CliResult {
     println!("second file: {}", b.display());
     println!("{report}");
     if report.differs() {
-        Err(CliError::Failed("the waveforms differ".to_string()))
-    } else {
-        Ok(())
+        return Err(CliError::Failed("the waveforms differ".to_string()));
     }
+    // equal over the span both cover: a file that ends earlier (a truncated one,
+    // or a shorter run) is not equal to the other
+    let (end_a, end_b) = (
+        ta.end_time.saturating_mul(ta.unit_fs()),
+        tb.end_time.saturating_mul(tb.unit_fs()),
+    );
+    if end_a != end_b {
+        let ns = |fs: u64| fs as f64 / 1e6;
+        let short = if end_a < end_b { a } else { b };
+        return Err(CliError::Failed(format!(
+            "the files end at different times ({} at {} ns, {} at {} ns): {} is shorter, \
+             truncated or from a shorter run; compare traces of the same run",
+            a.display(),
+            ns(end_a),
+            b.display(),
+            ns(end_b),
+            short.display()
+        )));
+    }
+    Ok(())
 }

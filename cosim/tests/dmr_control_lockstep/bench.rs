@@ -345,7 +345,7 @@ impl Bench {
         if running {
             self.check_raises(&c, &inputs, &raised, &ev, &at);
             if clear_mailboxes {
-                shadow_mbx.clear_state();
+                shadow_mbx.clear_for_recovery();
             }
             assert_eq!(shadow_eng, self.model.eng, "{at}: engine registers");
             assert_eq!(shadow_mbx, self.model.mbx, "{at}: mailboxes");

@@ -13,11 +13,14 @@ use std::path::{Path, PathBuf};
 
 use super::{project_root, write_atomic, CliError, CliResult};
 
+/// Where a generated file goes, from its repository-relative path.
+type Placer = Box<dyn Fn(&Path) -> PathBuf>;
+
 /// Runs the command.
 pub fn run(out: Option<PathBuf>, check: bool) -> CliResult {
     // Where the files go: flat into `--out DIR`, or each at its place in the
     // checkout the command runs in.
-    let (dir, place): (PathBuf, Box<dyn Fn(&Path) -> PathBuf>) = match out {
+    let (dir, place): (PathBuf, Placer) = match out {
         Some(d) => (
             d.clone(),
             Box::new(move |rel: &Path| {

@@ -136,7 +136,7 @@ pub fn run(args: SynthArgs) -> CliResult {
             README_END,
             &table,
         )?;
-        write_atomic(&doc_path, &markdown::doc(&results, &flow.env))?;
+        write_atomic(&doc_path, markdown::doc(&results, &flow.env))?;
         if !args.json {
             print!("{table}");
             println!(

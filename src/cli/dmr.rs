@@ -6,7 +6,7 @@
 //! (`--startup`, the default, or `--runtime`), with `--vcd` and `--cosim`. An engine
 //! other than the model always runs with the model in lock step (the plan's oracle).
 
-use super::{project_root, rewrite_between_atomic, CliError, CliResult};
+use super::{project_root, rewrite_between_atomic, AtomicFile, CliError, CliResult};
 use drcc_testbench::dmr::load::{schedule, summary};
 use drcc_testbench::dmr::report::table_header;
 use drcc_testbench::dmr::{
@@ -181,22 +181,41 @@ fn one(
     other: Option<EngineKind>,
     vcd: Option<&Path>,
 ) -> CliResult {
-    // An unwritable trace path is refused before the run, not after it.
-    if let Some(path) = vcd {
-        std::fs::File::create(path).map_err(|e| {
-            error(format!(
-                "--vcd {}: cannot write it ({e}); give a path in an existing, writable directory",
-                path.display()
-            ))
-        })?;
-    }
+    // An unwritable trace path is refused before the run, not after it; the trace
+    // goes to a temporary file beside it and replaces it only when written.
+    let mut out = vcd
+        .map(|path| {
+            let dir_ok = path
+                .parent()
+                .is_none_or(|d| d.as_os_str().is_empty() || d.is_dir());
+            let file = if dir_ok {
+                AtomicFile::create(path)
+            } else {
+                Err(CliError::Error(String::new()))
+            };
+            file.map_err(|_| {
+                error(format!(
+                    "--vcd {}: cannot write it; give a path in a writable directory",
+                    path.display()
+                ))
+            })
+        })
+        .transpose()?;
+    let mut save = |buf: &[u8]| -> CliResult {
+        if let Some(mut f) = out.take() {
+            std::io::Write::write_all(f.writer(), buf)
+                .map_err(|e| error(format!("cannot write the trace: {e}")))?;
+            f.commit()?;
+        }
+        Ok(())
+    };
     let mut buf = Vec::new();
     let r = match run_row_traced(plan, row, kind, other, vcd.map(|_| &mut buf)) {
         Ok(r) => r,
         Err(e) => {
             // A divergence is what the trace is for: keep it up to that clock.
-            if let Some(path) = vcd {
-                if !buf.is_empty() && std::fs::write(path, &buf).is_ok() {
+            if let (Some(path), false) = (vcd, buf.is_empty()) {
+                if save(&buf).is_ok() {
                     return Err(error(format!(
                         "{e}; the trace up to there is in {}",
                         path.display()
@@ -213,8 +232,7 @@ fn one(
         Some(run_row(plan, Row::BASELINE, kind, None).map_err(error)?)
     };
     if let Some(path) = vcd {
-        std::fs::write(path, &buf)
-            .map_err(|e| error(format!("cannot write {}: {e}", path.display())))?;
+        save(&buf)?;
         println!("wrote {}", path.display());
     }
     print!("{}", table_header());

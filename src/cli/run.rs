@@ -144,6 +144,47 @@ fn verdict(r: &RunResult) -> CliResult {
     }
 }
 
+/// Progress of a long run on stderr: after the first 5 s of wall time, one line
+/// every 5 s with the cycle reached, the share of the run's limit and the speed
+/// (a short run prints nothing).
+struct Progress {
+    limit: u64,
+    start: std::time::Instant,
+    next: std::time::Duration,
+}
+
+impl Progress {
+    const EVERY: std::time::Duration = std::time::Duration::from_secs(5);
+
+    fn new(limit: u64) -> Self {
+        Progress {
+            limit,
+            start: std::time::Instant::now(),
+            next: Self::EVERY,
+        }
+    }
+
+    fn at(&mut self, cycle: u64) {
+        if cycle % 65_536 != 0 {
+            return;
+        }
+        let t = self.start.elapsed();
+        if t < self.next {
+            return;
+        }
+        self.next = t + Self::EVERY;
+        let rate = cycle as f64 / t.as_secs_f64();
+        let left = self.limit.saturating_sub(cycle) as f64 / rate.max(1.0);
+        eprintln!(
+            "drcc: cycle {cycle} of at most {} ({:.1} %), {:.2} M cycles/s, at most {:.0} s left",
+            self.limit,
+            100.0 * cycle as f64 / self.limit.max(1) as f64,
+            rate / 1e6,
+            left
+        );
+    }
+}
+
 /// Runs a scenario on one engine, writing the requested traces.
 fn run_traced(
     sc: &Scenario,
@@ -177,7 +218,9 @@ fn run_traced(
         ),
         None => None,
     };
+    let mut progress = Progress::new(sc.max_cycles);
     let result = run::run_observed(sc, kind, |s: &Sample| {
+        progress.at(s.cycle);
         if let Some(w) = full.as_mut() {
             w.write_cycle(&[s]).map_err(io(vcd))?;
         }
@@ -307,8 +350,7 @@ fn demo_drcc(channel_engine: EngineKind) -> CliResult {
     let r = run_paper(Policy::KFailed(1), Rate::K500, kind, None, Some(&mut vcd))
         .map_err(CliError::Error)?;
     let out = Path::new("out").join("drcc_paper.vcd");
-    std::fs::write(&out, &vcd)
-        .map_err(|e| CliError::Error(format!("cannot write {}: {e}", out.display())))?;
+    super::write_atomic(&out, &vcd)?;
     let names = [
         "idle1", "wait1", "ch1", "abort1", "wait2", "idle2", "wait3", "ch2", "abort2", "wait4",
     ];

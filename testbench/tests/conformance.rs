@@ -273,32 +273,6 @@ conformance! {
     iso_8_7_9_edge_after_sample_point_beyond_sjw_tx_verilator => timing::iso_8_7_9_edge_after_sample_point_beyond_sjw_tx;
     drcc_fig5_lone_transmitter_model,
     drcc_fig5_lone_transmitter_verilator => transmitter::drcc_fig5_lone_transmitter;
-}
-
-/// The strict ISO 11898-1 checks of two former deviations of the model (see
-/// docs/conformance.md, "Former deviations"); still ignored, they pass on both
-/// engines. Run them with `--ignored`.
-macro_rules! known_deviation {
-    ($($model:ident, $verilator:ident => $module:ident :: $func:ident;)*) => {
-        $(
-            #[test]
-            #[ignore = "known deviation of the model from ISO 11898-1, see docs/conformance.md"]
-            fn $model() {
-                $module::$func(&model_iut);
-            }
-
-            #[test]
-            #[ignore = "known deviation of the model from ISO 11898-1, see docs/conformance.md"]
-            fn $verilator() {
-                with_verilator(|iut| $module::$func(iut));
-            }
-        )*
-    };
-}
-
-known_deviation! {
-    strict_8_1_8_no_sof_bit_when_joining_model,
-    strict_8_1_8_no_sof_bit_when_joining_verilator => transmitter::strict_8_1_8_no_sof_bit_when_joining;
-    strict_8_6_19_base_ide_stuff_bit_model,
-    strict_8_6_19_base_ide_stuff_bit_verilator => transmitter::strict_8_6_19_base_ide_stuff_bit;
+    iso_8_6_19_base_ide_stuff_bit_is_not_arbitration_model,
+    iso_8_6_19_base_ide_stuff_bit_is_not_arbitration_verilator => transmitter::iso_8_6_19_base_ide_stuff_bit_is_not_arbitration;
 }

@@ -102,9 +102,13 @@ fn sof_at_intermission_3(iut: &Iut, t: BitTiming, bit2: u32, bit3: u32, sof_from
     s.push(Lt::R, Some(true), "Intermission 1");
     s.push_shaped(&[(Lt::R, bit2)], Some(true), "Intermission 2");
     if bit3 > 0 {
-        s.push_shaped(&[(Lt::R, bit3)], None, "Intermission 3");
+        s.push_shaped(&[(Lt::R, bit3)], Some(true), "Intermission 3");
     }
-    s.push(Lt::D, None, "SOF");
+    // Before the sample point of intermission bit 3 the edge is the IUT's SOF and
+    // it sends no SOF bit of its own (ISO 11898-1:2015 10.4.6.3): `tx` recessive.
+    // From idle it sends its own SOF from the tq after the edge (checked below).
+    let own_sof = if sof_from_idle { None } else { Some(true) };
+    s.push(Lt::D, own_sof, "SOF");
     s.transmit(&mine, 1..mine.len(), true, 0).intermission();
     let run = lt.run(&s);
     exp.rx_ok();

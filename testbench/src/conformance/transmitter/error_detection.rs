@@ -51,9 +51,8 @@ pub fn iso_8_2_1_bit_error_every_field(iut: &Iut) {
 }
 
 /// The recessive stuff bit after the IDE bit of a base frame: ISO 11898-1 puts
-/// it in the control field (rule c exception 2 does not apply: TEC + 8), the
-/// contract in arbitration (no change). Played only by
-/// [`strict_8_6_19_base_ide_stuff_bit`].
+/// it in the control field (rule c exception 2 does not apply: TEC + 8), and so
+/// does the contract (§4.4, §4.5).
 pub(super) fn base_ide_stuff_bit(fb: &FrameBits, p: usize) -> bool {
     let b = fb.bits[p];
     b.stuff && b.value && b.field == Field::Ide && !fb.frame.ide
@@ -62,18 +61,15 @@ pub(super) fn base_ide_stuff_bit(fb: &FrameBits, p: usize) -> bool {
 fn stuff_bits_tx(iut: &Iut, frames: &[Frame]) {
     for f in frames {
         let fb = FrameBits::new(f);
-        let pos: Vec<usize> = fb
-            .stuff_positions()
-            .into_iter()
-            .filter(|&p| !base_ide_stuff_bit(&fb, p))
-            .collect();
-        corrupt_each(iut, f, &pos);
+        corrupt_each(iut, f, &fb.stuff_positions());
     }
 }
 
 /// 8.2.3 (and 8.6.19): every stuff bit of base frames covering every field
 /// inverted: error flag from the next bit; TEC + 8, except a recessive stuff bit
-/// of the arbitration field read dominant (rule c exception 2: unchanged).
+/// of the arbitration field read dominant (rule c exception 2: unchanged). A
+/// base frame's IDE is control field (ISO 11898-1:2015 10.4.2.3), so a stuff bit
+/// after it is not arbitration: TEC + 8.
 pub fn iso_8_2_3_stuff_bit_errors_base(iut: &Iut) {
     stuff_bits_tx(iut, &stuffing_frames(false));
 }

@@ -29,7 +29,7 @@ pub fn iso_8_3_2_sof_at_intermission_bit_3_tx(iut: &Iut) {
     let (mut s, _) = bit_error_at_r0(&mut exp, &fb, 2);
     s.error_flag(true).error_delim();
     s.repeat(2, Lt::R, Some(true), "Intermission");
-    s.push(Lt::D, None, "Intermission 3 dominant");
+    s.push(Lt::D, Some(true), "Intermission 3 dominant");
     s.transmit(&fb, 1..fb.len(), true, 0).intermission();
     exp.tx_ok();
     let run = lt.run(&s);

@@ -53,7 +53,7 @@ pub fn iso_8_4_3_dominant_intermission_3_is_sof(iut: &Iut) {
     s.request_at(i, b.frame);
     s.overload_delim();
     s.repeat(2, Lt::R, Some(true), "Intermission");
-    s.push(Lt::D, None, "Intermission 3 dominant");
+    s.push(Lt::D, Some(true), "Intermission 3 dominant");
     s.transmit(&b, 1..b.len(), true, 0).intermission();
     let run = lt.run(&s);
     exp.tx_ok();

@@ -3,10 +3,11 @@
 
 use super::*;
 
-/// Known deviation (see docs/conformance.md): the recessive stuff bit after the
-/// IDE bit of a base frame, read dominant, is a stuff error outside the
-/// arbitration field (ISO 11898-1:2015 10.4.2.3, 12.1.4.2 c): TEC + 8.
-pub fn strict_8_6_19_base_ide_stuff_bit(iut: &Iut) {
+/// 8.6.19, its edge: the recessive stuff bit after the IDE bit of a base frame,
+/// read dominant, is a stuff error outside the arbitration field (ISO
+/// 11898-1:2015 10.4.2.3: in base format IDE is control field; 12.1.4.2 rule c
+/// exception 2 covers arbitration only): TEC + 8.
+pub fn iso_8_6_19_base_ide_stuff_bit_is_not_arbitration(iut: &Iut) {
     // ID ...000, RTR 0, IDE 0: five dominant bits, then a recessive stuff bit.
     let f = base(0x118, &[0x19]);
     let fb = FrameBits::new(&f);

@@ -165,7 +165,7 @@ impl Progress {
     }
 
     fn at(&mut self, cycle: u64) {
-        if cycle % 65_536 != 0 {
+        if !cycle.is_multiple_of(65_536) {
             return;
         }
         let t = self.start.elapsed();

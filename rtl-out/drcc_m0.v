@@ -20587,6 +20587,12 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     reg  rxp_b__d;
     wire  rxp_b__q;
     reg  rxp_b__clock;
+    reg  [98:0] rxf_a__d;
+    wire  [98:0] rxf_a__q;
+    reg  rxf_a__clock;
+    reg  [98:0] rxf_b__d;
+    wire  [98:0] rxf_b__q;
+    reg  rxf_b__clock;
     reg  sel__d;
     wire  sel__q;
     reg  sel__clock;
@@ -20720,6 +20726,16 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         .q(rxp_b__q),
         .clock(rxp_b__clock)
     );
+    drcc_m0__rxw__rxf_a rxf_a(
+        .d(rxf_a__d),
+        .q(rxf_a__q),
+        .clock(rxf_a__clock)
+    );
+    drcc_m0__rxw__rxf_b rxf_b(
+        .d(rxf_b__d),
+        .q(rxf_b__q),
+        .clock(rxf_b__clock)
+    );
     drcc_m0__rxw__sel sel(
         .d(sel__d),
         .q(sel__q),
@@ -20811,6 +20827,8 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         w_state__clock = clk;
         rxp_a__clock = clk;
         rxp_b__clock = clk;
+        rxf_a__clock = clk;
+        rxf_b__clock = clk;
         sel__clock = clk;
         scan_i__clock = clk;
         hit__clock = clk;
@@ -20831,6 +20849,8 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         w_state__d = w_state__q;
         rxp_a__d = rxp_a__q;
         rxp_b__d = rxp_b__q;
+        rxf_a__d = rxf_a__q;
+        rxf_b__d = rxf_b__q;
         sel__d = sel__q;
         scan_i__d = scan_i__q;
         hit__d = hit__q;
@@ -20857,10 +20877,10 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         stats__clk = clk;
         stats__rst = rst;
         if (sel__q) begin
-            frame_sel = frame_b;
+            frame_sel = rxf_b__q;
         end
         else begin
-            frame_sel = frame_a;
+            frame_sel = rxf_a__q;
         end
         scan_e = scan_i__q[(32'h0)+:(5)] - one5;
         if (free_found__q) begin
@@ -21098,9 +21118,11 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         end
         if (rxv_a) begin
             rxp_a__d = 1'b1;
+            rxf_a__d = frame_a;
         end
         if (rxv_b) begin
             rxp_b__d = 1'b1;
+            rxf_b__d = frame_b;
         end
         if (release_set) begin
             release_q__d = 1'b1;
@@ -21584,6 +21606,38 @@ module drcc_m0__rxw__release_q(d,q,clock);
     end
           
 endmodule // drcc_m0__rxw__release_q
+
+
+module drcc_m0__rxw__rxf_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [98:0] d;
+    output reg  [98:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__rxw__rxf_a
+
+
+module drcc_m0__rxw__rxf_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [98:0] d;
+    output reg  [98:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__rxw__rxf_b
 
 
 module drcc_m0__rxw__rxp_a(d,q,clock);

@@ -147,6 +147,37 @@ enum Command {
         #[arg(long, value_name = "N")]
         limit: Option<u8>,
     },
+    /// Random fault campaigns: `drcc campaign [options]` runs one (shard of a)
+    /// campaign, `drcc campaign merge FILE...` sums result files, `drcc campaign
+    /// replay FILE` runs a failing scenario again.
+    Campaign {
+        /// Nothing (run), `merge FILE...` or `replay FILE`.
+        args: Vec<String>,
+        /// Topology: dual.
+        #[arg(long, default_value = "dual")]
+        topology: String,
+        /// Faults per scenario: single (judged) or double (reported).
+        #[arg(long, default_value = "single")]
+        faults: String,
+        /// Scenarios in the whole campaign (all shards).
+        #[arg(long, default_value_t = 1000)]
+        count: u64,
+        /// Seed: a scenario is named by its seed and index.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// This shard, i/n: the indices k with k mod n = i - 1.
+        #[arg(long, value_name = "I/N")]
+        shard: Option<String>,
+        /// Worker threads (default: every core).
+        #[arg(long)]
+        jobs: Option<usize>,
+        /// Write one JSON line per scenario here (a new file).
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
+        /// Engine: model or verilator.
+        #[arg(long, default_value = "model")]
+        engine: String,
+    },
     /// Measure simulated clock cycles per second of every available engine.
     Bench {
         /// Seconds per measurement.
@@ -237,6 +268,27 @@ fn main() -> ExitCode {
             vcd: vcd.as_deref(),
             recovery_ms,
             limit,
+        }),
+        Command::Campaign {
+            args,
+            topology,
+            faults,
+            count,
+            seed,
+            shard,
+            jobs,
+            out,
+            engine,
+        } => cli::campaign::run(&cli::campaign::CampaignArgs {
+            args: &args,
+            topology: &topology,
+            faults: &faults,
+            count,
+            seed,
+            shard: shard.as_deref(),
+            jobs,
+            out: out.as_deref(),
+            engine: &engine,
         }),
         Command::Bench { seconds } => cli::bench(seconds),
         Command::Synth {

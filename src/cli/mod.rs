@@ -1,6 +1,7 @@
 //! The `drcc` subcommands, the error type shared by them (check failure: exit 1;
 //! error: exit 2) and the panic hook that turns an internal error into one line.
 
+pub mod campaign;
 pub mod dmr;
 pub mod generate;
 pub mod redundancy;

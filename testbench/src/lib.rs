@@ -5,6 +5,7 @@
 
 pub mod bench;
 pub mod bitrate;
+pub mod campaign;
 pub mod conformance;
 pub mod dmr;
 pub mod dual;

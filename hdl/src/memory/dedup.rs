@@ -65,7 +65,8 @@ pub struct RxWriter {
     pub window: Signal<In, Bits<15>>,
     pub now: Signal<In, Bits<16>>,
     pub tick: Signal<In, Bit>,
-    // channels: rx_valid pulses and the held received frames
+    // channels: rx_valid pulses and the received frames (valid with the pulse;
+    // latched here, since a channel restart clears the channel's rx outputs)
     pub rxv_a: Signal<In, Bit>,
     pub rxv_b: Signal<In, Bit>,
     pub frame_a: Signal<In, Bits<99>>,
@@ -102,6 +103,9 @@ pub struct RxWriter {
     pub w_state: DFF<Bits<3>>,
     rxp_a: DFF<Bit>,
     rxp_b: DFF<Bit>,
+    /// The frame of each channel's last `rx_valid` (DRCC contract §7, `rxf`).
+    rxf_a: DFF<Bits<99>>,
+    rxf_b: DFF<Bits<99>>,
     sel: DFF<Bit>,
     scan_i: DFF<Bits<6>>,
     hit: DFF<Bit>,
@@ -208,6 +212,8 @@ impl Default for RxWriter {
             w_state: Default::default(),
             rxp_a: Default::default(),
             rxp_b: Default::default(),
+            rxf_a: Default::default(),
+            rxf_b: Default::default(),
             sel: Default::default(),
             scan_i: Default::default(),
             hit: Default::default(),
@@ -278,8 +284,9 @@ impl Logic for RxWriter {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, w_state, rxp_a, rxp_b, sel, scan_i, hit, hit_e, free_found, free_e,
-            hist_ptr, exp_q, hist_idle, hv, hu, hd, release_q, w_pcl, hit_hd, dups_q, overruns_q
+            self, clk, w_state, rxp_a, rxp_b, rxf_a, rxf_b, sel, scan_i, hit, hit_e, free_found,
+            free_e, hist_ptr, exp_q, hist_idle, hv, hu, hd, release_q, w_pcl, hit_hd, dups_q,
+            overruns_q
         );
         self.hist.clk.next = self.clk.val();
         self.hist.read_enable.next = true;
@@ -290,11 +297,12 @@ impl Logic for RxWriter {
         self.stats.clk.next = self.clk.val();
         self.stats.rst.next = self.rst.val();
 
-        // the frame being processed, and the history entry being read
+        // the frame being processed (latched at its rx_valid), and the history
+        // entry being read
         if self.sel.q.val() {
-            self.frame_sel.next = self.frame_b.val();
+            self.frame_sel.next = self.rxf_b.q.val();
         } else {
-            self.frame_sel.next = self.frame_a.val();
+            self.frame_sel.next = self.rxf_a.q.val();
         }
         self.scan_e.next = self.scan_i.q.val().get_bits::<5>(0) - self.one5.val();
         // where a new frame is recorded: the first free entry, else hist_ptr
@@ -568,12 +576,15 @@ impl Logic for RxWriter {
             self.stats.released_inc.next = true;
             self.w_state.d.next = self.s_idle.val();
         }
-        // rx_valid pulses and ACL switches (a new event wins over the clear above)
+        // rx_valid pulses (with their frames) and ACL switches (a new event wins
+        // over the clear above)
         if self.rxv_a.val() {
             self.rxp_a.d.next = true;
+            self.rxf_a.d.next = self.frame_a.val();
         }
         if self.rxv_b.val() {
             self.rxp_b.d.next = true;
+            self.rxf_b.d.next = self.frame_b.val();
         }
         if self.release_set.val() {
             self.release_q.d.next = true;

@@ -72,6 +72,9 @@ pub struct RxPath {
     /// `RX_ID[31]`: `count != 0` at the previous edge.
     pub rx_ready: bool,
     pub rxp: [bool; 2],
+    /// The frame of each channel's last `rx_valid` (contract §7): the writer reads
+    /// it, not the channel, whose outputs a restart clears.
+    pub rxf: [Frame; 2],
     pub w_state: u8,
     pub sel: u8,
     pub scan_i: u8,
@@ -136,7 +139,8 @@ impl RxPath {
         };
     }
 
-    /// One rising edge; `rx_frame` are the channels' held `rx_*` outputs.
+    /// One rising edge; `rx_frame` are the channels' `rx_*` outputs (read with
+    /// `rx_valid` only).
     pub fn edge(&mut self, i: &RxInputs, rx_frame: [&Frame; 2]) -> RxEvents {
         let mut ev = RxEvents::default();
         let c = self.clone_regs();
@@ -179,6 +183,11 @@ impl RxPath {
             self.hv = 0;
         }
         self.rxp = [c.rxp[0] | i.rx_valid[0], c.rxp[1] | i.rx_valid[1]];
+        for (s, f) in rx_frame.iter().enumerate() {
+            if i.rx_valid[s] {
+                self.rxf[s] = **f;
+            }
+        }
         // Expiry of a history entry; in DMR mode an undelivered, unmatched one
         // counts in `expired` (§8).
         let expire = |s: &mut Self, bit: u32| {
@@ -231,7 +240,7 @@ impl RxPath {
                     } else if c.hv & bit != 0
                         && c.hu & bit == 0
                         && entry.ch != c.sel
-                        && entry.frame == *rx_frame[c.sel as usize]
+                        && entry.frame == c.rxf[c.sel as usize]
                         && !c.hit
                     {
                         self.hit = true;
@@ -329,7 +338,7 @@ impl RxPath {
                 self.w_state = W_IDLE;
             }
             _ => {
-                let frame = *rx_frame[c.sel as usize];
+                let frame = c.rxf[c.sel as usize];
                 if !c.w_fifo {
                     // A PCL frame: it waits in the history (§8).
                 } else if c.count >= 32 {
@@ -382,6 +391,7 @@ impl RxPath {
             head: self.head,
             count: self.count,
             rxp: self.rxp,
+            rxf: self.rxf,
             w_state: self.w_state,
             sel: self.sel,
             scan_i: self.scan_i,
@@ -417,6 +427,7 @@ struct RxRegs {
     head: u8,
     count: u8,
     rxp: [bool; 2],
+    rxf: [Frame; 2],
     w_state: u8,
     sel: u8,
     scan_i: u8,

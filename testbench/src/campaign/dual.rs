@@ -1,0 +1,256 @@
+//! Running one dual-bus campaign scenario: DRCC nodes in redundancy mode on lines
+//! A and B with the product's recommended configuration (the one of
+//! `crate::dual::DualScenario::standard`: switch after 2 failed attempts, every
+//! message on both lines, stall judgement after 500 bit times), the drawn traffic
+//! and the drawn faults, then a fault-free tail. The outcome, from the hosts'
+//! point of view: frames lost (a host never popped another host's frame),
+//! duplicated (popped more than once) or foreign (popped but never sent), and
+//! lockups: nodes not back to normal at the end.
+//!
+//! "Back to normal" is what the DRCC controls: after the fault every node sends
+//! [`TAIL_FRAMES`] more frames (so a node that heals only through traffic gets
+//! it: an error-passive receiver's REC falls with every frame it receives), and at
+//! the end both auxiliary FSMs judge their channel "valid", no channel is bus-off,
+//! and the main FSM is back on channel A (Table 1 states idle1..wait2). A channel
+//! may still be error passive: ISO 11898-1 lowers TEC by one per successful
+//! transmission, so a transmitter that reached TEC 200 needs over 70 frames to be
+//! error active again, which is CAN's rule, not a lockup.
+
+use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
+use drcc_cosim::dual::host::{btr, HostConfig, Policy};
+use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
+use drcc_cosim::model::field;
+use drcc_cosim::Frame;
+
+use super::draw::{FaultClass, ScenarioSpec, Side};
+use super::Outcome;
+use crate::dual::{drcc_engine, CLOCKS_PER_BIT};
+use crate::engines::EngineKind;
+
+/// Frames every host sends after the last fault and the last submission.
+pub const TAIL_FRAMES: usize = 3;
+
+/// Bit times from the later of the last fault's end and the last submission to
+/// the first tail frame (bus-off recovery is 128 x 11 = 1408), between two tail
+/// frames of a host, and after the last one to the end of the run.
+pub const TAIL_START_BITS: u64 = 1_500;
+pub const TAIL_PERIOD_BITS: u64 = 1_500;
+pub const TAIL_END_BITS: u64 = 4_000;
+
+/// The product's recommended redundancy configuration (as the dual-bus table).
+fn host_config() -> HostConfig {
+    HostConfig {
+        btr: btr(0, 5, 2, 1, false, 96),
+        redundancy: true,
+        policy: Policy::KFailed(2),
+        dual_tx: true,
+        recovery_bits: 1_000,
+        stall_limit: 500,
+        dedup_window: 2_000,
+        ..HostConfig::default()
+    }
+}
+
+/// The `k`-th frame of host `node` (`k >= frames_per_node`: a tail frame, 8 bytes):
+/// a unique base identifier per (node, k), the drawn length, data naming the node
+/// and k.
+pub fn frame(spec: &ScenarioSpec, node: usize, k: usize) -> Frame {
+    let dlc = spec.dlc[node].get(k).copied().unwrap_or(8);
+    let mut data = [0u8; 8];
+    data[0] = node as u8;
+    data[1] = k as u8;
+    for (i, d) in data.iter_mut().enumerate().take(dlc as usize).skip(2) {
+        *d = (k * 7 + node * 13 + i * 29) as u8;
+    }
+    Frame {
+        id: 0x100 + (node as u32) * 0x40 + k as u32,
+        ide: false,
+        rtr: false,
+        dlc,
+        data,
+    }
+}
+
+/// Frames each host sends, tail frames included.
+fn frames(spec: &ScenarioSpec) -> usize {
+    spec.frames_per_node + TAIL_FRAMES
+}
+
+/// The bit time at which the first tail frame is due.
+fn tail_start(spec: &ScenarioSpec) -> u64 {
+    spec.traffic_end_bits().max(spec.fault_end_bits()) + TAIL_START_BITS
+}
+
+fn line(s: Side) -> Line {
+    match s {
+        Side::A => Line::A,
+        Side::B => Line::B,
+    }
+}
+
+/// Builds the system of `spec` on `kind`, traffic and faults in place.
+pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<DualBusSystem, String> {
+    let engines = (0..spec.nodes)
+        .map(|_| drcc_engine(kind))
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut sys = DualBusSystem::new(engines, vec![host_config(); spec.nodes])?;
+    for n in 0..spec.nodes {
+        for k in 0..frames(spec) {
+            let due = match k.checked_sub(spec.frames_per_node) {
+                None => 100 + k as u64 * spec.period_bits + spec.jitter[n][k],
+                Some(j) => tail_start(spec) + j as u64 * TAIL_PERIOD_BITS + n as u64 * 37,
+            };
+            sys.node_mut(n)
+                .host
+                .submit(due * CLOCKS_PER_BIT, frame(spec, n, k), 0);
+        }
+    }
+    for f in &spec.faults {
+        let start = f.start_bit * CLOCKS_PER_BIT;
+        let cycles = f.bits * CLOCKS_PER_BIT;
+        let l = line(f.line);
+        let fault = |target, kind| Fault {
+            target,
+            kind,
+            start,
+            cycles,
+        };
+        match f.class {
+            FaultClass::StuckDominant => {
+                sys.add_fault(l, fault(FaultTarget::Bus, FaultKind::StuckDominant))?
+            }
+            FaultClass::StuckRecessive => {
+                sys.add_fault(l, fault(FaultTarget::Bus, FaultKind::StuckRecessive))?
+            }
+            FaultClass::Cut => sys.add_cut(
+                l,
+                LineCut {
+                    at: f.node,
+                    start,
+                    cycles,
+                },
+            )?,
+            FaultClass::DeadTransceiver => {
+                sys.add_fault(l, fault(FaultTarget::Tx(f.node), FaultKind::StuckRecessive))?;
+                sys.add_fault(l, fault(FaultTarget::Rx(f.node), FaultKind::StuckRecessive))?;
+            }
+            FaultClass::Babbling => {
+                sys.add_fault(l, fault(FaultTarget::Tx(f.node), FaultKind::StuckDominant))?
+            }
+            FaultClass::DeafReceiver => {
+                sys.add_fault(l, fault(FaultTarget::Rx(f.node), FaultKind::StuckRecessive))?
+            }
+            FaultClass::BitFlips => {
+                for &b in &f.flips {
+                    sys.add_fault(
+                        l,
+                        Fault {
+                            target: FaultTarget::Bus,
+                            kind: FaultKind::Flip,
+                            start: b * CLOCKS_PER_BIT,
+                            cycles: CLOCKS_PER_BIT,
+                        },
+                    )?;
+                }
+            }
+        }
+    }
+    Ok(sys)
+}
+
+/// The clock at which the run of `spec` ends.
+pub fn end_cycle(spec: &ScenarioSpec) -> u64 {
+    (tail_start(spec) + (TAIL_FRAMES as u64 - 1) * TAIL_PERIOD_BITS + TAIL_END_BITS)
+        * CLOCKS_PER_BIT
+}
+
+/// Runs `spec` on `kind` and tallies the outcome; `observe` sees the system after
+/// every clock (traces).
+pub fn run(
+    spec: &ScenarioSpec,
+    kind: EngineKind,
+    mut observe: impl FnMut(&DualBusSystem) -> Result<(), String>,
+) -> Result<Outcome, String> {
+    let mut sys = build(spec, kind)?;
+    let end = end_cycle(spec);
+    // Per node and line: the clocks at which the channel, as receiver, met a
+    // dominant last EOF bit (its `field` goes EOF -> overload flag): it had taken
+    // the frame, and its transmitter sends it again (double reception).
+    let mut prev = vec![[0u8; 2]; spec.nodes];
+    let mut last_bit_overloads = vec![[Vec::new(), Vec::new()]; spec.nodes];
+    while sys.cycle() < end {
+        sys.step();
+        for (n, node) in sys.nodes().iter().enumerate() {
+            let p = &node.outputs.probes;
+            for (l, f) in [p.chan_a_field, p.chan_b_field].into_iter().enumerate() {
+                if prev[n][l] == field::EOF && f == field::OVERLOAD_FLAG {
+                    last_bit_overloads[n][l].push(sys.cycle());
+                }
+                prev[n][l] = f;
+            }
+        }
+        observe(&sys)?;
+    }
+    Ok(tally(spec, &sys, &last_bit_overloads))
+}
+
+fn tally(spec: &ScenarioSpec, sys: &DualBusSystem, overloads: &[[Vec<u64>; 2]]) -> Outcome {
+    let mut o = Outcome {
+        bits: sys.cycle() / CLOCKS_PER_BIT,
+        ..Outcome::default()
+    };
+    for (rx_node, n) in sys.nodes().iter().enumerate() {
+        // per (sender, k): (channel, clock) of every delivery
+        let mut seen: Vec<Vec<Vec<(u8, u64)>>> = vec![vec![Vec::new(); frames(spec)]; spec.nodes];
+        for got in &n.host.received {
+            let f = got.frame;
+            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
+            if sender < spec.nodes && k < frames(spec) && f == frame(spec, sender, k) {
+                seen[sender][k].push((got.channel, got.cycle));
+            } else {
+                o.foreign += 1;
+            }
+        }
+        // A second copy from the other line is CAN's double reception too when
+        // that line carried the frame twice: this receiver met a dominant last
+        // EOF bit on it between the two deliveries (its first copy there
+        // cancelled the other line's; the retransmission found none).
+        let twice_on = |line: u8, from: u64, to: u64| {
+            overloads[rx_node][line as usize]
+                .iter()
+                .any(|&c| c + 200 * CLOCKS_PER_BIT >= from && c <= to)
+        };
+        for (sender, frames) in seen.iter().enumerate() {
+            if sender == rx_node {
+                continue;
+            }
+            for (k, channels) in frames.iter().enumerate() {
+                o.deliveries += 1;
+                let on = |c: u8| channels.iter().filter(|d| d.0 == c).count();
+                match channels.as_slice() {
+                    [] => o.lost.push((rx_node, sender, k)),
+                    [_] => {}
+                    // Every frame is submitted once: a repeat from one channel is
+                    // that line carrying it twice (CAN's double reception).
+                    _ if on(0) > 1 || on(1) > 1 => o.double_received.push((rx_node, sender, k)),
+                    [(_, t0), (l1, t1)] if twice_on(*l1, *t0, *t1) => {
+                        o.double_received.push((rx_node, sender, k))
+                    }
+                    _ => o.duplicated.push((rx_node, sender, k)),
+                }
+            }
+        }
+        let p = &n.outputs.probes;
+        // both channels judged valid, neither bus-off, the main FSM on channel A
+        // (Table 1: idle1 0 .. wait2 4)
+        let normal = p.aux_a_state == 0
+            && p.aux_b_state == 0
+            && p.chan_a_err_state != 2
+            && p.chan_b_err_state != 2
+            && p.state <= 4;
+        if !normal {
+            o.lockups.push(rx_node);
+        }
+    }
+    o
+}

@@ -189,3 +189,66 @@ fn wave_diff_names_truncated_files_and_compares_across_timescales() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// `drcc campaign`: bad options are refused before any scenario runs, and a
+/// results file is never written over.
+#[test]
+fn campaign_refuses_bad_options_and_never_overwrites_results() {
+    let d = scratch("campaign");
+    std::fs::write(d.join("r.jsonl"), "earlier results\n").unwrap();
+    let cases: [(&[&str], &str, &str); 9] = [
+        (
+            &["campaign", "--shard", "0/4"],
+            "--shard 0/4",
+            "1 <= i <= n",
+        ),
+        (
+            &["campaign", "--shard", "5/4"],
+            "--shard 5/4",
+            "1 <= i <= n",
+        ),
+        (
+            &["campaign", "--shard", "x"],
+            "--shard x",
+            "e.g. --shard 3/8",
+        ),
+        (&["campaign", "--count", "0"], "--count 0", "give 1 .."),
+        (
+            &["campaign", "--topology", "ring"],
+            "--topology ring",
+            "the topologies are dual",
+        ),
+        (
+            &["campaign", "--faults", "triple"],
+            "--faults triple",
+            "give single",
+        ),
+        (&["campaign", "--jobs", "0"], "--jobs 0", "give 1 .. 256"),
+        (
+            &["campaign", "--out", "r.jsonl"],
+            "the file exists",
+            "give a new file name",
+        ),
+        (
+            &["campaign", "merge"],
+            "campaign merge",
+            "give the result files",
+        ),
+    ];
+    for (args, what, fix) in cases {
+        refused(&d, args, what, fix);
+    }
+    refused(
+        &d,
+        &["campaign", "merge", "x.toml"],
+        "x.toml:1: not a campaign result line",
+        "drcc campaign --out",
+    );
+    refused(
+        &d,
+        &["campaign", "replay", "x.toml"],
+        "not a campaign replay file",
+        "written by `drcc campaign`",
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -511,8 +511,10 @@ impl<const M: usize> Lockstep<M> {
     }
 }
 
-fn lockstep<const M: usize>(seed: u64, clocks: u64) -> Coverage {
+/// Runs `seed` for `clocks` clocks, counting into `cov` (the earlier seeds' counts).
+fn lockstep<const M: usize>(seed: u64, clocks: u64, cov: Coverage) -> Coverage {
     let mut l = Lockstep::<M>::new(seed);
+    l.cov = cov;
     l.configure();
     while l.clock < clocks {
         if l.rng.one_in(4) {
@@ -540,31 +542,7 @@ fn dmr_engine_lockstep_with_the_model_five_mailboxes() {
 fn lockstep_covers_every_case<const M: usize>(seeds: std::ops::RangeInclusive<u64>, clocks: u64) {
     let mut total = Coverage::default();
     for seed in seeds {
-        let c = lockstep::<M>(seed, clocks);
-        for k in 0..4 {
-            total.states[k] += c.states[k];
-        }
-        for k in 0..6 {
-            total.jobs[k] += c.jobs[k];
-        }
-        for d in 0..2 {
-            for t in 0..2 {
-                for l in 0..2 {
-                    total.faults[d][t][l] += c.faults[d][t][l];
-                }
-            }
-        }
-        total.evals += c.evals;
-        total.found += c.found;
-        total.missed += c.missed;
-        total.multi_match += c.multi_match;
-        total.saturated += c.saturated;
-        total.again += c.again;
-        total.taken_and_set += c.taken_and_set;
-        total.eval_overrun += c.eval_overrun;
-        total.clear_over_write += c.clear_over_write;
-        total.holds += c.holds;
-        total.rebalanced += c.rebalanced;
+        total = lockstep::<M>(seed, clocks, total);
     }
     println!("coverage (M = {M}): {total:#?}");
     let t = &total;

@@ -19,7 +19,7 @@ use drcc_testbench::campaign::{self, draw, Campaign, Progress, Topology};
 use drcc_testbench::engines::available;
 use drcc_testbench::EngineKind;
 
-use super::{AtomicFile, CliError, CliResult};
+use super::{write_atomic, AtomicFile, CliError, CliResult};
 
 /// The options of `drcc campaign`.
 #[derive(Debug, Default)]
@@ -195,8 +195,9 @@ fn run_campaign(a: &CampaignArgs) -> CliResult {
                 spec.seed,
                 spec.index
             ));
-            std::fs::write(&path, campaign::replay_file(spec, o))
-                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            write_atomic(&path, campaign::replay_file(spec, o)).map_err(|e| match e {
+                CliError::Error(m) | CliError::Failed(m) => m,
+            })?;
             failures.push(path);
             Ok(())
         },

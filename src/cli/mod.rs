@@ -96,11 +96,16 @@ pub fn project_root(instead: &str) -> Result<PathBuf, CliError> {
         })
 }
 
+/// The temporary file beside `path` that an atomic write goes through.
+fn tmp_path(path: &Path) -> PathBuf {
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
+    path.with_file_name(format!(".{name}.drcc-tmp"))
+}
+
 /// Writes `text` to `path` through a temporary file beside it and a rename, so an
 /// interrupted write leaves the old file or the new one, never a truncated one.
 pub fn write_atomic(path: &Path, text: impl AsRef<[u8]>) -> Result<(), CliError> {
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
-    let tmp = path.with_file_name(format!(".{name}.drcc-tmp"));
+    let tmp = tmp_path(path);
     std::fs::write(&tmp, text).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         CliError::Error(format!(
@@ -180,8 +185,7 @@ impl AtomicFile {
             std::fs::create_dir_all(dir)
                 .map_err(|e| CliError::Error(format!("cannot create {}: {e}", dir.display())))?;
         }
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
-        let tmp = path.with_file_name(format!(".{name}.drcc-tmp"));
+        let tmp = tmp_path(path);
         let f = std::fs::File::create(&tmp)
             .map_err(|e| CliError::Error(format!("cannot create {}: {e}", path.display())))?;
         Ok(AtomicFile {
@@ -277,8 +281,7 @@ pub fn rewrite_between_atomic(paths: &[PathBuf], begin: &str, end: &str, body: &
                 .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
             let new = replace_between(&text, begin, end, body)
                 .map_err(|m| format!("{}: {m}", path.display()))?;
-            let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
-            let tmp = path.with_file_name(format!(".{name}.drcc-tmp"));
+            let tmp = tmp_path(path);
             std::fs::write(&tmp, new).map_err(|e| {
                 format!(
                     "cannot write {} ({e}): make its directory writable",

@@ -112,7 +112,9 @@ impl DualScenario {
         }
     }
 
-    fn host_config(&self) -> HostConfig {
+    /// The hosts' configuration: the product's recommended redundancy settings
+    /// (also every campaign scenario's, `crate::campaign::dual`).
+    pub(crate) fn host_config(&self) -> HostConfig {
         HostConfig {
             btr: btr(0, 5, 2, 1, false, 96),
             redundancy: true,

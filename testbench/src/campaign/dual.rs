@@ -17,14 +17,14 @@
 //! error active again, which is CAN's rule, not a lockup.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
-use drcc_cosim::dual::host::{btr, HostConfig, Policy};
+use drcc_cosim::dual::host::HostConfig;
 use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
 use drcc_cosim::model::field;
 use drcc_cosim::Frame;
 
 use super::draw::{FaultClass, ScenarioSpec, Side};
 use super::Outcome;
-use crate::dual::{drcc_engine, CLOCKS_PER_BIT};
+use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT};
 use crate::engines::EngineKind;
 
 /// Frames every host sends after the last fault and the last submission.
@@ -37,18 +37,9 @@ pub const TAIL_START_BITS: u64 = 1_500;
 pub const TAIL_PERIOD_BITS: u64 = 1_500;
 pub const TAIL_END_BITS: u64 = 4_000;
 
-/// The product's recommended redundancy configuration (as the dual-bus table).
+/// The product's recommended redundancy configuration: the dual-bus table's.
 fn host_config() -> HostConfig {
-    HostConfig {
-        btr: btr(0, 5, 2, 1, false, 96),
-        redundancy: true,
-        policy: Policy::KFailed(2),
-        dual_tx: true,
-        recovery_bits: 1_000,
-        stall_limit: 500,
-        dedup_window: 2_000,
-        ..HostConfig::default()
-    }
+    DualScenario::standard(DualFault::None).host_config()
 }
 
 /// The `k`-th frame of host `node` (`k >= frames_per_node`: a tail frame, 8 bytes):

@@ -509,6 +509,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  aux_a__err_tx;
     reg  aux_a__tx_done;
     reg  aux_a__tx_pending;
+    reg  aux_a__rx_valid;
     reg  [1:0] aux_a__err_state;
     reg  aux_a__sample_point;
     wire  [1:0] aux_a__aux_state;
@@ -533,6 +534,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  aux_b__err_tx;
     reg  aux_b__tx_done;
     reg  aux_b__tx_pending;
+    reg  aux_b__rx_valid;
     reg  [1:0] aux_b__err_state;
     reg  aux_b__sample_point;
     wire  [1:0] aux_b__aux_state;
@@ -985,6 +987,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .err_tx(aux_a__err_tx),
         .tx_done(aux_a__tx_done),
         .tx_pending(aux_a__tx_pending),
+        .rx_valid(aux_a__rx_valid),
         .err_state(aux_a__err_state),
         .sample_point(aux_a__sample_point),
         .aux_state(aux_a__aux_state),
@@ -1011,6 +1014,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .err_tx(aux_b__err_tx),
         .tx_done(aux_b__tx_done),
         .tx_pending(aux_b__tx_pending),
+        .rx_valid(aux_b__rx_valid),
         .err_state(aux_b__err_state),
         .sample_point(aux_b__sample_point),
         .aux_state(aux_b__aux_state),
@@ -1351,6 +1355,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         aux_a__err_tx = chan_a__err_tx;
         aux_a__tx_done = chan_a__tx_done;
         aux_a__tx_pending = chan_a__tx_pending;
+        aux_a__rx_valid = chan_a__rx_valid;
         aux_a__err_state = chan_a__err_state;
         aux_a__sample_point = chan_a__sample_point;
         aux_b__clk = clk;
@@ -1366,6 +1371,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         aux_b__err_tx = chan_b__err_tx;
         aux_b__tx_done = chan_b__tx_done;
         aux_b__tx_pending = chan_b__tx_pending;
+        aux_b__rx_valid = chan_b__rx_valid;
         aux_b__err_state = chan_b__err_state;
         aux_b__sample_point = chan_b__sample_point;
         txbuf__clk = clk;
@@ -1501,7 +1507,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
 endmodule // top
 
 
-module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,err_valid,err_tx,tx_done,tx_pending,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
+module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
     
     // Module arguments
     input wire  clk;
@@ -1517,6 +1523,7 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     input wire  err_tx;
     input wire  tx_done;
     input wire  tx_pending;
+    input wire  rx_valid;
     input wire  [1:0] err_state;
     input wire  sample_point;
     output reg  [1:0] aux_state;
@@ -1672,7 +1679,7 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
         if (tick & (stall_q__q != max16)) begin
             stall_q__d = stall_q__q + one16;
         end
-        if (~tx_pending) begin
+        if (~tx_pending | rx_valid) begin
             stall_q__d = zero16;
         end
         judge__policy = policy;
@@ -1920,7 +1927,7 @@ module drcc_m0__aux_a__stall_q(d,q,clock);
 endmodule // drcc_m0__aux_a__stall_q
 
 
-module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,err_valid,err_tx,tx_done,tx_pending,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
+module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
     
     // Module arguments
     input wire  clk;
@@ -1936,6 +1943,7 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     input wire  err_tx;
     input wire  tx_done;
     input wire  tx_pending;
+    input wire  rx_valid;
     input wire  [1:0] err_state;
     input wire  sample_point;
     output reg  [1:0] aux_state;
@@ -2091,7 +2099,7 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
         if (tick & (stall_q__q != max16)) begin
             stall_q__d = stall_q__q + one16;
         end
-        if (~tx_pending) begin
+        if (~tx_pending | rx_valid) begin
             stall_q__d = zero16;
         end
         judge__policy = policy;

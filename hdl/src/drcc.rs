@@ -434,6 +434,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.aux_a.err_tx.next = self.chan_a.err_tx.val();
         self.aux_a.tx_done.next = self.chan_a.tx_done.val();
         self.aux_a.tx_pending.next = self.chan_a.tx_pending.val();
+        self.aux_a.rx_valid.next = self.chan_a.rx_valid.val();
         self.aux_a.err_state.next = self.chan_a.err_state.val();
         self.aux_a.sample_point.next = self.chan_a.sample_point.val();
         self.aux_b.clk.next = self.clk.val();
@@ -449,6 +450,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.aux_b.err_tx.next = self.chan_b.err_tx.val();
         self.aux_b.tx_done.next = self.chan_b.tx_done.val();
         self.aux_b.tx_pending.next = self.chan_b.tx_pending.val();
+        self.aux_b.rx_valid.next = self.chan_b.rx_valid.val();
         self.aux_b.err_state.next = self.chan_b.err_state.val();
         self.aux_b.sample_point.next = self.chan_b.sample_point.val();
 

@@ -48,6 +48,8 @@ pub struct AuxFsm {
     pub err_tx: Signal<In, Bit>,
     pub tx_done: Signal<In, Bit>,
     pub tx_pending: Signal<In, Bit>,
+    /// A frame received without error: the line works (clears the stall count).
+    pub rx_valid: Signal<In, Bit>,
     pub err_state: Signal<In, Bits<2>>,
     pub sample_point: Signal<In, Bit>,
     // outputs
@@ -106,6 +108,7 @@ impl Default for AuxFsm {
             err_tx: Default::default(),
             tx_done: Default::default(),
             tx_pending: Default::default(),
+            rx_valid: Default::default(),
             err_state: Default::default(),
             sample_point: Default::default(),
             aux_state: Default::default(),
@@ -178,12 +181,14 @@ impl Logic for AuxFsm {
         if self.tx_done.val() {
             self.fail_q.d.next = self.zero4.val();
         }
-        // stall_cnt: ticks while pending (saturating), 0 while not pending
+        // stall_cnt: ticks while pending (saturating), 0 while not pending and at
+        // each frame received (the line carries frames: losing arbitration on it
+        // is not a stall, contract §5)
         self.stall_q.d.next = self.stall_q.q.val();
         if self.tick.val() & (self.stall_q.q.val() != self.max16.val()) {
             self.stall_q.d.next = self.stall_q.q.val() + self.one16.val();
         }
-        if !self.tx_pending.val() {
+        if !self.tx_pending.val() | self.rx_valid.val() {
             self.stall_q.d.next = self.zero16.val();
         }
 

@@ -21,6 +21,8 @@ pub struct AuxInputs {
     // The channel's registered outputs.
     pub tx_pending: bool,
     pub tx_done: bool,
+    /// A frame received without error (clears the stall count: the line works).
+    pub rx_valid: bool,
     pub err_valid: bool,
     pub err_tx: bool,
     pub err_state: u8,
@@ -86,7 +88,7 @@ impl AuxFsm {
         } else {
             c.fail_cnt
         };
-        n.stall_cnt = if !i.tx_pending {
+        n.stall_cnt = if !i.tx_pending || i.rx_valid {
             0
         } else if i.tick {
             c.stall_cnt.saturating_add(1)

@@ -337,6 +337,7 @@ impl DrccModel {
                 in_use: in_use[c],
                 tx_pending: o.tx_pending,
                 tx_done: o.tx_done,
+                rx_valid: o.rx_valid,
                 err_valid: o.diag.err_valid,
                 err_tx: o.diag.err_tx,
                 err_state: o.probes.err_state,

@@ -5,6 +5,7 @@
 //! - `sim` runs a scenario on one engine, `cosim` on two in lock step,
 //! - `wave-diff` compares two VCD files,
 //! - `demo` runs the bundled demo scenario, `bench` compares engine speeds,
+//! - `coverage` prints the functional coverage bins and their counts,
 //! - `dmr` runs the CiA 701 DMR test plan (`table` or one fault row),
 //! - `synth` synthesises a top for an FPGA family (yosys; nextpnr and icepack
 //!   for iCE40) and reports its area and Fmax.
@@ -178,6 +179,9 @@ enum Command {
         #[arg(long, default_value = "model")]
         engine: String,
     },
+    /// Functional coverage: run the test suite's workloads on the model and print
+    /// every coverage bin with its count (exit 1 if a bin is never hit).
+    Coverage,
     /// Measure simulated clock cycles per second of every available engine.
     Bench {
         /// Seconds per measurement.
@@ -291,6 +295,7 @@ fn main() -> ExitCode {
             engine: &engine,
         }),
         Command::Bench { seconds } => cli::bench(seconds),
+        Command::Coverage => cli::coverage(),
         Command::Synth {
             target,
             top,

@@ -1,6 +1,6 @@
 //! `drcc campaign`: random fault campaigns (`drcc_testbench::campaign`).
 //!
-//! - `drcc campaign [--topology dual] [--faults single|double] [--count N] [--seed S]
+//! - `drcc campaign [--topology dual|star] [--faults single|double] [--count N] [--seed S]
 //!   [--shard i/n] [--jobs J] [--out FILE] [--engine E]` runs the scenarios of one
 //!   shard, writes one JSON line per scenario to `FILE` (never over an existing
 //!   file), writes a replay file for every failing single-fault scenario into
@@ -44,21 +44,12 @@ const MAX_COUNT: u64 = 100_000_000;
 
 /// Checks the options of a run.
 pub fn parse(a: &CampaignArgs) -> Result<Campaign, CliError> {
-    let topology = match a.topology {
-        "dual" => Topology::Dual,
-        "star" => {
-            return Err(error(
-                "--topology star: the star campaign is not built yet (the star's fault \
-                 scenarios are `drcc star table`); give --topology dual"
-                    .to_string(),
-            ))
-        }
-        other => {
-            return Err(error(format!(
-                "--topology {other}: the topologies are dual (star comes next)"
-            )))
-        }
-    };
+    let topology = Topology::from_name(a.topology).ok_or_else(|| {
+        error(format!(
+            "--topology {}: the topologies are dual and star",
+            a.topology
+        ))
+    })?;
     let faults = match a.faults {
         "single" => 1,
         "double" => 2,

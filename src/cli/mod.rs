@@ -310,6 +310,28 @@ pub fn rewrite_between_atomic(paths: &[PathBuf], begin: &str, end: &str, body: &
     Ok(())
 }
 
+/// `drcc coverage`: the functional coverage of the model over the test suite's
+/// workloads (`drcc_testbench::coverage`); exit 1 if a bin is never hit or a name
+/// that is not a bin was counted.
+pub fn coverage() -> CliResult {
+    let t = std::time::Instant::now();
+    let r = drcc_testbench::coverage::collect(|w| eprintln!("drcc coverage: {w} ..."))
+        .map_err(CliError::Error)?;
+    println!("{}", r.table());
+    eprintln!(
+        "drcc coverage: {} workloads in {:.0} s",
+        r.times.len(),
+        t.elapsed().as_secs_f64()
+    );
+    let (missed, unlisted) = (r.missed().len(), r.unlisted().len());
+    if missed + unlisted > 0 {
+        return Err(CliError::Failed(format!(
+            "{missed} bin(s) never hit, {unlisted} name(s) counted that are not bins (listed above)"
+        )));
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

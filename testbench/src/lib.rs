@@ -7,6 +7,7 @@ pub mod bench;
 pub mod bitrate;
 pub mod campaign;
 pub mod conformance;
+pub mod coverage;
 pub mod dmr;
 pub mod dual;
 pub mod engines;

@@ -13,8 +13,12 @@ use drcc_testbench::engines::verilator_required;
 use drcc_testbench::EngineKind;
 
 fn campaign(count: u64, seed: u64, shard: (u64, u64)) -> Campaign {
+    on(Topology::Dual, count, seed, shard)
+}
+
+fn on(topology: Topology, count: u64, seed: u64, shard: (u64, u64)) -> Campaign {
     Campaign {
-        topology: Topology::Dual,
+        topology,
         faults: 1,
         count,
         seed,
@@ -55,6 +59,26 @@ fn a_thousand_single_faults_lose_duplicate_and_lock_up_nothing() {
     }
     assert_eq!(s.classes.len(), 7, "every fault class drawn");
     assert_eq!(s.failing(), 0);
+}
+
+/// The star smoke campaign: 200 random single faults on the links of two coupled
+/// hubs (every star class drawn), nothing lost, duplicated or locked up, every
+/// isolated hub port restored and the hubs coupled at the end.
+#[test]
+fn two_hundred_single_star_faults_lose_duplicate_and_lock_up_nothing() {
+    let (_, s) = run(&on(Topology::Star, 200, 2024, (1, 1)));
+    println!("{}", s.table());
+    assert_eq!(s.scenarios(), 200);
+    for ((topology, class), t) in &s.classes {
+        assert_eq!(topology, "star");
+        assert!(t.scenarios > 8, "{class}: {} scenarios", t.scenarios);
+        assert_eq!(
+            (t.lost, t.duplicated, t.foreign, t.lockups),
+            (0, 0, 0, 0),
+            "{class}: lost, duplicated, foreign, lockups"
+        );
+    }
+    assert_eq!(s.classes.len(), 9, "every star fault class drawn");
 }
 
 #[test]

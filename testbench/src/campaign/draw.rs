@@ -8,6 +8,14 @@
 //! dominant: a babbling idiot), a deaf receiver, and a burst of one-bit flips on
 //! the line. Onsets are random over the traffic, durations from one bit time to
 //! a few thousand (short glitches, faults of a few frames, long outages).
+//!
+//! The star fault model (ReCANcentrate: two coupled hubs, every node on both; one
+//! fault on one link of hub 1 or hub 2, the "line" naming the hub): a node's uplink
+//! stuck dominant (a babbling node), stuck recessive, or flipping bits; its
+//! downlink cut (reads recessive) or stuck dominant; its transceiver dead on that
+//! hub (uplink and downlink recessive); one sublink of an interlink stuck dominant
+//! or cut; a whole interlink lost (both sublinks). Losing every interlink is a
+//! double fault here (each interlink is one fault).
 
 use crate::random::SplitMix64;
 
@@ -16,6 +24,8 @@ use crate::random::SplitMix64;
 pub enum Topology {
     /// DRCC nodes in redundancy mode on lines A and B.
     Dual,
+    /// DRCC nodes on two coupled ReCANcentrate hubs (channel A on hub 1, B on hub 2).
+    Star,
 }
 
 impl Topology {
@@ -23,11 +33,27 @@ impl Topology {
     pub fn name(self) -> &'static str {
         match self {
             Topology::Dual => "dual",
+            Topology::Star => "star",
+        }
+    }
+
+    /// The topology of a name.
+    pub fn from_name(s: &str) -> Option<Topology> {
+        [Topology::Dual, Topology::Star]
+            .into_iter()
+            .find(|t| t.name() == s)
+    }
+
+    /// The fault classes of this topology's fault model.
+    pub fn classes(self) -> &'static [FaultClass] {
+        match self {
+            Topology::Dual => &FaultClass::DUAL,
+            Topology::Star => &FaultClass::STAR,
         }
     }
 }
 
-/// One line of the dual bus.
+/// One line of the dual bus; on the star, the hub (A = hub 1, B = hub 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Side {
     A,
@@ -43,9 +69,10 @@ impl Side {
     }
 }
 
-/// A fault class of the dual-bus fault model.
+/// A fault class of the dual-bus or the star fault model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum FaultClass {
+    // dual bus
     StuckDominant,
     StuckRecessive,
     Cut,
@@ -53,11 +80,21 @@ pub enum FaultClass {
     Babbling,
     DeafReceiver,
     BitFlips,
+    // star (the link of one hub)
+    UplinkStuckDominant,
+    UplinkStuckRecessive,
+    UplinkBitFlips,
+    DownlinkCut,
+    DownlinkStuckDominant,
+    DeadNodeTransceiver,
+    SublinkStuckDominant,
+    SublinkCut,
+    InterlinkLost,
 }
 
 impl FaultClass {
-    /// Every class, in report order.
-    pub const ALL: [FaultClass; 7] = [
+    /// The dual-bus classes, in report order.
+    pub const DUAL: [FaultClass; 7] = [
         FaultClass::StuckDominant,
         FaultClass::StuckRecessive,
         FaultClass::Cut,
@@ -66,6 +103,68 @@ impl FaultClass {
         FaultClass::DeafReceiver,
         FaultClass::BitFlips,
     ];
+
+    /// The star classes, in report order.
+    pub const STAR: [FaultClass; 9] = [
+        FaultClass::UplinkStuckDominant,
+        FaultClass::UplinkStuckRecessive,
+        FaultClass::UplinkBitFlips,
+        FaultClass::DownlinkCut,
+        FaultClass::DownlinkStuckDominant,
+        FaultClass::DeadNodeTransceiver,
+        FaultClass::SublinkStuckDominant,
+        FaultClass::SublinkCut,
+        FaultClass::InterlinkLost,
+    ];
+
+    /// Every class.
+    pub const ALL: [FaultClass; 16] = [
+        FaultClass::StuckDominant,
+        FaultClass::StuckRecessive,
+        FaultClass::Cut,
+        FaultClass::DeadTransceiver,
+        FaultClass::Babbling,
+        FaultClass::DeafReceiver,
+        FaultClass::BitFlips,
+        FaultClass::UplinkStuckDominant,
+        FaultClass::UplinkStuckRecessive,
+        FaultClass::UplinkBitFlips,
+        FaultClass::DownlinkCut,
+        FaultClass::DownlinkStuckDominant,
+        FaultClass::DeadNodeTransceiver,
+        FaultClass::SublinkStuckDominant,
+        FaultClass::SublinkCut,
+        FaultClass::InterlinkLost,
+    ];
+
+    /// Bit flips: the fault is a list of one-bit inversions.
+    pub fn flips(self) -> bool {
+        matches!(self, FaultClass::BitFlips | FaultClass::UplinkBitFlips)
+    }
+
+    /// The fault concerns one node (its transceiver or its links).
+    pub fn of_node(self) -> bool {
+        matches!(
+            self,
+            FaultClass::DeadTransceiver
+                | FaultClass::Babbling
+                | FaultClass::DeafReceiver
+                | FaultClass::UplinkStuckDominant
+                | FaultClass::UplinkStuckRecessive
+                | FaultClass::UplinkBitFlips
+                | FaultClass::DownlinkCut
+                | FaultClass::DownlinkStuckDominant
+                | FaultClass::DeadNodeTransceiver
+        )
+    }
+
+    /// The fault concerns one interlink.
+    pub fn of_interlink(self) -> bool {
+        matches!(
+            self,
+            FaultClass::SublinkStuckDominant | FaultClass::SublinkCut | FaultClass::InterlinkLost
+        )
+    }
 
     /// Name as the results spell it.
     pub fn name(self) -> &'static str {
@@ -77,6 +176,15 @@ impl FaultClass {
             FaultClass::Babbling => "babbling_transceiver",
             FaultClass::DeafReceiver => "deaf_receiver",
             FaultClass::BitFlips => "bit_flips",
+            FaultClass::UplinkStuckDominant => "uplink_stuck_dominant",
+            FaultClass::UplinkStuckRecessive => "uplink_stuck_recessive",
+            FaultClass::UplinkBitFlips => "uplink_bit_flips",
+            FaultClass::DownlinkCut => "downlink_cut",
+            FaultClass::DownlinkStuckDominant => "downlink_stuck_dominant",
+            FaultClass::DeadNodeTransceiver => "dead_node_transceiver",
+            FaultClass::SublinkStuckDominant => "sublink_stuck_dominant",
+            FaultClass::SublinkCut => "sublink_cut",
+            FaultClass::InterlinkLost => "interlink_lost",
         }
     }
 
@@ -90,9 +198,11 @@ impl FaultClass {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct DrawnFault {
     pub class: FaultClass,
+    /// The line (dual bus) or the hub (star; a sublink fault: the hub it comes from).
     pub line: Side,
-    /// The node it concerns (transceiver and receiver faults), or the cut position
-    /// (the cut is between node `node - 1` and `node`); 0 for line faults.
+    /// The node it concerns (transceiver, receiver and node-link faults), the cut
+    /// position (the cut is between node `node - 1` and `node`), or the interlink
+    /// (star sublink and interlink faults); 0 for line faults.
     pub node: usize,
     /// Onset and duration in bit times.
     pub start_bit: u64,
@@ -137,21 +247,24 @@ impl ScenarioSpec {
         self.faults
             .iter()
             .map(|f| {
+                let on = match self.topology {
+                    Topology::Dual => format!("on line {}", f.line.name()),
+                    Topology::Star => format!("on hub {}", f.line as usize + 1),
+                };
                 let at = match f.class {
                     FaultClass::Cut => format!(" between nodes {} and {}", f.node - 1, f.node),
-                    FaultClass::DeadTransceiver
-                    | FaultClass::Babbling
-                    | FaultClass::DeafReceiver => format!(" of node {}", f.node),
+                    c if c.of_node() => format!(" of node {}", f.node),
+                    c if c.of_interlink() => format!(" of interlink {}", f.node),
                     _ => String::new(),
                 };
-                let what = match f.class {
-                    FaultClass::BitFlips => format!("{} flips in", f.flips.len()),
-                    _ => "from".to_string(),
+                let what = if f.class.flips() {
+                    format!("{} flips in", f.flips.len())
+                } else {
+                    "from".to_string()
                 };
                 format!(
-                    "{} on line {}{at}, {what} bit {} for {} bits",
+                    "{} {on}{at}, {what} bit {} for {} bits",
                     f.class.name(),
-                    f.line.name(),
                     f.start_bit,
                     f.bits
                 )
@@ -160,6 +273,9 @@ impl ScenarioSpec {
             .join("; ")
     }
 }
+
+/// Interlinks of the star campaign's hubs (the emitted `hub.v`).
+pub const STAR_INTERLINKS: usize = 2;
 
 /// The generator of scenario `index` of the campaign `seed` (independent streams
 /// for every index, so shards and threads draw the same scenarios).
@@ -174,7 +290,11 @@ fn rng(seed: u64, index: u64) -> SplitMix64 {
 /// Draws scenario `index` of campaign `seed` with `faults` faults (1 or 2).
 pub fn draw(topology: Topology, faults: usize, seed: u64, index: u64) -> ScenarioSpec {
     let mut r = rng(seed, index);
-    let nodes = 3 + r.below(4) as usize; // 3..=6
+    let nodes = match topology {
+        Topology::Dual => 3 + r.below(4) as usize, // 3..=6
+        // the emitted hub.v has 4 node ports; a free port is isolated as silent
+        Topology::Star => 4,
+    };
     let frames_per_node = 6 + r.below(11) as usize; // 6..=16
                                                     // Offered load 20..50 % of each line: a frame is at most ~130 bit times (8
                                                     // data bytes, worst-case stuffing, intermission), so a host submits one every
@@ -206,13 +326,13 @@ pub fn draw(topology: Topology, faults: usize, seed: u64, index: u64) -> Scenari
     };
     let traffic = spec.traffic_end_bits();
     for _ in 0..faults {
-        let class = FaultClass::ALL[r.below(FaultClass::ALL.len() as u64) as usize];
+        let classes = topology.classes();
+        let class = classes[r.below(classes.len() as u64) as usize];
         let line = if r.below(2) == 0 { Side::A } else { Side::B };
         let node = match class {
             FaultClass::Cut => 1 + r.below(nodes as u64 - 1) as usize,
-            FaultClass::DeadTransceiver | FaultClass::Babbling | FaultClass::DeafReceiver => {
-                r.below(nodes as u64) as usize
-            }
+            c if c.of_node() => r.below(nodes as u64) as usize,
+            c if c.of_interlink() => r.below(STAR_INTERLINKS as u64) as usize,
             _ => 0,
         };
         // Durations: a glitch (1..20 bit times), a few frames (20..1000), or a
@@ -223,7 +343,7 @@ pub fn draw(topology: Topology, faults: usize, seed: u64, index: u64) -> Scenari
             _ => 1000 + r.below(7000),
         };
         let start_bit = 150 + r.below(traffic.saturating_sub(300).max(1));
-        let flips = if class == FaultClass::BitFlips {
+        let flips = if class.flips() {
             let n = 1 + r.below(8);
             let mut v: Vec<u64> = (0..n).map(|_| start_bit + r.below(bits)).collect();
             v.sort_unstable();
@@ -267,7 +387,7 @@ mod tests {
     #[test]
     fn every_class_line_and_position_is_drawn() {
         let specs: Vec<ScenarioSpec> = (0..2000).map(|i| draw(Topology::Dual, 1, 1, i)).collect();
-        for c in FaultClass::ALL {
+        for c in FaultClass::DUAL {
             for l in [Side::A, Side::B] {
                 assert!(
                     specs
@@ -294,5 +414,37 @@ mod tests {
         }
         assert!(specs.iter().any(|s| s.faults[0].bits < 20));
         assert!(specs.iter().any(|s| s.faults[0].bits > 5000));
+    }
+
+    #[test]
+    fn every_star_class_hub_and_link_is_drawn() {
+        let specs: Vec<ScenarioSpec> = (0..2000).map(|i| draw(Topology::Star, 1, 1, i)).collect();
+        for c in FaultClass::STAR {
+            for l in [Side::A, Side::B] {
+                assert!(
+                    specs
+                        .iter()
+                        .any(|s| s.faults[0].class == c && s.faults[0].line == l),
+                    "{} on {}",
+                    c.name(),
+                    l.name()
+                );
+            }
+        }
+        for s in &specs {
+            let f = &s.faults[0];
+            assert!(FaultClass::STAR.contains(&f.class));
+            assert_eq!(s.nodes, 4);
+            if f.class.of_interlink() {
+                assert!(f.node < STAR_INTERLINKS);
+            } else {
+                assert!(f.node < s.nodes);
+            }
+        }
+        for i in 0..STAR_INTERLINKS {
+            assert!(specs
+                .iter()
+                .any(|s| s.faults[0].class.of_interlink() && s.faults[0].node == i));
+        }
     }
 }

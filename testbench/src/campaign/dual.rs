@@ -19,10 +19,10 @@
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
 use drcc_cosim::dual::host::HostConfig;
 use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
-use drcc_cosim::model::field;
 use drcc_cosim::Frame;
 
 use super::draw::{FaultClass, ScenarioSpec, Side};
+use super::tally::{tally, LastBitOverloads};
 use super::Outcome;
 use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT};
 use crate::engines::EngineKind;
@@ -63,7 +63,7 @@ pub fn frame(spec: &ScenarioSpec, node: usize, k: usize) -> Frame {
 }
 
 /// Frames each host sends, tail frames included.
-fn frames(spec: &ScenarioSpec) -> usize {
+pub fn frames(spec: &ScenarioSpec) -> usize {
     spec.frames_per_node + TAIL_FRAMES
 }
 
@@ -131,6 +131,17 @@ pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<DualBusSystem, Str
             FaultClass::DeafReceiver => {
                 sys.add_fault(l, fault(FaultTarget::Rx(f.node), FaultKind::StuckRecessive))?
             }
+            c @ (FaultClass::UplinkStuckDominant
+            | FaultClass::UplinkStuckRecessive
+            | FaultClass::UplinkBitFlips
+            | FaultClass::DownlinkCut
+            | FaultClass::DownlinkStuckDominant
+            | FaultClass::DeadNodeTransceiver
+            | FaultClass::SublinkStuckDominant
+            | FaultClass::SublinkCut
+            | FaultClass::InterlinkLost) => {
+                return Err(format!("{} is a star fault, not a dual-bus one", c.name()))
+            }
             FaultClass::BitFlips => {
                 for &b in &f.flips {
                     sys.add_fault(
@@ -164,84 +175,21 @@ pub fn run(
 ) -> Result<Outcome, String> {
     let mut sys = build(spec, kind)?;
     let end = end_cycle(spec);
-    // Per node and line: the clocks at which the channel, as receiver, met a
-    // dominant last EOF bit (its `field` goes EOF -> overload flag): it had taken
-    // the frame, and its transmitter sends it again (double reception).
-    let mut prev = vec![[0u8; 2]; spec.nodes];
-    let mut last_bit_overloads = vec![[Vec::new(), Vec::new()]; spec.nodes];
+    let mut overloads = LastBitOverloads::new(spec.nodes);
     while sys.cycle() < end {
         sys.step();
         for (n, node) in sys.nodes().iter().enumerate() {
-            let p = &node.outputs.probes;
-            for (l, f) in [p.chan_a_field, p.chan_b_field].into_iter().enumerate() {
-                if prev[n][l] == field::EOF && f == field::OVERLOAD_FLAG {
-                    last_bit_overloads[n][l].push(sys.cycle());
-                }
-                prev[n][l] = f;
-            }
+            overloads.observe(n, &node.outputs, sys.cycle());
         }
         observe(&sys)?;
     }
-    Ok(tally(spec, &sys, &last_bit_overloads))
-}
-
-fn tally(spec: &ScenarioSpec, sys: &DualBusSystem, overloads: &[[Vec<u64>; 2]]) -> Outcome {
-    let mut o = Outcome {
-        bits: sys.cycle() / CLOCKS_PER_BIT,
-        ..Outcome::default()
-    };
-    for (rx_node, n) in sys.nodes().iter().enumerate() {
-        // per (sender, k): (channel, clock) of every delivery
-        let mut seen: Vec<Vec<Vec<(u8, u64)>>> = vec![vec![Vec::new(); frames(spec)]; spec.nodes];
-        for got in &n.host.received {
-            let f = got.frame;
-            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
-            if sender < spec.nodes && k < frames(spec) && f == frame(spec, sender, k) {
-                seen[sender][k].push((got.channel, got.cycle));
-            } else {
-                o.foreign += 1;
-            }
-        }
-        // A second copy from the other line is CAN's double reception too when
-        // that line carried the frame twice: this receiver met a dominant last
-        // EOF bit on it between the two deliveries (its first copy there
-        // cancelled the other line's; the retransmission found none).
-        let twice_on = |line: u8, from: u64, to: u64| {
-            overloads[rx_node][line as usize]
-                .iter()
-                .any(|&c| c + 200 * CLOCKS_PER_BIT >= from && c <= to)
-        };
-        for (sender, frames) in seen.iter().enumerate() {
-            if sender == rx_node {
-                continue;
-            }
-            for (k, channels) in frames.iter().enumerate() {
-                o.deliveries += 1;
-                let on = |c: u8| channels.iter().filter(|d| d.0 == c).count();
-                match channels.as_slice() {
-                    [] => o.lost.push((rx_node, sender, k)),
-                    [_] => {}
-                    // Every frame is submitted once: a repeat from one channel is
-                    // that line carrying it twice (CAN's double reception).
-                    _ if on(0) > 1 || on(1) > 1 => o.double_received.push((rx_node, sender, k)),
-                    [(_, t0), (l1, t1)] if twice_on(*l1, *t0, *t1) => {
-                        o.double_received.push((rx_node, sender, k))
-                    }
-                    _ => o.duplicated.push((rx_node, sender, k)),
-                }
-            }
-        }
-        let p = &n.outputs.probes;
-        // both channels judged valid, neither bus-off, the main FSM on channel A
-        // (Table 1: idle1 0 .. wait2 4)
-        let normal = p.aux_a_state == 0
-            && p.aux_b_state == 0
-            && p.chan_a_err_state != 2
-            && p.chan_b_err_state != 2
-            && p.state <= 4;
-        if !normal {
-            o.lockups.push(rx_node);
-        }
-    }
-    o
+    let nodes: Vec<_> = sys.nodes().iter().map(|n| (&n.host, &n.outputs)).collect();
+    Ok(tally(
+        spec,
+        frames(spec),
+        &nodes,
+        &overloads,
+        sys.cycle(),
+        CLOCKS_PER_BIT,
+    ))
 }

@@ -10,7 +10,9 @@
 
 pub mod draw;
 pub mod dual;
+pub mod star;
 pub mod summary;
+pub mod tally;
 
 use std::io::Write;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -152,14 +154,12 @@ pub fn parse_replay(text: &str) -> Result<(Topology, usize, u64, u64), String> {
             e.message()
         )
     })?;
-    let topology = match r.topology.as_str() {
-        "dual" => Topology::Dual,
-        other => {
-            return Err(format!(
-                "unknown topology {other:?}: the topologies are dual"
-            ))
-        }
-    };
+    let topology = Topology::from_name(&r.topology).ok_or_else(|| {
+        format!(
+            "unknown topology {:?}: the topologies are dual and star",
+            r.topology
+        )
+    })?;
     if !(1..=2).contains(&r.faults) {
         return Err(format!(
             "faults = {}: a scenario has 1 or 2 faults",
@@ -173,6 +173,7 @@ pub fn parse_replay(text: &str) -> Result<(Topology, usize, u64, u64), String> {
 pub fn run_one(spec: &ScenarioSpec, engine: EngineKind) -> Result<Outcome, String> {
     match spec.topology {
         Topology::Dual => dual::run(spec, engine, |_| Ok(())),
+        Topology::Star => star::run(spec, engine, |_| Ok(())),
     }
 }
 

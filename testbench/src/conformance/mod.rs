@@ -17,6 +17,7 @@
 //! the Verilated RTL; `docs/conformance.md` lists the ISO 16845-1 items and their tests.
 
 pub mod bits;
+pub mod items;
 pub mod lower_tester;
 pub mod procedures;
 pub mod receiver;

@@ -89,7 +89,7 @@ impl StarScenario {
         }
     }
 
-    fn host_config(&self) -> HostConfig {
+    pub fn host_config(&self) -> HostConfig {
         HostConfig {
             btr: btr(STAR_BRP, STAR_TSEG1, STAR_TSEG2, STAR_SJW, false, 96),
             redundancy: true,

@@ -12,6 +12,8 @@
 //! - In LISTEN_ONLY mode the counters are frozen (contract §7: no rule a to h
 //!   applies), see [`Counters::freeze`].
 
+use crate::model::coverage;
+
 /// `err_state` value of an error-active node.
 pub const ERROR_ACTIVE: u8 = 0;
 /// `err_state` value of an error-passive node.
@@ -111,7 +113,10 @@ impl Counters {
             return;
         }
         if self.tec > 0 {
+            coverage::hit("rule g: TEC - 1");
             self.tec -= 1;
+        } else {
+            coverage::hit("rule g: TEC stays 0");
         }
         self.update();
     }
@@ -124,9 +129,13 @@ impl Counters {
             return;
         }
         if self.rec > 127 {
+            coverage::hit("rule h: REC above 127 back to 119..127");
             self.rec = 127;
         } else if self.rec > 0 {
+            coverage::hit("rule h: REC - 1");
             self.rec -= 1;
+        } else {
+            coverage::hit("rule h: REC stays 0");
         }
         self.update();
     }
@@ -134,6 +143,7 @@ impl Counters {
     /// ISO 11898-1 12.1.4.2 rule l: bus-off recovery after 128 occurrences of 11
     /// consecutive recessive bits: both counters 0, error active.
     pub fn recover(&mut self) {
+        coverage::hit("rule l: bus-off recovery (128 x 11 recessive bits)");
         self.tec = 0;
         self.rec = 0;
         self.state = ERROR_ACTIVE;
@@ -145,6 +155,7 @@ impl Counters {
         if self.is_bus_off() {
             return;
         }
+        let was = self.state;
         self.state = if self.tec > 255 {
             BUS_OFF
         } else if self.tec >= 128 || self.rec >= 128 {
@@ -152,5 +163,13 @@ impl Counters {
         } else {
             ERROR_ACTIVE
         };
+        if self.state != was && coverage::enabled() {
+            coverage::hit(match self.state {
+                BUS_OFF => "rule j: bus-off (TEC > 255)",
+                ERROR_PASSIVE if self.tec >= 128 => "rule i: error passive (TEC >= 128)",
+                ERROR_PASSIVE => "rule i: error passive (REC >= 128)",
+                _ => "rule k: error active again",
+            });
+        }
     }
 }

@@ -11,12 +11,23 @@
 use super::control::{KIND_ACK, KIND_BIT, KIND_CRC, KIND_FORM, KIND_STUFF};
 use super::frame::ErrorKind;
 use super::Bsp;
-use crate::model::field;
+use crate::model::{coverage, field};
 
 impl Bsp {
     /// An error was detected at this SAMPLE edge: count it, then start the error
     /// flag at the next bit (a CRC error arrives here only at the ACK delimiter).
     pub(super) fn error(&mut self, kind: ErrorKind) {
+        coverage::hit_with(|| {
+            let k = match kind {
+                ErrorKind::Bit => "bit",
+                ErrorKind::Stuff => "stuff",
+                ErrorKind::StuffInArbitration => "stuff in arbitration",
+                ErrorKind::Crc => "crc",
+                ErrorKind::Form => "form",
+                ErrorKind::Ack => "ack",
+            };
+            coverage::error_bin(self.transmitter, k, self.field)
+        });
         self.capture(match kind {
             ErrorKind::Bit => KIND_BIT,
             ErrorKind::Stuff | ErrorKind::StuffInArbitration => KIND_STUFF,
@@ -32,14 +43,20 @@ impl Bsp {
             }
             match kind {
                 // ISO 11898-1 12.1.4.2 rule c exception 2: no change.
-                ErrorKind::StuffInArbitration => {}
+                ErrorKind::StuffInArbitration => {
+                    coverage::hit("rule c exception 2: stuff error in arbitration, TEC unchanged")
+                }
                 // Rule c exception 1: decided during the passive flag (decision 5).
                 ErrorKind::Ack if self.counters.is_passive() => ack_exception = true,
                 // Rule c: a transmitter sending an error flag, TEC + 8.
-                _ => self.counters.tec_add(8),
+                _ => {
+                    coverage::hit("rule c: TEC + 8");
+                    self.counters.tec_add(8)
+                }
             }
         } else {
             // Rule a: a receiver detecting an error, REC + 1.
+            coverage::hit("rule a: REC + 1");
             self.counters.rec_add(1);
         }
         self.start_error_flag();
@@ -58,10 +75,13 @@ impl Bsp {
     /// Bit error while sending an active error flag or an overload flag: rule d
     /// (transmitter) or rule e (receiver) +8, and a new error flag (decision 3).
     fn flag_bit_error(&mut self) {
+        coverage::hit_with(|| coverage::error_bin(self.transmitter, "bit", self.field));
         self.capture(KIND_BIT);
         if self.transmitter {
+            coverage::hit("rule d: TEC + 8 (bit error in its flag)");
             self.counters.tec_add(8);
         } else {
+            coverage::hit("rule e: REC + 8 (bit error in its flag)");
             self.counters.rec_add(8);
         }
         self.start_error_flag();
@@ -87,6 +107,7 @@ impl Bsp {
         // Passive flag: a dominant bit is no bit error (ISO 16845-1 8.5.1), but it
         // ends rule c exception 1 for an error-passive transmitter's ACK error.
         if !b && self.ack_exception {
+            coverage::hit("rule c exception 1 ended: dominant bit in the passive flag, TEC + 8");
             self.ack_exception = false;
             self.counters.tec_add(8);
         }
@@ -114,6 +135,9 @@ impl Bsp {
     }
 
     fn start_delimiter(&mut self, f: u8) {
+        if self.ack_exception {
+            coverage::hit("rule c exception 1: passive ACK error, TEC unchanged");
+        }
         self.next_field(f);
         self.first_after_flag = f == field::ERROR_DELIM;
         self.dom_cnt = 0;
@@ -134,6 +158,7 @@ impl Bsp {
             if first_after_error_flag && !self.transmitter {
                 // Rule b: a receiver reads dominant as the first bit after its
                 // error flag, REC + 8.
+                coverage::hit("rule b: REC + 8 (dominant first bit after its error flag)");
                 self.counters.rec_add(8);
             }
             self.dom_cnt += 1;
@@ -142,8 +167,10 @@ impl Bsp {
                 // after a passive flag, and each further 8.
                 self.dom_cnt = 0;
                 if self.transmitter {
+                    coverage::hit("rule f: TEC + 8 (8 dominant bits after its flag)");
                     self.counters.tec_add(8);
                 } else {
+                    coverage::hit("rule f: REC + 8 (8 dominant bits after its flag)");
                     self.counters.rec_add(8);
                 }
             }

@@ -4,6 +4,7 @@
 
 use super::regs::aux::*;
 use super::regs::ctrl::{POLICY_KFAIL, POLICY_NONE, POLICY_PASSIVE};
+use crate::model::coverage;
 
 /// What one aux FSM samples at an edge (pre-edge values).
 #[derive(Clone, Copy, Debug, Default)]
@@ -111,6 +112,16 @@ impl AuxFsm {
                     causes |= CAUSE_STALL;
                 }
                 if causes != 0 {
+                    for (bit, name) in [
+                        (CAUSE_PASSIVE, "aux: valid -> failed (error passive)"),
+                        (CAUSE_BUSOFF, "aux: valid -> failed (bus-off)"),
+                        (CAUSE_KFAIL, "aux: valid -> failed (k failed)"),
+                        (CAUSE_STALL, "aux: valid -> failed (stall)"),
+                    ] {
+                        if causes & bit != 0 {
+                            coverage::hit(name);
+                        }
+                    }
                     n.state = FAILED;
                     n.causes |= causes;
                     n.failures = c.failures.saturating_add(1);
@@ -119,22 +130,28 @@ impl AuxFsm {
             }
             FAILED => {
                 if !i.tx_pending && i.err_state != 2 && !i.in_use {
+                    coverage::hit("aux: failed -> restart");
                     n.state = RESTART;
                     n.fail_cnt = 0;
                 }
             }
             RESTART => {
+                coverage::hit("aux: restart -> probation");
                 n.state = PROBATION;
                 n.probe_cnt = 0;
             }
             _ => {
                 if c.probe_cnt >= i.recovery_bits.max(1) {
+                    coverage::hit("aux: probation -> valid");
                     n.state = VALID;
                     n.recoveries = c.recoveries.saturating_add(1);
                     ev.recovered = true;
                     ev.int = true;
                 }
                 n.probe_cnt = if i.err_valid {
+                    if c.probe_cnt > 0 && n.state == PROBATION {
+                        coverage::hit("aux: probation count restarted by an error");
+                    }
                     0
                 } else if i.sample_point {
                     c.probe_cnt.saturating_add(1)

@@ -3,6 +3,7 @@
 //! the paper's delivery probes, `tx_time` and the TIMES / switch statistics.
 
 use super::regs::state::*;
+use crate::model::coverage;
 
 /// Everything the main FSM samples at one edge (pre-edge values).
 #[derive(Clone, Copy, Debug, Default)]
@@ -242,6 +243,9 @@ impl MainFsm {
             }
             // Unused encodings 10..15: back to idle1.
             _ => n.state = IDLE1,
+        }
+        if n.state != c.state {
+            coverage::hit_with(|| coverage::main_transition(c.state, n.state));
         }
         n.finish_q = n.transmission_ack && ev.pop;
         if n.failover != c.failover {

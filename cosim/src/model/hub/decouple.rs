@@ -26,6 +26,7 @@ impl Decoupler {
         };
         if !self.decoupled && decouple_bits != 0 && self.no_twin >= decouple_bits {
             self.decoupled = true;
+            crate::model::coverage::hit("hub: decouple (no sublink left)");
             return true;
         }
         false
@@ -33,11 +34,13 @@ impl Decoupler {
 
     /// `CTRL.force_decouple`.
     pub fn force(&mut self) {
+        crate::model::coverage::hit("hub: decouple (forced)");
         self.decoupled = true;
     }
 
     /// `CTRL.recouple` (the sublink ports are re-enabled by the hub).
     pub fn recouple(&mut self) {
+        crate::model::coverage::hit("hub: recouple");
         self.decoupled = false;
         self.no_twin = 0;
     }

@@ -14,6 +14,7 @@
 //! the hub (`super::HubModel`).
 
 use super::tracker::TrkEvent;
+use crate::model::coverage;
 
 /// `kind` codes (last fault of a port).
 pub mod kind {
@@ -201,6 +202,16 @@ impl PortGuard {
                 kind::NONE
             };
             if k != kind::NONE {
+                coverage::hit_with(|| {
+                    let what = match k {
+                        kind::STUCK_DOMINANT => "stuck dominant",
+                        kind::RESERVED_ID => "reserved identifier",
+                        kind::BIT_FLIPPING => "bit flipping",
+                        _ => "silent",
+                    };
+                    let port = if lim.node { "node port" } else { "sublink" };
+                    format!("hub: isolate {port} ({what})")
+                });
                 self.enabled = false;
                 self.kind = k;
                 self.isolations = self.isolations.saturating_add(1);
@@ -220,6 +231,11 @@ impl PortGuard {
                 self.restore_cnt.saturating_add(1)
             };
             if lim.restore_bits != 0 && self.restore_cnt >= lim.restore_bits {
+                coverage::hit(if lim.node {
+                    "hub: restore node port"
+                } else {
+                    "hub: restore sublink"
+                });
                 self.enabled = true;
                 self.restorations = self.restorations.saturating_add(1);
                 self.pec = 0;

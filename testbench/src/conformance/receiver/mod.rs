@@ -16,7 +16,7 @@
 
 use drcc_cosim::Frame;
 
-use super::bits::{stuffing_frames, Field, FrameBits, Options};
+use super::bits::{stuff_site_set, stuffing_frames, Field, FrameBits, Options};
 use super::lower_tester::{field, state, Iut, LowerTester, Lt, Run, Script};
 use super::procedures::{base, ext, rec_to, remote, rx_error, rx_stuff_error, Expected};
 use super::{timing, timing_brp};
@@ -92,33 +92,34 @@ fn flipped(v: bool) -> Lt {
     Lt::from_value(!v)
 }
 
-/// Base and extended data and remote frames: every DLC 0..=8, a spread of identifiers.
-pub fn spread_frames() -> Vec<Frame> {
-    let data = [0x00, 0xFF, 0x55, 0xAA, 0x0F, 0xF0, 0x81, 0x7E];
-    let base_ids = [
-        0x000, 0x7FF, 0x555, 0x2AA, 0x123, 0x400, 0x001, 0x3FF, 0x7FE,
-    ];
-    let ext_ids = [
-        0x0000_0000,
-        0x1FFF_FFFF,
-        0x1555_5555,
-        0x0AAA_AAAA,
-        0x1234_5678,
-        0x0004_0000,
-        0x1FFC_0000,
-        0x0003_FFFF,
-        0x1000_0001,
-    ];
+/// ISO 16845-1 7.1.1 / 7.1.2 and 8.1.1 / 8.1.2: data frames with the ISO
+/// identifiers (base 555h, 2AAh, 000h, 7FFh and one more; extended 15555555h,
+/// 0AAAAAAAh, 00000000h, 1FFFFFFFh and one more), each with every DLC 0..=8, then
+/// remote frames with DLC 0, 1, 4, 8, all of one format (`ide`).
+pub fn iso_id_frames(ide: bool) -> Vec<Frame> {
+    let data = [0x55, 0xAA, 0x00, 0xFF, 0x0F, 0xF0, 0x81, 0x7E];
+    let ids: [u32; 5] = if ide {
+        [
+            0x1555_5555,
+            0x0AAA_AAAA,
+            0x0000_0000,
+            0x1FFF_FFFF,
+            0x1234_5678,
+        ]
+    } else {
+        [0x555, 0x2AA, 0x000, 0x7FF, 0x123]
+    };
     let mut v = Vec::new();
-    for (k, &id) in base_ids.iter().enumerate() {
-        v.push(base(id, &data[..k.min(8)]));
-    }
-    for (k, &id) in ext_ids.iter().enumerate() {
-        v.push(ext(id, &data[(8 - k.min(8))..]));
+    for (k, &id) in ids.iter().enumerate() {
+        for dlc in 0..=8usize {
+            let mut d = data;
+            d.rotate_left(k);
+            let f = base(id, &d[..dlc]);
+            v.push(Frame { ide, ..f });
+        }
     }
     for dlc in [0u8, 1, 4, 8] {
-        v.push(remote(0x5A5, false, dlc));
-        v.push(remote(0x0A5A_5A5A, true, dlc));
+        v.push(remote(if ide { 0x0A5A_5A5A } else { 0x5A5 }, ide, dlc));
     }
     v
 }

@@ -90,47 +90,112 @@ pub fn iso_7_6_5_rec_ack_bit_error(iut: &Iut) {
     iso_7_2_1_ack_bit_error(iut);
 }
 
-/// 7.6.6 / 7.6.7 / 7.6.8 / 7.6.12 / 7.6.13: a form error costs a receiver REC + 1
-/// in the CRC delimiter, the ACK delimiter, EOF, the error delimiter and the
-/// overload delimiter (REC 9 before; rule h for the frames it acknowledged).
-pub fn iso_7_6_6_rec_form_errors(iut: &Iut) {
+/// Checks a form error at bit `label` of `run`: REC `before` + 1 exactly at that
+/// bit (rule a, at the sample point where the error is seen), unchanged on the bit
+/// before, the error flag from the next bit.
+#[track_caller]
+fn check_form_error_at(lt: &LowerTester, run: &Run, label: &str, before: u8) {
+    let i = run.find(label);
+    assert_eq!(
+        (run.recs[i - 1].probes.rec, run.recs[i].probes.rec),
+        (before, before + 1),
+        "{}: REC on the bit before {label} and at it",
+        lt.name()
+    );
+    assert_eq!(run.recs[i + 1].label, "ErrFlag 1");
+    assert_eq!(run.recs[i + 1].probes.field, field::ERROR_FLAG);
+}
+
+/// 7.6.6: form error in the CRC delimiter: REC + 1 at the delimiter (REC 9 before).
+pub fn iso_7_6_6_rec_form_error_crc_delimiter(iut: &Iut) {
     let (mut lt, mut exp) = start(iut);
     rec_to(&mut lt, &mut exp, 9);
     let fb = FrameBits::new(&base(0x246, &[0x46]));
-    // CRC delimiter.
     let mut s = Script::new();
     s.receive(&fb, 0..fb.crc_delim(), false);
     s.push(Lt::D, Some(true), "CRC delimiter dominant");
     exp.rec_add(1);
     rx_error_tail(&mut s, &exp);
-    lt.run(&s);
+    let run = lt.run(&s);
+    check_form_error_at(&lt, &run, "CRC delimiter dominant", 9);
     lt.check(&exp, "CRC delimiter form error");
     assert_eq!(exp.rec, 10);
-    // ACK delimiter.
+}
+
+/// 7.6.7: form error in the ACK delimiter (ACK dominant, ACK delimiter dominant;
+/// REC 9 before): REC 8 at the ACK slot (rule h), 9 at the ACK delimiter.
+pub fn iso_7_6_7_rec_form_error_ack_delimiter(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    rec_to(&mut lt, &mut exp, 9);
+    let fb = FrameBits::new(&ext(0x0767_0767, &[0x67]));
     let mut s = Script::new();
     s.receive(&fb, 0..fb.ack_slot() + 1, true);
     s.push(Lt::D, Some(true), "ACK delimiter dominant");
     exp.rx_ok();
     exp.rec_add(1);
     rx_error_tail(&mut s, &exp);
-    lt.run(&s);
+    let run = lt.run(&s);
+    assert_eq!(
+        run.recs[fb.ack_slot()].probes.rec,
+        8,
+        "{}: rule h",
+        lt.name()
+    );
+    check_form_error_at(&lt, &run, "ACK delimiter dominant", 8);
+    assert!(run.rx_valid_bits().is_empty());
     lt.check(&exp, "ACK delimiter form error");
-    // EOF bit 3.
-    eof_form_error(&mut lt, &mut exp, &fb, 3);
-    assert_eq!(exp.rec, 10);
-    // Error delimiter bit 4.
-    delimiter_form_error(&mut lt, &mut exp, 4);
-    assert_eq!(exp.rec, 12);
-    // Overload delimiter bit 5.
-    let mut s = overload_after_frame(&fb, 6);
-    s.repeat(4, Lt::R, Some(true), "OvlDelim");
-    s.push(Lt::D, Some(true), "OvlDelim 5 dominant");
-    exp.rx_ok();
-    exp.rec_add(1);
-    rx_error_tail(&mut s, &exp);
-    lt.run(&s);
-    lt.check(&exp, "overload delimiter form error");
-    assert_eq!(exp.rec, 12);
+    assert_eq!(exp.rec, 9);
+}
+
+/// 7.6.8: form error in EOF bits 2, 3 and 5 (REC 9 before each frame): REC - 1 at
+/// the ACK slot, + 1 at the dominant EOF bit.
+pub fn iso_7_6_8_rec_form_error_eof(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    rec_to(&mut lt, &mut exp, 9);
+    let fb = FrameBits::new(&base(0x768, &[0x68]));
+    for n in [2u8, 3, 5] {
+        lt.set_context(format!("EOF bit {n}"));
+        let run = eof_form_error(&mut lt, &mut exp, &fb, n);
+        check_form_error_at(&lt, &run, &format!("EOF {n} dominant"), 8);
+        assert_eq!(exp.rec, 9);
+    }
+}
+
+/// 7.6.12: form error in its error delimiter (bits 2 and 7, after an active
+/// error flag for a stuff error): REC + 1 at the corrupted bit.
+pub fn iso_7_6_12_rec_form_error_error_delimiter(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    for k in [2usize, 7] {
+        lt.set_context(format!("error delimiter bit {k}"));
+        let before = exp.rec + 1;
+        let run = delimiter_form_error(&mut lt, &mut exp, k);
+        check_form_error_at(&lt, &run, &format!("ErrDelim {k} dominant"), before);
+    }
+    assert_eq!(exp.rec, 4);
+}
+
+/// 7.6.13: form error in its overload delimiter (bits 2 and 7, overload frame on a
+/// dominant EOF bit 7 after a data frame; REC 9 before): REC + 1 at the corrupted
+/// bit.
+pub fn iso_7_6_13_rec_form_error_overload_delimiter(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    rec_to(&mut lt, &mut exp, 9);
+    let fb = FrameBits::new(&base(0x713, &[0x13]));
+    for k in [2usize, 7] {
+        lt.set_context(format!("overload delimiter bit {k}"));
+        let mut s = overload_after_frame(&fb, 6);
+        s.repeat(k - 1, Lt::R, Some(true), "OvlDelim");
+        let label = format!("OvlDelim {k} dominant");
+        s.push(Lt::D, Some(true), label.clone());
+        exp.rx_ok();
+        let before = exp.rec;
+        exp.rec_add(1);
+        rx_error_tail(&mut s, &exp);
+        let run = lt.run(&s);
+        check_form_error_at(&lt, &run, &label, before);
+        lt.check(&exp, "overload delimiter form error");
+    }
+    assert_eq!(exp.rec, 9);
 }
 
 /// 7.6.9: stuff error, REC + 1 (in the identifier, the DLC, the data, the CRC).

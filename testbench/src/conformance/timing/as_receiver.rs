@@ -211,12 +211,11 @@ fn glitches(iut: &Iut, t: BitTiming, pulses: &[(u32, u32)]) -> (bool, bool) {
     (left_idle, sent)
 }
 
-/// 7.7.9: glitch filtering in idle: a dominant pulse shorter than SYNC_SEG +
-/// TSEG1 is not a SOF (the IUT stays idle and silent), one tq longer is; after a
-/// hard synchronisation no further edge is used before the sample point (pulse
-/// group of ISO 16845-1 7.7.9.2 on the 16-tq timing: 4 dominant, 2 recessive, 3
-/// dominant, 3 recessive, 9 dominant tq).
-pub fn iso_7_7_9_glitch_filtering(iut: &Iut) {
+/// 7.7.9.1: glitch filtering in idle: a dominant pulse of tseg1 - 1 or tseg1 tq
+/// (shorter than SYNC_SEG + TSEG1, so recessive again at the sample point) is not
+/// a SOF: the IUT stays idle and silent; one tq longer is a SOF (default and
+/// 16-tq timing).
+pub fn iso_7_7_9_1_glitch_not_sof(iut: &Iut) {
     for t in [timing(), timing_wide()] {
         let s = t.tseg1 as u32;
         for len in [s - 1, s] {
@@ -232,11 +231,31 @@ pub fn iso_7_7_9_glitch_filtering(iut: &Iut) {
             s + 1
         );
     }
-    let group = [(4, 2), (3, 3), (9, 1)];
+}
+
+/// 7.7.9.2: after the hard synchronisation on an edge in idle, no further edge is
+/// used before the sample point: the ISO 16845-1 pulse group on the 16-tq timing
+/// (tseg1 = PROP + PHASE1 = 11 tq: a first glitch of (11 - 2) / 2 = 4 tq, 2 tq
+/// recessive, a second glitch of 4.5 - 1 = 3 tq, 1 + 2 tq recessive, a third glitch
+/// of 11 - 2 = 9 tq) leaves the IUT idle and silent: the sample point stays 12 tq
+/// after the first edge, where the bus is recessive. The same group with the
+/// third glitch 1 tq earlier covers that sample point and is a SOF (the
+/// reference that the group is placed at the sample point).
+pub fn iso_7_7_9_2_no_resync_after_hard_sync(iut: &Iut) {
+    let t = timing_wide();
+    let s = t.tseg1 as u32;
+    let first = (s - 2) / 2;
+    let group = [(first, 2), (first - 1, 3), (s - 2, 1)];
+    assert_eq!(group, [(4, 2), (3, 3), (9, 1)]);
     assert_eq!(
-        glitches(iut, timing_wide(), &group),
+        glitches(iut, t, &group),
         (false, false),
-        "pulse group"
+        "pulse group after a hard synchronisation"
+    );
+    let earlier = [(first, 2), (first - 1, 2), (s - 2, 1)];
+    assert!(
+        glitches(iut, t, &earlier).0,
+        "the third glitch over the sample point is a SOF"
     );
 }
 

@@ -24,30 +24,66 @@ fn one_bit_per_field(fb: &FrameBits) -> Vec<usize> {
     v
 }
 
-/// 8.2.1 / 8.2.2 (and 8.6.6): a bit error in every field the IUT drives (base and
-/// extended; dominant identifier bits forced recessive, control, data and CRC bits
-/// of both values, CRC delimiter, ACK delimiter, EOF): error flag from the next
-/// bit, TEC + 8 at the bit, then a successful retransmission.
-pub fn iso_8_2_1_bit_error_every_field(iut: &Iut) {
-    for f in [
-        base(0x2B5, &[0x0F, 0xF0]),
-        ext(0x0AB5_3C21, &[0x5A]),
-        remote(0x1C3, false, 3),
-    ] {
-        let fb = FrameBits::new(&f);
-        let pos = one_bit_per_field(&fb);
-        let fields: Vec<Field> = pos.iter().map(|&p| fb.bits[p].field).collect();
-        for want in [
-            Field::IdA,
-            Field::Dlc,
-            Field::Crc,
-            Field::CrcDelim,
-            Field::Eof,
-        ] {
-            assert!(fields.contains(&want));
-        }
-        corrupt_each(iut, &f, &pos);
+/// Inverts one bit of each value in every field `frame` drives (see
+/// [`one_bit_per_field`]) on a fresh IUT each; `want` are fields that must be
+/// among them. Each: flag from the next bit, TEC + 8 at the bit, a successful
+/// retransmission.
+fn bit_error_each_field(iut: &Iut, frame: &Frame, want: &[Field]) {
+    let fb = FrameBits::new(frame);
+    let pos = one_bit_per_field(&fb);
+    for w in want {
+        assert!(
+            pos.iter().any(|&p| fb.bits[p].field == *w),
+            "{frame}: no bit of {w:?}"
+        );
     }
+    corrupt_each(iut, frame, &pos);
+}
+
+/// 8.2.1 (and 8.6.6): a bit error in every field the IUT drives in a base frame
+/// (dominant identifier bits forced recessive, RTR, IDE, r0, DLC, data and CRC
+/// bits of both values, CRC delimiter, ACK delimiter, EOF), data and remote
+/// frames: error flag from the next bit, TEC + 8 at the bit, then a successful
+/// retransmission.
+pub fn iso_8_2_1_bit_error_base(iut: &Iut) {
+    let common = [
+        Field::IdA,
+        Field::SrrRtr,
+        Field::Ide,
+        Field::R0,
+        Field::Dlc,
+        Field::Crc,
+        Field::CrcDelim,
+        Field::AckDelim,
+        Field::Eof,
+    ];
+    let mut with_data = common.to_vec();
+    with_data.push(Field::Data);
+    bit_error_each_field(iut, &base(0x2B5, &[0x0F, 0xF0]), &with_data);
+    // A remote frame's RTR is a recessive arbitration bit (lost arbitration).
+    let remote_fields: Vec<Field> = common.into_iter().filter(|&f| f != Field::SrrRtr).collect();
+    bit_error_each_field(iut, &remote(0x1C3, false, 3), &remote_fields);
+}
+
+/// 8.2.2: the same in an extended frame: dominant base and extended identifier
+/// bits forced recessive, r1 (the FDF position) and r0, and every other field it
+/// drives (IDE and SRR are recessive arbitration bits: read dominant they are
+/// lost arbitration, 8.1.4).
+pub fn iso_8_2_2_bit_error_extended(iut: &Iut) {
+    let want = [
+        Field::IdA,
+        Field::IdB,
+        Field::RtrExt,
+        Field::R1,
+        Field::R0,
+        Field::Dlc,
+        Field::Data,
+        Field::Crc,
+        Field::CrcDelim,
+        Field::AckDelim,
+        Field::Eof,
+    ];
+    bit_error_each_field(iut, &ext(0x0AB5_3C21, &[0x5A]), &want);
 }
 
 /// The recessive stuff bit after the IDE bit of a base frame: ISO 11898-1 puts

@@ -19,13 +19,13 @@
 
 use drcc_cosim::Frame;
 
-use super::bits::{stuffing_frames, Field, FrameBits};
+use super::bits::{stuff_site_set, stuffing_frames, Field, FrameBits};
 use super::lower_tester::{field, state, Iut, LowerTester, Lt, Run, Script};
 use super::procedures::{
     base, ext, interframe_tx, remote, tec_to, tx_ack_error, tx_bit_error, tx_ok, Expected,
 };
 use super::receiver::{
-    data_pattern_frames, lose_arbitration, lost_then_error_then_send, receive_ok, spread_frames,
+    data_pattern_frames, iso_id_frames, lose_arbitration, lost_then_error_then_send, receive_ok,
 };
 use super::{timing, timing_brp};
 

@@ -160,24 +160,38 @@ pub fn iso_8_5_8_no_suspend_after_arbitration_lost(iut: &Iut) {
     lose_arbitration(&mut lt, &mut exp, &base(0x558, &[8]), &base(0x550, &[0]));
 }
 
-/// 8.5.9 / 8.5.10: an error-passive node never transmits without its own SOF: a
-/// dominant 3rd intermission bit after its error frame, or after its own frame,
-/// is another node's SOF, which it receives.
+/// 8.5.9: an error-passive node never transmits without its own SOF: after its
+/// error frame, a frame of lower priority from the tester whose SOF is the 3rd
+/// intermission bit, suspend bit 1 or suspend bit 7 is received and acknowledged
+/// (the IUT's `tx` recessive except its ACK: had it joined, its higher-priority
+/// identifier would show on `tx`); its retransmission starts with its own SOF
+/// after that frame. The same after its own successful frame (a second frame
+/// pending, SOF at intermission bit 3).
 pub fn iso_8_5_9_passive_never_transmits_without_sof(iut: &Iut) {
-    // After its error frame.
     let (mut lt, mut exp) = passive_transmitter(iut, 128);
-    let mine = FrameBits::new(&base(0x559, &[9]));
-    let theirs = FrameBits::new(&base(0x123, &[1]));
-    lt.request(mine.frame);
-    let mut s = passive_error_until_intermission_3(&mut exp, &mine, 2);
-    s.receive(&theirs, 0..theirs.len(), true).intermission();
-    s.transmit(&mine, 0..mine.len(), true, 0);
-    exp.rx_ok();
-    exp.tx_ok();
-    interframe_tx(&mut s, &exp);
-    lt.run(&s);
-    assert_eq!(lt.received, vec![theirs.frame]);
+    let mine = FrameBits::new(&base(0x259, &[9]));
+    let theirs = FrameBits::new(&base(0x6AA, &[1]));
+    let mut n = 0;
+    // The tester's SOF after 0 (intermission bit 3), 1 (suspend bit 1) and 7
+    // (suspend bit 7) recessive bits.
+    for wait in [0usize, 1, 7] {
+        lt.set_context(format!("SOF {wait} bits after intermission bit 2"));
+        lt.request(mine.frame);
+        let mut s = passive_error_until_intermission_3(&mut exp, &mine, 2);
+        s.repeat(wait, Lt::R, Some(true), "Intermission 3 / Suspend");
+        s.receive(&theirs, 0..theirs.len(), true).intermission();
+        s.transmit(&mine, 0..mine.len(), true, 0);
+        exp.rx_ok();
+        exp.tx_ok();
+        interframe_tx(&mut s, &exp);
+        let run = lt.run(&s);
+        n += 1;
+        assert_eq!(lt.received.len(), n, "{}: frame received", lt.name());
+        assert_eq!(run.tx_done_bits().len(), 1);
+        lt.check(&exp, "after both frames");
+    }
     // After its own frame (a second frame pending).
+    lt.set_context("after its own frame");
     let a = FrameBits::new(&base(0x510, &[1, 0]));
     lt.request(a.frame);
     let mut s = Script::new();
@@ -192,8 +206,105 @@ pub fn iso_8_5_9_passive_never_transmits_without_sof(iut: &Iut) {
     exp.tx_ok();
     interframe_tx(&mut s, &exp);
     lt.run(&s);
-    assert_eq!(lt.received, vec![theirs.frame, theirs.frame]);
+    assert_eq!(lt.received, vec![theirs.frame; 4]);
     lt.check(&exp, "after the frames");
+}
+
+/// Number of completed occurrences of 11 consecutive recessive bits in `bus`
+/// (ISO 11898-1 12.1.4.2 l; a dominant bit restarts the run) and the length of
+/// the run in progress at its end.
+fn recessive_runs(bus: &[bool]) -> (u32, u32) {
+    let (mut run, mut occurrences) = (0, 0);
+    for &b in bus {
+        run = if b { run + 1 } else { 0 };
+        if run == 11 {
+            run = 0;
+            occurrences += 1;
+        }
+    }
+    (occurrences, run)
+}
+
+/// 8.5.10 (the ISO 16845-1 procedure, classical): an error-passive transmitter
+/// (TEC 247) sends frame A, acknowledged (246), frame B pending; a dominant
+/// intermission bit 1 starts an overload frame whose 1st bit the tester forces
+/// recessive (rule d: 254, a passive flag); 6 + 7 bits later a dominant 8th
+/// delimiter bit starts another overload frame, whose 1st bit forced recessive
+/// makes TEC exceed 255: bus-off from the next bit (no flag). 25 bits later the
+/// tester sends a frame: the bus-off IUT does not acknowledge it, does not deliver
+/// it and does not send B (only A was transmitted); after 128 occurrences of 11
+/// recessive bits it is error active with TEC = REC = 0 and sends B.
+pub fn iso_8_5_10_bus_off_no_transmission(iut: &Iut) {
+    let (mut lt, mut exp) = passive_transmitter(iut, 240);
+    assert_eq!(exp.tec, 247);
+    let a = FrameBits::new(&base(0x5A0, &[0xA0]));
+    let b = FrameBits::new(&base(0x5A1, &[0xA1]));
+    let theirs = FrameBits::new(&base(0x7A5, &[0x5A, 0xA5]));
+    lt.request(a.frame);
+    let mut s = Script::new();
+    s.transmit(&a, 0..a.len(), true, 2);
+    exp.tx_ok();
+    let i = s.len();
+    s.push(Lt::D, Some(true), "Intermission 1 dominant");
+    s.request_at(i, b.frame);
+    s.push(Lt::ForceR, Some(false), "OvlFlag 1 forced recessive");
+    exp.tec_add(8);
+    assert_eq!((exp.tec, exp.state()), (254, state::PASSIVE));
+    s.passive_flag("PassiveFlag");
+    s.repeat(7, Lt::R, Some(true), "ErrDelim");
+    s.push(Lt::D, Some(true), "ErrDelim 8 dominant");
+    s.push(Lt::ForceR, Some(false), "OvlFlag 1 (2nd) forced recessive");
+    exp.tec_add(8);
+    assert_eq!(exp.state(), state::BUS_OFF);
+    let off = s.len() - 1;
+    s.repeat(24, Lt::R, Some(true), "Bus-off");
+    s.receive(&theirs, 0..theirs.len(), false);
+    let bus: Vec<bool> = s.bits[off + 1..].iter().map(|b| b.drive != Lt::D).collect();
+    let (mut occurrences, mut run) = recessive_runs(&bus);
+    assert!(occurrences < 128);
+    while occurrences < 128 {
+        s.push(Lt::R, Some(true), "Bus-off recovery");
+        run += 1;
+        if run == 11 {
+            run = 0;
+            occurrences += 1;
+        }
+    }
+    let rec = lt.run(&s);
+    assert_eq!(rec.tx_done_bits(), vec![a.eof(7)], "{}: only A", lt.name());
+    let p = rec.at("OvlFlag 1 forced recessive").probes;
+    assert_eq!((p.tec, p.err_state), (254, state::PASSIVE), "{}", lt.name());
+    let p = rec.recs[off].probes;
+    assert!(
+        p.tec > 255 && p.err_state == state::BUS_OFF,
+        "{}: bus-off at the 2nd overload flag bit error (TEC {}, state {})",
+        lt.name(),
+        p.tec,
+        p.err_state
+    );
+    let last = rec.recs.len() - 1;
+    for (k, r) in rec.recs.iter().enumerate().skip(off) {
+        let want = if k < last {
+            state::BUS_OFF
+        } else {
+            state::ACTIVE
+        };
+        assert_eq!(
+            r.probes.err_state,
+            want,
+            "{}: error state at bit {k} ({})",
+            lt.name(),
+            r.label
+        );
+    }
+    assert!(
+        lt.received.is_empty(),
+        "{}: no frame delivered while bus-off",
+        lt.name()
+    );
+    exp = Expected::default();
+    lt.check(&exp, "after the recovery");
+    tx_ok(&mut lt, &mut exp, &b, 0);
 }
 
 /// 8.5.11: bus-off at TEC > 255; the IUT stays bus-off (recessive, no flag, no

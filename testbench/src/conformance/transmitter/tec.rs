@@ -119,16 +119,67 @@ pub fn iso_8_6_7_tec_form_error(iut: &Iut) {
     corrupt_each(iut, &f, &[fb.crc_delim(), fb.pos(Field::AckDelim, 0)]);
 }
 
-/// 8.6.9 / 8.6.10: form error in its error delimiter and in its overload
-/// delimiter, TEC + 8 each.
-pub fn iso_8_6_9_tec_delimiter_form_errors(iut: &Iut) {
-    iso_8_3_4_form_error_in_delimiter_tx(iut);
-    iso_8_4_5_form_error_in_overload_delimiter_tx(iut);
+/// Asserts TEC `before` on the bit before `label` in `run` and `before + 8` at it,
+/// and the error flag from the next bit.
+#[track_caller]
+fn check_tec_step_at(lt: &LowerTester, run: &Run, label: &str, before: u16) {
+    let i = run.find(label);
+    assert_eq!(
+        (run.recs[i - 1].probes.tec, run.recs[i].probes.tec),
+        (before, before + 8),
+        "{}: TEC on the bit before {label} and at it",
+        lt.name()
+    );
+    assert_eq!(run.recs[i + 1].label, "ErrFlag 1", "{}", lt.name());
 }
 
-/// 8.6.11 / 8.6.12: a successful transmission decrements TEC at EOF bit 7 (base and
-/// extended frames); at 0 it stays 0.
-pub fn iso_8_6_11_tec_successful_transmission(iut: &Iut) {
+/// 8.6.9: form error in its error delimiter (bits 2, 4 and 7, after a bit error
+/// in its frame): TEC + 8 exactly at the corrupted bit, a new flag from the next.
+pub fn iso_8_6_9_tec_error_delimiter_form_error(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    let f = base(0x669, &[0x69]);
+    let fb = FrameBits::new(&f);
+    lt.request(f);
+    for (n, k) in [2usize, 4, 7].into_iter().enumerate() {
+        lt.set_context(format!("error delimiter bit {k}"));
+        let before = exp.tec + 8;
+        let run = tx_delimiter_dominant(&mut lt, &mut exp, &fb, k, if n == 0 { 2 } else { 0 });
+        check_tec_step_at(&lt, &run, &format!("ErrDelim {k} dominant"), before);
+    }
+    assert_eq!(exp.tec, 48);
+    tx_ok(&mut lt, &mut exp, &fb, 0);
+}
+
+/// 8.6.10: form error in its overload delimiter (bits 2 and 7; overload frame on
+/// a dominant intermission bit 1 after its own frame): TEC + 8 exactly at the
+/// corrupted bit.
+pub fn iso_8_6_10_tec_overload_delimiter_form_error(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    let f = base(0x66A, &[0x6A]);
+    let fb = FrameBits::new(&f);
+    for k in [2usize, 7] {
+        lt.set_context(format!("overload delimiter bit {k}"));
+        lt.request(f);
+        let mut s = own_frame_then_overload(&fb, 1, 6, 2);
+        s.repeat(k - 1, Lt::R, Some(true), "OvlDelim");
+        let label = format!("OvlDelim {k} dominant");
+        s.push(Lt::D, Some(true), label.clone());
+        exp.tx_ok();
+        let before = exp.tec;
+        exp.tec_add(8);
+        s.error_flag(exp.active()).error_delim();
+        interframe_tx(&mut s, &exp);
+        let run = lt.run(&s);
+        assert_eq!(run.tx_done_bits(), vec![fb.eof(7)]);
+        check_tec_step_at(&lt, &run, &label, before);
+        lt.check(&exp, "after the form error in the overload delimiter");
+    }
+    assert_eq!(exp.tec, 15);
+}
+
+/// 8.6.11: an error-active IUT decrements TEC at EOF bit 7 of a successful
+/// transmission (base and extended frames, TEC 8 before); at 0 it stays 0.
+pub fn iso_8_6_11_tec_successful_transmission_active(iut: &Iut) {
     let (mut lt, mut exp) = start(iut);
     send_ok(&mut lt, &mut exp, &base(0x611, &[]));
     assert_eq!(exp.tec, 0);
@@ -139,32 +190,130 @@ pub fn iso_8_6_11_tec_successful_transmission(iut: &Iut) {
         let run = tx_ok(&mut lt, &mut exp, &fb, 0);
         assert_eq!(run.recs[fb.eof(6)].probes.tec, exp.tec + 1);
         assert_eq!(run.recs[fb.eof(7)].probes.tec, exp.tec);
+        assert_eq!(run.recs[fb.eof(7)].probes.err_state, state::ACTIVE);
     }
     assert_eq!(exp.tec, 14);
 }
 
-/// 8.6.13 / 8.6.14: a 13-bit overload flag leaves TEC unchanged (- 1 for the frame
-/// only); a 13-bit error flag costs + 8 only.
-pub fn iso_8_6_13_tec_13_bit_flags(iut: &Iut) {
+/// 8.6.12: an error-passive IUT decrements TEC at EOF bit 7 of a successful
+/// transmission: TEC 135 (passive), then 8 frames: 134, .., 128 passive (each
+/// followed by suspend transmission), 127 error active.
+pub fn iso_8_6_12_tec_successful_transmission_passive(iut: &Iut) {
+    let (mut lt, mut exp) = passive_transmitter(iut, 128);
+    assert_eq!(exp.tec, 135);
+    for k in 0..8u32 {
+        let f = base(0x612 + k, &[k as u8]);
+        let fb = FrameBits::new(&f);
+        lt.set_context(format!("frame {k}, TEC {} before", exp.tec));
+        let before = exp.tec;
+        lt.request(f);
+        // Suspend is part of the previous frame's interframe space.
+        let run = tx_ok(&mut lt, &mut exp, &fb, 2);
+        let (at6, at7) = (run.recs[fb.eof(6)].probes, run.recs[fb.eof(7)].probes);
+        assert_eq!((at6.tec, at7.tec), (before, before - 1), "{}", lt.name());
+        assert_eq!(at6.err_state, state::PASSIVE);
+        let want = if before > 128 {
+            state::PASSIVE
+        } else {
+            state::ACTIVE
+        };
+        assert_eq!(at7.err_state, want, "{}: state at EOF 7", lt.name());
+    }
+    assert_eq!(exp.tec, 127);
+}
+
+/// 8.6.13: a 13-bit overload flag (a dominant intermission bit 1 after its own
+/// frame, its 6-bit overload flag and 7 more dominant bits) leaves TEC unchanged:
+/// TEC 8 before the frame, 7 after it (rule g only), at every dominant bit and
+/// after the overload frame.
+pub fn iso_8_6_13_tec_13_bit_overload_flag(iut: &Iut) {
     let (mut lt, mut exp) = start(iut);
     let f = base(0x613, &[0x13]);
     let fb = FrameBits::new(&f);
     lt.request(f);
-    tx_error_with_dominant_after(&mut lt, &mut exp, &fb, 7, 2);
+    tx_ack_error(&mut lt, &mut exp, &fb, 2);
     assert_eq!(exp.tec, 8);
     let mut s = own_frame_then_overload(&fb, 1, 6, 0);
     s.repeat(7, Lt::D, Some(true), "Dominant after flag");
     s.overload_delim().intermission();
     exp.tx_ok();
-    lt.run(&s);
+    let run = lt.run(&s);
+    let first = run.find("Intermission 1 dominant");
+    for r in &run.recs[first..] {
+        assert_eq!(r.probes.tec, 7, "{}: TEC at {}", lt.name(), r.label);
+    }
     lt.check(&exp, "after the 13-bit overload flag");
     assert_eq!(exp.tec, 7);
 }
 
-/// 8.6.15 / 8.6.16: a dominant last bit of its error delimiter or overload
-/// delimiter changes no counter (see 8.4.2).
-pub fn iso_8_6_15_tec_unchanged_last_delimiter_bit(iut: &Iut) {
-    iso_8_4_2_overload_at_delimiter_bit_8_tx(iut);
+/// 8.6.14: a 13-bit error flag (a bit error on a dominant data bit, its 6-bit
+/// active flag and 7 more dominant bits): TEC 8 for the error, unchanged at every
+/// further dominant bit (rule f needs 8); the retransmission then gives 7.
+pub fn iso_8_6_14_tec_13_bit_error_flag(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    let f = base(0x614, &[0x0F]);
+    let fb = FrameBits::new(&f);
+    let p = fb.pos(Field::Data, 0);
+    assert!(!fb.bits[p].value);
+    lt.request(f);
+    let mut s = Script::new();
+    s.transmit(&fb, 0..p, false, 2);
+    s.push(Lt::ForceR, Some(false), "Data 0 forced recessive");
+    exp.tec_add(8);
+    s.active_flag("ErrFlag");
+    s.repeat(7, Lt::D, Some(true), "Dominant after flag");
+    s.error_delim().intermission();
+    let run = lt.run(&s);
+    for r in &run.recs[p..] {
+        assert_eq!(r.probes.tec, 8, "{}: TEC at {}", lt.name(), r.label);
+    }
+    lt.check(&exp, "after the 13-bit error flag");
+    tx_ok(&mut lt, &mut exp, &fb, 0);
+    assert_eq!(exp.tec, 7);
+}
+
+/// 8.6.15: a dominant last bit of its overload delimiter (overload frame after
+/// its own frame, TEC 8 before the frame) starts an overload frame and changes no
+/// counter: TEC 7 (rule g only) at that bit and after.
+pub fn iso_8_6_15_tec_unchanged_overload_delimiter_bit_8(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    let f = base(0x615, &[0x15]);
+    let fb = FrameBits::new(&f);
+    lt.request(f);
+    tx_ack_error(&mut lt, &mut exp, &fb, 2);
+    let mut s = own_frame_then_overload(&fb, 1, 6, 0);
+    s.repeat(7, Lt::R, Some(true), "OvlDelim");
+    s.push(Lt::D, Some(true), "OvlDelim 8 dominant");
+    s.overload_flag().overload_delim().intermission();
+    exp.tx_ok();
+    let run = lt.run(&s);
+    let i = run.find("OvlDelim 8 dominant");
+    assert_eq!(run.recs[i].probes.tec, 7, "{}", lt.name());
+    assert_eq!(run.recs[i].probes.field, field::OVERLOAD_FLAG);
+    assert_eq!(run.recs[i + 1].probes.tec, 7);
+    lt.check(&exp, "TEC - 1 for the frame only");
+    assert_eq!(exp.tec, 7);
+}
+
+/// 8.6.16: a dominant last bit of its error delimiter (after a bit error: TEC 8)
+/// starts an overload frame and changes no counter: TEC 8 at that bit and after.
+pub fn iso_8_6_16_tec_unchanged_error_delimiter_bit_8(iut: &Iut) {
+    let (mut lt, mut exp) = start(iut);
+    let f = base(0x616, &[0x16]);
+    let fb = FrameBits::new(&f);
+    lt.request(f);
+    let run = tx_delimiter_dominant(&mut lt, &mut exp, &fb, 8, 2);
+    let i = run.find("ErrDelim 8 dominant");
+    assert_eq!(
+        (run.recs[i - 1].probes.tec, run.recs[i].probes.tec),
+        (8, 8),
+        "{}",
+        lt.name()
+    );
+    assert_eq!(run.recs[i].probes.field, field::OVERLOAD_FLAG);
+    assert_eq!(run.last().probes.tec, 8);
+    assert_eq!(exp.tec, 8);
+    tx_ok(&mut lt, &mut exp, &fb, 0);
 }
 
 /// 8.6.17: ACK error while error passive: TEC unchanged (rule c exception 1).

@@ -135,6 +135,9 @@ impl Mailbox {
             let rebalance = self.settle && self.dir == RECEIVE;
             (
                 if rebalance {
+                    crate::model::coverage::hit(
+                        "dmr: receive mailbox re-balanced after a recovery",
+                    );
                     None
                 } else {
                     Some(verdict(false))

@@ -6,6 +6,7 @@
 use super::super::regs::dmr::*;
 use super::engine::EvalFault;
 use super::{DmrBlock, DmrEvents, DmrInputs};
+use crate::model::coverage;
 
 /// A fault set against a line at this edge.
 #[derive(Clone, Copy, Debug)]
@@ -54,6 +55,7 @@ impl DmrBlock {
                 // are no evidence about the restored line; every mailbox restarts
                 // balanced (§7).
                 if c.tx_fault[l] || c.rx_fault[l] {
+                    coverage::hit("dmr: recovery (connection service after a fault)");
                     recovered = true;
                 }
             }
@@ -120,11 +122,22 @@ impl DmrBlock {
         let mut tx_set = [false; 2];
         for f in &faults {
             let l = f.line;
+            coverage::hit_with(|| {
+                let cause = match f.cause {
+                    CAUSE_CS_FAILED => "connection service failed",
+                    CAUSE_BUSOFF => "bus-off",
+                    CAUSE_DEVIATION => "deviation",
+                    _ => "timeout",
+                };
+                let dir = if f.tx { "tx" } else { "rx" };
+                format!("dmr: {dir} fault ({cause})")
+            });
             // §6: a receive fault against a line already unable to transmit only
             // records itself: the imbalance it saw is the deleted copies of that
             // known fault (its own and the other devices'); it neither reloads the
             // recovery delay nor cancels the line's CS, which alone decides.
             if !f.tx && c.tx_fault[l] {
+                coverage::hit("dmr: rx fault on a line already unable to transmit");
                 self.rx_fault[l] = true;
                 self.cause = f.cause;
                 self.cause_line = l as u8;
@@ -167,6 +180,7 @@ impl DmrBlock {
         if against[a] && !c.tx_fault[o] && !c.rx_fault[o] && !against[o] {
             self.acl = c.acl ^ 1;
             ev.acl_switch = true;
+            coverage::hit("dmr: ACL switch");
         }
         // `dmr_state` from the flags before the edge (seed Figure 6).
         self.dmr_state = match (c.tx_fault[0] as u8 + c.tx_fault[1] as u8, c.rx_fault) {
@@ -176,6 +190,15 @@ impl DmrBlock {
             _ => PASSIVE,
         };
         if self.dmr_state != c.dmr_state {
+            coverage::hit_with(|| {
+                let s = |x| match x {
+                    ACTIVE => "active",
+                    PASSIVE => "passive",
+                    DISABLED => "disabled",
+                    _ => "disconnected",
+                };
+                format!("dmr: state {} -> {}", s(c.dmr_state), s(self.dmr_state))
+            });
             self.state_changes = c.state_changes.saturating_add(1);
             ev.int = true;
         }

@@ -1,0 +1,116 @@
+//! What a campaign scenario showed, from the hosts' point of view, on any topology
+//! of DRCC nodes: frames lost (a host never popped another host's frame),
+//! duplicated (popped once from each channel) or foreign (popped but never sent),
+//! CAN's own double reception counted apart, and nodes not back to normal.
+
+use drcc_cosim::dual::host::HostDriver;
+use drcc_cosim::engine::drcc::DrccOutputs;
+use drcc_cosim::model::field;
+
+use super::dual::frame;
+use super::{Outcome, ScenarioSpec};
+
+/// Per node and channel, the clocks at which the channel, as receiver, met a
+/// dominant last EOF bit (its `field` goes EOF -> overload flag): it had taken the
+/// frame, and the transmitter sends it again (ISO 11898-1 double reception).
+#[derive(Clone, Debug)]
+pub struct LastBitOverloads {
+    prev: Vec<[u8; 2]>,
+    at: Vec<[Vec<u64>; 2]>,
+}
+
+impl LastBitOverloads {
+    pub fn new(nodes: usize) -> Self {
+        LastBitOverloads {
+            prev: vec![[0; 2]; nodes],
+            at: vec![[Vec::new(), Vec::new()]; nodes],
+        }
+    }
+
+    /// Watches node `n`'s channel fields after the edge of clock `cycle`.
+    pub fn observe(&mut self, n: usize, o: &DrccOutputs, cycle: u64) {
+        let p = &o.probes;
+        for (l, f) in [p.chan_a_field, p.chan_b_field].into_iter().enumerate() {
+            if self.prev[n][l] == field::EOF && f == field::OVERLOAD_FLAG {
+                self.at[n][l].push(cycle);
+            }
+            self.prev[n][l] = f;
+        }
+    }
+}
+
+/// The node is back to normal: both auxiliary FSMs judge their channel valid,
+/// neither channel is bus-off, and the main FSM is on channel A (Table 1 states
+/// idle1 0 .. wait2 4). A channel may still be error passive: ISO 11898-1 lowers
+/// TEC by one per successful transmission, so a transmitter that reached TEC 200
+/// needs over 70 frames to be error active again, which is CAN's rule, not a lockup.
+pub fn node_normal(o: &DrccOutputs) -> bool {
+    let p = &o.probes;
+    p.aux_a_state == 0
+        && p.aux_b_state == 0
+        && p.chan_a_err_state != 2
+        && p.chan_b_err_state != 2
+        && p.state <= 4
+}
+
+/// Tallies the deliveries of every node (`nodes[i]`: its host and outputs at the
+/// end), `frames` per sender, over `cycles` clocks of `clocks_per_bit`.
+pub fn tally(
+    spec: &ScenarioSpec,
+    frames: usize,
+    nodes: &[(&HostDriver, &DrccOutputs)],
+    overloads: &LastBitOverloads,
+    cycles: u64,
+    clocks_per_bit: u64,
+) -> Outcome {
+    let mut o = Outcome {
+        bits: cycles / clocks_per_bit,
+        ..Outcome::default()
+    };
+    for (rx_node, (host, outputs)) in nodes.iter().enumerate() {
+        // per (sender, k): (channel, clock) of every delivery
+        let mut seen: Vec<Vec<Vec<(u8, u64)>>> = vec![vec![Vec::new(); frames]; spec.nodes];
+        for got in &host.received {
+            let f = got.frame;
+            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
+            if sender < spec.nodes && k < frames && f == frame(spec, sender, k) {
+                seen[sender][k].push((got.channel, got.cycle));
+            } else {
+                o.foreign += 1;
+            }
+        }
+        // A second copy from the other channel is CAN's double reception too when
+        // that channel carried the frame twice: this receiver met a dominant last
+        // EOF bit on it between the two deliveries (its first copy there
+        // cancelled the other channel's; the retransmission found none).
+        let twice_on = |line: u8, from: u64, to: u64| {
+            overloads.at[rx_node][line as usize]
+                .iter()
+                .any(|&c| c + 200 * clocks_per_bit >= from && c <= to)
+        };
+        for (sender, frames) in seen.iter().enumerate() {
+            if sender == rx_node {
+                continue;
+            }
+            for (k, channels) in frames.iter().enumerate() {
+                o.deliveries += 1;
+                let on = |c: u8| channels.iter().filter(|d| d.0 == c).count();
+                match channels.as_slice() {
+                    [] => o.lost.push((rx_node, sender, k)),
+                    [_] => {}
+                    // Every frame is submitted once: a repeat from one channel is
+                    // that channel carrying it twice (CAN's double reception).
+                    _ if on(0) > 1 || on(1) > 1 => o.double_received.push((rx_node, sender, k)),
+                    [(_, t0), (l1, t1)] if twice_on(*l1, *t0, *t1) => {
+                        o.double_received.push((rx_node, sender, k))
+                    }
+                    _ => o.duplicated.push((rx_node, sender, k)),
+                }
+            }
+        }
+        if !node_normal(outputs) {
+            o.lockups.push(rx_node);
+        }
+    }
+    o
+}

@@ -1,0 +1,262 @@
+//! Functional coverage over the test suite's workloads (issue 15, part 4;
+//! `drcc coverage`): the reference model's cover points
+//! ([`drcc_cosim::model::coverage`]) counted while the workloads the tests run
+//! execute on the model: every conformance item, random traffic, random error
+//! stress, the dual-bus and star fault tables, the DMR plan, a hub's random
+//! register and link stimulus, and small fault campaigns on both topologies.
+//!
+//! The bins come from the standard, the papers and the contracts
+//! (`coverage::bins`), not from what a run hits; the report lists every bin with
+//! its count, the bins never hit, the combinations that cannot occur (with the
+//! reason) and any name counted that is not a bin (an illegal transition, or a
+//! cover point without a definition).
+
+use std::collections::BTreeMap;
+use std::time::{Duration, Instant};
+
+use drcc_cosim::engine::hub::{HubEngine, HubOutputs};
+use drcc_cosim::engine::hub_model::HubModelEngine;
+use drcc_cosim::model::coverage::{self, Bin, Unreachable};
+
+use crate::campaign::{self, Campaign, Topology};
+use crate::conformance;
+use crate::dmr::PlanConfig;
+use crate::engines::EngineKind;
+use crate::fault_gen::{plan, FaultEvent, FaultParams};
+use crate::hub_stim::HubStim;
+use crate::random::Traffic;
+use crate::scenario::Expectations;
+
+/// One workload: its name and the run.
+pub struct Workload {
+    pub name: &'static str,
+    pub run: fn() -> Result<(), String>,
+}
+
+/// The workloads, in run order.
+pub fn workloads() -> Vec<Workload> {
+    vec![
+        Workload {
+            name: "conformance suite (every ISO 16845-1 item, model)",
+            run: conformance_items,
+        },
+        Workload {
+            name: "random traffic (3 seeds, 1 Mbit/s and 125 kbit/s)",
+            run: random_traffic,
+        },
+        Workload {
+            name: "random error stress (4 episodes)",
+            run: error_stress,
+        },
+        Workload {
+            name: "dual-bus fault table and the paper's experiment",
+            run: dual_table,
+        },
+        Workload {
+            name: "star fault table",
+            run: star_table,
+        },
+        Workload {
+            name: "DMR plan (Tables 2 and 3; deviation limit 3 and 100)",
+            run: dmr_plan,
+        },
+        Workload {
+            name: "hub random register and link stimulus (200,000 clocks)",
+            run: hub_stimulus,
+        },
+        Workload {
+            name: "fault campaigns (dual 150, star 40 single faults)",
+            run: campaigns,
+        },
+    ]
+}
+
+fn conformance_items() -> Result<(), String> {
+    for (_, item) in conformance::items::ITEMS {
+        item(&conformance::model_iut);
+    }
+    Ok(())
+}
+
+fn random_traffic() -> Result<(), String> {
+    for (seed, hz, bitrate) in [
+        (1, 8_000_000, 1_000_000),
+        (2, 8_000_000, 1_000_000),
+        (3, 24_000_000, 125_000),
+    ] {
+        let sc = Traffic::new(seed, 80, hz, bitrate).scenario()?;
+        crate::run::run(&sc, EngineKind::Model)?;
+    }
+    Ok(())
+}
+
+fn error_stress() -> Result<(), String> {
+    for seed in 1..=4u64 {
+        let mut t = Traffic::new(seed, 200, 8_000_000, 1_000_000);
+        t.nodes = 3 + (seed as usize % 3);
+        t.max_gap_bits = 600;
+        let mut sc = t.scenario()?;
+        let cpb = sc.clocks_per_bit();
+        sc.expect = Expectations::Explicit(Vec::new());
+        let mut params = FaultParams::new(seed, 25 * cpb, 5_000 * cpb);
+        params.forced = vec![(0.3, FaultEvent::LongDominant), (0.6, FaultEvent::BusOff)];
+        let fp = plan(&sc, &params)?;
+        sc.faults = fp.faults.clone();
+        sc.max_cycles = sc.max_cycles.max(fp.end + 20_000 * cpb);
+        crate::run::run(&sc, EngineKind::Model)?;
+    }
+    Ok(())
+}
+
+fn dual_table() -> Result<(), String> {
+    crate::dual::fault_table(EngineKind::Model, None)?;
+    crate::paper::switchover_table(EngineKind::Model)?;
+    Ok(())
+}
+
+fn star_table() -> Result<(), String> {
+    crate::star::star_table(EngineKind::Model, None).map(|_| ())
+}
+
+fn dmr_plan() -> Result<(), String> {
+    crate::dmr::report::dmr_table(&PlanConfig::standard(), EngineKind::Model, None, |_| {})?;
+    // With a deviation limit the skew of a fault never reaches, the mailboxes
+    // judge by their timeout (CiA 701 Tables 2 and 3: "timeout").
+    let timeouts = PlanConfig {
+        limit: 100,
+        ..PlanConfig::standard()
+    };
+    crate::dmr::report::dmr_table(&timeouts, EngineKind::Model, None, |_| {}).map(|_| ())
+}
+
+fn hub_stimulus() -> Result<(), String> {
+    for (seed, n, m) in [(1, 4, 2), (2, 3, 1)] {
+        let mut hub = HubModelEngine::new(n, m)?;
+        let mut stim = HubStim::new(seed, n, m);
+        let mut prev = HubOutputs::default();
+        for _ in 0..100_000 {
+            let i = stim.next(&prev);
+            prev = hub.step(&i);
+        }
+    }
+    Ok(())
+}
+
+fn campaigns() -> Result<(), String> {
+    for (topology, count) in [(Topology::Dual, 150), (Topology::Star, 40)] {
+        let c = Campaign {
+            topology,
+            faults: 1,
+            count,
+            seed: 2026,
+            shard: (1, 1),
+            engine: EngineKind::Model,
+        };
+        campaign::run(
+            &c,
+            1,
+            &mut std::io::sink(),
+            |_, _| Ok(()),
+            |_| {},
+            Duration::from_secs(3600),
+        )?;
+    }
+    Ok(())
+}
+
+/// What a collection found.
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub counts: BTreeMap<String, u64>,
+    pub bins: Vec<Bin>,
+    pub unreachable: Vec<Unreachable>,
+    /// Wall time per workload.
+    pub times: Vec<(&'static str, Duration)>,
+}
+
+impl Report {
+    /// Bins never hit.
+    pub fn missed(&self) -> Vec<&Bin> {
+        self.bins
+            .iter()
+            .filter(|b| self.count(&b.name) == 0)
+            .collect()
+    }
+
+    /// Names counted that are not bins.
+    pub fn unlisted(&self) -> Vec<(String, u64)> {
+        coverage::unlisted(&self.counts)
+    }
+
+    pub fn count(&self, name: &str) -> u64 {
+        self.counts.get(name).copied().unwrap_or(0)
+    }
+
+    /// The report as Markdown: every bin with its count by group, then the bins
+    /// never hit, the unlisted names and the unreachable combinations.
+    pub fn table(&self) -> String {
+        let mut s = String::new();
+        let hit = self.bins.len() - self.missed().len();
+        s.push_str(&format!(
+            "{hit} of {} bins hit ({} unlisted names counted)\n\n",
+            self.bins.len(),
+            self.unlisted().len()
+        ));
+        s.push_str("| group | bin | hits | source |\n|---|---|---:|---|\n");
+        for b in &self.bins {
+            s.push_str(&format!(
+                "| {} | {} | {} | {} |\n",
+                b.group,
+                b.name,
+                self.count(&b.name),
+                b.source
+            ));
+        }
+        let missed = self.missed();
+        if !missed.is_empty() {
+            s.push_str("\nNever hit:\n");
+            for b in missed {
+                s.push_str(&format!("- {}\n", b.name));
+            }
+        }
+        let unlisted = self.unlisted();
+        if !unlisted.is_empty() {
+            s.push_str(
+                "\nCounted but not a bin (illegal, or a cover point without a definition):\n",
+            );
+            for (n, c) in unlisted {
+                s.push_str(&format!("- {n}: {c}\n"));
+            }
+        }
+        s.push_str("\nUnreachable (cannot occur):\n\n| group | what | why |\n|---|---|---|\n");
+        for u in &self.unreachable {
+            s.push_str(&format!("| {} | {} | {} |\n", u.group, u.what, u.reason));
+        }
+        s
+    }
+}
+
+/// Runs every workload on the model with coverage on; `progress` sees each
+/// workload's name before it runs. One collection at a time per process (the
+/// counters are global).
+pub fn collect(mut progress: impl FnMut(&str)) -> Result<Report, String> {
+    let mut times = Vec::new();
+    coverage::start();
+    let result = (|| -> Result<(), String> {
+        for w in workloads() {
+            progress(w.name);
+            let t = Instant::now();
+            (w.run)().map_err(|e| format!("{}: {e}", w.name))?;
+            times.push((w.name, t.elapsed()));
+        }
+        Ok(())
+    })();
+    let counts = coverage::stop();
+    result?;
+    Ok(Report {
+        counts,
+        bins: coverage::bins(),
+        unreachable: coverage::unreachable(),
+        times,
+    })
+}

@@ -4,7 +4,7 @@
 # with a release build:
 #   cargo build --release
 #   mkdir -p campaign-results
-#   sbatch --array=1-32 scripts/campaign/slurm-array.sh 100000 1
+#   sbatch --array=1-32 scripts/campaign/slurm-array.sh 100000 1 dual   # or star
 # then merge:  ./target/release/drcc campaign merge campaign-results/*.jsonl
 #SBATCH --job-name=drcc-campaign
 #SBATCH --cpus-per-task=8
@@ -13,9 +13,10 @@
 set -euo pipefail
 count="${1:-100000}"
 seed="${2:-1}"
+topology="${3:-dual}"
 shards="${SLURM_ARRAY_TASK_COUNT:?run as a Slurm job array (sbatch --array=1-N)}"
 shard="${SLURM_ARRAY_TASK_ID:?run as a Slurm job array (sbatch --array=1-N)}"
 mkdir -p campaign-results
-exec ./target/release/drcc campaign --topology dual --faults single \
+exec ./target/release/drcc campaign --topology "$topology" --faults single \
   --count "$count" --seed "$seed" --shard "$shard/$shards" \
-  --out "campaign-results/shard-$shard-of-$shards.jsonl"
+  --out "campaign-results/$topology-shard-$shard-of-$shards.jsonl"

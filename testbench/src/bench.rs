@@ -11,6 +11,7 @@
 //!   stimulus of its co-simulation test (frames, ACKs, faulty ports, register
 //!   traffic).
 
+use crate::campaign::Topology;
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
@@ -198,24 +199,27 @@ pub fn run(out: &mut dyn Write, budget: Duration) -> io::Result<Vec<Measurement>
         })
         .collect();
     writeln!(out, "hub 4x2 (speed vs model): {}", hub_line.join(", "))?;
-    // Fault campaign throughput on one core: single-fault dual-bus scenarios of
-    // `drcc campaign` (seed 1), model and Verilated RTL side by side.
-    let mut campaign_line = Vec::new();
-    for engine in [EngineKind::Model, EngineKind::Verilator] {
-        match campaign_rate(engine, budget) {
-            Ok((n, secs)) => campaign_line.push(format!(
-                "{} {:.2} scenarios/s ({n} in {secs:.1} s)",
-                engine.name(),
-                n as f64 / secs
-            )),
-            Err(e) => campaign_line.push(format!("{}: not available: {e}", engine.name())),
+    // Fault campaign throughput on one core: single-fault scenarios of `drcc
+    // campaign` (seed 1) per topology, model and Verilated RTL side by side.
+    for topology in [Topology::Dual, Topology::Star] {
+        let mut campaign_line = Vec::new();
+        for engine in [EngineKind::Model, EngineKind::Verilator] {
+            match campaign_rate(topology, engine, budget) {
+                Ok((n, secs)) => campaign_line.push(format!(
+                    "{} {:.2} scenarios/s ({n} in {secs:.1} s)",
+                    engine.name(),
+                    n as f64 / secs
+                )),
+                Err(e) => campaign_line.push(format!("{}: not available: {e}", engine.name())),
+            }
         }
+        writeln!(
+            out,
+            "campaign, {}, single faults, per core: {}",
+            topology.name(),
+            campaign_line.join(", ")
+        )?;
     }
-    writeln!(
-        out,
-        "campaign, dual bus, single faults, per core: {}",
-        campaign_line.join(", ")
-    )?;
     for (w, _) in WORKLOADS {
         if let (Some(v), Some(r)) = (rate(EngineKind::Verilator, w), rate(EngineKind::RustHdl, w)) {
             writeln!(
@@ -228,14 +232,18 @@ pub fn run(out: &mut dyn Write, budget: Duration) -> io::Result<Vec<Measurement>
     Ok(all)
 }
 
-/// Single-fault dual-bus campaign scenarios run on one core within `budget` (at
-/// least one): (scenarios, seconds).
-fn campaign_rate(engine: EngineKind, budget: Duration) -> Result<(u64, f64), String> {
+/// Single-fault campaign scenarios of `topology` run on one core within `budget`
+/// (at least one): (scenarios, seconds).
+fn campaign_rate(
+    topology: Topology,
+    engine: EngineKind,
+    budget: Duration,
+) -> Result<(u64, f64), String> {
     crate::engines::available(engine)?;
     let start = std::time::Instant::now();
     let mut n = 0;
     while n == 0 || start.elapsed() < budget {
-        let spec = crate::campaign::draw(crate::campaign::Topology::Dual, 1, 1, n);
+        let spec = crate::campaign::draw(topology, 1, 1, n);
         crate::campaign::run_one(&spec, engine)?;
         n += 1;
     }

@@ -369,16 +369,33 @@ pub fn iso_8_6_18_tec_passive_ack_error_then_dominant(iut: &Iut) {
 /// 8.6.19: stuff error in arbitration on a recessive stuff bit read dominant: TEC
 /// unchanged (rule c exception 2).
 pub fn iso_8_6_19_tec_unchanged_stuff_error_in_arbitration(iut: &Iut) {
-    let (mut lt, mut exp) = start(iut);
-    let f = base(0x01A, &[0x19]);
-    let fb = FrameBits::new(&f);
-    let p = fb.stuff_positions()[0];
-    assert!(fb.bits[p].value && fb.in_arbitration(p));
-    lt.request(f);
-    tx_ack_error(&mut lt, &mut exp, &fb, 2);
-    tx_corrupt(&mut lt, &mut exp, &fb, p, 0);
-    assert_eq!(exp.tec, 8);
-    tx_ok(&mut lt, &mut exp, &fb, 0);
+    // The first stuff bit of identifier 01Ah (inside the identifier), and the
+    // stuff bit after the last bit of identifier 2A0h (five dominant identifier
+    // bits end it: the stuff bit sits between the identifier and RTR, still in
+    // arbitration).
+    let first = |fb: &FrameBits| fb.stuff_positions()[0];
+    let after_id = |fb: &FrameBits| {
+        fb.stuff_positions()
+            .into_iter()
+            .find(|&p| fb.bits[p + 1].field == Field::SrrRtr)
+            .expect("a stuff bit right before RTR")
+    };
+    let cases: [(u32, fn(&FrameBits) -> usize); 2] = [(0x01A, first), (0x2A0, after_id)];
+    for (id, at) in cases {
+        let (mut lt, mut exp) = start(iut);
+        let f = base(id, &[0x19]);
+        let fb = FrameBits::new(&f);
+        let p = at(&fb);
+        assert!(
+            fb.bits[p].value && fb.in_arbitration(p),
+            "{id:03X}h bit {p}"
+        );
+        lt.request(f);
+        tx_ack_error(&mut lt, &mut exp, &fb, 2);
+        tx_corrupt(&mut lt, &mut exp, &fb, p, 0);
+        assert_eq!(exp.tec, 8);
+        tx_ok(&mut lt, &mut exp, &fb, 0);
+    }
 }
 
 /// 8.6.20: its own successful reception does not change TEC.

@@ -11,6 +11,8 @@
 //! reason) and any name counted that is not a bin (an illegal transition, or a
 //! cover point without a definition).
 
+pub mod races;
+
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
@@ -67,6 +69,10 @@ pub fn workloads() -> Vec<Workload> {
         Workload {
             name: "fault campaigns (dual 150, star 40 single faults)",
             run: campaigns,
+        },
+        Workload {
+            name: "random search for the main FSM's races (1,500 short dual-bus runs)",
+            run: main_fsm_races,
         },
     ]
 }
@@ -162,6 +168,10 @@ fn campaigns() -> Result<(), String> {
         )?;
     }
     Ok(())
+}
+
+fn main_fsm_races() -> Result<(), String> {
+    (0..races::RUNS).try_for_each(races::run)
 }
 
 /// What a collection found.

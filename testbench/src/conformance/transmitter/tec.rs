@@ -380,7 +380,8 @@ pub fn iso_8_6_19_tec_unchanged_stuff_error_in_arbitration(iut: &Iut) {
             .find(|&p| fb.bits[p + 1].field == Field::SrrRtr)
             .expect("a stuff bit right before RTR")
     };
-    let cases: [(u32, fn(&FrameBits) -> usize); 2] = [(0x01A, first), (0x2A0, after_id)];
+    type StuffBit = fn(&FrameBits) -> usize;
+    let cases: [(u32, StuffBit); 2] = [(0x01A, first), (0x2A0, after_id)];
     for (id, at) in cases {
         let (mut lt, mut exp) = start(iut);
         let f = base(id, &[0x19]);

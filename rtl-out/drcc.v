@@ -544,6 +544,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  [15:0] aux_a__recovery_bits;
     reg  aux_a__tick;
     reg  aux_a__in_use;
+    reg  aux_a__restart_ok;
     reg  aux_a__err_valid;
     reg  aux_a__err_tx;
     reg  aux_a__tx_done;
@@ -569,6 +570,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  [15:0] aux_b__recovery_bits;
     reg  aux_b__tick;
     reg  aux_b__in_use;
+    reg  aux_b__restart_ok;
     reg  aux_b__err_valid;
     reg  aux_b__err_tx;
     reg  aux_b__tx_done;
@@ -1064,6 +1066,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .recovery_bits(aux_a__recovery_bits),
         .tick(aux_a__tick),
         .in_use(aux_a__in_use),
+        .restart_ok(aux_a__restart_ok),
         .err_valid(aux_a__err_valid),
         .err_tx(aux_a__err_tx),
         .tx_done(aux_a__tx_done),
@@ -1091,6 +1094,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .recovery_bits(aux_b__recovery_bits),
         .tick(aux_b__tick),
         .in_use(aux_b__in_use),
+        .restart_ok(aux_b__restart_ok),
         .err_valid(aux_b__err_valid),
         .err_tx(aux_b__err_tx),
         .tx_done(aux_b__tx_done),
@@ -1473,6 +1477,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         aux_a__recovery_bits = regs__recovery_bits;
         aux_a__tick = ticker__tick;
         aux_a__in_use = main__in_use_a;
+        aux_a__restart_ok = chan_a__field == Field__Idle;
         aux_a__err_valid = chan_a__err_valid;
         aux_a__err_tx = chan_a__err_tx;
         aux_a__tx_done = chan_a__tx_done;
@@ -1489,6 +1494,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         aux_b__recovery_bits = regs__recovery_bits;
         aux_b__tick = ticker__tick;
         aux_b__in_use = main__in_use_b;
+        aux_b__restart_ok = (chan_b__field == Field__Idle) & aux_a__valid;
         aux_b__err_valid = chan_b__err_valid;
         aux_b__err_tx = chan_b__err_tx;
         aux_b__tx_done = chan_b__tx_done;
@@ -1629,7 +1635,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
 endmodule // top
 
 
-module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
+module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
     
     // Module arguments
     input wire  clk;
@@ -1641,6 +1647,7 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     input wire  [15:0] recovery_bits;
     input wire  tick;
     input wire  in_use;
+    input wire  restart_ok;
     input wire  err_valid;
     input wire  err_tx;
     input wire  tx_done;
@@ -1828,7 +1835,7 @@ module drcc__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             end
         end
         else if (st__q == s_failed) begin
-            if (~tx_pending & ~in_use & (err_state != es_busoff)) begin
+            if (~tx_pending & ~in_use & restart_ok & (err_state != es_busoff)) begin
                 st__d = s_restart;
                 fail_q__d = zero4;
             end
@@ -2049,7 +2056,7 @@ module drcc__aux_a__stall_q(d,q,clock);
 endmodule // drcc__aux_a__stall_q
 
 
-module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
+module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
     
     // Module arguments
     input wire  clk;
@@ -2061,6 +2068,7 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
     input wire  [15:0] recovery_bits;
     input wire  tick;
     input wire  in_use;
+    input wire  restart_ok;
     input wire  err_valid;
     input wire  err_tx;
     input wire  tx_done;
@@ -2248,7 +2256,7 @@ module drcc__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,e
             end
         end
         else if (st__q == s_failed) begin
-            if (~tx_pending & ~in_use & (err_state != es_busoff)) begin
+            if (~tx_pending & ~in_use & restart_ok & (err_state != es_busoff)) begin
                 st__d = s_restart;
                 fail_q__d = zero4;
             end

@@ -430,6 +430,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.aux_a.recovery_bits.next = self.regs.recovery_bits.val();
         self.aux_a.tick.next = self.ticker.tick.val();
         self.aux_a.in_use.next = self.main.in_use_a.val();
+        // restart only at bus idle, B only while A is valid (contract §5)
+        self.aux_a.restart_ok.next = self.chan_a.field.val() == Field::Idle;
         self.aux_a.err_valid.next = self.chan_a.err_valid.val();
         self.aux_a.err_tx.next = self.chan_a.err_tx.val();
         self.aux_a.tx_done.next = self.chan_a.tx_done.val();
@@ -446,6 +448,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.aux_b.recovery_bits.next = self.regs.recovery_bits.val();
         self.aux_b.tick.next = self.ticker.tick.val();
         self.aux_b.in_use.next = self.main.in_use_b.val();
+        self.aux_b.restart_ok.next =
+            (self.chan_b.field.val() == Field::Idle) & self.aux_a.valid.val();
         self.aux_b.err_valid.next = self.chan_b.err_valid.val();
         self.aux_b.err_tx.next = self.chan_b.err_tx.val();
         self.aux_b.tx_done.next = self.chan_b.tx_done.val();

@@ -5,8 +5,9 @@
 //! - valid -> failed when a cause of the switch policy holds
 //!   (`super::switch_policy`: error passive, bus-off, k failed attempts, stall);
 //!   the cause bits are latched, `failures` counts.
-//! - failed -> restart when the channel is idle, not bus-off and not in use by
-//!   the main FSM.
+//! - failed -> restart when the channel is idle, not bus-off, not in use by
+//!   the main FSM and `restart_ok` (at bus idle, and B only while A is valid:
+//!   the other channel receives while this one re-integrates).
 //! - restart -> probation after one clock, during which the channel is reset
 //!   (`chan_rst`: it re-integrates with the bus as after power-up).
 //! - probation -> valid after `recovery_bits` error-free sample points.
@@ -43,6 +44,8 @@ pub struct AuxFsm {
     // bit tick and main FSM
     pub tick: Signal<In, Bit>,
     pub in_use: Signal<In, Bit>,
+    /// A restart cannot cost a frame: the channel at bus idle, and for B, A valid.
+    pub restart_ok: Signal<In, Bit>,
     // channel
     pub err_valid: Signal<In, Bit>,
     pub err_tx: Signal<In, Bit>,
@@ -104,6 +107,7 @@ impl Default for AuxFsm {
             recovery_bits: Default::default(),
             tick: Default::default(),
             in_use: Default::default(),
+            restart_ok: Default::default(),
             err_valid: Default::default(),
             err_tx: Default::default(),
             tx_done: Default::default(),
@@ -219,6 +223,7 @@ impl Logic for AuxFsm {
             // a bus-off channel recovers by itself first (ISO 11898-1 12.1.4.2)
             if !self.tx_pending.val()
                 & !self.in_use.val()
+                & self.restart_ok.val()
                 & (self.err_state.val() != self.es_busoff.val())
             {
                 self.st.d.next = self.s_restart.val();

@@ -19,6 +19,9 @@ pub struct AuxInputs {
     pub tick: bool,
     /// The main FSM is in one of this channel's states.
     pub in_use: bool,
+    /// A restart cannot cost a frame: the channel is at bus idle, and for channel
+    /// B, A is valid (contract §5).
+    pub restart_ok: bool,
     // The channel's registered outputs.
     pub tx_pending: bool,
     pub tx_done: bool,
@@ -129,7 +132,7 @@ impl AuxFsm {
                 }
             }
             FAILED => {
-                if !i.tx_pending && i.err_state != 2 && !i.in_use {
+                if !i.tx_pending && i.err_state != 2 && !i.in_use && i.restart_ok {
                     coverage::hit("aux: failed -> restart");
                     n.state = RESTART;
                     n.fail_cnt = 0;

@@ -67,7 +67,7 @@ pub mod tx_queues;
 
 use crate::engine::drcc::{DrccInputs, DrccOutputs, DrccProbes};
 use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Mode};
-use crate::model::ChannelModel;
+use crate::model::{field, ChannelModel};
 use aux_fsm::{AuxFsm, AuxInputs};
 use dmr::{DmrBlock, DmrInputs};
 use main_fsm::{FsmInputs, MainFsm};
@@ -325,7 +325,9 @@ impl DrccModel {
             ints |= int::SWITCH;
         }
 
-        // Aux FSMs (§5).
+        // Aux FSMs (§5). A channel is restarted only at bus idle, B only while A is
+        // valid (pre-edge state).
+        let a_valid = self.aux[0].state == aux::VALID;
         for (c, o) in [pa, pb].into_iter().enumerate() {
             let aev = self.aux[c].edge(&AuxInputs {
                 running,
@@ -335,6 +337,7 @@ impl DrccModel {
                 recovery_bits: r.rmb as u16,
                 tick,
                 in_use: in_use[c],
+                restart_ok: o.probes.field == field::IDLE && (c == 0 || a_valid),
                 tx_pending: o.tx_pending,
                 tx_done: o.tx_done,
                 rx_valid: o.rx_valid,

@@ -210,7 +210,8 @@ impl DmrBlock {
             time: self.time,
             cs: self.cs,
             mb_sel: self.mb_sel,
-            mbx: self.mbx.clone(),
+            // moved, not cloned: this runs at every clock outside DMR mode
+            mbx: std::mem::replace(&mut self.mbx, Mailboxes { mb: Vec::new() }),
             state_changes: self.state_changes,
             acl_switches: self.acl_switches,
             cs_count: self.cs_count,

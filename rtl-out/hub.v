@@ -4371,7 +4371,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  id_val = 32'h48550402;
     localparam  btr_reset = 15'b10100000000;
     localparam  sd_up_reset = 6'b1110;
-    localparam  sd_sub_reset = 6'b10000;
+    localparam  sd_sub_reset = 6'b11100;
     localparam  sd_min = 6'b1110;
     localparam  sr_reset = 4'h8;
     localparam  bf_up_reset = 8'h20;

@@ -48,7 +48,7 @@
 /* GUARD_CFG: Port guard thresholds; writable only in reset mode (RW) */
 #define HUB_GUARD_CFG_OFFSET 0x0Cu
 #define HUB_GUARD_CFG_INDEX 3u
-#define HUB_GUARD_CFG_RESET 0x0008100Eu
+#define HUB_GUARD_CFG_RESET 0x00081C0Eu
 #define HUB_GUARD_CFG_SD_RUN_UP_SHIFT 0u
 #define HUB_GUARD_CFG_SD_RUN_UP_MASK 0x0000003Fu
 #define HUB_GUARD_CFG_SD_RUN_SUB_SHIFT 8u

@@ -71,7 +71,7 @@ impl Default for HubConfig {
             btr: MAP.register("BTR").map_or(0, |r| r.reset_value()),
             ack_interdep: true,
             sd_run_up: 14,
-            sd_run_sub: 16,
+            sd_run_sub: 28,
             sr_frames: 8,
             bf_up: 32,
             bf_sub: 64,

@@ -7,13 +7,13 @@ use super::*;
 fn decoupling_after_decouple_bits_is_sticky_until_recouple() {
     let cfg = [(RESTORE_CFG, 10 | 30 << 16)];
     let mut b = Bench::running(2, 1, &cfg, true);
-    // The only sublink stuck dominant: isolated at its 16th sample.
+    // The only sublink stuck dominant: isolated at its 28th sample (sd_run_sub 28).
     b.pins = 0b011;
     let k = b.now();
-    for _ in 0..60 * CPB {
+    for _ in 0..70 * CPB {
         b.step();
     }
-    let iso = k + 8 + 15 * CPB;
+    let iso = k + 8 + 27 * CPB;
     assert!(!enabled(&b.log[iso], 2));
     // no_twin counts from the next sample (the isolation edge still had it
     // enabled before the edge): decoupled at the 30th sample after it.

@@ -27,14 +27,14 @@ fn stuck_dominant_node_port_is_isolated_at_its_14th_dominant_sample() {
 }
 
 #[test]
-fn stuck_dominant_sublink_is_isolated_at_its_16th_dominant_sample() {
+fn stuck_dominant_sublink_is_isolated_at_its_28th_dominant_sample() {
     let mut b = Bench::running(2, 1, &[], true);
     b.pins = 0b011;
     let k = b.now();
     for _ in 0..40 * CPB {
         b.step();
     }
-    let iso = k + 8 + 15 * CPB;
+    let iso = k + 8 + 27 * CPB;
     assert!(enabled(&b.log[iso - 1], 2));
     assert!(!enabled(&b.log[iso], 2));
     assert!(b.log[iso + 1].probes.coupled);

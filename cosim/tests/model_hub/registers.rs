@@ -31,7 +31,7 @@ fn registers_reset_to_the_contract_values() {
     let mut b = Bench::new(4, 2);
     assert_eq!(b.read(CTRL), RESET_MODE | ACK_INTERDEP);
     assert_eq!(b.read(BTR), (4 << 6) | (1 << 10));
-    assert_eq!(b.read(GUARD_CFG), 14 | 16 << 8 | 8 << 16);
+    assert_eq!(b.read(GUARD_CFG), 14 | 28 << 8 | 8 << 16);
     assert_eq!(b.read(BF_CFG), 32 | 64 << 8);
     assert_eq!(b.read(RESTORE_CFG), 1408 | 4096 << 16);
     // STATUS: reset mode, not decoupled, no ACK window, IDLE_WAIT, 6 ports enabled.
@@ -109,7 +109,7 @@ fn refused_writes_set_illegal_and_change_nothing() {
     assert!(illegal_after(&mut b, BF_CFG, 20));
     assert!(illegal_after(&mut b, RESTORE_CFG, 20));
     assert_eq!(b.read(BTR), (4 << 6) | (1 << 10));
-    assert_eq!(b.read(GUARD_CFG), 14 | 16 << 8 | 8 << 16);
+    assert_eq!(b.read(GUARD_CFG), 14 | 28 << 8 | 8 << 16);
     assert_eq!(b.read(RESTORE_CFG), 1408 | 4096 << 16);
     // Read-only and unmapped words.
     for adr in [ID, STATUS, STATS, PORT0, PORT0 + 5, PORT0 + 6, 10, 15, 63] {

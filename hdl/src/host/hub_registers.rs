@@ -126,7 +126,7 @@ pub const REGISTERS: &[Register] = &[
         desc: "Port guard thresholds; writable only in reset mode",
         fields: &[
             cfg("sd_run_up", 0, 6, 14, "dominant bits that isolate a node port (writes below 14 store 14)"),
-            cfg("sd_run_sub", 8, 6, 16, "dominant bits that isolate an incoming sublink (writes below 14 store 14)"),
+            cfg("sd_run_sub", 8, 6, 28, "dominant bits that isolate an incoming sublink (writes below 14 store 14; the default covers a faulty node port's run joined to 12 legal dominant bits before its own hub isolates it)"),
             cfg("sr_frames", 16, 4, 8, "consecutive silent frames that isolate a port (0 = silence rule off)"),
         ],
     },
@@ -262,7 +262,7 @@ mod tests {
         assert_eq!(register("BTR").unwrap().reset_value(), (4 << 6) | (1 << 10));
         assert_eq!(
             register("GUARD_CFG").unwrap().reset_value(),
-            14 | (16 << 8) | (8 << 16)
+            14 | (28 << 8) | (8 << 16)
         );
         assert_eq!(register("BF_CFG").unwrap().reset_value(), 32 | (64 << 8));
         assert_eq!(

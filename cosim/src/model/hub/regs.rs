@@ -57,7 +57,7 @@ pub mod btr {
 pub mod guard_cfg {
     /// Smallest stored stuck-dominant threshold (writes below are clamped).
     pub const SD_MIN: u32 = 14;
-    pub const RESET: u32 = 14 | (16 << 8) | (8 << 16);
+    pub const RESET: u32 = 14 | (28 << 8) | (8 << 16);
 }
 
 /// `BF_CFG`: [7:0] `bf_up`, [15:8] `bf_sub`.

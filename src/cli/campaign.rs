@@ -285,7 +285,7 @@ fn replay(path: &Path, engine: &str) -> CliResult {
     let o = campaign::run_one(&spec, kind).map_err(error)?;
     println!(
         "{} deliveries: {} lost {:?}, {} duplicated {:?}, {} received twice from one line {:?}, \
-         {} foreign; lockups at nodes {:?}",
+         {} foreign; lockups: {}",
         o.deliveries,
         o.lost.len(),
         o.lost,
@@ -294,7 +294,7 @@ fn replay(path: &Path, engine: &str) -> CliResult {
         o.double_received.len(),
         o.double_received,
         o.foreign,
-        o.lockups
+        campaign::describe_lockups(&spec, &o)
     );
     if o.clean() {
         Ok(())

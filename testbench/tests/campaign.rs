@@ -154,3 +154,17 @@ fn every_campaign_finding_replays_clean_on_the_model_and_the_rtl() {
         }
     }
 }
+
+/// A lockup names the node, or on the star the hub (indices past the nodes).
+#[test]
+fn lockups_name_nodes_and_hubs() {
+    let spec = draw(Topology::Star, 1, 1, 0);
+    let o = campaign::Outcome {
+        lockups: vec![1, spec.nodes + 1],
+        ..Default::default()
+    };
+    let text = campaign::describe_lockups(&spec, &o);
+    assert!(text.starts_with("node 1, hub 2"), "{text}");
+    let none = campaign::Outcome::default();
+    assert_eq!(campaign::describe_lockups(&spec, &none), "none");
+}

@@ -111,6 +111,22 @@ pub fn json_line(spec: &ScenarioSpec, o: &Outcome, wall: Duration) -> String {
     .to_string()
 }
 
+/// The lockups of an outcome in words: "none", or "node 2, hub 1" (on the star
+/// the indices past the nodes are the hubs, hub 1 first).
+pub fn describe_lockups(spec: &ScenarioSpec, o: &Outcome) -> String {
+    if o.lockups.is_empty() {
+        return "none".to_string();
+    }
+    o.lockups
+        .iter()
+        .map(|&i| match i.checked_sub(spec.nodes) {
+            None => format!("node {i}"),
+            Some(h) => format!("hub {} (a port left isolated or decoupled)", h + 1),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// The replay file of a scenario (`drcc campaign replay FILE`): the topology,
 /// seed and index name it; the rest says what was drawn, for a reader.
 pub fn replay_file(spec: &ScenarioSpec, o: &Outcome) -> String {
@@ -118,7 +134,7 @@ pub fn replay_file(spec: &ScenarioSpec, o: &Outcome) -> String {
         "# drcc campaign scenario: replay it with `drcc campaign replay FILE`\n\
          # {}\n\
          # outcome: {} lost, {} duplicated, {} received twice from one line, {} foreign, \
-         lockups at nodes {:?}\n\
+         lockups: {}\n\
          topology = \"{}\"\n\
          faults = {}\n\
          seed = {}\n\
@@ -128,7 +144,7 @@ pub fn replay_file(spec: &ScenarioSpec, o: &Outcome) -> String {
         o.duplicated.len(),
         o.double_received.len(),
         o.foreign,
-        o.lockups,
+        describe_lockups(spec, o),
         spec.topology.name(),
         spec.faults.len(),
         spec.seed,

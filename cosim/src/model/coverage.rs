@@ -250,6 +250,17 @@ fn error_bins() -> Vec<Bin> {
     v
 }
 
+/// Bins of `group` named in a (name, source) list.
+fn named(group: &'static str, list: &[(&str, &'static str)]) -> Vec<Bin> {
+    list.iter()
+        .map(|&(name, source)| Bin {
+            group,
+            name: name.to_string(),
+            source,
+        })
+        .collect()
+}
+
 /// Every bin the product must reach.
 pub fn bins() -> Vec<Bin> {
     let mut v = Vec::new();
@@ -283,55 +294,52 @@ pub fn bins() -> Vec<Bin> {
         name: "aux: probation count restarted by an error".into(),
         source: "DRCC contract §5 probation",
     });
-    for (name, source) in [
-        ("rule a: REC + 1", "ISO 11898-1 12.1.4.2 a"),
-        (
-            "rule b: REC + 8 (dominant first bit after its error flag)",
-            "12.1.4.2 b",
-        ),
-        ("rule c: TEC + 8", "12.1.4.2 c"),
-        (
-            "rule c exception 1: passive ACK error, TEC unchanged",
-            "12.1.4.2 c exc. 1",
-        ),
-        (
-            "rule c exception 1 ended: dominant bit in the passive flag, TEC + 8",
-            "12.1.4.2 c exc. 1",
-        ),
-        (
-            "rule c exception 2: stuff error in arbitration, TEC unchanged",
-            "12.1.4.2 c exc. 2",
-        ),
-        ("rule d: TEC + 8 (bit error in its flag)", "12.1.4.2 d"),
-        ("rule e: REC + 8 (bit error in its flag)", "12.1.4.2 e"),
-        (
-            "rule f: TEC + 8 (8 dominant bits after its flag)",
-            "12.1.4.2 f",
-        ),
-        (
-            "rule f: REC + 8 (8 dominant bits after its flag)",
-            "12.1.4.2 f",
-        ),
-        ("rule g: TEC - 1", "12.1.4.2 g"),
-        ("rule g: TEC stays 0", "12.1.4.2 g"),
-        ("rule h: REC - 1", "12.1.4.2 h"),
-        ("rule h: REC above 127 back to 119..127", "12.1.4.2 h"),
-        ("rule h: REC stays 0", "12.1.4.2 h"),
-        ("rule i: error passive (TEC >= 128)", "12.1.4.2 i"),
-        ("rule i: error passive (REC >= 128)", "12.1.4.2 i"),
-        ("rule j: bus-off (TEC > 255)", "12.1.4.2 j"),
-        ("rule k: error active again", "12.1.4.2 k"),
-        (
-            "rule l: bus-off recovery (128 x 11 recessive bits)",
-            "12.1.4.2 l",
-        ),
-    ] {
-        v.push(Bin {
-            group: "fault confinement",
-            name: name.into(),
-            source,
-        });
-    }
+    v.extend(named(
+        "fault confinement",
+        &[
+            ("rule a: REC + 1", "ISO 11898-1 12.1.4.2 a"),
+            (
+                "rule b: REC + 8 (dominant first bit after its error flag)",
+                "12.1.4.2 b",
+            ),
+            ("rule c: TEC + 8", "12.1.4.2 c"),
+            (
+                "rule c exception 1: passive ACK error, TEC unchanged",
+                "12.1.4.2 c exc. 1",
+            ),
+            (
+                "rule c exception 1 ended: dominant bit in the passive flag, TEC + 8",
+                "12.1.4.2 c exc. 1",
+            ),
+            (
+                "rule c exception 2: stuff error in arbitration, TEC unchanged",
+                "12.1.4.2 c exc. 2",
+            ),
+            ("rule d: TEC + 8 (bit error in its flag)", "12.1.4.2 d"),
+            ("rule e: REC + 8 (bit error in its flag)", "12.1.4.2 e"),
+            (
+                "rule f: TEC + 8 (8 dominant bits after its flag)",
+                "12.1.4.2 f",
+            ),
+            (
+                "rule f: REC + 8 (8 dominant bits after its flag)",
+                "12.1.4.2 f",
+            ),
+            ("rule g: TEC - 1", "12.1.4.2 g"),
+            ("rule g: TEC stays 0", "12.1.4.2 g"),
+            ("rule h: REC - 1", "12.1.4.2 h"),
+            ("rule h: REC above 127 back to 119..127", "12.1.4.2 h"),
+            ("rule h: REC stays 0", "12.1.4.2 h"),
+            ("rule i: error passive (TEC >= 128)", "12.1.4.2 i"),
+            ("rule i: error passive (REC >= 128)", "12.1.4.2 i"),
+            ("rule j: bus-off (TEC > 255)", "12.1.4.2 j"),
+            ("rule k: error active again", "12.1.4.2 k"),
+            (
+                "rule l: bus-off recovery (128 x 11 recessive bits)",
+                "12.1.4.2 l",
+            ),
+        ],
+    ));
     v.extend(error_bins());
     for port in ["node port", "sublink"] {
         let kinds: &[&str] = if port == "node port" {
@@ -357,76 +365,70 @@ pub fn bins() -> Vec<Bin> {
             source: "hub contract §6 restoration",
         });
     }
-    for (name, source) in [
-        ("hub: decouple (no sublink left)", "hub contract §7"),
-        (
-            "hub: decouple (forced)",
-            "hub contract §7, CTRL.force_decouple",
-        ),
-        ("hub: recouple", "hub contract §7, CTRL.recouple"),
-    ] {
-        v.push(Bin {
-            group: "hub isolation and restoration",
-            name: name.into(),
-            source,
-        });
-    }
-    for (name, source) in [
-        (
-            "dmr: tx fault (timeout)",
-            "CiA 701 Table 2; DMR contract §4.2, §6",
-        ),
-        (
-            "dmr: rx fault (timeout)",
-            "CiA 701 Table 3; DMR contract §4.2, §6",
-        ),
-        ("dmr: tx fault (deviation)", "DMR contract §4.2, §6"),
-        ("dmr: rx fault (deviation)", "DMR contract §4.2, §6"),
-        ("dmr: tx fault (bus-off)", "DMR contract §6"),
-        (
-            "dmr: tx fault (connection service failed)",
-            "DMR contract §7",
-        ),
-        (
-            "dmr: rx fault on a line already unable to transmit",
-            "DMR contract §6",
-        ),
-        ("dmr: ACL switch", "CiA 701; DMR contract §8"),
-        (
-            "dmr: recovery (connection service after a fault)",
-            "DMR contract §7",
-        ),
-        (
-            "dmr: receive mailbox re-balanced after a recovery",
-            "DMR contract §4.2 settling",
-        ),
-        (
-            "dmr: state active -> passive",
-            "CiA 701 Figure 6; DMR contract §6",
-        ),
-        (
-            "dmr: state active -> disabled",
-            "CiA 701 Figure 6; DMR contract §6",
-        ),
-        (
-            "dmr: state passive -> active",
-            "CiA 701 Figure 6; DMR contract §6",
-        ),
-        (
-            "dmr: state disabled -> active",
-            "CiA 701 Figure 6; DMR contract §6",
-        ),
-        (
-            "dmr: state passive -> disabled",
-            "CiA 701 Figure 6; DMR contract §6",
-        ),
-    ] {
-        v.push(Bin {
-            group: "DMR",
-            name: name.into(),
-            source,
-        });
-    }
+    v.extend(named(
+        "hub isolation and restoration",
+        &[
+            ("hub: decouple (no sublink left)", "hub contract §7"),
+            (
+                "hub: decouple (forced)",
+                "hub contract §7, CTRL.force_decouple",
+            ),
+            ("hub: recouple", "hub contract §7, CTRL.recouple"),
+        ],
+    ));
+    v.extend(named(
+        "DMR",
+        &[
+            (
+                "dmr: tx fault (timeout)",
+                "CiA 701 Table 2; DMR contract §4.2, §6",
+            ),
+            (
+                "dmr: rx fault (timeout)",
+                "CiA 701 Table 3; DMR contract §4.2, §6",
+            ),
+            ("dmr: tx fault (deviation)", "DMR contract §4.2, §6"),
+            ("dmr: rx fault (deviation)", "DMR contract §4.2, §6"),
+            ("dmr: tx fault (bus-off)", "DMR contract §6"),
+            (
+                "dmr: tx fault (connection service failed)",
+                "DMR contract §7",
+            ),
+            (
+                "dmr: rx fault on a line already unable to transmit",
+                "DMR contract §6",
+            ),
+            ("dmr: ACL switch", "CiA 701; DMR contract §8"),
+            (
+                "dmr: recovery (connection service after a fault)",
+                "DMR contract §7",
+            ),
+            (
+                "dmr: receive mailbox re-balanced after a recovery",
+                "DMR contract §4.2 settling",
+            ),
+            (
+                "dmr: state active -> passive",
+                "CiA 701 Figure 6; DMR contract §6",
+            ),
+            (
+                "dmr: state active -> disabled",
+                "CiA 701 Figure 6; DMR contract §6",
+            ),
+            (
+                "dmr: state passive -> active",
+                "CiA 701 Figure 6; DMR contract §6",
+            ),
+            (
+                "dmr: state disabled -> active",
+                "CiA 701 Figure 6; DMR contract §6",
+            ),
+            (
+                "dmr: state passive -> disabled",
+                "CiA 701 Figure 6; DMR contract §6",
+            ),
+        ],
+    ));
     v
 }
 

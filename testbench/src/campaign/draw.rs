@@ -368,6 +368,25 @@ pub fn draw(topology: Topology, faults: usize, seed: u64, index: u64) -> Scenari
 mod tests {
     use super::*;
 
+    /// 2000 single-fault scenarios of `topology`: each of its classes is drawn on
+    /// both lines (hubs).
+    fn every_class_on_both_sides(topology: Topology) -> Vec<ScenarioSpec> {
+        let specs: Vec<ScenarioSpec> = (0..2000).map(|i| draw(topology, 1, 1, i)).collect();
+        for &c in topology.classes() {
+            for l in [Side::A, Side::B] {
+                assert!(
+                    specs
+                        .iter()
+                        .any(|s| s.faults[0].class == c && s.faults[0].line == l),
+                    "{} on {}",
+                    c.name(),
+                    l.name()
+                );
+            }
+        }
+        specs
+    }
+
     #[test]
     fn a_scenario_is_named_by_its_seed_and_index() {
         assert_eq!(
@@ -386,19 +405,7 @@ mod tests {
 
     #[test]
     fn every_class_line_and_position_is_drawn() {
-        let specs: Vec<ScenarioSpec> = (0..2000).map(|i| draw(Topology::Dual, 1, 1, i)).collect();
-        for c in FaultClass::DUAL {
-            for l in [Side::A, Side::B] {
-                assert!(
-                    specs
-                        .iter()
-                        .any(|s| s.faults[0].class == c && s.faults[0].line == l),
-                    "{} on {}",
-                    c.name(),
-                    l.name()
-                );
-            }
-        }
+        let specs = every_class_on_both_sides(Topology::Dual);
         for s in &specs {
             let f = &s.faults[0];
             assert!((3..=6).contains(&s.nodes));
@@ -418,19 +425,7 @@ mod tests {
 
     #[test]
     fn every_star_class_hub_and_link_is_drawn() {
-        let specs: Vec<ScenarioSpec> = (0..2000).map(|i| draw(Topology::Star, 1, 1, i)).collect();
-        for c in FaultClass::STAR {
-            for l in [Side::A, Side::B] {
-                assert!(
-                    specs
-                        .iter()
-                        .any(|s| s.faults[0].class == c && s.faults[0].line == l),
-                    "{} on {}",
-                    c.name(),
-                    l.name()
-                );
-            }
-        }
+        let specs = every_class_on_both_sides(Topology::Star);
         for s in &specs {
             let f = &s.faults[0];
             assert!(FaultClass::STAR.contains(&f.class));

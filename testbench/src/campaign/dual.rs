@@ -22,7 +22,7 @@ use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
 use drcc_cosim::Frame;
 
 use super::draw::{FaultClass, ScenarioSpec, Side};
-use super::tally::{tally, LastBitOverloads};
+use super::tally::{run_and_tally, submit_traffic};
 use super::Outcome;
 use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT};
 use crate::engines::EngineKind;
@@ -85,17 +85,13 @@ pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<DualBusSystem, Str
         .map(|_| drcc_engine(kind))
         .collect::<Result<Vec<_>, _>>()?;
     let mut sys = DualBusSystem::new(engines, vec![host_config(); spec.nodes])?;
-    for n in 0..spec.nodes {
-        for k in 0..frames(spec) {
-            let due = match k.checked_sub(spec.frames_per_node) {
-                None => 100 + k as u64 * spec.period_bits + spec.jitter[n][k],
-                Some(j) => tail_start(spec) + j as u64 * TAIL_PERIOD_BITS + n as u64 * 37,
-            };
-            sys.node_mut(n)
-                .host
-                .submit(due * CLOCKS_PER_BIT, frame(spec, n, k), 0);
-        }
-    }
+    submit_traffic(
+        spec,
+        &mut sys,
+        tail_start(spec),
+        TAIL_PERIOD_BITS,
+        CLOCKS_PER_BIT,
+    );
     for f in &spec.faults {
         let start = f.start_bit * CLOCKS_PER_BIT;
         let cycles = f.bits * CLOCKS_PER_BIT;
@@ -171,25 +167,8 @@ pub fn end_cycle(spec: &ScenarioSpec) -> u64 {
 pub fn run(
     spec: &ScenarioSpec,
     kind: EngineKind,
-    mut observe: impl FnMut(&DualBusSystem) -> Result<(), String>,
+    observe: impl FnMut(&DualBusSystem) -> Result<(), String>,
 ) -> Result<Outcome, String> {
     let mut sys = build(spec, kind)?;
-    let end = end_cycle(spec);
-    let mut overloads = LastBitOverloads::new(spec.nodes);
-    while sys.cycle() < end {
-        sys.step();
-        for (n, node) in sys.nodes().iter().enumerate() {
-            overloads.observe(n, &node.outputs, sys.cycle());
-        }
-        observe(&sys)?;
-    }
-    let nodes: Vec<_> = sys.nodes().iter().map(|n| (&n.host, &n.outputs)).collect();
-    Ok(tally(
-        spec,
-        frames(spec),
-        &nodes,
-        &overloads,
-        sys.cycle(),
-        CLOCKS_PER_BIT,
-    ))
+    run_and_tally(spec, &mut sys, end_cycle(spec), CLOCKS_PER_BIT, observe)
 }

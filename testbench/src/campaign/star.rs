@@ -15,8 +15,7 @@
 use drcc_cosim::star::{Link, LinkFault, LinkFaultKind, StarSystem};
 
 use super::draw::{FaultClass, ScenarioSpec};
-use super::dual::{frame, frames};
-use super::tally::{tally, LastBitOverloads};
+use super::tally::{run_and_tally, submit_traffic};
 use super::Outcome;
 use crate::dual::drcc_engine;
 use crate::engines::EngineKind;
@@ -64,17 +63,13 @@ pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<StarSystem, String
         hub_engine(kind, HUB_N, HUB_M)?,
     ];
     let mut sys = StarSystem::new(engines, vec![s.host_config(); spec.nodes], hubs, [s.hub; 2])?;
-    for n in 0..spec.nodes {
-        for k in 0..frames(spec) {
-            let due = match k.checked_sub(spec.frames_per_node) {
-                None => 100 + k as u64 * spec.period_bits + spec.jitter[n][k],
-                Some(j) => tail_start(spec) + j as u64 * TAIL_PERIOD_BITS + n as u64 * 37,
-            };
-            sys.node_mut(n)
-                .host
-                .submit(due * CLOCKS_PER_BIT, frame(spec, n, k), 0);
-        }
-    }
+    submit_traffic(
+        spec,
+        &mut sys,
+        tail_start(spec),
+        TAIL_PERIOD_BITS,
+        CLOCKS_PER_BIT,
+    );
     for f in &spec.faults {
         let hub = f.line as usize;
         let start = f.start_bit * CLOCKS_PER_BIT;
@@ -133,27 +128,10 @@ pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<StarSystem, String
 pub fn run(
     spec: &ScenarioSpec,
     kind: EngineKind,
-    mut observe: impl FnMut(&StarSystem) -> Result<(), String>,
+    observe: impl FnMut(&StarSystem) -> Result<(), String>,
 ) -> Result<Outcome, String> {
     let mut sys = build(spec, kind)?;
-    let end = end_cycle(spec);
-    let mut overloads = LastBitOverloads::new(spec.nodes);
-    while sys.cycle() < end {
-        sys.step();
-        for (n, node) in sys.nodes().iter().enumerate() {
-            overloads.observe(n, &node.outputs, sys.cycle());
-        }
-        observe(&sys)?;
-    }
-    let nodes: Vec<_> = sys.nodes().iter().map(|n| (&n.host, &n.outputs)).collect();
-    let mut o = tally(
-        spec,
-        frames(spec),
-        &nodes,
-        &overloads,
-        sys.cycle(),
-        CLOCKS_PER_BIT,
-    );
+    let mut o = run_and_tally(spec, &mut sys, end_cycle(spec), CLOCKS_PER_BIT, observe)?;
     let all_ports = ((1u32 << (HUB_N + HUB_M)) - 1) as u16;
     for h in 0..2 {
         let p = sys.hub(h).outputs.probes;

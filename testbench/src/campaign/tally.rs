@@ -4,11 +4,110 @@
 //! CAN's own double reception counted apart, and nodes not back to normal.
 
 use drcc_cosim::dual::host::HostDriver;
+use drcc_cosim::dual::DualBusSystem;
 use drcc_cosim::engine::drcc::DrccOutputs;
 use drcc_cosim::model::field;
+use drcc_cosim::star::StarSystem;
 
-use super::dual::frame;
+use super::dual::{frame, frames};
 use super::{Outcome, ScenarioSpec};
+
+/// A system of DRCC nodes a campaign runs: the dual bus or the star.
+pub trait NodeSystem {
+    fn step(&mut self);
+    fn cycle(&self) -> u64;
+    /// Node `n`'s host.
+    fn host_mut(&mut self, n: usize) -> &mut HostDriver;
+    /// Node `n`'s outputs after the last clock.
+    fn outputs(&self, n: usize) -> &DrccOutputs;
+    /// Every node's host and outputs.
+    fn views(&self) -> Vec<(&HostDriver, &DrccOutputs)>;
+}
+
+impl NodeSystem for DualBusSystem {
+    fn step(&mut self) {
+        DualBusSystem::step(self)
+    }
+    fn cycle(&self) -> u64 {
+        DualBusSystem::cycle(self)
+    }
+    fn host_mut(&mut self, n: usize) -> &mut HostDriver {
+        &mut self.node_mut(n).host
+    }
+    fn outputs(&self, n: usize) -> &DrccOutputs {
+        &self.nodes()[n].outputs
+    }
+    fn views(&self) -> Vec<(&HostDriver, &DrccOutputs)> {
+        self.nodes().iter().map(|n| (&n.host, &n.outputs)).collect()
+    }
+}
+
+impl NodeSystem for StarSystem {
+    fn step(&mut self) {
+        StarSystem::step(self)
+    }
+    fn cycle(&self) -> u64 {
+        StarSystem::cycle(self)
+    }
+    fn host_mut(&mut self, n: usize) -> &mut HostDriver {
+        &mut self.node_mut(n).host
+    }
+    fn outputs(&self, n: usize) -> &DrccOutputs {
+        &self.nodes()[n].outputs
+    }
+    fn views(&self) -> Vec<(&HostDriver, &DrccOutputs)> {
+        self.nodes().iter().map(|n| (&n.host, &n.outputs)).collect()
+    }
+}
+
+/// Submits the drawn traffic of `spec` to every host: the drawn frames, then the
+/// tail frames from bit time `tail_start`, one every `tail_period` bit times.
+pub fn submit_traffic(
+    spec: &ScenarioSpec,
+    sys: &mut impl NodeSystem,
+    tail_start: u64,
+    tail_period: u64,
+    clocks_per_bit: u64,
+) {
+    for n in 0..spec.nodes {
+        for k in 0..frames(spec) {
+            let due = match k.checked_sub(spec.frames_per_node) {
+                None => 100 + k as u64 * spec.period_bits + spec.jitter[n][k],
+                Some(j) => tail_start + j as u64 * tail_period + n as u64 * 37,
+            };
+            sys.host_mut(n)
+                .submit(due * clocks_per_bit, frame(spec, n, k), 0);
+        }
+    }
+}
+
+/// Runs `sys` to clock `end` (`observe` sees it after every clock) and tallies the
+/// hosts' deliveries.
+pub fn run_and_tally<S: NodeSystem>(
+    spec: &ScenarioSpec,
+    sys: &mut S,
+    end: u64,
+    clocks_per_bit: u64,
+    mut observe: impl FnMut(&S) -> Result<(), String>,
+) -> Result<Outcome, String> {
+    let mut overloads = LastBitOverloads::new(spec.nodes);
+    while sys.cycle() < end {
+        sys.step();
+        let cycle = sys.cycle();
+        for n in 0..spec.nodes {
+            overloads.observe(n, sys.outputs(n), cycle);
+        }
+        observe(sys)?;
+    }
+    Ok(tally(
+        spec,
+        frames(spec),
+        &sys.views(),
+        &overloads,
+        sys.cycle(),
+        clocks_per_bit,
+    ))
+}
 
 /// Per node and channel, the clocks at which the channel, as receiver, met a
 /// dominant last EOF bit (its `field` goes EOF -> overload flag): it had taken the

@@ -280,6 +280,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     wire  regs__redundancy;
     wire  [1:0] regs__policy;
     wire  regs__dual_tx;
+    wire  regs__star;
     wire  [3:0] regs__k;
     wire  [1:0] regs__mode_a;
     wire  [1:0] regs__mode_b;
@@ -476,6 +477,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  main__failed_a;
     reg  main__failed_b;
     reg  main__tick;
+    reg  main__echo_a;
+    reg  main__echo_b;
+    wire  main__attempted;
     wire  [3:0] main__state;
     wire  main__tx_channel;
     wire  main__tx_going_on;
@@ -496,6 +500,16 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     wire  main__switch_evt;
     wire  main__in_use_a;
     wire  main__in_use_b;
+    reg  echo__star;
+    reg  echo__run;
+    reg  echo__attempted;
+    reg  [98:0] echo__head;
+    reg  echo__rx_valid_a;
+    reg  [98:0] echo__frame_a;
+    reg  echo__rx_valid_b;
+    reg  [98:0] echo__frame_b;
+    wire  echo__echo_a;
+    wire  echo__echo_b;
     reg  aux_a__clk;
     reg  aux_a__rst;
     reg  aux_a__hold;
@@ -700,6 +714,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  clear;
     reg  rmb_hold;
     reg  dmr_hold;
+    reg  [98:0] rx_frame_a;
+    reg  [98:0] rx_frame_b;
     reg  [30:0] mb_id_word;
     reg  [28:0] mb_mask;
     reg  [31:0] mb_state_word;
@@ -744,6 +760,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .redundancy(regs__redundancy),
         .policy(regs__policy),
         .dual_tx(regs__dual_tx),
+        .star(regs__star),
         .k(regs__k),
         .mode_a(regs__mode_a),
         .mode_b(regs__mode_b),
@@ -954,6 +971,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .failed_a(main__failed_a),
         .failed_b(main__failed_b),
         .tick(main__tick),
+        .echo_a(main__echo_a),
+        .echo_b(main__echo_b),
+        .attempted(main__attempted),
         .state(main__state),
         .tx_channel(main__tx_channel),
         .tx_going_on(main__tx_going_on),
@@ -974,6 +994,18 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .switch_evt(main__switch_evt),
         .in_use_a(main__in_use_a),
         .in_use_b(main__in_use_b)
+    );
+    drcc_m0__echo echo(
+        .star(echo__star),
+        .run(echo__run),
+        .attempted(echo__attempted),
+        .head(echo__head),
+        .rx_valid_a(echo__rx_valid_a),
+        .frame_a(echo__frame_a),
+        .rx_valid_b(echo__rx_valid_b),
+        .frame_b(echo__frame_b),
+        .echo_a(echo__echo_a),
+        .echo_b(echo__echo_b)
     );
     drcc_m0__aux_a aux_a(
         .clk(aux_a__clk),
@@ -1194,6 +1226,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         clear = rst | regs__reset_mode;
         rmb_hold = rst | regs__reset_mode | ~regs__redundancy;
         dmr_hold = regs__reset_mode | ~regs__dmr;
+        rx_frame_a = (((chan_a__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_a__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_a__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_a__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_a__rx_data) & 99'h7ffffffffffffffffffffffff);
+        rx_frame_b = (((chan_b__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_b__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_b__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_b__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_b__rx_data) & 99'h7ffffffffffffffffffffffff);
         regs__clk = clk;
         regs__rst = rst;
         regs__wb_cyc_i = wb_cyc_i;
@@ -1346,6 +1380,16 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         main__failed_a = chan_a__tx_failed;
         main__failed_b = chan_b__tx_failed;
         main__tick = ticker__tick;
+        main__echo_a = echo__echo_a;
+        main__echo_b = echo__echo_b;
+        echo__star = regs__star;
+        echo__run = ~rmb_hold;
+        echo__attempted = main__attempted;
+        echo__head = txbuf__rd_frame;
+        echo__rx_valid_a = chan_a__rx_valid;
+        echo__frame_a = rx_frame_a;
+        echo__rx_valid_b = chan_b__rx_valid;
+        echo__frame_b = rx_frame_b;
         aux_a__clk = clk;
         aux_a__rst = rst;
         aux_a__hold = rmb_hold;
@@ -1411,15 +1455,15 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         rxw__now = ticker__now;
         rxw__tick = ticker__tick;
         if (dmr_hold) begin
-            rxw__rxv_a = chan_a__rx_valid;
-            rxw__rxv_b = chan_b__rx_valid;
+            rxw__rxv_a = chan_a__rx_valid & ~echo__echo_a;
+            rxw__rxv_b = chan_b__rx_valid & ~echo__echo_b;
         end
         else begin
             rxw__rxv_a = dmr_ctl__rx_deliver_dcl;
             rxw__rxv_b = dmr_ctl__rx_deliver_rcl;
         end
-        rxw__frame_a = (((chan_a__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_a__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_a__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_a__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_a__rx_data) & 99'h7ffffffffffffffffffffffff);
-        rxw__frame_b = (((chan_b__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_b__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_b__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_b__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_b__rx_data) & 99'h7ffffffffffffffffffffffff);
+        rxw__frame_a = rx_frame_a;
+        rxw__frame_b = rx_frame_b;
         rxw__fifo_count = rxfifo__count;
         chan_a__clk = clk;
         chan_a__rst = clear | regs__reset_mode_d | aux_a__chan_rst | dmr_ctl__restart_dcl;
@@ -18353,7 +18397,34 @@ module drcc_m0__dmr_regs__time_q(d,q,clock);
 endmodule // drcc_m0__dmr_regs__time_q
 
 
-module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
+module drcc_m0__echo(star,run,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b);
+    
+    // Module arguments
+    input wire  star;
+    input wire  run;
+    input wire  attempted;
+    input wire  [98:0] head;
+    input wire  rx_valid_a;
+    input wire  [98:0] frame_a;
+    input wire  rx_valid_b;
+    input wire  [98:0] frame_b;
+    output reg  echo_a;
+    output reg  echo_b;
+    
+    // Local signals
+    reg  armed;
+    
+    // Update code
+    always @(*) begin
+        armed = star & run & attempted;
+        echo_a = armed & rx_valid_a & (frame_a == head);
+        echo_b = armed & rx_valid_b & (frame_b == head);
+    end
+    
+endmodule // drcc_m0__echo
+
+
+module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,echo_a,echo_b,attempted,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
     
     // Module arguments
     input wire  clk;
@@ -18370,6 +18441,9 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
     input wire  failed_a;
     input wire  failed_b;
     input wire  tick;
+    input wire  echo_a;
+    input wire  echo_b;
+    output reg  attempted;
     output reg  [3:0] state;
     output reg  tx_channel;
     output reg  tx_going_on;
@@ -18453,6 +18527,9 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
     reg  failover__d;
     wire  failover__q;
     reg  failover__clock;
+    reg  attempted_q__d;
+    wire  attempted_q__q;
+    reg  attempted_q__clock;
     reg  [15:0] tx_time__d;
     wire  [15:0] tx_time__q;
     reg  tx_time__clock;
@@ -18534,6 +18611,11 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
         .q(failover__q),
         .clock(failover__clock)
     );
+    drcc_m0__main__attempted_q attempted_q(
+        .d(attempted_q__d),
+        .q(attempted_q__q),
+        .clock(attempted_q__clock)
+    );
     drcc_m0__main__tx_time tx_time(
         .d(tx_time__d),
         .q(tx_time__q),
@@ -18566,6 +18648,7 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
         resend__clock = clk;
         copy__clock = clk;
         failover__clock = clk;
+        attempted_q__clock = clk;
         tx_time__clock = clk;
         last_time_q__clock = clk;
         switch_time_q__clock = clk;
@@ -18583,6 +18666,7 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
         resend__d = resend__q;
         copy__d = copy__q;
         failover__d = failover__q;
+        attempted_q__d = attempted_q__q;
         tx_time__d = tx_time__q;
         last_time_q__d = last_time_q__q;
         switch_time_q__d = switch_time_q__q;
@@ -18608,7 +18692,32 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
         end
         pop = 1'b0;
         fail_evt = 1'b0;
-        if (st__q == s_idle1) begin
+        if (echo_a | echo_b) begin
+            ack_q__d = 1'b1;
+            pop = 1'b1;
+            resend__d = 1'b0;
+            copy__d = 1'b0;
+            last_time_q__d = tx_time__q;
+            fin_q__d = 1'b1;
+            if (echo_b) begin
+                ok_ch_q__d = ch_a;
+            end
+            else begin
+                ok_ch_q__d = ch_b;
+            end
+            abort_a_q__d = (st__q == s_ch1) | (st__q == s_abort1) | (st__q == s_wait2);
+            abort_b_q__d = (st__q == s_ch2) | (st__q == s_abort2);
+            if (((st__q >= s_idle2) & (st__q <= s_abort2)) | ((st__q == s_wait4) & ~valid_a)) begin
+                st__d = s_idle2;
+            end
+            else begin
+                st__d = s_idle1;
+                if (st__q == s_wait4) begin
+                    failover__d = 1'b0;
+                end
+            end
+        end
+        else if (st__q == s_idle1) begin
             if (~valid_a & valid_b) begin
                 st__d = s_idle2;
                 failover__d = 1'b1;
@@ -18738,6 +18847,13 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
                 end
             end
         end
+        attempted_q__d = attempted_q__q;
+        if (pop) begin
+            attempted_q__d = 1'b0;
+        end
+        if (req_a_q__d | req_b_q__d) begin
+            attempted_q__d = 1'b1;
+        end
         if (hold) begin
             st__d = s_idle1;
             req_a_q__d = 1'b0;
@@ -18753,6 +18869,7 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
             resend__d = 1'b0;
             copy__d = 1'b0;
             failover__d = 1'b0;
+            attempted_q__d = 1'b0;
             tx_time__d = zero16;
             pop = 1'b0;
             fail_evt = 1'b0;
@@ -18772,6 +18889,7 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
         req_b = req_b_q__q;
         abort_a = abort_a_q__q;
         abort_b = abort_b_q__q;
+        attempted = attempted_q__q;
         transmission_ack = ack_q__q;
         tx_success = success_q__q;
         tx_ok_channel = ok_ch_q__q;
@@ -18830,6 +18948,22 @@ module drcc_m0__main__ack_q(d,q,clock);
     end
           
 endmodule // drcc_m0__main__ack_q
+
+
+module drcc_m0__main__attempted_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__main__attempted_q
 
 
 module drcc_m0__main__copy(d,q,clock);
@@ -19056,7 +19190,7 @@ module drcc_m0__main__tx_time(d,q,clock);
 endmodule // drcc_m0__main__tx_time
 
 
-module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
     
     // Module arguments
     input wire  clk;
@@ -19092,6 +19226,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     output reg  redundancy;
     output reg  [1:0] policy;
     output reg  dual_tx;
+    output reg  star;
     output reg  [3:0] k;
     output reg  [1:0] mode_a;
     output reg  [1:0] mode_b;
@@ -19188,6 +19323,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     wire  ctrl__redundancy;
     wire  [1:0] ctrl__policy;
     wire  ctrl__dual_tx;
+    wire  ctrl__star;
     wire  [3:0] ctrl__k;
     wire  [1:0] ctrl__mode_a;
     wire  [1:0] ctrl__mode_b;
@@ -19198,6 +19334,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     reg  ctrl_check__redundancy;
     reg  [1:0] ctrl_check__policy;
     reg  ctrl_check__dual_tx;
+    reg  ctrl_check__star;
     reg  [3:0] ctrl_check__k;
     reg  [1:0] ctrl_check__mode_a;
     reg  [1:0] ctrl_check__mode_b;
@@ -19279,6 +19416,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         .redundancy(ctrl__redundancy),
         .policy(ctrl__policy),
         .dual_tx(ctrl__dual_tx),
+        .star(ctrl__star),
         .k(ctrl__k),
         .mode_a(ctrl__mode_a),
         .mode_b(ctrl__mode_b),
@@ -19291,6 +19429,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         .redundancy(ctrl_check__redundancy),
         .policy(ctrl_check__policy),
         .dual_tx(ctrl_check__dual_tx),
+        .star(ctrl_check__star),
         .k(ctrl_check__k),
         .mode_a(ctrl_check__mode_a),
         .mode_b(ctrl_check__mode_b),
@@ -19430,6 +19569,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         ctrl_check__redundancy = ctrl__redundancy;
         ctrl_check__policy = ctrl__policy;
         ctrl_check__dual_tx = ctrl__dual_tx;
+        ctrl_check__star = ctrl__star;
         ctrl_check__k = ctrl__k;
         ctrl_check__mode_a = ctrl__mode_a;
         ctrl_check__mode_b = ctrl__mode_b;
@@ -19547,6 +19687,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         redundancy = ctrl__redundancy;
         policy = ctrl__policy;
         dual_tx = ctrl__dual_tx;
+        star = ctrl__star;
         k = ctrl__k;
         mode_a = ctrl__mode_a;
         mode_b = ctrl__mode_b;
@@ -19778,7 +19919,7 @@ module drcc_m0__regs__bus__irq_q(d,q,clock);
 endmodule // drcc_m0__regs__bus__irq_q
 
 
-module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr);
+module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr);
     
     // Module arguments
     input wire  clk;
@@ -19793,6 +19934,7 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
     output reg  redundancy;
     output reg  [1:0] policy;
     output reg  dual_tx;
+    output reg  star;
     output reg  [3:0] k;
     output reg  [1:0] mode_a;
     output reg  [1:0] mode_b;
@@ -19804,6 +19946,7 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
     localparam  p_redundancy = 5'b1;
     localparam  p_policy = 5'b10;
     localparam  p_dual_tx = 5'b100;
+    localparam  p_star = 5'b101;
     localparam  p_k = 5'b1000;
     localparam  p_mode_a = 5'b1100;
     localparam  p_mode_b = 5'b1110;
@@ -19830,6 +19973,9 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
     reg  dual_tx_q__d;
     wire  dual_tx_q__q;
     reg  dual_tx_q__clock;
+    reg  star_q__d;
+    wire  star_q__q;
+    reg  star_q__clock;
     reg  [3:0] k_q__d;
     wire  [3:0] k_q__q;
     reg  k_q__clock;
@@ -19872,6 +20018,11 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
         .q(dual_tx_q__q),
         .clock(dual_tx_q__clock)
     );
+    drcc_m0__regs__ctrl__star_q star_q(
+        .d(star_q__d),
+        .q(star_q__q),
+        .clock(star_q__clock)
+    );
     drcc_m0__regs__ctrl__k_q k_q(
         .d(k_q__d),
         .q(k_q__q),
@@ -19905,6 +20056,7 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
         redundancy_q__clock = clk;
         policy_q__clock = clk;
         dual_tx_q__clock = clk;
+        star_q__clock = clk;
         k_q__clock = clk;
         mode_a_q__clock = clk;
         mode_b_q__clock = clk;
@@ -19915,6 +20067,7 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
         redundancy_q__d = redundancy_q__q;
         policy_q__d = policy_q__q;
         dual_tx_q__d = dual_tx_q__q;
+        star_q__d = star_q__q;
         k_q__d = k_q__q;
         mode_a_q__d = mode_a_q__q;
         mode_b_q__d = mode_b_q__q;
@@ -19928,6 +20081,7 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
                     redundancy_q__d = wdat[p_redundancy];
                     policy_q__d = wdat[(p_policy)+:(2)];
                     dual_tx_q__d = wdat[p_dual_tx];
+                    star_q__d = wdat[p_star];
                     k_q__d = k_in;
                     mode_a_q__d = wdat[(p_mode_a)+:(2)];
                     mode_b_q__d = wdat[(p_mode_b)+:(2)];
@@ -19945,18 +20099,20 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
             redundancy_q__d = redundancy_reset;
             policy_q__d = policy_reset;
             dual_tx_q__d = 1'b0;
+            star_q__d = 1'b0;
             k_q__d = k_reset;
             mode_a_q__d = mode_reset;
             mode_b_q__d = mode_reset;
             single_shot_q__d = 1'b0;
             dmr_q__d = 1'b0;
         end
-        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr);
+        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((star_q__q) & 32'hffffffff) << p_star) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr);
         reset_mode = reset_mode_q__q;
         reset_mode_d = reset_mode_dq__q;
         redundancy = redundancy_q__q;
         policy = policy_q__q;
         dual_tx = dual_tx_q__q;
+        star = star_q__q;
         k = k_q__q;
         mode_a = mode_a_q__q;
         mode_b = mode_b_q__q;
@@ -20127,7 +20283,23 @@ module drcc_m0__regs__ctrl__single_shot_q(d,q,clock);
 endmodule // drcc_m0__regs__ctrl__single_shot_q
 
 
-module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
+module drcc_m0__regs__ctrl__star_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__regs__ctrl__star_q
+
+
+module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
     
     // Module arguments
     input wire  [31:0] wdat;
@@ -20135,6 +20307,7 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mod
     input wire  redundancy;
     input wire  [1:0] policy;
     input wire  dual_tx;
+    input wire  star;
     input wire  [3:0] k;
     input wire  [1:0] mode_a;
     input wire  [1:0] mode_b;
@@ -20148,6 +20321,7 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mod
     localparam  p_redundancy = 5'b1;
     localparam  p_policy = 5'b10;
     localparam  p_dual_tx = 5'b100;
+    localparam  p_star = 5'b101;
     localparam  p_k = 5'b1000;
     localparam  p_mode_a = 5'b1100;
     localparam  p_mode_b = 5'b1110;
@@ -20172,7 +20346,7 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,k,mod
         end
         listen = (wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen);
         refused = (wdat[(p_policy)+:(2)] == policy_illegal) | ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]);
-        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr);
+        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (wdat[p_star] != star) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr);
         if (reset_mode) begin
             illegal = refused;
         end
@@ -22297,6 +22471,8 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
     reg  [3:0] ram__write_address;
     reg  [98:0] ram__write_data;
     reg  ram__write_enable;
+    reg  [98:0] norm__frame;
+    wire  [98:0] norm__normalized;
     reg  [2:0] head_a__d;
     wire  [2:0] head_a__q;
     reg  head_a__clock;
@@ -22344,6 +22520,10 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
         .write_address(ram__write_address),
         .write_data(ram__write_data),
         .write_enable(ram__write_enable)
+    );
+    drcc_m0__txbuf__norm norm(
+        .frame(norm__frame),
+        .normalized(norm__normalized)
     );
     drcc_m0__txbuf__head_a head_a(
         .d(head_a__d),
@@ -22446,7 +22626,8 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
         end
         ram__write_enable = push;
         ram__write_address = (((push_q) & 4'hf) << 32'h3) | ((wr_slot) & 4'hf);
-        ram__write_data = push_frame;
+        norm__frame = push_frame;
+        ram__write_data = norm__normalized;
         if (rd_sel__q) begin
             rd_slot = head_b__q;
         end
@@ -22616,6 +22797,57 @@ module drcc_m0__txbuf__head_b(d,q,clock);
     end
           
 endmodule // drcc_m0__txbuf__head_b
+
+
+module drcc_m0__txbuf__norm(frame,normalized);
+    
+    // Module arguments
+    input wire  [98:0] frame;
+    output reg  [98:0] normalized;
+    
+    // Constant declarations
+    localparam  base_id = 29'h7ff;
+    localparam  ones64 = 64'hffffffffffffffff;
+    localparam  eight4 = 4'h8;
+    localparam  zero3 = 3'b0;
+    
+    // Local signals
+    reg  rtr;
+    reg  ide;
+    reg  [28:0] id;
+    reg  [3:0] dlc;
+    reg  [63:0] data;
+    reg  [2:0] len;
+    reg  [5:0] shift;
+    
+    // Update code
+    always @(*) begin
+        rtr = frame[32'h62];
+        ide = frame[32'h61];
+        dlc = frame[(32'h40)+:(4)];
+        if (ide) begin
+            id = frame[(32'h44)+:(29)];
+        end
+        else begin
+            id = frame[(32'h44)+:(29)] & base_id;
+        end
+        if (rtr) begin
+            len = zero3;
+        end
+        else begin
+            len = dlc[(32'h0)+:(3)];
+        end
+        shift = ((len) & 6'h3f) << 32'h3;
+        if (~rtr & (dlc >= eight4)) begin
+            data = frame[(32'h0)+:(64)];
+        end
+        else begin
+            data = frame[(32'h0)+:(64)] & ~(ones64 >> shift);
+        end
+        normalized = (((rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((data) & 99'h7ffffffffffffffffffffffff);
+    end
+    
+endmodule // drcc_m0__txbuf__norm
 
 
 module drcc_m0__txbuf__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);

@@ -4,11 +4,12 @@
 //! channel 1, B = channel 2) share one bit timing; the redundancy management
 //! block (main FSM of Table 1, one auxiliary FSM per channel, bit tick), the TX
 //! buffer, the RX FIFO with duplicate removal and the Wishbone register block
-//! complete it. The third mode, CiA 701 dual-modular redundancy
-//! (`dmr_contract.md`), adds the DMR control and mailbox engine (`crate::dmr`)
-//! and the DMR paths of the TX buffer and the RX writer. Ports (contract §1):
-//! clock/reset, Wishbone slave, irq, CAN pins, the paper's probes, the channel
-//! probes, the DMR probes (DMR contract §9).
+//! complete it; a replicated star node (`CTRL.star`, contract §4.4) adds the
+//! echo of the node's own frames (`crate::rmb::echo`). The third mode, CiA 701
+//! dual-modular redundancy (`dmr_contract.md`), adds the DMR control and
+//! mailbox engine (`crate::dmr`) and the DMR paths of the TX buffer and the RX
+//! writer. Ports (contract §1): clock/reset, Wishbone slave, irq, CAN pins, the
+//! paper's probes, the channel probes, the DMR probes (DMR contract §9).
 //!
 //! Generation parameter `M`, the DMR mailboxes (0..16, DMR contract §2): `drcc` is
 //! [`Drcc`] (`M = 16`), `drcc_m0` is [`DrccM0`] (`M = 0`: no mailbox engine, no
@@ -31,6 +32,7 @@ use crate::memory::rx_fifo::RxFifo;
 use crate::memory::tx_buffer::TxBuffer;
 use crate::rmb::aux_fsm::AuxFsm;
 use crate::rmb::bit_tick::BitTick;
+use crate::rmb::echo::Echo;
 use crate::rmb::main_fsm::MainFsm;
 use crate::rmb::stats::RedundancyStats;
 use rust_hdl::prelude::*;
@@ -167,6 +169,7 @@ pub struct DrccCore<const M: usize> {
     ticker: BitTick,
     stats: RedundancyStats,
     main: MainFsm,
+    echo: Echo,
     aux_a: AuxFsm,
     aux_b: AuxFsm,
     txbuf: TxBuffer,
@@ -178,6 +181,9 @@ pub struct DrccCore<const M: usize> {
     clear: Signal<Local, Bit>,
     rmb_hold: Signal<Local, Bit>,
     dmr_hold: Signal<Local, Bit>,
+    // the channels' received frames, laid out as the TX RAM (id, ide, rtr, dlc, data)
+    rx_frame_a: Signal<Local, Bits<99>>,
+    rx_frame_b: Signal<Local, Bits<99>>,
     // the mailbox blocks' outputs (0 with M = 0)
     mb_id_word: Signal<Local, Bits<31>>,
     mb_mask: Signal<Local, Bits<29>>,
@@ -203,6 +209,16 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.rst.val() | self.regs.reset_mode.val() | !self.regs.redundancy.val();
         // the DMR function runs in DMR mode outside reset mode (DMR contract §2)
         self.dmr_hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
+        self.rx_frame_a.next = (bit_cast::<99, 1>(self.chan_a.rx_rtr.val().into()) << 98)
+            | (bit_cast::<99, 1>(self.chan_a.rx_ide.val().into()) << 97)
+            | (bit_cast::<99, 29>(self.chan_a.rx_id.val()) << 68)
+            | (bit_cast::<99, 4>(self.chan_a.rx_dlc.val()) << 64)
+            | bit_cast::<99, 64>(self.chan_a.rx_data.val());
+        self.rx_frame_b.next = (bit_cast::<99, 1>(self.chan_b.rx_rtr.val().into()) << 98)
+            | (bit_cast::<99, 1>(self.chan_b.rx_ide.val().into()) << 97)
+            | (bit_cast::<99, 29>(self.chan_b.rx_id.val()) << 68)
+            | (bit_cast::<99, 4>(self.chan_b.rx_dlc.val()) << 64)
+            | bit_cast::<99, 64>(self.chan_b.rx_data.val());
 
         // ---- register block ----
         self.regs.clk.next = self.clk.val();
@@ -419,6 +435,18 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.main.failed_a.next = self.chan_a.tx_failed.val();
         self.main.failed_b.next = self.chan_b.tx_failed.val();
         self.main.tick.next = self.ticker.tick.val();
+        self.main.echo_a.next = self.echo.echo_a.val();
+        self.main.echo_b.next = self.echo.echo_b.val();
+
+        // ---- star node: the echo of the attempted head message (§4.4) ----
+        self.echo.star.next = self.regs.star.val();
+        self.echo.run.next = !self.rmb_hold.val();
+        self.echo.attempted.next = self.main.attempted.val();
+        self.echo.head.next = self.txbuf.rd_frame.val();
+        self.echo.rx_valid_a.next = self.chan_a.rx_valid.val();
+        self.echo.frame_a.next = self.rx_frame_a.val();
+        self.echo.rx_valid_b.next = self.chan_b.rx_valid.val();
+        self.echo.frame_b.next = self.rx_frame_b.val();
 
         // ---- auxiliary FSMs ----
         self.aux_a.clk.next = self.clk.val();
@@ -494,22 +522,15 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rxw.now.next = self.ticker.now.val();
         self.rxw.tick.next = self.ticker.tick.val();
         if self.dmr_hold.val() {
-            self.rxw.rxv_a.next = self.chan_a.rx_valid.val();
-            self.rxw.rxv_b.next = self.chan_b.rx_valid.val();
+            // an echo is the node's own frame, not a reception (§4.4)
+            self.rxw.rxv_a.next = self.chan_a.rx_valid.val() & !self.echo.echo_a.val();
+            self.rxw.rxv_b.next = self.chan_b.rx_valid.val() & !self.echo.echo_b.val();
         } else {
             self.rxw.rxv_a.next = self.dmr_ctl.rx_deliver_dcl.val();
             self.rxw.rxv_b.next = self.dmr_ctl.rx_deliver_rcl.val();
         }
-        self.rxw.frame_a.next = (bit_cast::<99, 1>(self.chan_a.rx_rtr.val().into()) << 98)
-            | (bit_cast::<99, 1>(self.chan_a.rx_ide.val().into()) << 97)
-            | (bit_cast::<99, 29>(self.chan_a.rx_id.val()) << 68)
-            | (bit_cast::<99, 4>(self.chan_a.rx_dlc.val()) << 64)
-            | bit_cast::<99, 64>(self.chan_a.rx_data.val());
-        self.rxw.frame_b.next = (bit_cast::<99, 1>(self.chan_b.rx_rtr.val().into()) << 98)
-            | (bit_cast::<99, 1>(self.chan_b.rx_ide.val().into()) << 97)
-            | (bit_cast::<99, 29>(self.chan_b.rx_id.val()) << 68)
-            | (bit_cast::<99, 4>(self.chan_b.rx_dlc.val()) << 64)
-            | bit_cast::<99, 64>(self.chan_b.rx_data.val());
+        self.rxw.frame_a.next = self.rx_frame_a.val();
+        self.rxw.frame_b.next = self.rx_frame_b.val();
         self.rxw.fifo_count.next = self.rxfifo.count.val();
 
         // ---- channels: shared bit timing, own mode, TX RAM read data ----

@@ -163,3 +163,67 @@ fn redundancy_mode_sends_on_channel_a() {
         times & 0xFFFF
     );
 }
+
+/// Contract §4.4 and §6: a replicated star node. The bench's channels share one
+/// bus, one domain as on two coupled hubs, so channel B hears A's frame: its
+/// reception of the attempted head message is the echo that completes it
+/// (`tx_ok_channel = 01`), and the frame is not delivered. The staged frame is
+/// not normalized (a base frame with id[28:11] set, bytes past the dlc set);
+/// the echo matches only because the push stored it normalized.
+#[test]
+fn star_node_takes_the_echo_of_its_own_frame() {
+    let mut b = Bench::new();
+    // reset mode: redundancy, star, policy error-passive, k 1, both channels
+    // SELF_TEST; default BTR (8 clocks per bit)
+    let star = map::MAP.field("CTRL", "star").put(1);
+    let ctrl = 1 | (1 << 1) | (1 << 2) | (1 << 8) | (2 << 12) | (2 << 14) | star;
+    b.write(map::CTRL, ctrl);
+    b.write(map::CTRL, ctrl & !1);
+    assert_eq!(b.read(map::CTRL), ctrl & !1, "star is stored");
+    b.write(map::TX_ID, 0x1FFF_F123);
+    b.write(map::TX_CTRL, 2);
+    b.write(map::TX_DATA0, 0x5A5A_CDAB);
+    b.write(map::TX_DATA1, 0xFFFF_FFFF);
+    b.write(map::TX_CMD, 1);
+    let mut acks = 0;
+    let mut success = false;
+    let mut aborted = false;
+    for _ in 0..3000 {
+        b.step();
+        let u = &b.uut;
+        assert!(!u.chan_b_transmission_req.val());
+        aborted |= u.main.abort_a.val();
+        if u.transmission_ack.val() {
+            acks += 1;
+            assert_eq!(u.tx_ok_channel.val().to_u64(), 1, "A's attempt, heard on B");
+            assert_eq!(u.state.val().to_u64(), 0, "idle1");
+        }
+        if u.tx_success.val() {
+            success = true;
+            break;
+        }
+    }
+    assert!(success && acks == 1);
+    assert!(
+        aborted,
+        "A, still in its EOF, is aborted (the attempt runs on)"
+    );
+    assert_eq!((b.read(map::STATUS) >> 16) & 0xF, 0, "queue empty");
+    for _ in 0..200 {
+        b.step();
+    }
+    let u = &b.uut;
+    assert_eq!(
+        u.state.val().to_u64(),
+        0,
+        "A's late tx_done changes nothing"
+    );
+    assert_eq!(u.tx_ok_channel.val().to_u64(), 1);
+    assert_eq!(
+        (b.read(map::STATUS) >> 24) & 0x3F,
+        0,
+        "the echo is not received"
+    );
+    assert_eq!(b.read(map::INT_STATUS) & 1, 0, "no INT_STATUS.rx");
+    assert_eq!(b.read(map::STATS0), 0, "no duplicate either");
+}

@@ -29,6 +29,8 @@ pub struct CtrlCheck {
     pub policy: Signal<In, Bits<2>>,
     /// Stored `dual_tx`.
     pub dual_tx: Signal<In, Bit>,
+    /// Stored `star`.
+    pub star: Signal<In, Bit>,
     /// Stored `k`.
     pub k: Signal<In, Bits<4>>,
     /// Stored `mode_a`.
@@ -53,6 +55,7 @@ pub struct CtrlCheck {
     p_redundancy: Constant<Bits<5>>,
     p_policy: Constant<Bits<5>>,
     p_dual_tx: Constant<Bits<5>>,
+    p_star: Constant<Bits<5>>,
     p_k: Constant<Bits<5>>,
     p_mode_a: Constant<Bits<5>>,
     p_mode_b: Constant<Bits<5>>,
@@ -72,6 +75,7 @@ impl Default for CtrlCheck {
             redundancy: Default::default(),
             policy: Default::default(),
             dual_tx: Default::default(),
+            star: Default::default(),
             k: Default::default(),
             mode_a: Default::default(),
             mode_b: Default::default(),
@@ -85,6 +89,7 @@ impl Default for CtrlCheck {
             p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
             p_policy: lsb(&MAP, "CTRL", "policy", 2),
             p_dual_tx: lsb(&MAP, "CTRL", "dual_tx", 1),
+            p_star: lsb(&MAP, "CTRL", "star", 1),
             p_k: lsb(&MAP, "CTRL", "k", 4),
             p_mode_a: lsb(&MAP, "CTRL", "mode_a", 2),
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
@@ -124,6 +129,7 @@ impl Logic for CtrlCheck {
             != self.redundancy.val())
             | (self.wdat.val().get_bits::<2>(self.p_policy.val().index()) != self.policy.val())
             | (self.wdat.val().get_bit(self.p_dual_tx.val().index()) != self.dual_tx.val())
+            | (self.wdat.val().get_bit(self.p_star.val().index()) != self.star.val())
             | (self.k_in.val() != self.k.val())
             | (self.wdat.val().get_bits::<2>(self.p_mode_a.val().index()) != self.mode_a.val())
             | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index()) != self.mode_b.val())
@@ -207,6 +213,20 @@ mod tests {
         // outside reset mode: a cfg change is flagged, the same cfg is not
         let w = ctrl(&[("policy", ep), ("k", 1), ("dual_tx", 1)]);
         assert!(check(false, w).2);
+        let w = ctrl(&[("policy", ep), ("k", 1), ("star", 1)]);
+        assert!(check(false, w).2);
+        // star is not refused, in either mode (ignored outside redundancy mode)
+        assert_eq!(
+            check(true, ctrl(&[("policy", ep), ("k", 1), ("star", 1)])),
+            (1, false, false)
+        );
+        let w = ctrl(&[
+            ("redundancy", Mode::Redundancy.code()),
+            ("policy", ep),
+            ("k", 1),
+            ("star", 1),
+        ]);
+        assert!(!check(true, w).2);
         assert!(!check(false, ctrl(&[("policy", ep), ("k", 1)])).2);
     }
 }

@@ -1,6 +1,6 @@
 //! The DRCC's `CTRL` register (DRCC contract §3, §9): the storage of reset
-//! mode, the operating mode ([`Mode`], and `dmr`), the switch policy, `dual_tx`, `k`, the
-//! channel modes ([`ChannelMode`]) and `single_shot`. The refusals of §9 are
+//! mode, the operating mode ([`Mode`], and `dmr`), the switch policy, `dual_tx`,
+//! `star`, `k`, the channel modes ([`ChannelMode`]) and `single_shot`. The refusals of §9 are
 //! decided by [`CtrlCheck`] (combinational, beside it in the register block, so
 //! that no always block both takes the write and flags it):
 //!
@@ -51,6 +51,10 @@ pub struct CtrlReg {
     pub policy: Signal<Out, Bits<2>>,
     /// Redundancy mode: every message on A, then its copy on B.
     pub dual_tx: Signal<Out, Bit>,
+    /// Redundancy mode: replicated star node, the other channel's echo of an own
+    /// frame completes it (contract §4.4; stored as written, ignored in the other
+    /// modes).
+    pub star: Signal<Out, Bit>,
     /// Failed attempts of the k-failed policy (1..15).
     pub k: Signal<Out, Bits<4>>,
     /// [`ChannelMode`] code of channel A.
@@ -67,6 +71,7 @@ pub struct CtrlReg {
     redundancy_q: DFF<Bit>,
     policy_q: DFF<Bits<2>>,
     dual_tx_q: DFF<Bit>,
+    star_q: DFF<Bit>,
     k_q: DFF<Bits<4>>,
     mode_a_q: DFF<Bits<2>>,
     mode_b_q: DFF<Bits<2>>,
@@ -77,6 +82,7 @@ pub struct CtrlReg {
     p_redundancy: Constant<Bits<5>>,
     p_policy: Constant<Bits<5>>,
     p_dual_tx: Constant<Bits<5>>,
+    p_star: Constant<Bits<5>>,
     p_k: Constant<Bits<5>>,
     p_mode_a: Constant<Bits<5>>,
     p_mode_b: Constant<Bits<5>>,
@@ -93,7 +99,10 @@ impl Default for CtrlReg {
     fn default() -> Self {
         let reset = |field: &str| MAP.field("CTRL", field).reset as u64;
         assert_eq!(reset("reset_mode"), 1, "CTRL resets into reset mode (§3)");
-        assert_eq!(reset("dual_tx") + reset("single_shot") + reset("dmr"), 0);
+        assert_eq!(
+            reset("dual_tx") + reset("star") + reset("single_shot") + reset("dmr"),
+            0
+        );
         assert_eq!(reset("mode_a"), reset("mode_b"));
         Self {
             clk: Default::default(),
@@ -108,6 +117,7 @@ impl Default for CtrlReg {
             redundancy: Default::default(),
             policy: Default::default(),
             dual_tx: Default::default(),
+            star: Default::default(),
             k: Default::default(),
             mode_a: Default::default(),
             mode_b: Default::default(),
@@ -118,6 +128,7 @@ impl Default for CtrlReg {
             redundancy_q: Default::default(),
             policy_q: Default::default(),
             dual_tx_q: Default::default(),
+            star_q: Default::default(),
             k_q: Default::default(),
             mode_a_q: Default::default(),
             mode_b_q: Default::default(),
@@ -127,6 +138,7 @@ impl Default for CtrlReg {
             p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
             p_policy: lsb(&MAP, "CTRL", "policy", 2),
             p_dual_tx: lsb(&MAP, "CTRL", "dual_tx", 1),
+            p_star: lsb(&MAP, "CTRL", "star", 1),
             p_k: lsb(&MAP, "CTRL", "k", 4),
             p_mode_a: lsb(&MAP, "CTRL", "mode_a", 2),
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
@@ -151,6 +163,7 @@ impl Logic for CtrlReg {
             redundancy_q,
             policy_q,
             dual_tx_q,
+            star_q,
             k_q,
             mode_a_q,
             mode_b_q,
@@ -168,6 +181,7 @@ impl Logic for CtrlReg {
                     self.policy_q.d.next =
                         self.wdat.val().get_bits::<2>(self.p_policy.val().index());
                     self.dual_tx_q.d.next = self.wdat.val().get_bit(self.p_dual_tx.val().index());
+                    self.star_q.d.next = self.wdat.val().get_bit(self.p_star.val().index());
                     self.k_q.d.next = self.k_in.val();
                     self.mode_a_q.d.next =
                         self.wdat.val().get_bits::<2>(self.p_mode_a.val().index());
@@ -189,6 +203,7 @@ impl Logic for CtrlReg {
             self.redundancy_q.d.next = self.redundancy_reset.val();
             self.policy_q.d.next = self.policy_reset.val();
             self.dual_tx_q.d.next = false;
+            self.star_q.d.next = false;
             self.k_q.d.next = self.k_reset.val();
             self.mode_a_q.d.next = self.mode_reset.val();
             self.mode_b_q.d.next = self.mode_reset.val();
@@ -201,6 +216,7 @@ impl Logic for CtrlReg {
             | (bit_cast::<32, 1>(self.redundancy_q.q.val().into()) << self.p_redundancy.val())
             | (bit_cast::<32, 2>(self.policy_q.q.val()) << self.p_policy.val())
             | (bit_cast::<32, 1>(self.dual_tx_q.q.val().into()) << self.p_dual_tx.val())
+            | (bit_cast::<32, 1>(self.star_q.q.val().into()) << self.p_star.val())
             | (bit_cast::<32, 4>(self.k_q.q.val()) << self.p_k.val())
             | (bit_cast::<32, 2>(self.mode_a_q.q.val()) << self.p_mode_a.val())
             | (bit_cast::<32, 2>(self.mode_b_q.q.val()) << self.p_mode_b.val())
@@ -211,6 +227,7 @@ impl Logic for CtrlReg {
         self.redundancy.next = self.redundancy_q.q.val();
         self.policy.next = self.policy_q.q.val();
         self.dual_tx.next = self.dual_tx_q.q.val();
+        self.star.next = self.star_q.q.val();
         self.k.next = self.k_q.q.val();
         self.mode_a.next = self.mode_a_q.q.val();
         self.mode_b.next = self.mode_b_q.q.val();

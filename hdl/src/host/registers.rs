@@ -191,6 +191,7 @@ pub const REGISTERS: &[Register] = &[
             cfg("redundancy", 1, 1, 0, "operating mode (redundancy is refused with a listen-only channel)").coded(Mode::ENCODING),
             cfg("policy", 2, 2, 1, "channel failure policy (3 is refused)").coded(SwitchPolicy::ENCODING),
             cfg("dual_tx", 4, 1, 0, "redundancy mode: send every message on A, then its copy on B"),
+            cfg("star", 5, 1, 0, "redundancy mode: replicated star node, the other channel's echo of an own frame completes it (DRCC contract §4.4)"),
             cfg("k", 8, 4, 1, "failed attempts for the k-failed policy (1..15; 0 is stored as 1)"),
             cfg("mode_a", 12, 2, 0, "channel A mode").coded(ChannelMode::ENCODING),
             cfg("mode_b", 14, 2, 0, "channel B mode").coded(ChannelMode::ENCODING),

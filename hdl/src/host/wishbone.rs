@@ -96,6 +96,8 @@ pub struct WbRegs {
     pub policy: Signal<Out, Bits<2>>,
     /// `CTRL.dual_tx`.
     pub dual_tx: Signal<Out, Bit>,
+    /// `CTRL.star`: replicated star node (contract §4.4).
+    pub star: Signal<Out, Bit>,
     /// `CTRL.k` (1..15).
     pub k: Signal<Out, Bits<4>>,
     /// `CTRL.mode_a` ([`ChannelMode`]).
@@ -260,6 +262,7 @@ impl Default for WbRegs {
             redundancy: Default::default(),
             policy: Default::default(),
             dual_tx: Default::default(),
+            star: Default::default(),
             k: Default::default(),
             mode_a: Default::default(),
             mode_b: Default::default(),
@@ -425,6 +428,7 @@ impl Logic for WbRegs {
         self.ctrl_check.redundancy.next = self.ctrl.redundancy.val();
         self.ctrl_check.policy.next = self.ctrl.policy.val();
         self.ctrl_check.dual_tx.next = self.ctrl.dual_tx.val();
+        self.ctrl_check.star.next = self.ctrl.star.val();
         self.ctrl_check.k.next = self.ctrl.k.val();
         self.ctrl_check.mode_a.next = self.ctrl.mode_a.val();
         self.ctrl_check.mode_b.next = self.ctrl.mode_b.val();
@@ -544,6 +548,7 @@ impl Logic for WbRegs {
         self.redundancy.next = self.ctrl.redundancy.val();
         self.policy.next = self.ctrl.policy.val();
         self.dual_tx.next = self.ctrl.dual_tx.val();
+        self.star.next = self.ctrl.star.val();
         self.k.next = self.ctrl.k.val();
         self.mode_a.next = self.ctrl.mode_a.val();
         self.mode_b.next = self.ctrl.mode_b.val();

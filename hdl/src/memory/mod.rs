@@ -1,5 +1,6 @@
 //! DRCC memories (contract §6, §7): the TX message buffer, the RX FIFO and the
-//! receive writer with its duplicate-removal history. Each RAM is a `bram::Bram`
+//! receive writer with its duplicate-removal history; frames enter the TX buffer
+//! normalized (`tx_normalize`). Each RAM is a `bram::Bram`
 //! (registered read port, collisions declared undefined) so that it maps to
 //! block RAM with no read-before-write emulation.
 pub mod bram;
@@ -8,3 +9,4 @@ pub mod dmr_rx_stats;
 pub mod release_scan;
 pub mod rx_fifo;
 pub mod tx_buffer;
+pub mod tx_normalize;

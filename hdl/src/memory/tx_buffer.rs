@@ -1,7 +1,9 @@
 //! TX message buffer (DRCC contract §6): one synchronous RAM of 16 frames x 99
 //! bits (id, ide, rtr, dlc, data: the channel's `tx_*` ports), two circular
 //! queues of 8 (queue A = entries 0..7, queue B = 8..15, the queue bit is the
-//! address MSB), and the normal-mode request logic.
+//! address MSB), and the normal-mode request logic. A pushed frame is stored
+//! normalized (`super::tx_normalize`: as a receiver delivers it), so the read
+//! data compares with a received frame (the echo of contract §4.4).
 //!
 //! The RAM read data register is loaded at every edge from
 //! `redundancy ? {0, head_a} : {rd_sel, head[rd_sel]}`; `rd_sel` toggles at every
@@ -28,6 +30,7 @@
 //! any number at one edge).
 
 use super::bram::Bram;
+use super::tx_normalize::FrameNormalizer;
 use rust_hdl::prelude::*;
 
 /// TX buffer: RAM, two queues, normal-mode requests.
@@ -49,6 +52,7 @@ pub struct TxBuffer {
     // push (already accepted by the register block) and the staged frame
     pub push: Signal<In, Bit>,
     pub push_q: Signal<In, Bit>,
+    /// The staged frame (layout above); the RAM stores it normalized (§6).
     pub push_frame: Signal<In, Bits<99>>,
     // redundancy mode: the main FSM's finish
     pub pop_red: Signal<In, Bit>,
@@ -69,6 +73,7 @@ pub struct TxBuffer {
     pub failed_evt: Signal<Out, Bit>,
     // storage and queue state
     ram: Bram<Bits<99>, 4>,
+    norm: FrameNormalizer,
     head_a: DFF<Bits<3>>,
     head_b: DFF<Bits<3>>,
     cnt_a: DFF<Bits<4>>,
@@ -119,6 +124,7 @@ impl Default for TxBuffer {
             done_evt: Default::default(),
             failed_evt: Default::default(),
             ram: Default::default(),
+            norm: Default::default(),
             head_a: Default::default(),
             head_b: Default::default(),
             cnt_a: Default::default(),
@@ -182,7 +188,7 @@ impl Logic for TxBuffer {
         self.push_a.next = self.push.val() & !self.push_q.val();
         self.push_b.next = self.push.val() & self.push_q.val();
 
-        // write port: the staged frame goes to {q, head + count}
+        // write port: the staged frame, normalized, goes to {q, head + count}
         if self.push_q.val() {
             self.wr_slot.next = self.head_b.q.val() + self.cnt_b.q.val().get_bits::<3>(0);
         } else {
@@ -191,7 +197,8 @@ impl Logic for TxBuffer {
         self.ram.write_enable.next = self.push.val();
         self.ram.write_address.next = (bit_cast::<4, 1>(self.push_q.val().into()) << 3)
             | bit_cast::<4, 3>(self.wr_slot.val());
-        self.ram.write_data.next = self.push_frame.val();
+        self.norm.frame.next = self.push_frame.val();
+        self.ram.write_data.next = self.norm.normalized.val();
 
         // read port: {0, head_a} in redundancy mode, else {rd_sel, head[rd_sel]}
         if self.rd_sel.q.val() {

@@ -6,6 +6,13 @@
 //! sits in idle1 with its registers cleared (TIMES registers clear with `rst`
 //! only).
 //!
+//! Replicated star node (§4.4): `attempted` is set at every edge that raises a
+//! transmission request and cleared at every finish (and while held); an echo
+//! (`echo_a` / `echo_b`, from `super::echo`: the other channel received the
+//! attempted head message) takes the first row in every state: the message is
+//! delivered and finished, a channel still attempting it is aborted, and the FSM
+//! goes to the idle state of its side.
+//!
 //! Combinational outputs for the rest of the top: `pop` (a "finish": the head of
 //! TX queue A leaves at this edge), `fail_evt` (`tx_failure` is set at this edge),
 //! `switch_evt` (`failover` changes at this edge), `in_use_a` / `in_use_b` (the
@@ -38,6 +45,13 @@ pub struct MainFsm {
     pub failed_a: Signal<In, Bit>,
     pub failed_b: Signal<In, Bit>,
     pub tick: Signal<In, Bit>,
+    // star node (§4.4)
+    /// Channel A received the attempted head message (an echo, `super::echo`).
+    pub echo_a: Signal<In, Bit>,
+    /// Channel B received the attempted head message.
+    pub echo_b: Signal<In, Bit>,
+    /// `attempted`: the head message was handed to a channel and is not finished.
+    pub attempted: Signal<Out, Bit>,
     // paper signals
     pub state: Signal<Out, Bits<4>>,
     pub tx_channel: Signal<Out, Bit>,
@@ -76,6 +90,7 @@ pub struct MainFsm {
     resend: DFF<Bit>,
     copy: DFF<Bit>,
     failover: DFF<Bit>,
+    attempted_q: DFF<Bit>,
     tx_time: DFF<Bits<16>>,
     last_time_q: DFF<Bits<16>>,
     switch_time_q: DFF<Bits<16>>,
@@ -116,6 +131,9 @@ impl Default for MainFsm {
             failed_a: Default::default(),
             failed_b: Default::default(),
             tick: Default::default(),
+            echo_a: Default::default(),
+            echo_b: Default::default(),
+            attempted: Default::default(),
             state: Default::default(),
             tx_channel: Default::default(),
             tx_going_on: Default::default(),
@@ -150,6 +168,7 @@ impl Default for MainFsm {
             resend: Default::default(),
             copy: Default::default(),
             failover: Default::default(),
+            attempted_q: Default::default(),
             tx_time: Default::default(),
             last_time_q: Default::default(),
             switch_time_q: Default::default(),
@@ -194,6 +213,7 @@ impl Logic for MainFsm {
             resend,
             copy,
             failover,
+            attempted_q,
             tx_time,
             last_time_q,
             switch_time_q
@@ -223,7 +243,39 @@ impl Logic for MainFsm {
         self.pop.next = false;
         self.fail_evt.next = false;
 
-        if self.st.q.val() == self.s_idle1.val() {
+        if self.echo_a.val() | self.echo_b.val() {
+            // §4.4 echo, first in every state: delivered, "finish" with
+            // tx_ok_channel <= echo_b ? 01 : 10 (the channel whose attempt the
+            // other one heard); abort the channel still attempting it
+            self.ack_q.d.next = true;
+            self.pop.next = true;
+            self.resend.d.next = false;
+            self.copy.d.next = false;
+            self.last_time_q.d.next = self.tx_time.q.val();
+            self.fin_q.d.next = true;
+            if self.echo_b.val() {
+                self.ok_ch_q.d.next = self.ch_a.val();
+            } else {
+                self.ok_ch_q.d.next = self.ch_b.val();
+            }
+            self.abort_a_q.d.next = (self.st.q.val() == self.s_ch1.val())
+                | (self.st.q.val() == self.s_abort1.val())
+                | (self.st.q.val() == self.s_wait2.val());
+            self.abort_b_q.d.next =
+                (self.st.q.val() == self.s_ch2.val()) | (self.st.q.val() == self.s_abort2.val());
+            // idle2 from idle2, wait3, ch2, abort2 and from wait4 without VA;
+            // idle1 from the others (failover <= 0 from wait4)
+            if ((self.st.q.val() >= self.s_idle2.val()) & (self.st.q.val() <= self.s_abort2.val()))
+                | ((self.st.q.val() == self.s_wait4.val()) & !self.valid_a.val())
+            {
+                self.st.d.next = self.s_idle2.val();
+            } else {
+                self.st.d.next = self.s_idle1.val();
+                if self.st.q.val() == self.s_wait4.val() {
+                    self.failover.d.next = false;
+                }
+            }
+        } else if self.st.q.val() == self.s_idle1.val() {
             // idle1: !VA && VB -> idle2 (failover); Q -> wait1
             if !self.valid_a.val() & self.valid_b.val() {
                 self.st.d.next = self.s_idle2.val();
@@ -358,6 +410,15 @@ impl Logic for MainFsm {
             }
         }
 
+        // §4.4: attempted from the request to the finish
+        self.attempted_q.d.next = self.attempted_q.q.val();
+        if self.pop.val() {
+            self.attempted_q.d.next = false;
+        }
+        if self.req_a_q.d.val() | self.req_b_q.d.val() {
+            self.attempted_q.d.next = true;
+        }
+
         if self.hold.val() {
             self.st.d.next = self.s_idle1.val();
             self.req_a_q.d.next = false;
@@ -373,6 +434,7 @@ impl Logic for MainFsm {
             self.resend.d.next = false;
             self.copy.d.next = false;
             self.failover.d.next = false;
+            self.attempted_q.d.next = false;
             self.tx_time.d.next = self.zero16.val();
             self.pop.next = false;
             self.fail_evt.next = false;
@@ -397,6 +459,7 @@ impl Logic for MainFsm {
         self.req_b.next = self.req_b_q.q.val();
         self.abort_a.next = self.abort_a_q.q.val();
         self.abort_b.next = self.abort_b_q.q.val();
+        self.attempted.next = self.attempted_q.q.val();
         self.transmission_ack.next = self.ack_q.q.val();
         self.tx_success.next = self.success_q.q.val();
         self.tx_ok_channel.next = self.ok_ch_q.q.val();

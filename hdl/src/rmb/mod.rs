@@ -1,8 +1,9 @@
 //! Redundancy management block (DRCC paper section III, Table 1): the main FSM,
-//! one auxiliary FSM per channel with the switch policy it judges by, and the
-//! nominal bit tick they count with.
+//! one auxiliary FSM per channel with the switch policy it judges by, the
+//! nominal bit tick they count with, and the echo of a replicated star node.
 pub mod aux_fsm;
 pub mod bit_tick;
+pub mod echo;
 pub mod main_fsm;
 pub mod stats;
 pub mod switch_policy;

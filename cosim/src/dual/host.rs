@@ -96,6 +96,9 @@ pub struct HostConfig {
     pub policy: Policy,
     /// Send every message on both channels (`CTRL.dual_tx`).
     pub dual_tx: bool,
+    /// Replicated star node (`CTRL.star`, DRCC contract §4.4): the other channel's
+    /// echo of an own frame completes the message.
+    pub star: bool,
     /// Channel modes (contract §C.7 codes) of A and B.
     pub mode_a: u8,
     pub mode_b: u8,
@@ -120,6 +123,7 @@ impl Default for HostConfig {
             redundancy: true,
             policy: Policy::ErrorPassive,
             dual_tx: false,
+            star: false,
             mode_a: 0,
             mode_b: 0,
             recovery_bits: 1024,
@@ -154,6 +158,7 @@ impl HostConfig {
             | put("CTRL", "redundancy", self.redundancy as u32)
             | put("CTRL", "policy", policy.code())
             | put("CTRL", "dual_tx", self.dual_tx as u32)
+            | put("CTRL", "star", self.star as u32)
             | put("CTRL", "k", k)
             | put("CTRL", "mode_a", self.mode_a as u32)
             | put("CTRL", "mode_b", self.mode_b as u32)

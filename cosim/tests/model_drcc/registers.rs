@@ -93,8 +93,8 @@ fn illegal_writes_set_illegal_with_the_documented_effect() {
     assert!(!take_illegal(&mut sys));
     assert_eq!(sys.read(0, CTRL), RESET_MODE | policy(2) | k(1));
     // Reserved bits are not stored.
-    // (Bit 17 is `dmr`, dmr_contract.md §2.)
-    sys.write(0, CTRL, RESET_MODE | policy(1) | k(1) | 0xE0 | 0xFFFC_0000);
+    // (Bit 5 is `star`, DRCC contract §4.4; bit 17 is `dmr`, dmr_contract.md §2.)
+    sys.write(0, CTRL, RESET_MODE | policy(1) | k(1) | 0xC0 | 0xFFFC_0000);
     assert!(!take_illegal(&mut sys));
     assert_eq!(sys.read(0, CTRL), RESET_MODE | policy(1) | k(1));
 

@@ -95,6 +95,9 @@ impl StarScenario {
             redundancy: true,
             policy: Policy::KFailed(2),
             dual_tx: false,
+            // One domain: the other channel's echo of an own frame completes it
+            // (DRCC contract §4.4).
+            star: true,
             // Longer than the hubs' restoration time (1408), so that a node whose
             // probation began after the fault ended returns only once the hub has
             // re-coupled its port; returning earlier is a dominant bit on an isolated

@@ -24,6 +24,10 @@ pub struct FsmInputs {
     pub pending_b: bool,
     pub done_b: bool,
     pub failed_b: bool,
+    /// Echo of the attempted head message on channel A / B (star node, §4.4):
+    /// `star && attempted && rx_valid && rx frame == head`.
+    pub echo_a: bool,
+    pub echo_b: bool,
 }
 
 /// What the FSM did at an edge, for the rest of the top.
@@ -46,6 +50,8 @@ pub struct MainFsm {
     pub resend: bool,
     pub copy: bool,
     pub failover: bool,
+    /// The head message was handed to a channel and is not finished (§4.4).
+    pub attempted: bool,
     /// `chan_a_transmission_req` / `chan_b_transmission_req` (pulses).
     pub req_a: bool,
     pub req_b: bool,
@@ -124,6 +130,7 @@ impl MainFsm {
             ev.pop = true;
             n.resend = false;
             n.copy = false;
+            n.attempted = false;
             n.last_tx_time = c.tx_time;
             n.tx_ok_channel = ok;
         };
@@ -143,7 +150,24 @@ impl MainFsm {
             n.transmission_ack = true;
             finish(n, ev, if c.copy { 0b11 } else { 0b10 });
         };
+        // Star node (§4.4): the other channel heard the attempted message, which was
+        // therefore exchanged on the one domain; this row comes first in every state.
+        let echo = i.echo_a || i.echo_b;
         match c.state {
+            _ if echo => {
+                n.transmission_ack = true;
+                finish(&mut n, &mut ev, if i.echo_b { 0b01 } else { 0b10 });
+                n.abort_a = matches!(c.state, CH1 | ABORT1 | WAIT2);
+                n.abort_b = matches!(c.state, CH2 | ABORT2);
+                n.state = match c.state {
+                    IDLE2 | WAIT3 | CH2 | ABORT2 => IDLE2,
+                    WAIT4 if !i.va => IDLE2,
+                    _ => IDLE1,
+                };
+                if c.state == WAIT4 && n.state == IDLE1 {
+                    n.failover = false;
+                }
+            }
             IDLE1 => {
                 if !i.va && i.vb {
                     n.state = IDLE2;
@@ -246,6 +270,9 @@ impl MainFsm {
         }
         if n.state != c.state {
             coverage::hit_with(|| coverage::main_transition(c.state, n.state));
+        }
+        if n.req_a || n.req_b {
+            n.attempted = true;
         }
         n.finish_q = n.transmission_ack && ev.pop;
         if n.failover != c.failover {

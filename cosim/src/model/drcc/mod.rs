@@ -298,6 +298,12 @@ impl DrccModel {
             }
         }
 
+        // Echo (§4.4): in a star node, a channel's reception of the attempted head
+        // message (the TX RAM read data) is the node's own frame heard through the
+        // other hub.
+        let star_on = running && r.star() && self.fsm.attempted;
+        let echo = [pa, pb].map(|o| star_on && o.rx_valid && o.rx_frame == self.txq.rd);
+
         // Main FSM (§4), on pre-edge values of the aux FSMs and TX queue A.
         let fsm_in = FsmInputs {
             running,
@@ -312,6 +318,8 @@ impl DrccModel {
             pending_b: pb.tx_pending,
             done_b: pb.tx_done,
             failed_b: pb.tx_failed,
+            echo_a: echo[0],
+            echo_b: echo[1],
         };
         let in_use = [self.fsm.uses_a(), self.fsm.uses_b()];
         let fev = self.fsm.edge(&fsm_in);
@@ -417,7 +425,8 @@ impl DrccModel {
                 rx_valid: if dmr_mode && !reset_mode {
                     dev.rx_deliver
                 } else {
-                    [pa.rx_valid, pb.rx_valid]
+                    // An echo is the node's own frame, not a reception (§4.4).
+                    [pa.rx_valid && !echo[0], pb.rx_valid && !echo[1]]
                 },
             },
             [&pa.rx_frame, &pb.rx_frame],

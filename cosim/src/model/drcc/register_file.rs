@@ -73,6 +73,10 @@ impl Regs {
     pub(super) fn dual_tx(&self) -> bool {
         self.ctrl & ctrl::DUAL_TX != 0
     }
+    /// Replicated star node (§4.4).
+    pub(super) fn star(&self) -> bool {
+        self.ctrl & ctrl::STAR != 0
+    }
     pub(super) fn k(&self) -> u8 {
         ((self.ctrl & ctrl::K_MASK) >> ctrl::K_SHIFT) as u8
     }
@@ -86,16 +90,23 @@ impl Regs {
     pub(super) fn tq_per_bit(&self) -> u8 {
         (((self.btr >> btr::TSEG1_SHIFT) & 0xF) + ((self.btr >> btr::TSEG2_SHIFT) & 0x7) + 3) as u8
     }
-    /// The frame staged in TX_ID..TX_DATA1.
+    /// The frame staged in TX_ID..TX_DATA1, normalized as a push stores it (§6):
+    /// as a receiver would deliver it (a base identifier's upper bits, bytes past
+    /// min(dlc, 8) and a remote frame's bytes read 0).
     pub(super) fn staged(&self) -> Frame {
         let mut data = [0u8; 8];
         data[..4].copy_from_slice(&self.tx_data[0].to_le_bytes());
         data[4..].copy_from_slice(&self.tx_data[1].to_le_bytes());
+        let ide = self.tx_id & frame_id::IDE != 0;
+        let rtr = self.tx_id & frame_id::RTR != 0;
+        let dlc = (self.tx_ctrl & frame_ctrl::DLC_MASK) as u8;
+        let len = if rtr { 0 } else { dlc.min(8) as usize };
+        data[len..].fill(0);
         Frame {
-            id: self.tx_id & frame_id::ID_MASK,
-            ide: self.tx_id & frame_id::IDE != 0,
-            rtr: self.tx_id & frame_id::RTR != 0,
-            dlc: (self.tx_ctrl & frame_ctrl::DLC_MASK) as u8,
+            id: self.tx_id & if ide { frame_id::ID_MASK } else { 0x7FF },
+            ide,
+            rtr,
+            dlc,
             data,
         }
     }

@@ -52,6 +52,8 @@ pub mod ctrl {
     pub const POLICY_SHIFT: u32 = 2;
     pub const POLICY_MASK: u32 = 0x3 << POLICY_SHIFT;
     pub const DUAL_TX: u32 = 1 << 4;
+    /// Replicated star node (§4.4): the other channel's echo completes a message.
+    pub const STAR: u32 = 1 << 5;
     pub const K_SHIFT: u32 = 8;
     pub const K_MASK: u32 = 0xF << K_SHIFT;
     pub const MODE_A_SHIFT: u32 = 12;
@@ -60,7 +62,7 @@ pub mod ctrl {
     /// DMR mode (dmr_contract.md §2): the third DRCC mode.
     pub const DMR: u32 = 1 << 17;
     /// Every defined bit (reserved bits read 0).
-    pub const DEFINED: u32 = 0x3_FF1F;
+    pub const DEFINED: u32 = 0x3_FF3F;
     /// Every cfg field (all defined bits but `reset_mode`).
     pub const CFG: u32 = DEFINED & !RESET_MODE;
     /// Reset value: reset mode, policy error-passive, k = 1.

@@ -59,6 +59,14 @@ fn assert_lossless(s: &StarScenario, r: &StarReport) {
         r.foreign
     );
     assert_eq!(r.delivered, s.nodes * (s.nodes - 1) * s.frames_per_node);
+    // Star nodes (DRCC contract §4.4): the echo of a node's own frame on its other
+    // channel is the notice of its transmission, never delivered to its host.
+    assert!(
+        r.own.iter().all(|&n| n == 0),
+        "{}: own frames delivered back per node: {:?}",
+        s.fault.name(),
+        r.own
+    );
 }
 
 /// Each target port isolated during the fault with the expected kind, nothing else

@@ -110,8 +110,12 @@ impl StarScenario {
     }
 
     /// The frame host `node` submits as its `k`-th (unique identifier and data).
+    /// Bytes 3..7 lie past the DLC and hold junk, as a host's TX_DATA registers may:
+    /// they are not sent, receivers deliver them as 0 ([`Frame::normalized`]), and a
+    /// star node must still recognise the echo of its frame (DRCC contract §4.4 and
+    /// §6, frames normalized at push).
     pub fn frame(node: usize, k: usize) -> Frame {
-        let mut data = [0u8; 8];
+        let mut data = [0xA5 ^ k as u8; 8];
         data[0] = node as u8;
         data[1] = k as u8;
         data[2] = 0x5A;

@@ -32,6 +32,10 @@ pub struct StarReport {
     /// hub only).
     pub from_others: Vec<usize>,
     pub dups_dropped: Vec<u32>,
+    /// Per node: its own frames its host got back. A star node takes the other
+    /// channel's echo of its frame as the notice of its transmission, not as a
+    /// reception (DRCC contract §4.4), so this stays 0.
+    pub own: Vec<usize>,
     /// Per node: the clocks at which its host took each frame from its RX FIFO.
     pub received_at: Vec<Vec<u64>>,
     /// Every change of a hub's `port_enabled`.

@@ -122,13 +122,19 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
     for (rx_node, n) in sys.nodes().iter().enumerate() {
         let mut seen = vec![vec![0usize; s.frames_per_node]; s.nodes];
         let mut from_others = 0;
+        let mut own = 0;
         for got in &n.host.received {
             let f = got.frame;
             let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
-            if sender < s.nodes && k < s.frames_per_node && f == StarScenario::frame(sender, k) {
+            if sender < s.nodes
+                && k < s.frames_per_node
+                && f == StarScenario::frame(sender, k).normalized()
+            {
                 seen[sender][k] += 1;
                 if sender != rx_node {
                     from_others += 1;
+                } else {
+                    own += 1;
                 }
             } else {
                 r.foreign += 1;
@@ -138,6 +144,7 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
         r.received_at
             .push(n.host.received.iter().map(|got| got.cycle).collect());
         r.from_others.push(from_others);
+        r.own.push(own);
         for (sender, counts) in seen.iter().enumerate() {
             if sender == rx_node {
                 continue;

@@ -142,11 +142,15 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  [15:0] regs__frames;
     reg  [15:0] regs__errors;
     reg  [31:0] regs__port_rd;
+    reg  [15:0] regs__blocks;
+    reg  regs__u_window;
     reg  regs__ev_iso;
     reg  regs__ev_rest;
+    reg  regs__ev_ack_unit;
     wire  regs__reset_mode;
     wire  regs__reset_mode_d;
     wire  regs__ack_interdep;
+    wire  regs__fi_ack_leak;
     wire  regs__decoupled;
     wire  [5:0] regs__brp;
     wire  [3:0] regs__tseg1;
@@ -162,15 +166,34 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  coupler__rst;
     reg  [3:0] coupler__uplink;
     reg  [1:0] coupler__sublink_in;
-    wire  [3:0] coupler__downlink;
     wire  [1:0] coupler__sublink_out;
     reg  [3:0] coupler__node_en;
     reg  [1:0] coupler__sub_en;
     reg  coupler__decoupled;
     reg  coupler__ack_mask;
+    reg  coupler__fi_ack_leak;
+    wire  coupler__dl_next;
     wire  coupler__coupled;
     wire  [3:0] coupler__node_q;
     wire  [1:0] coupler__sub_q;
+    reg  ack_unit__clk;
+    reg  ack_unit__rst;
+    reg  ack_unit__trk_rst;
+    reg  ack_unit__btl_rst;
+    reg  [3:0] ack_unit__uplink;
+    reg  [1:0] ack_unit__sublink_in;
+    wire  [3:0] ack_unit__downlink;
+    reg  [5:0] ack_unit__cfg_brp_next;
+    reg  [4:0] ack_unit__cfg_tseg1_len;
+    reg  [3:0] ack_unit__cfg_tseg2_len;
+    reg  [3:0] ack_unit__cfg_sjw_len;
+    reg  ack_unit__ack_interdep;
+    reg  [5:0] ack_unit__enabled;
+    reg  ack_unit__decoupled;
+    reg  ack_unit__dl_next;
+    wire  [15:0] ack_unit__blocks;
+    wire  ack_unit__u_window;
+    wire  ack_unit__ev_block;
     reg  cfg_regs__clk;
     reg  cfg_regs__rst;
     reg  [5:0] cfg_regs__cfg_brp;
@@ -358,6 +381,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  recouple;
     reg  [3:0] node_en;
     reg  [1:0] sub_en;
+    reg  [5:0] port_en;
     reg  [31:0] port_rd;
     reg  ev_iso;
     reg  ev_rest;
@@ -382,11 +406,15 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .frames(regs__frames),
         .errors(regs__errors),
         .port_rd(regs__port_rd),
+        .blocks(regs__blocks),
+        .u_window(regs__u_window),
         .ev_iso(regs__ev_iso),
         .ev_rest(regs__ev_rest),
+        .ev_ack_unit(regs__ev_ack_unit),
         .reset_mode(regs__reset_mode),
         .reset_mode_d(regs__reset_mode_d),
         .ack_interdep(regs__ack_interdep),
+        .fi_ack_leak(regs__fi_ack_leak),
         .decoupled(regs__decoupled),
         .brp(regs__brp),
         .tseg1(regs__tseg1),
@@ -404,15 +432,36 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .rst(coupler__rst),
         .uplink(coupler__uplink),
         .sublink_in(coupler__sublink_in),
-        .downlink(coupler__downlink),
         .sublink_out(coupler__sublink_out),
         .node_en(coupler__node_en),
         .sub_en(coupler__sub_en),
         .decoupled(coupler__decoupled),
         .ack_mask(coupler__ack_mask),
+        .fi_ack_leak(coupler__fi_ack_leak),
+        .dl_next(coupler__dl_next),
         .coupled(coupler__coupled),
         .node_q(coupler__node_q),
         .sub_q(coupler__sub_q)
+    );
+    hub__ack_unit ack_unit(
+        .clk(ack_unit__clk),
+        .rst(ack_unit__rst),
+        .trk_rst(ack_unit__trk_rst),
+        .btl_rst(ack_unit__btl_rst),
+        .uplink(ack_unit__uplink),
+        .sublink_in(ack_unit__sublink_in),
+        .downlink(ack_unit__downlink),
+        .cfg_brp_next(ack_unit__cfg_brp_next),
+        .cfg_tseg1_len(ack_unit__cfg_tseg1_len),
+        .cfg_tseg2_len(ack_unit__cfg_tseg2_len),
+        .cfg_sjw_len(ack_unit__cfg_sjw_len),
+        .ack_interdep(ack_unit__ack_interdep),
+        .enabled(ack_unit__enabled),
+        .decoupled(ack_unit__decoupled),
+        .dl_next(ack_unit__dl_next),
+        .blocks(ack_unit__blocks),
+        .u_window(ack_unit__u_window),
+        .ev_block(ack_unit__ev_block)
     );
     hub__cfg_regs cfg_regs(
         .clk(cfg_regs__clk),
@@ -767,6 +816,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         end
         ev_iso = ev_iso | sub_guards__1__iso_evt;
         ev_rest = ev_rest | sub_guards__1__rest_evt;
+        port_en = ((node_en) & 6'h3f) | (((sub_en) & 6'h3f) << shift_n);
         regs__clk = clk;
         regs__rst = rst;
         regs__wb_cyc_i = wb_cyc_i;
@@ -778,12 +828,15 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         regs__any_sub_en = sub_en != zero_m;
         regs__trk = tracker__trk;
         regs__ack_window = ack_win;
-        regs__port_en = ((node_en) & 6'h3f) | (((sub_en) & 6'h3f) << shift_n);
+        regs__port_en = port_en;
         regs__frames = tracker__frames;
         regs__errors = tracker__errors;
         regs__port_rd = port_rd;
         regs__ev_iso = ev_iso;
         regs__ev_rest = ev_rest;
+        regs__blocks = ack_unit__blocks;
+        regs__u_window = ack_unit__u_window;
+        regs__ev_ack_unit = ack_unit__ev_block;
         coupler__clk = clk;
         coupler__rst = rst;
         coupler__uplink = uplink;
@@ -792,6 +845,21 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         coupler__sub_en = sub_en;
         coupler__decoupled = regs__decoupled;
         coupler__ack_mask = ack_win & regs__ack_interdep & ~regs__decoupled;
+        coupler__fi_ack_leak = regs__fi_ack_leak;
+        ack_unit__clk = clk;
+        ack_unit__rst = rst;
+        ack_unit__trk_rst = guard_rst;
+        ack_unit__btl_rst = btl_rst;
+        ack_unit__uplink = uplink;
+        ack_unit__sublink_in = sublink_in;
+        ack_unit__cfg_brp_next = cfg_regs__brp_next;
+        ack_unit__cfg_tseg1_len = cfg_regs__tseg1_len;
+        ack_unit__cfg_tseg2_len = cfg_regs__tseg2_len;
+        ack_unit__cfg_sjw_len = cfg_regs__sjw_len;
+        ack_unit__ack_interdep = regs__ack_interdep;
+        ack_unit__enabled = port_en;
+        ack_unit__decoupled = regs__decoupled;
+        ack_unit__dl_next = coupler__dl_next;
         cfg_regs__clk = clk;
         cfg_regs__rst = btl_rst;
         cfg_regs__cfg_brp = regs__brp;
@@ -819,17 +887,1575 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
         irq = regs__irq;
-        downlink = coupler__downlink;
+        downlink = ack_unit__downlink;
         sublink_out = coupler__sublink_out;
         coupled = coupler__coupled;
         sample_point = btl__sample_point;
         trk_state = tracker__trk;
         ack_window = ack_win;
         decoupled = regs__decoupled;
-        port_enabled = ((node_en) & 6'h3f) | (((sub_en) & 6'h3f) << shift_n);
+        port_enabled = port_en;
     end
     
 endmodule // top
+
+
+module hub__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,ack_interdep,enabled,decoupled,dl_next,blocks,u_window,ev_block);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  trk_rst;
+    input wire  btl_rst;
+    input wire  [3:0] uplink;
+    input wire  [1:0] sublink_in;
+    output reg  [3:0] downlink;
+    input wire  [5:0] cfg_brp_next;
+    input wire  [4:0] cfg_tseg1_len;
+    input wire  [3:0] cfg_tseg2_len;
+    input wire  [3:0] cfg_sjw_len;
+    input wire  ack_interdep;
+    input wire  [5:0] enabled;
+    input wire  decoupled;
+    input wire  dl_next;
+    output reg  [15:0] blocks;
+    output reg  u_window;
+    output reg  ev_block;
+    
+    // Constant declarations
+    localparam  node_mask = 6'b1111;
+    localparam  sub_mask = 6'b110000;
+    localparam  shift_n = 4'h4;
+    localparam  ones_n = 4'hf;
+    localparam  zero_n = 4'h0;
+    localparam  ones_p = 6'b111111;
+    localparam  s_idle = 2'b0;
+    localparam  s_ack = 2'b10;
+    localparam  s_delim = 2'b11;
+    localparam  zero16 = 16'h0;
+    localparam  one16 = 16'h1;
+    localparam  max16 = 16'hffff;
+    
+    // Stub signals
+    reg  u_btl__clk;
+    reg  u_btl__rst;
+    reg  [5:0] u_btl__cfg_brp_next;
+    reg  [4:0] u_btl__cfg_tseg1_len;
+    reg  [3:0] u_btl__cfg_tseg2_len;
+    reg  [3:0] u_btl__cfg_sjw_len;
+    reg  u_btl__cfg_triple;
+    reg  u_btl__rx_s;
+    reg  u_btl__tx;
+    reg  u_btl__hard_sync_enable;
+    wire  u_btl__sample;
+    wire  u_btl__sampled;
+    wire  u_btl__bit_start;
+    wire  u_btl__hard_sync;
+    wire  u_btl__sample_point;
+    wire  u_btl__last_sample;
+    reg  u_trk__clk;
+    reg  u_trk__rst;
+    reg  u_trk__sample;
+    reg  u_trk__b;
+    wire  [1:0] u_trk__trk;
+    wire  [15:0] u_trk__frames;
+    wire  [15:0] u_trk__errors;
+    wire  u_trk__ev_sof;
+    wire  u_trk__ev_frame;
+    wire  u_trk__in_arb;
+    wire  u_trk__ev_stuff_rec;
+    wire  u_trk__ev_rid;
+    wire  u_trk__ev_ack;
+    reg  [5:0] u_s1__d;
+    wire  [5:0] u_s1__q;
+    reg  u_s1__clock;
+    reg  [5:0] u_in_s__d;
+    wire  [5:0] u_in_s__q;
+    reg  u_in_s__clock;
+    reg  u_view_q__d;
+    wire  u_view_q__q;
+    reg  u_view_q__clock;
+    reg  [3:0] downlink_q__d;
+    wire  [3:0] downlink_q__q;
+    reg  downlink_q__clock;
+    reg  [15:0] blocks_q__d;
+    wire  [15:0] blocks_q__q;
+    reg  blocks_q__clock;
+    reg  u_blocked__d;
+    wire  u_blocked__q;
+    reg  u_blocked__clock;
+    
+    // Local signals
+    reg  [5:0] pins;
+    reg  [5:0] contrib;
+    reg  u_own;
+    reg  u_twin;
+    reg  u_win;
+    reg  guard;
+    reg  intervene;
+    
+    // Sub module instances
+    hub__ack_unit__u_btl u_btl(
+        .clk(u_btl__clk),
+        .rst(u_btl__rst),
+        .cfg_brp_next(u_btl__cfg_brp_next),
+        .cfg_tseg1_len(u_btl__cfg_tseg1_len),
+        .cfg_tseg2_len(u_btl__cfg_tseg2_len),
+        .cfg_sjw_len(u_btl__cfg_sjw_len),
+        .cfg_triple(u_btl__cfg_triple),
+        .rx_s(u_btl__rx_s),
+        .tx(u_btl__tx),
+        .hard_sync_enable(u_btl__hard_sync_enable),
+        .sample(u_btl__sample),
+        .sampled(u_btl__sampled),
+        .bit_start(u_btl__bit_start),
+        .hard_sync(u_btl__hard_sync),
+        .sample_point(u_btl__sample_point),
+        .last_sample(u_btl__last_sample)
+    );
+    hub__ack_unit__u_trk u_trk(
+        .clk(u_trk__clk),
+        .rst(u_trk__rst),
+        .sample(u_trk__sample),
+        .b(u_trk__b),
+        .trk(u_trk__trk),
+        .frames(u_trk__frames),
+        .errors(u_trk__errors),
+        .ev_sof(u_trk__ev_sof),
+        .ev_frame(u_trk__ev_frame),
+        .in_arb(u_trk__in_arb),
+        .ev_stuff_rec(u_trk__ev_stuff_rec),
+        .ev_rid(u_trk__ev_rid),
+        .ev_ack(u_trk__ev_ack)
+    );
+    hub__ack_unit__u_s1 u_s1(
+        .d(u_s1__d),
+        .q(u_s1__q),
+        .clock(u_s1__clock)
+    );
+    hub__ack_unit__u_in_s u_in_s(
+        .d(u_in_s__d),
+        .q(u_in_s__q),
+        .clock(u_in_s__clock)
+    );
+    hub__ack_unit__u_view_q u_view_q(
+        .d(u_view_q__d),
+        .q(u_view_q__q),
+        .clock(u_view_q__clock)
+    );
+    hub__ack_unit__downlink_q downlink_q(
+        .d(downlink_q__d),
+        .q(downlink_q__q),
+        .clock(downlink_q__clock)
+    );
+    hub__ack_unit__blocks_q blocks_q(
+        .d(blocks_q__d),
+        .q(blocks_q__q),
+        .clock(blocks_q__clock)
+    );
+    hub__ack_unit__u_blocked u_blocked(
+        .d(u_blocked__d),
+        .q(u_blocked__q),
+        .clock(u_blocked__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        u_s1__clock = clk;
+        u_in_s__clock = clk;
+        u_view_q__clock = clk;
+        downlink_q__clock = clk;
+        blocks_q__clock = clk;
+        u_blocked__clock = clk;
+        u_s1__d = u_s1__q;
+        u_in_s__d = u_in_s__q;
+        u_view_q__d = u_view_q__q;
+        downlink_q__d = downlink_q__q;
+        blocks_q__d = blocks_q__q;
+        u_blocked__d = u_blocked__q;
+        pins = ((uplink) & 6'h3f) | (((sublink_in) & 6'h3f) << shift_n);
+        u_s1__d = pins;
+        u_in_s__d = u_s1__q;
+        contrib = u_in_s__q | ~enabled;
+        u_own = &(contrib | sub_mask);
+        u_twin = &(contrib | node_mask);
+        if (decoupled) begin
+            u_view_q__d = u_own;
+        end
+        else begin
+            u_view_q__d = u_own & u_twin;
+        end
+        u_win = (u_trk__trk == s_ack) | (u_trk__trk == s_delim);
+        guard = u_win & ack_interdep & ~decoupled;
+        if (dl_next | (guard & u_twin)) begin
+            downlink_q__d = ones_n;
+        end
+        else begin
+            downlink_q__d = zero_n;
+        end
+        intervene = guard & ~dl_next & u_twin & ~u_blocked__q;
+        if (intervene) begin
+            if (blocks_q__q != max16) begin
+                blocks_q__d = blocks_q__q + one16;
+            end
+            u_blocked__d = 1'b1;
+        end
+        if (~u_win) begin
+            u_blocked__d = 1'b0;
+        end
+        if (trk_rst) begin
+            u_blocked__d = 1'b0;
+        end
+        u_btl__clk = clk;
+        u_btl__rst = btl_rst;
+        u_btl__cfg_brp_next = cfg_brp_next;
+        u_btl__cfg_tseg1_len = cfg_tseg1_len;
+        u_btl__cfg_tseg2_len = cfg_tseg2_len;
+        u_btl__cfg_sjw_len = cfg_sjw_len;
+        u_btl__cfg_triple = 1'b0;
+        u_btl__rx_s = u_view_q__q;
+        u_btl__tx = 1'b1;
+        u_btl__hard_sync_enable = u_trk__trk == s_idle;
+        u_trk__clk = clk;
+        u_trk__rst = trk_rst;
+        u_trk__sample = u_btl__sample;
+        u_trk__b = u_view_q__q;
+        if (rst) begin
+            u_s1__d = ones_p;
+            u_in_s__d = ones_p;
+            u_view_q__d = 1'b1;
+            downlink_q__d = ones_n;
+            blocks_q__d = zero16;
+            u_blocked__d = 1'b0;
+        end
+        downlink = downlink_q__q;
+        blocks = blocks_q__q;
+        u_window = u_win;
+        ev_block = intervene;
+    end
+    
+endmodule // hub__ack_unit
+
+
+module hub__ack_unit__blocks_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__blocks_q
+
+
+module hub__ack_unit__downlink_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__downlink_q
+
+
+module hub__ack_unit__u_blocked(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_blocked
+
+
+module hub__ack_unit__u_btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  [5:0] cfg_brp_next;
+    input wire  [4:0] cfg_tseg1_len;
+    input wire  [3:0] cfg_tseg2_len;
+    input wire  [3:0] cfg_sjw_len;
+    input wire  cfg_triple;
+    input wire  rx_s;
+    input wire  tx;
+    input wire  hard_sync_enable;
+    output reg  sample;
+    output reg  sampled;
+    output reg  bit_start;
+    output reg  hard_sync;
+    output reg  sample_point;
+    output reg  last_sample;
+    
+    // Constant declarations
+    localparam  one4 = 4'h1;
+    localparam  one5 = 5'b1;
+    localparam  one6 = 6'b1;
+    localparam  zero5 = 5'b0;
+    localparam  zero6 = 6'b0;
+    
+    // Enums
+    localparam Segment__Sync = 0;
+    localparam Segment__Tseg1 = 1;
+    localparam Segment__Tseg2 = 2;
+    
+    // Stub signals
+    reg  [5:0] brp_cnt__d;
+    wire  [5:0] brp_cnt__q;
+    reg  brp_cnt__clock;
+    reg  [1:0] seg__d;
+    wire  [1:0] seg__q;
+    reg  seg__clock;
+    reg  [4:0] quantum__d;
+    wire  [4:0] quantum__q;
+    reg  quantum__clock;
+    reg  [4:0] tseg1_len__d;
+    wire  [4:0] tseg1_len__q;
+    reg  tseg1_len__clock;
+    reg  [3:0] tseg2_len__d;
+    wire  [3:0] tseg2_len__q;
+    reg  tseg2_len__clock;
+    reg  rx_prev__d;
+    wire  rx_prev__q;
+    reg  rx_prev__clock;
+    reg  rx_prev2__d;
+    wire  rx_prev2__q;
+    reg  rx_prev2__clock;
+    reg  last_sample_q__d;
+    wire  last_sample_q__q;
+    reg  last_sample_q__clock;
+    reg  synced__d;
+    wire  synced__q;
+    reg  synced__clock;
+    reg  sample_point_q__d;
+    wire  sample_point_q__q;
+    reg  sample_point_q__clock;
+    reg  tick_q__d;
+    wire  tick_q__q;
+    reg  tick_q__clock;
+    reg  last1__d;
+    wire  last1__q;
+    reg  last1__clock;
+    reg  last2__d;
+    wire  last2__q;
+    reg  last2__clock;
+    reg  res_sync__d;
+    wire  res_sync__q;
+    reg  res_sync__clock;
+    reg  res_end__d;
+    wire  res_end__q;
+    reg  res_end__clock;
+    reg  hse_q__d;
+    wire  hse_q__q;
+    reg  hse_q__clock;
+    
+    // Local signals
+    reg  tick;
+    reg  [4:0] tseg1_nominal;
+    reg  [3:0] tseg2_nominal;
+    reg  [3:0] sjw_eff;
+    reg  sync_ok;
+    reg  do_hard;
+    reg  do_resync;
+    reg  [4:0] quantum_next;
+    reg  [4:0] pos_error;
+    reg  [4:0] pos_jump;
+    reg  [4:0] tseg1_eff;
+    reg  [3:0] tseg2_eff;
+    reg  sample_value;
+    reg  [5:0] brp_cnt_n;
+    reg  [4:0] quantum_next2;
+    reg  [3:0] q2_next;
+    reg  [3:0] q2_next2;
+    reg  [3:0] t2_short;
+    reg  [3:0] t2_short2;
+    reg  [3:0] ne_stay;
+    reg  [3:0] ne_short;
+    reg  last1_stay;
+    reg  last2_stay;
+    reg  res_sync_stay;
+    reg  res_end_stay;
+    reg  last2_short;
+    reg  res_sync_short;
+    reg  res_end_short;
+    reg  last2_enter;
+    reg  res_sync_enter;
+    reg  res_end_enter;
+    reg  last1_enter;
+    
+    // Sub module instances
+    hub__ack_unit__u_btl__brp_cnt brp_cnt(
+        .d(brp_cnt__d),
+        .q(brp_cnt__q),
+        .clock(brp_cnt__clock)
+    );
+    hub__ack_unit__u_btl__seg seg(
+        .d(seg__d),
+        .q(seg__q),
+        .clock(seg__clock)
+    );
+    hub__ack_unit__u_btl__quantum quantum(
+        .d(quantum__d),
+        .q(quantum__q),
+        .clock(quantum__clock)
+    );
+    hub__ack_unit__u_btl__tseg1_len tseg1_len(
+        .d(tseg1_len__d),
+        .q(tseg1_len__q),
+        .clock(tseg1_len__clock)
+    );
+    hub__ack_unit__u_btl__tseg2_len tseg2_len(
+        .d(tseg2_len__d),
+        .q(tseg2_len__q),
+        .clock(tseg2_len__clock)
+    );
+    hub__ack_unit__u_btl__rx_prev rx_prev(
+        .d(rx_prev__d),
+        .q(rx_prev__q),
+        .clock(rx_prev__clock)
+    );
+    hub__ack_unit__u_btl__rx_prev2 rx_prev2(
+        .d(rx_prev2__d),
+        .q(rx_prev2__q),
+        .clock(rx_prev2__clock)
+    );
+    hub__ack_unit__u_btl__last_sample_q last_sample_q(
+        .d(last_sample_q__d),
+        .q(last_sample_q__q),
+        .clock(last_sample_q__clock)
+    );
+    hub__ack_unit__u_btl__synced synced(
+        .d(synced__d),
+        .q(synced__q),
+        .clock(synced__clock)
+    );
+    hub__ack_unit__u_btl__sample_point_q sample_point_q(
+        .d(sample_point_q__d),
+        .q(sample_point_q__q),
+        .clock(sample_point_q__clock)
+    );
+    hub__ack_unit__u_btl__tick_q tick_q(
+        .d(tick_q__d),
+        .q(tick_q__q),
+        .clock(tick_q__clock)
+    );
+    hub__ack_unit__u_btl__last1 last1(
+        .d(last1__d),
+        .q(last1__q),
+        .clock(last1__clock)
+    );
+    hub__ack_unit__u_btl__last2 last2(
+        .d(last2__d),
+        .q(last2__q),
+        .clock(last2__clock)
+    );
+    hub__ack_unit__u_btl__res_sync res_sync(
+        .d(res_sync__d),
+        .q(res_sync__q),
+        .clock(res_sync__clock)
+    );
+    hub__ack_unit__u_btl__res_end res_end(
+        .d(res_end__d),
+        .q(res_end__q),
+        .clock(res_end__clock)
+    );
+    hub__ack_unit__u_btl__hse_q hse_q(
+        .d(hse_q__d),
+        .q(hse_q__q),
+        .clock(hse_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        brp_cnt__clock = clk;
+        seg__clock = clk;
+        quantum__clock = clk;
+        tseg1_len__clock = clk;
+        tseg2_len__clock = clk;
+        rx_prev__clock = clk;
+        rx_prev2__clock = clk;
+        last_sample_q__clock = clk;
+        synced__clock = clk;
+        sample_point_q__clock = clk;
+        tick_q__clock = clk;
+        last1__clock = clk;
+        last2__clock = clk;
+        res_sync__clock = clk;
+        res_end__clock = clk;
+        hse_q__clock = clk;
+        brp_cnt__d = brp_cnt__q;
+        seg__d = seg__q;
+        quantum__d = quantum__q;
+        tseg1_len__d = tseg1_len__q;
+        tseg2_len__d = tseg2_len__q;
+        rx_prev__d = rx_prev__q;
+        rx_prev2__d = rx_prev2__q;
+        last_sample_q__d = last_sample_q__q;
+        synced__d = synced__q;
+        sample_point_q__d = sample_point_q__q;
+        tick_q__d = tick_q__q;
+        last1__d = last1__q;
+        last2__d = last2__q;
+        res_sync__d = res_sync__q;
+        res_end__d = res_end__q;
+        hse_q__d = hse_q__q;
+        tseg1_nominal = cfg_tseg1_len;
+        tseg2_nominal = cfg_tseg2_len;
+        sjw_eff = cfg_sjw_len;
+        tick = tick_q__q;
+        if (rst || tick) begin
+            brp_cnt_n = zero6;
+        end
+        else begin
+            brp_cnt_n = brp_cnt__q + one6;
+        end
+        brp_cnt__d = brp_cnt_n;
+        tick_q__d = brp_cnt_n >= cfg_brp_next;
+        sync_ok = rx_prev__q && ~rx_s && last_sample_q__q && ~synced__q;
+        do_hard = sync_ok && hard_sync_enable;
+        do_resync = sync_ok && ~hard_sync_enable && tx;
+        quantum_next = quantum__q + one5;
+        quantum_next2 = quantum_next + one5;
+        pos_error = quantum__q + one5;
+        if (pos_error > ((sjw_eff) & 5'h1f)) begin
+            pos_jump = ((sjw_eff) & 5'h1f);
+        end
+        else begin
+            pos_jump = pos_error;
+        end
+        if (do_resync) begin
+            tseg1_eff = tseg1_len__q + pos_jump;
+        end
+        else begin
+            tseg1_eff = tseg1_len__q;
+        end
+        t2_short = tseg2_len__q - sjw_eff;
+        if (do_resync) begin
+            tseg2_eff = t2_short;
+        end
+        else begin
+            tseg2_eff = tseg2_len__q;
+        end
+        last1_enter = one5 >= tseg1_nominal;
+        last1_stay = quantum_next2 >= tseg1_len__q;
+        last2_enter = one4 >= tseg2_len__q;
+        res_sync_enter = tseg2_len__q <= sjw_eff;
+        res_end_enter = one4 >= t2_short;
+        q2_next = quantum_next[(32'h0)+:(4)];
+        q2_next2 = quantum_next2[(32'h0)+:(4)];
+        last2_stay = q2_next2 >= tseg2_len__q;
+        ne_stay = tseg2_len__q - q2_next;
+        res_sync_stay = ne_stay <= sjw_eff;
+        res_end_stay = q2_next2 >= t2_short;
+        last2_short = q2_next2 >= t2_short;
+        ne_short = t2_short - q2_next;
+        res_sync_short = ne_short <= sjw_eff;
+        t2_short2 = t2_short - sjw_eff;
+        res_end_short = q2_next2 >= t2_short2;
+        if (cfg_triple) begin
+            sample_value = (rx_prev2__q && rx_prev__q) || (rx_prev__q && rx_s) || (rx_prev2__q && rx_s);
+        end
+        else begin
+            sample_value = rx_s;
+        end
+        hse_q__d = hard_sync_enable;
+        sample = tick && last1__q && ~(sync_ok && (hse_q__q || tx));
+        bit_start = 1'b0;
+        hard_sync = 1'b0;
+        sample_point_q__d = 1'b0;
+        if (tick) begin
+            rx_prev__d = rx_s;
+            rx_prev2__d = rx_prev__q;
+            if (do_hard) begin
+                seg__d = Segment__Tseg1;
+                quantum__d = zero5;
+                tseg1_len__d = tseg1_nominal;
+                tseg2_len__d = tseg2_nominal;
+                synced__d = 1'b1;
+                bit_start = 1'b1;
+                hard_sync = 1'b1;
+                last1__d = last1_enter;
+                last2__d = 1'b0;
+                res_sync__d = 1'b0;
+                res_end__d = 1'b0;
+            end
+            else begin
+                case (seg__q)
+                    Segment__Sync:
+                        begin
+                            seg__d = Segment__Tseg1;
+                            quantum__d = zero5;
+                            tseg1_len__d = tseg1_nominal;
+                            tseg2_len__d = tseg2_nominal;
+                            if (do_resync) begin
+                                synced__d = 1'b1;
+                            end
+                            last1__d = last1_enter;
+                            last2__d = 1'b0;
+                            res_sync__d = 1'b0;
+                            res_end__d = 1'b0;
+                        end
+                    Segment__Tseg1:
+                        begin
+                            if (do_resync) begin
+                                synced__d = 1'b1;
+                            end
+                            tseg1_len__d = tseg1_eff;
+                            if (last1__q && ~do_resync) begin
+                                sample_point_q__d = 1'b1;
+                                last_sample_q__d = sample_value;
+                                synced__d = 1'b0;
+                                seg__d = Segment__Tseg2;
+                                quantum__d = zero5;
+                                last1__d = 1'b0;
+                                last2__d = last2_enter;
+                                res_sync__d = res_sync_enter;
+                                res_end__d = res_end_enter;
+                            end
+                            else begin
+                                quantum__d = quantum_next;
+                                if (do_resync) begin
+                                    last1__d = last1__q && ((quantum__q == zero5) || (sjw_eff == one4));
+                                end
+                                else begin
+                                    last1__d = last1_stay;
+                                end
+                            end
+                        end
+                    Segment__Tseg2:
+                        begin
+                            if (do_resync && res_sync__q) begin
+                                seg__d = Segment__Tseg1;
+                                quantum__d = zero5;
+                                tseg1_len__d = tseg1_nominal;
+                                tseg2_len__d = tseg2_nominal;
+                                synced__d = 1'b1;
+                                bit_start = 1'b1;
+                                last1__d = last1_enter;
+                                last2__d = 1'b0;
+                                res_sync__d = 1'b0;
+                                res_end__d = 1'b0;
+                            end
+                            else begin
+                                if (do_resync) begin
+                                    synced__d = 1'b1;
+                                end
+                                tseg2_len__d = tseg2_eff;
+                                if ((do_resync && res_end__q) || (~do_resync && last2__q)) begin
+                                    seg__d = Segment__Sync;
+                                    quantum__d = zero5;
+                                    bit_start = 1'b1;
+                                    last2__d = 1'b0;
+                                    res_sync__d = 1'b0;
+                                    res_end__d = 1'b0;
+                                end
+                                else begin
+                                    quantum__d = quantum_next;
+                                    if (do_resync) begin
+                                        last2__d = last2_short;
+                                        res_sync__d = res_sync_short;
+                                        res_end__d = res_end_short;
+                                    end
+                                    else begin
+                                        last2__d = last2_stay;
+                                        res_sync__d = res_sync_stay;
+                                        res_end__d = res_end_stay;
+                                    end
+                                end
+                            end
+                        end
+                    default:
+                        begin
+                            seg__d = Segment__Sync;
+                            last1__d = 1'b0;
+                            last2__d = 1'b0;
+                            res_sync__d = 1'b0;
+                            res_end__d = 1'b0;
+                        end
+                endcase
+            end
+        end
+        sampled = sample_value;
+        sample_point = sample_point_q__q;
+        last_sample = last_sample_q__q;
+        if (rst) begin
+            seg__d = Segment__Sync;
+            quantum__d = zero5;
+            tseg1_len__d = tseg1_nominal;
+            tseg2_len__d = tseg2_nominal;
+            rx_prev__d = 1'b1;
+            rx_prev2__d = 1'b1;
+            last_sample_q__d = 1'b1;
+            synced__d = 1'b0;
+            sample_point_q__d = 1'b0;
+            last1__d = 1'b0;
+            last2__d = 1'b0;
+            res_sync__d = 1'b0;
+            res_end__d = 1'b0;
+        end
+    end
+    
+endmodule // hub__ack_unit__u_btl
+
+
+module hub__ack_unit__u_btl__brp_cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__brp_cnt
+
+
+module hub__ack_unit__u_btl__hse_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__hse_q
+
+
+module hub__ack_unit__u_btl__last1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__last1
+
+
+module hub__ack_unit__u_btl__last2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__last2
+
+
+module hub__ack_unit__u_btl__last_sample_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__last_sample_q
+
+
+module hub__ack_unit__u_btl__quantum(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__quantum
+
+
+module hub__ack_unit__u_btl__res_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__res_end
+
+
+module hub__ack_unit__u_btl__res_sync(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__res_sync
+
+
+module hub__ack_unit__u_btl__rx_prev(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__rx_prev
+
+
+module hub__ack_unit__u_btl__rx_prev2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__rx_prev2
+
+
+module hub__ack_unit__u_btl__sample_point_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__sample_point_q
+
+
+module hub__ack_unit__u_btl__seg(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Enums
+    localparam Segment__Sync = 0;
+    localparam Segment__Tseg1 = 1;
+    localparam Segment__Tseg2 = 2;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__seg
+
+
+module hub__ack_unit__u_btl__synced(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__synced
+
+
+module hub__ack_unit__u_btl__tick_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__tick_q
+
+
+module hub__ack_unit__u_btl__tseg1_len(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__tseg1_len
+
+
+module hub__ack_unit__u_btl__tseg2_len(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_btl__tseg2_len
+
+
+module hub__ack_unit__u_in_s(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_in_s
+
+
+module hub__ack_unit__u_s1(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_s1
+
+
+module hub__ack_unit__u_trk(clk,rst,sample,b,trk,frames,errors,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  sample;
+    input wire  b;
+    output reg  [1:0] trk;
+    output reg  [15:0] frames;
+    output reg  [15:0] errors;
+    output reg  ev_sof;
+    output reg  ev_frame;
+    output reg  in_arb;
+    output reg  ev_stuff_rec;
+    output reg  ev_rid;
+    output reg  ev_ack;
+    
+    // Constant declarations
+    localparam  s_idle = 2'b0;
+    localparam  s_frame = 2'b1;
+    localparam  s_ack = 2'b10;
+    localparam  s_delim = 2'b11;
+    localparam  n4_0 = 4'h0;
+    localparam  n4_1 = 4'h1;
+    localparam  n4_8 = 4'h8;
+    localparam  n4_10 = 4'ha;
+    localparam  n3_1 = 3'b1;
+    localparam  n3_5 = 3'b101;
+    localparam  p0 = 7'b0;
+    localparam  p1 = 7'b1;
+    localparam  p10 = 7'b1010;
+    localparam  p12 = 7'b1100;
+    localparam  p13 = 7'b1101;
+    localparam  p15 = 7'b1111;
+    localparam  p18 = 7'b10010;
+    localparam  p32 = 7'b100000;
+    localparam  p34 = 7'b100010;
+    localparam  p35 = 7'b100011;
+    localparam  p38 = 7'b100110;
+    localparam  p54 = 7'b110110;
+    localparam  p127 = 7'b1111111;
+    localparam  zero16 = 16'h0;
+    localparam  one16 = 16'h1;
+    localparam  max16 = 16'hffff;
+    
+    // Stub signals
+    reg  [1:0] trk_q__d;
+    wire  [1:0] trk_q__q;
+    reg  trk_q__clock;
+    reg  [3:0] rec_run__d;
+    wire  [3:0] rec_run__q;
+    reg  rec_run__clock;
+    reg  [6:0] pos__d;
+    wire  [6:0] pos__q;
+    reg  pos__clock;
+    reg  [2:0] same_run__d;
+    wire  [2:0] same_run__q;
+    reg  same_run__clock;
+    reg  last_q__d;
+    wire  last_q__q;
+    reg  last_q__clock;
+    reg  ide__d;
+    wire  ide__q;
+    reg  ide__clock;
+    reg  rtr__d;
+    wire  rtr__q;
+    reg  rtr__clock;
+    reg  [3:0] dlc__d;
+    wire  [3:0] dlc__q;
+    reg  dlc__clock;
+    reg  id_zero__d;
+    wire  id_zero__q;
+    reg  id_zero__clock;
+    reg  [6:0] crc_end__d;
+    wire  [6:0] crc_end__q;
+    reg  crc_end__clock;
+    reg  [15:0] frames_q__d;
+    wire  [15:0] frames_q__q;
+    reg  frames_q__clock;
+    reg  [15:0] errors_q__d;
+    wire  [15:0] errors_q__q;
+    reg  errors_q__clock;
+    
+    // Local signals
+    reg  st_idle;
+    reg  st_frame;
+    reg  st_ack;
+    reg  stuff_due;
+    reg  at_crc_delim;
+    reg  data_bit;
+    reg  id_zero_new;
+    reg  [3:0] dlc_new;
+    reg  dlc_field;
+    reg  last_dlc;
+    reg  [3:0] dlc8;
+    reg  [6:0] data_len;
+    reg  [6:0] crc_base;
+    reg  err_evt;
+    
+    // Sub module instances
+    hub__ack_unit__u_trk__trk_q trk_q(
+        .d(trk_q__d),
+        .q(trk_q__q),
+        .clock(trk_q__clock)
+    );
+    hub__ack_unit__u_trk__rec_run rec_run(
+        .d(rec_run__d),
+        .q(rec_run__q),
+        .clock(rec_run__clock)
+    );
+    hub__ack_unit__u_trk__pos pos(
+        .d(pos__d),
+        .q(pos__q),
+        .clock(pos__clock)
+    );
+    hub__ack_unit__u_trk__same_run same_run(
+        .d(same_run__d),
+        .q(same_run__q),
+        .clock(same_run__clock)
+    );
+    hub__ack_unit__u_trk__last_q last_q(
+        .d(last_q__d),
+        .q(last_q__q),
+        .clock(last_q__clock)
+    );
+    hub__ack_unit__u_trk__ide ide(
+        .d(ide__d),
+        .q(ide__q),
+        .clock(ide__clock)
+    );
+    hub__ack_unit__u_trk__rtr rtr(
+        .d(rtr__d),
+        .q(rtr__q),
+        .clock(rtr__clock)
+    );
+    hub__ack_unit__u_trk__dlc dlc(
+        .d(dlc__d),
+        .q(dlc__q),
+        .clock(dlc__clock)
+    );
+    hub__ack_unit__u_trk__id_zero id_zero(
+        .d(id_zero__d),
+        .q(id_zero__q),
+        .clock(id_zero__clock)
+    );
+    hub__ack_unit__u_trk__crc_end crc_end(
+        .d(crc_end__d),
+        .q(crc_end__q),
+        .clock(crc_end__clock)
+    );
+    hub__ack_unit__u_trk__frames_q frames_q(
+        .d(frames_q__d),
+        .q(frames_q__q),
+        .clock(frames_q__clock)
+    );
+    hub__ack_unit__u_trk__errors_q errors_q(
+        .d(errors_q__d),
+        .q(errors_q__q),
+        .clock(errors_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        trk_q__clock = clk;
+        rec_run__clock = clk;
+        pos__clock = clk;
+        same_run__clock = clk;
+        last_q__clock = clk;
+        ide__clock = clk;
+        rtr__clock = clk;
+        dlc__clock = clk;
+        id_zero__clock = clk;
+        crc_end__clock = clk;
+        frames_q__clock = clk;
+        errors_q__clock = clk;
+        trk_q__d = trk_q__q;
+        rec_run__d = rec_run__q;
+        pos__d = pos__q;
+        same_run__d = same_run__q;
+        last_q__d = last_q__q;
+        ide__d = ide__q;
+        rtr__d = rtr__q;
+        dlc__d = dlc__q;
+        id_zero__d = id_zero__q;
+        crc_end__d = crc_end__q;
+        frames_q__d = frames_q__q;
+        errors_q__d = errors_q__q;
+        st_idle = trk_q__q == s_idle;
+        st_frame = trk_q__q == s_frame;
+        st_ack = trk_q__q == s_ack;
+        stuff_due = same_run__q == n3_5;
+        at_crc_delim = pos__q == crc_end__q;
+        data_bit = st_frame & ~stuff_due & ~at_crc_delim;
+        in_arb = (pos__q <= p13) | (ide__q & (pos__q <= p32));
+        if ((pos__q >= p1) & (pos__q <= p10)) begin
+            id_zero_new = id_zero__q & ~b;
+        end
+        else begin
+            id_zero_new = id_zero__q;
+        end
+        dlc_new = (dlc__q << 32'h1) | ((b) & 4'hf);
+        if (ide__q) begin
+            dlc_field = (pos__q >= p35) & (pos__q <= p38);
+            last_dlc = pos__q == p38;
+            crc_base = p54;
+        end
+        else begin
+            dlc_field = (pos__q >= p15) & (pos__q <= p18);
+            last_dlc = pos__q == p18;
+            crc_base = p34;
+        end
+        if (dlc_new > n4_8) begin
+            dlc8 = n4_8;
+        end
+        else begin
+            dlc8 = dlc_new;
+        end
+        if (rtr__q) begin
+            data_len = p0;
+        end
+        else begin
+            data_len = ((dlc8) & 7'h7f) << 32'h3;
+        end
+        ev_sof = sample & st_idle & ~b & (rec_run__q >= n4_10);
+        ev_frame = sample & st_frame;
+        ev_stuff_rec = sample & st_frame & stuff_due & (b == last_q__q) & b;
+        ev_rid = sample & data_bit & (pos__q == p10) & id_zero_new;
+        ev_ack = sample & st_ack;
+        err_evt = 1'b0;
+        if (sample) begin
+            if (st_idle) begin
+                if (b) begin
+                    if (rec_run__q < n4_10) begin
+                        rec_run__d = rec_run__q + n4_1;
+                    end
+                end
+                else if (rec_run__q >= n4_10) begin
+                    trk_q__d = s_frame;
+                    pos__d = p1;
+                    same_run__d = n3_1;
+                    last_q__d = 1'b0;
+                    ide__d = 1'b0;
+                    rtr__d = 1'b0;
+                    dlc__d = n4_0;
+                    id_zero__d = 1'b1;
+                    crc_end__d = p127;
+                end
+                else begin
+                    rec_run__d = n4_0;
+                end
+            end
+            else if (st_frame) begin
+                if (stuff_due) begin
+                    if (b == last_q__q) begin
+                        err_evt = 1'b1;
+                        trk_q__d = s_idle;
+                        rec_run__d = n4_0;
+                    end
+                    else begin
+                        same_run__d = n3_1;
+                        last_q__d = b;
+                    end
+                end
+                else if (at_crc_delim) begin
+                    if (~b) begin
+                        err_evt = 1'b1;
+                        trk_q__d = s_idle;
+                        rec_run__d = n4_0;
+                    end
+                    else begin
+                        trk_q__d = s_ack;
+                    end
+                end
+                else begin
+                    if (b == last_q__q) begin
+                        same_run__d = same_run__q + n3_1;
+                    end
+                    else begin
+                        same_run__d = n3_1;
+                    end
+                    last_q__d = b;
+                    id_zero__d = id_zero_new;
+                    if (pos__q == p12) begin
+                        rtr__d = b;
+                    end
+                    if (pos__q == p13) begin
+                        ide__d = b;
+                    end
+                    if ((pos__q == p32) & ide__q) begin
+                        rtr__d = b;
+                    end
+                    if (dlc_field) begin
+                        dlc__d = dlc_new;
+                    end
+                    if (last_dlc) begin
+                        crc_end__d = crc_base + data_len;
+                    end
+                    pos__d = pos__q + p1;
+                end
+            end
+            else if (st_ack) begin
+                if (frames_q__q != max16) begin
+                    frames_q__d = frames_q__q + one16;
+                end
+                trk_q__d = s_delim;
+            end
+            else begin
+                trk_q__d = s_idle;
+                if (b) begin
+                    rec_run__d = n4_1;
+                end
+                else begin
+                    rec_run__d = n4_0;
+                end
+            end
+        end
+        if (err_evt & (errors_q__q != max16)) begin
+            errors_q__d = errors_q__q + one16;
+        end
+        if (rst) begin
+            trk_q__d = s_idle;
+            rec_run__d = n4_0;
+            pos__d = p0;
+            same_run__d = n3_1;
+            last_q__d = 1'b0;
+            ide__d = 1'b0;
+            rtr__d = 1'b0;
+            dlc__d = n4_0;
+            id_zero__d = 1'b1;
+            crc_end__d = p127;
+            frames_q__d = zero16;
+            errors_q__d = zero16;
+        end
+        trk = trk_q__q;
+        frames = frames_q__q;
+        errors = errors_q__q;
+    end
+    
+endmodule // hub__ack_unit__u_trk
+
+
+module hub__ack_unit__u_trk__crc_end(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__crc_end
+
+
+module hub__ack_unit__u_trk__dlc(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__dlc
+
+
+module hub__ack_unit__u_trk__errors_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__errors_q
+
+
+module hub__ack_unit__u_trk__frames_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__frames_q
+
+
+module hub__ack_unit__u_trk__id_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__id_zero
+
+
+module hub__ack_unit__u_trk__ide(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__ide
+
+
+module hub__ack_unit__u_trk__last_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__last_q
+
+
+module hub__ack_unit__u_trk__pos(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__pos
+
+
+module hub__ack_unit__u_trk__rec_run(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__rec_run
+
+
+module hub__ack_unit__u_trk__rtr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__rtr
+
+
+module hub__ack_unit__u_trk__same_run(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__same_run
+
+
+module hub__ack_unit__u_trk__trk_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_trk__trk_q
+
+
+module hub__ack_unit__u_view_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__ack_unit__u_view_q
 
 
 module hub__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
@@ -1859,19 +3485,20 @@ module hub__cfg_regs__tseg2_len_q(d,q,clock);
 endmodule // hub__cfg_regs__tseg2_len_q
 
 
-module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_en,decoupled,ack_mask,coupled,node_q,sub_q);
+module hub__coupler(clk,rst,uplink,sublink_in,sublink_out,node_en,sub_en,decoupled,ack_mask,fi_ack_leak,dl_next,coupled,node_q,sub_q);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  [3:0] uplink;
     input wire  [1:0] sublink_in;
-    output reg  [3:0] downlink;
     output reg  [1:0] sublink_out;
     input wire  [3:0] node_en;
     input wire  [1:0] sub_en;
     input wire  decoupled;
     input wire  ack_mask;
+    input wire  fi_ack_leak;
+    output reg  dl_next;
     output reg  coupled;
     output reg  [3:0] node_q;
     output reg  [1:0] sub_q;
@@ -1879,7 +3506,6 @@ module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_e
     // Constant declarations
     localparam  ones_n = 4'hf;
     localparam  ones_m = 2'b11;
-    localparam  zero_n = 4'h0;
     localparam  zero_m = 2'b0;
     
     // Stub signals
@@ -1904,9 +3530,6 @@ module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_e
     reg  coupled_q__d;
     wire  coupled_q__q;
     reg  coupled_q__clock;
-    reg  [3:0] down_q__d;
-    wire  [3:0] down_q__q;
-    reg  down_q__clock;
     reg  [1:0] sub_out_q__d;
     wire  [1:0] sub_out_q__q;
     reg  sub_out_q__clock;
@@ -1952,11 +3575,6 @@ module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_e
         .q(coupled_q__q),
         .clock(coupled_q__clock)
     );
-    hub__coupler__down_q down_q(
-        .d(down_q__d),
-        .q(down_q__q),
-        .clock(down_q__clock)
-    );
     hub__coupler__sub_out_q sub_out_q(
         .d(sub_out_q__d),
         .q(sub_out_q__q),
@@ -1972,7 +3590,6 @@ module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_e
         sub_s__clock = clk;
         sub_pq__clock = clk;
         coupled_q__clock = clk;
-        down_q__clock = clk;
         sub_out_q__clock = clk;
         node_s1__d = node_s1__q;
         node_s__d = node_s__q;
@@ -1981,7 +3598,6 @@ module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_e
         sub_s__d = sub_s__q;
         sub_pq__d = sub_pq__q;
         coupled_q__d = coupled_q__q;
-        down_q__d = down_q__q;
         sub_out_q__d = sub_out_q__q;
         node_s1__d = uplink;
         node_s__d = node_s1__q;
@@ -2004,11 +3620,11 @@ module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_e
         else begin
             sub_out_q__d = zero_m;
         end
-        if ((ack_mask & twin) | (~ack_mask & view)) begin
-            down_q__d = ones_n;
+        if (ack_mask & ~fi_ack_leak) begin
+            dl_next = twin;
         end
         else begin
-            down_q__d = zero_n;
+            dl_next = view;
         end
         if (rst) begin
             node_s1__d = ones_n;
@@ -2018,11 +3634,9 @@ module hub__coupler(clk,rst,uplink,sublink_in,downlink,sublink_out,node_en,sub_e
             sub_s__d = ones_m;
             sub_pq__d = ones_m;
             coupled_q__d = 1'b1;
-            down_q__d = ones_n;
             sub_out_q__d = ones_m;
         end
         coupled = coupled_q__q;
-        downlink = down_q__q;
         sublink_out = sub_out_q__q;
         node_q = node_pq__q;
         sub_q = sub_pq__q;
@@ -2045,22 +3659,6 @@ module hub__coupler__coupled_q(d,q,clock);
     end
           
 endmodule // hub__coupler__coupled_q
-
-
-module hub__coupler__down_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // hub__coupler__down_q
 
 
 module hub__coupler__node_pq(d,q,clock);
@@ -4291,7 +5889,7 @@ module hub__node_guards__3__silent(d,q,clock);
 endmodule // hub__node_guards__3__silent
 
 
-module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,sample,any_sub_en,trk,ack_window,port_en,frames,errors,port_rd,ev_iso,ev_rest,reset_mode,reset_mode_d,ack_interdep,decoupled,brp,tseg1,tseg2,sjw,sd_run_up,sd_run_sub,sr_frames,bf_up,bf_sub,restore_bits);
+module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,sample,any_sub_en,trk,ack_window,port_en,frames,errors,port_rd,blocks,u_window,ev_iso,ev_rest,ev_ack_unit,reset_mode,reset_mode_d,ack_interdep,fi_ack_leak,decoupled,brp,tseg1,tseg2,sjw,sd_run_up,sd_run_sub,sr_frames,bf_up,bf_sub,restore_bits);
     
     // Module arguments
     input wire  clk;
@@ -4312,11 +5910,15 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     input wire  [15:0] frames;
     input wire  [15:0] errors;
     input wire  [31:0] port_rd;
+    input wire  [15:0] blocks;
+    input wire  u_window;
     input wire  ev_iso;
     input wire  ev_rest;
+    input wire  ev_ack_unit;
     output reg  reset_mode;
     output reg  reset_mode_d;
     output reg  ack_interdep;
+    output reg  fi_ack_leak;
     output reg  decoupled;
     output reg  [5:0] brp;
     output reg  [3:0] tseg1;
@@ -4340,12 +5942,14 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  a_int_status = 6'b111;
     localparam  a_int_enable = 6'b1000;
     localparam  a_stats = 6'b1001;
+    localparam  a_ack_unit = 6'b1010;
     localparam  a_port0 = 6'b10000;
     localparam  a_port_end = 6'b10110;
     localparam  c_reset_mode = 5'b0;
     localparam  c_force = 5'b1;
     localparam  c_recouple = 5'b10;
     localparam  c_ack_interdep = 5'b1000;
+    localparam  c_fi_ack_leak = 5'b11;
     localparam  b_brp = 4'h0;
     localparam  b_tseg1 = 4'h6;
     localparam  b_tseg2 = 4'ha;
@@ -4366,8 +5970,11 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  i_restoration = 5'b1;
     localparam  i_decoupled = 5'b10;
     localparam  i_illegal = 5'b11;
+    localparam  i_ack_unit = 5'b100;
     localparam  t_frames = 5'b0;
     localparam  t_errors = 5'b10000;
+    localparam  u_blocks = 5'b0;
+    localparam  u_u_window = 5'b10000;
     localparam  id_val = 32'h48550402;
     localparam  btr_reset = 15'b10100000000;
     localparam  sd_up_reset = 6'b1110;
@@ -4379,7 +5986,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  bf_min = 8'h8;
     localparam  restore_reset = 16'h580;
     localparam  decouple_reset = 16'h1000;
-    localparam  zero4 = 4'h0;
+    localparam  zero5 = 5'b0;
     localparam  zero16 = 16'h0;
     localparam  one16 = 16'h1;
     localparam  max16 = 16'hffff;
@@ -4395,13 +6002,13 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     wire  bus__wb_ack_o;
     wire  bus__irq;
     wire  bus__wr;
-    wire  [3:0] bus__int_status;
-    wire  [3:0] bus__int_enable;
+    wire  [4:0] bus__int_status;
+    wire  [4:0] bus__int_enable;
     reg  [31:0] bus__rdata;
-    reg  [3:0] bus__events;
-    reg  [3:0] bus__w1c;
+    reg  [4:0] bus__events;
+    reg  [4:0] bus__w1c;
     reg  bus__int_enable_we;
-    reg  [3:0] bus__int_enable_d;
+    reg  [4:0] bus__int_enable_d;
     reg  reset_mode_q__d;
     wire  reset_mode_q__q;
     reg  reset_mode_q__clock;
@@ -4411,6 +6018,9 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     reg  ack_interdep_q__d;
     wire  ack_interdep_q__q;
     reg  ack_interdep_q__clock;
+    reg  fi_ack_leak_q__d;
+    wire  fi_ack_leak_q__q;
+    reg  fi_ack_leak_q__clock;
     reg  [14:0] btr_q__d;
     wire  [14:0] btr_q__q;
     reg  btr_q__clock;
@@ -4448,7 +6058,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     reg  [31:0] rdata;
     reg  is_port;
     reg  illegal;
-    reg  [3:0] w1c;
+    reg  [4:0] w1c;
     reg  dec_evt;
     reg  [15:0] no_twin_new;
     
@@ -4485,6 +6095,11 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         .d(ack_interdep_q__d),
         .q(ack_interdep_q__q),
         .clock(ack_interdep_q__clock)
+    );
+    hub__regs__fi_ack_leak_q fi_ack_leak_q(
+        .d(fi_ack_leak_q__d),
+        .q(fi_ack_leak_q__q),
+        .clock(fi_ack_leak_q__clock)
     );
     hub__regs__btr_q btr_q(
         .d(btr_q__d),
@@ -4542,6 +6157,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         reset_mode_q__clock = clk;
         reset_mode_dq__clock = clk;
         ack_interdep_q__clock = clk;
+        fi_ack_leak_q__clock = clk;
         btr_q__clock = clk;
         sd_up_q__clock = clk;
         sd_sub_q__clock = clk;
@@ -4555,6 +6171,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         reset_mode_q__d = reset_mode_q__q;
         reset_mode_dq__d = reset_mode_dq__q;
         ack_interdep_q__d = ack_interdep_q__q;
+        fi_ack_leak_q__d = fi_ack_leak_q__q;
         btr_q__d = btr_q__q;
         sd_up_q__d = sd_up_q__q;
         sd_sub_q__d = sd_sub_q__q;
@@ -4578,7 +6195,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             rdata = id_val;
         end
         else if (wb_adr_i == a_ctrl) begin
-            rdata = (((reset_mode_q__q) & 32'hffffffff) << c_reset_mode) | (((ack_interdep_q__q) & 32'hffffffff) << c_ack_interdep);
+            rdata = (((reset_mode_q__q) & 32'hffffffff) << c_reset_mode) | (((fi_ack_leak_q__q) & 32'hffffffff) << c_fi_ack_leak) | (((ack_interdep_q__q) & 32'hffffffff) << c_ack_interdep);
         end
         else if (wb_adr_i == a_btr) begin
             rdata = ((btr_q__q) & 32'hffffffff);
@@ -4604,6 +6221,9 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         else if (wb_adr_i == a_stats) begin
             rdata = (((frames) & 32'hffffffff) << t_frames) | (((errors) & 32'hffffffff) << t_errors);
         end
+        else if (wb_adr_i == a_ack_unit) begin
+            rdata = (((blocks) & 32'hffffffff) << u_blocks) | (((u_window) & 32'hffffffff) << u_u_window);
+        end
         else if (is_port) begin
             rdata = port_rd;
         end
@@ -4627,9 +6247,9 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             end
         end
         illegal = 1'b0;
-        w1c = zero4;
+        w1c = zero5;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wdat[(32'h0)+:(4)];
+        bus__int_enable_d = wdat[(32'h0)+:(5)];
         if (wr) begin
             if (wb_adr_i == a_ctrl) begin
                 if (wdat[c_force] & wdat[c_recouple]) begin
@@ -4637,6 +6257,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
                 end
                 else begin
                     reset_mode_q__d = wdat[c_reset_mode];
+                    fi_ack_leak_q__d = wdat[c_fi_ack_leak];
                     if (reset_mode_q__q) begin
                         ack_interdep_q__d = wdat[c_ack_interdep];
                     end
@@ -4713,7 +6334,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wdat[(32'h0)+:(4)];
+                w1c = wdat[(32'h0)+:(5)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -4727,12 +6348,13 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             decoupled_q__d = 1'b0;
             dec_evt = 1'b0;
         end
-        bus__events = (((ev_iso) & 4'hf) << i_isolation) | (((ev_rest) & 4'hf) << i_restoration) | (((dec_evt) & 4'hf) << i_decoupled) | (((illegal) & 4'hf) << i_illegal);
+        bus__events = (((ev_iso) & 5'h1f) << i_isolation) | (((ev_rest) & 5'h1f) << i_restoration) | (((dec_evt) & 5'h1f) << i_decoupled) | (((illegal) & 5'h1f) << i_illegal) | (((ev_ack_unit) & 5'h1f) << i_ack_unit);
         bus__w1c = w1c;
         if (rst) begin
             reset_mode_q__d = 1'b1;
             reset_mode_dq__d = 1'b1;
             ack_interdep_q__d = 1'b1;
+            fi_ack_leak_q__d = 1'b0;
             btr_q__d = btr_reset;
             sd_up_q__d = sd_up_reset;
             sd_sub_q__d = sd_sub_reset;
@@ -4750,6 +6372,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         reset_mode = reset_mode_q__q;
         reset_mode_d = reset_mode_dq__q;
         ack_interdep = ack_interdep_q__q;
+        fi_ack_leak = fi_ack_leak_q__q;
         decoupled = decoupled_q__q;
         brp = btr_q__q[(b_brp)+:(6)];
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
@@ -4842,16 +6465,16 @@ module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr
     output reg  wb_ack_o;
     output reg  irq;
     output reg  wr;
-    output reg  [3:0] int_status;
-    output reg  [3:0] int_enable;
+    output reg  [4:0] int_status;
+    output reg  [4:0] int_enable;
     input wire  [31:0] rdata;
-    input wire  [3:0] events;
-    input wire  [3:0] w1c;
+    input wire  [4:0] events;
+    input wire  [4:0] w1c;
     input wire  int_enable_we;
-    input wire  [3:0] int_enable_d;
+    input wire  [4:0] int_enable_d;
     
     // Constant declarations
-    localparam  zero_w = 4'h0;
+    localparam  zero_w = 5'b0;
     localparam  zero32 = 32'h0;
     
     // Stub signals
@@ -4864,11 +6487,11 @@ module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr
     reg  irq_q__d;
     wire  irq_q__q;
     reg  irq_q__clock;
-    reg  [3:0] int_status_q__d;
-    wire  [3:0] int_status_q__q;
+    reg  [4:0] int_status_q__d;
+    wire  [4:0] int_status_q__q;
     reg  int_status_q__clock;
-    reg  [3:0] int_enable_q__d;
-    wire  [3:0] int_enable_q__q;
+    reg  [4:0] int_enable_q__d;
+    wire  [4:0] int_enable_q__q;
     reg  int_enable_q__clock;
     
     // Local signals
@@ -4978,8 +6601,8 @@ endmodule // hub__regs__bus__dat_q
 module hub__regs__bus__int_enable_q(d,q,clock);
     
     // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -4994,8 +6617,8 @@ endmodule // hub__regs__bus__int_enable_q
 module hub__regs__bus__int_status_q(d,q,clock);
     
     // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -5053,6 +6676,22 @@ module hub__regs__decoupled_q(d,q,clock);
     end
           
 endmodule // hub__regs__decoupled_q
+
+
+module hub__regs__fi_ack_leak_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__regs__fi_ack_leak_q
 
 
 module hub__regs__no_twin(d,q,clock);

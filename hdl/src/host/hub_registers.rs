@@ -28,6 +28,7 @@ pub const STATUS: u32 = 6;
 pub const INT_STATUS: u32 = 7;
 pub const INT_ENABLE: u32 = 8;
 pub const STATS: u32 = 9;
+pub const ACK_UNIT: u32 = 10;
 /// `PORT_p` is at word index `PORT0 + p` (p < N + M).
 pub const PORT0: u32 = 16;
 
@@ -80,6 +81,13 @@ const INT_FIELDS: &[Field] = &[
         "the hub decoupled (§7 or `CTRL.force_decouple`)",
     ),
     f("illegal", 3, 1, 0, "an illegal register access was refused"),
+    f(
+        "ack_unit",
+        4,
+        1,
+        0,
+        "the ACK unit turned a dominant downlink bit recessive (§4.1, once per ACK window)",
+    ),
 ];
 
 /// The register map, in index order (`PORT0` stands for the block `PORT_p`).
@@ -104,6 +112,7 @@ pub const REGISTERS: &[Register] = &[
             f("reset_mode", 0, 1, 1, "1 = reset mode: a transparent two-stage AND star"),
             cmd("force_decouple", 1, "decouple now"),
             cmd("recouple", 2, "recouple and enable every sublink; both commands in one write are refused"),
+            f("fi_ack_leak", 3, 1, 0, "fault injection (§4.1): the coupler ignores ACK interdependence and passes its own nodes' ACK; taken at every write"),
             cfg("ack_interdep", 8, 1, 1, "ACK interdependence (ReCANcentrate paper section 4)"),
         ],
     },
@@ -188,6 +197,16 @@ pub const REGISTERS: &[Register] = &[
         ],
     },
     Register {
+        name: "ACK_UNIT",
+        index: ACK_UNIT,
+        access: Access::Ro,
+        desc: "ACK unit (§4.1, the bus guardian of ACK interdependence)",
+        fields: &[
+            f("blocks", 0, 16, 0, "ACK windows in which the unit turned a dominant downlink bit recessive (saturating, cleared by rst only)"),
+            f("u_window", 16, 1, 0, "the unit's own tracker is in the ACK slot or delimiter"),
+        ],
+    },
+    Register {
         name: "PORT0",
         index: PORT0,
         access: Access::Ro,
@@ -211,7 +230,7 @@ pub static MAP: RegisterMap = RegisterMap {
     intro: "Behaviour: `cosim/src/model/hub_contract.md` §7, §8.\n\n\
         Wishbone B4 classic slave as the DRCC's (`docs/registers.md`): 32-bit words, \
         `wb_adr_i` is the word index, every access takes two clocks (request, ack), \
-        unmapped addresses (10..15 and from 16 + N + M) read 0. A write to a read-only or \
+        unmapped addresses (11..15 and from 16 + N + M) read 0. A write to a read-only or \
         unmapped address, a cfg field written outside reset mode, a CTRL write that changes \
         `ack_interdep` outside reset mode or carries both commands sets \
         `INT_STATUS.illegal`. `INT_STATUS`/`INT_ENABLE` are kept in reset mode.\n\n\

@@ -2,10 +2,14 @@
 //! section 4 "ACK interdependence"; hub contract §2, §3, §4): the two-flip-flop
 //! synchronizer and the judged copy `port_q` of every port, stage 1 (the hub's own
 //! contribution: AND of the enabled node ports), stage 2 (AND with the twin hub's
-//! contribution: the enabled incoming sublinks, unless decoupled) and the
-//! registered outputs `coupled_q`, `sublink_out` and `downlink` (the downlink
-//! carries only the twin's contribution inside the ACK window under ACK
-//! interdependence). Every register resets to 1 (recessive); an empty AND is 1.
+//! contribution: the enabled incoming sublinks, unless decoupled), the registered
+//! outputs `coupled_q` and `sublink_out`, and `dl_next`: the value the coupler
+//! would put on the downlinks (the right-hand side of §3's `downlink <=`: only the
+//! twin's contribution inside the ACK window under ACK interdependence). The
+//! downlink register itself belongs to the ACK unit (§4.1, `super::ack_unit`),
+//! which may only make that value recessive. Fault injection `CTRL.fi_ack_leak`
+//! (§4.1): the coupler ignores ACK interdependence (`dl_next = view` inside the
+//! window too). Every register resets to 1 (recessive); an empty AND is 1.
 
 use rust_hdl::prelude::*;
 
@@ -18,7 +22,6 @@ pub struct Coupler<const N: usize, const M: usize> {
     // pins (1 = recessive)
     pub uplink: Signal<In, Bits<N>>,
     pub sublink_in: Signal<In, Bits<M>>,
-    pub downlink: Signal<Out, Bits<N>>,
     pub sublink_out: Signal<Out, Bits<M>>,
     // control (registered values of the guards and the register block)
     pub node_en: Signal<In, Bits<N>>,
@@ -26,6 +29,11 @@ pub struct Coupler<const N: usize, const M: usize> {
     pub decoupled: Signal<In, Bit>,
     /// `ack_window & ack_interdep & !decoupled` (§3).
     pub ack_mask: Signal<In, Bit>,
+    /// `CTRL.fi_ack_leak` (§4.1 fault injection): ignore `ack_mask`.
+    pub fi_ack_leak: Signal<In, Bit>,
+    // to the ACK unit (§4.1): the next downlink value, combinational
+    /// `(ack_mask & !fi_ack_leak) ? twin : view`, 1 = recessive.
+    pub dl_next: Signal<Out, Bit>,
     // to the tracker and the guards
     pub coupled: Signal<Out, Bit>,
     pub node_q: Signal<Out, Bits<N>>,
@@ -39,7 +47,6 @@ pub struct Coupler<const N: usize, const M: usize> {
     sub_pq: DFF<Bits<M>>,
     // outputs (§3)
     coupled_q: DFF<Bit>,
-    down_q: DFF<Bits<N>>,
     sub_out_q: DFF<Bits<M>>,
     // stage 1 / stage 2
     own: Signal<Local, Bit>,
@@ -47,7 +54,6 @@ pub struct Coupler<const N: usize, const M: usize> {
     view: Signal<Local, Bit>,
     ones_n: Constant<Bits<N>>,
     ones_m: Constant<Bits<M>>,
-    zero_n: Constant<Bits<N>>,
     zero_m: Constant<Bits<M>>,
 }
 
@@ -58,12 +64,13 @@ impl<const N: usize, const M: usize> Default for Coupler<N, M> {
             rst: Default::default(),
             uplink: Default::default(),
             sublink_in: Default::default(),
-            downlink: Default::default(),
             sublink_out: Default::default(),
             node_en: Default::default(),
             sub_en: Default::default(),
             decoupled: Default::default(),
             ack_mask: Default::default(),
+            fi_ack_leak: Default::default(),
+            dl_next: Default::default(),
             coupled: Default::default(),
             node_q: Default::default(),
             sub_q: Default::default(),
@@ -74,14 +81,12 @@ impl<const N: usize, const M: usize> Default for Coupler<N, M> {
             sub_s: Default::default(),
             sub_pq: Default::default(),
             coupled_q: Default::default(),
-            down_q: Default::default(),
             sub_out_q: Default::default(),
             own: Default::default(),
             twin: Default::default(),
             view: Default::default(),
             ones_n: Constant::new(Bits::<N>::mask()),
             ones_m: Constant::new(Bits::<M>::mask()),
-            zero_n: Constant::new(0.into()),
             zero_m: Constant::new(0.into()),
         }
     }
@@ -91,8 +96,7 @@ impl<const N: usize, const M: usize> Logic for Coupler<N, M> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, node_s1, node_s, node_pq, sub_s1, sub_s, sub_pq, coupled_q, down_q,
-            sub_out_q
+            self, clk, node_s1, node_s, node_pq, sub_s1, sub_s, sub_pq, coupled_q, sub_out_q
         );
         // §2: s1 <= pin ; in_s <= s1 ; port_q <= in_s
         self.node_s1.d.next = self.uplink.val();
@@ -116,11 +120,12 @@ impl<const N: usize, const M: usize> Logic for Coupler<N, M> {
         } else {
             self.sub_out_q.d.next = self.zero_m.val();
         }
-        // §4: inside the ACK window only the twin's contribution reaches the nodes
-        if (self.ack_mask.val() & self.twin.val()) | (!self.ack_mask.val() & self.view.val()) {
-            self.down_q.d.next = self.ones_n.val();
+        // §4: inside the ACK window only the twin's contribution reaches the nodes;
+        // §4.1 fault injection: fi_ack_leak passes the view there too
+        if self.ack_mask.val() & !self.fi_ack_leak.val() {
+            self.dl_next.next = self.twin.val();
         } else {
-            self.down_q.d.next = self.zero_n.val();
+            self.dl_next.next = self.view.val();
         }
         if self.rst.val() {
             self.node_s1.d.next = self.ones_n.val();
@@ -130,11 +135,9 @@ impl<const N: usize, const M: usize> Logic for Coupler<N, M> {
             self.sub_s.d.next = self.ones_m.val();
             self.sub_pq.d.next = self.ones_m.val();
             self.coupled_q.d.next = true;
-            self.down_q.d.next = self.ones_n.val();
             self.sub_out_q.d.next = self.ones_m.val();
         }
         self.coupled.next = self.coupled_q.q.val();
-        self.downlink.next = self.down_q.q.val();
         self.sublink_out.next = self.sub_out_q.q.val();
         self.node_q.next = self.node_pq.q.val();
         self.sub_q.next = self.sub_pq.q.val();
@@ -177,20 +180,24 @@ mod tests {
     }
 
     #[test]
-    fn uplink_reaches_downlink_three_edges_later_and_isolated_ports_are_ignored() {
+    fn uplink_reaches_dl_next_two_edges_later_and_isolated_ports_are_ignored() {
+        // dl_next is combinational on the synchronizers: the ACK unit registers it
+        // (§4.1), so the downlink follows 3 edges after the uplink (§3)
         let mut u = fresh();
         u.uplink.next = 0xB.into(); // node 2 dominant
         for edge in 1..=3 {
             clock(&mut u);
-            let dominant = edge == 3;
-            assert_eq!(u.downlink.val().to_u64(), if dominant { 0 } else { 0xF });
-            assert_eq!(u.sublink_out.val().to_u64(), if dominant { 0 } else { 0x3 });
-            assert_eq!(u.coupled.val(), !dominant);
+            assert_eq!(u.dl_next.val(), edge < 2);
+            assert_eq!(
+                u.sublink_out.val().to_u64(),
+                if edge == 3 { 0 } else { 0x3 }
+            );
+            assert_eq!(u.coupled.val(), edge < 3);
         }
         // node 2 isolated: its dominant level no longer reaches anybody
         u.node_en.next = 0xB.into();
         clock(&mut u);
-        assert_eq!(u.downlink.val().to_u64(), 0xF);
+        assert!(u.dl_next.val());
         assert_eq!(u.sublink_out.val().to_u64(), 0x3);
     }
 
@@ -203,22 +210,27 @@ mod tests {
         }
         u.ack_mask.next = true;
         clock(&mut u);
-        assert_eq!(u.downlink.val().to_u64(), 0xF, "own ACK masked");
+        assert!(u.dl_next.val(), "own ACK masked");
         assert_eq!(
             u.sublink_out.val().to_u64(),
             0x0,
             "but forwarded to the twin"
         );
         assert!(!u.coupled.val(), "the tracker sees it");
+        // §4.1 fault injection: the malicious hub passes its own nodes' ACK
+        u.fi_ack_leak.next = true;
+        clock(&mut u);
+        assert!(!u.dl_next.val(), "fi_ack_leak: own ACK leaks");
+        u.fi_ack_leak.next = false;
         u.uplink.next = 0xF.into();
         u.sublink_in.next = 0x1.into(); // the twin's ACK on interlink 1
-        for _ in 0..3 {
+        for _ in 0..2 {
             clock(&mut u);
         }
-        assert_eq!(u.downlink.val().to_u64(), 0x0, "twin ACK passes");
+        assert!(!u.dl_next.val(), "twin ACK passes");
         u.decoupled.next = true;
         u.ack_mask.next = false;
         clock(&mut u);
-        assert_eq!(u.downlink.val().to_u64(), 0xF, "decoupled: own star only");
+        assert!(u.dl_next.val(), "decoupled: own star only");
     }
 }

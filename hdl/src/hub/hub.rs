@@ -5,7 +5,10 @@
 //! 0..N, then the incoming sublinks N..N+M).
 //!
 //! Blocks: the Wishbone register block with the decoupling state (§7, §8), the
-//! coupler (§2-§4), the channel's bit timing logic and configuration capture on
+//! coupler (§2-§4), the ACK unit (§4.1: the bus guardian that owns the downlink
+//! register; it gets the pins, the captured bit timing, `ack_interdep`, the
+//! enabled mask, `decoupled` and the coupler's `dl_next`, nothing else), the
+//! channel's bit timing logic and configuration capture on
 //! `coupled_q` (§5: `tx = 1`, `triple = 0`, `hard_sync_enable = (trk ==
 //! IDLE_WAIT)`, held in reset by `rst | reset_mode | reset_mode_q` exactly as the
 //! DRCC holds its channels), the frame tracker (§5) and one guard per port (§6).
@@ -18,6 +21,7 @@
 //! are arrays of blocks and the per-port wiring is written with rust-hdl `for`
 //! loops, which the Verilog generator unrolls.
 
+use super::ack_unit::AckUnit;
 use super::coupler::Coupler;
 use super::port_guard::PortGuard;
 use super::registers::HubRegs;
@@ -56,7 +60,8 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     pub wb_ack_o: Signal<Out, Bit>,
     /// Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     pub irq: Signal<Out, Bit>,
-    // node links: bit i belongs to node port i (1 = recessive, 0 = dominant)
+    // node links: bit i belongs to node port i (1 = recessive, 0 = dominant);
+    // the downlink register belongs to the ACK unit (§4.1)
     /// Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive; each is
     /// synchronized by two flip-flops.
     pub uplink: Signal<In, Bits<N>>,
@@ -89,6 +94,7 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     // blocks
     regs: HubRegs<N, M, P>,
     coupler: Coupler<N, M>,
+    ack_unit: AckUnit<N, M, P>,
     cfg_regs: ChannelConfig,
     btl: BitTimingLogic,
     tracker: FrameTracker,
@@ -101,6 +107,7 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     recouple: Signal<Local, Bit>,
     node_en: Signal<Local, Bits<N>>,
     sub_en: Signal<Local, Bits<M>>,
+    port_en: Signal<Local, Bits<P>>,
     port_rd: Signal<Local, Bits<32>>,
     ev_iso: Signal<Local, Bit>,
     ev_rest: Signal<Local, Bit>,
@@ -147,6 +154,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
             port_enabled: Default::default(),
             regs: Default::default(),
             coupler: Default::default(),
+            ack_unit: Default::default(),
             cfg_regs: Default::default(),
             btl: Default::default(),
             tracker: Default::default(),
@@ -158,6 +166,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
             recouple: Default::default(),
             node_en: Default::default(),
             sub_en: Default::default(),
+            port_en: Default::default(),
             port_rd: Default::default(),
             ev_iso: Default::default(),
             ev_rest: Default::default(),
@@ -268,6 +277,9 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
             self.ev_rest.next = self.ev_rest.val() | self.sub_guards[j].rest_evt.val();
         }
 
+        self.port_en.next = bit_cast::<P, N>(self.node_en.val())
+            | (bit_cast::<P, M>(self.sub_en.val()) << self.shift_n.val());
+
         // ---- register block (§7, §8) ----
         self.regs.clk.next = self.clk.val();
         self.regs.rst.next = self.rst.val();
@@ -280,13 +292,15 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.regs.any_sub_en.next = self.sub_en.val() != self.zero_m.val();
         self.regs.trk.next = self.tracker.trk.val();
         self.regs.ack_window.next = self.ack_win.val();
-        self.regs.port_en.next = bit_cast::<P, N>(self.node_en.val())
-            | (bit_cast::<P, M>(self.sub_en.val()) << self.shift_n.val());
+        self.regs.port_en.next = self.port_en.val();
         self.regs.frames.next = self.tracker.frames.val();
         self.regs.errors.next = self.tracker.errors.val();
         self.regs.port_rd.next = self.port_rd.val();
         self.regs.ev_iso.next = self.ev_iso.val();
         self.regs.ev_rest.next = self.ev_rest.val();
+        self.regs.blocks.next = self.ack_unit.blocks.val();
+        self.regs.u_window.next = self.ack_unit.u_window.val();
+        self.regs.ev_ack_unit.next = self.ack_unit.ev_block.val();
 
         // ---- coupler (§2-§4) ----
         self.coupler.clk.next = self.clk.val();
@@ -298,6 +312,23 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.coupler.decoupled.next = self.regs.decoupled.val();
         self.coupler.ack_mask.next =
             self.ack_win.val() & self.regs.ack_interdep.val() & !self.regs.decoupled.val();
+        self.coupler.fi_ack_leak.next = self.regs.fi_ack_leak.val();
+
+        // ---- ACK unit (§4.1): its own synchronizers, bus copy, BTL and tracker ----
+        self.ack_unit.clk.next = self.clk.val();
+        self.ack_unit.rst.next = self.rst.val();
+        self.ack_unit.trk_rst.next = self.guard_rst.val();
+        self.ack_unit.btl_rst.next = self.btl_rst.val();
+        self.ack_unit.uplink.next = self.uplink.val();
+        self.ack_unit.sublink_in.next = self.sublink_in.val();
+        self.ack_unit.cfg_brp_next.next = self.cfg_regs.brp_next.val();
+        self.ack_unit.cfg_tseg1_len.next = self.cfg_regs.tseg1_len.val();
+        self.ack_unit.cfg_tseg2_len.next = self.cfg_regs.tseg2_len.val();
+        self.ack_unit.cfg_sjw_len.next = self.cfg_regs.sjw_len.val();
+        self.ack_unit.ack_interdep.next = self.regs.ack_interdep.val();
+        self.ack_unit.enabled.next = self.port_en.val();
+        self.ack_unit.decoupled.next = self.regs.decoupled.val();
+        self.ack_unit.dl_next.next = self.coupler.dl_next.val();
 
         // ---- bit timing on coupled_q (§5) ----
         self.cfg_regs.clk.next = self.clk.val();
@@ -331,15 +362,14 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.wb_dat_o.next = self.regs.wb_dat_o.val();
         self.wb_ack_o.next = self.regs.wb_ack_o.val();
         self.irq.next = self.regs.irq.val();
-        self.downlink.next = self.coupler.downlink.val();
+        self.downlink.next = self.ack_unit.downlink.val();
         self.sublink_out.next = self.coupler.sublink_out.val();
         self.coupled.next = self.coupler.coupled.val();
         self.sample_point.next = self.btl.sample_point.val();
         self.trk_state.next = self.tracker.trk.val();
         self.ack_window.next = self.ack_win.val();
         self.decoupled.next = self.regs.decoupled.val();
-        self.port_enabled.next = bit_cast::<P, N>(self.node_en.val())
-            | (bit_cast::<P, M>(self.sub_en.val()) << self.shift_n.val());
+        self.port_enabled.next = self.port_en.val();
     }
 }
 

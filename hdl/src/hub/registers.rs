@@ -15,6 +15,10 @@
 //!   the write and in the written value. The sublink guards get the `recouple`
 //!   pulse from the top (decoded there so that no always block both reads the
 //!   guard events and drives the command: no combinational cycle for Verilator).
+//! - `CTRL.fi_ack_leak` (§4.1 fault injection) is a runtime bit taken at every
+//!   CTRL write that is taken at all (like `reset_mode`); it goes to the coupler.
+//! - `ACK_UNIT` and `INT_STATUS.ack_unit` show the ACK unit (§4.1,
+//!   `super::ack_unit`): its `blocks` counter, its window and its event.
 //! - §7: `no_twin` counts SAMPLE edges without an enabled sublink; it decouples
 //!   after `decouple_bits` of them. A command wins over that at the same edge.
 //! - Reset mode (`reset_mode` before the edge) holds `no_twin` and `decoupled` at
@@ -82,11 +86,17 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     pub errors: Signal<In, Bits<16>>,
     /// PORT_p word of the addressed port (0 when the address is no port).
     pub port_rd: Signal<In, Bits<32>>,
+    /// The ACK unit's `blocks` counter (`ACK_UNIT.blocks`).
+    pub blocks: Signal<In, Bits<16>>,
+    /// The ACK unit's window (`ACK_UNIT.u_window`).
+    pub u_window: Signal<In, Bit>,
     // ---- events in ----
     /// A port was isolated.
     pub ev_iso: Signal<In, Bit>,
     /// A port was restored.
     pub ev_rest: Signal<In, Bit>,
+    /// The ACK unit intervened (first time in an ACK window).
+    pub ev_ack_unit: Signal<In, Bit>,
     // ---- configuration and state out ----
     /// `CTRL.reset_mode`.
     pub reset_mode: Signal<Out, Bit>,
@@ -94,6 +104,8 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     pub reset_mode_d: Signal<Out, Bit>,
     /// `CTRL.ack_interdep`.
     pub ack_interdep: Signal<Out, Bit>,
+    /// `CTRL.fi_ack_leak` (§4.1 fault injection).
+    pub fi_ack_leak: Signal<Out, Bit>,
     /// The hub is decoupled (§7).
     pub decoupled: Signal<Out, Bit>,
     /// `BTR.brp`.
@@ -117,11 +129,12 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     /// `RESTORE_CFG.restore_bits`.
     pub restore_bits: Signal<Out, Bits<16>>,
     // ---- blocks ----
-    bus: WbSlave<4>,
+    bus: WbSlave<5>,
     // ---- registers ----
     reset_mode_q: DFF<Bit>,
     reset_mode_dq: DFF<Bit>,
     ack_interdep_q: DFF<Bit>,
+    fi_ack_leak_q: DFF<Bit>,
     btr_q: DFF<Bits<15>>,
     sd_up_q: DFF<Bits<6>>,
     sd_sub_q: DFF<Bits<6>>,
@@ -138,7 +151,7 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     rdata: Signal<Local, Bits<32>>,
     is_port: Signal<Local, Bit>,
     illegal: Signal<Local, Bit>,
-    w1c: Signal<Local, Bits<4>>,
+    w1c: Signal<Local, Bits<5>>,
     dec_evt: Signal<Local, Bit>,
     no_twin_new: Signal<Local, Bits<16>>,
     // ---- word indices (from the table) ----
@@ -152,6 +165,7 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     a_int_status: Constant<Bits<6>>,
     a_int_enable: Constant<Bits<6>>,
     a_stats: Constant<Bits<6>>,
+    a_ack_unit: Constant<Bits<6>>,
     a_port0: Constant<Bits<6>>,
     a_port_end: Constant<Bits<6>>,
     // ---- field positions (from the table; BTR's index the 15-bit register) ----
@@ -159,6 +173,7 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     c_force: Constant<Bits<5>>,
     c_recouple: Constant<Bits<5>>,
     c_ack_interdep: Constant<Bits<5>>,
+    c_fi_ack_leak: Constant<Bits<5>>,
     b_brp: Constant<Bits<4>>,
     b_tseg1: Constant<Bits<4>>,
     b_tseg2: Constant<Bits<4>>,
@@ -179,8 +194,11 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     i_restoration: Constant<Bits<5>>,
     i_decoupled: Constant<Bits<5>>,
     i_illegal: Constant<Bits<5>>,
+    i_ack_unit: Constant<Bits<5>>,
     t_frames: Constant<Bits<5>>,
     t_errors: Constant<Bits<5>>,
+    u_blocks: Constant<Bits<5>>,
+    u_u_window: Constant<Bits<5>>,
     // ---- reset values and clamps ----
     id_val: Constant<Bits<32>>,
     btr_reset: Constant<Bits<15>>,
@@ -193,7 +211,7 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     bf_min: Constant<Bits<8>>,
     restore_reset: Constant<Bits<16>>,
     decouple_reset: Constant<Bits<16>>,
-    zero4: Constant<Bits<4>>,
+    zero5: Constant<Bits<5>>,
     zero16: Constant<Bits<16>>,
     one16: Constant<Bits<16>>,
     max16: Constant<Bits<16>>,
@@ -224,6 +242,10 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             "CTRL resets into reset mode"
         );
         assert_eq!(ctrl.field("ack_interdep").unwrap().reset, 1);
+        assert_eq!(ctrl.field("fi_ack_leak").unwrap().reset, 0);
+        // INT_STATUS / INT_ENABLE are the 5 bits of the shared slave
+        assert_eq!(map::register("INT_STATUS").unwrap().defined(), 0x1F);
+        assert_eq!(map::register("INT_ENABLE").unwrap().defined(), 0x1F);
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -243,11 +265,15 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             frames: Default::default(),
             errors: Default::default(),
             port_rd: Default::default(),
+            blocks: Default::default(),
+            u_window: Default::default(),
             ev_iso: Default::default(),
             ev_rest: Default::default(),
+            ev_ack_unit: Default::default(),
             reset_mode: Default::default(),
             reset_mode_d: Default::default(),
             ack_interdep: Default::default(),
+            fi_ack_leak: Default::default(),
             decoupled: Default::default(),
             brp: Default::default(),
             tseg1: Default::default(),
@@ -263,6 +289,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             reset_mode_q: Default::default(),
             reset_mode_dq: Default::default(),
             ack_interdep_q: Default::default(),
+            fi_ack_leak_q: Default::default(),
             btr_q: Default::default(),
             sd_up_q: Default::default(),
             sd_sub_q: Default::default(),
@@ -291,12 +318,14 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             a_int_status: adr(map::INT_STATUS),
             a_int_enable: adr(map::INT_ENABLE),
             a_stats: adr(map::STATS),
+            a_ack_unit: adr(map::ACK_UNIT),
             a_port0: adr(map::PORT0),
             a_port_end: adr(map::PORT0 + P as u32),
             c_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
             c_force: lsb(&MAP, "CTRL", "force_decouple", 1),
             c_recouple: lsb(&MAP, "CTRL", "recouple", 1),
             c_ack_interdep: lsb(&MAP, "CTRL", "ack_interdep", 1),
+            c_fi_ack_leak: lsb(&MAP, "CTRL", "fi_ack_leak", 1),
             b_brp: lsb(&MAP, "BTR", "brp", 6),
             b_tseg1: lsb(&MAP, "BTR", "tseg1", 4),
             b_tseg2: lsb(&MAP, "BTR", "tseg2", 3),
@@ -317,8 +346,11 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             i_restoration: lsb(&MAP, "INT_STATUS", "restoration", 1),
             i_decoupled: lsb(&MAP, "INT_STATUS", "decoupled", 1),
             i_illegal: lsb(&MAP, "INT_STATUS", "illegal", 1),
+            i_ack_unit: lsb(&MAP, "INT_STATUS", "ack_unit", 1),
             t_frames: lsb(&MAP, "STATS", "frames", 16),
             t_errors: lsb(&MAP, "STATS", "errors", 16),
+            u_blocks: lsb(&MAP, "ACK_UNIT", "blocks", 16),
+            u_u_window: lsb(&MAP, "ACK_UNIT", "u_window", 1),
             id_val: Constant::new((map::id_value(N as u32, M as u32) as u64).into()),
             btr_reset: Constant::new((btr.reset_value() as u64).into()),
             sd_up_reset: reset("GUARD_CFG", "sd_run_up"),
@@ -330,7 +362,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             bf_min: Constant::new((BF_MIN as u64).into()),
             restore_reset: reset("RESTORE_CFG", "restore_bits"),
             decouple_reset: reset("RESTORE_CFG", "decouple_bits"),
-            zero4: Constant::new(0.into()),
+            zero5: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             one16: Constant::new(1.into()),
             max16: Constant::new(0xFFFF.into()),
@@ -348,6 +380,7 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
             reset_mode_q,
             reset_mode_dq,
             ack_interdep_q,
+            fi_ack_leak_q,
             btr_q,
             sd_up_q,
             sd_sub_q,
@@ -378,6 +411,8 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
             // the commands read 0
             self.rdata.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
                 << self.c_reset_mode.val())
+                | (bit_cast::<32, 1>(self.fi_ack_leak_q.q.val().into())
+                    << self.c_fi_ack_leak.val())
                 | (bit_cast::<32, 1>(self.ack_interdep_q.q.val().into())
                     << self.c_ack_interdep.val());
         } else if self.wb_adr_i.val() == self.a_btr.val() {
@@ -400,12 +435,15 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                 | (bit_cast::<32, 2>(self.trk.val()) << self.s_trk.val())
                 | (bit_cast::<32, P>(self.port_en.val()) << self.s_enabled.val());
         } else if self.wb_adr_i.val() == self.a_int_status.val() {
-            self.rdata.next = bit_cast::<32, 4>(self.bus.int_status.val());
+            self.rdata.next = bit_cast::<32, 5>(self.bus.int_status.val());
         } else if self.wb_adr_i.val() == self.a_int_enable.val() {
-            self.rdata.next = bit_cast::<32, 4>(self.bus.int_enable.val());
+            self.rdata.next = bit_cast::<32, 5>(self.bus.int_enable.val());
         } else if self.wb_adr_i.val() == self.a_stats.val() {
             self.rdata.next = (bit_cast::<32, 16>(self.frames.val()) << self.t_frames.val())
                 | (bit_cast::<32, 16>(self.errors.val()) << self.t_errors.val());
+        } else if self.wb_adr_i.val() == self.a_ack_unit.val() {
+            self.rdata.next = (bit_cast::<32, 16>(self.blocks.val()) << self.u_blocks.val())
+                | (bit_cast::<32, 1>(self.u_window.val().into()) << self.u_u_window.val());
         } else if self.is_port.val() {
             self.rdata.next = self.port_rd.val();
         }
@@ -434,9 +472,9 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
 
         // ---- writes (§8) ----
         self.illegal.next = false;
-        self.w1c.next = self.zero4.val();
+        self.w1c.next = self.zero5.val();
         self.bus.int_enable_we.next = false;
-        self.bus.int_enable_d.next = self.wdat.val().get_bits::<4>(0);
+        self.bus.int_enable_d.next = self.wdat.val().get_bits::<5>(0);
         if self.wr.val() {
             if self.wb_adr_i.val() == self.a_ctrl.val() {
                 if self.wdat.val().get_bit(self.c_force.val().index())
@@ -447,6 +485,8 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                 } else {
                     self.reset_mode_q.d.next =
                         self.wdat.val().get_bit(self.c_reset_mode.val().index());
+                    self.fi_ack_leak_q.d.next =
+                        self.wdat.val().get_bit(self.c_fi_ack_leak.val().index());
                     if self.reset_mode_q.q.val() {
                         self.ack_interdep_q.d.next =
                             self.wdat.val().get_bit(self.c_ack_interdep.val().index());
@@ -528,7 +568,7 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_int_status.val() {
-                self.w1c.next = self.wdat.val().get_bits::<4>(0);
+                self.w1c.next = self.wdat.val().get_bits::<5>(0);
             } else if self.wb_adr_i.val() == self.a_int_enable.val() {
                 self.bus.int_enable_we.next = true;
             } else {
@@ -545,17 +585,19 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         }
 
         // ---- interrupts ----
-        self.bus.events.next = (bit_cast::<4, 1>(self.ev_iso.val().into())
+        self.bus.events.next = (bit_cast::<5, 1>(self.ev_iso.val().into())
             << self.i_isolation.val())
-            | (bit_cast::<4, 1>(self.ev_rest.val().into()) << self.i_restoration.val())
-            | (bit_cast::<4, 1>(self.dec_evt.val().into()) << self.i_decoupled.val())
-            | (bit_cast::<4, 1>(self.illegal.val().into()) << self.i_illegal.val());
+            | (bit_cast::<5, 1>(self.ev_rest.val().into()) << self.i_restoration.val())
+            | (bit_cast::<5, 1>(self.dec_evt.val().into()) << self.i_decoupled.val())
+            | (bit_cast::<5, 1>(self.illegal.val().into()) << self.i_illegal.val())
+            | (bit_cast::<5, 1>(self.ev_ack_unit.val().into()) << self.i_ack_unit.val());
         self.bus.w1c.next = self.w1c.val();
 
         if self.rst.val() {
             self.reset_mode_q.d.next = true;
             self.reset_mode_dq.d.next = true;
             self.ack_interdep_q.d.next = true;
+            self.fi_ack_leak_q.d.next = false;
             self.btr_q.d.next = self.btr_reset.val();
             self.sd_up_q.d.next = self.sd_up_reset.val();
             self.sd_sub_q.d.next = self.sd_sub_reset.val();
@@ -575,6 +617,7 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         self.reset_mode.next = self.reset_mode_q.q.val();
         self.reset_mode_d.next = self.reset_mode_dq.q.val();
         self.ack_interdep.next = self.ack_interdep_q.q.val();
+        self.fi_ack_leak.next = self.fi_ack_leak_q.q.val();
         self.decoupled.next = self.decoupled_q.q.val();
         self.brp.next = self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index());
         self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());

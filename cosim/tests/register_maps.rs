@@ -265,7 +265,7 @@ fn a_moved_field_fails_the_check() {
     let ctrl = registers::MAP.register("CTRL").unwrap();
     let mut fields = ctrl.fields.to_vec();
     let f = fields.iter_mut().find(|f| f.name == "dual_tx").unwrap();
-    f.lsb = 5; // a reserved bit of the contract
+    f.lsb = 6; // a reserved bit of the contract
     let fields: &'static [Field] = fields.leak();
     let regs: Vec<Register> = registers::MAP
         .registers

@@ -279,3 +279,72 @@ fn all_interlinks_lost_stops_traffic_until_the_hubs_decouple() {
         "no star carried traffic after decoupling"
     );
 }
+
+/// Receptions at any host between the moment ACK interdependence must have blocked
+/// every star (130 bit times after the onset: one frame may be under way) and the
+/// first decoupling.
+fn receptions_while_blocked(r: &StarReport) -> usize {
+    let blocked_from = r.fault_start + 130 * CLOCKS_PER_BIT;
+    let first = r
+        .decoupled_at
+        .iter()
+        .flatten()
+        .min()
+        .copied()
+        .unwrap_or(r.cycles);
+    r.received_at
+        .iter()
+        .flatten()
+        .filter(|&&c| (blocked_from..first).contains(&c))
+        .count()
+}
+
+#[test]
+fn the_ack_units_hold_two_hubs_that_leak_their_own_ack() {
+    // Paper section 4: ACK interdependence assumes no hub passes its own nodes'
+    // ACK; the ACK unit (hub contract §4.1) enforces it. Both hubs are made to leak
+    // (`CTRL.fi_ack_leak`) and every interlink is lost.
+    let honest = StarScenario::standard(StarFault::AllInterlinksLost);
+    let mut leaky = honest;
+    leaky.hub.fi_ack_leak = true;
+
+    // Without the units (the model only: the RTL always has them), each star
+    // acknowledges its own frames and carries traffic while the hubs are still
+    // coupled: the two domains the mechanism exists to prevent.
+    let mut unguarded = leaky;
+    unguarded.ack_units = false;
+    let r = run_star(&unguarded, EngineKind::Model, None).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        receptions_while_blocked(&r) > 0,
+        "a leaking hub without its ACK unit should let its star carry traffic"
+    );
+
+    // With them, the leaking hubs behave exactly as honest ones, clock by clock on
+    // the model and the Verilated RTL, and each unit counts its interventions.
+    let (_, base) = run(StarFault::AllInterlinksLost);
+    let r = run_star(&leaky, EngineKind::Model, cosim_engine()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(receptions_while_blocked(&r), 0);
+    assert_eq!(
+        r.received_at, base.received_at,
+        "the same deliveries at the same clocks"
+    );
+    assert_eq!(r.decoupled_at, base.decoupled_at);
+    assert_eq!(
+        r.events, base.events,
+        "the same isolations and restorations"
+    );
+    for h in 0..2 {
+        assert_eq!(
+            base.hub_ack_unit[h] & 0xFFFF,
+            0,
+            "honest hub {}: no intervention",
+            h + 1
+        );
+        assert!(
+            r.hub_ack_unit[h] & 0xFFFF > 0,
+            "leaking hub {}: ACK_UNIT = {:#x}",
+            h + 1,
+            r.hub_ack_unit[h]
+        );
+    }
+}

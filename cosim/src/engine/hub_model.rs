@@ -20,6 +20,14 @@ impl HubModelEngine {
         })
     }
 
+    /// The same without the ACK unit (hub contract §4.1): not a configuration of
+    /// the RTL, which always has it; it shows what a faulty hub does unguarded.
+    pub fn without_ack_unit(n: usize, m: usize) -> Result<Self, String> {
+        Ok(HubModelEngine {
+            model: HubModel::new(n, m)?.without_ack_unit(),
+        })
+    }
+
     /// The model inside (guard and tracker state for tests).
     pub fn model(&self) -> &HubModel {
         &self.model

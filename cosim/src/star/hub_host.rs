@@ -28,6 +28,7 @@ pub mod hub_reg {
     pub const INT_STATUS: u8 = map::INT_STATUS as u8;
     pub const INT_ENABLE: u8 = map::INT_ENABLE as u8;
     pub const STATS: u8 = map::STATS as u8;
+    pub const ACK_UNIT: u8 = map::ACK_UNIT as u8;
     /// `PORT_p` is at `PORT0 + p`.
     pub const PORT0: u8 = map::PORT0 as u8;
     /// `CTRL` bits.
@@ -62,6 +63,9 @@ pub struct HubConfig {
     /// Bit times without any enabled sublink before definitive decoupling (0 = never).
     pub decouple_bits: u16,
     pub int_enable: u32,
+    /// Fault injection (`CTRL.fi_ack_leak`, hub contract §4.1): the coupler passes
+    /// its own nodes' ACK while coupled, and the ACK unit must stop it.
+    pub fi_ack_leak: bool,
 }
 
 impl Default for HubConfig {
@@ -79,6 +83,7 @@ impl Default for HubConfig {
             decouple_bits: 4096,
             // every interrupt
             int_enable: MAP.register("INT_ENABLE").map_or(0, |r| r.defined()),
+            fi_ack_leak: false,
         }
     }
 }
@@ -88,6 +93,7 @@ impl HubConfig {
     pub fn ctrl(&self, reset_mode: bool) -> u32 {
         put("CTRL", "reset_mode", reset_mode as u32)
             | put("CTRL", "ack_interdep", self.ack_interdep as u32)
+            | put("CTRL", "fi_ack_leak", self.fi_ack_leak as u32)
     }
 
     /// `GUARD_CFG` value.

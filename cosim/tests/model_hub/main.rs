@@ -18,6 +18,7 @@ use drcc_cosim::engine::hub::{HubInputs, HubOutputs};
 use drcc_cosim::model::crc::crc15;
 use drcc_cosim::model::hub::HubModel;
 
+mod ack_unit;
 mod coupling;
 mod decoupling;
 mod guards;
@@ -37,17 +38,20 @@ const STATUS: u8 = 6;
 const INT_STATUS: u8 = 7;
 const INT_ENABLE: u8 = 8;
 const STATS: u8 = 9;
+const ACK_UNIT: u8 = 10;
 const PORT0: u8 = 16;
 
 const RESET_MODE: u32 = 1;
 const FORCE_DECOUPLE: u32 = 1 << 1;
 const RECOUPLE: u32 = 1 << 2;
+const FI_ACK_LEAK: u32 = 1 << 3;
 const ACK_INTERDEP: u32 = 1 << 8;
 
 const INT_ISOLATION: u32 = 1;
 const INT_RESTORATION: u32 = 2;
 const INT_DECOUPLED: u32 = 4;
 const INT_ILLEGAL: u32 = 8;
+const INT_ACK_UNIT: u32 = 16;
 
 // Tracker states.
 const IDLE_WAIT: u8 = 0;
@@ -163,6 +167,22 @@ impl Bench {
                 ..b.pin_inputs()
             });
         }
+        b
+    }
+
+    /// [`Bench::running`] on a given model (e.g. one without its ACK unit), no
+    /// configuration, ACK interdependence on.
+    fn running_hub(hub: HubModel, n: usize, m: usize) -> Self {
+        let mut b = Bench::new(n, m);
+        b.hub = hub;
+        for _ in 0..2 {
+            b.step_with(HubInputs {
+                rst: true,
+                ..b.pin_inputs()
+            });
+        }
+        b.write(CTRL, ACK_INTERDEP);
+        b.idle_bits(14);
         b
     }
 

@@ -62,6 +62,9 @@ pub struct StarScenario {
     pub fault_start_bits: u64,
     pub fault_bits: u64,
     pub hub: HubConfig,
+    /// The hubs have their ACK units (hub contract §4.1). Always, in the RTL; a
+    /// model-only run without them shows what the units prevent.
+    pub ack_units: bool,
 }
 
 impl StarScenario {
@@ -86,6 +89,7 @@ impl StarScenario {
                 btr: btr(STAR_BRP, STAR_TSEG1, STAR_TSEG2, STAR_SJW, false, 0),
                 ..HubConfig::default()
             },
+            ack_units: true,
         }
     }
 
@@ -172,10 +176,18 @@ pub fn build_star(s: &StarScenario, kind: EngineKind) -> Result<StarSystem, Stri
     let engines = (0..s.nodes)
         .map(|_| drcc_engine(node_kind))
         .collect::<Result<Vec<Box<dyn DrccEngine>>, _>>()?;
-    let hubs = [
-        hub_engine(kind, HUB_N, HUB_M)?,
-        hub_engine(kind, HUB_N, HUB_M)?,
-    ];
+    let hub = || match (s.ack_units, kind) {
+        (true, _) => hub_engine(kind, HUB_N, HUB_M),
+        (false, EngineKind::Model) => {
+            drcc_cosim::engine::hub_model::HubModelEngine::without_ack_unit(HUB_N, HUB_M)
+                .map(|e| Box::new(e) as Box<dyn HubEngine>)
+        }
+        (false, k) => Err(format!(
+            "a hub without its ACK unit exists only in the model (asked for {})",
+            k.name()
+        )),
+    };
+    let hubs = [hub()?, hub()?];
     let mut sys = StarSystem::new(engines, vec![s.host_config(); s.nodes], hubs, [s.hub; 2])?;
     let start = s.fault_start_bits * CLOCKS_PER_BIT;
     for (link, kind) in s.fault.links() {

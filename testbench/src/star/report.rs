@@ -45,6 +45,8 @@ pub struct StarReport {
     /// Per hub: `STATS` and every `PORT_p` register at the end.
     pub hub_stats: [u32; 2],
     pub hub_ports: [Vec<u32>; 2],
+    /// Per hub: `ACK_UNIT` at the end (hub contract §4.1).
+    pub hub_ack_unit: [u32; 2],
 }
 
 impl StarReport {

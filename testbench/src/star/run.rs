@@ -33,6 +33,7 @@ pub fn run_star(
             for p in 0..HUB_N + HUB_M {
                 hub.host.read(hub_reg::PORT0 + p as u8);
             }
+            hub.host.read(hub_reg::ACK_UNIT);
         }
     };
     // After definitive decoupling only the hubs' host can re-couple them (the paper's
@@ -42,10 +43,11 @@ pub fn run_star(
         .then_some(report.fault_end + RECOUPLE_AFTER_BITS * CLOCKS_PER_BIT);
     let recouple = |sys: &mut StarSystem| {
         for h in 0..2 {
-            sys.hub_mut(h).host.write(
-                hub_reg::CTRL,
-                hub_reg::CTRL_ACK_INTERDEP | hub_reg::CTRL_RECOUPLE,
-            );
+            // The configured CTRL (ACK interdependence, fault injection) with the
+            // command: every CTRL write takes `fi_ack_leak` (hub contract §8).
+            sys.hub_mut(h)
+                .host
+                .write(hub_reg::CTRL, s.hub.ctrl(false) | hub_reg::CTRL_RECOUPLE);
         }
     };
     let mut prev_enabled = [0u16; 2];
@@ -101,7 +103,7 @@ pub fn run_star(
         cycle += 1;
         let done = cycle > total
             && main.nodes().iter().all(|n| !n.host.reads.is_empty())
-            && (0..2).all(|h| main.hub(h).host.reads.len() > HUB_N + HUB_M);
+            && (0..2).all(|h| main.hub(h).host.reads.len() > HUB_N + HUB_M + 1);
         if done {
             break;
         }
@@ -163,6 +165,12 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
     for h in 0..2 {
         let reads = &sys.hub(h).host.reads;
         r.hub_stats[h] = reads.first().map(|x| x.value).unwrap_or(0);
-        r.hub_ports[h] = reads.iter().skip(1).map(|x| x.value).collect();
+        r.hub_ports[h] = reads
+            .iter()
+            .skip(1)
+            .take(HUB_N + HUB_M)
+            .map(|x| x.value)
+            .collect();
+        r.hub_ack_unit[h] = reads.get(1 + HUB_N + HUB_M).map_or(0, |x| x.value);
     }
 }

@@ -11,8 +11,10 @@
 //! twin = AND over sublink ports of (in_s | !enabled)     (empty AND = 1)
 //! view = decoupled ? own : own & twin
 //! coupled_q <= view ; sublink_out <= own
-//! downlink  <= (ack_window & ack_interdep & !decoupled) ? twin : view
+//! dl_next    = (ack_window & ack_interdep & !decoupled & !fi_ack_leak) ? twin : view
 //! ```
+//!
+//! `dl_next` goes to the ACK unit (§4.1), which owns the downlink register.
 
 /// Synchronizer stages, the guards' port register and the coupling outputs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -28,8 +30,6 @@ pub struct Coupling {
     pub coupled_q: bool,
     /// The value on every outgoing sublink (this hub's own contribution).
     pub sublink_out: bool,
-    /// The value on every downlink.
-    pub downlink: bool,
 }
 
 impl Default for Coupling {
@@ -47,14 +47,13 @@ impl Coupling {
             port_q: u16::MAX,
             coupled_q: true,
             sublink_out: true,
-            downlink: true,
         }
     }
 
     /// One edge. `pins` = the port inputs (bit p = port p), `enabled` the enabled
-    /// mask, `decoupled` and `mask_ack` (`ack_window & ack_interdep & !decoupled`)
-    /// the registers before the edge; `node_mask` / `sub_mask` select the node and
-    /// sublink ports.
+    /// mask, `decoupled` and `mask_ack` (`ack_window & ack_interdep & !decoupled &
+    /// !fi_ack_leak`) the registers before the edge; `node_mask` / `sub_mask`
+    /// select the node and sublink ports. Returns `dl_next`.
     #[inline]
     pub fn edge(
         &mut self,
@@ -64,16 +63,20 @@ impl Coupling {
         mask_ack: bool,
         node_mask: u16,
         sub_mask: u16,
-    ) {
+    ) -> bool {
         let contrib = self.in_s | !enabled;
         let own = contrib & node_mask == node_mask;
         let twin = contrib & sub_mask == sub_mask;
         let view = if decoupled { own } else { own & twin };
         self.coupled_q = view;
         self.sublink_out = own;
-        self.downlink = if mask_ack { twin } else { view };
         self.port_q = self.in_s;
         self.in_s = self.s1;
         self.s1 = pins;
+        if mask_ack {
+            twin
+        } else {
+            view
+        }
     }
 }

@@ -61,6 +61,7 @@
 //!     and such identifiers outrank every other frame but the hubs' own.
 #![doc = include_str!("../hub_contract.md")]
 
+pub mod ack_unit;
 pub mod coupling;
 pub mod decouple;
 pub mod guard;
@@ -70,6 +71,7 @@ pub mod tracker;
 use crate::engine::hub::{HubInputs, HubOutputs, HubProbes, MAX_INTERLINKS, MAX_NODE_PORTS};
 use crate::engine::BitTiming;
 use crate::model::btl::{Btl, BtlEvent, Timing};
+use ack_unit::{AckUnit, AckUnitInputs};
 use coupling::Coupling;
 use decouple::Decoupler;
 use guard::{Limits, PortGuard};
@@ -112,6 +114,11 @@ pub struct HubModel {
     /// Bit p = `ports[p].enabled` (kept in step with the guards).
     enabled: u16,
     dec: Decoupler,
+    /// The ACK unit (§4.1); owns the downlink register.
+    ack: AckUnit,
+    /// The unit is fitted (always, in the RTL); a model without it shows what the
+    /// unit prevents.
+    ack_unit_fitted: bool,
 }
 
 impl HubModel {
@@ -140,9 +147,19 @@ impl HubModel {
             ports: [PortGuard::new(); MAX_PORTS],
             enabled: 0,
             dec: Decoupler::default(),
+            ack: AckUnit::new(),
+            ack_unit_fitted: true,
         };
         hub.reset();
         Ok(hub)
+    }
+
+    /// The same hub without its ACK unit: the downlinks carry the coupler's value
+    /// as it is. Not a configuration of the RTL (the unit is always fitted); tests
+    /// use it to show what a faulty hub does when nothing guards it.
+    pub fn without_ack_unit(mut self) -> Self {
+        self.ack_unit_fitted = false;
+        self
     }
 
     /// Node ports N and interlinks M.
@@ -154,6 +171,7 @@ impl HubModel {
     fn reset(&mut self) {
         self.regs = Regs::reset();
         self.cpl = Coupling::new();
+        self.ack = AckUnit::new();
         self.btl = Btl::new();
         self.timing = timing_of(btr::RESET);
         self.sample_point = false;
@@ -196,6 +214,7 @@ impl HubModel {
             idx::INT_STATUS => r.int_status,
             idx::INT_ENABLE => r.int_enable,
             idx::STATS => self.trk.frames as u32 | (self.trk.errors as u32) << 16,
+            idx::ACK_UNIT => self.ack.blocks as u32 | (self.ack.window() as u32) << 16,
             a if a >= idx::PORT0 && ((a - idx::PORT0) as usize) < self.n + self.m => {
                 self.ports[(a - idx::PORT0) as usize].reg()
             }
@@ -222,6 +241,7 @@ impl HubModel {
         let reset_mode = self.regs.reset_mode;
         let btl_reset = reset_mode || self.regs.reset_mode_q;
         let ack_interdep = self.regs.ack_interdep;
+        let fi_ack_leak = self.regs.fi_ack_leak;
         let btr_before = self.regs.btr;
         let int_before = self.regs.int_status;
         let irq = int_before & self.regs.int_enable != 0;
@@ -241,16 +261,40 @@ impl HubModel {
         let b = self.cpl.coupled_q;
         let pq = self.cpl.port_q;
         let decoupled = self.dec.decoupled;
-        let mask_ack = self.trk.ack_window() && ack_interdep && !decoupled;
+        let mask_ack = self.trk.ack_window() && ack_interdep && !decoupled && !fi_ack_leak;
         let pins = (i.uplink & self.node_mask) | ((i.sublink_in as u16) << self.n);
-        self.cpl.edge(
+        let enabled = self.enabled;
+        let dl_next = self.cpl.edge(
             pins,
-            self.enabled,
+            enabled,
             decoupled,
             mask_ack,
             self.node_mask,
             self.sub_mask,
         );
+
+        // The ACK unit (§4.1), on the hub registers before the edge.
+        if self.ack_unit_fitted {
+            let first = self.ack.edge(
+                &AckUnitInputs {
+                    pins,
+                    enabled,
+                    decoupled,
+                    ack_interdep,
+                    dl_next,
+                    reset_mode,
+                    btl_reset,
+                },
+                &self.timing,
+                self.node_mask,
+                self.sub_mask,
+            );
+            if first {
+                ints |= int::ACK_UNIT;
+            }
+        } else {
+            self.ack.downlink = dl_next;
+        }
 
         // Bit timing (§5), held in reset by reset_mode | reset_mode_q.
         self.sample_point = false;
@@ -376,7 +420,7 @@ impl HubModel {
             wb_ack: self.regs.wb_ack,
             wb_dat_r: self.regs.wb_dat,
             irq: self.regs.irq,
-            downlink: if self.cpl.downlink { self.node_mask } else { 0 },
+            downlink: if self.ack.downlink { self.node_mask } else { 0 },
             sublink_out: if self.cpl.sublink_out {
                 (self.sub_mask >> self.n) as u8
             } else {

@@ -26,6 +26,8 @@ pub mod idx {
     pub const INT_STATUS: u8 = 7;
     pub const INT_ENABLE: u8 = 8;
     pub const STATS: u8 = 9;
+    /// ACK unit (§4.1): [15:0] interventions, [16] its ACK window.
+    pub const ACK_UNIT: u8 = 10;
     /// `PORT_p` is word `PORT0 + p` (p < N + M).
     pub const PORT0: u8 = 16;
 }
@@ -37,6 +39,8 @@ pub mod ctrl {
     pub const FORCE_DECOUPLE: u32 = 1 << 1;
     /// Command (write 1), reads 0.
     pub const RECOUPLE: u32 = 1 << 2;
+    /// Fault injection (§4.1): the coupler passes its own nodes' ACK.
+    pub const FI_ACK_LEAK: u32 = 1 << 3;
     /// cfg.
     pub const ACK_INTERDEP: u32 = 1 << 8;
 }
@@ -78,7 +82,9 @@ pub mod int {
     pub const RESTORATION: u32 = 1 << 1;
     pub const DECOUPLED: u32 = 1 << 2;
     pub const ILLEGAL: u32 = 1 << 3;
-    pub const ALL: u32 = 0xF;
+    /// The ACK unit intervened (§4.1).
+    pub const ACK_UNIT: u32 = 1 << 4;
+    pub const ALL: u32 = 0x1F;
 }
 
 /// The register file and the Wishbone slave's output registers.
@@ -91,6 +97,8 @@ pub struct Regs {
     pub reset_mode_q: bool,
     /// `CTRL.ack_interdep` [1].
     pub ack_interdep: bool,
+    /// `CTRL.fi_ack_leak` [0] (§4.1).
+    pub fi_ack_leak: bool,
     /// Stored `BTR` ([14:0]).
     pub btr: u32,
     /// Stored `GUARD_CFG` (clamped fields).
@@ -133,6 +141,7 @@ impl Regs {
             reset_mode: true,
             reset_mode_q: true,
             ack_interdep: true,
+            fi_ack_leak: false,
             btr: btr::RESET,
             guard: guard_cfg::RESET,
             bf: bf_cfg::RESET,
@@ -148,6 +157,11 @@ impl Regs {
     /// `CTRL` as read (the commands read 0).
     pub fn ctrl(&self) -> u32 {
         self.reset_mode as u32
+            | if self.fi_ack_leak {
+                ctrl::FI_ACK_LEAK
+            } else {
+                0
+            }
             | if self.ack_interdep {
                 ctrl::ACK_INTERDEP
             } else {
@@ -205,6 +219,7 @@ impl Regs {
                 }
                 let rm_w = d & ctrl::RESET_MODE != 0;
                 self.reset_mode = rm_w;
+                self.fi_ack_leak = d & ctrl::FI_ACK_LEAK != 0;
                 if !rm && !rm_w {
                     fx.force_decouple = d & ctrl::FORCE_DECOUPLE != 0;
                     fx.recouple = d & ctrl::RECOUPLE != 0;
@@ -233,7 +248,7 @@ impl Regs {
             }
             idx::INT_STATUS => fx.w1c = d & int::ALL,
             idx::INT_ENABLE => self.int_enable = d & int::ALL,
-            // ID, STATUS, STATS, PORT_p (read only) and unmapped words.
+            // ID, STATUS, STATS, ACK_UNIT, PORT_p (read only) and unmapped words.
             _ => fx.illegal = true,
         }
         fx

@@ -90,7 +90,7 @@ pub fn run_and_tally<S: NodeSystem>(
     clocks_per_bit: u64,
     mut observe: impl FnMut(&S) -> Result<(), String>,
 ) -> Result<Outcome, String> {
-    let mut overloads = LastBitOverloads::new(spec.nodes);
+    let mut overloads = LineEvents::new(spec.nodes);
     while sys.cycle() < end {
         sys.step();
         let cycle = sys.cycle();
@@ -109,32 +109,84 @@ pub fn run_and_tally<S: NodeSystem>(
     ))
 }
 
-/// Per node and channel, the clocks at which the channel, as receiver, met a
-/// dominant last EOF bit (its `field` goes EOF -> overload flag): it had taken the
-/// frame, and the transmitter sends it again (ISO 11898-1 double reception).
+/// What the campaign watches on every node's two channels (field probes) to tell
+/// CAN's own double reception, which no controller can avoid, from a duplicate the
+/// DRCC should have removed.
+///
+/// - `overload`: the channel, as receiver, met a dominant last EOF bit (its `field`
+///   goes EOF -> overload flag): it had taken the frame, and the transmitter sends
+///   it again (ISO 11898-1 double reception).
+/// - `accepted`: the channel completed an EOF (EOF -> intermission): it took the
+///   frame on the line.
+/// - `late_error`: the channel started an error flag from the ACK slot, the ACK
+///   delimiter or the EOF (an ACK or form error), while its node's main FSM was
+///   using that line (Table 1 states ch1/abort1/wait2 for A, ch2/abort2/wait4 for
+///   B): as transmitter, it will repeat a frame that receivers it could not reach
+///   may already have taken (an inconsistent message duplicate: campaign finding
+///   `dual-s5-i2237`, a line cut in the ACK slot).
 #[derive(Clone, Debug)]
-pub struct LastBitOverloads {
+pub struct LineEvents {
     prev: Vec<[u8; 2]>,
-    at: Vec<[Vec<u64>; 2]>,
+    overload: Vec<[Vec<u64>; 2]>,
+    accepted: Vec<[Vec<u64>; 2]>,
+    late_error: Vec<[Vec<u64>; 2]>,
 }
 
-impl LastBitOverloads {
+impl LineEvents {
     pub fn new(nodes: usize) -> Self {
-        LastBitOverloads {
+        let lists = vec![[Vec::new(), Vec::new()]; nodes];
+        LineEvents {
             prev: vec![[0; 2]; nodes],
-            at: vec![[Vec::new(), Vec::new()]; nodes],
+            overload: lists.clone(),
+            accepted: lists.clone(),
+            late_error: lists,
         }
     }
 
     /// Watches node `n`'s channel fields after the edge of clock `cycle`.
     pub fn observe(&mut self, n: usize, o: &DrccOutputs, cycle: u64) {
         let p = &o.probes;
+        let on_line = [matches!(p.state, 2 | 3 | 4), matches!(p.state, 7 | 8 | 9)];
         for (l, f) in [p.chan_a_field, p.chan_b_field].into_iter().enumerate() {
-            if self.prev[n][l] == field::EOF && f == field::OVERLOAD_FLAG {
-                self.at[n][l].push(cycle);
+            let before = self.prev[n][l];
+            if before != f {
+                if before == field::EOF && f == field::OVERLOAD_FLAG {
+                    self.overload[n][l].push(cycle);
+                }
+                if before == field::EOF && f == field::INTERMISSION {
+                    self.accepted[n][l].push(cycle);
+                }
+                if matches!(before, field::ACK_SLOT | field::ACK_DELIM | field::EOF)
+                    && f == field::ERROR_FLAG
+                    && on_line[l]
+                {
+                    self.late_error[n][l].push(cycle);
+                }
             }
             self.prev[n][l] = f;
         }
+    }
+
+    /// Receiver `rx` took a frame on `line` in `[from, to]` while the frame's
+    /// sender, using that line, raised a late error flag (at most 12 bit times
+    /// before): the line will carry that frame again.
+    fn inconsistent_on(
+        &self,
+        rx: usize,
+        sender: usize,
+        line: usize,
+        from: u64,
+        to: u64,
+        cpb: u64,
+    ) -> bool {
+        self.accepted[rx][line]
+            .iter()
+            .filter(|&&c| c >= from && c <= to)
+            .any(|&c| {
+                self.late_error[sender][line]
+                    .iter()
+                    .any(|&e| e <= c && e + 12 * cpb >= c)
+            })
     }
 }
 
@@ -158,7 +210,7 @@ pub fn tally(
     spec: &ScenarioSpec,
     frames: usize,
     nodes: &[(&HostDriver, &DrccOutputs)],
-    overloads: &LastBitOverloads,
+    overloads: &LineEvents,
     cycles: u64,
     clocks_per_bit: u64,
 ) -> Outcome {
@@ -182,10 +234,21 @@ pub fn tally(
         // that channel carried the frame twice: this receiver met a dominant last
         // EOF bit on it between the two deliveries (its first copy there
         // cancelled the other channel's; the retransmission found none).
-        let twice_on = |line: u8, from: u64, to: u64| {
-            overloads.at[rx_node][line as usize]
+        // Or the line carried it twice because its transmitter, cut off from
+        // this receiver, saw an error after this receiver had taken it
+        // ([`LineEvents`]): an inconsistent message duplicate, also CAN's own.
+        let twice_on = |line: u8, sender: usize, from: u64, to: u64| {
+            overloads.overload[rx_node][line as usize]
                 .iter()
                 .any(|&c| c + 200 * clocks_per_bit >= from && c <= to)
+                || overloads.inconsistent_on(
+                    rx_node,
+                    sender,
+                    line as usize,
+                    from.saturating_sub(300 * clocks_per_bit),
+                    to,
+                    clocks_per_bit,
+                )
         };
         for (sender, frames) in seen.iter().enumerate() {
             if sender == rx_node {
@@ -200,7 +263,7 @@ pub fn tally(
                     // Every frame is submitted once: a repeat from one channel is
                     // that channel carrying it twice (CAN's double reception).
                     _ if on(0) > 1 || on(1) > 1 => o.double_received.push((rx_node, sender, k)),
-                    [(_, t0), (l1, t1)] if twice_on(*l1, *t0, *t1) => {
+                    [(_, t0), (l1, t1)] if twice_on(*l1, sender, *t0, *t1) => {
                         o.double_received.push((rx_node, sender, k))
                     }
                     _ => o.duplicated.push((rx_node, sender, k)),

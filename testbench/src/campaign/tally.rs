@@ -146,7 +146,7 @@ impl LineEvents {
     /// Watches node `n`'s channel fields after the edge of clock `cycle`.
     pub fn observe(&mut self, n: usize, o: &DrccOutputs, cycle: u64) {
         let p = &o.probes;
-        let on_line = [matches!(p.state, 2 | 3 | 4), matches!(p.state, 7 | 8 | 9)];
+        let on_line = [matches!(p.state, 2..=4), matches!(p.state, 7..=9)];
         for (l, f) in [p.chan_a_field, p.chan_b_field].into_iter().enumerate() {
             let before = self.prev[n][l];
             if before != f {

@@ -155,6 +155,7 @@ impl MainFsm {
         let echo = i.echo_a || i.echo_b;
         match c.state {
             _ if echo => {
+                coverage::hit_with(|| coverage::star_echo(c.state));
                 n.transmission_ack = true;
                 finish(&mut n, &mut ev, if i.echo_b { 0b01 } else { 0b10 });
                 n.abort_a = matches!(c.state, CH1 | ABORT1 | WAIT2);

@@ -154,8 +154,13 @@ struct Bench {
 impl Bench {
     /// A hub after two `rst` clocks (reset mode).
     fn new(n: usize, m: usize) -> Self {
+        Bench::on(HubModel::new(n, m).expect("supported shape"), n, m)
+    }
+
+    /// [`Bench::new`] on a given model (e.g. one without its ACK unit).
+    fn on(hub: HubModel, n: usize, m: usize) -> Self {
         let mut b = Bench {
-            hub: HubModel::new(n, m).expect("supported shape"),
+            hub,
             n,
             m,
             pins: u16::MAX,
@@ -173,14 +178,7 @@ impl Bench {
     /// [`Bench::running`] on a given model (e.g. one without its ACK unit), no
     /// configuration, ACK interdependence on.
     fn running_hub(hub: HubModel, n: usize, m: usize) -> Self {
-        let mut b = Bench::new(n, m);
-        b.hub = hub;
-        for _ in 0..2 {
-            b.step_with(HubInputs {
-                rst: true,
-                ..b.pin_inputs()
-            });
-        }
+        let mut b = Bench::on(hub, n, m);
         b.write(CTRL, ACK_INTERDEP);
         b.idle_bits(14);
         b

@@ -45,6 +45,10 @@ pub struct HubProbes {
     pub decoupled: bool,
     /// Bit p = port p enabled (node ports 0..N, then sublinks N..N+M).
     pub port_enabled: u16,
+    /// NRAP phase (hub contract §9.2).
+    pub nrap_phase: u8,
+    /// The hub's NRAP transmitter `tx_q` (§9.3), 1 = recessive.
+    pub hub_tx: bool,
 }
 
 /// Outputs of the hub top right after a clock edge.

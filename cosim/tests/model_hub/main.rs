@@ -22,6 +22,7 @@ mod ack_unit;
 mod coupling;
 mod decoupling;
 mod guards;
+mod nrap;
 mod registers;
 
 /// Clocks per bit with the reset BTR (1 + 5 + 2 tq of one clock).

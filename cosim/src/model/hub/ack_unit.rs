@@ -11,7 +11,7 @@
 //! u_own  = AND over node ports    of (u_in_s | !enabled)
 //! u_twin = AND over sublink ports of (u_in_s | !enabled)
 //! u_view_q <= decoupled ? u_own : u_own & u_twin
-//! guard    = u_window & ack_interdep & !decoupled
+//! guard    = u_window & ack_interdep & !decoupled & !nrap_active   (§9)
 //! downlink <= guard ? (dl_next | u_twin) : dl_next
 //! ```
 
@@ -25,6 +25,8 @@ pub struct AckUnitInputs {
     pub pins: u16,
     pub enabled: u16,
     pub decoupled: bool,
+    /// NRAP is in one of its phases (§9): the unit is transparent.
+    pub nrap_active: bool,
     pub ack_interdep: bool,
     /// The coupler's next downlink value (§3).
     pub dl_next: bool,
@@ -90,7 +92,7 @@ impl AckUnit {
         let own = contrib & node_mask == node_mask;
         let twin = contrib & sub_mask == sub_mask;
         let window = self.trk.ack_window();
-        let guard = window && i.ack_interdep && !i.decoupled;
+        let guard = window && i.ack_interdep && !i.decoupled && !i.nrap_active;
         let b = self.view_q;
 
         // Interventions: a dominant bit turned recessive, counted once per window.

@@ -7,10 +7,10 @@
 //!
 //! ```text
 //! s1 <= pin ; in_s <= s1 ; port_q <= in_s
-//! own  = AND over node ports    of (in_s | !enabled)
-//! twin = AND over sublink ports of (in_s | !enabled)     (empty AND = 1)
+//! own  = AND over node ports    of (in_s | !enabled) & tx_q & !forcing   (§9.4)
+//! twin = AND over sublink ports of (in_s | !enabled) | fi_no_twin     (empty AND = 1)
 //! view = decoupled ? own : own & twin
-//! coupled_q <= view ; sublink_out <= own
+//! coupled_q <= view ; sublink_out <= quiet_twin ? 1 : own               (§9.4)
 //! dl_next    = (ack_window & ack_interdep & !decoupled & !fi_ack_leak) ? twin : view
 //! ```
 //!
@@ -51,25 +51,31 @@ impl Coupling {
     }
 
     /// One edge. `pins` = the port inputs (bit p = port p), `enabled` the enabled
-    /// mask, `decoupled` and `mask_ack` (`ack_window & ack_interdep & !decoupled &
-    /// !fi_ack_leak`) the registers before the edge; `node_mask` / `sub_mask`
-    /// select the node and sublink ports. Returns `dl_next`.
+    /// mask, `own_gate` (`tx_q & !forcing`, §9.4), `quiet_twin` (§9.4),
+    /// `no_twin` (`CTRL.fi_no_twin`, §9.6),
+    /// `decoupled` and `mask_ack`
+    /// (`ack_window & ack_interdep & !decoupled & !fi_ack_leak`) the registers
+    /// before the edge; `node_mask` / `sub_mask` select the node and sublink
+    /// ports. Returns `dl_next`.
     #[inline]
     pub fn edge(
         &mut self,
         pins: u16,
         enabled: u16,
+        own_gate: bool,
+        quiet_twin: bool,
+        no_twin: bool,
         decoupled: bool,
         mask_ack: bool,
         node_mask: u16,
         sub_mask: u16,
     ) -> bool {
         let contrib = self.in_s | !enabled;
-        let own = contrib & node_mask == node_mask;
-        let twin = contrib & sub_mask == sub_mask;
+        let own = contrib & node_mask == node_mask && own_gate;
+        let twin = contrib & sub_mask == sub_mask || no_twin;
         let view = if decoupled { own } else { own & twin };
         self.coupled_q = view;
-        self.sublink_out = own;
+        self.sublink_out = own || quiet_twin;
         self.port_q = self.in_s;
         self.in_s = self.s1;
         self.s1 = pins;

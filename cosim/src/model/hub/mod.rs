@@ -7,7 +7,8 @@
 //! Parts: input synchronizers and coupling ([`coupling`], §2-§4), the frame tracker
 //! ([`tracker`], §5) run at the sample points of the channel's own bit timing logic
 //! ([`crate::model::btl`]) on `coupled_q`, the per-port guards ([`guard`], §6),
-//! decoupling ([`decouple`], §7) and the register file ([`regs`], §8).
+//! decoupling ([`decouple`], §7), the register file ([`regs`], §8) and the
+//! Network Reconfiguration Agreement Protocol ([`nrap`], §9).
 //!
 //! Step order (a registered design): at every edge every next value is computed
 //! from the values before it: Wishbone access, coupling, bit timing and (at a
@@ -65,6 +66,7 @@ pub mod ack_unit;
 pub mod coupling;
 pub mod decouple;
 pub mod guard;
+pub mod nrap;
 pub mod regs;
 pub mod tracker;
 
@@ -75,6 +77,7 @@ use ack_unit::{AckUnit, AckUnitInputs};
 use coupling::Coupling;
 use decouple::Decoupler;
 use guard::{Limits, PortGuard};
+use nrap::{phase, Nrap, SampleInputs};
 use regs::{btr, idx, int, Regs, WriteEffects};
 use tracker::{Tracker, IDLE_WAIT};
 
@@ -96,6 +99,8 @@ pub fn timing_of(btr_value: u32) -> Timing {
 /// The hub top, simulated clock by clock.
 #[derive(Clone, Debug)]
 pub struct HubModel {
+    /// `HUB_ID`: 0 = hub A (`hub.v`), 1 = hub B (`hub_b.v`).
+    hub_id: u8,
     n: usize,
     m: usize,
     /// Bits `0..N`.
@@ -114,6 +119,8 @@ pub struct HubModel {
     /// Bit p = `ports[p].enabled` (kept in step with the guards).
     enabled: u16,
     dec: Decoupler,
+    /// NRAP (§9): phases, transmitter, recogniser.
+    nrap: Nrap,
     /// The ACK unit (§4.1); owns the downlink register.
     ack: AckUnit,
     /// The unit is fitted (always, in the RTL); a model without it shows what the
@@ -122,9 +129,14 @@ pub struct HubModel {
 }
 
 impl HubModel {
-    /// A hub with `n` node ports and `m` interlinks in its reset state. Shapes
-    /// outside N 2..=8, M 1..=4 are refused.
+    /// Hub A (`HUB_ID` 0) with `n` node ports and `m` interlinks in its reset
+    /// state. Shapes outside N 2..=8, M 1..=4 are refused.
     pub fn new(n: usize, m: usize) -> Result<Self, String> {
+        Self::new_hub(0, n, m)
+    }
+
+    /// Hub `hub_id` (0 = A, 1 = B: which identification frame it sends, §9.1).
+    pub fn new_hub(hub_id: u8, n: usize, m: usize) -> Result<Self, String> {
         if !(2..=MAX_NODE_PORTS).contains(&n) || !(1..=MAX_INTERLINKS).contains(&m) {
             return Err(format!(
                 "hub shape N = {n}, M = {m} is not supported: the hub has 2..={MAX_NODE_PORTS} \
@@ -134,6 +146,7 @@ impl HubModel {
         let node_mask = (1u16 << n) - 1;
         let sub_mask = ((1u16 << m) - 1) << n;
         let mut hub = HubModel {
+            hub_id: hub_id & 1,
             n,
             m,
             node_mask,
@@ -147,9 +160,12 @@ impl HubModel {
             ports: [PortGuard::new(); MAX_PORTS],
             enabled: 0,
             dec: Decoupler::default(),
+            nrap: Nrap::new(hub_id & 1),
             ack: AckUnit::new(),
             ack_unit_fitted: true,
         };
+        // A power-up also clears what reset mode keeps.
+        hub.nrap = Nrap::new(hub_id & 1);
         hub.reset();
         Ok(hub)
     }
@@ -162,6 +178,11 @@ impl HubModel {
         self
     }
 
+    /// `HUB_ID` (0 = A, 1 = B).
+    pub fn hub_id(&self) -> u8 {
+        self.hub_id
+    }
+
     /// Node ports N and interlinks M.
     pub fn shape(&self) -> (usize, usize) {
         (self.n, self.m)
@@ -172,6 +193,7 @@ impl HubModel {
         self.regs = Regs::reset();
         self.cpl = Coupling::new();
         self.ack = AckUnit::new();
+        self.nrap = Nrap::new(self.hub_id);
         self.btl = Btl::new();
         self.timing = timing_of(btr::RESET);
         self.sample_point = false;
@@ -184,6 +206,7 @@ impl HubModel {
         self.ports = [PortGuard::new(); MAX_PORTS];
         self.enabled = self.node_mask | self.sub_mask;
         self.dec = Decoupler::default();
+        self.nrap.hold_reset_mode();
     }
 
     fn update_enabled(&mut self) {
@@ -198,7 +221,7 @@ impl HubModel {
     fn read(&self, adr: u8) -> u32 {
         let r = &self.regs;
         match adr {
-            idx::ID => regs::id_value(self.n, self.m),
+            idx::ID => regs::id_value(self.hub_id, self.n, self.m),
             idx::CTRL => r.ctrl(),
             idx::BTR => r.btr,
             idx::GUARD_CFG => r.guard,
@@ -215,6 +238,10 @@ impl HubModel {
             idx::INT_ENABLE => r.int_enable,
             idx::STATS => self.trk.frames as u32 | (self.trk.errors as u32) << 16,
             idx::ACK_UNIT => self.ack.blocks as u32 | (self.ack.window() as u32) << 16,
+            idx::NRAP_CFG => r.nrap_cfg,
+            idx::NRAP_TIME => r.nrap_time,
+            idx::NRAP_DDSP => r.nrap_ddsp,
+            idx::NRAP_STATUS => self.nrap.status(),
             a if a >= idx::PORT0 && ((a - idx::PORT0) as usize) < self.n + self.m => {
                 self.ports[(a - idx::PORT0) as usize].reg()
             }
@@ -242,6 +269,7 @@ impl HubModel {
         let btl_reset = reset_mode || self.regs.reset_mode_q;
         let ack_interdep = self.regs.ack_interdep;
         let fi_ack_leak = self.regs.fi_ack_leak;
+        let fi_no_twin = self.regs.fi_no_twin;
         let btr_before = self.regs.btr;
         let int_before = self.regs.int_status;
         let irq = int_before & self.regs.int_enable != 0;
@@ -261,12 +289,17 @@ impl HubModel {
         let b = self.cpl.coupled_q;
         let pq = self.cpl.port_q;
         let decoupled = self.dec.decoupled;
+        let nrap_active = self.nrap.active();
+        let tx_q = self.nrap.tx_q;
         let mask_ack = self.trk.ack_window() && ack_interdep && !decoupled && !fi_ack_leak;
         let pins = (i.uplink & self.node_mask) | ((i.sublink_in as u16) << self.n);
         let enabled = self.enabled;
         let dl_next = self.cpl.edge(
             pins,
             enabled,
+            tx_q && !self.nrap.forcing(),
+            self.nrap.quiet_twin(),
+            fi_no_twin,
             decoupled,
             mask_ack,
             self.node_mask,
@@ -280,6 +313,7 @@ impl HubModel {
                     pins,
                     enabled,
                     decoupled,
+                    nrap_active,
                     ack_interdep,
                     dl_next,
                     reset_mode,
@@ -305,14 +339,20 @@ impl HubModel {
             let (_, tick) = self.btl.clock(b, self.timing.brp);
             if tick {
                 let hard_sync_enable = self.trk.state == IDLE_WAIT;
-                if let BtlEvent::Sample(sampled) =
-                    self.btl.tick(b, &self.timing, true, hard_sync_enable)
-                {
-                    self.sample_point = true;
-                    // The guard configuration cannot change at a SAMPLE edge (it
-                    // is written only in reset mode), so `self.regs` holds the
-                    // values before the edge.
-                    ints |= self.sample(sampled, pq);
+                match self.btl.tick(b, &self.timing, tx_q, hard_sync_enable) {
+                    BtlEvent::Sample(sampled) => {
+                        self.sample_point = true;
+                        // The guard configuration cannot change at a SAMPLE edge
+                        // (it is written only in reset mode), so `self.regs` holds
+                        // the values before the edge.
+                        ints |= self.sample(sampled, pq);
+                    }
+                    BtlEvent::BitStart { hard } => {
+                        let idle_ready = self.trk.idle_ready();
+                        let sub_any = self.enabled & self.sub_mask != 0;
+                        self.nrap.bit_start(hard, idle_ready, sub_any);
+                    }
+                    BtlEvent::None => {}
                 }
             }
         }
@@ -358,9 +398,15 @@ impl HubModel {
         if fx.force_decouple {
             self.dec.force();
             ints |= int::DECOUPLED;
+            if self.regs.nrap_on && self.nrap.command(phase::SPLIT) {
+                ints |= int::NRAP;
+            }
         }
         if fx.recouple {
             self.dec.recouple();
+            if self.nrap.command(phase::RUN) {
+                ints |= int::NRAP;
+            }
             for g in self.ports[self.n..self.n + self.m].iter_mut() {
                 g.enabled = true;
                 g.restore_cnt = 0;
@@ -377,9 +423,12 @@ impl HubModel {
     fn sample(&mut self, b: bool, pq: u16) -> u32 {
         let r = &self.regs;
         let decouple_bits = r.decouple_bits();
+        let ack_slot = self.trk.state == tracker::ACK_SLOT;
         let ev = self.trk.sample(b);
-        let any_sub_enabled = self.enabled & self.sub_mask != 0;
+        let enabled = self.enabled;
+        let any_sub_enabled = enabled & self.sub_mask != 0;
         let decoupled = self.dec.decoupled;
+        let nrap_active = self.nrap.active();
         let node = Limits {
             sd: r.sd_run_up(),
             bf: r.bf_up(),
@@ -393,9 +442,16 @@ impl HubModel {
             node: false,
             ..node
         };
-        // While decoupled the sublink guards are frozen.
-        let ports = if decoupled { self.n } else { self.n + self.m };
         let mut ints = 0;
+        // While NRAP is active no guard rule runs; while decoupled the sublink
+        // guards are frozen.
+        let ports = if nrap_active {
+            0
+        } else if decoupled {
+            self.n
+        } else {
+            self.n + self.m
+        };
         for (p, g) in self.ports[..ports].iter_mut().enumerate() {
             let lim = if p < self.n { &node } else { &sub };
             let e = g.sample((pq >> p) & 1 != 0, b, ev, lim);
@@ -406,8 +462,33 @@ impl HubModel {
                 ints |= int::RESTORATION;
             }
         }
+        // NRAP (§9), on the values before the edge.
+        let nrap_on = r.nrap_on;
+        let cfg = r.nrap();
+        let fx = self.nrap.sample(
+            &SampleInputs {
+                b,
+                pq,
+                ev,
+                ack_slot,
+                enabled,
+                nrap_on,
+                decoupled,
+            },
+            &mut self.ports[..self.n + self.m],
+            self.n,
+            &cfg,
+        );
+        if fx.phase_changed {
+            ints |= int::NRAP;
+        }
+        if fx.decouple {
+            self.dec.decoupled = true;
+            ints |= int::DECOUPLED;
+        }
         self.update_enabled();
-        if self.dec.sample(any_sub_enabled, decouple_bits) {
+        // §7 decouples only without NRAP.
+        if !nrap_on && self.dec.sample(any_sub_enabled, decouple_bits) {
             ints |= int::DECOUPLED;
         }
         ints
@@ -433,6 +514,8 @@ impl HubModel {
                 ack_window: self.trk.ack_window(),
                 decoupled: self.dec.decoupled,
                 port_enabled: self.enabled,
+                nrap_phase: self.nrap.phase,
+                hub_tx: self.nrap.tx_q,
             },
         }
     }
@@ -450,5 +533,10 @@ impl HubModel {
     /// `no_twin` and `decoupled`.
     pub fn decoupler(&self) -> &Decoupler {
         &self.dec
+    }
+
+    /// NRAP state (§9).
+    pub fn nrap(&self) -> &Nrap {
+        &self.nrap
     }
 }

@@ -9,9 +9,10 @@
 /// or-ed in.
 pub const ID_BASE: u32 = 0x4855_0000;
 
-/// `ID` register value of a hub with `n` node ports and `m` interlinks.
-pub fn id_value(n: usize, m: usize) -> u32 {
-    ID_BASE | (n as u32) << 8 | m as u32
+/// `ID` register value of hub `hub_id` (0 = A, 1 = B) with `n` node ports and `m`
+/// interlinks.
+pub fn id_value(hub_id: u8, n: usize, m: usize) -> u32 {
+    ID_BASE | (hub_id as u32 & 1) << 12 | (n as u32) << 8 | m as u32
 }
 
 /// Word indices (`wb_adr_i`, byte offset / 4).
@@ -28,6 +29,11 @@ pub mod idx {
     pub const STATS: u8 = 9;
     /// ACK unit (§4.1): [15:0] interventions, [16] its ACK window.
     pub const ACK_UNIT: u8 = 10;
+    /// NRAP (§9.5).
+    pub const NRAP_CFG: u8 = 11;
+    pub const NRAP_TIME: u8 = 12;
+    pub const NRAP_DDSP: u8 = 13;
+    pub const NRAP_STATUS: u8 = 14;
     /// `PORT_p` is word `PORT0 + p` (p < N + M).
     pub const PORT0: u8 = 16;
 }
@@ -41,8 +47,23 @@ pub mod ctrl {
     pub const RECOUPLE: u32 = 1 << 2;
     /// Fault injection (§4.1): the coupler passes its own nodes' ACK.
     pub const FI_ACK_LEAK: u32 = 1 << 3;
+    /// Fault injection (§9.6): the coupler ignores the twin's contribution.
+    pub const FI_NO_TWIN: u32 = 1 << 4;
     /// cfg.
     pub const ACK_INTERDEP: u32 = 1 << 8;
+    /// cfg: NRAP (§9).
+    pub const NRAP_ON: u32 = 1 << 9;
+}
+
+/// `NRAP_CFG`: [9:0] `force_bits`, [15:12] `srp_pairs`, [19:16] `nrp_pairs`,
+/// [23:20] `ddsp_frames`; `NRAP_TIME`: [15:0] `srp_bits`, [31:16] `nrp_bits`;
+/// `NRAP_DDSP`: [15:0] `ddsp_bits` (§9.5).
+pub mod nrap_cfg {
+    pub const FORCE_MIN: u32 = 64;
+    pub const BITS_MIN: u32 = 256;
+    pub const RESET: u32 = 320 | (2 << 12) | (2 << 16) | (8 << 20);
+    pub const TIME_RESET: u32 = 1024 | (1024 << 16);
+    pub const DDSP_RESET: u32 = 1024;
 }
 
 /// `BTR` fields (value - 1 encodings, as the DRCC's `BTR`; [31:15] read 0).
@@ -84,7 +105,9 @@ pub mod int {
     pub const ILLEGAL: u32 = 1 << 3;
     /// The ACK unit intervened (§4.1).
     pub const ACK_UNIT: u32 = 1 << 4;
-    pub const ALL: u32 = 0x1F;
+    /// An NRAP phase change (§9).
+    pub const NRAP: u32 = 1 << 5;
+    pub const ALL: u32 = 0x3F;
 }
 
 /// The register file and the Wishbone slave's output registers.
@@ -99,6 +122,8 @@ pub struct Regs {
     pub ack_interdep: bool,
     /// `CTRL.fi_ack_leak` [0] (§4.1).
     pub fi_ack_leak: bool,
+    /// `CTRL.fi_no_twin` [0] (§9.6).
+    pub fi_no_twin: bool,
     /// Stored `BTR` ([14:0]).
     pub btr: u32,
     /// Stored `GUARD_CFG` (clamped fields).
@@ -107,6 +132,12 @@ pub struct Regs {
     pub bf: u32,
     /// Stored `RESTORE_CFG`.
     pub restore: u32,
+    /// `CTRL.nrap_on` [1].
+    pub nrap_on: bool,
+    /// Stored `NRAP_CFG`, `NRAP_TIME`, `NRAP_DDSP` (clamped fields).
+    pub nrap_cfg: u32,
+    pub nrap_time: u32,
+    pub nrap_ddsp: u32,
     pub int_status: u32,
     pub int_enable: u32,
     /// `irq` register: `|(INT_STATUS & INT_ENABLE)` one edge later.
@@ -142,10 +173,15 @@ impl Regs {
             reset_mode_q: true,
             ack_interdep: true,
             fi_ack_leak: false,
+            fi_no_twin: false,
             btr: btr::RESET,
             guard: guard_cfg::RESET,
             bf: bf_cfg::RESET,
             restore: restore_cfg::RESET,
+            nrap_on: true,
+            nrap_cfg: nrap_cfg::RESET,
+            nrap_time: nrap_cfg::TIME_RESET,
+            nrap_ddsp: nrap_cfg::DDSP_RESET,
             int_status: 0,
             int_enable: 0,
             irq: false,
@@ -157,6 +193,7 @@ impl Regs {
     /// `CTRL` as read (the commands read 0).
     pub fn ctrl(&self) -> u32 {
         self.reset_mode as u32
+            | if self.fi_no_twin { ctrl::FI_NO_TWIN } else { 0 }
             | if self.fi_ack_leak {
                 ctrl::FI_ACK_LEAK
             } else {
@@ -167,6 +204,20 @@ impl Regs {
             } else {
                 0
             }
+            | if self.nrap_on { ctrl::NRAP_ON } else { 0 }
+    }
+
+    /// The NRAP settings (§9.5).
+    pub fn nrap(&self) -> super::nrap::NrapCfg {
+        super::nrap::NrapCfg {
+            force_bits: (self.nrap_cfg & 0x3FF) as u16,
+            srp_pairs: ((self.nrap_cfg >> 12) & 0xF) as u8,
+            nrp_pairs: ((self.nrap_cfg >> 16) & 0xF) as u8,
+            ddsp_frames: ((self.nrap_cfg >> 20) & 0xF) as u8,
+            srp_bits: self.nrap_time as u16,
+            nrp_bits: (self.nrap_time >> 16) as u16,
+            ddsp_bits: self.nrap_ddsp as u16,
+        }
     }
 
     /// `sd_run_up`.
@@ -212,20 +263,29 @@ impl Regs {
                     return fx;
                 }
                 let interdep = d & ctrl::ACK_INTERDEP != 0;
+                let nrap_on = d & ctrl::NRAP_ON != 0;
                 if rm {
                     self.ack_interdep = interdep;
-                } else if interdep != before.ack_interdep {
+                    self.nrap_on = nrap_on;
+                } else if interdep != before.ack_interdep || nrap_on != before.nrap_on {
                     fx.illegal = true;
                 }
                 let rm_w = d & ctrl::RESET_MODE != 0;
                 self.reset_mode = rm_w;
                 self.fi_ack_leak = d & ctrl::FI_ACK_LEAK != 0;
+                self.fi_no_twin = d & ctrl::FI_NO_TWIN != 0;
                 if !rm && !rm_w {
                     fx.force_decouple = d & ctrl::FORCE_DECOUPLE != 0;
                     fx.recouple = d & ctrl::RECOUPLE != 0;
                 }
             }
-            idx::BTR | idx::GUARD_CFG | idx::BF_CFG | idx::RESTORE_CFG => {
+            idx::BTR
+            | idx::GUARD_CFG
+            | idx::BF_CFG
+            | idx::RESTORE_CFG
+            | idx::NRAP_CFG
+            | idx::NRAP_TIME
+            | idx::NRAP_DDSP => {
                 if !rm {
                     fx.illegal = true;
                 } else {
@@ -242,13 +302,30 @@ impl Regs {
                             let sub = ((d >> 8) & 0xFF).max(bf_cfg::BF_MIN);
                             self.bf = up | sub << 8;
                         }
+                        idx::NRAP_CFG => {
+                            let force = (d & 0x3FF).max(nrap_cfg::FORCE_MIN);
+                            let one = |f: u32| f.max(1);
+                            self.nrap_cfg = force
+                                | one((d >> 12) & 0xF) << 12
+                                | one((d >> 16) & 0xF) << 16
+                                | one((d >> 20) & 0xF) << 20;
+                        }
+                        idx::NRAP_TIME => {
+                            let srp = (d & 0xFFFF).max(nrap_cfg::BITS_MIN);
+                            let nrp = (d >> 16).max(nrap_cfg::BITS_MIN);
+                            self.nrap_time = srp | nrp << 16;
+                        }
+                        idx::NRAP_DDSP => {
+                            self.nrap_ddsp = (d & 0xFFFF).max(nrap_cfg::BITS_MIN)
+                        }
                         _ => self.restore = d,
                     }
                 }
             }
             idx::INT_STATUS => fx.w1c = d & int::ALL,
             idx::INT_ENABLE => self.int_enable = d & int::ALL,
-            // ID, STATUS, STATS, ACK_UNIT, PORT_p (read only) and unmapped words.
+            // ID, STATUS, STATS, ACK_UNIT, NRAP_STATUS, PORT_p (read only) and
+            // unmapped words.
             _ => fx.illegal = true,
         }
         fx

@@ -197,12 +197,13 @@ fn a_transient_loss_of_the_interlink_ends_in_recoupling_within_the_bound() {
         let took = (v[3].0 - v[0].0) / TCPB;
         assert!(took <= RECOUPLE_BOUND, "hub {h} took {took} bits");
         assert!(!t.out[h].probes.decoupled);
-        // The sublink is back (restored silent in SRP_EXCHANGE); no node acked an
-        // identification frame of the twin, so both node ports are left disabled
-        // at the end of NRP (and restored by §6 later: nothing ever accused them).
-        let end = v[3].0;
-        assert_eq!(t.log[end][h].probes.port_enabled, 0b100, "hub {h}");
-        assert_eq!(t.log[end - 1][h].probes.port_enabled, 0b111, "hub {h}");
+        // The sublink is back (restored silent in SRP_EXCHANGE), the node ports
+        // were disabled for the exchange and restored for node restoration.
+        let (srp, nrp, end) = (v[1].0, v[2].0, v[3].0);
+        assert_eq!(t.log[srp][h].probes.port_enabled & 0b011, 0, "hub {h}");
+        assert_eq!(t.log[nrp - 1][h].probes.port_enabled, 0b100, "hub {h}");
+        assert_eq!(t.log[nrp][h].probes.port_enabled, 0b111, "hub {h}");
+        assert_eq!(t.log[end][h].probes.port_enabled, 0b111, "hub {h}");
     }
     let st = t.read(0, NRAP_STATUS);
     assert_eq!(st & 7, RUN as u32);

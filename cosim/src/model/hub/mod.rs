@@ -348,9 +348,8 @@ impl HubModel {
                         ints |= self.sample(sampled, pq);
                     }
                     BtlEvent::BitStart { hard } => {
-                        let idle_ready = self.trk.idle_ready();
                         let sub_any = self.enabled & self.sub_mask != 0;
-                        self.nrap.bit_start(hard, idle_ready, sub_any);
+                        self.nrap.bit_start(hard, sub_any);
                     }
                     BtlEvent::None => {}
                 }

@@ -8,7 +8,7 @@
 //! is a bit-start edge of the hub's bit timing logic, [`Nrap::sample`] a SAMPLE
 //! edge.
 
-use super::guard::{kind, PortGuard};
+use super::guard::PortGuard;
 use super::tracker::TrkEvent;
 use crate::model::coverage;
 use crate::model::crc::crc15;
@@ -141,15 +141,13 @@ pub struct Nrap {
     tx_idx: u8,
     ack_due: bool,
     acking: bool,
+    /// Recessive samples in a row (0..15).
+    quiet: u8,
     r_idx: u8,
     r_own: bool,
     r_twin: bool,
     /// Per port: consecutive recessive samples of a disabled sublink (0..15).
     rrun: [u8; 16],
-    /// Bit p: port p made an error in this phase.
-    erred: u16,
-    /// Bit p: port p acknowledged an identification frame in this phase.
-    acked: u16,
     own: IdRom,
     twin: IdRom,
     /// `HUB_ID`.
@@ -172,12 +170,11 @@ impl Nrap {
             tx_idx: 0,
             ack_due: false,
             acking: false,
+            quiet: 0,
             r_idx: 0,
             r_own: false,
             r_twin: false,
             rrun: [0; 16],
-            erred: 0,
-            acked: 0,
             own: IdRom::of(hub_id),
             twin: IdRom::of(hub_id ^ 1),
             hub_id,
@@ -229,9 +226,8 @@ impl Nrap {
     }
 
     /// A bit-start edge of the hub's BTL (§9.3). `hard`: a hard synchronization
-    /// started the bit; `idle_ready`: `trk == IDLE_WAIT & rec_run >= 10`;
-    /// `sub_any`: a sublink port is enabled.
-    pub fn bit_start(&mut self, hard: bool, idle_ready: bool, sub_any: bool) {
+    /// started the bit; `sub_any`: a sublink port is enabled.
+    pub fn bit_start(&mut self, hard: bool, sub_any: bool) {
         if !self.active() || self.forcing() {
             self.tx_q = true;
             self.tx_on = false;
@@ -253,7 +249,7 @@ impl Nrap {
         } else if self.acking {
             self.tx_q = true;
             self.acking = false;
-        } else if self.send(sub_any) && idle_ready {
+        } else if self.send(sub_any) && self.quiet >= 11 {
             self.tx_q = false;
             self.tx_on = true;
             self.tx_idx = 1;
@@ -279,28 +275,27 @@ impl Nrap {
         }
     }
 
-    /// Node ports that did not acknowledge are disabled at the end of a phase.
-    fn keep_acked(&self, ports: &mut [PortGuard], n: usize) {
-        for (p, g) in ports[..n].iter_mut().enumerate() {
-            if g.enabled && (self.acked >> p) & 1 == 0 {
-                g.enabled = false;
-                g.restore_cnt = 0;
-                g.silent = 0;
-                g.kind = kind::SILENT;
-            }
+    /// Every node port is restored with clean counters (NRP and DDSP_SEND entry).
+    fn restore_nodes(&self, ports: &mut [PortGuard], n: usize) {
+        for g in ports[..n].iter_mut() {
+            g.enabled = true;
+            g.pec = 0;
+            g.silent = 0;
+            g.restore_cnt = 0;
         }
     }
 
-    /// A node port that drives a dominant bit outside an ACK slot while enabled is
-    /// disabled at once (NRP, DDSP_SEND).
-    fn drop_erring(&mut self, ports: &mut [PortGuard], n: usize, i: &SampleInputs) {
-        if i.ack_slot {
+    /// A node port that drives a dominant bit after the arbitration field of a
+    /// frame, before its ACK slot, while enabled is disabled at once (NRP,
+    /// DDSP_SEND): only the transmitter (a hub) drives those bits.
+    fn drop_erring(&self, ports: &mut [PortGuard], n: usize, i: &SampleInputs) {
+        if !matches!(i.ev, TrkEvent::Frame { in_arb: false, .. }) {
             return;
         }
         for (p, g) in ports[..n].iter_mut().enumerate() {
             if (i.enabled >> p) & 1 == 1 && (i.pq >> p) & 1 == 0 {
+                coverage::hit("hub nrap: a node port errs and is disabled");
                 g.enabled = false;
-                self.erred |= 1 << p;
             }
         }
     }
@@ -312,11 +307,15 @@ impl Nrap {
         if !(own_frame || twin_frame) {
             return false;
         }
-        self.last = if own_frame { 1 } else { 2 };
         if b {
+            // Nobody acknowledged: an own frame is sent again at the next chance.
             self.half = false;
+            if twin_frame {
+                self.last = 2;
+            }
             return false;
         }
+        self.last = if own_frame { 1 } else { 2 };
         // Hub A is HUB_ID 0: its frame is the one with identifier 0x000.
         let from_a = if self.hub_id == 0 {
             own_frame
@@ -335,12 +334,6 @@ impl Nrap {
         }
     }
 
-    /// Node ports with a dominant bit at this (ACK slot) sample.
-    fn ack_from_nodes(&mut self, n: usize, pq: u16) {
-        let node_mask = (1u16 << n) - 1;
-        self.acked |= !pq & node_mask;
-    }
-
     /// A SAMPLE edge (§9.2, §9.3). `ports[..n]` are the node ports, `ports[n..]`
     /// the incoming sublinks.
     pub fn sample(
@@ -357,6 +350,7 @@ impl Nrap {
             phase::SRP_EXCHANGE | phase::NRP | phase::DDSP_SEND
         );
 
+        self.quiet = if i.b { (self.quiet + 1).min(15) } else { 0 };
         // Transmitter: arbitration lost or a bit error ends the attempt.
         if self.tx_on && i.b != self.tx_q {
             coverage::hit("hub nrap: transmitter withdraws (arbitration or bit error)");
@@ -400,6 +394,17 @@ impl Nrap {
                     self.runs = (self.runs + 1).min(15);
                     return fx;
                 }
+                if i.nrap_on && !i.decoupled && twin_frame {
+                    coverage::hit("hub nrap: joins the twin's exchange");
+                    self.goto(phase::SRP_EXCHANGE, &mut fx);
+                    self.last = 2;
+                    self.runs = (self.runs + 1).min(15);
+                    self.rrun = [0; 16];
+                    for g in ports[..n].iter_mut() {
+                        g.enabled = false;
+                    }
+                    return fx;
+                }
             }
             phase::SRP_FORCE => {
                 if nt >= cfg.force_bits {
@@ -408,7 +413,6 @@ impl Nrap {
                         g.enabled = false;
                     }
                     self.rrun = [0; 16];
-                    self.erred = 0;
                     return fx;
                 }
             }
@@ -430,25 +434,13 @@ impl Nrap {
                         }
                     }
                 }
-                if !i.ack_slot {
-                    self.erred |= !i.pq & ((1u16 << n) - 1);
-                }
                 if self.pairs(own_frame, twin_frame, i.b) {
                     ncnt = (ncnt + 1).min(15);
                 }
                 if ncnt >= cfg.srp_pairs {
                     coverage::hit("hub nrap: sublinks agreed (to node restoration)");
                     self.goto(phase::NRP, &mut fx);
-                    for (p, g) in ports[..n].iter_mut().enumerate() {
-                        if (self.erred >> p) & 1 == 0 {
-                            g.enabled = true;
-                            g.pec = 0;
-                            g.silent = 0;
-                            g.restore_cnt = 0;
-                        }
-                    }
-                    self.erred = 0;
-                    self.acked = 0;
+                    self.restore_nodes(ports, n);
                     return fx;
                 }
                 if nt >= cfg.srp_bits {
@@ -458,16 +450,12 @@ impl Nrap {
             }
             phase::NRP => {
                 self.drop_erring(ports, n, i);
-                if twin_frame {
-                    self.ack_from_nodes(n, i.pq);
-                }
                 if self.pairs(own_frame, twin_frame, i.b) {
                     ncnt = (ncnt + 1).min(15);
                 }
                 if ncnt >= cfg.nrp_pairs {
                     coverage::hit("hub nrap: recoupled");
                     self.goto(phase::RUN, &mut fx);
-                    self.keep_acked(ports, n);
                     self.outcome = true;
                     return fx;
                 }
@@ -479,27 +467,18 @@ impl Nrap {
             phase::DDSP_FORCE => {
                 if nt >= cfg.force_bits {
                     self.goto(phase::DDSP_SEND, &mut fx);
-                    for g in ports[..n].iter_mut() {
-                        g.enabled = true;
-                        g.pec = 0;
-                        g.silent = 0;
-                        g.restore_cnt = 0;
-                    }
-                    self.erred = 0;
-                    self.acked = 0;
+                    self.restore_nodes(ports, n);
                     return fx;
                 }
             }
             phase::DDSP_SEND => {
                 self.drop_erring(ports, n, i);
-                if matches!(i.ev, TrkEvent::Ack) && own_frame && !i.b {
+                if own_frame && !i.b {
                     ncnt = (ncnt + 1).min(15);
-                    self.ack_from_nodes(n, i.pq);
                 }
                 if ncnt >= cfg.ddsp_frames || nt >= cfg.ddsp_bits {
                     coverage::hit("hub nrap: split (each star on its own)");
                     self.goto(phase::SPLIT, &mut fx);
-                    self.keep_acked(ports, n);
                     self.outcome = false;
                     return fx;
                 }

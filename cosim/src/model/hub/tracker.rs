@@ -96,13 +96,6 @@ impl Tracker {
         self.state == ACK_SLOT || self.state == ACK_DELIM
     }
 
-    /// `trk == IDLE_WAIT & rec_run >= 10`: a dominant bit now would be a start of
-    /// frame (the NRAP transmitter may start, §9.3).
-    #[inline]
-    pub fn idle_ready(&self) -> bool {
-        self.state == IDLE_WAIT && self.rec_run >= SOF_RUN
-    }
-
     /// STUFF_ERROR, FORM_ERROR: count, wait for the bus to be idle again.
     fn error(&mut self) {
         self.errors = self.errors.saturating_add(1);

@@ -423,6 +423,7 @@ impl HubModel {
         let r = &self.regs;
         let decouple_bits = r.decouple_bits();
         let ack_slot = self.trk.state == tracker::ACK_SLOT;
+        let ack_delim = self.trk.state == tracker::ACK_DELIM;
         let ev = self.trk.sample(b);
         let enabled = self.enabled;
         let any_sub_enabled = enabled & self.sub_mask != 0;
@@ -470,6 +471,7 @@ impl HubModel {
                 pq,
                 ev,
                 ack_slot,
+                ack_delim,
                 enabled,
                 nrap_on,
                 decoupled,

@@ -89,6 +89,9 @@ pub struct NrapCfg {
     pub srp_bits: u16,
     pub nrp_bits: u16,
     pub ddsp_bits: u16,
+    /// Frames in a row ending in an ACK-delimiter error flag that start NRAP (0 =
+    /// off).
+    pub block_frames: u8,
 }
 
 /// What the hub needs to know at a SAMPLE edge (values before the edge).
@@ -102,6 +105,8 @@ pub struct SampleInputs {
     pub ev: TrkEvent,
     /// `trk == ACK_SLOT` before the edge.
     pub ack_slot: bool,
+    /// `trk == ACK_DELIM` before the edge.
+    pub ack_delim: bool,
     /// Enabled mask before the edge.
     pub enabled: u16,
     pub nrap_on: bool,
@@ -131,6 +136,8 @@ pub struct Nrap {
     /// [0] hub A's identification frame was acknowledged; hub B's next makes a
     /// pair.
     pub half: bool,
+    /// [0] frames in a row with an error flag at the ACK delimiter (0..31).
+    pub unacked: u8,
     /// [0] NRAP runs started (0..15; cleared by `rst` only).
     pub runs: u8,
     /// [0] the last run ended in `RUN` (cleared by `rst` only).
@@ -163,6 +170,7 @@ impl Nrap {
             ncnt: 0,
             last: 0,
             half: false,
+            unacked: 0,
             runs: 0,
             outcome: false,
             tx_q: true,
@@ -262,6 +270,7 @@ impl Nrap {
         self.nt = 0;
         self.ncnt = 0;
         self.half = false;
+        self.unacked = 0;
         fx.phase_changed = true;
     }
 
@@ -285,11 +294,12 @@ impl Nrap {
         }
     }
 
-    /// A node port that drives a dominant bit after the arbitration field of a
-    /// frame, before its ACK slot, while enabled is disabled at once (NRP,
-    /// DDSP_SEND): only the transmitter (a hub) drives those bits.
-    fn drop_erring(&self, ports: &mut [PortGuard], n: usize, i: &SampleInputs) {
-        if !matches!(i.ev, TrkEvent::Frame { in_arb: false, .. }) {
+    /// A node port that drives a dominant bit after the arbitration field of an
+    /// identification frame, before its ACK slot, while enabled is disabled at
+    /// once (NRP, DDSP_SEND): only the transmitter (a hub) drives those bits.
+    /// `id_frame`: the frame matched a ROM up to the bit before this one.
+    fn drop_erring(&self, ports: &mut [PortGuard], n: usize, i: &SampleInputs, id_frame: bool) {
+        if !id_frame || !matches!(i.ev, TrkEvent::Frame { in_arb: false, .. }) {
             return;
         }
         for (p, g) in ports[..n].iter_mut().enumerate() {
@@ -359,6 +369,7 @@ impl Nrap {
         }
 
         // Recogniser.
+        let id_frame = self.r_own || self.r_twin;
         let (mut own_frame, mut twin_frame) = (false, false);
         match i.ev {
             TrkEvent::Sof => {
@@ -387,7 +398,18 @@ impl Nrap {
         let sub_enabled = i.enabled & !((1u16 << n) - 1);
         match before {
             phase::RUN => {
-                if i.nrap_on && !i.decoupled && sub_enabled == 0 {
+                if i.ack_delim {
+                    self.unacked = if i.b {
+                        0
+                    } else {
+                        (self.unacked + 1).min(31)
+                    };
+                }
+                let blocked = cfg.block_frames != 0 && self.unacked >= cfg.block_frames;
+                if i.nrap_on && !i.decoupled && blocked {
+                    coverage::hit("hub nrap: triggered (network blocked)");
+                }
+                if i.nrap_on && !i.decoupled && (sub_enabled == 0 || blocked) {
                     coverage::hit("hub nrap: triggered (no sublink left)");
                     self.goto(phase::SRP_FORCE, &mut fx);
                     self.last = 0;
@@ -400,16 +422,13 @@ impl Nrap {
                     self.last = 2;
                     self.runs = (self.runs + 1).min(15);
                     self.rrun = [0; 16];
-                    for g in ports[..n].iter_mut() {
-                        g.enabled = false;
-                    }
                     return fx;
                 }
             }
             phase::SRP_FORCE => {
                 if nt >= cfg.force_bits {
                     self.goto(phase::SRP_EXCHANGE, &mut fx);
-                    for g in ports.iter_mut() {
+                    for g in ports[n..].iter_mut() {
                         g.enabled = false;
                     }
                     self.rrun = [0; 16];
@@ -434,7 +453,11 @@ impl Nrap {
                         }
                     }
                 }
-                if self.pairs(own_frame, twin_frame, i.b) {
+                // The ACK of the own frame must come through an interlink: the
+                // AND of the enabled sublinks (1 when none is enabled).
+                let twin_b = i.pq | !sub_enabled | ((1u16 << n) - 1) == u16::MAX;
+                let acked = if own_frame { twin_b } else { i.b };
+                if self.pairs(own_frame, twin_frame, acked) {
                     ncnt = (ncnt + 1).min(15);
                 }
                 if ncnt >= cfg.srp_pairs {
@@ -449,7 +472,7 @@ impl Nrap {
                 }
             }
             phase::NRP => {
-                self.drop_erring(ports, n, i);
+                self.drop_erring(ports, n, i, id_frame);
                 if self.pairs(own_frame, twin_frame, i.b) {
                     ncnt = (ncnt + 1).min(15);
                 }
@@ -472,7 +495,7 @@ impl Nrap {
                 }
             }
             phase::DDSP_SEND => {
-                self.drop_erring(ports, n, i);
+                self.drop_erring(ports, n, i, id_frame);
                 if own_frame && !i.b {
                     ncnt = (ncnt + 1).min(15);
                 }

@@ -57,13 +57,15 @@ pub mod ctrl {
 
 /// `NRAP_CFG`: [9:0] `force_bits`, [15:12] `srp_pairs`, [19:16] `nrp_pairs`,
 /// [23:20] `ddsp_frames`; `NRAP_TIME`: [15:0] `srp_bits`, [31:16] `nrp_bits`;
-/// `NRAP_DDSP`: [15:0] `ddsp_bits` (§9.5).
+/// `NRAP_DDSP`: [15:0] `ddsp_bits`, [20:16] `block_frames` (§9.5).
 pub mod nrap_cfg {
     pub const FORCE_MIN: u32 = 64;
     pub const BITS_MIN: u32 = 256;
-    pub const RESET: u32 = 320 | (2 << 12) | (2 << 16) | (8 << 20);
+    pub const RESET: u32 = 64 | (2 << 12) | (2 << 16) | (8 << 20);
     pub const TIME_RESET: u32 = 1024 | (1024 << 16);
-    pub const DDSP_RESET: u32 = 1024;
+    pub const DDSP_RESET: u32 = 1024 | (16 << 16);
+    /// Smallest nonzero `block_frames`.
+    pub const BLOCK_MIN: u32 = 4;
 }
 
 /// `BTR` fields (value - 1 encodings, as the DRCC's `BTR`; [31:15] read 0).
@@ -217,6 +219,7 @@ impl Regs {
             srp_bits: self.nrap_time as u16,
             nrp_bits: (self.nrap_time >> 16) as u16,
             ddsp_bits: self.nrap_ddsp as u16,
+            block_frames: ((self.nrap_ddsp >> 16) & 0x1F) as u8,
         }
     }
 
@@ -316,7 +319,11 @@ impl Regs {
                             self.nrap_time = srp | nrp << 16;
                         }
                         idx::NRAP_DDSP => {
-                            self.nrap_ddsp = (d & 0xFFFF).max(nrap_cfg::BITS_MIN)
+                            let block = match (d >> 16) & 0x1F {
+                                0 => 0,
+                                b => b.max(nrap_cfg::BLOCK_MIN),
+                            };
+                            self.nrap_ddsp = (d & 0xFFFF).max(nrap_cfg::BITS_MIN) | block << 16;
                         }
                         _ => self.restore = d,
                     }

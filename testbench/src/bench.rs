@@ -86,7 +86,7 @@ pub fn measure_hub(
     budget: Duration,
     max_cycles: u64,
 ) -> Result<Measurement, String> {
-    let mut hub = hub_engine(engine, HUB_N, HUB_M)?;
+    let mut hub = hub_engine(engine, 0, HUB_N, HUB_M)?;
     let mut stim = HubStim::new(0xD_CC, HUB_N, HUB_M);
     let mut prev = HubOutputs::default();
     let start = Instant::now();

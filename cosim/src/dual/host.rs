@@ -51,6 +51,7 @@ pub mod reg {
     pub const STATS0: u8 = map::STATS0 as u8;
     pub const STATS1: u8 = map::STATS1 as u8;
     pub const TIMES: u8 = map::TIMES as u8;
+    pub const STAR_STATUS: u8 = map::STAR_STATUS as u8;
     pub const DMR_CFG: u8 = map::DMR_CFG as u8;
     pub const DMR_TIME: u8 = map::DMR_TIME as u8;
     pub const DMR_CS: u8 = map::DMR_CS as u8;

@@ -36,6 +36,7 @@ pub mod hub_reg {
     pub const CTRL_FORCE_DECOUPLE: u32 = find(REGISTERS, "CTRL", "force_decouple").mask();
     pub const CTRL_RECOUPLE: u32 = find(REGISTERS, "CTRL", "recouple").mask();
     pub const CTRL_ACK_INTERDEP: u32 = find(REGISTERS, "CTRL", "ack_interdep").mask();
+    pub const NRAP_STATUS: u8 = map::NRAP_STATUS as u8;
 }
 
 /// `reg.field` placed in a register word (positions from the table).
@@ -66,6 +67,11 @@ pub struct HubConfig {
     /// Fault injection (`CTRL.fi_ack_leak`, hub contract §4.1): the coupler passes
     /// its own nodes' ACK while coupled, and the ACK unit must stop it.
     pub fi_ack_leak: bool,
+    /// Fault injection (`CTRL.fi_no_twin`, hub contract §9.6): the coupler ignores
+    /// the twin's contribution.
+    pub fi_no_twin: bool,
+    /// The Network Reconfiguration Agreement Protocol (`CTRL.nrap_on`, §9).
+    pub nrap_on: bool,
 }
 
 impl Default for HubConfig {
@@ -84,6 +90,8 @@ impl Default for HubConfig {
             // every interrupt
             int_enable: MAP.register("INT_ENABLE").map_or(0, |r| r.defined()),
             fi_ack_leak: false,
+            fi_no_twin: false,
+            nrap_on: true,
         }
     }
 }
@@ -94,6 +102,8 @@ impl HubConfig {
         put("CTRL", "reset_mode", reset_mode as u32)
             | put("CTRL", "ack_interdep", self.ack_interdep as u32)
             | put("CTRL", "fi_ack_leak", self.fi_ack_leak as u32)
+            | put("CTRL", "fi_no_twin", self.fi_no_twin as u32)
+            | put("CTRL", "nrap_on", self.nrap_on as u32)
     }
 
     /// `GUARD_CFG` value.

@@ -59,8 +59,8 @@ pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<StarSystem, String
         .map(|_| drcc_engine(node_kind))
         .collect::<Result<Vec<_>, _>>()?;
     let hubs = [
-        hub_engine(kind, HUB_N, HUB_M)?,
-        hub_engine(kind, HUB_N, HUB_M)?,
+        hub_engine(kind, 0, HUB_N, HUB_M)?,
+        hub_engine(kind, 1, HUB_N, HUB_M)?,
     ];
     let mut sys = StarSystem::new(engines, vec![s.host_config(); spec.nodes], hubs, [s.hub; 2])?;
     submit_traffic(

@@ -14,11 +14,15 @@ pub enum StarFault {
     SublinkStuckDominant,
     InterlinkLost,
     AllInterlinksLost,
+    TransientDecoupling,
+    PermanentDecoupling,
+    HubIgnoresTwin,
+    HubLeaksAck,
 }
 
 impl StarFault {
     /// Every fault, in report order.
-    pub const ALL: [StarFault; 8] = [
+    pub const ALL: [StarFault; 12] = [
         StarFault::None,
         StarFault::UplinkStuckDominant,
         StarFault::UplinkBitFlipping,
@@ -27,6 +31,10 @@ impl StarFault {
         StarFault::SublinkStuckDominant,
         StarFault::InterlinkLost,
         StarFault::AllInterlinksLost,
+        StarFault::TransientDecoupling,
+        StarFault::PermanentDecoupling,
+        StarFault::HubIgnoresTwin,
+        StarFault::HubLeaksAck,
     ];
 
     /// Name as reports and the CLI spell it.
@@ -40,6 +48,10 @@ impl StarFault {
             StarFault::SublinkStuckDominant => "sublink_stuck_dominant",
             StarFault::InterlinkLost => "interlink_lost",
             StarFault::AllInterlinksLost => "all_interlinks_lost",
+            StarFault::TransientDecoupling => "transient_decoupling",
+            StarFault::PermanentDecoupling => "permanent_decoupling",
+            StarFault::HubIgnoresTwin => "hub_ignores_twin",
+            StarFault::HubLeaksAck => "hub_leaks_ack",
         }
     }
 
@@ -48,11 +60,43 @@ impl StarFault {
         StarFault::ALL.into_iter().find(|f| f.name() == s)
     }
 
-    /// One fault (one link, or one interlink as a unit): the product promises no
-    /// frame lost at the application level. Losing every interlink is a multiple
-    /// fault; it promises that no frame completes while the hubs are blocked.
+    /// One fault (one link, one interlink as a unit, or one faulty hub). Losing
+    /// every interlink is a multiple fault. With NRAP (hub contract §9) the product
+    /// promises no frame lost for both kinds.
     pub fn is_single(self) -> bool {
-        self != StarFault::AllInterlinksLost
+        !self.cuts_every_interlink()
+    }
+
+    /// Both interlinks cut: the hubs lose each other and NRAP decides.
+    pub fn cuts_every_interlink(self) -> bool {
+        matches!(
+            self,
+            StarFault::AllInterlinksLost
+                | StarFault::TransientDecoupling
+                | StarFault::PermanentDecoupling
+        )
+    }
+
+    /// A hub's own fault, injected through its `CTRL` (hub, `CTRL` bits) for the
+    /// fault window: `fi_no_twin` (§9.6) or `fi_ack_leak` (§4.1).
+    pub fn hub_injection(self) -> Option<(usize, HubConfig)> {
+        match self {
+            StarFault::HubIgnoresTwin => Some((
+                1,
+                HubConfig {
+                    fi_no_twin: true,
+                    ..HubConfig::default()
+                },
+            )),
+            StarFault::HubLeaksAck => Some((
+                0,
+                HubConfig {
+                    fi_ack_leak: true,
+                    ..HubConfig::default()
+                },
+            )),
+            _ => None,
+        }
     }
 
     /// What is faulty, in words.
@@ -69,7 +113,19 @@ impl StarFault {
                 "hub 2 -> hub 1 sublink of interlink 0 stuck dominant"
             }
             StarFault::InterlinkLost => "interlink 0 cut (both sublinks)",
-            StarFault::AllInterlinksLost => "both interlinks cut (all four sublinks)",
+            StarFault::AllInterlinksLost => {
+                "both interlinks cut (all four sublinks) for 9000 bit times"
+            }
+            StarFault::TransientDecoupling => {
+                "both interlinks cut for 1500 bit times (NRAP recouples)"
+            }
+            StarFault::PermanentDecoupling => "both interlinks cut for good",
+            StarFault::HubIgnoresTwin => {
+                "hub 2 does not couple hub 1's contribution (CTRL.fi_no_twin, paper section 3)"
+            }
+            StarFault::HubLeaksAck => {
+                "hub 1 passes its own nodes' ACK (CTRL.fi_ack_leak); its ACK unit blocks it"
+            }
         }
     }
 
@@ -97,9 +153,12 @@ impl StarFault {
             StarFault::InterlinkLost => {
                 vec![(sub(0, 0), StuckRecessive), (sub(1, 0), StuckRecessive)]
             }
-            StarFault::AllInterlinksLost => (0..HUB_M)
+            StarFault::AllInterlinksLost
+            | StarFault::TransientDecoupling
+            | StarFault::PermanentDecoupling => (0..HUB_M)
                 .flat_map(|j| [(sub(0, j), StuckRecessive), (sub(1, j), StuckRecessive)])
                 .collect(),
+            StarFault::HubIgnoresTwin | StarFault::HubLeaksAck => vec![],
         }
     }
 
@@ -129,8 +188,11 @@ impl StarFault {
             | StarFault::SublinkStuckDominant => Some(1),
             StarFault::UplinkStuckRecessive
             | StarFault::InterlinkLost
-            | StarFault::AllInterlinksLost => Some(2),
+            | StarFault::AllInterlinksLost
+            | StarFault::TransientDecoupling
+            | StarFault::PermanentDecoupling => Some(2),
             StarFault::UplinkBitFlipping => Some(3),
+            StarFault::HubIgnoresTwin | StarFault::HubLeaksAck => None,
         }
     }
 }

@@ -12,9 +12,12 @@
 //! - every isolation that happened (a port isolated that is not the faulty one is a
 //!   false isolation and shows up in the report).
 //!
-//! The nodes transmit through one hub (dual_tx off: the coupled hubs bring every frame
-//! to both controllers of every node, paper section 2.1) and switch hubs after two
-//! failed attempts (k-failed policy).
+//! The nodes are replicated star nodes (DRCC contract §4.4): they transmit through
+//! one hub (the coupled hubs bring every frame to both controllers of every node,
+//! paper section 2.1, and the other channel's echo completes the message), switch
+//! hubs after two failed attempts (k-failed policy), and send the copy on the other
+//! star only when no echo came, i.e. once the hubs are decoupled (`dual_tx`).
+//! The hubs run NRAP (hub contract §9); the report gives each hub's phases.
 
 use drcc_cosim::dual::host::{btr, reg, HostConfig, Policy};
 use drcc_cosim::engine::drcc::DrccEngine;
@@ -77,13 +80,15 @@ impl StarScenario {
             frames_per_node: 24,
             period_bits: 500,
             fault_start_bits: 3_000,
-            // Losing every interlink blocks all traffic (ACK interdependence) until the
-            // hubs decouple, `decouple_bits` after the sublinks were judged silent; the
-            // fault outlasts that so that both stars are seen carrying on alone.
-            fault_bits: if fault == StarFault::AllInterlinksLost {
-                9_000
-            } else {
-                4_000
+            // Losing every interlink blocks all traffic (ACK interdependence) until
+            // NRAP decides (hub contract §9): 9000 bit times outlast a definitive
+            // decoupling, 1500 end during the sublink restoration phase (the hubs
+            // recouple), and a permanent cut outlasts the run.
+            fault_bits: match fault {
+                StarFault::AllInterlinksLost => 9_000,
+                StarFault::TransientDecoupling => 1_500,
+                StarFault::PermanentDecoupling => PERMANENT_BITS,
+                _ => 4_000,
             },
             hub: HubConfig {
                 btr: btr(STAR_BRP, STAR_TSEG1, STAR_TSEG2, STAR_SJW, false, 0),
@@ -98,7 +103,10 @@ impl StarScenario {
             btr: btr(STAR_BRP, STAR_TSEG1, STAR_TSEG2, STAR_SJW, false, 96),
             redundancy: true,
             policy: Policy::KFailed(2),
-            dual_tx: false,
+            // The copy on channel B goes out only when no echo came (DRCC contract
+            // §4.4), i.e. only after the hubs decoupled: then the node sends on both
+            // stars, as it must once NRAP splits the network (hub contract §9).
+            dual_tx: true,
             // One domain: the other channel's echo of an own frame completes it
             // (DRCC contract §4.4).
             star: true,
@@ -136,19 +144,33 @@ impl StarScenario {
     /// and the DRCC's recovery after it, and a tail.
     pub fn run_bits(&self) -> u64 {
         let traffic = self.period_bits * self.frames_per_node as u64 + 2_000;
+        if self.fault_bits >= PERMANENT_BITS {
+            // The fault never ends: the traffic, and time for the last frames.
+            return traffic + 4_000;
+        }
         let fault_end = self.fault_start_bits + self.fault_bits;
         traffic.max(fault_end + self.hub.restore_bits as u64 + 1_408 + 2_000)
     }
 }
 
 /// Bit times after the end of `all_interlinks_lost` at which the hubs' hosts
-/// re-couple them.
+/// re-couple them, when NRAP is off (with NRAP the hubs decide themselves).
 pub const RECOUPLE_AFTER_BITS: u64 = 200;
 
-/// A hub engine by kind.
-pub fn hub_engine(kind: EngineKind, n: usize, m: usize) -> Result<Box<dyn HubEngine>, String> {
+/// A fault window this long outlasts every run: the fault is permanent.
+pub const PERMANENT_BITS: u64 = 1 << 40;
+
+/// A hub engine by kind: hub `hub_id` (0 = hub 1 of the scenarios, `hub.v`; 1 =
+/// hub 2, `hub_b.v`), which decides the identification frame it sends (hub
+/// contract §9.1).
+pub fn hub_engine(
+    kind: EngineKind,
+    hub_id: u8,
+    n: usize,
+    m: usize,
+) -> Result<Box<dyn HubEngine>, String> {
     match kind {
-        EngineKind::Model => drcc_cosim::engine::hub_model::HubModelEngine::new(n, m)
+        EngineKind::Model => drcc_cosim::engine::hub_model::HubModelEngine::new_hub(hub_id, n, m)
             .map(|e| Box::new(e) as Box<dyn HubEngine>),
         EngineKind::Verilator => {
             if (n, m) != (HUB_N, HUB_M) {
@@ -157,11 +179,11 @@ pub fn hub_engine(kind: EngineKind, n: usize, m: usize) -> Result<Box<dyn HubEng
                      {HUB_M} interlinks (asked for {n} and {m}): use --engine model or rust-hdl"
                 ));
             }
-            drcc_cosim::engine::hub_verilator::HubVerilatorEngine::new()
+            drcc_cosim::engine::hub_verilator::HubVerilatorEngine::new_hub(hub_id)
                 .map(|e| Box::new(e) as Box<dyn HubEngine>)
                 .map_err(|e| format!("{e}; {VERILATOR_HINT}"))
         }
-        EngineKind::RustHdl => drcc_cosim::engine::hub_rusthdl::HubRustHdlEngine::new(n, m)
+        EngineKind::RustHdl => drcc_cosim::engine::hub_rusthdl::HubRustHdlEngine::new_hub(hub_id, n, m)
             .map(|e| Box::new(e) as Box<dyn HubEngine>),
     }
 }
@@ -176,10 +198,10 @@ pub fn build_star(s: &StarScenario, kind: EngineKind) -> Result<StarSystem, Stri
     let engines = (0..s.nodes)
         .map(|_| drcc_engine(node_kind))
         .collect::<Result<Vec<Box<dyn DrccEngine>>, _>>()?;
-    let hub = || match (s.ack_units, kind) {
-        (true, _) => hub_engine(kind, HUB_N, HUB_M),
+    let hub = |id: u8| match (s.ack_units, kind) {
+        (true, _) => hub_engine(kind, id, HUB_N, HUB_M),
         (false, EngineKind::Model) => {
-            drcc_cosim::engine::hub_model::HubModelEngine::without_ack_unit(HUB_N, HUB_M)
+            drcc_cosim::engine::hub_model::HubModelEngine::without_ack_unit(id, HUB_N, HUB_M)
                 .map(|e| Box::new(e) as Box<dyn HubEngine>)
         }
         (false, k) => Err(format!(
@@ -187,7 +209,7 @@ pub fn build_star(s: &StarScenario, kind: EngineKind) -> Result<StarSystem, Stri
             k.name()
         )),
     };
-    let hubs = [hub()?, hub()?];
+    let hubs = [hub(0)?, hub(1)?];
     let mut sys = StarSystem::new(engines, vec![s.host_config(); s.nodes], hubs, [s.hub; 2])?;
     let start = s.fault_start_bits * CLOCKS_PER_BIT;
     for (link, kind) in s.fault.links() {

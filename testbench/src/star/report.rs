@@ -14,6 +14,29 @@ pub struct PortEvent {
     pub enabled: bool,
 }
 
+/// A change of a hub's NRAP phase (`nrap_phase` probe, hub contract §9.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NrapEvent {
+    pub cycle: u64,
+    /// 0 = hub 1.
+    pub hub: usize,
+    pub phase: u8,
+}
+
+/// NRAP phase names as the table prints them.
+pub fn phase_name(p: u8) -> &'static str {
+    match p {
+        0 => "RUN",
+        1 => "SRP_FORCE",
+        2 => "SRP_EXCHANGE",
+        3 => "NRP",
+        4 => "DDSP_FORCE",
+        5 => "DDSP_SEND",
+        6 => "SPLIT",
+        _ => "?",
+    }
+}
+
 /// What one run showed.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct StarReport {
@@ -47,6 +70,16 @@ pub struct StarReport {
     pub hub_ports: [Vec<u32>; 2],
     /// Per hub: `ACK_UNIT` at the end (hub contract §4.1).
     pub hub_ack_unit: [u32; 2],
+    /// Per hub: `NRAP_STATUS` at the end (hub contract §9.5).
+    pub hub_nrap: [u32; 2],
+    /// Every NRAP phase change of either hub.
+    pub nrap_events: Vec<NrapEvent>,
+    /// Per node: the hubs' identification frames its host received (not counted as
+    /// application frames). A star node keeps them from its host (DRCC contract
+    /// §4.5), so this stays 0.
+    pub hub_frames: Vec<usize>,
+    /// Per node: `STAR_STATUS` at the end (DRCC contract §4.5: [0] split).
+    pub star_status: Vec<u32>,
 }
 
 impl StarReport {
@@ -77,6 +110,25 @@ impl StarReport {
             .map(|e| e.cycle)
     }
 
+    /// Per node, the domain it follows at the end: true = the hubs split.
+    pub fn node_split(&self) -> Vec<bool> {
+        self.star_status.iter().map(|s| s & 1 == 1).collect()
+    }
+
+    /// The NRAP phase hub `h` is in at the end of the run.
+    pub fn final_phase(&self, h: usize) -> u8 {
+        (self.hub_nrap[h] & 7) as u8
+    }
+
+    /// Clock of hub `h`'s first NRAP trigger at or after `from`, and of the end of
+    /// that run (the next change to RUN or SPLIT), if any.
+    pub fn nrap_run(&self, h: usize, from: u64) -> Option<(u64, Option<(u64, u8)>)> {
+        let mut ev = self.nrap_events.iter().filter(|e| e.hub == h && e.cycle >= from);
+        let start = ev.find(|e| e.phase == 1)?;
+        let end = ev.find(|e| e.phase == 0 || e.phase == 6).map(|e| (e.cycle, e.phase));
+        Some((start.cycle, end))
+    }
+
     /// Isolations of ports other than `targets`.
     pub fn false_isolations(&self, targets: &[(usize, usize)]) -> Vec<PortEvent> {
         self.events
@@ -99,8 +151,8 @@ fn bits(from: u64, to: Option<u64>) -> String {
 /// The star fault scenarios as a Markdown table (`drcc star table`).
 pub fn star_table(kind: EngineKind, cosim: Option<EngineKind>) -> Result<String, String> {
     let mut t = String::from(
-        "| fault | onset -> isolation (bit times) | frames lost (of 288) | duplicated | omissions seen per node | fault end -> restoration (bit times) | other isolations |\n\
-         |---|---|---:|---:|---|---|---|\n",
+        "| fault | onset -> isolation (bit times) | frames lost (of 288) | duplicated | omissions seen per node | fault end -> restoration (bit times) | other isolations | NRAP: phases (bit times after onset) |\n\
+         |---|---|---:|---:|---|---|---|---|\n",
     );
     for f in StarFault::ALL {
         let s = StarScenario::standard(f);
@@ -165,7 +217,7 @@ pub fn table_row(s: &StarScenario, r: &StarReport) -> String {
         .collect();
     let omissions: Vec<String> = (0..s.nodes).map(|i| r.omissions(i).to_string()).collect();
     format!(
-        "| {} ({}) | {} | {} | {} | {} | {} | {} |\n",
+        "| {} ({}) | {} | {} | {} | {} | {} | {} | {} |\n",
         s.fault.name(),
         s.fault.describe(),
         iso,
@@ -181,6 +233,39 @@ pub fn table_row(s: &StarScenario, r: &StarReport) -> String {
             "none".to_string()
         } else {
             others.join("; ")
-        }
+        },
+        nrap_cell(r)
     )
+}
+
+/// Each hub's NRAP phases with the bit time (after the fault's onset) at which each
+/// began, then its final phase; "-" when NRAP never ran.
+pub fn nrap_cell(r: &StarReport) -> String {
+    let mut hubs = Vec::new();
+    for h in 0..2 {
+        let ev: Vec<String> = r
+            .nrap_events
+            .iter()
+            .filter(|e| e.hub == h)
+            .map(|e| {
+                format!(
+                    "{} {}",
+                    phase_name(e.phase),
+                    bits(r.fault_start, Some(e.cycle))
+                )
+            })
+            .collect();
+        if !ev.is_empty() {
+            hubs.push(format!("hub {}: {}", h + 1, ev.join(", ")));
+        }
+    }
+    if hubs.is_empty() {
+        return "-".to_string();
+    }
+    let domains: Vec<&str> = r
+        .node_split()
+        .iter()
+        .map(|&s| if s { "split" } else { "one" })
+        .collect();
+    format!("{}; nodes' STAR_STATUS: {}", hubs.join("; "), domains.join(" / "))
 }

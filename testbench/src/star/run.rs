@@ -26,6 +26,7 @@ pub fn run_star(
     let ask = |sys: &mut StarSystem| {
         for n in 0..sys.len() {
             sys.node_mut(n).host.read(reg::STATS0);
+            sys.node_mut(n).host.read(reg::STAR_STATUS);
         }
         for h in 0..2 {
             let hub = sys.hub_mut(h);
@@ -34,13 +35,27 @@ pub fn run_star(
                 hub.host.read(hub_reg::PORT0 + p as u8);
             }
             hub.host.read(hub_reg::ACK_UNIT);
+            hub.host.read(hub_reg::NRAP_STATUS);
         }
     };
-    // After definitive decoupling only the hubs' host can re-couple them (the paper's
-    // section 5 protocol is not built): both supervisors write `CTRL.recouple` once
-    // the interlinks are back.
-    let recouple_at = (s.fault == StarFault::AllInterlinksLost)
+    // Without NRAP, after a definitive decoupling only the hubs' host can re-couple
+    // them: both supervisors write `CTRL.recouple` once the interlinks are back. With
+    // NRAP (the default) the hubs decide themselves.
+    let recouple_at = (s.fault == StarFault::AllInterlinksLost && !s.hub.nrap_on)
         .then_some(report.fault_end + RECOUPLE_AFTER_BITS * CLOCKS_PER_BIT);
+    // A hub's own fault: its supervisor's CTRL write switches the fault injection on
+    // at the onset and off at the end (every CTRL write takes both bits, §8).
+    let injection = s.fault.hub_injection();
+    let inject = |sys: &mut StarSystem, on: bool| {
+        if let Some((h, fi)) = injection {
+            let c = HubConfig {
+                fi_no_twin: fi.fi_no_twin && on,
+                fi_ack_leak: fi.fi_ack_leak && on,
+                ..s.hub
+            };
+            sys.hub_mut(h).host.write(hub_reg::CTRL, c.ctrl(false));
+        }
+    };
     let recouple = |sys: &mut StarSystem| {
         for h in 0..2 {
             // The configured CTRL (ACK interdependence, fault injection) with the
@@ -52,8 +67,17 @@ pub fn run_star(
     };
     let mut prev_enabled = [0u16; 2];
     let mut prev_decoupled = [false; 2];
+    let mut prev_phase = [0u8; 2];
     let mut cycle = 0u64;
     loop {
+        for (at, on) in [(report.fault_start, true), (report.fault_end, false)] {
+            if cycle == at {
+                inject(&mut main, on);
+                if let Some(o) = other.as_mut() {
+                    inject(o, on);
+                }
+            }
+        }
         if Some(cycle) == recouple_at {
             recouple(&mut main);
             if let Some(o) = other.as_mut() {
@@ -97,13 +121,21 @@ pub fn run_star(
                     report.decoupled_at[h] = Some(cycle);
                 }
             }
+            if p.nrap_phase != prev_phase[h] {
+                report.nrap_events.push(NrapEvent {
+                    cycle,
+                    hub: h,
+                    phase: p.nrap_phase,
+                });
+            }
             prev_enabled[h] = en;
             prev_decoupled[h] = p.decoupled;
+            prev_phase[h] = p.nrap_phase;
         }
         cycle += 1;
         let done = cycle > total
-            && main.nodes().iter().all(|n| !n.host.reads.is_empty())
-            && (0..2).all(|h| main.hub(h).host.reads.len() > HUB_N + HUB_M + 1);
+            && main.nodes().iter().all(|n| n.host.reads.len() >= 2)
+            && (0..2).all(|h| main.hub(h).host.reads.len() > HUB_N + HUB_M + 2);
         if done {
             break;
         }
@@ -125,8 +157,13 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
         let mut seen = vec![vec![0usize; s.frames_per_node]; s.nodes];
         let mut from_others = 0;
         let mut own = 0;
+        let mut hub_frames = 0;
         for got in &n.host.received {
             let f = got.frame;
+            if is_identification_frame(&f) {
+                hub_frames += 1;
+                continue;
+            }
             let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
             if sender < s.nodes
                 && k < s.frames_per_node
@@ -146,6 +183,7 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
         r.received_at
             .push(n.host.received.iter().map(|got| got.cycle).collect());
         r.from_others.push(from_others);
+        r.hub_frames.push(hub_frames);
         r.own.push(own);
         for (sender, counts) in seen.iter().enumerate() {
             if sender == rx_node {
@@ -161,6 +199,8 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
         }
         r.dups_dropped
             .push(n.host.reads.first().map(|x| x.value & 0xFFFF).unwrap_or(0));
+        r.star_status
+            .push(n.host.reads.get(1).map(|x| x.value).unwrap_or(0));
     }
     for h in 0..2 {
         let reads = &sys.hub(h).host.reads;
@@ -172,5 +212,13 @@ fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
             .map(|x| x.value)
             .collect();
         r.hub_ack_unit[h] = reads.get(1 + HUB_N + HUB_M).map_or(0, |x| x.value);
+        r.hub_nrap[h] = reads.get(2 + HUB_N + HUB_M).map_or(0, |x| x.value);
     }
+}
+
+/// A hub's identification frame (hub contract §9.1: base data frame, identifier
+/// 0x000 or 0x001, DLC 0). Nodes receive them while NRAP runs; they are the hubs'
+/// traffic, not the application's.
+pub fn is_identification_frame(f: &Frame) -> bool {
+    !f.ide && !f.rtr && f.id <= 1 && f.dlc == 0
 }

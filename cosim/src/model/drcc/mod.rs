@@ -63,11 +63,12 @@ pub mod main_fsm;
 mod register_file;
 pub mod regs;
 pub mod rx_path;
+pub mod star;
 pub mod tx_queues;
 
 use crate::engine::drcc::{DrccInputs, DrccOutputs, DrccProbes};
 use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Mode};
-use crate::model::{field, ChannelModel};
+use crate::model::{coverage, field, ChannelModel};
 use aux_fsm::{AuxFsm, AuxInputs};
 use dmr::{DmrBlock, DmrInputs};
 use main_fsm::{FsmInputs, MainFsm};
@@ -89,6 +90,8 @@ pub struct DrccModel {
     txq: TxQueues,
     rx: RxPath,
     dmr: DmrBlock,
+    /// The hubs' decision as this star node sees it (§4.5).
+    star: star::StarFollow,
 }
 
 impl Default for DrccModel {
@@ -117,6 +120,7 @@ impl DrccModel {
             txq: TxQueues::default(),
             rx: RxPath::default(),
             dmr: DmrBlock::new(m),
+            star: star::StarFollow::default(),
         }
     }
 
@@ -189,6 +193,7 @@ impl DrccModel {
             self.txq.reset(redundancy, dmr_off);
             self.rx.reset();
             self.dmr.rst();
+            self.star = star::StarFollow::default();
         } else {
             self.edge(i);
         }
@@ -303,6 +308,19 @@ impl DrccModel {
         // other hub.
         let star_on = running && r.star() && self.fsm.attempted;
         let echo = [pa, pb].map(|o| star_on && o.rx_valid && o.rx_frame == self.txq.rd);
+        // The hubs' identification frames (§4.5).
+        let (hubf, domain) = self.star.edge(
+            running && r.star(),
+            [pa.rx_valid, pb.rx_valid],
+            [&pa.rx_frame, &pb.rx_frame],
+        );
+        if domain {
+            coverage::hit("drcc star: the hubs' decision changes the domain");
+            ints |= int::DOMAIN;
+        }
+        if reset_mode {
+            self.star = star::StarFollow::default();
+        }
 
         // Main FSM (§4), on pre-edge values of the aux FSMs and TX queue A.
         let fsm_in = FsmInputs {
@@ -425,8 +443,12 @@ impl DrccModel {
                 rx_valid: if dmr_mode && !reset_mode {
                     dev.rx_deliver
                 } else {
-                    // An echo is the node's own frame, not a reception (§4.4).
-                    [pa.rx_valid && !echo[0], pb.rx_valid && !echo[1]]
+                    // An echo is the node's own frame, not a reception (§4.4); an
+                    // identification frame is the hubs' (§4.5).
+                    [
+                        pa.rx_valid && !echo[0] && !hubf[0],
+                        pb.rx_valid && !echo[1] && !hubf[1],
+                    ]
                 },
             },
             [&pa.rx_frame, &pb.rx_frame],

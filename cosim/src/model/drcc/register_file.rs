@@ -177,6 +177,7 @@ impl DrccModel {
             idx::STATS0 => self.rx.duplicates as u32 | (self.rx.overruns as u32) << 16,
             idx::STATS1 => self.fsm.switches as u32 | (r.recoveries as u32) << 16,
             idx::TIMES => self.fsm.last_tx_time as u32 | (self.fsm.switch_time as u32) << 16,
+            idx::STAR_STATUS => self.star.reg(),
             // DMR registers (dmr_contract.md §2.1); TX_CMD, RX_CMD (write only) and
             // unmapped words read 0.
             _ => self

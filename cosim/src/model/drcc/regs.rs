@@ -43,6 +43,8 @@ pub mod idx {
     pub const MB_MASK: u8 = 33;
     pub const MB_CFG: u8 = 34;
     pub const MB_STATE: u8 = 35;
+    /// Replicated star node: the hubs' decision (§4.5).
+    pub const STAR_STATUS: u8 = 36;
 }
 
 /// `CTRL` fields.
@@ -110,7 +112,9 @@ pub mod int {
     pub const AUX: u32 = 1 << 7;
     /// DMR state or ACL changed (dmr_contract.md §2.1).
     pub const DMR: u32 = 1 << 8;
-    pub const ALL: u32 = 0x1FF;
+    /// The hubs' decision changed (§4.5).
+    pub const DOMAIN: u32 = 1 << 9;
+    pub const ALL: u32 = 0x3FF;
 }
 
 /// `TX_ID` / `RX_ID` fields.

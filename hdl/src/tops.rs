@@ -28,7 +28,7 @@ pub mod verilog;
 
 use crate::channel::can_channel::CanChannel;
 use crate::drcc::{Drcc, DrccM0};
-use crate::hub::hub::Hub4x2;
+use crate::hub::hub::{Hub4x2, HubB4x2};
 use rust_hdl::prelude::*;
 
 /// Direction of a top-level port.
@@ -184,18 +184,38 @@ pub static TOPS: &[Top] = &[
     },
     Top {
         name: "hub",
-        summary: "the ReCANcentrate star hub: coupling, fault treatment, ACK interdependence",
+        summary: "the ReCANcentrate star hub: coupling, fault treatment, ACK interdependence, NRAP; hub A of the replicated star: identification frame 0x000",
         contract: "cosim/src/model/hub_contract.md",
-        params: &[("N", "4"), ("M", "2")],
+        params: &[("HUB_ID", "0"), ("N", "4"), ("M", "2")],
         block: "Hub",
         source_path: "hdl/src/hub/hub.rs",
         source: include_str!("hub/hub.rs"),
-        notes: "N node ports, M interlinks, P = N + M guarded ports (node ports 0..N-1, then\n\
-                the incoming sublinks N..N+M-1). Registers: hub_contract.md section 8.",
+        notes: HUB_NOTES,
         raw_verilog: raw_verilog_of::<Hub4x2>,
         ports: ports_of::<Hub4x2>,
     },
+    Top {
+        name: "hub_b",
+        summary: "hub B of the replicated star: identification frame 0x001",
+        contract: "cosim/src/model/hub_contract.md",
+        params: &[("HUB_ID", "1"), ("N", "4"), ("M", "2")],
+        block: "Hub",
+        source_path: "hdl/src/hub/hub.rs",
+        source: include_str!("hub/hub.rs"),
+        notes: HUB_NOTES,
+        raw_verilog: raw_verilog_of::<HubB4x2>,
+        ports: ports_of::<HubB4x2>,
+    },
 ];
+
+/// The notes of both hubs (they differ only in `HUB_ID`, hub contract §9).
+const HUB_NOTES: &str = "\
+N node ports, M interlinks, P = N + M guarded ports (node ports 0..N-1, then
+the incoming sublinks N..N+M-1). Registers: hub_contract.md section 8 and 9.5,
+C header rtl-out/hub_regs.h (one map for both hubs; ID.hub_id reads HUB_ID).
+hub.v (HUB_ID 0, hub A) and hub_b.v (HUB_ID 1, hub B) differ only in the
+identification frame each sends and recognises (section 9.1): wire each one's
+sublink_out to the other's sublink_in.";
 
 /// The top with this name.
 pub fn top(name: &str) -> Option<&'static Top> {

@@ -36,13 +36,15 @@
     X(uint8_t,  wb_ack_o,      1)  /* Wishbone acknowledge, 1 for the clock after the edge that took the transaction: every access takes 2 clocks. */ \
     X(uint8_t,  irq,           1)  /* Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`. */ \
     X(uint8_t,  downlink,      4)  /* What node i receives, bit i (N bits), 1 = recessive; every bit carries the same value (registers; in the ACK window only the twin hub's contribution while ACK interdependence is on). */ \
-    X(uint8_t,  sublink_out,   2)  /* This hub's contribution (the AND of its enabled node ports), the same on each of the M interlinks, 1 = recessive. Wire it to the twin's `sublink_in`. */ \
+    X(uint8_t,  sublink_out,   2)  /* This hub's contribution (the AND of its enabled node ports and of its NRAP transmitter), the same on each of the M interlinks, 1 = recessive. Wire it to the twin's `sublink_in`. */ \
     X(uint8_t,  coupled,       1)  /* `coupled_q`: the coupled bus value the hub tracks, 1 = recessive. */ \
     X(uint8_t,  sample_point,  1)  /* One-clock pulse, the clock after each sample point of the hub's bit timing. */ \
     X(uint8_t,  trk_state,     2)  /* Frame tracker state: 0 IDLE_WAIT, 1 FRAME, 2 ACK_SLOT, 3 ACK_DELIM. */ \
     X(uint8_t,  ack_window,    1)  /* 1 while the tracker is in the ACK slot or ACK delimiter (the ACK window). */ \
     X(uint8_t,  decoupled,     1)  /* 1 once the hub has decoupled from its twin (sticky until `CTRL.recouple` or reset mode). */ \
-    X(uint8_t,  port_enabled,  6)  /* Bit p = port p enabled (not isolated): node ports 0..N-1, then the incoming sublinks N..N+M-1 (P = N + M bits). */
+    X(uint8_t,  port_enabled,  6)  /* Bit p = port p enabled (not isolated): node ports 0..N-1, then the incoming sublinks N..N+M-1 (P = N + M bits). */ \
+    X(uint8_t,  nrap_phase,    3)  /* NRAP phase (§9.2): 0 RUN, 1 SRP_FORCE, 2 SRP_EXCHANGE, 3 NRP, 4 DDSP_FORCE, 5 DDSP_SEND, 6 SPLIT. */ \
+    X(uint8_t,  hub_tx,        1)  /* The hub's NRAP transmitter `tx_q` (§9.3), 1 = recessive: 1 outside the identification frames and ACKs it sends. */
 // clang-format on
 
 #define DRCC_PORT_FIELD(type, name, width) type name;

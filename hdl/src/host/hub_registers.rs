@@ -1,4 +1,4 @@
-//! The hub register map (hub contract §7, §8; Wishbone conventions of the DRCC
+//! The hub register map (hub contract §7, §8, §9.5; Wishbone conventions of the DRCC
 //! contract §D.2): the one source of truth, in the form of the DRCC's
 //! (`super::map`). The hub's register block (`crate::hub::registers`) decodes
 //! with the indices below and takes its field positions from the table;
@@ -6,8 +6,10 @@
 //! `rtl-out/hub_regs.h` (written by `drcc generate`).
 //!
 //! The hub has N node ports and M interlinks (P = N + M ports). The table
-//! describes the emitted top (N = 4, M = 2): `ID` carries N and M, `STATUS.enabled`
-//! has one bit per port, and `PORT_p` is one register repeated at `PORT0 + p`.
+//! describes the emitted tops (N = 4, M = 2): `ID` carries N and M, `STATUS.enabled`
+//! has one bit per port, and `PORT_p` is one register repeated at `PORT0 + p`. The
+//! two emitted hubs (`hub.v` = hub A, `hub_b.v` = hub B) have the same map; only
+//! `ID.hub_id` differs (its reset value in the table is hub A's, 0).
 
 use super::map::{cfg, cmd, f, Access, Field, Register, RegisterMap};
 use crate::register_enum;
@@ -29,15 +31,20 @@ pub const INT_STATUS: u32 = 7;
 pub const INT_ENABLE: u32 = 8;
 pub const STATS: u32 = 9;
 pub const ACK_UNIT: u32 = 10;
+pub const NRAP_CFG: u32 = 11;
+pub const NRAP_TIME: u32 = 12;
+pub const NRAP_DDSP: u32 = 13;
+pub const NRAP_STATUS: u32 = 14;
 /// `PORT_p` is at word index `PORT0 + p` (p < N + M).
 pub const PORT0: u32 = 16;
 
 /// `ID` without the shape: "HU" in the two upper bytes.
 pub const ID_BASE: u32 = 0x4855_0000;
 
-/// The `ID` value of a hub with `n` node ports and `m` interlinks.
-pub const fn id_value(n: u32, m: u32) -> u32 {
-    ID_BASE | (n << 8) | m
+/// The `ID` value of hub `hub_id` (0 = hub A, 1 = hub B) with `n` node ports and
+/// `m` interlinks.
+pub const fn id_value(hub_id: u32, n: u32, m: u32) -> u32 {
+    ID_BASE | (hub_id << 12) | (n << 8) | m
 }
 
 /// Smallest stored stuck-dominant threshold (`GUARD_CFG.sd_run_*` writes below
@@ -45,6 +52,18 @@ pub const fn id_value(n: u32, m: u32) -> u32 {
 pub const SD_MIN: u32 = 14;
 /// Smallest stored port error counter limit (`BF_CFG.bf_*`, contract §8).
 pub const BF_MIN: u32 = 8;
+/// Smallest stored NRAP force time (`NRAP_CFG.force_bits`, contract §9.5): above
+/// the largest `sd_run_sub`, 63, so the twin always isolates a forced sublink.
+pub const FORCE_MIN: u32 = 64;
+/// Smallest stored NRAP phase time (`NRAP_TIME.srp_bits`, `NRAP_TIME.nrp_bits`,
+/// `NRAP_DDSP.ddsp_bits`, contract §9.5).
+pub const NRAP_BITS_MIN: u32 = 256;
+/// Smallest stored NRAP count (`NRAP_CFG.srp_pairs`, `nrp_pairs`, `ddsp_frames`:
+/// 0 stores 1, §9.5).
+pub const NRAP_COUNT_MIN: u32 = 1;
+/// Smallest stored non-zero `NRAP_DDSP.block_frames` (1..3 store 4; 0 stays,
+/// the blocked-network trigger off, §9.5).
+pub const BLOCK_MIN: u32 = 4;
 
 register_enum! {
     /// Frame tracker state (`STATUS.trk`, contract §5).
@@ -55,6 +74,35 @@ register_enum! {
         Frame = 1 => "FRAME",
         AckSlot = 2 => "ACK_SLOT",
         AckDelim = 3 => "ACK_DELIM",
+    }
+}
+
+register_enum! {
+    /// NRAP phase (`NRAP_STATUS.nrap`, the `nrap_phase` probe, contract §9.2).
+    pub enum NrapPhase {
+        /// coupled (or NRAP off)
+        Run = 0 => "RUN",
+        /// sublink restoration: own contribution forced dominant
+        SrpForce = 1 => "SRP_FORCE",
+        /// sublink restoration: identification frames exchanged
+        SrpExchange = 2 => "SRP_EXCHANGE",
+        /// node restoration
+        Nrp = 3 => "NRP",
+        /// definitive decoupling signalling: own contribution forced dominant
+        DdspForce = 4 => "DDSP_FORCE",
+        /// definitive decoupling signalling: own identification frames
+        DdspSend = 5 => "DDSP_SEND",
+        /// definitively decoupled
+        Split = 6 => "SPLIT",
+    }
+}
+
+register_enum! {
+    /// Whose identification frame reached its ACK slot last (`NRAP_STATUS.last`, §9.2).
+    pub enum NrapLast {
+        None = 0 => "NONE",
+        Own = 1 => "OWN",
+        Twin = 2 => "TWIN",
     }
 }
 
@@ -88,6 +136,7 @@ const INT_FIELDS: &[Field] = &[
         0,
         "the ACK unit turned a dominant downlink bit recessive (§4.1, once per ACK window)",
     ),
+    f("nrap", 5, 1, 0, "the NRAP phase changed (§9)"),
 ];
 
 /// The register map, in index order (`PORT0` stands for the block `PORT_p`).
@@ -96,10 +145,11 @@ pub const REGISTERS: &[Register] = &[
         name: "ID",
         index: ID,
         access: Access::Ro,
-        desc: "Identification: \"HU\", N, M",
+        desc: "Identification: \"HU\", hub A / B, N, M",
         fields: &[
             f("m", 0, 8, M, "interlinks M"),
-            f("n", 8, 8, N, "node ports N"),
+            f("n", 8, 4, N, "node ports N"),
+            f("hub_id", 12, 4, 0, "0 = hub A (hub.v), 1 = hub B (hub_b.v): the identification frame it sends (§9.1)"),
             f("hu", 16, 16, ID_BASE >> 16, "0x4855 (\"HU\")"),
         ],
     },
@@ -110,10 +160,12 @@ pub const REGISTERS: &[Register] = &[
         desc: "Control; commands act only with reset_mode 0 before the write and in it",
         fields: &[
             f("reset_mode", 0, 1, 1, "1 = reset mode: a transparent two-stage AND star"),
-            cmd("force_decouple", 1, "decouple now"),
-            cmd("recouple", 2, "recouple and enable every sublink; both commands in one write are refused"),
+            cmd("force_decouple", 1, "decouple now (NRAP on: NRAP phase SPLIT)"),
+            cmd("recouple", 2, "recouple and enable every sublink (NRAP phase RUN); both commands in one write are refused"),
             f("fi_ack_leak", 3, 1, 0, "fault injection (§4.1): the coupler ignores ACK interdependence and passes its own nodes' ACK; taken at every write"),
+            f("fi_no_twin", 4, 1, 0, "fault injection (§9.6): the coupler takes the twin's contribution as recessive; taken at every write"),
             cfg("ack_interdep", 8, 1, 1, "ACK interdependence (ReCANcentrate paper section 4)"),
+            cfg("nrap_on", 9, 1, 1, "Network Reconfiguration Agreement Protocol (§9; 0: the hub decouples after decouple_bits, §7)"),
         ],
     },
     Register {
@@ -156,7 +208,7 @@ pub const REGISTERS: &[Register] = &[
         desc: "Restoration and decoupling times in bit times; writable only in reset mode",
         fields: &[
             cfg("restore_bits", 0, 16, 1408, "symptom-free bit times before an isolated port is restored (0 = never)"),
-            cfg("decouple_bits", 16, 16, 4096, "bit times without an enabled sublink before definitive decoupling (0 = never)"),
+            cfg("decouple_bits", 16, 16, 4096, "bit times without an enabled sublink before definitive decoupling, with NRAP off (0 = never)"),
         ],
     },
     Register {
@@ -207,6 +259,53 @@ pub const REGISTERS: &[Register] = &[
         ],
     },
     Register {
+        name: "NRAP_CFG",
+        index: NRAP_CFG,
+        access: Access::Rw,
+        desc: "NRAP force time, pair and frame counts (§9.5); writable only in reset mode",
+        fields: &[
+            cfg("force_bits", 0, 10, 64, "bit times the own contribution is forced dominant in SRP_FORCE and DDSP_FORCE (writes below 64 store 64; 320 forces a transmitting node bus-off, as the seed does)"),
+            cfg("srp_pairs", 12, 4, 2, "pairs (hub A's then hub B's identification frame, both acknowledged) that end SRP_EXCHANGE (0 stores 1)"),
+            cfg("nrp_pairs", 16, 4, 2, "pairs that end NRP in RUN (0 stores 1)"),
+            cfg("ddsp_frames", 20, 4, 8, "own identification frames that end DDSP_SEND (0 stores 1)"),
+        ],
+    },
+    Register {
+        name: "NRAP_TIME",
+        index: NRAP_TIME,
+        access: Access::Rw,
+        desc: "NRAP time-outs in bit times (§9.5); writable only in reset mode",
+        fields: &[
+            cfg("srp_bits", 0, 16, 1024, "SRP_EXCHANGE time-out: then DDSP_FORCE (writes below 256 store 256)"),
+            cfg("nrp_bits", 16, 16, 1024, "NRP time-out: then DDSP_FORCE (writes below 256 store 256)"),
+        ],
+    },
+    Register {
+        name: "NRAP_DDSP",
+        index: NRAP_DDSP,
+        access: Access::Rw,
+        desc: "NRAP definitive decoupling time-out in bit times, blocked-network trigger (§9.5); writable only in reset mode",
+        fields: &[
+            cfg("ddsp_bits", 0, 16, 1024, "DDSP_SEND time-out: then SPLIT (writes below 256 store 256)"),
+            cfg("block_frames", 16, 5, 16, "frames in a row with an error flag at their ACK delimiter that start NRAP from RUN (0 = off; writes 1..3 store 4)"),
+        ],
+    },
+    Register {
+        name: "NRAP_STATUS",
+        index: NRAP_STATUS,
+        access: Access::Ro,
+        desc: "NRAP state (§9.2)",
+        fields: &[
+            f("nrap", 0, 3, 0, "phase").coded(NrapPhase::ENCODING),
+            f("outcome", 3, 1, 0, "1: the last NRAP ended in RUN, 0: in SPLIT (cleared by rst only)"),
+            f("runs", 4, 4, 0, "NRAP runs started (saturating, cleared by rst only)"),
+            f("ncnt", 8, 4, 0, "pairs (SRP_EXCHANGE, NRP) or own frames (DDSP_SEND) counted in this phase"),
+            f("last", 12, 2, 0, "whose identification frame reached its ACK slot last").coded(NrapLast::ENCODING),
+            f("half", 14, 1, 0, "hub A's frame of a pair was acknowledged, hub B's is awaited"),
+            f("nt", 16, 16, 0, "SAMPLE edges in this phase (saturating)"),
+        ],
+    },
+    Register {
         name: "PORT0",
         index: PORT0,
         access: Access::Ro,
@@ -227,23 +326,29 @@ pub static MAP: RegisterMap = RegisterMap {
     prefix: "HUB",
     header: "hub_regs.h",
     source: "hdl/src/host/hub_registers.rs",
-    intro: "Behaviour: `cosim/src/model/hub_contract.md` §7, §8.\n\n\
+    intro: "Behaviour: `cosim/src/model/hub_contract.md` §7, §8, §9.\n\n\
         Wishbone B4 classic slave as the DRCC's (`docs/registers.md`): 32-bit words, \
         `wb_adr_i` is the word index, every access takes two clocks (request, ack), \
-        unmapped addresses (11..15 and from 16 + N + M) read 0. A write to a read-only or \
+        unmapped addresses (15 and from 16 + N + M) read 0. A write to a read-only or \
         unmapped address, a cfg field written outside reset mode, a CTRL write that changes \
-        `ack_interdep` outside reset mode or carries both commands sets \
+        `ack_interdep` or `nrap_on` outside reset mode or carries both commands sets \
         `INT_STATUS.illegal`. `INT_STATUS`/`INT_ENABLE` are kept in reset mode.\n\n\
-        The hub has N node ports and M interlinks; this page describes the emitted top, \
-        N = 4 and M = 2. `PORT0` stands for the repeated register `PORT_p` at index \
+        The hub has N node ports and M interlinks; this page describes the emitted tops, \
+        N = 4 and M = 2: hub A (`hub.v`, `ID.hub_id` = 0) and hub B (`hub_b.v`, \
+        `ID.hub_id` = 1), whose maps differ only there. `PORT0` stands for the repeated register `PORT_p` at index \
         16 + p (offset 0x40 + 4p), p < N + M.",
     registers: REGISTERS,
     lists: &[],
     defines: &[
-        ("ID_VALUE", id_value(N, M)),
+        ("ID_VALUE", id_value(0, N, M)),
+        ("ID_VALUE_B", id_value(1, N, M)),
         ("PORTS", N + M),
         ("SD_MIN", SD_MIN),
         ("BF_MIN", BF_MIN),
+        ("FORCE_MIN", FORCE_MIN),
+        ("NRAP_BITS_MIN", NRAP_BITS_MIN),
+        ("NRAP_COUNT_MIN", NRAP_COUNT_MIN),
+        ("BLOCK_MIN", BLOCK_MIN),
     ],
 };
 
@@ -288,7 +393,22 @@ mod tests {
             register("RESTORE_CFG").unwrap().reset_value(),
             1408 | (4096 << 16)
         );
-        assert_eq!(register("CTRL").unwrap().reset_value(), 0x101);
+        assert_eq!(register("CTRL").unwrap().reset_value(), 0x301);
+        assert_eq!(id_value(1, N, M), 0x4855_1402);
+        // contract §9.5
+        assert_eq!(
+            register("NRAP_CFG").unwrap().reset_value(),
+            64 | (2 << 12) | (2 << 16) | (8 << 20)
+        );
+        assert_eq!(
+            register("NRAP_TIME").unwrap().reset_value(),
+            1024 | (1024 << 16)
+        );
+        assert_eq!(
+            register("NRAP_DDSP").unwrap().reset_value(),
+            1024 | (16 << 16)
+        );
+        assert_eq!(register("INT_ENABLE").unwrap().defined(), 0x3F);
         let h = c_header();
         assert!(h.contains("#define HUB_PORT0_OFFSET 0x40u"));
         assert!(h.contains("#define HUB_PORT_OFFSET(p)"));

@@ -6,9 +6,9 @@
 //! events and statistics stay unconnected), and the `downlink` output register.
 //!
 //! From the hub it reads only the configuration (the captured bit timing, the same
-//! capture as the hub's BTL, and `ack_interdep`), the `enabled` mask and
-//! `decoupled` (registers, values before the edge) and `dl_next`, the value the
-//! coupler would put on the downlinks (`super::coupler`). Rules (§4.1):
+//! capture as the hub's BTL, and `ack_interdep`), the `enabled` mask, `decoupled`
+//! and NRAP's `active` (registers, values before the edge) and `dl_next`, the
+//! value the coupler would put on the downlinks (`super::coupler`). Rules (§4.1):
 //!
 //! ```text
 //! u_s1 <= pins ; u_in_s <= u_s1                                  // reset 1
@@ -16,7 +16,7 @@
 //! u_twin = AND over sublink ports of (u_in_s | !enabled)         // empty AND = 1
 //! u_view_q <= decoupled ? u_own : u_own & u_twin                 // reset 1
 //! u_window = (u_trk == ACK_SLOT) | (u_trk == ACK_DELIM)
-//! guard    = u_window & ack_interdep & !decoupled
+//! guard    = u_window & ack_interdep & !decoupled & !nrap_active   // §9
 //! downlink <= guard ? (dl_next | u_twin) : dl_next               // reset 1
 //! ```
 //!
@@ -28,6 +28,9 @@
 //!   `trk_rst` and `btl_rst`); `u_blocked` is held at 0 with the tracker; `blocks`
 //!   keeps its value (it clears with `rst` only). The synchronizers, `u_view_q` and
 //!   `downlink` run in reset mode too.
+//!
+//! `u_own` does not see the hub's NRAP transmitter (§9.4: it is the unit's own view
+//! of the nodes); the unit is transparent while NRAP is active.
 //!
 //! In a correct hub the unit changes nothing: `u_view_q` equals `coupled_q` at
 //! every clock, so `u_window` equals `ack_window`, and inside it `dl_next` already
@@ -75,6 +78,8 @@ pub struct AckUnit<const N: usize, const M: usize, const P: usize> {
     pub enabled: Signal<In, Bits<P>>,
     /// The hub is decoupled (§7).
     pub decoupled: Signal<In, Bit>,
+    /// NRAP is active (§9.2, phase 1..=5): the unit is transparent.
+    pub nrap_active: Signal<In, Bit>,
     /// The coupler's next downlink value (§3's right-hand side), combinational.
     pub dl_next: Signal<In, Bit>,
     // ---- to the register block (§8 `ACK_UNIT`, `INT_STATUS.ack_unit`) ----
@@ -138,6 +143,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for AckUnit<N, M, P
             ack_interdep: Default::default(),
             enabled: Default::default(),
             decoupled: Default::default(),
+            nrap_active: Default::default(),
             dl_next: Default::default(),
             blocks: Default::default(),
             u_window: Default::default(),
@@ -197,7 +203,10 @@ impl<const N: usize, const M: usize, const P: usize> Logic for AckUnit<N, M, P> 
         // §4.1 u_window and guard, from the unit's registered tracker state
         self.u_win.next = (self.u_trk.trk.val() == self.s_ack.val())
             | (self.u_trk.trk.val() == self.s_delim.val());
-        self.guard.next = self.u_win.val() & self.ack_interdep.val() & !self.decoupled.val();
+        self.guard.next = self.u_win.val()
+            & self.ack_interdep.val()
+            & !self.decoupled.val()
+            & !self.nrap_active.val();
         // §4.1 downlink: inside the guard a dominant bit needs a dominant twin
         if self.dl_next.val() | (self.guard.val() & self.u_twin.val()) {
             self.downlink_q.d.next = self.ones_n.val();

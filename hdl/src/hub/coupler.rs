@@ -1,7 +1,8 @@
 //! Coupler of the hub (ReCANcentrate paper section 2 "two-stage AND coupling",
 //! section 4 "ACK interdependence"; hub contract §2, §3, §4): the two-flip-flop
 //! synchronizer and the judged copy `port_q` of every port, stage 1 (the hub's own
-//! contribution: AND of the enabled node ports), stage 2 (AND with the twin hub's
+//! contribution: AND of the enabled node ports and of the NRAP transmitter, §9.4:
+//! `tx_q & !forcing`), stage 2 (AND with the twin hub's
 //! contribution: the enabled incoming sublinks, unless decoupled), the registered
 //! outputs `coupled_q` and `sublink_out`, and `dl_next`: the value the coupler
 //! would put on the downlinks (the right-hand side of §3's `downlink <=`: only the
@@ -9,7 +10,10 @@
 //! downlink register itself belongs to the ACK unit (§4.1, `super::ack_unit`),
 //! which may only make that value recessive. Fault injection `CTRL.fi_ack_leak`
 //! (§4.1): the coupler ignores ACK interdependence (`dl_next = view` inside the
-//! window too). Every register resets to 1 (recessive); an empty AND is 1.
+//! window too); `CTRL.fi_no_twin` (§9.6): the twin's contribution is taken as
+//! recessive (`twin = 1`). A hub that decided on definitive decoupling (NRAP
+//! `DDSP_SEND` or `SPLIT`, `quiet_twin`, §9.4) keeps `sublink_out` recessive.
+//! Every register resets to 1 (recessive); an empty AND is 1.
 
 use rust_hdl::prelude::*;
 
@@ -27,10 +31,17 @@ pub struct Coupler<const N: usize, const M: usize> {
     pub node_en: Signal<In, Bits<N>>,
     pub sub_en: Signal<In, Bits<M>>,
     pub decoupled: Signal<In, Bit>,
+    /// The hub's own transmitter in stage 1, `tx_q & !forcing` (§9.4; registers),
+    /// 1 = recessive.
+    pub tx_own: Signal<In, Bit>,
     /// `ack_window & ack_interdep & !decoupled` (§3).
     pub ack_mask: Signal<In, Bit>,
     /// `CTRL.fi_ack_leak` (§4.1 fault injection): ignore `ack_mask`.
     pub fi_ack_leak: Signal<In, Bit>,
+    /// `CTRL.fi_no_twin` (§9.6 fault injection): `twin = 1`.
+    pub fi_no_twin: Signal<In, Bit>,
+    /// `quiet_twin` (§9.4): `sublink_out <= 1`.
+    pub quiet_twin: Signal<In, Bit>,
     // to the ACK unit (§4.1): the next downlink value, combinational
     /// `(ack_mask & !fi_ack_leak) ? twin : view`, 1 = recessive.
     pub dl_next: Signal<Out, Bit>,
@@ -68,8 +79,11 @@ impl<const N: usize, const M: usize> Default for Coupler<N, M> {
             node_en: Default::default(),
             sub_en: Default::default(),
             decoupled: Default::default(),
+            tx_own: Default::default(),
             ack_mask: Default::default(),
             fi_ack_leak: Default::default(),
+            fi_no_twin: Default::default(),
+            quiet_twin: Default::default(),
             dl_next: Default::default(),
             coupled: Default::default(),
             node_q: Default::default(),
@@ -105,9 +119,10 @@ impl<const N: usize, const M: usize> Logic for Coupler<N, M> {
         self.sub_s1.d.next = self.sublink_in.val();
         self.sub_s.d.next = self.sub_s1.q.val();
         self.sub_pq.d.next = self.sub_s.q.val();
-        // §3 stage 1 (own) and the twin's contribution: isolated ports are recessive
-        self.own.next = (self.node_s.q.val() | !self.node_en.val()).all();
-        self.twin.next = (self.sub_s.q.val() | !self.sub_en.val()).all();
+        // §3 stage 1 (own, with the NRAP transmitter, §9.4) and the twin's
+        // contribution: isolated ports are recessive
+        self.own.next = (self.node_s.q.val() | !self.node_en.val()).all() & self.tx_own.val();
+        self.twin.next = (self.sub_s.q.val() | !self.sub_en.val()).all() | self.fi_no_twin.val();
         // §3 stage 2
         if self.decoupled.val() {
             self.view.next = self.own.val();
@@ -115,7 +130,7 @@ impl<const N: usize, const M: usize> Logic for Coupler<N, M> {
             self.view.next = self.own.val() & self.twin.val();
         }
         self.coupled_q.d.next = self.view.val();
-        if self.own.val() {
+        if self.own.val() | self.quiet_twin.val() {
             self.sub_out_q.d.next = self.ones_m.val();
         } else {
             self.sub_out_q.d.next = self.zero_m.val();
@@ -172,6 +187,7 @@ mod tests {
         u.sub_en.next = 0x3.into();
         u.uplink.next = 0xF.into();
         u.sublink_in.next = 0x3.into();
+        u.tx_own.next = true;
         u.rst.next = true;
         clock(&mut u);
         u.rst.next = false;
@@ -232,5 +248,33 @@ mod tests {
         u.ack_mask.next = false;
         clock(&mut u);
         assert!(u.dl_next.val(), "decoupled: own star only");
+    }
+
+    #[test]
+    fn nrap_transmitter_quiet_twin_and_fi_no_twin() {
+        // §9.4: the transmitter joins stage 1 and reaches sublink_out and
+        // coupled_q one edge later
+        let mut u = fresh();
+        u.tx_own.next = false;
+        clock(&mut u);
+        assert_eq!(u.sublink_out.val().to_u64(), 0x0);
+        assert!(!u.coupled.val());
+        // §9.4: quiet_twin keeps the sublinks recessive
+        u.quiet_twin.next = true;
+        clock(&mut u);
+        assert_eq!(u.sublink_out.val().to_u64(), 0x3);
+        assert!(!u.coupled.val(), "the own bus still sees the transmitter");
+        u.quiet_twin.next = false;
+        u.tx_own.next = true;
+        clock(&mut u);
+        // §9.6: fi_no_twin takes the twin's contribution as recessive
+        u.sublink_in.next = 0x2.into(); // the twin dominant on interlink 0
+        for _ in 0..3 {
+            clock(&mut u);
+        }
+        assert!(!u.coupled.val());
+        u.fi_no_twin.next = true;
+        clock(&mut u);
+        assert!(u.coupled.val() && u.dl_next.val());
     }
 }

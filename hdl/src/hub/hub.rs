@@ -1,28 +1,40 @@
-//! The `hub` top: the ReCANcentrate star hub (ReCANcentrate paper sections 2-5),
-//! exactly as fixed clock by clock by `cosim/src/model/hub_contract.md`. N node
-//! ports (uplink/downlink pairs, 2..=8) and M interlinks to the twin hub
-//! (sublink_in/sublink_out pairs, 1..=4); P = N + M guarded ports (node ports
-//! 0..N, then the incoming sublinks N..N+M).
+//! The `hub` and `hub_b` tops: the ReCANcentrate star hub (ReCANcentrate paper
+//! sections 2-5), exactly as fixed clock by clock by
+//! `cosim/src/model/hub_contract.md`. N node ports (uplink/downlink pairs, 2..=8)
+//! and M interlinks to the twin hub (sublink_in/sublink_out pairs, 1..=4); P = N +
+//! M guarded ports (node ports 0..N, then the incoming sublinks N..N+M). `H` is
+//! `HUB_ID` (§9): 0 = hub A (`hub.v`), 1 = hub B (`hub_b.v`); the two differ only in
+//! the identification frame they send (`ID.hub_id` and the ROMs of §9.1).
 //!
-//! Blocks: the Wishbone register block with the decoupling state (§7, §8), the
-//! coupler (§2-§4), the ACK unit (§4.1: the bus guardian that owns the downlink
-//! register; it gets the pins, the captured bit timing, `ack_interdep`, the
-//! enabled mask, `decoupled` and the coupler's `dl_next`, nothing else), the
-//! channel's bit timing logic and configuration capture on
-//! `coupled_q` (§5: `tx = 1`, `triple = 0`, `hard_sync_enable = (trk ==
-//! IDLE_WAIT)`, held in reset by `rst | reset_mode | reset_mode_q` exactly as the
-//! DRCC holds its channels), the frame tracker (§5) and one guard per port (§6).
-//! The tracker and the guards are held at their reset values by `rst |
+//! Blocks: the Wishbone register block with the decoupling state (§7, §8) and the
+//! cfg registers beside it (§8, §9.5), the coupler (§2-§4, §9.4: the NRAP
+//! transmitter `tx_q & !forcing` joins the own contribution), the ACK unit (§4.1:
+//! the bus guardian that owns the downlink register; it gets the pins, the
+//! captured bit timing, `ack_interdep`, the enabled mask, `decoupled`, NRAP's
+//! `active` and the coupler's `dl_next`, nothing else), the channel's bit timing
+//! logic and configuration capture on `coupled_q` (§5: `tx = tx_q`, `triple = 0`,
+//! `hard_sync_enable = (trk == IDLE_WAIT)`, held in reset by `rst | reset_mode |
+//! reset_mode_q` exactly as the DRCC holds its channels), the frame tracker (§5),
+//! one guard per port (§6, with the per-port NRAP field `rrun`), the NRAP phase machine
+//! (§9.2) and the identification-frame transmitter and recogniser (§9.1, §9.3) at
+//! the BTL's bit-start and SAMPLE edges. The tracker, the guards, the phase
+//! machine and the transmitter are held at their reset values by `rst |
 //! reset_mode` (`reset_mode` is the register value, i.e. the value before the
-//! edge).
+//! edge); NRAP's `runs` and `outcome` clear with `rst` only.
 //!
-//! Parametrisation: const generics `N`, `M` and `P` (stable Rust cannot write
-//! `N + M` in a type, so `P` is passed and checked to equal `N + M`); the guards
-//! are arrays of blocks and the per-port wiring is written with rust-hdl `for`
-//! loops, which the Verilog generator unrolls.
+//! While NRAP is active no rule of §6 runs (every guard is frozen, as the sublink
+//! guards are while decoupled) and the ACK unit is transparent.
+//!
+//! Parametrisation: const generics `N`, `M`, `P` and `H` (stable Rust cannot write
+//! `N + M` in a type, so `P` is passed and checked to equal `N + M`; `H` defaults
+//! to 0, hub A); the guards are arrays of blocks and the per-port wiring is written
+//! with rust-hdl `for` loops, which the Verilog generator unrolls.
 
 use super::ack_unit::AckUnit;
+use super::config::HubConfig;
 use super::coupler::Coupler;
+use super::id_frame::IdFrame;
+use super::nrap::Nrap;
 use super::port_guard::PortGuard;
 use super::registers::HubRegs;
 use super::tracker::FrameTracker;
@@ -30,9 +42,10 @@ use crate::channel::btl::BitTimingLogic;
 use crate::channel::config::ChannelConfig;
 use rust_hdl::prelude::*;
 
-/// The hub top with N node ports, M interlinks and P = N + M ports.
+/// The hub top with N node ports, M interlinks and P = N + M ports; hub A (`H` =
+/// 0) or hub B (`H` = 1).
 #[derive(LogicBlock)]
-pub struct Hub<const N: usize, const M: usize, const P: usize> {
+pub struct Hub<const N: usize, const M: usize, const P: usize, const H: usize = 0> {
     // clock and reset
     /// Clock. Every register changes at its rising edge; the hub's bit timing
     /// (register `BTR`) is counted in its periods.
@@ -70,8 +83,9 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     /// while ACK interdependence is on).
     pub downlink: Signal<Out, Bits<N>>,
     // interlinks to the twin hub: bit j belongs to interlink j
-    /// This hub's contribution (the AND of its enabled node ports), the same on
-    /// each of the M interlinks, 1 = recessive. Wire it to the twin's `sublink_in`.
+    /// This hub's contribution (the AND of its enabled node ports and of its NRAP
+    /// transmitter), the same on each of the M interlinks, 1 = recessive. Wire it
+    /// to the twin's `sublink_in`.
     pub sublink_out: Signal<Out, Bits<M>>,
     /// The twin hub's contribution, bit j = interlink j (M bits), 1 = recessive;
     /// each is synchronized by two flip-flops.
@@ -91,8 +105,15 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     /// Bit p = port p enabled (not isolated): node ports 0..N-1, then the incoming
     /// sublinks N..N+M-1 (P = N + M bits).
     pub port_enabled: Signal<Out, Bits<P>>,
+    /// NRAP phase (§9.2): 0 RUN, 1 SRP_FORCE, 2 SRP_EXCHANGE, 3 NRP, 4 DDSP_FORCE,
+    /// 5 DDSP_SEND, 6 SPLIT.
+    pub nrap_phase: Signal<Out, Bits<3>>,
+    /// The hub's NRAP transmitter `tx_q` (§9.3), 1 = recessive: 1 outside the
+    /// identification frames and ACKs it sends.
+    pub hub_tx: Signal<Out, Bit>,
     // blocks
-    regs: HubRegs<N, M, P>,
+    regs: HubRegs<N, M, P, H>,
+    hub_cfg: HubConfig,
     coupler: Coupler<N, M>,
     ack_unit: AckUnit<N, M, P>,
     cfg_regs: ChannelConfig,
@@ -100,11 +121,15 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     tracker: FrameTracker,
     node_guards: [PortGuard; N],
     sub_guards: [PortGuard; M],
+    nrap: Nrap<H>,
+    id_frame: IdFrame<H>,
     // glue
     guard_rst: Signal<Local, Bit>,
     btl_rst: Signal<Local, Bit>,
     ack_win: Signal<Local, Bit>,
+    ctrl_cmd: Signal<Local, Bit>,
     recouple: Signal<Local, Bit>,
+    force_cmd: Signal<Local, Bit>,
     node_en: Signal<Local, Bits<N>>,
     sub_en: Signal<Local, Bits<M>>,
     port_en: Signal<Local, Bits<P>>,
@@ -125,7 +150,7 @@ pub struct Hub<const N: usize, const M: usize, const P: usize> {
     zero32: Constant<Bits<32>>,
 }
 
-impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
+impl<const N: usize, const M: usize, const P: usize, const H: usize> Default for Hub<N, M, P, H> {
     fn default() -> Self {
         assert!((2..=8).contains(&N), "hub: N node ports must be 2..=8");
         assert!((1..=4).contains(&M), "hub: M interlinks must be 1..=4");
@@ -152,7 +177,10 @@ impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
             ack_window: Default::default(),
             decoupled: Default::default(),
             port_enabled: Default::default(),
+            nrap_phase: Default::default(),
+            hub_tx: Default::default(),
             regs: Default::default(),
+            hub_cfg: Default::default(),
             coupler: Default::default(),
             ack_unit: Default::default(),
             cfg_regs: Default::default(),
@@ -160,10 +188,14 @@ impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
             tracker: Default::default(),
             node_guards: std::array::from_fn(|_| Default::default()),
             sub_guards: std::array::from_fn(|_| Default::default()),
+            nrap: Default::default(),
+            id_frame: Default::default(),
             guard_rst: Default::default(),
             btl_rst: Default::default(),
             ack_win: Default::default(),
+            ctrl_cmd: Default::default(),
             recouple: Default::default(),
+            force_cmd: Default::default(),
             node_en: Default::default(),
             sub_en: Default::default(),
             port_en: Default::default(),
@@ -186,7 +218,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for Hub<N, M, P> {
     }
 }
 
-impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
+impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for Hub<N, M, P, H> {
     #[hdl_gen]
     fn update(&mut self) {
         // reset mode holds the tracker and the guards (value before the edge); the
@@ -198,18 +230,20 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.ack_win.next = (self.tracker.trk.val() == self.s_ack.val())
             | (self.tracker.trk.val() == self.s_delim.val());
 
-        // CTRL.recouple (§8): a CTRL write with bit 2, not bit 1, and reset_mode 0
-        // before the write and in the written value (the register block takes
-        // the rest of the command)
-        self.recouple.next = self.wb_cyc_i.val()
+        // CTRL.recouple / CTRL.force_decouple (§8): a CTRL write with one of bits 2
+        // and 1, and reset_mode 0 before the write and in the written value (the
+        // register block takes the rest of the command)
+        self.ctrl_cmd.next = self.wb_cyc_i.val()
             & self.wb_stb_i.val()
             & !self.regs.wb_ack_o.val()
             & self.wb_we_i.val()
             & (self.wb_adr_i.val() == self.a_ctrl.val())
             & !self.regs.reset_mode.val()
-            & !self.wb_dat_i.val().get_bit(0)
-            & !self.wb_dat_i.val().get_bit(1)
-            & self.wb_dat_i.val().get_bit(2);
+            & !self.wb_dat_i.val().get_bit(0);
+        self.recouple.next =
+            self.ctrl_cmd.val() & !self.wb_dat_i.val().get_bit(1) & self.wb_dat_i.val().get_bit(2);
+        self.force_cmd.next =
+            self.ctrl_cmd.val() & self.wb_dat_i.val().get_bit(1) & !self.wb_dat_i.val().get_bit(2);
 
         // ---- guards (§6) ----
         self.node_en.next = self.zero_n.val();
@@ -220,7 +254,8 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         for i in 0..N {
             self.node_guards[i].clk.next = self.clk.val();
             self.node_guards[i].rst.next = self.guard_rst.val();
-            self.node_guards[i].freeze.next = false;
+            // §6: no rule runs while NRAP is active
+            self.node_guards[i].freeze.next = self.nrap.active.val();
             self.node_guards[i].rid_en.next = true;
             self.node_guards[i].recouple.next = false;
             self.node_guards[i].sample.next = self.btl.sample.val();
@@ -232,10 +267,15 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
             self.node_guards[i].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
             self.node_guards[i].ev_rid.next = self.tracker.ev_rid.val();
             self.node_guards[i].ev_ack.next = self.tracker.ev_ack.val();
-            self.node_guards[i].sd_limit.next = self.regs.sd_run_up.val();
-            self.node_guards[i].bf_limit.next = self.regs.bf_up.val();
-            self.node_guards[i].sr_frames.next = self.regs.sr_frames.val();
-            self.node_guards[i].restore_bits.next = self.regs.restore_bits.val();
+            // §9.2: the NRAP actions on node ports
+            self.node_guards[i].n_rrun.next = false;
+            self.node_guards[i].n_watch.next = self.nrap.p_watch.val();
+            self.node_guards[i].n_off.next = self.nrap.p_off_node.val();
+            self.node_guards[i].n_enable.next = self.nrap.p_enable.val();
+            self.node_guards[i].sd_limit.next = self.hub_cfg.sd_run_up.val();
+            self.node_guards[i].bf_limit.next = self.hub_cfg.bf_up.val();
+            self.node_guards[i].sr_frames.next = self.hub_cfg.sr_frames.val();
+            self.node_guards[i].restore_bits.next = self.hub_cfg.restore_bits.val();
             self.node_en.next = self
                 .node_en
                 .val()
@@ -249,8 +289,9 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         for j in 0..M {
             self.sub_guards[j].clk.next = self.clk.val();
             self.sub_guards[j].rst.next = self.guard_rst.val();
-            // §6: the sublink guards are frozen while decoupled
-            self.sub_guards[j].freeze.next = self.regs.decoupled.val();
+            // §6: the sublink guards are frozen while decoupled and while NRAP is
+            // active
+            self.sub_guards[j].freeze.next = self.regs.decoupled.val() | self.nrap.active.val();
             self.sub_guards[j].rid_en.next = false;
             self.sub_guards[j].recouple.next = self.recouple.val();
             self.sub_guards[j].sample.next = self.btl.sample.val();
@@ -262,10 +303,15 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
             self.sub_guards[j].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
             self.sub_guards[j].ev_rid.next = self.tracker.ev_rid.val();
             self.sub_guards[j].ev_ack.next = self.tracker.ev_ack.val();
-            self.sub_guards[j].sd_limit.next = self.regs.sd_run_sub.val();
-            self.sub_guards[j].bf_limit.next = self.regs.bf_sub.val();
-            self.sub_guards[j].sr_frames.next = self.regs.sr_frames.val();
-            self.sub_guards[j].restore_bits.next = self.regs.restore_bits.val();
+            // §9.2: the NRAP actions on sublinks
+            self.sub_guards[j].n_rrun.next = self.nrap.p_exchange.val();
+            self.sub_guards[j].n_watch.next = false;
+            self.sub_guards[j].n_off.next = self.nrap.p_off_sub.val();
+            self.sub_guards[j].n_enable.next = false;
+            self.sub_guards[j].sd_limit.next = self.hub_cfg.sd_run_sub.val();
+            self.sub_guards[j].bf_limit.next = self.hub_cfg.bf_sub.val();
+            self.sub_guards[j].sr_frames.next = self.hub_cfg.sr_frames.val();
+            self.sub_guards[j].restore_bits.next = self.hub_cfg.restore_bits.val();
             self.sub_en.next = self
                 .sub_en
                 .val()
@@ -301,6 +347,60 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.regs.blocks.next = self.ack_unit.blocks.val();
         self.regs.u_window.next = self.ack_unit.u_window.val();
         self.regs.ev_ack_unit.next = self.ack_unit.ev_block.val();
+        self.regs.decouple_bits.next = self.hub_cfg.decouple_bits.val();
+        self.regs.cfg_hit.next = self.hub_cfg.hit.val();
+        self.regs.cfg_rdata.next = self.hub_cfg.rdata.val();
+        self.regs.nrap_status.next = self.nrap.status.val();
+        self.regs.ev_nrap.next = self.nrap.ev_phase.val();
+        self.regs.nrap_decouple.next = self.nrap.set_decoupled.val();
+        // ---- cfg registers (§8, §9.5) ----
+        self.hub_cfg.clk.next = self.clk.val();
+        self.hub_cfg.rst.next = self.rst.val();
+        self.hub_cfg.wr.next = self.regs.wr.val();
+        self.hub_cfg.adr.next = self.wb_adr_i.val();
+        self.hub_cfg.wdat.next = self.wb_dat_i.val();
+        self.hub_cfg.reset_mode.next = self.regs.reset_mode.val();
+
+        // ---- NRAP phase machine (§9.2) ----
+        self.nrap.clk.next = self.clk.val();
+        self.nrap.rst.next = self.rst.val();
+        self.nrap.hold.next = self.guard_rst.val();
+        self.nrap.nrap_on.next = self.regs.nrap_on.val();
+        self.nrap.force_bits.next = self.hub_cfg.force_bits.val();
+        self.nrap.srp_pairs.next = self.hub_cfg.srp_pairs.val();
+        self.nrap.nrp_pairs.next = self.hub_cfg.nrp_pairs.val();
+        self.nrap.ddsp_frames.next = self.hub_cfg.ddsp_frames.val();
+        self.nrap.srp_bits.next = self.hub_cfg.srp_bits.val();
+        self.nrap.nrp_bits.next = self.hub_cfg.nrp_bits.val();
+        self.nrap.ddsp_bits.next = self.hub_cfg.ddsp_bits.val();
+        self.nrap.block_frames.next = self.hub_cfg.block_frames.val();
+        self.nrap.decoupled.next = self.regs.decoupled.val();
+        self.nrap.any_sub_en.next = self.sub_en.val() != self.zero_m.val();
+        // twin_b: AND over the enabled sublink ports of port_q (1 when none)
+        self.nrap.twin_b.next = (self.coupler.sub_q.val() | !self.sub_en.val()).all();
+        self.nrap.sample.next = self.btl.sample.val();
+        self.nrap.b.next = self.coupler.coupled.val();
+        self.nrap.ev_ack.next = self.tracker.ev_ack.val();
+        self.nrap.ev_delim.next =
+            self.btl.sample.val() & (self.tracker.trk.val() == self.s_delim.val());
+        self.nrap.own_frame.next = self.id_frame.own_frame.val();
+        self.nrap.twin_frame.next = self.id_frame.twin_frame.val();
+        self.nrap.in_id.next = self.id_frame.in_id.val();
+        self.nrap.cmd_run.next = self.recouple.val();
+        self.nrap.cmd_split.next = self.force_cmd.val();
+
+        // ---- identification frames: transmitter and recogniser (§9.1, §9.3) ----
+        self.id_frame.clk.next = self.clk.val();
+        self.id_frame.rst.next = self.guard_rst.val();
+        self.id_frame.bit_start.next = self.btl.bit_start.val();
+        self.id_frame.hard.next = self.btl.hard_sync.val();
+        self.id_frame.sample.next = self.btl.sample.val();
+        self.id_frame.b.next = self.coupler.coupled.val();
+        self.id_frame.ev_sof.next = self.tracker.ev_sof.val();
+        self.id_frame.ev_frame.next = self.tracker.ev_frame.val();
+        self.id_frame.send.next = self.nrap.send.val();
+        self.id_frame.ack_en.next = self.nrap.ack_en.val();
+        self.id_frame.hush.next = self.nrap.hush.val();
 
         // ---- coupler (§2-§4) ----
         self.coupler.clk.next = self.clk.val();
@@ -310,9 +410,15 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.coupler.node_en.next = self.node_en.val();
         self.coupler.sub_en.next = self.sub_en.val();
         self.coupler.decoupled.next = self.regs.decoupled.val();
+        // §9.4: own = AND of the node ports & tx_q & !forcing
+        self.coupler.tx_own.next = self.id_frame.tx.val() & !self.nrap.forcing.val();
         self.coupler.ack_mask.next =
             self.ack_win.val() & self.regs.ack_interdep.val() & !self.regs.decoupled.val();
         self.coupler.fi_ack_leak.next = self.regs.fi_ack_leak.val();
+        self.coupler.fi_no_twin.next = self.regs.fi_no_twin.val();
+        // §9.4: a hub that decided on definitive decoupling keeps its sublinks
+        // recessive
+        self.coupler.quiet_twin.next = self.nrap.quiet_twin.val();
 
         // ---- ACK unit (§4.1): its own synchronizers, bus copy, BTL and tracker ----
         self.ack_unit.clk.next = self.clk.val();
@@ -328,15 +434,16 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.ack_unit.ack_interdep.next = self.regs.ack_interdep.val();
         self.ack_unit.enabled.next = self.port_en.val();
         self.ack_unit.decoupled.next = self.regs.decoupled.val();
+        self.ack_unit.nrap_active.next = self.nrap.active.val();
         self.ack_unit.dl_next.next = self.coupler.dl_next.val();
 
         // ---- bit timing on coupled_q (§5) ----
         self.cfg_regs.clk.next = self.clk.val();
         self.cfg_regs.rst.next = self.btl_rst.val();
-        self.cfg_regs.cfg_brp.next = self.regs.brp.val();
-        self.cfg_regs.cfg_tseg1.next = self.regs.tseg1.val();
-        self.cfg_regs.cfg_tseg2.next = self.regs.tseg2.val();
-        self.cfg_regs.cfg_sjw.next = self.regs.sjw.val();
+        self.cfg_regs.cfg_brp.next = self.hub_cfg.brp.val();
+        self.cfg_regs.cfg_tseg1.next = self.hub_cfg.tseg1.val();
+        self.cfg_regs.cfg_tseg2.next = self.hub_cfg.tseg2.val();
+        self.cfg_regs.cfg_sjw.next = self.hub_cfg.sjw.val();
         self.cfg_regs.cfg_triple.next = false;
         self.cfg_regs.cfg_mode.next = self.zero2.val();
         self.cfg_regs.cfg_ewl.next = self.zero8.val();
@@ -349,7 +456,8 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.btl.cfg_sjw_len.next = self.cfg_regs.sjw_len.val();
         self.btl.cfg_triple.next = false;
         self.btl.rx_s.next = self.coupler.coupled.val();
-        self.btl.tx.next = true;
+        // §5 / §9.3: no resynchronisation on the hub's own dominant bits
+        self.btl.tx.next = self.id_frame.tx.val();
         self.btl.hard_sync_enable.next = self.tracker.trk.val() == self.s_idle.val();
 
         // ---- frame tracker (§5) ----
@@ -370,11 +478,16 @@ impl<const N: usize, const M: usize, const P: usize> Logic for Hub<N, M, P> {
         self.ack_window.next = self.ack_win.val();
         self.decoupled.next = self.regs.decoupled.val();
         self.port_enabled.next = self.port_en.val();
+        self.nrap_phase.next = self.nrap.phase.val();
+        self.hub_tx.next = self.id_frame.tx.val();
     }
 }
 
-/// The emitted hub: N = 4 node ports, M = 2 interlinks.
+/// The emitted hub A (`hub.v`): N = 4 node ports, M = 2 interlinks, HUB_ID 0.
 pub type Hub4x2 = Hub<4, 2, 6>;
+
+/// The emitted hub B (`hub_b.v`): N = 4 node ports, M = 2 interlinks, HUB_ID 1.
+pub type HubB4x2 = Hub<4, 2, 6, 1>;
 
 #[cfg(test)]
 mod tests {
@@ -385,6 +498,13 @@ mod tests {
         let mut uut = Hub4x2::default();
         uut.connect_all();
         yosys_validate("hub", &generate_verilog(&uut)).unwrap();
+    }
+
+    #[test]
+    fn hub_b_synthesizes() {
+        let mut uut = HubB4x2::default();
+        uut.connect_all();
+        yosys_validate("hub_b", &generate_verilog(&uut)).unwrap();
     }
 
     #[test]

@@ -15,8 +15,29 @@
 //!
 //! Several isolations at one edge: the kind is the first of SD, RID, BF, SR. The
 //! whole guard holds its reset values while `rst` (`rst | reset_mode`), holds every
-//! field while `freeze` (a sublink guard while decoupled, §6), and the host's
-//! `recouple` command wins over a guard event at the same edge (§8).
+//! field while `freeze` (a sublink guard while decoupled, every guard while NRAP is
+//! active, §6), and the host's `recouple` command wins over a guard event at the
+//! same edge (§8).
+//!
+//! NRAP (§9.2) keeps the port's NRAP field here (`rrun`) and writes the guard's
+//! fields through strobes from the phase machine (`super::nrap`; each implies a
+//! SAMPLE edge; the top wires to a port only the strobes §9.2 gives its kind of
+//! port). They come at edges where NRAP is active (the guard is frozen), except
+//! `n_off` at a Joining edge (`RUN` → `SRP_EXCHANGE`, node ports), where §6 still
+//! runs: there the disable wins over a restoration of §6 for `enabled`, and §6's
+//! other writes stand:
+//! - `n_rrun` (sublinks, `SRP_EXCHANGE`): a disabled port counts recessive samples
+//!   (`rrun`, saturating at 15, 0 at a dominant one) and is enabled at 11 with
+//!   `pec = silent = restore_cnt = 0`;
+//! - `n_watch` (node ports, `NRP`, `DDSP_SEND`, inside an identification frame):
+//!   an enabled port that is dominant at a `FRAME_PORTS` bit after the arbitration
+//!   field is disabled;
+//! - `n_off`: `enabled = 0 ; rrun = 0`;
+//! - `n_enable` (node ports): enabled with `pec = silent = restore_cnt = 0`.
+//!
+//! Where two strobes meet at one edge the later in this list wins (only `n_rrun`
+//! and `n_off` can: the entry to `DDSP_FORCE` disables the sublinks); `recouple`
+//! wins over all of them.
 
 use rust_hdl::prelude::*;
 
@@ -49,6 +70,16 @@ pub struct PortGuard {
     pub ev_stuff_rec: Signal<In, Bit>,
     pub ev_rid: Signal<In, Bit>,
     pub ev_ack: Signal<In, Bit>,
+    // NRAP strobes (§9.2; each implies `sample`)
+    /// `SRP_EXCHANGE` (sublinks): count recessive samples while disabled, enable at 11.
+    pub n_rrun: Signal<In, Bit>,
+    /// `NRP`, `DDSP_SEND` (node ports): a dominant bit after the arbitration field
+    /// disables.
+    pub n_watch: Signal<In, Bit>,
+    /// Disable: `enabled = 0 ; rrun = 0`.
+    pub n_off: Signal<In, Bit>,
+    /// Enable with `pec = silent = restore_cnt = 0` (node ports).
+    pub n_enable: Signal<In, Bit>,
     // limits (§8)
     pub sd_limit: Signal<In, Bits<6>>,
     pub bf_limit: Signal<In, Bits<8>>,
@@ -75,6 +106,8 @@ pub struct PortGuard {
     lost: DFF<Bit>,
     blamed: DFF<Bit>,
     active: DFF<Bit>,
+    // NRAP field (§9.2)
+    rrun: DFF<Bits<4>>,
     // combinational
     run: Signal<Local, Bit>,
     dom_new: Signal<Local, Bits<6>>,
@@ -90,6 +123,7 @@ pub struct PortGuard {
     sr_hit: Signal<Local, Bit>,
     symptom: Signal<Local, Bit>,
     rc_new: Signal<Local, Bits<16>>,
+    rrun_new: Signal<Local, Bits<4>>,
     // constants
     k_sd: Constant<Bits<3>>,
     k_sr: Constant<Bits<3>>,
@@ -99,6 +133,7 @@ pub struct PortGuard {
     zero4: Constant<Bits<4>>,
     one4: Constant<Bits<4>>,
     max4: Constant<Bits<4>>,
+    eleven4: Constant<Bits<4>>,
     zero6: Constant<Bits<6>>,
     one6: Constant<Bits<6>>,
     max6: Constant<Bits<6>>,
@@ -129,6 +164,10 @@ impl Default for PortGuard {
             ev_stuff_rec: Default::default(),
             ev_rid: Default::default(),
             ev_ack: Default::default(),
+            n_rrun: Default::default(),
+            n_watch: Default::default(),
+            n_off: Default::default(),
+            n_enable: Default::default(),
             sd_limit: Default::default(),
             bf_limit: Default::default(),
             sr_frames: Default::default(),
@@ -149,6 +188,7 @@ impl Default for PortGuard {
             lost: Default::default(),
             blamed: Default::default(),
             active: Default::default(),
+            rrun: Default::default(),
             run: Default::default(),
             dom_new: Default::default(),
             sd_hit: Default::default(),
@@ -163,6 +203,7 @@ impl Default for PortGuard {
             sr_hit: Default::default(),
             symptom: Default::default(),
             rc_new: Default::default(),
+            rrun_new: Default::default(),
             k_sd: Constant::new(KIND_STUCK_DOMINANT.into()),
             k_sr: Constant::new(KIND_SILENT.into()),
             k_bf: Constant::new(KIND_BIT_FLIPPING.into()),
@@ -171,6 +212,7 @@ impl Default for PortGuard {
             zero4: Constant::new(0.into()),
             one4: Constant::new(1.into()),
             max4: Constant::new(15.into()),
+            eleven4: Constant::new(11.into()),
             zero6: Constant::new(0.into()),
             one6: Constant::new(1.into()),
             max6: Constant::new(63.into()),
@@ -203,7 +245,8 @@ impl Logic for PortGuard {
             cand,
             lost,
             blamed,
-            active
+            active,
+            rrun
         );
         self.iso_evt.next = false;
         self.rest_evt.next = false;
@@ -334,6 +377,47 @@ impl Logic for PortGuard {
                 self.restore_cnt.d.next = self.rc_new.val();
             }
         }
+
+        // ---- NRAP (§9.2) ----
+        if self.pb.val() {
+            if self.rrun.q.val() == self.max4.val() {
+                self.rrun_new.next = self.max4.val();
+            } else {
+                self.rrun_new.next = self.rrun.q.val() + self.one4.val();
+            }
+        } else {
+            self.rrun_new.next = self.zero4.val();
+        }
+        if self.n_rrun.val() & !self.enabled_q.q.val() {
+            // a silent sublink: 11 recessive bits, an idle twin
+            self.rrun.d.next = self.rrun_new.val();
+            if self.rrun_new.val() >= self.eleven4.val() {
+                self.enabled_q.d.next = true;
+                self.pec.d.next = self.zero8.val();
+                self.silent.d.next = self.zero4.val();
+                self.restore_cnt.d.next = self.zero16.val();
+            }
+        }
+        if self.n_watch.val()
+            & self.ev_frame.val()
+            & !self.in_arb.val()
+            & self.enabled_q.q.val()
+            & !self.pb.val()
+        {
+            // only the frame's transmitter drives these bits: the node erred
+            self.enabled_q.d.next = false;
+        }
+        if self.n_off.val() {
+            self.enabled_q.d.next = false;
+            self.rrun.d.next = self.zero4.val();
+        }
+        if self.n_enable.val() {
+            self.enabled_q.d.next = true;
+            self.pec.d.next = self.zero8.val();
+            self.silent.d.next = self.zero4.val();
+            self.restore_cnt.d.next = self.zero16.val();
+        }
+
         if self.recouple.val() {
             // CTRL.recouple: kind and the counts are kept
             self.enabled_q.d.next = true;
@@ -354,6 +438,7 @@ impl Logic for PortGuard {
             self.lost.d.next = false;
             self.blamed.d.next = false;
             self.active.d.next = false;
+            self.rrun.d.next = self.zero4.val();
             self.iso_evt.next = false;
             self.rest_evt.next = false;
         }

@@ -3,31 +3,42 @@
 //! of §7 (ReCANcentrate paper section 5: definitive decoupling).
 //!
 //! - The bus handshake and `INT_STATUS`/`INT_ENABLE`/`irq` are the shared
-//!   Wishbone slave (`crate::host::wb_slave`); word indices, field positions and
-//!   reset values come from the table (`crate::host::hub_registers`). Unmapped
-//!   reads are 0.
-//! - cfg fields (`CTRL.ack_interdep`, `BTR`, `GUARD_CFG`, `BF_CFG`, `RESTORE_CFG`)
-//!   are writable only in reset mode, with the clamps of §8; refused writes,
-//!   writes to RO/unmapped registers, a CTRL write whose `ack_interdep` differs
-//!   outside reset mode and a CTRL write carrying both commands set
-//!   `INT_STATUS.illegal`.
+//!   Wishbone slave (`crate::host::wb_slave`, 6 interrupt bits); word indices,
+//!   field positions and reset values come from the table
+//!   (`crate::host::hub_registers`). Unmapped reads are 0. `ID` carries the
+//!   const generic `H` (`HUB_ID`: 0 = hub A, 1 = hub B) at bit 12.
+//! - The "RW cfg" registers (`BTR`, `GUARD_CFG`, `BF_CFG`, `RESTORE_CFG` and the
+//!   NRAP registers `NRAP_CFG`, `NRAP_TIME`, `NRAP_DDSP`) are the block
+//!   `super::config`, beside this one in the top: it reports whether the address
+//!   is one of them (`cfg_hit`) and their read value; this block refuses such a
+//!   write outside reset mode. The cfg bits of `CTRL` (`ack_interdep`, `nrap_on`)
+//!   are here. Refused writes, writes to RO/unmapped registers (`NRAP_STATUS`
+//!   included), a CTRL write whose bit 8 or 9 differs outside reset mode and a
+//!   CTRL write carrying both commands set `INT_STATUS.illegal`.
 //! - `CTRL.force_decouple` / `CTRL.recouple` act only with `reset_mode` 0 before
-//!   the write and in the written value. The sublink guards get the `recouple`
-//!   pulse from the top (decoded there so that no always block both reads the
-//!   guard events and drives the command: no combinational cycle for Verilator).
-//! - `CTRL.fi_ack_leak` (§4.1 fault injection) is a runtime bit taken at every
-//!   CTRL write that is taken at all (like `reset_mode`); it goes to the coupler.
+//!   the write and in the written value. The sublink guards and the NRAP phase
+//!   machine get the command pulses from the top (decoded there so that no always
+//!   block both reads the guard events and drives the command: no combinational
+//!   cycle for Verilator); this block takes `decoupled` and `no_twin`.
+//! - NRAP (§9): `NRAP_STATUS` reads the phase machine's word (`nrap_status`);
+//!   its phase changes set `INT_STATUS.nrap`; its entry to `DDSP_FORCE`
+//!   (`nrap_decouple`) sets `decoupled` and `INT_STATUS.decoupled` (a command at
+//!   the same edge wins).
+//! - `CTRL.fi_ack_leak` (§4.1 fault injection) and `CTRL.fi_no_twin` (§9.6) are
+//!   runtime bits taken at every CTRL write that is taken at all (like
+//!   `reset_mode`); they go to the coupler.
 //! - `ACK_UNIT` and `INT_STATUS.ack_unit` show the ACK unit (§4.1,
 //!   `super::ack_unit`): its `blocks` counter, its window and its event.
 //! - §7: `no_twin` counts SAMPLE edges without an enabled sublink; it decouples
-//!   after `decouple_bits` of them. A command wins over that at the same edge.
+//!   after `decouple_bits` of them. The rule runs only while `nrap_on` is 0. A
+//!   command wins over that at the same edge.
 //! - Reset mode (`reset_mode` before the edge) holds `no_twin` and `decoupled` at
 //!   0; `INT_STATUS`/`INT_ENABLE` are kept.
 //!
 //! N node ports, M interlinks, P = N + M ports; the `PORT_p` word for the addressed
 //! port is selected by the top (`port_rd`).
 
-use crate::host::hub_registers::{self as map, BF_MIN, MAP, SD_MIN};
+use crate::host::hub_registers::{self as map, MAP};
 use crate::host::map::{lsb, placed};
 use crate::host::wb_slave::WbSlave;
 use rust_hdl::prelude::*;
@@ -39,14 +50,9 @@ fn adr(index: u32) -> Constant<Bits<6>> {
     Constant::new((index as u64).into())
 }
 
-/// Reset value of `reg.field` as an RTL constant.
-fn reset<const B: usize>(reg: &str, field: &str) -> Constant<Bits<B>> {
-    Constant::new((MAP.field(reg, field).reset as u64).into())
-}
-
-/// The hub's Wishbone register block.
+/// The hub's Wishbone register block (hub `H`: 0 = A, 1 = B).
 #[derive(LogicBlock)]
-pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
+pub struct HubRegs<const N: usize, const M: usize, const P: usize, const H: usize> {
     // ---- clock and reset ----
     /// System clock.
     pub clk: Signal<In, Clock>,
@@ -90,6 +96,14 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     pub blocks: Signal<In, Bits<16>>,
     /// The ACK unit's window (`ACK_UNIT.u_window`).
     pub u_window: Signal<In, Bit>,
+    /// `RESTORE_CFG.decouple_bits` (from `super::config`).
+    pub decouple_bits: Signal<In, Bits<16>>,
+    /// The address is a cfg register of `super::config`.
+    pub cfg_hit: Signal<In, Bit>,
+    /// Read value of that cfg register.
+    pub cfg_rdata: Signal<In, Bits<32>>,
+    /// The `NRAP_STATUS` word (§9.5).
+    pub nrap_status: Signal<In, Bits<32>>,
     // ---- events in ----
     /// A port was isolated.
     pub ev_iso: Signal<In, Bit>,
@@ -97,94 +111,65 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     pub ev_rest: Signal<In, Bit>,
     /// The ACK unit intervened (first time in an ACK window).
     pub ev_ack_unit: Signal<In, Bit>,
+    /// The NRAP phase changed (`INT_STATUS.nrap`).
+    pub ev_nrap: Signal<In, Bit>,
+    /// NRAP enters `DDSP_FORCE`: `decoupled = 1` (§9.2).
+    pub nrap_decouple: Signal<In, Bit>,
     // ---- configuration and state out ----
+    /// A write is taken at this edge (for `super::config`).
+    pub wr: Signal<Out, Bit>,
     /// `CTRL.reset_mode`.
     pub reset_mode: Signal<Out, Bit>,
     /// `reset_mode` one edge earlier (1 after `rst`).
     pub reset_mode_d: Signal<Out, Bit>,
     /// `CTRL.ack_interdep`.
     pub ack_interdep: Signal<Out, Bit>,
+    /// `CTRL.nrap_on`.
+    pub nrap_on: Signal<Out, Bit>,
     /// `CTRL.fi_ack_leak` (§4.1 fault injection).
     pub fi_ack_leak: Signal<Out, Bit>,
+    /// `CTRL.fi_no_twin` (§9.6 fault injection).
+    pub fi_no_twin: Signal<Out, Bit>,
     /// The hub is decoupled (§7).
     pub decoupled: Signal<Out, Bit>,
-    /// `BTR.brp`.
-    pub brp: Signal<Out, Bits<6>>,
-    /// `BTR.tseg1`.
-    pub tseg1: Signal<Out, Bits<4>>,
-    /// `BTR.tseg2`.
-    pub tseg2: Signal<Out, Bits<3>>,
-    /// `BTR.sjw`.
-    pub sjw: Signal<Out, Bits<2>>,
-    /// `GUARD_CFG.sd_run_up`.
-    pub sd_run_up: Signal<Out, Bits<6>>,
-    /// `GUARD_CFG.sd_run_sub`.
-    pub sd_run_sub: Signal<Out, Bits<6>>,
-    /// `GUARD_CFG.sr_frames`.
-    pub sr_frames: Signal<Out, Bits<4>>,
-    /// `BF_CFG.bf_up`.
-    pub bf_up: Signal<Out, Bits<8>>,
-    /// `BF_CFG.bf_sub`.
-    pub bf_sub: Signal<Out, Bits<8>>,
-    /// `RESTORE_CFG.restore_bits`.
-    pub restore_bits: Signal<Out, Bits<16>>,
     // ---- blocks ----
-    bus: WbSlave<5>,
+    bus: WbSlave<6>,
     // ---- registers ----
     reset_mode_q: DFF<Bit>,
     reset_mode_dq: DFF<Bit>,
     ack_interdep_q: DFF<Bit>,
+    nrap_on_q: DFF<Bit>,
     fi_ack_leak_q: DFF<Bit>,
-    btr_q: DFF<Bits<15>>,
-    sd_up_q: DFF<Bits<6>>,
-    sd_sub_q: DFF<Bits<6>>,
-    sr_q: DFF<Bits<4>>,
-    bf_up_q: DFF<Bits<8>>,
-    bf_sub_q: DFF<Bits<8>>,
-    restore_q: DFF<Bits<16>>,
-    decouple_q: DFF<Bits<16>>,
+    fi_no_twin_q: DFF<Bit>,
     decoupled_q: DFF<Bit>,
     no_twin: DFF<Bits<16>>,
     // ---- decode ----
-    wr: Signal<Local, Bit>,
     wdat: Signal<Local, Bits<32>>,
     rdata: Signal<Local, Bits<32>>,
     is_port: Signal<Local, Bit>,
     illegal: Signal<Local, Bit>,
-    w1c: Signal<Local, Bits<5>>,
+    w1c: Signal<Local, Bits<6>>,
     dec_evt: Signal<Local, Bit>,
     no_twin_new: Signal<Local, Bits<16>>,
     // ---- word indices (from the table) ----
     a_id: Constant<Bits<6>>,
     a_ctrl: Constant<Bits<6>>,
-    a_btr: Constant<Bits<6>>,
-    a_guard: Constant<Bits<6>>,
-    a_bf: Constant<Bits<6>>,
-    a_restore: Constant<Bits<6>>,
     a_status: Constant<Bits<6>>,
     a_int_status: Constant<Bits<6>>,
     a_int_enable: Constant<Bits<6>>,
     a_stats: Constant<Bits<6>>,
     a_ack_unit: Constant<Bits<6>>,
+    a_nrap_status: Constant<Bits<6>>,
     a_port0: Constant<Bits<6>>,
     a_port_end: Constant<Bits<6>>,
-    // ---- field positions (from the table; BTR's index the 15-bit register) ----
+    // ---- field positions (from the table) ----
     c_reset_mode: Constant<Bits<5>>,
     c_force: Constant<Bits<5>>,
     c_recouple: Constant<Bits<5>>,
     c_ack_interdep: Constant<Bits<5>>,
     c_fi_ack_leak: Constant<Bits<5>>,
-    b_brp: Constant<Bits<4>>,
-    b_tseg1: Constant<Bits<4>>,
-    b_tseg2: Constant<Bits<4>>,
-    b_sjw: Constant<Bits<4>>,
-    g_sd_up: Constant<Bits<5>>,
-    g_sd_sub: Constant<Bits<5>>,
-    g_sr: Constant<Bits<5>>,
-    f_bf_up: Constant<Bits<5>>,
-    f_bf_sub: Constant<Bits<5>>,
-    r_restore: Constant<Bits<5>>,
-    r_decouple: Constant<Bits<5>>,
+    c_fi_no_twin: Constant<Bits<5>>,
+    c_nrap_on: Constant<Bits<5>>,
     s_reset_mode: Constant<Bits<5>>,
     s_decoupled: Constant<Bits<5>>,
     s_ack_window: Constant<Bits<5>>,
@@ -195,46 +180,36 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize> {
     i_decoupled: Constant<Bits<5>>,
     i_illegal: Constant<Bits<5>>,
     i_ack_unit: Constant<Bits<5>>,
+    i_nrap: Constant<Bits<5>>,
     t_frames: Constant<Bits<5>>,
     t_errors: Constant<Bits<5>>,
     u_blocks: Constant<Bits<5>>,
     u_u_window: Constant<Bits<5>>,
-    // ---- reset values and clamps ----
+    // ---- values ----
     id_val: Constant<Bits<32>>,
-    btr_reset: Constant<Bits<15>>,
-    sd_up_reset: Constant<Bits<6>>,
-    sd_sub_reset: Constant<Bits<6>>,
-    sd_min: Constant<Bits<6>>,
-    sr_reset: Constant<Bits<4>>,
-    bf_up_reset: Constant<Bits<8>>,
-    bf_sub_reset: Constant<Bits<8>>,
-    bf_min: Constant<Bits<8>>,
-    restore_reset: Constant<Bits<16>>,
-    decouple_reset: Constant<Bits<16>>,
-    zero5: Constant<Bits<5>>,
+    zero6: Constant<Bits<6>>,
     zero16: Constant<Bits<16>>,
     one16: Constant<Bits<16>>,
     max16: Constant<Bits<16>>,
     zero32: Constant<Bits<32>>,
 }
 
-impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P> {
+impl<const N: usize, const M: usize, const P: usize, const H: usize> Default
+    for HubRegs<N, M, P, H>
+{
     fn default() -> Self {
         assert!((2..=8).contains(&N), "hub: N node ports must be 2..=8");
         assert!((1..=4).contains(&M), "hub: M interlinks must be 1..=4");
         assert_eq!(P, N + M, "hub: P must be N + M");
-        // fixed by structure: the ID word, BTR stored whole in 15 bits, the
-        // recouple command decoded by the top (`super::hub`) from CTRL[2:0]
+        assert!(H <= 1, "hub: HUB_ID is 0 (hub A) or 1 (hub B)");
+        // fixed by structure: the ID word, the commands decoded by the top
+        // (`super::hub`) from CTRL[2:0]
         placed(&MAP, "ID", "m", 0, 8);
-        placed(&MAP, "ID", "n", 8, 8);
+        placed(&MAP, "ID", "n", 8, 4);
+        placed(&MAP, "ID", "hub_id", 12, 4);
         placed(&MAP, "CTRL", "reset_mode", 0, 1);
         placed(&MAP, "CTRL", "force_decouple", 1, 1);
         placed(&MAP, "CTRL", "recouple", 2, 1);
-        let btr = map::register("BTR").unwrap();
-        assert!(
-            btr.defined() >> 15 == 0,
-            "register map HUB: BTR has fields above bit 14"
-        );
         let ctrl = map::register("CTRL").unwrap();
         assert_eq!(
             ctrl.field("reset_mode").unwrap().reset,
@@ -242,10 +217,12 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             "CTRL resets into reset mode"
         );
         assert_eq!(ctrl.field("ack_interdep").unwrap().reset, 1);
+        assert_eq!(ctrl.field("nrap_on").unwrap().reset, 1);
         assert_eq!(ctrl.field("fi_ack_leak").unwrap().reset, 0);
-        // INT_STATUS / INT_ENABLE are the 5 bits of the shared slave
-        assert_eq!(map::register("INT_STATUS").unwrap().defined(), 0x1F);
-        assert_eq!(map::register("INT_ENABLE").unwrap().defined(), 0x1F);
+        assert_eq!(ctrl.field("fi_no_twin").unwrap().reset, 0);
+        // INT_STATUS / INT_ENABLE are the 6 bits of the shared slave
+        assert_eq!(map::register("INT_STATUS").unwrap().defined(), 0x3F);
+        assert_eq!(map::register("INT_ENABLE").unwrap().defined(), 0x3F);
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -267,40 +244,32 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             port_rd: Default::default(),
             blocks: Default::default(),
             u_window: Default::default(),
+            decouple_bits: Default::default(),
+            cfg_hit: Default::default(),
+            cfg_rdata: Default::default(),
+            nrap_status: Default::default(),
             ev_iso: Default::default(),
             ev_rest: Default::default(),
             ev_ack_unit: Default::default(),
+            ev_nrap: Default::default(),
+            nrap_decouple: Default::default(),
+            wr: Default::default(),
             reset_mode: Default::default(),
             reset_mode_d: Default::default(),
             ack_interdep: Default::default(),
+            nrap_on: Default::default(),
             fi_ack_leak: Default::default(),
+            fi_no_twin: Default::default(),
             decoupled: Default::default(),
-            brp: Default::default(),
-            tseg1: Default::default(),
-            tseg2: Default::default(),
-            sjw: Default::default(),
-            sd_run_up: Default::default(),
-            sd_run_sub: Default::default(),
-            sr_frames: Default::default(),
-            bf_up: Default::default(),
-            bf_sub: Default::default(),
-            restore_bits: Default::default(),
             bus: Default::default(),
             reset_mode_q: Default::default(),
             reset_mode_dq: Default::default(),
             ack_interdep_q: Default::default(),
+            nrap_on_q: Default::default(),
             fi_ack_leak_q: Default::default(),
-            btr_q: Default::default(),
-            sd_up_q: Default::default(),
-            sd_sub_q: Default::default(),
-            sr_q: Default::default(),
-            bf_up_q: Default::default(),
-            bf_sub_q: Default::default(),
-            restore_q: Default::default(),
-            decouple_q: Default::default(),
+            fi_no_twin_q: Default::default(),
             decoupled_q: Default::default(),
             no_twin: Default::default(),
-            wr: Default::default(),
             wdat: Default::default(),
             rdata: Default::default(),
             is_port: Default::default(),
@@ -310,15 +279,12 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             no_twin_new: Default::default(),
             a_id: adr(map::ID),
             a_ctrl: adr(map::CTRL),
-            a_btr: adr(map::BTR),
-            a_guard: adr(map::GUARD_CFG),
-            a_bf: adr(map::BF_CFG),
-            a_restore: adr(map::RESTORE_CFG),
             a_status: adr(map::STATUS),
             a_int_status: adr(map::INT_STATUS),
             a_int_enable: adr(map::INT_ENABLE),
             a_stats: adr(map::STATS),
             a_ack_unit: adr(map::ACK_UNIT),
+            a_nrap_status: adr(map::NRAP_STATUS),
             a_port0: adr(map::PORT0),
             a_port_end: adr(map::PORT0 + P as u32),
             c_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
@@ -326,17 +292,8 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             c_recouple: lsb(&MAP, "CTRL", "recouple", 1),
             c_ack_interdep: lsb(&MAP, "CTRL", "ack_interdep", 1),
             c_fi_ack_leak: lsb(&MAP, "CTRL", "fi_ack_leak", 1),
-            b_brp: lsb(&MAP, "BTR", "brp", 6),
-            b_tseg1: lsb(&MAP, "BTR", "tseg1", 4),
-            b_tseg2: lsb(&MAP, "BTR", "tseg2", 3),
-            b_sjw: lsb(&MAP, "BTR", "sjw", 2),
-            g_sd_up: lsb(&MAP, "GUARD_CFG", "sd_run_up", 6),
-            g_sd_sub: lsb(&MAP, "GUARD_CFG", "sd_run_sub", 6),
-            g_sr: lsb(&MAP, "GUARD_CFG", "sr_frames", 4),
-            f_bf_up: lsb(&MAP, "BF_CFG", "bf_up", 8),
-            f_bf_sub: lsb(&MAP, "BF_CFG", "bf_sub", 8),
-            r_restore: lsb(&MAP, "RESTORE_CFG", "restore_bits", 16),
-            r_decouple: lsb(&MAP, "RESTORE_CFG", "decouple_bits", 16),
+            c_fi_no_twin: lsb(&MAP, "CTRL", "fi_no_twin", 1),
+            c_nrap_on: lsb(&MAP, "CTRL", "nrap_on", 1),
             s_reset_mode: lsb(&MAP, "STATUS", "reset_mode", 1),
             s_decoupled: lsb(&MAP, "STATUS", "decoupled", 1),
             s_ack_window: lsb(&MAP, "STATUS", "ack_window", 1),
@@ -347,22 +304,13 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
             i_decoupled: lsb(&MAP, "INT_STATUS", "decoupled", 1),
             i_illegal: lsb(&MAP, "INT_STATUS", "illegal", 1),
             i_ack_unit: lsb(&MAP, "INT_STATUS", "ack_unit", 1),
+            i_nrap: lsb(&MAP, "INT_STATUS", "nrap", 1),
             t_frames: lsb(&MAP, "STATS", "frames", 16),
             t_errors: lsb(&MAP, "STATS", "errors", 16),
             u_blocks: lsb(&MAP, "ACK_UNIT", "blocks", 16),
             u_u_window: lsb(&MAP, "ACK_UNIT", "u_window", 1),
-            id_val: Constant::new((map::id_value(N as u32, M as u32) as u64).into()),
-            btr_reset: Constant::new((btr.reset_value() as u64).into()),
-            sd_up_reset: reset("GUARD_CFG", "sd_run_up"),
-            sd_sub_reset: reset("GUARD_CFG", "sd_run_sub"),
-            sd_min: Constant::new((SD_MIN as u64).into()),
-            sr_reset: reset("GUARD_CFG", "sr_frames"),
-            bf_up_reset: reset("BF_CFG", "bf_up"),
-            bf_sub_reset: reset("BF_CFG", "bf_sub"),
-            bf_min: Constant::new((BF_MIN as u64).into()),
-            restore_reset: reset("RESTORE_CFG", "restore_bits"),
-            decouple_reset: reset("RESTORE_CFG", "decouple_bits"),
-            zero5: Constant::new(0.into()),
+            id_val: Constant::new((map::id_value(H as u32, N as u32, M as u32) as u64).into()),
+            zero6: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             one16: Constant::new(1.into()),
             max16: Constant::new(0xFFFF.into()),
@@ -371,7 +319,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for HubRegs<N, M, P
     }
 }
 
-impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> {
+impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for HubRegs<N, M, P, H> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -380,15 +328,9 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
             reset_mode_q,
             reset_mode_dq,
             ack_interdep_q,
+            nrap_on_q,
             fi_ack_leak_q,
-            btr_q,
-            sd_up_q,
-            sd_sub_q,
-            sr_q,
-            bf_up_q,
-            bf_sub_q,
-            restore_q,
-            decouple_q,
+            fi_no_twin_q,
             decoupled_q,
             no_twin
         );
@@ -413,20 +355,12 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                 << self.c_reset_mode.val())
                 | (bit_cast::<32, 1>(self.fi_ack_leak_q.q.val().into())
                     << self.c_fi_ack_leak.val())
+                | (bit_cast::<32, 1>(self.fi_no_twin_q.q.val().into()) << self.c_fi_no_twin.val())
                 | (bit_cast::<32, 1>(self.ack_interdep_q.q.val().into())
-                    << self.c_ack_interdep.val());
-        } else if self.wb_adr_i.val() == self.a_btr.val() {
-            self.rdata.next = bit_cast::<32, 15>(self.btr_q.q.val());
-        } else if self.wb_adr_i.val() == self.a_guard.val() {
-            self.rdata.next = (bit_cast::<32, 6>(self.sd_up_q.q.val()) << self.g_sd_up.val())
-                | (bit_cast::<32, 6>(self.sd_sub_q.q.val()) << self.g_sd_sub.val())
-                | (bit_cast::<32, 4>(self.sr_q.q.val()) << self.g_sr.val());
-        } else if self.wb_adr_i.val() == self.a_bf.val() {
-            self.rdata.next = (bit_cast::<32, 8>(self.bf_up_q.q.val()) << self.f_bf_up.val())
-                | (bit_cast::<32, 8>(self.bf_sub_q.q.val()) << self.f_bf_sub.val());
-        } else if self.wb_adr_i.val() == self.a_restore.val() {
-            self.rdata.next = (bit_cast::<32, 16>(self.restore_q.q.val()) << self.r_restore.val())
-                | (bit_cast::<32, 16>(self.decouple_q.q.val()) << self.r_decouple.val());
+                    << self.c_ack_interdep.val())
+                | (bit_cast::<32, 1>(self.nrap_on_q.q.val().into()) << self.c_nrap_on.val());
+        } else if self.cfg_hit.val() {
+            self.rdata.next = self.cfg_rdata.val();
         } else if self.wb_adr_i.val() == self.a_status.val() {
             self.rdata.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
                 << self.s_reset_mode.val())
@@ -435,22 +369,24 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                 | (bit_cast::<32, 2>(self.trk.val()) << self.s_trk.val())
                 | (bit_cast::<32, P>(self.port_en.val()) << self.s_enabled.val());
         } else if self.wb_adr_i.val() == self.a_int_status.val() {
-            self.rdata.next = bit_cast::<32, 5>(self.bus.int_status.val());
+            self.rdata.next = bit_cast::<32, 6>(self.bus.int_status.val());
         } else if self.wb_adr_i.val() == self.a_int_enable.val() {
-            self.rdata.next = bit_cast::<32, 5>(self.bus.int_enable.val());
+            self.rdata.next = bit_cast::<32, 6>(self.bus.int_enable.val());
         } else if self.wb_adr_i.val() == self.a_stats.val() {
             self.rdata.next = (bit_cast::<32, 16>(self.frames.val()) << self.t_frames.val())
                 | (bit_cast::<32, 16>(self.errors.val()) << self.t_errors.val());
         } else if self.wb_adr_i.val() == self.a_ack_unit.val() {
             self.rdata.next = (bit_cast::<32, 16>(self.blocks.val()) << self.u_blocks.val())
                 | (bit_cast::<32, 1>(self.u_window.val().into()) << self.u_u_window.val());
+        } else if self.wb_adr_i.val() == self.a_nrap_status.val() {
+            self.rdata.next = self.nrap_status.val();
         } else if self.is_port.val() {
             self.rdata.next = self.port_rd.val();
         }
         self.bus.rdata.next = self.rdata.val();
         self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
 
-        // ---- §7 decoupling (at SAMPLE edges) ----
+        // ---- §7 decoupling (at SAMPLE edges, only with NRAP off) ----
         self.dec_evt.next = false;
         if self.any_sub_en.val() {
             self.no_twin_new.next = self.zero16.val();
@@ -459,22 +395,27 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         } else {
             self.no_twin_new.next = self.no_twin.q.val() + self.one16.val();
         }
-        if self.sample.val() {
+        if self.sample.val() & !self.nrap_on_q.q.val() {
             self.no_twin.d.next = self.no_twin_new.val();
             if !self.decoupled_q.q.val()
-                & (self.decouple_q.q.val() != self.zero16.val())
-                & (self.no_twin_new.val() >= self.decouple_q.q.val())
+                & (self.decouple_bits.val() != self.zero16.val())
+                & (self.no_twin_new.val() >= self.decouple_bits.val())
             {
                 self.decoupled_q.d.next = true;
                 self.dec_evt.next = true;
             }
         }
+        // ---- §9.2: NRAP enters DDSP_FORCE ----
+        if self.nrap_decouple.val() {
+            self.decoupled_q.d.next = true;
+            self.dec_evt.next = true;
+        }
 
         // ---- writes (§8) ----
         self.illegal.next = false;
-        self.w1c.next = self.zero5.val();
+        self.w1c.next = self.zero6.val();
         self.bus.int_enable_we.next = false;
-        self.bus.int_enable_d.next = self.wdat.val().get_bits::<5>(0);
+        self.bus.int_enable_d.next = self.wdat.val().get_bits::<6>(0);
         if self.wr.val() {
             if self.wb_adr_i.val() == self.a_ctrl.val() {
                 if self.wdat.val().get_bit(self.c_force.val().index())
@@ -487,13 +428,19 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                         self.wdat.val().get_bit(self.c_reset_mode.val().index());
                     self.fi_ack_leak_q.d.next =
                         self.wdat.val().get_bit(self.c_fi_ack_leak.val().index());
+                    self.fi_no_twin_q.d.next =
+                        self.wdat.val().get_bit(self.c_fi_no_twin.val().index());
                     if self.reset_mode_q.q.val() {
                         self.ack_interdep_q.d.next =
                             self.wdat.val().get_bit(self.c_ack_interdep.val().index());
+                        self.nrap_on_q.d.next =
+                            self.wdat.val().get_bit(self.c_nrap_on.val().index());
                     } else {
                         self.illegal.next =
-                            self.wdat.val().get_bit(self.c_ack_interdep.val().index())
-                                != self.ack_interdep_q.q.val();
+                            (self.wdat.val().get_bit(self.c_ack_interdep.val().index())
+                                != self.ack_interdep_q.q.val())
+                                | (self.wdat.val().get_bit(self.c_nrap_on.val().index())
+                                    != self.nrap_on_q.q.val());
                         if !self.wdat.val().get_bit(self.c_reset_mode.val().index()) {
                             if self.wdat.val().get_bit(self.c_force.val().index()) {
                                 self.decoupled_q.d.next = true;
@@ -507,68 +454,11 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
                         }
                     }
                 }
-            } else if self.wb_adr_i.val() == self.a_btr.val() {
-                if self.reset_mode_q.q.val() {
-                    self.btr_q.d.next = self.wdat.val().get_bits::<15>(0);
-                } else {
-                    self.illegal.next = true;
-                }
-            } else if self.wb_adr_i.val() == self.a_guard.val() {
-                if self.reset_mode_q.q.val() {
-                    // stuck-dominant thresholds below SD_MIN are clamped
-                    if self.wdat.val().get_bits::<6>(self.g_sd_up.val().index()) < self.sd_min.val()
-                    {
-                        self.sd_up_q.d.next = self.sd_min.val();
-                    } else {
-                        self.sd_up_q.d.next =
-                            self.wdat.val().get_bits::<6>(self.g_sd_up.val().index());
-                    }
-                    if self.wdat.val().get_bits::<6>(self.g_sd_sub.val().index())
-                        < self.sd_min.val()
-                    {
-                        self.sd_sub_q.d.next = self.sd_min.val();
-                    } else {
-                        self.sd_sub_q.d.next =
-                            self.wdat.val().get_bits::<6>(self.g_sd_sub.val().index());
-                    }
-                    self.sr_q.d.next = self.wdat.val().get_bits::<4>(self.g_sr.val().index());
-                } else {
-                    self.illegal.next = true;
-                }
-            } else if self.wb_adr_i.val() == self.a_bf.val() {
-                if self.reset_mode_q.q.val() {
-                    // bit-flipping limits below BF_MIN are clamped
-                    if self.wdat.val().get_bits::<8>(self.f_bf_up.val().index()) < self.bf_min.val()
-                    {
-                        self.bf_up_q.d.next = self.bf_min.val();
-                    } else {
-                        self.bf_up_q.d.next =
-                            self.wdat.val().get_bits::<8>(self.f_bf_up.val().index());
-                    }
-                    if self.wdat.val().get_bits::<8>(self.f_bf_sub.val().index())
-                        < self.bf_min.val()
-                    {
-                        self.bf_sub_q.d.next = self.bf_min.val();
-                    } else {
-                        self.bf_sub_q.d.next =
-                            self.wdat.val().get_bits::<8>(self.f_bf_sub.val().index());
-                    }
-                } else {
-                    self.illegal.next = true;
-                }
-            } else if self.wb_adr_i.val() == self.a_restore.val() {
-                if self.reset_mode_q.q.val() {
-                    self.restore_q.d.next =
-                        self.wdat.val().get_bits::<16>(self.r_restore.val().index());
-                    self.decouple_q.d.next = self
-                        .wdat
-                        .val()
-                        .get_bits::<16>(self.r_decouple.val().index());
-                } else {
-                    self.illegal.next = true;
-                }
+            } else if self.cfg_hit.val() {
+                // a cfg register (super::config stores it in reset mode)
+                self.illegal.next = !self.reset_mode_q.q.val();
             } else if self.wb_adr_i.val() == self.a_int_status.val() {
-                self.w1c.next = self.wdat.val().get_bits::<5>(0);
+                self.w1c.next = self.wdat.val().get_bits::<6>(0);
             } else if self.wb_adr_i.val() == self.a_int_enable.val() {
                 self.bus.int_enable_we.next = true;
             } else {
@@ -585,27 +475,22 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         }
 
         // ---- interrupts ----
-        self.bus.events.next = (bit_cast::<5, 1>(self.ev_iso.val().into())
+        self.bus.events.next = (bit_cast::<6, 1>(self.ev_iso.val().into())
             << self.i_isolation.val())
-            | (bit_cast::<5, 1>(self.ev_rest.val().into()) << self.i_restoration.val())
-            | (bit_cast::<5, 1>(self.dec_evt.val().into()) << self.i_decoupled.val())
-            | (bit_cast::<5, 1>(self.illegal.val().into()) << self.i_illegal.val())
-            | (bit_cast::<5, 1>(self.ev_ack_unit.val().into()) << self.i_ack_unit.val());
+            | (bit_cast::<6, 1>(self.ev_rest.val().into()) << self.i_restoration.val())
+            | (bit_cast::<6, 1>(self.dec_evt.val().into()) << self.i_decoupled.val())
+            | (bit_cast::<6, 1>(self.illegal.val().into()) << self.i_illegal.val())
+            | (bit_cast::<6, 1>(self.ev_ack_unit.val().into()) << self.i_ack_unit.val())
+            | (bit_cast::<6, 1>(self.ev_nrap.val().into()) << self.i_nrap.val());
         self.bus.w1c.next = self.w1c.val();
 
         if self.rst.val() {
             self.reset_mode_q.d.next = true;
             self.reset_mode_dq.d.next = true;
             self.ack_interdep_q.d.next = true;
+            self.nrap_on_q.d.next = true;
             self.fi_ack_leak_q.d.next = false;
-            self.btr_q.d.next = self.btr_reset.val();
-            self.sd_up_q.d.next = self.sd_up_reset.val();
-            self.sd_sub_q.d.next = self.sd_sub_reset.val();
-            self.sr_q.d.next = self.sr_reset.val();
-            self.bf_up_q.d.next = self.bf_up_reset.val();
-            self.bf_sub_q.d.next = self.bf_sub_reset.val();
-            self.restore_q.d.next = self.restore_reset.val();
-            self.decouple_q.d.next = self.decouple_reset.val();
+            self.fi_no_twin_q.d.next = false;
             self.decoupled_q.d.next = false;
             self.no_twin.d.next = self.zero16.val();
         }
@@ -617,24 +502,16 @@ impl<const N: usize, const M: usize, const P: usize> Logic for HubRegs<N, M, P> 
         self.reset_mode.next = self.reset_mode_q.q.val();
         self.reset_mode_d.next = self.reset_mode_dq.q.val();
         self.ack_interdep.next = self.ack_interdep_q.q.val();
+        self.nrap_on.next = self.nrap_on_q.q.val();
         self.fi_ack_leak.next = self.fi_ack_leak_q.q.val();
+        self.fi_no_twin.next = self.fi_no_twin_q.q.val();
         self.decoupled.next = self.decoupled_q.q.val();
-        self.brp.next = self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index());
-        self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());
-        self.tseg2.next = self.btr_q.q.val().get_bits::<3>(self.b_tseg2.val().index());
-        self.sjw.next = self.btr_q.q.val().get_bits::<2>(self.b_sjw.val().index());
-        self.sd_run_up.next = self.sd_up_q.q.val();
-        self.sd_run_sub.next = self.sd_sub_q.q.val();
-        self.sr_frames.next = self.sr_q.q.val();
-        self.bf_up.next = self.bf_up_q.q.val();
-        self.bf_sub.next = self.bf_sub_q.q.val();
-        self.restore_bits.next = self.restore_q.q.val();
     }
 }
 
 #[test]
 fn hub_regs_synthesizes() {
-    let mut uut = HubRegs::<4, 2, 6>::default();
+    let mut uut = HubRegs::<4, 2, 6, 0>::default();
     uut.connect_all();
     yosys_validate("hub_regs", &generate_verilog(&uut)).unwrap();
 }

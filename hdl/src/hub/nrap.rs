@@ -1,0 +1,541 @@
+//! Network Reconfiguration Agreement Protocol, the phase machine (ReCANcentrate
+//! paper section 5; hub contract §9.2, the `NRAP_STATUS` word of §9.5).
+//!
+//! State: the phase `nrap` (`RUN`, `SRP_FORCE`, `SRP_EXCHANGE`, `NRP`,
+//! `DDSP_FORCE`, `DDSP_SEND`, `SPLIT`), the phase timer `nt` (SAMPLE edges,
+//! 16 bits, saturating, in every phase), the counter `ncnt` (4 bits, saturating:
+//! pairs in `SRP_EXCHANGE` and `NRP`, own frames in `DDSP_SEND`), `half` (hub A's
+//! frame of a pair was acknowledged), `last` (whose identification frame was
+//! exchanged last), `unacked` (frames in a row with an error flag at their ACK
+//! delimiter, 5 bits, saturating, counted in every phase; only `RUN` acts on it),
+//! `runs` and `outcome`. At a SAMPLE edge the
+//! rules of the current phase run on the values before the edge ("new" `nt` /
+//! `ncnt` / `unacked` are this edge's counts); a phase change clears `nt`, `ncnt`
+//! and `half` and raises `ev_phase` (`INT_STATUS.nrap`).
+//!
+//! - `RUN` (with `nrap_on & !decoupled`), in this order: no sublink enabled
+//!   (Trigger) or the new `unacked` >= `block_frames != 0` (Blocked network) →
+//!   `SRP_FORCE`, `last = 0`; the ACK slot of the twin's identification frame
+//!   (Joining) → `SRP_EXCHANGE`, `last = 2`, node ports disabled.
+//! - Pairs (`SRP_EXCHANGE`, `NRP`): at the ACK slot of an identification frame,
+//!   `last = 2` for the twin's; if it is acknowledged (the bus dominant there,
+//!   `b = 0`; for the own frame in `SRP_EXCHANGE` the ACK must come through an
+//!   interlink, `twin_b = 0`), `last = 1` for the own, hub A's frame sets `half`,
+//!   hub B's frame with `half` completes a pair (`ncnt += 1`, `half = 0`); if not,
+//!   `half` clears. Which of own / twin is hub A's is fixed by `H` (the const
+//!   generic `HUB_ID`).
+//! - `DDSP_SEND`: the own frame's ACK slot with the bus dominant counts.
+//!
+//! The per-port NRAP field (`rrun`) and the writes to the ports' `enabled`, `pec`,
+//! `silent` and `restore_cnt` live in the port guards (`super::port_guard`); this
+//! block hands them one strobe per action, valid in the clock of the edge (the top
+//! wires each to the node ports or the sublinks, as §9.2 says):
+//!
+//! | strobe | when | ports |
+//! |---|---|---|
+//! | `p_exchange` | every SAMPLE edge of `SRP_EXCHANGE` | sublinks: `rrun` rule |
+//! | `p_watch` | every SAMPLE edge of `NRP` and `DDSP_SEND` inside an identification frame (`in_id`) | node ports: an erring port is disabled |
+//! | `p_off_sub` | `SRP_FORCE` → `SRP_EXCHANGE`, entry to `DDSP_FORCE` | sublinks disabled |
+//! | `p_off_node` | Joining (`RUN` → `SRP_EXCHANGE`) | node ports disabled |
+//! | `p_enable` | `SRP_EXCHANGE` → `NRP`, `DDSP_FORCE` → `DDSP_SEND` | node ports enabled |
+//!
+//! Entry to `DDSP_FORCE` also sets `decoupled` (`set_decoupled`, taken by the
+//! register block with `INT_STATUS.decoupled`).
+//!
+//! Commands (§8, §9.2): `cmd_run` (`CTRL.recouple` taken) makes the new phase
+//! `RUN`, `cmd_split` (`CTRL.force_decouple` taken) makes it `SPLIT` when
+//! `nrap_on`; the command decides the phase of its edge, the rest of the rules of
+//! that edge still happens (the register block and the guards let the command
+//! win where it writes the same field). `runs` counts the edges where the phase
+//! goes from `RUN` to an active phase; `outcome` is written where it goes from an
+//! active phase to `RUN` (1) or `SPLIT` (0).
+//!
+//! `hold` (`rst | reset_mode`, the value before the edge) holds `nrap = RUN`,
+//! `nt`, `ncnt`, `half`, `last` and `unacked` at 0 and suppresses every event and
+//! strobe; `runs` and `outcome` clear with `rst` only.
+
+use crate::host::hub_registers::{NrapPhase, MAP};
+use crate::host::map::lsb;
+use rust_hdl::prelude::*;
+
+fn phase(p: NrapPhase) -> Constant<Bits<3>> {
+    Constant::new((p.code() as u64).into())
+}
+
+/// The NRAP phase machine of hub `H` (0 = A, 1 = B).
+#[derive(LogicBlock)]
+pub struct Nrap<const H: usize> {
+    // ---- clock and resets ----
+    /// Clock.
+    pub clk: Signal<In, Clock>,
+    /// The hub's `rst`: clears `runs` and `outcome` too.
+    pub rst: Signal<In, Bit>,
+    /// `rst | reset_mode` (value before the edge): holds the phase at `RUN` and
+    /// `nt`, `ncnt`, `last` at 0.
+    pub hold: Signal<In, Bit>,
+    // ---- configuration (§8, §9.5) ----
+    /// `CTRL.nrap_on`.
+    pub nrap_on: Signal<In, Bit>,
+    /// `NRAP_CFG.force_bits`.
+    pub force_bits: Signal<In, Bits<10>>,
+    /// `NRAP_CFG.srp_pairs`.
+    pub srp_pairs: Signal<In, Bits<4>>,
+    /// `NRAP_CFG.nrp_pairs`.
+    pub nrp_pairs: Signal<In, Bits<4>>,
+    /// `NRAP_CFG.ddsp_frames`.
+    pub ddsp_frames: Signal<In, Bits<4>>,
+    /// `NRAP_TIME.srp_bits`.
+    pub srp_bits: Signal<In, Bits<16>>,
+    /// `NRAP_TIME.nrp_bits`.
+    pub nrp_bits: Signal<In, Bits<16>>,
+    /// `NRAP_DDSP.ddsp_bits`.
+    pub ddsp_bits: Signal<In, Bits<16>>,
+    /// `NRAP_DDSP.block_frames` (0: the blocked-network trigger is off).
+    pub block_frames: Signal<In, Bits<5>>,
+    // ---- hub state (values before the edge) ----
+    /// The hub is decoupled (register).
+    pub decoupled: Signal<In, Bit>,
+    /// Some sublink port is enabled (`sub_any`).
+    pub any_sub_en: Signal<In, Bit>,
+    /// `twin_b`: AND over the enabled sublink ports of `port_q` (1 when none).
+    pub twin_b: Signal<In, Bit>,
+    // ---- bit timing, tracker, recogniser ----
+    /// SAMPLE edge of the hub's BTL.
+    pub sample: Signal<In, Bit>,
+    /// `coupled_q`: the bus value sampled at a SAMPLE edge.
+    pub b: Signal<In, Bit>,
+    /// `ACK_PORTS`: the SAMPLE edge of the ACK slot.
+    pub ev_ack: Signal<In, Bit>,
+    /// The SAMPLE edge of the ACK delimiter (`trk == ACK_DELIM` before it).
+    pub ev_delim: Signal<In, Bit>,
+    /// The frame in its ACK slot is the own identification frame.
+    pub own_frame: Signal<In, Bit>,
+    /// The frame in its ACK slot is the twin's identification frame.
+    pub twin_frame: Signal<In, Bit>,
+    /// `r_own | r_twin` (registers): the frame so far is an identification frame.
+    pub in_id: Signal<In, Bit>,
+    // ---- host commands (taken at this edge) ----
+    /// `CTRL.recouple` acts: the phase becomes `RUN`.
+    pub cmd_run: Signal<In, Bit>,
+    /// `CTRL.force_decouple` acts: the phase becomes `SPLIT` if `nrap_on`.
+    pub cmd_split: Signal<In, Bit>,
+    // ---- state out (registers) ----
+    /// `nrap`, the phase.
+    pub phase: Signal<Out, Bits<3>>,
+    /// `active`: phase 1..=5.
+    pub active: Signal<Out, Bit>,
+    /// `forcing`: `SRP_FORCE` or `DDSP_FORCE` (the own contribution is dominant).
+    pub forcing: Signal<Out, Bit>,
+    /// `send` of §9.3 (from registers, with `sub_any`).
+    pub send: Signal<Out, Bit>,
+    /// The phase acknowledges the twin's frame (`SRP_EXCHANGE`, `NRP`, `DDSP_SEND`).
+    pub ack_en: Signal<Out, Bit>,
+    /// `!active | forcing`: the transmitter is held silent.
+    pub hush: Signal<Out, Bit>,
+    /// `quiet_twin` (§9.4): `DDSP_SEND` or `SPLIT`, the sublinks are held recessive.
+    pub quiet_twin: Signal<Out, Bit>,
+    /// The `NRAP_STATUS` word.
+    pub status: Signal<Out, Bits<32>>,
+    // ---- events and strobes at this edge (combinational) ----
+    /// The phase changes at this edge (`INT_STATUS.nrap`).
+    pub ev_phase: Signal<Out, Bit>,
+    /// Entry to `DDSP_FORCE`: `decoupled = 1` and `INT_STATUS.decoupled`.
+    pub set_decoupled: Signal<Out, Bit>,
+    /// Every SAMPLE edge of `SRP_EXCHANGE`.
+    pub p_exchange: Signal<Out, Bit>,
+    /// Every SAMPLE edge of `NRP` and `DDSP_SEND` inside an identification frame.
+    pub p_watch: Signal<Out, Bit>,
+    /// `SRP_FORCE` → `SRP_EXCHANGE`, entry to `DDSP_FORCE`: every sublink disabled.
+    pub p_off_sub: Signal<Out, Bit>,
+    /// Joining (`RUN` → `SRP_EXCHANGE`): every node port disabled.
+    pub p_off_node: Signal<Out, Bit>,
+    /// `SRP_EXCHANGE` → `NRP`, `DDSP_FORCE` → `DDSP_SEND`: every node port enabled.
+    pub p_enable: Signal<Out, Bit>,
+    // ---- registers ----
+    nrap_q: DFF<Bits<3>>,
+    nt: DFF<Bits<16>>,
+    ncnt: DFF<Bits<4>>,
+    half: DFF<Bit>,
+    last: DFF<Bits<2>>,
+    unacked: DFF<Bits<5>>,
+    runs: DFF<Bits<4>>,
+    outcome: DFF<Bit>,
+    // ---- combinational ----
+    st_run: Signal<Local, Bit>,
+    st_srp_force: Signal<Local, Bit>,
+    st_exchange: Signal<Local, Bit>,
+    st_nrp: Signal<Local, Bit>,
+    st_ddsp_force: Signal<Local, Bit>,
+    st_send: Signal<Local, Bit>,
+    is_active: Signal<Local, Bit>,
+    nt_new: Signal<Local, Bits<16>>,
+    ack_own: Signal<Local, Bit>,
+    ack_twin: Signal<Local, Bit>,
+    ack_a: Signal<Local, Bit>,
+    ack_b: Signal<Local, Bit>,
+    pairs: Signal<Local, Bit>,
+    ackd: Signal<Local, Bit>,
+    inc: Signal<Local, Bit>,
+    half_new: Signal<Local, Bit>,
+    ncnt_new: Signal<Local, Bits<4>>,
+    unacked_new: Signal<Local, Bits<5>>,
+    go: Signal<Local, Bit>,
+    next: Signal<Local, Bits<3>>,
+    next_active: Signal<Local, Bit>,
+    last_new: Signal<Local, Bits<2>>,
+    // ---- constants ----
+    ph_run: Constant<Bits<3>>,
+    ph_srp_force: Constant<Bits<3>>,
+    ph_exchange: Constant<Bits<3>>,
+    ph_nrp: Constant<Bits<3>>,
+    ph_ddsp_force: Constant<Bits<3>>,
+    ph_send: Constant<Bits<3>>,
+    ph_split: Constant<Bits<3>>,
+    is_b: Constant<Bit>,
+    last_none: Constant<Bits<2>>,
+    last_own: Constant<Bits<2>>,
+    last_twin: Constant<Bits<2>>,
+    s_nrap: Constant<Bits<5>>,
+    s_outcome: Constant<Bits<5>>,
+    s_runs: Constant<Bits<5>>,
+    s_ncnt: Constant<Bits<5>>,
+    s_last: Constant<Bits<5>>,
+    s_half: Constant<Bits<5>>,
+    s_nt: Constant<Bits<5>>,
+    zero5: Constant<Bits<5>>,
+    one5: Constant<Bits<5>>,
+    max5: Constant<Bits<5>>,
+    zero4: Constant<Bits<4>>,
+    one4: Constant<Bits<4>>,
+    max4: Constant<Bits<4>>,
+    zero16: Constant<Bits<16>>,
+    one16: Constant<Bits<16>>,
+    max16: Constant<Bits<16>>,
+}
+
+impl<const H: usize> Default for Nrap<H> {
+    fn default() -> Self {
+        assert!(H <= 1, "hub: HUB_ID is 0 (hub A) or 1 (hub B)");
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            hold: Default::default(),
+            nrap_on: Default::default(),
+            force_bits: Default::default(),
+            srp_pairs: Default::default(),
+            nrp_pairs: Default::default(),
+            ddsp_frames: Default::default(),
+            srp_bits: Default::default(),
+            nrp_bits: Default::default(),
+            ddsp_bits: Default::default(),
+            block_frames: Default::default(),
+            decoupled: Default::default(),
+            any_sub_en: Default::default(),
+            twin_b: Default::default(),
+            sample: Default::default(),
+            b: Default::default(),
+            ev_ack: Default::default(),
+            ev_delim: Default::default(),
+            own_frame: Default::default(),
+            twin_frame: Default::default(),
+            in_id: Default::default(),
+            cmd_run: Default::default(),
+            cmd_split: Default::default(),
+            phase: Default::default(),
+            active: Default::default(),
+            forcing: Default::default(),
+            send: Default::default(),
+            ack_en: Default::default(),
+            hush: Default::default(),
+            quiet_twin: Default::default(),
+            status: Default::default(),
+            ev_phase: Default::default(),
+            set_decoupled: Default::default(),
+            p_exchange: Default::default(),
+            p_watch: Default::default(),
+            p_off_sub: Default::default(),
+            p_off_node: Default::default(),
+            p_enable: Default::default(),
+            nrap_q: Default::default(),
+            nt: Default::default(),
+            ncnt: Default::default(),
+            half: Default::default(),
+            last: Default::default(),
+            unacked: Default::default(),
+            runs: Default::default(),
+            outcome: Default::default(),
+            st_run: Default::default(),
+            st_srp_force: Default::default(),
+            st_exchange: Default::default(),
+            st_nrp: Default::default(),
+            st_ddsp_force: Default::default(),
+            st_send: Default::default(),
+            is_active: Default::default(),
+            nt_new: Default::default(),
+            ack_own: Default::default(),
+            ack_twin: Default::default(),
+            ack_a: Default::default(),
+            ack_b: Default::default(),
+            pairs: Default::default(),
+            ackd: Default::default(),
+            inc: Default::default(),
+            half_new: Default::default(),
+            ncnt_new: Default::default(),
+            unacked_new: Default::default(),
+            go: Default::default(),
+            next: Default::default(),
+            next_active: Default::default(),
+            last_new: Default::default(),
+            ph_run: phase(NrapPhase::Run),
+            ph_srp_force: phase(NrapPhase::SrpForce),
+            ph_exchange: phase(NrapPhase::SrpExchange),
+            ph_nrp: phase(NrapPhase::Nrp),
+            ph_ddsp_force: phase(NrapPhase::DdspForce),
+            ph_send: phase(NrapPhase::DdspSend),
+            ph_split: phase(NrapPhase::Split),
+            is_b: Constant::new(H == 1),
+            last_none: Constant::new(0.into()),
+            last_own: Constant::new(1.into()),
+            last_twin: Constant::new(2.into()),
+            s_nrap: lsb(&MAP, "NRAP_STATUS", "nrap", 3),
+            s_outcome: lsb(&MAP, "NRAP_STATUS", "outcome", 1),
+            s_runs: lsb(&MAP, "NRAP_STATUS", "runs", 4),
+            s_ncnt: lsb(&MAP, "NRAP_STATUS", "ncnt", 4),
+            s_last: lsb(&MAP, "NRAP_STATUS", "last", 2),
+            s_half: lsb(&MAP, "NRAP_STATUS", "half", 1),
+            s_nt: lsb(&MAP, "NRAP_STATUS", "nt", 16),
+            zero5: Constant::new(0.into()),
+            one5: Constant::new(1.into()),
+            max5: Constant::new(31.into()),
+            zero4: Constant::new(0.into()),
+            one4: Constant::new(1.into()),
+            max4: Constant::new(15.into()),
+            zero16: Constant::new(0.into()),
+            one16: Constant::new(1.into()),
+            max16: Constant::new(0xFFFF.into()),
+        }
+    }
+}
+
+impl<const H: usize> Logic for Nrap<H> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, nrap_q, nt, ncnt, half, last, unacked, runs, outcome);
+        self.st_run.next = self.nrap_q.q.val() == self.ph_run.val();
+        self.st_srp_force.next = self.nrap_q.q.val() == self.ph_srp_force.val();
+        self.st_exchange.next = self.nrap_q.q.val() == self.ph_exchange.val();
+        self.st_nrp.next = self.nrap_q.q.val() == self.ph_nrp.val();
+        self.st_ddsp_force.next = self.nrap_q.q.val() == self.ph_ddsp_force.val();
+        self.st_send.next = self.nrap_q.q.val() == self.ph_send.val();
+        self.is_active.next = self.st_srp_force.val()
+            | self.st_exchange.val()
+            | self.st_nrp.val()
+            | self.st_ddsp_force.val()
+            | self.st_send.val();
+        // NRAP may start from RUN
+        self.go.next = self.st_run.val() & self.nrap_on.val() & !self.decoupled.val();
+
+        // new nt: every SAMPLE edge counts (saturating)
+        if self.nt.q.val() == self.max16.val() {
+            self.nt_new.next = self.max16.val();
+        } else {
+            self.nt_new.next = self.nt.q.val() + self.one16.val();
+        }
+        // new unacked: frames in a row with an error flag at their ACK delimiter
+        self.unacked_new.next = self.unacked.q.val();
+        if self.ev_delim.val() {
+            if self.b.val() {
+                self.unacked_new.next = self.zero5.val();
+            } else if self.unacked.q.val() != self.max5.val() {
+                self.unacked_new.next = self.unacked.q.val() + self.one5.val();
+            }
+        }
+        // the ACK slot of an identification frame; hub A's and hub B's by HUB_ID
+        self.ack_own.next = self.ev_ack.val() & self.own_frame.val();
+        self.ack_twin.next = self.ev_ack.val() & self.twin_frame.val();
+        if self.is_b.val() {
+            self.ack_a.next = self.ack_twin.val();
+            self.ack_b.next = self.ack_own.val();
+        } else {
+            self.ack_a.next = self.ack_own.val();
+            self.ack_b.next = self.ack_twin.val();
+        }
+        // pairs (SRP_EXCHANGE, NRP): A's frame acknowledged, then B's; in
+        // SRP_EXCHANGE the own frame's ACK must come through an interlink
+        self.pairs.next = self.st_exchange.val() | self.st_nrp.val();
+        if self.st_exchange.val() & self.own_frame.val() {
+            self.ackd.next = !self.twin_b.val();
+        } else {
+            self.ackd.next = !self.b.val();
+        }
+        self.half_new.next = self.half.q.val();
+        if self.pairs.val() & (self.ack_a.val() | self.ack_b.val()) {
+            if !self.ackd.val() {
+                self.half_new.next = false;
+            } else if self.ack_a.val() {
+                self.half_new.next = true;
+            } else if self.half.q.val() {
+                self.half_new.next = false;
+            }
+        }
+        // new ncnt: the pairs, or in DDSP_SEND the own frames, the phase counts
+        self.inc.next = (self.pairs.val() & self.ack_b.val() & self.ackd.val() & self.half.q.val())
+            | (self.st_send.val() & self.ack_own.val() & !self.b.val());
+        if self.inc.val() & (self.ncnt.q.val() != self.max4.val()) {
+            self.ncnt_new.next = self.ncnt.q.val() + self.one4.val();
+        } else {
+            self.ncnt_new.next = self.ncnt.q.val();
+        }
+
+        // ---- the phase rules (§9.2), at SAMPLE edges ----
+        self.next.next = self.nrap_q.q.val();
+        self.last_new.next = self.last.q.val();
+        self.set_decoupled.next = false;
+        self.p_exchange.next = false;
+        self.p_watch.next = false;
+        self.p_off_sub.next = false;
+        self.p_off_node.next = false;
+        self.p_enable.next = false;
+        if self.pairs.val() {
+            if self.ack_twin.val() {
+                self.last_new.next = self.last_twin.val();
+            }
+            if self.ack_own.val() & self.ackd.val() {
+                self.last_new.next = self.last_own.val();
+            }
+        }
+        if self.sample.val() {
+            if self.st_run.val() {
+                if self.go.val()
+                    & (!self.any_sub_en.val()
+                        | ((self.block_frames.val() != self.zero5.val())
+                            & (self.unacked_new.val() >= self.block_frames.val())))
+                {
+                    // Trigger (no sublink enabled) or Blocked network
+                    self.next.next = self.ph_srp_force.val();
+                    self.last_new.next = self.last_none.val();
+                } else if self.go.val() & self.ack_twin.val() {
+                    // Joining: the twin's identification frame came through
+                    self.next.next = self.ph_exchange.val();
+                    self.last_new.next = self.last_twin.val();
+                    self.p_off_node.next = true;
+                }
+            } else if self.st_srp_force.val() {
+                if self.nt_new.val() >= bit_cast::<16, 10>(self.force_bits.val()) {
+                    self.next.next = self.ph_exchange.val();
+                    self.p_off_sub.next = true;
+                }
+            } else if self.st_exchange.val() {
+                self.p_exchange.next = true;
+                if self.ncnt_new.val() >= self.srp_pairs.val() {
+                    self.next.next = self.ph_nrp.val();
+                    self.p_enable.next = true;
+                } else if self.nt_new.val() >= self.srp_bits.val() {
+                    self.next.next = self.ph_ddsp_force.val();
+                    self.set_decoupled.next = true;
+                    self.p_off_sub.next = true;
+                }
+            } else if self.st_nrp.val() {
+                self.p_watch.next = self.in_id.val();
+                if self.ncnt_new.val() >= self.nrp_pairs.val() {
+                    self.next.next = self.ph_run.val();
+                } else if self.nt_new.val() >= self.nrp_bits.val() {
+                    self.next.next = self.ph_ddsp_force.val();
+                    self.set_decoupled.next = true;
+                    self.p_off_sub.next = true;
+                }
+            } else if self.st_ddsp_force.val() {
+                if self.nt_new.val() >= bit_cast::<16, 10>(self.force_bits.val()) {
+                    self.next.next = self.ph_send.val();
+                    self.p_enable.next = true;
+                }
+            } else if self.st_send.val() {
+                self.p_watch.next = self.in_id.val();
+                if (self.ncnt_new.val() >= self.ddsp_frames.val())
+                    | (self.nt_new.val() >= self.ddsp_bits.val())
+                {
+                    self.next.next = self.ph_split.val();
+                }
+            }
+        }
+        // ---- host commands decide the phase of their edge (§8) ----
+        if self.cmd_run.val() {
+            self.next.next = self.ph_run.val();
+        } else if self.cmd_split.val() & self.nrap_on.val() {
+            self.next.next = self.ph_split.val();
+        }
+        self.next_active.next =
+            (self.next.val() != self.ph_run.val()) & (self.next.val() != self.ph_split.val());
+
+        // ---- registers ----
+        self.nrap_q.d.next = self.next.val();
+        self.last.d.next = self.last_new.val();
+        self.unacked.d.next = self.unacked_new.val();
+        self.ev_phase.next = self.next.val() != self.nrap_q.q.val();
+        if self.ev_phase.val() {
+            // every phase change clears the phase's timer, counter and half pair
+            self.nt.d.next = self.zero16.val();
+            self.ncnt.d.next = self.zero4.val();
+            self.half.d.next = false;
+        } else {
+            if self.sample.val() {
+                self.nt.d.next = self.nt_new.val();
+            }
+            self.ncnt.d.next = self.ncnt_new.val();
+            self.half.d.next = self.half_new.val();
+        }
+        if !self.hold.val() {
+            if self.st_run.val() & self.next_active.val() & (self.runs.q.val() != self.max4.val()) {
+                self.runs.d.next = self.runs.q.val() + self.one4.val();
+            }
+            if self.is_active.val() & !self.next_active.val() {
+                self.outcome.d.next = self.next.val() == self.ph_run.val();
+            }
+        }
+        // reset mode holds the phase, its counters and `last`; no event, no strobe
+        if self.hold.val() {
+            self.nrap_q.d.next = self.ph_run.val();
+            self.nt.d.next = self.zero16.val();
+            self.ncnt.d.next = self.zero4.val();
+            self.half.d.next = false;
+            self.last.d.next = self.last_none.val();
+            self.unacked.d.next = self.zero5.val();
+            self.ev_phase.next = false;
+            self.set_decoupled.next = false;
+            self.p_exchange.next = false;
+            self.p_watch.next = false;
+            self.p_off_sub.next = false;
+            self.p_off_node.next = false;
+            self.p_enable.next = false;
+        }
+        if self.rst.val() {
+            self.runs.d.next = self.zero4.val();
+            self.outcome.d.next = false;
+        }
+
+        // ---- outputs (registers) ----
+        self.phase.next = self.nrap_q.q.val();
+        self.active.next = self.is_active.val();
+        self.forcing.next = self.st_srp_force.val() | self.st_ddsp_force.val();
+        self.send.next = (((self.st_exchange.val() & self.any_sub_en.val()) | self.st_nrp.val())
+            & (self.last.q.val() != self.last_own.val()))
+            | self.st_send.val();
+        self.ack_en.next = self.st_exchange.val() | self.st_nrp.val() | self.st_send.val();
+        self.hush.next = !self.is_active.val() | self.st_srp_force.val() | self.st_ddsp_force.val();
+        self.quiet_twin.next = self.st_send.val() | (self.nrap_q.q.val() == self.ph_split.val());
+        self.status.next = (bit_cast::<32, 3>(self.nrap_q.q.val()) << self.s_nrap.val())
+            | (bit_cast::<32, 1>(self.outcome.q.val().into()) << self.s_outcome.val())
+            | (bit_cast::<32, 4>(self.runs.q.val()) << self.s_runs.val())
+            | (bit_cast::<32, 4>(self.ncnt.q.val()) << self.s_ncnt.val())
+            | (bit_cast::<32, 2>(self.last.q.val()) << self.s_last.val())
+            | (bit_cast::<32, 1>(self.half.q.val().into()) << self.s_half.val())
+            | (bit_cast::<32, 16>(self.nt.q.val()) << self.s_nt.val());
+    }
+}
+
+#[test]
+fn nrap_synthesizes() {
+    let mut uut = Nrap::<0>::default();
+    uut.connect_all();
+    yosys_validate("hub_nrap", &generate_verilog(&uut)).unwrap();
+}

@@ -83,9 +83,11 @@ fn illegal_writes_set_illegal_with_the_documented_effect() {
     let mut sys = Sys::new(1);
     let ctrl0 = sys.read(0, CTRL);
 
-    // CTRL with policy 3 in reset mode: the whole write refused.
+    // CTRL with policy 3 (warning limit, §5) in reset mode: legal, stored.
     sys.write(0, CTRL, RESET_MODE | REDUNDANCY | policy(3) | k(5));
-    assert!(take_illegal(&mut sys));
+    assert!(!take_illegal(&mut sys));
+    assert_eq!(sys.read(0, CTRL), RESET_MODE | REDUNDANCY | policy(3) | k(5));
+    sys.write(0, CTRL, ctrl0);
     assert_eq!(sys.read(0, CTRL), ctrl0);
 
     // k = 0 is clamped to 1, not illegal.

@@ -3,7 +3,7 @@
 //! failed channel and its probation before it is trusted again.
 
 use super::regs::aux::*;
-use super::regs::ctrl::{POLICY_KFAIL, POLICY_NONE, POLICY_PASSIVE};
+use super::regs::ctrl::{POLICY_KFAIL, POLICY_NONE, POLICY_PASSIVE, POLICY_WARNING};
 use crate::model::coverage;
 
 /// What one aux FSM samples at an edge (pre-edge values).
@@ -30,6 +30,8 @@ pub struct AuxInputs {
     pub err_valid: bool,
     pub err_tx: bool,
     pub err_state: u8,
+    /// The channel's TEC or REC is at or above `ewl`.
+    pub err_warning: bool,
     pub sample_point: bool,
 }
 
@@ -114,12 +116,16 @@ impl AuxFsm {
                 if i.policy != POLICY_NONE && i.stall_limit != 0 && c.stall_cnt >= i.stall_limit {
                     causes |= CAUSE_STALL;
                 }
+                if i.policy == POLICY_WARNING && i.err_warning {
+                    causes |= CAUSE_WARNING;
+                }
                 if causes != 0 {
                     for (bit, name) in [
                         (CAUSE_PASSIVE, "aux: valid -> failed (error passive)"),
                         (CAUSE_BUSOFF, "aux: valid -> failed (bus-off)"),
                         (CAUSE_KFAIL, "aux: valid -> failed (k failed)"),
                         (CAUSE_STALL, "aux: valid -> failed (stall)"),
+                        (CAUSE_WARNING, "aux: valid -> failed (warning limit)"),
                     ] {
                         if causes & bit != 0 {
                             coverage::hit(name);

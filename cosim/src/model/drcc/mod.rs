@@ -250,8 +250,7 @@ impl DrccModel {
                             let any_listen_only =
                                 listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
                             let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
-                            if (w & ctrl::POLICY_MASK) >> ctrl::POLICY_SHIFT == ctrl::POLICY_ILLEGAL
-                                || (red && any_listen_only)
+                            if (red && any_listen_only)
                                 // DMR §2: one mode at a time; both lines must transmit.
                                 || (red && dmr)
                                 || (dmr && any_listen_only)
@@ -370,6 +369,7 @@ impl DrccModel {
                 err_valid: o.diag.err_valid,
                 err_tx: o.diag.err_tx,
                 err_state: o.probes.err_state,
+                err_warning: o.diag.err_warning,
                 sample_point: o.probes.sample_point,
             });
             if aev.int {

@@ -178,6 +178,7 @@ impl DrccModel {
             idx::STATS1 => self.fsm.switches as u32 | (r.recoveries as u32) << 16,
             idx::TIMES => self.fsm.last_tx_time as u32 | (self.fsm.switch_time as u32) << 16,
             idx::STAR_STATUS => self.star.reg(),
+            idx::OMISSIONS => self.rx.omissions[0] as u32 | (self.rx.omissions[1] as u32) << 16,
             // DMR registers (dmr_contract.md §2.1); TX_CMD, RX_CMD (write only) and
             // unmapped words read 0.
             _ => self

@@ -45,6 +45,8 @@ pub mod idx {
     pub const MB_STATE: u8 = 35;
     /// Replicated star node: the hubs' decision (§4.5).
     pub const STAR_STATUS: u8 = 36;
+    /// Frames only the other channel delivered, per channel (§7).
+    pub const OMISSIONS: u8 = 37;
 }
 
 /// `CTRL` fields.
@@ -73,7 +75,8 @@ pub mod ctrl {
     pub const POLICY_NONE: u32 = 0;
     pub const POLICY_PASSIVE: u32 = 1;
     pub const POLICY_KFAIL: u32 = 2;
-    pub const POLICY_ILLEGAL: u32 = 3;
+    /// Warning limit (§5): the channel's TEC or REC at or above `ewl`.
+    pub const POLICY_WARNING: u32 = 3;
 }
 
 /// `BTR` fields (value - 1 encodings as the channel ports, §C.6).
@@ -158,6 +161,7 @@ pub mod aux {
     pub const CAUSE_BUSOFF: u8 = 1 << 1;
     pub const CAUSE_KFAIL: u8 = 1 << 2;
     pub const CAUSE_STALL: u8 = 1 << 3;
+    pub const CAUSE_WARNING: u8 = 1 << 4;
 }
 
 /// DMR registers (dmr_contract.md §2.1): fields and reset values.

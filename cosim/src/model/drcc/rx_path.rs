@@ -6,6 +6,7 @@
 //! oldest first, at an ACL switch (states `RSCAN`, `FETCH`, `RELEASE`).
 
 use crate::frame::Frame;
+use crate::model::coverage;
 
 /// Writer FSM states.
 pub const W_IDLE: u8 = 0;
@@ -94,6 +95,8 @@ pub struct RxPath {
     // Statistics, cleared only by `rst`.
     pub duplicates: u16,
     pub overruns: u16,
+    /// `OMISSIONS`: per channel, frames only the other channel delivered (§7).
+    pub omissions: [u16; 2],
     // DMR mode (dmr_contract.md §8).
     /// Delivered: the entry's frame reached the FIFO.
     pub hd: u32,
@@ -236,6 +239,12 @@ impl RxPath {
                         self.free_e = e;
                     }
                     if c.hv & bit != 0 && age > i.window {
+                        if !i.dmr && c.hu & bit == 0 {
+                            // Only channel ch delivered it: an omission of the other.
+                            let miss = 1 - (entry.ch as usize & 1);
+                            self.omissions[miss] = c.omissions[miss].saturating_add(1);
+                            coverage::hit("rx: an omission (history entry expired unmatched)");
+                        }
                         expire(self, bit);
                     } else if c.hv & bit != 0
                         && c.hu & bit == 0
@@ -406,6 +415,7 @@ impl RxPath {
             hist_idle: self.hist_idle,
             now: self.now,
             duplicates: self.duplicates,
+            omissions: self.omissions,
             overruns: self.overruns,
             hd: self.hd,
             release: self.release,
@@ -442,6 +452,7 @@ struct RxRegs {
     hist_idle: u16,
     now: u16,
     duplicates: u16,
+    omissions: [u16; 2],
     overruns: u16,
     hd: u32,
     release: bool,

@@ -270,7 +270,6 @@ impl Nrap {
         self.nt = 0;
         self.ncnt = 0;
         self.half = false;
-        self.unacked = 0;
         fx.phase_changed = true;
     }
 
@@ -393,18 +392,20 @@ impl Nrap {
             TrkEvent::None => {}
         }
 
+        // Blocked-network count, in every phase (only RUN acts on it).
+        if i.ack_delim {
+            self.unacked = if i.b {
+                0
+            } else {
+                (self.unacked + 1).min(31)
+            };
+        }
+
         let nt = self.nt.saturating_add(1);
         let mut ncnt = self.ncnt;
         let sub_enabled = i.enabled & !((1u16 << n) - 1);
         match before {
             phase::RUN => {
-                if i.ack_delim {
-                    self.unacked = if i.b {
-                        0
-                    } else {
-                        (self.unacked + 1).min(31)
-                    };
-                }
                 let blocked = cfg.block_frames != 0 && self.unacked >= cfg.block_frames;
                 if i.nrap_on && !i.decoupled && blocked {
                     coverage::hit("hub nrap: triggered (network blocked)");
@@ -419,9 +420,10 @@ impl Nrap {
                 if i.nrap_on && !i.decoupled && twin_frame {
                     coverage::hit("hub nrap: joins the twin's exchange");
                     self.goto(phase::SRP_EXCHANGE, &mut fx);
-                    self.last = 2;
                     self.runs = (self.runs + 1).min(15);
                     self.rrun = [0; 16];
+                    // The joining frame counts for the pairs as in SRP_EXCHANGE.
+                    self.pairs(false, true, i.b);
                     return fx;
                 }
             }
@@ -518,6 +520,9 @@ impl Nrap {
     pub fn command(&mut self, to: u8) -> bool {
         if self.phase == to {
             return false;
+        }
+        if self.active() {
+            self.outcome = to == phase::RUN;
         }
         self.phase = to;
         self.nt = 0;

@@ -11,8 +11,9 @@
 //!   sample), no other port isolated, and the port restored after the fault ends
 //!   (no earlier than `restore_bits` when the symptom lasts to the end of the fault);
 //! - one interlink lost: the coupling holds (no decoupling, no omission anywhere);
-//! - every interlink lost: ACK interdependence lets no frame complete anywhere until
-//!   a hub decouples, then each star carries traffic again.
+//! - every interlink lost, for a while or for good, and the paper's malicious hubs:
+//!   NRAP (§9) brings both hubs to one decision within its bounds, every node's
+//!   `STAR_STATUS` follows it, and nothing is lost or duplicated.
 
 use drcc_cosim::engine::hub_verilator::HubVerilatorEngine;
 use drcc_cosim::star::hub_host::HubConfig;
@@ -225,59 +226,158 @@ fn one_interlink_lost_keeps_the_hubs_coupled() {
     }
 }
 
-#[test]
-fn all_interlinks_lost_stops_traffic_until_the_hubs_decouple() {
-    let (s, r) = run(StarFault::AllInterlinksLost);
-    assert!(
-        r.duplicates.is_empty() && r.foreign == 0,
-        "{:?}",
-        r.duplicates
-    );
-    let targets = s.fault.target_ports();
-    assert!(r.false_isolations(&targets).is_empty());
-    let mut last_isolation = [0u64; 2];
-    for &(h, p) in &targets {
-        assert!(p >= HUB_N);
-        let at = r
-            .isolated_at(h, p, r.fault_start)
-            .expect("sublink isolated");
-        last_isolation[h] = last_isolation[h].max(at);
-    }
-    // §7: decoupled decouple_bits sample points after the last sublink went. The
-    // hub counts its own bit times: the hard synchronization at every start of frame
-    // and resynchronization stretch some of them, so allow 1/64 more.
-    let decouple = s.hub.decouple_bits as u64;
-    let mut decoupled = [0u64; 2];
+/// NRAP phases (hub contract §9.2).
+const RUN: u8 = 0;
+const SPLIT: u8 = 6;
+
+/// §9.5 worst cases from a hub's trigger with the default registers (64, 1024,
+/// 1024, 64, 1024): recoupling, and definitive decoupling.
+const RECOUPLE_BOUND: u64 = 64 + 1024 + 1024;
+const SPLIT_BOUND: u64 = 64 + 1024 + 1024 + 64 + 1024;
+
+/// Each hub ran NRAP once after the onset and ended in `end`, within `bound` bit
+/// times of its own start (the hub counts its own bit times, which resynchronisation
+/// stretches a little: allow 1/64); returns the end clocks.
+fn assert_nrap_ended(s: &StarScenario, r: &StarReport, end: u8, bound: u64) -> [u64; 2] {
+    let name = s.fault.name();
+    let mut ends = [0u64; 2];
     for h in 0..2 {
-        let at = r.decoupled_at[h].expect("each hub decouples");
-        let after = bits_after(last_isolation[h], at);
+        let first = r
+            .nrap_events
+            .iter()
+            .find(|e| e.hub == h && e.cycle >= r.fault_start)
+            .unwrap_or_else(|| panic!("{name}: hub {} never ran NRAP", h + 1));
+        let (finish, phase) = r
+            .nrap_events
+            .iter()
+            .find(|e| e.hub == h && e.cycle > first.cycle && (e.phase == RUN || e.phase == SPLIT))
+            .map(|e| (e.cycle, e.phase))
+            .unwrap_or_else(|| panic!("{name}: hub {} NRAP never ended", h + 1));
+        assert_eq!(phase, end, "{name}: hub {} ended in phase {phase}", h + 1);
+        let took = bits_after(first.cycle, finish);
         assert!(
-            (decouple..=decouple + decouple / 64).contains(&after),
-            "hub {} decoupled {after} bit times after its last sublink",
+            took <= bound + bound / 64,
+            "{name}: hub {} took {took} bit times (bound {bound})",
             h + 1
         );
-        decoupled[h] = at;
+        assert_eq!(r.final_phase(h), end, "{name}: hub {} NRAP_STATUS", h + 1);
+        assert_eq!(
+            r.hub_nrap[h] >> 3 & 1,
+            (end == RUN) as u32,
+            "{name}: hub {} outcome",
+            h + 1
+        );
+        ends[h] = finish;
     }
-    // ACK interdependence: a frame that started after the onset completes nowhere
-    // until the first hub decouples (one frame, 130 bit times at most, may be
-    // under way at the onset).
-    let blocked_from = r.fault_start + 130 * CLOCKS_PER_BIT;
-    let first = decoupled[0].min(decoupled[1]);
-    let mut after_decoupling = 0;
-    for (i, node) in r.received_at.iter().enumerate() {
-        for &c in node {
-            assert!(
-                !(blocked_from..first).contains(&c),
-                "node {i} received a frame at bit {} while the hubs were blocked",
-                c / CLOCKS_PER_BIT
-            );
-            after_decoupling += (c >= first && c < r.fault_end) as usize;
-        }
-    }
-    assert!(
-        after_decoupling > 0,
-        "no star carried traffic after decoupling"
+    ends
+}
+
+/// Every node's `STAR_STATUS.split` (DRCC contract §4.5) shows `split`.
+fn assert_nodes_follow(s: &StarScenario, r: &StarReport, split: bool) {
+    assert_eq!(
+        r.node_split(),
+        vec![split; s.nodes],
+        "{}: the nodes' domain (STAR_STATUS {:x?})",
+        s.fault.name(),
+        r.star_status
     );
+    // The identification frames are the hubs' traffic: no host got one.
+    assert!(r.hub_frames.iter().all(|&n| n == 0), "{:?}", r.hub_frames);
+}
+
+#[test]
+fn all_interlinks_lost_ends_in_an_agreed_definitive_decoupling_and_loses_nothing() {
+    // Issue 13: before NRAP the hubs decoupled on their own at different times and 2
+    // frames were lost. Now both run NRAP (paper section 5), each ends in SPLIT
+    // within the §9.5 bound, every node's register says so, and nothing is lost.
+    let (s, r) = run(StarFault::AllInterlinksLost);
+    assert_lossless(&s, &r);
+    assert_nrap_ended(&s, &r, SPLIT, SPLIT_BOUND);
+    assert_nodes_follow(&s, &r, true);
+    let targets = s.fault.target_ports();
+    assert!(r.false_isolations(&targets).iter().all(|e| e.port < HUB_N));
+    // ACK interdependence: a frame that started after the onset completes nowhere
+    // until the first hub decides on its own star (DDSP_FORCE sets `decoupled`).
+    assert_eq!(receptions_while_blocked(&r), 0);
+    let first = r.decoupled_at.iter().flatten().min().copied().unwrap();
+    let after = r
+        .received_at
+        .iter()
+        .flatten()
+        .filter(|&&c| c >= first && c < r.fault_end)
+        .count();
+    assert!(after > 0, "no star carried traffic after the decision");
+}
+
+#[test]
+fn a_transient_loss_of_every_interlink_recouples_through_nrap() {
+    // Both interlinks cut for 1500 bit times: one hub triggers while they are down;
+    // once they are back its identification frames reach the other hub, which joins
+    // (§9.2), and both recouple at the ACK slot of the same frame.
+    let (s, r) = run(StarFault::TransientDecoupling);
+    assert_lossless(&s, &r);
+    let ends = assert_nrap_ended(&s, &r, RUN, RECOUPLE_BOUND);
+    assert!(
+        ends[0].abs_diff(ends[1]) < CLOCKS_PER_BIT,
+        "the hubs recoupled at bit times {} and {}",
+        ends[0] / CLOCKS_PER_BIT,
+        ends[1] / CLOCKS_PER_BIT
+    );
+    assert_eq!(r.decoupled_at, [None, None], "neither hub decoupled");
+    assert_nodes_follow(&s, &r, false);
+    // The restored nodes resume together: nobody received anything between the
+    // onset's blocking and the recoupling.
+    let blocked_from = r.fault_start + 130 * CLOCKS_PER_BIT;
+    let early = r
+        .received_at
+        .iter()
+        .flatten()
+        .filter(|&&c| (blocked_from..ends[0]).contains(&c))
+        .count();
+    assert_eq!(early, 0, "frames completed before the hubs recoupled");
+}
+
+#[test]
+fn a_permanent_loss_splits_the_network_into_two_working_stars() {
+    let (s, r) = run(StarFault::PermanentDecoupling);
+    assert_lossless(&s, &r);
+    let ends = assert_nrap_ended(&s, &r, SPLIT, SPLIT_BOUND);
+    assert_nodes_follow(&s, &r, true);
+    // After both decided, both stars carry traffic: each node delivers frames from
+    // both channels (the copy through the other star is dropped as a duplicate).
+    let split = ends[0].max(ends[1]);
+    let after: usize = r
+        .received_at
+        .iter()
+        .map(|v| v.iter().filter(|&&c| c > split).count())
+        .sum();
+    assert!(after > 0, "nothing delivered after the split");
+    assert!(
+        r.dups_dropped.iter().all(|&d| d > 0),
+        "every node removed copies that came through the other star: {:?}",
+        r.dups_dropped
+    );
+}
+
+#[test]
+fn a_hub_that_does_not_couple_its_twin_is_settled_by_nrap() {
+    // Paper section 3's malicious hub (CTRL.fi_no_twin on hub 2): its sublinks stay
+    // enabled and nothing is isolated, but no frame is acknowledged through the
+    // coupling any more; the blocked-network trigger starts NRAP and both hubs end
+    // in the same decision, which every node follows.
+    let (s, r) = run(StarFault::HubIgnoresTwin);
+    assert_lossless(&s, &r);
+    assert_nrap_ended(&s, &r, SPLIT, SPLIT_BOUND);
+    assert_nodes_follow(&s, &r, true);
+}
+
+#[test]
+fn a_hub_that_passes_its_own_ack_is_held_by_its_ack_unit() {
+    let (s, r) = run(StarFault::HubLeaksAck);
+    assert_lossless(&s, &r);
+    assert!(r.hub_ack_unit[0] & 0xFFFF > 0, "ACK_UNIT = {:#x}", r.hub_ack_unit[0]);
+    assert_eq!(r.hub_ack_unit[1] & 0xFFFF, 0);
+    assert!(r.nrap_events.is_empty(), "a guarded leak needs no NRAP");
 }
 
 /// Receptions at any host between the moment ACK interdependence must have blocked

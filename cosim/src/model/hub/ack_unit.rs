@@ -8,10 +8,10 @@
 //!
 //! ```text
 //! u_s1 <= pins ; u_in_s <= u_s1
-//! u_own  = AND over node ports    of (u_in_s | !enabled)
+//! u_own  = AND over node ports    of (u_in_s | !enabled) & tx_q & !forcing
 //! u_twin = AND over sublink ports of (u_in_s | !enabled)
 //! u_view_q <= decoupled ? u_own : u_own & u_twin
-//! guard    = u_window & ack_interdep & !decoupled & !nrap_active   (§9)
+//! guard    = u_window & ack_interdep & !decoupled
 //! downlink <= guard ? (dl_next | u_twin) : dl_next
 //! ```
 
@@ -25,8 +25,9 @@ pub struct AckUnitInputs {
     pub pins: u16,
     pub enabled: u16,
     pub decoupled: bool,
-    /// NRAP is in one of its phases (§9): the unit is transparent.
-    pub nrap_active: bool,
+    /// The hub's NRAP transmitter is part of its contribution (§9.4): `tx_q &
+    /// !forcing`.
+    pub own_gate: bool,
     pub ack_interdep: bool,
     /// The coupler's next downlink value (§3).
     pub dl_next: bool,
@@ -89,10 +90,10 @@ impl AckUnit {
     ) -> bool {
         // Combinational values from the registers before the edge.
         let contrib = self.in_s | !i.enabled;
-        let own = contrib & node_mask == node_mask;
+        let own = contrib & node_mask == node_mask && i.own_gate;
         let twin = contrib & sub_mask == sub_mask;
         let window = self.trk.ack_window();
-        let guard = window && i.ack_interdep && !i.decoupled && !i.nrap_active;
+        let guard = window && i.ack_interdep && !i.decoupled;
         let b = self.view_q;
 
         // Interventions: a dominant bit turned recessive, counted once per window.

@@ -289,7 +289,6 @@ impl HubModel {
         let b = self.cpl.coupled_q;
         let pq = self.cpl.port_q;
         let decoupled = self.dec.decoupled;
-        let nrap_active = self.nrap.active();
         let tx_q = self.nrap.tx_q;
         let mask_ack = self.trk.ack_window() && ack_interdep && !decoupled && !fi_ack_leak;
         let pins = (i.uplink & self.node_mask) | ((i.sublink_in as u16) << self.n);
@@ -313,7 +312,7 @@ impl HubModel {
                     pins,
                     enabled,
                     decoupled,
-                    nrap_active,
+                    own_gate: tx_q && !self.nrap.forcing(),
                     ack_interdep,
                     dl_next,
                     reset_mode,

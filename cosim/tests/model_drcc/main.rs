@@ -12,6 +12,7 @@ use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Fra
 mod channel_switching;
 mod reception;
 mod registers;
+mod star_node;
 
 // Word indices (contract §3).
 const ID: u8 = 0;

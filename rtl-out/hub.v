@@ -303,6 +303,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  node_guards__0__n_rrun;
     reg  node_guards__0__n_watch;
     reg  node_guards__0__n_off;
+    reg  node_guards__0__n_clr;
     reg  node_guards__0__n_enable;
     reg  [5:0] node_guards__0__sd_limit;
     reg  [7:0] node_guards__0__bf_limit;
@@ -329,6 +330,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  node_guards__1__n_rrun;
     reg  node_guards__1__n_watch;
     reg  node_guards__1__n_off;
+    reg  node_guards__1__n_clr;
     reg  node_guards__1__n_enable;
     reg  [5:0] node_guards__1__sd_limit;
     reg  [7:0] node_guards__1__bf_limit;
@@ -355,6 +357,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  node_guards__2__n_rrun;
     reg  node_guards__2__n_watch;
     reg  node_guards__2__n_off;
+    reg  node_guards__2__n_clr;
     reg  node_guards__2__n_enable;
     reg  [5:0] node_guards__2__sd_limit;
     reg  [7:0] node_guards__2__bf_limit;
@@ -381,6 +384,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  node_guards__3__n_rrun;
     reg  node_guards__3__n_watch;
     reg  node_guards__3__n_off;
+    reg  node_guards__3__n_clr;
     reg  node_guards__3__n_enable;
     reg  [5:0] node_guards__3__sd_limit;
     reg  [7:0] node_guards__3__bf_limit;
@@ -407,6 +411,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  sub_guards__0__n_rrun;
     reg  sub_guards__0__n_watch;
     reg  sub_guards__0__n_off;
+    reg  sub_guards__0__n_clr;
     reg  sub_guards__0__n_enable;
     reg  [5:0] sub_guards__0__sd_limit;
     reg  [7:0] sub_guards__0__bf_limit;
@@ -433,6 +438,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  sub_guards__1__n_rrun;
     reg  sub_guards__1__n_watch;
     reg  sub_guards__1__n_off;
+    reg  sub_guards__1__n_clr;
     reg  sub_guards__1__n_enable;
     reg  [5:0] sub_guards__1__sd_limit;
     reg  [7:0] sub_guards__1__bf_limit;
@@ -479,7 +485,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     wire  nrap__p_exchange;
     wire  nrap__p_watch;
     wire  nrap__p_off_sub;
-    wire  nrap__p_off_node;
+    wire  nrap__p_join;
     wire  nrap__p_enable;
     reg  id_frame__clk;
     reg  id_frame__rst;
@@ -691,6 +697,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .n_rrun(node_guards__0__n_rrun),
         .n_watch(node_guards__0__n_watch),
         .n_off(node_guards__0__n_off),
+        .n_clr(node_guards__0__n_clr),
         .n_enable(node_guards__0__n_enable),
         .sd_limit(node_guards__0__sd_limit),
         .bf_limit(node_guards__0__bf_limit),
@@ -719,6 +726,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .n_rrun(node_guards__1__n_rrun),
         .n_watch(node_guards__1__n_watch),
         .n_off(node_guards__1__n_off),
+        .n_clr(node_guards__1__n_clr),
         .n_enable(node_guards__1__n_enable),
         .sd_limit(node_guards__1__sd_limit),
         .bf_limit(node_guards__1__bf_limit),
@@ -747,6 +755,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .n_rrun(node_guards__2__n_rrun),
         .n_watch(node_guards__2__n_watch),
         .n_off(node_guards__2__n_off),
+        .n_clr(node_guards__2__n_clr),
         .n_enable(node_guards__2__n_enable),
         .sd_limit(node_guards__2__sd_limit),
         .bf_limit(node_guards__2__bf_limit),
@@ -775,6 +784,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .n_rrun(node_guards__3__n_rrun),
         .n_watch(node_guards__3__n_watch),
         .n_off(node_guards__3__n_off),
+        .n_clr(node_guards__3__n_clr),
         .n_enable(node_guards__3__n_enable),
         .sd_limit(node_guards__3__sd_limit),
         .bf_limit(node_guards__3__bf_limit),
@@ -803,6 +813,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .n_rrun(sub_guards__0__n_rrun),
         .n_watch(sub_guards__0__n_watch),
         .n_off(sub_guards__0__n_off),
+        .n_clr(sub_guards__0__n_clr),
         .n_enable(sub_guards__0__n_enable),
         .sd_limit(sub_guards__0__sd_limit),
         .bf_limit(sub_guards__0__bf_limit),
@@ -831,6 +842,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .n_rrun(sub_guards__1__n_rrun),
         .n_watch(sub_guards__1__n_watch),
         .n_off(sub_guards__1__n_off),
+        .n_clr(sub_guards__1__n_clr),
         .n_enable(sub_guards__1__n_enable),
         .sd_limit(sub_guards__1__sd_limit),
         .bf_limit(sub_guards__1__bf_limit),
@@ -879,7 +891,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .p_exchange(nrap__p_exchange),
         .p_watch(nrap__p_watch),
         .p_off_sub(nrap__p_off_sub),
-        .p_off_node(nrap__p_off_node),
+        .p_join(nrap__p_join),
         .p_enable(nrap__p_enable)
     );
     hub__id_frame id_frame(
@@ -929,7 +941,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         node_guards__0__ev_ack = tracker__ev_ack;
         node_guards__0__n_rrun = 1'b0;
         node_guards__0__n_watch = nrap__p_watch;
-        node_guards__0__n_off = nrap__p_off_node;
+        node_guards__0__n_off = 1'b0;
+        node_guards__0__n_clr = 1'b0;
         node_guards__0__n_enable = nrap__p_enable;
         node_guards__0__sd_limit = hub_cfg__sd_run_up;
         node_guards__0__bf_limit = hub_cfg__bf_up;
@@ -957,7 +970,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         node_guards__1__ev_ack = tracker__ev_ack;
         node_guards__1__n_rrun = 1'b0;
         node_guards__1__n_watch = nrap__p_watch;
-        node_guards__1__n_off = nrap__p_off_node;
+        node_guards__1__n_off = 1'b0;
+        node_guards__1__n_clr = 1'b0;
         node_guards__1__n_enable = nrap__p_enable;
         node_guards__1__sd_limit = hub_cfg__sd_run_up;
         node_guards__1__bf_limit = hub_cfg__bf_up;
@@ -985,7 +999,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         node_guards__2__ev_ack = tracker__ev_ack;
         node_guards__2__n_rrun = 1'b0;
         node_guards__2__n_watch = nrap__p_watch;
-        node_guards__2__n_off = nrap__p_off_node;
+        node_guards__2__n_off = 1'b0;
+        node_guards__2__n_clr = 1'b0;
         node_guards__2__n_enable = nrap__p_enable;
         node_guards__2__sd_limit = hub_cfg__sd_run_up;
         node_guards__2__bf_limit = hub_cfg__bf_up;
@@ -1013,7 +1028,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         node_guards__3__ev_ack = tracker__ev_ack;
         node_guards__3__n_rrun = 1'b0;
         node_guards__3__n_watch = nrap__p_watch;
-        node_guards__3__n_off = nrap__p_off_node;
+        node_guards__3__n_off = 1'b0;
+        node_guards__3__n_clr = 1'b0;
         node_guards__3__n_enable = nrap__p_enable;
         node_guards__3__sd_limit = hub_cfg__sd_run_up;
         node_guards__3__bf_limit = hub_cfg__bf_up;
@@ -1042,6 +1058,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         sub_guards__0__n_rrun = nrap__p_exchange;
         sub_guards__0__n_watch = 1'b0;
         sub_guards__0__n_off = nrap__p_off_sub;
+        sub_guards__0__n_clr = nrap__p_join;
         sub_guards__0__n_enable = 1'b0;
         sub_guards__0__sd_limit = hub_cfg__sd_run_sub;
         sub_guards__0__bf_limit = hub_cfg__bf_sub;
@@ -1070,6 +1087,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         sub_guards__1__n_rrun = nrap__p_exchange;
         sub_guards__1__n_watch = 1'b0;
         sub_guards__1__n_off = nrap__p_off_sub;
+        sub_guards__1__n_clr = nrap__p_join;
         sub_guards__1__n_enable = 1'b0;
         sub_guards__1__sd_limit = hub_cfg__sd_run_sub;
         sub_guards__1__bf_limit = hub_cfg__bf_sub;
@@ -5150,7 +5168,7 @@ module hub__id_frame__tx_q(d,q,clock);
 endmodule // hub__id_frame__tx_q
 
 
-module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -5170,6 +5188,7 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -5497,6 +5516,9 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -5745,7 +5767,7 @@ module hub__node_guards__0__silent(d,q,clock);
 endmodule // hub__node_guards__0__silent
 
 
-module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -5765,6 +5787,7 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -6092,6 +6115,9 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -6340,7 +6366,7 @@ module hub__node_guards__1__silent(d,q,clock);
 endmodule // hub__node_guards__1__silent
 
 
-module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -6360,6 +6386,7 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -6687,6 +6714,9 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -6935,7 +6965,7 @@ module hub__node_guards__2__silent(d,q,clock);
 endmodule // hub__node_guards__2__silent
 
 
-module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -6955,6 +6985,7 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -7282,6 +7313,9 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -7530,7 +7564,7 @@ module hub__node_guards__3__silent(d,q,clock);
 endmodule // hub__node_guards__3__silent
 
 
-module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames,srp_bits,nrp_bits,ddsp_bits,block_frames,decoupled,any_sub_en,twin_b,sample,b,ev_ack,ev_delim,own_frame,twin_frame,in_id,cmd_run,cmd_split,phase,active,forcing,send,ack_en,hush,quiet_twin,status,ev_phase,set_decoupled,p_exchange,p_watch,p_off_sub,p_off_node,p_enable);
+module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames,srp_bits,nrp_bits,ddsp_bits,block_frames,decoupled,any_sub_en,twin_b,sample,b,ev_ack,ev_delim,own_frame,twin_frame,in_id,cmd_run,cmd_split,phase,active,forcing,send,ack_en,hush,quiet_twin,status,ev_phase,set_decoupled,p_exchange,p_watch,p_off_sub,p_join,p_enable);
     
     // Module arguments
     input wire  clk;
@@ -7570,7 +7604,7 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
     output reg  p_exchange;
     output reg  p_watch;
     output reg  p_off_sub;
-    output reg  p_off_node;
+    output reg  p_join;
     output reg  p_enable;
     
     // Constant declarations
@@ -7651,6 +7685,7 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
     reg  [2:0] next;
     reg  next_active;
     reg  [1:0] last_new;
+    reg  half_join;
     
     // Sub module instances
     hub__nrap__nrap_q nrap_q(
@@ -7777,8 +7812,9 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
         p_exchange = 1'b0;
         p_watch = 1'b0;
         p_off_sub = 1'b0;
-        p_off_node = 1'b0;
+        p_join = 1'b0;
         p_enable = 1'b0;
+        half_join = 1'b0;
         if (pairs) begin
             if (ack_twin) begin
                 last_new = last_twin;
@@ -7796,7 +7832,8 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
                 else if (go & ack_twin) begin
                     next = ph_exchange;
                     last_new = last_twin;
-                    p_off_node = 1'b1;
+                    half_join = is_b & ~b;
+                    p_join = 1'b1;
                 end
             end
             else if (st_srp_force) begin
@@ -7855,7 +7892,7 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
         if (ev_phase) begin
             nt__d = zero16;
             ncnt__d = zero4;
-            half__d = 1'b0;
+            half__d = half_join & (next == ph_exchange);
         end
         else begin
             if (sample) begin
@@ -7884,7 +7921,7 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
             p_exchange = 1'b0;
             p_watch = 1'b0;
             p_off_sub = 1'b0;
-            p_off_node = 1'b0;
+            p_join = 1'b0;
             p_enable = 1'b0;
         end
         if (rst) begin
@@ -8703,7 +8740,7 @@ module hub__regs__reset_mode_q(d,q,clock);
 endmodule // hub__regs__reset_mode_q
 
 
-module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -8723,6 +8760,7 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -9050,6 +9088,9 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -9298,7 +9339,7 @@ module hub__sub_guards__0__silent(d,q,clock);
 endmodule // hub__sub_guards__0__silent
 
 
-module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -9318,6 +9359,7 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -9644,6 +9686,9 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         end
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
+        end
+        if (n_clr) begin
+            rrun__d = zero4;
         end
         if (n_off) begin
             enabled_q__d = 1'b0;

@@ -302,6 +302,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  node_guards__0__n_rrun;
     reg  node_guards__0__n_watch;
     reg  node_guards__0__n_off;
+    reg  node_guards__0__n_clr;
     reg  node_guards__0__n_enable;
     reg  [5:0] node_guards__0__sd_limit;
     reg  [7:0] node_guards__0__bf_limit;
@@ -328,6 +329,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  node_guards__1__n_rrun;
     reg  node_guards__1__n_watch;
     reg  node_guards__1__n_off;
+    reg  node_guards__1__n_clr;
     reg  node_guards__1__n_enable;
     reg  [5:0] node_guards__1__sd_limit;
     reg  [7:0] node_guards__1__bf_limit;
@@ -354,6 +356,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  node_guards__2__n_rrun;
     reg  node_guards__2__n_watch;
     reg  node_guards__2__n_off;
+    reg  node_guards__2__n_clr;
     reg  node_guards__2__n_enable;
     reg  [5:0] node_guards__2__sd_limit;
     reg  [7:0] node_guards__2__bf_limit;
@@ -380,6 +383,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  node_guards__3__n_rrun;
     reg  node_guards__3__n_watch;
     reg  node_guards__3__n_off;
+    reg  node_guards__3__n_clr;
     reg  node_guards__3__n_enable;
     reg  [5:0] node_guards__3__sd_limit;
     reg  [7:0] node_guards__3__bf_limit;
@@ -406,6 +410,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  sub_guards__0__n_rrun;
     reg  sub_guards__0__n_watch;
     reg  sub_guards__0__n_off;
+    reg  sub_guards__0__n_clr;
     reg  sub_guards__0__n_enable;
     reg  [5:0] sub_guards__0__sd_limit;
     reg  [7:0] sub_guards__0__bf_limit;
@@ -432,6 +437,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  sub_guards__1__n_rrun;
     reg  sub_guards__1__n_watch;
     reg  sub_guards__1__n_off;
+    reg  sub_guards__1__n_clr;
     reg  sub_guards__1__n_enable;
     reg  [5:0] sub_guards__1__sd_limit;
     reg  [7:0] sub_guards__1__bf_limit;
@@ -478,7 +484,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     wire  nrap__p_exchange;
     wire  nrap__p_watch;
     wire  nrap__p_off_sub;
-    wire  nrap__p_off_node;
+    wire  nrap__p_join;
     wire  nrap__p_enable;
     reg  id_frame__clk;
     reg  id_frame__rst;
@@ -690,6 +696,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .n_rrun(node_guards__0__n_rrun),
         .n_watch(node_guards__0__n_watch),
         .n_off(node_guards__0__n_off),
+        .n_clr(node_guards__0__n_clr),
         .n_enable(node_guards__0__n_enable),
         .sd_limit(node_guards__0__sd_limit),
         .bf_limit(node_guards__0__bf_limit),
@@ -718,6 +725,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .n_rrun(node_guards__1__n_rrun),
         .n_watch(node_guards__1__n_watch),
         .n_off(node_guards__1__n_off),
+        .n_clr(node_guards__1__n_clr),
         .n_enable(node_guards__1__n_enable),
         .sd_limit(node_guards__1__sd_limit),
         .bf_limit(node_guards__1__bf_limit),
@@ -746,6 +754,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .n_rrun(node_guards__2__n_rrun),
         .n_watch(node_guards__2__n_watch),
         .n_off(node_guards__2__n_off),
+        .n_clr(node_guards__2__n_clr),
         .n_enable(node_guards__2__n_enable),
         .sd_limit(node_guards__2__sd_limit),
         .bf_limit(node_guards__2__bf_limit),
@@ -774,6 +783,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .n_rrun(node_guards__3__n_rrun),
         .n_watch(node_guards__3__n_watch),
         .n_off(node_guards__3__n_off),
+        .n_clr(node_guards__3__n_clr),
         .n_enable(node_guards__3__n_enable),
         .sd_limit(node_guards__3__sd_limit),
         .bf_limit(node_guards__3__bf_limit),
@@ -802,6 +812,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .n_rrun(sub_guards__0__n_rrun),
         .n_watch(sub_guards__0__n_watch),
         .n_off(sub_guards__0__n_off),
+        .n_clr(sub_guards__0__n_clr),
         .n_enable(sub_guards__0__n_enable),
         .sd_limit(sub_guards__0__sd_limit),
         .bf_limit(sub_guards__0__bf_limit),
@@ -830,6 +841,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .n_rrun(sub_guards__1__n_rrun),
         .n_watch(sub_guards__1__n_watch),
         .n_off(sub_guards__1__n_off),
+        .n_clr(sub_guards__1__n_clr),
         .n_enable(sub_guards__1__n_enable),
         .sd_limit(sub_guards__1__sd_limit),
         .bf_limit(sub_guards__1__bf_limit),
@@ -878,7 +890,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .p_exchange(nrap__p_exchange),
         .p_watch(nrap__p_watch),
         .p_off_sub(nrap__p_off_sub),
-        .p_off_node(nrap__p_off_node),
+        .p_join(nrap__p_join),
         .p_enable(nrap__p_enable)
     );
     hub_b__id_frame id_frame(
@@ -928,7 +940,8 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         node_guards__0__ev_ack = tracker__ev_ack;
         node_guards__0__n_rrun = 1'b0;
         node_guards__0__n_watch = nrap__p_watch;
-        node_guards__0__n_off = nrap__p_off_node;
+        node_guards__0__n_off = 1'b0;
+        node_guards__0__n_clr = 1'b0;
         node_guards__0__n_enable = nrap__p_enable;
         node_guards__0__sd_limit = hub_cfg__sd_run_up;
         node_guards__0__bf_limit = hub_cfg__bf_up;
@@ -956,7 +969,8 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         node_guards__1__ev_ack = tracker__ev_ack;
         node_guards__1__n_rrun = 1'b0;
         node_guards__1__n_watch = nrap__p_watch;
-        node_guards__1__n_off = nrap__p_off_node;
+        node_guards__1__n_off = 1'b0;
+        node_guards__1__n_clr = 1'b0;
         node_guards__1__n_enable = nrap__p_enable;
         node_guards__1__sd_limit = hub_cfg__sd_run_up;
         node_guards__1__bf_limit = hub_cfg__bf_up;
@@ -984,7 +998,8 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         node_guards__2__ev_ack = tracker__ev_ack;
         node_guards__2__n_rrun = 1'b0;
         node_guards__2__n_watch = nrap__p_watch;
-        node_guards__2__n_off = nrap__p_off_node;
+        node_guards__2__n_off = 1'b0;
+        node_guards__2__n_clr = 1'b0;
         node_guards__2__n_enable = nrap__p_enable;
         node_guards__2__sd_limit = hub_cfg__sd_run_up;
         node_guards__2__bf_limit = hub_cfg__bf_up;
@@ -1012,7 +1027,8 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         node_guards__3__ev_ack = tracker__ev_ack;
         node_guards__3__n_rrun = 1'b0;
         node_guards__3__n_watch = nrap__p_watch;
-        node_guards__3__n_off = nrap__p_off_node;
+        node_guards__3__n_off = 1'b0;
+        node_guards__3__n_clr = 1'b0;
         node_guards__3__n_enable = nrap__p_enable;
         node_guards__3__sd_limit = hub_cfg__sd_run_up;
         node_guards__3__bf_limit = hub_cfg__bf_up;
@@ -1041,6 +1057,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         sub_guards__0__n_rrun = nrap__p_exchange;
         sub_guards__0__n_watch = 1'b0;
         sub_guards__0__n_off = nrap__p_off_sub;
+        sub_guards__0__n_clr = nrap__p_join;
         sub_guards__0__n_enable = 1'b0;
         sub_guards__0__sd_limit = hub_cfg__sd_run_sub;
         sub_guards__0__bf_limit = hub_cfg__bf_sub;
@@ -1069,6 +1086,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         sub_guards__1__n_rrun = nrap__p_exchange;
         sub_guards__1__n_watch = 1'b0;
         sub_guards__1__n_off = nrap__p_off_sub;
+        sub_guards__1__n_clr = nrap__p_join;
         sub_guards__1__n_enable = 1'b0;
         sub_guards__1__sd_limit = hub_cfg__sd_run_sub;
         sub_guards__1__bf_limit = hub_cfg__bf_sub;
@@ -5149,7 +5167,7 @@ module hub_b__id_frame__tx_q(d,q,clock);
 endmodule // hub_b__id_frame__tx_q
 
 
-module hub_b__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub_b__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -5169,6 +5187,7 @@ module hub_b__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -5496,6 +5515,9 @@ module hub_b__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -5744,7 +5766,7 @@ module hub_b__node_guards__0__silent(d,q,clock);
 endmodule // hub_b__node_guards__0__silent
 
 
-module hub_b__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub_b__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -5764,6 +5786,7 @@ module hub_b__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -6091,6 +6114,9 @@ module hub_b__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -6339,7 +6365,7 @@ module hub_b__node_guards__1__silent(d,q,clock);
 endmodule // hub_b__node_guards__1__silent
 
 
-module hub_b__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub_b__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -6359,6 +6385,7 @@ module hub_b__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -6686,6 +6713,9 @@ module hub_b__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -6934,7 +6964,7 @@ module hub_b__node_guards__2__silent(d,q,clock);
 endmodule // hub_b__node_guards__2__silent
 
 
-module hub_b__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub_b__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -6954,6 +6984,7 @@ module hub_b__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -7281,6 +7312,9 @@ module hub_b__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,e
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -7529,7 +7563,7 @@ module hub_b__node_guards__3__silent(d,q,clock);
 endmodule // hub_b__node_guards__3__silent
 
 
-module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames,srp_bits,nrp_bits,ddsp_bits,block_frames,decoupled,any_sub_en,twin_b,sample,b,ev_ack,ev_delim,own_frame,twin_frame,in_id,cmd_run,cmd_split,phase,active,forcing,send,ack_en,hush,quiet_twin,status,ev_phase,set_decoupled,p_exchange,p_watch,p_off_sub,p_off_node,p_enable);
+module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames,srp_bits,nrp_bits,ddsp_bits,block_frames,decoupled,any_sub_en,twin_b,sample,b,ev_ack,ev_delim,own_frame,twin_frame,in_id,cmd_run,cmd_split,phase,active,forcing,send,ack_en,hush,quiet_twin,status,ev_phase,set_decoupled,p_exchange,p_watch,p_off_sub,p_join,p_enable);
     
     // Module arguments
     input wire  clk;
@@ -7569,7 +7603,7 @@ module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_fram
     output reg  p_exchange;
     output reg  p_watch;
     output reg  p_off_sub;
-    output reg  p_off_node;
+    output reg  p_join;
     output reg  p_enable;
     
     // Constant declarations
@@ -7650,6 +7684,7 @@ module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_fram
     reg  [2:0] next;
     reg  next_active;
     reg  [1:0] last_new;
+    reg  half_join;
     
     // Sub module instances
     hub_b__nrap__nrap_q nrap_q(
@@ -7776,8 +7811,9 @@ module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_fram
         p_exchange = 1'b0;
         p_watch = 1'b0;
         p_off_sub = 1'b0;
-        p_off_node = 1'b0;
+        p_join = 1'b0;
         p_enable = 1'b0;
+        half_join = 1'b0;
         if (pairs) begin
             if (ack_twin) begin
                 last_new = last_twin;
@@ -7795,7 +7831,8 @@ module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_fram
                 else if (go & ack_twin) begin
                     next = ph_exchange;
                     last_new = last_twin;
-                    p_off_node = 1'b1;
+                    half_join = is_b & ~b;
+                    p_join = 1'b1;
                 end
             end
             else if (st_srp_force) begin
@@ -7854,7 +7891,7 @@ module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_fram
         if (ev_phase) begin
             nt__d = zero16;
             ncnt__d = zero4;
-            half__d = 1'b0;
+            half__d = half_join & (next == ph_exchange);
         end
         else begin
             if (sample) begin
@@ -7883,7 +7920,7 @@ module hub_b__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_fram
             p_exchange = 1'b0;
             p_watch = 1'b0;
             p_off_sub = 1'b0;
-            p_off_node = 1'b0;
+            p_join = 1'b0;
             p_enable = 1'b0;
         end
         if (rst) begin
@@ -8702,7 +8739,7 @@ module hub_b__regs__reset_mode_q(d,q,clock);
 endmodule // hub_b__regs__reset_mode_q
 
 
-module hub_b__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub_b__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -8722,6 +8759,7 @@ module hub_b__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -9049,6 +9087,9 @@ module hub_b__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
         end
+        if (n_clr) begin
+            rrun__d = zero4;
+        end
         if (n_off) begin
             enabled_q__d = 1'b0;
             rrun__d = zero4;
@@ -9297,7 +9338,7 @@ module hub_b__sub_guards__0__silent(d,q,clock);
 endmodule // hub_b__sub_guards__0__silent
 
 
-module hub_b__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
+module hub_b__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,n_rrun,n_watch,n_off,n_clr,n_enable,sd_limit,bf_limit,sr_frames,restore_bits,enabled,word,iso_evt,rest_evt);
     
     // Module arguments
     input wire  clk;
@@ -9317,6 +9358,7 @@ module hub_b__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev
     input wire  n_rrun;
     input wire  n_watch;
     input wire  n_off;
+    input wire  n_clr;
     input wire  n_enable;
     input wire  [5:0] sd_limit;
     input wire  [7:0] bf_limit;
@@ -9643,6 +9685,9 @@ module hub_b__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev
         end
         if (n_watch & ev_frame & ~in_arb & enabled_q__q & ~pb) begin
             enabled_q__d = 1'b0;
+        end
+        if (n_clr) begin
+            rrun__d = zero4;
         end
         if (n_off) begin
             enabled_q__d = 1'b0;

@@ -297,7 +297,7 @@ pub const REGISTERS: &[Register] = &[
         desc: "NRAP state (§9.2)",
         fields: &[
             f("nrap", 0, 3, 0, "phase").coded(NrapPhase::ENCODING),
-            f("outcome", 3, 1, 0, "1: the last NRAP ended in RUN, 0: in SPLIT (cleared by rst only)"),
+            f("outcome", 3, 1, 0, "1: the last NRAP ended in RUN, 0: in SPLIT, by a rule or by a command that ended an active phase (cleared by rst only)"),
             f("runs", 4, 4, 0, "NRAP runs started (saturating, cleared by rst only)"),
             f("ncnt", 8, 4, 0, "pairs (SRP_EXCHANGE, NRP) or own frames (DDSP_SEND) counted in this phase"),
             f("last", 12, 2, 0, "whose identification frame reached its ACK slot last").coded(NrapLast::ENCODING),

@@ -270,7 +270,8 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
             // §9.2: the NRAP actions on node ports
             self.node_guards[i].n_rrun.next = false;
             self.node_guards[i].n_watch.next = self.nrap.p_watch.val();
-            self.node_guards[i].n_off.next = self.nrap.p_off_node.val();
+            self.node_guards[i].n_off.next = false;
+            self.node_guards[i].n_clr.next = false;
             self.node_guards[i].n_enable.next = self.nrap.p_enable.val();
             self.node_guards[i].sd_limit.next = self.hub_cfg.sd_run_up.val();
             self.node_guards[i].bf_limit.next = self.hub_cfg.bf_up.val();
@@ -307,6 +308,7 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
             self.sub_guards[j].n_rrun.next = self.nrap.p_exchange.val();
             self.sub_guards[j].n_watch.next = false;
             self.sub_guards[j].n_off.next = self.nrap.p_off_sub.val();
+            self.sub_guards[j].n_clr.next = self.nrap.p_join.val();
             self.sub_guards[j].n_enable.next = false;
             self.sub_guards[j].sd_limit.next = self.hub_cfg.sd_run_sub.val();
             self.sub_guards[j].bf_limit.next = self.hub_cfg.bf_sub.val();

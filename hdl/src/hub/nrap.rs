@@ -16,7 +16,10 @@
 //! - `RUN` (with `nrap_on & !decoupled`), in this order: no sublink enabled
 //!   (Trigger) or the new `unacked` >= `block_frames != 0` (Blocked network) →
 //!   `SRP_FORCE`, `last = 0`; the ACK slot of the twin's identification frame
-//!   (Joining) → `SRP_EXCHANGE`, `last = 2`, node ports disabled.
+//!   (Joining) → `SRP_EXCHANGE`; the ports stay as they are, and that ACK slot
+//!   counts for the pairs as in `SRP_EXCHANGE`: `last = 2`, and `half = 1` if the
+//!   twin is hub A (`H` = 1) and the bus is dominant there (`b = 0`); it cannot
+//!   complete a pair (`half` is 0 in `RUN`).
 //! - Pairs (`SRP_EXCHANGE`, `NRP`): at the ACK slot of an identification frame,
 //!   `last = 2` for the twin's; if it is acknowledged (the bus dominant there,
 //!   `b = 0`; for the own frame in `SRP_EXCHANGE` the ACK must come through an
@@ -36,11 +39,17 @@
 //! | `p_exchange` | every SAMPLE edge of `SRP_EXCHANGE` | sublinks: `rrun` rule |
 //! | `p_watch` | every SAMPLE edge of `NRP` and `DDSP_SEND` inside an identification frame (`in_id`) | node ports: an erring port is disabled |
 //! | `p_off_sub` | `SRP_FORCE` → `SRP_EXCHANGE`, entry to `DDSP_FORCE` | sublinks disabled |
-//! | `p_off_node` | Joining (`RUN` → `SRP_EXCHANGE`) | node ports disabled |
+//! | `p_join` | Joining (`RUN` → `SRP_EXCHANGE`) | sublinks: `rrun = 0` |
 //! | `p_enable` | `SRP_EXCHANGE` → `NRP`, `DDSP_FORCE` → `DDSP_SEND` | node ports enabled |
 //!
 //! Entry to `DDSP_FORCE` also sets `decoupled` (`set_decoupled`, taken by the
 //! register block with `INT_STATUS.decoupled`).
+//!
+//! `p_join` is a reading: §9.2 gives `rrun` as recessive samples in a row while a
+//! sublink is disabled in `SRP_EXCHANGE` and zeroes it at the other entry
+//! (`SRP_FORCE` → `SRP_EXCHANGE`); a sublink disabled by §6 in `RUN` may still
+//! hold a count from an earlier NRAP run, so the joining entry starts it at 0 too
+//! (the count is not visible in any register).
 //!
 //! Commands (§8, §9.2): `cmd_run` (`CTRL.recouple` taken) makes the new phase
 //! `RUN`, `cmd_split` (`CTRL.force_decouple` taken) makes it `SPLIT` when
@@ -48,7 +57,9 @@
 //! that edge still happens (the register block and the guards let the command
 //! win where it writes the same field). `runs` counts the edges where the phase
 //! goes from `RUN` to an active phase; `outcome` is written where it goes from an
-//! active phase to `RUN` (1) or `SPLIT` (0).
+//! active phase to `RUN` (1) or `SPLIT` (0), by a rule or by a command; a command
+//! given in `RUN` or `SPLIT` leaves it. `unacked` is not touched by a phase
+//! change.
 //!
 //! `hold` (`rst | reset_mode`, the value before the edge) holds `nrap = RUN`,
 //! `nt`, `ncnt`, `half`, `last` and `unacked` at 0 and suppresses every event and
@@ -147,8 +158,8 @@ pub struct Nrap<const H: usize> {
     pub p_watch: Signal<Out, Bit>,
     /// `SRP_FORCE` → `SRP_EXCHANGE`, entry to `DDSP_FORCE`: every sublink disabled.
     pub p_off_sub: Signal<Out, Bit>,
-    /// Joining (`RUN` → `SRP_EXCHANGE`): every node port disabled.
-    pub p_off_node: Signal<Out, Bit>,
+    /// Joining (`RUN` → `SRP_EXCHANGE`): every sublink's `rrun` starts at 0.
+    pub p_join: Signal<Out, Bit>,
     /// `SRP_EXCHANGE` → `NRP`, `DDSP_FORCE` → `DDSP_SEND`: every node port enabled.
     pub p_enable: Signal<Out, Bit>,
     // ---- registers ----
@@ -183,6 +194,7 @@ pub struct Nrap<const H: usize> {
     next: Signal<Local, Bits<3>>,
     next_active: Signal<Local, Bit>,
     last_new: Signal<Local, Bits<2>>,
+    half_join: Signal<Local, Bit>,
     // ---- constants ----
     ph_run: Constant<Bits<3>>,
     ph_srp_force: Constant<Bits<3>>,
@@ -254,7 +266,7 @@ impl<const H: usize> Default for Nrap<H> {
             p_exchange: Default::default(),
             p_watch: Default::default(),
             p_off_sub: Default::default(),
-            p_off_node: Default::default(),
+            p_join: Default::default(),
             p_enable: Default::default(),
             nrap_q: Default::default(),
             nt: Default::default(),
@@ -286,6 +298,7 @@ impl<const H: usize> Default for Nrap<H> {
             next: Default::default(),
             next_active: Default::default(),
             last_new: Default::default(),
+            half_join: Default::default(),
             ph_run: phase(NrapPhase::Run),
             ph_srp_force: phase(NrapPhase::SrpForce),
             ph_exchange: phase(NrapPhase::SrpExchange),
@@ -394,8 +407,9 @@ impl<const H: usize> Logic for Nrap<H> {
         self.p_exchange.next = false;
         self.p_watch.next = false;
         self.p_off_sub.next = false;
-        self.p_off_node.next = false;
+        self.p_join.next = false;
         self.p_enable.next = false;
+        self.half_join.next = false;
         if self.pairs.val() {
             if self.ack_twin.val() {
                 self.last_new.next = self.last_twin.val();
@@ -415,10 +429,13 @@ impl<const H: usize> Logic for Nrap<H> {
                     self.next.next = self.ph_srp_force.val();
                     self.last_new.next = self.last_none.val();
                 } else if self.go.val() & self.ack_twin.val() {
-                    // Joining: the twin's identification frame came through
+                    // Joining: the twin's identification frame came through; its
+                    // ACK slot counts for the pairs as in SRP_EXCHANGE (the twin's
+                    // frame is hub A's when this hub is B)
                     self.next.next = self.ph_exchange.val();
                     self.last_new.next = self.last_twin.val();
-                    self.p_off_node.next = true;
+                    self.half_join.next = self.is_b.val() & !self.b.val();
+                    self.p_join.next = true;
                 }
             } else if self.st_srp_force.val() {
                 if self.nt_new.val() >= bit_cast::<16, 10>(self.force_bits.val()) {
@@ -473,10 +490,11 @@ impl<const H: usize> Logic for Nrap<H> {
         self.unacked.d.next = self.unacked_new.val();
         self.ev_phase.next = self.next.val() != self.nrap_q.q.val();
         if self.ev_phase.val() {
-            // every phase change clears the phase's timer, counter and half pair
+            // every phase change clears the phase's timer, counter and half pair;
+            // the joining frame's ACK slot then counts as in SRP_EXCHANGE
             self.nt.d.next = self.zero16.val();
             self.ncnt.d.next = self.zero4.val();
-            self.half.d.next = false;
+            self.half.d.next = self.half_join.val() & (self.next.val() == self.ph_exchange.val());
         } else {
             if self.sample.val() {
                 self.nt.d.next = self.nt_new.val();
@@ -505,7 +523,7 @@ impl<const H: usize> Logic for Nrap<H> {
             self.p_exchange.next = false;
             self.p_watch.next = false;
             self.p_off_sub.next = false;
-            self.p_off_node.next = false;
+            self.p_join.next = false;
             self.p_enable.next = false;
         }
         if self.rst.val() {

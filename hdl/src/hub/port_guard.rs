@@ -23,9 +23,8 @@
 //! fields through strobes from the phase machine (`super::nrap`; each implies a
 //! SAMPLE edge; the top wires to a port only the strobes §9.2 gives its kind of
 //! port). They come at edges where NRAP is active (the guard is frozen), except
-//! `n_off` at a Joining edge (`RUN` → `SRP_EXCHANGE`, node ports), where §6 still
-//! runs: there the disable wins over a restoration of §6 for `enabled`, and §6's
-//! other writes stand:
+//! `n_clr` at a Joining edge (`RUN` → `SRP_EXCHANGE`, sublinks), where §6 still
+//! runs; `n_clr` writes only `rrun`, which §6 does not touch:
 //! - `n_rrun` (sublinks, `SRP_EXCHANGE`): a disabled port counts recessive samples
 //!   (`rrun`, saturating at 15, 0 at a dominant one) and is enabled at 11 with
 //!   `pec = silent = restore_cnt = 0`;
@@ -33,6 +32,7 @@
 //!   an enabled port that is dominant at a `FRAME_PORTS` bit after the arbitration
 //!   field is disabled;
 //! - `n_off`: `enabled = 0 ; rrun = 0`;
+//! - `n_clr` (sublinks, Joining): `rrun = 0` (the port keeps its state);
 //! - `n_enable` (node ports): enabled with `pec = silent = restore_cnt = 0`.
 //!
 //! Where two strobes meet at one edge the later in this list wins (only `n_rrun`
@@ -78,6 +78,8 @@ pub struct PortGuard {
     pub n_watch: Signal<In, Bit>,
     /// Disable: `enabled = 0 ; rrun = 0`.
     pub n_off: Signal<In, Bit>,
+    /// `rrun = 0`, nothing else (sublinks, at the Joining edge).
+    pub n_clr: Signal<In, Bit>,
     /// Enable with `pec = silent = restore_cnt = 0` (node ports).
     pub n_enable: Signal<In, Bit>,
     // limits (§8)
@@ -167,6 +169,7 @@ impl Default for PortGuard {
             n_rrun: Default::default(),
             n_watch: Default::default(),
             n_off: Default::default(),
+            n_clr: Default::default(),
             n_enable: Default::default(),
             sd_limit: Default::default(),
             bf_limit: Default::default(),
@@ -406,6 +409,9 @@ impl Logic for PortGuard {
         {
             // only the frame's transmitter drives these bits: the node erred
             self.enabled_q.d.next = false;
+        }
+        if self.n_clr.val() {
+            self.rrun.d.next = self.zero4.val();
         }
         if self.n_off.val() {
             self.enabled_q.d.next = false;

@@ -235,41 +235,103 @@ fn interlinks_that_stay_cut_split_both_hubs() {
     s.a.bus(true, map::CTRL, 0x304, 0x3);
     assert_eq!(s.a.uut.nrap_phase.val().to_u64(), Run.code() as u64);
     assert!(!s.a.uut.decoupled.val());
+    // a command given in SPLIT leaves `outcome`
+    let st = s.a.bus(false, map::NRAP_STATUS, 0, 0x3);
+    assert_eq!(st & 0xFF, 0x10, "RUN, outcome 0, one run");
 }
 
-/// B's nodes do not acknowledge here: B joins at the ACK slot of A's frame, and
-/// B, still in `RUN` at that edge, does not count it for a pair (§9.2 counts
-/// pairs in `SRP_EXCHANGE` and `NRP`); an acknowledgement there (from B's own
-/// nodes, which B couples in `RUN`) would set A's `half` but not B's, and the two
-/// hubs would end `NRP` one frame apart (A in `RUN`, B timing out into
-/// `DDSP_FORCE`): reported as a contract question, not exercised here.
+/// §9.2: a command that ends an active phase sets `outcome` (`recouple` → 1,
+/// `force_decouple` → 0).
 #[test]
-fn a_hub_that_missed_the_forcing_joins_the_exchange() {
+fn a_command_that_ends_nrap_sets_the_outcome() {
     use NrapPhase::*;
     let mut s = Star::new();
-    s.b.acks = false;
     s.run(20 * BIT);
-    // only B -> A fails (stuck dominant): A isolates its sublinks and forces, but
-    // its forcing never reaches B (A -> B stuck recessive), so B stays in RUN
+    s.cut(true);
+    assert!(s.until(SrpExchange, 400 * BIT));
+    s.a.bus(true, map::CTRL, 0x304, 0);
+    s.b.bus(true, map::CTRL, 0x302, 0);
+    let a = s.a.bus(false, map::NRAP_STATUS, 0, 0);
+    let b = s.b.bus(false, map::NRAP_STATUS, 0, 0);
+    assert_eq!(a & 0xFF, 0x18, "a: RUN, outcome 1, one run");
+    assert_eq!(b & 0xFF, 0x16, "b: SPLIT, outcome 0, one run");
+}
+
+/// Only B -> A fails (stuck dominant): A isolates its sublinks and forces, but
+/// its forcing never reaches B (A -> B stuck recessive), so B stays in `RUN`;
+/// when the interlinks come back B joins at the ACK slot of A's identification
+/// frame (§9.2 Joining). Its ports stay as they are, and that ACK slot counts for
+/// the pairs as in `SRP_EXCHANGE`: with B's nodes acknowledging it (they are
+/// coupled in `RUN`), B's `half` is set like A's, so both hubs count the same
+/// pairs and end `NRP` at the ACK slot of the same frame of hub B; without an
+/// acknowledgement from B's nodes both hubs see the bus acknowledgement of A's
+/// node 0 alike.
+fn missed_forcing_joins(b_acks: bool) {
+    use NrapPhase::*;
+    let mut s = Star::new();
+    s.b.acks = b_acks;
+    s.run(20 * BIT);
     s.to_a = Some(0);
     s.to_b = Some(3);
     assert!(s.until_a(SrpExchange, 400 * BIT));
     assert_eq!(s.b.phases, codes(&[Run]));
-    // the interlinks come back: B hears A's identification frame and joins
+    // the interlinks come back: B hears A's identification frame and joins,
+    // keeping its ports
     s.cut(false);
-    assert!(
-        s.until(Run, 3000 * BIT),
+    let before = s.b.uut.port_enabled.val().to_u64();
+    let mut joined = false;
+    let mut ends = [None, None];
+    for t in 0..3000 * BIT {
+        let pb = s.b.uut.nrap_phase.val().to_u64();
+        if !joined && pb == SrpExchange.code() as u64 {
+            joined = true;
+            assert_eq!(s.b.uut.port_enabled.val().to_u64(), before, "ports kept");
+        }
+        let sides = [
+            (s.a.uut.nrap_phase.val().to_u64(), s.a.phases.len()),
+            (pb, s.b.phases.len()),
+        ];
+        for (k, (p, seen)) in sides.into_iter().enumerate() {
+            // back in RUN after NRAP
+            if ends[k].is_none() && p == Run.code() as u64 && seen > 1 {
+                ends[k] = Some(t);
+            }
+        }
+        if ends.iter().all(Option::is_some) {
+            break;
+        }
+        s.clock();
+    }
+    assert!(joined);
+    assert_eq!(
+        s.a.phases,
+        codes(&[Run, SrpForce, SrpExchange, Nrp, Run]),
         "a: {:?} b: {:?}",
         s.a.phases,
         s.b.phases
     );
-    assert_eq!(s.a.phases, codes(&[Run, SrpForce, SrpExchange, Nrp, Run]));
     assert_eq!(s.b.phases, codes(&[Run, SrpExchange, Nrp, Run]));
+    // both end NRP at the ACK slot of the same frame (a few clocks of link delay
+    // apart, far less than a frame)
+    let (ta, tb) = (ends[0].unwrap(), ends[1].unwrap());
+    assert!(ta.abs_diff(tb) < BIT, "a ends at {ta}, b at {tb}");
     let st = s.b.bus(false, map::NRAP_STATUS, 0, 0x3);
     assert_eq!(st & 0xFF, 0x18, "RUN, outcome 1, one run");
     s.run(4);
     assert_eq!(s.a.uut.port_enabled.val().to_u64(), 0x3F);
     assert_eq!(s.b.uut.port_enabled.val().to_u64(), 0x3F);
+}
+
+#[test]
+fn a_hub_that_missed_the_forcing_joins_the_exchange() {
+    missed_forcing_joins(false);
+}
+
+/// The half-pair skew of the first NRAP RTL: B's own nodes acknowledge A's frame
+/// at B's joining ACK slot.
+#[test]
+fn a_joining_hub_counts_the_joining_frame_for_the_pairs() {
+    missed_forcing_joins(true);
 }
 
 /// §8 / §9.5: the NRAP registers take writes only in reset mode, with their

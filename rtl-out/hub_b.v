@@ -233,7 +233,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  ack_unit__ack_interdep;
     reg  [5:0] ack_unit__enabled;
     reg  ack_unit__decoupled;
-    reg  ack_unit__nrap_active;
+    reg  ack_unit__own_gate;
     reg  ack_unit__dl_next;
     wire  [15:0] ack_unit__blocks;
     wire  ack_unit__u_window;
@@ -619,7 +619,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .ack_interdep(ack_unit__ack_interdep),
         .enabled(ack_unit__enabled),
         .decoupled(ack_unit__decoupled),
-        .nrap_active(ack_unit__nrap_active),
+        .own_gate(ack_unit__own_gate),
         .dl_next(ack_unit__dl_next),
         .blocks(ack_unit__blocks),
         .u_window(ack_unit__u_window),
@@ -1191,7 +1191,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         ack_unit__ack_interdep = regs__ack_interdep;
         ack_unit__enabled = port_en;
         ack_unit__decoupled = regs__decoupled;
-        ack_unit__nrap_active = nrap__active;
+        ack_unit__own_gate = id_frame__tx & ~nrap__forcing;
         ack_unit__dl_next = coupler__dl_next;
         cfg_regs__clk = clk;
         cfg_regs__rst = btl_rst;
@@ -1235,7 +1235,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
 endmodule // top
 
 
-module hub_b__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,ack_interdep,enabled,decoupled,nrap_active,dl_next,blocks,u_window,ev_block);
+module hub_b__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,ack_interdep,enabled,decoupled,own_gate,dl_next,blocks,u_window,ev_block);
     
     // Module arguments
     input wire  clk;
@@ -1252,7 +1252,7 @@ module hub_b__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_br
     input wire  ack_interdep;
     input wire  [5:0] enabled;
     input wire  decoupled;
-    input wire  nrap_active;
+    input wire  own_gate;
     input wire  dl_next;
     output reg  [15:0] blocks;
     output reg  u_window;
@@ -1413,7 +1413,7 @@ module hub_b__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_br
         u_s1__d = pins;
         u_in_s__d = u_s1__q;
         contrib = u_in_s__q | ~enabled;
-        u_own = &(contrib | sub_mask);
+        u_own = &(contrib | sub_mask) & own_gate;
         u_twin = &(contrib | node_mask);
         if (decoupled) begin
             u_view_q__d = u_own;
@@ -1422,7 +1422,7 @@ module hub_b__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_br
             u_view_q__d = u_own & u_twin;
         end
         u_win = (u_trk__trk == s_ack) | (u_trk__trk == s_delim);
-        guard = u_win & ack_interdep & ~decoupled & ~nrap_active;
+        guard = u_win & ack_interdep & ~decoupled;
         if (dl_next | (guard & u_twin)) begin
             downlink_q__d = ones_n;
         end

@@ -7,16 +7,17 @@
 //!
 //! From the hub it reads only the configuration (the captured bit timing, the same
 //! capture as the hub's BTL, and `ack_interdep`), the `enabled` mask, `decoupled`
-//! and NRAP's `active` (registers, values before the edge) and `dl_next`, the
-//! value the coupler would put on the downlinks (`super::coupler`). Rules (§4.1):
+//! and NRAP's `tx_q & !forcing` (registers, values before the edge) and `dl_next`,
+//! the value the coupler would put on the downlinks (`super::coupler`). Rules
+//! (§4.1, as of commit 753312e):
 //!
 //! ```text
 //! u_s1 <= pins ; u_in_s <= u_s1                                  // reset 1
-//! u_own  = AND over node ports    of (u_in_s | !enabled)
+//! u_own  = AND over node ports    of (u_in_s | !enabled) & tx_q & !forcing  // §9.4
 //! u_twin = AND over sublink ports of (u_in_s | !enabled)         // empty AND = 1
 //! u_view_q <= decoupled ? u_own : u_own & u_twin                 // reset 1
 //! u_window = (u_trk == ACK_SLOT) | (u_trk == ACK_DELIM)
-//! guard    = u_window & ack_interdep & !decoupled & !nrap_active   // §9
+//! guard    = u_window & ack_interdep & !decoupled
 //! downlink <= guard ? (dl_next | u_twin) : dl_next               // reset 1
 //! ```
 //!
@@ -29,8 +30,11 @@
 //!   keeps its value (it clears with `rst` only). The synchronizers, `u_view_q` and
 //!   `downlink` run in reset mode too.
 //!
-//! `u_own` does not see the hub's NRAP transmitter (§9.4: it is the unit's own view
-//! of the nodes); the unit is transparent while NRAP is active.
+//! NRAP (§4.1, §9.4): the hub's own transmitter is part of the hub's contribution,
+//! so `u_own` takes `tx_q & !forcing` as the coupler does; the unit's view carries
+//! the identification frames, its tracker follows them, and it guards during NRAP
+//! too. (§9.2 still says the unit is transparent while NRAP is active, `guard`
+//! with `& !active`; §4.1's rule, the later change, is the one built.)
 //!
 //! In a correct hub the unit changes nothing: `u_view_q` equals `coupled_q` at
 //! every clock, so `u_window` equals `ack_window`, and inside it `dl_next` already
@@ -78,8 +82,9 @@ pub struct AckUnit<const N: usize, const M: usize, const P: usize> {
     pub enabled: Signal<In, Bits<P>>,
     /// The hub is decoupled (§7).
     pub decoupled: Signal<In, Bit>,
-    /// NRAP is active (§9.2, phase 1..=5): the unit is transparent.
-    pub nrap_active: Signal<In, Bit>,
+    /// NRAP's transmitter as part of the own contribution (§9.4): `tx_q &
+    /// !forcing` (registers), 0 = dominant.
+    pub own_gate: Signal<In, Bit>,
     /// The coupler's next downlink value (§3's right-hand side), combinational.
     pub dl_next: Signal<In, Bit>,
     // ---- to the register block (§8 `ACK_UNIT`, `INT_STATUS.ack_unit`) ----
@@ -143,7 +148,7 @@ impl<const N: usize, const M: usize, const P: usize> Default for AckUnit<N, M, P
             ack_interdep: Default::default(),
             enabled: Default::default(),
             decoupled: Default::default(),
-            nrap_active: Default::default(),
+            own_gate: Default::default(),
             dl_next: Default::default(),
             blocks: Default::default(),
             u_window: Default::default(),
@@ -191,7 +196,7 @@ impl<const N: usize, const M: usize, const P: usize> Logic for AckUnit<N, M, P> 
         // §4.1 u_own / u_twin: isolated ports are recessive; the other group's
         // bits are forced to 1 so that `all` is the AND over one group
         self.contrib.next = self.u_in_s.q.val() | !self.enabled.val();
-        self.u_own.next = (self.contrib.val() | self.sub_mask.val()).all();
+        self.u_own.next = (self.contrib.val() | self.sub_mask.val()).all() & self.own_gate.val();
         self.u_twin.next = (self.contrib.val() | self.node_mask.val()).all();
         // §4.1 u_view_q: the unit's own copy of the coupled bus
         if self.decoupled.val() {
@@ -203,10 +208,7 @@ impl<const N: usize, const M: usize, const P: usize> Logic for AckUnit<N, M, P> 
         // §4.1 u_window and guard, from the unit's registered tracker state
         self.u_win.next = (self.u_trk.trk.val() == self.s_ack.val())
             | (self.u_trk.trk.val() == self.s_delim.val());
-        self.guard.next = self.u_win.val()
-            & self.ack_interdep.val()
-            & !self.decoupled.val()
-            & !self.nrap_active.val();
+        self.guard.next = self.u_win.val() & self.ack_interdep.val() & !self.decoupled.val();
         // §4.1 downlink: inside the guard a dominant bit needs a dominant twin
         if self.dl_next.val() | (self.guard.val() & self.u_twin.val()) {
             self.downlink_q.d.next = self.ones_n.val();
@@ -305,6 +307,8 @@ mod tests {
             u.cfg_tseg2_len.next = 2.into();
             u.cfg_sjw_len.next = 1.into();
             u.ack_interdep.next = true;
+            // the NRAP transmitter idle (recessive), not forcing
+            u.own_gate.next = true;
             u.enabled.next = 0x3F.into();
             u.uplink.next = 0xF.into();
             u.sublink_in.next = 0x3.into();

@@ -11,7 +11,8 @@
 //! transmitter `tx_q & !forcing` joins the own contribution), the ACK unit (§4.1:
 //! the bus guardian that owns the downlink register; it gets the pins, the
 //! captured bit timing, `ack_interdep`, the enabled mask, `decoupled`, NRAP's
-//! `active` and the coupler's `dl_next`, nothing else), the channel's bit timing
+//! `tx_q & !forcing` and the coupler's `dl_next`, nothing else; it guards during
+//! NRAP too, §4.1 as of commit 753312e), the channel's bit timing
 //! logic and configuration capture on `coupled_q` (§5: `tx = tx_q`, `triple = 0`,
 //! `hard_sync_enable = (trk == IDLE_WAIT)`, held in reset by `rst | reset_mode |
 //! reset_mode_q` exactly as the DRCC holds its channels), the frame tracker (§5),
@@ -23,7 +24,7 @@
 //! edge); NRAP's `runs` and `outcome` clear with `rst` only.
 //!
 //! While NRAP is active no rule of §6 runs (every guard is frozen, as the sublink
-//! guards are while decoupled) and the ACK unit is transparent.
+//! guards are while decoupled).
 //!
 //! Parametrisation: const generics `N`, `M`, `P` and `H` (stable Rust cannot write
 //! `N + M` in a type, so `P` is passed and checked to equal `N + M`; `H` defaults
@@ -436,7 +437,8 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.ack_unit.ack_interdep.next = self.regs.ack_interdep.val();
         self.ack_unit.enabled.next = self.port_en.val();
         self.ack_unit.decoupled.next = self.regs.decoupled.val();
-        self.ack_unit.nrap_active.next = self.nrap.active.val();
+        // §4.1 / §9.4: the unit's own view includes the NRAP transmitter
+        self.ack_unit.own_gate.next = self.id_frame.tx.val() & !self.nrap.forcing.val();
         self.ack_unit.dl_next.next = self.coupler.dl_next.val();
 
         // ---- bit timing on coupled_q (§5) ----

@@ -22,13 +22,13 @@ trait HubSim {
     fn step(&mut self, i: &HubInputs) -> HubOutputs;
 }
 
-struct Sim<const N: usize, const M: usize, const P: usize> {
-    uut: Box<Hub<N, M, P>>,
+struct Sim<const N: usize, const M: usize, const P: usize, const H: usize> {
+    uut: Box<Hub<N, M, P, H>>,
 }
 
-impl<const N: usize, const M: usize, const P: usize> Sim<N, M, P> {
+impl<const N: usize, const M: usize, const P: usize, const H: usize> Sim<N, M, P, H> {
     fn new() -> Self {
-        let mut uut = Box::<Hub<N, M, P>>::default();
+        let mut uut = Box::<Hub<N, M, P, H>>::default();
         uut.connect_all();
         uut.clk.next = Clock::from(false);
         let mut s = Sim { uut };
@@ -41,7 +41,7 @@ impl<const N: usize, const M: usize, const P: usize> Sim<N, M, P> {
     }
 }
 
-impl<const N: usize, const M: usize, const P: usize> HubSim for Sim<N, M, P> {
+impl<const N: usize, const M: usize, const P: usize, const H: usize> HubSim for Sim<N, M, P, H> {
     fn step(&mut self, i: &HubInputs) -> HubOutputs {
         let u = self.uut.as_mut();
         u.clk.next = Clock::from(false);
@@ -70,6 +70,8 @@ impl<const N: usize, const M: usize, const P: usize> HubSim for Sim<N, M, P> {
                 ack_window: u.ack_window.val(),
                 decoupled: u.decoupled.val(),
                 port_enabled: u.port_enabled.val().to_u64() as u16,
+                nrap_phase: u.nrap_phase.val().to_u64() as u8,
+                hub_tx: u.hub_tx.val(),
             },
         }
     }
@@ -94,7 +96,7 @@ impl std::fmt::Debug for HubRustHdlEngine {
 macro_rules! pick {
     ($n:expr, $m:expr; $( ($N:literal, $M:literal, $P:literal) ),* $(,)?) => {
         match ($n, $m) {
-            $( ($N, $M) => Some(Box::new(Sim::<$N, $M, $P>::new()) as Box<dyn HubSim>), )*
+            $( ($N, $M) => Some(Box::new(Sim::<$N, $M, $P, 0>::new()) as Box<dyn HubSim>), )*
             _ => None,
         }
     };
@@ -121,6 +123,26 @@ impl HubRustHdlEngine {
             )
         })?;
         Ok(HubRustHdlEngine { sim, n, m })
+    }
+}
+
+impl HubRustHdlEngine {
+    /// Hub `hub_id` (0 = A, 1 = B: the identification frame it sends, hub
+    /// contract §9.1). Hub B exists in the emitted shape (N = 4, M = 2) only, the
+    /// shape of `hub_b.v` and of the star scenarios.
+    pub fn new_hub(hub_id: u8, n: usize, m: usize) -> Result<Self, String> {
+        match (hub_id, n, m) {
+            (0, ..) => Self::new(n, m),
+            (_, 4, 2) => Ok(HubRustHdlEngine {
+                sim: Box::new(Sim::<4, 2, 6, 1>::new()),
+                n,
+                m,
+            }),
+            _ => Err(format!(
+                "the rust-hdl engine has hub B (identification frame 0x001) only in the \
+                 emitted shape N = 4, M = 2 (asked for N = {n}, M = {m})"
+            )),
+        }
     }
 }
 

@@ -290,6 +290,7 @@ impl HubModel {
         let pq = self.cpl.port_q;
         let decoupled = self.dec.decoupled;
         let tx_q = self.nrap.tx_q;
+        let tx_idle = !self.nrap.active() || self.nrap.forcing();
         let mask_ack = self.trk.ack_window() && ack_interdep && !decoupled && !fi_ack_leak;
         let pins = (i.uplink & self.node_mask) | ((i.sublink_in as u16) << self.n);
         let enabled = self.enabled;
@@ -353,6 +354,12 @@ impl HubModel {
                     BtlEvent::None => {}
                 }
             }
+        }
+
+        // §9.3: the transmitter is quiet at every edge where NRAP was not active (or
+        // was forcing) before it.
+        if tx_idle {
+            self.nrap.quiet_transmitter();
         }
 
         // Reset mode: a transparent star (§8).

@@ -264,6 +264,15 @@ impl Nrap {
         }
     }
 
+    /// `tx_on`, `ack_due`, `acking` cleared and `tx_q = 1`: at every edge where NRAP
+    /// was not active, or was forcing, before it (§9.3).
+    pub fn quiet_transmitter(&mut self) {
+        self.tx_q = true;
+        self.tx_on = false;
+        self.ack_due = false;
+        self.acking = false;
+    }
+
     /// Phase change: the timer and the counter start again.
     fn goto(&mut self, p: u8, fx: &mut SampleEffects) {
         self.phase = p;

@@ -274,6 +274,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  regs__ext_writable;
     reg  regs__ext_illegal;
     reg  regs__ev_dmr;
+    reg  regs__ev_domain;
     wire  regs__wr_o;
     wire  regs__reset_mode;
     wire  regs__reset_mode_d;
@@ -434,12 +435,12 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  [7:0] status__rec_b;
     reg  status__ew_b;
     reg  [1:0] status__aux_a_state;
-    reg  [3:0] status__causes_a;
+    reg  [4:0] status__causes_a;
     reg  [3:0] status__fail_cnt_a;
     reg  [7:0] status__failures_a;
     reg  [7:0] status__recoveries_a;
     reg  [1:0] status__aux_b_state;
-    reg  [3:0] status__causes_b;
+    reg  [4:0] status__causes_b;
     reg  [3:0] status__fail_cnt_b;
     reg  [7:0] status__failures_b;
     reg  [7:0] status__recoveries_b;
@@ -449,6 +450,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  [15:0] status__overruns;
     reg  [15:0] status__switches;
     reg  [15:0] status__recoveries;
+    reg  [31:0] status__star_word;
+    reg  [15:0] status__omissions_a;
+    reg  [15:0] status__omissions_b;
     reg  ticker__clk;
     reg  ticker__hold;
     reg  [5:0] ticker__brp;
@@ -500,8 +504,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     wire  main__switch_evt;
     wire  main__in_use_a;
     wire  main__in_use_b;
+    reg  echo__clk;
     reg  echo__star;
-    reg  echo__run;
+    reg  echo__clear;
     reg  echo__attempted;
     reg  [98:0] echo__head;
     reg  echo__rx_valid_a;
@@ -510,6 +515,10 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  [98:0] echo__frame_b;
     wire  echo__echo_a;
     wire  echo__echo_b;
+    wire  echo__rxv_a;
+    wire  echo__rxv_b;
+    wire  echo__ev_domain;
+    wire  [31:0] echo__star_word;
     reg  aux_a__clk;
     reg  aux_a__rst;
     reg  aux_a__hold;
@@ -526,11 +535,12 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  aux_a__tx_pending;
     reg  aux_a__rx_valid;
     reg  [1:0] aux_a__err_state;
+    reg  aux_a__err_warning;
     reg  aux_a__sample_point;
     wire  [1:0] aux_a__aux_state;
     wire  aux_a__valid;
     wire  aux_a__chan_rst;
-    wire  [3:0] aux_a__causes;
+    wire  [4:0] aux_a__causes;
     wire  [3:0] aux_a__fail_cnt;
     wire  [7:0] aux_a__failures;
     wire  [7:0] aux_a__recoveries;
@@ -552,11 +562,12 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  aux_b__tx_pending;
     reg  aux_b__rx_valid;
     reg  [1:0] aux_b__err_state;
+    reg  aux_b__err_warning;
     reg  aux_b__sample_point;
     wire  [1:0] aux_b__aux_state;
     wire  aux_b__valid;
     wire  aux_b__chan_rst;
-    wire  [3:0] aux_b__causes;
+    wire  [4:0] aux_b__causes;
     wire  [3:0] aux_b__fail_cnt;
     wire  [7:0] aux_b__failures;
     wire  [7:0] aux_b__recoveries;
@@ -611,6 +622,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     wire  rxw__overrun_evt;
     wire  [15:0] rxw__duplicates;
     wire  [15:0] rxw__overruns;
+    wire  [15:0] rxw__omissions_a;
+    wire  [15:0] rxw__omissions_b;
     reg  rxw__dmr;
     reg  rxw__acl;
     reg  rxw__release_set;
@@ -754,6 +767,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .ext_writable(regs__ext_writable),
         .ext_illegal(regs__ext_illegal),
         .ev_dmr(regs__ev_dmr),
+        .ev_domain(regs__ev_domain),
         .wr_o(regs__wr_o),
         .reset_mode(regs__reset_mode),
         .reset_mode_d(regs__reset_mode_d),
@@ -936,7 +950,10 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .duplicates(status__duplicates),
         .overruns(status__overruns),
         .switches(status__switches),
-        .recoveries(status__recoveries)
+        .recoveries(status__recoveries),
+        .star_word(status__star_word),
+        .omissions_a(status__omissions_a),
+        .omissions_b(status__omissions_b)
     );
     drcc_m0__ticker ticker(
         .clk(ticker__clk),
@@ -996,8 +1013,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .in_use_b(main__in_use_b)
     );
     drcc_m0__echo echo(
+        .clk(echo__clk),
         .star(echo__star),
-        .run(echo__run),
+        .clear(echo__clear),
         .attempted(echo__attempted),
         .head(echo__head),
         .rx_valid_a(echo__rx_valid_a),
@@ -1005,7 +1023,11 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .rx_valid_b(echo__rx_valid_b),
         .frame_b(echo__frame_b),
         .echo_a(echo__echo_a),
-        .echo_b(echo__echo_b)
+        .echo_b(echo__echo_b),
+        .rxv_a(echo__rxv_a),
+        .rxv_b(echo__rxv_b),
+        .ev_domain(echo__ev_domain),
+        .star_word(echo__star_word)
     );
     drcc_m0__aux_a aux_a(
         .clk(aux_a__clk),
@@ -1024,6 +1046,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .tx_pending(aux_a__tx_pending),
         .rx_valid(aux_a__rx_valid),
         .err_state(aux_a__err_state),
+        .err_warning(aux_a__err_warning),
         .sample_point(aux_a__sample_point),
         .aux_state(aux_a__aux_state),
         .valid(aux_a__valid),
@@ -1052,6 +1075,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .tx_pending(aux_b__tx_pending),
         .rx_valid(aux_b__rx_valid),
         .err_state(aux_b__err_state),
+        .err_warning(aux_b__err_warning),
         .sample_point(aux_b__sample_point),
         .aux_state(aux_b__aux_state),
         .valid(aux_b__valid),
@@ -1117,6 +1141,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .overrun_evt(rxw__overrun_evt),
         .duplicates(rxw__duplicates),
         .overruns(rxw__overruns),
+        .omissions_a(rxw__omissions_a),
+        .omissions_b(rxw__omissions_b),
         .dmr(rxw__dmr),
         .acl(rxw__acl),
         .release_set(rxw__release_set),
@@ -1255,6 +1281,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         regs__ext_writable = dmr_check__writable;
         regs__ext_illegal = dmr_check__illegal;
         regs__ev_dmr = dmr_ctl__int_evt;
+        regs__ev_domain = echo__ev_domain;
         mb_id_word = zero31;
         mb_mask = zero29;
         mb_state_word = zero32;
@@ -1355,6 +1382,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         status__duplicates = rxw__duplicates;
         status__overruns = rxw__overruns;
         status__switches = stats__switches;
+        status__star_word = echo__star_word;
+        status__omissions_a = rxw__omissions_a;
+        status__omissions_b = rxw__omissions_b;
         status__recoveries = stats__recoveries;
         stats__clk = clk;
         stats__rst = rst;
@@ -1382,8 +1412,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         main__tick = ticker__tick;
         main__echo_a = echo__echo_a;
         main__echo_b = echo__echo_b;
+        echo__clk = clk;
         echo__star = regs__star;
-        echo__run = ~rmb_hold;
+        echo__clear = rmb_hold;
         echo__attempted = main__attempted;
         echo__head = txbuf__rd_frame;
         echo__rx_valid_a = chan_a__rx_valid;
@@ -1406,6 +1437,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         aux_a__tx_pending = chan_a__tx_pending;
         aux_a__rx_valid = chan_a__rx_valid;
         aux_a__err_state = chan_a__err_state;
+        aux_a__err_warning = chan_a__err_warning;
         aux_a__sample_point = chan_a__sample_point;
         aux_b__clk = clk;
         aux_b__rst = rst;
@@ -1423,6 +1455,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         aux_b__tx_pending = chan_b__tx_pending;
         aux_b__rx_valid = chan_b__rx_valid;
         aux_b__err_state = chan_b__err_state;
+        aux_b__err_warning = chan_b__err_warning;
         aux_b__sample_point = chan_b__sample_point;
         txbuf__clk = clk;
         txbuf__clear = clear;
@@ -1455,8 +1488,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         rxw__now = ticker__now;
         rxw__tick = ticker__tick;
         if (dmr_hold) begin
-            rxw__rxv_a = chan_a__rx_valid & ~echo__echo_a;
-            rxw__rxv_b = chan_b__rx_valid & ~echo__echo_b;
+            rxw__rxv_a = echo__rxv_a;
+            rxw__rxv_b = echo__rxv_b;
         end
         else begin
             rxw__rxv_a = dmr_ctl__rx_deliver_dcl;
@@ -1557,7 +1590,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
 endmodule // top
 
 
-module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
+module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,err_warning,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
     
     // Module arguments
     input wire  clk;
@@ -1576,11 +1609,12 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     input wire  tx_pending;
     input wire  rx_valid;
     input wire  [1:0] err_state;
+    input wire  err_warning;
     input wire  sample_point;
     output reg  [1:0] aux_state;
     output reg  valid;
     output reg  chan_rst;
-    output reg  [3:0] causes;
+    output reg  [4:0] causes;
     output reg  [3:0] fail_cnt;
     output reg  [7:0] failures;
     output reg  [7:0] recoveries;
@@ -1595,6 +1629,7 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     localparam  es_busoff = 2'b10;
     localparam  one4 = 4'h1;
     localparam  zero4 = 4'h0;
+    localparam  zero5 = 5'b0;
     localparam  max4 = 4'hf;
     localparam  one8 = 8'h1;
     localparam  zero8 = 8'h0;
@@ -1619,8 +1654,8 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     reg  done_q__d;
     wire  done_q__q;
     reg  done_q__clock;
-    reg  [3:0] causes_q__d;
-    wire  [3:0] causes_q__q;
+    reg  [4:0] causes_q__d;
+    wire  [4:0] causes_q__q;
     reg  causes_q__clock;
     reg  [7:0] failures_q__d;
     wire  [7:0] failures_q__q;
@@ -1634,11 +1669,12 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     reg  [1:0] judge__err_state;
     reg  [3:0] judge__fail_cnt;
     reg  [15:0] judge__stall_cnt;
-    wire  [3:0] judge__causes;
+    reg  judge__err_warning;
+    wire  [4:0] judge__causes;
     wire  judge__failed;
     
     // Local signals
-    reg  [3:0] now_causes;
+    reg  [4:0] now_causes;
     reg  [15:0] rb_eff;
     
     // Sub module instances
@@ -1689,6 +1725,7 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
         .err_state(judge__err_state),
         .fail_cnt(judge__fail_cnt),
         .stall_cnt(judge__stall_cnt),
+        .err_warning(judge__err_warning),
         .causes(judge__causes),
         .failed(judge__failed)
     );
@@ -1739,6 +1776,7 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
         judge__err_state = err_state;
         judge__fail_cnt = fail_q__q;
         judge__stall_cnt = stall_q__q;
+        judge__err_warning = err_warning;
         now_causes = judge__causes;
         if (recovery_bits == zero16) begin
             rb_eff = one16;
@@ -1790,7 +1828,7 @@ module drcc_m0__aux_a(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
             stall_q__d = zero16;
             left_q__d = rb_eff;
             done_q__d = 1'b0;
-            causes_q__d = zero4;
+            causes_q__d = zero5;
             fail_evt = 1'b0;
             recover_evt = 1'b0;
         end
@@ -1813,8 +1851,8 @@ endmodule // drcc_m0__aux_a
 module drcc_m0__aux_a__causes_q(d,q,clock);
     
     // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -1874,7 +1912,7 @@ module drcc_m0__aux_a__failures_q(d,q,clock);
 endmodule // drcc_m0__aux_a__failures_q
 
 
-module drcc_m0__aux_a__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,causes,failed);
+module drcc_m0__aux_a__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,err_warning,causes,failed);
     
     // Module arguments
     input wire  [1:0] policy;
@@ -1883,16 +1921,18 @@ module drcc_m0__aux_a__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,c
     input wire  [1:0] err_state;
     input wire  [3:0] fail_cnt;
     input wire  [15:0] stall_cnt;
-    output reg  [3:0] causes;
+    input wire  err_warning;
+    output reg  [4:0] causes;
     output reg  failed;
     
     // Constant declarations
     localparam  p_none = 2'b0;
     localparam  p_passive = 2'b1;
     localparam  p_kfail = 2'b10;
+    localparam  p_warning = 2'b11;
     localparam  es_active = 2'b0;
     localparam  es_busoff = 2'b10;
-    localparam  zero4 = 4'h0;
+    localparam  zero5 = 5'b0;
     localparam  zero16 = 16'h0;
     
     // Local signals
@@ -1900,6 +1940,7 @@ module drcc_m0__aux_a__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,c
     reg  c_busoff;
     reg  c_kfail;
     reg  c_stall;
+    reg  c_warn;
     
     // Update code
     always @(*) begin
@@ -1907,8 +1948,9 @@ module drcc_m0__aux_a__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,c
         c_busoff = (policy != p_none) & (err_state == es_busoff);
         c_kfail = (policy == p_kfail) & (fail_cnt >= k);
         c_stall = (policy != p_none) & (stall_limit != zero16) & (stall_cnt >= stall_limit);
-        causes = ((c_passive) & 4'hf) | (((c_busoff) & 4'hf) << 32'h1) | (((c_kfail) & 4'hf) << 32'h2) | (((c_stall) & 4'hf) << 32'h3);
-        failed = causes != zero4;
+        c_warn = (policy == p_warning) & err_warning;
+        causes = ((c_passive) & 5'h1f) | (((c_busoff) & 5'h1f) << 32'h1) | (((c_kfail) & 5'h1f) << 32'h2) | (((c_stall) & 5'h1f) << 32'h3) | (((c_warn) & 5'h1f) << 32'h4);
+        failed = causes != zero5;
     end
     
 endmodule // drcc_m0__aux_a__judge
@@ -1978,7 +2020,7 @@ module drcc_m0__aux_a__stall_q(d,q,clock);
 endmodule // drcc_m0__aux_a__stall_q
 
 
-module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
+module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,err_warning,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
     
     // Module arguments
     input wire  clk;
@@ -1997,11 +2039,12 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     input wire  tx_pending;
     input wire  rx_valid;
     input wire  [1:0] err_state;
+    input wire  err_warning;
     input wire  sample_point;
     output reg  [1:0] aux_state;
     output reg  valid;
     output reg  chan_rst;
-    output reg  [3:0] causes;
+    output reg  [4:0] causes;
     output reg  [3:0] fail_cnt;
     output reg  [7:0] failures;
     output reg  [7:0] recoveries;
@@ -2016,6 +2059,7 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     localparam  es_busoff = 2'b10;
     localparam  one4 = 4'h1;
     localparam  zero4 = 4'h0;
+    localparam  zero5 = 5'b0;
     localparam  max4 = 4'hf;
     localparam  one8 = 8'h1;
     localparam  zero8 = 8'h0;
@@ -2040,8 +2084,8 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     reg  done_q__d;
     wire  done_q__q;
     reg  done_q__clock;
-    reg  [3:0] causes_q__d;
-    wire  [3:0] causes_q__q;
+    reg  [4:0] causes_q__d;
+    wire  [4:0] causes_q__q;
     reg  causes_q__clock;
     reg  [7:0] failures_q__d;
     wire  [7:0] failures_q__q;
@@ -2055,11 +2099,12 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
     reg  [1:0] judge__err_state;
     reg  [3:0] judge__fail_cnt;
     reg  [15:0] judge__stall_cnt;
-    wire  [3:0] judge__causes;
+    reg  judge__err_warning;
+    wire  [4:0] judge__causes;
     wire  judge__failed;
     
     // Local signals
-    reg  [3:0] now_causes;
+    reg  [4:0] now_causes;
     reg  [15:0] rb_eff;
     
     // Sub module instances
@@ -2110,6 +2155,7 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
         .err_state(judge__err_state),
         .fail_cnt(judge__fail_cnt),
         .stall_cnt(judge__stall_cnt),
+        .err_warning(judge__err_warning),
         .causes(judge__causes),
         .failed(judge__failed)
     );
@@ -2160,6 +2206,7 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
         judge__err_state = err_state;
         judge__fail_cnt = fail_q__q;
         judge__stall_cnt = stall_q__q;
+        judge__err_warning = err_warning;
         now_causes = judge__causes;
         if (recovery_bits == zero16) begin
             rb_eff = one16;
@@ -2211,7 +2258,7 @@ module drcc_m0__aux_b(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_us
             stall_q__d = zero16;
             left_q__d = rb_eff;
             done_q__d = 1'b0;
-            causes_q__d = zero4;
+            causes_q__d = zero5;
             fail_evt = 1'b0;
             recover_evt = 1'b0;
         end
@@ -2234,8 +2281,8 @@ endmodule // drcc_m0__aux_b
 module drcc_m0__aux_b__causes_q(d,q,clock);
     
     // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -2295,7 +2342,7 @@ module drcc_m0__aux_b__failures_q(d,q,clock);
 endmodule // drcc_m0__aux_b__failures_q
 
 
-module drcc_m0__aux_b__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,causes,failed);
+module drcc_m0__aux_b__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,err_warning,causes,failed);
     
     // Module arguments
     input wire  [1:0] policy;
@@ -2304,16 +2351,18 @@ module drcc_m0__aux_b__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,c
     input wire  [1:0] err_state;
     input wire  [3:0] fail_cnt;
     input wire  [15:0] stall_cnt;
-    output reg  [3:0] causes;
+    input wire  err_warning;
+    output reg  [4:0] causes;
     output reg  failed;
     
     // Constant declarations
     localparam  p_none = 2'b0;
     localparam  p_passive = 2'b1;
     localparam  p_kfail = 2'b10;
+    localparam  p_warning = 2'b11;
     localparam  es_active = 2'b0;
     localparam  es_busoff = 2'b10;
-    localparam  zero4 = 4'h0;
+    localparam  zero5 = 5'b0;
     localparam  zero16 = 16'h0;
     
     // Local signals
@@ -2321,6 +2370,7 @@ module drcc_m0__aux_b__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,c
     reg  c_busoff;
     reg  c_kfail;
     reg  c_stall;
+    reg  c_warn;
     
     // Update code
     always @(*) begin
@@ -2328,8 +2378,9 @@ module drcc_m0__aux_b__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,c
         c_busoff = (policy != p_none) & (err_state == es_busoff);
         c_kfail = (policy == p_kfail) & (fail_cnt >= k);
         c_stall = (policy != p_none) & (stall_limit != zero16) & (stall_cnt >= stall_limit);
-        causes = ((c_passive) & 4'hf) | (((c_busoff) & 4'hf) << 32'h1) | (((c_kfail) & 4'hf) << 32'h2) | (((c_stall) & 4'hf) << 32'h3);
-        failed = causes != zero4;
+        c_warn = (policy == p_warning) & err_warning;
+        causes = ((c_passive) & 5'h1f) | (((c_busoff) & 5'h1f) << 32'h1) | (((c_kfail) & 5'h1f) << 32'h2) | (((c_stall) & 5'h1f) << 32'h3) | (((c_warn) & 5'h1f) << 32'h4);
+        failed = causes != zero5;
     end
     
 endmodule // drcc_m0__aux_b__judge
@@ -18397,11 +18448,12 @@ module drcc_m0__dmr_regs__time_q(d,q,clock);
 endmodule // drcc_m0__dmr_regs__time_q
 
 
-module drcc_m0__echo(star,run,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b);
+module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b,rxv_a,rxv_b,ev_domain,star_word);
     
     // Module arguments
+    input wire  clk;
     input wire  star;
-    input wire  run;
+    input wire  clear;
     input wire  attempted;
     input wire  [98:0] head;
     input wire  rx_valid_a;
@@ -18410,18 +18462,295 @@ module drcc_m0__echo(star,run,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame
     input wire  [98:0] frame_b;
     output reg  echo_a;
     output reg  echo_b;
+    output reg  rxv_a;
+    output reg  rxv_b;
+    output reg  ev_domain;
+    output reg  [31:0] star_word;
+    
+    // Stub signals
+    reg  follow__clk;
+    reg  follow__clear;
+    reg  follow__on;
+    reg  follow__rx_valid_a;
+    reg  [16:0] follow__key_a;
+    reg  follow__rx_valid_b;
+    reg  [16:0] follow__key_b;
+    wire  follow__hubf_a;
+    wire  follow__hubf_b;
+    wire  follow__ev_domain;
+    wire  [31:0] follow__word;
     
     // Local signals
     reg  armed;
     
+    // Sub module instances
+    drcc_m0__echo__follow follow(
+        .clk(follow__clk),
+        .clear(follow__clear),
+        .on(follow__on),
+        .rx_valid_a(follow__rx_valid_a),
+        .key_a(follow__key_a),
+        .rx_valid_b(follow__rx_valid_b),
+        .key_b(follow__key_b),
+        .hubf_a(follow__hubf_a),
+        .hubf_b(follow__hubf_b),
+        .ev_domain(follow__ev_domain),
+        .word(follow__word)
+    );
+    
     // Update code
     always @(*) begin
-        armed = star & run & attempted;
+        armed = star & ~clear & attempted;
         echo_a = armed & rx_valid_a & (frame_a == head);
         echo_b = armed & rx_valid_b & (frame_b == head);
+        follow__clk = clk;
+        follow__clear = clear;
+        follow__on = star & ~clear;
+        follow__rx_valid_a = rx_valid_a;
+        follow__key_a = (((frame_a[(32'h61)+:(2)]) & 17'h1ffff) << 32'hf) | ((frame_a[(32'h40)+:(15)]) & 17'h1ffff);
+        follow__rx_valid_b = rx_valid_b;
+        follow__key_b = (((frame_b[(32'h61)+:(2)]) & 17'h1ffff) << 32'hf) | ((frame_b[(32'h40)+:(15)]) & 17'h1ffff);
+        rxv_a = rx_valid_a & ~echo_a & ~follow__hubf_a;
+        rxv_b = rx_valid_b & ~echo_b & ~follow__hubf_b;
+        ev_domain = follow__ev_domain;
+        star_word = follow__word;
     end
     
 endmodule // drcc_m0__echo
+
+
+module drcc_m0__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,hubf_b,ev_domain,word);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  clear;
+    input wire  on;
+    input wire  rx_valid_a;
+    input wire  [16:0] key_a;
+    input wire  rx_valid_b;
+    input wire  [16:0] key_b;
+    output reg  hubf_a;
+    output reg  hubf_b;
+    output reg  ev_domain;
+    output reg  [31:0] word;
+    
+    // Constant declarations
+    localparam  last_hub_a = 2'b1;
+    localparam  last_hub_b = 2'b10;
+    localparam  zero2 = 2'b0;
+    localparam  zero8 = 8'h0;
+    localparam  zero17 = 17'b0;
+    localparam  not_hub = 17'b11111111111101111;
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  s_split = 5'b0;
+    localparam  s_last_a = 5'b10;
+    localparam  s_last_b = 5'b100;
+    localparam  s_frames_a = 5'b1000;
+    localparam  s_frames_b = 5'b10000;
+    
+    // Stub signals
+    reg  split__d;
+    wire  split__q;
+    reg  split__clock;
+    reg  [1:0] last_a__d;
+    wire  [1:0] last_a__q;
+    reg  last_a__clock;
+    reg  [1:0] last_b__d;
+    wire  [1:0] last_b__q;
+    reg  last_b__clock;
+    reg  [7:0] frames_a__d;
+    wire  [7:0] frames_a__q;
+    reg  frames_a__clock;
+    reg  [7:0] frames_b__d;
+    wire  [7:0] frames_b__q;
+    reg  frames_b__clock;
+    
+    // Local signals
+    reg  h_a;
+    reg  h_b;
+    reg  split_new;
+    
+    // Sub module instances
+    drcc_m0__echo__follow__split split(
+        .d(split__d),
+        .q(split__q),
+        .clock(split__clock)
+    );
+    drcc_m0__echo__follow__last_a last_a(
+        .d(last_a__d),
+        .q(last_a__q),
+        .clock(last_a__clock)
+    );
+    drcc_m0__echo__follow__last_b last_b(
+        .d(last_b__d),
+        .q(last_b__q),
+        .clock(last_b__clock)
+    );
+    drcc_m0__echo__follow__frames_a frames_a(
+        .d(frames_a__d),
+        .q(frames_a__q),
+        .clock(frames_a__clock)
+    );
+    drcc_m0__echo__follow__frames_b frames_b(
+        .d(frames_b__d),
+        .q(frames_b__q),
+        .clock(frames_b__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        split__clock = clk;
+        last_a__clock = clk;
+        last_b__clock = clk;
+        frames_a__clock = clk;
+        frames_b__clock = clk;
+        split__d = split__q;
+        last_a__d = last_a__q;
+        last_b__d = last_b__q;
+        frames_a__d = frames_a__q;
+        frames_b__d = frames_b__q;
+        hubf_a = on & rx_valid_a & ((key_a & not_hub) == zero17);
+        hubf_b = on & rx_valid_b & ((key_b & not_hub) == zero17);
+        h_a = key_a[32'h4];
+        h_b = key_b[32'h4];
+        split_new = split__q;
+        if (hubf_b) begin
+            if (~h_b) begin
+                split_new = 1'b0;
+            end
+            else if (last_b__q == last_hub_b) begin
+                split_new = 1'b1;
+            end
+        end
+        if (hubf_a) begin
+            if (h_a) begin
+                split_new = 1'b0;
+            end
+            else if (last_a__q == last_hub_a) begin
+                split_new = 1'b1;
+            end
+        end
+        split__d = split_new;
+        ev_domain = split_new != split__q;
+        last_a__d = last_a__q;
+        frames_a__d = frames_a__q;
+        if (hubf_a) begin
+            if (h_a) begin
+                last_a__d = last_hub_b;
+            end
+            else begin
+                last_a__d = last_hub_a;
+            end
+            if (frames_a__q != max8) begin
+                frames_a__d = frames_a__q + one8;
+            end
+        end
+        last_b__d = last_b__q;
+        frames_b__d = frames_b__q;
+        if (hubf_b) begin
+            if (h_b) begin
+                last_b__d = last_hub_b;
+            end
+            else begin
+                last_b__d = last_hub_a;
+            end
+            if (frames_b__q != max8) begin
+                frames_b__d = frames_b__q + one8;
+            end
+        end
+        if (clear) begin
+            split__d = 1'b0;
+            last_a__d = zero2;
+            last_b__d = zero2;
+            frames_a__d = zero8;
+            frames_b__d = zero8;
+            ev_domain = 1'b0;
+        end
+        word = (((split__q) & 32'hffffffff) << s_split) | (((last_a__q) & 32'hffffffff) << s_last_a) | (((last_b__q) & 32'hffffffff) << s_last_b) | (((frames_a__q) & 32'hffffffff) << s_frames_a) | (((frames_b__q) & 32'hffffffff) << s_frames_b);
+    end
+    
+endmodule // drcc_m0__echo__follow
+
+
+module drcc_m0__echo__follow__frames_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__echo__follow__frames_a
+
+
+module drcc_m0__echo__follow__frames_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__echo__follow__frames_b
+
+
+module drcc_m0__echo__follow__last_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__echo__follow__last_a
+
+
+module drcc_m0__echo__follow__last_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__echo__follow__last_b
+
+
+module drcc_m0__echo__follow__split(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__echo__follow__split
 
 
 module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,echo_a,echo_b,attempted,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
@@ -19190,7 +19519,7 @@ module drcc_m0__main__tx_time(d,q,clock);
 endmodule // drcc_m0__main__tx_time
 
 
-module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
     
     // Module arguments
     input wire  clk;
@@ -19220,6 +19549,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     input wire  ext_writable;
     input wire  ext_illegal;
     input wire  ev_dmr;
+    input wire  ev_domain;
     output reg  wr_o;
     output reg  reset_mode;
     output reg  reset_mode_d;
@@ -19281,6 +19611,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     localparam  i_illegal = 5'b110;
     localparam  i_aux = 5'b111;
     localparam  i_dmr = 5'b1000;
+    localparam  i_domain = 5'b1001;
     localparam  btr_reset = 24'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
@@ -19288,7 +19619,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
-    localparam  zero9 = 9'b0;
+    localparam  zero10 = 10'b0;
     localparam  zero15 = 15'b0;
     localparam  zero16 = 16'h0;
     localparam  zero31 = 31'h0;
@@ -19304,13 +19635,13 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     wire  bus__wb_ack_o;
     wire  bus__irq;
     wire  bus__wr;
-    wire  [8:0] bus__int_status;
-    wire  [8:0] bus__int_enable;
+    wire  [9:0] bus__int_status;
+    wire  [9:0] bus__int_enable;
     reg  [31:0] bus__rdata;
-    reg  [8:0] bus__events;
-    reg  [8:0] bus__w1c;
+    reg  [9:0] bus__events;
+    reg  [9:0] bus__w1c;
     reg  bus__int_enable_we;
-    reg  [8:0] bus__int_enable_d;
+    reg  [9:0] bus__int_enable_d;
     reg  ctrl__clk;
     reg  ctrl__rst;
     reg  ctrl__we;
@@ -19379,7 +19710,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
-    reg  [8:0] w1c;
+    reg  [9:0] w1c;
     reg  [3:0] target_count;
     reg  es_evt;
     reg  [63:0] tx_data64;
@@ -19576,9 +19907,9 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         ctrl_check__single_shot = ctrl__single_shot;
         ctrl_check__dmr = ctrl__dmr;
         illegal = 1'b0;
-        w1c = zero9;
+        w1c = zero10;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wdat[(32'h0)+:(9)];
+        bus__int_enable_d = wdat[(32'h0)+:(10)];
         push = 1'b0;
         pop = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr) begin
@@ -19616,7 +19947,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wdat[(32'h0)+:(9)];
+                w1c = wdat[(32'h0)+:(10)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -19661,7 +19992,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
                 illegal = 1'b1;
             end
         end
-        bus__events = (((ev_rx) & 9'h1ff) << i_rx) | (((ev_tx_done) & 9'h1ff) << i_tx_done) | (((ev_switch) & 9'h1ff) << i_switch) | (((es_evt) & 9'h1ff) << i_err_state) | (((ev_overrun) & 9'h1ff) << i_overrun) | (((ev_tx_failure) & 9'h1ff) << i_tx_failure) | (((illegal) & 9'h1ff) << i_illegal) | (((ev_aux) & 9'h1ff) << i_aux) | (((ev_dmr) & 9'h1ff) << i_dmr);
+        bus__events = (((ev_rx) & 10'h3ff) << i_rx) | (((ev_tx_done) & 10'h3ff) << i_tx_done) | (((ev_switch) & 10'h3ff) << i_switch) | (((es_evt) & 10'h3ff) << i_err_state) | (((ev_overrun) & 10'h3ff) << i_overrun) | (((ev_tx_failure) & 10'h3ff) << i_tx_failure) | (((illegal) & 10'h3ff) << i_illegal) | (((ev_aux) & 10'h3ff) << i_aux) | (((ev_dmr) & 10'h3ff) << i_dmr) | (((ev_domain) & 10'h3ff) << i_domain);
         bus__w1c = w1c;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
@@ -19738,16 +20069,16 @@ module drcc_m0__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,ir
     output reg  wb_ack_o;
     output reg  irq;
     output reg  wr;
-    output reg  [8:0] int_status;
-    output reg  [8:0] int_enable;
+    output reg  [9:0] int_status;
+    output reg  [9:0] int_enable;
     input wire  [31:0] rdata;
-    input wire  [8:0] events;
-    input wire  [8:0] w1c;
+    input wire  [9:0] events;
+    input wire  [9:0] w1c;
     input wire  int_enable_we;
-    input wire  [8:0] int_enable_d;
+    input wire  [9:0] int_enable_d;
     
     // Constant declarations
-    localparam  zero_w = 9'b0;
+    localparam  zero_w = 10'b0;
     localparam  zero32 = 32'h0;
     
     // Stub signals
@@ -19760,11 +20091,11 @@ module drcc_m0__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,ir
     reg  irq_q__d;
     wire  irq_q__q;
     reg  irq_q__clock;
-    reg  [8:0] int_status_q__d;
-    wire  [8:0] int_status_q__q;
+    reg  [9:0] int_status_q__d;
+    wire  [9:0] int_status_q__q;
     reg  int_status_q__clock;
-    reg  [8:0] int_enable_q__d;
-    wire  [8:0] int_enable_q__q;
+    reg  [9:0] int_enable_q__d;
+    wire  [9:0] int_enable_q__q;
     reg  int_enable_q__clock;
     
     // Local signals
@@ -19874,8 +20205,8 @@ endmodule // drcc_m0__regs__bus__dat_q
 module drcc_m0__regs__bus__int_enable_q(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -19890,8 +20221,8 @@ endmodule // drcc_m0__regs__bus__int_enable_q
 module drcc_m0__regs__bus__int_status_q(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
@@ -20327,7 +20658,6 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
     localparam  p_dmr = 5'b10001;
-    localparam  policy_illegal = 2'b11;
     localparam  mode_listen = 2'b1;
     localparam  zero4 = 4'h0;
     localparam  one4 = 4'h1;
@@ -20345,7 +20675,7 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,
             k_in = wdat[(p_k)+:(4)];
         end
         listen = (wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen);
-        refused = (wdat[(p_policy)+:(2)] == policy_illegal) | ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]);
+        refused = ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]);
         cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (wdat[p_star] != star) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr);
         if (reset_mode) begin
             illegal = refused;
@@ -20685,7 +21015,7 @@ module drcc_m0__rxfifo__ready(d,q,clock);
 endmodule // drcc_m0__rxfifo__ready
 
 
-module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,dmr,acl,release_set,pcl_frames,released,expired);
+module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
     
     // Module arguments
     input wire  clk;
@@ -20706,6 +21036,8 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     output reg  overrun_evt;
     output reg  [15:0] duplicates;
     output reg  [15:0] overruns;
+    output reg  [15:0] omissions_a;
+    output reg  [15:0] omissions_b;
     input wire  dmr;
     input wire  acl;
     input wire  release_set;
@@ -20732,8 +21064,6 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     localparam  zero15 = 15'b0;
     localparam  one15 = 15'b1;
     localparam  max15 = 15'b111111111111111;
-    localparam  zero16 = 16'h0;
-    localparam  one16 = 16'h1;
     localparam  max16 = 16'hffff;
     
     // Stub signals
@@ -20762,9 +21092,17 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     wire  [4:0] rel__rel_e;
     reg  stats__clk;
     reg  stats__rst;
+    reg  stats__dup_inc;
+    reg  stats__overrun_inc;
+    reg  stats__omit_a;
+    reg  stats__omit_b;
     reg  stats__pcl_inc;
     reg  stats__released_inc;
     reg  stats__expired_inc;
+    wire  [15:0] stats__duplicates;
+    wire  [15:0] stats__overruns;
+    wire  [15:0] stats__omissions_a;
+    wire  [15:0] stats__omissions_b;
     wire  [15:0] stats__pcl_frames;
     wire  [7:0] stats__released;
     wire  [7:0] stats__expired;
@@ -20828,12 +21166,6 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     reg  hit_hd__d;
     wire  hit_hd__q;
     reg  hit_hd__clock;
-    reg  [15:0] dups_q__d;
-    wire  [15:0] dups_q__q;
-    reg  dups_q__clock;
-    reg  [15:0] overruns_q__d;
-    wire  [15:0] overruns_q__q;
-    reg  overruns_q__clock;
     
     // Local signals
     reg  [98:0] frame_sel;
@@ -20860,6 +21192,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     reg  r_cand;
     reg  w_fifo;
     reg  w_hist;
+    reg  omit;
     
     // Sub module instances
     drcc_m0__rxw__hist hist(
@@ -20894,9 +21227,17 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     drcc_m0__rxw__stats stats(
         .clk(stats__clk),
         .rst(stats__rst),
+        .dup_inc(stats__dup_inc),
+        .overrun_inc(stats__overrun_inc),
+        .omit_a(stats__omit_a),
+        .omit_b(stats__omit_b),
         .pcl_inc(stats__pcl_inc),
         .released_inc(stats__released_inc),
         .expired_inc(stats__expired_inc),
+        .duplicates(stats__duplicates),
+        .overruns(stats__overruns),
+        .omissions_a(stats__omissions_a),
+        .omissions_b(stats__omissions_b),
         .pcl_frames(stats__pcl_frames),
         .released(stats__released),
         .expired(stats__expired)
@@ -21001,16 +21342,6 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         .q(hit_hd__q),
         .clock(hit_hd__clock)
     );
-    drcc_m0__rxw__dups_q dups_q(
-        .d(dups_q__d),
-        .q(dups_q__q),
-        .clock(dups_q__clock)
-    );
-    drcc_m0__rxw__overruns_q overruns_q(
-        .d(overruns_q__d),
-        .q(overruns_q__q),
-        .clock(overruns_q__clock)
-    );
     
     // Update code
     always @(*) begin
@@ -21034,8 +21365,6 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         release_q__clock = clk;
         w_pcl__clock = clk;
         hit_hd__clock = clk;
-        dups_q__clock = clk;
-        overruns_q__clock = clk;
         w_state__d = w_state__q;
         rxp_a__d = rxp_a__q;
         rxp_b__d = rxp_b__q;
@@ -21056,8 +21385,6 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         release_q__d = release_q__q;
         w_pcl__d = w_pcl__q;
         hit_hd__d = hit_hd__q;
-        dups_q__d = dups_q__q;
-        overruns_q__d = overruns_q__q;
         hist__clk = clk;
         hist__read_enable = 1'b1;
         hist_ts__clk = clk;
@@ -21147,6 +21474,11 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         stats__pcl_inc = 1'b0;
         stats__released_inc = 1'b0;
         stats__expired_inc = dmr & judging & e_hv & e_expired & ~e_hu & ~e_hd;
+        omit = ~dmr & judging & (w_state__q == s_scan) & e_hv & e_expired & ~e_hu;
+        stats__omit_a = omit & e_ch;
+        stats__omit_b = omit & ~e_ch;
+        stats__dup_inc = 1'b0;
+        stats__overrun_inc = 1'b0;
         w_state__d = w_state__q;
         rxp_a__d = rxp_a__q;
         rxp_b__d = rxp_b__q;
@@ -21162,8 +21494,6 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         hd__d = hd__q;
         release_q__d = release_q__q;
         w_pcl__d = w_pcl__q;
-        dups_q__d = dups_q__q;
-        overruns_q__d = overruns_q__q;
         hist_idle__d = hist_idle__q;
         if (tick & (hist_idle__q != max15)) begin
             hist_idle__d = hist_idle__q + one15;
@@ -21248,9 +21578,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
                     w_state__d = s_write;
                 end
                 else begin
-                    if (dups_q__q != max16) begin
-                        dups_q__d = dups_q__q + one16;
-                    end
+                    stats__dup_inc = 1'b1;
                     w_state__d = s_idle;
                 end
             end
@@ -21262,9 +21590,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
             if (~w_fifo) begin
             end
             else if (fifo_full) begin
-                if (overruns_q__q != max16) begin
-                    overruns_q__d = overruns_q__q + one16;
-                end
+                stats__overrun_inc = 1'b1;
                 overrun_evt = 1'b1;
             end
             else begin
@@ -21293,9 +21619,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         end
         else begin
             if (fifo_full) begin
-                if (overruns_q__q != max16) begin
-                    overruns_q__d = overruns_q__q + one16;
-                end
+                stats__overrun_inc = 1'b1;
                 overrun_evt = 1'b1;
             end
             else begin
@@ -21340,40 +21664,24 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
             overrun_evt = 1'b0;
             hist__write_enable = 1'b0;
             hist_ts__write_enable = 1'b0;
-            dups_q__d = dups_q__q;
-            overruns_q__d = overruns_q__q;
+            stats__dup_inc = 1'b0;
+            stats__overrun_inc = 1'b0;
+            stats__omit_a = 1'b0;
+            stats__omit_b = 1'b0;
             stats__pcl_inc = 1'b0;
             stats__released_inc = 1'b0;
             stats__expired_inc = 1'b0;
         end
-        if (rst) begin
-            dups_q__d = zero16;
-            overruns_q__d = zero16;
-        end
-        duplicates = dups_q__q;
-        overruns = overruns_q__q;
+        duplicates = stats__duplicates;
+        overruns = stats__overruns;
+        omissions_a = stats__omissions_a;
+        omissions_b = stats__omissions_b;
         pcl_frames = stats__pcl_frames;
         released = stats__released;
         expired = stats__expired;
     end
     
 endmodule // drcc_m0__rxw
-
-
-module drcc_m0__rxw__dups_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__rxw__dups_q
 
 
 module drcc_m0__rxw__exp_q(d,q,clock);
@@ -21610,22 +21918,6 @@ module drcc_m0__rxw__hv(d,q,clock);
     end
           
 endmodule // drcc_m0__rxw__hv
-
-
-module drcc_m0__rxw__overruns_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__rxw__overruns_q
 
 
 module drcc_m0__rxw__rel(clk,clear,start,cand,scan_e,next_age,tick,found,rel_e);
@@ -21894,14 +22186,22 @@ module drcc_m0__rxw__sel(d,q,clock);
 endmodule // drcc_m0__rxw__sel
 
 
-module drcc_m0__rxw__stats(clk,rst,pcl_inc,released_inc,expired_inc,pcl_frames,released,expired);
+module drcc_m0__rxw__stats(clk,rst,dup_inc,overrun_inc,omit_a,omit_b,pcl_inc,released_inc,expired_inc,duplicates,overruns,omissions_a,omissions_b,pcl_frames,released,expired);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
+    input wire  dup_inc;
+    input wire  overrun_inc;
+    input wire  omit_a;
+    input wire  omit_b;
     input wire  pcl_inc;
     input wire  released_inc;
     input wire  expired_inc;
+    output reg  [15:0] duplicates;
+    output reg  [15:0] overruns;
+    output reg  [15:0] omissions_a;
+    output reg  [15:0] omissions_b;
     output reg  [15:0] pcl_frames;
     output reg  [7:0] released;
     output reg  [7:0] expired;
@@ -21915,6 +22215,18 @@ module drcc_m0__rxw__stats(clk,rst,pcl_inc,released_inc,expired_inc,pcl_frames,r
     localparam  zero16 = 16'h0;
     
     // Stub signals
+    reg  [15:0] dups_q__d;
+    wire  [15:0] dups_q__q;
+    reg  dups_q__clock;
+    reg  [15:0] overruns_q__d;
+    wire  [15:0] overruns_q__q;
+    reg  overruns_q__clock;
+    reg  [15:0] omit_a_q__d;
+    wire  [15:0] omit_a_q__q;
+    reg  omit_a_q__clock;
+    reg  [15:0] omit_b_q__d;
+    wire  [15:0] omit_b_q__q;
+    reg  omit_b_q__clock;
     reg  [15:0] pcl_q__d;
     wire  [15:0] pcl_q__q;
     reg  pcl_q__clock;
@@ -21926,6 +22238,26 @@ module drcc_m0__rxw__stats(clk,rst,pcl_inc,released_inc,expired_inc,pcl_frames,r
     reg  expired_q__clock;
     
     // Sub module instances
+    drcc_m0__rxw__stats__dups_q dups_q(
+        .d(dups_q__d),
+        .q(dups_q__q),
+        .clock(dups_q__clock)
+    );
+    drcc_m0__rxw__stats__overruns_q overruns_q(
+        .d(overruns_q__d),
+        .q(overruns_q__q),
+        .clock(overruns_q__clock)
+    );
+    drcc_m0__rxw__stats__omit_a_q omit_a_q(
+        .d(omit_a_q__d),
+        .q(omit_a_q__q),
+        .clock(omit_a_q__clock)
+    );
+    drcc_m0__rxw__stats__omit_b_q omit_b_q(
+        .d(omit_b_q__d),
+        .q(omit_b_q__q),
+        .clock(omit_b_q__clock)
+    );
     drcc_m0__rxw__stats__pcl_q pcl_q(
         .d(pcl_q__d),
         .q(pcl_q__q),
@@ -21944,12 +22276,36 @@ module drcc_m0__rxw__stats(clk,rst,pcl_inc,released_inc,expired_inc,pcl_frames,r
     
     // Update code
     always @(*) begin
+        dups_q__clock = clk;
+        overruns_q__clock = clk;
+        omit_a_q__clock = clk;
+        omit_b_q__clock = clk;
         pcl_q__clock = clk;
         released_q__clock = clk;
         expired_q__clock = clk;
+        dups_q__d = dups_q__q;
+        overruns_q__d = overruns_q__q;
+        omit_a_q__d = omit_a_q__q;
+        omit_b_q__d = omit_b_q__q;
         pcl_q__d = pcl_q__q;
         released_q__d = released_q__q;
         expired_q__d = expired_q__q;
+        dups_q__d = dups_q__q;
+        if (dup_inc & (dups_q__q != max16)) begin
+            dups_q__d = dups_q__q + one16;
+        end
+        overruns_q__d = overruns_q__q;
+        if (overrun_inc & (overruns_q__q != max16)) begin
+            overruns_q__d = overruns_q__q + one16;
+        end
+        omit_a_q__d = omit_a_q__q;
+        if (omit_a & (omit_a_q__q != max16)) begin
+            omit_a_q__d = omit_a_q__q + one16;
+        end
+        omit_b_q__d = omit_b_q__q;
+        if (omit_b & (omit_b_q__q != max16)) begin
+            omit_b_q__d = omit_b_q__q + one16;
+        end
         pcl_q__d = pcl_q__q;
         if (pcl_inc & (pcl_q__q != max16)) begin
             pcl_q__d = pcl_q__q + one16;
@@ -21963,16 +22319,40 @@ module drcc_m0__rxw__stats(clk,rst,pcl_inc,released_inc,expired_inc,pcl_frames,r
             expired_q__d = expired_q__q + one8;
         end
         if (rst) begin
+            dups_q__d = zero16;
+            overruns_q__d = zero16;
+            omit_a_q__d = zero16;
+            omit_b_q__d = zero16;
             pcl_q__d = zero16;
             released_q__d = zero8;
             expired_q__d = zero8;
         end
+        duplicates = dups_q__q;
+        overruns = overruns_q__q;
+        omissions_a = omit_a_q__q;
+        omissions_b = omit_b_q__q;
         pcl_frames = pcl_q__q;
         released = released_q__q;
         expired = expired_q__q;
     end
     
 endmodule // drcc_m0__rxw__stats
+
+
+module drcc_m0__rxw__stats__dups_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__rxw__stats__dups_q
 
 
 module drcc_m0__rxw__stats__expired_q(d,q,clock);
@@ -21989,6 +22369,54 @@ module drcc_m0__rxw__stats__expired_q(d,q,clock);
     end
           
 endmodule // drcc_m0__rxw__stats__expired_q
+
+
+module drcc_m0__rxw__stats__omit_a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__rxw__stats__omit_a_q
+
+
+module drcc_m0__rxw__stats__omit_b_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__rxw__stats__omit_b_q
+
+
+module drcc_m0__rxw__stats__overruns_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__rxw__stats__overruns_q
 
 
 module drcc_m0__rxw__stats__pcl_q(d,q,clock);
@@ -22156,7 +22584,7 @@ module drcc_m0__stats__switches_q(d,q,clock);
 endmodule // drcc_m0__stats__switches_q
 
 
-module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,switches,recoveries);
+module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,switches,recoveries,star_word,omissions_a,omissions_b);
     
     // Module arguments
     input wire  [5:0] adr;
@@ -22179,12 +22607,12 @@ module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch
     input wire  [7:0] rec_b;
     input wire  ew_b;
     input wire  [1:0] aux_a_state;
-    input wire  [3:0] causes_a;
+    input wire  [4:0] causes_a;
     input wire  [3:0] fail_cnt_a;
     input wire  [7:0] failures_a;
     input wire  [7:0] recoveries_a;
     input wire  [1:0] aux_b_state;
-    input wire  [3:0] causes_b;
+    input wire  [4:0] causes_b;
     input wire  [3:0] fail_cnt_b;
     input wire  [7:0] failures_b;
     input wire  [7:0] recoveries_b;
@@ -22194,6 +22622,9 @@ module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch
     input wire  [15:0] overruns;
     input wire  [15:0] switches;
     input wire  [15:0] recoveries;
+    input wire  [31:0] star_word;
+    input wire  [15:0] omissions_a;
+    input wire  [15:0] omissions_b;
     
     // Constant declarations
     localparam  a_id = 6'b0;
@@ -22209,6 +22640,8 @@ module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch
     localparam  a_stats0 = 6'b10110;
     localparam  a_stats1 = 6'b10111;
     localparam  a_times = 6'b11000;
+    localparam  a_star_status = 6'b100100;
+    localparam  a_omissions = 6'b100101;
     localparam  id_value = 32'h44524343;
     localparam  zero32 = 32'h0;
     localparam  st_state = 5'b0;
@@ -22240,6 +22673,8 @@ module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch
     localparam  s1_recoveries = 5'b10000;
     localparam  t_last_tx = 5'b0;
     localparam  t_switch = 5'b10000;
+    localparam  o_a = 5'b0;
+    localparam  o_b = 5'b10000;
     
     // Local signals
     reg  [63:0] rx_data64;
@@ -22286,6 +22721,12 @@ module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch
         end
         else if (adr == a_times) begin
             word = (((last_tx_time) & 32'hffffffff) << t_last_tx) | (((switch_time) & 32'hffffffff) << t_switch);
+        end
+        else if (adr == a_star_status) begin
+            word = star_word;
+        end
+        else if (adr == a_omissions) begin
+            word = (((omissions_a) & 32'hffffffff) << o_a) | (((omissions_b) & 32'hffffffff) << o_b);
         end
     end
     

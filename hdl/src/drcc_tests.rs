@@ -1,5 +1,6 @@
 //! Unit tests of the `drcc` top in rust-hdl's simulator: register reset values
-//! and refusals, and one redundancy-mode transmission with its paper probes.
+//! and refusals, one redundancy-mode transmission with its paper probes, and a
+//! replicated star node (echo, identification frames).
 
 use super::*;
 use crate::host::registers::{self as map, REGISTERS};
@@ -80,10 +81,18 @@ fn registers_read_their_reset_values() {
     assert_eq!(b.read(map::INT_STATUS), 1 << 6);
     b.write(map::INT_STATUS, 1 << 6);
     assert_eq!(b.read(map::INT_STATUS), 0);
-    // CTRL with policy 3 is refused; k = 0 is stored as 1
+    // CTRL with policy 3 (warning limit, §5) is taken; k = 0 is stored as 1
+    b.write(map::INT_STATUS, 1 << 6);
     b.write(map::CTRL, 0x0000_000D);
-    assert_eq!(b.read(map::CTRL), 0x0000_0105);
-    assert_eq!(b.read(map::INT_STATUS), 1 << 6);
+    assert_eq!(b.read(map::CTRL), 0x0000_010D);
+    assert_eq!(b.read(map::INT_STATUS), 0);
+    // the new read-only words refuse writes
+    for adr in [map::STAR_STATUS, map::OMISSIONS] {
+        b.write(adr, u32::MAX);
+        assert_eq!(b.read(adr), 0);
+        assert_eq!(b.read(map::INT_STATUS), 1 << 6);
+        b.write(map::INT_STATUS, 1 << 6);
+    }
     b.write(map::CTRL, 0x0000_0003);
     assert_eq!(b.read(map::CTRL), 0x0000_0103);
     // outside reset mode only reset_mode is taken
@@ -226,4 +235,76 @@ fn star_node_takes_the_echo_of_its_own_frame() {
     );
     assert_eq!(b.read(map::INT_STATUS) & 1, 0, "no INT_STATUS.rx");
     assert_eq!(b.read(map::STATS0), 0, "no duplicate either");
+}
+
+/// Contract §4.5: in a star node an identification frame (here hub A's, base
+/// data frame 0x000 with DLC 0, sent by the bench's channel A and heard by
+/// channel B on the shared bus) is the hubs', not a reception: it is not
+/// delivered, and `STAR_STATUS` counts it on channel B with `last_b` = hub A's
+/// (the other hub's frame: one domain, `split` stays 0). Reset mode clears it.
+#[test]
+fn star_node_takes_an_identification_frame_out_of_the_rx_path() {
+    use crate::host::registers::StarLast;
+    let mut b = Bench::new();
+    let star = map::MAP.field("CTRL", "star").put(1);
+    let ctrl = 1 | (1 << 1) | (1 << 2) | (1 << 8) | (2 << 12) | (2 << 14) | star;
+    b.write(map::INT_ENABLE, 0x3FF);
+    b.write(map::CTRL, ctrl);
+    b.write(map::CTRL, ctrl & !1);
+    b.write(map::TX_ID, 0);
+    b.write(map::TX_CTRL, 0);
+    b.write(map::TX_CMD, 1);
+    for _ in 0..1500 {
+        b.step();
+    }
+    let st = b.read(map::STAR_STATUS);
+    let field = |n: &str| map::MAP.field("STAR_STATUS", n).get(st);
+    assert_eq!(field("hub_frames_b"), 1, "STAR_STATUS {st:#x}");
+    assert_eq!(field("hub_frames_a"), 0);
+    assert_eq!(field("last_b"), StarLast::HubA.code());
+    assert_eq!(field("split"), 0);
+    assert_eq!((b.read(map::STATUS) >> 24) & 0x3F, 0, "not received");
+    assert_eq!(b.read(map::INT_STATUS) & 1, 0, "no INT_STATUS.rx");
+    assert_eq!(b.read(map::INT_STATUS) & (1 << 9), 0, "no domain change");
+    // entering reset mode clears STAR_STATUS
+    b.write(map::CTRL, ctrl);
+    b.step();
+    assert_eq!(b.read(map::STAR_STATUS), 0);
+}
+
+/// Contract §7 omissions: on the bench's one bus channel A sends and only
+/// channel B receives, so every history entry is channel B's; the scan of the
+/// next reception finds the previous entry expired (window 1 bit time) without
+/// a copy: an omission of channel A. Reset mode keeps the count.
+#[test]
+fn an_entry_that_expires_without_its_copy_is_an_omission() {
+    let mut b = Bench::new();
+    let ctrl = 1 | (1 << 1) | (1 << 2) | (1 << 8) | (2 << 12) | (2 << 14);
+    b.write(map::CTRL, ctrl);
+    b.write(map::DEDUP_CFG, 1);
+    b.write(map::CTRL, ctrl & !1);
+    for id in [0x100, 0x101, 0x102] {
+        b.write(map::TX_ID, id);
+        b.write(map::TX_CTRL, 1);
+        b.write(map::TX_CMD, 1);
+        for _ in 0..1200 {
+            b.step();
+        }
+    }
+    assert_eq!(
+        (b.read(map::STATUS) >> 24) & 0x3F,
+        3,
+        "three frames received"
+    );
+    let om = map::MAP.register("OMISSIONS").unwrap();
+    let w = b.read(map::OMISSIONS);
+    assert_eq!(
+        om.field("omissions_a").unwrap().get(w),
+        2,
+        "OMISSIONS {w:#x}"
+    );
+    assert_eq!(om.field("omissions_b").unwrap().get(w), 0);
+    b.write(map::CTRL, ctrl);
+    b.step();
+    assert_eq!(b.read(map::OMISSIONS), w, "reset mode keeps it");
 }

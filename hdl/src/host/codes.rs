@@ -16,7 +16,7 @@ register_enum! {
 
 register_enum! {
     /// `CTRL.policy`: when an auxiliary FSM judges its channel failed (DRCC paper
-    /// section III; code 3 is refused, contract §9).
+    /// section III; contract §5).
     pub enum SwitchPolicy {
         /// never (the main FSM stays on its channel)
         None = 0 => "NONE",
@@ -24,11 +24,10 @@ register_enum! {
         ErrorPassive = 1 => "ERROR_PASSIVE",
         /// after `k` failed attempts since the last success
         KFailed = 2 => "K_FAILED",
+        /// when the channel's TEC or REC reaches the warning limit `BTR.ewl`
+        Warning = 3 => "WARNING",
     }
 }
-
-/// `CTRL.policy` code that is refused (contract §9).
-pub const POLICY_ILLEGAL: u32 = 3;
 
 register_enum! {
     /// `CTRL.mode_a`/`mode_b`: operating mode of one channel (contract §C.7).
@@ -60,6 +59,18 @@ register_enum! {
         Failed = 1 => "FAILED",
         Restart = 2 => "RESTART",
         Probation = 3 => "PROBATION",
+    }
+}
+
+register_enum! {
+    /// `STAR_STATUS.last_a` / `last_b`: whose identification frame a channel
+    /// received last (contract §4.5).
+    pub enum StarLast {
+        None = 0 => "NONE",
+        /// hub A's (identifier 0x000)
+        HubA = 1 => "HUB_A",
+        /// hub B's (identifier 0x001)
+        HubB = 2 => "HUB_B",
     }
 }
 

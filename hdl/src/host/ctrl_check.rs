@@ -1,9 +1,9 @@
 //! The checks of a `CTRL` write (DRCC contract §9), combinational on the written
 //! word and the stored fields:
 //!
-//! - in reset mode a write with the illegal policy code, with redundancy or
-//!   DMR and a listen-only channel, or with both redundancy and DMR (DMR
-//!   contract §2), is refused as a whole;
+//! - in reset mode a write with redundancy or DMR and a listen-only channel, or
+//!   with both redundancy and DMR (DMR contract §2), is refused as a whole (every
+//!   policy code is legal: 3 is the warning-limit policy of §5);
 //! - outside reset mode only `reset_mode` is taken, and a write whose cfg fields
 //!   differ from the stored ones is flagged;
 //! - `k = 0` is stored as 1 (not illegal).
@@ -11,7 +11,7 @@
 //! Field positions and codes come from the table (`super::registers`).
 
 use super::map::lsb;
-use super::registers::{ChannelMode, MAP, POLICY_ILLEGAL};
+use super::registers::{ChannelMode, MAP};
 use rust_hdl::prelude::*;
 
 /// The §9 checks of a `CTRL` write.
@@ -44,8 +44,8 @@ pub struct CtrlCheck {
     // ---- verdict ----
     /// The `k` to store: the written one, 0 read as 1.
     pub k_in: Signal<Out, Bits<4>>,
-    /// The word is refused in reset mode (illegal policy, or redundancy with a
-    /// listen-only channel).
+    /// The word is refused in reset mode (redundancy or DMR with a listen-only
+    /// channel, redundancy with DMR).
     pub refused: Signal<Out, Bit>,
     /// A write of this word now sets `INT_STATUS.illegal`.
     pub illegal: Signal<Out, Bit>,
@@ -61,7 +61,6 @@ pub struct CtrlCheck {
     p_mode_b: Constant<Bits<5>>,
     p_single_shot: Constant<Bits<5>>,
     p_dmr: Constant<Bits<5>>,
-    policy_illegal: Constant<Bits<2>>,
     mode_listen: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     one4: Constant<Bits<4>>,
@@ -95,7 +94,6 @@ impl Default for CtrlCheck {
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
             p_dmr: lsb(&MAP, "CTRL", "dmr", 1),
-            policy_illegal: Constant::new((POLICY_ILLEGAL as u64).into()),
             mode_listen: Constant::new((ChannelMode::ListenOnly.code() as u64).into()),
             zero4: Constant::new(0.into()),
             one4: Constant::new(1.into()),
@@ -112,17 +110,15 @@ impl Logic for CtrlCheck {
         } else {
             self.k_in.next = self.wdat.val().get_bits::<4>(self.p_k.val().index());
         }
-        // an illegal policy; redundancy or DMR (both need two transmitting
-        // channels) with a listen-only channel; redundancy and DMR together
+        // redundancy or DMR (both need two transmitting channels) with a
+        // listen-only channel; redundancy and DMR together
         self.listen.next = (self.wdat.val().get_bits::<2>(self.p_mode_a.val().index())
             == self.mode_listen.val())
             | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index())
                 == self.mode_listen.val());
-        self.refused.next = (self.wdat.val().get_bits::<2>(self.p_policy.val().index())
-            == self.policy_illegal.val())
-            | ((self.wdat.val().get_bit(self.p_redundancy.val().index())
-                | self.wdat.val().get_bit(self.p_dmr.val().index()))
-                & self.listen.val())
+        self.refused.next = ((self.wdat.val().get_bit(self.p_redundancy.val().index())
+            | self.wdat.val().get_bit(self.p_dmr.val().index()))
+            & self.listen.val())
             | (self.wdat.val().get_bit(self.p_redundancy.val().index())
                 & self.wdat.val().get_bit(self.p_dmr.val().index()));
         self.cfg_differs.next = (self.wdat.val().get_bit(self.p_redundancy.val().index())
@@ -184,9 +180,15 @@ mod tests {
         let ep = SwitchPolicy::ErrorPassive.code();
         let base = [("reset_mode", 1), ("policy", ep), ("k", 1)];
         assert_eq!(check(true, ctrl(&base)), (1, false, false));
-        // the illegal policy code: refused
-        let w = ctrl(&[("reset_mode", 1), ("policy", POLICY_ILLEGAL)]);
-        assert!(check(true, w).1 && check(true, w).2);
+        // every policy code is taken (3: the warning-limit policy, §5)
+        let w = ctrl(&[
+            ("reset_mode", 1),
+            ("policy", SwitchPolicy::Warning.code()),
+            ("k", 1),
+        ]);
+        assert_eq!(check(true, w), (1, false, false));
+        // outside reset mode a policy change is flagged
+        assert!(check(false, w).2);
         // redundancy with a listen-only channel: refused
         let listen = ChannelMode::ListenOnly.code();
         let w = ctrl(&[

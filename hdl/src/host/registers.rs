@@ -1,4 +1,5 @@
-//! The DRCC register map (DRCC contract §3, §8, §9): the one source of truth.
+//! The DRCC register map (DRCC contract §3, §4.5, §5, §7, §8, §9): the one source
+//! of truth.
 //!
 //! A constant table ([`MAP`]): every register with its word index, access and
 //! fields (bit ranges, reset values, descriptions, named codes). The register
@@ -13,8 +14,7 @@ use super::map::{cfg, cmd, f, CodeList, RegisterMap};
 pub use super::map::{Access, Field, Register};
 
 pub use super::codes::{
-    AuxState, ChannelMode, DmrCause, DmrState, ErrState, MainState, Mode, SwitchPolicy,
-    POLICY_ILLEGAL,
+    AuxState, ChannelMode, DmrCause, DmrState, ErrState, MainState, Mode, StarLast, SwitchPolicy,
 };
 
 // Word indices (the Wishbone decoder uses these).
@@ -54,6 +54,8 @@ pub const MB_ID: u32 = 32;
 pub const MB_MASK: u32 = 33;
 pub const MB_CFG: u32 = 34;
 pub const MB_STATE: u32 = 35;
+pub const STAR_STATUS: u32 = 36;
+pub const OMISSIONS: u32 = 37;
 
 /// The constant read from `ID`: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
@@ -110,6 +112,13 @@ const INT_FIELDS: &[Field] = &[
         0,
         "DMR mode: the DMR state or the active CAN line changed",
     ),
+    f(
+        "domain",
+        9,
+        1,
+        0,
+        "replicated star node: the hubs' decision (STAR_STATUS.split) changed (contract §4.5)",
+    ),
 ];
 
 const CHAN_ERR_FIELDS: &[Field] = &[
@@ -148,6 +157,13 @@ const AUX_FIELDS: &[Field] = &[
         1,
         0,
         "judged failed because a message stalled (latched)",
+    ),
+    f(
+        "cause_warning",
+        6,
+        1,
+        0,
+        "judged failed because TEC or REC reached the warning limit, policy WARNING (latched)",
     ),
     f(
         "fail_cnt",
@@ -189,9 +205,9 @@ pub const REGISTERS: &[Register] = &[
         fields: &[
             f("reset_mode", 0, 1, 1, "1 = reset mode: channels held in reset, queues and FIFO emptied"),
             cfg("redundancy", 1, 1, 0, "operating mode (redundancy is refused with a listen-only channel)").coded(Mode::ENCODING),
-            cfg("policy", 2, 2, 1, "channel failure policy (3 is refused)").coded(SwitchPolicy::ENCODING),
+            cfg("policy", 2, 2, 1, "channel failure policy (contract §5)").coded(SwitchPolicy::ENCODING),
             cfg("dual_tx", 4, 1, 0, "redundancy mode: send every message on A, then its copy on B"),
-            cfg("star", 5, 1, 0, "redundancy mode: replicated star node, the other channel's echo of an own frame completes it (DRCC contract §4.4)"),
+            cfg("star", 5, 1, 0, "redundancy mode: replicated star node, the other channel's echo of an own frame completes it and the hubs' identification frames are followed, not received (DRCC contract §4.4, §4.5)"),
             cfg("k", 8, 4, 1, "failed attempts for the k-failed policy (1..15; 0 is stored as 1)"),
             cfg("mode_a", 12, 2, 0, "channel A mode").coded(ChannelMode::ENCODING),
             cfg("mode_b", 14, 2, 0, "channel B mode").coded(ChannelMode::ENCODING),
@@ -417,6 +433,29 @@ pub const REGISTERS: &[Register] = &[
     super::dmr_registers::MB_MASK_REG,
     super::dmr_registers::MB_CFG_REG,
     super::dmr_registers::MB_STATE_REG,
+    Register {
+        name: "STAR_STATUS",
+        index: STAR_STATUS,
+        access: Access::Ro,
+        desc: "Replicated star node: the hubs' decision as their identification frames tell it (contract §4.5); cleared in reset mode",
+        fields: &[
+            f("split", 0, 1, 0, "the hubs decoupled for good: two of a channel's own hub's frames in a row, none of the other hub's between"),
+            f("last_a", 2, 2, 0, "whose identification frame channel A received last").coded(StarLast::ENCODING),
+            f("last_b", 4, 2, 0, "whose identification frame channel B received last").coded(StarLast::ENCODING),
+            f("hub_frames_a", 8, 8, 0, "identification frames received on channel A (saturating)"),
+            f("hub_frames_b", 16, 8, 0, "identification frames received on channel B (saturating)"),
+        ],
+    },
+    Register {
+        name: "OMISSIONS",
+        index: OMISSIONS,
+        access: Access::Ro,
+        desc: "Redundancy mode with duplicate removal: frames only one channel delivered within the window (contract §7; saturating, cleared by rst only)",
+        fields: &[
+            f("omissions_a", 0, 16, 0, "frames only channel B delivered (omissions of channel A)"),
+            f("omissions_b", 16, 16, 0, "frames only channel A delivered (omissions of channel B)"),
+        ],
+    },
 ];
 
 /// Main FSM state encodings (paper Table 1), for the header (`DRCC_STATE_*`).
@@ -435,8 +474,8 @@ pub static MAP: RegisterMap = RegisterMap {
         Wishbone B4 classic slave, 32-bit words, `wb_adr_i` is the word index (byte offset = \
         4 x index). Every access takes two clocks (request, ack). Unmapped addresses read 0; a \
         write to a read-only or unmapped address, a cfg field written outside reset mode, a \
-        CTRL write with policy 3 or with redundancy and a listen-only channel (refused as a \
-        whole), a refused push or pop sets `INT_STATUS.illegal`. DMR mode (registers 25..35): \
+        CTRL write with redundancy and a listen-only channel (refused as a whole), a refused \
+        push or pop sets `INT_STATUS.illegal`. DMR mode (registers 25..35): \
         `cosim/src/model/dmr_contract.md` §2; its illegal configurations are refused the same way.",
     registers: REGISTERS,
     lists: &[
@@ -492,14 +531,19 @@ mod tests {
         assert!(h.contains("#define DRCC_CTRL_POLICY_ERROR_PASSIVE 1u"));
         assert!(h.contains("#define DRCC_STATE_WAIT4 9u"));
         assert!(markdown().contains("| 24 | 0x60 | [`TIMES`]"));
+        assert!(markdown().contains("| 36 | 0x90 | [`STAR_STATUS`]"));
+        assert!(markdown().contains("| 37 | 0x94 | [`OMISSIONS`]"));
+        assert!(h.contains("#define DRCC_CTRL_POLICY_WARNING 3u"));
     }
 
     #[test]
     fn codes_are_the_contracts() {
-        // contract §3: policy 0 none, 1 error-passive, 2 k-failed; §C.7 modes
+        // contract §3: policy 0 none, 1 error-passive, 2 k-failed, 3 warning; §C.7
+        // modes
         assert_eq!(SwitchPolicy::ErrorPassive.code(), 1);
         assert_eq!(SwitchPolicy::KFailed.code(), 2);
-        assert_eq!(SwitchPolicy::from_code(3), None, "policy 3 is illegal");
+        assert_eq!(SwitchPolicy::Warning.code(), 3);
+        assert_eq!(StarLast::HubB.code(), 2);
         assert_eq!(ChannelMode::ListenOnly.code(), 1);
         assert_eq!(ChannelMode::Loopback.code(), 3);
         assert_eq!(Mode::Redundancy.code(), 1);

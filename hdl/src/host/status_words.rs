@@ -1,6 +1,7 @@
 //! The read-only registers of the DRCC map (contract §3): `ID`, `STATUS`,
 //! `CHAN_x_ERR`, `AUX_x`, the head of the RX FIFO (`RX_ID`, `RX_CTRL`,
-//! `RX_DATAx`), `STATS0`, `STATS1` and `TIMES`, assembled from the status of the
+//! `RX_DATAx`), `STATS0`, `STATS1`, `TIMES`, `STAR_STATUS` (§4.5, assembled by
+//! `crate::rmb::star`) and `OMISSIONS` (§7), from the status of the
 //! blocks that own it, with every field at its position in the table
 //! (`super::registers`). Combinational: `word` is the addressed register's value
 //! (0 when the address is not one of them); the register block registers it
@@ -58,8 +59,8 @@ pub struct StatusWords {
     // ---- auxiliary FSM A (AUX_A) ----
     /// State of aux FSM A.
     pub aux_a_state: Signal<In, Bits<2>>,
-    /// Latched causes (passive, bus-off, k-failed, stall) of aux FSM A.
-    pub causes_a: Signal<In, Bits<4>>,
+    /// Latched causes (passive, bus-off, k-failed, stall, warning) of aux FSM A.
+    pub causes_a: Signal<In, Bits<5>>,
     /// Failed attempts since the last success on A.
     pub fail_cnt_a: Signal<In, Bits<4>>,
     /// Times A was judged failed.
@@ -70,7 +71,7 @@ pub struct StatusWords {
     /// State of aux FSM B.
     pub aux_b_state: Signal<In, Bits<2>>,
     /// Latched causes of aux FSM B.
-    pub causes_b: Signal<In, Bits<4>>,
+    pub causes_b: Signal<In, Bits<5>>,
     /// Failed attempts since the last success on B.
     pub fail_cnt_b: Signal<In, Bits<4>>,
     /// Times B was judged failed.
@@ -92,6 +93,13 @@ pub struct StatusWords {
     pub switches: Signal<In, Bits<16>>,
     /// Channel recoveries.
     pub recoveries: Signal<In, Bits<16>>,
+    // ---- replicated star node, omissions (STAR_STATUS, OMISSIONS) ----
+    /// `STAR_STATUS`, assembled by the star node's block.
+    pub star_word: Signal<In, Bits<32>>,
+    /// Frames only channel B delivered (omissions of A).
+    pub omissions_a: Signal<In, Bits<16>>,
+    /// Frames only channel A delivered (omissions of B).
+    pub omissions_b: Signal<In, Bits<16>>,
     // ---- decode ----
     rx_data64: Signal<Local, Bits<64>>,
     a_id: Constant<Bits<6>>,
@@ -107,6 +115,8 @@ pub struct StatusWords {
     a_stats0: Constant<Bits<6>>,
     a_stats1: Constant<Bits<6>>,
     a_times: Constant<Bits<6>>,
+    a_star_status: Constant<Bits<6>>,
+    a_omissions: Constant<Bits<6>>,
     id_value: Constant<Bits<32>>,
     zero32: Constant<Bits<32>>,
     // ---- field positions (from the table) ----
@@ -139,6 +149,8 @@ pub struct StatusWords {
     s1_recoveries: Constant<Bits<5>>,
     t_last_tx: Constant<Bits<5>>,
     t_switch: Constant<Bits<5>>,
+    o_a: Constant<Bits<5>>,
+    o_b: Constant<Bits<5>>,
 }
 
 fn adr(index: u32) -> Constant<Bits<6>> {
@@ -147,7 +159,7 @@ fn adr(index: u32) -> Constant<Bits<6>> {
 
 /// Checks the fields the RTL fixes by structure: the frame layout of the TX
 /// queues and the RX FIFO (id, ide, rtr adjacent from bit 0), whole-word data
-/// registers, the four latched causes in the aux FSM's order.
+/// registers, the five latched causes in the aux FSM's order.
 fn check_structural_fields() {
     for reg in ["TX_ID", "RX_ID"] {
         placed(&MAP, reg, "id", 0, 29);
@@ -165,6 +177,7 @@ fn check_structural_fields() {
             "cause_busoff",
             "cause_kfail",
             "cause_stall",
+            "cause_warning",
         ]
         .into_iter()
         .enumerate()
@@ -227,6 +240,9 @@ impl Default for StatusWords {
             overruns: Default::default(),
             switches: Default::default(),
             recoveries: Default::default(),
+            star_word: Default::default(),
+            omissions_a: Default::default(),
+            omissions_b: Default::default(),
             rx_data64: Default::default(),
             a_id: adr(map::ID),
             a_status: adr(map::STATUS),
@@ -241,6 +257,8 @@ impl Default for StatusWords {
             a_stats0: adr(map::STATS0),
             a_stats1: adr(map::STATS1),
             a_times: adr(map::TIMES),
+            a_star_status: adr(map::STAR_STATUS),
+            a_omissions: adr(map::OMISSIONS),
             id_value: Constant::new((map::ID_VALUE as u64).into()),
             zero32: Constant::new(0.into()),
             st_state: lsb(&MAP, "STATUS", "state", 4),
@@ -272,6 +290,8 @@ impl Default for StatusWords {
             s1_recoveries: lsb(&MAP, "STATS1", "recoveries", 16),
             t_last_tx: lsb(&MAP, "TIMES", "last_tx_time", 16),
             t_switch: lsb(&MAP, "TIMES", "switch_time", 16),
+            o_a: lsb(&MAP, "OMISSIONS", "omissions_a", 16),
+            o_b: lsb(&MAP, "OMISSIONS", "omissions_b", 16),
         }
     }
 }
@@ -308,13 +328,13 @@ impl Logic for StatusWords {
                 | (bit_cast::<32, 1>(self.ew_b.val().into()) << self.err_warning.val());
         } else if self.adr.val() == self.a_aux_a.val() {
             self.word.next = (bit_cast::<32, 2>(self.aux_a_state.val()) << self.aux_state.val())
-                | (bit_cast::<32, 4>(self.causes_a.val()) << self.aux_causes.val())
+                | (bit_cast::<32, 5>(self.causes_a.val()) << self.aux_causes.val())
                 | (bit_cast::<32, 4>(self.fail_cnt_a.val()) << self.aux_fail_cnt.val())
                 | (bit_cast::<32, 8>(self.failures_a.val()) << self.aux_failures.val())
                 | (bit_cast::<32, 8>(self.recoveries_a.val()) << self.aux_recoveries.val());
         } else if self.adr.val() == self.a_aux_b.val() {
             self.word.next = (bit_cast::<32, 2>(self.aux_b_state.val()) << self.aux_state.val())
-                | (bit_cast::<32, 4>(self.causes_b.val()) << self.aux_causes.val())
+                | (bit_cast::<32, 5>(self.causes_b.val()) << self.aux_causes.val())
                 | (bit_cast::<32, 4>(self.fail_cnt_b.val()) << self.aux_fail_cnt.val())
                 | (bit_cast::<32, 8>(self.failures_b.val()) << self.aux_failures.val())
                 | (bit_cast::<32, 8>(self.recoveries_b.val()) << self.aux_recoveries.val());
@@ -346,6 +366,11 @@ impl Logic for StatusWords {
         } else if self.adr.val() == self.a_times.val() {
             self.word.next = (bit_cast::<32, 16>(self.last_tx_time.val()) << self.t_last_tx.val())
                 | (bit_cast::<32, 16>(self.switch_time.val()) << self.t_switch.val());
+        } else if self.adr.val() == self.a_star_status.val() {
+            self.word.next = self.star_word.val();
+        } else if self.adr.val() == self.a_omissions.val() {
+            self.word.next = (bit_cast::<32, 16>(self.omissions_a.val()) << self.o_a.val())
+                | (bit_cast::<32, 16>(self.omissions_b.val()) << self.o_b.val());
         }
     }
 }

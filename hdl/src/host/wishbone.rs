@@ -6,8 +6,8 @@
 //! as `ro_word`.
 //!
 //! - cfg fields (CTRL except `reset_mode`, BTR, RMB_CFG, DEDUP_CFG) are writable
-//!   only in reset mode; CTRL with an illegal policy, or with redundancy and a
-//!   listen-only channel, is refused; k = 0 is stored as 1; refused writes,
+//!   only in reset mode; CTRL with redundancy and a listen-only channel is
+//!   refused; k = 0 is stored as 1; refused writes,
 //!   writes to RO/unmapped registers, a refused push or pop set
 //!   `INT_STATUS.illegal` (§9).
 //! - The `err_state` event is raised here when either channel's error state
@@ -82,6 +82,8 @@ pub struct WbRegs {
     pub ext_illegal: Signal<In, Bit>,
     /// The DMR state or the active line changed (`INT_STATUS.dmr`).
     pub ev_dmr: Signal<In, Bit>,
+    /// A star node's `STAR_STATUS.split` changed (`INT_STATUS.domain`, §4.5).
+    pub ev_domain: Signal<In, Bit>,
     /// A write is taken at this edge.
     pub wr_o: Signal<Out, Bit>,
     // ---- configuration out ----
@@ -136,7 +138,7 @@ pub struct WbRegs {
     /// `RX_CMD.pop` accepted.
     pub pop: Signal<Out, Bit>,
     // ---- blocks ----
-    bus: WbSlave<9>,
+    bus: WbSlave<10>,
     ctrl: CtrlReg,
     ctrl_check: CtrlCheck,
     // ---- registers ----
@@ -155,7 +157,7 @@ pub struct WbRegs {
     rdata: Signal<Local, Bits<32>>,
     wdat: Signal<Local, Bits<32>>,
     illegal: Signal<Local, Bit>,
-    w1c: Signal<Local, Bits<9>>,
+    w1c: Signal<Local, Bits<10>>,
     target_count: Signal<Local, Bits<4>>,
     es_evt: Signal<Local, Bit>,
     tx_data64: Signal<Local, Bits<64>>,
@@ -195,6 +197,7 @@ pub struct WbRegs {
     i_illegal: Constant<Bits<5>>,
     i_aux: Constant<Bits<5>>,
     i_dmr: Constant<Bits<5>>,
+    i_domain: Constant<Bits<5>>,
     // ---- reset values and codes ----
     btr_reset: Constant<Bits<24>>,
     rmb_cfg_reset: Constant<Bits<32>>,
@@ -203,7 +206,7 @@ pub struct WbRegs {
     zero2: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     zero6: Constant<Bits<6>>,
-    zero9: Constant<Bits<9>>,
+    zero10: Constant<Bits<10>>,
     zero15: Constant<Bits<15>>,
     zero16: Constant<Bits<16>>,
     zero31: Constant<Bits<31>>,
@@ -233,6 +236,8 @@ impl Default for WbRegs {
     fn default() -> Self {
         stored_in("BTR", 24);
         stored_in("RMB_CFG", 32);
+        stored_in("INT_STATUS", 10);
+        stored_in("INT_ENABLE", 10);
         let field_reset = |reg: &str, field: &str| MAP.field(reg, field).reset;
         Self {
             clk: Default::default(),
@@ -273,6 +278,7 @@ impl Default for WbRegs {
             ext_writable: Default::default(),
             ext_illegal: Default::default(),
             ev_dmr: Default::default(),
+            ev_domain: Default::default(),
             wr_o: Default::default(),
             brp: Default::default(),
             tseg1: Default::default(),
@@ -342,6 +348,7 @@ impl Default for WbRegs {
             i_illegal: lsb(&MAP, "INT_STATUS", "illegal", 1),
             i_aux: lsb(&MAP, "INT_STATUS", "aux", 1),
             i_dmr: lsb(&MAP, "INT_STATUS", "dmr", 1),
+            i_domain: lsb(&MAP, "INT_STATUS", "domain", 1),
             btr_reset: reset(map::register("BTR").unwrap().reset_value()),
             rmb_cfg_reset: reset(map::register("RMB_CFG").unwrap().reset_value()),
             window_reset: reset(field_reset("DEDUP_CFG", "window")),
@@ -349,7 +356,7 @@ impl Default for WbRegs {
             zero2: Constant::new(0.into()),
             zero4: Constant::new(0.into()),
             zero6: Constant::new(0.into()),
-            zero9: Constant::new(0.into()),
+            zero10: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             zero31: Constant::new(0.into()),
@@ -395,9 +402,9 @@ impl Logic for WbRegs {
         } else if self.wb_adr_i.val() == self.a_dedup_cfg.val() {
             self.rdata.next = bit_cast::<32, 15>(self.window_q.q.val()) << self.d_window.val();
         } else if self.wb_adr_i.val() == self.a_int_status.val() {
-            self.rdata.next = bit_cast::<32, 9>(self.bus.int_status.val());
+            self.rdata.next = bit_cast::<32, 10>(self.bus.int_status.val());
         } else if self.wb_adr_i.val() == self.a_int_enable.val() {
-            self.rdata.next = bit_cast::<32, 9>(self.bus.int_enable.val());
+            self.rdata.next = bit_cast::<32, 10>(self.bus.int_enable.val());
         } else if self.wb_adr_i.val() == self.a_tx_id.val() {
             self.rdata.next = bit_cast::<32, 31>(self.tx_id_q.q.val());
         } else if self.wb_adr_i.val() == self.a_tx_ctrl.val() {
@@ -435,9 +442,9 @@ impl Logic for WbRegs {
         self.ctrl_check.single_shot.next = self.ctrl.single_shot.val();
         self.ctrl_check.dmr.next = self.ctrl.dmr.val();
         self.illegal.next = false;
-        self.w1c.next = self.zero9.val();
+        self.w1c.next = self.zero10.val();
         self.bus.int_enable_we.next = false;
-        self.bus.int_enable_d.next = self.wdat.val().get_bits::<9>(0);
+        self.bus.int_enable_d.next = self.wdat.val().get_bits::<10>(0);
         self.push.next = false;
         self.pop.next = false;
 
@@ -472,7 +479,7 @@ impl Logic for WbRegs {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_int_status.val() {
-                self.w1c.next = self.wdat.val().get_bits::<9>(0);
+                self.w1c.next = self.wdat.val().get_bits::<10>(0);
             } else if self.wb_adr_i.val() == self.a_int_enable.val() {
                 self.bus.int_enable_we.next = true;
             } else if self.wb_adr_i.val() == self.a_tx_id.val() {
@@ -511,15 +518,16 @@ impl Logic for WbRegs {
         }
 
         // ---- interrupts (§8) and statistics ----
-        self.bus.events.next = (bit_cast::<9, 1>(self.ev_rx.val().into()) << self.i_rx.val())
-            | (bit_cast::<9, 1>(self.ev_tx_done.val().into()) << self.i_tx_done.val())
-            | (bit_cast::<9, 1>(self.ev_switch.val().into()) << self.i_switch.val())
-            | (bit_cast::<9, 1>(self.es_evt.val().into()) << self.i_err_state.val())
-            | (bit_cast::<9, 1>(self.ev_overrun.val().into()) << self.i_overrun.val())
-            | (bit_cast::<9, 1>(self.ev_tx_failure.val().into()) << self.i_tx_failure.val())
-            | (bit_cast::<9, 1>(self.illegal.val().into()) << self.i_illegal.val())
-            | (bit_cast::<9, 1>(self.ev_aux.val().into()) << self.i_aux.val())
-            | (bit_cast::<9, 1>(self.ev_dmr.val().into()) << self.i_dmr.val());
+        self.bus.events.next = (bit_cast::<10, 1>(self.ev_rx.val().into()) << self.i_rx.val())
+            | (bit_cast::<10, 1>(self.ev_tx_done.val().into()) << self.i_tx_done.val())
+            | (bit_cast::<10, 1>(self.ev_switch.val().into()) << self.i_switch.val())
+            | (bit_cast::<10, 1>(self.es_evt.val().into()) << self.i_err_state.val())
+            | (bit_cast::<10, 1>(self.ev_overrun.val().into()) << self.i_overrun.val())
+            | (bit_cast::<10, 1>(self.ev_tx_failure.val().into()) << self.i_tx_failure.val())
+            | (bit_cast::<10, 1>(self.illegal.val().into()) << self.i_illegal.val())
+            | (bit_cast::<10, 1>(self.ev_aux.val().into()) << self.i_aux.val())
+            | (bit_cast::<10, 1>(self.ev_dmr.val().into()) << self.i_dmr.val())
+            | (bit_cast::<10, 1>(self.ev_domain.val().into()) << self.i_domain.val());
         self.bus.w1c.next = self.w1c.val();
         self.es_a_prev.d.next = self.es_a.val();
         self.es_b_prev.d.next = self.es_b.val();

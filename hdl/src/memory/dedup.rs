@@ -25,6 +25,12 @@
 //! entry (not valid, already used, or expired) seen by the scan is where the new
 //! frame is recorded; with all 32 live, the round-robin `hist_ptr` is the victim.
 //!
+//! Omissions (§7, outside DMR mode): an entry that expires in `scan` (`hv[e]`
+//! and its age above `window`) without having cancelled a copy (`!hu[e]`) was
+//! delivered only by its channel `ch_e`: `omissions[1 - ch_e] += 1`. The
+//! statistics (`STATS0`, `OMISSIONS`, `DMR_RX_STATS`) are counted in
+//! `super::rx_stats`, cleared by `rst` only; no event counts at a `clear` edge.
+//!
 //! The history is a block RAM without read-before-write emulation
 //! (`super::bram`): it is written only in `write`, and its read data is used only
 //! in `scan` edges with `scan_i >= 1`, loaded at the previous `scan` edge, where
@@ -49,12 +55,13 @@
 //! written. Outside DMR mode nothing here differs from §7.
 
 use super::bram::Bram;
-use super::dmr_rx_stats::DmrRxStats;
 use super::release_scan::ReleaseScan;
+use super::rx_stats::RxStats;
+use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
 /// Receive writer with the duplicate-removal history.
-#[derive(LogicBlock)]
+#[derive(LogicBlock, Default)]
 pub struct RxWriter {
     // clock, reset (statistics) and clear (rst or reset mode)
     pub clk: Signal<In, Clock>,
@@ -80,6 +87,10 @@ pub struct RxWriter {
     pub overrun_evt: Signal<Out, Bit>,
     pub duplicates: Signal<Out, Bits<16>>,
     pub overruns: Signal<Out, Bits<16>>,
+    /// `OMISSIONS[15:0]`: frames only channel B delivered (omissions of A).
+    pub omissions_a: Signal<Out, Bits<16>>,
+    /// `OMISSIONS[31:16]`: frames only channel A delivered (omissions of B).
+    pub omissions_b: Signal<Out, Bits<16>>,
     // ---- DMR mode (DMR contract §8) ----
     /// `CTRL.dmr`: the ACL rule instead of first-copy-wins.
     pub dmr: Signal<In, Bit>,
@@ -97,7 +108,7 @@ pub struct RxWriter {
     hist: Bram<Bits<100>, 5>,
     hist_ts: Bram<Bits<16>, 5>,
     rel: ReleaseScan,
-    stats: DmrRxStats,
+    stats: RxStats,
     // registers (the state and the history flags are public for lock-step probes)
     /// Writer FSM state (idle 0, scan 1, decide 2, write 3, rscan 4, fetch 5, release 6).
     pub w_state: DFF<Bits<3>>,
@@ -127,8 +138,6 @@ pub struct RxWriter {
     w_pcl: DFF<Bit>,
     /// DMR: `hd` of the hit entry, taken with `hit`.
     hit_hd: DFF<Bit>,
-    dups_q: DFF<Bits<16>>,
-    overruns_q: DFF<Bits<16>>,
     // judgement of the history entry being read
     frame_sel: Signal<Local, Bits<99>>,
     scan_e: Signal<Local, Bits<5>>,
@@ -154,130 +163,27 @@ pub struct RxWriter {
     r_cand: Signal<Local, Bit>,
     w_fifo: Signal<Local, Bit>,
     w_hist: Signal<Local, Bit>,
+    omit: Signal<Local, Bit>,
     // constants
-    s_idle: Constant<Bits<3>>,
-    s_scan: Constant<Bits<3>>,
-    s_decide: Constant<Bits<3>>,
-    s_write: Constant<Bits<3>>,
-    s_rscan: Constant<Bits<3>>,
-    s_fetch: Constant<Bits<3>>,
-    s_release: Constant<Bits<3>>,
-    zero5: Constant<Bits<5>>,
-    one5: Constant<Bits<5>>,
-    zero6: Constant<Bits<6>>,
-    one6: Constant<Bits<6>>,
-    last_scan: Constant<Bits<6>>,
-    full6: Constant<Bits<6>>,
-    zero32: Constant<Bits<32>>,
-    one32: Constant<Bits<32>>,
-    zero15: Constant<Bits<15>>,
-    one15: Constant<Bits<15>>,
-    max15: Constant<Bits<15>>,
-    zero16: Constant<Bits<16>>,
-    one16: Constant<Bits<16>>,
-    max16: Constant<Bits<16>>,
-}
-
-impl Default for RxWriter {
-    fn default() -> Self {
-        Self {
-            clk: Default::default(),
-            rst: Default::default(),
-            clear: Default::default(),
-            dedup_on: Default::default(),
-            window: Default::default(),
-            now: Default::default(),
-            tick: Default::default(),
-            rxv_a: Default::default(),
-            rxv_b: Default::default(),
-            frame_a: Default::default(),
-            frame_b: Default::default(),
-            fifo_count: Default::default(),
-            fifo_wr: Default::default(),
-            fifo_data: Default::default(),
-            rx_evt: Default::default(),
-            overrun_evt: Default::default(),
-            duplicates: Default::default(),
-            overruns: Default::default(),
-            dmr: Default::default(),
-            acl: Default::default(),
-            release_set: Default::default(),
-            pcl_frames: Default::default(),
-            released: Default::default(),
-            expired: Default::default(),
-            hist: Default::default(),
-            hist_ts: Default::default(),
-            rel: Default::default(),
-            stats: Default::default(),
-            w_state: Default::default(),
-            rxp_a: Default::default(),
-            rxp_b: Default::default(),
-            rxf_a: Default::default(),
-            rxf_b: Default::default(),
-            sel: Default::default(),
-            scan_i: Default::default(),
-            hit: Default::default(),
-            hit_e: Default::default(),
-            free_found: Default::default(),
-            free_e: Default::default(),
-            hist_ptr: Default::default(),
-            exp_q: Default::default(),
-            hist_idle: Default::default(),
-            hv: Default::default(),
-            hu: Default::default(),
-            hd: Default::default(),
-            release_q: Default::default(),
-            w_pcl: Default::default(),
-            hit_hd: Default::default(),
-            dups_q: Default::default(),
-            overruns_q: Default::default(),
-            frame_sel: Default::default(),
-            scan_e: Default::default(),
-            e_ts: Default::default(),
-            e_age: Default::default(),
-            e_ch: Default::default(),
-            e_frame: Default::default(),
-            e_hv: Default::default(),
-            e_hu: Default::default(),
-            e_hd: Default::default(),
-            e_expired: Default::default(),
-            e_gt: Default::default(),
-            e_ge: Default::default(),
-            e_keep: Default::default(),
-            slot: Default::default(),
-            mask_e: Default::default(),
-            mask: Default::default(),
-            fifo_full: Default::default(),
-            hv_base: Default::default(),
-            in_scan: Default::default(),
-            judging: Default::default(),
-            pcl: Default::default(),
-            r_cand: Default::default(),
-            w_fifo: Default::default(),
-            w_hist: Default::default(),
-            s_idle: Constant::new(0.into()),
-            s_scan: Constant::new(1.into()),
-            s_decide: Constant::new(2.into()),
-            s_write: Constant::new(3.into()),
-            s_rscan: Constant::new(4.into()),
-            s_fetch: Constant::new(5.into()),
-            s_release: Constant::new(6.into()),
-            zero5: Constant::new(0.into()),
-            one5: Constant::new(1.into()),
-            zero6: Constant::new(0.into()),
-            one6: Constant::new(1.into()),
-            last_scan: Constant::new(32.into()),
-            full6: Constant::new(32.into()),
-            zero32: Constant::new(0.into()),
-            one32: Constant::new(1.into()),
-            zero15: Constant::new(0.into()),
-            one15: Constant::new(1.into()),
-            max15: Constant::new(0x7FFF.into()),
-            zero16: Constant::new(0.into()),
-            one16: Constant::new(1.into()),
-            max16: Constant::new(0xFFFF.into()),
-        }
-    }
+    s_idle: Const<3, 0>,
+    s_scan: Const<3, 1>,
+    s_decide: Const<3, 2>,
+    s_write: Const<3, 3>,
+    s_rscan: Const<3, 4>,
+    s_fetch: Const<3, 5>,
+    s_release: Const<3, 6>,
+    zero5: Const<5, 0>,
+    one5: Const<5, 1>,
+    zero6: Const<6, 0>,
+    one6: Const<6, 1>,
+    last_scan: Const<6, 32>,
+    full6: Const<6, 32>,
+    zero32: Const<32, 0>,
+    one32: Const<32, 1>,
+    zero15: Const<15, 0>,
+    one15: Const<15, 1>,
+    max15: Const<15, 0x7FFF>,
+    max16: Const<16, 0xFFFF>,
 }
 
 impl Logic for RxWriter {
@@ -285,8 +191,7 @@ impl Logic for RxWriter {
     fn update(&mut self) {
         dff_setup!(
             self, clk, w_state, rxp_a, rxp_b, rxf_a, rxf_b, sel, scan_i, hit, hit_e, free_found,
-            free_e, hist_ptr, exp_q, hist_idle, hv, hu, hd, release_q, w_pcl, hit_hd, dups_q,
-            overruns_q
+            free_e, hist_ptr, exp_q, hist_idle, hv, hu, hd, release_q, w_pcl, hit_hd
         );
         self.hist.clk.next = self.clk.val();
         self.hist.read_enable.next = true;
@@ -403,6 +308,17 @@ impl Logic for RxWriter {
             & self.e_expired.val()
             & !self.e_hu.val()
             & !self.e_hd.val();
+        // §7 omissions: an entry only its channel delivered expires in scan
+        self.omit.next = !self.dmr.val()
+            & self.judging.val()
+            & (self.w_state.q.val() == self.s_scan.val())
+            & self.e_hv.val()
+            & self.e_expired.val()
+            & !self.e_hu.val();
+        self.stats.omit_a.next = self.omit.val() & self.e_ch.val();
+        self.stats.omit_b.next = self.omit.val() & !self.e_ch.val();
+        self.stats.dup_inc.next = false;
+        self.stats.overrun_inc.next = false;
 
         // defaults
         self.w_state.d.next = self.w_state.q.val();
@@ -420,8 +336,6 @@ impl Logic for RxWriter {
         self.hd.d.next = self.hd.q.val();
         self.release_q.d.next = self.release_q.q.val();
         self.w_pcl.d.next = self.w_pcl.q.val();
-        self.dups_q.d.next = self.dups_q.q.val();
-        self.overruns_q.d.next = self.overruns_q.q.val();
         self.hist_idle.d.next = self.hist_idle.q.val();
         if self.tick.val() & (self.hist_idle.q.val() != self.max15.val()) {
             self.hist_idle.d.next = self.hist_idle.q.val() + self.one15.val();
@@ -523,9 +437,7 @@ impl Logic for RxWriter {
                     // DMR: the PCL copy came first and waited: delivered now
                     self.w_state.d.next = self.s_write.val();
                 } else {
-                    if self.dups_q.q.val() != self.max16.val() {
-                        self.dups_q.d.next = self.dups_q.q.val() + self.one16.val();
-                    }
+                    self.stats.dup_inc.next = true;
                     self.w_state.d.next = self.s_idle.val();
                 }
             } else {
@@ -535,9 +447,7 @@ impl Logic for RxWriter {
             if !self.w_fifo.val() {
                 // DMR: a PCL frame waits in the history
             } else if self.fifo_full.val() {
-                if self.overruns_q.q.val() != self.max16.val() {
-                    self.overruns_q.d.next = self.overruns_q.q.val() + self.one16.val();
-                }
+                self.stats.overrun_inc.next = true;
                 self.overrun_evt.next = true;
             } else {
                 self.fifo_wr.next = true;
@@ -564,9 +474,7 @@ impl Logic for RxWriter {
         } else {
             // release (§8): the waiting frame is delivered on the ACL
             if self.fifo_full.val() {
-                if self.overruns_q.q.val() != self.max16.val() {
-                    self.overruns_q.d.next = self.overruns_q.q.val() + self.one16.val();
-                }
+                self.stats.overrun_inc.next = true;
                 self.overrun_evt.next = true;
             } else {
                 self.fifo_wr.next = true;
@@ -613,18 +521,18 @@ impl Logic for RxWriter {
             self.overrun_evt.next = false;
             self.hist.write_enable.next = false;
             self.hist_ts.write_enable.next = false;
-            self.dups_q.d.next = self.dups_q.q.val();
-            self.overruns_q.d.next = self.overruns_q.q.val();
+            self.stats.dup_inc.next = false;
+            self.stats.overrun_inc.next = false;
+            self.stats.omit_a.next = false;
+            self.stats.omit_b.next = false;
             self.stats.pcl_inc.next = false;
             self.stats.released_inc.next = false;
             self.stats.expired_inc.next = false;
         }
-        if self.rst.val() {
-            self.dups_q.d.next = self.zero16.val();
-            self.overruns_q.d.next = self.zero16.val();
-        }
-        self.duplicates.next = self.dups_q.q.val();
-        self.overruns.next = self.overruns_q.q.val();
+        self.duplicates.next = self.stats.duplicates.val();
+        self.overruns.next = self.stats.overruns.val();
+        self.omissions_a.next = self.stats.omissions_a.val();
+        self.omissions_b.next = self.stats.omissions_b.val();
         self.pcl_frames.next = self.stats.pcl_frames.val();
         self.released.next = self.stats.released.val();
         self.expired.next = self.stats.expired.val();

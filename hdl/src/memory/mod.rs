@@ -5,8 +5,8 @@
 //! block RAM with no read-before-write emulation.
 pub mod bram;
 pub mod dedup;
-pub mod dmr_rx_stats;
 pub mod release_scan;
 pub mod rx_fifo;
+pub mod rx_stats;
 pub mod tx_buffer;
 pub mod tx_normalize;

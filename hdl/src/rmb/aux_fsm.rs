@@ -3,7 +3,8 @@
 //! failed 1, restart 2, probation 3.
 //!
 //! - valid -> failed when a cause of the switch policy holds
-//!   (`super::switch_policy`: error passive, bus-off, k failed attempts, stall);
+//!   (`super::switch_policy`: error passive, bus-off, k failed attempts, stall,
+//!   warning limit);
 //!   the cause bits are latched, `failures` counts.
 //! - failed -> restart when the channel is idle, not bus-off, not in use by
 //!   the main FSM and `restart_ok` (at bus idle, and B only while A is valid:
@@ -54,12 +55,15 @@ pub struct AuxFsm {
     /// A frame received without error: the line works (clears the stall count).
     pub rx_valid: Signal<In, Bit>,
     pub err_state: Signal<In, Bits<2>>,
+    /// The channel's `err_warning` (TEC or REC at or above `ewl`): the cause of
+    /// the warning policy.
+    pub err_warning: Signal<In, Bit>,
     pub sample_point: Signal<In, Bit>,
     // outputs
     pub aux_state: Signal<Out, Bits<2>>,
     pub valid: Signal<Out, Bit>,
     pub chan_rst: Signal<Out, Bit>,
-    pub causes: Signal<Out, Bits<4>>,
+    pub causes: Signal<Out, Bits<5>>,
     pub fail_cnt: Signal<Out, Bits<4>>,
     pub failures: Signal<Out, Bits<8>>,
     pub recoveries: Signal<Out, Bits<8>>,
@@ -71,12 +75,12 @@ pub struct AuxFsm {
     stall_q: DFF<Bits<16>>,
     left_q: DFF<Bits<16>>,
     done_q: DFF<Bit>,
-    causes_q: DFF<Bits<4>>,
+    causes_q: DFF<Bits<5>>,
     failures_q: DFF<Bits<8>>,
     recoveries_q: DFF<Bits<8>>,
     // judgement
     judge: FailureJudge,
-    now_causes: Signal<Local, Bits<4>>,
+    now_causes: Signal<Local, Bits<5>>,
     rb_eff: Signal<Local, Bits<16>>,
     // constants
     s_valid: Constant<Bits<2>>,
@@ -86,6 +90,7 @@ pub struct AuxFsm {
     es_busoff: Constant<Bits<2>>,
     one4: Constant<Bits<4>>,
     zero4: Constant<Bits<4>>,
+    zero5: Constant<Bits<5>>,
     max4: Constant<Bits<4>>,
     one8: Constant<Bits<8>>,
     zero8: Constant<Bits<8>>,
@@ -114,6 +119,7 @@ impl Default for AuxFsm {
             tx_pending: Default::default(),
             rx_valid: Default::default(),
             err_state: Default::default(),
+            err_warning: Default::default(),
             sample_point: Default::default(),
             aux_state: Default::default(),
             valid: Default::default(),
@@ -142,6 +148,7 @@ impl Default for AuxFsm {
             es_busoff: Constant::new((ErrState::BusOff.code() as u64).into()),
             one4: Constant::new(1.into()),
             zero4: Constant::new(0.into()),
+            zero5: Constant::new(0.into()),
             max4: Constant::new(15.into()),
             one8: Constant::new(1.into()),
             zero8: Constant::new(0.into()),
@@ -203,6 +210,7 @@ impl Logic for AuxFsm {
         self.judge.err_state.next = self.err_state.val();
         self.judge.fail_cnt.next = self.fail_q.q.val();
         self.judge.stall_cnt.next = self.stall_q.q.val();
+        self.judge.err_warning.next = self.err_warning.val();
         self.now_causes.next = self.judge.causes.val();
         if self.recovery_bits.val() == self.zero16.val() {
             self.rb_eff.next = self.one16.val();
@@ -260,7 +268,7 @@ impl Logic for AuxFsm {
             self.stall_q.d.next = self.zero16.val();
             self.left_q.d.next = self.rb_eff.val();
             self.done_q.d.next = false;
-            self.causes_q.d.next = self.zero4.val();
+            self.causes_q.d.next = self.zero5.val();
             self.fail_evt.next = false;
             self.recover_evt.next = false;
         }

@@ -1,4 +1,6 @@
-//! The echo of a replicated star node (DRCC contract §4.4, `CTRL.star`): on a
+//! The receive side of a replicated star node (DRCC contract §4.4, §4.5,
+//! `CTRL.star`): the echo, and the hubs' identification frames
+//! (`super::star::StarFollow`, instantiated here). The echo: on a
 //! replicated star the two hubs form one communication domain, so while one
 //! channel transmits the node's frame the other receives it through the other
 //! hub. A channel's reception of the head message of TX queue A, while that
@@ -14,17 +16,27 @@
 //! all 99 bits (id, ide, rtr, dlc, data). The main FSM finishes the message at an
 //! echo (its first row in every state) and the RX writer does not take the frame
 //! (`rxp_x` is not set, §7).
+//!
+//! The RX writer gets `rxv_x = rx_valid_x && !echo_x && !hubf_x`: neither the
+//! node's own frame nor a hub's identification frame is a reception (§4.4, §4.5).
+//! `clear` is the main FSM's hold (`rst`, reset mode, normal mode): it empties
+//! `STAR_STATUS`, and `run = !clear`.
 
+use super::star::StarFollow;
 use rust_hdl::prelude::*;
 
-/// Echo detection of a replicated star node (contract §4.4).
+/// Echo detection and identification frames of a replicated star node (contract
+/// §4.4, §4.5).
 #[derive(LogicBlock, Default)]
 pub struct Echo {
+    /// Clock (`STAR_STATUS`).
+    pub clk: Signal<In, Clock>,
     // ---- configuration and the main FSM ----
     /// `CTRL.star`: replicated star node.
     pub star: Signal<In, Bit>,
-    /// Redundancy mode outside reset mode: the main FSM runs.
-    pub run: Signal<In, Bit>,
+    /// `rst`, reset mode or normal mode (the main FSM is held): the echo is off
+    /// and `STAR_STATUS` is held at 0.
+    pub clear: Signal<In, Bit>,
     /// The main FSM's `attempted`: the head message was requested on a channel
     /// and is not finished.
     pub attempted: Signal<In, Bit>,
@@ -47,18 +59,43 @@ pub struct Echo {
     pub echo_a: Signal<Out, Bit>,
     /// Channel B received the attempted head message at this edge.
     pub echo_b: Signal<Out, Bit>,
+    // ---- to the RX writer and the registers ----
+    /// Channel A's reception for the RX writer: neither an echo nor a hub's frame.
+    pub rxv_a: Signal<Out, Bit>,
+    /// Channel B's reception for the RX writer.
+    pub rxv_b: Signal<Out, Bit>,
+    /// `STAR_STATUS.split` changes at this edge (`INT_STATUS.domain`).
+    pub ev_domain: Signal<Out, Bit>,
+    /// `STAR_STATUS`.
+    pub star_word: Signal<Out, Bits<32>>,
     // ---- internals ----
+    follow: StarFollow,
     armed: Signal<Local, Bit>,
 }
 
 impl Logic for Echo {
     #[hdl_gen]
     fn update(&mut self) {
-        self.armed.next = self.star.val() & self.run.val() & self.attempted.val();
+        self.armed.next = self.star.val() & !self.clear.val() & self.attempted.val();
         self.echo_a.next =
             self.armed.val() & self.rx_valid_a.val() & (self.frame_a.val() == self.head.val());
         self.echo_b.next =
             self.armed.val() & self.rx_valid_b.val() & (self.frame_b.val() == self.head.val());
+        // §4.5: the hubs' identification frames
+        self.follow.clk.next = self.clk.val();
+        self.follow.clear.next = self.clear.val();
+        self.follow.on.next = self.star.val() & !self.clear.val();
+        // {rtr, ide, id[10:0], dlc}: frame bits [98:97] and [78:64]
+        self.follow.rx_valid_a.next = self.rx_valid_a.val();
+        self.follow.key_a.next = (bit_cast::<17, 2>(self.frame_a.val().get_bits::<2>(97)) << 15)
+            | bit_cast::<17, 15>(self.frame_a.val().get_bits::<15>(64));
+        self.follow.rx_valid_b.next = self.rx_valid_b.val();
+        self.follow.key_b.next = (bit_cast::<17, 2>(self.frame_b.val().get_bits::<2>(97)) << 15)
+            | bit_cast::<17, 15>(self.frame_b.val().get_bits::<15>(64));
+        self.rxv_a.next = self.rx_valid_a.val() & !self.echo_a.val() & !self.follow.hubf_a.val();
+        self.rxv_b.next = self.rx_valid_b.val() & !self.echo_b.val() & !self.follow.hubf_b.val();
+        self.ev_domain.next = self.follow.ev_domain.val();
+        self.star_word.next = self.follow.word.val();
     }
 }
 
@@ -81,7 +118,7 @@ mod tests {
         let mut uut = Echo::default();
         uut.connect_all();
         uut.star.next = star;
-        uut.run.next = run;
+        uut.clear.next = !run;
         uut.attempted.next = attempted;
         uut.head.next = head;
         uut.rx_valid_a.next = fa.is_some();
@@ -89,6 +126,9 @@ mod tests {
         uut.rx_valid_b.next = fb.is_some();
         uut.frame_b.next = head ^ bit_cast::<99, 64>(fb.unwrap_or(0).into());
         assert!(simulate(&mut uut, 10));
+        // an echo is not a reception
+        assert_eq!(uut.rxv_a.val(), fa.is_some() && !uut.echo_a.val());
+        assert_eq!(uut.rxv_b.val(), fb.is_some() && !uut.echo_b.val());
         (uut.echo_a.val(), uut.echo_b.val())
     }
 

@@ -1,9 +1,11 @@
 //! Redundancy management block (DRCC paper section III, Table 1): the main FSM,
 //! one auxiliary FSM per channel with the switch policy it judges by, the
-//! nominal bit tick they count with, and the echo of a replicated star node.
+//! nominal bit tick they count with, and the echo of a replicated star node
+//! with the hubs' identification frames it follows.
 pub mod aux_fsm;
 pub mod bit_tick;
 pub mod echo;
 pub mod main_fsm;
+pub mod star;
 pub mod stats;
 pub mod switch_policy;

@@ -1,7 +1,7 @@
 //! The switch policy of the DRCC (DRCC paper section III, contract §5): when an
 //! auxiliary FSM judges its channel failed, so that the main FSM switches to the
 //! other channel. Combinational, on registered values; one cause per bit, in the
-//! order of `AUX_x[5:2]`:
+//! order of `AUX_x[6:2]`:
 //!
 //! - error passive: policy [`SwitchPolicy::ErrorPassive`] (the paper's) and the
 //!   channel is not error active (ISO 11898-1 12.1.4: error passive or bus-off);
@@ -9,7 +9,9 @@
 //! - k failed: policy [`SwitchPolicy::KFailed`] and at least `k` failed attempts
 //!   since the last success;
 //! - stall: any policy but none, a stall limit set and a message pending for at
-//!   least `stall_limit` bit times.
+//!   least `stall_limit` bit times;
+//! - warning: policy [`SwitchPolicy::Warning`] and the channel's `err_warning`
+//!   (TEC or REC at or above `BTR.ewl`; bus-off counts by the bus-off cause).
 
 use crate::host::registers::{ErrState, SwitchPolicy};
 use rust_hdl::prelude::*;
@@ -31,9 +33,12 @@ pub struct FailureJudge {
     pub fail_cnt: Signal<In, Bits<4>>,
     /// Bit times the current message has been pending (saturating).
     pub stall_cnt: Signal<In, Bits<16>>,
+    /// The channel's `err_warning`: TEC or REC at or above the warning limit.
+    pub err_warning: Signal<In, Bit>,
     // ---- judgement ----
-    /// Causes that hold: [0] error passive, [1] bus-off, [2] k failed, [3] stall.
-    pub causes: Signal<Out, Bits<4>>,
+    /// Causes that hold: [0] error passive, [1] bus-off, [2] k failed, [3] stall,
+    /// [4] warning.
+    pub causes: Signal<Out, Bits<5>>,
     /// Some cause holds: the channel is judged failed.
     pub failed: Signal<Out, Bit>,
     // ---- internals ----
@@ -41,12 +46,14 @@ pub struct FailureJudge {
     c_busoff: Signal<Local, Bit>,
     c_kfail: Signal<Local, Bit>,
     c_stall: Signal<Local, Bit>,
+    c_warn: Signal<Local, Bit>,
     p_none: Constant<Bits<2>>,
     p_passive: Constant<Bits<2>>,
     p_kfail: Constant<Bits<2>>,
+    p_warning: Constant<Bits<2>>,
     es_active: Constant<Bits<2>>,
     es_busoff: Constant<Bits<2>>,
-    zero4: Constant<Bits<4>>,
+    zero5: Constant<Bits<5>>,
     zero16: Constant<Bits<16>>,
 }
 
@@ -63,18 +70,21 @@ impl Default for FailureJudge {
             err_state: Default::default(),
             fail_cnt: Default::default(),
             stall_cnt: Default::default(),
+            err_warning: Default::default(),
             causes: Default::default(),
             failed: Default::default(),
             c_passive: Default::default(),
             c_busoff: Default::default(),
             c_kfail: Default::default(),
             c_stall: Default::default(),
+            c_warn: Default::default(),
             p_none: code(SwitchPolicy::None.code()),
             p_passive: code(SwitchPolicy::ErrorPassive.code()),
             p_kfail: code(SwitchPolicy::KFailed.code()),
+            p_warning: code(SwitchPolicy::Warning.code()),
             es_active: code(ErrState::ErrorActive.code()),
             es_busoff: code(ErrState::BusOff.code()),
-            zero4: Constant::new(0.into()),
+            zero5: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
         }
     }
@@ -92,11 +102,13 @@ impl Logic for FailureJudge {
         self.c_stall.next = (self.policy.val() != self.p_none.val())
             & (self.stall_limit.val() != self.zero16.val())
             & (self.stall_cnt.val() >= self.stall_limit.val());
-        self.causes.next = bit_cast::<4, 1>(self.c_passive.val().into())
-            | (bit_cast::<4, 1>(self.c_busoff.val().into()) << 1)
-            | (bit_cast::<4, 1>(self.c_kfail.val().into()) << 2)
-            | (bit_cast::<4, 1>(self.c_stall.val().into()) << 3);
-        self.failed.next = self.causes.val() != self.zero4.val();
+        self.c_warn.next = (self.policy.val() == self.p_warning.val()) & self.err_warning.val();
+        self.causes.next = bit_cast::<5, 1>(self.c_passive.val().into())
+            | (bit_cast::<5, 1>(self.c_busoff.val().into()) << 1)
+            | (bit_cast::<5, 1>(self.c_kfail.val().into()) << 2)
+            | (bit_cast::<5, 1>(self.c_stall.val().into()) << 3)
+            | (bit_cast::<5, 1>(self.c_warn.val().into()) << 4);
+        self.failed.next = self.causes.val() != self.zero5.val();
     }
 }
 
@@ -104,7 +116,7 @@ impl Logic for FailureJudge {
 mod tests {
     use super::*;
 
-    /// Causes for one input combination.
+    /// Causes for one input combination (no error warning).
     fn judge(
         policy: SwitchPolicy,
         es: ErrState,
@@ -113,8 +125,22 @@ mod tests {
         stall: u64,
         limit: u64,
     ) -> u64 {
+        judge_w(policy, es, false, fail_cnt, k, stall, limit)
+    }
+
+    /// Causes for one input combination.
+    fn judge_w(
+        policy: SwitchPolicy,
+        es: ErrState,
+        warning: bool,
+        fail_cnt: u64,
+        k: u64,
+        stall: u64,
+        limit: u64,
+    ) -> u64 {
         let mut uut = FailureJudge::default();
         uut.connect_all();
+        uut.err_warning.next = warning;
         uut.policy.next = (policy.code() as u64).into();
         uut.err_state.next = (es.code() as u64).into();
         uut.fail_cnt.next = fail_cnt.into();
@@ -176,5 +202,25 @@ mod tests {
             0,
             "stall limit 0 is off"
         );
+    }
+
+    /// §5 policy 3: a channel at or above the warning limit fails (cause [4]);
+    /// the other policies ignore the warning; bus-off still counts as bus-off.
+    #[test]
+    fn warning_policy_fails_a_channel_at_the_warning_limit() {
+        use ErrState::{BusOff, ErrorActive, ErrorPassive};
+        use SwitchPolicy::{KFailed, Warning};
+        const PASSIVE: SwitchPolicy = SwitchPolicy::ErrorPassive;
+        assert_eq!(judge_w(Warning, ErrorActive, false, 15, 1, 0, 0), 0);
+        assert_eq!(judge_w(Warning, ErrorActive, true, 0, 1, 0, 0), 0b1_0000);
+        assert_eq!(
+            judge_w(Warning, ErrorPassive, false, 0, 1, 0, 0),
+            0,
+            "error passive alone is not a cause under the warning policy"
+        );
+        assert_eq!(judge_w(Warning, BusOff, true, 0, 1, 0, 0), 0b1_0010);
+        assert_eq!(judge_w(Warning, ErrorActive, false, 0, 1, 10, 10), 0b0_1000);
+        assert_eq!(judge_w(PASSIVE, ErrorActive, true, 0, 1, 0, 0), 0);
+        assert_eq!(judge_w(KFailed, ErrorActive, true, 0, 1, 0, 0), 0);
     }
 }

@@ -1,0 +1,455 @@
+//! The wiring of the `drcc` top ([`super::DrccCore`], DRCC contract §1-§9; DMR
+//! contract §2-§9): every block's inputs, the channels' configuration and TX
+//! frame, the register block's events and read-only words, and the probes. A
+//! child module of `super` so that it reaches the top's private blocks; split
+//! from `drcc.rs`, which declares the ports and the blocks.
+
+use super::*;
+
+impl<const M: usize> Logic for DrccCore<M> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        // reset mode empties the queues and the FIFO; the RMB runs in redundancy
+        // mode only
+        self.clear.next = self.rst.val() | self.regs.reset_mode.val();
+        self.rmb_hold.next =
+            self.rst.val() | self.regs.reset_mode.val() | !self.regs.redundancy.val();
+        // the DMR function runs in DMR mode outside reset mode (DMR contract §2)
+        self.dmr_hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
+        self.rx_frame_a.next = (bit_cast::<99, 1>(self.chan_a.rx_rtr.val().into()) << 98)
+            | (bit_cast::<99, 1>(self.chan_a.rx_ide.val().into()) << 97)
+            | (bit_cast::<99, 29>(self.chan_a.rx_id.val()) << 68)
+            | (bit_cast::<99, 4>(self.chan_a.rx_dlc.val()) << 64)
+            | bit_cast::<99, 64>(self.chan_a.rx_data.val());
+        self.rx_frame_b.next = (bit_cast::<99, 1>(self.chan_b.rx_rtr.val().into()) << 98)
+            | (bit_cast::<99, 1>(self.chan_b.rx_ide.val().into()) << 97)
+            | (bit_cast::<99, 29>(self.chan_b.rx_id.val()) << 68)
+            | (bit_cast::<99, 4>(self.chan_b.rx_dlc.val()) << 64)
+            | bit_cast::<99, 64>(self.chan_b.rx_data.val());
+
+        // ---- register block ----
+        self.regs.clk.next = self.clk.val();
+        self.regs.rst.next = self.rst.val();
+        self.regs.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.regs.wb_stb_i.next = self.wb_stb_i.val();
+        self.regs.wb_we_i.next = self.wb_we_i.val();
+        self.regs.wb_adr_i.next = self.wb_adr_i.val();
+        self.regs.wb_dat_i.next = self.wb_dat_i.val();
+        self.regs.ro_word.next = self.status.word.val();
+        self.regs.es_a.next = self.chan_a.err_state.val();
+        self.regs.es_b.next = self.chan_b.err_state.val();
+        self.regs.txq_a.next = self.txbuf.count_a.val();
+        self.regs.txq_b.next = self.txbuf.count_b.val();
+        self.regs.rx_count.next = self.rxfifo.count.val();
+        self.regs.ev_rx.next = self.rxw.rx_evt.val();
+        self.regs.ev_tx_done.next = self.txbuf.done_evt.val()
+            | self.main.success_evt.val()
+            | self.dmr_ctl.tx_done_evt.val();
+        self.regs.ev_switch.next = self.main.switch_evt.val();
+        self.regs.ev_overrun.next = self.rxw.overrun_evt.val();
+        self.regs.ev_tx_failure.next = self.txbuf.failed_evt.val() | self.main.fail_evt.val();
+        self.regs.ev_aux.next = self.aux_a.fail_evt.val()
+            | self.aux_a.recover_evt.val()
+            | self.aux_b.fail_evt.val()
+            | self.aux_b.recover_evt.val();
+        self.wb_dat_o.next = self.regs.wb_dat_o.val();
+        self.wb_ack_o.next = self.regs.wb_ack_o.val();
+        self.irq.next = self.regs.irq.val();
+        self.regs.ext_hit.next = self.dmr_check.hit.val();
+        self.regs.ext_word.next = self.dmr_check.word.val();
+        self.regs.ext_writable.next = self.dmr_check.writable.val();
+        self.regs.ext_illegal.next = self.dmr_check.illegal.val();
+        self.regs.ev_dmr.next = self.dmr_ctl.int_evt.val();
+        self.regs.ev_domain.next = self.echo.ev_domain.val();
+
+        // ---- the mailboxes (DMR contract §4), generated with M > 0 ----
+        self.mb_id_word.next = self.zero31.val();
+        self.mb_mask.next = self.zero29.val();
+        self.mb_state_word.next = self.zero32.val();
+        self.eval_fault.next = false;
+        self.eval_line.next = false;
+        self.eval_tx.next = false;
+        self.eval_deviation.next = false;
+        self.eval_mb.next = self.zero4.val();
+        for i in 0..M.min(1) {
+            self.mailbox_cfg[i].clk.next = self.clk.val();
+            // the memory's read port is the host's in reset mode, the engine's
+            // while DMR runs (DMR contract §2.1)
+            if self.dmr_hold.val() {
+                self.mailbox_cfg[i].read_address.next = self.dmr_regs.mb_sel.val();
+            } else {
+                self.mailbox_cfg[i].read_address.next = self.dmr_eng[i].cfg_addr.val();
+            }
+            self.mailbox_cfg[i].write_address.next = self.dmr_regs.mb_sel.val();
+            self.mailbox_cfg[i].we_id.next = self.dmr_regs.mb_we_id.val();
+            self.mailbox_cfg[i].we_mask.next = self.dmr_regs.mb_we_mask.val();
+            self.mailbox_cfg[i].wdat.next = self.wb_dat_i.val().get_bits::<31>(0);
+            self.mb_id_word.next = self.mailbox_cfg[i].id_word.val();
+            self.mb_mask.next = self.mailbox_cfg[i].mask.val();
+            self.dmr_eng[i].clk.next = self.clk.val();
+            self.dmr_eng[i].hold.next = self.dmr_hold.val();
+            self.dmr_eng[i].clear_state.next = self.dmr_ctl.clear_mailboxes.val();
+            self.dmr_eng[i].timeout.next = self.dmr_regs.timeout.val();
+            self.dmr_eng[i].tx_dcl.next = self.dmr_ctl.raise_tx_dcl.val();
+            self.dmr_eng[i].tx_rcl.next = self.dmr_ctl.raise_tx_rcl.val();
+            self.dmr_eng[i].rx_dcl.next = self.dmr_ctl.raise_rx_dcl.val();
+            self.dmr_eng[i].rx_rcl.next = self.dmr_ctl.raise_rx_rcl.val();
+            self.dmr_eng[i].req_dcl.next = self.dmr_ctl.raise_req_dcl.val();
+            self.dmr_eng[i].req_rcl.next = self.dmr_ctl.raise_req_rcl.val();
+            self.dmr_eng[i].key_tx_dcl.next = self.dmr_ctl.key_tx_dcl.val();
+            self.dmr_eng[i].key_tx_rcl.next = self.dmr_ctl.key_tx_rcl.val();
+            self.dmr_eng[i].key_rx_dcl.next = self.dmr_ctl.key_rx_dcl.val();
+            self.dmr_eng[i].key_rx_rcl.next = self.dmr_ctl.key_rx_rcl.val();
+            self.dmr_eng[i].key_req_dcl.next = self.dmr_ctl.key_req_dcl.val();
+            self.dmr_eng[i].key_req_rcl.next = self.dmr_ctl.key_req_rcl.val();
+            self.dmr_eng[i].eval.next = self.dmr_ctl.raise_eval.val();
+            self.dmr_eng[i].mb_enable.next = self.dmr_regs.mb_enable.val();
+            self.dmr_eng[i].mb_limits.next = self.dmr_regs.mb_limits.val();
+            self.dmr_eng[i].cfg_id_word.next = self.mailbox_cfg[i].id_word.val();
+            self.dmr_eng[i].cfg_mask.next = self.mailbox_cfg[i].mask.val();
+            self.dmr_eng[i].mb_sel.next = self.dmr_regs.mb_sel.val();
+            self.mb_state_word.next = self.dmr_eng[i].mb_state_word.val();
+            self.eval_fault.next = self.dmr_eng[i].fault.val();
+            self.eval_line.next = self.dmr_eng[i].fault_line.val();
+            self.eval_tx.next = self.dmr_eng[i].fault_tx.val();
+            self.eval_deviation.next = self.dmr_eng[i].fault_deviation.val();
+            self.eval_mb.next = self.dmr_eng[i].fault_mb.val();
+        }
+
+        // ---- DMR registers and mailbox memory (DMR contract §2) ----
+        self.dmr_check.adr.next = self.wb_adr_i.val();
+        self.dmr_check.wdat.next = self.wb_dat_i.val();
+        self.dmr_check.reset_mode.next = self.regs.reset_mode.val();
+        self.dmr_check.cfg_word.next = self.dmr_regs.cfg_word.val();
+        self.dmr_check.time_word.next = self.dmr_regs.time_word.val();
+        self.dmr_check.cs_id_dcl.next = self.dmr_regs.cs_id_dcl.val();
+        self.dmr_check.cs_id_rcl.next = self.dmr_regs.cs_id_rcl.val();
+        self.dmr_check.mb_sel.next = self.dmr_regs.mb_sel.val();
+        self.dmr_check.mb_enable.next = self.dmr_regs.mb_enable.val();
+        self.dmr_check.mb_limits.next = self.dmr_regs.mb_limits.val();
+        self.dmr_check.mb_id_word.next = self.mb_id_word.val();
+        self.dmr_check.mb_mask.next = self.mb_mask.val();
+        self.dmr_check.status_word.next = self.dmr_ctl.status_word.val();
+        self.dmr_check.cs_count_word.next = self.dmr_ctl.cs_count_word.val();
+        self.dmr_check.rx_stats_word.next = (bit_cast::<32, 8>(self.rxw.expired.val()) << 24)
+            | (bit_cast::<32, 8>(self.rxw.released.val()) << 16)
+            | bit_cast::<32, 16>(self.rxw.pcl_frames.val());
+        self.dmr_check.mb_state_word.next = self.mb_state_word.val();
+        self.dmr_regs.clk.next = self.clk.val();
+        self.dmr_regs.rst.next = self.rst.val();
+        self.dmr_regs.wr.next = self.regs.wr_o.val();
+        self.dmr_regs.adr.next = self.wb_adr_i.val();
+        self.dmr_regs.wdat.next = self.wb_dat_i.val();
+        self.dmr_regs.writable.next = self.dmr_check.writable.val();
+        self.dmr_regs.refused.next = self.dmr_check.illegal.val();
+        // ---- DMR function (DMR contract §3-§7): control and mailbox engine ----
+        self.dmr_ctl.clk.next = self.clk.val();
+        self.dmr_ctl.rst.next = self.rst.val();
+        self.dmr_ctl.hold.next = self.dmr_hold.val();
+        self.dmr_ctl.timeout.next = self.dmr_regs.timeout.val();
+        self.dmr_ctl.cs_period.next = self.dmr_regs.cs_period.val();
+        self.dmr_ctl.tick_bits.next = self.dmr_regs.tick_bits.val();
+        self.dmr_ctl.recovery_delay.next = self.dmr_regs.recovery_delay.val();
+        self.dmr_ctl.cs_id_dcl.next = self.dmr_regs.cs_id_dcl.val();
+        self.dmr_ctl.cs_id_rcl.next = self.dmr_regs.cs_id_rcl.val();
+        self.dmr_ctl.tick.next = self.ticker.tick.val();
+        self.dmr_ctl.reset_mode_q.next = self.regs.reset_mode_d.val();
+        self.dmr_ctl.done_dcl.next = self.chan_a.tx_done.val();
+        self.dmr_ctl.failed_dcl.next = self.chan_a.tx_failed.val();
+        self.dmr_ctl.rx_valid_dcl.next = self.chan_a.rx_valid.val();
+        self.dmr_ctl.rx_ide_dcl.next = self.chan_a.rx_ide.val();
+        self.dmr_ctl.rx_rtr_dcl.next = self.chan_a.rx_rtr.val();
+        self.dmr_ctl.rx_dlc_dcl.next = self.chan_a.rx_dlc.val();
+        self.dmr_ctl.rx_id_dcl.next = self.chan_a.rx_id.val();
+        self.dmr_ctl.err_state_dcl.next = self.chan_a.err_state.val();
+        self.dmr_ctl.done_rcl.next = self.chan_b.tx_done.val();
+        self.dmr_ctl.failed_rcl.next = self.chan_b.tx_failed.val();
+        self.dmr_ctl.rx_valid_rcl.next = self.chan_b.rx_valid.val();
+        self.dmr_ctl.rx_ide_rcl.next = self.chan_b.rx_ide.val();
+        self.dmr_ctl.rx_rtr_rcl.next = self.chan_b.rx_rtr.val();
+        self.dmr_ctl.rx_dlc_rcl.next = self.chan_b.rx_dlc.val();
+        self.dmr_ctl.rx_id_rcl.next = self.chan_b.rx_id.val();
+        self.dmr_ctl.err_state_rcl.next = self.chan_b.err_state.val();
+        self.dmr_ctl.q_count.next = self.txbuf.count_a.val();
+        self.dmr_ctl.rd_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+        self.dmr_ctl.rd_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+        self.dmr_ctl.rd_sel.next = self.txbuf.rd_sel_o.val();
+        self.dmr_ctl.eval_fault.next = self.eval_fault.val();
+        self.dmr_ctl.eval_line.next = self.eval_line.val();
+        self.dmr_ctl.eval_tx.next = self.eval_tx.val();
+        self.dmr_ctl.eval_deviation.next = self.eval_deviation.val();
+        self.dmr_ctl.eval_mb.next = self.eval_mb.val();
+
+        // ---- read-only registers ----
+        self.status.adr.next = self.wb_adr_i.val();
+        self.status.reset_mode.next = self.regs.reset_mode.val();
+        self.status.state.next = self.main.state.val();
+        self.status.tx_channel.next = self.main.tx_channel.val();
+        self.status.tx_going_on.next = self.main.tx_going_on.val();
+        self.status.last_tx_time.next = self.main.last_tx_time.val();
+        self.status.switch_time.next = self.main.switch_time.val();
+        self.status.txq_a.next = self.txbuf.count_a.val();
+        self.status.txq_b.next = self.txbuf.count_b.val();
+        self.status.rx_count.next = self.rxfifo.count.val();
+        self.status.es_a.next = self.chan_a.err_state.val();
+        self.status.tec_a.next = self.chan_a.tec.val();
+        self.status.rec_a.next = self.chan_a.rec.val();
+        self.status.ew_a.next = self.chan_a.err_warning.val();
+        self.status.es_b.next = self.chan_b.err_state.val();
+        self.status.tec_b.next = self.chan_b.tec.val();
+        self.status.rec_b.next = self.chan_b.rec.val();
+        self.status.ew_b.next = self.chan_b.err_warning.val();
+        self.status.aux_a_state.next = self.aux_a.aux_state.val();
+        self.status.causes_a.next = self.aux_a.causes.val();
+        self.status.fail_cnt_a.next = self.aux_a.fail_cnt.val();
+        self.status.failures_a.next = self.aux_a.failures.val();
+        self.status.recoveries_a.next = self.aux_a.recoveries.val();
+        self.status.aux_b_state.next = self.aux_b.aux_state.val();
+        self.status.causes_b.next = self.aux_b.causes.val();
+        self.status.fail_cnt_b.next = self.aux_b.fail_cnt.val();
+        self.status.failures_b.next = self.aux_b.failures.val();
+        self.status.recoveries_b.next = self.aux_b.recoveries.val();
+        self.status.rx_head.next = self.rxfifo.rd_data.val();
+        self.status.rx_ready.next = self.rxfifo.rx_ready.val();
+        self.status.duplicates.next = self.rxw.duplicates.val();
+        self.status.overruns.next = self.rxw.overruns.val();
+        self.status.switches.next = self.stats.switches.val();
+        self.status.star_word.next = self.echo.star_word.val();
+        self.status.omissions_a.next = self.rxw.omissions_a.val();
+        self.status.omissions_b.next = self.rxw.omissions_b.val();
+        self.status.recoveries.next = self.stats.recoveries.val();
+        self.stats.clk.next = self.clk.val();
+        self.stats.rst.next = self.rst.val();
+        self.stats.switch_evt.next = self.main.switch_evt.val();
+        self.stats.recover_a.next = self.aux_a.recover_evt.val();
+        self.stats.recover_b.next = self.aux_b.recover_evt.val();
+
+        // ---- bit tick ----
+        self.ticker.clk.next = self.clk.val();
+        self.ticker.hold.next = self.clear.val();
+        self.ticker.brp.next = self.regs.brp.val();
+        self.ticker.tseg1.next = self.regs.tseg1.val();
+        self.ticker.tseg2.next = self.regs.tseg2.val();
+
+        // ---- main FSM (Table 1) ----
+        self.main.clk.next = self.clk.val();
+        self.main.rst.next = self.rst.val();
+        self.main.hold.next = self.rmb_hold.val();
+        self.main.dual_tx.next = self.regs.dual_tx.val();
+        self.main.queued.next = self.txbuf.count_a.val().any();
+        self.main.valid_a.next = self.aux_a.valid.val();
+        self.main.valid_b.next = self.aux_b.valid.val();
+        self.main.pending_a.next = self.chan_a.tx_pending.val();
+        self.main.pending_b.next = self.chan_b.tx_pending.val();
+        self.main.done_a.next = self.chan_a.tx_done.val();
+        self.main.done_b.next = self.chan_b.tx_done.val();
+        self.main.failed_a.next = self.chan_a.tx_failed.val();
+        self.main.failed_b.next = self.chan_b.tx_failed.val();
+        self.main.tick.next = self.ticker.tick.val();
+        self.main.echo_a.next = self.echo.echo_a.val();
+        self.main.echo_b.next = self.echo.echo_b.val();
+
+        // ---- star node: the echo of the attempted head message (§4.4), the
+        // hubs' identification frames (§4.5) ----
+        self.echo.clk.next = self.clk.val();
+        self.echo.star.next = self.regs.star.val();
+        self.echo.clear.next = self.rmb_hold.val();
+        self.echo.attempted.next = self.main.attempted.val();
+        self.echo.head.next = self.txbuf.rd_frame.val();
+        self.echo.rx_valid_a.next = self.chan_a.rx_valid.val();
+        self.echo.frame_a.next = self.rx_frame_a.val();
+        self.echo.rx_valid_b.next = self.chan_b.rx_valid.val();
+        self.echo.frame_b.next = self.rx_frame_b.val();
+
+        // ---- auxiliary FSMs ----
+        self.aux_a.clk.next = self.clk.val();
+        self.aux_a.rst.next = self.rst.val();
+        self.aux_a.hold.next = self.rmb_hold.val();
+        self.aux_a.policy.next = self.regs.policy.val();
+        self.aux_a.k.next = self.regs.k.val();
+        self.aux_a.stall_limit.next = self.regs.stall_limit.val();
+        self.aux_a.recovery_bits.next = self.regs.recovery_bits.val();
+        self.aux_a.tick.next = self.ticker.tick.val();
+        self.aux_a.in_use.next = self.main.in_use_a.val();
+        // restart only at bus idle, B only while A is valid (contract §5)
+        self.aux_a.restart_ok.next = self.chan_a.field.val() == Field::Idle;
+        self.aux_a.err_valid.next = self.chan_a.err_valid.val();
+        self.aux_a.err_tx.next = self.chan_a.err_tx.val();
+        self.aux_a.tx_done.next = self.chan_a.tx_done.val();
+        self.aux_a.tx_pending.next = self.chan_a.tx_pending.val();
+        self.aux_a.rx_valid.next = self.chan_a.rx_valid.val();
+        self.aux_a.err_state.next = self.chan_a.err_state.val();
+        self.aux_a.err_warning.next = self.chan_a.err_warning.val();
+        self.aux_a.sample_point.next = self.chan_a.sample_point.val();
+        self.aux_b.clk.next = self.clk.val();
+        self.aux_b.rst.next = self.rst.val();
+        self.aux_b.hold.next = self.rmb_hold.val();
+        self.aux_b.policy.next = self.regs.policy.val();
+        self.aux_b.k.next = self.regs.k.val();
+        self.aux_b.stall_limit.next = self.regs.stall_limit.val();
+        self.aux_b.recovery_bits.next = self.regs.recovery_bits.val();
+        self.aux_b.tick.next = self.ticker.tick.val();
+        self.aux_b.in_use.next = self.main.in_use_b.val();
+        self.aux_b.restart_ok.next =
+            (self.chan_b.field.val() == Field::Idle) & self.aux_a.valid.val();
+        self.aux_b.err_valid.next = self.chan_b.err_valid.val();
+        self.aux_b.err_tx.next = self.chan_b.err_tx.val();
+        self.aux_b.tx_done.next = self.chan_b.tx_done.val();
+        self.aux_b.tx_pending.next = self.chan_b.tx_pending.val();
+        self.aux_b.rx_valid.next = self.chan_b.rx_valid.val();
+        self.aux_b.err_state.next = self.chan_b.err_state.val();
+        self.aux_b.err_warning.next = self.chan_b.err_warning.val();
+        self.aux_b.sample_point.next = self.chan_b.sample_point.val();
+
+        // ---- TX buffer ----
+        self.txbuf.clk.next = self.clk.val();
+        self.txbuf.clear.next = self.clear.val();
+        self.txbuf.redundancy.next = self.regs.redundancy.val();
+        self.txbuf.dmr.next = self.regs.dmr.val();
+        self.txbuf.off_dcl.next = self.dmr_ctl.off_dcl.val().get_bits::<3>(0);
+        self.txbuf.off_rcl.next = self.dmr_ctl.off_rcl.val().get_bits::<3>(0);
+        self.txbuf.dmr_pop.next = self.dmr_ctl.pop.val();
+        self.txbuf.push.next = self.regs.push.val();
+        self.txbuf.push_q.next = self.regs.push_q.val();
+        self.txbuf.push_frame.next = self.regs.tx_frame.val();
+        self.txbuf.pop_red.next = self.main.pop.val();
+        self.txbuf.done_a.next = self.chan_a.tx_done.val();
+        self.txbuf.failed_a.next = self.chan_a.tx_failed.val();
+        self.txbuf.done_b.next = self.chan_b.tx_done.val();
+        self.txbuf.failed_b.next = self.chan_b.tx_failed.val();
+
+        // ---- RX path ----
+        self.rxfifo.clk.next = self.clk.val();
+        self.rxfifo.clear.next = self.clear.val();
+        self.rxfifo.wr.next = self.rxw.fifo_wr.val();
+        self.rxfifo.wr_data.next = self.rxw.fifo_data.val();
+        self.rxfifo.pop.next = self.regs.pop.val();
+        self.rxw.clk.next = self.clk.val();
+        self.rxw.rst.next = self.rst.val();
+        self.rxw.clear.next = self.clear.val();
+        self.rxw.dedup_on.next =
+            (self.regs.redundancy.val() | self.regs.dmr.val()) & self.regs.window.val().any();
+        // DMR: the ACL rule (DMR contract §8); CS frames never reach the RX path
+        self.rxw.dmr.next = self.regs.dmr.val();
+        self.rxw.acl.next = self.dmr_ctl.acl.val();
+        self.rxw.release_set.next = self.dmr_ctl.acl_switch.val();
+        self.rxw.window.next = self.regs.window.val();
+        self.rxw.now.next = self.ticker.now.val();
+        self.rxw.tick.next = self.ticker.tick.val();
+        if self.dmr_hold.val() {
+            // neither an echo (the node's own frame, §4.4) nor a hub's
+            // identification frame (§4.5) is a reception
+            self.rxw.rxv_a.next = self.echo.rxv_a.val();
+            self.rxw.rxv_b.next = self.echo.rxv_b.val();
+        } else {
+            self.rxw.rxv_a.next = self.dmr_ctl.rx_deliver_dcl.val();
+            self.rxw.rxv_b.next = self.dmr_ctl.rx_deliver_rcl.val();
+        }
+        self.rxw.frame_a.next = self.rx_frame_a.val();
+        self.rxw.frame_b.next = self.rx_frame_b.val();
+        self.rxw.fifo_count.next = self.rxfifo.count.val();
+
+        // ---- channels: shared bit timing, own mode, TX RAM read data ----
+        // channel rst = rst | reset_mode | reset_mode one edge earlier | restart
+        // (contract §6): the channels capture their configuration while in reset
+        self.chan_a.clk.next = self.clk.val();
+        self.chan_a.rst.next = self.clear.val()
+            | self.regs.reset_mode_d.val()
+            | self.aux_a.chan_rst.val()
+            | self.dmr_ctl.restart_dcl.val();
+        self.chan_a.cfg_brp.next = self.regs.brp.val();
+        self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
+        self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
+        self.chan_a.cfg_sjw.next = self.regs.sjw.val();
+        self.chan_a.cfg_triple.next = self.regs.triple.val();
+        self.chan_a.cfg_mode.next = self.regs.mode_a.val();
+        self.chan_a.cfg_ewl.next = self.regs.ewl.val();
+        self.chan_a.cfg_single_shot.next =
+            self.regs.single_shot.val() & !self.regs.redundancy.val() & !self.regs.dmr.val();
+        self.chan_a.rx.next = self.chan_a_rx.val();
+        self.chan_a.tx_req.next =
+            self.main.req_a.val() | self.txbuf.req_a.val() | self.dmr_ctl.tx_req_dcl.val();
+        self.chan_a.tx_abort.next = self.main.abort_a.val() | self.dmr_ctl.tx_abort_dcl.val();
+        if self.dmr_ctl.cs_req_dcl.val() {
+            // the CS frame of the line: base format, DLC 0, data frame (§7)
+            self.chan_a.tx_rtr.next = false;
+            self.chan_a.tx_ide.next = false;
+            self.chan_a.tx_id.next = bit_cast::<29, 11>(self.dmr_regs.cs_id_dcl.val());
+            self.chan_a.tx_dlc.next = bit_cast::<4, 1>(false.into());
+            self.chan_a.tx_data.next = bit_cast::<64, 1>(false.into());
+        } else {
+            self.chan_a.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
+            self.chan_a.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+            self.chan_a.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+            self.chan_a.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
+            self.chan_a.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        }
+        self.chan_b.clk.next = self.clk.val();
+        self.chan_b.rst.next = self.clear.val()
+            | self.regs.reset_mode_d.val()
+            | self.aux_b.chan_rst.val()
+            | self.dmr_ctl.restart_rcl.val();
+        self.chan_b.cfg_brp.next = self.regs.brp.val();
+        self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
+        self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();
+        self.chan_b.cfg_sjw.next = self.regs.sjw.val();
+        self.chan_b.cfg_triple.next = self.regs.triple.val();
+        self.chan_b.cfg_mode.next = self.regs.mode_b.val();
+        self.chan_b.cfg_ewl.next = self.regs.ewl.val();
+        self.chan_b.cfg_single_shot.next =
+            self.regs.single_shot.val() & !self.regs.redundancy.val() & !self.regs.dmr.val();
+        self.chan_b.rx.next = self.chan_b_rx.val();
+        self.chan_b.tx_req.next =
+            self.main.req_b.val() | self.txbuf.req_b.val() | self.dmr_ctl.tx_req_rcl.val();
+        self.chan_b.tx_abort.next = self.main.abort_b.val() | self.dmr_ctl.tx_abort_rcl.val();
+        if self.dmr_ctl.cs_req_rcl.val() {
+            // the CS frame of the line: base format, DLC 0, data frame (§7)
+            self.chan_b.tx_rtr.next = false;
+            self.chan_b.tx_ide.next = false;
+            self.chan_b.tx_id.next = bit_cast::<29, 11>(self.dmr_regs.cs_id_rcl.val());
+            self.chan_b.tx_dlc.next = bit_cast::<4, 1>(false.into());
+            self.chan_b.tx_data.next = bit_cast::<64, 1>(false.into());
+        } else {
+            self.chan_b.tx_rtr.next = self.txbuf.rd_frame.val().get_bit(98);
+            self.chan_b.tx_ide.next = self.txbuf.rd_frame.val().get_bit(97);
+            self.chan_b.tx_id.next = self.txbuf.rd_frame.val().get_bits::<29>(68);
+            self.chan_b.tx_dlc.next = self.txbuf.rd_frame.val().get_bits::<4>(64);
+            self.chan_b.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
+        }
+        self.chan_a_tx.next = self.chan_a.tx.val();
+        self.chan_b_tx.next = self.chan_b.tx.val();
+
+        // ---- probes ----
+        self.state.next = self.main.state.val();
+        self.tx_channel.next = self.main.tx_channel.val();
+        self.transmission_ack.next = self.main.transmission_ack.val();
+        self.chan_a_transmission_req.next = self.main.req_a.val() | self.txbuf.req_a.val();
+        self.chan_b_transmission_req.next = self.main.req_b.val() | self.txbuf.req_b.val();
+        self.tx_success.next = self.main.tx_success.val();
+        self.tx_ok_channel.next = self.main.tx_ok_channel.val();
+        self.tx_failure.next = self.main.tx_failure.val();
+        self.tx_failure_channel.next = self.main.tx_failure_channel.val();
+        self.tx_going_on.next = self.main.tx_going_on.val();
+        self.chan_a_bsp_tx_err_cnt.next = self.chan_a.tec.val();
+        self.chan_a_bsp_node_error_passive.next = self.chan_a.err_state.val().any();
+        self.chan_b_bsp_tx_err_cnt.next = self.chan_b.tec.val();
+        self.chan_b_bsp_node_error_passive.next = self.chan_b.err_state.val().any();
+        self.aux_a_state.next = self.aux_a.aux_state.val();
+        self.aux_b_state.next = self.aux_b.aux_state.val();
+        self.chan_a_sample_point.next = self.chan_a.sample_point.val();
+        self.chan_b_sample_point.next = self.chan_b.sample_point.val();
+        self.chan_a_field.next = self.chan_a.field.val();
+        self.chan_b_field.next = self.chan_b.field.val();
+        self.chan_a_rec.next = self.chan_a.rec.val();
+        self.chan_b_rec.next = self.chan_b.rec.val();
+        self.chan_a_err_state.next = self.chan_a.err_state.val();
+        self.chan_b_err_state.next = self.chan_b.err_state.val();
+        self.dmr_state.next = self.dmr_ctl.dmr_state.val();
+        self.acl.next = self.dmr_ctl.acl.val();
+        self.dcl_tx_fault.next = self.dmr_ctl.dcl_tx_fault.val();
+        self.dcl_rx_fault.next = self.dmr_ctl.dcl_rx_fault.val();
+        self.rcl_tx_fault.next = self.dmr_ctl.rcl_tx_fault.val();
+        self.rcl_rx_fault.next = self.dmr_ctl.rcl_rx_fault.val();
+        self.dmr_tick.next = self.dmr_ctl.dmr_tick.val();
+    }
+}

@@ -105,7 +105,7 @@ fn an_output_never_replaces_the_input_or_another_output() {
 #[test]
 fn redundancy_options_that_would_be_ignored_are_refused() {
     let d = scratch("redundancy");
-    let policies = "the policies are error-passive, none, k1 .. k15";
+    let policies = "the policies are error-passive, warning, none, k1 .. k15";
     refused(
         &d,
         &["redundancy", "cut_a", "--policy", "bogus"],

@@ -65,6 +65,8 @@ fn model_host_and_generated_header_agree_on_every_register() {
         ("MB_MASK", idx::MB_MASK, reg::MB_MASK),
         ("MB_CFG", idx::MB_CFG, reg::MB_CFG),
         ("MB_STATE", idx::MB_STATE, reg::MB_STATE),
+        ("STAR_STATUS", idx::STAR_STATUS, reg::STAR_STATUS),
+        ("OMISSIONS", idx::OMISSIONS, reg::OMISSIONS),
     ];
     let header = header_offsets();
     assert_eq!(

@@ -18,6 +18,7 @@ fn policy(name: &str) -> Result<Policy, CliError> {
     match name {
         "error-passive" => Ok(Policy::ErrorPassive),
         "none" => Ok(Policy::None),
+        "warning" => Ok(Policy::Warning),
         k if k.starts_with("k") => match k[1..].parse::<u8>() {
             Ok(k @ 1..=15) => Ok(Policy::KFailed(k)),
             _ => Err(CliError::Error(format!(
@@ -25,7 +26,7 @@ fn policy(name: &str) -> Result<Policy, CliError> {
             ))),
         },
         other => Err(CliError::Error(format!(
-            "--policy {other}: the policies are error-passive, none, k1 .. k15"
+            "--policy {other}: the policies are error-passive, warning, none, k1 .. k15"
         ))),
     }
 }

@@ -375,7 +375,11 @@ fn a_hub_that_does_not_couple_its_twin_is_settled_by_nrap() {
 fn a_hub_that_passes_its_own_ack_is_held_by_its_ack_unit() {
     let (s, r) = run(StarFault::HubLeaksAck);
     assert_lossless(&s, &r);
-    assert!(r.hub_ack_unit[0] & 0xFFFF > 0, "ACK_UNIT = {:#x}", r.hub_ack_unit[0]);
+    assert!(
+        r.hub_ack_unit[0] & 0xFFFF > 0,
+        "ACK_UNIT = {:#x}",
+        r.hub_ack_unit[0]
+    );
     assert_eq!(r.hub_ack_unit[1] & 0xFFFF, 0);
     assert!(r.nrap_events.is_empty(), "a guarded leak needs no NRAP");
 }

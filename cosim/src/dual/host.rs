@@ -52,6 +52,7 @@ pub mod reg {
     pub const STATS1: u8 = map::STATS1 as u8;
     pub const TIMES: u8 = map::TIMES as u8;
     pub const STAR_STATUS: u8 = map::STAR_STATUS as u8;
+    pub const OMISSIONS: u8 = map::OMISSIONS as u8;
     pub const DMR_CFG: u8 = map::DMR_CFG as u8;
     pub const DMR_TIME: u8 = map::DMR_TIME as u8;
     pub const DMR_CS: u8 = map::DMR_CS as u8;
@@ -84,6 +85,9 @@ pub enum Policy {
     ErrorPassive,
     /// Switch after `k` failed attempts (1..=15).
     KFailed(u8),
+    /// Switch when the channel's TEC or REC reaches the warning limit `ewl`
+    /// (DRCC contract §5, policy 3).
+    Warning,
 }
 
 /// What the host writes at start-up.
@@ -154,6 +158,7 @@ impl HostConfig {
             Policy::None => (SwitchPolicy::None, 1),
             Policy::ErrorPassive => (SwitchPolicy::ErrorPassive, 1),
             Policy::KFailed(k) => (SwitchPolicy::KFailed, k as u32),
+            Policy::Warning => (SwitchPolicy::Warning, 1),
         };
         put("CTRL", "reset_mode", reset_mode as u32)
             | put("CTRL", "redundancy", self.redundancy as u32)

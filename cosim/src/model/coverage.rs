@@ -278,7 +278,13 @@ pub fn bins() -> Vec<Bin> {
             source: "DRCC paper Table 1; DRCC contract §4.1",
         });
     }
-    for cause in ["error passive", "bus-off", "k failed", "stall"] {
+    for cause in [
+        "error passive",
+        "bus-off",
+        "k failed",
+        "stall",
+        "warning limit",
+    ] {
         v.push(Bin {
             group: "auxiliary FSMs",
             name: format!("aux: valid -> failed ({cause})"),
@@ -437,9 +443,10 @@ pub fn bins() -> Vec<Bin> {
         ],
     ));
     // The echo completes the message while its attempt is in flight on A (ch1)
-    // or on B (ch2). An echo in abort1/wait2/abort2/wait4 is a race of the same
-    // kind as the main FSM's (the echo against the abort) and is not a bin yet;
-    // if a workload reaches it, the collection names it as unlisted.
+    // or on B (ch2), or while the FSM waits for a failed channel to be quiet
+    // (wait2, wait4: the NRAP rows reach them). An echo in abort1/abort2 is a race
+    // of the same kind as the main FSM's (the echo against the abort) and is not a
+    // bin yet; if a workload reaches it, the collection names it as unlisted.
     v.extend(named(
         "replicated star node",
         &[
@@ -450,6 +457,72 @@ pub fn bins() -> Vec<Bin> {
             (
                 "star echo: completes the message in ch2",
                 "ReCANcentrate 2.1; DRCC contract §4.4",
+            ),
+            (
+                "star echo: completes the message in wait2",
+                "ReCANcentrate 2.1; DRCC contract §4.4 (the echo ahead of a failure)",
+            ),
+            (
+                "star echo: completes the message in wait4",
+                "ReCANcentrate 2.1; DRCC contract §4.4 (the echo ahead of a failure)",
+            ),
+            (
+                "drcc star: the hubs' decision changes the domain",
+                "ReCANcentrate 5; DRCC contract §4.5",
+            ),
+            (
+                "rx: an omission (history entry expired unmatched)",
+                "ReCANcentrate 2.1; DRCC contract §7 omissions",
+            ),
+        ],
+    ));
+    v.extend(named(
+        "hub NRAP",
+        &[
+            (
+                "hub nrap: triggered (no sublink left)",
+                "ReCANcentrate 5; hub contract §9.2",
+            ),
+            (
+                "hub nrap: triggered (network blocked)",
+                "ReCANcentrate 3; hub contract §9.2",
+            ),
+            (
+                "hub nrap: joins the twin's exchange",
+                "hub contract §9.2 joining",
+            ),
+            (
+                "hub nrap: silent sublink restored",
+                "ReCANcentrate 5; hub contract §9.2",
+            ),
+            (
+                "hub nrap: acknowledges the twin's identification frame",
+                "ReCANcentrate 5; hub contract §9.3",
+            ),
+            (
+                "hub nrap: transmitter withdraws (arbitration or bit error)",
+                "ISO 11898-1 arbitration; hub contract §9.3",
+            ),
+            (
+                "hub nrap: a pair of identification frames",
+                "ReCANcentrate 5; hub contract §9.2 pairs",
+            ),
+            (
+                "hub nrap: sublinks agreed (to node restoration)",
+                "ReCANcentrate 5; hub contract §9.2",
+            ),
+            ("hub nrap: recoupled", "ReCANcentrate 5; hub contract §9.2"),
+            (
+                "hub nrap: definitive decoupling",
+                "ReCANcentrate 5; hub contract §9.2",
+            ),
+            (
+                "hub nrap: split (each star on its own)",
+                "ReCANcentrate 4, 5; hub contract §9.2",
+            ),
+            (
+                "hub nrap: a node port errs and is disabled",
+                "ReCANcentrate 5; hub contract §9.2",
             ),
         ],
     ));

@@ -86,7 +86,10 @@ fn illegal_writes_set_illegal_with_the_documented_effect() {
     // CTRL with policy 3 (warning limit, §5) in reset mode: legal, stored.
     sys.write(0, CTRL, RESET_MODE | REDUNDANCY | policy(3) | k(5));
     assert!(!take_illegal(&mut sys));
-    assert_eq!(sys.read(0, CTRL), RESET_MODE | REDUNDANCY | policy(3) | k(5));
+    assert_eq!(
+        sys.read(0, CTRL),
+        RESET_MODE | REDUNDANCY | policy(3) | k(5)
+    );
     sys.write(0, CTRL, ctrl0);
     assert_eq!(sys.read(0, CTRL), ctrl0);
 

@@ -53,7 +53,11 @@ fn a_star_node_follows_the_hubs_identification_frames_and_keeps_them_from_its_ho
     // Definitive decoupling signalling: each hub's own frame, again and again, to
     // its own star only. Two of hub A's frames in a row on channel A: split.
     send(&mut sys, on_a, id_frame(0));
-    assert_eq!(sys.read(0, STAR_STATUS) & 1, 0, "one of its own hub's frames");
+    assert_eq!(
+        sys.read(0, STAR_STATUS) & 1,
+        0,
+        "one of its own hub's frames"
+    );
     send(&mut sys, on_a, id_frame(0));
     assert_eq!(sys.read(0, STAR_STATUS) & 1, 1, "two in a row: split");
     assert_eq!(sys.read(0, INT_STATUS) & I_DOMAIN, I_DOMAIN);
@@ -88,7 +92,11 @@ fn a_frame_only_one_channel_delivered_is_an_omission_of_the_other() {
     sys.run(20 * CPB);
     // A frame on line A only; a window later the next frame's scan judges it.
     send(&mut sys, on_a, frame(0x10, false, false, 1, &[1]));
-    assert_eq!(sys.read(0, OMISSIONS), 0, "not judged before the window ends");
+    assert_eq!(
+        sys.read(0, OMISSIONS),
+        0,
+        "not judged before the window ends"
+    );
     sys.run(60 * CPB);
     send(&mut sys, on_a, frame(0x11, false, false, 1, &[2]));
     assert_eq!(sys.read(0, OMISSIONS), 1 << 16, "one omission of channel B");
@@ -121,6 +129,10 @@ fn the_warning_policy_fails_a_channel_at_the_warning_limit() {
     }
     let tec = failed_tec.expect("channel A failed");
     assert!((96..128).contains(&tec), "failed at TEC {tec}");
-    assert_eq!(sys.read(0, AUX_A) >> 2 & 0x1F, 1 << 4, "cause: warning only");
+    assert_eq!(
+        sys.read(0, AUX_A) >> 2 & 0x1F,
+        1 << 4,
+        "cause: warning only"
+    );
     assert_eq!(sys.plain[on_b].received, vec![m]);
 }

@@ -188,8 +188,14 @@ fn a_transient_loss_of_the_interlink_ends_in_recoupling_within_the_bound() {
     // when B's forcing has been on its sublink for 28 bits (+ sampling skew).
     let b_trig = (b[0].0 - k) / TCPB;
     let a_trig = (a[0].0 - b[0].0) / TCPB;
-    assert!((28..=30).contains(&b_trig), "B triggered after {b_trig} bits");
-    assert!((28..=30).contains(&a_trig), "A triggered {a_trig} bits after B");
+    assert!(
+        (28..=30).contains(&b_trig),
+        "B triggered after {b_trig} bits"
+    );
+    assert!(
+        (28..=30).contains(&a_trig),
+        "A triggered {a_trig} bits after B"
+    );
     // Both recouple at the ACK slot of the same frame (counted on the coupled bus).
     let (a_end, b_end) = (a[3].0, b[3].0);
     assert!(a_end.abs_diff(b_end) < TCPB, "A at {a_end}, B at {b_end}");
@@ -268,7 +274,11 @@ fn nrap_registers_clamp_zero_settings_and_refuse_writes_outside_reset_mode() {
     b.write(CTRL, ACK_INTERDEP);
     assert_eq!(b.read(INT_STATUS) & INT_ILLEGAL, INT_ILLEGAL);
     assert_eq!(b.read(CTRL) & NRAP_ON, NRAP_ON);
-    assert_eq!(b.read(NRAP_STATUS) & 0xFFFF, 0, "RUN, no run yet, nothing counted");
+    assert_eq!(
+        b.read(NRAP_STATUS) & 0xFFFF,
+        0,
+        "RUN, no run yet, nothing counted"
+    );
     b.write(NRAP_STATUS, 1);
     assert_eq!(b.read(INT_STATUS) & INT_ILLEGAL, INT_ILLEGAL);
     // Hub B's ID names it (bit 12).

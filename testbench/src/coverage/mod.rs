@@ -67,6 +67,10 @@ pub fn workloads() -> Vec<Workload> {
             run: hub_stimulus,
         },
         Workload {
+            name: "two hubs through NRAP with a node that errs in node restoration",
+            run: nrap_erring_node,
+        },
+        Workload {
             name: "fault campaigns (dual 150, star 40 single faults)",
             run: campaigns,
         },
@@ -117,6 +121,11 @@ fn error_stress() -> Result<(), String> {
 fn dual_table() -> Result<(), String> {
     crate::dual::fault_table(EngineKind::Model, None)?;
     crate::paper::switchover_table(EngineKind::Model)?;
+    // The warning-limit policy (DRCC contract §5, policy 3) on a line stuck
+    // dominant: the counters pass `ewl` before error passive.
+    let mut s = crate::dual::DualScenario::standard(crate::dual::DualFault::AStuckDominant);
+    s.policy = drcc_cosim::dual::host::Policy::Warning;
+    crate::dual::run_dual(&s, EngineKind::Model, None)?;
     Ok(())
 }
 
@@ -144,6 +153,63 @@ fn hub_stimulus() -> Result<(), String> {
             let i = stim.next(&prev);
             prev = hub.step(&i);
         }
+    }
+    Ok(())
+}
+
+/// Two hub models wired back to back (N = 2, M = 1, the star scenarios' bit
+/// timing), NRAP on: hub B's incoming sublink is held dominant for 40 bit times, so
+/// both hubs run NRAP; during node restoration hub A's node port 0 drives 20
+/// dominant bits inside the identification frames (hub contract §9.2: the port
+/// is disabled at once).
+fn nrap_erring_node() -> Result<(), String> {
+    use drcc_cosim::engine::hub::HubInputs;
+    use drcc_cosim::star::hub_host::HubHost;
+    let cpb = crate::star::CLOCKS_PER_BIT;
+    let cfg = crate::star::StarScenario::standard(crate::star::StarFault::None).hub;
+    let mut hubs = [
+        HubModelEngine::new_hub(0, 2, 1)?,
+        HubModelEngine::new_hub(1, 2, 1)?,
+    ];
+    let mut hosts = [HubHost::new(cfg), HubHost::new(cfg)];
+    let mut out = [HubOutputs::default(); 2];
+    let (mut nrp_seen, mut node_dominant, mut in_frame) = (None, 0u64, 0u64);
+    for c in 0..12_000 * cpb {
+        let bit = c / cpb;
+        let stuck = (100..140).contains(&bit);
+        if nrp_seen.is_none() && out[0].probes.nrap_phase == 3 {
+            nrp_seen = Some(c);
+        }
+        // Clocks since hub A's tracker entered a frame (state FRAME = 1).
+        in_frame = if out[0].probes.trk_state == 1 {
+            in_frame + 1
+        } else {
+            0
+        };
+        // Bits 20..25 of the first identification frame in node restoration: past
+        // the arbitration field, where only the hub drives the bus.
+        let erring = nrp_seen.is_some()
+            && node_dominant < 5 * cpb
+            && (20 * cpb..25 * cpb).contains(&in_frame);
+        node_dominant += erring as u64;
+        let prev = out;
+        for h in 0..2 {
+            let mut i = HubInputs {
+                rst: c < 2,
+                uplink: if h == 0 && erring { 0b10 } else { 0b11 },
+                sublink_in: if h == 1 && stuck {
+                    0
+                } else {
+                    prev[1 - h].sublink_out & 1
+                },
+                ..HubInputs::default()
+            };
+            hosts[h].drive(c, &prev[h], c < 2, &mut i);
+            out[h] = hubs[h].step(&i);
+        }
+    }
+    if nrp_seen.is_none() || node_dominant == 0 {
+        return Err("the two hubs never reached node restoration".to_string());
     }
     Ok(())
 }

@@ -98,6 +98,14 @@ impl StarScenario {
         }
     }
 
+    /// [`StarScenario::standard`] with NRAP off (`CTRL.nrap_on = 0`): the hubs
+    /// decouple on their own (hub contract §7) and their hosts recouple them.
+    pub fn without_nrap(fault: StarFault) -> Self {
+        let mut s = Self::standard(fault);
+        s.hub.nrap_on = false;
+        s
+    }
+
     pub fn host_config(&self) -> HostConfig {
         HostConfig {
             btr: btr(STAR_BRP, STAR_TSEG1, STAR_TSEG2, STAR_SJW, false, 96),
@@ -183,8 +191,10 @@ pub fn hub_engine(
                 .map(|e| Box::new(e) as Box<dyn HubEngine>)
                 .map_err(|e| format!("{e}; {VERILATOR_HINT}"))
         }
-        EngineKind::RustHdl => drcc_cosim::engine::hub_rusthdl::HubRustHdlEngine::new_hub(hub_id, n, m)
-            .map(|e| Box::new(e) as Box<dyn HubEngine>),
+        EngineKind::RustHdl => {
+            drcc_cosim::engine::hub_rusthdl::HubRustHdlEngine::new_hub(hub_id, n, m)
+                .map(|e| Box::new(e) as Box<dyn HubEngine>)
+        }
     }
 }
 

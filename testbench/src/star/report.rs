@@ -123,9 +123,14 @@ impl StarReport {
     /// Clock of hub `h`'s first NRAP trigger at or after `from`, and of the end of
     /// that run (the next change to RUN or SPLIT), if any.
     pub fn nrap_run(&self, h: usize, from: u64) -> Option<(u64, Option<(u64, u8)>)> {
-        let mut ev = self.nrap_events.iter().filter(|e| e.hub == h && e.cycle >= from);
+        let mut ev = self
+            .nrap_events
+            .iter()
+            .filter(|e| e.hub == h && e.cycle >= from);
         let start = ev.find(|e| e.phase == 1)?;
-        let end = ev.find(|e| e.phase == 0 || e.phase == 6).map(|e| (e.cycle, e.phase));
+        let end = ev
+            .find(|e| e.phase == 0 || e.phase == 6)
+            .map(|e| (e.cycle, e.phase));
         Some((start.cycle, end))
     }
 
@@ -159,6 +164,16 @@ pub fn star_table(kind: EngineKind, cosim: Option<EngineKind>) -> Result<String,
         let r = run_star(&s, kind, cosim)?;
         t.push_str(&table_row(&s, &r));
     }
+    // The same double fault with NRAP off (`CTRL.nrap_on = 0`): each hub decouples
+    // on its own after `decouple_bits` (contract §7), what the hubs did before NRAP.
+    let s = StarScenario::without_nrap(StarFault::AllInterlinksLost);
+    let r = run_star(&s, kind, cosim)?;
+    let row = table_row(&s, &r).replacen(
+        "| all_interlinks_lost (",
+        "| all_interlinks_lost, NRAP off (CTRL.nrap_on = 0, the hosts recouple 200 bit times after the fault; ",
+        1,
+    );
+    t.push_str(&row);
     Ok(t)
 }
 
@@ -267,5 +282,9 @@ pub fn nrap_cell(r: &StarReport) -> String {
         .iter()
         .map(|&s| if s { "split" } else { "one" })
         .collect();
-    format!("{}; nodes' STAR_STATUS: {}", hubs.join("; "), domains.join(" / "))
+    format!(
+        "{}; nodes' STAR_STATUS: {}",
+        hubs.join("; "),
+        domains.join(" / ")
+    )
 }

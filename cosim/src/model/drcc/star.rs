@@ -36,7 +36,12 @@ impl StarFollow {
     /// channels' outputs before the edge. Returns, per channel, whether its
     /// reception is an identification frame (kept from the RX path), and whether
     /// `split` changed (`INT_STATUS.domain`).
-    pub fn edge(&mut self, on: bool, rx_valid: [bool; 2], frames: [&Frame; 2]) -> ([bool; 2], bool) {
+    pub fn edge(
+        &mut self,
+        on: bool,
+        rx_valid: [bool; 2],
+        frames: [&Frame; 2],
+    ) -> ([bool; 2], bool) {
         let mut hubf = [false; 2];
         if !on {
             return (hubf, false);

@@ -363,10 +363,7 @@ impl Nrap {
     ) -> SampleEffects {
         let mut fx = SampleEffects::default();
         let before = self.phase;
-        let acting = matches!(
-            before,
-            phase::SRP_EXCHANGE | phase::NRP | phase::DDSP_SEND
-        );
+        let acting = matches!(before, phase::SRP_EXCHANGE | phase::NRP | phase::DDSP_SEND);
 
         self.quiet = if i.b { (self.quiet + 1).min(15) } else { 0 };
         // Transmitter: arbitration lost or a bit error ends the attempt.
@@ -403,11 +400,7 @@ impl Nrap {
 
         // Blocked-network count, in every phase (only RUN acts on it).
         if i.ack_delim {
-            self.unacked = if i.b {
-                0
-            } else {
-                (self.unacked + 1).min(31)
-            };
+            self.unacked = if i.b { 0 } else { (self.unacked + 1).min(31) };
         }
 
         let nt = self.nt.saturating_add(1);
@@ -536,6 +529,7 @@ impl Nrap {
         self.phase = to;
         self.nt = 0;
         self.ncnt = 0;
+        self.half = false;
         true
     }
 }
@@ -545,7 +539,9 @@ mod tests {
     use super::*;
 
     fn bus_string(r: &IdRom) -> String {
-        (0..r.len).map(|i| if r.bit(i) { '1' } else { '0' }).collect()
+        (0..r.len)
+            .map(|i| if r.bit(i) { '1' } else { '0' })
+            .collect()
     }
 
     /// The frames written out from ISO 11898-1 clause 10: identifier 0x000, DLC 0

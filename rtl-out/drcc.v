@@ -558,6 +558,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     wire  echo__rxv_b;
     wire  echo__ev_domain;
     wire  [31:0] echo__star_word;
+    wire  echo__star_split;
     reg  aux_a__clk;
     reg  aux_a__rst;
     reg  aux_a__hold;
@@ -1108,7 +1109,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .rxv_a(echo__rxv_a),
         .rxv_b(echo__rxv_b),
         .ev_domain(echo__ev_domain),
-        .star_word(echo__star_word)
+        .star_word(echo__star_word),
+        .star_split(echo__star_split)
     );
     drcc__aux_a aux_a(
         .clk(aux_a__clk),
@@ -1521,7 +1523,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         main__clk = clk;
         main__rst = rst;
         main__hold = rmb_hold;
-        main__dual_tx = regs__dual_tx;
+        main__dual_tx = regs__dual_tx & (~regs__star | echo__star_split);
         main__queued = |txbuf__count_a;
         main__valid_a = aux_a__valid;
         main__valid_b = aux_b__valid;
@@ -20239,7 +20241,7 @@ module drcc__dmr_regs__time_q(d,q,clock);
 endmodule // drcc__dmr_regs__time_q
 
 
-module drcc__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b,rxv_a,rxv_b,ev_domain,star_word);
+module drcc__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b,rxv_a,rxv_b,ev_domain,star_word,star_split);
     
     // Module arguments
     input wire  clk;
@@ -20257,6 +20259,7 @@ module drcc__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,fr
     output reg  rxv_b;
     output reg  ev_domain;
     output reg  [31:0] star_word;
+    output reg  star_split;
     
     // Stub signals
     reg  follow__clk;
@@ -20270,6 +20273,7 @@ module drcc__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,fr
     wire  follow__hubf_b;
     wire  follow__ev_domain;
     wire  [31:0] follow__word;
+    wire  follow__split_q;
     
     // Local signals
     reg  armed;
@@ -20286,7 +20290,8 @@ module drcc__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,fr
         .hubf_a(follow__hubf_a),
         .hubf_b(follow__hubf_b),
         .ev_domain(follow__ev_domain),
-        .word(follow__word)
+        .word(follow__word),
+        .split_q(follow__split_q)
     );
     
     // Update code
@@ -20305,12 +20310,13 @@ module drcc__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,fr
         rxv_b = rx_valid_b & ~echo_b & ~follow__hubf_b;
         ev_domain = follow__ev_domain;
         star_word = follow__word;
+        star_split = follow__split_q;
     end
     
 endmodule // drcc__echo
 
 
-module drcc__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,hubf_b,ev_domain,word);
+module drcc__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,hubf_b,ev_domain,word,split_q);
     
     // Module arguments
     input wire  clk;
@@ -20324,6 +20330,7 @@ module drcc__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,
     output reg  hubf_b;
     output reg  ev_domain;
     output reg  [31:0] word;
+    output reg  split_q;
     
     // Constant declarations
     localparam  last_hub_a = 2'b1;
@@ -20458,6 +20465,7 @@ module drcc__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,
             frames_b__d = zero8;
             ev_domain = 1'b0;
         end
+        split_q = split__q;
         word = (((split__q) & 32'hffffffff) << s_split) | (((last_a__q) & 32'hffffffff) << s_last_a) | (((last_b__q) & 32'hffffffff) << s_last_b) | (((frames_a__q) & 32'hffffffff) << s_frames_a) | (((frames_b__q) & 32'hffffffff) << s_frames_b);
     end
     

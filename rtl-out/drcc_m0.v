@@ -519,6 +519,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     wire  echo__rxv_b;
     wire  echo__ev_domain;
     wire  [31:0] echo__star_word;
+    wire  echo__star_split;
     reg  aux_a__clk;
     reg  aux_a__rst;
     reg  aux_a__hold;
@@ -1027,7 +1028,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .rxv_a(echo__rxv_a),
         .rxv_b(echo__rxv_b),
         .ev_domain(echo__ev_domain),
-        .star_word(echo__star_word)
+        .star_word(echo__star_word),
+        .star_split(echo__star_split)
     );
     drcc_m0__aux_a aux_a(
         .clk(aux_a__clk),
@@ -1399,7 +1401,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         main__clk = clk;
         main__rst = rst;
         main__hold = rmb_hold;
-        main__dual_tx = regs__dual_tx;
+        main__dual_tx = regs__dual_tx & (~regs__star | echo__star_split);
         main__queued = |txbuf__count_a;
         main__valid_a = aux_a__valid;
         main__valid_b = aux_b__valid;
@@ -18448,7 +18450,7 @@ module drcc_m0__dmr_regs__time_q(d,q,clock);
 endmodule // drcc_m0__dmr_regs__time_q
 
 
-module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b,rxv_a,rxv_b,ev_domain,star_word);
+module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b,rxv_a,rxv_b,ev_domain,star_word,star_split);
     
     // Module arguments
     input wire  clk;
@@ -18466,6 +18468,7 @@ module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b
     output reg  rxv_b;
     output reg  ev_domain;
     output reg  [31:0] star_word;
+    output reg  star_split;
     
     // Stub signals
     reg  follow__clk;
@@ -18479,6 +18482,7 @@ module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b
     wire  follow__hubf_b;
     wire  follow__ev_domain;
     wire  [31:0] follow__word;
+    wire  follow__split_q;
     
     // Local signals
     reg  armed;
@@ -18495,7 +18499,8 @@ module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b
         .hubf_a(follow__hubf_a),
         .hubf_b(follow__hubf_b),
         .ev_domain(follow__ev_domain),
-        .word(follow__word)
+        .word(follow__word),
+        .split_q(follow__split_q)
     );
     
     // Update code
@@ -18514,12 +18519,13 @@ module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b
         rxv_b = rx_valid_b & ~echo_b & ~follow__hubf_b;
         ev_domain = follow__ev_domain;
         star_word = follow__word;
+        star_split = follow__split_q;
     end
     
 endmodule // drcc_m0__echo
 
 
-module drcc_m0__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,hubf_b,ev_domain,word);
+module drcc_m0__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,hubf_b,ev_domain,word,split_q);
     
     // Module arguments
     input wire  clk;
@@ -18533,6 +18539,7 @@ module drcc_m0__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf
     output reg  hubf_b;
     output reg  ev_domain;
     output reg  [31:0] word;
+    output reg  split_q;
     
     // Constant declarations
     localparam  last_hub_a = 2'b1;
@@ -18667,6 +18674,7 @@ module drcc_m0__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf
             frames_b__d = zero8;
             ev_domain = 1'b0;
         end
+        split_q = split__q;
         word = (((split__q) & 32'hffffffff) << s_split) | (((last_a__q) & 32'hffffffff) << s_last_a) | (((last_b__q) & 32'hffffffff) << s_last_b) | (((frames_a__q) & 32'hffffffff) << s_frames_a) | (((frames_b__q) & 32'hffffffff) << s_frames_b);
     end
     

@@ -235,7 +235,9 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.main.clk.next = self.clk.val();
         self.main.rst.next = self.rst.val();
         self.main.hold.next = self.rmb_hold.val();
-        self.main.dual_tx.next = self.regs.dual_tx.val();
+        // §4.4: a star node sends the dual_tx copy only after the hubs split (§4.5).
+        self.main.dual_tx.next =
+            self.regs.dual_tx.val() & (!self.regs.star.val() | self.echo.star_split.val());
         self.main.queued.next = self.txbuf.count_a.val().any();
         self.main.valid_a.next = self.aux_a.valid.val();
         self.main.valid_b.next = self.aux_b.valid.val();

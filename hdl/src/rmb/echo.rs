@@ -68,6 +68,8 @@ pub struct Echo {
     pub ev_domain: Signal<Out, Bit>,
     /// `STAR_STATUS`.
     pub star_word: Signal<Out, Bits<32>>,
+    /// `STAR_STATUS.split` (§4.5): gates the `dual_tx` copy in star mode (§4.4).
+    pub star_split: Signal<Out, Bit>,
     // ---- internals ----
     follow: StarFollow,
     armed: Signal<Local, Bit>,
@@ -96,6 +98,7 @@ impl Logic for Echo {
         self.rxv_b.next = self.rx_valid_b.val() & !self.echo_b.val() & !self.follow.hubf_b.val();
         self.ev_domain.next = self.follow.ev_domain.val();
         self.star_word.next = self.follow.word.val();
+        self.star_split.next = self.follow.split_q.val();
     }
 }
 

@@ -56,6 +56,8 @@ pub struct StarFollow {
     pub ev_domain: Signal<Out, Bit>,
     /// `STAR_STATUS`.
     pub word: Signal<Out, Bits<32>>,
+    /// `split` (the register): the hubs split, so a `dual_tx` copy goes out (§4.4).
+    pub split_q: Signal<Out, Bit>,
     // ---- registers ----
     split: DFF<Bit>,
     last_a: DFF<Bits<2>>,
@@ -100,6 +102,7 @@ impl Default for StarFollow {
             hubf_b: Default::default(),
             ev_domain: Default::default(),
             word: Default::default(),
+            split_q: Default::default(),
             split: Default::default(),
             last_a: Default::default(),
             last_b: Default::default(),
@@ -197,6 +200,7 @@ impl Logic for StarFollow {
             self.ev_domain.next = false;
         }
 
+        self.split_q.next = self.split.q.val();
         self.word.next = (bit_cast::<32, 1>(self.split.q.val().into()) << self.s_split.val())
             | (bit_cast::<32, 2>(self.last_a.q.val()) << self.s_last_a.val())
             | (bit_cast::<32, 2>(self.last_b.q.val()) << self.s_last_b.val())

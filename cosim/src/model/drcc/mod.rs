@@ -327,7 +327,8 @@ impl DrccModel {
             q: self.txq.count[0] > 0,
             va: self.aux[0].state == aux::VALID,
             vb: self.aux[1].state == aux::VALID,
-            dual_tx: r.dual_tx(),
+            // §4.4/§4.5: a star node sends the copy only after the hubs split.
+            dual_tx: r.dual_tx() && (!r.star() || self.star.split),
             tick,
             pending_a: pa.tx_pending,
             done_a: pa.tx_done,

@@ -452,3 +452,20 @@ fn the_ack_units_hold_two_hubs_that_leak_their_own_ack() {
         );
     }
 }
+
+/// The third engine: rust-hdl's simulation of the hub blocks (hub A and hub B, with
+/// model nodes) in lock step with the hub models on the NRAP rows, clock by clock,
+/// every hub output and probe (the Verilated RTL runs the same rows above).
+#[test]
+fn the_rust_hdl_hubs_agree_with_the_models_on_the_nrap_rows() {
+    for f in [
+        StarFault::AllInterlinksLost,
+        StarFault::TransientDecoupling,
+        StarFault::HubIgnoresTwin,
+    ] {
+        let s = StarScenario::standard(f);
+        let r = run_star(&s, EngineKind::Model, Some(EngineKind::RustHdl))
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert!(!r.nrap_events.is_empty(), "{}: NRAP ran", f.name());
+    }
+}

@@ -241,7 +241,7 @@ const SPLIT_BOUND: u64 = 64 + 1024 + 1024 + 64 + 1024;
 fn assert_nrap_ended(s: &StarScenario, r: &StarReport, end: u8, bound: u64) -> [u64; 2] {
     let name = s.fault.name();
     let mut ends = [0u64; 2];
-    for h in 0..2 {
+    for (h, end_clock) in ends.iter_mut().enumerate() {
         let first = r
             .nrap_events
             .iter()
@@ -267,7 +267,7 @@ fn assert_nrap_ended(s: &StarScenario, r: &StarReport, end: u8, bound: u64) -> [
             "{name}: hub {} outcome",
             h + 1
         );
-        ends[h] = finish;
+        *end_clock = finish;
     }
     ends
 }

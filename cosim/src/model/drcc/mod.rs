@@ -250,11 +250,8 @@ impl DrccModel {
                             let any_listen_only =
                                 listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
                             let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
-                            if (red && any_listen_only)
-                                // DMR §2: one mode at a time; both lines must transmit.
-                                || (red && dmr)
-                                || (dmr && any_listen_only)
-                            {
+                            // DMR §2: one mode at a time; both lines must transmit.
+                            if (red && (any_listen_only || dmr)) || (dmr && any_listen_only) {
                                 ints |= int::ILLEGAL;
                             } else {
                                 n.ctrl = w;

@@ -16,6 +16,24 @@
 //!
 //! `dl_next` goes to the ACK unit (§4.1), which owns the downlink register.
 
+/// What the coupling takes at an edge (values before it).
+#[derive(Clone, Copy, Debug)]
+pub struct CouplingInputs {
+    /// The port inputs (bit p = port p).
+    pub pins: u16,
+    /// The enabled mask.
+    pub enabled: u16,
+    /// `tx_q & !forcing` (§9.4).
+    pub own_gate: bool,
+    /// The hub says nothing to its twin (§9.4).
+    pub quiet_twin: bool,
+    /// `CTRL.fi_no_twin` (§9.6).
+    pub no_twin: bool,
+    pub decoupled: bool,
+    /// `ack_window & ack_interdep & !decoupled & !fi_ack_leak`.
+    pub mask_ack: bool,
+}
+
 /// Synchronizer stages, the guards' port register and the coupling outputs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Coupling {
@@ -50,26 +68,19 @@ impl Coupling {
         }
     }
 
-    /// One edge. `pins` = the port inputs (bit p = port p), `enabled` the enabled
-    /// mask, `own_gate` (`tx_q & !forcing`, §9.4), `quiet_twin` (§9.4),
-    /// `no_twin` (`CTRL.fi_no_twin`, §9.6),
-    /// `decoupled` and `mask_ack`
-    /// (`ack_window & ack_interdep & !decoupled & !fi_ack_leak`) the registers
-    /// before the edge; `node_mask` / `sub_mask` select the node and sublink
-    /// ports. Returns `dl_next`.
+    /// One edge on `i` (registers before the edge); `node_mask` / `sub_mask`
+    /// select the node and sublink ports. Returns `dl_next`.
     #[inline]
-    pub fn edge(
-        &mut self,
-        pins: u16,
-        enabled: u16,
-        own_gate: bool,
-        quiet_twin: bool,
-        no_twin: bool,
-        decoupled: bool,
-        mask_ack: bool,
-        node_mask: u16,
-        sub_mask: u16,
-    ) -> bool {
+    pub fn edge(&mut self, i: &CouplingInputs, node_mask: u16, sub_mask: u16) -> bool {
+        let CouplingInputs {
+            pins,
+            enabled,
+            own_gate,
+            quiet_twin,
+            no_twin,
+            decoupled,
+            mask_ack,
+        } = *i;
         let contrib = self.in_s | !enabled;
         let own = contrib & node_mask == node_mask && own_gate;
         let twin = contrib & sub_mask == sub_mask || no_twin;

@@ -74,7 +74,7 @@ use crate::engine::hub::{HubInputs, HubOutputs, HubProbes, MAX_INTERLINKS, MAX_N
 use crate::engine::BitTiming;
 use crate::model::btl::{Btl, BtlEvent, Timing};
 use ack_unit::{AckUnit, AckUnitInputs};
-use coupling::Coupling;
+use coupling::{Coupling, CouplingInputs};
 use decouple::Decoupler;
 use guard::{Limits, PortGuard};
 use nrap::{phase, Nrap, SampleInputs};
@@ -295,13 +295,15 @@ impl HubModel {
         let pins = (i.uplink & self.node_mask) | ((i.sublink_in as u16) << self.n);
         let enabled = self.enabled;
         let dl_next = self.cpl.edge(
-            pins,
-            enabled,
-            tx_q && !self.nrap.forcing(),
-            self.nrap.quiet_twin(),
-            fi_no_twin,
-            decoupled,
-            mask_ack,
+            &CouplingInputs {
+                pins,
+                enabled,
+                own_gate: tx_q && !self.nrap.forcing(),
+                quiet_twin: self.nrap.quiet_twin(),
+                no_twin: fi_no_twin,
+                decoupled,
+                mask_ack,
+            },
             self.node_mask,
             self.sub_mask,
         );

@@ -283,7 +283,7 @@ impl Nrap {
     }
 
     /// `DDSP_FORCE` entry: decoupled, every sublink disabled.
-    fn to_ddsp(&mut self, ports: &mut [PortGuard], n: usize, fx: &mut SampleEffects) {
+    fn enter_ddsp(&mut self, ports: &mut [PortGuard], n: usize, fx: &mut SampleEffects) {
         coverage::hit("hub nrap: definitive decoupling");
         self.goto(phase::DDSP_FORCE, fx);
         fx.decouple = true;
@@ -429,15 +429,13 @@ impl Nrap {
                     return fx;
                 }
             }
-            phase::SRP_FORCE => {
-                if nt >= cfg.force_bits {
-                    self.goto(phase::SRP_EXCHANGE, &mut fx);
-                    for g in ports[n..].iter_mut() {
-                        g.enabled = false;
-                    }
-                    self.rrun = [0; 16];
-                    return fx;
+            phase::SRP_FORCE if nt >= cfg.force_bits => {
+                self.goto(phase::SRP_EXCHANGE, &mut fx);
+                for g in ports[n..].iter_mut() {
+                    g.enabled = false;
                 }
+                self.rrun = [0; 16];
+                return fx;
             }
             phase::SRP_EXCHANGE => {
                 for (p, g) in ports.iter_mut().enumerate().skip(n) {
@@ -471,7 +469,7 @@ impl Nrap {
                     return fx;
                 }
                 if nt >= cfg.srp_bits {
-                    self.to_ddsp(ports, n, &mut fx);
+                    self.enter_ddsp(ports, n, &mut fx);
                     return fx;
                 }
             }
@@ -487,16 +485,14 @@ impl Nrap {
                     return fx;
                 }
                 if nt >= cfg.nrp_bits {
-                    self.to_ddsp(ports, n, &mut fx);
+                    self.enter_ddsp(ports, n, &mut fx);
                     return fx;
                 }
             }
-            phase::DDSP_FORCE => {
-                if nt >= cfg.force_bits {
-                    self.goto(phase::DDSP_SEND, &mut fx);
-                    self.restore_nodes(ports, n);
-                    return fx;
-                }
+            phase::DDSP_FORCE if nt >= cfg.force_bits => {
+                self.goto(phase::DDSP_SEND, &mut fx);
+                self.restore_nodes(ports, n);
+                return fx;
             }
             phase::DDSP_SEND => {
                 self.drop_erring(ports, n, i, id_frame);

@@ -62,6 +62,10 @@
 //                                while the node is not transmitting it (and `tx` is recessive),
 //                                else when the attempt in progress fails; a successful attempt
 //                                still ends with `tx_done` (contract §8).
+// input      1  err_reset        Error counter reset: at an edge with `err_reset = 1` a node that
+//                                is not bus-off ends with TEC = REC = 0, error active; it stays on
+//                                the bus (no re-integration, unlike `rst`). 0 in normal use
+//                                (contract §4.5).
 // output     1  tx_pending       A frame is latched and not yet sent or dropped: 1 from the
 //                                `tx_req` edge until `tx_done` or `tx_failed`.
 // output     1  tx_failed        One-clock pulse: the pending frame was dropped (single-shot
@@ -133,7 +137,7 @@
 
 
 
-module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     // Clock. Every register changes at its rising edge; the bit timing is counted in its periods (a
@@ -195,6 +199,10 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     // transmitting it (and `tx` is recessive), else when the attempt in progress fails; a
     // successful attempt still ends with `tx_done` (contract §8).
     input wire  tx_abort;
+    // Error counter reset: at an edge with `err_reset = 1` a node that is not bus-off ends with TEC
+    // = REC = 0, error active; it stays on the bus (no re-integration, unlike `rst`). 0 in normal
+    // use (contract §4.5).
+    input wire  err_reset;
     // A frame is latched and not yet sent or dropped: 1 from the `tx_req` edge until `tx_done` or
     // `tx_failed`.
     output reg  tx_pending;
@@ -348,6 +356,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
     reg  bsp__tx_abort;
+    reg  bsp__err_reset;
     wire  bsp__tx_pending;
     wire  bsp__tx_failed;
     wire  bsp__tx_done;
@@ -438,6 +447,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
         .tx_abort(bsp__tx_abort),
+        .err_reset(bsp__err_reset),
         .tx_pending(bsp__tx_pending),
         .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
@@ -510,6 +520,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
+        bsp__err_reset = err_reset;
         bsp__mode = cfg_regs__mode;
         bsp__ewl = cfg_regs__ewl;
         bsp__single_shot = cfg_regs__single_shot;
@@ -545,7 +556,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
 endmodule // top
 
 
-module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -566,6 +577,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -845,6 +857,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     reg  fc__tx_success;
     reg  fc__rx_success;
     reg  fc__recovered;
+    reg  fc__err_reset;
     reg  [7:0] fc__ewl;
     wire  [8:0] fc__tec;
     wire  [7:0] fc__rec;
@@ -1123,6 +1136,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .tx_success(fc__tx_success),
         .rx_success(fc__rx_success),
         .recovered(fc__recovered),
+        .err_reset(fc__err_reset),
         .ewl(fc__ewl),
         .tec(fc__tec),
         .rec(fc__rec),
@@ -1308,6 +1322,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         fc__tx_success = rules__tx_success;
         fc__rx_success = rules__rx_success;
         fc__recovered = fsm__recovered;
+        fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
         err_capture__bit_err = detect__bit_err;
@@ -2118,7 +2133,7 @@ module can_channel__bsp__err_capture__p_cnt_stuff_max(d,q,clock);
 endmodule // can_channel__bsp__err_capture__p_cnt_stuff_max
 
 
-module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,ewl,tec,rec,err_state,error_passive,bus_off,warning);
+module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,err_reset,ewl,tec,rec,err_state,error_passive,bus_off,warning);
     
     // Module arguments
     input wire  clk;
@@ -2129,6 +2144,7 @@ module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_suc
     input wire  tx_success;
     input wire  rx_success;
     input wire  recovered;
+    input wire  err_reset;
     input wire  [7:0] ewl;
     output reg  [8:0] tec;
     output reg  [7:0] rec;
@@ -2209,7 +2225,7 @@ module can_channel__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_suc
                 rec_q__d = rec_q__q - one8;
             end
         end
-        if (recovered || rst) begin
+        if (recovered || rst || (err_reset && (tec_q__q <= busoff9))) begin
             tec_q__d = zero9;
             rec_q__d = zero8;
         end

@@ -689,6 +689,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  [3:0] chan_a__tx_dlc;
     reg  [63:0] chan_a__tx_data;
     reg  chan_a__tx_abort;
+    reg  chan_a__err_reset;
     wire  chan_a__tx_pending;
     wire  chan_a__tx_failed;
     wire  chan_a__tx_done;
@@ -735,6 +736,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
     reg  [3:0] chan_b__tx_dlc;
     reg  [63:0] chan_b__tx_data;
     reg  chan_b__tx_abort;
+    reg  chan_b__err_reset;
     wire  chan_b__tx_pending;
     wire  chan_b__tx_failed;
     wire  chan_b__tx_done;
@@ -1253,6 +1255,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .tx_dlc(chan_a__tx_dlc),
         .tx_data(chan_a__tx_data),
         .tx_abort(chan_a__tx_abort),
+        .err_reset(chan_a__err_reset),
         .tx_pending(chan_a__tx_pending),
         .tx_failed(chan_a__tx_failed),
         .tx_done(chan_a__tx_done),
@@ -1301,6 +1304,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         .tx_dlc(chan_b__tx_dlc),
         .tx_data(chan_b__tx_data),
         .tx_abort(chan_b__tx_abort),
+        .err_reset(chan_b__err_reset),
         .tx_pending(chan_b__tx_pending),
         .tx_failed(chan_b__tx_failed),
         .tx_done(chan_b__tx_done),
@@ -1623,7 +1627,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
         rxw__frame_b = rx_frame_b;
         rxw__fifo_count = rxfifo__count;
         chan_a__clk = clk;
-        chan_a__rst = clear | regs__reset_mode_d | aux_a__chan_rst | dmr_ctl__restart_dcl;
+        chan_a__rst = clear | regs__reset_mode_d | (aux_a__chan_rst & ~regs__star) | dmr_ctl__restart_dcl;
+        chan_a__err_reset = aux_a__chan_rst & regs__star;
         chan_a__cfg_brp = regs__brp;
         chan_a__cfg_tseg1 = regs__tseg1;
         chan_a__cfg_tseg2 = regs__tseg2;
@@ -1650,7 +1655,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_
             chan_a__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
         end
         chan_b__clk = clk;
-        chan_b__rst = clear | regs__reset_mode_d | aux_b__chan_rst | dmr_ctl__restart_rcl;
+        chan_b__rst = clear | regs__reset_mode_d | (aux_b__chan_rst & ~regs__star) | dmr_ctl__restart_rcl;
+        chan_b__err_reset = aux_b__chan_rst & regs__star;
         chan_b__cfg_brp = regs__brp;
         chan_b__cfg_tseg1 = regs__tseg1;
         chan_b__cfg_tseg2 = regs__tseg2;
@@ -2574,7 +2580,7 @@ module drcc__aux_b__stall_q(d,q,clock);
 endmodule // drcc__aux_b__stall_q
 
 
-module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -2596,6 +2602,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -2709,6 +2716,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
     reg  bsp__tx_abort;
+    reg  bsp__err_reset;
     wire  bsp__tx_pending;
     wire  bsp__tx_failed;
     wire  bsp__tx_done;
@@ -2799,6 +2807,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
         .tx_abort(bsp__tx_abort),
+        .err_reset(bsp__err_reset),
         .tx_pending(bsp__tx_pending),
         .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
@@ -2871,6 +2880,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
+        bsp__err_reset = err_reset;
         bsp__mode = cfg_regs__mode;
         bsp__ewl = cfg_regs__ewl;
         bsp__single_shot = cfg_regs__single_shot;
@@ -2906,7 +2916,7 @@ module drcc__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
 endmodule // drcc__chan_a
 
 
-module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -2927,6 +2937,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -3206,6 +3217,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  fc__tx_success;
     reg  fc__rx_success;
     reg  fc__recovered;
+    reg  fc__err_reset;
     reg  [7:0] fc__ewl;
     wire  [8:0] fc__tec;
     wire  [7:0] fc__rec;
@@ -3484,6 +3496,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .tx_success(fc__tx_success),
         .rx_success(fc__rx_success),
         .recovered(fc__recovered),
+        .err_reset(fc__err_reset),
         .ewl(fc__ewl),
         .tec(fc__tec),
         .rec(fc__rec),
@@ -3669,6 +3682,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__tx_success = rules__tx_success;
         fc__rx_success = rules__rx_success;
         fc__recovered = fsm__recovered;
+        fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
         err_capture__bit_err = detect__bit_err;
@@ -4479,7 +4493,7 @@ module drcc__chan_a__bsp__err_capture__p_cnt_stuff_max(d,q,clock);
 endmodule // drcc__chan_a__bsp__err_capture__p_cnt_stuff_max
 
 
-module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,ewl,tec,rec,err_state,error_passive,bus_off,warning);
+module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,err_reset,ewl,tec,rec,err_state,error_passive,bus_off,warning);
     
     // Module arguments
     input wire  clk;
@@ -4490,6 +4504,7 @@ module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
     input wire  tx_success;
     input wire  rx_success;
     input wire  recovered;
+    input wire  err_reset;
     input wire  [7:0] ewl;
     output reg  [8:0] tec;
     output reg  [7:0] rec;
@@ -4570,7 +4585,7 @@ module drcc__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
                 rec_q__d = rec_q__q - one8;
             end
         end
-        if (recovered || rst) begin
+        if (recovered || rst || (err_reset && (tec_q__q <= busoff9))) begin
             tec_q__d = zero9;
             rec_q__d = zero8;
         end
@@ -9065,7 +9080,7 @@ module drcc__chan_a__rx_sync__rx_sync(d,q,clock);
 endmodule // drcc__chan_a__rx_sync__rx_sync
 
 
-module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -9087,6 +9102,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -9200,6 +9216,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
     reg  bsp__tx_abort;
+    reg  bsp__err_reset;
     wire  bsp__tx_pending;
     wire  bsp__tx_failed;
     wire  bsp__tx_done;
@@ -9290,6 +9307,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
         .tx_abort(bsp__tx_abort),
+        .err_reset(bsp__err_reset),
         .tx_pending(bsp__tx_pending),
         .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
@@ -9362,6 +9380,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
+        bsp__err_reset = err_reset;
         bsp__mode = cfg_regs__mode;
         bsp__ewl = cfg_regs__ewl;
         bsp__single_shot = cfg_regs__single_shot;
@@ -9397,7 +9416,7 @@ module drcc__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_m
 endmodule // drcc__chan_b
 
 
-module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -9418,6 +9437,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -9697,6 +9717,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  fc__tx_success;
     reg  fc__rx_success;
     reg  fc__recovered;
+    reg  fc__err_reset;
     reg  [7:0] fc__ewl;
     wire  [8:0] fc__tec;
     wire  [7:0] fc__rec;
@@ -9975,6 +9996,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .tx_success(fc__tx_success),
         .rx_success(fc__rx_success),
         .recovered(fc__recovered),
+        .err_reset(fc__err_reset),
         .ewl(fc__ewl),
         .tec(fc__tec),
         .rec(fc__rec),
@@ -10160,6 +10182,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__tx_success = rules__tx_success;
         fc__rx_success = rules__rx_success;
         fc__recovered = fsm__recovered;
+        fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
         err_capture__bit_err = detect__bit_err;
@@ -10970,7 +10993,7 @@ module drcc__chan_b__bsp__err_capture__p_cnt_stuff_max(d,q,clock);
 endmodule // drcc__chan_b__bsp__err_capture__p_cnt_stuff_max
 
 
-module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,ewl,tec,rec,err_state,error_passive,bus_off,warning);
+module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,err_reset,ewl,tec,rec,err_state,error_passive,bus_off,warning);
     
     // Module arguments
     input wire  clk;
@@ -10981,6 +11004,7 @@ module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
     input wire  tx_success;
     input wire  rx_success;
     input wire  recovered;
+    input wire  err_reset;
     input wire  [7:0] ewl;
     output reg  [8:0] tec;
     output reg  [7:0] rec;
@@ -11061,7 +11085,7 @@ module drcc__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_su
                 rec_q__d = rec_q__q - one8;
             end
         end
-        if (recovered || rst) begin
+        if (recovered || rst || (err_reset && (tec_q__q <= busoff9))) begin
             tec_q__d = zero9;
             rec_q__d = zero8;
         end

@@ -650,6 +650,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  [3:0] chan_a__tx_dlc;
     reg  [63:0] chan_a__tx_data;
     reg  chan_a__tx_abort;
+    reg  chan_a__err_reset;
     wire  chan_a__tx_pending;
     wire  chan_a__tx_failed;
     wire  chan_a__tx_done;
@@ -696,6 +697,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  [3:0] chan_b__tx_dlc;
     reg  [63:0] chan_b__tx_data;
     reg  chan_b__tx_abort;
+    reg  chan_b__err_reset;
     wire  chan_b__tx_pending;
     wire  chan_b__tx_failed;
     wire  chan_b__tx_done;
@@ -1172,6 +1174,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .tx_dlc(chan_a__tx_dlc),
         .tx_data(chan_a__tx_data),
         .tx_abort(chan_a__tx_abort),
+        .err_reset(chan_a__err_reset),
         .tx_pending(chan_a__tx_pending),
         .tx_failed(chan_a__tx_failed),
         .tx_done(chan_a__tx_done),
@@ -1220,6 +1223,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .tx_dlc(chan_b__tx_dlc),
         .tx_data(chan_b__tx_data),
         .tx_abort(chan_b__tx_abort),
+        .err_reset(chan_b__err_reset),
         .tx_pending(chan_b__tx_pending),
         .tx_failed(chan_b__tx_failed),
         .tx_done(chan_b__tx_done),
@@ -1501,7 +1505,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         rxw__frame_b = rx_frame_b;
         rxw__fifo_count = rxfifo__count;
         chan_a__clk = clk;
-        chan_a__rst = clear | regs__reset_mode_d | aux_a__chan_rst | dmr_ctl__restart_dcl;
+        chan_a__rst = clear | regs__reset_mode_d | (aux_a__chan_rst & ~regs__star) | dmr_ctl__restart_dcl;
+        chan_a__err_reset = aux_a__chan_rst & regs__star;
         chan_a__cfg_brp = regs__brp;
         chan_a__cfg_tseg1 = regs__tseg1;
         chan_a__cfg_tseg2 = regs__tseg2;
@@ -1528,7 +1533,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
             chan_a__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
         end
         chan_b__clk = clk;
-        chan_b__rst = clear | regs__reset_mode_d | aux_b__chan_rst | dmr_ctl__restart_rcl;
+        chan_b__rst = clear | regs__reset_mode_d | (aux_b__chan_rst & ~regs__star) | dmr_ctl__restart_rcl;
+        chan_b__err_reset = aux_b__chan_rst & regs__star;
         chan_b__cfg_brp = regs__brp;
         chan_b__cfg_tseg1 = regs__tseg1;
         chan_b__cfg_tseg2 = regs__tseg2;
@@ -2452,7 +2458,7 @@ module drcc_m0__aux_b__stall_q(d,q,clock);
 endmodule // drcc_m0__aux_b__stall_q
 
 
-module drcc_m0__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -2474,6 +2480,7 @@ module drcc_m0__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -2587,6 +2594,7 @@ module drcc_m0__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
     reg  bsp__tx_abort;
+    reg  bsp__err_reset;
     wire  bsp__tx_pending;
     wire  bsp__tx_failed;
     wire  bsp__tx_done;
@@ -2677,6 +2685,7 @@ module drcc_m0__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
         .tx_abort(bsp__tx_abort),
+        .err_reset(bsp__err_reset),
         .tx_pending(bsp__tx_pending),
         .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
@@ -2749,6 +2758,7 @@ module drcc_m0__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
+        bsp__err_reset = err_reset;
         bsp__mode = cfg_regs__mode;
         bsp__ewl = cfg_regs__ewl;
         bsp__single_shot = cfg_regs__single_shot;
@@ -2784,7 +2794,7 @@ module drcc_m0__chan_a(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
 endmodule // drcc_m0__chan_a
 
 
-module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -2805,6 +2815,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -3084,6 +3095,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  fc__tx_success;
     reg  fc__rx_success;
     reg  fc__recovered;
+    reg  fc__err_reset;
     reg  [7:0] fc__ewl;
     wire  [8:0] fc__tec;
     wire  [7:0] fc__rec;
@@ -3362,6 +3374,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .tx_success(fc__tx_success),
         .rx_success(fc__rx_success),
         .recovered(fc__recovered),
+        .err_reset(fc__err_reset),
         .ewl(fc__ewl),
         .tec(fc__tec),
         .rec(fc__rec),
@@ -3547,6 +3560,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         fc__tx_success = rules__tx_success;
         fc__rx_success = rules__rx_success;
         fc__recovered = fsm__recovered;
+        fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
         err_capture__bit_err = detect__bit_err;
@@ -4357,7 +4371,7 @@ module drcc_m0__chan_a__bsp__err_capture__p_cnt_stuff_max(d,q,clock);
 endmodule // drcc_m0__chan_a__bsp__err_capture__p_cnt_stuff_max
 
 
-module drcc_m0__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,ewl,tec,rec,err_state,error_passive,bus_off,warning);
+module drcc_m0__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,err_reset,ewl,tec,rec,err_state,error_passive,bus_off,warning);
     
     // Module arguments
     input wire  clk;
@@ -4368,6 +4382,7 @@ module drcc_m0__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx
     input wire  tx_success;
     input wire  rx_success;
     input wire  recovered;
+    input wire  err_reset;
     input wire  [7:0] ewl;
     output reg  [8:0] tec;
     output reg  [7:0] rec;
@@ -4448,7 +4463,7 @@ module drcc_m0__chan_a__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx
                 rec_q__d = rec_q__q - one8;
             end
         end
-        if (recovered || rst) begin
+        if (recovered || rst || (err_reset && (tec_q__q <= busoff9))) begin
             tec_q__d = zero9;
             rec_q__d = zero8;
         end
@@ -8943,7 +8958,7 @@ module drcc_m0__chan_a__rx_sync__rx_sync(d,q,clock);
 endmodule // drcc_m0__chan_a__rx_sync__rx_sync
 
 
-module drcc_m0__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -8965,6 +8980,7 @@ module drcc_m0__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -9078,6 +9094,7 @@ module drcc_m0__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
     reg  bsp__tx_abort;
+    reg  bsp__err_reset;
     wire  bsp__tx_pending;
     wire  bsp__tx_failed;
     wire  bsp__tx_done;
@@ -9168,6 +9185,7 @@ module drcc_m0__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
         .tx_abort(bsp__tx_abort),
+        .err_reset(bsp__err_reset),
         .tx_pending(bsp__tx_pending),
         .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
@@ -9240,6 +9258,7 @@ module drcc_m0__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
+        bsp__err_reset = err_reset;
         bsp__mode = cfg_regs__mode;
         bsp__ewl = cfg_regs__ewl;
         bsp__single_shot = cfg_regs__single_shot;
@@ -9275,7 +9294,7 @@ module drcc_m0__chan_b(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cf
 endmodule // drcc_m0__chan_b
 
 
-module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
@@ -9296,6 +9315,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  err_reset;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -9575,6 +9595,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  fc__tx_success;
     reg  fc__rx_success;
     reg  fc__recovered;
+    reg  fc__err_reset;
     reg  [7:0] fc__ewl;
     wire  [8:0] fc__tec;
     wire  [7:0] fc__rec;
@@ -9853,6 +9874,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .tx_success(fc__tx_success),
         .rx_success(fc__rx_success),
         .recovered(fc__recovered),
+        .err_reset(fc__err_reset),
         .ewl(fc__ewl),
         .tec(fc__tec),
         .rec(fc__rec),
@@ -10038,6 +10060,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         fc__tx_success = rules__tx_success;
         fc__rx_success = rules__rx_success;
         fc__recovered = fsm__recovered;
+        fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
         err_capture__bit_err = detect__bit_err;
@@ -10848,7 +10871,7 @@ module drcc_m0__chan_b__bsp__err_capture__p_cnt_stuff_max(d,q,clock);
 endmodule // drcc_m0__chan_b__bsp__err_capture__p_cnt_stuff_max
 
 
-module drcc_m0__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,ewl,tec,rec,err_state,error_passive,bus_off,warning);
+module drcc_m0__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,err_reset,ewl,tec,rec,err_state,error_passive,bus_off,warning);
     
     // Module arguments
     input wire  clk;
@@ -10859,6 +10882,7 @@ module drcc_m0__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx
     input wire  tx_success;
     input wire  rx_success;
     input wire  recovered;
+    input wire  err_reset;
     input wire  [7:0] ewl;
     output reg  [8:0] tec;
     output reg  [7:0] rec;
@@ -10939,7 +10963,7 @@ module drcc_m0__chan_b__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx
                 rec_q__d = rec_q__q - one8;
             end
         end
-        if (recovered || rst) begin
+        if (recovered || rst || (err_reset && (tec_q__q <= busoff9))) begin
             tec_q__d = zero9;
             rec_q__d = zero8;
         end

@@ -352,13 +352,16 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rxw.fifo_count.next = self.rxfifo.count.val();
 
         // ---- channels: shared bit timing, own mode, TX RAM read data ----
-        // channel rst = rst | reset_mode | reset_mode one edge earlier | restart
-        // (contract §6): the channels capture their configuration while in reset
+        // channel rst = rst | reset_mode | reset_mode one edge earlier | dual-bus
+        // restart | DMR restart (contract §6): the channels capture their
+        // configuration while in reset
         self.chan_a.clk.next = self.clk.val();
         self.chan_a.rst.next = self.clear.val()
             | self.regs.reset_mode_d.val()
-            | self.aux_a.chan_rst.val()
+            | (self.aux_a.chan_rst.val() & !self.regs.star.val())
             | self.dmr_ctl.restart_dcl.val();
+        // §5: a star node's restart is soft (counters only, no re-integration)
+        self.chan_a.err_reset.next = self.aux_a.chan_rst.val() & self.regs.star.val();
         self.chan_a.cfg_brp.next = self.regs.brp.val();
         self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
@@ -389,8 +392,10 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.chan_b.clk.next = self.clk.val();
         self.chan_b.rst.next = self.clear.val()
             | self.regs.reset_mode_d.val()
-            | self.aux_b.chan_rst.val()
+            | (self.aux_b.chan_rst.val() & !self.regs.star.val())
             | self.dmr_ctl.restart_rcl.val();
+        // §5: a star node's restart is soft (counters only, no re-integration)
+        self.chan_b.err_reset.next = self.aux_b.chan_rst.val() & self.regs.star.val();
         self.chan_b.cfg_brp.next = self.regs.brp.val();
         self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();

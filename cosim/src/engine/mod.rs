@@ -181,6 +181,8 @@ pub struct ChannelInputs {
     pub tx_frame: Frame,
     /// One-clock request: abort the pending frame (§8).
     pub tx_abort: bool,
+    /// Error counter reset: TEC = REC = 0, error active, unless bus-off (§4.5).
+    pub err_reset: bool,
 }
 
 /// Named internal signals compared clock by clock in co-simulation.

@@ -76,6 +76,7 @@ impl ChannelEngine for RustHdlEngine {
         u.tx_dlc.next = ((i.tx_frame.dlc & 0xF) as u64).into();
         u.tx_data.next = i.tx_frame.data_word().into();
         u.tx_abort.next = i.tx_abort;
+        u.err_reset.next = i.err_reset;
         self.settle();
         self.uut.clk.next = Clock::from(true);
         self.settle();

@@ -99,6 +99,7 @@ fn encode(i: &ChannelInputs, p: &mut CanChannelIn) {
         tx_dlc: f.dlc & 0xF,
         tx_data: f.data_word(),
         tx_abort: i.tx_abort as u8,
+        err_reset: i.err_reset as u8,
     };
 }
 
@@ -174,6 +175,7 @@ mod tests {
                 data: [1, 2, 3, 4, 5, 6, 7, 8],
             },
             tx_abort: true,
+            err_reset: true,
         };
         let mut p = CanChannelIn::default();
         encode(&inputs, &mut p);
@@ -197,6 +199,7 @@ mod tests {
                 tx_dlc: 8,
                 tx_data: 0x0102_0304_0506_0708,
                 tx_abort: 1,
+                err_reset: 1,
             }
         );
         // Every mode travels as its code.
@@ -215,7 +218,10 @@ mod tests {
             };
             encode(&i, &mut p);
             assert_eq!(Mode::from_code(p.cfg_mode), mode);
-            assert_eq!((p.cfg_ewl, p.cfg_single_shot, p.tx_abort), (96, 0, 0));
+            assert_eq!(
+                (p.cfg_ewl, p.cfg_single_shot, p.tx_abort, p.err_reset),
+                (96, 0, 0, 0)
+            );
         }
     }
 

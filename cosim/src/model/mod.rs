@@ -97,7 +97,8 @@ impl ChannelModel {
     #[inline]
     pub fn step(&mut self, inputs: &ChannelInputs) -> ChannelOutputs {
         // Bitwise `|` on bools: one test instead of four branches.
-        if inputs.rst | inputs.tx_abort | self.special | self.bsp.abort_pending() {
+        if inputs.rst | inputs.tx_abort | inputs.err_reset | self.special | self.bsp.abort_pending()
+        {
             self.step_special(inputs);
         } else {
             self.edge(inputs, inputs.rx, false);
@@ -106,7 +107,7 @@ impl ChannelModel {
     }
 
     /// Reset edges, the first edge of a new model, `tx_abort` or a remembered
-    /// abort, LOOPBACK.
+    /// abort, `err_reset`, LOOPBACK.
     #[cold]
     #[inline(never)]
     fn step_special(&mut self, inputs: &ChannelInputs) {
@@ -126,6 +127,10 @@ impl ChannelModel {
         };
         let abort = inputs.tx_abort || self.bsp.abort_pending();
         self.edge(inputs, rx, abort);
+        // §4.5: the counter reset is applied after the edge's counting rules.
+        if inputs.err_reset {
+            self.bsp.err_reset();
+        }
     }
 
     /// One edge of a configured channel out of reset; `rx` is what enters the

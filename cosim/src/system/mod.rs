@@ -372,6 +372,7 @@ impl System {
                 tx_req,
                 tx_frame: self.tx_frame[i],
                 tx_abort,
+                err_reset: false,
             };
             let out = self.engines[i].step(&inputs);
             self.sample.tx_req[i] = tx_req;

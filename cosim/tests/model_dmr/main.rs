@@ -239,6 +239,7 @@ impl Sys {
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: false,
+                err_reset: false,
             });
             if p.out.rx_valid {
                 p.received.push((self.clock + 1, p.out.rx_frame));

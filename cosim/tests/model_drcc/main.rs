@@ -204,6 +204,7 @@ impl Sys {
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: false,
+                err_reset: false,
             });
             if p.out.rx_valid {
                 p.received.push(p.out.rx_frame);

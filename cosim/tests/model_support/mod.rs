@@ -234,6 +234,7 @@ impl Bus {
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: std::mem::take(&mut self.abort[i]),
+                err_reset: false,
             });
             self.tx[i] = out.tx;
             outs.push(out);
@@ -318,6 +319,7 @@ impl Tester {
                 tx_req: req.is_some(),
                 tx_frame: req.unwrap_or_default(),
                 tx_abort: false,
+                err_reset: false,
             });
             self.tx = out.tx;
             if self.record {

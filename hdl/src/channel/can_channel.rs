@@ -81,6 +81,11 @@ pub struct CanChannel {
     /// node is not transmitting it (and `tx` is recessive), else when the attempt in
     /// progress fails; a successful attempt still ends with `tx_done` (contract §8).
     pub tx_abort: Signal<In, Bit>,
+    // ---- error control ----
+    /// Error counter reset: at an edge with `err_reset = 1` a node that is not
+    /// bus-off ends with TEC = REC = 0, error active; it stays on the bus (no
+    /// re-integration, unlike `rst`). 0 in normal use (contract §4.5).
+    pub err_reset: Signal<In, Bit>,
     /// A frame is latched and not yet sent or dropped: 1 from the `tx_req` edge
     /// until `tx_done` or `tx_failed`.
     pub tx_pending: Signal<Out, Bit>,
@@ -185,6 +190,7 @@ impl Default for CanChannel {
             tx_dlc: Default::default(),
             tx_data: Default::default(),
             tx_abort: Default::default(),
+            err_reset: Default::default(),
             tx_pending: Default::default(),
             tx_failed: Default::default(),
             tx_done: Default::default(),
@@ -271,6 +277,7 @@ impl Logic for CanChannel {
         self.bsp.tx_dlc.next = self.tx_dlc.val();
         self.bsp.tx_data.next = self.tx_data.val();
         self.bsp.tx_abort.next = self.tx_abort.val();
+        self.bsp.err_reset.next = self.err_reset.val();
         self.bsp.mode.next = self.cfg_regs.mode.val();
         self.bsp.ewl.next = self.cfg_regs.ewl.val();
         self.bsp.single_shot.next = self.cfg_regs.single_shot.val();

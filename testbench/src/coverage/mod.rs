@@ -71,6 +71,14 @@ pub fn workloads() -> Vec<Workload> {
             run: nrap_erring_node,
         },
         Workload {
+            name: "a hub with NRAP off whose sublink is stuck dominant decouples",
+            run: hub_decouples_without_nrap,
+        },
+        Workload {
+            name: "a star node whose transceiver dies in the ACK slot of its second attempt",
+            run: star_echo_in_wait2,
+        },
+        Workload {
             name: "fault campaigns (dual 150, star 40 single faults)",
             run: campaigns,
         },
@@ -212,6 +220,119 @@ fn nrap_erring_node() -> Result<(), String> {
         return Err("the two hubs never reached node restoration".to_string());
     }
     Ok(())
+}
+
+/// One hub model (N = 2, M = 1, the star scenarios' configuration) with NRAP off
+/// (`CTRL.nrap_on` = 0): its incoming sublink stuck dominant from bit 100 on is
+/// isolated and, showing a symptom at every bit, never restored, so after
+/// `decouple_bits` without a sublink the hub decouples on its own (hub contract
+/// §7). The star table's NRAP-off row no longer gets there: with the star node's
+/// soft restart (DRCC contract §5) its hubs restore their silent sublinks first.
+fn hub_decouples_without_nrap() -> Result<(), String> {
+    use drcc_cosim::engine::hub::HubInputs;
+    use drcc_cosim::star::hub_host::HubHost;
+    let cpb = crate::star::CLOCKS_PER_BIT;
+    let mut cfg = crate::star::StarScenario::standard(crate::star::StarFault::None).hub;
+    cfg.nrap_on = false;
+    let mut hub = HubModelEngine::new_hub(0, 2, 1)?;
+    let mut host = HubHost::new(cfg);
+    let mut out = HubOutputs::default();
+    let bits = 100 + cfg.decouple_bits as u64 + 400;
+    for c in 0..bits * cpb {
+        let mut i = HubInputs {
+            rst: c < 2,
+            uplink: 0b11,
+            sublink_in: if c / cpb >= 100 { 0 } else { 1 },
+            ..HubInputs::default()
+        };
+        let prev = out;
+        host.drive(c, &prev, c < 2, &mut i);
+        out = hub.step(&i);
+    }
+    if !out.probes.decoupled {
+        return Err("the hub with NRAP off did not decouple".to_string());
+    }
+    Ok(())
+}
+
+/// Star, no fault but on node 0's links to hub 1: one bit of node 0's first frame
+/// is inverted on its uplink (a bit error: channel A's first failed attempt), then
+/// its transceiver on hub 1 dies (uplink and downlink recessive) in the ACK slot of
+/// the retransmission. Channel A sees an ACK error nobody else sees: its second
+/// failure fails it (k = 2), the main FSM aborts A and waits in wait2, and channel
+/// B's reception of the frame the others took completes the message there (DRCC
+/// contract §4.4, the echo ahead of a failure). The star table's NRAP rows reached
+/// this by chance before the soft restart; here the two instants are found by
+/// running the same deterministic system up to each of them.
+fn star_echo_in_wait2() -> Result<(), String> {
+    use crate::star::{build_star, StarFault, StarScenario, CLOCKS_PER_BIT};
+    use drcc_cosim::star::{Link, LinkFault, LinkFaultKind};
+    const CH1: u8 = 2;
+    const WAIT2: u8 = 4;
+    const DATA: u8 = 10;
+    const ACK_SLOT: u8 = 13;
+    let mut s = StarScenario::standard(StarFault::None);
+    s.frames_per_node = 2;
+    let flip = |at: u64| LinkFault {
+        link: Link::Uplink { hub: 0, node: 0 },
+        kind: LinkFaultKind::BitFlip {
+            period: u64::MAX / 2,
+            width: CLOCKS_PER_BIT,
+        },
+        start: at,
+        cycles: CLOCKS_PER_BIT,
+    };
+    let limit = 3_000 * CLOCKS_PER_BIT;
+    // 1. The first data bit of node 0's first attempt on A.
+    let mut sys = build_star(&s, EngineKind::Model)?;
+    let mut data_at = None;
+    while sys.cycle() < limit && data_at.is_none() {
+        sys.step();
+        let p = sys.node(0).outputs.probes;
+        if p.state == CH1 && p.chan_a_field == DATA {
+            data_at = Some(sys.cycle());
+        }
+    }
+    let data_at = data_at.ok_or("node 0 never sent a data field on A")? + CLOCKS_PER_BIT;
+    // 2. With that bit inverted: the ACK slot of the retransmission.
+    let mut sys = build_star(&s, EngineKind::Model)?;
+    sys.add_fault(flip(data_at))?;
+    let mut ack_at = None;
+    while sys.cycle() < limit && ack_at.is_none() {
+        sys.step();
+        let p = sys.node(0).outputs.probes;
+        if sys.cycle() > data_at + 20 * CLOCKS_PER_BIT
+            && p.state == CH1
+            && p.chan_a_field == ACK_SLOT
+        {
+            ack_at = Some(sys.cycle());
+        }
+    }
+    let ack_at = ack_at.ok_or("node 0 never retransmitted on A")?;
+    // 3. Both, and the transceiver dead from that ACK slot on.
+    let mut sys = build_star(&s, EngineKind::Model)?;
+    sys.add_fault(flip(data_at))?;
+    for link in [
+        Link::Uplink { hub: 0, node: 0 },
+        Link::Downlink { hub: 0, node: 0 },
+    ] {
+        sys.add_fault(LinkFault {
+            link,
+            kind: LinkFaultKind::StuckRecessive,
+            start: ack_at,
+            cycles: u64::MAX / 2,
+        })?;
+    }
+    let mut before = sys.node(0).outputs.probes.state;
+    while sys.cycle() < limit {
+        sys.step();
+        let p = sys.node(0).outputs.probes;
+        if before == WAIT2 && p.transmission_ack {
+            return Ok(());
+        }
+        before = p.state;
+    }
+    Err("node 0's message was not completed in wait2".to_string())
 }
 
 fn campaigns() -> Result<(), String> {

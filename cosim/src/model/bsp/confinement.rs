@@ -48,6 +48,17 @@ impl Counters {
         }
     }
 
+    /// `err_reset` (contract §4.5): both counters 0 and error active, applied after
+    /// the edge's counting rules; a bus-off node is left alone (it leaves bus-off
+    /// only by the recovery of 12.1.4.4).
+    pub fn err_reset(&mut self) {
+        if self.state != BUS_OFF {
+            self.tec = 0;
+            self.rec = 0;
+            self.state = ERROR_ACTIVE;
+        }
+    }
+
     /// LISTEN_ONLY mode (contract §7): TEC and REC never change.
     pub fn freeze(&mut self) {
         self.frozen = true;

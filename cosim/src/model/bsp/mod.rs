@@ -244,6 +244,11 @@ impl Bsp {
         self.field
     }
 
+    /// `err_reset` (contract §4.5).
+    pub fn err_reset(&mut self) {
+        self.counters.err_reset();
+    }
+
     /// Error counters and state.
     #[inline]
     pub fn counters(&self) -> &Counters {

@@ -132,8 +132,10 @@ impl DrccModel {
             rst: rst
                 || r.reset_mode()
                 || r.reset_mode_q
-                || self.aux[c].restarting()
+                || (self.aux[c].restarting() && !r.star())
                 || self.dmr.restart[c],
+            // §5: a star node's restart is soft (counters only, no re-integration).
+            err_reset: self.aux[c].restarting() && r.star(),
             rx,
             timing: BitTiming {
                 brp: r.brp(),

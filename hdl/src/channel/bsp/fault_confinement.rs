@@ -10,7 +10,9 @@
 //! - rule h (successful reception, counted at the ACK slot: REC -1, or from above
 //!   127 back to 127, the top of the 119..127 range the standard allows)
 //!   -> `rx_success`;
-//! - bus-off recovery (128 x 11 recessive bits) -> `recovered` clears both.
+//! - bus-off recovery (128 x 11 recessive bits) -> `recovered` clears both;
+//! - the host's counter reset (contract §4.5) -> `err_reset` clears both, unless
+//!   bus-off.
 //!
 //! Error passive at TEC >= 128 or REC >= 128; bus-off at TEC > 255. REC
 //! saturates at 255 instead of wrapping. The error warning (contract §9) is
@@ -39,6 +41,9 @@ pub struct FaultConfinement {
     pub rx_success: Signal<In, Bit>,
     /// Bus-off recovery completed: both counters to 0.
     pub recovered: Signal<In, Bit>,
+    /// Error counter reset by the host: both counters to 0 unless bus-off, after
+    /// this edge's rules (contract §4.5).
+    pub err_reset: Signal<In, Bit>,
     /// Error warning limit (contract §9).
     pub ewl: Signal<In, Bits<8>>,
     // counters and state
@@ -107,7 +112,11 @@ impl Logic for FaultConfinement {
                 self.rec_q.d.next = self.rec_q.q.val() - self.one8.val();
             }
         }
-        if self.recovered.val() || self.rst.val() {
+        // (not bus-off written out: reading `bus_off` here would be a loop to Verilator)
+        if self.recovered.val()
+            || self.rst.val()
+            || (self.err_reset.val() && (self.tec_q.q.val() <= self.busoff9.val()))
+        {
             self.tec_q.d.next = self.zero9.val();
             self.rec_q.d.next = self.zero8.val();
         }

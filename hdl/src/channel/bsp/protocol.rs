@@ -85,6 +85,8 @@ pub struct ProtocolController {
     pub tx_data: Signal<In, Bits<64>>,
     /// Abort the pending frame (contract §8).
     pub tx_abort: Signal<In, Bit>,
+    /// Error counter reset (contract §4.5).
+    pub err_reset: Signal<In, Bit>,
     /// A frame is pending.
     pub tx_pending: Signal<Out, Bit>,
     /// One clock: the pending frame was dropped.
@@ -324,6 +326,7 @@ impl Logic for ProtocolController {
         self.fc.tx_success.next = self.rules.tx_success.val();
         self.fc.rx_success.next = self.rules.rx_success.val();
         self.fc.recovered.next = self.fsm.recovered.val();
+        self.fc.err_reset.next = self.err_reset.val();
         self.fc.ewl.next = self.ewl.val();
 
         // ---- diagnostics (contract §9)

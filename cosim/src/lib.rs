@@ -7,6 +7,7 @@ pub mod dual;
 pub mod engine;
 pub mod frame;
 pub mod model;
+pub mod ring;
 pub mod star;
 pub mod system;
 pub mod trace;

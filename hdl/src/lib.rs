@@ -6,5 +6,6 @@ pub mod generated;
 pub mod host;
 pub mod hub;
 pub mod memory;
+pub mod redcan;
 pub mod rmb;
 pub mod tops;

@@ -29,6 +29,7 @@ pub mod verilog;
 use crate::channel::can_channel::CanChannel;
 use crate::drcc::{Drcc, DrccM0};
 use crate::hub::hub::{Hub4x2, HubB4x2};
+use crate::redcan::rcm::Rcm;
 use rust_hdl::prelude::*;
 
 /// Direction of a top-level port.
@@ -205,6 +206,20 @@ pub static TOPS: &[Top] = &[
         notes: HUB_NOTES,
         raw_verilog: raw_verilog_of::<HubB4x2>,
         ports: ports_of::<HubB4x2>,
+    },
+    Top {
+        name: "rcm",
+        summary: "the REDCAN relay module: the host's two control bits to the relay, transceiver and termination drivers of a ring node",
+        contract: "cosim/src/model/ring_contract.md",
+        params: &[],
+        block: "Rcm",
+        source_path: "hdl/src/redcan/rcm.rs",
+        source: include_str!("redcan/rcm.rs"),
+        notes: "ctl = {connect right, connect left}: 11 transparent (reset), 01 left, 10 right,\n\
+                00 refused (illegal). The driver outputs are the coil and switch drives; the\n\
+                ring simulator applies them after the relay's operate time (section 1).",
+        raw_verilog: raw_verilog_of::<Rcm>,
+        ports: ports_of::<Rcm>,
     },
 ];
 

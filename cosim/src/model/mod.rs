@@ -19,6 +19,7 @@ pub mod crc;
 pub mod drcc;
 pub mod field;
 pub mod hub;
+pub mod rcm;
 
 use crate::engine::{ChannelInputs, ChannelOutputs, Diagnostics, Mode, Probes};
 use bsp::Bsp;

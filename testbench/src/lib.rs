@@ -15,6 +15,7 @@ pub mod fault_gen;
 pub mod hub_stim;
 pub mod paper;
 pub mod random;
+pub mod ring;
 pub mod run;
 pub mod scenario;
 pub mod star;

@@ -345,6 +345,12 @@ impl HostDriver {
         self.explicit.push_back((reg, Some(value)));
     }
 
+    /// Drops the submissions not yet being pushed (a host that gives up on what
+    /// it queued, e.g. before emptying the DRCC's TX queues with reset mode).
+    pub fn drop_submissions(&mut self) {
+        self.submissions.clear();
+    }
+
     /// Frames submitted but not yet pushed into the DRCC.
     pub fn backlog(&self) -> usize {
         self.submissions.len() + self.pushing.is_some() as usize

@@ -1,0 +1,442 @@
+//! REDCAN rings of DRCC nodes (`ring_contract.md`): scenarios, the hosts that run
+//! CanKingdom and the REDCAN algorithms through the `cankingdom` crate, the run,
+//! and what it measured.
+//!
+//! Time: the ring runs at 125 kbit/s with 8 clocks per bit, so one clock is one
+//! microsecond and the hosts' clocks (`now_us`) are the cycle count.
+
+pub mod central;
+pub mod post;
+
+use crate::dual::drcc_engine;
+use crate::engines::EngineKind;
+use cankingdom::king::{ExpectedCity, KingPhase, Membership};
+use cankingdom::king_pages::Action;
+use cankingdom::{Envelope, King, KingConfig, Mayor, MayorConfig};
+use central::{CentralTiming, Master, Slave, BASE};
+use drcc_cosim::dual::host::{HostConfig, Policy};
+use drcc_cosim::engine::drcc::DrccEngine;
+use drcc_cosim::engine::rcm::{rcm_engine, RcmEngine};
+use drcc_cosim::ring::{NodeFault, RingSystem, SectionFaults, Shape};
+use drcc_cosim::Frame;
+use post::{ring_btr, CkFrame, DrccPost, PostState};
+
+/// Clocks per bit (125 kbit/s at 1 MHz).
+pub const CLOCKS_PER_BIT: u64 = 8;
+/// Microseconds per millisecond.
+const MS: u64 = 1_000;
+/// Envelope of the application frames: `APP_BASE + node`.
+pub const APP_BASE: u32 = 0x500;
+
+/// A fault of `ring_contract.md` §3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RingFault {
+    /// Nothing.
+    None,
+    /// Section `section` broken after its `point`-th plain node.
+    SectionOpen { section: usize, point: usize },
+    /// Section `section` stuck dominant.
+    SectionShort { section: usize },
+    /// Ring node `node`'s transmitter stuck dominant, its host dead, its relay held.
+    Babbling { node: usize },
+    /// Ring node `node` loses power (relay at rest: transparent).
+    Crash { node: usize },
+}
+
+impl RingFault {
+    /// The CLI name of the kind.
+    pub fn kind_name(self) -> &'static str {
+        match self {
+            RingFault::None => "no_fault",
+            RingFault::SectionOpen { .. } => "section_open",
+            RingFault::SectionShort { .. } => "section_short",
+            RingFault::Babbling { .. } => "babbling_idiot",
+            RingFault::Crash { .. } => "node_crash",
+        }
+    }
+
+    /// Where it is, in words.
+    pub fn position(self) -> String {
+        match self {
+            RingFault::None => "-".into(),
+            RingFault::SectionOpen { section, point } => {
+                format!("section {section}, after plain node {point}")
+            }
+            RingFault::SectionShort { section } => format!("section {section}"),
+            RingFault::Babbling { node } | RingFault::Crash { node } => format!("ring node {node}"),
+        }
+    }
+}
+
+/// The REDCAN algorithm the hosts run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Algorithm {
+    /// Seed §3 on a CanKingdom King (`central`).
+    Centralized,
+}
+
+/// One ring run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RingScenario {
+    /// Ring nodes (3..=10).
+    pub ring_nodes: usize,
+    /// Plain nodes on every section.
+    pub plain_per_section: usize,
+    pub fault: RingFault,
+    pub algorithm: Algorithm,
+    /// Relay operate time in microseconds (ring contract §1).
+    pub relay_us: u64,
+    /// Fault onset in microseconds from power-up.
+    pub onset_us: u64,
+    /// Run length after the onset.
+    pub after_us: u64,
+    /// Application frame period per node.
+    pub app_period_us: u64,
+}
+
+impl RingScenario {
+    /// `n` ring nodes with one plain node per section, the centralized algorithm
+    /// with the paper's T1 and T2, relays of 2 ms, the fault 450 ms after power-up
+    /// (the kingdom's start-up takes about 310 ms), 1.4 s after it, every node
+    /// sending one application frame every 100 ms.
+    pub fn standard(n: usize, fault: RingFault) -> Self {
+        RingScenario {
+            ring_nodes: n,
+            plain_per_section: 1,
+            fault,
+            algorithm: Algorithm::Centralized,
+            relay_us: 2 * MS,
+            onset_us: 450 * MS,
+            after_us: 1_400 * MS,
+            app_period_us: 100 * MS,
+        }
+    }
+
+    fn shape(&self) -> Shape {
+        Shape {
+            plain: vec![self.plain_per_section; self.ring_nodes],
+        }
+    }
+}
+
+/// The Capital's King behind one object type (its City count is a const generic).
+trait Capital {
+    fn poll(&mut self, now: u64, post: &mut DrccPost, other: &mut dyn FnMut(&CkFrame));
+    fn phase(&self) -> KingPhase;
+    fn membership(&self) -> Membership;
+}
+
+impl<const N: usize> Capital for King<N> {
+    fn poll(&mut self, now: u64, post: &mut DrccPost, other: &mut dyn FnMut(&CkFrame)) {
+        self.poll_with(now, post, |f| other(f));
+    }
+    fn phase(&self) -> KingPhase {
+        King::phase(self)
+    }
+    fn membership(&self) -> Membership {
+        King::membership(self)
+    }
+}
+
+fn capital(cities: &[ExpectedCity]) -> Result<Box<dyn Capital>, String> {
+    let base = Envelope::standard(BASE).expect("an 11-bit base");
+    macro_rules! kings {
+        ($($n:literal)*) => {
+            match cities.len() {
+                $($n => {
+                    let c: [ExpectedCity; $n] = cities.try_into().expect("length checked");
+                    Ok(Box::new(King::<$n>::new(KingConfig::new(c, base)).map_err(|e| format!("{e:?}"))?))
+                })*
+                n => Err(format!("a kingdom of {n} Cities: the ring runs 2..=40")),
+            }
+        };
+    }
+    kings!(2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32 33 34 35 36 37 38 39 40)
+}
+
+/// The EAN a City reports (40 bits; the test Kingdom's product numbers).
+pub fn ean_of(address: u8) -> u64 {
+    0x00_4711_0000 + address as u64
+}
+
+/// One node's software.
+enum App {
+    /// Ring node 0: the King, then the REDCAN master.
+    King {
+        king: Box<dyn Capital>,
+        master: Option<Master>,
+    },
+    /// A City: its Mayor, and on a ring node the REDCAN slave.
+    City {
+        mayor: Box<Mayor>,
+        slave: Option<Slave>,
+        ring: bool,
+    },
+}
+
+/// What a run showed.
+#[derive(Clone, Debug, Default)]
+pub struct RingReport {
+    /// The King's start-up ended with membership agreed, at this time (µs).
+    pub kingdom_at: Option<u64>,
+    pub onset: u64,
+    /// First host that acted on the fault, and when (µs).
+    pub detected: Option<(usize, u64)>,
+    /// Last relay change applied (µs).
+    pub last_relay_change: Option<u64>,
+    /// Nodes that are working (not faulty, not physically cut off).
+    pub working: Vec<bool>,
+    /// Nodes on the reference node's bus at the end.
+    pub reachable: Vec<bool>,
+    /// Every working node on one bus.
+    pub no_partition: bool,
+    /// That bus is a line terminated once at each end.
+    pub single_termination: bool,
+    /// Application frames (sender, sequence) submitted after the onset that some
+    /// working, reachable node never received.
+    pub lost: Vec<(usize, u32)>,
+    /// Application frames submitted after the onset by working nodes.
+    pub app_frames: usize,
+    /// Relay states in force at the end (1 left, 2 right, 3 transparent).
+    pub final_modes: Vec<u8>,
+    /// Illegal RCM writes refused (ring contract §2).
+    pub refused: u32,
+}
+
+/// Builds and runs `s` on DRCC engine `kind` (the RCMs on the same kind).
+pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
+    let shape = s.shape();
+    let (n, total) = (shape.ring_nodes(), shape.nodes());
+    let engines = (0..total)
+        .map(|_| drcc_engine(kind))
+        .collect::<Result<Vec<Box<dyn DrccEngine>>, _>>()?;
+    let rcms = (0..n)
+        .map(|_| rcm_engine(kind.name()))
+        .collect::<Result<Vec<Box<dyn RcmEngine>>, _>>()?;
+    let config = HostConfig {
+        btr: ring_btr(),
+        redundancy: false,
+        policy: Policy::None,
+        dedup_window: 0,
+        ..HostConfig::default()
+    };
+    let mut sys = RingSystem::new(shape.clone(), engines, rcms, config, s.relay_us)?;
+    let onset = s.onset_us;
+    match s.fault {
+        RingFault::None => {}
+        RingFault::SectionOpen { section, point } => sys.add_section_faults(
+            SectionFaults {
+                open: vec![(section, point)],
+                short: vec![],
+            },
+            onset,
+        )?,
+        RingFault::SectionShort { section } => sys.add_section_faults(
+            SectionFaults {
+                open: vec![],
+                short: vec![section],
+            },
+            onset,
+        )?,
+        RingFault::Babbling { node } => {
+            sys.add_node_fault(NodeFault::Babbling { node, start: onset })?
+        }
+        RingFault::Crash { node } => sys.add_node_fault(NodeFault::Crash { node, start: onset })?,
+    }
+    if let RingFault::Babbling { node } | RingFault::Crash { node } = s.fault {
+        if node >= n {
+            return Err(format!("ring node {node}: the ring has ring nodes 0..{n}"));
+        }
+    }
+    let cities: Vec<ExpectedCity> = (1..total)
+        .map(|i| ExpectedCity {
+            address: i as u8,
+            ean: ean_of(i as u8),
+        })
+        .collect();
+    let timing = CentralTiming::paper(s.relay_us);
+    let mut apps: Vec<App> = Vec::with_capacity(total);
+    apps.push(App::King {
+        king: capital(&cities)?,
+        master: None,
+    });
+    for i in 1..total {
+        let mut cfg = MayorConfig::new(i as u8, ean_of(i as u8), 1000 + i as u64);
+        cfg.king_envelope = Envelope::standard(central::KING_ENVELOPE).expect("0");
+        apps.push(App::City {
+            mayor: Box::new(Mayor::new(cfg).map_err(|e| format!("{e:?}"))?),
+            slave: None,
+            ring: i < n,
+        });
+    }
+    let mut posts: Vec<PostState> = (0..total).map(|_| PostState::new(config)).collect();
+    let mut report = RingReport {
+        onset,
+        ..RingReport::default()
+    };
+    let mut app_seq = vec![0u32; total];
+    let mut sent: Vec<(usize, u32, u64)> = Vec::new();
+    let mut next_app = vec![0u64; total];
+    let end = onset + s.after_us;
+    let mut relays = sys.wiring().relays().to_vec();
+    let host_dead = |i: usize, now: u64| match s.fault {
+        RingFault::Babbling { node } | RingFault::Crash { node } => node == i && now >= onset,
+        _ => false,
+    };
+    while sys.cycle() < end {
+        sys.step();
+        let now = sys.cycle();
+        if sys.wiring().relays() != relays.as_slice() {
+            relays = sys.wiring().relays().to_vec();
+            if now >= onset {
+                report.last_relay_change = Some(now);
+            }
+        }
+        if now % CLOCKS_PER_BIT != 0 || now < MS {
+            continue;
+        }
+        for i in 0..total {
+            if host_dead(i, now) {
+                continue;
+            }
+            let node = sys.node_mut(i);
+            let mut post = DrccPost {
+                host: &mut node.host,
+                state: &mut posts[i],
+                now,
+            };
+            let mut other: Vec<Frame> = Vec::new();
+            let command = match &mut apps[i] {
+                App::King { king, master } => {
+                    if let Some(m) = master {
+                        while let Ok(f) = embedded_can::nb::Can::receive(&mut post) {
+                            other.push(f.0);
+                        }
+                        m.poll(now, &other, &mut post);
+                        if let Some(t) = m.detected_at {
+                            report.detected.get_or_insert((i, t));
+                        }
+                        m.command.take()
+                    } else {
+                        king.poll(now, &mut post, &mut |f| other.push(f.0));
+                        match king.phase() {
+                            KingPhase::Running if king.membership() == Membership::Agreed => {
+                                report.kingdom_at.get_or_insert(now);
+                                *master = Some(Master::new(n, total - 1, timing, now + 10 * MS));
+                            }
+                            KingPhase::Halted => {
+                                return Err(format!(
+                                    "the King's start-up did not agree: {:?}",
+                                    king.membership()
+                                ))
+                            }
+                            _ => {}
+                        }
+                        None
+                    }
+                }
+                App::City { mayor, slave, ring } => {
+                    mayor.poll_with(now, &mut post, |f| other.push(f.0));
+                    if *ring && slave.is_none() && mayor.action() == Some(Action::Run) {
+                        *slave = Some(Slave::new(i as u8, timing, now));
+                    }
+                    if let Some(sl) = slave {
+                        sl.poll(now, mayor, &other);
+                        if let Some(t) = sl.detected_at {
+                            if report.detected.is_none_or(|(_, d)| t < d) {
+                                report.detected = Some((i, t));
+                            }
+                        }
+                        sl.command.take()
+                    } else {
+                        None
+                    }
+                }
+            };
+            if let Some(c) = command {
+                sys.module_mut(i).command = Some(c);
+            }
+            // Application traffic once the kingdom runs.
+            if report.kingdom_at.is_some_and(|k| now >= k + 50 * MS) && now >= next_app[i] {
+                let seq = app_seq[i];
+                app_seq[i] += 1;
+                next_app[i] = now + s.app_period_us;
+                let f = Frame {
+                    id: APP_BASE + i as u32,
+                    ide: false,
+                    rtr: false,
+                    dlc: 4,
+                    data: [(seq >> 8) as u8, seq as u8, i as u8, 0x5A, 0, 0, 0, 0],
+                };
+                sys.node_mut(i).host.submit(now, f, 0);
+                sent.push((i, seq, now));
+            }
+        }
+        if now == onset && report.kingdom_at.is_none() {
+            return Err("the kingdom was not running at the fault onset".to_string());
+        }
+    }
+    judge(s, &sys, &shape, &sent, &mut report);
+    Ok(report)
+}
+
+/// The measures and properties of `ring_contract.md` §5.
+fn judge(
+    s: &RingScenario,
+    sys: &RingSystem,
+    shape: &Shape,
+    sent: &[(usize, u32, u64)],
+    r: &mut RingReport,
+) {
+    let (n, total) = (shape.ring_nodes(), shape.nodes());
+    let mut working = vec![true; total];
+    let cut_section = |sec: usize, w: &mut Vec<bool>| {
+        for k in 0..shape.plain[sec] {
+            w[shape.plain_node(sec, k)] = false;
+        }
+    };
+    match s.fault {
+        RingFault::None => {}
+        RingFault::SectionOpen { section, .. } | RingFault::SectionShort { section } => {
+            cut_section(section, &mut working)
+        }
+        RingFault::Babbling { node } => {
+            // Its relay holds it on both sections: they go with it.
+            working[node] = false;
+            cut_section((node + n - 1) % n, &mut working);
+            cut_section(node, &mut working);
+        }
+        RingFault::Crash { node } => working[node] = false,
+    }
+    let w = sys.wiring();
+    let reference = (0..n).find(|&i| working[i]).unwrap_or(0);
+    let bus = w.bus_of(reference);
+    r.reachable = (0..total).map(|i| w.bus_of(i) == bus).collect();
+    r.no_partition = (0..total).all(|i| !working[i] || r.reachable[i]);
+    r.single_termination = w.bus_shape(bus).well_formed();
+    r.final_modes = (0..n).map(|i| sys.module(i).outputs.mode).collect();
+    r.refused = (0..n).filter(|&i| sys.module(i).outputs.illegal).count() as u32;
+    let end = sys.cycle();
+    // Frames sent after the onset, early enough to be delivered by the end.
+    for &(from, seq, at) in sent {
+        if at < r.onset || at + 100 * MS > end || !working[from] || !r.reachable[from] {
+            continue;
+        }
+        r.app_frames += 1;
+        let id = APP_BASE + from as u32;
+        let missed = (0..total).any(|to| {
+            to != from
+                && working[to]
+                && r.reachable[to]
+                && !sys.node(to).host.received.iter().any(|x| {
+                    x.frame.id == id
+                        && x.frame.data[0] == (seq >> 8) as u8
+                        && x.frame.data[1] == seq as u8
+                })
+        });
+        if missed {
+            r.lost.push((from, seq));
+        }
+    }
+    r.working = working;
+}

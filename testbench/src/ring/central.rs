@@ -1,5 +1,6 @@
 //! REDCAN's centralized algorithm (seed 000 §3) on CanKingdom (seed 002), as
-//! `ring_contract.md` §6 makes it precise: the King (ring node 0) is the master.
+//! this module makes it precise (decisions listed in `docs/redcan.md`): the King
+//! (ring node 0) is the master.
 //!
 //! - **Heartbeat** every T1: the King's Page 1 to all Cities, base number "keep",
 //!   response Mayor's Page 0; every City's Mayor answers on its envelope.

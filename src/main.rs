@@ -115,6 +115,26 @@ enum Command {
         #[arg(long)]
         markdown: bool,
     },
+    /// REDCAN rings of DRCC nodes (seed 000) running the centralized algorithm on a
+    /// CanKingdom King (seed 002): `table` (every single fault at every position, as
+    /// Markdown) or one fault: `no_fault`, `section_open`, `section_short`,
+    /// `babbling_idiot`, `node_crash` (at `--position`).
+    Ring {
+        /// `table` or a fault.
+        what: String,
+        /// Ring sizes (ring nodes, 3..=10), comma-separated; one fault runs on the first.
+        #[arg(long, default_value = "3,6,10")]
+        nodes: String,
+        /// The faulty section or ring node (node faults: 1.., ring node 0 is the master).
+        #[arg(long, default_value_t = 1)]
+        position: usize,
+        /// Engine of the DRCC nodes and relay modules: model or verilator.
+        #[arg(long, default_value = "model")]
+        engine: String,
+        /// With `table`: rewrite the table in docs/redcan.md.
+        #[arg(long)]
+        markdown: bool,
+    },
     /// The CiA 701 DMR test plan (seed Figure 9, Tables 2 and 3) on four DRCC devices
     /// COS1, COS2, COS3, COM1: `table` (every row as Markdown), or one row: a fault
     /// marker `F1` .. `F10` (F1..F8: a device disconnected from the DCL / RCL; F9 / F10:
@@ -252,6 +272,13 @@ fn main() -> ExitCode {
             cosim,
             markdown,
         } => cli::star::run(&what, &engine, cosim.as_deref(), markdown),
+        Command::Ring {
+            what,
+            nodes,
+            position,
+            engine,
+            markdown,
+        } => cli::ring::run_ring(&what, &nodes, position, &engine, markdown),
         Command::Dmr {
             what,
             startup,

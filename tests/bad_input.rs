@@ -252,3 +252,47 @@ fn campaign_refuses_bad_options_and_never_overwrites_results() {
     );
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// `drcc ring`: a fault, a ring size, an engine, a position or an option that
+/// cannot apply is refused before anything runs.
+#[test]
+fn ring_refuses_bad_faults_sizes_and_positions() {
+    let d = scratch("ring");
+    refused(
+        &d,
+        &["ring", "bogus"],
+        "unknown ring fault \"bogus\"",
+        "give table, no_fault, section_open",
+    );
+    refused(
+        &d,
+        &["ring", "table", "--nodes", "3,11"],
+        "--nodes \"3,11\"",
+        "ring sizes of 3..=10",
+    );
+    refused(
+        &d,
+        &["ring", "no_fault", "--engine", "rust-hdl"],
+        "model or verilator",
+        "use --engine model or verilator",
+    );
+    refused(
+        &d,
+        &["ring", "no_fault", "--markdown"],
+        "--markdown rewrites the fault table",
+        "use it with `drcc ring table`",
+    );
+    refused(
+        &d,
+        &["ring", "section_open", "--nodes", "3", "--position", "7"],
+        "section 7",
+        "sections are 0..3",
+    );
+    refused(
+        &d,
+        &["ring", "babbling_idiot", "--nodes", "3", "--position", "5"],
+        "ring node 5",
+        "ring nodes 0..3",
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -5,6 +5,7 @@ pub mod campaign;
 pub mod dmr;
 pub mod generate;
 pub mod redundancy;
+pub mod ring;
 pub mod run;
 pub mod star;
 pub mod synth;

@@ -24,6 +24,12 @@
 //!   missing row, by symmetry). The master, at 2 T2 after its scan began, goes
 //!   transparent if the scan found a fault (joining the two arms) and keeps
 //!   holding both terminations otherwise; then the heartbeat resumes.
+//! - **Robustness found in the runs** (`docs/redcan.md`): a silent slave is
+//!   skipped once; the master flushes its queued frames before its relay changes
+//!   side and retells its "beyond" letters after its final decision; a polled
+//!   slave without a "beyond" letter within three poll timeouts connects back to
+//!   the side it was reached from (the end of its arm); a slave flushes its queue
+//!   on detection, so that its answers are not stuck behind application frames.
 
 use super::post::DrccPost;
 use cankingdom::king_pages::{BaseNumber, Initiation, KingLetter, KingPage};
@@ -56,6 +62,10 @@ pub struct CentralTiming {
     /// The relays' operate time plus a margin: the master waits this long after
     /// an answer (the slave's relay closing) or its own relay change before polling.
     pub settle: u64,
+    /// A plain node (no RCM, not in the heartbeat) is judged lost when the master
+    /// hears none of its frames for this long (seed §2: "information extracted
+    /// from normal message frames").
+    pub plain_silence: u64,
 }
 
 impl CentralTiming {
@@ -68,9 +78,16 @@ impl CentralTiming {
             // (8 at most, about 1 ms each at 125 kbit/s).
             poll_timeout: 20_000,
             settle: relay_us + 1_000,
+            plain_silence: 250_000,
         }
     }
 }
+
+/// The group address of the ring nodes' Cities: the heartbeat goes to them only.
+/// Every City answering each heartbeat would load a 20-node kingdom at 125 kbit/s
+/// with T1 = 30 ms to about 65 % and delay the last answers past 2 T1 (measured:
+/// a spurious detection in the fault-free 10-ring-node table row).
+pub const RING_GROUP: u8 = 0xF0;
 
 /// The King's Page 1 with base "keep" and "respond with Mayor's Page 0" to
 /// `address` (0 = all Cities): the heartbeat and the poll.
@@ -141,6 +158,7 @@ enum MState {
 #[derive(Clone, Debug)]
 pub struct Master {
     n: usize,
+    app_base: u32,
     timing: CentralTiming,
     state: MState,
     last_answer: Vec<u64>,
@@ -161,6 +179,8 @@ pub struct Master {
     /// (polls nobody on the old side acknowledged would reach the new side late,
     /// where a slave would take them for a poll): taken by [`Master::poll`].
     flush: bool,
+    /// Letters of this step, submitted after the flush.
+    outbox: Vec<Frame>,
     /// RCM command to write (taken by the runner).
     pub command: Option<u8>,
     /// When the master detected the fault (left `Run`).
@@ -170,9 +190,10 @@ pub struct Master {
 impl Master {
     /// A master of `n` ring nodes among `cities + 1` nodes (every node a City but
     /// the master), starting its heartbeat at `now`.
-    pub fn new(n: usize, cities: usize, timing: CentralTiming, now: u64) -> Self {
+    pub fn new(n: usize, cities: usize, app_base: u32, timing: CentralTiming, now: u64) -> Self {
         Master {
             n,
+            app_base,
             timing,
             state: MState::Run { next_hb: now },
             last_answer: vec![now; cities + 1],
@@ -186,6 +207,7 @@ impl Master {
             fault_found: false,
             told: Vec::new(),
             flush: false,
+            outbox: Vec::new(),
             // The fault-free configuration: the master holds both terminations.
             command: Some(CONNECT_LEFT),
             detected_at: None,
@@ -194,15 +216,29 @@ impl Master {
 
     /// One poll at `now` with the frames received since the last one.
     pub fn poll(&mut self, now: u64, rx: &[Frame], post: &mut DrccPost) {
-        self.step(now, rx, post);
+        self.step(now, rx);
+        // The flush first: the letters of this step are for the side the relay
+        // is still on (it changes `settle` later).
         if std::mem::take(&mut self.flush) {
             post.flush();
         }
+        for f in self.outbox.drain(..) {
+            post.host.submit(now, f, 0);
+        }
     }
 
-    fn step(&mut self, now: u64, rx: &[Frame], post: &mut DrccPost) {
+    fn step(&mut self, now: u64, rx: &[Frame]) {
         let t = self.timing;
         let answers: Vec<u8> = rx.iter().filter_map(answer_of).collect();
+        // A plain node is alive while its frames come (its answers, or any frame
+        // on an envelope of its own: the application's `app_base + node`).
+        for f in rx {
+            let from = f.id.checked_sub(self.app_base).map(|k| k as usize);
+            if let Some(i) = from.filter(|&i| i >= self.n && i < self.last_answer.len()) {
+                self.last_answer[i] = now;
+                self.expected[i] = true;
+            }
+        }
         for &a in &answers {
             if let Some(t) = self.last_answer.get_mut(a as usize) {
                 *t = now;
@@ -213,7 +249,12 @@ impl Master {
         match self.state {
             MState::Run { next_hb } => {
                 let late = (1..self.last_answer.len()).any(|i| {
-                    self.expected[i] && now.saturating_sub(self.last_answer[i]) > 2 * t.t1
+                    let limit = if i < self.n {
+                        2 * t.t1
+                    } else {
+                        t.plain_silence
+                    };
+                    self.expected[i] && now.saturating_sub(self.last_answer[i]) > limit
                 });
                 if late {
                     self.detected_at = Some(now);
@@ -221,7 +262,7 @@ impl Master {
                         until: self.last_hb + 2 * t.t1 + t.settle,
                     };
                 } else if now >= next_hb {
-                    post.host.submit(now, page1_letter(0), 0);
+                    self.outbox.push(page1_letter(RING_GROUP));
                     self.last_hb = now;
                     self.state = MState::Run {
                         next_hb: now + t.t1,
@@ -264,7 +305,7 @@ impl Master {
                 }
                 match sent {
                     None => {
-                        post.host.submit(now, page1_letter(next as u8), 0);
+                        self.outbox.push(page1_letter(next as u8));
                         self.state = MState::Scan {
                             dir_left,
                             next,
@@ -279,7 +320,7 @@ impl Master {
                             // The ring is whole: the last slave's right side is
                             // fine too, and the master holds both terminations.
                             self.reached[next] = true;
-                            post.host.submit(now, beyond_letter(next as u8), 0);
+                            self.outbox.push(beyond_letter(next as u8));
                             self.told.push(next as u8);
                             self.fault_found = false;
                             self.state = MState::Final { at: now };
@@ -291,7 +332,7 @@ impl Master {
                                 self.arm_right = true;
                             }
                             if let Some(prev) = last_reached {
-                                post.host.submit(now, beyond_letter(prev as u8), 0);
+                                self.outbox.push(beyond_letter(prev as u8));
                                 self.told.push(prev as u8);
                             }
                             self.advance(dir_left, next, now + t.settle, 0, Some(next));
@@ -327,9 +368,8 @@ impl Master {
             }
             MState::Retell { at } => {
                 if now >= at {
-                    for &k in &self.told {
-                        post.host.submit(now, beyond_letter(k), 0);
-                    }
+                    let told: Vec<Frame> = self.told.iter().map(|&k| beyond_letter(k)).collect();
+                    self.outbox.extend(told);
                     // The heartbeat resumes once every slave has decided: a King's
                     // Letter before that would count as a poll.
                     self.last_answer
@@ -341,6 +381,11 @@ impl Master {
                 }
             }
         }
+    }
+
+    /// Whether the heartbeat runs (no fault being handled).
+    pub fn running(&self) -> bool {
+        matches!(self.state, MState::Run { .. })
     }
 
     fn start_scan(&mut self, dir_left: bool, now: u64) {
@@ -467,6 +512,11 @@ pub struct Slave {
     left_ok: bool,
     right_ok: bool,
     reached_from_left: Option<bool>,
+    /// Polled and transparent since, waiting for the "beyond" letter.
+    waiting_beyond: Option<u64>,
+    /// On detection the slave gives up what it queued, so that its answer to a
+    /// poll leaves before its relay closes (taken by the runner).
+    pub flush: bool,
     /// RCM command to write (taken by the runner).
     pub command: Option<u8>,
     /// When this slave detected the fault.
@@ -485,9 +535,16 @@ impl Slave {
             left_ok: false,
             right_ok: false,
             reached_from_left: None,
+            waiting_beyond: None,
+            flush: false,
             command: None,
             detected_at: None,
         }
+    }
+
+    /// Whether the slave is not handling a fault.
+    pub fn running(&self) -> bool {
+        matches!(self.state, SState::Run { .. })
     }
 
     fn set(&mut self, mode: u8) {
@@ -513,6 +570,7 @@ impl Slave {
                     self.left_ok = false;
                     self.right_ok = false;
                     self.reached_from_left = None;
+                    self.flush = true;
                     self.set(CONNECT_LEFT);
                     self.state = SState::Recovery {
                         since: now,
@@ -530,6 +588,7 @@ impl Slave {
                         self.right_ok = true;
                     }
                     self.reached_from_left = Some(from_left);
+                    self.waiting_beyond = Some(now);
                     self.set(TRANSPARENT);
                 }
                 let beyond = rx.iter().any(|f| {
@@ -540,10 +599,26 @@ impl Slave {
                         && f.data[1] == 1
                 });
                 if beyond {
+                    self.waiting_beyond = None;
                     match self.reached_from_left {
                         Some(true) => self.right_ok = true,
                         Some(false) => self.left_ok = true,
                         None => {}
+                    }
+                }
+                // No "beyond" letter within three poll timeouts: the master found
+                // no slave past this one, which is the end of its arm. Its relay,
+                // closed by the poll, may have joined the faulty section to the
+                // arm (a short kills the arm's bus): connect back to the side it
+                // was reached from at once, not at T2.
+                if let Some(at) = self.waiting_beyond {
+                    if now >= at + 3 * t.poll_timeout {
+                        self.waiting_beyond = None;
+                        self.set(if self.reached_from_left == Some(false) {
+                            CONNECT_RIGHT
+                        } else {
+                            CONNECT_LEFT
+                        });
                     }
                 }
                 if decided == 0 && now >= since + t.t2 {

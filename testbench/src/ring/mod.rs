@@ -7,6 +7,7 @@
 
 pub mod central;
 pub mod post;
+pub mod table;
 
 use crate::dual::drcc_engine;
 use crate::engines::EngineKind;
@@ -201,6 +202,8 @@ pub struct RingReport {
     pub final_modes: Vec<u8>,
     /// Illegal RCM writes refused (ring contract §2).
     pub refused: u32,
+    /// Every frame each node's host popped, with the clock (µs) it was popped at.
+    pub received: Vec<Vec<(u64, Frame)>>,
 }
 
 /// Builds and runs `s` on DRCC engine `kind` (the RCMs on the same kind).
@@ -254,7 +257,8 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
             ean: ean_of(i as u8),
         })
         .collect();
-    let timing = CentralTiming::paper(s.relay_us);
+    let mut timing = CentralTiming::paper(s.relay_us);
+    timing.plain_silence = s.app_period_us * 5 / 2;
     let mut apps: Vec<App> = Vec::with_capacity(total);
     apps.push(App::King {
         king: capital(&cities)?,
@@ -263,6 +267,9 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
     for i in 1..total {
         let mut cfg = MayorConfig::new(i as u8, ean_of(i as u8), 1000 + i as u64);
         cfg.king_envelope = Envelope::standard(central::KING_ENVELOPE).expect("0");
+        if i < n {
+            cfg.groups[0] = central::RING_GROUP;
+        }
         apps.push(App::City {
             mayor: Box::new(Mayor::new(cfg).map_err(|e| format!("{e:?}"))?),
             slave: None,
@@ -322,7 +329,13 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
                         match king.phase() {
                             KingPhase::Running if king.membership() == Membership::Agreed => {
                                 report.kingdom_at.get_or_insert(now);
-                                *master = Some(Master::new(n, total - 1, timing, now + 10 * MS));
+                                *master = Some(Master::new(
+                                    n,
+                                    total - 1,
+                                    APP_BASE,
+                                    timing,
+                                    now + 10 * MS,
+                                ));
                             }
                             KingPhase::Halted => {
                                 return Err(format!(
@@ -342,6 +355,9 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
                     }
                     if let Some(sl) = slave {
                         sl.poll(now, mayor, &other);
+                        if std::mem::take(&mut sl.flush) {
+                            post.flush();
+                        }
                         if let Some(t) = sl.detected_at {
                             if report.detected.is_none_or(|(_, d)| t < d) {
                                 report.detected = Some((i, t));
@@ -356,8 +372,17 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
             if let Some(c) = command {
                 sys.module_mut(i).command = Some(c);
             }
-            // Application traffic once the kingdom runs.
-            if report.kingdom_at.is_some_and(|k| now >= k + 50 * MS) && now >= next_app[i] {
+            // Application traffic once the kingdom runs; a ring node holds its
+            // application while it rebuilds the ring (its frames could not get
+            // through, and would queue ahead of its answers to the master).
+            let holding = match &apps[i] {
+                App::King { master, .. } => master.as_ref().is_some_and(|m| !m.running()),
+                App::City { slave, .. } => slave.as_ref().is_some_and(|s| !s.running()),
+            };
+            if report.kingdom_at.is_some_and(|k| now >= k + 50 * MS)
+                && now >= next_app[i]
+                && !holding
+            {
                 let seq = app_seq[i];
                 app_seq[i] += 1;
                 next_app[i] = now + s.app_period_us;
@@ -439,4 +464,14 @@ fn judge(
         }
     }
     r.working = working;
+    r.received = (0..total)
+        .map(|i| {
+            sys.node(i)
+                .host
+                .received
+                .iter()
+                .map(|x| (x.cycle, x.frame))
+                .collect()
+        })
+        .collect();
 }

@@ -131,6 +131,9 @@ enum Command {
         /// Engine of the DRCC nodes and relay modules: model or verilator.
         #[arg(long, default_value = "model")]
         engine: String,
+        /// REDCAN algorithm: centralized, distributed, or both (one fault: the first).
+        #[arg(long, default_value = "both")]
+        algorithm: String,
         /// With `table`: rewrite the table in docs/redcan.md.
         #[arg(long)]
         markdown: bool,
@@ -277,8 +280,9 @@ fn main() -> ExitCode {
             nodes,
             position,
             engine,
+            algorithm,
             markdown,
-        } => cli::ring::run_ring(&what, &nodes, position, &engine, markdown),
+        } => cli::ring::run_ring(&what, &nodes, position, &engine, &algorithm, markdown),
         Command::Dmr {
             what,
             startup,

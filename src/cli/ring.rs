@@ -7,7 +7,7 @@
 
 use super::{project_root, rewrite_between_atomic, CliError, CliResult};
 use drcc_testbench::ring::table::{fault_from_name, ring_table, row, HEADER};
-use drcc_testbench::ring::{run, RingScenario};
+use drcc_testbench::ring::{run, Algorithm, RingScenario};
 use drcc_testbench::EngineKind;
 
 /// Ring sizes from `3,6,10`: each 3..=10.
@@ -27,6 +27,7 @@ pub fn run_ring(
     nodes: &str,
     position: usize,
     engine_name: &str,
+    algorithm: &str,
     markdown: bool,
 ) -> CliResult {
     let kind = engine_name.parse::<EngineKind>().map_err(CliError::Error)?;
@@ -37,6 +38,16 @@ pub fn run_ring(
         ));
     }
     let sizes = sizes(nodes)?;
+    let algorithms = match algorithm {
+        "both" => vec![Algorithm::Centralized, Algorithm::Distributed],
+        "centralized" => vec![Algorithm::Centralized],
+        "distributed" => vec![Algorithm::Distributed],
+        other => {
+            return Err(CliError::Error(format!(
+                "--algorithm {other:?}: give centralized, distributed or both"
+            )))
+        }
+    };
     if markdown && what != "table" {
         return Err(CliError::Error(
             "--markdown rewrites the fault table: use it with `drcc ring table`".to_string(),
@@ -49,7 +60,7 @@ pub fn run_ring(
             )?),
             false => None,
         };
-        let table = ring_table(&sizes, kind).map_err(CliError::Error)?;
+        let table = ring_table(&sizes, &algorithms, kind).map_err(CliError::Error)?;
         print!("{table}");
         if let Some(root) = root {
             let paths = [root.join("docs/redcan.md")];
@@ -62,7 +73,10 @@ pub fn run_ring(
     }
     let n = sizes[0];
     let fault = fault_from_name(what, position).map_err(CliError::Error)?;
-    let s = RingScenario::standard(n, fault);
+    let s = match algorithms[0] {
+        Algorithm::Centralized => RingScenario::standard(n, fault),
+        Algorithm::Distributed => RingScenario::distributed(n, fault),
+    };
     let r = run(&s, kind).map_err(CliError::Error)?;
     print!("{HEADER}{}", row(&s, &r));
     if !(r.no_partition && r.single_termination) {

@@ -6,6 +6,7 @@
 //! microsecond and the hosts' clocks (`now_us`) are the cycle count.
 
 pub mod central;
+pub mod distributed;
 pub mod post;
 pub mod table;
 
@@ -15,6 +16,7 @@ use cankingdom::king::{ExpectedCity, KingPhase, Membership};
 use cankingdom::king_pages::Action;
 use cankingdom::{Envelope, King, KingConfig, Mayor, MayorConfig};
 use central::{CentralTiming, Master, Slave, BASE};
+use distributed::{DistNode, DistTiming};
 use drcc_cosim::dual::host::{HostConfig, Policy};
 use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::rcm::{rcm_engine, RcmEngine};
@@ -74,6 +76,8 @@ impl RingFault {
 pub enum Algorithm {
     /// Seed §3 on a CanKingdom King (`central`).
     Centralized,
+    /// Seed §4 as ring contract §6 schedules it (`distributed`).
+    Distributed,
 }
 
 /// One ring run.
@@ -110,6 +114,16 @@ impl RingScenario {
             onset_us: 450 * MS,
             after_us: 1_400 * MS,
             app_period_us: 100 * MS,
+        }
+    }
+
+    /// [`RingScenario::standard`] with the distributed algorithm, which recovers
+    /// in well under T2: 600 ms after the onset suffice.
+    pub fn distributed(n: usize, fault: RingFault) -> Self {
+        RingScenario {
+            algorithm: Algorithm::Distributed,
+            after_us: 600 * MS,
+            ..Self::standard(n, fault)
         }
     }
 
@@ -166,11 +180,13 @@ enum App {
     King {
         king: Box<dyn Capital>,
         master: Option<Master>,
+        dist: Option<DistNode>,
     },
     /// A City: its Mayor, and on a ring node the REDCAN slave.
     City {
         mayor: Box<Mayor>,
         slave: Option<Slave>,
+        dist: Option<DistNode>,
         ring: bool,
     },
 }
@@ -259,10 +275,13 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
         .collect();
     let mut timing = CentralTiming::paper(s.relay_us);
     timing.plain_silence = s.app_period_us * 5 / 2;
+    let mut dist_timing = DistTiming::standard(s.relay_us);
+    dist_timing.plain_silence = s.app_period_us * 5 / 2;
     let mut apps: Vec<App> = Vec::with_capacity(total);
     apps.push(App::King {
         king: capital(&cities)?,
         master: None,
+        dist: None,
     });
     for i in 1..total {
         let mut cfg = MayorConfig::new(i as u8, ean_of(i as u8), 1000 + i as u64);
@@ -273,6 +292,7 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
         apps.push(App::City {
             mayor: Box::new(Mayor::new(cfg).map_err(|e| format!("{e:?}"))?),
             slave: None,
+            dist: None,
             ring: i < n,
         });
     }
@@ -314,7 +334,13 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
             };
             let mut other: Vec<Frame> = Vec::new();
             let command = match &mut apps[i] {
-                App::King { king, master } => {
+                App::King { dist: Some(d), .. } => {
+                    while let Ok(f) = embedded_can::nb::Can::receive(&mut post) {
+                        other.push(f.0);
+                    }
+                    dist_step(d, now, &other, &mut post, i, &mut report)
+                }
+                App::King { king, master, dist } => {
                     if let Some(m) = master {
                         while let Ok(f) = embedded_can::nb::Can::receive(&mut post) {
                             other.push(f.0);
@@ -329,13 +355,27 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
                         match king.phase() {
                             KingPhase::Running if king.membership() == Membership::Agreed => {
                                 report.kingdom_at.get_or_insert(now);
-                                *master = Some(Master::new(
-                                    n,
-                                    total - 1,
-                                    APP_BASE,
-                                    timing,
-                                    now + 10 * MS,
-                                ));
+                                match s.algorithm {
+                                    Algorithm::Centralized => {
+                                        *master = Some(Master::new(
+                                            n,
+                                            total - 1,
+                                            APP_BASE,
+                                            timing,
+                                            now + 10 * MS,
+                                        ))
+                                    }
+                                    Algorithm::Distributed => {
+                                        *dist = Some(DistNode::new(
+                                            0,
+                                            n,
+                                            total,
+                                            APP_BASE,
+                                            dist_timing,
+                                            now + 10 * MS,
+                                        ))
+                                    }
+                                }
                             }
                             KingPhase::Halted => {
                                 return Err(format!(
@@ -348,12 +388,27 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
                         None
                     }
                 }
-                App::City { mayor, slave, ring } => {
+                App::City {
+                    mayor,
+                    slave,
+                    dist,
+                    ring,
+                } => {
                     mayor.poll_with(now, &mut post, |f| other.push(f.0));
-                    if *ring && slave.is_none() && mayor.action() == Some(Action::Run) {
-                        *slave = Some(Slave::new(i as u8, timing, now));
+                    let started = slave.is_some() || dist.is_some();
+                    if *ring && !started && mayor.action() == Some(Action::Run) {
+                        match s.algorithm {
+                            Algorithm::Centralized => {
+                                *slave = Some(Slave::new(i as u8, timing, now))
+                            }
+                            Algorithm::Distributed => {
+                                *dist = Some(DistNode::new(i, n, total, APP_BASE, dist_timing, now))
+                            }
+                        }
                     }
-                    if let Some(sl) = slave {
+                    if let Some(d) = dist {
+                        dist_step(d, now, &other, &mut post, i, &mut report)
+                    } else if let Some(sl) = slave {
                         sl.poll(now, mayor, &other);
                         if std::mem::take(&mut sl.flush) {
                             post.flush();
@@ -376,8 +431,14 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
             // application while it rebuilds the ring (its frames could not get
             // through, and would queue ahead of its answers to the master).
             let holding = match &apps[i] {
-                App::King { master, .. } => master.as_ref().is_some_and(|m| !m.running()),
-                App::City { slave, .. } => slave.as_ref().is_some_and(|s| !s.running()),
+                App::King { master, dist, .. } => {
+                    master.as_ref().is_some_and(|m| !m.running())
+                        || dist.as_ref().is_some_and(|d| !d.running())
+                }
+                App::City { slave, dist, .. } => {
+                    slave.as_ref().is_some_and(|s| !s.running())
+                        || dist.as_ref().is_some_and(|d| !d.running())
+                }
             };
             if report.kingdom_at.is_some_and(|k| now >= k + 50 * MS)
                 && now >= next_app[i]
@@ -403,6 +464,31 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
     }
     judge(s, &sys, &shape, &sent, &mut report);
     Ok(report)
+}
+
+/// One poll of a node's distributed REDCAN: its letters (after a flush when it
+/// has just detected), its detection time, its RCM command.
+fn dist_step(
+    d: &mut DistNode,
+    now: u64,
+    rx: &[Frame],
+    post: &mut DrccPost,
+    i: usize,
+    report: &mut RingReport,
+) -> Option<u8> {
+    d.poll(now, rx);
+    if std::mem::take(&mut d.flush) {
+        post.flush();
+    }
+    for f in d.outbox.drain(..) {
+        post.host.submit(now, f, 0);
+    }
+    if let Some(t) = d.detected_at {
+        if report.detected.is_none_or(|(_, e)| t < e) {
+            report.detected = Some((i, t));
+        }
+    }
+    d.command.take()
 }
 
 /// The measures and properties of `ring_contract.md` §5.

@@ -303,6 +303,12 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
     };
     let mut app_seq = vec![0u32; total];
     let mut sent: Vec<(usize, u32, u64)> = Vec::new();
+    // Each node's application period starts at its own phase (nodes do not share
+    // a clock): twenty frames submitted in the same microsecond would queue the
+    // last node's alive letter behind its own application frame for ~16 ms.
+    let app_phase: Vec<u64> = (0..total)
+        .map(|i| i as u64 * s.app_period_us / total as u64)
+        .collect();
     let mut next_app = vec![0u64; total];
     let end = onset + s.after_us;
     let mut relays = sys.wiring().relays().to_vec();
@@ -440,7 +446,9 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
                         || dist.as_ref().is_some_and(|d| !d.running())
                 }
             };
-            if report.kingdom_at.is_some_and(|k| now >= k + 50 * MS)
+            if report
+                .kingdom_at
+                .is_some_and(|k| now >= k + 50 * MS + app_phase[i])
                 && now >= next_app[i]
                 && !holding
             {

@@ -21,6 +21,21 @@ pub struct Frame {
 }
 
 impl Frame {
+    /// A base-format data frame with identifier `id` (11 bits) carrying `data`
+    /// (at most 8 bytes; the DLC is its length).
+    pub fn base(id: u32, data: &[u8]) -> Frame {
+        let n = data.len().min(8);
+        let mut d = [0u8; 8];
+        d[..n].copy_from_slice(&data[..n]);
+        Frame {
+            id: id & 0x7FF,
+            ide: false,
+            rtr: false,
+            dlc: n as u8,
+            data: d,
+        }
+    }
+
     /// Number of data bytes on the bus: 0 for remote frames, else min(dlc, 8).
     pub fn data_len(&self) -> usize {
         if self.rtr {
@@ -80,5 +95,27 @@ impl std::fmt::Display for Frame {
             }
             Ok(())
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Frame;
+
+    #[test]
+    fn a_base_frame_carries_its_bytes_with_their_count_as_dlc() {
+        let f = Frame::base(0x123, &[0xDE, 0xAD]);
+        assert_eq!(
+            f,
+            Frame {
+                id: 0x123,
+                ide: false,
+                rtr: false,
+                dlc: 2,
+                data: [0xDE, 0xAD, 0, 0, 0, 0, 0, 0],
+            }
+        );
+        // At most 8 bytes: a classical CAN data field.
+        assert_eq!(Frame::base(0x7FF, &[1; 10]).dlc, 8);
     }
 }

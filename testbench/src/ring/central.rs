@@ -2,8 +2,9 @@
 //! this module makes it precise (decisions listed in `docs/redcan.md`): the King
 //! (ring node 0) is the master.
 //!
-//! - **Heartbeat** every T1: the King's Page 1 to all Cities, base number "keep",
-//!   response Mayor's Page 0; every City's Mayor answers on its envelope.
+//! - **Heartbeat** every T1: the King's Page 1 to the ring nodes' Cities (group
+//!   `RING_GROUP`), base number "keep", response Mayor's Page 0; each answers on
+//!   its envelope. Plain nodes are watched through their own frames.
 //! - **Detection**: a slave that hears no King's Letter for 2 T1 connects left,
 //!   clears its flags and starts its T2 clock; the master that misses a ring
 //!   slave's answer for 2 T1 stops the heartbeat (the paper's signal), so the
@@ -101,24 +102,12 @@ pub fn page1_letter(address: u8) -> Frame {
     }
     .encode()
     .expect("a valid King's Page 1");
-    Frame {
-        id: KING_ENVELOPE,
-        ide: false,
-        rtr: false,
-        dlc: 8,
-        data: page,
-    }
+    Frame::base(KING_ENVELOPE, &page)
 }
 
 /// The REDCAN letter "the node beyond you answered", to City `address`.
 pub fn beyond_letter(address: u8) -> Frame {
-    Frame {
-        id: REDCAN_ENVELOPE,
-        ide: false,
-        rtr: false,
-        dlc: 2,
-        data: [address, 1, 0, 0, 0, 0, 0, 0],
-    }
+    Frame::base(REDCAN_ENVELOPE, &[address, 1])
 }
 
 /// The City address that answered with `f` (a Mayor's Page on `BASE + address`).

@@ -58,18 +58,6 @@ impl DistTiming {
     }
 }
 
-fn letter(id: u32, data: &[u8]) -> Frame {
-    let mut d = [0u8; 8];
-    d[..data.len()].copy_from_slice(data);
-    Frame {
-        id,
-        ide: false,
-        rtr: false,
-        dlc: data.len() as u8,
-        data: d,
-    }
-}
-
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum State {
     Run,
@@ -177,7 +165,8 @@ impl DistNode {
         self.right_ok = false;
         self.end_heard = false;
         self.flush = true;
-        self.outbox.push(letter(DETECT_ENVELOPE, &[self.i as u8]));
+        self.outbox
+            .push(Frame::base(DETECT_ENVELOPE, &[self.i as u8]));
         self.state = State::Rebuild { t0: now };
     }
 
@@ -215,7 +204,7 @@ impl DistNode {
                             }
                         }
                         self.outbox
-                            .push(letter(LINK_ENVELOPE, &[REPLY, i as u8, from as u8]));
+                            .push(Frame::base(LINK_ENVELOPE, &[REPLY, i as u8, from as u8]));
                     }
                     REPLY if to == i => match self.mode {
                         CONNECT_RIGHT => self.right_ok = true,
@@ -251,7 +240,8 @@ impl DistNode {
                     {
                         // An end announces itself until the holders decide.
                         self.last_probe = now;
-                        self.outbox.push(letter(LINK_ENVELOPE, &[END, i as u8, 0]));
+                        self.outbox
+                            .push(Frame::base(LINK_ENVELOPE, &[END, i as u8, 0]));
                     }
                 }
                 if self.state == State::Run {
@@ -268,7 +258,8 @@ impl DistNode {
                     }
                     if now >= self.next_alive {
                         self.next_alive = now + self.t.ta;
-                        self.outbox.push(letter(ALIVE_BASE + i as u32, &[i as u8]));
+                        self.outbox
+                            .push(Frame::base(ALIVE_BASE + i as u32, &[i as u8]));
                     }
                 }
             }
@@ -290,7 +281,7 @@ impl DistNode {
                     {
                         self.last_probe = now;
                         self.outbox
-                            .push(letter(LINK_ENVELOPE, &[PROBE, i as u8, right as u8]));
+                            .push(Frame::base(LINK_ENVELOPE, &[PROBE, i as u8, right as u8]));
                     }
                 } else if p == 3 {
                     // A silent neighbour: test for the node beyond it.
@@ -302,8 +293,10 @@ impl DistNode {
                             {
                                 self.last_probe = now;
                                 let beyond = (i + 2) % n;
-                                self.outbox
-                                    .push(letter(LINK_ENVELOPE, &[PROBE, i as u8, beyond as u8]));
+                                self.outbox.push(Frame::base(
+                                    LINK_ENVELOPE,
+                                    &[PROBE, i as u8, beyond as u8],
+                                ));
                             }
                         }
                         (false, true) => {
@@ -312,8 +305,10 @@ impl DistNode {
                             {
                                 self.last_probe = now;
                                 let beyond = (i + n - 2) % n;
-                                self.outbox
-                                    .push(letter(LINK_ENVELOPE, &[PROBE, i as u8, beyond as u8]));
+                                self.outbox.push(Frame::base(
+                                    LINK_ENVELOPE,
+                                    &[PROBE, i as u8, beyond as u8],
+                                ));
                             }
                         }
                         (false, false) => self.set(CONNECT_LEFT),

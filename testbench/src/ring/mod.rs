@@ -455,13 +455,10 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
                 let seq = app_seq[i];
                 app_seq[i] += 1;
                 next_app[i] = now + s.app_period_us;
-                let f = Frame {
-                    id: APP_BASE + i as u32,
-                    ide: false,
-                    rtr: false,
-                    dlc: 4,
-                    data: [(seq >> 8) as u8, seq as u8, i as u8, 0x5A, 0, 0, 0, 0],
-                };
+                let f = Frame::base(
+                    APP_BASE + i as u32,
+                    &[(seq >> 8) as u8, seq as u8, i as u8, 0x5A],
+                );
                 sys.node_mut(i).host.submit(now, f, 0);
                 sent.push((i, seq, now));
             }

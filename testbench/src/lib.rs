@@ -19,6 +19,7 @@ pub mod ring;
 pub mod run;
 pub mod scenario;
 pub mod star;
+pub mod tools;
 
 pub use engines::EngineKind;
 pub use scenario::{Scenario, ScenarioError};

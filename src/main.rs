@@ -54,6 +54,8 @@ enum Command {
         /// Write the bus-only trace (1-bit signals, for sigrok / PulseView).
         #[arg(long, value_name = "FILE")]
         bus_vcd: Option<PathBuf>,
+        #[command(flatten)]
+        traffic: cli::traffic::TrafficArgs,
     },
     /// Run a scenario on two engines in lock step and compare every clock.
     Cosim {
@@ -65,6 +67,8 @@ enum Command {
         /// Where to write VCDs of both engines around a divergence.
         #[arg(long, value_name = "DIR")]
         vcd_dir: Option<PathBuf>,
+        #[command(flatten)]
+        traffic: cli::traffic::TrafficArgs,
     },
     /// Compare two VCD files and report the first difference.
     WaveDiff {
@@ -97,6 +101,8 @@ enum Command {
         /// (with `all`: one file per fault, named after it).
         #[arg(long, value_name = "FILE")]
         vcd: Option<PathBuf>,
+        #[command(flatten)]
+        traffic: cli::traffic::TrafficArgs,
     },
     /// DRCC nodes on a ReCANcentrate replicated star of two coupled hubs: `table` (the
     /// fault scenarios as Markdown), a fault (`uplink_stuck_dominant`, `uplink_bit_flipping`,
@@ -114,6 +120,8 @@ enum Command {
         /// With `table`: rewrite the table in README.md and docs/hub.md.
         #[arg(long)]
         markdown: bool,
+        #[command(flatten)]
+        traffic: cli::traffic::TrafficArgs,
     },
     /// REDCAN rings of DRCC nodes (seed 000) running the centralized algorithm on a
     /// CanKingdom King (seed 002): `table` (every single fault at every position, as
@@ -170,6 +178,47 @@ enum Command {
         /// a line fault sooner (less extra latency) and tolerates less skew.
         #[arg(long, value_name = "N")]
         limit: Option<u8>,
+    },
+    /// Serve a simulated network over the socketcand protocol (python-can's
+    /// `socketcand` interface and other tools): every node is a bus named after it.
+    /// Without a scenario: four DRCC nodes in redundancy mode on a dual bus
+    /// (`node0`..`node3`). Ctrl-C stops it. docs/serve.md describes the protocol,
+    /// the `< fault ... >` command and the pacing.
+    Serve {
+        /// Scenario file (TOML): serve its bus of CAN channels, with its frames and
+        /// faults as scheduled.
+        scenario: Option<PathBuf>,
+        /// TCP port (socketcand's default: 29536).
+        #[arg(long, default_value_t = 29536)]
+        port: u16,
+        /// Address to listen on (default: localhost only).
+        #[arg(long, default_value = "127.0.0.1", value_name = "ADDR")]
+        listen: String,
+        /// Without a scenario: `dual` (DRCC nodes on a dual bus) or `star` (DRCC nodes
+        /// on a ReCANcentrate replicated star).
+        #[arg(long, default_value = "dual")]
+        topology: String,
+        /// Nodes of the dual bus (2..=32).
+        #[arg(long, default_value_t = 4)]
+        nodes: usize,
+        /// Engine: model or verilator (a scenario's bus also: rust-hdl).
+        #[arg(long, default_value = "model")]
+        engine: String,
+        /// Pace simulated time with the wall clock (as far as the engine keeps up).
+        #[arg(long, conflicts_with = "fast")]
+        realtime: bool,
+        /// Run as fast as the engine allows (the default).
+        #[arg(long)]
+        fast: bool,
+        /// Announce the buses with socketcand's UDP discovery beacon (port 42000; to
+        /// 127.0.0.1 when listening on localhost, else broadcast).
+        #[arg(long)]
+        beacon: bool,
+        /// Stop after this many seconds of wall time.
+        #[arg(long, value_name = "SECONDS")]
+        stop_after: Option<f64>,
+        #[command(flatten)]
+        traffic: cli::traffic::TrafficArgs,
     },
     /// Random fault campaigns: `drcc campaign [options]` runs one (shard of a)
     /// campaign, `drcc campaign merge FILE...` sums result files, `drcc campaign
@@ -248,12 +297,20 @@ fn main() -> ExitCode {
             engine,
             vcd,
             bus_vcd,
-        } => cli::run::sim(&scenario, &engine, vcd.as_deref(), bus_vcd.as_deref()),
+            traffic,
+        } => cli::run::sim(
+            &scenario,
+            &engine,
+            vcd.as_deref(),
+            bus_vcd.as_deref(),
+            &traffic,
+        ),
         Command::Cosim {
             scenario,
             engines,
             vcd_dir,
-        } => cli::run::cosim(&scenario, &engines, vcd_dir),
+            traffic,
+        } => cli::run::cosim(&scenario, &engines, vcd_dir, &traffic),
         Command::WaveDiff { a, b, signals } => cli::wave::diff(&a, &b, &signals),
         Command::Demo => cli::run::demo(),
         Command::Redundancy {
@@ -262,19 +319,46 @@ fn main() -> ExitCode {
             cosim,
             policy,
             vcd,
+            traffic,
         } => cli::redundancy::run(
             &what,
             &engine,
             cosim.as_deref(),
             policy.as_deref(),
             vcd.as_deref(),
+            &traffic,
         ),
         Command::Star {
             what,
             engine,
             cosim,
             markdown,
-        } => cli::star::run(&what, &engine, cosim.as_deref(), markdown),
+            traffic,
+        } => cli::star::run(&what, &engine, cosim.as_deref(), markdown, &traffic),
+        Command::Serve {
+            scenario,
+            port,
+            listen,
+            topology,
+            nodes,
+            engine,
+            realtime,
+            fast: _,
+            beacon,
+            stop_after,
+            traffic,
+        } => cli::serve::run(cli::serve::ServeArgs {
+            scenario,
+            port,
+            listen,
+            topology,
+            nodes,
+            engine,
+            realtime,
+            beacon,
+            stop_after,
+            traffic,
+        }),
         Command::Ring {
             what,
             nodes,

@@ -141,6 +141,105 @@ fn redundancy_options_that_would_be_ignored_are_refused() {
     let _ = std::fs::remove_dir_all(&d);
 }
 
+/// `--candump` and `--pcap` (`tests/traffic.rs` reads what they write): never over
+/// the scenario or each other, a directory that cannot be made is named with its
+/// option, commands that run many scenarios refuse them; a good run leaves both
+/// files and no temporary one.
+#[test]
+fn traffic_exports_never_replace_an_input_and_need_a_writable_place() {
+    let d = scratch("traffic");
+    let input = "that is the input x.toml";
+    let new_name = "give another file name";
+    refused(
+        &d,
+        &["sim", "x.toml", "--candump", "x.toml"],
+        input,
+        new_name,
+    );
+    refused(
+        &d,
+        &["sim", "x.toml", "--pcap", "./x.toml"],
+        "that is the input",
+        new_name,
+    );
+    let cosim = [
+        "cosim",
+        "x.toml",
+        "--engines",
+        "model,model",
+        "--candump",
+        "x.toml",
+    ];
+    refused(&d, &cosim, input, new_name);
+    let own = "each output needs a file of its own";
+    let both = [
+        "sim",
+        "x.toml",
+        "--candump",
+        "t.log",
+        "--pcap",
+        "sub/../t.log",
+    ];
+    refused(&d, &both, "--candump and --pcap both name", own);
+    let vcd = ["sim", "x.toml", "--vcd", "t.vcd", "--candump", "t.vcd"];
+    refused(&d, &vcd, "--vcd and --candump both name", own);
+    let dual = [
+        "redundancy",
+        "cut_a",
+        "--candump",
+        "t.log",
+        "--pcap",
+        "t.log",
+    ];
+    refused(&d, &dual, "--candump and --pcap both name", own);
+    // x.toml is a file, so no directory x.toml/ can be made
+    let writable = "give a file in a writable directory";
+    for args in [
+        &["sim", "x.toml", "--candump", "x.toml/t.log"][..],
+        &["redundancy", "paper", "--candump", "x.toml/t.log"],
+        &["star", "no_fault", "--candump", "x.toml/t.log"],
+    ] {
+        refused(
+            &d,
+            args,
+            "--candump x.toml/t.log: cannot create x.toml",
+            writable,
+        );
+    }
+    refused(
+        &d,
+        &["sim", "x.toml", "--pcap", "x.toml/t.pcap"],
+        "--pcap x.toml/t.pcap: cannot create x.toml",
+        writable,
+    );
+    let many = "runs many scenarios and exports no traffic";
+    for what in ["table", "switchover"] {
+        let args = ["redundancy", what, "--candump", "t.log"];
+        refused(&d, &args, many, "give `paper` or one fault");
+    }
+    refused(
+        &d,
+        &["star", "table", "--pcap", "t.pcap"],
+        many,
+        "give one fault",
+    );
+    let o = drcc_in(
+        &d,
+        &["sim", "x.toml", "--candump", "t.log", "--pcap", "t.pcap"],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let names: Vec<String> = files(&d)
+        .iter()
+        .map(|(p, _)| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        ["t.log", "t.pcap", "x.toml"],
+        "no temporary file left"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
+
 /// `wave-diff` names the real cause: a file cut inside a line is not a VCD (exit 2);
 /// one cut at a line is a valid but shorter trace, which is not equal to the whole
 /// one (exit 1, naming the shorter file), even though every signal agrees over the

@@ -118,6 +118,18 @@ impl Bus {
         &self.faults
     }
 
+    /// Repairs the bus at clock `at`: a fault still active then ends just before
+    /// `at`, one not started yet is dropped (a served network's `fault heal`).
+    pub fn end_faults(&mut self, at: u64) {
+        self.faults.retain(|f| f.start < at);
+        for f in &mut self.faults {
+            if f.end() > at {
+                f.cycles = at - f.start;
+            }
+        }
+        self.faults_end = self.faults.iter().map(Fault::end).max().unwrap_or(0);
+    }
+
     /// Adds a fault; refuses a node index out of range or an empty window.
     pub fn add_fault(&mut self, fault: Fault) -> Result<(), String> {
         match fault.target {
@@ -221,6 +233,30 @@ mod tests {
         assert!(!bus.resolve(14, &[true, true], &mut rx));
         assert!(bus.resolve(15, &[true, true], &mut rx));
         assert!(!bus.has_faults_from(15));
+    }
+
+    #[test]
+    fn a_repair_ends_active_faults_and_drops_later_ones() {
+        let mut bus = Bus::new(2);
+        bus.add_fault(fault(
+            FaultTarget::Bus,
+            FaultKind::StuckDominant,
+            10,
+            u64::MAX - 10,
+        ))
+        .unwrap();
+        bus.add_fault(fault(FaultTarget::Bus, FaultKind::StuckDominant, 50, 5))
+            .unwrap();
+        let mut rx = [true; 2];
+        assert!(!bus.resolve(19, &[true, true], &mut rx));
+        bus.end_faults(20);
+        assert!(bus.resolve(20, &[true, true], &mut rx), "repaired at 20");
+        assert!(
+            bus.resolve(50, &[true, true], &mut rx),
+            "the later fault is gone"
+        );
+        assert!(!bus.has_faults_from(20));
+        assert_eq!(bus.faults().len(), 1);
     }
 
     #[test]

@@ -194,6 +194,17 @@ pub fn lockstep(
     b: &mut System,
     opts: &CosimOptions,
 ) -> Result<CosimReport, CosimError> {
+    lockstep_observed(a, b, opts, &mut |_| {})
+}
+
+/// [`lockstep`], calling `observe` with the first system after every clock that
+/// both systems agree on (traffic taps, `crate::traffic`).
+pub fn lockstep_observed(
+    a: &mut System,
+    b: &mut System,
+    opts: &CosimOptions,
+    observe: &mut dyn FnMut(&System),
+) -> Result<CosimReport, CosimError> {
     if a.nodes() != b.nodes() {
         return Err(CosimError::Setup(format!(
             "the systems have {} and {} nodes",
@@ -279,6 +290,7 @@ pub fn lockstep(
             }
             return Err(CosimError::Divergence(Box::new(d)));
         }
+        observe(a);
     }
 }
 

@@ -11,6 +11,7 @@ pub mod ring;
 pub mod star;
 pub mod system;
 pub mod trace;
+pub mod traffic;
 
 pub use engine::{
     BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, ControllerConfig, Diagnostics, Mode,

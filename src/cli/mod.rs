@@ -7,8 +7,10 @@ pub mod generate;
 pub mod redundancy;
 pub mod ring;
 pub mod run;
+pub mod serve;
 pub mod star;
 pub mod synth;
+pub mod traffic;
 pub mod wave;
 
 use std::path::{Path, PathBuf};
@@ -210,6 +212,18 @@ impl AtomicFile {
         drop(w);
         std::fs::rename(&self.tmp, &self.path)
             .map_err(|e| CliError::Error(format!("cannot replace {}: {e}", self.path.display())))
+    }
+}
+
+/// Writes go to the temporary file, so writers that own their output (the traffic
+/// export's) can own the file and give it back for [`AtomicFile::commit`].
+impl std::io::Write for AtomicFile {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.writer().write(buf)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.writer().flush()
     }
 }
 

@@ -1,14 +1,18 @@
 //! `drcc redundancy`: the DRCC's redundancy scenarios on a dual bus — the paper's
 //! Figs. 5-8 experiment (`paper`), the fault scenarios of 4 DRCC nodes (`cut_a`,
 //! `a_stuck_dominant`, ..., or `all`), and the switchover table (`switchover`) — on
-//! one engine, or on two in lock step with `--cosim`.
+//! one engine, or on two in lock step with `--cosim`. `paper` and the faults can
+//! export their traffic (`--candump`, `--pcap`; `all`: one file per fault).
 
-use super::{write_atomic, CliError, CliResult};
+use super::traffic::{check_owned, TrafficArgs, TrafficFiles};
+use super::{check_outputs, write_atomic, CliError, CliResult};
 use drcc_cosim::dual::host::Policy;
-use drcc_testbench::dual::{run_dual_traced, DualFault, DualScenario};
-use drcc_testbench::paper::{run_paper, switchover_table, Rate};
+use drcc_cosim::dual::DualBusSystem;
+use drcc_cosim::traffic::DualTap;
+use drcc_testbench::dual::{run_dual_observed, DualFault, DualScenario, CLOCK_HZ};
+use drcc_testbench::paper::{run_paper_observed, switchover_table, Rate};
 use drcc_testbench::EngineKind;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 fn engine(name: &str) -> Result<EngineKind, CliError> {
     name.parse::<EngineKind>().map_err(CliError::Error)
@@ -31,6 +35,51 @@ fn policy(name: &str) -> Result<Policy, CliError> {
     }
 }
 
+/// A run's tap writing into `files` (nothing when no file is asked for).
+fn observer<'a>(
+    files: &'a mut TrafficFiles,
+    nodes: usize,
+) -> impl FnMut(&DualBusSystem) -> Result<(), String> + 'a {
+    let mut tap = DualTap::new(nodes);
+    move |sys| files.take(|out| tap.poll(sys, out))
+}
+
+/// Names the traffic files written.
+fn print_written(files: TrafficFiles) -> CliResult {
+    for (_, p) in files.commit()? {
+        println!("wrote {}", p.display());
+    }
+    Ok(())
+}
+
+/// The trace file of fault `f` (with `all`: named after it).
+fn vcd_of(path: &Path, what: &str, f: DualFault) -> PathBuf {
+    if what == "all" {
+        path.with_file_name(format!(
+            "{}_{}.vcd",
+            path.file_stem().and_then(|x| x.to_str()).unwrap_or("drcc"),
+            f.name()
+        ))
+    } else {
+        path.to_path_buf()
+    }
+}
+
+/// Refuses outputs that name the same file, over every fault run.
+fn check_fault_outputs(
+    what: &str,
+    faults: &[DualFault],
+    vcd: Option<&Path>,
+    traffic: &TrafficArgs,
+) -> CliResult {
+    let mut every = Vec::new();
+    for &f in faults {
+        every.extend(vcd.map(|p| ("--vcd", vcd_of(p, what, f))));
+        every.extend(traffic.for_fault(what, f.name()).owned_outputs());
+    }
+    check_owned(&every)
+}
+
 /// Runs `what` (see the module docs).
 pub fn run(
     what: &str,
@@ -38,6 +87,7 @@ pub fn run(
     cosim: Option<&str>,
     policy_name: Option<&str>,
     vcd: Option<&Path>,
+    traffic: &TrafficArgs,
 ) -> CliResult {
     let kind = engine(engine_name)?;
     let other = cosim.map(engine).transpose()?;
@@ -55,17 +105,32 @@ pub fn run(
             path.display()
         )));
     }
+    if let "table" | "switchover" = what {
+        traffic.refuse(what, "`paper` or one fault (or `all`, one file per fault)")?;
+    }
     match what {
         "paper" => {
             let policy_name = policy_name.unwrap_or("error-passive");
             let p = policy(policy_name)?;
+            let mut outputs = traffic.outputs();
+            outputs.extend(vcd.map(|v| ("--vcd", v)));
+            check_outputs(&[], &outputs)?;
+            let mut files = TrafficFiles::create(traffic, CLOCK_HZ)?;
             let mut buf = Vec::new();
-            let r = run_paper(p, Rate::M1, kind, other, vcd.map(|_| &mut buf))
-                .map_err(CliError::Error)?;
+            let r = run_paper_observed(
+                p,
+                Rate::M1,
+                kind,
+                other,
+                vcd.map(|_| &mut buf),
+                &mut observer(&mut files, 2),
+            )
+            .map_err(CliError::Error)?;
             if let Some(path) = vcd {
                 write_atomic(path, &buf)?;
                 println!("wrote {}", path.display());
             }
+            print_written(files)?;
             println!(
                 "paper scenario ({policy_name}, 1 Mbit/s): TEC of A {:?}; main FSM {:?}; \
                  tx_ok_channel {:#04b}; on B after {:.0} bit times, tx_success after {:.0}",
@@ -103,25 +168,26 @@ pub fn run(
                     }
                 }
             };
+            check_fault_outputs(what, &faults, vcd, traffic)?;
             let mut failed = 0;
             for f in faults {
                 let s = DualScenario::standard(f);
+                let mut files = TrafficFiles::create(&traffic.for_fault(what, f.name()), CLOCK_HZ)?;
                 let mut buf = Vec::new();
-                let r = run_dual_traced(&s, kind, other, vcd.map(|_| &mut buf))
-                    .map_err(CliError::Error)?;
+                let r = run_dual_observed(
+                    &s,
+                    kind,
+                    other,
+                    vcd.map(|_| &mut buf),
+                    &mut observer(&mut files, s.nodes),
+                )
+                .map_err(CliError::Error)?;
                 if let Some(path) = vcd {
-                    let path = if what == "all" {
-                        path.with_file_name(format!(
-                            "{}_{}.vcd",
-                            path.file_stem().and_then(|x| x.to_str()).unwrap_or("drcc"),
-                            f.name()
-                        ))
-                    } else {
-                        path.to_path_buf()
-                    };
+                    let path = vcd_of(path, what, f);
                     write_atomic(&path, &buf)?;
                     println!("wrote {}", path.display());
                 }
+                print_written(files)?;
                 let ok = r.exactly_once();
                 failed += !ok as usize;
                 println!(

@@ -4,8 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use drcc_cosim::cosim::CosimError;
-use drcc_cosim::system::{NodeEvent, Sample};
+use drcc_cosim::system::{NodeEvent, Sample, System};
 use drcc_cosim::trace::{BusVcdWriter, VcdWriter};
+use drcc_cosim::traffic::ChannelTap;
 use drcc_cosim::ControllerConfig;
 use drcc_testbench::bitrate::sample_point_percent;
 use drcc_testbench::engines::{available, EngineKind, VERILATOR_HINT};
@@ -13,6 +14,7 @@ use drcc_testbench::run::{self, RunResult};
 use drcc_testbench::scenario::mode_name;
 use drcc_testbench::Scenario;
 
+use super::traffic::{TrafficArgs, TrafficFiles};
 use super::{check_outputs, AtomicFile, CliError, CliResult};
 
 /// The demo scenario, built in so `drcc demo` runs from anywhere.
@@ -185,13 +187,21 @@ impl Progress {
     }
 }
 
-/// Runs a scenario on one engine, writing the requested traces.
+/// Every node's configuration (a node the scenario leaves out has the default).
+fn node_configs(sc: &Scenario) -> Vec<ControllerConfig> {
+    (0..sc.nodes.len())
+        .map(|i| sc.configs.get(i).copied().unwrap_or_default())
+        .collect()
+}
+
+/// Runs a scenario on one engine, writing the requested traces and the traffic.
 fn run_traced(
     sc: &Scenario,
     kind: EngineKind,
     vcd: Option<&Path>,
     bus_vcd: Option<&Path>,
-) -> Result<RunResult, CliError> {
+    mut traffic: TrafficFiles,
+) -> Result<(RunResult, Written), CliError> {
     let mut full_file = vcd.map(AtomicFile::create).transpose()?;
     let mut bus_file = bus_vcd.map(AtomicFile::create).transpose()?;
     let comment = format!(
@@ -219,6 +229,7 @@ fn run_traced(
         None => None,
     };
     let mut progress = Progress::new(sc.max_cycles);
+    let (configs, mut tap) = (node_configs(sc), ChannelTap::new(sc.nodes.len()));
     let result = run::run_observed(sc, kind, |s: &Sample| {
         progress.at(s.cycle);
         if let Some(w) = full.as_mut() {
@@ -227,7 +238,10 @@ fn run_traced(
         if let Some(w) = bus.as_mut() {
             w.write_cycle(s).map_err(io(bus_vcd))?;
         }
-        Ok(())
+        traffic.take(|out| {
+            tap.observe_sample(s, &configs);
+            tap.drain(out)
+        })
     })?;
     if let Some(w) = full.as_mut() {
         w.finish().map_err(io(vcd))?;
@@ -240,32 +254,59 @@ fn run_traced(
     for f in [full_file, bus_file].into_iter().flatten() {
         f.commit()?;
     }
-    Ok(result)
+    Ok((result, traffic.commit()?))
 }
 
-/// `drcc sim SCENARIO [--engine E] [--vcd FILE] [--bus-vcd FILE]`.
-pub fn sim(path: &Path, engine: &str, vcd: Option<&Path>, bus_vcd: Option<&Path>) -> CliResult {
+/// The traffic files written: what, where.
+type Written = Vec<(&'static str, PathBuf)>;
+
+/// Names the traffic files written.
+fn print_written(files: Written) {
+    for (what, p) in files {
+        println!("{what}: {}", p.display());
+    }
+}
+
+/// `drcc sim SCENARIO [--engine E] [--vcd FILE] [--bus-vcd FILE] [--candump FILE]
+/// [--pcap FILE]`.
+pub fn sim(
+    path: &Path,
+    engine: &str,
+    vcd: Option<&Path>,
+    bus_vcd: Option<&Path>,
+    traffic: &TrafficArgs,
+) -> CliResult {
     let kind: EngineKind = engine.parse()?;
-    let outputs: Vec<(&str, &Path)> = [("--vcd", vcd), ("--bus-vcd", bus_vcd)]
+    let mut outputs: Vec<(&str, &Path)> = [("--vcd", vcd), ("--bus-vcd", bus_vcd)]
         .into_iter()
         .filter_map(|(o, p)| p.map(|p| (o, p)))
         .collect();
+    outputs.extend(traffic.outputs());
     check_outputs(&[path], &outputs)?;
     let sc = load(path)?;
     available(kind)?;
+    // created before anything is printed: a bad path stops the run at once
+    let files = TrafficFiles::create(traffic, sc.clock_hz)?;
     print_header(&sc, &format!("{} ({})", kind.name(), engine_role(kind)));
-    let r = run_traced(&sc, kind, vcd, bus_vcd)?;
+    let (r, written) = run_traced(&sc, kind, vcd, bus_vcd, files)?;
     print_tables(&sc, &r);
     for (what, p) in [("trace", vcd), ("bus trace", bus_vcd)] {
         if let Some(p) = p {
             println!("{what}: {}", p.display());
         }
     }
+    print_written(written);
     verdict(&r)
 }
 
-/// `drcc cosim SCENARIO [--engines A,B] [--vcd-dir DIR]`.
-pub fn cosim(path: &Path, engines: &str, vcd_dir: Option<PathBuf>) -> CliResult {
+/// `drcc cosim SCENARIO [--engines A,B] [--vcd-dir DIR] [--candump FILE] [--pcap
+/// FILE]`: the traffic is the first engine's (both agree every clock).
+pub fn cosim(
+    path: &Path,
+    engines: &str,
+    vcd_dir: Option<PathBuf>,
+    traffic: &TrafficArgs,
+) -> CliResult {
     let kinds: Vec<EngineKind> = engines
         .split(',')
         .map(|s| s.parse::<EngineKind>())
@@ -275,13 +316,26 @@ pub fn cosim(path: &Path, engines: &str, vcd_dir: Option<PathBuf>) -> CliResult 
             "--engines {engines:?}: give exactly two engines, e.g. model,verilator"
         )));
     };
+    check_outputs(&[path], &traffic.outputs())?;
     let sc = load(path)?;
     available(a)?;
     available(b)?;
+    let mut files = TrafficFiles::create(traffic, sc.clock_hz)?;
     print_header(&sc, &format!("{} vs {} in lock step", a.name(), b.name()));
-    match run::cosim(&sc, a, b, vcd_dir) {
+    // the lock-step observer cannot fail: the first write error waits here
+    let (mut tap, mut write_error) = (ChannelTap::new(sc.nodes.len()), None);
+    let mut observe = |sys: &System| {
+        if write_error.is_none() {
+            write_error = files.take(|out| tap.poll(sys, out)).err();
+        }
+    };
+    match run::cosim_observed(&sc, a, b, vcd_dir, &mut observe) {
         Ok(c) => {
+            if let Some(e) = write_error {
+                return Err(CliError::Error(e));
+            }
             print_tables(&sc, &c.result);
+            print_written(files.commit()?);
             println!(
                 "no divergence between {} and {} in {} cycles (every output and probe of every node, every clock)",
                 c.report.engine_a,
@@ -315,7 +369,7 @@ pub fn demo() -> CliResult {
     };
     print_header(&sc, &format!("{} ({})", kind.name(), engine_role(kind)));
     let out = Path::new("out").join("demo_bus.vcd");
-    let r = run_traced(&sc, kind, None, Some(&out))?;
+    let (r, _) = run_traced(&sc, kind, None, Some(&out), TrafficFiles::none())?;
     print_tables(&sc, &r);
     println!("\nengine that ran: {} ({})", kind.name(), engine_role(kind));
     println!("bus trace: {}", out.display());

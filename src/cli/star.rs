@@ -2,18 +2,48 @@
 //! fault scenarios of the hub issue (`uplink_stuck_dominant`, ..., `all`) and their
 //! Markdown table (`table`), on one engine or on two in lock step with `--cosim`.
 //! `table --markdown` also rewrites the table between the `star-table` markers of
-//! README.md and docs/hub.md.
+//! README.md and docs/hub.md. A fault run can export its traffic (`--candump`,
+//! `--pcap`; `all`: one file per fault).
 
+use super::traffic::{check_owned, TrafficArgs, TrafficFiles};
 use super::{project_root, rewrite_between_atomic, CliError, CliResult};
-use drcc_testbench::star::{run_star, star_table, table_row, StarFault, StarScenario};
+use drcc_cosim::traffic::StarTap;
+use drcc_testbench::star::{
+    run_star_observed, star_table, table_row, StarFault, StarReport, StarScenario, CLOCK_HZ,
+};
 use drcc_testbench::EngineKind;
 
 fn engine(name: &str) -> Result<EngineKind, CliError> {
     name.parse::<EngineKind>().map_err(CliError::Error)
 }
 
+/// Runs one fault scenario, exporting its traffic into `traffic`'s files.
+fn run_fault(
+    s: &StarScenario,
+    kind: EngineKind,
+    other: Option<EngineKind>,
+    traffic: &TrafficArgs,
+) -> Result<StarReport, CliError> {
+    let mut files = TrafficFiles::create(traffic, CLOCK_HZ)?;
+    let mut tap = StarTap::new(s.nodes);
+    let r = run_star_observed(s, kind, other, &mut |sys| {
+        files.take(|out| tap.poll(sys, out))
+    })
+    .map_err(CliError::Error)?;
+    for (_, p) in files.commit()? {
+        println!("wrote {}", p.display());
+    }
+    Ok(r)
+}
+
 /// Runs `what` (see the module docs).
-pub fn run(what: &str, engine_name: &str, cosim: Option<&str>, markdown: bool) -> CliResult {
+pub fn run(
+    what: &str,
+    engine_name: &str,
+    cosim: Option<&str>,
+    markdown: bool,
+    traffic: &TrafficArgs,
+) -> CliResult {
     let kind = engine(engine_name)?;
     let other = cosim.map(engine).transpose()?;
     if markdown && what != "table" {
@@ -22,6 +52,7 @@ pub fn run(what: &str, engine_name: &str, cosim: Option<&str>, markdown: bool) -
         ));
     }
     if what == "table" {
+        traffic.refuse(what, "one fault (or `all`, one file per fault)")?;
         // the checkout whose tables --markdown rewrites, found before the run
         let root = match markdown {
             true => Some(project_root(
@@ -54,10 +85,15 @@ pub fn run(what: &str, engine_name: &str, cosim: Option<&str>, markdown: bool) -
             }
         }
     };
+    let every: Vec<_> = faults
+        .iter()
+        .flat_map(|f| traffic.for_fault(what, f.name()).owned_outputs())
+        .collect();
+    check_owned(&every)?;
     let mut lost = 0;
     for f in faults {
         let s = StarScenario::standard(f);
-        let r = run_star(&s, kind, other).map_err(CliError::Error)?;
+        let r = run_fault(&s, kind, other, &traffic.for_fault(what, f.name()))?;
         // A multiple fault (every interlink lost) may lose frames: reported, not failed.
         lost += (f.is_single() && !r.exactly_once()) as usize;
         print!("{}", table_row(&s, &r));

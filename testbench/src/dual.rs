@@ -32,6 +32,13 @@ const FIELD_DATA: u8 = 10;
 /// Clocks per bit of the scenarios: 8 MHz, 1 Mbit/s, 8 tq of one clock.
 pub const CLOCKS_PER_BIT: u64 = 8;
 
+/// The clock of the scenarios in Hz (time = cycle / clock).
+pub const CLOCK_HZ: u64 = 8_000_000;
+
+/// Called with the main system after every clock (traffic taps); an error stops
+/// the run.
+pub type DualObserver<'a> = &'a mut dyn FnMut(&DualBusSystem) -> Result<(), String>;
+
 /// The fault of a dual-bus scenario.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DualFault {
@@ -267,6 +274,18 @@ pub fn run_dual_traced(
     cosim: Option<EngineKind>,
     vcd: Option<&mut Vec<u8>>,
 ) -> Result<DualReport, String> {
+    run_dual_observed(s, kind, cosim, vcd, &mut |_| Ok(()))
+}
+
+/// [`run_dual_traced`], also calling `observe` with the main system after every
+/// clock.
+pub fn run_dual_observed(
+    s: &DualScenario,
+    kind: EngineKind,
+    cosim: Option<EngineKind>,
+    vcd: Option<&mut Vec<u8>>,
+    observe: DualObserver,
+) -> Result<DualReport, String> {
     let build = |k: EngineKind, fault_start: Option<u64>| -> Result<DualBusSystem, String> {
         let engines = (0..s.nodes)
             .map(|_| drcc_engine(k))
@@ -317,7 +336,7 @@ pub fn run_dual_traced(
         Some(buf) => Some(
             DrccVcdWriter::new(
                 buf,
-                8_000_000,
+                CLOCK_HZ,
                 s.nodes,
                 &format!("DRCC dual-bus fault scenario {}", s.fault.name()),
             )
@@ -364,6 +383,7 @@ pub fn run_dual_traced(
         if let Some(w) = writer.as_mut() {
             w.write_cycle(&main).map_err(|e| e.to_string())?;
         }
+        observe(&main)?;
         if let Some(o) = other.as_mut() {
             o.step();
             if let Some(d) = compare(&main, o) {

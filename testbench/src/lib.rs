@@ -18,6 +18,7 @@ pub mod random;
 pub mod ring;
 pub mod run;
 pub mod scenario;
+pub mod serve;
 pub mod star;
 pub mod tools;
 

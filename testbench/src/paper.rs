@@ -15,7 +15,7 @@ use drcc_cosim::dual::vcd::DrccVcdWriter;
 use drcc_cosim::dual::DualBusSystem;
 use drcc_cosim::Frame;
 
-use crate::dual::drcc_engine;
+use crate::dual::{drcc_engine, DualObserver};
 use crate::engines::EngineKind;
 
 /// Clock of the paper scenarios, Hz.
@@ -109,6 +109,19 @@ pub fn run_paper(
     cosim: Option<EngineKind>,
     vcd: Option<&mut Vec<u8>>,
 ) -> Result<PaperReport, String> {
+    run_paper_observed(policy, rate, kind, cosim, vcd, &mut |_| Ok(()))
+}
+
+/// [`run_paper`], also calling `observe` with the main system after every clock
+/// (traffic taps).
+pub fn run_paper_observed(
+    policy: Policy,
+    rate: Rate,
+    kind: EngineKind,
+    cosim: Option<EngineKind>,
+    vcd: Option<&mut Vec<u8>>,
+    observe: DualObserver,
+) -> Result<PaperReport, String> {
     let timing = btr(rate.brp, 5, 2, 1, false, 96);
     let node0 = HostConfig {
         btr: timing,
@@ -171,6 +184,7 @@ pub fn run_paper(
         if let Some(w) = w.as_mut() {
             w.write_cycle(&sys).map_err(|e| e.to_string())?;
         }
+        observe(&sys)?;
         let out = sys.node(0).outputs;
         let p = out.probes;
         if r.tec_a.last() != Some(&p.chan_a_bsp_tx_err_cnt) {

@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use drcc_cosim::cosim::{lockstep, CosimError, CosimOptions, CosimReport};
+use drcc_cosim::cosim::{lockstep_observed, CosimError, CosimOptions, CosimReport};
 use drcc_cosim::system::{NodeEvent, RunOutcome, Sample, System};
 use drcc_cosim::{ChannelEngine, Frame};
 
@@ -234,6 +234,18 @@ pub fn cosim(
     b: EngineKind,
     vcd_dir: Option<PathBuf>,
 ) -> Result<CosimRun, CosimError> {
+    cosim_observed(sc, a, b, vcd_dir, &mut |_| {})
+}
+
+/// [`cosim`], calling `observe` with the first system after every clock both
+/// systems agree on (traffic taps).
+pub fn cosim_observed(
+    sc: &Scenario,
+    a: EngineKind,
+    b: EngineKind,
+    vcd_dir: Option<PathBuf>,
+    observe: &mut dyn FnMut(&System),
+) -> Result<CosimRun, CosimError> {
     let mut sa = build_system(sc, a).map_err(CosimError::Setup)?;
     let mut sb = build_system(sc, b).map_err(CosimError::Setup)?;
     let opts = CosimOptions {
@@ -242,7 +254,7 @@ pub fn cosim(
         vcd_dir,
         ..CosimOptions::default()
     };
-    let report = lockstep(&mut sa, &mut sb, &opts)?;
+    let report = lockstep_observed(&mut sa, &mut sb, &opts, observe)?;
     let result = result(sc, &sa, report.outcome);
     Ok(CosimRun { report, result })
 }

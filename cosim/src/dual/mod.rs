@@ -228,6 +228,34 @@ impl DualBusSystem {
         self.add_fault(line, fault::short_circuit(start, cycles))
     }
 
+    /// Repairs both lines at clock `at`: every fault, cut and detach still active
+    /// then ends just before `at`; those not started yet are dropped.
+    pub fn end_faults(&mut self, at: u64) {
+        for w in &mut self.wires {
+            w.bus.end_faults(at);
+            w.cuts.retain(|c| c.start < at);
+            for c in &mut w.cuts {
+                c.cycles = c.cycles.min(at - c.start);
+            }
+            w.detaches.retain(|d| d.start < at);
+            for d in &mut w.detaches {
+                d.cycles = d.cycles.min(at - d.start);
+            }
+        }
+    }
+
+    /// Whether a fault, cut or detach of either line is active at `cycle` or starts
+    /// later.
+    pub fn has_faults_from(&self, cycle: u64) -> bool {
+        self.wires.iter().any(|w| {
+            w.bus.has_faults_from(cycle)
+                || w.cuts
+                    .iter()
+                    .any(|c| c.start.saturating_add(c.cycles) > cycle)
+                || w.detaches.iter().any(|d| d.end() > cycle)
+        })
+    }
+
     /// Number of nodes.
     pub fn len(&self) -> usize {
         self.nodes.len()

@@ -197,6 +197,15 @@ impl StarSystem {
         Ok(())
     }
 
+    /// Repairs every link at clock `at`: a fault still active then ends just before
+    /// `at`, one not started yet is dropped.
+    pub fn end_faults(&mut self, at: u64) {
+        self.faults.retain(|f| f.start < at);
+        for f in &mut self.faults {
+            f.cycles = f.cycles.min(at - f.start);
+        }
+    }
+
     /// Number of nodes.
     pub fn len(&self) -> usize {
         self.nodes.len()

@@ -196,6 +196,11 @@ impl System {
         self.bus.add_fault(fault)
     }
 
+    /// Repairs the bus at clock `at` ([`Bus::end_faults`]).
+    pub fn end_faults(&mut self, at: u64) {
+        self.bus.end_faults(at);
+    }
+
     /// The bus (with its faults).
     pub fn bus(&self) -> &Bus {
         &self.bus

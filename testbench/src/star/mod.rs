@@ -49,6 +49,10 @@ pub const STAR_SJW: u8 = 2;
 /// Clocks per bit of the star scenarios.
 pub const CLOCKS_PER_BIT: u64 = 36;
 
+/// The clock of the star scenarios in Hz: 36 MHz, so that a bit lasts 1 µs
+/// (1 Mbit/s, as on the dual bus); time = cycle / clock.
+pub const CLOCK_HZ: u64 = CLOCKS_PER_BIT * 1_000_000;
+
 /// Node ports and interlinks of the scenarios' hubs (the emitted `hub.v`).
 pub const HUB_N: usize = 4;
 pub const HUB_M: usize = 2;

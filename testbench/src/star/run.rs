@@ -11,6 +11,17 @@ pub fn run_star(
     kind: EngineKind,
     cosim: Option<EngineKind>,
 ) -> Result<StarReport, String> {
+    run_star_observed(s, kind, cosim, &mut |_| Ok(()))
+}
+
+/// [`run_star`], calling `observe` with the main system after every clock
+/// (traffic taps); an error stops the run.
+pub fn run_star_observed(
+    s: &StarScenario,
+    kind: EngineKind,
+    cosim: Option<EngineKind>,
+    observe: &mut dyn FnMut(&StarSystem) -> Result<(), String>,
+) -> Result<StarReport, String> {
     let mut main = build_star(s, kind)?;
     let mut other = match cosim {
         Some(k) => Some(build_star(s, k)?),
@@ -101,6 +112,7 @@ pub fn run_star(
                 ));
             }
         }
+        observe(&main)?;
         for h in 0..2 {
             let p = main.hub(h).outputs.probes;
             let mask = ((1u32 << (HUB_N + HUB_M)) - 1) as u16;

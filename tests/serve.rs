@@ -19,6 +19,8 @@ use drcc_testbench::tools::python_with_can;
 struct Server {
     child: Child,
     port: u16,
+    /// Just before the process was started.
+    spawned: Instant,
 }
 
 impl Drop for Server {
@@ -39,6 +41,7 @@ fn free_port() -> u16 {
 /// Starts `drcc serve --port P ARGS` and waits until it accepts connections.
 fn start(args: &[&str]) -> Server {
     let port = free_port();
+    let spawned = Instant::now();
     let child = Command::new(env!("CARGO_BIN_EXE_drcc"))
         .arg("serve")
         .args(["--port", &port.to_string()])
@@ -48,7 +51,11 @@ fn start(args: &[&str]) -> Server {
         .stderr(Stdio::inherit())
         .spawn()
         .expect("cannot run the drcc binary");
-    let s = Server { child, port };
+    let s = Server {
+        child,
+        port,
+        spawned,
+    };
     let end = Instant::now() + Duration::from_secs(60);
     while TcpStream::connect(("127.0.0.1", port)).is_err() {
         assert!(
@@ -320,4 +327,36 @@ fn a_port_in_use_is_refused_naming_it() {
         err.contains(&format!("port {port} is already in use")) && err.contains("--port"),
         "{err}"
     );
+}
+
+#[test]
+fn realtime_pacing_never_runs_ahead_of_the_wall_clock() {
+    // The demo scenario's bus of three channels: the model runs it faster than real
+    // time, so `--fast` would stamp a frame sent 0.5 s into the session at well over
+    // 0.5 s; `--realtime` keeps simulated time at or behind the wall clock.
+    let demo = Path::new(env!("CARGO_MANIFEST_DIR")).join("testbench/scenarios/demo.toml");
+    let s = start(&[demo.to_str().unwrap(), "--realtime"]);
+    let mut rx = Client::open_raw(s.port, "sensor");
+    let mut tx = Client::connect(s.port);
+    tx.say("< open ecu >");
+    assert_eq!(tx.next(), "< ok >");
+    std::thread::sleep(Duration::from_millis(500));
+    tx.say("< send 7AB 1 01 >");
+    let line = loop {
+        let e = rx.next();
+        if e.starts_with("< frame 7AB ") {
+            break e;
+        }
+    };
+    let wall = s.spawned.elapsed().as_secs_f64();
+    let t: f64 = line.split(' ').nth(3).unwrap().parse().unwrap();
+    assert!(
+        t <= wall + 0.01,
+        "simulated {t} s ahead of the wall clock {wall} s"
+    );
+    assert!(
+        t >= 0.25,
+        "simulated time {t} s did not follow the wall clock"
+    );
+    stop(s);
 }

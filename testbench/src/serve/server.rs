@@ -402,8 +402,9 @@ pub fn serve(
         if stop.load(Ordering::Relaxed) || opts.stop_after.is_some_and(|d| started.elapsed() >= d) {
             break Ok(());
         }
-        // With no client connected nothing can be observed: wait for one.
-        let first = if hub.clients.is_empty() {
+        // Running fast with no client connected, nothing can be observed: wait for
+        // one (in real time the clock runs on, as it would on a real bus).
+        let first = if hub.clients.is_empty() && opts.pacing == Pacing::Fast {
             match rx.recv_timeout(Duration::from_millis(50)) {
                 Ok(m) => Some(m),
                 Err(RecvTimeoutError::Timeout) => continue,

@@ -360,3 +360,28 @@ fn realtime_pacing_never_runs_ahead_of_the_wall_clock() {
     );
     stop(s);
 }
+
+#[test]
+fn the_readme_python_can_example_works_as_written() {
+    let Some(py) = python_with_can() else { return };
+    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md"))
+        .expect("README.md");
+    let marker = "<!-- python-can example: tests/serve.rs runs this block as written -->";
+    let rest = &readme[readme.find(marker).expect("the README marks its example")..];
+    let from = rest.find("```python\n").expect("a python block") + "```python\n".len();
+    let code = &rest[from..from + rest[from..].find("```").expect("the block ends")];
+    assert!(code.lines().count() <= 11, "a short example:\n{code}");
+    assert!(code.contains("port=29536"), "the default port:\n{code}");
+    let s = start(&[]);
+    // the only change: the test server's port instead of the default one
+    let code = code.replace("port=29536", &format!("port={}", s.port));
+    let o = Command::new(&py).args(["-c", &code]).output().unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "the README example failed:\n{out}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(out.contains("01 02 03") && out.contains("node1"), "{out}");
+    stop(s);
+}

@@ -52,7 +52,9 @@ impl DistTiming {
             phase: 15_000,
             settle: relay_us + 1_000,
             probe_every: 3_000,
-            holder_after: 25_000,
+            // the ends announce after the relays settle (3 ms) every 3 ms until
+            // 5 ms before: at 3, 6 and 9 ms, each letter ~0.5 ms at 125 kbit/s
+            holder_after: 15_000,
             plain_silence: 250_000,
         }
     }

@@ -126,7 +126,8 @@ enum Command {
     /// REDCAN rings of DRCC nodes (seed 000) running the centralized algorithm on a
     /// CanKingdom King (seed 002): `table` (every single fault at every position, as
     /// Markdown) or one fault: `no_fault`, `section_open`, `section_short`,
-    /// `babbling_idiot`, `node_crash` (at `--position`).
+    /// `babbling_idiot`, `node_crash` (at `--position`). A fault can run on two
+    /// engines in lock step (`--cosim`) and export its traffic (`--candump`, `--pcap`).
     Ring {
         /// `table` or a fault.
         what: String,
@@ -145,6 +146,13 @@ enum Command {
         /// With `table`: rewrite the table in docs/redcan.md.
         #[arg(long)]
         markdown: bool,
+        /// One fault: run it again on this engine and compare every input and output
+        /// of every DRCC node and every relay module output, every clock, with the
+        /// `--engine` run (whose traffic `--candump` / `--pcap` export).
+        #[arg(long, value_name = "ENGINE")]
+        cosim: Option<String>,
+        #[command(flatten)]
+        traffic: cli::traffic::TrafficArgs,
     },
     /// The CiA 701 DMR test plan (seed Figure 9, Tables 2 and 3) on four DRCC devices
     /// COS1, COS2, COS3, COM1: `table` (every row as Markdown), or one row: a fault
@@ -366,7 +374,18 @@ fn main() -> ExitCode {
             engine,
             algorithm,
             markdown,
-        } => cli::ring::run_ring(&what, &nodes, position, &engine, &algorithm, markdown),
+            cosim,
+            traffic,
+        } => cli::ring::run_ring(&cli::ring::RingArgs {
+            what: &what,
+            nodes: &nodes,
+            position,
+            engine: &engine,
+            algorithm: &algorithm,
+            markdown,
+            cosim: cosim.as_deref(),
+            traffic: &traffic,
+        }),
         Command::Dmr {
             what,
             startup,

@@ -393,5 +393,29 @@ fn ring_refuses_bad_faults_sizes_and_positions() {
         "ring node 5",
         "ring nodes 0..3",
     );
+    refused(
+        &d,
+        &["ring", "table", "--cosim", "verilator"],
+        "--cosim verilator: `table` runs many scenarios",
+        "give one fault to compare in lock step",
+    );
+    refused(
+        &d,
+        &["ring", "no_fault", "--cosim", "rust-hdl"],
+        "model or verilator",
+        "use --cosim model or verilator",
+    );
+    refused(
+        &d,
+        &["ring", "table", "--candump", "t.log"],
+        "--candump t.log: `table` runs many scenarios and exports no traffic",
+        "give one fault",
+    );
+    refused(
+        &d,
+        &["ring", "table", "--pcap", "t.pcap"],
+        "--pcap t.pcap",
+        "give one fault",
+    );
     let _ = std::fs::remove_dir_all(&d);
 }

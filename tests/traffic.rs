@@ -1,13 +1,15 @@
 //! Traffic export (`--candump FILE`, `--pcap FILE`) read back by the tools users
 //! read it with: python-can's own `can.LogReader` and tshark. For a bus of channels
-//! (the demo scenario), a dual bus (`redundancy a_bus_off`) and a replicated star
-//! (`star uplink_stuck_dominant`), both files must hold exactly the frames the run
-//! delivered, in order, with identifier, format, data, time and interface; the
-//! expected list is the run's own delivery record (`RunResult::deliveries`, the
-//! hosts' `received` frames) of the same scenario run through the library, and the
+//! (the demo scenario), a dual bus (`redundancy a_bus_off`), a replicated star
+//! (`star uplink_stuck_dominant`) and a REDCAN ring (`ring section_short`), both
+//! files must hold exactly the frames the run delivered, in order, with
+//! identifier, format, data, time and interface; the expected list is the run's
+//! own delivery record (`RunResult::deliveries`, the hosts' `received` frames,
+//! `RingReport::received`) of the same scenario run through the library, and the
 //! expected times and interface names follow from the documented rules
 //! (`floor(cycle / clock)`, `nodeN`, `nodeNa` / `nodeNb`), not from the writers.
-//! Missing python-can or tshark skips that half locally and fails in CI.
+//! Missing python-can or tshark skips that half locally and fails in CI (the ring's
+//! log is also read line by line here, without them).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -15,6 +17,7 @@ use std::process::Command;
 use drcc_cosim::dual::host::HostRx;
 use drcc_cosim::Frame;
 use drcc_testbench::dual::{run_dual_observed, DualFault, DualScenario};
+use drcc_testbench::ring::{RingFault, RingScenario};
 use drcc_testbench::star::{run_star_observed, StarFault, StarScenario};
 use drcc_testbench::tools::{python_with_can, tshark};
 use drcc_testbench::{EngineKind, Scenario};
@@ -172,6 +175,12 @@ fn tshark_records(pcap: &Path) -> Option<Vec<Record>> {
         "data.data",
     ];
     let mut cmd = Command::new(t);
+    // The payload goes to `data` only: tshark's heuristic CAN payload dissectors
+    // would take some frames (AUTOSAR NM takes identifier 0, the King's letters on
+    // a ring) and leave `data.data` empty.
+    for p in ["autosar-nm", "signal_pdu", "ipdum", "obd-ii"] {
+        cmd.args(["--disable-protocol", p]);
+    }
     cmd.arg("-r")
         .arg(pcap)
         .args(["-T", "fields", "-E", "separator=/t"]);
@@ -353,5 +362,120 @@ fn a_star_exports_host_deliveries_on_both_lines() {
     let hz = drcc_testbench::star::CLOCK_HZ;
     let flags = check_log(&d.join("s.log"), hz, &want);
     check_pcap(&d.join("s.pcap"), hz, &want, flags.as_deref());
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// The `(seconds.microseconds) IFACE ID#DATA` lines of a candump log that are not
+/// error frames (an 8-digit identifier with the error flag 0x20000000), as text.
+fn log_frame_lines(log: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(log).unwrap();
+    text.lines()
+        .filter(|l| {
+            let id = l.split(' ').nth(2).unwrap().split('#').next().unwrap();
+            id.len() != 8 || u32::from_str_radix(id, 16).unwrap() & 0x2000_0000 == 0
+        })
+        .map(str::to_string)
+        .collect()
+}
+
+/// A delivery as the log's documented form writes it, at 1 MHz.
+fn ring_line(d: &Delivery) -> String {
+    let f = &d.frame;
+    let id = match f.ide {
+        true => format!("{:08X}", f.id),
+        false => format!("{:03X}", f.id),
+    };
+    let data: String = match f.rtr {
+        true => format!(
+            "R{}",
+            if f.dlc > 0 {
+                f.dlc.min(8).to_string()
+            } else {
+                "".into()
+            }
+        ),
+        false => f.data[..f.data_len()]
+            .iter()
+            .map(|b| format!("{b:02X}"))
+            .collect(),
+    };
+    let (sec, us) = (d.cycle / 1_000_000, d.cycle % 1_000_000);
+    format!("({sec}.{us:06}) {} {id}#{data}", d.iface)
+}
+
+/// A 3-node REDCAN ring (a plain node per section) running the distributed
+/// algorithm, section 1 shorted: the frames every host popped (the report's
+/// `received`, ring and plain nodes) on interface `nodeN` (channel A, a node's only
+/// line on the ring), in the order of their clocks, node by node within a clock;
+/// the short's error frames besides.
+#[test]
+fn a_ring_exports_host_deliveries_on_one_line() {
+    let s = RingScenario::distributed(3, RingFault::SectionShort { section: 1 });
+    let r = drcc_testbench::ring::run(&s, EngineKind::Model).unwrap();
+    let mut popped: Vec<(usize, Delivery)> = r
+        .received
+        .iter()
+        .enumerate()
+        .flat_map(|(node, rx)| {
+            rx.iter().map(move |&(cycle, frame)| {
+                let iface = format!("node{node}");
+                (
+                    node,
+                    Delivery {
+                        cycle,
+                        iface,
+                        frame,
+                    },
+                )
+            })
+        })
+        .collect();
+    popped.sort_by_key(|(node, d)| (d.cycle, *node));
+    let want: Vec<Delivery> = popped.into_iter().map(|(_, d)| d).collect();
+    assert!(
+        want.len() > 100,
+        "the kingdom's letters and the applications' frames"
+    );
+    let d = scratch("ring");
+    let args = [
+        "ring",
+        "section_short",
+        "--nodes",
+        "3",
+        "--position",
+        "1",
+        "--algorithm",
+        "distributed",
+        "--candump",
+        "g.log",
+        "--pcap",
+        "g.pcap",
+    ];
+    drcc(&d, &args);
+    let lines = log_frame_lines(&d.join("g.log"));
+    let expected: Vec<String> = want.iter().map(ring_line).collect();
+    assert_eq!(lines.len(), expected.len(), "one line per host pop");
+    for (k, (got, exp)) in lines.iter().zip(&expected).enumerate() {
+        assert_eq!(got, exp, "line {k} of the frames");
+    }
+    let hz = drcc_testbench::ring::CLOCK_HZ;
+    let flags = check_log(&d.join("g.log"), hz, &want);
+    let Some(records) = check_pcap(&d.join("g.pcap"), hz, &want, flags.as_deref()) else {
+        return;
+    };
+    let log = std::fs::read_to_string(d.join("g.log")).unwrap();
+    let ifaces: Vec<&str> = log.lines().map(|l| l.split(' ').nth(1).unwrap()).collect();
+    let onset_ns = s.onset_us as u128 * 1_000;
+    let short: Vec<&str> = (records.iter().zip(&ifaces))
+        .filter(|(r, _)| r.err && r.ns >= onset_ns)
+        .map(|(_, i)| *i)
+        .collect();
+    assert!(short.len() > 10, "the short's error frames: {short:?}");
+    assert!(
+        ifaces.iter().all(|i| i
+            .strip_prefix("node")
+            .is_some_and(|n| n.parse::<usize>().is_ok())),
+        "every interface is nodeN"
+    );
     let _ = std::fs::remove_dir_all(&d);
 }

@@ -1,7 +1,7 @@
-//! `--candump FILE` and `--pcap FILE` of `sim`, `cosim`, `redundancy` and `star`:
-//! the options, and the files they write (through [`AtomicFile`]: a run that fails
-//! half way leaves any older file as it was) from the events of a traffic tap
-//! (`drcc_cosim::traffic`).
+//! `--candump FILE` and `--pcap FILE` of `sim`, `cosim`, `redundancy`, `star`,
+//! `ring` and `serve`: the options, and the files they write (through
+//! [`AtomicFile`]: a run that fails half way leaves any older file as it was) from
+//! the events of a traffic tap (`drcc_cosim::traffic`).
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -17,9 +17,9 @@ use super::{AtomicFile, CliError};
 pub struct TrafficArgs {
     /// Write every frame each node delivered, and the error frames of every error
     /// and error-state change, as a candump log in simulated time:
-    /// `(0.000123) node0 123#DEADBEEF`. Interfaces: `nodeN` on a bus of channels,
-    /// `nodeNa` / `nodeNb` for line A / B of a dual bus or star. Name it `*.log`
-    /// for python-can's `can.LogReader`.
+    /// `(0.000123) node0 123#DEADBEEF`. Interfaces: `nodeN` on a bus of channels
+    /// or a REDCAN ring, `nodeNa` / `nodeNb` for line A / B of a dual bus or star.
+    /// Name it `*.log` for python-can's `can.LogReader`.
     #[arg(long, value_name = "FILE")]
     pub candump: Option<PathBuf>,
     /// Write the same events as a pcap file (LINKTYPE_CAN_SOCKETCAN, nanosecond

@@ -147,6 +147,16 @@ impl RingSystem {
         &self.wiring
     }
 
+    /// Every node: ring nodes `0..N`, then the plain nodes section by section.
+    pub fn nodes(&self) -> &[RingNode] {
+        &self.nodes
+    }
+
+    /// Every ring node's module, in ring node order.
+    pub fn modules(&self) -> &[RingModule] {
+        &self.modules
+    }
+
     /// Node `i`.
     pub fn node(&self, i: usize) -> &RingNode {
         &self.nodes[i]

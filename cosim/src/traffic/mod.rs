@@ -18,7 +18,7 @@
 //! Every error frame carries TEC and REC after the event ([`error::CAN_ERR_CNT`]).
 //!
 //! DRCC nodes on a dual bus ([`DualTap`]) or a replicated star ([`StarTap`]), per
-//! node and per channel:
+//! node and per channel (on a REDCAN ring, [`RingTap`], channel A only):
 //!
 //! | signal | event |
 //! |---|---|
@@ -34,7 +34,9 @@
 //!
 //! [`interface`]: `node<i>` on a bus of channels, `node<i>a` / `node<i>b` for the
 //! channel on line A / B of a dual bus or a star (`i` is the node index, as in the
-//! traces; scenario node names may hold characters a log line cannot).
+//! traces; scenario node names may hold characters a log line cannot). On a REDCAN
+//! ring every node, ring or plain, is on the ring with its channel A alone
+//! (channel B unwired): `node<i>`, with the ring's node numbering.
 
 pub mod candump;
 pub mod error;
@@ -46,7 +48,7 @@ mod tap;
 mod tests;
 
 pub use error::ErrorFrame;
-pub use tap::{ChannelTap, DualTap, StarTap};
+pub use tap::{ChannelTap, DualTap, RingTap, StarTap};
 
 use crate::frame::Frame;
 

@@ -3,7 +3,8 @@
 //! [`TrafficEvent`]s. One tap per topology: [`ChannelTap`] for a bus of CAN
 //! channels ([`System`]), [`DualTap`] for DRCC nodes on a dual bus
 //! ([`DualBusSystem`]), [`StarTap`] for DRCC nodes on a replicated star
-//! ([`StarSystem`]). The module docs of [`super`] say which signal becomes which
+//! ([`StarSystem`]), [`RingTap`] for the DRCC nodes of a REDCAN ring
+//! ([`RingSystem`]). The module docs of [`super`] say which signal becomes which
 //! event.
 //!
 //! Use: after every `step`, [`ChannelTap::observe`] (or `DualTap`'s, `StarTap`'s)
@@ -20,6 +21,7 @@ use crate::dual::DualBusSystem;
 use crate::engine::drcc::DrccOutputs;
 use crate::engine::{ChannelOutputs, ControllerConfig};
 use crate::model::field;
+use crate::ring::RingSystem;
 use crate::star::StarSystem;
 use crate::system::{Sample, System};
 use drcc_hdl::host::registers::MAP;
@@ -143,11 +145,15 @@ struct DrccWatch {
     lines: [LineWatch; 2],
 }
 
-/// The common part of [`DualTap`] and [`StarTap`]: DRCC nodes with their hosts.
+/// The common part of [`DualTap`], [`StarTap`] and [`RingTap`]: DRCC nodes with
+/// their hosts.
 #[derive(Debug, Default)]
 struct DrccTap {
     nodes: Vec<DrccWatch>,
     pending: Pending,
+    /// Only channel A is wired (the ring): events without a line, channel B
+    /// not watched.
+    channel_a_only: bool,
 }
 
 impl DrccTap {
@@ -155,6 +161,7 @@ impl DrccTap {
         DrccTap {
             nodes: vec![DrccWatch::default(); nodes],
             pending: Pending::default(),
+            channel_a_only: false,
         }
     }
 
@@ -167,6 +174,8 @@ impl DrccTap {
         if !self.pending.is_new(cycle) {
             return;
         }
+        let a_only = self.channel_a_only;
+        let channels = if a_only { 1 } else { 2 };
         for (node, (host, o)) in nodes.enumerate() {
             if node >= self.nodes.len() {
                 self.nodes.resize(node + 1, DrccWatch::default());
@@ -177,7 +186,7 @@ impl DrccTap {
                 events.push(TrafficEvent {
                     cycle: rx.cycle,
                     node,
-                    line: Some(rx.channel),
+                    line: (!a_only).then_some(rx.channel),
                     kind: TrafficKind::Frame(rx.frame),
                 });
             }
@@ -185,13 +194,14 @@ impl DrccTap {
             let ewl = *w
                 .ewl
                 .get_or_insert_with(|| MAP.field("BTR", "ewl").get(host.config().btr) as u8);
-            for (line, watch) in w.lines.iter_mut().enumerate() {
+            for (line, watch) in w.lines.iter_mut().enumerate().take(channels) {
                 let line = line as u8;
+                let tag = (!a_only).then_some(line);
                 drcc_line_events(o, line, ewl, watch, &mut |kind| {
                     events.push(TrafficEvent {
                         cycle,
                         node,
-                        line: Some(line),
+                        line: tag,
                         kind,
                     })
                 });
@@ -296,6 +306,47 @@ impl StarTap {
 
     /// [`StarTap::observe`], then [`StarTap::drain`].
     pub fn poll(&mut self, sys: &StarSystem, out: &mut Vec<TrafficEvent>) {
+        self.observe(sys);
+        self.drain(out);
+    }
+}
+
+/// The tap of the DRCC nodes of a REDCAN ring ([`RingSystem`]): every node, ring
+/// and plain (node index as the ring numbers them: ring nodes `0..N`, then the
+/// plain nodes section by section), with `line` always `None` (interface
+/// `node<i>`): a ring node's channel A is its only CAN connection, on whichever
+/// section its relay puts it; channel B is unwired (`rx` recessive) and, the hosts
+/// running normal mode with every frame in TX queue A, never transmits, so it is
+/// not watched. Events: the frames every host popped, channel A's error flags and
+/// state changes, as for [`DualTap`]. The relay modules have no CAN traffic.
+#[derive(Debug, Default)]
+pub struct RingTap(DrccTap);
+
+impl RingTap {
+    /// A tap for a ring of `nodes` DRCC nodes (ring and plain).
+    pub fn new(nodes: usize) -> Self {
+        RingTap(DrccTap {
+            channel_a_only: true,
+            ..DrccTap::new(nodes)
+        })
+    }
+
+    /// Takes the clock the system just made.
+    pub fn observe(&mut self, sys: &RingSystem) {
+        let Some(cycle) = sys.cycle().checked_sub(1) else {
+            return;
+        };
+        let nodes = sys.nodes().iter().map(|n| (&n.host, &n.outputs));
+        self.0.observe(cycle, nodes);
+    }
+
+    /// Moves the events collected since the last drain to `out`, oldest first.
+    pub fn drain(&mut self, out: &mut Vec<TrafficEvent>) {
+        self.0.pending.drain(out);
+    }
+
+    /// [`RingTap::observe`], then [`RingTap::drain`].
+    pub fn poll(&mut self, sys: &RingSystem, out: &mut Vec<TrafficEvent>) {
         self.observe(sys);
         self.drain(out);
     }

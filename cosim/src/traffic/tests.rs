@@ -174,3 +174,52 @@ fn a_deaf_transmitter_reports_bit0_at_its_start_of_frame() {
     want.data[3] = CAN_ERR_PROT_LOC_SOF;
     assert_eq!(first.kind, TrafficKind::Error(want));
 }
+
+/// A ring of three ring nodes (no plain nodes, relays at rest): node 0's frame is
+/// popped by nodes 1 and 2, and the ring tap yields exactly those pops, on
+/// interface `node<i>` (no line: channel A is a ring node's only connection).
+#[test]
+fn a_ring_tap_yields_host_frames_without_a_line() {
+    use crate::engine::rcm::{RcmEngine, RcmModelEngine};
+    use crate::ring::{RingSystem, Shape};
+    let config = HostConfig {
+        redundancy: false,
+        policy: Policy::None,
+        ..HostConfig::default()
+    };
+    let engines = (0..3)
+        .map(|_| Box::new(DrccModelEngine::new()) as Box<dyn crate::engine::drcc::DrccEngine>)
+        .collect();
+    let rcms = (0..3)
+        .map(|_| Box::<RcmModelEngine>::default() as Box<dyn RcmEngine>)
+        .collect();
+    let shape = Shape { plain: vec![0; 3] };
+    let mut sys = RingSystem::new(shape, engines, rcms, config, 16).unwrap();
+    let f = Frame::base(0x1A5, &[1, 2, 3]);
+    sys.node_mut(0).host.submit(40 * 8, f, 0);
+    let mut tap = RingTap::new(3);
+    let mut events = Vec::new();
+    for _ in 0..8 * 400 {
+        sys.step();
+        tap.poll(&sys, &mut events);
+    }
+    let mut want: Vec<TrafficEvent> = (0..3)
+        .flat_map(|node| {
+            sys.node(node)
+                .host
+                .received
+                .iter()
+                .map(move |rx| TrafficEvent {
+                    cycle: rx.cycle,
+                    node,
+                    line: None,
+                    kind: TrafficKind::Frame(rx.frame),
+                })
+        })
+        .collect();
+    want.sort_by_key(|e| (e.cycle, e.node));
+    assert_eq!(want.len(), 2, "nodes 1 and 2 popped the frame");
+    assert!(want.iter().all(|e| e.kind == TrafficKind::Frame(f)));
+    assert_eq!(events, want, "an error-free ring has its frames only");
+    assert_eq!(events[0].interface(), "node1");
+}

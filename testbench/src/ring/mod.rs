@@ -7,6 +7,7 @@
 
 pub mod central;
 pub mod distributed;
+pub mod lockstep;
 pub mod post;
 pub mod table;
 
@@ -26,6 +27,8 @@ use post::{ring_btr, CkFrame, DrccPost, PostState};
 
 /// Clocks per bit (125 kbit/s at 1 MHz).
 pub const CLOCKS_PER_BIT: u64 = 8;
+/// The ring's clock: one clock per microsecond (traffic export timestamps).
+pub const CLOCK_HZ: u64 = 1_000_000;
 /// Microseconds per millisecond.
 const MS: u64 = 1_000;
 /// Envelope of the application frames: `APP_BASE + node`.
@@ -224,6 +227,17 @@ pub struct RingReport {
 
 /// Builds and runs `s` on DRCC engine `kind` (the RCMs on the same kind).
 pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
+    run_observed(s, kind, |_| Ok(()))
+}
+
+/// [`run`], calling `observe` with the system after every clock (after
+/// `RingSystem::step`, before the hosts react to that clock's outputs). An error
+/// of `observe` ends the run and is returned.
+pub fn run_observed(
+    s: &RingScenario,
+    kind: EngineKind,
+    mut observe: impl FnMut(&RingSystem) -> Result<(), String>,
+) -> Result<RingReport, String> {
     let shape = s.shape();
     let (n, total) = (shape.ring_nodes(), shape.nodes());
     let engines = (0..total)
@@ -318,6 +332,7 @@ pub fn run(s: &RingScenario, kind: EngineKind) -> Result<RingReport, String> {
     };
     while sys.cycle() < end {
         sys.step();
+        observe(&sys)?;
         let now = sys.cycle();
         if sys.wiring().relays() != relays.as_slice() {
             relays = sys.wiring().relays().to_vec();

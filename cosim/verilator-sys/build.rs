@@ -61,12 +61,15 @@ const VERILATOR_FLAGS: &[&str] = &[
     "-fPIC",
 ];
 
-/// Variables passed to Verilator's make. `OPT_FAST=-O2` for the evaluation code
-/// (Verilator's default `-Os` is slower to run), `-O1` for the construction and
+/// Variables passed to Verilator's make. `OPT_FAST=-O3` for the evaluation code
+/// (Verilator's default `-Os` is slower to run; over `-O2`, `-O3` inlines the
+/// runtime's wide-word helpers such as `_vl_insert_WW` with their constant
+/// arguments, which the DRCC's 100- and 128-bit vectors spent a fifth of their
+/// time in, and is as fast on the channel), `-O1` for the construction and
 /// trace-declaration code, `-O2` for the runtime library, and
 /// `VM_PARALLEL_BUILDS=1` so the generated files compile in parallel with `-j`.
 const MAKE_VARS: &[&str] = &[
-    "OPT_FAST=-O2",
+    "OPT_FAST=-O3",
     "OPT_SLOW=-O1",
     "OPT_GLOBAL=-O2",
     "VM_PARALLEL_BUILDS=1",
@@ -217,7 +220,18 @@ fn build(manifest: &Path, shim_dir: &Path, tops: &[TopTable]) -> Result<String, 
             prune(&cache, &format!("V{}-", top.name), &mdir);
         }
         if let Some(member) = clk_prev_member(top, &mdir) {
-            defines.push((format!("DRCC_{}_CLK_PREV", top.name.to_uppercase()), member));
+            let upper = top.name.to_uppercase();
+            defines.push((format!("DRCC_{upper}_CLK_PREV"), member));
+            // The shim's own copy of the evaluation loop, which skips the
+            // input-combinational region when no input changed (drcc::evalStep),
+            // only for code it was copied from.
+            match eval_code_matches(top, &mdir) {
+                Ok(()) => defines.push((format!("DRCC_{upper}_EVAL_STEP"), "1".into())),
+                Err(why) => println!(
+                    "cargo::warning=V{}: {why}: stepping through eval() (same results, slower)",
+                    top.name
+                ),
+            }
         }
         if !runtime.is_file() {
             fs::create_dir_all(&runtime_dir).expect("create the runtime cache");
@@ -570,6 +584,105 @@ fn make_list(text: &str, name: &str) -> Vec<String> {
         inside = t.ends_with('\\');
     }
     items
+}
+
+/// The evaluation code that `drcc::evalStep` (shim/drcc_shim_common.h) copies,
+/// normalised as [`normalise_eval_code`] does (see the file's header).
+const EVAL_CODE: &str = include_str!("build/eval_5006.txt");
+
+/// Ok when the model's `V<top>::eval_step()` and `V<top>___024root___eval()` are,
+/// once normalised, exactly the code the shim's fast path copies; else why not.
+fn eval_code_matches(top: &TopTable, mdir: &Path) -> Result<(), String> {
+    let name = &top.name;
+    let read =
+        |p: &Path| fs::read_to_string(p).map_err(|e| format!("cannot read {}: {e}", p.display()));
+    let step = function(
+        &read(&mdir.join(format!("V{name}.cpp")))?,
+        &format!("void V{name}::eval_step() {{"),
+    )
+    .ok_or_else(|| format!("no V{name}::eval_step() in V{name}.cpp"))?;
+    // `___eval` is in one of the root's "fast" files (DepSet_<hash>__<n>.cpp).
+    let head = format!("void V{name}___024root___eval(V{name}___024root* vlSelf) {{");
+    let mut evals = Vec::new();
+    for e in fs::read_dir(mdir).map_err(|e| format!("cannot list {}: {e}", mdir.display()))? {
+        let p = e.map_err(|e| e.to_string())?.path();
+        let file = p.file_name().and_then(|f| f.to_str()).unwrap_or("");
+        if file.starts_with(&format!("V{name}___024root__DepSet_"))
+            && file.ends_with(".cpp")
+            && !file.ends_with("__Slow.cpp")
+        {
+            evals.extend(function(&read(&p)?, &head));
+        }
+    }
+    let [eval] = &evals[..] else {
+        return Err(format!(
+            "{} definitions of V{name}___024root___eval()",
+            evals.len()
+        ));
+    };
+    let expected = EVAL_CODE
+        .split_once("\n\n")
+        .map_or("", |(_, code)| code)
+        .trim_end();
+    let found = normalise_eval_code(name, &format!("{step}\n\n{eval}"));
+    if found.trim_end() == expected {
+        Ok(())
+    } else {
+        Err(
+            "its evaluation loop is not the one the shim's fast path copies (build/eval_5006.txt)"
+                .into(),
+        )
+    }
+}
+
+/// The lines of the C++ function that opens with the line `head`, up to its
+/// closing `}` line.
+fn function(text: &str, head: &str) -> Option<String> {
+    let mut lines = text.lines().skip_while(|l| *l != head);
+    let first = lines.next()?;
+    let mut out = vec![first];
+    for l in lines {
+        out.push(l);
+        if l == "}" {
+            return Some(out.join("\n"));
+        }
+    }
+    None
+}
+
+/// `V<name>` -> `VTOP`, `VlTriggerVec<3>` -> `VlTriggerVec<N>`, and the file and
+/// line of `VL_FATAL_MT("<file>", <line>, ...)` -> `FILE, LINE`: what differs
+/// between tops and checkouts but not in what the code does.
+fn normalise_eval_code(name: &str, code: &str) -> String {
+    let code = code
+        .replace(&format!("V{name}::"), "VTOP::")
+        .replace(&format!("V{name}___024root"), "VTOP___024root")
+        .replace(&format!("V{name}__Syms"), "VTOP__Syms");
+    let mut out = String::new();
+    for line in code.lines() {
+        let mut line = line.to_string();
+        if let Some(i) = line.find("VlTriggerVec<") {
+            let from = i + "VlTriggerVec<".len();
+            if let Some(len) = line[from..].find('>') {
+                line.replace_range(from..from + len, "N");
+            }
+        }
+        if let Some(i) = line.find("VL_FATAL_MT(\"") {
+            let from = i + "VL_FATAL_MT(".len();
+            // The quoted file name, then ", <line>,".
+            let rest = &line[from + 1..];
+            if let Some(q) = rest.find('"') {
+                let after = &rest[q + 1..];
+                if let Some(c) = after.strip_prefix(", ").and_then(|a| a.find(',')) {
+                    let end = from + 1 + q + 1 + 2 + c;
+                    line.replace_range(from..end, "FILE, LINE");
+                }
+            }
+        }
+        out.push_str(&line);
+        out.push('\n');
+    }
+    out
 }
 
 /// The model's internal "value of clk at the previous eval" member, if exactly one

@@ -21,6 +21,12 @@
 //! All nodes are held in reset for the first [`System::reset_cycles`] cycles
 //! (default [`DEFAULT_RESET_CYCLES`]); no request and no abort is raised during
 //! reset.
+//!
+//! [`System::step`] makes one clock and keeps its [`Sample`]: what traces and
+//! lock-step comparisons watch. [`System::run_for`] and [`System::run_until_idle`]
+//! make the same clocks with the same events for runs nobody watches clock by
+//! clock: where the host raises nothing for a while they step the nodes through
+//! [`ChannelEngine::step_quiet`] and keep only the last sample.
 
 use std::collections::VecDeque;
 use std::convert::Infallible;
@@ -125,6 +131,10 @@ pub struct System {
     arb_lost: Vec<NodeEvent>,
     recessive_cycles: u64,
     steps: u64,
+    /// Per node: the inputs of the current quiet stretch (`run_quiet`).
+    quiet_inputs: Vec<ChannelInputs>,
+    /// Every engine gains from quiet stretches.
+    quiet_gains: bool,
 }
 
 impl System {
@@ -139,7 +149,6 @@ impl System {
         let n = engines.len();
         Ok(System {
             names: (0..n).map(|i| format!("node{i}")).collect(),
-            engines,
             queues: vec![VecDeque::new(); n],
             in_flight: vec![None; n],
             tx_frame: vec![Frame::default(); n],
@@ -164,6 +173,9 @@ impl System {
             arb_lost: Vec::new(),
             recessive_cycles: 0,
             steps: 0,
+            quiet_inputs: Vec::with_capacity(n),
+            quiet_gains: engines.iter().all(|e| e.gains_from_quiet()),
+            engines,
         })
     }
 
@@ -383,45 +395,193 @@ impl System {
             self.sample.tx_req[i] = tx_req;
             self.sample.tx_abort[i] = tx_abort;
             self.sample.outputs[i] = out;
-            let mine = self.in_flight[i].unwrap_or_default();
-            if out.rx_valid {
-                self.deliveries.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: out.rx_frame,
-                });
-            }
-            if out.arb_lost {
-                self.arb_lost.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: mine,
-                });
-            }
-            if out.tx_done {
-                self.sent.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: mine,
-                });
-                self.in_flight[i] = None;
-            }
-            if out.tx_failed {
-                self.failed.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: mine,
-                });
-                self.in_flight[i] = None;
-            }
+            self.record(cycle, i, &out);
         }
         self.steps += 1;
         &self.sample
     }
 
+    /// Records the host events of node `i`'s outputs `out` in `cycle`. Inlined:
+    /// `step` calls it for every node every clock.
+    #[inline(always)]
+    fn record(&mut self, cycle: u64, i: usize, out: &ChannelOutputs) {
+        let mine = self.in_flight[i].unwrap_or_default();
+        if out.rx_valid {
+            self.deliveries.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: out.rx_frame,
+            });
+        }
+        if out.arb_lost {
+            self.arb_lost.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: mine,
+            });
+        }
+        if out.tx_done {
+            self.sent.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: mine,
+            });
+            self.in_flight[i] = None;
+        }
+        if out.tx_failed {
+            self.failed.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: mine,
+            });
+            self.in_flight[i] = None;
+        }
+    }
+
+    /// Runs `cycles` clocks with the result of calling [`System::step`] that many
+    /// times: the same events and, at the end, the same [`System::sample`]. Where
+    /// the host raises nothing for a while (after reset, no request or abort due,
+    /// nothing changing `tx_pending`), the nodes run through
+    /// [`ChannelEngine::step_quiet`], which may skip converting outputs nobody
+    /// looks at, and no intermediate sample is kept. For runs that nobody watches
+    /// clock by clock (the benchmark, [`System::run_until_idle`]); traces and
+    /// lock-step comparisons use `step`.
+    pub fn run_for(&mut self, cycles: u64) {
+        if !self.quiet_gains {
+            for _ in 0..cycles {
+                self.step();
+            }
+            return;
+        }
+        let end = self.steps.saturating_add(cycles);
+        while self.steps < end {
+            let quiet = self.quiet_cycles().min(end - self.steps);
+            if quiet == 0 {
+                self.step();
+            } else {
+                self.run_quiet(quiet);
+            }
+        }
+    }
+
+    /// How many clocks from the next one on would [`System::step`] raise no reset,
+    /// request or abort, as far as the host's schedule tells (`u64::MAX`: no end);
+    /// 0 also when an engine does not gain from quiet stretches
+    /// ([`ChannelEngine::gains_from_quiet`]: the reference model steps as fast).
+    /// A request also needs `tx_pending` low, which only changes with a `tx_done` or
+    /// a `tx_failed` (timing contract §8): `run_quiet` ends a stretch there.
+    fn quiet_cycles(&self) -> u64 {
+        let c = self.steps;
+        if c < self.reset_cycles || !self.quiet_gains {
+            return 0;
+        }
+        let mut quiet = u64::MAX;
+        for i in 0..self.engines.len() {
+            if let Some(&due) = self.aborts[i].front() {
+                quiet = quiet.min(due.saturating_sub(c));
+            }
+            if !self.sample.outputs[i].tx_pending {
+                if let Some(head) = self.queues[i].front() {
+                    // No request in the clock after one (step's rule).
+                    let first = head.due.max(c + self.sample.tx_req[i] as u64);
+                    quiet = quiet.min(first - c);
+                }
+            }
+        }
+        quiet
+    }
+
+    /// Up to `cycles` clocks (at least 1) in which the host raises nothing, as
+    /// [`System::step`] would make them; ends after a clock with a pulse
+    /// (`rx_valid`, `tx_done`, `arb_lost`, `tx_failed`) or a change of `tx_pending`,
+    /// whose events it records. The sample holds the last clock, complete.
+    fn run_quiet(&mut self, cycles: u64) {
+        let n = self.engines.len();
+        self.quiet_inputs.clear();
+        for i in 0..n {
+            self.quiet_inputs.push(ChannelInputs {
+                rst: false,
+                rx: true,
+                timing: self.timing,
+                config: self.config[i],
+                tx_req: false,
+                tx_frame: self.tx_frame[i],
+                tx_abort: false,
+                err_reset: false,
+            });
+        }
+        self.sample.rst = false;
+        self.sample.tx_req.fill(false);
+        self.sample.tx_abort.fill(false);
+        for _ in 0..cycles {
+            let cycle = self.steps;
+            for (t, o) in self.tx.iter_mut().zip(&self.sample.outputs) {
+                *t = o.tx;
+            }
+            let line = self.bus.resolve(cycle, &self.tx, &mut self.sample.rx);
+            if line {
+                self.recessive_cycles = self.recessive_cycles.saturating_add(1);
+            } else {
+                self.recessive_cycles = 0;
+            }
+            self.sample.cycle = cycle;
+            self.sample.bus = line;
+            let mut notable = false;
+            for (i, engine) in self.engines.iter_mut().enumerate() {
+                let inputs = &mut self.quiet_inputs[i];
+                inputs.rx = self.sample.rx[i];
+                notable |= engine.step_quiet(inputs, &mut self.sample.outputs[i]);
+            }
+            self.steps += 1;
+            if notable {
+                for i in 0..n {
+                    self.engines[i].complete_outputs(&mut self.sample.outputs[i]);
+                    let out = self.sample.outputs[i];
+                    self.record(cycle, i, &out);
+                }
+                return;
+            }
+        }
+        for (engine, out) in self.engines.iter_mut().zip(&mut self.sample.outputs) {
+            engine.complete_outputs(out);
+        }
+    }
+
     /// Steps until [`System::is_quiescent`] or until `max_cycles` cycles have been
-    /// run in total.
+    /// run in total. Nobody watches single clocks: the quiet stretches run as in
+    /// [`System::run_for`], stopping exactly where clock-by-clock stepping would.
     pub fn run_until_idle(&mut self, max_cycles: u64) -> RunOutcome {
+        if !self.quiet_gains {
+            return self.run_until_idle_stepwise(max_cycles);
+        }
+        loop {
+            if self.is_quiescent() {
+                return RunOutcome::Idle { cycle: self.steps };
+            }
+            if self.steps >= max_cycles {
+                return RunOutcome::CycleLimit { cycle: self.steps };
+            }
+            let mut quiet = self.quiet_cycles().min(max_cycles - self.steps);
+            // Within a stretch the queues stay as they are and tx_pending does not
+            // change (it ends the stretch), so the system can only become quiescent
+            // once the recessive run reaches the idle length: stop there.
+            if self.queues.iter().all(|q| q.is_empty())
+                && self.sample.outputs.iter().all(|o| !o.tx_pending)
+            {
+                let idle = IDLE_BITS * self.timing.clocks_per_bit() as u64;
+                quiet = quiet.min(idle.saturating_sub(self.recessive_cycles).max(1));
+            }
+            if quiet == 0 {
+                self.step();
+            } else {
+                self.run_quiet(quiet);
+            }
+        }
+    }
+
+    /// [`System::run_until_idle`] clock by clock (every sample is a step's): what
+    /// `run_until_idle` must equal.
+    pub fn run_until_idle_stepwise(&mut self, max_cycles: u64) -> RunOutcome {
         match self.run_until_idle_with(max_cycles, |_| Ok::<(), Infallible>(())) {
             Ok(o) => o,
             Err(never) => match never {},

@@ -21,6 +21,8 @@
 //! current), and the shim checks at compile time that every table port exists on
 //! the model and fits its C type.
 
+#[path = "build/eval_step.rs"]
+mod eval_step;
 #[path = "src/required.rs"]
 mod required;
 #[path = "build/tables.rs"]
@@ -61,12 +63,15 @@ const VERILATOR_FLAGS: &[&str] = &[
     "-fPIC",
 ];
 
-/// Variables passed to Verilator's make. `OPT_FAST=-O2` for the evaluation code
-/// (Verilator's default `-Os` is slower to run), `-O1` for the construction and
+/// Variables passed to Verilator's make. `OPT_FAST=-O3` for the evaluation code
+/// (Verilator's default `-Os` is slower to run; over `-O2`, `-O3` inlines the
+/// runtime's wide-word helpers such as `_vl_insert_WW` with their constant
+/// arguments, which the DRCC's 100- and 128-bit vectors spent a fifth of their
+/// time in, and is as fast on the channel), `-O1` for the construction and
 /// trace-declaration code, `-O2` for the runtime library, and
 /// `VM_PARALLEL_BUILDS=1` so the generated files compile in parallel with `-j`.
 const MAKE_VARS: &[&str] = &[
-    "OPT_FAST=-O2",
+    "OPT_FAST=-O3",
     "OPT_SLOW=-O1",
     "OPT_GLOBAL=-O2",
     "VM_PARALLEL_BUILDS=1",
@@ -216,8 +221,19 @@ fn build(manifest: &Path, shim_dir: &Path, tops: &[TopTable]) -> Result<String, 
             .ok();
             prune(&cache, &format!("V{}-", top.name), &mdir);
         }
-        if let Some(member) = clk_prev_member(top, &mdir) {
-            defines.push((format!("DRCC_{}_CLK_PREV", top.name.to_uppercase()), member));
+        if let Some(member) = eval_step::clk_prev_member(top, &mdir) {
+            let upper = top.name.to_uppercase();
+            defines.push((format!("DRCC_{upper}_CLK_PREV"), member));
+            // The shim's own copy of the evaluation loop, which skips the
+            // input-combinational region when no input changed (drcc::evalStep),
+            // only for code it was copied from.
+            match eval_step::eval_code_matches(top, &mdir) {
+                Ok(()) => defines.push((format!("DRCC_{upper}_EVAL_STEP"), "1".into())),
+                Err(why) => println!(
+                    "cargo::warning=V{}: {why}: stepping through eval() (same results, slower)",
+                    top.name
+                ),
+            }
         }
         if !runtime.is_file() {
             fs::create_dir_all(&runtime_dir).expect("create the runtime cache");
@@ -570,24 +586,4 @@ fn make_list(text: &str, name: &str) -> Vec<String> {
         inside = t.ends_with('\\');
     }
     items
-}
-
-/// The model's internal "value of clk at the previous eval" member, if exactly one
-/// member of `V<top>___024root.h` looks like it (5.006: `__Vtrigrprev__TOP__clk`).
-/// The shim then makes one eval per clock instead of two (see drcc_shim_common.h);
-/// the tests check that both ways give the same outputs.
-fn clk_prev_member(top: &TopTable, mdir: &Path) -> Option<String> {
-    let text = fs::read_to_string(mdir.join(format!("V{}___024root.h", top.name))).ok()?;
-    let mut found: Vec<String> = text
-        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-        .filter(|w| {
-            w.starts_with("__Vtrig")
-                && w.contains("prev")
-                && (w.ends_with("__clk") || w.contains("__clk__"))
-        })
-        .map(str::to_string)
-        .collect();
-    found.sort();
-    found.dedup();
-    (found.len() == 1).then(|| found.remove(0))
 }

@@ -256,6 +256,35 @@ pub trait ChannelEngine {
     fn name(&self) -> &'static str;
     /// Apply inputs, clock once, return the outputs after the edge.
     fn step(&mut self, inputs: &ChannelInputs) -> ChannelOutputs;
+
+    /// One clock of a quiet stretch of [`System::run_for`](crate::system::System::run_for),
+    /// in which the host raises nothing: the contract of [`ChannelEngine::step`],
+    /// with `rst`, `tx_req`, `tx_abort` and `err_reset` low in `inputs`, and, between
+    /// two calls with no `step` in between, only `inputs.rx` changing.
+    ///
+    /// Writes `tx`, `tx_pending` and the pulses (`tx_done`, `arb_lost`, `tx_failed`,
+    /// `rx_valid`) of the outputs into `out`, and all of them in a clock where a pulse
+    /// is set; the other fields may keep older values until
+    /// [`ChannelEngine::complete_outputs`]. Returns whether a pulse is set or
+    /// `tx_pending` changed (the host has something to do). The default steps and
+    /// writes everything.
+    fn step_quiet(&mut self, inputs: &ChannelInputs, out: &mut ChannelOutputs) -> bool {
+        let pending = out.tx_pending;
+        *out = self.step(inputs);
+        out.rx_valid || out.tx_done || out.arb_lost || out.tx_failed || out.tx_pending != pending
+    }
+
+    /// Whether [`ChannelEngine::step_quiet`] does less than `step` (a system uses
+    /// quiet stretches only when all its engines do). The default: no.
+    fn gains_from_quiet(&self) -> bool {
+        false
+    }
+
+    /// Completes `out`, last written by [`ChannelEngine::step_quiet`], with every
+    /// output of the last clock. The default has nothing to add.
+    fn complete_outputs(&mut self, out: &mut ChannelOutputs) {
+        let _ = out;
+    }
 }
 
 #[cfg(test)]

@@ -7,6 +7,13 @@
 //! the data bytes as [`Frame::data_word`] (byte 0 in bits 63..56), the mode as
 //! [`Mode::code`](super::Mode::code).
 //!
+//! In the quiet stretches of `System::run_for` ([`ChannelEngine::step_quiet`]) the
+//! port structs are kept from clock to clock: only `rx` is written, and only `tx`,
+//! `tx_pending` and the pulses are read, unless a pulse is set: converting every
+//! input and output every clock took a large share of a clock once the model's
+//! own evaluation no longer recomputed unchanged inputs (`docs/design.md`,
+//! "Engine speed").
+//!
 //! VCD traces ([`VerilatorEngine::open_vcd`]) stamp the `clk = 0` phase of step
 //! `n` at time `2n` and the `clk = 1` phase at `2n + 1` (half clock periods).
 
@@ -25,6 +32,9 @@ pub struct VerilatorEngine {
     ch: CanChannel,
     ports_in: CanChannelIn,
     ports_out: CanChannelOut,
+    /// `ports_in` holds the encoding of the inputs of the current quiet stretch
+    /// (set by `step_quiet`, cleared by `step`).
+    quiet: bool,
 }
 
 impl std::fmt::Debug for VerilatorEngine {
@@ -43,6 +53,7 @@ impl VerilatorEngine {
             ch,
             ports_in: CanChannelIn::default(),
             ports_out: CanChannelOut::default(),
+            quiet: false,
         })
     }
 
@@ -69,9 +80,54 @@ impl ChannelEngine for VerilatorEngine {
 
     #[inline]
     fn step(&mut self, inputs: &ChannelInputs) -> ChannelOutputs {
+        self.quiet = false;
         encode(inputs, &mut self.ports_in);
         self.ch.step_into(&self.ports_in, &mut self.ports_out);
         decode(&self.ports_out)
+    }
+
+    #[inline]
+    fn step_quiet(&mut self, inputs: &ChannelInputs, out: &mut ChannelOutputs) -> bool {
+        if self.quiet {
+            // Only rx changes within a stretch (the trait's contract).
+            debug_assert_eq!(
+                {
+                    let mut p = CanChannelIn::default();
+                    encode(inputs, &mut p);
+                    p.rx = self.ports_in.rx;
+                    p
+                },
+                self.ports_in,
+                "step_quiet: an input other than rx changed within a quiet stretch"
+            );
+            self.ports_in.rx = inputs.rx as u8;
+        } else {
+            encode(inputs, &mut self.ports_in);
+            self.quiet = true;
+        }
+        self.ch.step_into(&self.ports_in, &mut self.ports_out);
+        let p = &self.ports_out;
+        if (p.tx_done | p.arb_lost | p.tx_failed | p.rx_valid) != 0 {
+            *out = decode(p);
+            return true;
+        }
+        let pending = p.tx_pending != 0;
+        let changed = pending != out.tx_pending;
+        out.tx = p.tx != 0;
+        out.tx_pending = pending;
+        out.tx_done = false;
+        out.arb_lost = false;
+        out.tx_failed = false;
+        out.rx_valid = false;
+        changed
+    }
+
+    fn gains_from_quiet(&self) -> bool {
+        true
+    }
+
+    fn complete_outputs(&mut self, out: &mut ChannelOutputs) {
+        *out = decode(&self.ports_out);
     }
 }
 

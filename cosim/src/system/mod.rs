@@ -21,6 +21,12 @@
 //! All nodes are held in reset for the first [`System::reset_cycles`] cycles
 //! (default [`DEFAULT_RESET_CYCLES`]); no request and no abort is raised during
 //! reset.
+//!
+//! [`System::step`] makes one clock and keeps its [`Sample`]: what traces and
+//! lock-step comparisons watch. [`System::run_for`] and [`System::run_until_idle`]
+//! make the same clocks with the same events for runs nobody watches clock by
+//! clock: where the host raises nothing for a while they step the nodes through
+//! [`ChannelEngine::step_quiet`] and keep only the last sample.
 
 use std::collections::VecDeque;
 use std::convert::Infallible;
@@ -125,6 +131,10 @@ pub struct System {
     arb_lost: Vec<NodeEvent>,
     recessive_cycles: u64,
     steps: u64,
+    /// Per node: the inputs of the current quiet stretch (`run_quiet`).
+    quiet_inputs: Vec<ChannelInputs>,
+    /// Every engine gains from quiet stretches.
+    quiet_gains: bool,
 }
 
 impl System {
@@ -139,7 +149,6 @@ impl System {
         let n = engines.len();
         Ok(System {
             names: (0..n).map(|i| format!("node{i}")).collect(),
-            engines,
             queues: vec![VecDeque::new(); n],
             in_flight: vec![None; n],
             tx_frame: vec![Frame::default(); n],
@@ -164,6 +173,9 @@ impl System {
             arb_lost: Vec::new(),
             recessive_cycles: 0,
             steps: 0,
+            quiet_inputs: Vec::with_capacity(n),
+            quiet_gains: engines.iter().all(|e| e.gains_from_quiet()),
+            engines,
         })
     }
 
@@ -383,45 +395,52 @@ impl System {
             self.sample.tx_req[i] = tx_req;
             self.sample.tx_abort[i] = tx_abort;
             self.sample.outputs[i] = out;
-            let mine = self.in_flight[i].unwrap_or_default();
-            if out.rx_valid {
-                self.deliveries.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: out.rx_frame,
-                });
-            }
-            if out.arb_lost {
-                self.arb_lost.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: mine,
-                });
-            }
-            if out.tx_done {
-                self.sent.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: mine,
-                });
-                self.in_flight[i] = None;
-            }
-            if out.tx_failed {
-                self.failed.push(NodeEvent {
-                    cycle,
-                    node: i,
-                    frame: mine,
-                });
-                self.in_flight[i] = None;
-            }
+            self.record(cycle, i, &out);
         }
         self.steps += 1;
         &self.sample
     }
 
-    /// Steps until [`System::is_quiescent`] or until `max_cycles` cycles have been
-    /// run in total.
-    pub fn run_until_idle(&mut self, max_cycles: u64) -> RunOutcome {
+    /// Records the host events of node `i`'s outputs `out` in `cycle`. Inlined:
+    /// `step` calls it for every node every clock.
+    #[inline(always)]
+    fn record(&mut self, cycle: u64, i: usize, out: &ChannelOutputs) {
+        let mine = self.in_flight[i].unwrap_or_default();
+        if out.rx_valid {
+            self.deliveries.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: out.rx_frame,
+            });
+        }
+        if out.arb_lost {
+            self.arb_lost.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: mine,
+            });
+        }
+        if out.tx_done {
+            self.sent.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: mine,
+            });
+            self.in_flight[i] = None;
+        }
+        if out.tx_failed {
+            self.failed.push(NodeEvent {
+                cycle,
+                node: i,
+                frame: mine,
+            });
+            self.in_flight[i] = None;
+        }
+    }
+
+    /// [`System::run_until_idle`] clock by clock (every sample is a step's): what
+    /// `run_until_idle` must equal.
+    pub fn run_until_idle_stepwise(&mut self, max_cycles: u64) -> RunOutcome {
         match self.run_until_idle_with(max_cycles, |_| Ok::<(), Infallible>(())) {
             Ok(o) => o,
             Err(never) => match never {},
@@ -465,6 +484,8 @@ fn idle_outputs() -> ChannelOutputs {
         ..ChannelOutputs::default()
     }
 }
+
+mod quiet;
 
 #[cfg(test)]
 pub(crate) mod tests;

@@ -164,6 +164,16 @@ pub fn shim_cpp(t: &TopTable) -> String {
          #define DRCC_SHIM_CLK_PREV DRCC_{upper}_CLK_PREV\n\
          #endif\n\
          \n\
+         // build.rs defines DRCC_{upper}_EVAL_STEP when the model's evaluation code is the\n\
+         // one drcc::evalStep copies.\n\
+         #ifdef DRCC_{upper}_EVAL_STEP\n\
+         #include \"V{name}__Syms.h\"\n\
+         #define DRCC_SHIM_EVAL_STEP 1\n\
+         #define DRCC_SHIM_ROOT V{name}___024root\n\
+         #define DRCC_SHIM_SYMS V{name}__Syms\n\
+         #define DRCC_SHIM_ROOT_FN(f) V{name}___024root___##f\n\
+         #endif\n\
+         \n\
          #define DRCC_SHIM_MODEL V{name}\n\
          #define DRCC_SHIM_NAME \"{name}\"\n\
          #define DRCC_SHIM_IN {camel}In\n\

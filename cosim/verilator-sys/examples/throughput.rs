@@ -56,6 +56,8 @@ fn main() {
         clocks as f64 / s / 1e6,
         if exact || !CanChannel::fast_edge() {
             "two evals per clock"
+        } else if CanChannel::skips_settled_inputs() {
+            "single-eval edge, input logic skipped when no input changed"
         } else {
             "single-eval edge"
         }

@@ -74,7 +74,9 @@ void drcc_hub_b_free(void* handle);
 /// Applies *in, makes one rising edge of clk (evaluating clk=0 then clk=1, or a
 /// single equivalent eval, see drcc_hub_b_fast_edge), copies the outputs to *out.
 void drcc_hub_b_step(void* handle, const HubBIn* in, HubBOut* out);
-/// 1 if step() can make one eval per clock instead of two (see drcc_shim_common.h).
+/// 0: step() evaluates clk=0 then clk=1; 1: one eval per clock instead; 2: one eval
+/// that also skips the input-combinational region when no input changed (see
+/// drcc::evalStep in drcc_shim_common.h). Results are the same in every case.
 int drcc_hub_b_fast_edge(void);
 /// exact != 0: always two evals per clock (clk=0, clk=1), as with a trace open.
 /// Results are identical either way; this exists to check exactly that.

@@ -24,7 +24,13 @@
 //! after resetting the model's "previous clk" trigger state: Verilator settles the
 //! input logic before the edge-triggered logic in one eval, so the outputs are the
 //! same (the tests step an instance each way in lockstep and compare them), at
-//! about 1.4 times the speed. [`CanChannel::set_exact`] forces the two evals.
+//! about 1.4 times the speed. When [`CanChannel::skips_settled_inputs`] is also
+//! true, that eval is the shim's copy of Verilator's evaluation loop, which skips
+//! the input-combinational region in a clock where no input changed (the model is
+//! settled for those inputs already; `drcc::evalStep` in
+//! `shim/drcc_shim_common.h` says why that is exact): about half the work of most
+//! clocks, since a CAN input changes at most once per bit. [`CanChannel::set_exact`]
+//! forces the two evals.
 //! With a VCD trace open,
 //! step number `n` (counted from 0 since the instance was created) dumps the
 //! `clk = 0` phase at time `2n` and the `clk = 1` phase at `2n + 1`: one VCD time
@@ -205,7 +211,8 @@ macro_rules! verilated_top {
                     input: *const $in,
                     output: *mut $out,
                 );
-                /// 1 if steps can make one eval instead of two.
+                /// 0: two evals per step; 1: one eval; 2: one eval that skips the
+                /// input-combinational region when no input changed.
                 pub fn $fast_c() -> c_int;
                 /// `exact != 0`: always two evals per step.
                 pub fn $exact_c(handle: *mut c_void, exact: c_int);
@@ -282,6 +289,13 @@ macro_rules! verilated_top {
                 unsafe { $ffi::$fast_c() != 0 }
             }
 
+            /// Whether those single evals also skip the input-combinational region
+            /// in a clock where no input changed (see the crate docs).
+            pub fn skips_settled_inputs() -> bool {
+                // SAFETY: plain function without arguments.
+                unsafe { $ffi::$fast_c() == 2 }
+            }
+
             /// `true`: always evaluate `clk = 0` and then `clk = 1` (as while tracing);
             /// `false` (the default): use the single-eval edge when [`$name::fast_edge`].
             pub fn set_exact(&mut self, exact: bool) {
@@ -348,6 +362,11 @@ macro_rules! verilated_top {
 
             /// No model, no fast edge.
             pub fn fast_edge() -> bool {
+                false
+            }
+
+            /// No model, no fast edge.
+            pub fn skips_settled_inputs() -> bool {
                 false
             }
 

@@ -189,7 +189,11 @@ fn single_eval_edge_matches_two_evals() {
     if !model_or_skip("single_eval_edge_matches_two_evals") {
         return;
     }
-    eprintln!("fast edge available: {}", CanChannel::fast_edge());
+    eprintln!(
+        "fast edge available: {}, skips settled inputs: {}",
+        CanChannel::fast_edge(),
+        CanChannel::skips_settled_inputs()
+    );
     // Two identical buses of three nodes; bus 0 uses the default stepping, bus 1
     // forces clk=0/clk=1 evals. Same stimulus, same outputs, clock by clock.
     let mut buses: Vec<Vec<CanChannel>> = (0..2)

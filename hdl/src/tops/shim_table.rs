@@ -121,7 +121,9 @@ pub fn ports_header(top: &Top, ports: &[Port]) -> String {
          /// Applies *in, makes one rising edge of clk (evaluating clk=0 then clk=1, or a\n\
          /// single equivalent eval, see drcc_{name}_fast_edge), copies the outputs to *out.\n\
          void drcc_{name}_step(void* handle, const {camel}In* in, {camel}Out* out);\n\
-         /// 1 if step() can make one eval per clock instead of two (see drcc_shim_common.h).\n\
+         /// 0: step() evaluates clk=0 then clk=1; 1: one eval per clock instead; 2: one eval\n\
+         /// that also skips the input-combinational region when no input changed (see\n\
+         /// drcc::evalStep in drcc_shim_common.h). Results are the same in every case.\n\
          int drcc_{name}_fast_edge(void);\n\
          /// exact != 0: always two evals per clock (clk=0, clk=1), as with a trace open.\n\
          /// Results are identical either way; this exists to check exactly that.\n\

@@ -286,6 +286,10 @@ enum Command {
         /// Print the results as JSON.
         #[arg(long)]
         json: bool,
+        /// Also the area block by block (each block the top instantiates kept apart
+        /// in one more yosys run); --all --markdown always has it on ice40.
+        #[arg(long)]
+        breakdown: bool,
         /// Where netlists, logs, the scan wrapper and bitstreams go (default: out/synth).
         #[arg(long, value_name = "DIR")]
         build_dir: Option<PathBuf>,
@@ -436,6 +440,7 @@ fn main() -> ExitCode {
             all,
             markdown,
             json,
+            breakdown,
             build_dir,
         } => cli::synth::run(cli::synth::SynthArgs {
             target,
@@ -443,6 +448,7 @@ fn main() -> ExitCode {
             all,
             json,
             markdown,
+            breakdown,
             build_dir,
         }),
     };

@@ -1,6 +1,7 @@
 //! The FPGA flow end to end: `drcc synth --target ice40 --top can_channel` runs
 //! yosys, nextpnr-ice40 and icepack, writes a bitstream and reports non-zero
-//! LUT / FF counts and the Fmax nextpnr measured (about 40 s on 2 cores).
+//! LUT / FF counts, the area block by block (`--breakdown`) and the Fmax
+//! nextpnr measured (about 50 s on 2 cores).
 //!
 //! Without the tools the flow test is skipped, except under CI
 //! (`verilator_sys::required()`: `CI` or `DRCC_REQUIRE_VERILATOR` set to anything
@@ -36,6 +37,7 @@ fn ice40_flow_writes_a_bitstream_and_reports_area_and_fmax() {
         "--top",
         "can_channel",
         "--json",
+        "--breakdown",
         "--build-dir",
         &dir_s,
     ]);
@@ -67,6 +69,21 @@ fn ice40_flow_writes_a_bitstream_and_reports_area_and_fmax() {
     assert!(lut > 0 && ff > 0, "LUT {lut}, FF {ff}: {report:?}");
     // The wrapper adds its scan chain on top of the channel.
     assert!(m.wrapper_area.ff > ff, "{report:?}");
+    // By block: the channel's four blocks (rust-hdl fields of CanChannel), the
+    // protocol block the largest, and with the boundaries kept the sum is at
+    // least the flattened count (no sharing across them) but not far above it.
+    let b = m.breakdown.as_ref().expect("--breakdown gives the blocks");
+    let mut names: Vec<&str> = b.blocks.iter().map(|x| x.block.as_str()).collect();
+    assert_eq!(b.blocks[0].block, "bsp", "{b:?}");
+    names.sort();
+    assert_eq!(names, ["bsp", "btl", "cfg_regs", "rx_sync"], "{b:?}");
+    let sum: u64 = b.blocks.iter().map(|x| x.area.lut).sum::<u64>() + b.glue.lut;
+    assert_eq!(sum, b.total.lut, "{b:?}");
+    assert!(
+        b.total.lut >= lut * 95 / 100 && b.total.lut <= lut * 125 / 100,
+        "blocks' sum {} LUT4 against {lut} flattened: {b:?}",
+        b.total.lut
+    );
     let pnr = m.pnr.as_ref().expect("iCE40 is placed and routed");
     assert!(
         pnr.fmax_mhz > 1.0 && pnr.fmax_mhz < 1000.0,

@@ -10,7 +10,7 @@ use crate::report::{Measured, NoFit, Pnr, Reference, SynthReport, WrapperSummary
 use crate::scan::{scan_wrapper, Wrapper};
 use crate::target::{Target, RECOMMENDED_CLOCK_MHZ};
 use crate::tools::{ToolEnv, NEXTPNR_ICE40};
-use crate::{icepack, nextpnr, write_file, yosys, Error};
+use crate::{breakdown, icepack, nextpnr, write_file, yosys, Error};
 
 /// Where the flow reads and writes, and the tools it found.
 pub struct Flow<'a> {
@@ -23,6 +23,9 @@ pub struct Flow<'a> {
     pub env: ToolEnv,
     /// Told what runs next (the CLI prints it on stderr).
     pub progress: &'a dyn Fn(&str),
+    /// Also synthesise each top with its blocks kept apart, for the area block
+    /// by block ([`crate::breakdown`]), on the targets whose name is listed.
+    pub breakdown_on: &'a [&'a str],
 }
 
 fn abs(p: &Path) -> Result<PathBuf, Error> {
@@ -111,6 +114,15 @@ impl Flow<'_> {
             )
         });
         let (top_area, wrapper_area) = (top_area?, wrapper_area?);
+        let breakdown = if self.breakdown_on.contains(&t.name) {
+            (self.progress)(&format!(
+                "{} on {}: yosys with each block of the top kept apart (area by block)",
+                top.name, t.name
+            ));
+            Some(breakdown::run(&dir, t, &rtl, top.name, &top.verilog())?)
+        } else {
+            None
+        };
 
         let (pnr, no_fit) = match t.pnr {
             Some(device) => match self.place_and_route(top, t, device, &dir, &wrapper)? {
@@ -141,6 +153,7 @@ impl Flow<'_> {
             },
             pnr,
             no_fit,
+            breakdown,
             build_dir: dir,
         });
         Ok(report)
@@ -194,6 +207,7 @@ mod tests {
             build_root: workspace.join("build"),
             env: ToolEnv::default(),
             progress: &|_| {},
+            breakdown_on: &[],
         }
     }
 

@@ -20,10 +20,11 @@
 //! One file per concern, as rust-hdl's `rust-hdl-fpga-support` keeps one per
 //! toolchain: [`tools`] (finding and running the programs), [`target`] (the
 //! families and boards), [`yosys`], [`nextpnr`], [`icepack`], [`scan`] (the
-//! wrapper), [`flow`] (one top on one target), [`report`] (the serde report and
+//! wrapper), [`breakdown`] (the area block by block), [`flow`] (one top on one target), [`report`] (the serde report and
 //! its text), [`json`] (its `--json` layout) and [`markdown`] (the generated
 //! table and document).
 
+pub mod breakdown;
 pub mod flow;
 pub mod icepack;
 pub mod json;

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize, Serializer};
 
+use crate::breakdown::Breakdown;
 use crate::json::round3;
 
 use crate::nextpnr::CriticalPath;
@@ -72,6 +73,9 @@ pub struct Measured {
     /// The design does not fit the board's part: nextpnr stopped, this says why.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub no_fit: Option<NoFit>,
+    /// The top's area block by block ([`crate::breakdown`]), when asked for.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub breakdown: Option<Breakdown>,
     /// Build directory (netlists, logs, the wrapper, the bitstream).
     pub build_dir: PathBuf,
 }
@@ -284,6 +288,9 @@ impl SynthReport {
                 ratio(a.ff, r.ff)
             );
         }
+        if let Some(b) = &m.breakdown {
+            s.push_str(&b.text(t.lut, a, m.reference.as_ref().map(|r| r.lut)));
+        }
         match (&m.pnr, &m.no_fit) {
             (Some(p), _) => pnr_text(&mut s, p),
             (None, Some(nf)) => {
@@ -437,6 +444,7 @@ pub(crate) mod tests {
                 },
                 pnr,
                 no_fit: None,
+                breakdown: None,
                 build_dir: PathBuf::from("/b"),
             }),
         }

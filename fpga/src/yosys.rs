@@ -82,6 +82,25 @@ impl Area {
         a
     }
 
+    /// The group counts and cells of `self` and `other` together.
+    pub fn plus(&self, other: &Area) -> Area {
+        let mut cells = self.cells.clone();
+        for (c, n) in &other.cells {
+            *cells.entry(c.clone()).or_insert(0) += n;
+        }
+        Area {
+            lut: self.lut + other.lut,
+            ff: self.ff + other.ff,
+            carry: self.carry + other.carry,
+            bram: self.bram + other.bram,
+            lutram: self.lutram + other.lutram,
+            muxf: self.muxf + other.muxf,
+            dsp: self.dsp + other.dsp,
+            latch: self.latch + other.latch,
+            cells,
+        }
+    }
+
     /// The group counts of `self` less those of `other` (no cell list): the cost
     /// of a wrapper around a top.
     pub fn minus(&self, other: &Area) -> Area {

@@ -30,6 +30,8 @@ pub struct SynthArgs {
     pub json: bool,
     /// `--markdown`: rewrite docs/synthesis.md and the README table.
     pub markdown: bool,
+    /// `--breakdown`: the area block by block on every selected target.
+    pub breakdown: bool,
     /// `--build-dir`: where the netlists, logs and bitstreams go.
     pub build_dir: Option<PathBuf>,
 }
@@ -89,6 +91,15 @@ pub fn run(args: SynthArgs) -> CliResult {
         false => None,
     };
     let progress = |m: &str| eprintln!("drcc synth: {m}");
+    // --breakdown: on every selected target; the document always has the
+    // iCE40UP5K's (the family the DRCC's area target is judged on).
+    let breakdown_on: Vec<&str> = if args.breakdown {
+        targets.iter().map(|t| t.name).collect()
+    } else if args.markdown {
+        vec!["ice40"]
+    } else {
+        Vec::new()
+    };
     let flow = Flow {
         // rtl-out/ and constraints/ of the current directory, else of the
         // workspace this binary was built from.
@@ -102,6 +113,7 @@ pub fn run(args: SynthArgs) -> CliResult {
             .unwrap_or_else(|| PathBuf::from("out").join("synth")),
         env: ToolEnv::probe(&targets)?,
         progress: &progress,
+        breakdown_on: &breakdown_on,
     };
 
     let mut results: Vec<SynthReport> = Vec::new();

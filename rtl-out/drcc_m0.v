@@ -3024,6 +3024,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     wire  rx_frame__rx_rtr;
     wire  [3:0] rx_frame__rx_dlc;
     wire  [63:0] rx_frame__rx_data;
+    reg  detect__clk;
     reg  detect__sample;
     reg  detect__sampled;
     reg  [4:0] detect__field;
@@ -3299,6 +3300,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .rx_data(rx_frame__rx_data)
     );
     drcc_m0__chan_a__bsp__detect detect(
+        .clk(detect__clk),
         .sample(detect__sample),
         .sampled(detect__sampled),
         .field(detect__field),
@@ -3511,6 +3513,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         rx_frame__take_data_len = fsm__rx_take_data_len;
         rx_frame__take_data = fsm__rx_take_data;
         rx_frame__publish = fsm__rx_publish;
+        detect__clk = clk;
         detect__sample = sample;
         detect__sampled = sampled;
         detect__field = fsm__field;
@@ -3604,7 +3607,435 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
 endmodule // drcc_m0__chan_a__bsp
 
 
-module drcc_m0__chan_a__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__in_frame;
+    reg  if_dominant__in_arbitration;
+    reg  if_dominant__ack_slot;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__bc0;
+    reg  if_dominant__bc6;
+    reg  if_dominant__bc7;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__crc_ok;
+    reg  if_dominant__last_bit_arb;
+    reg  if_dominant__at_stuff_bit;
+    reg  if_dominant__stuff_last;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__ack_check_off;
+    wire  if_dominant__error;
+    wire  if_dominant__flag_error;
+    wire  if_dominant__bit_err;
+    wire  if_dominant__stuff_err;
+    wire  if_dominant__form_err;
+    wire  if_dominant__crc_err;
+    wire  if_dominant__ack_err;
+    wire  if_dominant__sof_error;
+    wire  if_dominant__lost;
+    wire  if_dominant__tec_exempt;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__in_frame;
+    reg  if_recessive__in_arbitration;
+    reg  if_recessive__ack_slot;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__bc0;
+    reg  if_recessive__bc6;
+    reg  if_recessive__bc7;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__crc_ok;
+    reg  if_recessive__last_bit_arb;
+    reg  if_recessive__at_stuff_bit;
+    reg  if_recessive__stuff_last;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__ack_check_off;
+    wire  if_recessive__error;
+    wire  if_recessive__flag_error;
+    wire  if_recessive__bit_err;
+    wire  if_recessive__stuff_err;
+    wire  if_recessive__form_err;
+    wire  if_recessive__crc_err;
+    wire  if_recessive__ack_err;
+    wire  if_recessive__sof_error;
+    wire  if_recessive__lost;
+    wire  if_recessive__tec_exempt;
+    reg  la_error__clk;
+    reg  la_error__sample;
+    reg  la_error__sampled;
+    reg  la_error__if_dominant;
+    reg  la_error__if_recessive;
+    wire  la_error__decision;
+    reg  la_flag_error__clk;
+    reg  la_flag_error__sample;
+    reg  la_flag_error__sampled;
+    reg  la_flag_error__if_dominant;
+    reg  la_flag_error__if_recessive;
+    wire  la_flag_error__decision;
+    reg  la_bit_err__clk;
+    reg  la_bit_err__sample;
+    reg  la_bit_err__sampled;
+    reg  la_bit_err__if_dominant;
+    reg  la_bit_err__if_recessive;
+    wire  la_bit_err__decision;
+    reg  la_stuff_err__clk;
+    reg  la_stuff_err__sample;
+    reg  la_stuff_err__sampled;
+    reg  la_stuff_err__if_dominant;
+    reg  la_stuff_err__if_recessive;
+    wire  la_stuff_err__decision;
+    reg  la_form_err__clk;
+    reg  la_form_err__sample;
+    reg  la_form_err__sampled;
+    reg  la_form_err__if_dominant;
+    reg  la_form_err__if_recessive;
+    wire  la_form_err__decision;
+    reg  la_crc_err__clk;
+    reg  la_crc_err__sample;
+    reg  la_crc_err__sampled;
+    reg  la_crc_err__if_dominant;
+    reg  la_crc_err__if_recessive;
+    wire  la_crc_err__decision;
+    reg  la_ack_err__clk;
+    reg  la_ack_err__sample;
+    reg  la_ack_err__sampled;
+    reg  la_ack_err__if_dominant;
+    reg  la_ack_err__if_recessive;
+    wire  la_ack_err__decision;
+    reg  la_sof_error__clk;
+    reg  la_sof_error__sample;
+    reg  la_sof_error__sampled;
+    reg  la_sof_error__if_dominant;
+    reg  la_sof_error__if_recessive;
+    wire  la_sof_error__decision;
+    reg  la_lost__clk;
+    reg  la_lost__sample;
+    reg  la_lost__sampled;
+    reg  la_lost__if_dominant;
+    reg  la_lost__if_recessive;
+    wire  la_lost__decision;
+    reg  la_tec_exempt__clk;
+    reg  la_tec_exempt__sample;
+    reg  la_tec_exempt__sampled;
+    reg  la_tec_exempt__if_dominant;
+    reg  la_tec_exempt__if_recessive;
+    wire  la_tec_exempt__decision;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .in_frame(if_dominant__in_frame),
+        .in_arbitration(if_dominant__in_arbitration),
+        .ack_slot(if_dominant__ack_slot),
+        .in_delim(if_dominant__in_delim),
+        .bc0(if_dominant__bc0),
+        .bc6(if_dominant__bc6),
+        .bc7(if_dominant__bc7),
+        .flag_passive(if_dominant__flag_passive),
+        .crc_ok(if_dominant__crc_ok),
+        .last_bit_arb(if_dominant__last_bit_arb),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .stuff_last(if_dominant__stuff_last),
+        .listen_only(if_dominant__listen_only),
+        .ack_check_off(if_dominant__ack_check_off),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .bit_err(if_dominant__bit_err),
+        .stuff_err(if_dominant__stuff_err),
+        .form_err(if_dominant__form_err),
+        .crc_err(if_dominant__crc_err),
+        .ack_err(if_dominant__ack_err),
+        .sof_error(if_dominant__sof_error),
+        .lost(if_dominant__lost),
+        .tec_exempt(if_dominant__tec_exempt)
+    );
+    drcc_m0__chan_a__bsp__detect__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .in_frame(if_recessive__in_frame),
+        .in_arbitration(if_recessive__in_arbitration),
+        .ack_slot(if_recessive__ack_slot),
+        .in_delim(if_recessive__in_delim),
+        .bc0(if_recessive__bc0),
+        .bc6(if_recessive__bc6),
+        .bc7(if_recessive__bc7),
+        .flag_passive(if_recessive__flag_passive),
+        .crc_ok(if_recessive__crc_ok),
+        .last_bit_arb(if_recessive__last_bit_arb),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .stuff_last(if_recessive__stuff_last),
+        .listen_only(if_recessive__listen_only),
+        .ack_check_off(if_recessive__ack_check_off),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .bit_err(if_recessive__bit_err),
+        .stuff_err(if_recessive__stuff_err),
+        .form_err(if_recessive__form_err),
+        .crc_err(if_recessive__crc_err),
+        .ack_err(if_recessive__ack_err),
+        .sof_error(if_recessive__sof_error),
+        .lost(if_recessive__lost),
+        .tec_exempt(if_recessive__tec_exempt)
+    );
+    drcc_m0__chan_a__bsp__detect__la_error la_error(
+        .clk(la_error__clk),
+        .sample(la_error__sample),
+        .sampled(la_error__sampled),
+        .if_dominant(la_error__if_dominant),
+        .if_recessive(la_error__if_recessive),
+        .decision(la_error__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_flag_error la_flag_error(
+        .clk(la_flag_error__clk),
+        .sample(la_flag_error__sample),
+        .sampled(la_flag_error__sampled),
+        .if_dominant(la_flag_error__if_dominant),
+        .if_recessive(la_flag_error__if_recessive),
+        .decision(la_flag_error__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_bit_err la_bit_err(
+        .clk(la_bit_err__clk),
+        .sample(la_bit_err__sample),
+        .sampled(la_bit_err__sampled),
+        .if_dominant(la_bit_err__if_dominant),
+        .if_recessive(la_bit_err__if_recessive),
+        .decision(la_bit_err__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_stuff_err la_stuff_err(
+        .clk(la_stuff_err__clk),
+        .sample(la_stuff_err__sample),
+        .sampled(la_stuff_err__sampled),
+        .if_dominant(la_stuff_err__if_dominant),
+        .if_recessive(la_stuff_err__if_recessive),
+        .decision(la_stuff_err__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_form_err la_form_err(
+        .clk(la_form_err__clk),
+        .sample(la_form_err__sample),
+        .sampled(la_form_err__sampled),
+        .if_dominant(la_form_err__if_dominant),
+        .if_recessive(la_form_err__if_recessive),
+        .decision(la_form_err__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_crc_err la_crc_err(
+        .clk(la_crc_err__clk),
+        .sample(la_crc_err__sample),
+        .sampled(la_crc_err__sampled),
+        .if_dominant(la_crc_err__if_dominant),
+        .if_recessive(la_crc_err__if_recessive),
+        .decision(la_crc_err__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_ack_err la_ack_err(
+        .clk(la_ack_err__clk),
+        .sample(la_ack_err__sample),
+        .sampled(la_ack_err__sampled),
+        .if_dominant(la_ack_err__if_dominant),
+        .if_recessive(la_ack_err__if_recessive),
+        .decision(la_ack_err__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_sof_error la_sof_error(
+        .clk(la_sof_error__clk),
+        .sample(la_sof_error__sample),
+        .sampled(la_sof_error__sampled),
+        .if_dominant(la_sof_error__if_dominant),
+        .if_recessive(la_sof_error__if_recessive),
+        .decision(la_sof_error__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_lost la_lost(
+        .clk(la_lost__clk),
+        .sample(la_lost__sample),
+        .sampled(la_lost__sampled),
+        .if_dominant(la_lost__if_dominant),
+        .if_recessive(la_lost__if_recessive),
+        .decision(la_lost__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_tec_exempt la_tec_exempt(
+        .clk(la_tec_exempt__clk),
+        .sample(la_tec_exempt__sample),
+        .sampled(la_tec_exempt__sampled),
+        .if_dominant(la_tec_exempt__if_dominant),
+        .if_recessive(la_tec_exempt__if_recessive),
+        .decision(la_tec_exempt__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_dominant__field = field;
+        if_recessive__field = field;
+        if_dominant__is_tx = is_tx;
+        if_recessive__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_recessive__tx_bit = tx_bit;
+        if_dominant__in_frame = in_frame;
+        if_recessive__in_frame = in_frame;
+        if_dominant__in_arbitration = in_arbitration;
+        if_recessive__in_arbitration = in_arbitration;
+        if_dominant__ack_slot = ack_slot;
+        if_recessive__ack_slot = ack_slot;
+        if_dominant__in_delim = in_delim;
+        if_recessive__in_delim = in_delim;
+        if_dominant__bc0 = bc0;
+        if_recessive__bc0 = bc0;
+        if_dominant__bc6 = bc6;
+        if_recessive__bc6 = bc6;
+        if_dominant__bc7 = bc7;
+        if_recessive__bc7 = bc7;
+        if_dominant__flag_passive = flag_passive;
+        if_recessive__flag_passive = flag_passive;
+        if_dominant__crc_ok = crc_ok;
+        if_recessive__crc_ok = crc_ok;
+        if_dominant__last_bit_arb = last_bit_arb;
+        if_recessive__last_bit_arb = last_bit_arb;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_dominant__stuff_last = stuff_last;
+        if_recessive__stuff_last = stuff_last;
+        if_dominant__listen_only = listen_only;
+        if_recessive__listen_only = listen_only;
+        if_dominant__ack_check_off = ack_check_off;
+        if_recessive__ack_check_off = ack_check_off;
+        la_error__clk = clk;
+        la_error__sample = sample;
+        la_error__sampled = sampled;
+        la_error__if_dominant = if_dominant__error;
+        la_error__if_recessive = if_recessive__error;
+        error = la_error__decision;
+        la_flag_error__clk = clk;
+        la_flag_error__sample = sample;
+        la_flag_error__sampled = sampled;
+        la_flag_error__if_dominant = if_dominant__flag_error;
+        la_flag_error__if_recessive = if_recessive__flag_error;
+        flag_error = la_flag_error__decision;
+        la_bit_err__clk = clk;
+        la_bit_err__sample = sample;
+        la_bit_err__sampled = sampled;
+        la_bit_err__if_dominant = if_dominant__bit_err;
+        la_bit_err__if_recessive = if_recessive__bit_err;
+        bit_err = la_bit_err__decision;
+        la_stuff_err__clk = clk;
+        la_stuff_err__sample = sample;
+        la_stuff_err__sampled = sampled;
+        la_stuff_err__if_dominant = if_dominant__stuff_err;
+        la_stuff_err__if_recessive = if_recessive__stuff_err;
+        stuff_err = la_stuff_err__decision;
+        la_form_err__clk = clk;
+        la_form_err__sample = sample;
+        la_form_err__sampled = sampled;
+        la_form_err__if_dominant = if_dominant__form_err;
+        la_form_err__if_recessive = if_recessive__form_err;
+        form_err = la_form_err__decision;
+        la_crc_err__clk = clk;
+        la_crc_err__sample = sample;
+        la_crc_err__sampled = sampled;
+        la_crc_err__if_dominant = if_dominant__crc_err;
+        la_crc_err__if_recessive = if_recessive__crc_err;
+        crc_err = la_crc_err__decision;
+        la_ack_err__clk = clk;
+        la_ack_err__sample = sample;
+        la_ack_err__sampled = sampled;
+        la_ack_err__if_dominant = if_dominant__ack_err;
+        la_ack_err__if_recessive = if_recessive__ack_err;
+        ack_err = la_ack_err__decision;
+        la_sof_error__clk = clk;
+        la_sof_error__sample = sample;
+        la_sof_error__sampled = sampled;
+        la_sof_error__if_dominant = if_dominant__sof_error;
+        la_sof_error__if_recessive = if_recessive__sof_error;
+        sof_error = la_sof_error__decision;
+        la_lost__clk = clk;
+        la_lost__sample = sample;
+        la_lost__sampled = sampled;
+        la_lost__if_dominant = if_dominant__lost;
+        la_lost__if_recessive = if_recessive__lost;
+        lost = la_lost__decision;
+        la_tec_exempt__clk = clk;
+        la_tec_exempt__sample = sample;
+        la_tec_exempt__sampled = sampled;
+        la_tec_exempt__if_dominant = if_dominant__tec_exempt;
+        la_tec_exempt__if_recessive = if_recessive__tec_exempt;
+        tec_exempt = la_tec_exempt__decision;
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect
+
+
+module drcc_m0__chan_a__bsp__detect__if_dominant(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
     
     // Module arguments
     input wire  sample;
@@ -3754,7 +4185,970 @@ module drcc_m0__chan_a__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,i
         bit_err = stuff_as_bit || bit_mon || flag_error;
     end
     
-endmodule // drcc_m0__chan_a__bsp__detect
+endmodule // drcc_m0__chan_a__bsp__detect__if_dominant
+
+
+module drcc_m0__chan_a__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  bit_mon;
+    reg  stuff_as_bit;
+    
+    // Update code
+    always @(*) begin
+        stuff_err = 1'b0;
+        stuff_as_bit = 1'b0;
+        tec_exempt = 1'b0;
+        bit_mon = 1'b0;
+        form_err = 1'b0;
+        crc_err = 1'b0;
+        ack_err = 1'b0;
+        flag_error = 1'b0;
+        sof_error = 1'b0;
+        lost = 1'b0;
+        if (sample && at_stuff_bit && (sampled == stuff_last)) begin
+            stuff_err = 1'b1;
+            if (is_tx && ~(last_bit_arb && tx_bit)) begin
+                stuff_as_bit = 1'b1;
+            end
+            if (is_tx && last_bit_arb && tx_bit) begin
+                tec_exempt = 1'b1;
+            end
+        end
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if (is_tx && in_frame && (sampled != tx_bit)) begin
+                if (in_arbitration && tx_bit) begin
+                    lost = 1'b1;
+                end
+                else if (ack_slot && tx_bit) begin
+                end
+                else begin
+                    bit_mon = 1'b1;
+                end
+            end
+            if (~is_tx && ack_slot && ~tx_bit && sampled) begin
+                bit_mon = 1'b1;
+            end
+            case (field)
+                Field__Idle:
+                    begin
+                        if (sampled && ~tx_bit) begin
+                            sof_error = 1'b1;
+                            bit_mon = 1'b1;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        form_err = ~sampled;
+                    end
+                Field__AckSlot:
+                    begin
+                        ack_err = is_tx && sampled && ~ack_check_off;
+                    end
+                Field__AckDelim:
+                    begin
+                        if (~sampled) begin
+                            form_err = 1'b1;
+                        end
+                        else if (~crc_ok && ~is_tx) begin
+                            crc_err = 1'b1;
+                        end
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled && ~(bc6 && ~is_tx)) begin
+                            form_err = 1'b1;
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        flag_error = ~flag_passive && sampled;
+                    end
+                Field__OverloadFlag:
+                    begin
+                        flag_error = sampled && ~listen_only;
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (in_delim && ~bc0 && ~sampled && ~bc7) begin
+                form_err = 1'b1;
+            end
+        end
+        error = stuff_err || bit_mon || form_err || crc_err || ack_err;
+        bit_err = stuff_as_bit || bit_mon || flag_error;
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__if_recessive
+
+
+module drcc_m0__chan_a__bsp__detect__la_ack_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_ack_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_ack_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_ack_err
+
+
+module drcc_m0__chan_a__bsp__detect__la_ack_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_ack_err__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_ack_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_ack_err__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_bit_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_bit_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_bit_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_bit_err
+
+
+module drcc_m0__chan_a__bsp__detect__la_bit_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_bit_err__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_bit_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_bit_err__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_crc_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_crc_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_crc_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_crc_err
+
+
+module drcc_m0__chan_a__bsp__detect__la_crc_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_crc_err__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_crc_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_crc_err__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_error
+
+
+module drcc_m0__chan_a__bsp__detect__la_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_error__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_error__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_flag_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_flag_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_flag_error
+
+
+module drcc_m0__chan_a__bsp__detect__la_flag_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_flag_error__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_form_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_form_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_form_err
+
+
+module drcc_m0__chan_a__bsp__detect__la_form_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_form_err__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_form_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_form_err__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_lost__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_lost__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_lost
+
+
+module drcc_m0__chan_a__bsp__detect__la_lost__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_lost__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_lost__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_lost__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_sof_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_sof_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_sof_error
+
+
+module drcc_m0__chan_a__bsp__detect__la_sof_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_sof_error__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_stuff_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_stuff_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_stuff_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_stuff_err
+
+
+module drcc_m0__chan_a__bsp__detect__la_stuff_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_stuff_err__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_stuff_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_stuff_err__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_tec_exempt(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_tec_exempt__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_tec_exempt__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_tec_exempt
+
+
+module drcc_m0__chan_a__bsp__detect__la_tec_exempt__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_tec_exempt__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_tec_exempt__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_tec_exempt__recessive_q
 
 
 module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
@@ -9524,6 +10918,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     wire  rx_frame__rx_rtr;
     wire  [3:0] rx_frame__rx_dlc;
     wire  [63:0] rx_frame__rx_data;
+    reg  detect__clk;
     reg  detect__sample;
     reg  detect__sampled;
     reg  [4:0] detect__field;
@@ -9799,6 +11194,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .rx_data(rx_frame__rx_data)
     );
     drcc_m0__chan_b__bsp__detect detect(
+        .clk(detect__clk),
         .sample(detect__sample),
         .sampled(detect__sampled),
         .field(detect__field),
@@ -10011,6 +11407,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         rx_frame__take_data_len = fsm__rx_take_data_len;
         rx_frame__take_data = fsm__rx_take_data;
         rx_frame__publish = fsm__rx_publish;
+        detect__clk = clk;
         detect__sample = sample;
         detect__sampled = sampled;
         detect__field = fsm__field;
@@ -10104,7 +11501,435 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
 endmodule // drcc_m0__chan_b__bsp
 
 
-module drcc_m0__chan_b__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__in_frame;
+    reg  if_dominant__in_arbitration;
+    reg  if_dominant__ack_slot;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__bc0;
+    reg  if_dominant__bc6;
+    reg  if_dominant__bc7;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__crc_ok;
+    reg  if_dominant__last_bit_arb;
+    reg  if_dominant__at_stuff_bit;
+    reg  if_dominant__stuff_last;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__ack_check_off;
+    wire  if_dominant__error;
+    wire  if_dominant__flag_error;
+    wire  if_dominant__bit_err;
+    wire  if_dominant__stuff_err;
+    wire  if_dominant__form_err;
+    wire  if_dominant__crc_err;
+    wire  if_dominant__ack_err;
+    wire  if_dominant__sof_error;
+    wire  if_dominant__lost;
+    wire  if_dominant__tec_exempt;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__in_frame;
+    reg  if_recessive__in_arbitration;
+    reg  if_recessive__ack_slot;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__bc0;
+    reg  if_recessive__bc6;
+    reg  if_recessive__bc7;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__crc_ok;
+    reg  if_recessive__last_bit_arb;
+    reg  if_recessive__at_stuff_bit;
+    reg  if_recessive__stuff_last;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__ack_check_off;
+    wire  if_recessive__error;
+    wire  if_recessive__flag_error;
+    wire  if_recessive__bit_err;
+    wire  if_recessive__stuff_err;
+    wire  if_recessive__form_err;
+    wire  if_recessive__crc_err;
+    wire  if_recessive__ack_err;
+    wire  if_recessive__sof_error;
+    wire  if_recessive__lost;
+    wire  if_recessive__tec_exempt;
+    reg  la_error__clk;
+    reg  la_error__sample;
+    reg  la_error__sampled;
+    reg  la_error__if_dominant;
+    reg  la_error__if_recessive;
+    wire  la_error__decision;
+    reg  la_flag_error__clk;
+    reg  la_flag_error__sample;
+    reg  la_flag_error__sampled;
+    reg  la_flag_error__if_dominant;
+    reg  la_flag_error__if_recessive;
+    wire  la_flag_error__decision;
+    reg  la_bit_err__clk;
+    reg  la_bit_err__sample;
+    reg  la_bit_err__sampled;
+    reg  la_bit_err__if_dominant;
+    reg  la_bit_err__if_recessive;
+    wire  la_bit_err__decision;
+    reg  la_stuff_err__clk;
+    reg  la_stuff_err__sample;
+    reg  la_stuff_err__sampled;
+    reg  la_stuff_err__if_dominant;
+    reg  la_stuff_err__if_recessive;
+    wire  la_stuff_err__decision;
+    reg  la_form_err__clk;
+    reg  la_form_err__sample;
+    reg  la_form_err__sampled;
+    reg  la_form_err__if_dominant;
+    reg  la_form_err__if_recessive;
+    wire  la_form_err__decision;
+    reg  la_crc_err__clk;
+    reg  la_crc_err__sample;
+    reg  la_crc_err__sampled;
+    reg  la_crc_err__if_dominant;
+    reg  la_crc_err__if_recessive;
+    wire  la_crc_err__decision;
+    reg  la_ack_err__clk;
+    reg  la_ack_err__sample;
+    reg  la_ack_err__sampled;
+    reg  la_ack_err__if_dominant;
+    reg  la_ack_err__if_recessive;
+    wire  la_ack_err__decision;
+    reg  la_sof_error__clk;
+    reg  la_sof_error__sample;
+    reg  la_sof_error__sampled;
+    reg  la_sof_error__if_dominant;
+    reg  la_sof_error__if_recessive;
+    wire  la_sof_error__decision;
+    reg  la_lost__clk;
+    reg  la_lost__sample;
+    reg  la_lost__sampled;
+    reg  la_lost__if_dominant;
+    reg  la_lost__if_recessive;
+    wire  la_lost__decision;
+    reg  la_tec_exempt__clk;
+    reg  la_tec_exempt__sample;
+    reg  la_tec_exempt__sampled;
+    reg  la_tec_exempt__if_dominant;
+    reg  la_tec_exempt__if_recessive;
+    wire  la_tec_exempt__decision;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .in_frame(if_dominant__in_frame),
+        .in_arbitration(if_dominant__in_arbitration),
+        .ack_slot(if_dominant__ack_slot),
+        .in_delim(if_dominant__in_delim),
+        .bc0(if_dominant__bc0),
+        .bc6(if_dominant__bc6),
+        .bc7(if_dominant__bc7),
+        .flag_passive(if_dominant__flag_passive),
+        .crc_ok(if_dominant__crc_ok),
+        .last_bit_arb(if_dominant__last_bit_arb),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .stuff_last(if_dominant__stuff_last),
+        .listen_only(if_dominant__listen_only),
+        .ack_check_off(if_dominant__ack_check_off),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .bit_err(if_dominant__bit_err),
+        .stuff_err(if_dominant__stuff_err),
+        .form_err(if_dominant__form_err),
+        .crc_err(if_dominant__crc_err),
+        .ack_err(if_dominant__ack_err),
+        .sof_error(if_dominant__sof_error),
+        .lost(if_dominant__lost),
+        .tec_exempt(if_dominant__tec_exempt)
+    );
+    drcc_m0__chan_b__bsp__detect__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .in_frame(if_recessive__in_frame),
+        .in_arbitration(if_recessive__in_arbitration),
+        .ack_slot(if_recessive__ack_slot),
+        .in_delim(if_recessive__in_delim),
+        .bc0(if_recessive__bc0),
+        .bc6(if_recessive__bc6),
+        .bc7(if_recessive__bc7),
+        .flag_passive(if_recessive__flag_passive),
+        .crc_ok(if_recessive__crc_ok),
+        .last_bit_arb(if_recessive__last_bit_arb),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .stuff_last(if_recessive__stuff_last),
+        .listen_only(if_recessive__listen_only),
+        .ack_check_off(if_recessive__ack_check_off),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .bit_err(if_recessive__bit_err),
+        .stuff_err(if_recessive__stuff_err),
+        .form_err(if_recessive__form_err),
+        .crc_err(if_recessive__crc_err),
+        .ack_err(if_recessive__ack_err),
+        .sof_error(if_recessive__sof_error),
+        .lost(if_recessive__lost),
+        .tec_exempt(if_recessive__tec_exempt)
+    );
+    drcc_m0__chan_b__bsp__detect__la_error la_error(
+        .clk(la_error__clk),
+        .sample(la_error__sample),
+        .sampled(la_error__sampled),
+        .if_dominant(la_error__if_dominant),
+        .if_recessive(la_error__if_recessive),
+        .decision(la_error__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_flag_error la_flag_error(
+        .clk(la_flag_error__clk),
+        .sample(la_flag_error__sample),
+        .sampled(la_flag_error__sampled),
+        .if_dominant(la_flag_error__if_dominant),
+        .if_recessive(la_flag_error__if_recessive),
+        .decision(la_flag_error__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_bit_err la_bit_err(
+        .clk(la_bit_err__clk),
+        .sample(la_bit_err__sample),
+        .sampled(la_bit_err__sampled),
+        .if_dominant(la_bit_err__if_dominant),
+        .if_recessive(la_bit_err__if_recessive),
+        .decision(la_bit_err__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_stuff_err la_stuff_err(
+        .clk(la_stuff_err__clk),
+        .sample(la_stuff_err__sample),
+        .sampled(la_stuff_err__sampled),
+        .if_dominant(la_stuff_err__if_dominant),
+        .if_recessive(la_stuff_err__if_recessive),
+        .decision(la_stuff_err__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_form_err la_form_err(
+        .clk(la_form_err__clk),
+        .sample(la_form_err__sample),
+        .sampled(la_form_err__sampled),
+        .if_dominant(la_form_err__if_dominant),
+        .if_recessive(la_form_err__if_recessive),
+        .decision(la_form_err__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_crc_err la_crc_err(
+        .clk(la_crc_err__clk),
+        .sample(la_crc_err__sample),
+        .sampled(la_crc_err__sampled),
+        .if_dominant(la_crc_err__if_dominant),
+        .if_recessive(la_crc_err__if_recessive),
+        .decision(la_crc_err__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_ack_err la_ack_err(
+        .clk(la_ack_err__clk),
+        .sample(la_ack_err__sample),
+        .sampled(la_ack_err__sampled),
+        .if_dominant(la_ack_err__if_dominant),
+        .if_recessive(la_ack_err__if_recessive),
+        .decision(la_ack_err__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_sof_error la_sof_error(
+        .clk(la_sof_error__clk),
+        .sample(la_sof_error__sample),
+        .sampled(la_sof_error__sampled),
+        .if_dominant(la_sof_error__if_dominant),
+        .if_recessive(la_sof_error__if_recessive),
+        .decision(la_sof_error__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_lost la_lost(
+        .clk(la_lost__clk),
+        .sample(la_lost__sample),
+        .sampled(la_lost__sampled),
+        .if_dominant(la_lost__if_dominant),
+        .if_recessive(la_lost__if_recessive),
+        .decision(la_lost__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_tec_exempt la_tec_exempt(
+        .clk(la_tec_exempt__clk),
+        .sample(la_tec_exempt__sample),
+        .sampled(la_tec_exempt__sampled),
+        .if_dominant(la_tec_exempt__if_dominant),
+        .if_recessive(la_tec_exempt__if_recessive),
+        .decision(la_tec_exempt__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_dominant__field = field;
+        if_recessive__field = field;
+        if_dominant__is_tx = is_tx;
+        if_recessive__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_recessive__tx_bit = tx_bit;
+        if_dominant__in_frame = in_frame;
+        if_recessive__in_frame = in_frame;
+        if_dominant__in_arbitration = in_arbitration;
+        if_recessive__in_arbitration = in_arbitration;
+        if_dominant__ack_slot = ack_slot;
+        if_recessive__ack_slot = ack_slot;
+        if_dominant__in_delim = in_delim;
+        if_recessive__in_delim = in_delim;
+        if_dominant__bc0 = bc0;
+        if_recessive__bc0 = bc0;
+        if_dominant__bc6 = bc6;
+        if_recessive__bc6 = bc6;
+        if_dominant__bc7 = bc7;
+        if_recessive__bc7 = bc7;
+        if_dominant__flag_passive = flag_passive;
+        if_recessive__flag_passive = flag_passive;
+        if_dominant__crc_ok = crc_ok;
+        if_recessive__crc_ok = crc_ok;
+        if_dominant__last_bit_arb = last_bit_arb;
+        if_recessive__last_bit_arb = last_bit_arb;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_dominant__stuff_last = stuff_last;
+        if_recessive__stuff_last = stuff_last;
+        if_dominant__listen_only = listen_only;
+        if_recessive__listen_only = listen_only;
+        if_dominant__ack_check_off = ack_check_off;
+        if_recessive__ack_check_off = ack_check_off;
+        la_error__clk = clk;
+        la_error__sample = sample;
+        la_error__sampled = sampled;
+        la_error__if_dominant = if_dominant__error;
+        la_error__if_recessive = if_recessive__error;
+        error = la_error__decision;
+        la_flag_error__clk = clk;
+        la_flag_error__sample = sample;
+        la_flag_error__sampled = sampled;
+        la_flag_error__if_dominant = if_dominant__flag_error;
+        la_flag_error__if_recessive = if_recessive__flag_error;
+        flag_error = la_flag_error__decision;
+        la_bit_err__clk = clk;
+        la_bit_err__sample = sample;
+        la_bit_err__sampled = sampled;
+        la_bit_err__if_dominant = if_dominant__bit_err;
+        la_bit_err__if_recessive = if_recessive__bit_err;
+        bit_err = la_bit_err__decision;
+        la_stuff_err__clk = clk;
+        la_stuff_err__sample = sample;
+        la_stuff_err__sampled = sampled;
+        la_stuff_err__if_dominant = if_dominant__stuff_err;
+        la_stuff_err__if_recessive = if_recessive__stuff_err;
+        stuff_err = la_stuff_err__decision;
+        la_form_err__clk = clk;
+        la_form_err__sample = sample;
+        la_form_err__sampled = sampled;
+        la_form_err__if_dominant = if_dominant__form_err;
+        la_form_err__if_recessive = if_recessive__form_err;
+        form_err = la_form_err__decision;
+        la_crc_err__clk = clk;
+        la_crc_err__sample = sample;
+        la_crc_err__sampled = sampled;
+        la_crc_err__if_dominant = if_dominant__crc_err;
+        la_crc_err__if_recessive = if_recessive__crc_err;
+        crc_err = la_crc_err__decision;
+        la_ack_err__clk = clk;
+        la_ack_err__sample = sample;
+        la_ack_err__sampled = sampled;
+        la_ack_err__if_dominant = if_dominant__ack_err;
+        la_ack_err__if_recessive = if_recessive__ack_err;
+        ack_err = la_ack_err__decision;
+        la_sof_error__clk = clk;
+        la_sof_error__sample = sample;
+        la_sof_error__sampled = sampled;
+        la_sof_error__if_dominant = if_dominant__sof_error;
+        la_sof_error__if_recessive = if_recessive__sof_error;
+        sof_error = la_sof_error__decision;
+        la_lost__clk = clk;
+        la_lost__sample = sample;
+        la_lost__sampled = sampled;
+        la_lost__if_dominant = if_dominant__lost;
+        la_lost__if_recessive = if_recessive__lost;
+        lost = la_lost__decision;
+        la_tec_exempt__clk = clk;
+        la_tec_exempt__sample = sample;
+        la_tec_exempt__sampled = sampled;
+        la_tec_exempt__if_dominant = if_dominant__tec_exempt;
+        la_tec_exempt__if_recessive = if_recessive__tec_exempt;
+        tec_exempt = la_tec_exempt__decision;
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect
+
+
+module drcc_m0__chan_b__bsp__detect__if_dominant(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
     
     // Module arguments
     input wire  sample;
@@ -10254,7 +12079,970 @@ module drcc_m0__chan_b__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,i
         bit_err = stuff_as_bit || bit_mon || flag_error;
     end
     
-endmodule // drcc_m0__chan_b__bsp__detect
+endmodule // drcc_m0__chan_b__bsp__detect__if_dominant
+
+
+module drcc_m0__chan_b__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  bit_mon;
+    reg  stuff_as_bit;
+    
+    // Update code
+    always @(*) begin
+        stuff_err = 1'b0;
+        stuff_as_bit = 1'b0;
+        tec_exempt = 1'b0;
+        bit_mon = 1'b0;
+        form_err = 1'b0;
+        crc_err = 1'b0;
+        ack_err = 1'b0;
+        flag_error = 1'b0;
+        sof_error = 1'b0;
+        lost = 1'b0;
+        if (sample && at_stuff_bit && (sampled == stuff_last)) begin
+            stuff_err = 1'b1;
+            if (is_tx && ~(last_bit_arb && tx_bit)) begin
+                stuff_as_bit = 1'b1;
+            end
+            if (is_tx && last_bit_arb && tx_bit) begin
+                tec_exempt = 1'b1;
+            end
+        end
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if (is_tx && in_frame && (sampled != tx_bit)) begin
+                if (in_arbitration && tx_bit) begin
+                    lost = 1'b1;
+                end
+                else if (ack_slot && tx_bit) begin
+                end
+                else begin
+                    bit_mon = 1'b1;
+                end
+            end
+            if (~is_tx && ack_slot && ~tx_bit && sampled) begin
+                bit_mon = 1'b1;
+            end
+            case (field)
+                Field__Idle:
+                    begin
+                        if (sampled && ~tx_bit) begin
+                            sof_error = 1'b1;
+                            bit_mon = 1'b1;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        form_err = ~sampled;
+                    end
+                Field__AckSlot:
+                    begin
+                        ack_err = is_tx && sampled && ~ack_check_off;
+                    end
+                Field__AckDelim:
+                    begin
+                        if (~sampled) begin
+                            form_err = 1'b1;
+                        end
+                        else if (~crc_ok && ~is_tx) begin
+                            crc_err = 1'b1;
+                        end
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled && ~(bc6 && ~is_tx)) begin
+                            form_err = 1'b1;
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        flag_error = ~flag_passive && sampled;
+                    end
+                Field__OverloadFlag:
+                    begin
+                        flag_error = sampled && ~listen_only;
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (in_delim && ~bc0 && ~sampled && ~bc7) begin
+                form_err = 1'b1;
+            end
+        end
+        error = stuff_err || bit_mon || form_err || crc_err || ack_err;
+        bit_err = stuff_as_bit || bit_mon || flag_error;
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__if_recessive
+
+
+module drcc_m0__chan_b__bsp__detect__la_ack_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_ack_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_ack_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_ack_err
+
+
+module drcc_m0__chan_b__bsp__detect__la_ack_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_ack_err__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_ack_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_ack_err__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_bit_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_bit_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_bit_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_bit_err
+
+
+module drcc_m0__chan_b__bsp__detect__la_bit_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_bit_err__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_bit_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_bit_err__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_crc_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_crc_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_crc_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_crc_err
+
+
+module drcc_m0__chan_b__bsp__detect__la_crc_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_crc_err__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_crc_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_crc_err__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_error
+
+
+module drcc_m0__chan_b__bsp__detect__la_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_error__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_error__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_flag_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_flag_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_flag_error
+
+
+module drcc_m0__chan_b__bsp__detect__la_flag_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_flag_error__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_form_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_form_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_form_err
+
+
+module drcc_m0__chan_b__bsp__detect__la_form_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_form_err__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_form_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_form_err__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_lost__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_lost__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_lost
+
+
+module drcc_m0__chan_b__bsp__detect__la_lost__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_lost__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_lost__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_lost__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_sof_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_sof_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_sof_error
+
+
+module drcc_m0__chan_b__bsp__detect__la_sof_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_sof_error__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_stuff_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_stuff_err__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_stuff_err__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_stuff_err
+
+
+module drcc_m0__chan_b__bsp__detect__la_stuff_err__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_stuff_err__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_stuff_err__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_stuff_err__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_tec_exempt(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_tec_exempt__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_tec_exempt__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_tec_exempt
+
+
+module drcc_m0__chan_b__bsp__detect__la_tec_exempt__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_tec_exempt__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_tec_exempt__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_tec_exempt__recessive_q
 
 
 module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);

@@ -28,7 +28,7 @@
 
 use super::bit_stuffing::BitStuffing;
 use super::error_capture::ErrorCapture;
-use super::error_detection::ErrorDetection;
+use super::error_decision::ErrorDecision;
 use super::fault_confinement::FaultConfinement;
 use super::fault_confinement_rules::FaultConfinementRules;
 use super::field::Field;
@@ -154,7 +154,7 @@ pub struct ProtocolController {
     frame_crc: FrameCrc,
     tx_frame: TxFrame,
     rx_frame: RxFrame,
-    detect: ErrorDetection,
+    detect: ErrorDecision,
     rules: FaultConfinementRules,
     fc: FaultConfinement,
     err_capture: ErrorCapture,
@@ -275,6 +275,7 @@ impl Logic for ProtocolController {
         self.rx_frame.publish.next = self.fsm.rx_publish.val();
 
         // ---- error detection
+        self.detect.clk.next = self.clk.val();
         self.detect.sample.next = self.sample.val();
         self.detect.sampled.next = self.sampled.val();
         self.detect.field.next = self.fsm.field.val();

@@ -3176,6 +3176,16 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  detect__sof_error;
     wire  detect__lost;
     wire  detect__tec_exempt;
+    wire  detect__dom_error;
+    wire  detect__dom_flag_error;
+    wire  detect__dom_ack_err;
+    wire  detect__dom_tec_exempt;
+    wire  detect__dom_sof_error;
+    wire  detect__rec_error;
+    wire  detect__rec_flag_error;
+    wire  detect__rec_ack_err;
+    wire  detect__rec_tec_exempt;
+    wire  detect__rec_sof_error;
     reg  rules__clk;
     reg  rules__sample;
     reg  rules__sampled;
@@ -3190,13 +3200,18 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  rules__delim_first;
     reg  rules__dom7;
     reg  rules__ack_pending;
-    reg  rules__tx_valid;
     reg  rules__listen_only;
-    reg  rules__error;
-    reg  rules__flag_error;
-    reg  rules__ack_err;
-    reg  rules__tec_exempt;
-    reg  rules__as_tx;
+    reg  rules__tx_valid;
+    reg  rules__dom_error;
+    reg  rules__dom_flag_error;
+    reg  rules__dom_ack_err;
+    reg  rules__dom_tec_exempt;
+    reg  rules__dom_sof_error;
+    reg  rules__rec_error;
+    reg  rules__rec_flag_error;
+    reg  rules__rec_ack_err;
+    reg  rules__rec_tec_exempt;
+    reg  rules__rec_sof_error;
     reg  [8:0] rules__tec;
     reg  [7:0] rules__rec;
     reg  rules__error_passive;
@@ -3204,8 +3219,8 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  rules__tec_add8;
     wire  rules__rec_add1;
     wire  rules__rec_add8;
-    wire  rules__tx_success;
     wire  rules__rx_success;
+    wire  rules__tx_success;
     wire  rules__passive_after;
     wire  rules__bus_off_after;
     wire  rules__ack_defer;
@@ -3451,7 +3466,17 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt)
+        .tec_exempt(detect__tec_exempt),
+        .dom_error(detect__dom_error),
+        .dom_flag_error(detect__dom_flag_error),
+        .dom_ack_err(detect__dom_ack_err),
+        .dom_tec_exempt(detect__dom_tec_exempt),
+        .dom_sof_error(detect__dom_sof_error),
+        .rec_error(detect__rec_error),
+        .rec_flag_error(detect__rec_flag_error),
+        .rec_ack_err(detect__rec_ack_err),
+        .rec_tec_exempt(detect__rec_tec_exempt),
+        .rec_sof_error(detect__rec_sof_error)
     );
     drcc__chan_a__bsp__rules rules(
         .clk(rules__clk),
@@ -3468,13 +3493,18 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .delim_first(rules__delim_first),
         .dom7(rules__dom7),
         .ack_pending(rules__ack_pending),
-        .tx_valid(rules__tx_valid),
         .listen_only(rules__listen_only),
-        .error(rules__error),
-        .flag_error(rules__flag_error),
-        .ack_err(rules__ack_err),
-        .tec_exempt(rules__tec_exempt),
-        .as_tx(rules__as_tx),
+        .tx_valid(rules__tx_valid),
+        .dom_error(rules__dom_error),
+        .dom_flag_error(rules__dom_flag_error),
+        .dom_ack_err(rules__dom_ack_err),
+        .dom_tec_exempt(rules__dom_tec_exempt),
+        .dom_sof_error(rules__dom_sof_error),
+        .rec_error(rules__rec_error),
+        .rec_flag_error(rules__rec_flag_error),
+        .rec_ack_err(rules__rec_ack_err),
+        .rec_tec_exempt(rules__rec_tec_exempt),
+        .rec_sof_error(rules__rec_sof_error),
         .tec(rules__tec),
         .rec(rules__rec),
         .error_passive(rules__error_passive),
@@ -3482,8 +3512,8 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .tec_add8(rules__tec_add8),
         .rec_add1(rules__rec_add1),
         .rec_add8(rules__rec_add8),
-        .tx_success(rules__tx_success),
         .rx_success(rules__rx_success),
+        .tx_success(rules__tx_success),
         .passive_after(rules__passive_after),
         .bus_off_after(rules__bus_off_after),
         .ack_defer(rules__ack_defer),
@@ -3670,11 +3700,16 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         rules__ack_pending = fsm__ack_pending;
         rules__tx_valid = fsm__tx_valid;
         rules__listen_only = listen_only;
-        rules__error = detect__error;
-        rules__flag_error = detect__flag_error;
-        rules__ack_err = detect__ack_err;
-        rules__tec_exempt = detect__tec_exempt;
-        rules__as_tx = fsm__is_tx || detect__sof_error;
+        rules__dom_error = detect__dom_error;
+        rules__dom_flag_error = detect__dom_flag_error;
+        rules__dom_ack_err = detect__dom_ack_err;
+        rules__dom_tec_exempt = detect__dom_tec_exempt;
+        rules__dom_sof_error = detect__dom_sof_error;
+        rules__rec_error = detect__rec_error;
+        rules__rec_flag_error = detect__rec_flag_error;
+        rules__rec_ack_err = detect__rec_ack_err;
+        rules__rec_tec_exempt = detect__rec_tec_exempt;
+        rules__rec_sof_error = detect__rec_sof_error;
         rules__tec = fc__tec;
         rules__rec = fc__rec;
         rules__error_passive = fc__error_passive;
@@ -3729,7 +3764,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
 endmodule // drcc__chan_a__bsp
 
 
-module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
     
     // Module arguments
     input wire  clk;
@@ -3762,6 +3797,16 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     output reg  sof_error;
     output reg  lost;
     output reg  tec_exempt;
+    output reg  dom_error;
+    output reg  dom_flag_error;
+    output reg  dom_ack_err;
+    output reg  dom_tec_exempt;
+    output reg  dom_sof_error;
+    output reg  rec_error;
+    output reg  rec_flag_error;
+    output reg  rec_ack_err;
+    output reg  rec_tec_exempt;
+    output reg  rec_sof_error;
     
     // Enums
     localparam Field__Integrating = 0;
@@ -4092,6 +4137,16 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         if_recessive__listen_only = listen_only;
         if_dominant__ack_check_off = ack_check_off;
         if_recessive__ack_check_off = ack_check_off;
+        dom_error = if_dominant__error;
+        dom_flag_error = if_dominant__flag_error;
+        dom_ack_err = if_dominant__ack_err;
+        dom_tec_exempt = if_dominant__tec_exempt;
+        dom_sof_error = if_dominant__sof_error;
+        rec_error = if_recessive__error;
+        rec_flag_error = if_recessive__flag_error;
+        rec_ack_err = if_recessive__ack_err;
+        rec_tec_exempt = if_recessive__tec_exempt;
+        rec_sof_error = if_recessive__sof_error;
         la_error__clk = clk;
         la_error__sample = sample;
         la_error__sampled = sampled;
@@ -6322,6 +6377,9 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
     reg  [2:0] dom_cnt__d;
     wire  [2:0] dom_cnt__q;
     reg  dom_cnt__clock;
+    reg  hse_off__d;
+    wire  hse_off__q;
+    reg  hse_off__clock;
     reg  decode__clk;
     reg  [4:0] decode__field;
     reg  [6:0] decode__bit_cnt;
@@ -6355,6 +6413,9 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
     reg  is_tx_n;
     reg  flag_passive_n;
     reg  monitor;
+    reg  hse_class;
+    reg  hse_stay;
+    reg  hse_n;
     
     // Sub module instances
     drcc__chan_a__bsp__fsm__field_q field_q(
@@ -6402,6 +6463,11 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
         .q(dom_cnt__q),
         .clock(dom_cnt__clock)
     );
+    drcc__chan_a__bsp__fsm__hse_off hse_off(
+        .d(hse_off__d),
+        .q(hse_off__q),
+        .clock(hse_off__clock)
+    );
     drcc__chan_a__bsp__fsm__decode decode(
         .clk(decode__clk),
         .field(decode__field),
@@ -6442,6 +6508,7 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
         ack_pending_q__clock = clk;
         delim_first_q__clock = clk;
         dom_cnt__clock = clk;
+        hse_off__clock = clk;
         field_q__d = field_q__q;
         bit_cnt_q__d = bit_cnt_q__q;
         is_tx_q__d = is_tx_q__q;
@@ -6451,6 +6518,7 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
         ack_pending_q__d = ack_pending_q__q;
         delim_first_q__d = delim_first_q__q;
         dom_cnt__d = dom_cnt__q;
+        hse_off__d = hse_off__q;
         decode__clk = clk;
         decode__field = field_q__q;
         decode__bit_cnt = bit_cnt_q__q;
@@ -6805,32 +6873,18 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
             is_tx_q__d = is_tx_n;
             flag_passive_q__d = flag_passive_n;
         end
-        case (field_q__q)
-            Field__Integrating:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Idle:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Suspend:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__BusOff:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Intermission:
-                begin
-                    hard_sync_enable = bit_cnt_q__q[32'h1];
-                end
-            default:
-                begin
-                    hard_sync_enable = 1'b0;
-                end
-        endcase
+        hse_class = (field_q__q == Field__Integrating) || (field_q__q == Field__Idle) || (field_q__q == Field__Suspend) || (field_q__q == Field__BusOff);
+        if (monitor) begin
+            hse_stay = (field_q__q == Field__Intermission) && sampled && (decode__bc2 || bit_cnt_q__q[32'h0]);
+        end
+        else begin
+            hse_stay = (field_q__q == Field__Intermission) && bit_cnt_q__q[32'h1];
+        end
+        hse_n = bus_off_after || (~sof && ~error && ~flag_error && (hse_class || hse_stay));
+        if (sample) begin
+            hse_off__d = ~hse_n;
+        end
+        hard_sync_enable = ~hse_off__q;
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
@@ -6859,6 +6913,7 @@ module drcc__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
             ack_pending_q__d = 1'b0;
             delim_first_q__d = 1'b0;
             dom_cnt__d = zero3;
+            hse_off__d = 1'b0;
         end
     end
     
@@ -7680,6 +7735,22 @@ module drcc__chan_a__bsp__fsm__flag_passive_q(d,q,clock);
 endmodule // drcc__chan_a__bsp__fsm__flag_passive_q
 
 
+module drcc__chan_a__bsp__fsm__hse_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__fsm__hse_off
+
+
 module drcc__chan_a__bsp__fsm__is_tx_q(d,q,clock);
     
     // Module arguments
@@ -7728,7 +7799,7 @@ module drcc__chan_a__bsp__fsm__recovery_cnt(d,q,clock);
 endmodule // drcc__chan_a__bsp__fsm__recovery_cnt
 
 
-module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,tx_valid,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,rx_success,tx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  clk;
@@ -7745,13 +7816,18 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
-    input wire  error;
-    input wire  flag_error;
-    input wire  ack_err;
-    input wire  tec_exempt;
-    input wire  as_tx;
+    input wire  tx_valid;
+    input wire  dom_error;
+    input wire  dom_flag_error;
+    input wire  dom_ack_err;
+    input wire  dom_tec_exempt;
+    input wire  dom_sof_error;
+    input wire  rec_error;
+    input wire  rec_flag_error;
+    input wire  rec_ack_err;
+    input wire  rec_tec_exempt;
+    input wire  rec_sof_error;
     input wire  [8:0] tec;
     input wire  [7:0] rec;
     input wire  error_passive;
@@ -7759,8 +7835,8 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
+    output reg  tx_success;
     output reg  passive_after;
     output reg  bus_off_after;
     output reg  ack_defer;
@@ -7798,24 +7874,446 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     localparam Field__BusOff = 22;
     
     // Stub signals
-    reg  p_passive__d;
-    wire  p_passive__q;
-    reg  p_passive__clock;
-    reg  p_bus_off__d;
-    wire  p_bus_off__q;
-    reg  p_bus_off__clock;
-    reg  p_tec_ge120__d;
-    wire  p_tec_ge120__q;
-    reg  p_tec_ge120__clock;
-    reg  p_tec_ge248__d;
-    wire  p_tec_ge248__q;
-    reg  p_tec_ge248__clock;
-    reg  p_rec_ge127__d;
-    wire  p_rec_ge127__q;
-    reg  p_rec_ge127__clock;
-    reg  p_rec_ge120__d;
-    wire  p_rec_ge120__q;
-    reg  p_rec_ge120__clock;
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  if_dominant__at_stuff_bit;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__after_error_flag;
+    reg  if_dominant__bc0;
+    reg  if_dominant__delim_first;
+    reg  if_dominant__dom7;
+    reg  if_dominant__ack_pending;
+    reg  if_dominant__tx_valid;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__error;
+    reg  if_dominant__flag_error;
+    reg  if_dominant__ack_err;
+    reg  if_dominant__tec_exempt;
+    reg  if_dominant__as_tx;
+    reg  if_dominant__passive_now;
+    reg  if_dominant__bus_off_now;
+    reg  if_dominant__tec_ge120;
+    reg  if_dominant__tec_ge248;
+    reg  if_dominant__rec_ge127;
+    reg  if_dominant__rec_ge120;
+    wire  if_dominant__tec_add8;
+    wire  if_dominant__rec_add1;
+    wire  if_dominant__rec_add8;
+    wire  if_dominant__tx_success;
+    wire  if_dominant__rx_success;
+    wire  if_dominant__passive_after;
+    wire  if_dominant__bus_off_after;
+    wire  if_dominant__ack_defer;
+    wire  if_dominant__ack_counted;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  if_recessive__at_stuff_bit;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__after_error_flag;
+    reg  if_recessive__bc0;
+    reg  if_recessive__delim_first;
+    reg  if_recessive__dom7;
+    reg  if_recessive__ack_pending;
+    reg  if_recessive__tx_valid;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__error;
+    reg  if_recessive__flag_error;
+    reg  if_recessive__ack_err;
+    reg  if_recessive__tec_exempt;
+    reg  if_recessive__as_tx;
+    reg  if_recessive__passive_now;
+    reg  if_recessive__bus_off_now;
+    reg  if_recessive__tec_ge120;
+    reg  if_recessive__tec_ge248;
+    reg  if_recessive__rec_ge127;
+    reg  if_recessive__rec_ge120;
+    wire  if_recessive__tec_add8;
+    wire  if_recessive__rec_add1;
+    wire  if_recessive__rec_add8;
+    wire  if_recessive__tx_success;
+    wire  if_recessive__rx_success;
+    wire  if_recessive__passive_after;
+    wire  if_recessive__bus_off_after;
+    wire  if_recessive__ack_defer;
+    wire  if_recessive__ack_counted;
+    reg  la_tec_add8__clk;
+    reg  la_tec_add8__sample;
+    reg  la_tec_add8__sampled;
+    reg  la_tec_add8__if_dominant;
+    reg  la_tec_add8__if_recessive;
+    wire  la_tec_add8__decision;
+    reg  la_rec_add1__clk;
+    reg  la_rec_add1__sample;
+    reg  la_rec_add1__sampled;
+    reg  la_rec_add1__if_dominant;
+    reg  la_rec_add1__if_recessive;
+    wire  la_rec_add1__decision;
+    reg  la_rec_add8__clk;
+    reg  la_rec_add8__sample;
+    reg  la_rec_add8__sampled;
+    reg  la_rec_add8__if_dominant;
+    reg  la_rec_add8__if_recessive;
+    wire  la_rec_add8__decision;
+    reg  la_rx_success__clk;
+    reg  la_rx_success__sample;
+    reg  la_rx_success__sampled;
+    reg  la_rx_success__if_dominant;
+    reg  la_rx_success__if_recessive;
+    wire  la_rx_success__decision;
+    reg  la_passive_after__clk;
+    reg  la_passive_after__sample;
+    reg  la_passive_after__sampled;
+    reg  la_passive_after__if_dominant;
+    reg  la_passive_after__if_recessive;
+    wire  la_passive_after__decision;
+    reg  la_bus_off_after__clk;
+    reg  la_bus_off_after__sample;
+    reg  la_bus_off_after__sampled;
+    reg  la_bus_off_after__if_dominant;
+    reg  la_bus_off_after__if_recessive;
+    wire  la_bus_off_after__decision;
+    reg  la_ack_defer__clk;
+    reg  la_ack_defer__sample;
+    reg  la_ack_defer__sampled;
+    reg  la_ack_defer__if_dominant;
+    reg  la_ack_defer__if_recessive;
+    wire  la_ack_defer__decision;
+    reg  la_ack_counted__clk;
+    reg  la_ack_counted__sample;
+    reg  la_ack_counted__sampled;
+    reg  la_ack_counted__if_dominant;
+    reg  la_ack_counted__if_recessive;
+    wire  la_ack_counted__decision;
+    
+    // Local signals
+    reg  tec_ge120;
+    reg  tec_ge248;
+    reg  rec_ge127;
+    reg  rec_ge120;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .flag_passive(if_dominant__flag_passive),
+        .in_delim(if_dominant__in_delim),
+        .after_error_flag(if_dominant__after_error_flag),
+        .bc0(if_dominant__bc0),
+        .delim_first(if_dominant__delim_first),
+        .dom7(if_dominant__dom7),
+        .ack_pending(if_dominant__ack_pending),
+        .tx_valid(if_dominant__tx_valid),
+        .listen_only(if_dominant__listen_only),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .ack_err(if_dominant__ack_err),
+        .tec_exempt(if_dominant__tec_exempt),
+        .as_tx(if_dominant__as_tx),
+        .passive_now(if_dominant__passive_now),
+        .bus_off_now(if_dominant__bus_off_now),
+        .tec_ge120(if_dominant__tec_ge120),
+        .tec_ge248(if_dominant__tec_ge248),
+        .rec_ge127(if_dominant__rec_ge127),
+        .rec_ge120(if_dominant__rec_ge120),
+        .tec_add8(if_dominant__tec_add8),
+        .rec_add1(if_dominant__rec_add1),
+        .rec_add8(if_dominant__rec_add8),
+        .tx_success(if_dominant__tx_success),
+        .rx_success(if_dominant__rx_success),
+        .passive_after(if_dominant__passive_after),
+        .bus_off_after(if_dominant__bus_off_after),
+        .ack_defer(if_dominant__ack_defer),
+        .ack_counted(if_dominant__ack_counted)
+    );
+    drcc__chan_a__bsp__rules__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .flag_passive(if_recessive__flag_passive),
+        .in_delim(if_recessive__in_delim),
+        .after_error_flag(if_recessive__after_error_flag),
+        .bc0(if_recessive__bc0),
+        .delim_first(if_recessive__delim_first),
+        .dom7(if_recessive__dom7),
+        .ack_pending(if_recessive__ack_pending),
+        .tx_valid(if_recessive__tx_valid),
+        .listen_only(if_recessive__listen_only),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .ack_err(if_recessive__ack_err),
+        .tec_exempt(if_recessive__tec_exempt),
+        .as_tx(if_recessive__as_tx),
+        .passive_now(if_recessive__passive_now),
+        .bus_off_now(if_recessive__bus_off_now),
+        .tec_ge120(if_recessive__tec_ge120),
+        .tec_ge248(if_recessive__tec_ge248),
+        .rec_ge127(if_recessive__rec_ge127),
+        .rec_ge120(if_recessive__rec_ge120),
+        .tec_add8(if_recessive__tec_add8),
+        .rec_add1(if_recessive__rec_add1),
+        .rec_add8(if_recessive__rec_add8),
+        .tx_success(if_recessive__tx_success),
+        .rx_success(if_recessive__rx_success),
+        .passive_after(if_recessive__passive_after),
+        .bus_off_after(if_recessive__bus_off_after),
+        .ack_defer(if_recessive__ack_defer),
+        .ack_counted(if_recessive__ack_counted)
+    );
+    drcc__chan_a__bsp__rules__la_tec_add8 la_tec_add8(
+        .clk(la_tec_add8__clk),
+        .sample(la_tec_add8__sample),
+        .sampled(la_tec_add8__sampled),
+        .if_dominant(la_tec_add8__if_dominant),
+        .if_recessive(la_tec_add8__if_recessive),
+        .decision(la_tec_add8__decision)
+    );
+    drcc__chan_a__bsp__rules__la_rec_add1 la_rec_add1(
+        .clk(la_rec_add1__clk),
+        .sample(la_rec_add1__sample),
+        .sampled(la_rec_add1__sampled),
+        .if_dominant(la_rec_add1__if_dominant),
+        .if_recessive(la_rec_add1__if_recessive),
+        .decision(la_rec_add1__decision)
+    );
+    drcc__chan_a__bsp__rules__la_rec_add8 la_rec_add8(
+        .clk(la_rec_add8__clk),
+        .sample(la_rec_add8__sample),
+        .sampled(la_rec_add8__sampled),
+        .if_dominant(la_rec_add8__if_dominant),
+        .if_recessive(la_rec_add8__if_recessive),
+        .decision(la_rec_add8__decision)
+    );
+    drcc__chan_a__bsp__rules__la_rx_success la_rx_success(
+        .clk(la_rx_success__clk),
+        .sample(la_rx_success__sample),
+        .sampled(la_rx_success__sampled),
+        .if_dominant(la_rx_success__if_dominant),
+        .if_recessive(la_rx_success__if_recessive),
+        .decision(la_rx_success__decision)
+    );
+    drcc__chan_a__bsp__rules__la_passive_after la_passive_after(
+        .clk(la_passive_after__clk),
+        .sample(la_passive_after__sample),
+        .sampled(la_passive_after__sampled),
+        .if_dominant(la_passive_after__if_dominant),
+        .if_recessive(la_passive_after__if_recessive),
+        .decision(la_passive_after__decision)
+    );
+    drcc__chan_a__bsp__rules__la_bus_off_after la_bus_off_after(
+        .clk(la_bus_off_after__clk),
+        .sample(la_bus_off_after__sample),
+        .sampled(la_bus_off_after__sampled),
+        .if_dominant(la_bus_off_after__if_dominant),
+        .if_recessive(la_bus_off_after__if_recessive),
+        .decision(la_bus_off_after__decision)
+    );
+    drcc__chan_a__bsp__rules__la_ack_defer la_ack_defer(
+        .clk(la_ack_defer__clk),
+        .sample(la_ack_defer__sample),
+        .sampled(la_ack_defer__sampled),
+        .if_dominant(la_ack_defer__if_dominant),
+        .if_recessive(la_ack_defer__if_recessive),
+        .decision(la_ack_defer__decision)
+    );
+    drcc__chan_a__bsp__rules__la_ack_counted la_ack_counted(
+        .clk(la_ack_counted__clk),
+        .sample(la_ack_counted__sample),
+        .sampled(la_ack_counted__sampled),
+        .if_dominant(la_ack_counted__if_dominant),
+        .if_recessive(la_ack_counted__if_recessive),
+        .decision(la_ack_counted__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        tec_ge120 = tec >= n9_120;
+        tec_ge248 = tec >= n9_248;
+        rec_ge127 = rec >= n8_127;
+        rec_ge120 = rec >= n8_120;
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_dominant__field = field;
+        if_dominant__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_dominant__flag_passive = flag_passive;
+        if_dominant__in_delim = in_delim;
+        if_dominant__after_error_flag = after_error_flag;
+        if_dominant__bc0 = bc0;
+        if_dominant__delim_first = delim_first;
+        if_dominant__dom7 = dom7;
+        if_dominant__ack_pending = ack_pending;
+        if_dominant__listen_only = listen_only;
+        if_dominant__tx_valid = 1'b0;
+        if_dominant__error = dom_error;
+        if_dominant__flag_error = dom_flag_error;
+        if_dominant__ack_err = dom_ack_err;
+        if_dominant__tec_exempt = dom_tec_exempt;
+        if_dominant__as_tx = is_tx || dom_sof_error;
+        if_dominant__passive_now = error_passive;
+        if_dominant__bus_off_now = bus_off;
+        if_dominant__tec_ge120 = tec_ge120;
+        if_dominant__tec_ge248 = tec_ge248;
+        if_dominant__rec_ge127 = rec_ge127;
+        if_dominant__rec_ge120 = rec_ge120;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_recessive__field = field;
+        if_recessive__is_tx = is_tx;
+        if_recessive__tx_bit = tx_bit;
+        if_recessive__flag_passive = flag_passive;
+        if_recessive__in_delim = in_delim;
+        if_recessive__after_error_flag = after_error_flag;
+        if_recessive__bc0 = bc0;
+        if_recessive__delim_first = delim_first;
+        if_recessive__dom7 = dom7;
+        if_recessive__ack_pending = ack_pending;
+        if_recessive__listen_only = listen_only;
+        if_recessive__tx_valid = 1'b0;
+        if_recessive__error = rec_error;
+        if_recessive__flag_error = rec_flag_error;
+        if_recessive__ack_err = rec_ack_err;
+        if_recessive__tec_exempt = rec_tec_exempt;
+        if_recessive__as_tx = is_tx || rec_sof_error;
+        if_recessive__passive_now = error_passive;
+        if_recessive__bus_off_now = bus_off;
+        if_recessive__tec_ge120 = tec_ge120;
+        if_recessive__tec_ge248 = tec_ge248;
+        if_recessive__rec_ge127 = rec_ge127;
+        if_recessive__rec_ge120 = rec_ge120;
+        la_tec_add8__clk = clk;
+        la_tec_add8__sample = sample;
+        la_tec_add8__sampled = sampled;
+        la_tec_add8__if_dominant = if_dominant__tec_add8;
+        la_tec_add8__if_recessive = if_recessive__tec_add8;
+        tec_add8 = la_tec_add8__decision;
+        la_rec_add1__clk = clk;
+        la_rec_add1__sample = sample;
+        la_rec_add1__sampled = sampled;
+        la_rec_add1__if_dominant = if_dominant__rec_add1;
+        la_rec_add1__if_recessive = if_recessive__rec_add1;
+        rec_add1 = la_rec_add1__decision;
+        la_rec_add8__clk = clk;
+        la_rec_add8__sample = sample;
+        la_rec_add8__sampled = sampled;
+        la_rec_add8__if_dominant = if_dominant__rec_add8;
+        la_rec_add8__if_recessive = if_recessive__rec_add8;
+        rec_add8 = la_rec_add8__decision;
+        la_rx_success__clk = clk;
+        la_rx_success__sample = sample;
+        la_rx_success__sampled = sampled;
+        la_rx_success__if_dominant = if_dominant__rx_success;
+        la_rx_success__if_recessive = if_recessive__rx_success;
+        rx_success = la_rx_success__decision;
+        la_passive_after__clk = clk;
+        la_passive_after__sample = sample;
+        la_passive_after__sampled = sampled;
+        la_passive_after__if_dominant = if_dominant__passive_after;
+        la_passive_after__if_recessive = if_recessive__passive_after;
+        passive_after = la_passive_after__decision;
+        la_bus_off_after__clk = clk;
+        la_bus_off_after__sample = sample;
+        la_bus_off_after__sampled = sampled;
+        la_bus_off_after__if_dominant = if_dominant__bus_off_after;
+        la_bus_off_after__if_recessive = if_recessive__bus_off_after;
+        bus_off_after = la_bus_off_after__decision;
+        la_ack_defer__clk = clk;
+        la_ack_defer__sample = sample;
+        la_ack_defer__sampled = sampled;
+        la_ack_defer__if_dominant = if_dominant__ack_defer;
+        la_ack_defer__if_recessive = if_recessive__ack_defer;
+        ack_defer = la_ack_defer__decision;
+        la_ack_counted__clk = clk;
+        la_ack_counted__sample = sample;
+        la_ack_counted__sampled = sampled;
+        la_ack_counted__if_dominant = if_dominant__ack_counted;
+        la_ack_counted__if_recessive = if_recessive__ack_counted;
+        ack_counted = la_ack_counted__decision;
+        tx_success = tx_valid && ~listen_only;
+    end
+    
+endmodule // drcc__chan_a__bsp__rules
+
+
+module drcc__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  tx_valid;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  tx_success;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
     
     // Local signals
     reg  monitor;
@@ -7824,58 +8322,8 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     reg  ev_rec_add8;
     reg  ev_rx_success;
     
-    // Sub module instances
-    drcc__chan_a__bsp__rules__p_passive p_passive(
-        .d(p_passive__d),
-        .q(p_passive__q),
-        .clock(p_passive__clock)
-    );
-    drcc__chan_a__bsp__rules__p_bus_off p_bus_off(
-        .d(p_bus_off__d),
-        .q(p_bus_off__q),
-        .clock(p_bus_off__clock)
-    );
-    drcc__chan_a__bsp__rules__p_tec_ge120 p_tec_ge120(
-        .d(p_tec_ge120__d),
-        .q(p_tec_ge120__q),
-        .clock(p_tec_ge120__clock)
-    );
-    drcc__chan_a__bsp__rules__p_tec_ge248 p_tec_ge248(
-        .d(p_tec_ge248__d),
-        .q(p_tec_ge248__q),
-        .clock(p_tec_ge248__clock)
-    );
-    drcc__chan_a__bsp__rules__p_rec_ge127 p_rec_ge127(
-        .d(p_rec_ge127__d),
-        .q(p_rec_ge127__q),
-        .clock(p_rec_ge127__clock)
-    );
-    drcc__chan_a__bsp__rules__p_rec_ge120 p_rec_ge120(
-        .d(p_rec_ge120__d),
-        .q(p_rec_ge120__q),
-        .clock(p_rec_ge120__clock)
-    );
-    
     // Update code
     always @(*) begin
-        p_passive__clock = clk;
-        p_bus_off__clock = clk;
-        p_tec_ge120__clock = clk;
-        p_tec_ge248__clock = clk;
-        p_rec_ge127__clock = clk;
-        p_rec_ge120__clock = clk;
-        p_passive__d = p_passive__q;
-        p_bus_off__d = p_bus_off__q;
-        p_tec_ge120__d = p_tec_ge120__q;
-        p_tec_ge248__d = p_tec_ge248__q;
-        p_rec_ge127__d = p_rec_ge127__q;
-        p_rec_ge120__d = p_rec_ge120__q;
-        p_passive__d = error_passive;
-        p_bus_off__d = bus_off;
-        p_tec_ge120__d = tec >= n9_120;
-        p_tec_ge248__d = tec >= n9_248;
-        p_rec_ge127__d = rec >= n8_127;
-        p_rec_ge120__d = rec >= n8_120;
         ev_tec_add8 = 1'b0;
         ev_rec_add1 = 1'b0;
         ev_rec_add8 = 1'b0;
@@ -7909,7 +8357,7 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         end
         if (error) begin
             if (as_tx) begin
-                if (ack_err && p_passive__q) begin
+                if (ack_err && passive_now) begin
                     ack_defer = 1'b1;
                 end
                 else if (~tec_exempt) begin
@@ -7928,8 +8376,8 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
                 ev_rec_add8 = 1'b1;
             end
         end
-        passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
-        bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
@@ -7937,10 +8385,196 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         rx_success = ev_rx_success && ~listen_only;
     end
     
-endmodule // drcc__chan_a__bsp__rules
+endmodule // drcc__chan_a__bsp__rules__if_dominant
 
 
-module drcc__chan_a__bsp__rules__p_bus_off(d,q,clock);
+module drcc__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  tx_valid;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  tx_success;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  ev_tec_add8;
+    reg  ev_rec_add1;
+    reg  ev_rec_add8;
+    reg  ev_rx_success;
+    
+    // Update code
+    always @(*) begin
+        ev_tec_add8 = 1'b0;
+        ev_rec_add1 = 1'b0;
+        ev_rec_add8 = 1'b0;
+        ev_rx_success = 1'b0;
+        ack_defer = 1'b0;
+        ack_counted = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if ((field == Field__AckSlot) && ~is_tx && ~tx_bit && ~sampled) begin
+                ev_rx_success = 1'b1;
+            end
+            if ((field == Field__ErrorFlag) && flag_passive) begin
+                if (ack_pending && ~sampled) begin
+                    ev_tec_add8 = 1'b1;
+                    ack_counted = 1'b1;
+                end
+            end
+            if (in_delim && bc0 && ~sampled) begin
+                if (delim_first && after_error_flag && ~is_tx) begin
+                    ev_rec_add8 = 1'b1;
+                end
+                if (dom7) begin
+                    if (is_tx) begin
+                        ev_tec_add8 = 1'b1;
+                    end
+                    else begin
+                        ev_rec_add8 = 1'b1;
+                    end
+                end
+            end
+        end
+        if (error) begin
+            if (as_tx) begin
+                if (ack_err && passive_now) begin
+                    ack_defer = 1'b1;
+                end
+                else if (~tec_exempt) begin
+                    ev_tec_add8 = 1'b1;
+                end
+            end
+            else begin
+                ev_rec_add1 = 1'b1;
+            end
+        end
+        if (flag_error) begin
+            if (is_tx) begin
+                ev_tec_add8 = 1'b1;
+            end
+            else begin
+                ev_rec_add8 = 1'b1;
+            end
+        end
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
+        tec_add8 = ev_tec_add8 && ~listen_only;
+        rec_add1 = ev_rec_add1 && ~listen_only;
+        rec_add8 = ev_rec_add8 && ~listen_only;
+        tx_success = tx_valid && ~listen_only;
+        rx_success = ev_rx_success && ~listen_only;
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__if_recessive
+
+
+module drcc__chan_a__bsp__rules__la_ack_counted(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_ack_counted__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_ack_counted__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_ack_counted
+
+
+module drcc__chan_a__bsp__rules__la_ack_counted__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7953,10 +8587,10 @@ module drcc__chan_a__bsp__rules__p_bus_off(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rules__p_bus_off
+endmodule // drcc__chan_a__bsp__rules__la_ack_counted__dominant_q
 
 
-module drcc__chan_a__bsp__rules__p_passive(d,q,clock);
+module drcc__chan_a__bsp__rules__la_ack_counted__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7969,10 +8603,59 @@ module drcc__chan_a__bsp__rules__p_passive(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rules__p_passive
+endmodule // drcc__chan_a__bsp__rules__la_ack_counted__recessive_q
 
 
-module drcc__chan_a__bsp__rules__p_rec_ge120(d,q,clock);
+module drcc__chan_a__bsp__rules__la_ack_defer(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_ack_defer__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_ack_defer__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_ack_defer
+
+
+module drcc__chan_a__bsp__rules__la_ack_defer__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -7985,10 +8668,10 @@ module drcc__chan_a__bsp__rules__p_rec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rules__p_rec_ge120
+endmodule // drcc__chan_a__bsp__rules__la_ack_defer__dominant_q
 
 
-module drcc__chan_a__bsp__rules__p_rec_ge127(d,q,clock);
+module drcc__chan_a__bsp__rules__la_ack_defer__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8001,10 +8684,59 @@ module drcc__chan_a__bsp__rules__p_rec_ge127(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rules__p_rec_ge127
+endmodule // drcc__chan_a__bsp__rules__la_ack_defer__recessive_q
 
 
-module drcc__chan_a__bsp__rules__p_tec_ge120(d,q,clock);
+module drcc__chan_a__bsp__rules__la_bus_off_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_bus_off_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_bus_off_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_bus_off_after
+
+
+module drcc__chan_a__bsp__rules__la_bus_off_after__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8017,10 +8749,10 @@ module drcc__chan_a__bsp__rules__p_tec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rules__p_tec_ge120
+endmodule // drcc__chan_a__bsp__rules__la_bus_off_after__dominant_q
 
 
-module drcc__chan_a__bsp__rules__p_tec_ge248(d,q,clock);
+module drcc__chan_a__bsp__rules__la_bus_off_after__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -8033,7 +8765,412 @@ module drcc__chan_a__bsp__rules__p_tec_ge248(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__rules__p_tec_ge248
+endmodule // drcc__chan_a__bsp__rules__la_bus_off_after__recessive_q
+
+
+module drcc__chan_a__bsp__rules__la_passive_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_passive_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_passive_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_passive_after
+
+
+module drcc__chan_a__bsp__rules__la_passive_after__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_passive_after__dominant_q
+
+
+module drcc__chan_a__bsp__rules__la_passive_after__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_passive_after__recessive_q
+
+
+module drcc__chan_a__bsp__rules__la_rec_add1(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_rec_add1__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_rec_add1__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_rec_add1
+
+
+module drcc__chan_a__bsp__rules__la_rec_add1__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_rec_add1__dominant_q
+
+
+module drcc__chan_a__bsp__rules__la_rec_add1__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_rec_add1__recessive_q
+
+
+module drcc__chan_a__bsp__rules__la_rec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_rec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_rec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_rec_add8
+
+
+module drcc__chan_a__bsp__rules__la_rec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_rec_add8__dominant_q
+
+
+module drcc__chan_a__bsp__rules__la_rec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_rec_add8__recessive_q
+
+
+module drcc__chan_a__bsp__rules__la_rx_success(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_rx_success__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_rx_success__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_rx_success
+
+
+module drcc__chan_a__bsp__rules__la_rx_success__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_rx_success__dominant_q
+
+
+module drcc__chan_a__bsp__rules__la_rx_success__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_rx_success__recessive_q
+
+
+module drcc__chan_a__bsp__rules__la_tec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__rules__la_tec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__rules__la_tec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__rules__la_tec_add8
+
+
+module drcc__chan_a__bsp__rules__la_tec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_tec_add8__dominant_q
+
+
+module drcc__chan_a__bsp__rules__la_tec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__rules__la_tec_add8__recessive_q
 
 
 module drcc__chan_a__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);
@@ -11070,6 +12207,16 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  detect__sof_error;
     wire  detect__lost;
     wire  detect__tec_exempt;
+    wire  detect__dom_error;
+    wire  detect__dom_flag_error;
+    wire  detect__dom_ack_err;
+    wire  detect__dom_tec_exempt;
+    wire  detect__dom_sof_error;
+    wire  detect__rec_error;
+    wire  detect__rec_flag_error;
+    wire  detect__rec_ack_err;
+    wire  detect__rec_tec_exempt;
+    wire  detect__rec_sof_error;
     reg  rules__clk;
     reg  rules__sample;
     reg  rules__sampled;
@@ -11084,13 +12231,18 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  rules__delim_first;
     reg  rules__dom7;
     reg  rules__ack_pending;
-    reg  rules__tx_valid;
     reg  rules__listen_only;
-    reg  rules__error;
-    reg  rules__flag_error;
-    reg  rules__ack_err;
-    reg  rules__tec_exempt;
-    reg  rules__as_tx;
+    reg  rules__tx_valid;
+    reg  rules__dom_error;
+    reg  rules__dom_flag_error;
+    reg  rules__dom_ack_err;
+    reg  rules__dom_tec_exempt;
+    reg  rules__dom_sof_error;
+    reg  rules__rec_error;
+    reg  rules__rec_flag_error;
+    reg  rules__rec_ack_err;
+    reg  rules__rec_tec_exempt;
+    reg  rules__rec_sof_error;
     reg  [8:0] rules__tec;
     reg  [7:0] rules__rec;
     reg  rules__error_passive;
@@ -11098,8 +12250,8 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     wire  rules__tec_add8;
     wire  rules__rec_add1;
     wire  rules__rec_add8;
-    wire  rules__tx_success;
     wire  rules__rx_success;
+    wire  rules__tx_success;
     wire  rules__passive_after;
     wire  rules__bus_off_after;
     wire  rules__ack_defer;
@@ -11345,7 +12497,17 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt)
+        .tec_exempt(detect__tec_exempt),
+        .dom_error(detect__dom_error),
+        .dom_flag_error(detect__dom_flag_error),
+        .dom_ack_err(detect__dom_ack_err),
+        .dom_tec_exempt(detect__dom_tec_exempt),
+        .dom_sof_error(detect__dom_sof_error),
+        .rec_error(detect__rec_error),
+        .rec_flag_error(detect__rec_flag_error),
+        .rec_ack_err(detect__rec_ack_err),
+        .rec_tec_exempt(detect__rec_tec_exempt),
+        .rec_sof_error(detect__rec_sof_error)
     );
     drcc__chan_b__bsp__rules rules(
         .clk(rules__clk),
@@ -11362,13 +12524,18 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .delim_first(rules__delim_first),
         .dom7(rules__dom7),
         .ack_pending(rules__ack_pending),
-        .tx_valid(rules__tx_valid),
         .listen_only(rules__listen_only),
-        .error(rules__error),
-        .flag_error(rules__flag_error),
-        .ack_err(rules__ack_err),
-        .tec_exempt(rules__tec_exempt),
-        .as_tx(rules__as_tx),
+        .tx_valid(rules__tx_valid),
+        .dom_error(rules__dom_error),
+        .dom_flag_error(rules__dom_flag_error),
+        .dom_ack_err(rules__dom_ack_err),
+        .dom_tec_exempt(rules__dom_tec_exempt),
+        .dom_sof_error(rules__dom_sof_error),
+        .rec_error(rules__rec_error),
+        .rec_flag_error(rules__rec_flag_error),
+        .rec_ack_err(rules__rec_ack_err),
+        .rec_tec_exempt(rules__rec_tec_exempt),
+        .rec_sof_error(rules__rec_sof_error),
         .tec(rules__tec),
         .rec(rules__rec),
         .error_passive(rules__error_passive),
@@ -11376,8 +12543,8 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .tec_add8(rules__tec_add8),
         .rec_add1(rules__rec_add1),
         .rec_add8(rules__rec_add8),
-        .tx_success(rules__tx_success),
         .rx_success(rules__rx_success),
+        .tx_success(rules__tx_success),
         .passive_after(rules__passive_after),
         .bus_off_after(rules__bus_off_after),
         .ack_defer(rules__ack_defer),
@@ -11564,11 +12731,16 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         rules__ack_pending = fsm__ack_pending;
         rules__tx_valid = fsm__tx_valid;
         rules__listen_only = listen_only;
-        rules__error = detect__error;
-        rules__flag_error = detect__flag_error;
-        rules__ack_err = detect__ack_err;
-        rules__tec_exempt = detect__tec_exempt;
-        rules__as_tx = fsm__is_tx || detect__sof_error;
+        rules__dom_error = detect__dom_error;
+        rules__dom_flag_error = detect__dom_flag_error;
+        rules__dom_ack_err = detect__dom_ack_err;
+        rules__dom_tec_exempt = detect__dom_tec_exempt;
+        rules__dom_sof_error = detect__dom_sof_error;
+        rules__rec_error = detect__rec_error;
+        rules__rec_flag_error = detect__rec_flag_error;
+        rules__rec_ack_err = detect__rec_ack_err;
+        rules__rec_tec_exempt = detect__rec_tec_exempt;
+        rules__rec_sof_error = detect__rec_sof_error;
         rules__tec = fc__tec;
         rules__rec = fc__rec;
         rules__error_passive = fc__error_passive;
@@ -11623,7 +12795,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
 endmodule // drcc__chan_b__bsp
 
 
-module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
     
     // Module arguments
     input wire  clk;
@@ -11656,6 +12828,16 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     output reg  sof_error;
     output reg  lost;
     output reg  tec_exempt;
+    output reg  dom_error;
+    output reg  dom_flag_error;
+    output reg  dom_ack_err;
+    output reg  dom_tec_exempt;
+    output reg  dom_sof_error;
+    output reg  rec_error;
+    output reg  rec_flag_error;
+    output reg  rec_ack_err;
+    output reg  rec_tec_exempt;
+    output reg  rec_sof_error;
     
     // Enums
     localparam Field__Integrating = 0;
@@ -11986,6 +13168,16 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         if_recessive__listen_only = listen_only;
         if_dominant__ack_check_off = ack_check_off;
         if_recessive__ack_check_off = ack_check_off;
+        dom_error = if_dominant__error;
+        dom_flag_error = if_dominant__flag_error;
+        dom_ack_err = if_dominant__ack_err;
+        dom_tec_exempt = if_dominant__tec_exempt;
+        dom_sof_error = if_dominant__sof_error;
+        rec_error = if_recessive__error;
+        rec_flag_error = if_recessive__flag_error;
+        rec_ack_err = if_recessive__ack_err;
+        rec_tec_exempt = if_recessive__tec_exempt;
+        rec_sof_error = if_recessive__sof_error;
         la_error__clk = clk;
         la_error__sample = sample;
         la_error__sampled = sampled;
@@ -14216,6 +15408,9 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
     reg  [2:0] dom_cnt__d;
     wire  [2:0] dom_cnt__q;
     reg  dom_cnt__clock;
+    reg  hse_off__d;
+    wire  hse_off__q;
+    reg  hse_off__clock;
     reg  decode__clk;
     reg  [4:0] decode__field;
     reg  [6:0] decode__bit_cnt;
@@ -14249,6 +15444,9 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
     reg  is_tx_n;
     reg  flag_passive_n;
     reg  monitor;
+    reg  hse_class;
+    reg  hse_stay;
+    reg  hse_n;
     
     // Sub module instances
     drcc__chan_b__bsp__fsm__field_q field_q(
@@ -14296,6 +15494,11 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
         .q(dom_cnt__q),
         .clock(dom_cnt__clock)
     );
+    drcc__chan_b__bsp__fsm__hse_off hse_off(
+        .d(hse_off__d),
+        .q(hse_off__q),
+        .clock(hse_off__clock)
+    );
     drcc__chan_b__bsp__fsm__decode decode(
         .clk(decode__clk),
         .field(decode__field),
@@ -14336,6 +15539,7 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
         ack_pending_q__clock = clk;
         delim_first_q__clock = clk;
         dom_cnt__clock = clk;
+        hse_off__clock = clk;
         field_q__d = field_q__q;
         bit_cnt_q__d = bit_cnt_q__q;
         is_tx_q__d = is_tx_q__q;
@@ -14345,6 +15549,7 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
         ack_pending_q__d = ack_pending_q__q;
         delim_first_q__d = delim_first_q__q;
         dom_cnt__d = dom_cnt__q;
+        hse_off__d = hse_off__q;
         decode__clk = clk;
         decode__field = field_q__q;
         decode__bit_cnt = bit_cnt_q__q;
@@ -14699,32 +15904,18 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
             is_tx_q__d = is_tx_n;
             flag_passive_q__d = flag_passive_n;
         end
-        case (field_q__q)
-            Field__Integrating:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Idle:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Suspend:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__BusOff:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Intermission:
-                begin
-                    hard_sync_enable = bit_cnt_q__q[32'h1];
-                end
-            default:
-                begin
-                    hard_sync_enable = 1'b0;
-                end
-        endcase
+        hse_class = (field_q__q == Field__Integrating) || (field_q__q == Field__Idle) || (field_q__q == Field__Suspend) || (field_q__q == Field__BusOff);
+        if (monitor) begin
+            hse_stay = (field_q__q == Field__Intermission) && sampled && (decode__bc2 || bit_cnt_q__q[32'h0]);
+        end
+        else begin
+            hse_stay = (field_q__q == Field__Intermission) && bit_cnt_q__q[32'h1];
+        end
+        hse_n = bus_off_after || (~sof && ~error && ~flag_error && (hse_class || hse_stay));
+        if (sample) begin
+            hse_off__d = ~hse_n;
+        end
+        hard_sync_enable = ~hse_off__q;
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
@@ -14753,6 +15944,7 @@ module drcc__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_onl
             ack_pending_q__d = 1'b0;
             delim_first_q__d = 1'b0;
             dom_cnt__d = zero3;
+            hse_off__d = 1'b0;
         end
     end
     
@@ -15574,6 +16766,22 @@ module drcc__chan_b__bsp__fsm__flag_passive_q(d,q,clock);
 endmodule // drcc__chan_b__bsp__fsm__flag_passive_q
 
 
+module drcc__chan_b__bsp__fsm__hse_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__fsm__hse_off
+
+
 module drcc__chan_b__bsp__fsm__is_tx_q(d,q,clock);
     
     // Module arguments
@@ -15622,7 +16830,7 @@ module drcc__chan_b__bsp__fsm__recovery_cnt(d,q,clock);
 endmodule // drcc__chan_b__bsp__fsm__recovery_cnt
 
 
-module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,tx_valid,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,rx_success,tx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  clk;
@@ -15639,13 +16847,18 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
-    input wire  error;
-    input wire  flag_error;
-    input wire  ack_err;
-    input wire  tec_exempt;
-    input wire  as_tx;
+    input wire  tx_valid;
+    input wire  dom_error;
+    input wire  dom_flag_error;
+    input wire  dom_ack_err;
+    input wire  dom_tec_exempt;
+    input wire  dom_sof_error;
+    input wire  rec_error;
+    input wire  rec_flag_error;
+    input wire  rec_ack_err;
+    input wire  rec_tec_exempt;
+    input wire  rec_sof_error;
     input wire  [8:0] tec;
     input wire  [7:0] rec;
     input wire  error_passive;
@@ -15653,8 +16866,8 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
+    output reg  tx_success;
     output reg  passive_after;
     output reg  bus_off_after;
     output reg  ack_defer;
@@ -15692,24 +16905,446 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     localparam Field__BusOff = 22;
     
     // Stub signals
-    reg  p_passive__d;
-    wire  p_passive__q;
-    reg  p_passive__clock;
-    reg  p_bus_off__d;
-    wire  p_bus_off__q;
-    reg  p_bus_off__clock;
-    reg  p_tec_ge120__d;
-    wire  p_tec_ge120__q;
-    reg  p_tec_ge120__clock;
-    reg  p_tec_ge248__d;
-    wire  p_tec_ge248__q;
-    reg  p_tec_ge248__clock;
-    reg  p_rec_ge127__d;
-    wire  p_rec_ge127__q;
-    reg  p_rec_ge127__clock;
-    reg  p_rec_ge120__d;
-    wire  p_rec_ge120__q;
-    reg  p_rec_ge120__clock;
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  if_dominant__at_stuff_bit;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__after_error_flag;
+    reg  if_dominant__bc0;
+    reg  if_dominant__delim_first;
+    reg  if_dominant__dom7;
+    reg  if_dominant__ack_pending;
+    reg  if_dominant__tx_valid;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__error;
+    reg  if_dominant__flag_error;
+    reg  if_dominant__ack_err;
+    reg  if_dominant__tec_exempt;
+    reg  if_dominant__as_tx;
+    reg  if_dominant__passive_now;
+    reg  if_dominant__bus_off_now;
+    reg  if_dominant__tec_ge120;
+    reg  if_dominant__tec_ge248;
+    reg  if_dominant__rec_ge127;
+    reg  if_dominant__rec_ge120;
+    wire  if_dominant__tec_add8;
+    wire  if_dominant__rec_add1;
+    wire  if_dominant__rec_add8;
+    wire  if_dominant__tx_success;
+    wire  if_dominant__rx_success;
+    wire  if_dominant__passive_after;
+    wire  if_dominant__bus_off_after;
+    wire  if_dominant__ack_defer;
+    wire  if_dominant__ack_counted;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  if_recessive__at_stuff_bit;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__after_error_flag;
+    reg  if_recessive__bc0;
+    reg  if_recessive__delim_first;
+    reg  if_recessive__dom7;
+    reg  if_recessive__ack_pending;
+    reg  if_recessive__tx_valid;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__error;
+    reg  if_recessive__flag_error;
+    reg  if_recessive__ack_err;
+    reg  if_recessive__tec_exempt;
+    reg  if_recessive__as_tx;
+    reg  if_recessive__passive_now;
+    reg  if_recessive__bus_off_now;
+    reg  if_recessive__tec_ge120;
+    reg  if_recessive__tec_ge248;
+    reg  if_recessive__rec_ge127;
+    reg  if_recessive__rec_ge120;
+    wire  if_recessive__tec_add8;
+    wire  if_recessive__rec_add1;
+    wire  if_recessive__rec_add8;
+    wire  if_recessive__tx_success;
+    wire  if_recessive__rx_success;
+    wire  if_recessive__passive_after;
+    wire  if_recessive__bus_off_after;
+    wire  if_recessive__ack_defer;
+    wire  if_recessive__ack_counted;
+    reg  la_tec_add8__clk;
+    reg  la_tec_add8__sample;
+    reg  la_tec_add8__sampled;
+    reg  la_tec_add8__if_dominant;
+    reg  la_tec_add8__if_recessive;
+    wire  la_tec_add8__decision;
+    reg  la_rec_add1__clk;
+    reg  la_rec_add1__sample;
+    reg  la_rec_add1__sampled;
+    reg  la_rec_add1__if_dominant;
+    reg  la_rec_add1__if_recessive;
+    wire  la_rec_add1__decision;
+    reg  la_rec_add8__clk;
+    reg  la_rec_add8__sample;
+    reg  la_rec_add8__sampled;
+    reg  la_rec_add8__if_dominant;
+    reg  la_rec_add8__if_recessive;
+    wire  la_rec_add8__decision;
+    reg  la_rx_success__clk;
+    reg  la_rx_success__sample;
+    reg  la_rx_success__sampled;
+    reg  la_rx_success__if_dominant;
+    reg  la_rx_success__if_recessive;
+    wire  la_rx_success__decision;
+    reg  la_passive_after__clk;
+    reg  la_passive_after__sample;
+    reg  la_passive_after__sampled;
+    reg  la_passive_after__if_dominant;
+    reg  la_passive_after__if_recessive;
+    wire  la_passive_after__decision;
+    reg  la_bus_off_after__clk;
+    reg  la_bus_off_after__sample;
+    reg  la_bus_off_after__sampled;
+    reg  la_bus_off_after__if_dominant;
+    reg  la_bus_off_after__if_recessive;
+    wire  la_bus_off_after__decision;
+    reg  la_ack_defer__clk;
+    reg  la_ack_defer__sample;
+    reg  la_ack_defer__sampled;
+    reg  la_ack_defer__if_dominant;
+    reg  la_ack_defer__if_recessive;
+    wire  la_ack_defer__decision;
+    reg  la_ack_counted__clk;
+    reg  la_ack_counted__sample;
+    reg  la_ack_counted__sampled;
+    reg  la_ack_counted__if_dominant;
+    reg  la_ack_counted__if_recessive;
+    wire  la_ack_counted__decision;
+    
+    // Local signals
+    reg  tec_ge120;
+    reg  tec_ge248;
+    reg  rec_ge127;
+    reg  rec_ge120;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .flag_passive(if_dominant__flag_passive),
+        .in_delim(if_dominant__in_delim),
+        .after_error_flag(if_dominant__after_error_flag),
+        .bc0(if_dominant__bc0),
+        .delim_first(if_dominant__delim_first),
+        .dom7(if_dominant__dom7),
+        .ack_pending(if_dominant__ack_pending),
+        .tx_valid(if_dominant__tx_valid),
+        .listen_only(if_dominant__listen_only),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .ack_err(if_dominant__ack_err),
+        .tec_exempt(if_dominant__tec_exempt),
+        .as_tx(if_dominant__as_tx),
+        .passive_now(if_dominant__passive_now),
+        .bus_off_now(if_dominant__bus_off_now),
+        .tec_ge120(if_dominant__tec_ge120),
+        .tec_ge248(if_dominant__tec_ge248),
+        .rec_ge127(if_dominant__rec_ge127),
+        .rec_ge120(if_dominant__rec_ge120),
+        .tec_add8(if_dominant__tec_add8),
+        .rec_add1(if_dominant__rec_add1),
+        .rec_add8(if_dominant__rec_add8),
+        .tx_success(if_dominant__tx_success),
+        .rx_success(if_dominant__rx_success),
+        .passive_after(if_dominant__passive_after),
+        .bus_off_after(if_dominant__bus_off_after),
+        .ack_defer(if_dominant__ack_defer),
+        .ack_counted(if_dominant__ack_counted)
+    );
+    drcc__chan_b__bsp__rules__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .flag_passive(if_recessive__flag_passive),
+        .in_delim(if_recessive__in_delim),
+        .after_error_flag(if_recessive__after_error_flag),
+        .bc0(if_recessive__bc0),
+        .delim_first(if_recessive__delim_first),
+        .dom7(if_recessive__dom7),
+        .ack_pending(if_recessive__ack_pending),
+        .tx_valid(if_recessive__tx_valid),
+        .listen_only(if_recessive__listen_only),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .ack_err(if_recessive__ack_err),
+        .tec_exempt(if_recessive__tec_exempt),
+        .as_tx(if_recessive__as_tx),
+        .passive_now(if_recessive__passive_now),
+        .bus_off_now(if_recessive__bus_off_now),
+        .tec_ge120(if_recessive__tec_ge120),
+        .tec_ge248(if_recessive__tec_ge248),
+        .rec_ge127(if_recessive__rec_ge127),
+        .rec_ge120(if_recessive__rec_ge120),
+        .tec_add8(if_recessive__tec_add8),
+        .rec_add1(if_recessive__rec_add1),
+        .rec_add8(if_recessive__rec_add8),
+        .tx_success(if_recessive__tx_success),
+        .rx_success(if_recessive__rx_success),
+        .passive_after(if_recessive__passive_after),
+        .bus_off_after(if_recessive__bus_off_after),
+        .ack_defer(if_recessive__ack_defer),
+        .ack_counted(if_recessive__ack_counted)
+    );
+    drcc__chan_b__bsp__rules__la_tec_add8 la_tec_add8(
+        .clk(la_tec_add8__clk),
+        .sample(la_tec_add8__sample),
+        .sampled(la_tec_add8__sampled),
+        .if_dominant(la_tec_add8__if_dominant),
+        .if_recessive(la_tec_add8__if_recessive),
+        .decision(la_tec_add8__decision)
+    );
+    drcc__chan_b__bsp__rules__la_rec_add1 la_rec_add1(
+        .clk(la_rec_add1__clk),
+        .sample(la_rec_add1__sample),
+        .sampled(la_rec_add1__sampled),
+        .if_dominant(la_rec_add1__if_dominant),
+        .if_recessive(la_rec_add1__if_recessive),
+        .decision(la_rec_add1__decision)
+    );
+    drcc__chan_b__bsp__rules__la_rec_add8 la_rec_add8(
+        .clk(la_rec_add8__clk),
+        .sample(la_rec_add8__sample),
+        .sampled(la_rec_add8__sampled),
+        .if_dominant(la_rec_add8__if_dominant),
+        .if_recessive(la_rec_add8__if_recessive),
+        .decision(la_rec_add8__decision)
+    );
+    drcc__chan_b__bsp__rules__la_rx_success la_rx_success(
+        .clk(la_rx_success__clk),
+        .sample(la_rx_success__sample),
+        .sampled(la_rx_success__sampled),
+        .if_dominant(la_rx_success__if_dominant),
+        .if_recessive(la_rx_success__if_recessive),
+        .decision(la_rx_success__decision)
+    );
+    drcc__chan_b__bsp__rules__la_passive_after la_passive_after(
+        .clk(la_passive_after__clk),
+        .sample(la_passive_after__sample),
+        .sampled(la_passive_after__sampled),
+        .if_dominant(la_passive_after__if_dominant),
+        .if_recessive(la_passive_after__if_recessive),
+        .decision(la_passive_after__decision)
+    );
+    drcc__chan_b__bsp__rules__la_bus_off_after la_bus_off_after(
+        .clk(la_bus_off_after__clk),
+        .sample(la_bus_off_after__sample),
+        .sampled(la_bus_off_after__sampled),
+        .if_dominant(la_bus_off_after__if_dominant),
+        .if_recessive(la_bus_off_after__if_recessive),
+        .decision(la_bus_off_after__decision)
+    );
+    drcc__chan_b__bsp__rules__la_ack_defer la_ack_defer(
+        .clk(la_ack_defer__clk),
+        .sample(la_ack_defer__sample),
+        .sampled(la_ack_defer__sampled),
+        .if_dominant(la_ack_defer__if_dominant),
+        .if_recessive(la_ack_defer__if_recessive),
+        .decision(la_ack_defer__decision)
+    );
+    drcc__chan_b__bsp__rules__la_ack_counted la_ack_counted(
+        .clk(la_ack_counted__clk),
+        .sample(la_ack_counted__sample),
+        .sampled(la_ack_counted__sampled),
+        .if_dominant(la_ack_counted__if_dominant),
+        .if_recessive(la_ack_counted__if_recessive),
+        .decision(la_ack_counted__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        tec_ge120 = tec >= n9_120;
+        tec_ge248 = tec >= n9_248;
+        rec_ge127 = rec >= n8_127;
+        rec_ge120 = rec >= n8_120;
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_dominant__field = field;
+        if_dominant__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_dominant__flag_passive = flag_passive;
+        if_dominant__in_delim = in_delim;
+        if_dominant__after_error_flag = after_error_flag;
+        if_dominant__bc0 = bc0;
+        if_dominant__delim_first = delim_first;
+        if_dominant__dom7 = dom7;
+        if_dominant__ack_pending = ack_pending;
+        if_dominant__listen_only = listen_only;
+        if_dominant__tx_valid = 1'b0;
+        if_dominant__error = dom_error;
+        if_dominant__flag_error = dom_flag_error;
+        if_dominant__ack_err = dom_ack_err;
+        if_dominant__tec_exempt = dom_tec_exempt;
+        if_dominant__as_tx = is_tx || dom_sof_error;
+        if_dominant__passive_now = error_passive;
+        if_dominant__bus_off_now = bus_off;
+        if_dominant__tec_ge120 = tec_ge120;
+        if_dominant__tec_ge248 = tec_ge248;
+        if_dominant__rec_ge127 = rec_ge127;
+        if_dominant__rec_ge120 = rec_ge120;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_recessive__field = field;
+        if_recessive__is_tx = is_tx;
+        if_recessive__tx_bit = tx_bit;
+        if_recessive__flag_passive = flag_passive;
+        if_recessive__in_delim = in_delim;
+        if_recessive__after_error_flag = after_error_flag;
+        if_recessive__bc0 = bc0;
+        if_recessive__delim_first = delim_first;
+        if_recessive__dom7 = dom7;
+        if_recessive__ack_pending = ack_pending;
+        if_recessive__listen_only = listen_only;
+        if_recessive__tx_valid = 1'b0;
+        if_recessive__error = rec_error;
+        if_recessive__flag_error = rec_flag_error;
+        if_recessive__ack_err = rec_ack_err;
+        if_recessive__tec_exempt = rec_tec_exempt;
+        if_recessive__as_tx = is_tx || rec_sof_error;
+        if_recessive__passive_now = error_passive;
+        if_recessive__bus_off_now = bus_off;
+        if_recessive__tec_ge120 = tec_ge120;
+        if_recessive__tec_ge248 = tec_ge248;
+        if_recessive__rec_ge127 = rec_ge127;
+        if_recessive__rec_ge120 = rec_ge120;
+        la_tec_add8__clk = clk;
+        la_tec_add8__sample = sample;
+        la_tec_add8__sampled = sampled;
+        la_tec_add8__if_dominant = if_dominant__tec_add8;
+        la_tec_add8__if_recessive = if_recessive__tec_add8;
+        tec_add8 = la_tec_add8__decision;
+        la_rec_add1__clk = clk;
+        la_rec_add1__sample = sample;
+        la_rec_add1__sampled = sampled;
+        la_rec_add1__if_dominant = if_dominant__rec_add1;
+        la_rec_add1__if_recessive = if_recessive__rec_add1;
+        rec_add1 = la_rec_add1__decision;
+        la_rec_add8__clk = clk;
+        la_rec_add8__sample = sample;
+        la_rec_add8__sampled = sampled;
+        la_rec_add8__if_dominant = if_dominant__rec_add8;
+        la_rec_add8__if_recessive = if_recessive__rec_add8;
+        rec_add8 = la_rec_add8__decision;
+        la_rx_success__clk = clk;
+        la_rx_success__sample = sample;
+        la_rx_success__sampled = sampled;
+        la_rx_success__if_dominant = if_dominant__rx_success;
+        la_rx_success__if_recessive = if_recessive__rx_success;
+        rx_success = la_rx_success__decision;
+        la_passive_after__clk = clk;
+        la_passive_after__sample = sample;
+        la_passive_after__sampled = sampled;
+        la_passive_after__if_dominant = if_dominant__passive_after;
+        la_passive_after__if_recessive = if_recessive__passive_after;
+        passive_after = la_passive_after__decision;
+        la_bus_off_after__clk = clk;
+        la_bus_off_after__sample = sample;
+        la_bus_off_after__sampled = sampled;
+        la_bus_off_after__if_dominant = if_dominant__bus_off_after;
+        la_bus_off_after__if_recessive = if_recessive__bus_off_after;
+        bus_off_after = la_bus_off_after__decision;
+        la_ack_defer__clk = clk;
+        la_ack_defer__sample = sample;
+        la_ack_defer__sampled = sampled;
+        la_ack_defer__if_dominant = if_dominant__ack_defer;
+        la_ack_defer__if_recessive = if_recessive__ack_defer;
+        ack_defer = la_ack_defer__decision;
+        la_ack_counted__clk = clk;
+        la_ack_counted__sample = sample;
+        la_ack_counted__sampled = sampled;
+        la_ack_counted__if_dominant = if_dominant__ack_counted;
+        la_ack_counted__if_recessive = if_recessive__ack_counted;
+        ack_counted = la_ack_counted__decision;
+        tx_success = tx_valid && ~listen_only;
+    end
+    
+endmodule // drcc__chan_b__bsp__rules
+
+
+module drcc__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  tx_valid;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  tx_success;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
     
     // Local signals
     reg  monitor;
@@ -15718,58 +17353,8 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     reg  ev_rec_add8;
     reg  ev_rx_success;
     
-    // Sub module instances
-    drcc__chan_b__bsp__rules__p_passive p_passive(
-        .d(p_passive__d),
-        .q(p_passive__q),
-        .clock(p_passive__clock)
-    );
-    drcc__chan_b__bsp__rules__p_bus_off p_bus_off(
-        .d(p_bus_off__d),
-        .q(p_bus_off__q),
-        .clock(p_bus_off__clock)
-    );
-    drcc__chan_b__bsp__rules__p_tec_ge120 p_tec_ge120(
-        .d(p_tec_ge120__d),
-        .q(p_tec_ge120__q),
-        .clock(p_tec_ge120__clock)
-    );
-    drcc__chan_b__bsp__rules__p_tec_ge248 p_tec_ge248(
-        .d(p_tec_ge248__d),
-        .q(p_tec_ge248__q),
-        .clock(p_tec_ge248__clock)
-    );
-    drcc__chan_b__bsp__rules__p_rec_ge127 p_rec_ge127(
-        .d(p_rec_ge127__d),
-        .q(p_rec_ge127__q),
-        .clock(p_rec_ge127__clock)
-    );
-    drcc__chan_b__bsp__rules__p_rec_ge120 p_rec_ge120(
-        .d(p_rec_ge120__d),
-        .q(p_rec_ge120__q),
-        .clock(p_rec_ge120__clock)
-    );
-    
     // Update code
     always @(*) begin
-        p_passive__clock = clk;
-        p_bus_off__clock = clk;
-        p_tec_ge120__clock = clk;
-        p_tec_ge248__clock = clk;
-        p_rec_ge127__clock = clk;
-        p_rec_ge120__clock = clk;
-        p_passive__d = p_passive__q;
-        p_bus_off__d = p_bus_off__q;
-        p_tec_ge120__d = p_tec_ge120__q;
-        p_tec_ge248__d = p_tec_ge248__q;
-        p_rec_ge127__d = p_rec_ge127__q;
-        p_rec_ge120__d = p_rec_ge120__q;
-        p_passive__d = error_passive;
-        p_bus_off__d = bus_off;
-        p_tec_ge120__d = tec >= n9_120;
-        p_tec_ge248__d = tec >= n9_248;
-        p_rec_ge127__d = rec >= n8_127;
-        p_rec_ge120__d = rec >= n8_120;
         ev_tec_add8 = 1'b0;
         ev_rec_add1 = 1'b0;
         ev_rec_add8 = 1'b0;
@@ -15803,7 +17388,7 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         end
         if (error) begin
             if (as_tx) begin
-                if (ack_err && p_passive__q) begin
+                if (ack_err && passive_now) begin
                     ack_defer = 1'b1;
                 end
                 else if (~tec_exempt) begin
@@ -15822,8 +17407,8 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
                 ev_rec_add8 = 1'b1;
             end
         end
-        passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
-        bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
@@ -15831,10 +17416,196 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         rx_success = ev_rx_success && ~listen_only;
     end
     
-endmodule // drcc__chan_b__bsp__rules
+endmodule // drcc__chan_b__bsp__rules__if_dominant
 
 
-module drcc__chan_b__bsp__rules__p_bus_off(d,q,clock);
+module drcc__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  tx_valid;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  tx_success;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  ev_tec_add8;
+    reg  ev_rec_add1;
+    reg  ev_rec_add8;
+    reg  ev_rx_success;
+    
+    // Update code
+    always @(*) begin
+        ev_tec_add8 = 1'b0;
+        ev_rec_add1 = 1'b0;
+        ev_rec_add8 = 1'b0;
+        ev_rx_success = 1'b0;
+        ack_defer = 1'b0;
+        ack_counted = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if ((field == Field__AckSlot) && ~is_tx && ~tx_bit && ~sampled) begin
+                ev_rx_success = 1'b1;
+            end
+            if ((field == Field__ErrorFlag) && flag_passive) begin
+                if (ack_pending && ~sampled) begin
+                    ev_tec_add8 = 1'b1;
+                    ack_counted = 1'b1;
+                end
+            end
+            if (in_delim && bc0 && ~sampled) begin
+                if (delim_first && after_error_flag && ~is_tx) begin
+                    ev_rec_add8 = 1'b1;
+                end
+                if (dom7) begin
+                    if (is_tx) begin
+                        ev_tec_add8 = 1'b1;
+                    end
+                    else begin
+                        ev_rec_add8 = 1'b1;
+                    end
+                end
+            end
+        end
+        if (error) begin
+            if (as_tx) begin
+                if (ack_err && passive_now) begin
+                    ack_defer = 1'b1;
+                end
+                else if (~tec_exempt) begin
+                    ev_tec_add8 = 1'b1;
+                end
+            end
+            else begin
+                ev_rec_add1 = 1'b1;
+            end
+        end
+        if (flag_error) begin
+            if (is_tx) begin
+                ev_tec_add8 = 1'b1;
+            end
+            else begin
+                ev_rec_add8 = 1'b1;
+            end
+        end
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
+        tec_add8 = ev_tec_add8 && ~listen_only;
+        rec_add1 = ev_rec_add1 && ~listen_only;
+        rec_add8 = ev_rec_add8 && ~listen_only;
+        tx_success = tx_valid && ~listen_only;
+        rx_success = ev_rx_success && ~listen_only;
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__if_recessive
+
+
+module drcc__chan_b__bsp__rules__la_ack_counted(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_ack_counted__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_ack_counted__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_ack_counted
+
+
+module drcc__chan_b__bsp__rules__la_ack_counted__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15847,10 +17618,10 @@ module drcc__chan_b__bsp__rules__p_bus_off(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rules__p_bus_off
+endmodule // drcc__chan_b__bsp__rules__la_ack_counted__dominant_q
 
 
-module drcc__chan_b__bsp__rules__p_passive(d,q,clock);
+module drcc__chan_b__bsp__rules__la_ack_counted__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15863,10 +17634,59 @@ module drcc__chan_b__bsp__rules__p_passive(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rules__p_passive
+endmodule // drcc__chan_b__bsp__rules__la_ack_counted__recessive_q
 
 
-module drcc__chan_b__bsp__rules__p_rec_ge120(d,q,clock);
+module drcc__chan_b__bsp__rules__la_ack_defer(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_ack_defer__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_ack_defer__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_ack_defer
+
+
+module drcc__chan_b__bsp__rules__la_ack_defer__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15879,10 +17699,10 @@ module drcc__chan_b__bsp__rules__p_rec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rules__p_rec_ge120
+endmodule // drcc__chan_b__bsp__rules__la_ack_defer__dominant_q
 
 
-module drcc__chan_b__bsp__rules__p_rec_ge127(d,q,clock);
+module drcc__chan_b__bsp__rules__la_ack_defer__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15895,10 +17715,59 @@ module drcc__chan_b__bsp__rules__p_rec_ge127(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rules__p_rec_ge127
+endmodule // drcc__chan_b__bsp__rules__la_ack_defer__recessive_q
 
 
-module drcc__chan_b__bsp__rules__p_tec_ge120(d,q,clock);
+module drcc__chan_b__bsp__rules__la_bus_off_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_bus_off_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_bus_off_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_bus_off_after
+
+
+module drcc__chan_b__bsp__rules__la_bus_off_after__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15911,10 +17780,10 @@ module drcc__chan_b__bsp__rules__p_tec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rules__p_tec_ge120
+endmodule // drcc__chan_b__bsp__rules__la_bus_off_after__dominant_q
 
 
-module drcc__chan_b__bsp__rules__p_tec_ge248(d,q,clock);
+module drcc__chan_b__bsp__rules__la_bus_off_after__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15927,7 +17796,412 @@ module drcc__chan_b__bsp__rules__p_tec_ge248(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__rules__p_tec_ge248
+endmodule // drcc__chan_b__bsp__rules__la_bus_off_after__recessive_q
+
+
+module drcc__chan_b__bsp__rules__la_passive_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_passive_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_passive_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_passive_after
+
+
+module drcc__chan_b__bsp__rules__la_passive_after__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_passive_after__dominant_q
+
+
+module drcc__chan_b__bsp__rules__la_passive_after__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_passive_after__recessive_q
+
+
+module drcc__chan_b__bsp__rules__la_rec_add1(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_rec_add1__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_rec_add1__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_rec_add1
+
+
+module drcc__chan_b__bsp__rules__la_rec_add1__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_rec_add1__dominant_q
+
+
+module drcc__chan_b__bsp__rules__la_rec_add1__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_rec_add1__recessive_q
+
+
+module drcc__chan_b__bsp__rules__la_rec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_rec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_rec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_rec_add8
+
+
+module drcc__chan_b__bsp__rules__la_rec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_rec_add8__dominant_q
+
+
+module drcc__chan_b__bsp__rules__la_rec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_rec_add8__recessive_q
+
+
+module drcc__chan_b__bsp__rules__la_rx_success(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_rx_success__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_rx_success__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_rx_success
+
+
+module drcc__chan_b__bsp__rules__la_rx_success__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_rx_success__dominant_q
+
+
+module drcc__chan_b__bsp__rules__la_rx_success__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_rx_success__recessive_q
+
+
+module drcc__chan_b__bsp__rules__la_tec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__rules__la_tec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__rules__la_tec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__rules__la_tec_add8
+
+
+module drcc__chan_b__bsp__rules__la_tec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_tec_add8__dominant_q
+
+
+module drcc__chan_b__bsp__rules__la_tec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__rules__la_tec_add8__recessive_q
 
 
 module drcc__chan_b__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);

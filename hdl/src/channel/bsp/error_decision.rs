@@ -79,6 +79,27 @@ pub struct ErrorDecision {
     pub lost: Signal<Out, Bit>,
     /// 12.1.4.2 rule c exception 2: the stuff error needs no TEC increment.
     pub tec_exempt: Signal<Out, Bit>,
+    // the checks for either level, unregistered, for the rules' lookahead
+    /// `error` if the next sample point reads dominant (before the register).
+    pub dom_error: Signal<Out, Bit>,
+    /// `flag_error` if the next sample point reads dominant (before the register).
+    pub dom_flag_error: Signal<Out, Bit>,
+    /// `ack_err` if the next sample point reads dominant (before the register).
+    pub dom_ack_err: Signal<Out, Bit>,
+    /// `tec_exempt` if the next sample point reads dominant (before the register).
+    pub dom_tec_exempt: Signal<Out, Bit>,
+    /// `sof_error` if the next sample point reads dominant (before the register).
+    pub dom_sof_error: Signal<Out, Bit>,
+    /// `error` if the next sample point reads recessive (before the register).
+    pub rec_error: Signal<Out, Bit>,
+    /// `flag_error` if the next sample point reads recessive (before the register).
+    pub rec_flag_error: Signal<Out, Bit>,
+    /// `ack_err` if the next sample point reads recessive (before the register).
+    pub rec_ack_err: Signal<Out, Bit>,
+    /// `tec_exempt` if the next sample point reads recessive (before the register).
+    pub rec_tec_exempt: Signal<Out, Bit>,
+    /// `sof_error` if the next sample point reads recessive (before the register).
+    pub rec_sof_error: Signal<Out, Bit>,
     // the checks for either bus level, and the registered decisions
     if_dominant: ErrorDetection,
     if_recessive: ErrorDetection,
@@ -137,6 +158,17 @@ impl Logic for ErrorDecision {
         self.if_recessive.listen_only.next = self.listen_only.val();
         self.if_dominant.ack_check_off.next = self.ack_check_off.val();
         self.if_recessive.ack_check_off.next = self.ack_check_off.val();
+        // The unregistered checks for the rules evaluated one clock ahead.
+        self.dom_error.next = self.if_dominant.error.val();
+        self.dom_flag_error.next = self.if_dominant.flag_error.val();
+        self.dom_ack_err.next = self.if_dominant.ack_err.val();
+        self.dom_tec_exempt.next = self.if_dominant.tec_exempt.val();
+        self.dom_sof_error.next = self.if_dominant.sof_error.val();
+        self.rec_error.next = self.if_recessive.error.val();
+        self.rec_flag_error.next = self.if_recessive.flag_error.val();
+        self.rec_ack_err.next = self.if_recessive.ack_err.val();
+        self.rec_tec_exempt.next = self.if_recessive.tec_exempt.val();
+        self.rec_sof_error.next = self.if_recessive.sof_error.val();
         // The sample point picks the registered decision for the level it reads.
         self.la_error.clk.next = self.clk.val();
         self.la_error.sample.next = self.sample.val();

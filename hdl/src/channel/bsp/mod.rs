@@ -13,6 +13,7 @@ pub mod field_decode;
 pub mod frame_crc;
 pub mod protocol;
 pub mod protocol_fsm;
+pub mod rules_decision;
 pub mod rx_frame;
 pub mod sample_lookahead;
 pub mod tx_frame;

@@ -30,10 +30,10 @@ use super::bit_stuffing::BitStuffing;
 use super::error_capture::ErrorCapture;
 use super::error_decision::ErrorDecision;
 use super::fault_confinement::FaultConfinement;
-use super::fault_confinement_rules::FaultConfinementRules;
 use super::field::Field;
 use super::frame_crc::FrameCrc;
 use super::protocol_fsm::ProtocolFsm;
+use super::rules_decision::RulesDecision;
 use super::rx_frame::RxFrame;
 use super::tx_frame::TxFrame;
 use super::tx_pin::TxPin;
@@ -155,7 +155,7 @@ pub struct ProtocolController {
     tx_frame: TxFrame,
     rx_frame: RxFrame,
     detect: ErrorDecision,
-    rules: FaultConfinementRules,
+    rules: RulesDecision,
     fc: FaultConfinement,
     err_capture: ErrorCapture,
 }
@@ -312,11 +312,16 @@ impl Logic for ProtocolController {
         self.rules.ack_pending.next = self.fsm.ack_pending.val();
         self.rules.tx_valid.next = self.fsm.tx_valid.val();
         self.rules.listen_only.next = self.listen_only.val();
-        self.rules.error.next = self.detect.error.val();
-        self.rules.flag_error.next = self.detect.flag_error.val();
-        self.rules.ack_err.next = self.detect.ack_err.val();
-        self.rules.tec_exempt.next = self.detect.tec_exempt.val();
-        self.rules.as_tx.next = self.fsm.is_tx.val() || self.detect.sof_error.val();
+        self.rules.dom_error.next = self.detect.dom_error.val();
+        self.rules.dom_flag_error.next = self.detect.dom_flag_error.val();
+        self.rules.dom_ack_err.next = self.detect.dom_ack_err.val();
+        self.rules.dom_tec_exempt.next = self.detect.dom_tec_exempt.val();
+        self.rules.dom_sof_error.next = self.detect.dom_sof_error.val();
+        self.rules.rec_error.next = self.detect.rec_error.val();
+        self.rules.rec_flag_error.next = self.detect.rec_flag_error.val();
+        self.rules.rec_ack_err.next = self.detect.rec_ack_err.val();
+        self.rules.rec_tec_exempt.next = self.detect.rec_tec_exempt.val();
+        self.rules.rec_sof_error.next = self.detect.rec_sof_error.val();
         self.rules.tec.next = self.fc.tec.val();
         self.rules.rec.next = self.fc.rec.val();
         self.rules.error_passive.next = self.fc.error_passive.val();

@@ -3168,14 +3168,13 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  detect__ack_check_off;
     wire  detect__error;
     wire  detect__flag_error;
-    wire  detect__bit_err;
-    wire  detect__stuff_err;
-    wire  detect__form_err;
-    wire  detect__crc_err;
-    wire  detect__ack_err;
     wire  detect__sof_error;
     wire  detect__lost;
-    wire  detect__tec_exempt;
+    wire  detect__kind_bit;
+    wire  detect__kind_stuff;
+    wire  detect__kind_crc;
+    wire  detect__kind_form;
+    wire  detect__kind_ack;
     wire  detect__dom_error;
     wire  detect__dom_flag_error;
     wire  detect__dom_ack_err;
@@ -3244,11 +3243,11 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  err_capture__clk;
     reg  err_capture__rst;
     reg  err_capture__capture;
-    reg  err_capture__bit_err;
-    reg  err_capture__stuff_err;
-    reg  err_capture__form_err;
-    reg  err_capture__ack_err;
-    reg  err_capture__crc_err;
+    reg  err_capture__kind_bit;
+    reg  err_capture__kind_stuff;
+    reg  err_capture__kind_form;
+    reg  err_capture__kind_ack;
+    reg  err_capture__kind_crc;
     reg  err_capture__as_tx;
     reg  err_capture__arb_lost;
     reg  [4:0] err_capture__field;
@@ -3459,14 +3458,13 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .ack_check_off(detect__ack_check_off),
         .error(detect__error),
         .flag_error(detect__flag_error),
-        .bit_err(detect__bit_err),
-        .stuff_err(detect__stuff_err),
-        .form_err(detect__form_err),
-        .crc_err(detect__crc_err),
-        .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt),
+        .kind_bit(detect__kind_bit),
+        .kind_stuff(detect__kind_stuff),
+        .kind_crc(detect__kind_crc),
+        .kind_form(detect__kind_form),
+        .kind_ack(detect__kind_ack),
         .dom_error(detect__dom_error),
         .dom_flag_error(detect__dom_flag_error),
         .dom_ack_err(detect__dom_ack_err),
@@ -3541,11 +3539,11 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .clk(err_capture__clk),
         .rst(err_capture__rst),
         .capture(err_capture__capture),
-        .bit_err(err_capture__bit_err),
-        .stuff_err(err_capture__stuff_err),
-        .form_err(err_capture__form_err),
-        .ack_err(err_capture__ack_err),
-        .crc_err(err_capture__crc_err),
+        .kind_bit(err_capture__kind_bit),
+        .kind_stuff(err_capture__kind_stuff),
+        .kind_form(err_capture__kind_form),
+        .kind_ack(err_capture__kind_ack),
+        .kind_crc(err_capture__kind_crc),
         .as_tx(err_capture__as_tx),
         .arb_lost(err_capture__arb_lost),
         .field(err_capture__field),
@@ -3723,11 +3721,11 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
-        err_capture__bit_err = detect__bit_err;
-        err_capture__stuff_err = detect__stuff_err;
-        err_capture__form_err = detect__form_err;
-        err_capture__ack_err = detect__ack_err;
-        err_capture__crc_err = detect__crc_err;
+        err_capture__kind_bit = detect__kind_bit;
+        err_capture__kind_stuff = detect__kind_stuff;
+        err_capture__kind_form = detect__kind_form;
+        err_capture__kind_ack = detect__kind_ack;
+        err_capture__kind_crc = detect__kind_crc;
         err_capture__as_tx = fsm__is_tx || detect__sof_error;
         err_capture__arb_lost = detect__lost;
         err_capture__field = fsm__field;
@@ -3764,7 +3762,7 @@ module drcc__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
 endmodule // drcc__chan_a__bsp
 
 
-module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
+module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
     
     // Module arguments
     input wire  clk;
@@ -3789,14 +3787,13 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     input wire  ack_check_off;
     output reg  error;
     output reg  flag_error;
-    output reg  bit_err;
-    output reg  stuff_err;
-    output reg  form_err;
-    output reg  crc_err;
-    output reg  ack_err;
     output reg  sof_error;
     output reg  lost;
-    output reg  tec_exempt;
+    output reg  kind_bit;
+    output reg  kind_stuff;
+    output reg  kind_crc;
+    output reg  kind_form;
+    output reg  kind_ack;
     output reg  dom_error;
     output reg  dom_flag_error;
     output reg  dom_ack_err;
@@ -3904,36 +3901,6 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     reg  la_flag_error__if_dominant;
     reg  la_flag_error__if_recessive;
     wire  la_flag_error__decision;
-    reg  la_bit_err__clk;
-    reg  la_bit_err__sample;
-    reg  la_bit_err__sampled;
-    reg  la_bit_err__if_dominant;
-    reg  la_bit_err__if_recessive;
-    wire  la_bit_err__decision;
-    reg  la_stuff_err__clk;
-    reg  la_stuff_err__sample;
-    reg  la_stuff_err__sampled;
-    reg  la_stuff_err__if_dominant;
-    reg  la_stuff_err__if_recessive;
-    wire  la_stuff_err__decision;
-    reg  la_form_err__clk;
-    reg  la_form_err__sample;
-    reg  la_form_err__sampled;
-    reg  la_form_err__if_dominant;
-    reg  la_form_err__if_recessive;
-    wire  la_form_err__decision;
-    reg  la_crc_err__clk;
-    reg  la_crc_err__sample;
-    reg  la_crc_err__sampled;
-    reg  la_crc_err__if_dominant;
-    reg  la_crc_err__if_recessive;
-    wire  la_crc_err__decision;
-    reg  la_ack_err__clk;
-    reg  la_ack_err__sample;
-    reg  la_ack_err__sampled;
-    reg  la_ack_err__if_dominant;
-    reg  la_ack_err__if_recessive;
-    wire  la_ack_err__decision;
     reg  la_sof_error__clk;
     reg  la_sof_error__sample;
     reg  la_sof_error__sampled;
@@ -3946,12 +3913,50 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     reg  la_lost__if_dominant;
     reg  la_lost__if_recessive;
     wire  la_lost__decision;
-    reg  la_tec_exempt__clk;
-    reg  la_tec_exempt__sample;
-    reg  la_tec_exempt__sampled;
-    reg  la_tec_exempt__if_dominant;
-    reg  la_tec_exempt__if_recessive;
-    wire  la_tec_exempt__decision;
+    reg  la_kind_bit__clk;
+    reg  la_kind_bit__sample;
+    reg  la_kind_bit__sampled;
+    reg  la_kind_bit__if_dominant;
+    reg  la_kind_bit__if_recessive;
+    wire  la_kind_bit__decision;
+    reg  la_kind_stuff__clk;
+    reg  la_kind_stuff__sample;
+    reg  la_kind_stuff__sampled;
+    reg  la_kind_stuff__if_dominant;
+    reg  la_kind_stuff__if_recessive;
+    wire  la_kind_stuff__decision;
+    reg  la_kind_crc__clk;
+    reg  la_kind_crc__sample;
+    reg  la_kind_crc__sampled;
+    reg  la_kind_crc__if_dominant;
+    reg  la_kind_crc__if_recessive;
+    wire  la_kind_crc__decision;
+    reg  la_kind_form__clk;
+    reg  la_kind_form__sample;
+    reg  la_kind_form__sampled;
+    reg  la_kind_form__if_dominant;
+    reg  la_kind_form__if_recessive;
+    wire  la_kind_form__decision;
+    reg  la_kind_ack__clk;
+    reg  la_kind_ack__sample;
+    reg  la_kind_ack__sampled;
+    reg  la_kind_ack__if_dominant;
+    reg  la_kind_ack__if_recessive;
+    wire  la_kind_ack__decision;
+    
+    // Local signals
+    reg  dom_kind_bit;
+    reg  dom_kind_stuff;
+    reg  dom_kind_crc;
+    reg  dom_kind_form;
+    reg  dom_kind_ack;
+    reg  rec_kind_bit;
+    reg  rec_kind_stuff;
+    reg  rec_kind_crc;
+    reg  rec_kind_form;
+    reg  rec_kind_ack;
+    reg  dom_capture;
+    reg  rec_capture;
     
     // Sub module instances
     drcc__chan_a__bsp__detect__if_dominant if_dominant(
@@ -4032,46 +4037,6 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         .if_recessive(la_flag_error__if_recessive),
         .decision(la_flag_error__decision)
     );
-    drcc__chan_a__bsp__detect__la_bit_err la_bit_err(
-        .clk(la_bit_err__clk),
-        .sample(la_bit_err__sample),
-        .sampled(la_bit_err__sampled),
-        .if_dominant(la_bit_err__if_dominant),
-        .if_recessive(la_bit_err__if_recessive),
-        .decision(la_bit_err__decision)
-    );
-    drcc__chan_a__bsp__detect__la_stuff_err la_stuff_err(
-        .clk(la_stuff_err__clk),
-        .sample(la_stuff_err__sample),
-        .sampled(la_stuff_err__sampled),
-        .if_dominant(la_stuff_err__if_dominant),
-        .if_recessive(la_stuff_err__if_recessive),
-        .decision(la_stuff_err__decision)
-    );
-    drcc__chan_a__bsp__detect__la_form_err la_form_err(
-        .clk(la_form_err__clk),
-        .sample(la_form_err__sample),
-        .sampled(la_form_err__sampled),
-        .if_dominant(la_form_err__if_dominant),
-        .if_recessive(la_form_err__if_recessive),
-        .decision(la_form_err__decision)
-    );
-    drcc__chan_a__bsp__detect__la_crc_err la_crc_err(
-        .clk(la_crc_err__clk),
-        .sample(la_crc_err__sample),
-        .sampled(la_crc_err__sampled),
-        .if_dominant(la_crc_err__if_dominant),
-        .if_recessive(la_crc_err__if_recessive),
-        .decision(la_crc_err__decision)
-    );
-    drcc__chan_a__bsp__detect__la_ack_err la_ack_err(
-        .clk(la_ack_err__clk),
-        .sample(la_ack_err__sample),
-        .sampled(la_ack_err__sampled),
-        .if_dominant(la_ack_err__if_dominant),
-        .if_recessive(la_ack_err__if_recessive),
-        .decision(la_ack_err__decision)
-    );
     drcc__chan_a__bsp__detect__la_sof_error la_sof_error(
         .clk(la_sof_error__clk),
         .sample(la_sof_error__sample),
@@ -4088,13 +4053,45 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         .if_recessive(la_lost__if_recessive),
         .decision(la_lost__decision)
     );
-    drcc__chan_a__bsp__detect__la_tec_exempt la_tec_exempt(
-        .clk(la_tec_exempt__clk),
-        .sample(la_tec_exempt__sample),
-        .sampled(la_tec_exempt__sampled),
-        .if_dominant(la_tec_exempt__if_dominant),
-        .if_recessive(la_tec_exempt__if_recessive),
-        .decision(la_tec_exempt__decision)
+    drcc__chan_a__bsp__detect__la_kind_bit la_kind_bit(
+        .clk(la_kind_bit__clk),
+        .sample(la_kind_bit__sample),
+        .sampled(la_kind_bit__sampled),
+        .if_dominant(la_kind_bit__if_dominant),
+        .if_recessive(la_kind_bit__if_recessive),
+        .decision(la_kind_bit__decision)
+    );
+    drcc__chan_a__bsp__detect__la_kind_stuff la_kind_stuff(
+        .clk(la_kind_stuff__clk),
+        .sample(la_kind_stuff__sample),
+        .sampled(la_kind_stuff__sampled),
+        .if_dominant(la_kind_stuff__if_dominant),
+        .if_recessive(la_kind_stuff__if_recessive),
+        .decision(la_kind_stuff__decision)
+    );
+    drcc__chan_a__bsp__detect__la_kind_crc la_kind_crc(
+        .clk(la_kind_crc__clk),
+        .sample(la_kind_crc__sample),
+        .sampled(la_kind_crc__sampled),
+        .if_dominant(la_kind_crc__if_dominant),
+        .if_recessive(la_kind_crc__if_recessive),
+        .decision(la_kind_crc__decision)
+    );
+    drcc__chan_a__bsp__detect__la_kind_form la_kind_form(
+        .clk(la_kind_form__clk),
+        .sample(la_kind_form__sample),
+        .sampled(la_kind_form__sampled),
+        .if_dominant(la_kind_form__if_dominant),
+        .if_recessive(la_kind_form__if_recessive),
+        .decision(la_kind_form__decision)
+    );
+    drcc__chan_a__bsp__detect__la_kind_ack la_kind_ack(
+        .clk(la_kind_ack__clk),
+        .sample(la_kind_ack__sample),
+        .sampled(la_kind_ack__sampled),
+        .if_dominant(la_kind_ack__if_dominant),
+        .if_recessive(la_kind_ack__if_recessive),
+        .decision(la_kind_ack__decision)
     );
     
     // Update code
@@ -4159,36 +4156,6 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         la_flag_error__if_dominant = if_dominant__flag_error;
         la_flag_error__if_recessive = if_recessive__flag_error;
         flag_error = la_flag_error__decision;
-        la_bit_err__clk = clk;
-        la_bit_err__sample = sample;
-        la_bit_err__sampled = sampled;
-        la_bit_err__if_dominant = if_dominant__bit_err;
-        la_bit_err__if_recessive = if_recessive__bit_err;
-        bit_err = la_bit_err__decision;
-        la_stuff_err__clk = clk;
-        la_stuff_err__sample = sample;
-        la_stuff_err__sampled = sampled;
-        la_stuff_err__if_dominant = if_dominant__stuff_err;
-        la_stuff_err__if_recessive = if_recessive__stuff_err;
-        stuff_err = la_stuff_err__decision;
-        la_form_err__clk = clk;
-        la_form_err__sample = sample;
-        la_form_err__sampled = sampled;
-        la_form_err__if_dominant = if_dominant__form_err;
-        la_form_err__if_recessive = if_recessive__form_err;
-        form_err = la_form_err__decision;
-        la_crc_err__clk = clk;
-        la_crc_err__sample = sample;
-        la_crc_err__sampled = sampled;
-        la_crc_err__if_dominant = if_dominant__crc_err;
-        la_crc_err__if_recessive = if_recessive__crc_err;
-        crc_err = la_crc_err__decision;
-        la_ack_err__clk = clk;
-        la_ack_err__sample = sample;
-        la_ack_err__sampled = sampled;
-        la_ack_err__if_dominant = if_dominant__ack_err;
-        la_ack_err__if_recessive = if_recessive__ack_err;
-        ack_err = la_ack_err__decision;
         la_sof_error__clk = clk;
         la_sof_error__sample = sample;
         la_sof_error__sampled = sampled;
@@ -4201,12 +4168,48 @@ module drcc__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         la_lost__if_dominant = if_dominant__lost;
         la_lost__if_recessive = if_recessive__lost;
         lost = la_lost__decision;
-        la_tec_exempt__clk = clk;
-        la_tec_exempt__sample = sample;
-        la_tec_exempt__sampled = sampled;
-        la_tec_exempt__if_dominant = if_dominant__tec_exempt;
-        la_tec_exempt__if_recessive = if_recessive__tec_exempt;
-        tec_exempt = la_tec_exempt__decision;
+        dom_capture = if_dominant__error || if_dominant__flag_error;
+        dom_kind_bit = dom_capture && if_dominant__bit_err;
+        dom_kind_stuff = dom_capture && ~if_dominant__bit_err && if_dominant__stuff_err;
+        dom_kind_form = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && if_dominant__form_err;
+        dom_kind_ack = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && if_dominant__ack_err;
+        dom_kind_crc = if_dominant__crc_err && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && ~if_dominant__ack_err;
+        rec_capture = if_recessive__error || if_recessive__flag_error;
+        rec_kind_bit = rec_capture && if_recessive__bit_err;
+        rec_kind_stuff = rec_capture && ~if_recessive__bit_err && if_recessive__stuff_err;
+        rec_kind_form = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && if_recessive__form_err;
+        rec_kind_ack = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && if_recessive__ack_err;
+        rec_kind_crc = if_recessive__crc_err && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && ~if_recessive__ack_err;
+        la_kind_bit__clk = clk;
+        la_kind_bit__sample = sample;
+        la_kind_bit__sampled = sampled;
+        la_kind_bit__if_dominant = dom_kind_bit;
+        la_kind_bit__if_recessive = rec_kind_bit;
+        kind_bit = la_kind_bit__decision;
+        la_kind_stuff__clk = clk;
+        la_kind_stuff__sample = sample;
+        la_kind_stuff__sampled = sampled;
+        la_kind_stuff__if_dominant = dom_kind_stuff;
+        la_kind_stuff__if_recessive = rec_kind_stuff;
+        kind_stuff = la_kind_stuff__decision;
+        la_kind_crc__clk = clk;
+        la_kind_crc__sample = sample;
+        la_kind_crc__sampled = sampled;
+        la_kind_crc__if_dominant = dom_kind_crc;
+        la_kind_crc__if_recessive = rec_kind_crc;
+        kind_crc = la_kind_crc__decision;
+        la_kind_form__clk = clk;
+        la_kind_form__sample = sample;
+        la_kind_form__sampled = sampled;
+        la_kind_form__if_dominant = dom_kind_form;
+        la_kind_form__if_recessive = rec_kind_form;
+        kind_form = la_kind_form__decision;
+        la_kind_ack__clk = clk;
+        la_kind_ack__sample = sample;
+        la_kind_ack__sampled = sampled;
+        la_kind_ack__if_dominant = dom_kind_ack;
+        la_kind_ack__if_recessive = rec_kind_ack;
+        kind_ack = la_kind_ack__decision;
     end
     
 endmodule // drcc__chan_a__bsp__detect
@@ -4518,249 +4521,6 @@ module drcc__chan_a__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_bit
 endmodule // drcc__chan_a__bsp__detect__if_recessive
 
 
-module drcc__chan_a__bsp__detect__la_ack_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_a__bsp__detect__la_ack_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_a__bsp__detect__la_ack_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_a__bsp__detect__la_ack_err
-
-
-module drcc__chan_a__bsp__detect__la_ack_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_ack_err__dominant_q
-
-
-module drcc__chan_a__bsp__detect__la_ack_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_ack_err__recessive_q
-
-
-module drcc__chan_a__bsp__detect__la_bit_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_a__bsp__detect__la_bit_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_a__bsp__detect__la_bit_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_a__bsp__detect__la_bit_err
-
-
-module drcc__chan_a__bsp__detect__la_bit_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_bit_err__dominant_q
-
-
-module drcc__chan_a__bsp__detect__la_bit_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_bit_err__recessive_q
-
-
-module drcc__chan_a__bsp__detect__la_crc_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_a__bsp__detect__la_crc_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_a__bsp__detect__la_crc_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_a__bsp__detect__la_crc_err
-
-
-module drcc__chan_a__bsp__detect__la_crc_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_crc_err__dominant_q
-
-
-module drcc__chan_a__bsp__detect__la_crc_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_crc_err__recessive_q
-
-
 module drcc__chan_a__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
@@ -4923,7 +4683,7 @@ module drcc__chan_a__bsp__detect__la_flag_error__recessive_q(d,q,clock);
 endmodule // drcc__chan_a__bsp__detect__la_flag_error__recessive_q
 
 
-module drcc__chan_a__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+module drcc__chan_a__bsp__detect__la_kind_ack(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
     input wire  clk;
@@ -4942,12 +4702,12 @@ module drcc__chan_a__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_
     reg  recessive_q__clock;
     
     // Sub module instances
-    drcc__chan_a__bsp__detect__la_form_err__dominant_q dominant_q(
+    drcc__chan_a__bsp__detect__la_kind_ack__dominant_q dominant_q(
         .d(dominant_q__d),
         .q(dominant_q__q),
         .clock(dominant_q__clock)
     );
-    drcc__chan_a__bsp__detect__la_form_err__recessive_q recessive_q(
+    drcc__chan_a__bsp__detect__la_kind_ack__recessive_q recessive_q(
         .d(recessive_q__d),
         .q(recessive_q__q),
         .clock(recessive_q__clock)
@@ -4969,10 +4729,10 @@ module drcc__chan_a__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_
         end
     end
     
-endmodule // drcc__chan_a__bsp__detect__la_form_err
+endmodule // drcc__chan_a__bsp__detect__la_kind_ack
 
 
-module drcc__chan_a__bsp__detect__la_form_err__dominant_q(d,q,clock);
+module drcc__chan_a__bsp__detect__la_kind_ack__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4985,10 +4745,10 @@ module drcc__chan_a__bsp__detect__la_form_err__dominant_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__detect__la_form_err__dominant_q
+endmodule // drcc__chan_a__bsp__detect__la_kind_ack__dominant_q
 
 
-module drcc__chan_a__bsp__detect__la_form_err__recessive_q(d,q,clock);
+module drcc__chan_a__bsp__detect__la_kind_ack__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5001,7 +4761,331 @@ module drcc__chan_a__bsp__detect__la_form_err__recessive_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_a__bsp__detect__la_form_err__recessive_q
+endmodule // drcc__chan_a__bsp__detect__la_kind_ack__recessive_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_bit(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__detect__la_kind_bit__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__detect__la_kind_bit__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__detect__la_kind_bit
+
+
+module drcc__chan_a__bsp__detect__la_kind_bit__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_bit__dominant_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_bit__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_bit__recessive_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_crc(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__detect__la_kind_crc__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__detect__la_kind_crc__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__detect__la_kind_crc
+
+
+module drcc__chan_a__bsp__detect__la_kind_crc__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_crc__dominant_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_crc__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_crc__recessive_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_form(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__detect__la_kind_form__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__detect__la_kind_form__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__detect__la_kind_form
+
+
+module drcc__chan_a__bsp__detect__la_kind_form__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_form__dominant_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_form__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_form__recessive_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_stuff(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_a__bsp__detect__la_kind_stuff__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_a__bsp__detect__la_kind_stuff__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_a__bsp__detect__la_kind_stuff
+
+
+module drcc__chan_a__bsp__detect__la_kind_stuff__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_stuff__dominant_q
+
+
+module drcc__chan_a__bsp__detect__la_kind_stuff__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_a__bsp__detect__la_kind_stuff__recessive_q
 
 
 module drcc__chan_a__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
@@ -5166,179 +5250,17 @@ module drcc__chan_a__bsp__detect__la_sof_error__recessive_q(d,q,clock);
 endmodule // drcc__chan_a__bsp__detect__la_sof_error__recessive_q
 
 
-module drcc__chan_a__bsp__detect__la_stuff_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_a__bsp__detect__la_stuff_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_a__bsp__detect__la_stuff_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_a__bsp__detect__la_stuff_err
-
-
-module drcc__chan_a__bsp__detect__la_stuff_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_stuff_err__dominant_q
-
-
-module drcc__chan_a__bsp__detect__la_stuff_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_stuff_err__recessive_q
-
-
-module drcc__chan_a__bsp__detect__la_tec_exempt(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_a__bsp__detect__la_tec_exempt__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_a__bsp__detect__la_tec_exempt__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_a__bsp__detect__la_tec_exempt
-
-
-module drcc__chan_a__bsp__detect__la_tec_exempt__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_tec_exempt__dominant_q
-
-
-module drcc__chan_a__bsp__detect__la_tec_exempt__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_a__bsp__detect__la_tec_exempt__recessive_q
-
-
-module drcc__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc__chan_a__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  capture;
-    input wire  bit_err;
-    input wire  stuff_err;
-    input wire  form_err;
-    input wire  ack_err;
-    input wire  crc_err;
+    input wire  kind_bit;
+    input wire  kind_stuff;
+    input wire  kind_form;
+    input wire  kind_ack;
+    input wire  kind_crc;
     input wire  as_tx;
     input wire  arb_lost;
     input wire  [4:0] field;
@@ -5594,20 +5516,17 @@ module drcc__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err
         p_cnt_form_max__d = cnt_form_q__q == max8;
         p_cnt_ack_max__d = cnt_ack_q__q == max8;
         kind = k_crc;
-        if (bit_err) begin
+        if (kind_bit) begin
             kind = k_bit;
         end
-        else if (stuff_err) begin
+        else if (kind_stuff) begin
             kind = k_stuff;
         end
-        else if (form_err) begin
+        else if (kind_form) begin
             kind = k_form;
         end
-        else if (ack_err) begin
+        else if (kind_ack) begin
             kind = k_ack;
-        end
-        else if (crc_err) begin
-            kind = k_crc;
         end
         err_valid_q__d = 1'b0;
         if (capture) begin
@@ -5615,21 +5534,21 @@ module drcc__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err
             err_kind_q__d = kind;
             err_field_q__d = field;
             err_tx_q__d = as_tx;
-            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
-                cnt_bit_q__d = cnt_bit_q__q + one8;
-            end
-            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
-                cnt_stuff_q__d = cnt_stuff_q__q + one8;
-            end
-            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
-                cnt_crc_q__d = cnt_crc_q__q + one8;
-            end
-            if ((kind == k_form) && ~p_cnt_form_max__q) begin
-                cnt_form_q__d = cnt_form_q__q + one8;
-            end
-            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
-                cnt_ack_q__d = cnt_ack_q__q + one8;
-            end
+        end
+        if (kind_bit && ~p_cnt_bit_max__q) begin
+            cnt_bit_q__d = cnt_bit_q__q + one8;
+        end
+        if (kind_stuff && ~p_cnt_stuff_max__q) begin
+            cnt_stuff_q__d = cnt_stuff_q__q + one8;
+        end
+        if (kind_crc && ~p_cnt_crc_max__q) begin
+            cnt_crc_q__d = cnt_crc_q__q + one8;
+        end
+        if (kind_form && ~p_cnt_form_max__q) begin
+            cnt_form_q__d = cnt_form_q__q + one8;
+        end
+        if (kind_ack && ~p_cnt_ack_max__q) begin
+            cnt_ack_q__d = cnt_ack_q__q + one8;
         end
         if (arb_lost) begin
             alc_q__d = p_alc__q;
@@ -7887,7 +7806,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     reg  if_dominant__delim_first;
     reg  if_dominant__dom7;
     reg  if_dominant__ack_pending;
-    reg  if_dominant__tx_valid;
     reg  if_dominant__listen_only;
     reg  if_dominant__error;
     reg  if_dominant__flag_error;
@@ -7903,7 +7821,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     wire  if_dominant__tec_add8;
     wire  if_dominant__rec_add1;
     wire  if_dominant__rec_add8;
-    wire  if_dominant__tx_success;
     wire  if_dominant__rx_success;
     wire  if_dominant__passive_after;
     wire  if_dominant__bus_off_after;
@@ -7922,7 +7839,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     reg  if_recessive__delim_first;
     reg  if_recessive__dom7;
     reg  if_recessive__ack_pending;
-    reg  if_recessive__tx_valid;
     reg  if_recessive__listen_only;
     reg  if_recessive__error;
     reg  if_recessive__flag_error;
@@ -7938,7 +7854,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     wire  if_recessive__tec_add8;
     wire  if_recessive__rec_add1;
     wire  if_recessive__rec_add8;
-    wire  if_recessive__tx_success;
     wire  if_recessive__rx_success;
     wire  if_recessive__passive_after;
     wire  if_recessive__bus_off_after;
@@ -8014,7 +7929,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .delim_first(if_dominant__delim_first),
         .dom7(if_dominant__dom7),
         .ack_pending(if_dominant__ack_pending),
-        .tx_valid(if_dominant__tx_valid),
         .listen_only(if_dominant__listen_only),
         .error(if_dominant__error),
         .flag_error(if_dominant__flag_error),
@@ -8030,7 +7944,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .tec_add8(if_dominant__tec_add8),
         .rec_add1(if_dominant__rec_add1),
         .rec_add8(if_dominant__rec_add8),
-        .tx_success(if_dominant__tx_success),
         .rx_success(if_dominant__rx_success),
         .passive_after(if_dominant__passive_after),
         .bus_off_after(if_dominant__bus_off_after),
@@ -8051,7 +7964,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .delim_first(if_recessive__delim_first),
         .dom7(if_recessive__dom7),
         .ack_pending(if_recessive__ack_pending),
-        .tx_valid(if_recessive__tx_valid),
         .listen_only(if_recessive__listen_only),
         .error(if_recessive__error),
         .flag_error(if_recessive__flag_error),
@@ -8067,7 +7979,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .tec_add8(if_recessive__tec_add8),
         .rec_add1(if_recessive__rec_add1),
         .rec_add8(if_recessive__rec_add8),
-        .tx_success(if_recessive__tx_success),
         .rx_success(if_recessive__rx_success),
         .passive_after(if_recessive__passive_after),
         .bus_off_after(if_recessive__bus_off_after),
@@ -8159,7 +8070,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         if_dominant__dom7 = dom7;
         if_dominant__ack_pending = ack_pending;
         if_dominant__listen_only = listen_only;
-        if_dominant__tx_valid = 1'b0;
         if_dominant__error = dom_error;
         if_dominant__flag_error = dom_flag_error;
         if_dominant__ack_err = dom_ack_err;
@@ -8185,7 +8095,6 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         if_recessive__dom7 = dom7;
         if_recessive__ack_pending = ack_pending;
         if_recessive__listen_only = listen_only;
-        if_recessive__tx_valid = 1'b0;
         if_recessive__error = rec_error;
         if_recessive__flag_error = rec_flag_error;
         if_recessive__ack_err = rec_ack_err;
@@ -8251,7 +8160,7 @@ module drcc__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
 endmodule // drcc__chan_a__bsp__rules
 
 
-module drcc__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -8267,7 +8176,6 @@ module drcc__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,i
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -8283,7 +8191,6 @@ module drcc__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,i
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -8381,14 +8288,13 @@ module drcc__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,i
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
 endmodule // drcc__chan_a__bsp__rules__if_dominant
 
 
-module drcc__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -8404,7 +8310,6 @@ module drcc__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -8420,7 +8325,6 @@ module drcc__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -8518,7 +8422,6 @@ module drcc__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
@@ -12199,14 +12102,13 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  detect__ack_check_off;
     wire  detect__error;
     wire  detect__flag_error;
-    wire  detect__bit_err;
-    wire  detect__stuff_err;
-    wire  detect__form_err;
-    wire  detect__crc_err;
-    wire  detect__ack_err;
     wire  detect__sof_error;
     wire  detect__lost;
-    wire  detect__tec_exempt;
+    wire  detect__kind_bit;
+    wire  detect__kind_stuff;
+    wire  detect__kind_crc;
+    wire  detect__kind_form;
+    wire  detect__kind_ack;
     wire  detect__dom_error;
     wire  detect__dom_flag_error;
     wire  detect__dom_ack_err;
@@ -12275,11 +12177,11 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
     reg  err_capture__clk;
     reg  err_capture__rst;
     reg  err_capture__capture;
-    reg  err_capture__bit_err;
-    reg  err_capture__stuff_err;
-    reg  err_capture__form_err;
-    reg  err_capture__ack_err;
-    reg  err_capture__crc_err;
+    reg  err_capture__kind_bit;
+    reg  err_capture__kind_stuff;
+    reg  err_capture__kind_form;
+    reg  err_capture__kind_ack;
+    reg  err_capture__kind_crc;
     reg  err_capture__as_tx;
     reg  err_capture__arb_lost;
     reg  [4:0] err_capture__field;
@@ -12490,14 +12392,13 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .ack_check_off(detect__ack_check_off),
         .error(detect__error),
         .flag_error(detect__flag_error),
-        .bit_err(detect__bit_err),
-        .stuff_err(detect__stuff_err),
-        .form_err(detect__form_err),
-        .crc_err(detect__crc_err),
-        .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt),
+        .kind_bit(detect__kind_bit),
+        .kind_stuff(detect__kind_stuff),
+        .kind_crc(detect__kind_crc),
+        .kind_form(detect__kind_form),
+        .kind_ack(detect__kind_ack),
         .dom_error(detect__dom_error),
         .dom_flag_error(detect__dom_flag_error),
         .dom_ack_err(detect__dom_ack_err),
@@ -12572,11 +12473,11 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         .clk(err_capture__clk),
         .rst(err_capture__rst),
         .capture(err_capture__capture),
-        .bit_err(err_capture__bit_err),
-        .stuff_err(err_capture__stuff_err),
-        .form_err(err_capture__form_err),
-        .ack_err(err_capture__ack_err),
-        .crc_err(err_capture__crc_err),
+        .kind_bit(err_capture__kind_bit),
+        .kind_stuff(err_capture__kind_stuff),
+        .kind_form(err_capture__kind_form),
+        .kind_ack(err_capture__kind_ack),
+        .kind_crc(err_capture__kind_crc),
         .as_tx(err_capture__as_tx),
         .arb_lost(err_capture__arb_lost),
         .field(err_capture__field),
@@ -12754,11 +12655,11 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
         fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
-        err_capture__bit_err = detect__bit_err;
-        err_capture__stuff_err = detect__stuff_err;
-        err_capture__form_err = detect__form_err;
-        err_capture__ack_err = detect__ack_err;
-        err_capture__crc_err = detect__crc_err;
+        err_capture__kind_bit = detect__kind_bit;
+        err_capture__kind_stuff = detect__kind_stuff;
+        err_capture__kind_form = detect__kind_form;
+        err_capture__kind_ack = detect__kind_ack;
+        err_capture__kind_crc = detect__kind_crc;
         err_capture__as_tx = fsm__is_tx || detect__sof_error;
         err_capture__arb_lost = detect__lost;
         err_capture__field = fsm__field;
@@ -12795,7 +12696,7 @@ module drcc__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_en
 endmodule // drcc__chan_b__bsp
 
 
-module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
+module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
     
     // Module arguments
     input wire  clk;
@@ -12820,14 +12721,13 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     input wire  ack_check_off;
     output reg  error;
     output reg  flag_error;
-    output reg  bit_err;
-    output reg  stuff_err;
-    output reg  form_err;
-    output reg  crc_err;
-    output reg  ack_err;
     output reg  sof_error;
     output reg  lost;
-    output reg  tec_exempt;
+    output reg  kind_bit;
+    output reg  kind_stuff;
+    output reg  kind_crc;
+    output reg  kind_form;
+    output reg  kind_ack;
     output reg  dom_error;
     output reg  dom_flag_error;
     output reg  dom_ack_err;
@@ -12935,36 +12835,6 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     reg  la_flag_error__if_dominant;
     reg  la_flag_error__if_recessive;
     wire  la_flag_error__decision;
-    reg  la_bit_err__clk;
-    reg  la_bit_err__sample;
-    reg  la_bit_err__sampled;
-    reg  la_bit_err__if_dominant;
-    reg  la_bit_err__if_recessive;
-    wire  la_bit_err__decision;
-    reg  la_stuff_err__clk;
-    reg  la_stuff_err__sample;
-    reg  la_stuff_err__sampled;
-    reg  la_stuff_err__if_dominant;
-    reg  la_stuff_err__if_recessive;
-    wire  la_stuff_err__decision;
-    reg  la_form_err__clk;
-    reg  la_form_err__sample;
-    reg  la_form_err__sampled;
-    reg  la_form_err__if_dominant;
-    reg  la_form_err__if_recessive;
-    wire  la_form_err__decision;
-    reg  la_crc_err__clk;
-    reg  la_crc_err__sample;
-    reg  la_crc_err__sampled;
-    reg  la_crc_err__if_dominant;
-    reg  la_crc_err__if_recessive;
-    wire  la_crc_err__decision;
-    reg  la_ack_err__clk;
-    reg  la_ack_err__sample;
-    reg  la_ack_err__sampled;
-    reg  la_ack_err__if_dominant;
-    reg  la_ack_err__if_recessive;
-    wire  la_ack_err__decision;
     reg  la_sof_error__clk;
     reg  la_sof_error__sample;
     reg  la_sof_error__sampled;
@@ -12977,12 +12847,50 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
     reg  la_lost__if_dominant;
     reg  la_lost__if_recessive;
     wire  la_lost__decision;
-    reg  la_tec_exempt__clk;
-    reg  la_tec_exempt__sample;
-    reg  la_tec_exempt__sampled;
-    reg  la_tec_exempt__if_dominant;
-    reg  la_tec_exempt__if_recessive;
-    wire  la_tec_exempt__decision;
+    reg  la_kind_bit__clk;
+    reg  la_kind_bit__sample;
+    reg  la_kind_bit__sampled;
+    reg  la_kind_bit__if_dominant;
+    reg  la_kind_bit__if_recessive;
+    wire  la_kind_bit__decision;
+    reg  la_kind_stuff__clk;
+    reg  la_kind_stuff__sample;
+    reg  la_kind_stuff__sampled;
+    reg  la_kind_stuff__if_dominant;
+    reg  la_kind_stuff__if_recessive;
+    wire  la_kind_stuff__decision;
+    reg  la_kind_crc__clk;
+    reg  la_kind_crc__sample;
+    reg  la_kind_crc__sampled;
+    reg  la_kind_crc__if_dominant;
+    reg  la_kind_crc__if_recessive;
+    wire  la_kind_crc__decision;
+    reg  la_kind_form__clk;
+    reg  la_kind_form__sample;
+    reg  la_kind_form__sampled;
+    reg  la_kind_form__if_dominant;
+    reg  la_kind_form__if_recessive;
+    wire  la_kind_form__decision;
+    reg  la_kind_ack__clk;
+    reg  la_kind_ack__sample;
+    reg  la_kind_ack__sampled;
+    reg  la_kind_ack__if_dominant;
+    reg  la_kind_ack__if_recessive;
+    wire  la_kind_ack__decision;
+    
+    // Local signals
+    reg  dom_kind_bit;
+    reg  dom_kind_stuff;
+    reg  dom_kind_crc;
+    reg  dom_kind_form;
+    reg  dom_kind_ack;
+    reg  rec_kind_bit;
+    reg  rec_kind_stuff;
+    reg  rec_kind_crc;
+    reg  rec_kind_form;
+    reg  rec_kind_ack;
+    reg  dom_capture;
+    reg  rec_capture;
     
     // Sub module instances
     drcc__chan_b__bsp__detect__if_dominant if_dominant(
@@ -13063,46 +12971,6 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         .if_recessive(la_flag_error__if_recessive),
         .decision(la_flag_error__decision)
     );
-    drcc__chan_b__bsp__detect__la_bit_err la_bit_err(
-        .clk(la_bit_err__clk),
-        .sample(la_bit_err__sample),
-        .sampled(la_bit_err__sampled),
-        .if_dominant(la_bit_err__if_dominant),
-        .if_recessive(la_bit_err__if_recessive),
-        .decision(la_bit_err__decision)
-    );
-    drcc__chan_b__bsp__detect__la_stuff_err la_stuff_err(
-        .clk(la_stuff_err__clk),
-        .sample(la_stuff_err__sample),
-        .sampled(la_stuff_err__sampled),
-        .if_dominant(la_stuff_err__if_dominant),
-        .if_recessive(la_stuff_err__if_recessive),
-        .decision(la_stuff_err__decision)
-    );
-    drcc__chan_b__bsp__detect__la_form_err la_form_err(
-        .clk(la_form_err__clk),
-        .sample(la_form_err__sample),
-        .sampled(la_form_err__sampled),
-        .if_dominant(la_form_err__if_dominant),
-        .if_recessive(la_form_err__if_recessive),
-        .decision(la_form_err__decision)
-    );
-    drcc__chan_b__bsp__detect__la_crc_err la_crc_err(
-        .clk(la_crc_err__clk),
-        .sample(la_crc_err__sample),
-        .sampled(la_crc_err__sampled),
-        .if_dominant(la_crc_err__if_dominant),
-        .if_recessive(la_crc_err__if_recessive),
-        .decision(la_crc_err__decision)
-    );
-    drcc__chan_b__bsp__detect__la_ack_err la_ack_err(
-        .clk(la_ack_err__clk),
-        .sample(la_ack_err__sample),
-        .sampled(la_ack_err__sampled),
-        .if_dominant(la_ack_err__if_dominant),
-        .if_recessive(la_ack_err__if_recessive),
-        .decision(la_ack_err__decision)
-    );
     drcc__chan_b__bsp__detect__la_sof_error la_sof_error(
         .clk(la_sof_error__clk),
         .sample(la_sof_error__sample),
@@ -13119,13 +12987,45 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         .if_recessive(la_lost__if_recessive),
         .decision(la_lost__decision)
     );
-    drcc__chan_b__bsp__detect__la_tec_exempt la_tec_exempt(
-        .clk(la_tec_exempt__clk),
-        .sample(la_tec_exempt__sample),
-        .sampled(la_tec_exempt__sampled),
-        .if_dominant(la_tec_exempt__if_dominant),
-        .if_recessive(la_tec_exempt__if_recessive),
-        .decision(la_tec_exempt__decision)
+    drcc__chan_b__bsp__detect__la_kind_bit la_kind_bit(
+        .clk(la_kind_bit__clk),
+        .sample(la_kind_bit__sample),
+        .sampled(la_kind_bit__sampled),
+        .if_dominant(la_kind_bit__if_dominant),
+        .if_recessive(la_kind_bit__if_recessive),
+        .decision(la_kind_bit__decision)
+    );
+    drcc__chan_b__bsp__detect__la_kind_stuff la_kind_stuff(
+        .clk(la_kind_stuff__clk),
+        .sample(la_kind_stuff__sample),
+        .sampled(la_kind_stuff__sampled),
+        .if_dominant(la_kind_stuff__if_dominant),
+        .if_recessive(la_kind_stuff__if_recessive),
+        .decision(la_kind_stuff__decision)
+    );
+    drcc__chan_b__bsp__detect__la_kind_crc la_kind_crc(
+        .clk(la_kind_crc__clk),
+        .sample(la_kind_crc__sample),
+        .sampled(la_kind_crc__sampled),
+        .if_dominant(la_kind_crc__if_dominant),
+        .if_recessive(la_kind_crc__if_recessive),
+        .decision(la_kind_crc__decision)
+    );
+    drcc__chan_b__bsp__detect__la_kind_form la_kind_form(
+        .clk(la_kind_form__clk),
+        .sample(la_kind_form__sample),
+        .sampled(la_kind_form__sampled),
+        .if_dominant(la_kind_form__if_dominant),
+        .if_recessive(la_kind_form__if_recessive),
+        .decision(la_kind_form__decision)
+    );
+    drcc__chan_b__bsp__detect__la_kind_ack la_kind_ack(
+        .clk(la_kind_ack__clk),
+        .sample(la_kind_ack__sample),
+        .sampled(la_kind_ack__sampled),
+        .if_dominant(la_kind_ack__if_dominant),
+        .if_recessive(la_kind_ack__if_recessive),
+        .decision(la_kind_ack__decision)
     );
     
     // Update code
@@ -13190,36 +13090,6 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         la_flag_error__if_dominant = if_dominant__flag_error;
         la_flag_error__if_recessive = if_recessive__flag_error;
         flag_error = la_flag_error__decision;
-        la_bit_err__clk = clk;
-        la_bit_err__sample = sample;
-        la_bit_err__sampled = sampled;
-        la_bit_err__if_dominant = if_dominant__bit_err;
-        la_bit_err__if_recessive = if_recessive__bit_err;
-        bit_err = la_bit_err__decision;
-        la_stuff_err__clk = clk;
-        la_stuff_err__sample = sample;
-        la_stuff_err__sampled = sampled;
-        la_stuff_err__if_dominant = if_dominant__stuff_err;
-        la_stuff_err__if_recessive = if_recessive__stuff_err;
-        stuff_err = la_stuff_err__decision;
-        la_form_err__clk = clk;
-        la_form_err__sample = sample;
-        la_form_err__sampled = sampled;
-        la_form_err__if_dominant = if_dominant__form_err;
-        la_form_err__if_recessive = if_recessive__form_err;
-        form_err = la_form_err__decision;
-        la_crc_err__clk = clk;
-        la_crc_err__sample = sample;
-        la_crc_err__sampled = sampled;
-        la_crc_err__if_dominant = if_dominant__crc_err;
-        la_crc_err__if_recessive = if_recessive__crc_err;
-        crc_err = la_crc_err__decision;
-        la_ack_err__clk = clk;
-        la_ack_err__sample = sample;
-        la_ack_err__sampled = sampled;
-        la_ack_err__if_dominant = if_dominant__ack_err;
-        la_ack_err__if_recessive = if_recessive__ack_err;
-        ack_err = la_ack_err__decision;
         la_sof_error__clk = clk;
         la_sof_error__sample = sample;
         la_sof_error__sampled = sampled;
@@ -13232,12 +13102,48 @@ module drcc__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,
         la_lost__if_dominant = if_dominant__lost;
         la_lost__if_recessive = if_recessive__lost;
         lost = la_lost__decision;
-        la_tec_exempt__clk = clk;
-        la_tec_exempt__sample = sample;
-        la_tec_exempt__sampled = sampled;
-        la_tec_exempt__if_dominant = if_dominant__tec_exempt;
-        la_tec_exempt__if_recessive = if_recessive__tec_exempt;
-        tec_exempt = la_tec_exempt__decision;
+        dom_capture = if_dominant__error || if_dominant__flag_error;
+        dom_kind_bit = dom_capture && if_dominant__bit_err;
+        dom_kind_stuff = dom_capture && ~if_dominant__bit_err && if_dominant__stuff_err;
+        dom_kind_form = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && if_dominant__form_err;
+        dom_kind_ack = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && if_dominant__ack_err;
+        dom_kind_crc = if_dominant__crc_err && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && ~if_dominant__ack_err;
+        rec_capture = if_recessive__error || if_recessive__flag_error;
+        rec_kind_bit = rec_capture && if_recessive__bit_err;
+        rec_kind_stuff = rec_capture && ~if_recessive__bit_err && if_recessive__stuff_err;
+        rec_kind_form = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && if_recessive__form_err;
+        rec_kind_ack = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && if_recessive__ack_err;
+        rec_kind_crc = if_recessive__crc_err && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && ~if_recessive__ack_err;
+        la_kind_bit__clk = clk;
+        la_kind_bit__sample = sample;
+        la_kind_bit__sampled = sampled;
+        la_kind_bit__if_dominant = dom_kind_bit;
+        la_kind_bit__if_recessive = rec_kind_bit;
+        kind_bit = la_kind_bit__decision;
+        la_kind_stuff__clk = clk;
+        la_kind_stuff__sample = sample;
+        la_kind_stuff__sampled = sampled;
+        la_kind_stuff__if_dominant = dom_kind_stuff;
+        la_kind_stuff__if_recessive = rec_kind_stuff;
+        kind_stuff = la_kind_stuff__decision;
+        la_kind_crc__clk = clk;
+        la_kind_crc__sample = sample;
+        la_kind_crc__sampled = sampled;
+        la_kind_crc__if_dominant = dom_kind_crc;
+        la_kind_crc__if_recessive = rec_kind_crc;
+        kind_crc = la_kind_crc__decision;
+        la_kind_form__clk = clk;
+        la_kind_form__sample = sample;
+        la_kind_form__sampled = sampled;
+        la_kind_form__if_dominant = dom_kind_form;
+        la_kind_form__if_recessive = rec_kind_form;
+        kind_form = la_kind_form__decision;
+        la_kind_ack__clk = clk;
+        la_kind_ack__sample = sample;
+        la_kind_ack__sampled = sampled;
+        la_kind_ack__if_dominant = dom_kind_ack;
+        la_kind_ack__if_recessive = rec_kind_ack;
+        kind_ack = la_kind_ack__decision;
     end
     
 endmodule // drcc__chan_b__bsp__detect
@@ -13549,249 +13455,6 @@ module drcc__chan_b__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_bit
 endmodule // drcc__chan_b__bsp__detect__if_recessive
 
 
-module drcc__chan_b__bsp__detect__la_ack_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_b__bsp__detect__la_ack_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_b__bsp__detect__la_ack_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_b__bsp__detect__la_ack_err
-
-
-module drcc__chan_b__bsp__detect__la_ack_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_ack_err__dominant_q
-
-
-module drcc__chan_b__bsp__detect__la_ack_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_ack_err__recessive_q
-
-
-module drcc__chan_b__bsp__detect__la_bit_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_b__bsp__detect__la_bit_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_b__bsp__detect__la_bit_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_b__bsp__detect__la_bit_err
-
-
-module drcc__chan_b__bsp__detect__la_bit_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_bit_err__dominant_q
-
-
-module drcc__chan_b__bsp__detect__la_bit_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_bit_err__recessive_q
-
-
-module drcc__chan_b__bsp__detect__la_crc_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_b__bsp__detect__la_crc_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_b__bsp__detect__la_crc_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_b__bsp__detect__la_crc_err
-
-
-module drcc__chan_b__bsp__detect__la_crc_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_crc_err__dominant_q
-
-
-module drcc__chan_b__bsp__detect__la_crc_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_crc_err__recessive_q
-
-
 module drcc__chan_b__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
@@ -13954,7 +13617,7 @@ module drcc__chan_b__bsp__detect__la_flag_error__recessive_q(d,q,clock);
 endmodule // drcc__chan_b__bsp__detect__la_flag_error__recessive_q
 
 
-module drcc__chan_b__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+module drcc__chan_b__bsp__detect__la_kind_ack(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
     input wire  clk;
@@ -13973,12 +13636,12 @@ module drcc__chan_b__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_
     reg  recessive_q__clock;
     
     // Sub module instances
-    drcc__chan_b__bsp__detect__la_form_err__dominant_q dominant_q(
+    drcc__chan_b__bsp__detect__la_kind_ack__dominant_q dominant_q(
         .d(dominant_q__d),
         .q(dominant_q__q),
         .clock(dominant_q__clock)
     );
-    drcc__chan_b__bsp__detect__la_form_err__recessive_q recessive_q(
+    drcc__chan_b__bsp__detect__la_kind_ack__recessive_q recessive_q(
         .d(recessive_q__d),
         .q(recessive_q__q),
         .clock(recessive_q__clock)
@@ -14000,10 +13663,10 @@ module drcc__chan_b__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_
         end
     end
     
-endmodule // drcc__chan_b__bsp__detect__la_form_err
+endmodule // drcc__chan_b__bsp__detect__la_kind_ack
 
 
-module drcc__chan_b__bsp__detect__la_form_err__dominant_q(d,q,clock);
+module drcc__chan_b__bsp__detect__la_kind_ack__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14016,10 +13679,10 @@ module drcc__chan_b__bsp__detect__la_form_err__dominant_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__detect__la_form_err__dominant_q
+endmodule // drcc__chan_b__bsp__detect__la_kind_ack__dominant_q
 
 
-module drcc__chan_b__bsp__detect__la_form_err__recessive_q(d,q,clock);
+module drcc__chan_b__bsp__detect__la_kind_ack__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -14032,7 +13695,331 @@ module drcc__chan_b__bsp__detect__la_form_err__recessive_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc__chan_b__bsp__detect__la_form_err__recessive_q
+endmodule // drcc__chan_b__bsp__detect__la_kind_ack__recessive_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_bit(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__detect__la_kind_bit__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__detect__la_kind_bit__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__detect__la_kind_bit
+
+
+module drcc__chan_b__bsp__detect__la_kind_bit__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_bit__dominant_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_bit__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_bit__recessive_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_crc(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__detect__la_kind_crc__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__detect__la_kind_crc__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__detect__la_kind_crc
+
+
+module drcc__chan_b__bsp__detect__la_kind_crc__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_crc__dominant_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_crc__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_crc__recessive_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_form(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__detect__la_kind_form__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__detect__la_kind_form__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__detect__la_kind_form
+
+
+module drcc__chan_b__bsp__detect__la_kind_form__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_form__dominant_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_form__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_form__recessive_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_stuff(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc__chan_b__bsp__detect__la_kind_stuff__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc__chan_b__bsp__detect__la_kind_stuff__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc__chan_b__bsp__detect__la_kind_stuff
+
+
+module drcc__chan_b__bsp__detect__la_kind_stuff__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_stuff__dominant_q
+
+
+module drcc__chan_b__bsp__detect__la_kind_stuff__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc__chan_b__bsp__detect__la_kind_stuff__recessive_q
 
 
 module drcc__chan_b__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
@@ -14197,179 +14184,17 @@ module drcc__chan_b__bsp__detect__la_sof_error__recessive_q(d,q,clock);
 endmodule // drcc__chan_b__bsp__detect__la_sof_error__recessive_q
 
 
-module drcc__chan_b__bsp__detect__la_stuff_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_b__bsp__detect__la_stuff_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_b__bsp__detect__la_stuff_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_b__bsp__detect__la_stuff_err
-
-
-module drcc__chan_b__bsp__detect__la_stuff_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_stuff_err__dominant_q
-
-
-module drcc__chan_b__bsp__detect__la_stuff_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_stuff_err__recessive_q
-
-
-module drcc__chan_b__bsp__detect__la_tec_exempt(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc__chan_b__bsp__detect__la_tec_exempt__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc__chan_b__bsp__detect__la_tec_exempt__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc__chan_b__bsp__detect__la_tec_exempt
-
-
-module drcc__chan_b__bsp__detect__la_tec_exempt__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_tec_exempt__dominant_q
-
-
-module drcc__chan_b__bsp__detect__la_tec_exempt__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc__chan_b__bsp__detect__la_tec_exempt__recessive_q
-
-
-module drcc__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc__chan_b__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  capture;
-    input wire  bit_err;
-    input wire  stuff_err;
-    input wire  form_err;
-    input wire  ack_err;
-    input wire  crc_err;
+    input wire  kind_bit;
+    input wire  kind_stuff;
+    input wire  kind_form;
+    input wire  kind_ack;
+    input wire  kind_crc;
     input wire  as_tx;
     input wire  arb_lost;
     input wire  [4:0] field;
@@ -14625,20 +14450,17 @@ module drcc__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err
         p_cnt_form_max__d = cnt_form_q__q == max8;
         p_cnt_ack_max__d = cnt_ack_q__q == max8;
         kind = k_crc;
-        if (bit_err) begin
+        if (kind_bit) begin
             kind = k_bit;
         end
-        else if (stuff_err) begin
+        else if (kind_stuff) begin
             kind = k_stuff;
         end
-        else if (form_err) begin
+        else if (kind_form) begin
             kind = k_form;
         end
-        else if (ack_err) begin
+        else if (kind_ack) begin
             kind = k_ack;
-        end
-        else if (crc_err) begin
-            kind = k_crc;
         end
         err_valid_q__d = 1'b0;
         if (capture) begin
@@ -14646,21 +14468,21 @@ module drcc__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err
             err_kind_q__d = kind;
             err_field_q__d = field;
             err_tx_q__d = as_tx;
-            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
-                cnt_bit_q__d = cnt_bit_q__q + one8;
-            end
-            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
-                cnt_stuff_q__d = cnt_stuff_q__q + one8;
-            end
-            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
-                cnt_crc_q__d = cnt_crc_q__q + one8;
-            end
-            if ((kind == k_form) && ~p_cnt_form_max__q) begin
-                cnt_form_q__d = cnt_form_q__q + one8;
-            end
-            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
-                cnt_ack_q__d = cnt_ack_q__q + one8;
-            end
+        end
+        if (kind_bit && ~p_cnt_bit_max__q) begin
+            cnt_bit_q__d = cnt_bit_q__q + one8;
+        end
+        if (kind_stuff && ~p_cnt_stuff_max__q) begin
+            cnt_stuff_q__d = cnt_stuff_q__q + one8;
+        end
+        if (kind_crc && ~p_cnt_crc_max__q) begin
+            cnt_crc_q__d = cnt_crc_q__q + one8;
+        end
+        if (kind_form && ~p_cnt_form_max__q) begin
+            cnt_form_q__d = cnt_form_q__q + one8;
+        end
+        if (kind_ack && ~p_cnt_ack_max__q) begin
+            cnt_ack_q__d = cnt_ack_q__q + one8;
         end
         if (arb_lost) begin
             alc_q__d = p_alc__q;
@@ -16918,7 +16740,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     reg  if_dominant__delim_first;
     reg  if_dominant__dom7;
     reg  if_dominant__ack_pending;
-    reg  if_dominant__tx_valid;
     reg  if_dominant__listen_only;
     reg  if_dominant__error;
     reg  if_dominant__flag_error;
@@ -16934,7 +16755,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     wire  if_dominant__tec_add8;
     wire  if_dominant__rec_add1;
     wire  if_dominant__rec_add8;
-    wire  if_dominant__tx_success;
     wire  if_dominant__rx_success;
     wire  if_dominant__passive_after;
     wire  if_dominant__bus_off_after;
@@ -16953,7 +16773,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     reg  if_recessive__delim_first;
     reg  if_recessive__dom7;
     reg  if_recessive__ack_pending;
-    reg  if_recessive__tx_valid;
     reg  if_recessive__listen_only;
     reg  if_recessive__error;
     reg  if_recessive__flag_error;
@@ -16969,7 +16788,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
     wire  if_recessive__tec_add8;
     wire  if_recessive__rec_add1;
     wire  if_recessive__rec_add8;
-    wire  if_recessive__tx_success;
     wire  if_recessive__rx_success;
     wire  if_recessive__passive_after;
     wire  if_recessive__bus_off_after;
@@ -17045,7 +16863,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .delim_first(if_dominant__delim_first),
         .dom7(if_dominant__dom7),
         .ack_pending(if_dominant__ack_pending),
-        .tx_valid(if_dominant__tx_valid),
         .listen_only(if_dominant__listen_only),
         .error(if_dominant__error),
         .flag_error(if_dominant__flag_error),
@@ -17061,7 +16878,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .tec_add8(if_dominant__tec_add8),
         .rec_add1(if_dominant__rec_add1),
         .rec_add8(if_dominant__rec_add8),
-        .tx_success(if_dominant__tx_success),
         .rx_success(if_dominant__rx_success),
         .passive_after(if_dominant__passive_after),
         .bus_off_after(if_dominant__bus_off_after),
@@ -17082,7 +16898,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .delim_first(if_recessive__delim_first),
         .dom7(if_recessive__dom7),
         .ack_pending(if_recessive__ack_pending),
-        .tx_valid(if_recessive__tx_valid),
         .listen_only(if_recessive__listen_only),
         .error(if_recessive__error),
         .flag_error(if_recessive__flag_error),
@@ -17098,7 +16913,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         .tec_add8(if_recessive__tec_add8),
         .rec_add1(if_recessive__rec_add1),
         .rec_add8(if_recessive__rec_add8),
-        .tx_success(if_recessive__tx_success),
         .rx_success(if_recessive__rx_success),
         .passive_after(if_recessive__passive_after),
         .bus_off_after(if_recessive__bus_off_after),
@@ -17190,7 +17004,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         if_dominant__dom7 = dom7;
         if_dominant__ack_pending = ack_pending;
         if_dominant__listen_only = listen_only;
-        if_dominant__tx_valid = 1'b0;
         if_dominant__error = dom_error;
         if_dominant__flag_error = dom_flag_error;
         if_dominant__ack_err = dom_ack_err;
@@ -17216,7 +17029,6 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
         if_recessive__dom7 = dom7;
         if_recessive__ack_pending = ack_pending;
         if_recessive__listen_only = listen_only;
-        if_recessive__tx_valid = 1'b0;
         if_recessive__error = rec_error;
         if_recessive__flag_error = rec_flag_error;
         if_recessive__ack_err = rec_ack_err;
@@ -17282,7 +17094,7 @@ module drcc__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_b
 endmodule // drcc__chan_b__bsp__rules
 
 
-module drcc__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -17298,7 +17110,6 @@ module drcc__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,i
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -17314,7 +17125,6 @@ module drcc__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,i
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -17412,14 +17222,13 @@ module drcc__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,i
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
 endmodule // drcc__chan_b__bsp__rules__if_dominant
 
 
-module drcc__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -17435,7 +17244,6 @@ module drcc__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -17451,7 +17259,6 @@ module drcc__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -17549,7 +17356,6 @@ module drcc__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     

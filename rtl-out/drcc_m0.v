@@ -3046,14 +3046,13 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  detect__ack_check_off;
     wire  detect__error;
     wire  detect__flag_error;
-    wire  detect__bit_err;
-    wire  detect__stuff_err;
-    wire  detect__form_err;
-    wire  detect__crc_err;
-    wire  detect__ack_err;
     wire  detect__sof_error;
     wire  detect__lost;
-    wire  detect__tec_exempt;
+    wire  detect__kind_bit;
+    wire  detect__kind_stuff;
+    wire  detect__kind_crc;
+    wire  detect__kind_form;
+    wire  detect__kind_ack;
     wire  detect__dom_error;
     wire  detect__dom_flag_error;
     wire  detect__dom_ack_err;
@@ -3122,11 +3121,11 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  err_capture__clk;
     reg  err_capture__rst;
     reg  err_capture__capture;
-    reg  err_capture__bit_err;
-    reg  err_capture__stuff_err;
-    reg  err_capture__form_err;
-    reg  err_capture__ack_err;
-    reg  err_capture__crc_err;
+    reg  err_capture__kind_bit;
+    reg  err_capture__kind_stuff;
+    reg  err_capture__kind_form;
+    reg  err_capture__kind_ack;
+    reg  err_capture__kind_crc;
     reg  err_capture__as_tx;
     reg  err_capture__arb_lost;
     reg  [4:0] err_capture__field;
@@ -3337,14 +3336,13 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .ack_check_off(detect__ack_check_off),
         .error(detect__error),
         .flag_error(detect__flag_error),
-        .bit_err(detect__bit_err),
-        .stuff_err(detect__stuff_err),
-        .form_err(detect__form_err),
-        .crc_err(detect__crc_err),
-        .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt),
+        .kind_bit(detect__kind_bit),
+        .kind_stuff(detect__kind_stuff),
+        .kind_crc(detect__kind_crc),
+        .kind_form(detect__kind_form),
+        .kind_ack(detect__kind_ack),
         .dom_error(detect__dom_error),
         .dom_flag_error(detect__dom_flag_error),
         .dom_ack_err(detect__dom_ack_err),
@@ -3419,11 +3417,11 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .clk(err_capture__clk),
         .rst(err_capture__rst),
         .capture(err_capture__capture),
-        .bit_err(err_capture__bit_err),
-        .stuff_err(err_capture__stuff_err),
-        .form_err(err_capture__form_err),
-        .ack_err(err_capture__ack_err),
-        .crc_err(err_capture__crc_err),
+        .kind_bit(err_capture__kind_bit),
+        .kind_stuff(err_capture__kind_stuff),
+        .kind_form(err_capture__kind_form),
+        .kind_ack(err_capture__kind_ack),
+        .kind_crc(err_capture__kind_crc),
         .as_tx(err_capture__as_tx),
         .arb_lost(err_capture__arb_lost),
         .field(err_capture__field),
@@ -3601,11 +3599,11 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
-        err_capture__bit_err = detect__bit_err;
-        err_capture__stuff_err = detect__stuff_err;
-        err_capture__form_err = detect__form_err;
-        err_capture__ack_err = detect__ack_err;
-        err_capture__crc_err = detect__crc_err;
+        err_capture__kind_bit = detect__kind_bit;
+        err_capture__kind_stuff = detect__kind_stuff;
+        err_capture__kind_form = detect__kind_form;
+        err_capture__kind_ack = detect__kind_ack;
+        err_capture__kind_crc = detect__kind_crc;
         err_capture__as_tx = fsm__is_tx || detect__sof_error;
         err_capture__arb_lost = detect__lost;
         err_capture__field = fsm__field;
@@ -3642,7 +3640,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
 endmodule // drcc_m0__chan_a__bsp
 
 
-module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
+module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
     
     // Module arguments
     input wire  clk;
@@ -3667,14 +3665,13 @@ module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
     input wire  ack_check_off;
     output reg  error;
     output reg  flag_error;
-    output reg  bit_err;
-    output reg  stuff_err;
-    output reg  form_err;
-    output reg  crc_err;
-    output reg  ack_err;
     output reg  sof_error;
     output reg  lost;
-    output reg  tec_exempt;
+    output reg  kind_bit;
+    output reg  kind_stuff;
+    output reg  kind_crc;
+    output reg  kind_form;
+    output reg  kind_ack;
     output reg  dom_error;
     output reg  dom_flag_error;
     output reg  dom_ack_err;
@@ -3782,36 +3779,6 @@ module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
     reg  la_flag_error__if_dominant;
     reg  la_flag_error__if_recessive;
     wire  la_flag_error__decision;
-    reg  la_bit_err__clk;
-    reg  la_bit_err__sample;
-    reg  la_bit_err__sampled;
-    reg  la_bit_err__if_dominant;
-    reg  la_bit_err__if_recessive;
-    wire  la_bit_err__decision;
-    reg  la_stuff_err__clk;
-    reg  la_stuff_err__sample;
-    reg  la_stuff_err__sampled;
-    reg  la_stuff_err__if_dominant;
-    reg  la_stuff_err__if_recessive;
-    wire  la_stuff_err__decision;
-    reg  la_form_err__clk;
-    reg  la_form_err__sample;
-    reg  la_form_err__sampled;
-    reg  la_form_err__if_dominant;
-    reg  la_form_err__if_recessive;
-    wire  la_form_err__decision;
-    reg  la_crc_err__clk;
-    reg  la_crc_err__sample;
-    reg  la_crc_err__sampled;
-    reg  la_crc_err__if_dominant;
-    reg  la_crc_err__if_recessive;
-    wire  la_crc_err__decision;
-    reg  la_ack_err__clk;
-    reg  la_ack_err__sample;
-    reg  la_ack_err__sampled;
-    reg  la_ack_err__if_dominant;
-    reg  la_ack_err__if_recessive;
-    wire  la_ack_err__decision;
     reg  la_sof_error__clk;
     reg  la_sof_error__sample;
     reg  la_sof_error__sampled;
@@ -3824,12 +3791,50 @@ module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
     reg  la_lost__if_dominant;
     reg  la_lost__if_recessive;
     wire  la_lost__decision;
-    reg  la_tec_exempt__clk;
-    reg  la_tec_exempt__sample;
-    reg  la_tec_exempt__sampled;
-    reg  la_tec_exempt__if_dominant;
-    reg  la_tec_exempt__if_recessive;
-    wire  la_tec_exempt__decision;
+    reg  la_kind_bit__clk;
+    reg  la_kind_bit__sample;
+    reg  la_kind_bit__sampled;
+    reg  la_kind_bit__if_dominant;
+    reg  la_kind_bit__if_recessive;
+    wire  la_kind_bit__decision;
+    reg  la_kind_stuff__clk;
+    reg  la_kind_stuff__sample;
+    reg  la_kind_stuff__sampled;
+    reg  la_kind_stuff__if_dominant;
+    reg  la_kind_stuff__if_recessive;
+    wire  la_kind_stuff__decision;
+    reg  la_kind_crc__clk;
+    reg  la_kind_crc__sample;
+    reg  la_kind_crc__sampled;
+    reg  la_kind_crc__if_dominant;
+    reg  la_kind_crc__if_recessive;
+    wire  la_kind_crc__decision;
+    reg  la_kind_form__clk;
+    reg  la_kind_form__sample;
+    reg  la_kind_form__sampled;
+    reg  la_kind_form__if_dominant;
+    reg  la_kind_form__if_recessive;
+    wire  la_kind_form__decision;
+    reg  la_kind_ack__clk;
+    reg  la_kind_ack__sample;
+    reg  la_kind_ack__sampled;
+    reg  la_kind_ack__if_dominant;
+    reg  la_kind_ack__if_recessive;
+    wire  la_kind_ack__decision;
+    
+    // Local signals
+    reg  dom_kind_bit;
+    reg  dom_kind_stuff;
+    reg  dom_kind_crc;
+    reg  dom_kind_form;
+    reg  dom_kind_ack;
+    reg  rec_kind_bit;
+    reg  rec_kind_stuff;
+    reg  rec_kind_crc;
+    reg  rec_kind_form;
+    reg  rec_kind_ack;
+    reg  dom_capture;
+    reg  rec_capture;
     
     // Sub module instances
     drcc_m0__chan_a__bsp__detect__if_dominant if_dominant(
@@ -3910,46 +3915,6 @@ module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         .if_recessive(la_flag_error__if_recessive),
         .decision(la_flag_error__decision)
     );
-    drcc_m0__chan_a__bsp__detect__la_bit_err la_bit_err(
-        .clk(la_bit_err__clk),
-        .sample(la_bit_err__sample),
-        .sampled(la_bit_err__sampled),
-        .if_dominant(la_bit_err__if_dominant),
-        .if_recessive(la_bit_err__if_recessive),
-        .decision(la_bit_err__decision)
-    );
-    drcc_m0__chan_a__bsp__detect__la_stuff_err la_stuff_err(
-        .clk(la_stuff_err__clk),
-        .sample(la_stuff_err__sample),
-        .sampled(la_stuff_err__sampled),
-        .if_dominant(la_stuff_err__if_dominant),
-        .if_recessive(la_stuff_err__if_recessive),
-        .decision(la_stuff_err__decision)
-    );
-    drcc_m0__chan_a__bsp__detect__la_form_err la_form_err(
-        .clk(la_form_err__clk),
-        .sample(la_form_err__sample),
-        .sampled(la_form_err__sampled),
-        .if_dominant(la_form_err__if_dominant),
-        .if_recessive(la_form_err__if_recessive),
-        .decision(la_form_err__decision)
-    );
-    drcc_m0__chan_a__bsp__detect__la_crc_err la_crc_err(
-        .clk(la_crc_err__clk),
-        .sample(la_crc_err__sample),
-        .sampled(la_crc_err__sampled),
-        .if_dominant(la_crc_err__if_dominant),
-        .if_recessive(la_crc_err__if_recessive),
-        .decision(la_crc_err__decision)
-    );
-    drcc_m0__chan_a__bsp__detect__la_ack_err la_ack_err(
-        .clk(la_ack_err__clk),
-        .sample(la_ack_err__sample),
-        .sampled(la_ack_err__sampled),
-        .if_dominant(la_ack_err__if_dominant),
-        .if_recessive(la_ack_err__if_recessive),
-        .decision(la_ack_err__decision)
-    );
     drcc_m0__chan_a__bsp__detect__la_sof_error la_sof_error(
         .clk(la_sof_error__clk),
         .sample(la_sof_error__sample),
@@ -3966,13 +3931,45 @@ module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         .if_recessive(la_lost__if_recessive),
         .decision(la_lost__decision)
     );
-    drcc_m0__chan_a__bsp__detect__la_tec_exempt la_tec_exempt(
-        .clk(la_tec_exempt__clk),
-        .sample(la_tec_exempt__sample),
-        .sampled(la_tec_exempt__sampled),
-        .if_dominant(la_tec_exempt__if_dominant),
-        .if_recessive(la_tec_exempt__if_recessive),
-        .decision(la_tec_exempt__decision)
+    drcc_m0__chan_a__bsp__detect__la_kind_bit la_kind_bit(
+        .clk(la_kind_bit__clk),
+        .sample(la_kind_bit__sample),
+        .sampled(la_kind_bit__sampled),
+        .if_dominant(la_kind_bit__if_dominant),
+        .if_recessive(la_kind_bit__if_recessive),
+        .decision(la_kind_bit__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_stuff la_kind_stuff(
+        .clk(la_kind_stuff__clk),
+        .sample(la_kind_stuff__sample),
+        .sampled(la_kind_stuff__sampled),
+        .if_dominant(la_kind_stuff__if_dominant),
+        .if_recessive(la_kind_stuff__if_recessive),
+        .decision(la_kind_stuff__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_crc la_kind_crc(
+        .clk(la_kind_crc__clk),
+        .sample(la_kind_crc__sample),
+        .sampled(la_kind_crc__sampled),
+        .if_dominant(la_kind_crc__if_dominant),
+        .if_recessive(la_kind_crc__if_recessive),
+        .decision(la_kind_crc__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_form la_kind_form(
+        .clk(la_kind_form__clk),
+        .sample(la_kind_form__sample),
+        .sampled(la_kind_form__sampled),
+        .if_dominant(la_kind_form__if_dominant),
+        .if_recessive(la_kind_form__if_recessive),
+        .decision(la_kind_form__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_ack la_kind_ack(
+        .clk(la_kind_ack__clk),
+        .sample(la_kind_ack__sample),
+        .sampled(la_kind_ack__sampled),
+        .if_dominant(la_kind_ack__if_dominant),
+        .if_recessive(la_kind_ack__if_recessive),
+        .decision(la_kind_ack__decision)
     );
     
     // Update code
@@ -4037,36 +4034,6 @@ module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         la_flag_error__if_dominant = if_dominant__flag_error;
         la_flag_error__if_recessive = if_recessive__flag_error;
         flag_error = la_flag_error__decision;
-        la_bit_err__clk = clk;
-        la_bit_err__sample = sample;
-        la_bit_err__sampled = sampled;
-        la_bit_err__if_dominant = if_dominant__bit_err;
-        la_bit_err__if_recessive = if_recessive__bit_err;
-        bit_err = la_bit_err__decision;
-        la_stuff_err__clk = clk;
-        la_stuff_err__sample = sample;
-        la_stuff_err__sampled = sampled;
-        la_stuff_err__if_dominant = if_dominant__stuff_err;
-        la_stuff_err__if_recessive = if_recessive__stuff_err;
-        stuff_err = la_stuff_err__decision;
-        la_form_err__clk = clk;
-        la_form_err__sample = sample;
-        la_form_err__sampled = sampled;
-        la_form_err__if_dominant = if_dominant__form_err;
-        la_form_err__if_recessive = if_recessive__form_err;
-        form_err = la_form_err__decision;
-        la_crc_err__clk = clk;
-        la_crc_err__sample = sample;
-        la_crc_err__sampled = sampled;
-        la_crc_err__if_dominant = if_dominant__crc_err;
-        la_crc_err__if_recessive = if_recessive__crc_err;
-        crc_err = la_crc_err__decision;
-        la_ack_err__clk = clk;
-        la_ack_err__sample = sample;
-        la_ack_err__sampled = sampled;
-        la_ack_err__if_dominant = if_dominant__ack_err;
-        la_ack_err__if_recessive = if_recessive__ack_err;
-        ack_err = la_ack_err__decision;
         la_sof_error__clk = clk;
         la_sof_error__sample = sample;
         la_sof_error__sampled = sampled;
@@ -4079,12 +4046,48 @@ module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         la_lost__if_dominant = if_dominant__lost;
         la_lost__if_recessive = if_recessive__lost;
         lost = la_lost__decision;
-        la_tec_exempt__clk = clk;
-        la_tec_exempt__sample = sample;
-        la_tec_exempt__sampled = sampled;
-        la_tec_exempt__if_dominant = if_dominant__tec_exempt;
-        la_tec_exempt__if_recessive = if_recessive__tec_exempt;
-        tec_exempt = la_tec_exempt__decision;
+        dom_capture = if_dominant__error || if_dominant__flag_error;
+        dom_kind_bit = dom_capture && if_dominant__bit_err;
+        dom_kind_stuff = dom_capture && ~if_dominant__bit_err && if_dominant__stuff_err;
+        dom_kind_form = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && if_dominant__form_err;
+        dom_kind_ack = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && if_dominant__ack_err;
+        dom_kind_crc = if_dominant__crc_err && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && ~if_dominant__ack_err;
+        rec_capture = if_recessive__error || if_recessive__flag_error;
+        rec_kind_bit = rec_capture && if_recessive__bit_err;
+        rec_kind_stuff = rec_capture && ~if_recessive__bit_err && if_recessive__stuff_err;
+        rec_kind_form = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && if_recessive__form_err;
+        rec_kind_ack = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && if_recessive__ack_err;
+        rec_kind_crc = if_recessive__crc_err && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && ~if_recessive__ack_err;
+        la_kind_bit__clk = clk;
+        la_kind_bit__sample = sample;
+        la_kind_bit__sampled = sampled;
+        la_kind_bit__if_dominant = dom_kind_bit;
+        la_kind_bit__if_recessive = rec_kind_bit;
+        kind_bit = la_kind_bit__decision;
+        la_kind_stuff__clk = clk;
+        la_kind_stuff__sample = sample;
+        la_kind_stuff__sampled = sampled;
+        la_kind_stuff__if_dominant = dom_kind_stuff;
+        la_kind_stuff__if_recessive = rec_kind_stuff;
+        kind_stuff = la_kind_stuff__decision;
+        la_kind_crc__clk = clk;
+        la_kind_crc__sample = sample;
+        la_kind_crc__sampled = sampled;
+        la_kind_crc__if_dominant = dom_kind_crc;
+        la_kind_crc__if_recessive = rec_kind_crc;
+        kind_crc = la_kind_crc__decision;
+        la_kind_form__clk = clk;
+        la_kind_form__sample = sample;
+        la_kind_form__sampled = sampled;
+        la_kind_form__if_dominant = dom_kind_form;
+        la_kind_form__if_recessive = rec_kind_form;
+        kind_form = la_kind_form__decision;
+        la_kind_ack__clk = clk;
+        la_kind_ack__sample = sample;
+        la_kind_ack__sampled = sampled;
+        la_kind_ack__if_dominant = dom_kind_ack;
+        la_kind_ack__if_recessive = rec_kind_ack;
+        kind_ack = la_kind_ack__decision;
     end
     
 endmodule // drcc_m0__chan_a__bsp__detect
@@ -4396,249 +4399,6 @@ module drcc_m0__chan_a__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_
 endmodule // drcc_m0__chan_a__bsp__detect__if_recessive
 
 
-module drcc_m0__chan_a__bsp__detect__la_ack_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_a__bsp__detect__la_ack_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_a__bsp__detect__la_ack_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_a__bsp__detect__la_ack_err
-
-
-module drcc_m0__chan_a__bsp__detect__la_ack_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_ack_err__dominant_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_ack_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_ack_err__recessive_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_bit_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_a__bsp__detect__la_bit_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_a__bsp__detect__la_bit_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_a__bsp__detect__la_bit_err
-
-
-module drcc_m0__chan_a__bsp__detect__la_bit_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_bit_err__dominant_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_bit_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_bit_err__recessive_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_crc_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_a__bsp__detect__la_crc_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_a__bsp__detect__la_crc_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_a__bsp__detect__la_crc_err
-
-
-module drcc_m0__chan_a__bsp__detect__la_crc_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_crc_err__dominant_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_crc_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_crc_err__recessive_q
-
-
 module drcc_m0__chan_a__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
@@ -4801,7 +4561,7 @@ module drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q(d,q,clock);
 endmodule // drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q
 
 
-module drcc_m0__chan_a__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+module drcc_m0__chan_a__bsp__detect__la_kind_ack(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
     input wire  clk;
@@ -4820,12 +4580,12 @@ module drcc_m0__chan_a__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,
     reg  recessive_q__clock;
     
     // Sub module instances
-    drcc_m0__chan_a__bsp__detect__la_form_err__dominant_q dominant_q(
+    drcc_m0__chan_a__bsp__detect__la_kind_ack__dominant_q dominant_q(
         .d(dominant_q__d),
         .q(dominant_q__q),
         .clock(dominant_q__clock)
     );
-    drcc_m0__chan_a__bsp__detect__la_form_err__recessive_q recessive_q(
+    drcc_m0__chan_a__bsp__detect__la_kind_ack__recessive_q recessive_q(
         .d(recessive_q__d),
         .q(recessive_q__q),
         .clock(recessive_q__clock)
@@ -4847,10 +4607,10 @@ module drcc_m0__chan_a__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,
         end
     end
     
-endmodule // drcc_m0__chan_a__bsp__detect__la_form_err
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_ack
 
 
-module drcc_m0__chan_a__bsp__detect__la_form_err__dominant_q(d,q,clock);
+module drcc_m0__chan_a__bsp__detect__la_kind_ack__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4863,10 +4623,10 @@ module drcc_m0__chan_a__bsp__detect__la_form_err__dominant_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__detect__la_form_err__dominant_q
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_ack__dominant_q
 
 
-module drcc_m0__chan_a__bsp__detect__la_form_err__recessive_q(d,q,clock);
+module drcc_m0__chan_a__bsp__detect__la_kind_ack__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4879,7 +4639,331 @@ module drcc_m0__chan_a__bsp__detect__la_form_err__recessive_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__detect__la_form_err__recessive_q
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_ack__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_bit(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_bit__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_bit__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_bit
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_bit__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_bit__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_bit__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_bit__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_crc(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_crc__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_crc__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_crc
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_crc__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_crc__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_crc__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_crc__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_form(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_form__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_form__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_form
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_form__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_form__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_form__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_form__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_stuff(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_stuff__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_stuff__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_stuff
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_stuff__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_stuff__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_stuff__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_stuff__recessive_q
 
 
 module drcc_m0__chan_a__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
@@ -5044,179 +5128,17 @@ module drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q(d,q,clock);
 endmodule // drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q
 
 
-module drcc_m0__chan_a__bsp__detect__la_stuff_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_a__bsp__detect__la_stuff_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_a__bsp__detect__la_stuff_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_a__bsp__detect__la_stuff_err
-
-
-module drcc_m0__chan_a__bsp__detect__la_stuff_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_stuff_err__dominant_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_stuff_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_stuff_err__recessive_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_tec_exempt(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_a__bsp__detect__la_tec_exempt__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_a__bsp__detect__la_tec_exempt__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_a__bsp__detect__la_tec_exempt
-
-
-module drcc_m0__chan_a__bsp__detect__la_tec_exempt__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_tec_exempt__dominant_q
-
-
-module drcc_m0__chan_a__bsp__detect__la_tec_exempt__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_a__bsp__detect__la_tec_exempt__recessive_q
-
-
-module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  capture;
-    input wire  bit_err;
-    input wire  stuff_err;
-    input wire  form_err;
-    input wire  ack_err;
-    input wire  crc_err;
+    input wire  kind_bit;
+    input wire  kind_stuff;
+    input wire  kind_form;
+    input wire  kind_ack;
+    input wire  kind_crc;
     input wire  as_tx;
     input wire  arb_lost;
     input wire  [4:0] field;
@@ -5472,20 +5394,17 @@ module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
         p_cnt_form_max__d = cnt_form_q__q == max8;
         p_cnt_ack_max__d = cnt_ack_q__q == max8;
         kind = k_crc;
-        if (bit_err) begin
+        if (kind_bit) begin
             kind = k_bit;
         end
-        else if (stuff_err) begin
+        else if (kind_stuff) begin
             kind = k_stuff;
         end
-        else if (form_err) begin
+        else if (kind_form) begin
             kind = k_form;
         end
-        else if (ack_err) begin
+        else if (kind_ack) begin
             kind = k_ack;
-        end
-        else if (crc_err) begin
-            kind = k_crc;
         end
         err_valid_q__d = 1'b0;
         if (capture) begin
@@ -5493,21 +5412,21 @@ module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
             err_kind_q__d = kind;
             err_field_q__d = field;
             err_tx_q__d = as_tx;
-            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
-                cnt_bit_q__d = cnt_bit_q__q + one8;
-            end
-            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
-                cnt_stuff_q__d = cnt_stuff_q__q + one8;
-            end
-            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
-                cnt_crc_q__d = cnt_crc_q__q + one8;
-            end
-            if ((kind == k_form) && ~p_cnt_form_max__q) begin
-                cnt_form_q__d = cnt_form_q__q + one8;
-            end
-            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
-                cnt_ack_q__d = cnt_ack_q__q + one8;
-            end
+        end
+        if (kind_bit && ~p_cnt_bit_max__q) begin
+            cnt_bit_q__d = cnt_bit_q__q + one8;
+        end
+        if (kind_stuff && ~p_cnt_stuff_max__q) begin
+            cnt_stuff_q__d = cnt_stuff_q__q + one8;
+        end
+        if (kind_crc && ~p_cnt_crc_max__q) begin
+            cnt_crc_q__d = cnt_crc_q__q + one8;
+        end
+        if (kind_form && ~p_cnt_form_max__q) begin
+            cnt_form_q__d = cnt_form_q__q + one8;
+        end
+        if (kind_ack && ~p_cnt_ack_max__q) begin
+            cnt_ack_q__d = cnt_ack_q__q + one8;
         end
         if (arb_lost) begin
             alc_q__d = p_alc__q;
@@ -7765,7 +7684,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     reg  if_dominant__delim_first;
     reg  if_dominant__dom7;
     reg  if_dominant__ack_pending;
-    reg  if_dominant__tx_valid;
     reg  if_dominant__listen_only;
     reg  if_dominant__error;
     reg  if_dominant__flag_error;
@@ -7781,7 +7699,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     wire  if_dominant__tec_add8;
     wire  if_dominant__rec_add1;
     wire  if_dominant__rec_add8;
-    wire  if_dominant__tx_success;
     wire  if_dominant__rx_success;
     wire  if_dominant__passive_after;
     wire  if_dominant__bus_off_after;
@@ -7800,7 +7717,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     reg  if_recessive__delim_first;
     reg  if_recessive__dom7;
     reg  if_recessive__ack_pending;
-    reg  if_recessive__tx_valid;
     reg  if_recessive__listen_only;
     reg  if_recessive__error;
     reg  if_recessive__flag_error;
@@ -7816,7 +7732,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     wire  if_recessive__tec_add8;
     wire  if_recessive__rec_add1;
     wire  if_recessive__rec_add8;
-    wire  if_recessive__tx_success;
     wire  if_recessive__rx_success;
     wire  if_recessive__passive_after;
     wire  if_recessive__bus_off_after;
@@ -7892,7 +7807,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .delim_first(if_dominant__delim_first),
         .dom7(if_dominant__dom7),
         .ack_pending(if_dominant__ack_pending),
-        .tx_valid(if_dominant__tx_valid),
         .listen_only(if_dominant__listen_only),
         .error(if_dominant__error),
         .flag_error(if_dominant__flag_error),
@@ -7908,7 +7822,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .tec_add8(if_dominant__tec_add8),
         .rec_add1(if_dominant__rec_add1),
         .rec_add8(if_dominant__rec_add8),
-        .tx_success(if_dominant__tx_success),
         .rx_success(if_dominant__rx_success),
         .passive_after(if_dominant__passive_after),
         .bus_off_after(if_dominant__bus_off_after),
@@ -7929,7 +7842,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .delim_first(if_recessive__delim_first),
         .dom7(if_recessive__dom7),
         .ack_pending(if_recessive__ack_pending),
-        .tx_valid(if_recessive__tx_valid),
         .listen_only(if_recessive__listen_only),
         .error(if_recessive__error),
         .flag_error(if_recessive__flag_error),
@@ -7945,7 +7857,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .tec_add8(if_recessive__tec_add8),
         .rec_add1(if_recessive__rec_add1),
         .rec_add8(if_recessive__rec_add8),
-        .tx_success(if_recessive__tx_success),
         .rx_success(if_recessive__rx_success),
         .passive_after(if_recessive__passive_after),
         .bus_off_after(if_recessive__bus_off_after),
@@ -8037,7 +7948,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         if_dominant__dom7 = dom7;
         if_dominant__ack_pending = ack_pending;
         if_dominant__listen_only = listen_only;
-        if_dominant__tx_valid = 1'b0;
         if_dominant__error = dom_error;
         if_dominant__flag_error = dom_flag_error;
         if_dominant__ack_err = dom_ack_err;
@@ -8063,7 +7973,6 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         if_recessive__dom7 = dom7;
         if_recessive__ack_pending = ack_pending;
         if_recessive__listen_only = listen_only;
-        if_recessive__tx_valid = 1'b0;
         if_recessive__error = rec_error;
         if_recessive__flag_error = rec_flag_error;
         if_recessive__ack_err = rec_ack_err;
@@ -8129,7 +8038,7 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
 endmodule // drcc_m0__chan_a__bsp__rules
 
 
-module drcc_m0__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -8145,7 +8054,6 @@ module drcc_m0__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,fiel
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -8161,7 +8069,6 @@ module drcc_m0__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,fiel
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -8259,14 +8166,13 @@ module drcc_m0__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,fiel
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
 endmodule // drcc_m0__chan_a__bsp__rules__if_dominant
 
 
-module drcc_m0__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -8282,7 +8188,6 @@ module drcc_m0__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,fie
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -8298,7 +8203,6 @@ module drcc_m0__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,fie
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -8396,7 +8300,6 @@ module drcc_m0__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,fie
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
@@ -12077,14 +11980,13 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  detect__ack_check_off;
     wire  detect__error;
     wire  detect__flag_error;
-    wire  detect__bit_err;
-    wire  detect__stuff_err;
-    wire  detect__form_err;
-    wire  detect__crc_err;
-    wire  detect__ack_err;
     wire  detect__sof_error;
     wire  detect__lost;
-    wire  detect__tec_exempt;
+    wire  detect__kind_bit;
+    wire  detect__kind_stuff;
+    wire  detect__kind_crc;
+    wire  detect__kind_form;
+    wire  detect__kind_ack;
     wire  detect__dom_error;
     wire  detect__dom_flag_error;
     wire  detect__dom_ack_err;
@@ -12153,11 +12055,11 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  err_capture__clk;
     reg  err_capture__rst;
     reg  err_capture__capture;
-    reg  err_capture__bit_err;
-    reg  err_capture__stuff_err;
-    reg  err_capture__form_err;
-    reg  err_capture__ack_err;
-    reg  err_capture__crc_err;
+    reg  err_capture__kind_bit;
+    reg  err_capture__kind_stuff;
+    reg  err_capture__kind_form;
+    reg  err_capture__kind_ack;
+    reg  err_capture__kind_crc;
     reg  err_capture__as_tx;
     reg  err_capture__arb_lost;
     reg  [4:0] err_capture__field;
@@ -12368,14 +12270,13 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .ack_check_off(detect__ack_check_off),
         .error(detect__error),
         .flag_error(detect__flag_error),
-        .bit_err(detect__bit_err),
-        .stuff_err(detect__stuff_err),
-        .form_err(detect__form_err),
-        .crc_err(detect__crc_err),
-        .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt),
+        .kind_bit(detect__kind_bit),
+        .kind_stuff(detect__kind_stuff),
+        .kind_crc(detect__kind_crc),
+        .kind_form(detect__kind_form),
+        .kind_ack(detect__kind_ack),
         .dom_error(detect__dom_error),
         .dom_flag_error(detect__dom_flag_error),
         .dom_ack_err(detect__dom_ack_err),
@@ -12450,11 +12351,11 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .clk(err_capture__clk),
         .rst(err_capture__rst),
         .capture(err_capture__capture),
-        .bit_err(err_capture__bit_err),
-        .stuff_err(err_capture__stuff_err),
-        .form_err(err_capture__form_err),
-        .ack_err(err_capture__ack_err),
-        .crc_err(err_capture__crc_err),
+        .kind_bit(err_capture__kind_bit),
+        .kind_stuff(err_capture__kind_stuff),
+        .kind_form(err_capture__kind_form),
+        .kind_ack(err_capture__kind_ack),
+        .kind_crc(err_capture__kind_crc),
         .as_tx(err_capture__as_tx),
         .arb_lost(err_capture__arb_lost),
         .field(err_capture__field),
@@ -12632,11 +12533,11 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
-        err_capture__bit_err = detect__bit_err;
-        err_capture__stuff_err = detect__stuff_err;
-        err_capture__form_err = detect__form_err;
-        err_capture__ack_err = detect__ack_err;
-        err_capture__crc_err = detect__crc_err;
+        err_capture__kind_bit = detect__kind_bit;
+        err_capture__kind_stuff = detect__kind_stuff;
+        err_capture__kind_form = detect__kind_form;
+        err_capture__kind_ack = detect__kind_ack;
+        err_capture__kind_crc = detect__kind_crc;
         err_capture__as_tx = fsm__is_tx || detect__sof_error;
         err_capture__arb_lost = detect__lost;
         err_capture__field = fsm__field;
@@ -12673,7 +12574,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
 endmodule // drcc_m0__chan_b__bsp
 
 
-module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
+module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
     
     // Module arguments
     input wire  clk;
@@ -12698,14 +12599,13 @@ module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
     input wire  ack_check_off;
     output reg  error;
     output reg  flag_error;
-    output reg  bit_err;
-    output reg  stuff_err;
-    output reg  form_err;
-    output reg  crc_err;
-    output reg  ack_err;
     output reg  sof_error;
     output reg  lost;
-    output reg  tec_exempt;
+    output reg  kind_bit;
+    output reg  kind_stuff;
+    output reg  kind_crc;
+    output reg  kind_form;
+    output reg  kind_ack;
     output reg  dom_error;
     output reg  dom_flag_error;
     output reg  dom_ack_err;
@@ -12813,36 +12713,6 @@ module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
     reg  la_flag_error__if_dominant;
     reg  la_flag_error__if_recessive;
     wire  la_flag_error__decision;
-    reg  la_bit_err__clk;
-    reg  la_bit_err__sample;
-    reg  la_bit_err__sampled;
-    reg  la_bit_err__if_dominant;
-    reg  la_bit_err__if_recessive;
-    wire  la_bit_err__decision;
-    reg  la_stuff_err__clk;
-    reg  la_stuff_err__sample;
-    reg  la_stuff_err__sampled;
-    reg  la_stuff_err__if_dominant;
-    reg  la_stuff_err__if_recessive;
-    wire  la_stuff_err__decision;
-    reg  la_form_err__clk;
-    reg  la_form_err__sample;
-    reg  la_form_err__sampled;
-    reg  la_form_err__if_dominant;
-    reg  la_form_err__if_recessive;
-    wire  la_form_err__decision;
-    reg  la_crc_err__clk;
-    reg  la_crc_err__sample;
-    reg  la_crc_err__sampled;
-    reg  la_crc_err__if_dominant;
-    reg  la_crc_err__if_recessive;
-    wire  la_crc_err__decision;
-    reg  la_ack_err__clk;
-    reg  la_ack_err__sample;
-    reg  la_ack_err__sampled;
-    reg  la_ack_err__if_dominant;
-    reg  la_ack_err__if_recessive;
-    wire  la_ack_err__decision;
     reg  la_sof_error__clk;
     reg  la_sof_error__sample;
     reg  la_sof_error__sampled;
@@ -12855,12 +12725,50 @@ module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
     reg  la_lost__if_dominant;
     reg  la_lost__if_recessive;
     wire  la_lost__decision;
-    reg  la_tec_exempt__clk;
-    reg  la_tec_exempt__sample;
-    reg  la_tec_exempt__sampled;
-    reg  la_tec_exempt__if_dominant;
-    reg  la_tec_exempt__if_recessive;
-    wire  la_tec_exempt__decision;
+    reg  la_kind_bit__clk;
+    reg  la_kind_bit__sample;
+    reg  la_kind_bit__sampled;
+    reg  la_kind_bit__if_dominant;
+    reg  la_kind_bit__if_recessive;
+    wire  la_kind_bit__decision;
+    reg  la_kind_stuff__clk;
+    reg  la_kind_stuff__sample;
+    reg  la_kind_stuff__sampled;
+    reg  la_kind_stuff__if_dominant;
+    reg  la_kind_stuff__if_recessive;
+    wire  la_kind_stuff__decision;
+    reg  la_kind_crc__clk;
+    reg  la_kind_crc__sample;
+    reg  la_kind_crc__sampled;
+    reg  la_kind_crc__if_dominant;
+    reg  la_kind_crc__if_recessive;
+    wire  la_kind_crc__decision;
+    reg  la_kind_form__clk;
+    reg  la_kind_form__sample;
+    reg  la_kind_form__sampled;
+    reg  la_kind_form__if_dominant;
+    reg  la_kind_form__if_recessive;
+    wire  la_kind_form__decision;
+    reg  la_kind_ack__clk;
+    reg  la_kind_ack__sample;
+    reg  la_kind_ack__sampled;
+    reg  la_kind_ack__if_dominant;
+    reg  la_kind_ack__if_recessive;
+    wire  la_kind_ack__decision;
+    
+    // Local signals
+    reg  dom_kind_bit;
+    reg  dom_kind_stuff;
+    reg  dom_kind_crc;
+    reg  dom_kind_form;
+    reg  dom_kind_ack;
+    reg  rec_kind_bit;
+    reg  rec_kind_stuff;
+    reg  rec_kind_crc;
+    reg  rec_kind_form;
+    reg  rec_kind_ack;
+    reg  dom_capture;
+    reg  rec_capture;
     
     // Sub module instances
     drcc_m0__chan_b__bsp__detect__if_dominant if_dominant(
@@ -12941,46 +12849,6 @@ module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         .if_recessive(la_flag_error__if_recessive),
         .decision(la_flag_error__decision)
     );
-    drcc_m0__chan_b__bsp__detect__la_bit_err la_bit_err(
-        .clk(la_bit_err__clk),
-        .sample(la_bit_err__sample),
-        .sampled(la_bit_err__sampled),
-        .if_dominant(la_bit_err__if_dominant),
-        .if_recessive(la_bit_err__if_recessive),
-        .decision(la_bit_err__decision)
-    );
-    drcc_m0__chan_b__bsp__detect__la_stuff_err la_stuff_err(
-        .clk(la_stuff_err__clk),
-        .sample(la_stuff_err__sample),
-        .sampled(la_stuff_err__sampled),
-        .if_dominant(la_stuff_err__if_dominant),
-        .if_recessive(la_stuff_err__if_recessive),
-        .decision(la_stuff_err__decision)
-    );
-    drcc_m0__chan_b__bsp__detect__la_form_err la_form_err(
-        .clk(la_form_err__clk),
-        .sample(la_form_err__sample),
-        .sampled(la_form_err__sampled),
-        .if_dominant(la_form_err__if_dominant),
-        .if_recessive(la_form_err__if_recessive),
-        .decision(la_form_err__decision)
-    );
-    drcc_m0__chan_b__bsp__detect__la_crc_err la_crc_err(
-        .clk(la_crc_err__clk),
-        .sample(la_crc_err__sample),
-        .sampled(la_crc_err__sampled),
-        .if_dominant(la_crc_err__if_dominant),
-        .if_recessive(la_crc_err__if_recessive),
-        .decision(la_crc_err__decision)
-    );
-    drcc_m0__chan_b__bsp__detect__la_ack_err la_ack_err(
-        .clk(la_ack_err__clk),
-        .sample(la_ack_err__sample),
-        .sampled(la_ack_err__sampled),
-        .if_dominant(la_ack_err__if_dominant),
-        .if_recessive(la_ack_err__if_recessive),
-        .decision(la_ack_err__decision)
-    );
     drcc_m0__chan_b__bsp__detect__la_sof_error la_sof_error(
         .clk(la_sof_error__clk),
         .sample(la_sof_error__sample),
@@ -12997,13 +12865,45 @@ module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         .if_recessive(la_lost__if_recessive),
         .decision(la_lost__decision)
     );
-    drcc_m0__chan_b__bsp__detect__la_tec_exempt la_tec_exempt(
-        .clk(la_tec_exempt__clk),
-        .sample(la_tec_exempt__sample),
-        .sampled(la_tec_exempt__sampled),
-        .if_dominant(la_tec_exempt__if_dominant),
-        .if_recessive(la_tec_exempt__if_recessive),
-        .decision(la_tec_exempt__decision)
+    drcc_m0__chan_b__bsp__detect__la_kind_bit la_kind_bit(
+        .clk(la_kind_bit__clk),
+        .sample(la_kind_bit__sample),
+        .sampled(la_kind_bit__sampled),
+        .if_dominant(la_kind_bit__if_dominant),
+        .if_recessive(la_kind_bit__if_recessive),
+        .decision(la_kind_bit__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_stuff la_kind_stuff(
+        .clk(la_kind_stuff__clk),
+        .sample(la_kind_stuff__sample),
+        .sampled(la_kind_stuff__sampled),
+        .if_dominant(la_kind_stuff__if_dominant),
+        .if_recessive(la_kind_stuff__if_recessive),
+        .decision(la_kind_stuff__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_crc la_kind_crc(
+        .clk(la_kind_crc__clk),
+        .sample(la_kind_crc__sample),
+        .sampled(la_kind_crc__sampled),
+        .if_dominant(la_kind_crc__if_dominant),
+        .if_recessive(la_kind_crc__if_recessive),
+        .decision(la_kind_crc__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_form la_kind_form(
+        .clk(la_kind_form__clk),
+        .sample(la_kind_form__sample),
+        .sampled(la_kind_form__sampled),
+        .if_dominant(la_kind_form__if_dominant),
+        .if_recessive(la_kind_form__if_recessive),
+        .decision(la_kind_form__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_ack la_kind_ack(
+        .clk(la_kind_ack__clk),
+        .sample(la_kind_ack__sample),
+        .sampled(la_kind_ack__sampled),
+        .if_dominant(la_kind_ack__if_dominant),
+        .if_recessive(la_kind_ack__if_recessive),
+        .decision(la_kind_ack__decision)
     );
     
     // Update code
@@ -13068,36 +12968,6 @@ module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         la_flag_error__if_dominant = if_dominant__flag_error;
         la_flag_error__if_recessive = if_recessive__flag_error;
         flag_error = la_flag_error__decision;
-        la_bit_err__clk = clk;
-        la_bit_err__sample = sample;
-        la_bit_err__sampled = sampled;
-        la_bit_err__if_dominant = if_dominant__bit_err;
-        la_bit_err__if_recessive = if_recessive__bit_err;
-        bit_err = la_bit_err__decision;
-        la_stuff_err__clk = clk;
-        la_stuff_err__sample = sample;
-        la_stuff_err__sampled = sampled;
-        la_stuff_err__if_dominant = if_dominant__stuff_err;
-        la_stuff_err__if_recessive = if_recessive__stuff_err;
-        stuff_err = la_stuff_err__decision;
-        la_form_err__clk = clk;
-        la_form_err__sample = sample;
-        la_form_err__sampled = sampled;
-        la_form_err__if_dominant = if_dominant__form_err;
-        la_form_err__if_recessive = if_recessive__form_err;
-        form_err = la_form_err__decision;
-        la_crc_err__clk = clk;
-        la_crc_err__sample = sample;
-        la_crc_err__sampled = sampled;
-        la_crc_err__if_dominant = if_dominant__crc_err;
-        la_crc_err__if_recessive = if_recessive__crc_err;
-        crc_err = la_crc_err__decision;
-        la_ack_err__clk = clk;
-        la_ack_err__sample = sample;
-        la_ack_err__sampled = sampled;
-        la_ack_err__if_dominant = if_dominant__ack_err;
-        la_ack_err__if_recessive = if_recessive__ack_err;
-        ack_err = la_ack_err__decision;
         la_sof_error__clk = clk;
         la_sof_error__sample = sample;
         la_sof_error__sampled = sampled;
@@ -13110,12 +12980,48 @@ module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_fra
         la_lost__if_dominant = if_dominant__lost;
         la_lost__if_recessive = if_recessive__lost;
         lost = la_lost__decision;
-        la_tec_exempt__clk = clk;
-        la_tec_exempt__sample = sample;
-        la_tec_exempt__sampled = sampled;
-        la_tec_exempt__if_dominant = if_dominant__tec_exempt;
-        la_tec_exempt__if_recessive = if_recessive__tec_exempt;
-        tec_exempt = la_tec_exempt__decision;
+        dom_capture = if_dominant__error || if_dominant__flag_error;
+        dom_kind_bit = dom_capture && if_dominant__bit_err;
+        dom_kind_stuff = dom_capture && ~if_dominant__bit_err && if_dominant__stuff_err;
+        dom_kind_form = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && if_dominant__form_err;
+        dom_kind_ack = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && if_dominant__ack_err;
+        dom_kind_crc = if_dominant__crc_err && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && ~if_dominant__ack_err;
+        rec_capture = if_recessive__error || if_recessive__flag_error;
+        rec_kind_bit = rec_capture && if_recessive__bit_err;
+        rec_kind_stuff = rec_capture && ~if_recessive__bit_err && if_recessive__stuff_err;
+        rec_kind_form = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && if_recessive__form_err;
+        rec_kind_ack = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && if_recessive__ack_err;
+        rec_kind_crc = if_recessive__crc_err && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && ~if_recessive__ack_err;
+        la_kind_bit__clk = clk;
+        la_kind_bit__sample = sample;
+        la_kind_bit__sampled = sampled;
+        la_kind_bit__if_dominant = dom_kind_bit;
+        la_kind_bit__if_recessive = rec_kind_bit;
+        kind_bit = la_kind_bit__decision;
+        la_kind_stuff__clk = clk;
+        la_kind_stuff__sample = sample;
+        la_kind_stuff__sampled = sampled;
+        la_kind_stuff__if_dominant = dom_kind_stuff;
+        la_kind_stuff__if_recessive = rec_kind_stuff;
+        kind_stuff = la_kind_stuff__decision;
+        la_kind_crc__clk = clk;
+        la_kind_crc__sample = sample;
+        la_kind_crc__sampled = sampled;
+        la_kind_crc__if_dominant = dom_kind_crc;
+        la_kind_crc__if_recessive = rec_kind_crc;
+        kind_crc = la_kind_crc__decision;
+        la_kind_form__clk = clk;
+        la_kind_form__sample = sample;
+        la_kind_form__sampled = sampled;
+        la_kind_form__if_dominant = dom_kind_form;
+        la_kind_form__if_recessive = rec_kind_form;
+        kind_form = la_kind_form__decision;
+        la_kind_ack__clk = clk;
+        la_kind_ack__sample = sample;
+        la_kind_ack__sampled = sampled;
+        la_kind_ack__if_dominant = dom_kind_ack;
+        la_kind_ack__if_recessive = rec_kind_ack;
+        kind_ack = la_kind_ack__decision;
     end
     
 endmodule // drcc_m0__chan_b__bsp__detect
@@ -13427,249 +13333,6 @@ module drcc_m0__chan_b__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_
 endmodule // drcc_m0__chan_b__bsp__detect__if_recessive
 
 
-module drcc_m0__chan_b__bsp__detect__la_ack_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_b__bsp__detect__la_ack_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_b__bsp__detect__la_ack_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_b__bsp__detect__la_ack_err
-
-
-module drcc_m0__chan_b__bsp__detect__la_ack_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_ack_err__dominant_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_ack_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_ack_err__recessive_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_bit_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_b__bsp__detect__la_bit_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_b__bsp__detect__la_bit_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_b__bsp__detect__la_bit_err
-
-
-module drcc_m0__chan_b__bsp__detect__la_bit_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_bit_err__dominant_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_bit_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_bit_err__recessive_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_crc_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_b__bsp__detect__la_crc_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_b__bsp__detect__la_crc_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_b__bsp__detect__la_crc_err
-
-
-module drcc_m0__chan_b__bsp__detect__la_crc_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_crc_err__dominant_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_crc_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_crc_err__recessive_q
-
-
 module drcc_m0__chan_b__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
@@ -13832,7 +13495,7 @@ module drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q(d,q,clock);
 endmodule // drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q
 
 
-module drcc_m0__chan_b__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,if_recessive,decision);
+module drcc_m0__chan_b__bsp__detect__la_kind_ack(clk,sample,sampled,if_dominant,if_recessive,decision);
     
     // Module arguments
     input wire  clk;
@@ -13851,12 +13514,12 @@ module drcc_m0__chan_b__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,
     reg  recessive_q__clock;
     
     // Sub module instances
-    drcc_m0__chan_b__bsp__detect__la_form_err__dominant_q dominant_q(
+    drcc_m0__chan_b__bsp__detect__la_kind_ack__dominant_q dominant_q(
         .d(dominant_q__d),
         .q(dominant_q__q),
         .clock(dominant_q__clock)
     );
-    drcc_m0__chan_b__bsp__detect__la_form_err__recessive_q recessive_q(
+    drcc_m0__chan_b__bsp__detect__la_kind_ack__recessive_q recessive_q(
         .d(recessive_q__d),
         .q(recessive_q__q),
         .clock(recessive_q__clock)
@@ -13878,10 +13541,10 @@ module drcc_m0__chan_b__bsp__detect__la_form_err(clk,sample,sampled,if_dominant,
         end
     end
     
-endmodule // drcc_m0__chan_b__bsp__detect__la_form_err
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_ack
 
 
-module drcc_m0__chan_b__bsp__detect__la_form_err__dominant_q(d,q,clock);
+module drcc_m0__chan_b__bsp__detect__la_kind_ack__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13894,10 +13557,10 @@ module drcc_m0__chan_b__bsp__detect__la_form_err__dominant_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__detect__la_form_err__dominant_q
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_ack__dominant_q
 
 
-module drcc_m0__chan_b__bsp__detect__la_form_err__recessive_q(d,q,clock);
+module drcc_m0__chan_b__bsp__detect__la_kind_ack__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13910,7 +13573,331 @@ module drcc_m0__chan_b__bsp__detect__la_form_err__recessive_q(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__detect__la_form_err__recessive_q
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_ack__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_bit(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_bit__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_bit__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_bit
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_bit__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_bit__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_bit__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_bit__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_crc(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_crc__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_crc__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_crc
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_crc__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_crc__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_crc__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_crc__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_form(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_form__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_form__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_form
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_form__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_form__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_form__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_form__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_stuff(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_stuff__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_stuff__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_stuff
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_stuff__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_stuff__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_stuff__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_stuff__recessive_q
 
 
 module drcc_m0__chan_b__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
@@ -14075,179 +14062,17 @@ module drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q(d,q,clock);
 endmodule // drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q
 
 
-module drcc_m0__chan_b__bsp__detect__la_stuff_err(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_b__bsp__detect__la_stuff_err__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_b__bsp__detect__la_stuff_err__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_b__bsp__detect__la_stuff_err
-
-
-module drcc_m0__chan_b__bsp__detect__la_stuff_err__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_stuff_err__dominant_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_stuff_err__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_stuff_err__recessive_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_tec_exempt(clk,sample,sampled,if_dominant,if_recessive,decision);
-    
-    // Module arguments
-    input wire  clk;
-    input wire  sample;
-    input wire  sampled;
-    input wire  if_dominant;
-    input wire  if_recessive;
-    output reg  decision;
-    
-    // Stub signals
-    reg  dominant_q__d;
-    wire  dominant_q__q;
-    reg  dominant_q__clock;
-    reg  recessive_q__d;
-    wire  recessive_q__q;
-    reg  recessive_q__clock;
-    
-    // Sub module instances
-    drcc_m0__chan_b__bsp__detect__la_tec_exempt__dominant_q dominant_q(
-        .d(dominant_q__d),
-        .q(dominant_q__q),
-        .clock(dominant_q__clock)
-    );
-    drcc_m0__chan_b__bsp__detect__la_tec_exempt__recessive_q recessive_q(
-        .d(recessive_q__d),
-        .q(recessive_q__q),
-        .clock(recessive_q__clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        dominant_q__clock = clk;
-        recessive_q__clock = clk;
-        dominant_q__d = dominant_q__q;
-        recessive_q__d = recessive_q__q;
-        dominant_q__d = if_dominant;
-        recessive_q__d = if_recessive;
-        if (sampled) begin
-            decision = sample && recessive_q__q;
-        end
-        else begin
-            decision = sample && dominant_q__q;
-        end
-    end
-    
-endmodule // drcc_m0__chan_b__bsp__detect__la_tec_exempt
-
-
-module drcc_m0__chan_b__bsp__detect__la_tec_exempt__dominant_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_tec_exempt__dominant_q
-
-
-module drcc_m0__chan_b__bsp__detect__la_tec_exempt__recessive_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // drcc_m0__chan_b__bsp__detect__la_tec_exempt__recessive_q
-
-
-module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  capture;
-    input wire  bit_err;
-    input wire  stuff_err;
-    input wire  form_err;
-    input wire  ack_err;
-    input wire  crc_err;
+    input wire  kind_bit;
+    input wire  kind_stuff;
+    input wire  kind_form;
+    input wire  kind_ack;
+    input wire  kind_crc;
     input wire  as_tx;
     input wire  arb_lost;
     input wire  [4:0] field;
@@ -14503,20 +14328,17 @@ module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
         p_cnt_form_max__d = cnt_form_q__q == max8;
         p_cnt_ack_max__d = cnt_ack_q__q == max8;
         kind = k_crc;
-        if (bit_err) begin
+        if (kind_bit) begin
             kind = k_bit;
         end
-        else if (stuff_err) begin
+        else if (kind_stuff) begin
             kind = k_stuff;
         end
-        else if (form_err) begin
+        else if (kind_form) begin
             kind = k_form;
         end
-        else if (ack_err) begin
+        else if (kind_ack) begin
             kind = k_ack;
-        end
-        else if (crc_err) begin
-            kind = k_crc;
         end
         err_valid_q__d = 1'b0;
         if (capture) begin
@@ -14524,21 +14346,21 @@ module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
             err_kind_q__d = kind;
             err_field_q__d = field;
             err_tx_q__d = as_tx;
-            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
-                cnt_bit_q__d = cnt_bit_q__q + one8;
-            end
-            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
-                cnt_stuff_q__d = cnt_stuff_q__q + one8;
-            end
-            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
-                cnt_crc_q__d = cnt_crc_q__q + one8;
-            end
-            if ((kind == k_form) && ~p_cnt_form_max__q) begin
-                cnt_form_q__d = cnt_form_q__q + one8;
-            end
-            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
-                cnt_ack_q__d = cnt_ack_q__q + one8;
-            end
+        end
+        if (kind_bit && ~p_cnt_bit_max__q) begin
+            cnt_bit_q__d = cnt_bit_q__q + one8;
+        end
+        if (kind_stuff && ~p_cnt_stuff_max__q) begin
+            cnt_stuff_q__d = cnt_stuff_q__q + one8;
+        end
+        if (kind_crc && ~p_cnt_crc_max__q) begin
+            cnt_crc_q__d = cnt_crc_q__q + one8;
+        end
+        if (kind_form && ~p_cnt_form_max__q) begin
+            cnt_form_q__d = cnt_form_q__q + one8;
+        end
+        if (kind_ack && ~p_cnt_ack_max__q) begin
+            cnt_ack_q__d = cnt_ack_q__q + one8;
         end
         if (arb_lost) begin
             alc_q__d = p_alc__q;
@@ -16796,7 +16618,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     reg  if_dominant__delim_first;
     reg  if_dominant__dom7;
     reg  if_dominant__ack_pending;
-    reg  if_dominant__tx_valid;
     reg  if_dominant__listen_only;
     reg  if_dominant__error;
     reg  if_dominant__flag_error;
@@ -16812,7 +16633,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     wire  if_dominant__tec_add8;
     wire  if_dominant__rec_add1;
     wire  if_dominant__rec_add8;
-    wire  if_dominant__tx_success;
     wire  if_dominant__rx_success;
     wire  if_dominant__passive_after;
     wire  if_dominant__bus_off_after;
@@ -16831,7 +16651,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     reg  if_recessive__delim_first;
     reg  if_recessive__dom7;
     reg  if_recessive__ack_pending;
-    reg  if_recessive__tx_valid;
     reg  if_recessive__listen_only;
     reg  if_recessive__error;
     reg  if_recessive__flag_error;
@@ -16847,7 +16666,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     wire  if_recessive__tec_add8;
     wire  if_recessive__rec_add1;
     wire  if_recessive__rec_add8;
-    wire  if_recessive__tx_success;
     wire  if_recessive__rx_success;
     wire  if_recessive__passive_after;
     wire  if_recessive__bus_off_after;
@@ -16923,7 +16741,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .delim_first(if_dominant__delim_first),
         .dom7(if_dominant__dom7),
         .ack_pending(if_dominant__ack_pending),
-        .tx_valid(if_dominant__tx_valid),
         .listen_only(if_dominant__listen_only),
         .error(if_dominant__error),
         .flag_error(if_dominant__flag_error),
@@ -16939,7 +16756,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .tec_add8(if_dominant__tec_add8),
         .rec_add1(if_dominant__rec_add1),
         .rec_add8(if_dominant__rec_add8),
-        .tx_success(if_dominant__tx_success),
         .rx_success(if_dominant__rx_success),
         .passive_after(if_dominant__passive_after),
         .bus_off_after(if_dominant__bus_off_after),
@@ -16960,7 +16776,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .delim_first(if_recessive__delim_first),
         .dom7(if_recessive__dom7),
         .ack_pending(if_recessive__ack_pending),
-        .tx_valid(if_recessive__tx_valid),
         .listen_only(if_recessive__listen_only),
         .error(if_recessive__error),
         .flag_error(if_recessive__flag_error),
@@ -16976,7 +16791,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         .tec_add8(if_recessive__tec_add8),
         .rec_add1(if_recessive__rec_add1),
         .rec_add8(if_recessive__rec_add8),
-        .tx_success(if_recessive__tx_success),
         .rx_success(if_recessive__rx_success),
         .passive_after(if_recessive__passive_after),
         .bus_off_after(if_recessive__bus_off_after),
@@ -17068,7 +16882,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         if_dominant__dom7 = dom7;
         if_dominant__ack_pending = ack_pending;
         if_dominant__listen_only = listen_only;
-        if_dominant__tx_valid = 1'b0;
         if_dominant__error = dom_error;
         if_dominant__flag_error = dom_flag_error;
         if_dominant__ack_err = dom_ack_err;
@@ -17094,7 +16907,6 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         if_recessive__dom7 = dom7;
         if_recessive__ack_pending = ack_pending;
         if_recessive__listen_only = listen_only;
-        if_recessive__tx_valid = 1'b0;
         if_recessive__error = rec_error;
         if_recessive__flag_error = rec_flag_error;
         if_recessive__ack_err = rec_ack_err;
@@ -17160,7 +16972,7 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
 endmodule // drcc_m0__chan_b__bsp__rules
 
 
-module drcc_m0__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -17176,7 +16988,6 @@ module drcc_m0__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,fiel
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -17192,7 +17003,6 @@ module drcc_m0__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,fiel
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -17290,14 +17100,13 @@ module drcc_m0__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,fiel
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
 endmodule // drcc_m0__chan_b__bsp__rules__if_dominant
 
 
-module drcc_m0__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  sample;
@@ -17313,7 +17122,6 @@ module drcc_m0__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,fie
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
     input wire  error;
     input wire  flag_error;
@@ -17329,7 +17137,6 @@ module drcc_m0__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,fie
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
     output reg  passive_after;
     output reg  bus_off_after;
@@ -17427,7 +17234,6 @@ module drcc_m0__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,fie
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     

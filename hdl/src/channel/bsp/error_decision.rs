@@ -62,23 +62,22 @@ pub struct ErrorDecision {
     pub error: Signal<Out, Bit>,
     /// A bit error in the node's own error or overload flag (rules d/e).
     pub flag_error: Signal<Out, Bit>,
-    /// The error counts as a bit error (contract §9): monitoring, a stuff bit
-    /// of its own read back wrong, or an error in its own flag.
-    pub bit_err: Signal<Out, Bit>,
-    /// Stuff error.
-    pub stuff_err: Signal<Out, Bit>,
-    /// Form error.
-    pub form_err: Signal<Out, Bit>,
-    /// CRC error.
-    pub crc_err: Signal<Out, Bit>,
-    /// ACK error.
-    pub ack_err: Signal<Out, Bit>,
     /// The node's own SOF read back recessive (a bit error as transmitter).
     pub sof_error: Signal<Out, Bit>,
     /// Arbitration lost: recessive sent, dominant read in arbitration.
     pub lost: Signal<Out, Bit>,
-    /// 12.1.4.2 rule c exception 2: the stuff error needs no TEC increment.
-    pub tec_exempt: Signal<Out, Bit>,
+    // the error code capture (contract §9): an error starts a flag and its one
+    // kind, by the precedence bit, stuff, form, ACK, CRC
+    /// An error is captured and it is a bit error (monitoring, its own stuff bit read back wrong, or its own flag).
+    pub kind_bit: Signal<Out, Bit>,
+    /// An error is captured and it is a stuff error.
+    pub kind_stuff: Signal<Out, Bit>,
+    /// An error is captured and it is a CRC error.
+    pub kind_crc: Signal<Out, Bit>,
+    /// An error is captured and it is a form error.
+    pub kind_form: Signal<Out, Bit>,
+    /// An error is captured and it is an ACK error.
+    pub kind_ack: Signal<Out, Bit>,
     // the checks for either level, unregistered, for the rules' lookahead
     /// `error` if the next sample point reads dominant (before the register).
     pub dom_error: Signal<Out, Bit>,
@@ -105,14 +104,25 @@ pub struct ErrorDecision {
     if_recessive: ErrorDetection,
     la_error: SampleLookahead,
     la_flag_error: SampleLookahead,
-    la_bit_err: SampleLookahead,
-    la_stuff_err: SampleLookahead,
-    la_form_err: SampleLookahead,
-    la_crc_err: SampleLookahead,
-    la_ack_err: SampleLookahead,
     la_sof_error: SampleLookahead,
     la_lost: SampleLookahead,
-    la_tec_exempt: SampleLookahead,
+    la_kind_bit: SampleLookahead,
+    la_kind_stuff: SampleLookahead,
+    la_kind_crc: SampleLookahead,
+    la_kind_form: SampleLookahead,
+    la_kind_ack: SampleLookahead,
+    dom_kind_bit: Signal<Local, Bit>,
+    dom_kind_stuff: Signal<Local, Bit>,
+    dom_kind_crc: Signal<Local, Bit>,
+    dom_kind_form: Signal<Local, Bit>,
+    dom_kind_ack: Signal<Local, Bit>,
+    rec_kind_bit: Signal<Local, Bit>,
+    rec_kind_stuff: Signal<Local, Bit>,
+    rec_kind_crc: Signal<Local, Bit>,
+    rec_kind_form: Signal<Local, Bit>,
+    rec_kind_ack: Signal<Local, Bit>,
+    dom_capture: Signal<Local, Bit>,
+    rec_capture: Signal<Local, Bit>,
 }
 
 impl Logic for ErrorDecision {
@@ -182,36 +192,6 @@ impl Logic for ErrorDecision {
         self.la_flag_error.if_dominant.next = self.if_dominant.flag_error.val();
         self.la_flag_error.if_recessive.next = self.if_recessive.flag_error.val();
         self.flag_error.next = self.la_flag_error.decision.val();
-        self.la_bit_err.clk.next = self.clk.val();
-        self.la_bit_err.sample.next = self.sample.val();
-        self.la_bit_err.sampled.next = self.sampled.val();
-        self.la_bit_err.if_dominant.next = self.if_dominant.bit_err.val();
-        self.la_bit_err.if_recessive.next = self.if_recessive.bit_err.val();
-        self.bit_err.next = self.la_bit_err.decision.val();
-        self.la_stuff_err.clk.next = self.clk.val();
-        self.la_stuff_err.sample.next = self.sample.val();
-        self.la_stuff_err.sampled.next = self.sampled.val();
-        self.la_stuff_err.if_dominant.next = self.if_dominant.stuff_err.val();
-        self.la_stuff_err.if_recessive.next = self.if_recessive.stuff_err.val();
-        self.stuff_err.next = self.la_stuff_err.decision.val();
-        self.la_form_err.clk.next = self.clk.val();
-        self.la_form_err.sample.next = self.sample.val();
-        self.la_form_err.sampled.next = self.sampled.val();
-        self.la_form_err.if_dominant.next = self.if_dominant.form_err.val();
-        self.la_form_err.if_recessive.next = self.if_recessive.form_err.val();
-        self.form_err.next = self.la_form_err.decision.val();
-        self.la_crc_err.clk.next = self.clk.val();
-        self.la_crc_err.sample.next = self.sample.val();
-        self.la_crc_err.sampled.next = self.sampled.val();
-        self.la_crc_err.if_dominant.next = self.if_dominant.crc_err.val();
-        self.la_crc_err.if_recessive.next = self.if_recessive.crc_err.val();
-        self.crc_err.next = self.la_crc_err.decision.val();
-        self.la_ack_err.clk.next = self.clk.val();
-        self.la_ack_err.sample.next = self.sample.val();
-        self.la_ack_err.sampled.next = self.sampled.val();
-        self.la_ack_err.if_dominant.next = self.if_dominant.ack_err.val();
-        self.la_ack_err.if_recessive.next = self.if_recessive.ack_err.val();
-        self.ack_err.next = self.la_ack_err.decision.val();
         self.la_sof_error.clk.next = self.clk.val();
         self.la_sof_error.sample.next = self.sample.val();
         self.la_sof_error.sampled.next = self.sampled.val();
@@ -224,12 +204,78 @@ impl Logic for ErrorDecision {
         self.la_lost.if_dominant.next = self.if_dominant.lost.val();
         self.la_lost.if_recessive.next = self.if_recessive.lost.val();
         self.lost.next = self.la_lost.decision.val();
-        self.la_tec_exempt.clk.next = self.clk.val();
-        self.la_tec_exempt.sample.next = self.sample.val();
-        self.la_tec_exempt.sampled.next = self.sampled.val();
-        self.la_tec_exempt.if_dominant.next = self.if_dominant.tec_exempt.val();
-        self.la_tec_exempt.if_recessive.next = self.if_recessive.tec_exempt.val();
-        self.tec_exempt.next = self.la_tec_exempt.decision.val();
+        // The kind of a captured error for either level (contract §9), one-hot:
+        // the error code capture then counts without a decoder.
+        self.dom_capture.next = self.if_dominant.error.val() || self.if_dominant.flag_error.val();
+        self.dom_kind_bit.next = self.dom_capture.val() && self.if_dominant.bit_err.val();
+        self.dom_kind_stuff.next = self.dom_capture.val()
+            && !self.if_dominant.bit_err.val()
+            && self.if_dominant.stuff_err.val();
+        self.dom_kind_form.next = self.dom_capture.val()
+            && !self.if_dominant.bit_err.val()
+            && !self.if_dominant.stuff_err.val()
+            && self.if_dominant.form_err.val();
+        self.dom_kind_ack.next = self.dom_capture.val()
+            && !self.if_dominant.bit_err.val()
+            && !self.if_dominant.stuff_err.val()
+            && !self.if_dominant.form_err.val()
+            && self.if_dominant.ack_err.val();
+        // (a captured error with none of the four above is always a CRC error)
+        self.dom_kind_crc.next = self.if_dominant.crc_err.val()
+            && !self.if_dominant.bit_err.val()
+            && !self.if_dominant.stuff_err.val()
+            && !self.if_dominant.form_err.val()
+            && !self.if_dominant.ack_err.val();
+        self.rec_capture.next = self.if_recessive.error.val() || self.if_recessive.flag_error.val();
+        self.rec_kind_bit.next = self.rec_capture.val() && self.if_recessive.bit_err.val();
+        self.rec_kind_stuff.next = self.rec_capture.val()
+            && !self.if_recessive.bit_err.val()
+            && self.if_recessive.stuff_err.val();
+        self.rec_kind_form.next = self.rec_capture.val()
+            && !self.if_recessive.bit_err.val()
+            && !self.if_recessive.stuff_err.val()
+            && self.if_recessive.form_err.val();
+        self.rec_kind_ack.next = self.rec_capture.val()
+            && !self.if_recessive.bit_err.val()
+            && !self.if_recessive.stuff_err.val()
+            && !self.if_recessive.form_err.val()
+            && self.if_recessive.ack_err.val();
+        // (a captured error with none of the four above is always a CRC error)
+        self.rec_kind_crc.next = self.if_recessive.crc_err.val()
+            && !self.if_recessive.bit_err.val()
+            && !self.if_recessive.stuff_err.val()
+            && !self.if_recessive.form_err.val()
+            && !self.if_recessive.ack_err.val();
+        self.la_kind_bit.clk.next = self.clk.val();
+        self.la_kind_bit.sample.next = self.sample.val();
+        self.la_kind_bit.sampled.next = self.sampled.val();
+        self.la_kind_bit.if_dominant.next = self.dom_kind_bit.val();
+        self.la_kind_bit.if_recessive.next = self.rec_kind_bit.val();
+        self.kind_bit.next = self.la_kind_bit.decision.val();
+        self.la_kind_stuff.clk.next = self.clk.val();
+        self.la_kind_stuff.sample.next = self.sample.val();
+        self.la_kind_stuff.sampled.next = self.sampled.val();
+        self.la_kind_stuff.if_dominant.next = self.dom_kind_stuff.val();
+        self.la_kind_stuff.if_recessive.next = self.rec_kind_stuff.val();
+        self.kind_stuff.next = self.la_kind_stuff.decision.val();
+        self.la_kind_crc.clk.next = self.clk.val();
+        self.la_kind_crc.sample.next = self.sample.val();
+        self.la_kind_crc.sampled.next = self.sampled.val();
+        self.la_kind_crc.if_dominant.next = self.dom_kind_crc.val();
+        self.la_kind_crc.if_recessive.next = self.rec_kind_crc.val();
+        self.kind_crc.next = self.la_kind_crc.decision.val();
+        self.la_kind_form.clk.next = self.clk.val();
+        self.la_kind_form.sample.next = self.sample.val();
+        self.la_kind_form.sampled.next = self.sampled.val();
+        self.la_kind_form.if_dominant.next = self.dom_kind_form.val();
+        self.la_kind_form.if_recessive.next = self.rec_kind_form.val();
+        self.kind_form.next = self.la_kind_form.decision.val();
+        self.la_kind_ack.clk.next = self.clk.val();
+        self.la_kind_ack.sample.next = self.sample.val();
+        self.la_kind_ack.sampled.next = self.sampled.val();
+        self.la_kind_ack.if_dominant.next = self.dom_kind_ack.val();
+        self.la_kind_ack.if_recessive.next = self.rec_kind_ack.val();
+        self.kind_ack.next = self.la_kind_ack.decision.val();
     }
 }
 

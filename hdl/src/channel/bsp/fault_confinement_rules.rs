@@ -45,8 +45,6 @@ pub struct FaultConfinementRules {
     /// Rule c exception 1 is pending: a passive ACK error, counted only if a
     /// dominant bit comes during its passive flag.
     pub ack_pending: Signal<In, Bit>,
-    /// At a sample point: the frame is valid for its transmitter (10.7).
-    pub tx_valid: Signal<In, Bit>,
     /// Listen-only (contract §7): the counters never change, flags are passive.
     pub listen_only: Signal<In, Bit>,
     // from error detection (at a sample point)
@@ -81,8 +79,6 @@ pub struct FaultConfinementRules {
     pub rec_add1: Signal<Out, Bit>,
     /// REC + 8 (rules b, d, e, f for a receiver).
     pub rec_add8: Signal<Out, Bit>,
-    /// TEC - 1 (rule g).
-    pub tx_success: Signal<Out, Bit>,
     /// REC - 1 (rule h).
     pub rx_success: Signal<Out, Bit>,
     // the error state after this sample's events (rules i/j, 12.1.4.4)
@@ -177,8 +173,7 @@ impl Logic for FaultConfinementRules {
         self.tec_add8.next = self.ev_tec_add8.val() && !self.listen_only.val();
         self.rec_add1.next = self.ev_rec_add1.val() && !self.listen_only.val();
         self.rec_add8.next = self.ev_rec_add8.val() && !self.listen_only.val();
-        // Rule g: the frame was valid for its transmitter.
-        self.tx_success.next = self.tx_valid.val() && !self.listen_only.val();
+        // Rule g (TEC - 1) is the protocol controller's own strobe: `rules_decision`.
         self.rx_success.next = self.ev_rx_success.val() && !self.listen_only.val();
     }
 }

@@ -337,11 +337,11 @@ impl Logic for ProtocolController {
 
         // ---- diagnostics (contract §9)
         self.err_capture.capture.next = self.detect.error.val() || self.detect.flag_error.val();
-        self.err_capture.bit_err.next = self.detect.bit_err.val();
-        self.err_capture.stuff_err.next = self.detect.stuff_err.val();
-        self.err_capture.form_err.next = self.detect.form_err.val();
-        self.err_capture.ack_err.next = self.detect.ack_err.val();
-        self.err_capture.crc_err.next = self.detect.crc_err.val();
+        self.err_capture.kind_bit.next = self.detect.kind_bit.val();
+        self.err_capture.kind_stuff.next = self.detect.kind_stuff.val();
+        self.err_capture.kind_form.next = self.detect.kind_form.val();
+        self.err_capture.kind_ack.next = self.detect.kind_ack.val();
+        self.err_capture.kind_crc.next = self.detect.kind_crc.val();
         self.err_capture.as_tx.next = self.fsm.is_tx.val() || self.detect.sof_error.val();
         self.err_capture.arb_lost.next = self.detect.lost.val();
         self.err_capture.field.next = self.fsm.field.val();

@@ -147,7 +147,6 @@ impl Logic for RulesDecision {
         self.if_dominant.dom7.next = self.dom7.val();
         self.if_dominant.ack_pending.next = self.ack_pending.val();
         self.if_dominant.listen_only.next = self.listen_only.val();
-        self.if_dominant.tx_valid.next = false;
         self.if_dominant.error.next = self.dom_error.val();
         self.if_dominant.flag_error.next = self.dom_flag_error.val();
         self.if_dominant.ack_err.next = self.dom_ack_err.val();
@@ -173,7 +172,6 @@ impl Logic for RulesDecision {
         self.if_recessive.dom7.next = self.dom7.val();
         self.if_recessive.ack_pending.next = self.ack_pending.val();
         self.if_recessive.listen_only.next = self.listen_only.val();
-        self.if_recessive.tx_valid.next = false;
         self.if_recessive.error.next = self.rec_error.val();
         self.if_recessive.flag_error.next = self.rec_flag_error.val();
         self.if_recessive.ack_err.next = self.rec_ack_err.val();
@@ -234,7 +232,8 @@ impl Logic for RulesDecision {
         self.la_ack_counted.if_dominant.next = self.if_dominant.ack_counted.val();
         self.la_ack_counted.if_recessive.next = self.if_recessive.ack_counted.val();
         self.ack_counted.next = self.la_ack_counted.decision.val();
-        // Rule g comes from the protocol controller's own strobe, not looked ahead.
+        // Rule g: the frame was valid for its transmitter (the protocol
+        // controller's own strobe, not looked ahead).
         self.tx_success.next = self.tx_valid.val() && !self.listen_only.val();
     }
 }

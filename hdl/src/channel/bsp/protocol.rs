@@ -10,13 +10,19 @@
 //! - `bit_stuffing`: stuffing and destuffing (10.5);
 //! - `frame_crc`: the CRC-15 register and check (10.4.2.6);
 //! - `tx_frame` / `rx_frame`: the frame sent and the frame received (10.4.2);
-//! - `error_detection`: bit, stuff, CRC, form and ACK errors (12.1.3);
+//! - `error_detection`: bit, stuff, CRC, form and ACK errors (12.1.3), run by
+//!   `error_decision` one clock ahead for either bus level;
 //! - `fault_confinement_rules` and `fault_confinement`: the counting rules and
-//!   the error counters (12.1.4);
+//!   the error counters (12.1.4); the rules are run one clock ahead the same
+//!   way by `rules_decision`;
 //! - `error_capture`: error code capture and counts (contract §9).
 //!
 //! All wiring here is combinational: a signal decided at a sample point reaches
-//! the unit that uses it in the same clock, as it did in one block. Decisions
+//! the unit that uses it in the same clock, as it did in one block. For Fmax on
+//! the iCE40UP5K the error checks and counting rules are registered the clock
+//! before for a dominant and a recessive sample (`sample_lookahead`: their
+//! inputs are stable then), so at the sample point they are one LUT after
+//! `sample` and `sampled`; the values are the same in every clock. Decisions
 //! where the standard leaves room are written in the timing contract:
 //! - The type of error flag (active or passive) is the error state after the
 //!   counters have been updated for the error that starts it (contract §4.5).

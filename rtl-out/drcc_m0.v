@@ -3024,6 +3024,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     wire  rx_frame__rx_rtr;
     wire  [3:0] rx_frame__rx_dlc;
     wire  [63:0] rx_frame__rx_data;
+    reg  detect__clk;
     reg  detect__sample;
     reg  detect__sampled;
     reg  [4:0] detect__field;
@@ -3045,14 +3046,23 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  detect__ack_check_off;
     wire  detect__error;
     wire  detect__flag_error;
-    wire  detect__bit_err;
-    wire  detect__stuff_err;
-    wire  detect__form_err;
-    wire  detect__crc_err;
-    wire  detect__ack_err;
     wire  detect__sof_error;
     wire  detect__lost;
-    wire  detect__tec_exempt;
+    wire  detect__kind_bit;
+    wire  detect__kind_stuff;
+    wire  detect__kind_crc;
+    wire  detect__kind_form;
+    wire  detect__kind_ack;
+    wire  detect__dom_error;
+    wire  detect__dom_flag_error;
+    wire  detect__dom_ack_err;
+    wire  detect__dom_tec_exempt;
+    wire  detect__dom_sof_error;
+    wire  detect__rec_error;
+    wire  detect__rec_flag_error;
+    wire  detect__rec_ack_err;
+    wire  detect__rec_tec_exempt;
+    wire  detect__rec_sof_error;
     reg  rules__clk;
     reg  rules__sample;
     reg  rules__sampled;
@@ -3067,13 +3077,18 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  rules__delim_first;
     reg  rules__dom7;
     reg  rules__ack_pending;
-    reg  rules__tx_valid;
     reg  rules__listen_only;
-    reg  rules__error;
-    reg  rules__flag_error;
-    reg  rules__ack_err;
-    reg  rules__tec_exempt;
-    reg  rules__as_tx;
+    reg  rules__tx_valid;
+    reg  rules__dom_error;
+    reg  rules__dom_flag_error;
+    reg  rules__dom_ack_err;
+    reg  rules__dom_tec_exempt;
+    reg  rules__dom_sof_error;
+    reg  rules__rec_error;
+    reg  rules__rec_flag_error;
+    reg  rules__rec_ack_err;
+    reg  rules__rec_tec_exempt;
+    reg  rules__rec_sof_error;
     reg  [8:0] rules__tec;
     reg  [7:0] rules__rec;
     reg  rules__error_passive;
@@ -3081,8 +3096,8 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     wire  rules__tec_add8;
     wire  rules__rec_add1;
     wire  rules__rec_add8;
-    wire  rules__tx_success;
     wire  rules__rx_success;
+    wire  rules__tx_success;
     wire  rules__passive_after;
     wire  rules__bus_off_after;
     wire  rules__ack_defer;
@@ -3106,11 +3121,11 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  err_capture__clk;
     reg  err_capture__rst;
     reg  err_capture__capture;
-    reg  err_capture__bit_err;
-    reg  err_capture__stuff_err;
-    reg  err_capture__form_err;
-    reg  err_capture__ack_err;
-    reg  err_capture__crc_err;
+    reg  err_capture__kind_bit;
+    reg  err_capture__kind_stuff;
+    reg  err_capture__kind_form;
+    reg  err_capture__kind_ack;
+    reg  err_capture__kind_crc;
     reg  err_capture__as_tx;
     reg  err_capture__arb_lost;
     reg  [4:0] err_capture__field;
@@ -3299,6 +3314,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .rx_data(rx_frame__rx_data)
     );
     drcc_m0__chan_a__bsp__detect detect(
+        .clk(detect__clk),
         .sample(detect__sample),
         .sampled(detect__sampled),
         .field(detect__field),
@@ -3320,14 +3336,23 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .ack_check_off(detect__ack_check_off),
         .error(detect__error),
         .flag_error(detect__flag_error),
-        .bit_err(detect__bit_err),
-        .stuff_err(detect__stuff_err),
-        .form_err(detect__form_err),
-        .crc_err(detect__crc_err),
-        .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt)
+        .kind_bit(detect__kind_bit),
+        .kind_stuff(detect__kind_stuff),
+        .kind_crc(detect__kind_crc),
+        .kind_form(detect__kind_form),
+        .kind_ack(detect__kind_ack),
+        .dom_error(detect__dom_error),
+        .dom_flag_error(detect__dom_flag_error),
+        .dom_ack_err(detect__dom_ack_err),
+        .dom_tec_exempt(detect__dom_tec_exempt),
+        .dom_sof_error(detect__dom_sof_error),
+        .rec_error(detect__rec_error),
+        .rec_flag_error(detect__rec_flag_error),
+        .rec_ack_err(detect__rec_ack_err),
+        .rec_tec_exempt(detect__rec_tec_exempt),
+        .rec_sof_error(detect__rec_sof_error)
     );
     drcc_m0__chan_a__bsp__rules rules(
         .clk(rules__clk),
@@ -3344,13 +3369,18 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .delim_first(rules__delim_first),
         .dom7(rules__dom7),
         .ack_pending(rules__ack_pending),
-        .tx_valid(rules__tx_valid),
         .listen_only(rules__listen_only),
-        .error(rules__error),
-        .flag_error(rules__flag_error),
-        .ack_err(rules__ack_err),
-        .tec_exempt(rules__tec_exempt),
-        .as_tx(rules__as_tx),
+        .tx_valid(rules__tx_valid),
+        .dom_error(rules__dom_error),
+        .dom_flag_error(rules__dom_flag_error),
+        .dom_ack_err(rules__dom_ack_err),
+        .dom_tec_exempt(rules__dom_tec_exempt),
+        .dom_sof_error(rules__dom_sof_error),
+        .rec_error(rules__rec_error),
+        .rec_flag_error(rules__rec_flag_error),
+        .rec_ack_err(rules__rec_ack_err),
+        .rec_tec_exempt(rules__rec_tec_exempt),
+        .rec_sof_error(rules__rec_sof_error),
         .tec(rules__tec),
         .rec(rules__rec),
         .error_passive(rules__error_passive),
@@ -3358,8 +3388,8 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .tec_add8(rules__tec_add8),
         .rec_add1(rules__rec_add1),
         .rec_add8(rules__rec_add8),
-        .tx_success(rules__tx_success),
         .rx_success(rules__rx_success),
+        .tx_success(rules__tx_success),
         .passive_after(rules__passive_after),
         .bus_off_after(rules__bus_off_after),
         .ack_defer(rules__ack_defer),
@@ -3387,11 +3417,11 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .clk(err_capture__clk),
         .rst(err_capture__rst),
         .capture(err_capture__capture),
-        .bit_err(err_capture__bit_err),
-        .stuff_err(err_capture__stuff_err),
-        .form_err(err_capture__form_err),
-        .ack_err(err_capture__ack_err),
-        .crc_err(err_capture__crc_err),
+        .kind_bit(err_capture__kind_bit),
+        .kind_stuff(err_capture__kind_stuff),
+        .kind_form(err_capture__kind_form),
+        .kind_ack(err_capture__kind_ack),
+        .kind_crc(err_capture__kind_crc),
         .as_tx(err_capture__as_tx),
         .arb_lost(err_capture__arb_lost),
         .field(err_capture__field),
@@ -3511,6 +3541,7 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         rx_frame__take_data_len = fsm__rx_take_data_len;
         rx_frame__take_data = fsm__rx_take_data;
         rx_frame__publish = fsm__rx_publish;
+        detect__clk = clk;
         detect__sample = sample;
         detect__sampled = sampled;
         detect__field = fsm__field;
@@ -3545,11 +3576,16 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         rules__ack_pending = fsm__ack_pending;
         rules__tx_valid = fsm__tx_valid;
         rules__listen_only = listen_only;
-        rules__error = detect__error;
-        rules__flag_error = detect__flag_error;
-        rules__ack_err = detect__ack_err;
-        rules__tec_exempt = detect__tec_exempt;
-        rules__as_tx = fsm__is_tx || detect__sof_error;
+        rules__dom_error = detect__dom_error;
+        rules__dom_flag_error = detect__dom_flag_error;
+        rules__dom_ack_err = detect__dom_ack_err;
+        rules__dom_tec_exempt = detect__dom_tec_exempt;
+        rules__dom_sof_error = detect__dom_sof_error;
+        rules__rec_error = detect__rec_error;
+        rules__rec_flag_error = detect__rec_flag_error;
+        rules__rec_ack_err = detect__rec_ack_err;
+        rules__rec_tec_exempt = detect__rec_tec_exempt;
+        rules__rec_sof_error = detect__rec_sof_error;
         rules__tec = fc__tec;
         rules__rec = fc__rec;
         rules__error_passive = fc__error_passive;
@@ -3563,11 +3599,11 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
-        err_capture__bit_err = detect__bit_err;
-        err_capture__stuff_err = detect__stuff_err;
-        err_capture__form_err = detect__form_err;
-        err_capture__ack_err = detect__ack_err;
-        err_capture__crc_err = detect__crc_err;
+        err_capture__kind_bit = detect__kind_bit;
+        err_capture__kind_stuff = detect__kind_stuff;
+        err_capture__kind_form = detect__kind_form;
+        err_capture__kind_ack = detect__kind_ack;
+        err_capture__kind_crc = detect__kind_crc;
         err_capture__as_tx = fsm__is_tx || detect__sof_error;
         err_capture__arb_lost = detect__lost;
         err_capture__field = fsm__field;
@@ -3604,7 +3640,460 @@ module drcc_m0__chan_a__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
 endmodule // drcc_m0__chan_a__bsp
 
 
-module drcc_m0__chan_a__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+module drcc_m0__chan_a__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  kind_bit;
+    output reg  kind_stuff;
+    output reg  kind_crc;
+    output reg  kind_form;
+    output reg  kind_ack;
+    output reg  dom_error;
+    output reg  dom_flag_error;
+    output reg  dom_ack_err;
+    output reg  dom_tec_exempt;
+    output reg  dom_sof_error;
+    output reg  rec_error;
+    output reg  rec_flag_error;
+    output reg  rec_ack_err;
+    output reg  rec_tec_exempt;
+    output reg  rec_sof_error;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__in_frame;
+    reg  if_dominant__in_arbitration;
+    reg  if_dominant__ack_slot;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__bc0;
+    reg  if_dominant__bc6;
+    reg  if_dominant__bc7;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__crc_ok;
+    reg  if_dominant__last_bit_arb;
+    reg  if_dominant__at_stuff_bit;
+    reg  if_dominant__stuff_last;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__ack_check_off;
+    wire  if_dominant__error;
+    wire  if_dominant__flag_error;
+    wire  if_dominant__bit_err;
+    wire  if_dominant__stuff_err;
+    wire  if_dominant__form_err;
+    wire  if_dominant__crc_err;
+    wire  if_dominant__ack_err;
+    wire  if_dominant__sof_error;
+    wire  if_dominant__lost;
+    wire  if_dominant__tec_exempt;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__in_frame;
+    reg  if_recessive__in_arbitration;
+    reg  if_recessive__ack_slot;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__bc0;
+    reg  if_recessive__bc6;
+    reg  if_recessive__bc7;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__crc_ok;
+    reg  if_recessive__last_bit_arb;
+    reg  if_recessive__at_stuff_bit;
+    reg  if_recessive__stuff_last;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__ack_check_off;
+    wire  if_recessive__error;
+    wire  if_recessive__flag_error;
+    wire  if_recessive__bit_err;
+    wire  if_recessive__stuff_err;
+    wire  if_recessive__form_err;
+    wire  if_recessive__crc_err;
+    wire  if_recessive__ack_err;
+    wire  if_recessive__sof_error;
+    wire  if_recessive__lost;
+    wire  if_recessive__tec_exempt;
+    reg  la_error__clk;
+    reg  la_error__sample;
+    reg  la_error__sampled;
+    reg  la_error__if_dominant;
+    reg  la_error__if_recessive;
+    wire  la_error__decision;
+    reg  la_flag_error__clk;
+    reg  la_flag_error__sample;
+    reg  la_flag_error__sampled;
+    reg  la_flag_error__if_dominant;
+    reg  la_flag_error__if_recessive;
+    wire  la_flag_error__decision;
+    reg  la_sof_error__clk;
+    reg  la_sof_error__sample;
+    reg  la_sof_error__sampled;
+    reg  la_sof_error__if_dominant;
+    reg  la_sof_error__if_recessive;
+    wire  la_sof_error__decision;
+    reg  la_lost__clk;
+    reg  la_lost__sample;
+    reg  la_lost__sampled;
+    reg  la_lost__if_dominant;
+    reg  la_lost__if_recessive;
+    wire  la_lost__decision;
+    reg  la_kind_bit__clk;
+    reg  la_kind_bit__sample;
+    reg  la_kind_bit__sampled;
+    reg  la_kind_bit__if_dominant;
+    reg  la_kind_bit__if_recessive;
+    wire  la_kind_bit__decision;
+    reg  la_kind_stuff__clk;
+    reg  la_kind_stuff__sample;
+    reg  la_kind_stuff__sampled;
+    reg  la_kind_stuff__if_dominant;
+    reg  la_kind_stuff__if_recessive;
+    wire  la_kind_stuff__decision;
+    reg  la_kind_crc__clk;
+    reg  la_kind_crc__sample;
+    reg  la_kind_crc__sampled;
+    reg  la_kind_crc__if_dominant;
+    reg  la_kind_crc__if_recessive;
+    wire  la_kind_crc__decision;
+    reg  la_kind_form__clk;
+    reg  la_kind_form__sample;
+    reg  la_kind_form__sampled;
+    reg  la_kind_form__if_dominant;
+    reg  la_kind_form__if_recessive;
+    wire  la_kind_form__decision;
+    reg  la_kind_ack__clk;
+    reg  la_kind_ack__sample;
+    reg  la_kind_ack__sampled;
+    reg  la_kind_ack__if_dominant;
+    reg  la_kind_ack__if_recessive;
+    wire  la_kind_ack__decision;
+    
+    // Local signals
+    reg  dom_kind_bit;
+    reg  dom_kind_stuff;
+    reg  dom_kind_crc;
+    reg  dom_kind_form;
+    reg  dom_kind_ack;
+    reg  rec_kind_bit;
+    reg  rec_kind_stuff;
+    reg  rec_kind_crc;
+    reg  rec_kind_form;
+    reg  rec_kind_ack;
+    reg  dom_capture;
+    reg  rec_capture;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .in_frame(if_dominant__in_frame),
+        .in_arbitration(if_dominant__in_arbitration),
+        .ack_slot(if_dominant__ack_slot),
+        .in_delim(if_dominant__in_delim),
+        .bc0(if_dominant__bc0),
+        .bc6(if_dominant__bc6),
+        .bc7(if_dominant__bc7),
+        .flag_passive(if_dominant__flag_passive),
+        .crc_ok(if_dominant__crc_ok),
+        .last_bit_arb(if_dominant__last_bit_arb),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .stuff_last(if_dominant__stuff_last),
+        .listen_only(if_dominant__listen_only),
+        .ack_check_off(if_dominant__ack_check_off),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .bit_err(if_dominant__bit_err),
+        .stuff_err(if_dominant__stuff_err),
+        .form_err(if_dominant__form_err),
+        .crc_err(if_dominant__crc_err),
+        .ack_err(if_dominant__ack_err),
+        .sof_error(if_dominant__sof_error),
+        .lost(if_dominant__lost),
+        .tec_exempt(if_dominant__tec_exempt)
+    );
+    drcc_m0__chan_a__bsp__detect__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .in_frame(if_recessive__in_frame),
+        .in_arbitration(if_recessive__in_arbitration),
+        .ack_slot(if_recessive__ack_slot),
+        .in_delim(if_recessive__in_delim),
+        .bc0(if_recessive__bc0),
+        .bc6(if_recessive__bc6),
+        .bc7(if_recessive__bc7),
+        .flag_passive(if_recessive__flag_passive),
+        .crc_ok(if_recessive__crc_ok),
+        .last_bit_arb(if_recessive__last_bit_arb),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .stuff_last(if_recessive__stuff_last),
+        .listen_only(if_recessive__listen_only),
+        .ack_check_off(if_recessive__ack_check_off),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .bit_err(if_recessive__bit_err),
+        .stuff_err(if_recessive__stuff_err),
+        .form_err(if_recessive__form_err),
+        .crc_err(if_recessive__crc_err),
+        .ack_err(if_recessive__ack_err),
+        .sof_error(if_recessive__sof_error),
+        .lost(if_recessive__lost),
+        .tec_exempt(if_recessive__tec_exempt)
+    );
+    drcc_m0__chan_a__bsp__detect__la_error la_error(
+        .clk(la_error__clk),
+        .sample(la_error__sample),
+        .sampled(la_error__sampled),
+        .if_dominant(la_error__if_dominant),
+        .if_recessive(la_error__if_recessive),
+        .decision(la_error__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_flag_error la_flag_error(
+        .clk(la_flag_error__clk),
+        .sample(la_flag_error__sample),
+        .sampled(la_flag_error__sampled),
+        .if_dominant(la_flag_error__if_dominant),
+        .if_recessive(la_flag_error__if_recessive),
+        .decision(la_flag_error__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_sof_error la_sof_error(
+        .clk(la_sof_error__clk),
+        .sample(la_sof_error__sample),
+        .sampled(la_sof_error__sampled),
+        .if_dominant(la_sof_error__if_dominant),
+        .if_recessive(la_sof_error__if_recessive),
+        .decision(la_sof_error__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_lost la_lost(
+        .clk(la_lost__clk),
+        .sample(la_lost__sample),
+        .sampled(la_lost__sampled),
+        .if_dominant(la_lost__if_dominant),
+        .if_recessive(la_lost__if_recessive),
+        .decision(la_lost__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_bit la_kind_bit(
+        .clk(la_kind_bit__clk),
+        .sample(la_kind_bit__sample),
+        .sampled(la_kind_bit__sampled),
+        .if_dominant(la_kind_bit__if_dominant),
+        .if_recessive(la_kind_bit__if_recessive),
+        .decision(la_kind_bit__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_stuff la_kind_stuff(
+        .clk(la_kind_stuff__clk),
+        .sample(la_kind_stuff__sample),
+        .sampled(la_kind_stuff__sampled),
+        .if_dominant(la_kind_stuff__if_dominant),
+        .if_recessive(la_kind_stuff__if_recessive),
+        .decision(la_kind_stuff__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_crc la_kind_crc(
+        .clk(la_kind_crc__clk),
+        .sample(la_kind_crc__sample),
+        .sampled(la_kind_crc__sampled),
+        .if_dominant(la_kind_crc__if_dominant),
+        .if_recessive(la_kind_crc__if_recessive),
+        .decision(la_kind_crc__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_form la_kind_form(
+        .clk(la_kind_form__clk),
+        .sample(la_kind_form__sample),
+        .sampled(la_kind_form__sampled),
+        .if_dominant(la_kind_form__if_dominant),
+        .if_recessive(la_kind_form__if_recessive),
+        .decision(la_kind_form__decision)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_ack la_kind_ack(
+        .clk(la_kind_ack__clk),
+        .sample(la_kind_ack__sample),
+        .sampled(la_kind_ack__sampled),
+        .if_dominant(la_kind_ack__if_dominant),
+        .if_recessive(la_kind_ack__if_recessive),
+        .decision(la_kind_ack__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_dominant__field = field;
+        if_recessive__field = field;
+        if_dominant__is_tx = is_tx;
+        if_recessive__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_recessive__tx_bit = tx_bit;
+        if_dominant__in_frame = in_frame;
+        if_recessive__in_frame = in_frame;
+        if_dominant__in_arbitration = in_arbitration;
+        if_recessive__in_arbitration = in_arbitration;
+        if_dominant__ack_slot = ack_slot;
+        if_recessive__ack_slot = ack_slot;
+        if_dominant__in_delim = in_delim;
+        if_recessive__in_delim = in_delim;
+        if_dominant__bc0 = bc0;
+        if_recessive__bc0 = bc0;
+        if_dominant__bc6 = bc6;
+        if_recessive__bc6 = bc6;
+        if_dominant__bc7 = bc7;
+        if_recessive__bc7 = bc7;
+        if_dominant__flag_passive = flag_passive;
+        if_recessive__flag_passive = flag_passive;
+        if_dominant__crc_ok = crc_ok;
+        if_recessive__crc_ok = crc_ok;
+        if_dominant__last_bit_arb = last_bit_arb;
+        if_recessive__last_bit_arb = last_bit_arb;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_dominant__stuff_last = stuff_last;
+        if_recessive__stuff_last = stuff_last;
+        if_dominant__listen_only = listen_only;
+        if_recessive__listen_only = listen_only;
+        if_dominant__ack_check_off = ack_check_off;
+        if_recessive__ack_check_off = ack_check_off;
+        dom_error = if_dominant__error;
+        dom_flag_error = if_dominant__flag_error;
+        dom_ack_err = if_dominant__ack_err;
+        dom_tec_exempt = if_dominant__tec_exempt;
+        dom_sof_error = if_dominant__sof_error;
+        rec_error = if_recessive__error;
+        rec_flag_error = if_recessive__flag_error;
+        rec_ack_err = if_recessive__ack_err;
+        rec_tec_exempt = if_recessive__tec_exempt;
+        rec_sof_error = if_recessive__sof_error;
+        la_error__clk = clk;
+        la_error__sample = sample;
+        la_error__sampled = sampled;
+        la_error__if_dominant = if_dominant__error;
+        la_error__if_recessive = if_recessive__error;
+        error = la_error__decision;
+        la_flag_error__clk = clk;
+        la_flag_error__sample = sample;
+        la_flag_error__sampled = sampled;
+        la_flag_error__if_dominant = if_dominant__flag_error;
+        la_flag_error__if_recessive = if_recessive__flag_error;
+        flag_error = la_flag_error__decision;
+        la_sof_error__clk = clk;
+        la_sof_error__sample = sample;
+        la_sof_error__sampled = sampled;
+        la_sof_error__if_dominant = if_dominant__sof_error;
+        la_sof_error__if_recessive = if_recessive__sof_error;
+        sof_error = la_sof_error__decision;
+        la_lost__clk = clk;
+        la_lost__sample = sample;
+        la_lost__sampled = sampled;
+        la_lost__if_dominant = if_dominant__lost;
+        la_lost__if_recessive = if_recessive__lost;
+        lost = la_lost__decision;
+        dom_capture = if_dominant__error || if_dominant__flag_error;
+        dom_kind_bit = dom_capture && if_dominant__bit_err;
+        dom_kind_stuff = dom_capture && ~if_dominant__bit_err && if_dominant__stuff_err;
+        dom_kind_form = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && if_dominant__form_err;
+        dom_kind_ack = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && if_dominant__ack_err;
+        dom_kind_crc = if_dominant__crc_err && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && ~if_dominant__ack_err;
+        rec_capture = if_recessive__error || if_recessive__flag_error;
+        rec_kind_bit = rec_capture && if_recessive__bit_err;
+        rec_kind_stuff = rec_capture && ~if_recessive__bit_err && if_recessive__stuff_err;
+        rec_kind_form = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && if_recessive__form_err;
+        rec_kind_ack = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && if_recessive__ack_err;
+        rec_kind_crc = if_recessive__crc_err && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && ~if_recessive__ack_err;
+        la_kind_bit__clk = clk;
+        la_kind_bit__sample = sample;
+        la_kind_bit__sampled = sampled;
+        la_kind_bit__if_dominant = dom_kind_bit;
+        la_kind_bit__if_recessive = rec_kind_bit;
+        kind_bit = la_kind_bit__decision;
+        la_kind_stuff__clk = clk;
+        la_kind_stuff__sample = sample;
+        la_kind_stuff__sampled = sampled;
+        la_kind_stuff__if_dominant = dom_kind_stuff;
+        la_kind_stuff__if_recessive = rec_kind_stuff;
+        kind_stuff = la_kind_stuff__decision;
+        la_kind_crc__clk = clk;
+        la_kind_crc__sample = sample;
+        la_kind_crc__sampled = sampled;
+        la_kind_crc__if_dominant = dom_kind_crc;
+        la_kind_crc__if_recessive = rec_kind_crc;
+        kind_crc = la_kind_crc__decision;
+        la_kind_form__clk = clk;
+        la_kind_form__sample = sample;
+        la_kind_form__sampled = sampled;
+        la_kind_form__if_dominant = dom_kind_form;
+        la_kind_form__if_recessive = rec_kind_form;
+        kind_form = la_kind_form__decision;
+        la_kind_ack__clk = clk;
+        la_kind_ack__sample = sample;
+        la_kind_ack__sampled = sampled;
+        la_kind_ack__if_dominant = dom_kind_ack;
+        la_kind_ack__if_recessive = rec_kind_ack;
+        kind_ack = la_kind_ack__decision;
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect
+
+
+module drcc_m0__chan_a__bsp__detect__if_dominant(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
     
     // Module arguments
     input wire  sample;
@@ -3754,20 +4243,902 @@ module drcc_m0__chan_a__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,i
         bit_err = stuff_as_bit || bit_mon || flag_error;
     end
     
-endmodule // drcc_m0__chan_a__bsp__detect
+endmodule // drcc_m0__chan_a__bsp__detect__if_dominant
 
 
-module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_a__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  bit_mon;
+    reg  stuff_as_bit;
+    
+    // Update code
+    always @(*) begin
+        stuff_err = 1'b0;
+        stuff_as_bit = 1'b0;
+        tec_exempt = 1'b0;
+        bit_mon = 1'b0;
+        form_err = 1'b0;
+        crc_err = 1'b0;
+        ack_err = 1'b0;
+        flag_error = 1'b0;
+        sof_error = 1'b0;
+        lost = 1'b0;
+        if (sample && at_stuff_bit && (sampled == stuff_last)) begin
+            stuff_err = 1'b1;
+            if (is_tx && ~(last_bit_arb && tx_bit)) begin
+                stuff_as_bit = 1'b1;
+            end
+            if (is_tx && last_bit_arb && tx_bit) begin
+                tec_exempt = 1'b1;
+            end
+        end
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if (is_tx && in_frame && (sampled != tx_bit)) begin
+                if (in_arbitration && tx_bit) begin
+                    lost = 1'b1;
+                end
+                else if (ack_slot && tx_bit) begin
+                end
+                else begin
+                    bit_mon = 1'b1;
+                end
+            end
+            if (~is_tx && ack_slot && ~tx_bit && sampled) begin
+                bit_mon = 1'b1;
+            end
+            case (field)
+                Field__Idle:
+                    begin
+                        if (sampled && ~tx_bit) begin
+                            sof_error = 1'b1;
+                            bit_mon = 1'b1;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        form_err = ~sampled;
+                    end
+                Field__AckSlot:
+                    begin
+                        ack_err = is_tx && sampled && ~ack_check_off;
+                    end
+                Field__AckDelim:
+                    begin
+                        if (~sampled) begin
+                            form_err = 1'b1;
+                        end
+                        else if (~crc_ok && ~is_tx) begin
+                            crc_err = 1'b1;
+                        end
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled && ~(bc6 && ~is_tx)) begin
+                            form_err = 1'b1;
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        flag_error = ~flag_passive && sampled;
+                    end
+                Field__OverloadFlag:
+                    begin
+                        flag_error = sampled && ~listen_only;
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (in_delim && ~bc0 && ~sampled && ~bc7) begin
+                form_err = 1'b1;
+            end
+        end
+        error = stuff_err || bit_mon || form_err || crc_err || ack_err;
+        bit_err = stuff_as_bit || bit_mon || flag_error;
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__if_recessive
+
+
+module drcc_m0__chan_a__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_error
+
+
+module drcc_m0__chan_a__bsp__detect__la_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_error__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_error__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_flag_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_flag_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_flag_error
+
+
+module drcc_m0__chan_a__bsp__detect__la_flag_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_flag_error__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_flag_error__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_ack(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_ack__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_ack__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_ack
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_ack__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_ack__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_ack__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_ack__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_bit(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_bit__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_bit__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_bit
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_bit__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_bit__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_bit__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_bit__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_crc(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_crc__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_crc__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_crc
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_crc__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_crc__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_crc__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_crc__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_form(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_form__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_form__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_form
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_form__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_form__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_form__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_form__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_stuff(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_kind_stuff__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_kind_stuff__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_stuff
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_stuff__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_stuff__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_kind_stuff__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_kind_stuff__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_lost__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_lost__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_lost
+
+
+module drcc_m0__chan_a__bsp__detect__la_lost__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_lost__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_lost__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_lost__recessive_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_sof_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__detect__la_sof_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__detect__la_sof_error
+
+
+module drcc_m0__chan_a__bsp__detect__la_sof_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_sof_error__dominant_q
+
+
+module drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__detect__la_sof_error__recessive_q
+
+
+module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  capture;
-    input wire  bit_err;
-    input wire  stuff_err;
-    input wire  form_err;
-    input wire  ack_err;
-    input wire  crc_err;
+    input wire  kind_bit;
+    input wire  kind_stuff;
+    input wire  kind_form;
+    input wire  kind_ack;
+    input wire  kind_crc;
     input wire  as_tx;
     input wire  arb_lost;
     input wire  [4:0] field;
@@ -4023,20 +5394,17 @@ module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
         p_cnt_form_max__d = cnt_form_q__q == max8;
         p_cnt_ack_max__d = cnt_ack_q__q == max8;
         kind = k_crc;
-        if (bit_err) begin
+        if (kind_bit) begin
             kind = k_bit;
         end
-        else if (stuff_err) begin
+        else if (kind_stuff) begin
             kind = k_stuff;
         end
-        else if (form_err) begin
+        else if (kind_form) begin
             kind = k_form;
         end
-        else if (ack_err) begin
+        else if (kind_ack) begin
             kind = k_ack;
-        end
-        else if (crc_err) begin
-            kind = k_crc;
         end
         err_valid_q__d = 1'b0;
         if (capture) begin
@@ -4044,21 +5412,21 @@ module drcc_m0__chan_a__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
             err_kind_q__d = kind;
             err_field_q__d = field;
             err_tx_q__d = as_tx;
-            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
-                cnt_bit_q__d = cnt_bit_q__q + one8;
-            end
-            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
-                cnt_stuff_q__d = cnt_stuff_q__q + one8;
-            end
-            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
-                cnt_crc_q__d = cnt_crc_q__q + one8;
-            end
-            if ((kind == k_form) && ~p_cnt_form_max__q) begin
-                cnt_form_q__d = cnt_form_q__q + one8;
-            end
-            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
-                cnt_ack_q__d = cnt_ack_q__q + one8;
-            end
+        end
+        if (kind_bit && ~p_cnt_bit_max__q) begin
+            cnt_bit_q__d = cnt_bit_q__q + one8;
+        end
+        if (kind_stuff && ~p_cnt_stuff_max__q) begin
+            cnt_stuff_q__d = cnt_stuff_q__q + one8;
+        end
+        if (kind_crc && ~p_cnt_crc_max__q) begin
+            cnt_crc_q__d = cnt_crc_q__q + one8;
+        end
+        if (kind_form && ~p_cnt_form_max__q) begin
+            cnt_form_q__d = cnt_form_q__q + one8;
+        end
+        if (kind_ack && ~p_cnt_ack_max__q) begin
+            cnt_ack_q__d = cnt_ack_q__q + one8;
         end
         if (arb_lost) begin
             alc_q__d = p_alc__q;
@@ -4806,6 +6174,9 @@ module drcc_m0__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
     reg  [2:0] dom_cnt__d;
     wire  [2:0] dom_cnt__q;
     reg  dom_cnt__clock;
+    reg  hse_off__d;
+    wire  hse_off__q;
+    reg  hse_off__clock;
     reg  decode__clk;
     reg  [4:0] decode__field;
     reg  [6:0] decode__bit_cnt;
@@ -4839,6 +6210,9 @@ module drcc_m0__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
     reg  is_tx_n;
     reg  flag_passive_n;
     reg  monitor;
+    reg  hse_class;
+    reg  hse_stay;
+    reg  hse_n;
     
     // Sub module instances
     drcc_m0__chan_a__bsp__fsm__field_q field_q(
@@ -4886,6 +6260,11 @@ module drcc_m0__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
         .q(dom_cnt__q),
         .clock(dom_cnt__clock)
     );
+    drcc_m0__chan_a__bsp__fsm__hse_off hse_off(
+        .d(hse_off__d),
+        .q(hse_off__q),
+        .clock(hse_off__clock)
+    );
     drcc_m0__chan_a__bsp__fsm__decode decode(
         .clk(decode__clk),
         .field(decode__field),
@@ -4926,6 +6305,7 @@ module drcc_m0__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
         ack_pending_q__clock = clk;
         delim_first_q__clock = clk;
         dom_cnt__clock = clk;
+        hse_off__clock = clk;
         field_q__d = field_q__q;
         bit_cnt_q__d = bit_cnt_q__q;
         is_tx_q__d = is_tx_q__q;
@@ -4935,6 +6315,7 @@ module drcc_m0__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
         ack_pending_q__d = ack_pending_q__q;
         delim_first_q__d = delim_first_q__q;
         dom_cnt__d = dom_cnt__q;
+        hse_off__d = hse_off__q;
         decode__clk = clk;
         decode__field = field_q__q;
         decode__bit_cnt = bit_cnt_q__q;
@@ -5289,32 +6670,18 @@ module drcc_m0__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
             is_tx_q__d = is_tx_n;
             flag_passive_q__d = flag_passive_n;
         end
-        case (field_q__q)
-            Field__Integrating:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Idle:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Suspend:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__BusOff:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Intermission:
-                begin
-                    hard_sync_enable = bit_cnt_q__q[32'h1];
-                end
-            default:
-                begin
-                    hard_sync_enable = 1'b0;
-                end
-        endcase
+        hse_class = (field_q__q == Field__Integrating) || (field_q__q == Field__Idle) || (field_q__q == Field__Suspend) || (field_q__q == Field__BusOff);
+        if (monitor) begin
+            hse_stay = (field_q__q == Field__Intermission) && sampled && (decode__bc2 || bit_cnt_q__q[32'h0]);
+        end
+        else begin
+            hse_stay = (field_q__q == Field__Intermission) && bit_cnt_q__q[32'h1];
+        end
+        hse_n = bus_off_after || (~sof && ~error && ~flag_error && (hse_class || hse_stay));
+        if (sample) begin
+            hse_off__d = ~hse_n;
+        end
+        hard_sync_enable = ~hse_off__q;
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
@@ -5343,6 +6710,7 @@ module drcc_m0__chan_a__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
             ack_pending_q__d = 1'b0;
             delim_first_q__d = 1'b0;
             dom_cnt__d = zero3;
+            hse_off__d = 1'b0;
         end
     end
     
@@ -6164,6 +7532,22 @@ module drcc_m0__chan_a__bsp__fsm__flag_passive_q(d,q,clock);
 endmodule // drcc_m0__chan_a__bsp__fsm__flag_passive_q
 
 
+module drcc_m0__chan_a__bsp__fsm__hse_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__fsm__hse_off
+
+
 module drcc_m0__chan_a__bsp__fsm__is_tx_q(d,q,clock);
     
     // Module arguments
@@ -6212,7 +7596,7 @@ module drcc_m0__chan_a__bsp__fsm__recovery_cnt(d,q,clock);
 endmodule // drcc_m0__chan_a__bsp__fsm__recovery_cnt
 
 
-module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,tx_valid,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,rx_success,tx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  clk;
@@ -6229,13 +7613,18 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
-    input wire  error;
-    input wire  flag_error;
-    input wire  ack_err;
-    input wire  tec_exempt;
-    input wire  as_tx;
+    input wire  tx_valid;
+    input wire  dom_error;
+    input wire  dom_flag_error;
+    input wire  dom_ack_err;
+    input wire  dom_tec_exempt;
+    input wire  dom_sof_error;
+    input wire  rec_error;
+    input wire  rec_flag_error;
+    input wire  rec_ack_err;
+    input wire  rec_tec_exempt;
+    input wire  rec_sof_error;
     input wire  [8:0] tec;
     input wire  [7:0] rec;
     input wire  error_passive;
@@ -6243,8 +7632,8 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
+    output reg  tx_success;
     output reg  passive_after;
     output reg  bus_off_after;
     output reg  ack_defer;
@@ -6282,24 +7671,434 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     localparam Field__BusOff = 22;
     
     // Stub signals
-    reg  p_passive__d;
-    wire  p_passive__q;
-    reg  p_passive__clock;
-    reg  p_bus_off__d;
-    wire  p_bus_off__q;
-    reg  p_bus_off__clock;
-    reg  p_tec_ge120__d;
-    wire  p_tec_ge120__q;
-    reg  p_tec_ge120__clock;
-    reg  p_tec_ge248__d;
-    wire  p_tec_ge248__q;
-    reg  p_tec_ge248__clock;
-    reg  p_rec_ge127__d;
-    wire  p_rec_ge127__q;
-    reg  p_rec_ge127__clock;
-    reg  p_rec_ge120__d;
-    wire  p_rec_ge120__q;
-    reg  p_rec_ge120__clock;
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  if_dominant__at_stuff_bit;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__after_error_flag;
+    reg  if_dominant__bc0;
+    reg  if_dominant__delim_first;
+    reg  if_dominant__dom7;
+    reg  if_dominant__ack_pending;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__error;
+    reg  if_dominant__flag_error;
+    reg  if_dominant__ack_err;
+    reg  if_dominant__tec_exempt;
+    reg  if_dominant__as_tx;
+    reg  if_dominant__passive_now;
+    reg  if_dominant__bus_off_now;
+    reg  if_dominant__tec_ge120;
+    reg  if_dominant__tec_ge248;
+    reg  if_dominant__rec_ge127;
+    reg  if_dominant__rec_ge120;
+    wire  if_dominant__tec_add8;
+    wire  if_dominant__rec_add1;
+    wire  if_dominant__rec_add8;
+    wire  if_dominant__rx_success;
+    wire  if_dominant__passive_after;
+    wire  if_dominant__bus_off_after;
+    wire  if_dominant__ack_defer;
+    wire  if_dominant__ack_counted;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  if_recessive__at_stuff_bit;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__after_error_flag;
+    reg  if_recessive__bc0;
+    reg  if_recessive__delim_first;
+    reg  if_recessive__dom7;
+    reg  if_recessive__ack_pending;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__error;
+    reg  if_recessive__flag_error;
+    reg  if_recessive__ack_err;
+    reg  if_recessive__tec_exempt;
+    reg  if_recessive__as_tx;
+    reg  if_recessive__passive_now;
+    reg  if_recessive__bus_off_now;
+    reg  if_recessive__tec_ge120;
+    reg  if_recessive__tec_ge248;
+    reg  if_recessive__rec_ge127;
+    reg  if_recessive__rec_ge120;
+    wire  if_recessive__tec_add8;
+    wire  if_recessive__rec_add1;
+    wire  if_recessive__rec_add8;
+    wire  if_recessive__rx_success;
+    wire  if_recessive__passive_after;
+    wire  if_recessive__bus_off_after;
+    wire  if_recessive__ack_defer;
+    wire  if_recessive__ack_counted;
+    reg  la_tec_add8__clk;
+    reg  la_tec_add8__sample;
+    reg  la_tec_add8__sampled;
+    reg  la_tec_add8__if_dominant;
+    reg  la_tec_add8__if_recessive;
+    wire  la_tec_add8__decision;
+    reg  la_rec_add1__clk;
+    reg  la_rec_add1__sample;
+    reg  la_rec_add1__sampled;
+    reg  la_rec_add1__if_dominant;
+    reg  la_rec_add1__if_recessive;
+    wire  la_rec_add1__decision;
+    reg  la_rec_add8__clk;
+    reg  la_rec_add8__sample;
+    reg  la_rec_add8__sampled;
+    reg  la_rec_add8__if_dominant;
+    reg  la_rec_add8__if_recessive;
+    wire  la_rec_add8__decision;
+    reg  la_rx_success__clk;
+    reg  la_rx_success__sample;
+    reg  la_rx_success__sampled;
+    reg  la_rx_success__if_dominant;
+    reg  la_rx_success__if_recessive;
+    wire  la_rx_success__decision;
+    reg  la_passive_after__clk;
+    reg  la_passive_after__sample;
+    reg  la_passive_after__sampled;
+    reg  la_passive_after__if_dominant;
+    reg  la_passive_after__if_recessive;
+    wire  la_passive_after__decision;
+    reg  la_bus_off_after__clk;
+    reg  la_bus_off_after__sample;
+    reg  la_bus_off_after__sampled;
+    reg  la_bus_off_after__if_dominant;
+    reg  la_bus_off_after__if_recessive;
+    wire  la_bus_off_after__decision;
+    reg  la_ack_defer__clk;
+    reg  la_ack_defer__sample;
+    reg  la_ack_defer__sampled;
+    reg  la_ack_defer__if_dominant;
+    reg  la_ack_defer__if_recessive;
+    wire  la_ack_defer__decision;
+    reg  la_ack_counted__clk;
+    reg  la_ack_counted__sample;
+    reg  la_ack_counted__sampled;
+    reg  la_ack_counted__if_dominant;
+    reg  la_ack_counted__if_recessive;
+    wire  la_ack_counted__decision;
+    
+    // Local signals
+    reg  tec_ge120;
+    reg  tec_ge248;
+    reg  rec_ge127;
+    reg  rec_ge120;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .flag_passive(if_dominant__flag_passive),
+        .in_delim(if_dominant__in_delim),
+        .after_error_flag(if_dominant__after_error_flag),
+        .bc0(if_dominant__bc0),
+        .delim_first(if_dominant__delim_first),
+        .dom7(if_dominant__dom7),
+        .ack_pending(if_dominant__ack_pending),
+        .listen_only(if_dominant__listen_only),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .ack_err(if_dominant__ack_err),
+        .tec_exempt(if_dominant__tec_exempt),
+        .as_tx(if_dominant__as_tx),
+        .passive_now(if_dominant__passive_now),
+        .bus_off_now(if_dominant__bus_off_now),
+        .tec_ge120(if_dominant__tec_ge120),
+        .tec_ge248(if_dominant__tec_ge248),
+        .rec_ge127(if_dominant__rec_ge127),
+        .rec_ge120(if_dominant__rec_ge120),
+        .tec_add8(if_dominant__tec_add8),
+        .rec_add1(if_dominant__rec_add1),
+        .rec_add8(if_dominant__rec_add8),
+        .rx_success(if_dominant__rx_success),
+        .passive_after(if_dominant__passive_after),
+        .bus_off_after(if_dominant__bus_off_after),
+        .ack_defer(if_dominant__ack_defer),
+        .ack_counted(if_dominant__ack_counted)
+    );
+    drcc_m0__chan_a__bsp__rules__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .flag_passive(if_recessive__flag_passive),
+        .in_delim(if_recessive__in_delim),
+        .after_error_flag(if_recessive__after_error_flag),
+        .bc0(if_recessive__bc0),
+        .delim_first(if_recessive__delim_first),
+        .dom7(if_recessive__dom7),
+        .ack_pending(if_recessive__ack_pending),
+        .listen_only(if_recessive__listen_only),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .ack_err(if_recessive__ack_err),
+        .tec_exempt(if_recessive__tec_exempt),
+        .as_tx(if_recessive__as_tx),
+        .passive_now(if_recessive__passive_now),
+        .bus_off_now(if_recessive__bus_off_now),
+        .tec_ge120(if_recessive__tec_ge120),
+        .tec_ge248(if_recessive__tec_ge248),
+        .rec_ge127(if_recessive__rec_ge127),
+        .rec_ge120(if_recessive__rec_ge120),
+        .tec_add8(if_recessive__tec_add8),
+        .rec_add1(if_recessive__rec_add1),
+        .rec_add8(if_recessive__rec_add8),
+        .rx_success(if_recessive__rx_success),
+        .passive_after(if_recessive__passive_after),
+        .bus_off_after(if_recessive__bus_off_after),
+        .ack_defer(if_recessive__ack_defer),
+        .ack_counted(if_recessive__ack_counted)
+    );
+    drcc_m0__chan_a__bsp__rules__la_tec_add8 la_tec_add8(
+        .clk(la_tec_add8__clk),
+        .sample(la_tec_add8__sample),
+        .sampled(la_tec_add8__sampled),
+        .if_dominant(la_tec_add8__if_dominant),
+        .if_recessive(la_tec_add8__if_recessive),
+        .decision(la_tec_add8__decision)
+    );
+    drcc_m0__chan_a__bsp__rules__la_rec_add1 la_rec_add1(
+        .clk(la_rec_add1__clk),
+        .sample(la_rec_add1__sample),
+        .sampled(la_rec_add1__sampled),
+        .if_dominant(la_rec_add1__if_dominant),
+        .if_recessive(la_rec_add1__if_recessive),
+        .decision(la_rec_add1__decision)
+    );
+    drcc_m0__chan_a__bsp__rules__la_rec_add8 la_rec_add8(
+        .clk(la_rec_add8__clk),
+        .sample(la_rec_add8__sample),
+        .sampled(la_rec_add8__sampled),
+        .if_dominant(la_rec_add8__if_dominant),
+        .if_recessive(la_rec_add8__if_recessive),
+        .decision(la_rec_add8__decision)
+    );
+    drcc_m0__chan_a__bsp__rules__la_rx_success la_rx_success(
+        .clk(la_rx_success__clk),
+        .sample(la_rx_success__sample),
+        .sampled(la_rx_success__sampled),
+        .if_dominant(la_rx_success__if_dominant),
+        .if_recessive(la_rx_success__if_recessive),
+        .decision(la_rx_success__decision)
+    );
+    drcc_m0__chan_a__bsp__rules__la_passive_after la_passive_after(
+        .clk(la_passive_after__clk),
+        .sample(la_passive_after__sample),
+        .sampled(la_passive_after__sampled),
+        .if_dominant(la_passive_after__if_dominant),
+        .if_recessive(la_passive_after__if_recessive),
+        .decision(la_passive_after__decision)
+    );
+    drcc_m0__chan_a__bsp__rules__la_bus_off_after la_bus_off_after(
+        .clk(la_bus_off_after__clk),
+        .sample(la_bus_off_after__sample),
+        .sampled(la_bus_off_after__sampled),
+        .if_dominant(la_bus_off_after__if_dominant),
+        .if_recessive(la_bus_off_after__if_recessive),
+        .decision(la_bus_off_after__decision)
+    );
+    drcc_m0__chan_a__bsp__rules__la_ack_defer la_ack_defer(
+        .clk(la_ack_defer__clk),
+        .sample(la_ack_defer__sample),
+        .sampled(la_ack_defer__sampled),
+        .if_dominant(la_ack_defer__if_dominant),
+        .if_recessive(la_ack_defer__if_recessive),
+        .decision(la_ack_defer__decision)
+    );
+    drcc_m0__chan_a__bsp__rules__la_ack_counted la_ack_counted(
+        .clk(la_ack_counted__clk),
+        .sample(la_ack_counted__sample),
+        .sampled(la_ack_counted__sampled),
+        .if_dominant(la_ack_counted__if_dominant),
+        .if_recessive(la_ack_counted__if_recessive),
+        .decision(la_ack_counted__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        tec_ge120 = tec >= n9_120;
+        tec_ge248 = tec >= n9_248;
+        rec_ge127 = rec >= n8_127;
+        rec_ge120 = rec >= n8_120;
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_dominant__field = field;
+        if_dominant__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_dominant__flag_passive = flag_passive;
+        if_dominant__in_delim = in_delim;
+        if_dominant__after_error_flag = after_error_flag;
+        if_dominant__bc0 = bc0;
+        if_dominant__delim_first = delim_first;
+        if_dominant__dom7 = dom7;
+        if_dominant__ack_pending = ack_pending;
+        if_dominant__listen_only = listen_only;
+        if_dominant__error = dom_error;
+        if_dominant__flag_error = dom_flag_error;
+        if_dominant__ack_err = dom_ack_err;
+        if_dominant__tec_exempt = dom_tec_exempt;
+        if_dominant__as_tx = is_tx || dom_sof_error;
+        if_dominant__passive_now = error_passive;
+        if_dominant__bus_off_now = bus_off;
+        if_dominant__tec_ge120 = tec_ge120;
+        if_dominant__tec_ge248 = tec_ge248;
+        if_dominant__rec_ge127 = rec_ge127;
+        if_dominant__rec_ge120 = rec_ge120;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_recessive__field = field;
+        if_recessive__is_tx = is_tx;
+        if_recessive__tx_bit = tx_bit;
+        if_recessive__flag_passive = flag_passive;
+        if_recessive__in_delim = in_delim;
+        if_recessive__after_error_flag = after_error_flag;
+        if_recessive__bc0 = bc0;
+        if_recessive__delim_first = delim_first;
+        if_recessive__dom7 = dom7;
+        if_recessive__ack_pending = ack_pending;
+        if_recessive__listen_only = listen_only;
+        if_recessive__error = rec_error;
+        if_recessive__flag_error = rec_flag_error;
+        if_recessive__ack_err = rec_ack_err;
+        if_recessive__tec_exempt = rec_tec_exempt;
+        if_recessive__as_tx = is_tx || rec_sof_error;
+        if_recessive__passive_now = error_passive;
+        if_recessive__bus_off_now = bus_off;
+        if_recessive__tec_ge120 = tec_ge120;
+        if_recessive__tec_ge248 = tec_ge248;
+        if_recessive__rec_ge127 = rec_ge127;
+        if_recessive__rec_ge120 = rec_ge120;
+        la_tec_add8__clk = clk;
+        la_tec_add8__sample = sample;
+        la_tec_add8__sampled = sampled;
+        la_tec_add8__if_dominant = if_dominant__tec_add8;
+        la_tec_add8__if_recessive = if_recessive__tec_add8;
+        tec_add8 = la_tec_add8__decision;
+        la_rec_add1__clk = clk;
+        la_rec_add1__sample = sample;
+        la_rec_add1__sampled = sampled;
+        la_rec_add1__if_dominant = if_dominant__rec_add1;
+        la_rec_add1__if_recessive = if_recessive__rec_add1;
+        rec_add1 = la_rec_add1__decision;
+        la_rec_add8__clk = clk;
+        la_rec_add8__sample = sample;
+        la_rec_add8__sampled = sampled;
+        la_rec_add8__if_dominant = if_dominant__rec_add8;
+        la_rec_add8__if_recessive = if_recessive__rec_add8;
+        rec_add8 = la_rec_add8__decision;
+        la_rx_success__clk = clk;
+        la_rx_success__sample = sample;
+        la_rx_success__sampled = sampled;
+        la_rx_success__if_dominant = if_dominant__rx_success;
+        la_rx_success__if_recessive = if_recessive__rx_success;
+        rx_success = la_rx_success__decision;
+        la_passive_after__clk = clk;
+        la_passive_after__sample = sample;
+        la_passive_after__sampled = sampled;
+        la_passive_after__if_dominant = if_dominant__passive_after;
+        la_passive_after__if_recessive = if_recessive__passive_after;
+        passive_after = la_passive_after__decision;
+        la_bus_off_after__clk = clk;
+        la_bus_off_after__sample = sample;
+        la_bus_off_after__sampled = sampled;
+        la_bus_off_after__if_dominant = if_dominant__bus_off_after;
+        la_bus_off_after__if_recessive = if_recessive__bus_off_after;
+        bus_off_after = la_bus_off_after__decision;
+        la_ack_defer__clk = clk;
+        la_ack_defer__sample = sample;
+        la_ack_defer__sampled = sampled;
+        la_ack_defer__if_dominant = if_dominant__ack_defer;
+        la_ack_defer__if_recessive = if_recessive__ack_defer;
+        ack_defer = la_ack_defer__decision;
+        la_ack_counted__clk = clk;
+        la_ack_counted__sample = sample;
+        la_ack_counted__sampled = sampled;
+        la_ack_counted__if_dominant = if_dominant__ack_counted;
+        la_ack_counted__if_recessive = if_recessive__ack_counted;
+        ack_counted = la_ack_counted__decision;
+        tx_success = tx_valid && ~listen_only;
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules
+
+
+module drcc_m0__chan_a__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
     
     // Local signals
     reg  monitor;
@@ -6308,58 +8107,8 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     reg  ev_rec_add8;
     reg  ev_rx_success;
     
-    // Sub module instances
-    drcc_m0__chan_a__bsp__rules__p_passive p_passive(
-        .d(p_passive__d),
-        .q(p_passive__q),
-        .clock(p_passive__clock)
-    );
-    drcc_m0__chan_a__bsp__rules__p_bus_off p_bus_off(
-        .d(p_bus_off__d),
-        .q(p_bus_off__q),
-        .clock(p_bus_off__clock)
-    );
-    drcc_m0__chan_a__bsp__rules__p_tec_ge120 p_tec_ge120(
-        .d(p_tec_ge120__d),
-        .q(p_tec_ge120__q),
-        .clock(p_tec_ge120__clock)
-    );
-    drcc_m0__chan_a__bsp__rules__p_tec_ge248 p_tec_ge248(
-        .d(p_tec_ge248__d),
-        .q(p_tec_ge248__q),
-        .clock(p_tec_ge248__clock)
-    );
-    drcc_m0__chan_a__bsp__rules__p_rec_ge127 p_rec_ge127(
-        .d(p_rec_ge127__d),
-        .q(p_rec_ge127__q),
-        .clock(p_rec_ge127__clock)
-    );
-    drcc_m0__chan_a__bsp__rules__p_rec_ge120 p_rec_ge120(
-        .d(p_rec_ge120__d),
-        .q(p_rec_ge120__q),
-        .clock(p_rec_ge120__clock)
-    );
-    
     // Update code
     always @(*) begin
-        p_passive__clock = clk;
-        p_bus_off__clock = clk;
-        p_tec_ge120__clock = clk;
-        p_tec_ge248__clock = clk;
-        p_rec_ge127__clock = clk;
-        p_rec_ge120__clock = clk;
-        p_passive__d = p_passive__q;
-        p_bus_off__d = p_bus_off__q;
-        p_tec_ge120__d = p_tec_ge120__q;
-        p_tec_ge248__d = p_tec_ge248__q;
-        p_rec_ge127__d = p_rec_ge127__q;
-        p_rec_ge120__d = p_rec_ge120__q;
-        p_passive__d = error_passive;
-        p_bus_off__d = bus_off;
-        p_tec_ge120__d = tec >= n9_120;
-        p_tec_ge248__d = tec >= n9_248;
-        p_rec_ge127__d = rec >= n8_127;
-        p_rec_ge120__d = rec >= n8_120;
         ev_tec_add8 = 1'b0;
         ev_rec_add1 = 1'b0;
         ev_rec_add8 = 1'b0;
@@ -6393,7 +8142,7 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         end
         if (error) begin
             if (as_tx) begin
-                if (ack_err && p_passive__q) begin
+                if (ack_err && passive_now) begin
                     ack_defer = 1'b1;
                 end
                 else if (~tec_exempt) begin
@@ -6412,19 +8161,201 @@ module drcc_m0__chan_a__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
                 ev_rec_add8 = 1'b1;
             end
         end
-        passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
-        bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
-endmodule // drcc_m0__chan_a__bsp__rules
+endmodule // drcc_m0__chan_a__bsp__rules__if_dominant
 
 
-module drcc_m0__chan_a__bsp__rules__p_bus_off(d,q,clock);
+module drcc_m0__chan_a__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  ev_tec_add8;
+    reg  ev_rec_add1;
+    reg  ev_rec_add8;
+    reg  ev_rx_success;
+    
+    // Update code
+    always @(*) begin
+        ev_tec_add8 = 1'b0;
+        ev_rec_add1 = 1'b0;
+        ev_rec_add8 = 1'b0;
+        ev_rx_success = 1'b0;
+        ack_defer = 1'b0;
+        ack_counted = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if ((field == Field__AckSlot) && ~is_tx && ~tx_bit && ~sampled) begin
+                ev_rx_success = 1'b1;
+            end
+            if ((field == Field__ErrorFlag) && flag_passive) begin
+                if (ack_pending && ~sampled) begin
+                    ev_tec_add8 = 1'b1;
+                    ack_counted = 1'b1;
+                end
+            end
+            if (in_delim && bc0 && ~sampled) begin
+                if (delim_first && after_error_flag && ~is_tx) begin
+                    ev_rec_add8 = 1'b1;
+                end
+                if (dom7) begin
+                    if (is_tx) begin
+                        ev_tec_add8 = 1'b1;
+                    end
+                    else begin
+                        ev_rec_add8 = 1'b1;
+                    end
+                end
+            end
+        end
+        if (error) begin
+            if (as_tx) begin
+                if (ack_err && passive_now) begin
+                    ack_defer = 1'b1;
+                end
+                else if (~tec_exempt) begin
+                    ev_tec_add8 = 1'b1;
+                end
+            end
+            else begin
+                ev_rec_add1 = 1'b1;
+            end
+        end
+        if (flag_error) begin
+            if (is_tx) begin
+                ev_tec_add8 = 1'b1;
+            end
+            else begin
+                ev_rec_add8 = 1'b1;
+            end
+        end
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
+        tec_add8 = ev_tec_add8 && ~listen_only;
+        rec_add1 = ev_rec_add1 && ~listen_only;
+        rec_add8 = ev_rec_add8 && ~listen_only;
+        rx_success = ev_rx_success && ~listen_only;
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__if_recessive
+
+
+module drcc_m0__chan_a__bsp__rules__la_ack_counted(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_ack_counted__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_ack_counted__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_ack_counted
+
+
+module drcc_m0__chan_a__bsp__rules__la_ack_counted__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6437,10 +8368,10 @@ module drcc_m0__chan_a__bsp__rules__p_bus_off(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__rules__p_bus_off
+endmodule // drcc_m0__chan_a__bsp__rules__la_ack_counted__dominant_q
 
 
-module drcc_m0__chan_a__bsp__rules__p_passive(d,q,clock);
+module drcc_m0__chan_a__bsp__rules__la_ack_counted__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6453,10 +8384,59 @@ module drcc_m0__chan_a__bsp__rules__p_passive(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__rules__p_passive
+endmodule // drcc_m0__chan_a__bsp__rules__la_ack_counted__recessive_q
 
 
-module drcc_m0__chan_a__bsp__rules__p_rec_ge120(d,q,clock);
+module drcc_m0__chan_a__bsp__rules__la_ack_defer(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_ack_defer__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_ack_defer__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_ack_defer
+
+
+module drcc_m0__chan_a__bsp__rules__la_ack_defer__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6469,10 +8449,10 @@ module drcc_m0__chan_a__bsp__rules__p_rec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__rules__p_rec_ge120
+endmodule // drcc_m0__chan_a__bsp__rules__la_ack_defer__dominant_q
 
 
-module drcc_m0__chan_a__bsp__rules__p_rec_ge127(d,q,clock);
+module drcc_m0__chan_a__bsp__rules__la_ack_defer__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6485,10 +8465,59 @@ module drcc_m0__chan_a__bsp__rules__p_rec_ge127(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__rules__p_rec_ge127
+endmodule // drcc_m0__chan_a__bsp__rules__la_ack_defer__recessive_q
 
 
-module drcc_m0__chan_a__bsp__rules__p_tec_ge120(d,q,clock);
+module drcc_m0__chan_a__bsp__rules__la_bus_off_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_bus_off_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_bus_off_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_bus_off_after
+
+
+module drcc_m0__chan_a__bsp__rules__la_bus_off_after__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6501,10 +8530,10 @@ module drcc_m0__chan_a__bsp__rules__p_tec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__rules__p_tec_ge120
+endmodule // drcc_m0__chan_a__bsp__rules__la_bus_off_after__dominant_q
 
 
-module drcc_m0__chan_a__bsp__rules__p_tec_ge248(d,q,clock);
+module drcc_m0__chan_a__bsp__rules__la_bus_off_after__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6517,7 +8546,412 @@ module drcc_m0__chan_a__bsp__rules__p_tec_ge248(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_a__bsp__rules__p_tec_ge248
+endmodule // drcc_m0__chan_a__bsp__rules__la_bus_off_after__recessive_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_passive_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_passive_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_passive_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_passive_after
+
+
+module drcc_m0__chan_a__bsp__rules__la_passive_after__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_passive_after__dominant_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_passive_after__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_passive_after__recessive_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_rec_add1(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_rec_add1__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_rec_add1__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_rec_add1
+
+
+module drcc_m0__chan_a__bsp__rules__la_rec_add1__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_rec_add1__dominant_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_rec_add1__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_rec_add1__recessive_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_rec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_rec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_rec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_rec_add8
+
+
+module drcc_m0__chan_a__bsp__rules__la_rec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_rec_add8__dominant_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_rec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_rec_add8__recessive_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_rx_success(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_rx_success__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_rx_success__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_rx_success
+
+
+module drcc_m0__chan_a__bsp__rules__la_rx_success__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_rx_success__dominant_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_rx_success__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_rx_success__recessive_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_tec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_a__bsp__rules__la_tec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_a__bsp__rules__la_tec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_a__bsp__rules__la_tec_add8
+
+
+module drcc_m0__chan_a__bsp__rules__la_tec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_tec_add8__dominant_q
+
+
+module drcc_m0__chan_a__bsp__rules__la_tec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_a__bsp__rules__la_tec_add8__recessive_q
 
 
 module drcc_m0__chan_a__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);
@@ -9524,6 +11958,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     wire  rx_frame__rx_rtr;
     wire  [3:0] rx_frame__rx_dlc;
     wire  [63:0] rx_frame__rx_data;
+    reg  detect__clk;
     reg  detect__sample;
     reg  detect__sampled;
     reg  [4:0] detect__field;
@@ -9545,14 +11980,23 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  detect__ack_check_off;
     wire  detect__error;
     wire  detect__flag_error;
-    wire  detect__bit_err;
-    wire  detect__stuff_err;
-    wire  detect__form_err;
-    wire  detect__crc_err;
-    wire  detect__ack_err;
     wire  detect__sof_error;
     wire  detect__lost;
-    wire  detect__tec_exempt;
+    wire  detect__kind_bit;
+    wire  detect__kind_stuff;
+    wire  detect__kind_crc;
+    wire  detect__kind_form;
+    wire  detect__kind_ack;
+    wire  detect__dom_error;
+    wire  detect__dom_flag_error;
+    wire  detect__dom_ack_err;
+    wire  detect__dom_tec_exempt;
+    wire  detect__dom_sof_error;
+    wire  detect__rec_error;
+    wire  detect__rec_flag_error;
+    wire  detect__rec_ack_err;
+    wire  detect__rec_tec_exempt;
+    wire  detect__rec_sof_error;
     reg  rules__clk;
     reg  rules__sample;
     reg  rules__sampled;
@@ -9567,13 +12011,18 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  rules__delim_first;
     reg  rules__dom7;
     reg  rules__ack_pending;
-    reg  rules__tx_valid;
     reg  rules__listen_only;
-    reg  rules__error;
-    reg  rules__flag_error;
-    reg  rules__ack_err;
-    reg  rules__tec_exempt;
-    reg  rules__as_tx;
+    reg  rules__tx_valid;
+    reg  rules__dom_error;
+    reg  rules__dom_flag_error;
+    reg  rules__dom_ack_err;
+    reg  rules__dom_tec_exempt;
+    reg  rules__dom_sof_error;
+    reg  rules__rec_error;
+    reg  rules__rec_flag_error;
+    reg  rules__rec_ack_err;
+    reg  rules__rec_tec_exempt;
+    reg  rules__rec_sof_error;
     reg  [8:0] rules__tec;
     reg  [7:0] rules__rec;
     reg  rules__error_passive;
@@ -9581,8 +12030,8 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     wire  rules__tec_add8;
     wire  rules__rec_add1;
     wire  rules__rec_add8;
-    wire  rules__tx_success;
     wire  rules__rx_success;
+    wire  rules__tx_success;
     wire  rules__passive_after;
     wire  rules__bus_off_after;
     wire  rules__ack_defer;
@@ -9606,11 +12055,11 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
     reg  err_capture__clk;
     reg  err_capture__rst;
     reg  err_capture__capture;
-    reg  err_capture__bit_err;
-    reg  err_capture__stuff_err;
-    reg  err_capture__form_err;
-    reg  err_capture__ack_err;
-    reg  err_capture__crc_err;
+    reg  err_capture__kind_bit;
+    reg  err_capture__kind_stuff;
+    reg  err_capture__kind_form;
+    reg  err_capture__kind_ack;
+    reg  err_capture__kind_crc;
     reg  err_capture__as_tx;
     reg  err_capture__arb_lost;
     reg  [4:0] err_capture__field;
@@ -9799,6 +12248,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .rx_data(rx_frame__rx_data)
     );
     drcc_m0__chan_b__bsp__detect detect(
+        .clk(detect__clk),
         .sample(detect__sample),
         .sampled(detect__sampled),
         .field(detect__field),
@@ -9820,14 +12270,23 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .ack_check_off(detect__ack_check_off),
         .error(detect__error),
         .flag_error(detect__flag_error),
-        .bit_err(detect__bit_err),
-        .stuff_err(detect__stuff_err),
-        .form_err(detect__form_err),
-        .crc_err(detect__crc_err),
-        .ack_err(detect__ack_err),
         .sof_error(detect__sof_error),
         .lost(detect__lost),
-        .tec_exempt(detect__tec_exempt)
+        .kind_bit(detect__kind_bit),
+        .kind_stuff(detect__kind_stuff),
+        .kind_crc(detect__kind_crc),
+        .kind_form(detect__kind_form),
+        .kind_ack(detect__kind_ack),
+        .dom_error(detect__dom_error),
+        .dom_flag_error(detect__dom_flag_error),
+        .dom_ack_err(detect__dom_ack_err),
+        .dom_tec_exempt(detect__dom_tec_exempt),
+        .dom_sof_error(detect__dom_sof_error),
+        .rec_error(detect__rec_error),
+        .rec_flag_error(detect__rec_flag_error),
+        .rec_ack_err(detect__rec_ack_err),
+        .rec_tec_exempt(detect__rec_tec_exempt),
+        .rec_sof_error(detect__rec_sof_error)
     );
     drcc_m0__chan_b__bsp__rules rules(
         .clk(rules__clk),
@@ -9844,13 +12303,18 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .delim_first(rules__delim_first),
         .dom7(rules__dom7),
         .ack_pending(rules__ack_pending),
-        .tx_valid(rules__tx_valid),
         .listen_only(rules__listen_only),
-        .error(rules__error),
-        .flag_error(rules__flag_error),
-        .ack_err(rules__ack_err),
-        .tec_exempt(rules__tec_exempt),
-        .as_tx(rules__as_tx),
+        .tx_valid(rules__tx_valid),
+        .dom_error(rules__dom_error),
+        .dom_flag_error(rules__dom_flag_error),
+        .dom_ack_err(rules__dom_ack_err),
+        .dom_tec_exempt(rules__dom_tec_exempt),
+        .dom_sof_error(rules__dom_sof_error),
+        .rec_error(rules__rec_error),
+        .rec_flag_error(rules__rec_flag_error),
+        .rec_ack_err(rules__rec_ack_err),
+        .rec_tec_exempt(rules__rec_tec_exempt),
+        .rec_sof_error(rules__rec_sof_error),
         .tec(rules__tec),
         .rec(rules__rec),
         .error_passive(rules__error_passive),
@@ -9858,8 +12322,8 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .tec_add8(rules__tec_add8),
         .rec_add1(rules__rec_add1),
         .rec_add8(rules__rec_add8),
-        .tx_success(rules__tx_success),
         .rx_success(rules__rx_success),
+        .tx_success(rules__tx_success),
         .passive_after(rules__passive_after),
         .bus_off_after(rules__bus_off_after),
         .ack_defer(rules__ack_defer),
@@ -9887,11 +12351,11 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         .clk(err_capture__clk),
         .rst(err_capture__rst),
         .capture(err_capture__capture),
-        .bit_err(err_capture__bit_err),
-        .stuff_err(err_capture__stuff_err),
-        .form_err(err_capture__form_err),
-        .ack_err(err_capture__ack_err),
-        .crc_err(err_capture__crc_err),
+        .kind_bit(err_capture__kind_bit),
+        .kind_stuff(err_capture__kind_stuff),
+        .kind_form(err_capture__kind_form),
+        .kind_ack(err_capture__kind_ack),
+        .kind_crc(err_capture__kind_crc),
         .as_tx(err_capture__as_tx),
         .arb_lost(err_capture__arb_lost),
         .field(err_capture__field),
@@ -10011,6 +12475,7 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         rx_frame__take_data_len = fsm__rx_take_data_len;
         rx_frame__take_data = fsm__rx_take_data;
         rx_frame__publish = fsm__rx_publish;
+        detect__clk = clk;
         detect__sample = sample;
         detect__sampled = sampled;
         detect__field = fsm__field;
@@ -10045,11 +12510,16 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         rules__ack_pending = fsm__ack_pending;
         rules__tx_valid = fsm__tx_valid;
         rules__listen_only = listen_only;
-        rules__error = detect__error;
-        rules__flag_error = detect__flag_error;
-        rules__ack_err = detect__ack_err;
-        rules__tec_exempt = detect__tec_exempt;
-        rules__as_tx = fsm__is_tx || detect__sof_error;
+        rules__dom_error = detect__dom_error;
+        rules__dom_flag_error = detect__dom_flag_error;
+        rules__dom_ack_err = detect__dom_ack_err;
+        rules__dom_tec_exempt = detect__dom_tec_exempt;
+        rules__dom_sof_error = detect__dom_sof_error;
+        rules__rec_error = detect__rec_error;
+        rules__rec_flag_error = detect__rec_flag_error;
+        rules__rec_ack_err = detect__rec_ack_err;
+        rules__rec_tec_exempt = detect__rec_tec_exempt;
+        rules__rec_sof_error = detect__rec_sof_error;
         rules__tec = fc__tec;
         rules__rec = fc__rec;
         rules__error_passive = fc__error_passive;
@@ -10063,11 +12533,11 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
         fc__err_reset = err_reset;
         fc__ewl = ewl;
         err_capture__capture = detect__error || detect__flag_error;
-        err_capture__bit_err = detect__bit_err;
-        err_capture__stuff_err = detect__stuff_err;
-        err_capture__form_err = detect__form_err;
-        err_capture__ack_err = detect__ack_err;
-        err_capture__crc_err = detect__crc_err;
+        err_capture__kind_bit = detect__kind_bit;
+        err_capture__kind_stuff = detect__kind_stuff;
+        err_capture__kind_form = detect__kind_form;
+        err_capture__kind_ack = detect__kind_ack;
+        err_capture__kind_crc = detect__kind_crc;
         err_capture__as_tx = fsm__is_tx || detect__sof_error;
         err_capture__arb_lost = detect__lost;
         err_capture__field = fsm__field;
@@ -10104,7 +12574,460 @@ module drcc_m0__chan_b__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync
 endmodule // drcc_m0__chan_b__bsp
 
 
-module drcc_m0__chan_b__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+module drcc_m0__chan_b__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  kind_bit;
+    output reg  kind_stuff;
+    output reg  kind_crc;
+    output reg  kind_form;
+    output reg  kind_ack;
+    output reg  dom_error;
+    output reg  dom_flag_error;
+    output reg  dom_ack_err;
+    output reg  dom_tec_exempt;
+    output reg  dom_sof_error;
+    output reg  rec_error;
+    output reg  rec_flag_error;
+    output reg  rec_ack_err;
+    output reg  rec_tec_exempt;
+    output reg  rec_sof_error;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Stub signals
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__in_frame;
+    reg  if_dominant__in_arbitration;
+    reg  if_dominant__ack_slot;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__bc0;
+    reg  if_dominant__bc6;
+    reg  if_dominant__bc7;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__crc_ok;
+    reg  if_dominant__last_bit_arb;
+    reg  if_dominant__at_stuff_bit;
+    reg  if_dominant__stuff_last;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__ack_check_off;
+    wire  if_dominant__error;
+    wire  if_dominant__flag_error;
+    wire  if_dominant__bit_err;
+    wire  if_dominant__stuff_err;
+    wire  if_dominant__form_err;
+    wire  if_dominant__crc_err;
+    wire  if_dominant__ack_err;
+    wire  if_dominant__sof_error;
+    wire  if_dominant__lost;
+    wire  if_dominant__tec_exempt;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__in_frame;
+    reg  if_recessive__in_arbitration;
+    reg  if_recessive__ack_slot;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__bc0;
+    reg  if_recessive__bc6;
+    reg  if_recessive__bc7;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__crc_ok;
+    reg  if_recessive__last_bit_arb;
+    reg  if_recessive__at_stuff_bit;
+    reg  if_recessive__stuff_last;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__ack_check_off;
+    wire  if_recessive__error;
+    wire  if_recessive__flag_error;
+    wire  if_recessive__bit_err;
+    wire  if_recessive__stuff_err;
+    wire  if_recessive__form_err;
+    wire  if_recessive__crc_err;
+    wire  if_recessive__ack_err;
+    wire  if_recessive__sof_error;
+    wire  if_recessive__lost;
+    wire  if_recessive__tec_exempt;
+    reg  la_error__clk;
+    reg  la_error__sample;
+    reg  la_error__sampled;
+    reg  la_error__if_dominant;
+    reg  la_error__if_recessive;
+    wire  la_error__decision;
+    reg  la_flag_error__clk;
+    reg  la_flag_error__sample;
+    reg  la_flag_error__sampled;
+    reg  la_flag_error__if_dominant;
+    reg  la_flag_error__if_recessive;
+    wire  la_flag_error__decision;
+    reg  la_sof_error__clk;
+    reg  la_sof_error__sample;
+    reg  la_sof_error__sampled;
+    reg  la_sof_error__if_dominant;
+    reg  la_sof_error__if_recessive;
+    wire  la_sof_error__decision;
+    reg  la_lost__clk;
+    reg  la_lost__sample;
+    reg  la_lost__sampled;
+    reg  la_lost__if_dominant;
+    reg  la_lost__if_recessive;
+    wire  la_lost__decision;
+    reg  la_kind_bit__clk;
+    reg  la_kind_bit__sample;
+    reg  la_kind_bit__sampled;
+    reg  la_kind_bit__if_dominant;
+    reg  la_kind_bit__if_recessive;
+    wire  la_kind_bit__decision;
+    reg  la_kind_stuff__clk;
+    reg  la_kind_stuff__sample;
+    reg  la_kind_stuff__sampled;
+    reg  la_kind_stuff__if_dominant;
+    reg  la_kind_stuff__if_recessive;
+    wire  la_kind_stuff__decision;
+    reg  la_kind_crc__clk;
+    reg  la_kind_crc__sample;
+    reg  la_kind_crc__sampled;
+    reg  la_kind_crc__if_dominant;
+    reg  la_kind_crc__if_recessive;
+    wire  la_kind_crc__decision;
+    reg  la_kind_form__clk;
+    reg  la_kind_form__sample;
+    reg  la_kind_form__sampled;
+    reg  la_kind_form__if_dominant;
+    reg  la_kind_form__if_recessive;
+    wire  la_kind_form__decision;
+    reg  la_kind_ack__clk;
+    reg  la_kind_ack__sample;
+    reg  la_kind_ack__sampled;
+    reg  la_kind_ack__if_dominant;
+    reg  la_kind_ack__if_recessive;
+    wire  la_kind_ack__decision;
+    
+    // Local signals
+    reg  dom_kind_bit;
+    reg  dom_kind_stuff;
+    reg  dom_kind_crc;
+    reg  dom_kind_form;
+    reg  dom_kind_ack;
+    reg  rec_kind_bit;
+    reg  rec_kind_stuff;
+    reg  rec_kind_crc;
+    reg  rec_kind_form;
+    reg  rec_kind_ack;
+    reg  dom_capture;
+    reg  rec_capture;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .in_frame(if_dominant__in_frame),
+        .in_arbitration(if_dominant__in_arbitration),
+        .ack_slot(if_dominant__ack_slot),
+        .in_delim(if_dominant__in_delim),
+        .bc0(if_dominant__bc0),
+        .bc6(if_dominant__bc6),
+        .bc7(if_dominant__bc7),
+        .flag_passive(if_dominant__flag_passive),
+        .crc_ok(if_dominant__crc_ok),
+        .last_bit_arb(if_dominant__last_bit_arb),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .stuff_last(if_dominant__stuff_last),
+        .listen_only(if_dominant__listen_only),
+        .ack_check_off(if_dominant__ack_check_off),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .bit_err(if_dominant__bit_err),
+        .stuff_err(if_dominant__stuff_err),
+        .form_err(if_dominant__form_err),
+        .crc_err(if_dominant__crc_err),
+        .ack_err(if_dominant__ack_err),
+        .sof_error(if_dominant__sof_error),
+        .lost(if_dominant__lost),
+        .tec_exempt(if_dominant__tec_exempt)
+    );
+    drcc_m0__chan_b__bsp__detect__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .in_frame(if_recessive__in_frame),
+        .in_arbitration(if_recessive__in_arbitration),
+        .ack_slot(if_recessive__ack_slot),
+        .in_delim(if_recessive__in_delim),
+        .bc0(if_recessive__bc0),
+        .bc6(if_recessive__bc6),
+        .bc7(if_recessive__bc7),
+        .flag_passive(if_recessive__flag_passive),
+        .crc_ok(if_recessive__crc_ok),
+        .last_bit_arb(if_recessive__last_bit_arb),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .stuff_last(if_recessive__stuff_last),
+        .listen_only(if_recessive__listen_only),
+        .ack_check_off(if_recessive__ack_check_off),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .bit_err(if_recessive__bit_err),
+        .stuff_err(if_recessive__stuff_err),
+        .form_err(if_recessive__form_err),
+        .crc_err(if_recessive__crc_err),
+        .ack_err(if_recessive__ack_err),
+        .sof_error(if_recessive__sof_error),
+        .lost(if_recessive__lost),
+        .tec_exempt(if_recessive__tec_exempt)
+    );
+    drcc_m0__chan_b__bsp__detect__la_error la_error(
+        .clk(la_error__clk),
+        .sample(la_error__sample),
+        .sampled(la_error__sampled),
+        .if_dominant(la_error__if_dominant),
+        .if_recessive(la_error__if_recessive),
+        .decision(la_error__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_flag_error la_flag_error(
+        .clk(la_flag_error__clk),
+        .sample(la_flag_error__sample),
+        .sampled(la_flag_error__sampled),
+        .if_dominant(la_flag_error__if_dominant),
+        .if_recessive(la_flag_error__if_recessive),
+        .decision(la_flag_error__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_sof_error la_sof_error(
+        .clk(la_sof_error__clk),
+        .sample(la_sof_error__sample),
+        .sampled(la_sof_error__sampled),
+        .if_dominant(la_sof_error__if_dominant),
+        .if_recessive(la_sof_error__if_recessive),
+        .decision(la_sof_error__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_lost la_lost(
+        .clk(la_lost__clk),
+        .sample(la_lost__sample),
+        .sampled(la_lost__sampled),
+        .if_dominant(la_lost__if_dominant),
+        .if_recessive(la_lost__if_recessive),
+        .decision(la_lost__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_bit la_kind_bit(
+        .clk(la_kind_bit__clk),
+        .sample(la_kind_bit__sample),
+        .sampled(la_kind_bit__sampled),
+        .if_dominant(la_kind_bit__if_dominant),
+        .if_recessive(la_kind_bit__if_recessive),
+        .decision(la_kind_bit__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_stuff la_kind_stuff(
+        .clk(la_kind_stuff__clk),
+        .sample(la_kind_stuff__sample),
+        .sampled(la_kind_stuff__sampled),
+        .if_dominant(la_kind_stuff__if_dominant),
+        .if_recessive(la_kind_stuff__if_recessive),
+        .decision(la_kind_stuff__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_crc la_kind_crc(
+        .clk(la_kind_crc__clk),
+        .sample(la_kind_crc__sample),
+        .sampled(la_kind_crc__sampled),
+        .if_dominant(la_kind_crc__if_dominant),
+        .if_recessive(la_kind_crc__if_recessive),
+        .decision(la_kind_crc__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_form la_kind_form(
+        .clk(la_kind_form__clk),
+        .sample(la_kind_form__sample),
+        .sampled(la_kind_form__sampled),
+        .if_dominant(la_kind_form__if_dominant),
+        .if_recessive(la_kind_form__if_recessive),
+        .decision(la_kind_form__decision)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_ack la_kind_ack(
+        .clk(la_kind_ack__clk),
+        .sample(la_kind_ack__sample),
+        .sampled(la_kind_ack__sampled),
+        .if_dominant(la_kind_ack__if_dominant),
+        .if_recessive(la_kind_ack__if_recessive),
+        .decision(la_kind_ack__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_dominant__field = field;
+        if_recessive__field = field;
+        if_dominant__is_tx = is_tx;
+        if_recessive__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_recessive__tx_bit = tx_bit;
+        if_dominant__in_frame = in_frame;
+        if_recessive__in_frame = in_frame;
+        if_dominant__in_arbitration = in_arbitration;
+        if_recessive__in_arbitration = in_arbitration;
+        if_dominant__ack_slot = ack_slot;
+        if_recessive__ack_slot = ack_slot;
+        if_dominant__in_delim = in_delim;
+        if_recessive__in_delim = in_delim;
+        if_dominant__bc0 = bc0;
+        if_recessive__bc0 = bc0;
+        if_dominant__bc6 = bc6;
+        if_recessive__bc6 = bc6;
+        if_dominant__bc7 = bc7;
+        if_recessive__bc7 = bc7;
+        if_dominant__flag_passive = flag_passive;
+        if_recessive__flag_passive = flag_passive;
+        if_dominant__crc_ok = crc_ok;
+        if_recessive__crc_ok = crc_ok;
+        if_dominant__last_bit_arb = last_bit_arb;
+        if_recessive__last_bit_arb = last_bit_arb;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_dominant__stuff_last = stuff_last;
+        if_recessive__stuff_last = stuff_last;
+        if_dominant__listen_only = listen_only;
+        if_recessive__listen_only = listen_only;
+        if_dominant__ack_check_off = ack_check_off;
+        if_recessive__ack_check_off = ack_check_off;
+        dom_error = if_dominant__error;
+        dom_flag_error = if_dominant__flag_error;
+        dom_ack_err = if_dominant__ack_err;
+        dom_tec_exempt = if_dominant__tec_exempt;
+        dom_sof_error = if_dominant__sof_error;
+        rec_error = if_recessive__error;
+        rec_flag_error = if_recessive__flag_error;
+        rec_ack_err = if_recessive__ack_err;
+        rec_tec_exempt = if_recessive__tec_exempt;
+        rec_sof_error = if_recessive__sof_error;
+        la_error__clk = clk;
+        la_error__sample = sample;
+        la_error__sampled = sampled;
+        la_error__if_dominant = if_dominant__error;
+        la_error__if_recessive = if_recessive__error;
+        error = la_error__decision;
+        la_flag_error__clk = clk;
+        la_flag_error__sample = sample;
+        la_flag_error__sampled = sampled;
+        la_flag_error__if_dominant = if_dominant__flag_error;
+        la_flag_error__if_recessive = if_recessive__flag_error;
+        flag_error = la_flag_error__decision;
+        la_sof_error__clk = clk;
+        la_sof_error__sample = sample;
+        la_sof_error__sampled = sampled;
+        la_sof_error__if_dominant = if_dominant__sof_error;
+        la_sof_error__if_recessive = if_recessive__sof_error;
+        sof_error = la_sof_error__decision;
+        la_lost__clk = clk;
+        la_lost__sample = sample;
+        la_lost__sampled = sampled;
+        la_lost__if_dominant = if_dominant__lost;
+        la_lost__if_recessive = if_recessive__lost;
+        lost = la_lost__decision;
+        dom_capture = if_dominant__error || if_dominant__flag_error;
+        dom_kind_bit = dom_capture && if_dominant__bit_err;
+        dom_kind_stuff = dom_capture && ~if_dominant__bit_err && if_dominant__stuff_err;
+        dom_kind_form = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && if_dominant__form_err;
+        dom_kind_ack = dom_capture && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && if_dominant__ack_err;
+        dom_kind_crc = if_dominant__crc_err && ~if_dominant__bit_err && ~if_dominant__stuff_err && ~if_dominant__form_err && ~if_dominant__ack_err;
+        rec_capture = if_recessive__error || if_recessive__flag_error;
+        rec_kind_bit = rec_capture && if_recessive__bit_err;
+        rec_kind_stuff = rec_capture && ~if_recessive__bit_err && if_recessive__stuff_err;
+        rec_kind_form = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && if_recessive__form_err;
+        rec_kind_ack = rec_capture && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && if_recessive__ack_err;
+        rec_kind_crc = if_recessive__crc_err && ~if_recessive__bit_err && ~if_recessive__stuff_err && ~if_recessive__form_err && ~if_recessive__ack_err;
+        la_kind_bit__clk = clk;
+        la_kind_bit__sample = sample;
+        la_kind_bit__sampled = sampled;
+        la_kind_bit__if_dominant = dom_kind_bit;
+        la_kind_bit__if_recessive = rec_kind_bit;
+        kind_bit = la_kind_bit__decision;
+        la_kind_stuff__clk = clk;
+        la_kind_stuff__sample = sample;
+        la_kind_stuff__sampled = sampled;
+        la_kind_stuff__if_dominant = dom_kind_stuff;
+        la_kind_stuff__if_recessive = rec_kind_stuff;
+        kind_stuff = la_kind_stuff__decision;
+        la_kind_crc__clk = clk;
+        la_kind_crc__sample = sample;
+        la_kind_crc__sampled = sampled;
+        la_kind_crc__if_dominant = dom_kind_crc;
+        la_kind_crc__if_recessive = rec_kind_crc;
+        kind_crc = la_kind_crc__decision;
+        la_kind_form__clk = clk;
+        la_kind_form__sample = sample;
+        la_kind_form__sampled = sampled;
+        la_kind_form__if_dominant = dom_kind_form;
+        la_kind_form__if_recessive = rec_kind_form;
+        kind_form = la_kind_form__decision;
+        la_kind_ack__clk = clk;
+        la_kind_ack__sample = sample;
+        la_kind_ack__sampled = sampled;
+        la_kind_ack__if_dominant = dom_kind_ack;
+        la_kind_ack__if_recessive = rec_kind_ack;
+        kind_ack = la_kind_ack__decision;
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect
+
+
+module drcc_m0__chan_b__bsp__detect__if_dominant(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
     
     // Module arguments
     input wire  sample;
@@ -10254,20 +13177,902 @@ module drcc_m0__chan_b__bsp__detect(sample,sampled,field,is_tx,tx_bit,in_frame,i
         bit_err = stuff_as_bit || bit_mon || flag_error;
     end
     
-endmodule // drcc_m0__chan_b__bsp__detect
+endmodule // drcc_m0__chan_b__bsp__detect__if_dominant
 
 
-module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_err,ack_err,crc_err,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan_b__bsp__detect__if_recessive(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  in_frame;
+    input wire  in_arbitration;
+    input wire  ack_slot;
+    input wire  in_delim;
+    input wire  bc0;
+    input wire  bc6;
+    input wire  bc7;
+    input wire  flag_passive;
+    input wire  crc_ok;
+    input wire  last_bit_arb;
+    input wire  at_stuff_bit;
+    input wire  stuff_last;
+    input wire  listen_only;
+    input wire  ack_check_off;
+    output reg  error;
+    output reg  flag_error;
+    output reg  bit_err;
+    output reg  stuff_err;
+    output reg  form_err;
+    output reg  crc_err;
+    output reg  ack_err;
+    output reg  sof_error;
+    output reg  lost;
+    output reg  tec_exempt;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  bit_mon;
+    reg  stuff_as_bit;
+    
+    // Update code
+    always @(*) begin
+        stuff_err = 1'b0;
+        stuff_as_bit = 1'b0;
+        tec_exempt = 1'b0;
+        bit_mon = 1'b0;
+        form_err = 1'b0;
+        crc_err = 1'b0;
+        ack_err = 1'b0;
+        flag_error = 1'b0;
+        sof_error = 1'b0;
+        lost = 1'b0;
+        if (sample && at_stuff_bit && (sampled == stuff_last)) begin
+            stuff_err = 1'b1;
+            if (is_tx && ~(last_bit_arb && tx_bit)) begin
+                stuff_as_bit = 1'b1;
+            end
+            if (is_tx && last_bit_arb && tx_bit) begin
+                tec_exempt = 1'b1;
+            end
+        end
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if (is_tx && in_frame && (sampled != tx_bit)) begin
+                if (in_arbitration && tx_bit) begin
+                    lost = 1'b1;
+                end
+                else if (ack_slot && tx_bit) begin
+                end
+                else begin
+                    bit_mon = 1'b1;
+                end
+            end
+            if (~is_tx && ack_slot && ~tx_bit && sampled) begin
+                bit_mon = 1'b1;
+            end
+            case (field)
+                Field__Idle:
+                    begin
+                        if (sampled && ~tx_bit) begin
+                            sof_error = 1'b1;
+                            bit_mon = 1'b1;
+                        end
+                    end
+                Field__CrcDelim:
+                    begin
+                        form_err = ~sampled;
+                    end
+                Field__AckSlot:
+                    begin
+                        ack_err = is_tx && sampled && ~ack_check_off;
+                    end
+                Field__AckDelim:
+                    begin
+                        if (~sampled) begin
+                            form_err = 1'b1;
+                        end
+                        else if (~crc_ok && ~is_tx) begin
+                            crc_err = 1'b1;
+                        end
+                    end
+                Field__Eof:
+                    begin
+                        if (~sampled && ~(bc6 && ~is_tx)) begin
+                            form_err = 1'b1;
+                        end
+                    end
+                Field__ErrorFlag:
+                    begin
+                        flag_error = ~flag_passive && sampled;
+                    end
+                Field__OverloadFlag:
+                    begin
+                        flag_error = sampled && ~listen_only;
+                    end
+                default:
+                    begin
+                    end
+            endcase
+            if (in_delim && ~bc0 && ~sampled && ~bc7) begin
+                form_err = 1'b1;
+            end
+        end
+        error = stuff_err || bit_mon || form_err || crc_err || ack_err;
+        bit_err = stuff_as_bit || bit_mon || flag_error;
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__if_recessive
+
+
+module drcc_m0__chan_b__bsp__detect__la_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_error
+
+
+module drcc_m0__chan_b__bsp__detect__la_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_error__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_error__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_flag_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_flag_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_flag_error
+
+
+module drcc_m0__chan_b__bsp__detect__la_flag_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_flag_error__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_flag_error__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_ack(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_ack__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_ack__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_ack
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_ack__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_ack__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_ack__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_ack__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_bit(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_bit__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_bit__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_bit
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_bit__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_bit__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_bit__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_bit__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_crc(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_crc__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_crc__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_crc
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_crc__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_crc__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_crc__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_crc__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_form(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_form__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_form__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_form
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_form__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_form__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_form__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_form__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_stuff(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_kind_stuff__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_kind_stuff__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_stuff
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_stuff__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_stuff__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_kind_stuff__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_kind_stuff__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_lost(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_lost__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_lost__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_lost
+
+
+module drcc_m0__chan_b__bsp__detect__la_lost__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_lost__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_lost__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_lost__recessive_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_sof_error(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__detect__la_sof_error__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__detect__la_sof_error
+
+
+module drcc_m0__chan_b__bsp__detect__la_sof_error__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_sof_error__dominant_q
+
+
+module drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__detect__la_sof_error__recessive_q
+
+
+module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
     
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  capture;
-    input wire  bit_err;
-    input wire  stuff_err;
-    input wire  form_err;
-    input wire  ack_err;
-    input wire  crc_err;
+    input wire  kind_bit;
+    input wire  kind_stuff;
+    input wire  kind_form;
+    input wire  kind_ack;
+    input wire  kind_crc;
     input wire  as_tx;
     input wire  arb_lost;
     input wire  [4:0] field;
@@ -10523,20 +14328,17 @@ module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
         p_cnt_form_max__d = cnt_form_q__q == max8;
         p_cnt_ack_max__d = cnt_ack_q__q == max8;
         kind = k_crc;
-        if (bit_err) begin
+        if (kind_bit) begin
             kind = k_bit;
         end
-        else if (stuff_err) begin
+        else if (kind_stuff) begin
             kind = k_stuff;
         end
-        else if (form_err) begin
+        else if (kind_form) begin
             kind = k_form;
         end
-        else if (ack_err) begin
+        else if (kind_ack) begin
             kind = k_ack;
-        end
-        else if (crc_err) begin
-            kind = k_crc;
         end
         err_valid_q__d = 1'b0;
         if (capture) begin
@@ -10544,21 +14346,21 @@ module drcc_m0__chan_b__bsp__err_capture(clk,rst,capture,bit_err,stuff_err,form_
             err_kind_q__d = kind;
             err_field_q__d = field;
             err_tx_q__d = as_tx;
-            if ((kind == k_bit) && ~p_cnt_bit_max__q) begin
-                cnt_bit_q__d = cnt_bit_q__q + one8;
-            end
-            if ((kind == k_stuff) && ~p_cnt_stuff_max__q) begin
-                cnt_stuff_q__d = cnt_stuff_q__q + one8;
-            end
-            if ((kind == k_crc) && ~p_cnt_crc_max__q) begin
-                cnt_crc_q__d = cnt_crc_q__q + one8;
-            end
-            if ((kind == k_form) && ~p_cnt_form_max__q) begin
-                cnt_form_q__d = cnt_form_q__q + one8;
-            end
-            if ((kind == k_ack) && ~p_cnt_ack_max__q) begin
-                cnt_ack_q__d = cnt_ack_q__q + one8;
-            end
+        end
+        if (kind_bit && ~p_cnt_bit_max__q) begin
+            cnt_bit_q__d = cnt_bit_q__q + one8;
+        end
+        if (kind_stuff && ~p_cnt_stuff_max__q) begin
+            cnt_stuff_q__d = cnt_stuff_q__q + one8;
+        end
+        if (kind_crc && ~p_cnt_crc_max__q) begin
+            cnt_crc_q__d = cnt_crc_q__q + one8;
+        end
+        if (kind_form && ~p_cnt_form_max__q) begin
+            cnt_form_q__d = cnt_form_q__q + one8;
+        end
+        if (kind_ack && ~p_cnt_ack_max__q) begin
+            cnt_ack_q__d = cnt_ack_q__q + one8;
         end
         if (arb_lost) begin
             alc_q__d = p_alc__q;
@@ -11306,6 +15108,9 @@ module drcc_m0__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
     reg  [2:0] dom_cnt__d;
     wire  [2:0] dom_cnt__q;
     reg  dom_cnt__clock;
+    reg  hse_off__d;
+    wire  hse_off__q;
+    reg  hse_off__clock;
     reg  decode__clk;
     reg  [4:0] decode__field;
     reg  [6:0] decode__bit_cnt;
@@ -11339,6 +15144,9 @@ module drcc_m0__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
     reg  is_tx_n;
     reg  flag_passive_n;
     reg  monitor;
+    reg  hse_class;
+    reg  hse_stay;
+    reg  hse_n;
     
     // Sub module instances
     drcc_m0__chan_b__bsp__fsm__field_q field_q(
@@ -11386,6 +15194,11 @@ module drcc_m0__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
         .q(dom_cnt__q),
         .clock(dom_cnt__clock)
     );
+    drcc_m0__chan_b__bsp__fsm__hse_off hse_off(
+        .d(hse_off__d),
+        .q(hse_off__q),
+        .clock(hse_off__clock)
+    );
     drcc_m0__chan_b__bsp__fsm__decode decode(
         .clk(decode__clk),
         .field(decode__field),
@@ -11426,6 +15239,7 @@ module drcc_m0__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
         ack_pending_q__clock = clk;
         delim_first_q__clock = clk;
         dom_cnt__clock = clk;
+        hse_off__clock = clk;
         field_q__d = field_q__q;
         bit_cnt_q__d = bit_cnt_q__q;
         is_tx_q__d = is_tx_q__q;
@@ -11435,6 +15249,7 @@ module drcc_m0__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
         ack_pending_q__d = ack_pending_q__q;
         delim_first_q__d = delim_first_q__q;
         dom_cnt__d = dom_cnt__q;
+        hse_off__d = hse_off__q;
         decode__clk = clk;
         decode__field = field_q__q;
         decode__bit_cnt = bit_cnt_q__q;
@@ -11789,32 +15604,18 @@ module drcc_m0__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
             is_tx_q__d = is_tx_n;
             flag_passive_q__d = flag_passive_n;
         end
-        case (field_q__q)
-            Field__Integrating:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Idle:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Suspend:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__BusOff:
-                begin
-                    hard_sync_enable = 1'b1;
-                end
-            Field__Intermission:
-                begin
-                    hard_sync_enable = bit_cnt_q__q[32'h1];
-                end
-            default:
-                begin
-                    hard_sync_enable = 1'b0;
-                end
-        endcase
+        hse_class = (field_q__q == Field__Integrating) || (field_q__q == Field__Idle) || (field_q__q == Field__Suspend) || (field_q__q == Field__BusOff);
+        if (monitor) begin
+            hse_stay = (field_q__q == Field__Intermission) && sampled && (decode__bc2 || bit_cnt_q__q[32'h0]);
+        end
+        else begin
+            hse_stay = (field_q__q == Field__Intermission) && bit_cnt_q__q[32'h1];
+        end
+        hse_n = bus_off_after || (~sof && ~error && ~flag_error && (hse_class || hse_stay));
+        if (sample) begin
+            hse_off__d = ~hse_n;
+        end
+        hard_sync_enable = ~hse_off__q;
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
@@ -11843,6 +15644,7 @@ module drcc_m0__chan_b__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_
             ack_pending_q__d = 1'b0;
             delim_first_q__d = 1'b0;
             dom_cnt__d = zero3;
+            hse_off__d = 1'b0;
         end
     end
     
@@ -12664,6 +16466,22 @@ module drcc_m0__chan_b__bsp__fsm__flag_passive_q(d,q,clock);
 endmodule // drcc_m0__chan_b__bsp__fsm__flag_passive_q
 
 
+module drcc_m0__chan_b__bsp__fsm__hse_off(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__fsm__hse_off
+
+
 module drcc_m0__chan_b__bsp__fsm__is_tx_q(d,q,clock);
     
     // Module arguments
@@ -12712,7 +16530,7 @@ module drcc_m0__chan_b__bsp__fsm__recovery_cnt(d,q,clock);
 endmodule // drcc_m0__chan_b__bsp__fsm__recovery_cnt
 
 
-module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,tx_valid,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,tx_success,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,tx_valid,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,rx_success,tx_success,passive_after,bus_off_after,ack_defer,ack_counted);
     
     // Module arguments
     input wire  clk;
@@ -12729,13 +16547,18 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     input wire  delim_first;
     input wire  dom7;
     input wire  ack_pending;
-    input wire  tx_valid;
     input wire  listen_only;
-    input wire  error;
-    input wire  flag_error;
-    input wire  ack_err;
-    input wire  tec_exempt;
-    input wire  as_tx;
+    input wire  tx_valid;
+    input wire  dom_error;
+    input wire  dom_flag_error;
+    input wire  dom_ack_err;
+    input wire  dom_tec_exempt;
+    input wire  dom_sof_error;
+    input wire  rec_error;
+    input wire  rec_flag_error;
+    input wire  rec_ack_err;
+    input wire  rec_tec_exempt;
+    input wire  rec_sof_error;
     input wire  [8:0] tec;
     input wire  [7:0] rec;
     input wire  error_passive;
@@ -12743,8 +16566,8 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     output reg  tec_add8;
     output reg  rec_add1;
     output reg  rec_add8;
-    output reg  tx_success;
     output reg  rx_success;
+    output reg  tx_success;
     output reg  passive_after;
     output reg  bus_off_after;
     output reg  ack_defer;
@@ -12782,24 +16605,434 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     localparam Field__BusOff = 22;
     
     // Stub signals
-    reg  p_passive__d;
-    wire  p_passive__q;
-    reg  p_passive__clock;
-    reg  p_bus_off__d;
-    wire  p_bus_off__q;
-    reg  p_bus_off__clock;
-    reg  p_tec_ge120__d;
-    wire  p_tec_ge120__q;
-    reg  p_tec_ge120__clock;
-    reg  p_tec_ge248__d;
-    wire  p_tec_ge248__q;
-    reg  p_tec_ge248__clock;
-    reg  p_rec_ge127__d;
-    wire  p_rec_ge127__q;
-    reg  p_rec_ge127__clock;
-    reg  p_rec_ge120__d;
-    wire  p_rec_ge120__q;
-    reg  p_rec_ge120__clock;
+    reg  if_dominant__sample;
+    reg  if_dominant__sampled;
+    reg  if_dominant__at_stuff_bit;
+    reg  [4:0] if_dominant__field;
+    reg  if_dominant__is_tx;
+    reg  if_dominant__tx_bit;
+    reg  if_dominant__flag_passive;
+    reg  if_dominant__in_delim;
+    reg  if_dominant__after_error_flag;
+    reg  if_dominant__bc0;
+    reg  if_dominant__delim_first;
+    reg  if_dominant__dom7;
+    reg  if_dominant__ack_pending;
+    reg  if_dominant__listen_only;
+    reg  if_dominant__error;
+    reg  if_dominant__flag_error;
+    reg  if_dominant__ack_err;
+    reg  if_dominant__tec_exempt;
+    reg  if_dominant__as_tx;
+    reg  if_dominant__passive_now;
+    reg  if_dominant__bus_off_now;
+    reg  if_dominant__tec_ge120;
+    reg  if_dominant__tec_ge248;
+    reg  if_dominant__rec_ge127;
+    reg  if_dominant__rec_ge120;
+    wire  if_dominant__tec_add8;
+    wire  if_dominant__rec_add1;
+    wire  if_dominant__rec_add8;
+    wire  if_dominant__rx_success;
+    wire  if_dominant__passive_after;
+    wire  if_dominant__bus_off_after;
+    wire  if_dominant__ack_defer;
+    wire  if_dominant__ack_counted;
+    reg  if_recessive__sample;
+    reg  if_recessive__sampled;
+    reg  if_recessive__at_stuff_bit;
+    reg  [4:0] if_recessive__field;
+    reg  if_recessive__is_tx;
+    reg  if_recessive__tx_bit;
+    reg  if_recessive__flag_passive;
+    reg  if_recessive__in_delim;
+    reg  if_recessive__after_error_flag;
+    reg  if_recessive__bc0;
+    reg  if_recessive__delim_first;
+    reg  if_recessive__dom7;
+    reg  if_recessive__ack_pending;
+    reg  if_recessive__listen_only;
+    reg  if_recessive__error;
+    reg  if_recessive__flag_error;
+    reg  if_recessive__ack_err;
+    reg  if_recessive__tec_exempt;
+    reg  if_recessive__as_tx;
+    reg  if_recessive__passive_now;
+    reg  if_recessive__bus_off_now;
+    reg  if_recessive__tec_ge120;
+    reg  if_recessive__tec_ge248;
+    reg  if_recessive__rec_ge127;
+    reg  if_recessive__rec_ge120;
+    wire  if_recessive__tec_add8;
+    wire  if_recessive__rec_add1;
+    wire  if_recessive__rec_add8;
+    wire  if_recessive__rx_success;
+    wire  if_recessive__passive_after;
+    wire  if_recessive__bus_off_after;
+    wire  if_recessive__ack_defer;
+    wire  if_recessive__ack_counted;
+    reg  la_tec_add8__clk;
+    reg  la_tec_add8__sample;
+    reg  la_tec_add8__sampled;
+    reg  la_tec_add8__if_dominant;
+    reg  la_tec_add8__if_recessive;
+    wire  la_tec_add8__decision;
+    reg  la_rec_add1__clk;
+    reg  la_rec_add1__sample;
+    reg  la_rec_add1__sampled;
+    reg  la_rec_add1__if_dominant;
+    reg  la_rec_add1__if_recessive;
+    wire  la_rec_add1__decision;
+    reg  la_rec_add8__clk;
+    reg  la_rec_add8__sample;
+    reg  la_rec_add8__sampled;
+    reg  la_rec_add8__if_dominant;
+    reg  la_rec_add8__if_recessive;
+    wire  la_rec_add8__decision;
+    reg  la_rx_success__clk;
+    reg  la_rx_success__sample;
+    reg  la_rx_success__sampled;
+    reg  la_rx_success__if_dominant;
+    reg  la_rx_success__if_recessive;
+    wire  la_rx_success__decision;
+    reg  la_passive_after__clk;
+    reg  la_passive_after__sample;
+    reg  la_passive_after__sampled;
+    reg  la_passive_after__if_dominant;
+    reg  la_passive_after__if_recessive;
+    wire  la_passive_after__decision;
+    reg  la_bus_off_after__clk;
+    reg  la_bus_off_after__sample;
+    reg  la_bus_off_after__sampled;
+    reg  la_bus_off_after__if_dominant;
+    reg  la_bus_off_after__if_recessive;
+    wire  la_bus_off_after__decision;
+    reg  la_ack_defer__clk;
+    reg  la_ack_defer__sample;
+    reg  la_ack_defer__sampled;
+    reg  la_ack_defer__if_dominant;
+    reg  la_ack_defer__if_recessive;
+    wire  la_ack_defer__decision;
+    reg  la_ack_counted__clk;
+    reg  la_ack_counted__sample;
+    reg  la_ack_counted__sampled;
+    reg  la_ack_counted__if_dominant;
+    reg  la_ack_counted__if_recessive;
+    wire  la_ack_counted__decision;
+    
+    // Local signals
+    reg  tec_ge120;
+    reg  tec_ge248;
+    reg  rec_ge127;
+    reg  rec_ge120;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__if_dominant if_dominant(
+        .sample(if_dominant__sample),
+        .sampled(if_dominant__sampled),
+        .at_stuff_bit(if_dominant__at_stuff_bit),
+        .field(if_dominant__field),
+        .is_tx(if_dominant__is_tx),
+        .tx_bit(if_dominant__tx_bit),
+        .flag_passive(if_dominant__flag_passive),
+        .in_delim(if_dominant__in_delim),
+        .after_error_flag(if_dominant__after_error_flag),
+        .bc0(if_dominant__bc0),
+        .delim_first(if_dominant__delim_first),
+        .dom7(if_dominant__dom7),
+        .ack_pending(if_dominant__ack_pending),
+        .listen_only(if_dominant__listen_only),
+        .error(if_dominant__error),
+        .flag_error(if_dominant__flag_error),
+        .ack_err(if_dominant__ack_err),
+        .tec_exempt(if_dominant__tec_exempt),
+        .as_tx(if_dominant__as_tx),
+        .passive_now(if_dominant__passive_now),
+        .bus_off_now(if_dominant__bus_off_now),
+        .tec_ge120(if_dominant__tec_ge120),
+        .tec_ge248(if_dominant__tec_ge248),
+        .rec_ge127(if_dominant__rec_ge127),
+        .rec_ge120(if_dominant__rec_ge120),
+        .tec_add8(if_dominant__tec_add8),
+        .rec_add1(if_dominant__rec_add1),
+        .rec_add8(if_dominant__rec_add8),
+        .rx_success(if_dominant__rx_success),
+        .passive_after(if_dominant__passive_after),
+        .bus_off_after(if_dominant__bus_off_after),
+        .ack_defer(if_dominant__ack_defer),
+        .ack_counted(if_dominant__ack_counted)
+    );
+    drcc_m0__chan_b__bsp__rules__if_recessive if_recessive(
+        .sample(if_recessive__sample),
+        .sampled(if_recessive__sampled),
+        .at_stuff_bit(if_recessive__at_stuff_bit),
+        .field(if_recessive__field),
+        .is_tx(if_recessive__is_tx),
+        .tx_bit(if_recessive__tx_bit),
+        .flag_passive(if_recessive__flag_passive),
+        .in_delim(if_recessive__in_delim),
+        .after_error_flag(if_recessive__after_error_flag),
+        .bc0(if_recessive__bc0),
+        .delim_first(if_recessive__delim_first),
+        .dom7(if_recessive__dom7),
+        .ack_pending(if_recessive__ack_pending),
+        .listen_only(if_recessive__listen_only),
+        .error(if_recessive__error),
+        .flag_error(if_recessive__flag_error),
+        .ack_err(if_recessive__ack_err),
+        .tec_exempt(if_recessive__tec_exempt),
+        .as_tx(if_recessive__as_tx),
+        .passive_now(if_recessive__passive_now),
+        .bus_off_now(if_recessive__bus_off_now),
+        .tec_ge120(if_recessive__tec_ge120),
+        .tec_ge248(if_recessive__tec_ge248),
+        .rec_ge127(if_recessive__rec_ge127),
+        .rec_ge120(if_recessive__rec_ge120),
+        .tec_add8(if_recessive__tec_add8),
+        .rec_add1(if_recessive__rec_add1),
+        .rec_add8(if_recessive__rec_add8),
+        .rx_success(if_recessive__rx_success),
+        .passive_after(if_recessive__passive_after),
+        .bus_off_after(if_recessive__bus_off_after),
+        .ack_defer(if_recessive__ack_defer),
+        .ack_counted(if_recessive__ack_counted)
+    );
+    drcc_m0__chan_b__bsp__rules__la_tec_add8 la_tec_add8(
+        .clk(la_tec_add8__clk),
+        .sample(la_tec_add8__sample),
+        .sampled(la_tec_add8__sampled),
+        .if_dominant(la_tec_add8__if_dominant),
+        .if_recessive(la_tec_add8__if_recessive),
+        .decision(la_tec_add8__decision)
+    );
+    drcc_m0__chan_b__bsp__rules__la_rec_add1 la_rec_add1(
+        .clk(la_rec_add1__clk),
+        .sample(la_rec_add1__sample),
+        .sampled(la_rec_add1__sampled),
+        .if_dominant(la_rec_add1__if_dominant),
+        .if_recessive(la_rec_add1__if_recessive),
+        .decision(la_rec_add1__decision)
+    );
+    drcc_m0__chan_b__bsp__rules__la_rec_add8 la_rec_add8(
+        .clk(la_rec_add8__clk),
+        .sample(la_rec_add8__sample),
+        .sampled(la_rec_add8__sampled),
+        .if_dominant(la_rec_add8__if_dominant),
+        .if_recessive(la_rec_add8__if_recessive),
+        .decision(la_rec_add8__decision)
+    );
+    drcc_m0__chan_b__bsp__rules__la_rx_success la_rx_success(
+        .clk(la_rx_success__clk),
+        .sample(la_rx_success__sample),
+        .sampled(la_rx_success__sampled),
+        .if_dominant(la_rx_success__if_dominant),
+        .if_recessive(la_rx_success__if_recessive),
+        .decision(la_rx_success__decision)
+    );
+    drcc_m0__chan_b__bsp__rules__la_passive_after la_passive_after(
+        .clk(la_passive_after__clk),
+        .sample(la_passive_after__sample),
+        .sampled(la_passive_after__sampled),
+        .if_dominant(la_passive_after__if_dominant),
+        .if_recessive(la_passive_after__if_recessive),
+        .decision(la_passive_after__decision)
+    );
+    drcc_m0__chan_b__bsp__rules__la_bus_off_after la_bus_off_after(
+        .clk(la_bus_off_after__clk),
+        .sample(la_bus_off_after__sample),
+        .sampled(la_bus_off_after__sampled),
+        .if_dominant(la_bus_off_after__if_dominant),
+        .if_recessive(la_bus_off_after__if_recessive),
+        .decision(la_bus_off_after__decision)
+    );
+    drcc_m0__chan_b__bsp__rules__la_ack_defer la_ack_defer(
+        .clk(la_ack_defer__clk),
+        .sample(la_ack_defer__sample),
+        .sampled(la_ack_defer__sampled),
+        .if_dominant(la_ack_defer__if_dominant),
+        .if_recessive(la_ack_defer__if_recessive),
+        .decision(la_ack_defer__decision)
+    );
+    drcc_m0__chan_b__bsp__rules__la_ack_counted la_ack_counted(
+        .clk(la_ack_counted__clk),
+        .sample(la_ack_counted__sample),
+        .sampled(la_ack_counted__sampled),
+        .if_dominant(la_ack_counted__if_dominant),
+        .if_recessive(la_ack_counted__if_recessive),
+        .decision(la_ack_counted__decision)
+    );
+    
+    // Update code
+    always @(*) begin
+        tec_ge120 = tec >= n9_120;
+        tec_ge248 = tec >= n9_248;
+        rec_ge127 = rec >= n8_127;
+        rec_ge120 = rec >= n8_120;
+        if_dominant__sample = 1'b1;
+        if_dominant__sampled = 1'b0;
+        if_dominant__at_stuff_bit = at_stuff_bit;
+        if_dominant__field = field;
+        if_dominant__is_tx = is_tx;
+        if_dominant__tx_bit = tx_bit;
+        if_dominant__flag_passive = flag_passive;
+        if_dominant__in_delim = in_delim;
+        if_dominant__after_error_flag = after_error_flag;
+        if_dominant__bc0 = bc0;
+        if_dominant__delim_first = delim_first;
+        if_dominant__dom7 = dom7;
+        if_dominant__ack_pending = ack_pending;
+        if_dominant__listen_only = listen_only;
+        if_dominant__error = dom_error;
+        if_dominant__flag_error = dom_flag_error;
+        if_dominant__ack_err = dom_ack_err;
+        if_dominant__tec_exempt = dom_tec_exempt;
+        if_dominant__as_tx = is_tx || dom_sof_error;
+        if_dominant__passive_now = error_passive;
+        if_dominant__bus_off_now = bus_off;
+        if_dominant__tec_ge120 = tec_ge120;
+        if_dominant__tec_ge248 = tec_ge248;
+        if_dominant__rec_ge127 = rec_ge127;
+        if_dominant__rec_ge120 = rec_ge120;
+        if_recessive__sample = 1'b1;
+        if_recessive__sampled = 1'b1;
+        if_recessive__at_stuff_bit = at_stuff_bit;
+        if_recessive__field = field;
+        if_recessive__is_tx = is_tx;
+        if_recessive__tx_bit = tx_bit;
+        if_recessive__flag_passive = flag_passive;
+        if_recessive__in_delim = in_delim;
+        if_recessive__after_error_flag = after_error_flag;
+        if_recessive__bc0 = bc0;
+        if_recessive__delim_first = delim_first;
+        if_recessive__dom7 = dom7;
+        if_recessive__ack_pending = ack_pending;
+        if_recessive__listen_only = listen_only;
+        if_recessive__error = rec_error;
+        if_recessive__flag_error = rec_flag_error;
+        if_recessive__ack_err = rec_ack_err;
+        if_recessive__tec_exempt = rec_tec_exempt;
+        if_recessive__as_tx = is_tx || rec_sof_error;
+        if_recessive__passive_now = error_passive;
+        if_recessive__bus_off_now = bus_off;
+        if_recessive__tec_ge120 = tec_ge120;
+        if_recessive__tec_ge248 = tec_ge248;
+        if_recessive__rec_ge127 = rec_ge127;
+        if_recessive__rec_ge120 = rec_ge120;
+        la_tec_add8__clk = clk;
+        la_tec_add8__sample = sample;
+        la_tec_add8__sampled = sampled;
+        la_tec_add8__if_dominant = if_dominant__tec_add8;
+        la_tec_add8__if_recessive = if_recessive__tec_add8;
+        tec_add8 = la_tec_add8__decision;
+        la_rec_add1__clk = clk;
+        la_rec_add1__sample = sample;
+        la_rec_add1__sampled = sampled;
+        la_rec_add1__if_dominant = if_dominant__rec_add1;
+        la_rec_add1__if_recessive = if_recessive__rec_add1;
+        rec_add1 = la_rec_add1__decision;
+        la_rec_add8__clk = clk;
+        la_rec_add8__sample = sample;
+        la_rec_add8__sampled = sampled;
+        la_rec_add8__if_dominant = if_dominant__rec_add8;
+        la_rec_add8__if_recessive = if_recessive__rec_add8;
+        rec_add8 = la_rec_add8__decision;
+        la_rx_success__clk = clk;
+        la_rx_success__sample = sample;
+        la_rx_success__sampled = sampled;
+        la_rx_success__if_dominant = if_dominant__rx_success;
+        la_rx_success__if_recessive = if_recessive__rx_success;
+        rx_success = la_rx_success__decision;
+        la_passive_after__clk = clk;
+        la_passive_after__sample = sample;
+        la_passive_after__sampled = sampled;
+        la_passive_after__if_dominant = if_dominant__passive_after;
+        la_passive_after__if_recessive = if_recessive__passive_after;
+        passive_after = la_passive_after__decision;
+        la_bus_off_after__clk = clk;
+        la_bus_off_after__sample = sample;
+        la_bus_off_after__sampled = sampled;
+        la_bus_off_after__if_dominant = if_dominant__bus_off_after;
+        la_bus_off_after__if_recessive = if_recessive__bus_off_after;
+        bus_off_after = la_bus_off_after__decision;
+        la_ack_defer__clk = clk;
+        la_ack_defer__sample = sample;
+        la_ack_defer__sampled = sampled;
+        la_ack_defer__if_dominant = if_dominant__ack_defer;
+        la_ack_defer__if_recessive = if_recessive__ack_defer;
+        ack_defer = la_ack_defer__decision;
+        la_ack_counted__clk = clk;
+        la_ack_counted__sample = sample;
+        la_ack_counted__sampled = sampled;
+        la_ack_counted__if_dominant = if_dominant__ack_counted;
+        la_ack_counted__if_recessive = if_recessive__ack_counted;
+        ack_counted = la_ack_counted__decision;
+        tx_success = tx_valid && ~listen_only;
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules
+
+
+module drcc_m0__chan_b__bsp__rules__if_dominant(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
     
     // Local signals
     reg  monitor;
@@ -12808,58 +17041,8 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
     reg  ev_rec_add8;
     reg  ev_rx_success;
     
-    // Sub module instances
-    drcc_m0__chan_b__bsp__rules__p_passive p_passive(
-        .d(p_passive__d),
-        .q(p_passive__q),
-        .clock(p_passive__clock)
-    );
-    drcc_m0__chan_b__bsp__rules__p_bus_off p_bus_off(
-        .d(p_bus_off__d),
-        .q(p_bus_off__q),
-        .clock(p_bus_off__clock)
-    );
-    drcc_m0__chan_b__bsp__rules__p_tec_ge120 p_tec_ge120(
-        .d(p_tec_ge120__d),
-        .q(p_tec_ge120__q),
-        .clock(p_tec_ge120__clock)
-    );
-    drcc_m0__chan_b__bsp__rules__p_tec_ge248 p_tec_ge248(
-        .d(p_tec_ge248__d),
-        .q(p_tec_ge248__q),
-        .clock(p_tec_ge248__clock)
-    );
-    drcc_m0__chan_b__bsp__rules__p_rec_ge127 p_rec_ge127(
-        .d(p_rec_ge127__d),
-        .q(p_rec_ge127__q),
-        .clock(p_rec_ge127__clock)
-    );
-    drcc_m0__chan_b__bsp__rules__p_rec_ge120 p_rec_ge120(
-        .d(p_rec_ge120__d),
-        .q(p_rec_ge120__q),
-        .clock(p_rec_ge120__clock)
-    );
-    
     // Update code
     always @(*) begin
-        p_passive__clock = clk;
-        p_bus_off__clock = clk;
-        p_tec_ge120__clock = clk;
-        p_tec_ge248__clock = clk;
-        p_rec_ge127__clock = clk;
-        p_rec_ge120__clock = clk;
-        p_passive__d = p_passive__q;
-        p_bus_off__d = p_bus_off__q;
-        p_tec_ge120__d = p_tec_ge120__q;
-        p_tec_ge248__d = p_tec_ge248__q;
-        p_rec_ge127__d = p_rec_ge127__q;
-        p_rec_ge120__d = p_rec_ge120__q;
-        p_passive__d = error_passive;
-        p_bus_off__d = bus_off;
-        p_tec_ge120__d = tec >= n9_120;
-        p_tec_ge248__d = tec >= n9_248;
-        p_rec_ge127__d = rec >= n8_127;
-        p_rec_ge120__d = rec >= n8_120;
         ev_tec_add8 = 1'b0;
         ev_rec_add1 = 1'b0;
         ev_rec_add8 = 1'b0;
@@ -12893,7 +17076,7 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
         end
         if (error) begin
             if (as_tx) begin
-                if (ack_err && p_passive__q) begin
+                if (ack_err && passive_now) begin
                     ack_defer = 1'b1;
                 end
                 else if (~tec_exempt) begin
@@ -12912,19 +17095,201 @@ module drcc_m0__chan_b__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,t
                 ev_rec_add8 = 1'b1;
             end
         end
-        passive_after = p_passive__q || (ev_tec_add8 && p_tec_ge120__q) || (ev_rec_add1 && p_rec_ge127__q) || (ev_rec_add8 && p_rec_ge120__q);
-        bus_off_after = ~listen_only && ev_tec_add8 && p_tec_ge248__q && ~p_bus_off__q;
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
         tec_add8 = ev_tec_add8 && ~listen_only;
         rec_add1 = ev_rec_add1 && ~listen_only;
         rec_add8 = ev_rec_add8 && ~listen_only;
-        tx_success = tx_valid && ~listen_only;
         rx_success = ev_rx_success && ~listen_only;
     end
     
-endmodule // drcc_m0__chan_b__bsp__rules
+endmodule // drcc_m0__chan_b__bsp__rules__if_dominant
 
 
-module drcc_m0__chan_b__bsp__rules__p_bus_off(d,q,clock);
+module drcc_m0__chan_b__bsp__rules__if_recessive(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+    
+    // Module arguments
+    input wire  sample;
+    input wire  sampled;
+    input wire  at_stuff_bit;
+    input wire  [4:0] field;
+    input wire  is_tx;
+    input wire  tx_bit;
+    input wire  flag_passive;
+    input wire  in_delim;
+    input wire  after_error_flag;
+    input wire  bc0;
+    input wire  delim_first;
+    input wire  dom7;
+    input wire  ack_pending;
+    input wire  listen_only;
+    input wire  error;
+    input wire  flag_error;
+    input wire  ack_err;
+    input wire  tec_exempt;
+    input wire  as_tx;
+    input wire  passive_now;
+    input wire  bus_off_now;
+    input wire  tec_ge120;
+    input wire  tec_ge248;
+    input wire  rec_ge127;
+    input wire  rec_ge120;
+    output reg  tec_add8;
+    output reg  rec_add1;
+    output reg  rec_add8;
+    output reg  rx_success;
+    output reg  passive_after;
+    output reg  bus_off_after;
+    output reg  ack_defer;
+    output reg  ack_counted;
+    
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+    
+    // Local signals
+    reg  monitor;
+    reg  ev_tec_add8;
+    reg  ev_rec_add1;
+    reg  ev_rec_add8;
+    reg  ev_rx_success;
+    
+    // Update code
+    always @(*) begin
+        ev_tec_add8 = 1'b0;
+        ev_rec_add1 = 1'b0;
+        ev_rec_add8 = 1'b0;
+        ev_rx_success = 1'b0;
+        ack_defer = 1'b0;
+        ack_counted = 1'b0;
+        monitor = sample && ~at_stuff_bit;
+        if (monitor) begin
+            if ((field == Field__AckSlot) && ~is_tx && ~tx_bit && ~sampled) begin
+                ev_rx_success = 1'b1;
+            end
+            if ((field == Field__ErrorFlag) && flag_passive) begin
+                if (ack_pending && ~sampled) begin
+                    ev_tec_add8 = 1'b1;
+                    ack_counted = 1'b1;
+                end
+            end
+            if (in_delim && bc0 && ~sampled) begin
+                if (delim_first && after_error_flag && ~is_tx) begin
+                    ev_rec_add8 = 1'b1;
+                end
+                if (dom7) begin
+                    if (is_tx) begin
+                        ev_tec_add8 = 1'b1;
+                    end
+                    else begin
+                        ev_rec_add8 = 1'b1;
+                    end
+                end
+            end
+        end
+        if (error) begin
+            if (as_tx) begin
+                if (ack_err && passive_now) begin
+                    ack_defer = 1'b1;
+                end
+                else if (~tec_exempt) begin
+                    ev_tec_add8 = 1'b1;
+                end
+            end
+            else begin
+                ev_rec_add1 = 1'b1;
+            end
+        end
+        if (flag_error) begin
+            if (is_tx) begin
+                ev_tec_add8 = 1'b1;
+            end
+            else begin
+                ev_rec_add8 = 1'b1;
+            end
+        end
+        passive_after = passive_now || (ev_tec_add8 && tec_ge120) || (ev_rec_add1 && rec_ge127) || (ev_rec_add8 && rec_ge120);
+        bus_off_after = ~listen_only && ev_tec_add8 && tec_ge248 && ~bus_off_now;
+        tec_add8 = ev_tec_add8 && ~listen_only;
+        rec_add1 = ev_rec_add1 && ~listen_only;
+        rec_add8 = ev_rec_add8 && ~listen_only;
+        rx_success = ev_rx_success && ~listen_only;
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__if_recessive
+
+
+module drcc_m0__chan_b__bsp__rules__la_ack_counted(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_ack_counted__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_ack_counted__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_ack_counted
+
+
+module drcc_m0__chan_b__bsp__rules__la_ack_counted__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -12937,10 +17302,10 @@ module drcc_m0__chan_b__bsp__rules__p_bus_off(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__rules__p_bus_off
+endmodule // drcc_m0__chan_b__bsp__rules__la_ack_counted__dominant_q
 
 
-module drcc_m0__chan_b__bsp__rules__p_passive(d,q,clock);
+module drcc_m0__chan_b__bsp__rules__la_ack_counted__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -12953,10 +17318,59 @@ module drcc_m0__chan_b__bsp__rules__p_passive(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__rules__p_passive
+endmodule // drcc_m0__chan_b__bsp__rules__la_ack_counted__recessive_q
 
 
-module drcc_m0__chan_b__bsp__rules__p_rec_ge120(d,q,clock);
+module drcc_m0__chan_b__bsp__rules__la_ack_defer(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_ack_defer__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_ack_defer__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_ack_defer
+
+
+module drcc_m0__chan_b__bsp__rules__la_ack_defer__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -12969,10 +17383,10 @@ module drcc_m0__chan_b__bsp__rules__p_rec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__rules__p_rec_ge120
+endmodule // drcc_m0__chan_b__bsp__rules__la_ack_defer__dominant_q
 
 
-module drcc_m0__chan_b__bsp__rules__p_rec_ge127(d,q,clock);
+module drcc_m0__chan_b__bsp__rules__la_ack_defer__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -12985,10 +17399,59 @@ module drcc_m0__chan_b__bsp__rules__p_rec_ge127(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__rules__p_rec_ge127
+endmodule // drcc_m0__chan_b__bsp__rules__la_ack_defer__recessive_q
 
 
-module drcc_m0__chan_b__bsp__rules__p_tec_ge120(d,q,clock);
+module drcc_m0__chan_b__bsp__rules__la_bus_off_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_bus_off_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_bus_off_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_bus_off_after
+
+
+module drcc_m0__chan_b__bsp__rules__la_bus_off_after__dominant_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13001,10 +17464,10 @@ module drcc_m0__chan_b__bsp__rules__p_tec_ge120(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__rules__p_tec_ge120
+endmodule // drcc_m0__chan_b__bsp__rules__la_bus_off_after__dominant_q
 
 
-module drcc_m0__chan_b__bsp__rules__p_tec_ge248(d,q,clock);
+module drcc_m0__chan_b__bsp__rules__la_bus_off_after__recessive_q(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13017,7 +17480,412 @@ module drcc_m0__chan_b__bsp__rules__p_tec_ge248(d,q,clock);
        q <= d;
     end
           
-endmodule // drcc_m0__chan_b__bsp__rules__p_tec_ge248
+endmodule // drcc_m0__chan_b__bsp__rules__la_bus_off_after__recessive_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_passive_after(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_passive_after__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_passive_after__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_passive_after
+
+
+module drcc_m0__chan_b__bsp__rules__la_passive_after__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_passive_after__dominant_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_passive_after__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_passive_after__recessive_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_rec_add1(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_rec_add1__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_rec_add1__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_rec_add1
+
+
+module drcc_m0__chan_b__bsp__rules__la_rec_add1__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_rec_add1__dominant_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_rec_add1__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_rec_add1__recessive_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_rec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_rec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_rec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_rec_add8
+
+
+module drcc_m0__chan_b__bsp__rules__la_rec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_rec_add8__dominant_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_rec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_rec_add8__recessive_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_rx_success(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_rx_success__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_rx_success__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_rx_success
+
+
+module drcc_m0__chan_b__bsp__rules__la_rx_success__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_rx_success__dominant_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_rx_success__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_rx_success__recessive_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_tec_add8(clk,sample,sampled,if_dominant,if_recessive,decision);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  sample;
+    input wire  sampled;
+    input wire  if_dominant;
+    input wire  if_recessive;
+    output reg  decision;
+    
+    // Stub signals
+    reg  dominant_q__d;
+    wire  dominant_q__q;
+    reg  dominant_q__clock;
+    reg  recessive_q__d;
+    wire  recessive_q__q;
+    reg  recessive_q__clock;
+    
+    // Sub module instances
+    drcc_m0__chan_b__bsp__rules__la_tec_add8__dominant_q dominant_q(
+        .d(dominant_q__d),
+        .q(dominant_q__q),
+        .clock(dominant_q__clock)
+    );
+    drcc_m0__chan_b__bsp__rules__la_tec_add8__recessive_q recessive_q(
+        .d(recessive_q__d),
+        .q(recessive_q__q),
+        .clock(recessive_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dominant_q__clock = clk;
+        recessive_q__clock = clk;
+        dominant_q__d = dominant_q__q;
+        recessive_q__d = recessive_q__q;
+        dominant_q__d = if_dominant;
+        recessive_q__d = if_recessive;
+        if (sampled) begin
+            decision = sample && recessive_q__q;
+        end
+        else begin
+            decision = sample && dominant_q__q;
+        end
+    end
+    
+endmodule // drcc_m0__chan_b__bsp__rules__la_tec_add8
+
+
+module drcc_m0__chan_b__bsp__rules__la_tec_add8__dominant_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_tec_add8__dominant_q
+
+
+module drcc_m0__chan_b__bsp__rules__la_tec_add8__recessive_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // drcc_m0__chan_b__bsp__rules__la_tec_add8__recessive_q
 
 
 module drcc_m0__chan_b__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);

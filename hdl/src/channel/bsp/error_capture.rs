@@ -2,7 +2,8 @@
 //! host can read about the last error and the last lost arbitration.
 //!
 //! One kind per error, by the precedence of contract §9 (bit, stuff, form, ACK,
-//! CRC). The counts saturate at 255. Nothing here feeds back into the protocol.
+//! CRC), which `error_decision` applies one clock ahead and hands over one-hot
+//! (Fmax). The counts saturate at 255. Nothing here feeds back into the protocol.
 
 use super::field::Field;
 use crate::channel::sized::Const;
@@ -18,16 +19,18 @@ pub struct ErrorCapture {
     // from error detection (at a sample point)
     /// An error starts an error flag: capture it.
     pub capture: Signal<In, Bit>,
-    /// It counts as a bit error.
-    pub bit_err: Signal<In, Bit>,
-    /// It is a stuff error.
-    pub stuff_err: Signal<In, Bit>,
-    /// It is a form error.
-    pub form_err: Signal<In, Bit>,
-    /// It is an ACK error.
-    pub ack_err: Signal<In, Bit>,
-    /// It is a CRC error.
-    pub crc_err: Signal<In, Bit>,
+    // its one kind (contract §9 precedence applied, one-hot, each implies
+    // `capture`)
+    /// The captured error is a bit error.
+    pub kind_bit: Signal<In, Bit>,
+    /// The captured error is a stuff error.
+    pub kind_stuff: Signal<In, Bit>,
+    /// The captured error is a form error.
+    pub kind_form: Signal<In, Bit>,
+    /// The captured error is an ACK error.
+    pub kind_ack: Signal<In, Bit>,
+    /// The captured error is a CRC error.
+    pub kind_crc: Signal<In, Bit>,
     /// The node was transmitter when it detected the error.
     pub as_tx: Signal<In, Bit>,
     /// Arbitration was lost at this sample point.
@@ -141,18 +144,16 @@ impl Logic for ErrorCapture {
         self.p_cnt_crc_max.d.next = self.cnt_crc_q.q.val() == self.max8.val();
         self.p_cnt_form_max.d.next = self.cnt_form_q.q.val() == self.max8.val();
         self.p_cnt_ack_max.d.next = self.cnt_ack_q.q.val() == self.max8.val();
-        // One kind per error, by the precedence of contract §9.
+        // The kind code of the one-hot kind (contract §9).
         self.kind.next = self.k_crc.val();
-        if self.bit_err.val() {
+        if self.kind_bit.val() {
             self.kind.next = self.k_bit.val();
-        } else if self.stuff_err.val() {
+        } else if self.kind_stuff.val() {
             self.kind.next = self.k_stuff.val();
-        } else if self.form_err.val() {
+        } else if self.kind_form.val() {
             self.kind.next = self.k_form.val();
-        } else if self.ack_err.val() {
+        } else if self.kind_ack.val() {
             self.kind.next = self.k_ack.val();
-        } else if self.crc_err.val() {
-            self.kind.next = self.k_crc.val();
         }
         self.err_valid_q.d.next = false;
         if self.capture.val() {
@@ -160,21 +161,22 @@ impl Logic for ErrorCapture {
             self.err_kind_q.d.next = self.kind.val();
             self.err_field_q.d.next = self.field.val();
             self.err_tx_q.d.next = self.as_tx.val();
-            if (self.kind.val() == self.k_bit.val()) && !self.p_cnt_bit_max.q.val() {
-                self.cnt_bit_q.d.next = self.cnt_bit_q.q.val() + self.one8.val();
-            }
-            if (self.kind.val() == self.k_stuff.val()) && !self.p_cnt_stuff_max.q.val() {
-                self.cnt_stuff_q.d.next = self.cnt_stuff_q.q.val() + self.one8.val();
-            }
-            if (self.kind.val() == self.k_crc.val()) && !self.p_cnt_crc_max.q.val() {
-                self.cnt_crc_q.d.next = self.cnt_crc_q.q.val() + self.one8.val();
-            }
-            if (self.kind.val() == self.k_form.val()) && !self.p_cnt_form_max.q.val() {
-                self.cnt_form_q.d.next = self.cnt_form_q.q.val() + self.one8.val();
-            }
-            if (self.kind.val() == self.k_ack.val()) && !self.p_cnt_ack_max.q.val() {
-                self.cnt_ack_q.d.next = self.cnt_ack_q.q.val() + self.one8.val();
-            }
+        }
+        // Each count from its one-hot kind: no decoder after the sample point.
+        if self.kind_bit.val() && !self.p_cnt_bit_max.q.val() {
+            self.cnt_bit_q.d.next = self.cnt_bit_q.q.val() + self.one8.val();
+        }
+        if self.kind_stuff.val() && !self.p_cnt_stuff_max.q.val() {
+            self.cnt_stuff_q.d.next = self.cnt_stuff_q.q.val() + self.one8.val();
+        }
+        if self.kind_crc.val() && !self.p_cnt_crc_max.q.val() {
+            self.cnt_crc_q.d.next = self.cnt_crc_q.q.val() + self.one8.val();
+        }
+        if self.kind_form.val() && !self.p_cnt_form_max.q.val() {
+            self.cnt_form_q.d.next = self.cnt_form_q.q.val() + self.one8.val();
+        }
+        if self.kind_ack.val() && !self.p_cnt_ack_max.q.val() {
+            self.cnt_ack_q.d.next = self.cnt_ack_q.q.val() + self.one8.val();
         }
         if self.arb_lost.val() {
             self.alc_q.d.next = self.p_alc.q.val();
@@ -216,8 +218,8 @@ mod tests {
         simulate(uut, 100);
     }
 
-    /// Contract §9: a bit error wins over a stuff error in the same bit, the
-    /// count of its kind goes up by one and err_valid is one clock.
+    /// Contract §9: a captured bit error (its kind one-hot, precedence applied by
+    /// `ErrorDecision`) counts once, is held as kind 1, err_valid is one clock.
     #[test]
     fn bit_error_wins_and_is_counted() {
         let mut uut = ErrorCapture::default();
@@ -228,11 +230,11 @@ mod tests {
         uut.field.next = Field::Data;
         clock(&mut uut);
         uut.capture.next = true;
-        uut.bit_err.next = true;
-        uut.stuff_err.next = true;
+        uut.kind_bit.next = true;
         uut.as_tx.next = true;
         clock(&mut uut);
         uut.capture.next = false;
+        uut.kind_bit.next = false;
         assert!(uut.err_valid.val() && uut.err_tx.val());
         assert_eq!(uut.err_kind.val(), Bits::<3>::from(1));
         assert_eq!(uut.err_field.val(), Field::Data);

@@ -3,22 +3,19 @@
 //! error state that follows (timing contract §4.5). The counters themselves are
 //! in `fault_confinement`.
 //!
-//! Combinational but for the threshold comparisons, registered pre-decodes of
-//! the counters, so the state "after this sample's events" needs no
-//! combinational path back from the counters: the counters change only at
-//! sample points, several clocks apart. The state the rules keep between bits
+//! Purely combinational: the counters come in as threshold compares, which
+//! `rules_decision` evaluates one clock ahead together with these rules, so the
+//! state "after this sample's events" needs no combinational path back from the
+//! counters. The state the rules keep between bits
 //! (the delimiter's dominant-bit count, the deferred ACK error) is protocol
 //! state and lives in the protocol controller.
 
 use super::field::Field;
-use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
 /// The counting rules and the error state after them.
 #[derive(LogicBlock, Default)]
 pub struct FaultConfinementRules {
-    /// Clock of the channel.
-    pub clk: Signal<In, Clock>,
     /// The sample point of the current bit (one clock).
     pub sample: Signal<In, Bit>,
     /// The bus level at the sample point (true: recessive).
@@ -48,8 +45,6 @@ pub struct FaultConfinementRules {
     /// Rule c exception 1 is pending: a passive ACK error, counted only if a
     /// dominant bit comes during its passive flag.
     pub ack_pending: Signal<In, Bit>,
-    /// At a sample point: the frame is valid for its transmitter (10.7).
-    pub tx_valid: Signal<In, Bit>,
     /// Listen-only (contract §7): the counters never change, flags are passive.
     pub listen_only: Signal<In, Bit>,
     // from error detection (at a sample point)
@@ -63,15 +58,20 @@ pub struct FaultConfinementRules {
     pub tec_exempt: Signal<In, Bit>,
     /// The node is transmitter for this error (includes its own SOF read back).
     pub as_tx: Signal<In, Bit>,
-    // from the counters
-    /// Transmit error counter.
-    pub tec: Signal<In, Bits<9>>,
-    /// Receive error counter.
-    pub rec: Signal<In, Bits<8>>,
+    // from the counters: threshold compares of TEC/REC (the lookahead in
+    // `rules_decision` gives them for the clock of the sample point)
     /// The node is error passive.
-    pub error_passive: Signal<In, Bit>,
+    pub passive_now: Signal<In, Bit>,
     /// The node is bus-off.
-    pub bus_off: Signal<In, Bit>,
+    pub bus_off_now: Signal<In, Bit>,
+    /// TEC >= 120: TEC + 8 makes the node error passive.
+    pub tec_ge120: Signal<In, Bit>,
+    /// TEC >= 248: TEC + 8 makes the node bus-off.
+    pub tec_ge248: Signal<In, Bit>,
+    /// REC >= 127: REC + 1 makes the node error passive.
+    pub rec_ge127: Signal<In, Bit>,
+    /// REC >= 120: REC + 8 makes the node error passive.
+    pub rec_ge120: Signal<In, Bit>,
     // events to the counters (listen-only already applied)
     /// TEC + 8 (rules c, d, e, f for a transmitter).
     pub tec_add8: Signal<Out, Bit>,
@@ -79,8 +79,6 @@ pub struct FaultConfinementRules {
     pub rec_add1: Signal<Out, Bit>,
     /// REC + 8 (rules b, d, e, f for a receiver).
     pub rec_add8: Signal<Out, Bit>,
-    /// TEC - 1 (rule g).
-    pub tx_success: Signal<Out, Bit>,
     /// REC - 1 (rule h).
     pub rx_success: Signal<Out, Bit>,
     // the error state after this sample's events (rules i/j, 12.1.4.4)
@@ -93,42 +91,16 @@ pub struct FaultConfinementRules {
     pub ack_defer: Signal<Out, Bit>,
     /// The deferred ACK error is counted now (a dominant bit in the flag).
     pub ack_counted: Signal<Out, Bit>,
-    p_passive: DFF<Bit>,
-    p_bus_off: DFF<Bit>,
-    p_tec_ge120: DFF<Bit>,
-    p_tec_ge248: DFF<Bit>,
-    p_rec_ge127: DFF<Bit>,
-    p_rec_ge120: DFF<Bit>,
     monitor: Signal<Local, Bit>,
     ev_tec_add8: Signal<Local, Bit>,
     ev_rec_add1: Signal<Local, Bit>,
     ev_rec_add8: Signal<Local, Bit>,
     ev_rx_success: Signal<Local, Bit>,
-    n9_120: Const<9, 120>,
-    n9_248: Const<9, 248>,
-    n8_120: Const<8, 120>,
-    n8_127: Const<8, 127>,
 }
 
 impl Logic for FaultConfinementRules {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self,
-            clk,
-            p_passive,
-            p_bus_off,
-            p_tec_ge120,
-            p_tec_ge248,
-            p_rec_ge127,
-            p_rec_ge120
-        );
-        self.p_passive.d.next = self.error_passive.val();
-        self.p_bus_off.d.next = self.bus_off.val();
-        self.p_tec_ge120.d.next = self.tec.val() >= self.n9_120.val();
-        self.p_tec_ge248.d.next = self.tec.val() >= self.n9_248.val();
-        self.p_rec_ge127.d.next = self.rec.val() >= self.n8_127.val();
-        self.p_rec_ge120.d.next = self.rec.val() >= self.n8_120.val();
         self.ev_tec_add8.next = false;
         self.ev_rec_add1.next = false;
         self.ev_rec_add8.next = false;
@@ -170,7 +142,7 @@ impl Logic for FaultConfinementRules {
         }
         if self.error.val() {
             if self.as_tx.val() {
-                if self.ack_err.val() && self.p_passive.q.val() {
+                if self.ack_err.val() && self.passive_now.val() {
                     // Rule c exception 1: decided during the passive flag.
                     self.ack_defer.next = true;
                 } else if !self.tec_exempt.val() {
@@ -188,21 +160,20 @@ impl Logic for FaultConfinementRules {
             }
         }
         // Rules i/j: the error state after this sample's events.
-        self.passive_after.next = self.p_passive.q.val()
-            || (self.ev_tec_add8.val() && self.p_tec_ge120.q.val())
-            || (self.ev_rec_add1.val() && self.p_rec_ge127.q.val())
-            || (self.ev_rec_add8.val() && self.p_rec_ge120.q.val());
+        self.passive_after.next = self.passive_now.val()
+            || (self.ev_tec_add8.val() && self.tec_ge120.val())
+            || (self.ev_rec_add1.val() && self.rec_ge127.val())
+            || (self.ev_rec_add8.val() && self.rec_ge120.val());
         // 12.1.4.4: TEC > 255 makes the node bus-off at once.
         self.bus_off_after.next = !self.listen_only.val()
             && self.ev_tec_add8.val()
-            && self.p_tec_ge248.q.val()
-            && !self.p_bus_off.q.val();
+            && self.tec_ge248.val()
+            && !self.bus_off_now.val();
         // Contract §7: a listen-only node never changes its counters.
         self.tec_add8.next = self.ev_tec_add8.val() && !self.listen_only.val();
         self.rec_add1.next = self.ev_rec_add1.val() && !self.listen_only.val();
         self.rec_add8.next = self.ev_rec_add8.val() && !self.listen_only.val();
-        // Rule g: the frame was valid for its transmitter.
-        self.tx_success.next = self.tx_valid.val() && !self.listen_only.val();
+        // Rule g (TEC - 1) is the protocol controller's own strobe: `rules_decision`.
         self.rx_success.next = self.ev_rx_success.val() && !self.listen_only.val();
     }
 }
@@ -258,18 +229,12 @@ mod tests {
     #[test]
     fn error_state_after_the_events() {
         let mut uut = uut();
-        uut.tec.next = 120.into();
-        uut.clk.next = Clock { clk: true };
-        simulate(&mut uut, 100);
-        uut.clk.next = Clock { clk: false };
+        uut.tec_ge120.next = true;
         uut.error.next = true;
         uut.as_tx.next = true;
         simulate(&mut uut, 100);
         assert!(uut.passive_after.val() && !uut.bus_off_after.val());
-        uut.tec.next = 248.into();
-        uut.clk.next = Clock { clk: true };
-        simulate(&mut uut, 100);
-        uut.clk.next = Clock { clk: false };
+        uut.tec_ge248.next = true;
         simulate(&mut uut, 100);
         assert!(uut.bus_off_after.val());
     }

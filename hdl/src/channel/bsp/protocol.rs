@@ -10,13 +10,19 @@
 //! - `bit_stuffing`: stuffing and destuffing (10.5);
 //! - `frame_crc`: the CRC-15 register and check (10.4.2.6);
 //! - `tx_frame` / `rx_frame`: the frame sent and the frame received (10.4.2);
-//! - `error_detection`: bit, stuff, CRC, form and ACK errors (12.1.3);
+//! - `error_detection`: bit, stuff, CRC, form and ACK errors (12.1.3), run by
+//!   `error_decision` one clock ahead for either bus level;
 //! - `fault_confinement_rules` and `fault_confinement`: the counting rules and
-//!   the error counters (12.1.4);
+//!   the error counters (12.1.4); the rules are run one clock ahead the same
+//!   way by `rules_decision`;
 //! - `error_capture`: error code capture and counts (contract §9).
 //!
 //! All wiring here is combinational: a signal decided at a sample point reaches
-//! the unit that uses it in the same clock, as it did in one block. Decisions
+//! the unit that uses it in the same clock, as it did in one block. For Fmax on
+//! the iCE40UP5K the error checks and counting rules are registered the clock
+//! before for a dominant and a recessive sample (`sample_lookahead`: their
+//! inputs are stable then), so at the sample point they are one LUT after
+//! `sample` and `sampled`; the values are the same in every clock. Decisions
 //! where the standard leaves room are written in the timing contract:
 //! - The type of error flag (active or passive) is the error state after the
 //!   counters have been updated for the error that starts it (contract §4.5).
@@ -28,12 +34,12 @@
 
 use super::bit_stuffing::BitStuffing;
 use super::error_capture::ErrorCapture;
-use super::error_detection::ErrorDetection;
+use super::error_decision::ErrorDecision;
 use super::fault_confinement::FaultConfinement;
-use super::fault_confinement_rules::FaultConfinementRules;
 use super::field::Field;
 use super::frame_crc::FrameCrc;
 use super::protocol_fsm::ProtocolFsm;
+use super::rules_decision::RulesDecision;
 use super::rx_frame::RxFrame;
 use super::tx_frame::TxFrame;
 use super::tx_pin::TxPin;
@@ -154,8 +160,8 @@ pub struct ProtocolController {
     frame_crc: FrameCrc,
     tx_frame: TxFrame,
     rx_frame: RxFrame,
-    detect: ErrorDetection,
-    rules: FaultConfinementRules,
+    detect: ErrorDecision,
+    rules: RulesDecision,
     fc: FaultConfinement,
     err_capture: ErrorCapture,
 }
@@ -275,6 +281,7 @@ impl Logic for ProtocolController {
         self.rx_frame.publish.next = self.fsm.rx_publish.val();
 
         // ---- error detection
+        self.detect.clk.next = self.clk.val();
         self.detect.sample.next = self.sample.val();
         self.detect.sampled.next = self.sampled.val();
         self.detect.field.next = self.fsm.field.val();
@@ -311,11 +318,16 @@ impl Logic for ProtocolController {
         self.rules.ack_pending.next = self.fsm.ack_pending.val();
         self.rules.tx_valid.next = self.fsm.tx_valid.val();
         self.rules.listen_only.next = self.listen_only.val();
-        self.rules.error.next = self.detect.error.val();
-        self.rules.flag_error.next = self.detect.flag_error.val();
-        self.rules.ack_err.next = self.detect.ack_err.val();
-        self.rules.tec_exempt.next = self.detect.tec_exempt.val();
-        self.rules.as_tx.next = self.fsm.is_tx.val() || self.detect.sof_error.val();
+        self.rules.dom_error.next = self.detect.dom_error.val();
+        self.rules.dom_flag_error.next = self.detect.dom_flag_error.val();
+        self.rules.dom_ack_err.next = self.detect.dom_ack_err.val();
+        self.rules.dom_tec_exempt.next = self.detect.dom_tec_exempt.val();
+        self.rules.dom_sof_error.next = self.detect.dom_sof_error.val();
+        self.rules.rec_error.next = self.detect.rec_error.val();
+        self.rules.rec_flag_error.next = self.detect.rec_flag_error.val();
+        self.rules.rec_ack_err.next = self.detect.rec_ack_err.val();
+        self.rules.rec_tec_exempt.next = self.detect.rec_tec_exempt.val();
+        self.rules.rec_sof_error.next = self.detect.rec_sof_error.val();
         self.rules.tec.next = self.fc.tec.val();
         self.rules.rec.next = self.fc.rec.val();
         self.rules.error_passive.next = self.fc.error_passive.val();
@@ -331,11 +343,11 @@ impl Logic for ProtocolController {
 
         // ---- diagnostics (contract §9)
         self.err_capture.capture.next = self.detect.error.val() || self.detect.flag_error.val();
-        self.err_capture.bit_err.next = self.detect.bit_err.val();
-        self.err_capture.stuff_err.next = self.detect.stuff_err.val();
-        self.err_capture.form_err.next = self.detect.form_err.val();
-        self.err_capture.ack_err.next = self.detect.ack_err.val();
-        self.err_capture.crc_err.next = self.detect.crc_err.val();
+        self.err_capture.kind_bit.next = self.detect.kind_bit.val();
+        self.err_capture.kind_stuff.next = self.detect.kind_stuff.val();
+        self.err_capture.kind_form.next = self.detect.kind_form.val();
+        self.err_capture.kind_ack.next = self.detect.kind_ack.val();
+        self.err_capture.kind_crc.next = self.detect.kind_crc.val();
         self.err_capture.as_tx.next = self.fsm.is_tx.val() || self.detect.sof_error.val();
         self.err_capture.arb_lost.next = self.detect.lost.val();
         self.err_capture.field.next = self.fsm.field.val();

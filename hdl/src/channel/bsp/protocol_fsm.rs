@@ -156,6 +156,8 @@ pub struct ProtocolFsm {
     delim_first_q: DFF<Bit>,
     /// Consecutive dominant bits after a flag, modulo 8.
     dom_cnt: DFF<Bits<3>>,
+    /// Hard synchronisation is not allowed (the field's, registered with it).
+    hse_off: DFF<Bit>,
     // registered pre-decodes of the state the next SAMPLE edge sees
     decode: FieldDecode,
     // next-state values of the sample-point update
@@ -164,6 +166,9 @@ pub struct ProtocolFsm {
     is_tx_n: Signal<Local, Bit>,
     flag_passive_n: Signal<Local, Bit>,
     monitor: Signal<Local, Bit>,
+    hse_class: Signal<Local, Bit>,
+    hse_stay: Signal<Local, Bit>,
+    hse_n: Signal<Local, Bit>,
     n7_0: Const<7, 0>,
     n7_1: Const<7, 1>,
     zero3: Const<3, 0>,
@@ -184,7 +189,8 @@ impl Logic for ProtocolFsm {
             last_bit_arb_q,
             ack_pending_q,
             delim_first_q,
-            dom_cnt
+            dom_cnt,
+            hse_off
         );
         self.decode.clk.next = self.clk.val();
         self.decode.field.next = self.field_q.q.val();
@@ -515,31 +521,38 @@ impl Logic for ProtocolFsm {
             self.flag_passive_q.d.next = self.flag_passive_n.val();
         }
 
-        // ---- hard synchronisation is allowed between frames (11.3.2.1)
-        match self.field_q.q.val() {
-            Field::Integrating => {
-                self.hard_sync_enable.next = true;
-            }
-            Field::Idle => {
-                self.hard_sync_enable.next = true;
-            }
-            Field::Suspend => {
-                self.hard_sync_enable.next = true;
-            }
-            Field::BusOff => {
-                self.hard_sync_enable.next = true;
-            }
-            Field::Intermission => {
-                // Third intermission bit: bit_cnt == 2. Intermission is entered with
-                // bit_cnt = 0 (EOF, overload/error delimiter) and counts up only
-                // while bit_cnt != 2, so bit_cnt is 0, 1 or 2 here and bit 1 alone
-                // decides; the BTL's next state sees no 7-bit comparator.
-                self.hard_sync_enable.next = self.bit_cnt_q.q.val().get_bit(1);
-            }
-            _ => {
-                self.hard_sync_enable.next = false;
-            }
+        // ---- hard synchronisation is allowed between frames (11.3.2.1): in
+        // INTEGRATING, IDLE, SUSPEND, BUS_OFF and the third intermission bit. It is
+        // registered with the field (`hse_off`, inverted so the power-up value
+        // matches INTEGRATING) because the bit timing logic's next state needs it
+        // in every clock (Fmax). Intermission is entered with bit_cnt = 0 and counts
+        // up only while bit_cnt != 2, so bit 1 alone means "third bit" and bit 0
+        // "second bit".
+        self.hse_class.next = (self.field_q.q.val() == Field::Integrating)
+            || (self.field_q.q.val() == Field::Idle)
+            || (self.field_q.q.val() == Field::Suspend)
+            || (self.field_q.q.val() == Field::BusOff);
+        if self.monitor.val() {
+            // The match above: a recessive second or third intermission bit leads
+            // to the third bit, IDLE or SUSPEND; a dominant one to SOF or overload.
+            self.hse_stay.next = (self.field_q.q.val() == Field::Intermission)
+                && self.sampled.val()
+                && (self.decode.bc2.val() || self.bit_cnt_q.q.val().get_bit(0));
+        } else {
+            self.hse_stay.next =
+                (self.field_q.q.val() == Field::Intermission) && self.bit_cnt_q.q.val().get_bit(1);
         }
+        // The overrides of the sample point above: SOF and error flags disallow
+        // it, bus-off allows it.
+        self.hse_n.next = self.bus_off_after.val()
+            || (!self.sof.val()
+                && !self.error.val()
+                && !self.flag_error.val()
+                && (self.hse_class.val() || self.hse_stay.val()));
+        if self.sample.val() {
+            self.hse_off.d.next = !self.hse_n.val();
+        }
+        self.hard_sync_enable.next = !self.hse_off.q.val();
 
         // ---- outputs
         self.field.next = self.field_q.q.val();
@@ -572,6 +585,7 @@ impl Logic for ProtocolFsm {
             self.ack_pending_q.d.next = false;
             self.delim_first_q.d.next = false;
             self.dom_cnt.d.next = self.zero3.val();
+            self.hse_off.d.next = false;
         }
     }
 }

@@ -13,9 +13,8 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::target::Target;
-use crate::tools::{run_logged, YOSYS};
-use crate::yosys::{quote, Area};
-use crate::{write_file, Error};
+use crate::yosys::{self, quote, Area};
+use crate::Error;
 
 /// One block of a top and its cells.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
@@ -208,26 +207,11 @@ pub fn run(
     verilog: &str,
 ) -> Result<Breakdown, Error> {
     let children = children(verilog, top);
-    let name = format!("{top}_blocks");
-    let ys = format!("{name}.ys");
-    let stat = format!("{name}_stat.txt");
-    let log = format!("{name}_yosys.log");
-    let full = format!("{}tee -q -o {stat} stat\n", script(t, rtl, top, &children));
-    write_file(&dir.join(&ys), &full)?;
-    let _ = std::fs::remove_file(dir.join(&stat));
-    run_logged(
-        &YOSYS,
-        &["-q".to_string(), "-l".to_string(), log.clone(), ys],
+    let (text, stat_path) = yosys::run_stat(
         dir,
-        &log,
+        &format!("{top}_blocks"),
+        &script(t, rtl, top, &children),
     )?;
-    let stat_path = dir.join(&stat);
-    let text = std::fs::read_to_string(&stat_path).map_err(|e| {
-        Error(format!(
-            "yosys wrote no statistics ({}): {e}",
-            stat_path.display()
-        ))
-    })?;
     from_sections(t, top, &parse_sections(&text))
         .map_err(|m| Error(format!("{}: {m}", stat_path.display())))
 }

@@ -3,7 +3,7 @@
 //! carry, BRAM ... counted by the family's cell names).
 
 use std::collections::BTreeMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
@@ -181,6 +181,14 @@ pub fn wrapper_script(t: &Target, rtl: &Path, wrapper_file: &str, module: &str) 
 /// Runs yosys in `dir` on `script` (written to `<name>.ys`, with a `stat` that
 /// goes to `<name>_stat.txt`, log `<name>_yosys.log`); returns the area.
 pub fn run(dir: &Path, name: &str, script: &str, arch: Arch) -> Result<Area, Error> {
+    let (text, stat_path) = run_stat(dir, name, script)?;
+    let cells = parse_stat(&text).map_err(|m| Error(format!("{}: {m}", stat_path.display())))?;
+    Ok(Area::from_cells(arch, cells))
+}
+
+/// Runs yosys in `dir` on `script` followed by `stat` (files as [`run`]);
+/// returns the text of the statistics and the path it was read from.
+pub fn run_stat(dir: &Path, name: &str, script: &str) -> Result<(String, PathBuf), Error> {
     let ys = format!("{name}.ys");
     let stat = format!("{name}_stat.txt");
     let log = format!("{name}_yosys.log");
@@ -201,8 +209,7 @@ pub fn run(dir: &Path, name: &str, script: &str, arch: Arch) -> Result<Area, Err
             stat_path.display()
         ))
     })?;
-    let cells = parse_stat(&text).map_err(|m| Error(format!("{}: {m}", stat_path.display())))?;
-    Ok(Area::from_cells(arch, cells))
+    Ok((text, stat_path))
 }
 
 #[cfg(test)]

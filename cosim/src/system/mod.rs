@@ -345,10 +345,10 @@ impl System {
             && self.recessive_cycles >= IDLE_BITS * self.timing.clocks_per_bit() as u64
     }
 
-    /// One clock cycle for every node. Returns the new sample.
-    pub fn step(&mut self) -> &Sample {
-        let cycle = self.steps;
-        let rst = cycle < self.reset_cycles;
+    /// The bus of `cycle` from the nodes' `tx` of the last clock: each node's
+    /// `rx`, the line and the recessive run, into the sample.
+    #[inline(always)]
+    fn resolve_bus(&mut self, cycle: u64) {
         for (t, o) in self.tx.iter_mut().zip(&self.sample.outputs) {
             *t = o.tx;
         }
@@ -359,8 +359,15 @@ impl System {
             self.recessive_cycles = 0;
         }
         self.sample.cycle = cycle;
-        self.sample.rst = rst;
         self.sample.bus = line;
+    }
+
+    /// One clock cycle for every node. Returns the new sample.
+    pub fn step(&mut self) -> &Sample {
+        let cycle = self.steps;
+        let rst = cycle < self.reset_cycles;
+        self.resolve_bus(cycle);
+        self.sample.rst = rst;
         for i in 0..self.engines.len() {
             let mut tx_abort = false;
             if !rst {

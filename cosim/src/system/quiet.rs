@@ -92,17 +92,7 @@ impl System {
         self.sample.tx_abort.fill(false);
         for _ in 0..cycles {
             let cycle = self.steps;
-            for (t, o) in self.tx.iter_mut().zip(&self.sample.outputs) {
-                *t = o.tx;
-            }
-            let line = self.bus.resolve(cycle, &self.tx, &mut self.sample.rx);
-            if line {
-                self.recessive_cycles = self.recessive_cycles.saturating_add(1);
-            } else {
-                self.recessive_cycles = 0;
-            }
-            self.sample.cycle = cycle;
-            self.sample.bus = line;
+            self.resolve_bus(cycle);
             let mut notable = false;
             for (i, engine) in self.engines.iter_mut().enumerate() {
                 let inputs = &mut self.quiet_inputs[i];

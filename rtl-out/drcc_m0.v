@@ -5,7 +5,7 @@
 // service only.
 // Contract:   cosim/src/model/drcc_contract.md
 // Source:     hdl/src/drcc.rs (`DrccCore`, port docs from its `///` comments)
-// Parameters: M = 0
+// Parameters: M = 0, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32
 //
 // Ports:
 // dir    width  port                           meaning
@@ -25745,6 +25745,7 @@ module drcc_m0__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     output reg  rx_ready;
     
     // Constant declarations
+    localparam  mask = 5'b11111;
     localparam  one5 = 5'b1;
     localparam  one6 = 6'b1;
     localparam  zero5 = 5'b0;
@@ -25807,15 +25808,15 @@ module drcc_m0__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
         ready__d = ready__q;
         ram__clk = clk;
         pop5 = ((pop) & 5'h1f);
-        ram__read_address = head__q + pop5;
+        ram__read_address = (head__q + pop5) & mask;
         ram__read_enable = ~(wr & (cnt__q[(32'h0)+:(5)] == pop5));
         ram__write_enable = wr;
-        ram__write_address = head__q + cnt__q[(32'h0)+:(5)];
+        ram__write_address = (head__q + cnt__q[(32'h0)+:(5)]) & mask;
         ram__write_data = wr_data;
         rd_data = ram__read_data;
         head__d = head__q;
         if (pop) begin
-            head__d = head__q + one5;
+            head__d = (head__q + one5) & mask;
         end
         cnt__d = cnt__q;
         if (wr & ~pop) begin
@@ -25958,7 +25959,8 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  last_scan = 6'b100000;
-    localparam  full6 = 6'b100000;
+    localparam  hmask = 5'b11111;
+    localparam  fifo_depth = 6'b100000;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  zero15 = 15'b0;
@@ -26332,7 +26334,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         e_hu = hu__q[32'h0];
         e_hd = hd__q[32'h0];
         e_expired = exp_q__q;
-        fifo_full = fifo_count == full6;
+        fifo_full = fifo_count == fifo_depth;
         in_scan = (w_state__q == s_scan) | (w_state__q == s_rscan);
         judging = in_scan & (scan_i__q != zero6);
         pcl = sel__q != acl;
@@ -26342,13 +26344,13 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
             hist__read_address = rel__rel_e;
         end
         else begin
-            hist__read_address = scan_i__q[(32'h0)+:(5)];
+            hist__read_address = scan_i__q[(32'h0)+:(5)] & hmask;
         end
         hist__write_enable = 1'b0;
         hist__write_address = slot;
         hist__write_data = (((frame_sel) & 100'hfffffffffffffffffffffffff) << 32'h1) | ((sel__q) & 100'hfffffffffffffffffffffffff);
         if (in_scan) begin
-            hist_ts__read_address = scan_i__q[(32'h0)+:(5)] + one5;
+            hist_ts__read_address = (scan_i__q[(32'h0)+:(5)] + one5) & hmask;
         end
         else begin
             hist_ts__read_address = zero5;
@@ -26407,9 +26409,9 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         e_keep = hv_base[32'h0] & ~e_expired;
         hv__d = hv_base;
         if (judging) begin
-            hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << 32'h1f);
-            hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << 32'h1f);
-            hd__d = (hd__q >> one32) | (((hd__q[32'h0]) & 32'hffffffff) << 32'h1f);
+            hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << hmask);
+            hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << hmask);
+            hd__d = (hd__q >> one32) | (((hd__q[32'h0]) & 32'hffffffff) << hmask);
         end
         if (w_state__q == s_idle) begin
             if (rxp_a__q | rxp_b__q) begin
@@ -26509,7 +26511,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
                     hd__d = hd__q | mask;
                 end
                 if (~free_found__q) begin
-                    hist_ptr__d = hist_ptr__q + one5;
+                    hist_ptr__d = (hist_ptr__q + one5) & hmask;
                 end
             end
             w_state__d = s_idle;
@@ -27799,6 +27801,7 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
     output reg  failed_evt;
     
     // Constant declarations
+    localparam  qmask = 3'b111;
     localparam  one3 = 3'b1;
     localparam  one4 = 4'h1;
     localparam  zero3 = 3'b0;
@@ -27960,10 +27963,10 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
         push_a = push & ~push_q;
         push_b = push & push_q;
         if (push_q) begin
-            wr_slot = head_b__q + cnt_b__q[(32'h0)+:(3)];
+            wr_slot = (head_b__q + cnt_b__q[(32'h0)+:(3)]) & qmask;
         end
         else begin
-            wr_slot = head_a__q + cnt_a__q[(32'h0)+:(3)];
+            wr_slot = (head_a__q + cnt_a__q[(32'h0)+:(3)]) & qmask;
         end
         ram__write_enable = push;
         ram__write_address = (((push_q) & 4'hf) << 32'h3) | ((wr_slot) & 4'hf);
@@ -27976,10 +27979,10 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
             rd_slot = head_a__q;
         end
         if (rd_sel__q) begin
-            dmr_slot = head_a__q + off_rcl;
+            dmr_slot = (head_a__q + off_rcl) & qmask;
         end
         else begin
-            dmr_slot = head_a__q + off_dcl;
+            dmr_slot = (head_a__q + off_dcl) & qmask;
         end
         if (dmr) begin
             ram__read_address = ((dmr_slot) & 4'hf);
@@ -27993,9 +27996,9 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
         rd_frame = ram__read_data;
         head_a__d = head_a__q;
         head_b__d = head_b__q;
-        head_a__d = head_a__q + pop_n[(32'h0)+:(3)];
+        head_a__d = (head_a__q + pop_n[(32'h0)+:(3)]) & qmask;
         if (pop_b) begin
-            head_b__d = head_b__q + one3;
+            head_b__d = (head_b__q + one3) & qmask;
         end
         cnt_a__d = cnt_a__q - pop_n;
         if (push_a) begin

@@ -40,6 +40,10 @@ enum Command {
         /// Compare with the files on disk instead of writing; fail naming stale files.
         #[arg(long)]
         check: bool,
+        /// Generate only the DRCC of one configuration: default, m0, small, or a
+        /// TOML file (name, mailboxes, rx_fifo_depth, tx_queue_depth, history).
+        #[arg(long, value_name = "NAME|FILE")]
+        config: Option<String>,
     },
     /// Run a scenario on one engine and check its expected deliveries.
     Sim {
@@ -303,7 +307,16 @@ fn main() -> ExitCode {
         Err(e) => e.exit(),
     };
     let result = match cli.command {
-        Command::Generate { out, check } => cli::generate::run(out, check),
+        Command::Generate {
+            out,
+            check,
+            config: Some(spec),
+        } => cli::generate::run_config(&spec, out, check),
+        Command::Generate {
+            out,
+            check,
+            config: None,
+        } => cli::generate::run(out, check),
         Command::Sim {
             scenario,
             engine,

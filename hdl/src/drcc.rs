@@ -16,11 +16,13 @@
 //! Generation parameter `M`, the DMR mailboxes (0..16, DMR contract §2): `drcc` is
 //! [`Drcc`] (`M = 16`), `drcc_m0` is [`DrccM0`] (`M = 0`: no mailbox engine, no
 //! identifier memory; DMR faults are then found by bus-off and the connection
-//! service only).
+//! service only). The other sizes (TX queue and RX FIFO depths, the history) are
+//! set by [`DrccCore::with_config`] (`crate::config`; `drcc_small`).
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;
 use crate::channel::sized::Const;
+use crate::config::DrccConfig;
 use crate::dmr::control::DmrControl;
 use crate::dmr::engine::{DmrEngine, MAILBOXES};
 use crate::dmr::if_mailboxes::IfMailboxes;
@@ -199,6 +201,22 @@ pub struct DrccCore<const M: usize> {
     zero29: Const<29, 0>,
     zero31: Const<31, 0>,
     zero32: Const<32, 0>,
+}
+
+impl<const M: usize> DrccCore<M> {
+    /// The DRCC with the sizes of `cfg` (its `mailboxes` must be `M`): the TX
+    /// queues, the RX FIFO and the duplicate-removal history (`crate::config`).
+    pub fn with_config(cfg: &DrccConfig) -> Self {
+        assert_eq!(cfg.mailboxes, M, "DrccCore<{M}> has {M} DMR mailboxes");
+        cfg.check().unwrap_or_else(|e| panic!("{e}"));
+        Self {
+            regs: WbRegs::with_queue_depth(cfg.tx_queue_depth),
+            txbuf: TxBuffer::new(cfg.tx_queue_depth),
+            rxfifo: RxFifo::new(cfg.rx_fifo_depth),
+            rxw: RxWriter::new(cfg.history, cfg.rx_fifo_depth),
+            ..Default::default()
+        }
+    }
 }
 
 // The update (every block's wiring) lives beside this file.

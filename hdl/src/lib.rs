@@ -1,5 +1,6 @@
 //! drcc-hdl: the DRCC hardware, described in rust-hdl, one block per file.
 pub mod channel;
+pub mod config;
 pub mod dmr;
 pub mod drcc;
 pub mod generated;

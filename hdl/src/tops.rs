@@ -27,7 +27,8 @@ pub mod shim_table;
 pub mod verilog;
 
 use crate::channel::can_channel::CanChannel;
-use crate::drcc::{Drcc, DrccM0};
+use crate::config::DrccConfig;
+use crate::drcc::{Drcc, DrccCore, DrccM0};
 use crate::hub::hub::{Hub4x2, HubB4x2};
 use crate::redcan::rcm::Rcm;
 use rust_hdl::prelude::*;
@@ -116,6 +117,42 @@ fn raw_verilog_of<B: Block + Default>() -> String {
     generate_verilog(&connected::<B>())
 }
 
+/// The raw Verilog of the DRCC with the sizes of `cfg` (`M` = `cfg.mailboxes`).
+fn raw_verilog_drcc<const M: usize>(cfg: &DrccConfig) -> String {
+    let mut uut = DrccCore::<M>::with_config(cfg);
+    uut.connect_all();
+    generate_verilog(&uut)
+}
+
+fn raw_verilog_small() -> String {
+    raw_verilog_drcc::<0>(&DrccConfig::SMALL)
+}
+
+/// The finished Verilog of a DRCC generated with `cfg`, as module `name`
+/// (`drcc generate --config`): the `drcc` top's header, ports and notes, with
+/// `cfg`'s parameters. Refuses a configuration [`DrccConfig::check`] refuses.
+pub fn drcc_with_config(name: &str, cfg: &DrccConfig) -> Result<String, String> {
+    cfg.check()?;
+    let raw = match cfg.mailboxes {
+        0 => raw_verilog_drcc::<0>(cfg),
+        _ => raw_verilog_drcc::<16>(cfg),
+    };
+    let base = top("drcc").expect("the drcc top");
+    // a one-shot top of the CLI: its few strings live for the process
+    let params: Vec<(&'static str, &'static str)> = cfg
+        .params()
+        .into_iter()
+        .map(|(k, v)| (k, &*Box::leak(v.into_boxed_str())))
+        .collect();
+    let t = Top {
+        name: Box::leak(name.to_string().into_boxed_str()),
+        summary: "the DRCC generated with a configuration of its own (drcc generate --config)",
+        params: Box::leak(params.into_boxed_slice()),
+        ..*base
+    };
+    Ok(verilog::finish(&t, &raw, &t.ports()))
+}
+
 fn ports_of<B: Block + Default>() -> Vec<Port> {
     let uut = connected::<B>();
     let mut probe = PortProbe::default();
@@ -158,7 +195,12 @@ pub static TOPS: &[Top] = &[
         name: "drcc",
         summary: "the dual-redundancy CAN controller: two channels, redundancy management, TX buffer, RX FIFO, Wishbone",
         contract: "cosim/src/model/drcc_contract.md",
-        params: &[("M", "16")],
+        params: &[
+            ("M", "16"),
+            ("RX_FIFO_DEPTH", "32"),
+            ("TX_QUEUE_DEPTH", "8"),
+            ("HISTORY", "32"),
+        ],
         block: "DrccCore",
         source_path: "hdl/src/drcc.rs",
         source: include_str!("drcc.rs"),
@@ -173,7 +215,12 @@ pub static TOPS: &[Top] = &[
         name: "drcc_m0",
         summary: "the DRCC without DMR mailboxes (M = 0): DMR faults found by bus-off and the connection service only",
         contract: "cosim/src/model/drcc_contract.md",
-        params: &[("M", "0")],
+        params: &[
+            ("M", "0"),
+            ("RX_FIFO_DEPTH", "32"),
+            ("TX_QUEUE_DEPTH", "8"),
+            ("HISTORY", "32"),
+        ],
         block: "DrccCore",
         source_path: "hdl/src/drcc.rs",
         source: include_str!("drcc.rs"),
@@ -181,6 +228,26 @@ pub static TOPS: &[Top] = &[
                 the same ports and registers; MB_SEL and the mailbox window refuse every\n\
                 write and read 0. Registers: docs/registers.md, rtl-out/drcc_regs.h.",
         raw_verilog: raw_verilog_of::<DrccM0>,
+        ports: ports_of::<DrccM0>,
+    },
+    Top {
+        name: "drcc_small",
+        summary: "the DRCC for a small FPGA: no DMR mailboxes, RX FIFO 8, TX queues 4, history 16",
+        contract: "cosim/src/model/drcc_contract.md",
+        params: &[
+            ("M", "0"),
+            ("RX_FIFO_DEPTH", "8"),
+            ("TX_QUEUE_DEPTH", "4"),
+            ("HISTORY", "16"),
+        ],
+        block: "DrccCore",
+        source_path: "hdl/src/drcc.rs",
+        source: include_str!("drcc.rs"),
+        notes: "The drcc_m0 with the small configuration (hdl/src/config.rs, contract section 1.1):\n\
+                the same ports and registers; a push to a TX queue holding 4 frames is refused,\n\
+                the RX FIFO overruns at 8 frames, duplicate removal remembers 16 frames.\n\
+                Registers: docs/registers.md, rtl-out/drcc_regs.h.",
+        raw_verilog: raw_verilog_small,
         ports: ports_of::<DrccM0>,
     },
     Top {
@@ -306,6 +373,32 @@ pub fn emit_all() -> Vec<(&'static str, String)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The DRCC tops' header parameters are their configurations', and
+    /// `drcc_with_config` of a named configuration is that top's Verilog body.
+    #[test]
+    fn drcc_tops_follow_their_configurations() {
+        for (name, cfg) in [
+            ("drcc", DrccConfig::DEFAULT),
+            ("drcc_m0", DrccConfig::M0),
+            ("drcc_small", DrccConfig::SMALL),
+        ] {
+            let t = top(name).unwrap();
+            let want: Vec<(&str, String)> = cfg.params();
+            let got: Vec<(&str, String)> =
+                t.params.iter().map(|(k, v)| (*k, v.to_string())).collect();
+            assert_eq!(got, want, "{name}");
+        }
+        let small = top("drcc_small").unwrap().verilog();
+        let custom = drcc_with_config("drcc_small", &DrccConfig::SMALL).unwrap();
+        let body = |t: &str| t[t.find("module drcc_small(").unwrap()..].to_string();
+        assert_eq!(body(&small), body(&custom));
+        let bad = DrccConfig {
+            rx_fifo_depth: 3,
+            ..DrccConfig::SMALL
+        };
+        assert!(drcc_with_config("x", &bad).is_err());
+    }
 
     /// The probe walk finds exactly the ports the Verilog module header declares.
     #[test]

@@ -3,6 +3,7 @@
 
 pub mod campaign;
 pub mod dmr;
+pub mod gen_config;
 pub mod generate;
 pub mod redundancy;
 pub mod ring;

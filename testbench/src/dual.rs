@@ -24,6 +24,7 @@ use drcc_cosim::engine::drcc_model::DrccModelEngine;
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
 use drcc_cosim::Frame;
 
+use crate::drcc_build::DrccBuild;
 use crate::engines::{EngineKind, VERILATOR_HINT};
 
 /// `field` probe code of the data field (timing contract §4.1).
@@ -92,6 +93,8 @@ pub struct DualScenario {
     pub recovery_bits: u16,
     /// "No bus activity" judgement: a frame pending this many bit times (0 = off).
     pub stall_bits: u16,
+    /// The generated DRCC every node is (contract §1.1).
+    pub build: DrccBuild,
 }
 
 impl DualScenario {
@@ -116,6 +119,7 @@ impl DualScenario {
             // fails, so only the stall judgement sees it. 500 bit times is about 8
             // frames of waiting for arbitration.
             stall_bits: 500,
+            build: DrccBuild::Default,
         }
     }
 
@@ -130,6 +134,7 @@ impl DualScenario {
             recovery_bits: self.recovery_bits,
             stall_limit: self.stall_bits,
             dedup_window: 2_000,
+            tx_queue_depth: self.build.params().tx_queue_depth as u32,
             ..HostConfig::default()
         }
     }
@@ -288,7 +293,7 @@ pub fn run_dual_observed(
 ) -> Result<DualReport, String> {
     let build = |k: EngineKind, fault_start: Option<u64>| -> Result<DualBusSystem, String> {
         let engines = (0..s.nodes)
-            .map(|_| drcc_engine(k))
+            .map(|_| s.build.engine(k))
             .collect::<Result<Vec<_>, _>>()?;
         let mut sys = DualBusSystem::new(engines, vec![s.host_config(); s.nodes])?;
         if let Some(start) = fault_start {

@@ -9,6 +9,7 @@ pub mod campaign;
 pub mod conformance;
 pub mod coverage;
 pub mod dmr;
+pub mod drcc_build;
 pub mod dual;
 pub mod engines;
 pub mod fault_gen;

@@ -80,6 +80,7 @@ fn random_config(rng: &mut SplitMix64, timing: u32) -> HostConfig {
         dedup_window: rng.below(3000) as u16,
         int_enable: rng.below(256) as u32,
         dmr: None,
+        tx_queue_depth: 8,
         // Drawn last, so the other fields keep their draws; on a dual bus the
         // echo (DRCC contract §4.4) fires only for another node's identical frame.
         star: redundancy && rng.percent(25),

@@ -118,6 +118,10 @@ pub struct HostConfig {
     /// CiA 701 DMR mode (`CTRL.dmr`) with its configuration; `redundancy` must then
     /// be false (the DRCC refuses both, DMR contract §2).
     pub dmr: Option<DmrConfig>,
+    /// Entries per TX queue of the DRCC generated (drcc_contract.md §1.1): the
+    /// driver pushes only while a queue holds fewer (firmware is built for its
+    /// configuration; 8 in the default).
+    pub tx_queue_depth: u32,
 }
 
 impl Default for HostConfig {
@@ -137,6 +141,7 @@ impl Default for HostConfig {
             // every interrupt
             int_enable: MAP.register("INT_ENABLE").map_or(0, |r| r.defined()),
             dmr: None,
+            tx_queue_depth: 8,
         }
     }
 }
@@ -450,7 +455,7 @@ impl HostDriver {
                 } else {
                     get("STATUS", "txq_b_count", data)
                 };
-                if count < 8 {
+                if count < self.config.tx_queue_depth {
                     let f = s.frame;
                     let data_word = f.data_word();
                     // Registers carry byte 0 in [7:0]; the frame keeps byte 0 first.

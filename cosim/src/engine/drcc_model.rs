@@ -3,7 +3,7 @@
 //! contract (`drcc_contract.md`) and the DRCC paper.
 
 use super::drcc::{DrccEngine, DrccInputs, DrccOutputs};
-use crate::model::drcc::DrccModel;
+use crate::model::drcc::{DrccModel, DrccParams};
 
 /// The DRCC reference model engine.
 #[derive(Clone, Debug, Default)]
@@ -24,6 +24,13 @@ impl DrccModelEngine {
     pub fn with_mailboxes(m: usize) -> Self {
         DrccModelEngine {
             model: DrccModel::with_mailboxes(m),
+        }
+    }
+
+    /// A model engine generated with the sizes of `p` (drcc_contract.md §1.1).
+    pub fn with_params(p: &DrccParams) -> Self {
+        DrccModelEngine {
+            model: DrccModel::with_params(p),
         }
     }
 }

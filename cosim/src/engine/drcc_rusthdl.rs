@@ -10,6 +10,7 @@
 
 use super::drcc::{DrccEngine, DrccInputs, DrccOutputs, DrccProbes};
 use super::rusthdl::{field_code, settle};
+use drcc_hdl::config::DrccConfig;
 use drcc_hdl::drcc::DrccCore;
 use rust_hdl::prelude::*;
 
@@ -42,7 +43,15 @@ impl<const M: usize> Default for DrccCoreRustHdlEngine<M> {
 impl<const M: usize> DrccCoreRustHdlEngine<M> {
     /// A fresh DRCC, clock low, not yet reset (drive `rst` for a few steps).
     pub fn new() -> Self {
-        let mut uut = Box::<DrccCore<M>>::default();
+        Self::from_block(Box::<DrccCore<M>>::default())
+    }
+
+    /// A fresh DRCC generated with the sizes of `cfg` (its `mailboxes` is `M`).
+    pub fn with_config(cfg: &DrccConfig) -> Self {
+        Self::from_block(Box::new(DrccCore::<M>::with_config(cfg)))
+    }
+
+    fn from_block(mut uut: Box<DrccCore<M>>) -> Self {
         uut.connect_all();
         uut.clk.next = Clock::from(false);
         let mut e = DrccCoreRustHdlEngine { uut };

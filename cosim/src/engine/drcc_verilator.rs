@@ -1,11 +1,14 @@
 //! The `verilator` engine of the DRCC tops: `rtl-out/drcc.v` (`M = 16` DMR
-//! mailboxes) or `rtl-out/drcc_m0.v` (`M = 0`) compiled by Verilator, driven
+//! mailboxes), `rtl-out/drcc_m0.v` (`M = 0`) or `rtl-out/drcc_small.v` (the small
+//! configuration, `drcc_hdl::config`) compiled by Verilator, driven
 //! through `verilator-sys`. The sign-off engine for everything the DRCC adds to the
 //! channels (redundancy management, RAMs, registers, DMR).
 
 use super::drcc::{DrccEngine, DrccInputs, DrccOutputs, DrccProbes};
 use std::path::Path;
-use verilator_sys::{Drcc, DrccIn, DrccM0, DrccM0In, DrccM0Out, DrccOut};
+use verilator_sys::{
+    Drcc, DrccIn, DrccM0, DrccM0In, DrccM0Out, DrccOut, DrccSmall, DrccSmallIn, DrccSmallOut,
+};
 
 /// The outputs of a Verilated DRCC top (`DrccOut` or `DrccM0Out`: the same fields).
 macro_rules! decode_fields {
@@ -136,6 +139,16 @@ drcc_verilator_engine!(
     DrccIn,
     DrccOut,
     decode
+);
+
+drcc_verilator_engine!(
+    /// The Verilated `drcc_small` (the small configuration: no DMR mailboxes, RX
+    /// FIFO 8, TX queues 4, history 16).
+    DrccSmallVerilatorEngine,
+    DrccSmall,
+    DrccSmallIn,
+    DrccSmallOut,
+    decode_small
 );
 
 drcc_verilator_engine!(

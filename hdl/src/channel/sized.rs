@@ -98,6 +98,34 @@ impl<const N: usize, const M: usize> LastIndex<N, M> {
 
 sized_constant_atom!(LastIndex, M, usize);
 
+/// An N-bit generation parameter: a constant whose default value `D` (the
+/// proven default configuration) is in its type, so blocks keep
+/// `#[derive(Default)]`, and whose value a block's `new(...)` may set to another
+/// configuration's (RX FIFO depth, history size: `crate::config`).
+#[derive(Copy, Clone, Debug)]
+pub struct Param<const N: usize, const D: u64>(Constant<Bits<N>>);
+
+impl<const N: usize, const D: u64> Default for Param<N, D> {
+    fn default() -> Self {
+        Self::new(D)
+    }
+}
+
+impl<const N: usize, const D: u64> Param<N, D> {
+    /// The parameter with value `v` (must fit N bits).
+    pub fn new(v: u64) -> Self {
+        assert!(N >= 64 || v < 1 << N, "parameter {v} does not fit {N} bits");
+        Self(Constant::new(Bits::<N>::from(v)))
+    }
+
+    /// The value, usable in HDL kernels (`self.depth.val()`).
+    pub fn val(&self) -> Bits<N> {
+        self.0.val()
+    }
+}
+
+sized_constant_atom!(Param, D, u64);
+
 #[cfg(test)]
 mod tests {
     use super::*;

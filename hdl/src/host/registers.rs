@@ -260,9 +260,9 @@ pub const REGISTERS: &[Register] = &[
             f("err_state_b", 11, 2, 0, "channel B error state").coded(ErrState::ENCODING),
             f("reset_mode", 13, 1, 1, "CTRL.reset_mode"),
             f("tx_going_on", 14, 1, 0, "a transmission is in progress (main FSM not idle)"),
-            f("txq_a_count", 16, 4, 0, "TX queue A count (0..8)"),
-            f("txq_b_count", 20, 4, 0, "TX queue B count (0..8)"),
-            f("rx_count", 24, 6, 0, "RX FIFO count (0..32)"),
+            f("txq_a_count", 16, 4, 0, "TX queue A count (0..TX_QUEUE_DEPTH: 8, drcc_small 4)"),
+            f("txq_b_count", 20, 4, 0, "TX queue B count (0..TX_QUEUE_DEPTH)"),
+            f("rx_count", 24, 6, 0, "RX FIFO count (0..RX_FIFO_DEPTH: 32, drcc_small 8)"),
         ],
     },
     Register {

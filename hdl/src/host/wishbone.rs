@@ -365,6 +365,17 @@ impl Default for WbRegs {
     }
 }
 
+impl WbRegs {
+    /// The register block of a DRCC whose TX queues hold `depth` frames (a push
+    /// to a queue with `depth` frames is refused, contract §6).
+    pub fn with_queue_depth(depth: usize) -> Self {
+        Self {
+            queue_full: reset(depth as u32),
+            ..Default::default()
+        }
+    }
+}
+
 impl Logic for WbRegs {
     #[hdl_gen]
     fn update(&mut self) {

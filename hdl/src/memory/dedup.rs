@@ -1,7 +1,7 @@
 //! Receive writer and duplicate removal (DRCC contract §7). Each channel's
 //! `rx_valid` pulse sets `rxp_a` / `rxp_b`; the writer FSM (`w_state`: idle 0,
 //! scan 1, decide 2, write 3; DMR: rscan 4, fetch 5, release 6) takes A before B, and in redundancy mode with a
-//! non-zero window scans the 32-entry history (a synchronous RAM of 32 x 116 bits:
+//! non-zero window scans the `H`-entry history (a synchronous RAM of H x 116 bits:
 //! [115:17] frame, [16] channel, [15:0] timestamp `now`; stored as two RAMs, see
 //! below) for an identical frame
 //! delivered from the other channel at most `window` bit times earlier that has
@@ -9,8 +9,14 @@
 //! Otherwise the frame is written to the RX FIFO (or counted as an overrun when
 //! the FIFO is full) and recorded in the history.
 //!
-//! scan (33 clocks, `scan_i` 0..32): history read address = `scan_i[4:0]`; at the
-//! edge with `scan_i = i >= 1` the read data is entry `i - 1`.
+//! scan (H + 1 clocks, `scan_i` 0..H): history read address = `scan_i mod H`;
+//! at the edge with `scan_i = i >= 1` the read data is entry `i - 1`.
+//!
+//! Generation parameters (`crate::config`, contract §1.1): the history size `H`
+//! (4, 8, 16 or 32; default 32) and the RX FIFO depth (its full count). Entry
+//! indices keep their 5 bits and `hv` / `hu` / `hd` their 32, wrapped at `H`
+//! (`hmask = H - 1`, the rotation enters at bit `H - 1`): a smaller history is
+//! the same logic with constant-zero upper bits, which synthesis removes.
 //!
 //! Timing (iCE40 Fmax): the timestamps live in a RAM of their own (`hist_ts`,
 //! 32 x 16; the frames and channels in `hist`, 32 x 100: the same 8 block RAMs),
@@ -23,7 +29,7 @@
 //! `free_found` path. A write is always followed by an idle edge, which reloads
 //! address 0, so a colliding `hist_ts` read is never observed either. The first free
 //! entry (not valid, already used, or expired) seen by the scan is where the new
-//! frame is recorded; with all 32 live, the round-robin `hist_ptr` is the victim.
+//! frame is recorded; with all H live, the round-robin `hist_ptr` is the victim.
 //!
 //! Omissions (§7, outside DMR mode): an entry that expires in `scan` (`hv[e]`
 //! and its age above `window`) without having cancelled a copy (`!hu[e]`) was
@@ -38,7 +44,7 @@
 //!
 //! `hv` / `hu` are rotated right by one at every `scan` edge with `scan_i >= 1`,
 //! so the entry being judged is always bit 0 (no 32-way index multiplexer, no
-//! decoder of `scan_i`); the 32 rotations of a scan bring them back into place
+//! decoder of `scan_i`); the H rotations of a scan bring them back into place
 //! before `decide` and `write` use them. One decoder serves `decide` (`hit_e`),
 //! `write` (the recorded slot) and `release` (`rel_e`).
 //!
@@ -47,7 +53,7 @@
 //! passive line (PCL) undelivered (`hd` = 0); a PCL frame waits for its ACL copy,
 //! which then delivers it (no second history entry). At an ACL switch
 //! (`release_set`) `release` is set, and every free idle edge runs a release scan
-//! (`rscan`, 33 clocks as `scan`, with the same expiry and rotations; `hd` rotates
+//! (`rscan`, H + 1 clocks as `scan`, with the same expiry and rotations; `hd` rotates
 //! with `hv` / `hu`): the oldest waiting frame of the new ACL (`release_scan.rs`)
 //! is read back (`fetch`, history address `rel_e`) and written to the FIFO with
 //! channel `acl` (`release`). A scan that finds none ends the release. The
@@ -57,7 +63,7 @@
 use super::bram::Bram;
 use super::release_scan::ReleaseScan;
 use super::rx_stats::RxStats;
-use crate::channel::sized::Const;
+use crate::channel::sized::{Const, Param};
 use rust_hdl::prelude::*;
 
 /// Receive writer with the duplicate-removal history.
@@ -176,14 +182,34 @@ pub struct RxWriter {
     one5: Const<5, 1>,
     zero6: Const<6, 0>,
     one6: Const<6, 1>,
-    last_scan: Const<6, 32>,
-    full6: Const<6, 32>,
+    /// `H`: the last `scan_i` of a scan (generation parameter).
+    last_scan: Param<6, 32>,
+    /// `H - 1`: the entry-index wrap and the bit the rotations enter at.
+    hmask: Param<5, 31>,
+    /// The RX FIFO depth: its count when full (generation parameter).
+    fifo_depth: Param<6, 32>,
     zero32: Const<32, 0>,
     one32: Const<32, 1>,
     zero15: Const<15, 0>,
     one15: Const<15, 1>,
     max15: Const<15, 0x7FFF>,
     max16: Const<16, 0xFFFF>,
+}
+
+impl RxWriter {
+    /// A writer with a history of `history` entries for an RX FIFO of
+    /// `fifo_depth` (powers of two, 4..32).
+    pub fn new(history: usize, fifo_depth: usize) -> Self {
+        for n in [history, fifo_depth] {
+            assert!(n.is_power_of_two() && (4..=32).contains(&n));
+        }
+        Self {
+            last_scan: Param::new(history as u64),
+            hmask: Param::new(history as u64 - 1),
+            fifo_depth: Param::new(fifo_depth as u64),
+            ..Default::default()
+        }
+    }
 }
 
 impl Logic for RxWriter {
@@ -245,7 +271,7 @@ impl Logic for RxWriter {
         self.e_hu.next = self.hu.q.val().get_bit(0);
         self.e_hd.next = self.hd.q.val().get_bit(0);
         self.e_expired.next = self.exp_q.q.val();
-        self.fifo_full.next = self.fifo_count.val() == self.full6.val();
+        self.fifo_full.next = self.fifo_count.val() == self.fifo_depth.val();
         // both scans judge one entry per edge with scan_i >= 1
         self.in_scan.next = (self.w_state.q.val() == self.s_scan.val())
             | (self.w_state.q.val() == self.s_rscan.val());
@@ -260,7 +286,7 @@ impl Logic for RxWriter {
         if self.w_state.q.val() == self.s_fetch.val() {
             self.hist.read_address.next = self.rel.rel_e.val();
         } else {
-            self.hist.read_address.next = self.scan_i.q.val().get_bits::<5>(0);
+            self.hist.read_address.next = self.scan_i.q.val().get_bits::<5>(0) & self.hmask.val();
         }
         self.hist.write_enable.next = false;
         self.hist.write_address.next = self.slot.val();
@@ -268,7 +294,8 @@ impl Logic for RxWriter {
             | bit_cast::<100, 1>(self.sel.q.val().into());
         // one entry ahead of `hist` (module doc)
         if self.in_scan.val() {
-            self.hist_ts.read_address.next = self.scan_i.q.val().get_bits::<5>(0) + self.one5.val();
+            self.hist_ts.read_address.next =
+                (self.scan_i.q.val().get_bits::<5>(0) + self.one5.val()) & self.hmask.val();
         } else {
             self.hist_ts.read_address.next = self.zero5.val();
         }
@@ -352,14 +379,14 @@ impl Logic for RxWriter {
         self.hv.d.next = self.hv_base.val();
 
         if self.judging.val() {
-            // rotate right: entry scan_e (bit 0) goes to bit 31, expired
-            // entries leave hv
+            // rotate right over H bits: entry scan_e (bit 0) goes to bit H - 1,
+            // expired entries leave hv
             self.hv.d.next = (self.hv_base.val() >> self.one32.val())
-                | (bit_cast::<32, 1>(self.e_keep.val().into()) << 31);
+                | (bit_cast::<32, 1>(self.e_keep.val().into()) << self.hmask.val());
             self.hu.d.next = (self.hu.q.val() >> self.one32.val())
-                | (bit_cast::<32, 1>(self.hu.q.val().get_bit(0).into()) << 31);
+                | (bit_cast::<32, 1>(self.hu.q.val().get_bit(0).into()) << self.hmask.val());
             self.hd.d.next = (self.hd.q.val() >> self.one32.val())
-                | (bit_cast::<32, 1>(self.hd.q.val().get_bit(0).into()) << 31);
+                | (bit_cast::<32, 1>(self.hd.q.val().get_bit(0).into()) << self.hmask.val());
         }
         if self.w_state.q.val() == self.s_idle.val() {
             if self.rxp_a.q.val() | self.rxp_b.q.val() {
@@ -414,7 +441,7 @@ impl Logic for RxWriter {
                 if self.w_state.q.val() == self.s_scan.val() {
                     self.w_state.d.next = self.s_decide.val();
                 } else if self.rel.found.val() | self.r_cand.val() {
-                    // entry 31, judged at this edge, counts
+                    // entry H - 1, judged at this edge, counts
                     self.w_state.d.next = self.s_fetch.val();
                 } else {
                     self.release_q.d.next = false;
@@ -464,7 +491,8 @@ impl Logic for RxWriter {
                     self.hd.d.next = self.hd.q.val() | self.mask.val();
                 }
                 if !self.free_found.q.val() {
-                    self.hist_ptr.d.next = self.hist_ptr.q.val() + self.one5.val();
+                    self.hist_ptr.d.next =
+                        (self.hist_ptr.q.val() + self.one5.val()) & self.hmask.val();
                 }
             }
             self.w_state.d.next = self.s_idle.val();

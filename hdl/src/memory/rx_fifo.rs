@@ -1,9 +1,14 @@
-//! RX FIFO (DRCC contract §7): one synchronous RAM of 32 entries x 100 bits
+//! RX FIFO (DRCC contract §7): one synchronous RAM of `depth` entries x 100 bits
 //! (the 99 frame bits of the channel `rx_*` ports and, in [99], the channel the
 //! frame came from), `head[4:0]`, `count[5:0]`. The read data register is loaded
 //! at every edge from `head`; the RX_* registers read it. `rx_ready` (RX_ID[31])
 //! is `count != 0` registered (0 in reset mode). The writer (`dedup.rs`)
 //! writes only when not full, the register block pops only when not empty.
+//!
+//! Generation parameter `depth` (4, 8, 16 or 32; `crate::config`): the pointers
+//! keep their 5 bits and wrap at `depth` through `mask = depth - 1`, so a smaller
+//! FIFO is the same logic with constant-zero upper pointer bits, which synthesis
+//! removes; `count` keeps its 6 bits (the `STATUS` field).
 //!
 //! Block RAM without read-before-write emulation (`super::bram`): the read
 //! address is `head + pop`, and the read is disabled at an edge where it meets
@@ -18,6 +23,7 @@
 //!   there keeps the read data one step ahead for the case above.
 
 use super::bram::Bram;
+use crate::channel::sized::Param;
 use rust_hdl::prelude::*;
 
 /// RX FIFO.
@@ -35,6 +41,8 @@ pub struct RxFifo {
     pub rd_data: Signal<Out, Bits<100>>,
     pub rx_ready: Signal<Out, Bit>,
     ram: Bram<Bits<100>, 5>,
+    /// `depth - 1`: the pointer wrap (generation parameter).
+    mask: Param<5, 31>,
     /// FIFO head (public for lock-step probes).
     pub head: DFF<Bits<5>>,
     cnt: DFF<Bits<6>>,
@@ -58,6 +66,7 @@ impl Default for RxFifo {
             rd_data: Default::default(),
             rx_ready: Default::default(),
             ram: Default::default(),
+            mask: Default::default(),
             head: Default::default(),
             cnt: Default::default(),
             ready: Default::default(),
@@ -70,23 +79,35 @@ impl Default for RxFifo {
     }
 }
 
+impl RxFifo {
+    /// An RX FIFO of `depth` entries (a power of two, 4..32).
+    pub fn new(depth: usize) -> Self {
+        assert!(depth.is_power_of_two() && (4..=32).contains(&depth));
+        Self {
+            mask: Param::new(depth as u64 - 1),
+            ..Default::default()
+        }
+    }
+}
+
 impl Logic for RxFifo {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, head, cnt, ready);
         self.ram.clk.next = self.clk.val();
         self.pop5.next = bit_cast::<5, 1>(self.pop.val().into());
-        self.ram.read_address.next = self.head.q.val() + self.pop5.val();
+        self.ram.read_address.next = (self.head.q.val() + self.pop5.val()) & self.mask.val();
         self.ram.read_enable.next =
             !(self.wr.val() & (self.cnt.q.val().get_bits::<5>(0) == self.pop5.val()));
         self.ram.write_enable.next = self.wr.val();
-        self.ram.write_address.next = self.head.q.val() + self.cnt.q.val().get_bits::<5>(0);
+        self.ram.write_address.next =
+            (self.head.q.val() + self.cnt.q.val().get_bits::<5>(0)) & self.mask.val();
         self.ram.write_data.next = self.wr_data.val();
         self.rd_data.next = self.ram.read_data.val();
 
         self.head.d.next = self.head.q.val();
         if self.pop.val() {
-            self.head.d.next = self.head.q.val() + self.one5.val();
+            self.head.d.next = (self.head.q.val() + self.one5.val()) & self.mask.val();
         }
         self.cnt.d.next = self.cnt.q.val();
         if self.wr.val() & !self.pop.val() {

@@ -1,7 +1,10 @@
 //! TX message buffer (DRCC contract §6): one synchronous RAM of 16 frames x 99
 //! bits (id, ide, rtr, dlc, data: the channel's `tx_*` ports), two circular
-//! queues of 8 (queue A = entries 0..7, queue B = 8..15, the queue bit is the
-//! address MSB), and the normal-mode request logic. A pushed frame is stored
+//! queues of `Q` (queue A = entries 0..Q-1, queue B = 8..8+Q-1, the queue bit is
+//! the address MSB), and the normal-mode request logic. Generation parameter `Q`
+//! (2, 4 or 8, default 8; `crate::config`): the 3-bit pointers wrap through
+//! `qmask = Q - 1` (constant-zero upper bits for a smaller queue, removed by
+//! synthesis); the register block refuses a push when the count is `Q`. A pushed frame is stored
 //! normalized (`super::tx_normalize`: as a receiver delivers it), so the read
 //! data compares with a received frame (the echo of contract §4.4).
 //!
@@ -31,6 +34,7 @@
 
 use super::bram::Bram;
 use super::tx_normalize::FrameNormalizer;
+use crate::channel::sized::Param;
 use rust_hdl::prelude::*;
 
 /// TX buffer: RAM, two queues, normal-mode requests.
@@ -74,6 +78,8 @@ pub struct TxBuffer {
     // storage and queue state
     ram: Bram<Bits<99>, 4>,
     norm: FrameNormalizer,
+    /// `Q - 1`: the pointer wrap (generation parameter).
+    qmask: Param<3, 7>,
     head_a: DFF<Bits<3>>,
     head_b: DFF<Bits<3>>,
     cnt_a: DFF<Bits<4>>,
@@ -125,6 +131,7 @@ impl Default for TxBuffer {
             failed_evt: Default::default(),
             ram: Default::default(),
             norm: Default::default(),
+            qmask: Default::default(),
             head_a: Default::default(),
             head_b: Default::default(),
             cnt_a: Default::default(),
@@ -146,6 +153,17 @@ impl Default for TxBuffer {
             one4: Constant::new(1.into()),
             zero3: Constant::new(0.into()),
             zero4: Constant::new(0.into()),
+        }
+    }
+}
+
+impl TxBuffer {
+    /// A TX buffer with two queues of `depth` entries (2, 4 or 8).
+    pub fn new(depth: usize) -> Self {
+        assert!(depth.is_power_of_two() && (2..=8).contains(&depth));
+        Self {
+            qmask: Param::new(depth as u64 - 1),
+            ..Default::default()
         }
     }
 }
@@ -190,9 +208,11 @@ impl Logic for TxBuffer {
 
         // write port: the staged frame, normalized, goes to {q, head + count}
         if self.push_q.val() {
-            self.wr_slot.next = self.head_b.q.val() + self.cnt_b.q.val().get_bits::<3>(0);
+            self.wr_slot.next =
+                (self.head_b.q.val() + self.cnt_b.q.val().get_bits::<3>(0)) & self.qmask.val();
         } else {
-            self.wr_slot.next = self.head_a.q.val() + self.cnt_a.q.val().get_bits::<3>(0);
+            self.wr_slot.next =
+                (self.head_a.q.val() + self.cnt_a.q.val().get_bits::<3>(0)) & self.qmask.val();
         }
         self.ram.write_enable.next = self.push.val();
         self.ram.write_address.next = (bit_cast::<4, 1>(self.push_q.val().into()) << 3)
@@ -206,12 +226,12 @@ impl Logic for TxBuffer {
         } else {
             self.rd_slot.next = self.head_a.q.val();
         }
-        // DMR: the entry `head_a + off[rd_sel]` mod 8, summed in a 3-bit signal of
+        // DMR: the entry `head_a + off[rd_sel]` mod Q, summed in a 3-bit signal of
         // its own (inside a wider expression Verilog would keep the carry)
         if self.rd_sel.q.val() {
-            self.dmr_slot.next = self.head_a.q.val() + self.off_rcl.val();
+            self.dmr_slot.next = (self.head_a.q.val() + self.off_rcl.val()) & self.qmask.val();
         } else {
-            self.dmr_slot.next = self.head_a.q.val() + self.off_dcl.val();
+            self.dmr_slot.next = (self.head_a.q.val() + self.off_dcl.val()) & self.qmask.val();
         }
         if self.dmr.val() {
             self.ram.read_address.next = bit_cast::<4, 3>(self.dmr_slot.val());
@@ -226,9 +246,10 @@ impl Logic for TxBuffer {
         // queue pointers
         self.head_a.d.next = self.head_a.q.val();
         self.head_b.d.next = self.head_b.q.val();
-        self.head_a.d.next = self.head_a.q.val() + self.pop_n.val().get_bits::<3>(0);
+        self.head_a.d.next =
+            (self.head_a.q.val() + self.pop_n.val().get_bits::<3>(0)) & self.qmask.val();
         if self.pop_b.val() {
-            self.head_b.d.next = self.head_b.q.val() + self.one3.val();
+            self.head_b.d.next = (self.head_b.q.val() + self.one3.val()) & self.qmask.val();
         }
         self.cnt_a.d.next = self.cnt_a.q.val() - self.pop_n.val();
         if self.push_a.val() {

@@ -60,6 +60,7 @@
 pub mod aux_fsm;
 pub mod dmr;
 pub mod main_fsm;
+mod params;
 mod register_file;
 pub mod regs;
 pub mod rx_path;
@@ -72,10 +73,11 @@ use crate::model::{coverage, field, ChannelModel};
 use aux_fsm::{AuxFsm, AuxInputs};
 use dmr::{DmrBlock, DmrInputs};
 use main_fsm::{FsmInputs, MainFsm};
+pub use params::DrccParams;
 use register_file::{clamp_k, Regs};
 use regs::dmr as dmr_regs;
 use regs::*;
-use rx_path::{RxInputs, RxPath};
+use rx_path::{RxInputs, RxPath, RxSizes};
 use tx_queues::{TxQueues, TxqInputs};
 
 /// The DRCC top, simulated clock by clock.
@@ -107,8 +109,14 @@ impl DrccModel {
         Self::with_mailboxes(dmr_regs::M_DEFAULT)
     }
 
-    /// A DRCC with `m` DMR mailboxes (generation parameter `M`, 0..16).
+    /// A DRCC with `m` DMR mailboxes (generation parameter `M`, 0..16) and the
+    /// default sizes otherwise.
     pub fn with_mailboxes(m: usize) -> Self {
+        Self::with_params(&DrccParams::with_mailboxes(m))
+    }
+
+    /// A DRCC generated with the sizes of `p` (contract §1.1).
+    pub fn with_params(p: &DrccParams) -> Self {
         let chan = [ChannelModel::new(), ChannelModel::new()];
         let out = [chan[0].outputs(), chan[1].outputs()];
         DrccModel {
@@ -117,9 +125,12 @@ impl DrccModel {
             r: Regs::reset(),
             fsm: MainFsm::default(),
             aux: [AuxFsm::default(); 2],
-            txq: TxQueues::default(),
-            rx: RxPath::default(),
-            dmr: DmrBlock::new(m),
+            txq: TxQueues::new(p.tx_queue_depth),
+            rx: RxPath::new(RxSizes {
+                fifo_depth: p.rx_fifo_depth,
+                history: p.history,
+            }),
+            dmr: DmrBlock::new(p.mailboxes),
             star: star::StarFollow::default(),
         }
     }

@@ -1,6 +1,6 @@
-//! RX FIFO and duplicate removal (contract §7): the 32 x 100-bit RX RAM with its
-//! registered read port, the writer FSM (idle, scan, decide, write), the 32-entry
-//! history of delivered frames and the `now` / `hist_idle` tick counters. In DMR
+//! RX FIFO and duplicate removal (contract §7): the RX RAM (`rx_fifo_depth` x 100
+//! bits, §1.1) with its registered read port, the writer FSM (idle, scan, decide,
+//! write), the `H`-entry history of delivered frames and the `now` / `hist_idle` tick counters. In DMR
 //! mode (dmr_contract.md §8) the first-copy-wins rule is replaced by the ACL rule:
 //! frames of the passive line wait in the history (`hd` = 0) and are released,
 //! oldest first, at an ACL switch (states `RSCAN`, `FETCH`, `RELEASE`).
@@ -21,8 +21,26 @@ pub const W_RELEASE: u8 = 6;
 /// `hist_idle` saturation value: every history entry is dropped there.
 const HIST_IDLE_MAX: u16 = 32767;
 
-/// History entries (contract §7).
+/// History entries at most (contract §7; a configuration's `H` is 4..32, §1.1).
 pub const HIST: usize = 32;
+
+/// The RX path's generation parameters (contract §1.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RxSizes {
+    /// RX FIFO entries: a write with this count overruns.
+    pub fifo_depth: u8,
+    /// History entries `H`: a scan takes `H + 1` clocks.
+    pub history: u8,
+}
+
+impl Default for RxSizes {
+    fn default() -> Self {
+        RxSizes {
+            fifo_depth: 32,
+            history: HIST as u8,
+        }
+    }
+}
 
 /// What the RX path samples at an edge.
 #[derive(Clone, Copy, Debug, Default)]
@@ -111,20 +129,31 @@ pub struct RxPath {
     pub pcl_frames: u16,
     pub released: u8,
     pub expired: u8,
+    /// Generation parameters (not reset).
+    pub sizes: RxSizes,
 }
 
 impl RxPath {
+    /// An RX path with the sizes of one configuration.
+    pub fn new(sizes: RxSizes) -> Self {
+        RxPath {
+            sizes,
+            ..RxPath::default()
+        }
+    }
+
     /// `DMR_RX_STATS`: [15:0] pcl_frames, [23:16] released, [31:24] expired.
     pub fn dmr_stats(&self) -> u32 {
         self.pcl_frames as u32 | (self.released as u32) << 16 | (self.expired as u32) << 24
     }
 
-    /// History read address: `rel_e` in `FETCH`, else `scan_i[4:0]`.
-    fn hist_addr(w_state: u8, scan_i: u8, rel_e: u8) -> usize {
+    /// History read address: `rel_e` in `FETCH`, else `scan_i mod H`.
+    fn hist_addr(&self, w_state: u8, scan_i: u8, rel_e: u8) -> usize {
+        let last = self.sizes.history - 1;
         if w_state == W_FETCH {
-            (rel_e & 31) as usize
+            (rel_e & last) as usize
         } else {
-            (scan_i & 31) as usize
+            (scan_i & last) as usize
         }
     }
 
@@ -132,10 +161,11 @@ impl RxPath {
     /// reset), every register and statistic clears.
     pub fn reset(&mut self) {
         let rd = self.ram[self.head as usize];
-        let hist_rd = self.hist[Self::hist_addr(self.w_state, self.scan_i, self.rel_e)];
+        let hist_rd = self.hist[self.hist_addr(self.w_state, self.scan_i, self.rel_e)];
         *self = RxPath {
             ram: self.ram,
             hist: self.hist,
+            sizes: self.sizes,
             rd,
             hist_rd,
             ..RxPath::default()
@@ -149,7 +179,8 @@ impl RxPath {
         let c = self.clone_regs();
         // Registered read ports (read-first: the RAM contents before the edge).
         self.rd = self.ram[c.head as usize];
-        self.hist_rd = self.hist[Self::hist_addr(c.w_state, c.scan_i, c.rel_e)];
+        self.hist_rd = self.hist[self.hist_addr(c.w_state, c.scan_i, c.rel_e)];
+        let (depth, hist_size) = (self.sizes.fifo_depth, self.sizes.history);
         ev.pop_refused = i.pop && c.count == 0;
         self.rx_ready = !i.reset_mode && c.count != 0;
         if i.reset_mode {
@@ -257,7 +288,7 @@ impl RxPath {
                     }
                 }
                 self.scan_i = c.scan_i + 1;
-                if c.scan_i == HIST as u8 {
+                if c.scan_i == hist_size {
                     self.w_state = W_DECIDE;
                 }
             }
@@ -321,8 +352,8 @@ impl RxPath {
                     }
                 }
                 self.scan_i = c.scan_i + 1;
-                if c.scan_i == HIST as u8 {
-                    // Interpretation: entry 31, judged at this edge, counts.
+                if c.scan_i == hist_size {
+                    // Interpretation: entry H - 1, judged at this edge, counts.
                     if self.rel_found {
                         self.w_state = W_FETCH;
                     } else {
@@ -334,11 +365,11 @@ impl RxPath {
             W_FETCH => self.w_state = W_RELEASE,
             W_RELEASE => {
                 let frame = c.hist_rd.frame;
-                if c.count >= 32 {
+                if c.count >= depth {
                     self.overruns = c.overruns.saturating_add(1);
                     ev.overrun = true;
                 } else {
-                    self.ram[((c.head + c.count) & 31) as usize] = (frame, i.acl);
+                    self.ram[((c.head + c.count) & (depth - 1)) as usize] = (frame, i.acl);
                     pushed = true;
                     ev.rx = true;
                 }
@@ -350,11 +381,11 @@ impl RxPath {
                 let frame = c.rxf[c.sel as usize];
                 if !c.w_fifo {
                     // A PCL frame: it waits in the history (§8).
-                } else if c.count >= 32 {
+                } else if c.count >= depth {
                     self.overruns = c.overruns.saturating_add(1);
                     ev.overrun = true;
                 } else {
-                    self.ram[((c.head + c.count) & 31) as usize] = (frame, c.sel);
+                    self.ram[((c.head + c.count) & (depth - 1)) as usize] = (frame, c.sel);
                     pushed = true;
                     ev.rx = true;
                 }
@@ -362,7 +393,7 @@ impl RxPath {
                     let p = if c.free_found {
                         c.free_e
                     } else {
-                        c.hist_ptr & 31
+                        c.hist_ptr & (hist_size - 1)
                     };
                     self.hist[p as usize] = HistEntry {
                         frame,
@@ -377,7 +408,7 @@ impl RxPath {
                         self.hd |= 1 << p;
                     }
                     if !c.free_found {
-                        self.hist_ptr = (p + 1) & 31;
+                        self.hist_ptr = (p + 1) & (hist_size - 1);
                     }
                 }
                 self.w_state = W_IDLE;
@@ -388,7 +419,7 @@ impl RxPath {
         }
         let popped = i.pop && c.count > 0;
         if popped {
-            self.head = (c.head + 1) & 31;
+            self.head = (c.head + 1) & (depth - 1);
         }
         self.count = c.count + pushed as u8 - popped as u8;
         ev

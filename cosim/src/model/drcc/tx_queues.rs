@@ -1,5 +1,5 @@
 //! TX buffer RAM and its two queues (contract §6): 16 x 99-bit synchronous RAM,
-//! queue A = entries 0..7, queue B = 8..15; the registered read port feeding both
+//! queue A = entries 0..Q-1, queue B = 8..8+Q-1 (`Q` the queue depth, §1.1); the registered read port feeding both
 //! channels; the normal-mode request / busy logic of each channel. In DMR mode
 //! (dmr_contract.md §5) queue A is the one logical queue, read at `head + off[L]`
 //! for the line the read port serves; the DMR block pops what both lines sent.
@@ -33,7 +33,7 @@ pub struct TxqEvents {
 }
 
 /// The TX RAM, the queue pointers and the normal-mode request logic.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct TxQueues {
     ram: [Frame; 16],
     pub head: [u8; 2],
@@ -45,6 +45,24 @@ pub struct TxQueues {
     /// Normal mode: channel `tx_req` pulses.
     pub req: [bool; 2],
     pub busy: [bool; 2],
+    /// Entries per queue `Q` (generation parameter, not reset).
+    pub depth: u8,
+}
+
+impl Default for TxQueues {
+    /// The default configuration's queues (8 entries each).
+    fn default() -> Self {
+        TxQueues {
+            ram: [Frame::default(); 16],
+            head: [0; 2],
+            count: [0; 2],
+            rd: Frame::default(),
+            rd_sel: 0,
+            req: [false; 2],
+            busy: [false; 2],
+            depth: 8,
+        }
+    }
 }
 
 impl TxQueues {
@@ -54,15 +72,29 @@ impl TxQueues {
         let rd = self.read_port(redundancy, dmr_off);
         *self = TxQueues {
             ram: self.ram,
+            depth: self.depth,
             rd,
             ..TxQueues::default()
         };
     }
 
+    /// A queue pair of `depth` entries each (2, 4 or 8).
+    pub fn new(depth: u8) -> Self {
+        TxQueues {
+            depth,
+            ..TxQueues::default()
+        }
+    }
+
+    /// `Q`: entries per queue.
+    fn q(&self) -> u8 {
+        self.depth
+    }
+
     /// The entry the read port addresses (pre-edge registers).
     fn read_port(&self, redundancy: bool, dmr_off: Option<u8>) -> Frame {
         if let Some(off) = dmr_off {
-            return self.ram[((self.head[0] + off) & 7) as usize];
+            return self.ram[((self.head[0] + off) & (self.q() - 1)) as usize];
         }
         let q = if redundancy { 0 } else { self.rd_sel as usize };
         self.ram[q * 8 + self.head[q] as usize]
@@ -113,10 +145,10 @@ impl TxQueues {
         }
         let mut push_q = None;
         if let Some((q, frame)) = i.push {
-            if count[q] >= 8 {
+            if count[q] >= self.q() {
                 ev.push_refused = true;
             } else {
-                self.ram[q * 8 + ((head[q] + count[q]) & 7) as usize] = frame;
+                self.ram[q * 8 + ((head[q] + count[q]) & (self.q() - 1)) as usize] = frame;
                 push_q = Some(q);
             }
         }
@@ -126,7 +158,7 @@ impl TxQueues {
             } else {
                 (pop[c] && count[c] > 0) as u8
             };
-            self.head[c] = (head[c] + popped) & 7;
+            self.head[c] = (head[c] + popped) & (self.q() - 1);
             self.count[c] = count[c] + (push_q == Some(c)) as u8 - popped;
         }
         ev

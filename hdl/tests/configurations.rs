@@ -1,0 +1,101 @@
+//! Every offered configuration (drcc_contract.md §1.1, `drcc_hdl::config`) emits
+//! the same Verilog as the proven top with its `M` (`drcc` or `drcc_m0`) except
+//! for the values of the size parameters' `localparam`s: the sizes change
+//! constants only, never the structure. So the lint of `drcc`, `drcc_m0` and
+//! `drcc_small` (hdl/lint/lint.sh) speaks for every configuration's structure,
+//! and the lock step of `drcc_small` (testbench/tests/drcc_small_faults.rs,
+//! drcc_sizes.rs) for the constants' meaning.
+
+use drcc_hdl::config::{DrccConfig, HISTORY_SIZES, RX_FIFO_DEPTHS, TX_QUEUE_DEPTHS};
+use drcc_hdl::tops::drcc_with_config;
+
+/// The Verilog with the header comment dropped and every localparam's value
+/// blanked (`localparam  mask = 5'b11111;` -> `localparam  mask;`).
+fn structure(cfg: &DrccConfig) -> String {
+    let v = drcc_with_config("drcc_cfg", cfg).unwrap();
+    let body = &v[v.find("module drcc_cfg(").expect("module")..];
+    body.lines()
+        .map(
+            |l| match (l.trim_start().starts_with("localparam"), l.find('=')) {
+                (true, Some(eq)) => format!("{};", l[..eq].trim_end()),
+                _ => l.to_string(),
+            },
+        )
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// Lines that differ between two texts of equal line count.
+fn differing(a: &str, b: &str) -> Vec<String> {
+    a.lines()
+        .zip(b.lines())
+        .filter(|(x, y)| x != y)
+        .take(3)
+        .map(|(x, y)| format!("{x:?} vs {y:?}"))
+        .collect()
+}
+
+#[test]
+fn sizes_change_localparam_values_only() {
+    for m in [0, 16] {
+        let base = DrccConfig {
+            mailboxes: m,
+            ..DrccConfig::DEFAULT
+        };
+        let reference = structure(&base);
+        let mut variants = vec![DrccConfig {
+            mailboxes: m,
+            rx_fifo_depth: RX_FIFO_DEPTHS[0],
+            tx_queue_depth: TX_QUEUE_DEPTHS[0],
+            history: HISTORY_SIZES[0],
+        }];
+        if m == 0 {
+            variants.extend(RX_FIFO_DEPTHS.iter().map(|&d| DrccConfig {
+                rx_fifo_depth: d,
+                ..base
+            }));
+            variants.extend(TX_QUEUE_DEPTHS.iter().map(|&d| DrccConfig {
+                tx_queue_depth: d,
+                ..base
+            }));
+            variants.extend(
+                HISTORY_SIZES
+                    .iter()
+                    .map(|&d| DrccConfig { history: d, ..base }),
+            );
+        }
+        for cfg in variants {
+            let s = structure(&cfg);
+            assert_eq!(
+                s.lines().count(),
+                reference.lines().count(),
+                "{cfg:?}: line count"
+            );
+            assert!(s == reference, "{cfg:?}: {:?}", differing(&s, &reference));
+        }
+    }
+}
+
+/// And the values do change: the smallest configuration's localparams differ
+/// from the default's exactly where the contract's sizes are (the masks and
+/// the full counts), so the test above is not comparing two equal texts.
+#[test]
+fn the_size_localparams_carry_the_configuration() {
+    let tiny = DrccConfig {
+        mailboxes: 0,
+        rx_fifo_depth: 4,
+        tx_queue_depth: 2,
+        history: 4,
+    };
+    let v = drcc_with_config("drcc_cfg", &tiny).unwrap();
+    for line in [
+        "localparam  mask = 5'b11;",       // RX FIFO: depth 4
+        "localparam  hmask = 5'b11;",      // history: 4 entries
+        "localparam  last_scan = 6'b100;", // a scan of H + 1 clocks
+        "localparam  fifo_depth = 6'b100;",
+        "localparam  qmask = 3'b1;", // TX queues of 2
+        "localparam  queue_full = 4'h2;",
+    ] {
+        assert!(v.contains(line), "missing {line}");
+    }
+}

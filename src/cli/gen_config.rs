@@ -1,0 +1,214 @@
+//! `drcc generate --config NAME|FILE`: the configuration a DRCC is generated
+//! with (drcc_contract.md §1.1, `drcc_hdl::config`). NAME is one of the named
+//! configurations (`default`, `m0`, `small`: the tops `drcc`, `drcc_m0`,
+//! `drcc_small` of `rtl-out/`); FILE is a small TOML file:
+//!
+//! ```toml
+//! name = "drcc_tiny"   # module and file name: a Verilog identifier
+//! mailboxes = 0        # DMR mailboxes: 0 or 16
+//! rx_fifo_depth = 16   # 4, 8, 16 or 32
+//! tx_queue_depth = 4   # 2, 4 or 8
+//! history = 8          # duplicate-removal history: 4, 8, 16 or 32
+//! ```
+//!
+//! Keys left out take the default configuration's value. Anything else (an
+//! unknown key, a size not offered, a name that is not an identifier or is an
+//! emitted top's) is refused with one message naming it.
+
+use std::io::Read;
+use std::path::Path;
+
+use drcc_hdl::config::DrccConfig;
+
+/// Config files are a few lines; anything larger is refused unread.
+const MAX_CONFIG_BYTES: u64 = 64 * 1024;
+
+/// The keys a config file may have.
+const KEYS: &[&str] = &[
+    "name",
+    "mailboxes",
+    "rx_fifo_depth",
+    "tx_queue_depth",
+    "history",
+];
+
+/// A configuration to generate: the module name and the sizes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Generated {
+    /// Module and file name (`<name>.v`).
+    pub name: String,
+    /// The sizes.
+    pub config: DrccConfig,
+    /// A named configuration, whose top is in `rtl-out/`.
+    pub named: bool,
+}
+
+/// A named configuration, or the file at `spec`.
+pub fn resolve(spec: &str) -> Result<Generated, String> {
+    if let Some(config) = DrccConfig::named(spec) {
+        let name = match spec {
+            "default" => "drcc",
+            "m0" => "drcc_m0",
+            _ => "drcc_small",
+        };
+        return Ok(Generated {
+            name: name.to_string(),
+            config,
+            named: true,
+        });
+    }
+    let path = Path::new(spec);
+    if !path.exists() {
+        let names: Vec<&str> = DrccConfig::NAMED.iter().map(|(n, _)| *n).collect();
+        return Err(format!(
+            "--config {spec:?}: no such file and not a named configuration; give a TOML \
+             file or one of {}",
+            names.join(", ")
+        ));
+    }
+    let text = read_capped(path)?;
+    parse(&text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+fn read_capped(path: &Path) -> Result<String, String> {
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_CONFIG_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    if bytes.len() as u64 > MAX_CONFIG_BYTES {
+        return Err(format!(
+            "{}: larger than {MAX_CONFIG_BYTES} bytes: a configuration is a few lines of TOML",
+            path.display()
+        ));
+    }
+    String::from_utf8(bytes).map_err(|_| format!("{}: not UTF-8 text", path.display()))
+}
+
+/// Parses a config file's text.
+pub fn parse(text: &str) -> Result<Generated, String> {
+    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+        let msg = e.message().trim().to_string();
+        match e.span() {
+            Some(s) => format!("line {}: {msg}", text[..s.start].lines().count().max(1)),
+            None => msg,
+        }
+    })?;
+    for key in table.keys() {
+        if !KEYS.contains(&key.as_str()) {
+            return Err(format!(
+                "unknown key {:?}: the keys are {}",
+                shorten(key),
+                KEYS.join(", ")
+            ));
+        }
+    }
+    let name = match table.get("name") {
+        None => "drcc_custom".to_string(),
+        Some(toml::Value::String(s)) => s.clone(),
+        Some(_) => return Err("name must be a string, e.g. name = \"drcc_tiny\"".to_string()),
+    };
+    check_name(&name)?;
+    let size = |key: &str, default: usize| -> Result<usize, String> {
+        match table.get(key) {
+            None => Ok(default),
+            Some(toml::Value::Integer(v)) if *v >= 0 => Ok(*v as usize),
+            Some(v) => Err(format!(
+                "{key} must be a non-negative integer, not {}",
+                shorten(&v.to_string())
+            )),
+        }
+    };
+    let d = DrccConfig::DEFAULT;
+    let config = DrccConfig {
+        mailboxes: size("mailboxes", d.mailboxes)?,
+        rx_fifo_depth: size("rx_fifo_depth", d.rx_fifo_depth)?,
+        tx_queue_depth: size("tx_queue_depth", d.tx_queue_depth)?,
+        history: size("history", d.history)?,
+    };
+    config.check()?;
+    Ok(Generated {
+        name,
+        config,
+        named: false,
+    })
+}
+
+/// A module name: a Verilog identifier, not an emitted top's name.
+fn check_name(name: &str) -> Result<(), String> {
+    let ident = !name.is_empty()
+        && name.len() <= 64
+        && name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && !name.contains("__");
+    if !ident {
+        return Err(format!(
+            "name {:?} is not a module name: use letters, digits and single underscores, \
+             starting with a letter, at most 64 characters (e.g. \"drcc_tiny\")",
+            shorten(name)
+        ));
+    }
+    if drcc_hdl::tops::top(name).is_some() {
+        return Err(format!(
+            "name {name:?} is an emitted top of rtl-out/: choose another (e.g. \"{name}_custom\")"
+        ));
+    }
+    Ok(())
+}
+
+/// At most 40 characters of user text, control characters escaped.
+fn shorten(s: &str) -> String {
+    let t: String = s.chars().take(40).collect();
+    let t = t.escape_debug().to_string();
+    if s.chars().count() > 40 {
+        format!("{t}...")
+    } else {
+        t
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_file_sets_the_sizes_and_omitted_keys_are_the_default() {
+        let g = parse("name = \"drcc_tiny\"\nmailboxes = 0\nhistory = 8\n").unwrap();
+        assert_eq!(g.name, "drcc_tiny");
+        assert_eq!(
+            g.config,
+            DrccConfig {
+                mailboxes: 0,
+                history: 8,
+                ..DrccConfig::DEFAULT
+            }
+        );
+        assert!(!g.named);
+    }
+
+    #[test]
+    fn bad_files_are_refused_naming_the_fault() {
+        for (text, says) in [
+            ("histroy = 8", "unknown key \"histroy\""),
+            ("history = 12", "history = 12 is not offered"),
+            ("history = -4", "history must be a non-negative integer"),
+            ("tx_queue_depth = \"4\"", "tx_queue_depth must be"),
+            ("mailboxes = 4", "mailboxes = 4 is not offered"),
+            ("name = \"drcc\"", "is an emitted top"),
+            ("name = \"9lives\"", "is not a module name"),
+            ("name = \"a__b\"", "is not a module name"),
+            ("name = 3", "name must be a string"),
+            ("history = ", "line 1"),
+        ] {
+            let e = parse(text).unwrap_err();
+            assert!(e.contains(says), "{text:?}: {e}");
+        }
+    }
+
+    #[test]
+    fn named_configurations_are_their_tops() {
+        assert_eq!(resolve("small").unwrap().name, "drcc_small");
+        assert_eq!(resolve("small").unwrap().config, DrccConfig::SMALL);
+        assert_eq!(resolve("default").unwrap().name, "drcc");
+        assert!(resolve("tiny").unwrap_err().contains("default, m0, small"));
+    }
+}

@@ -5,7 +5,7 @@
 // service only.
 // Contract:   cosim/src/model/drcc_contract.md
 // Source:     hdl/src/drcc.rs (`DrccCore`, port docs from its `///` comments)
-// Parameters: M = 0, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32
+// Parameters: M = 0, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32, DMR = 1, STAR = 1
 //
 // Ports:
 // dir    width  port                           meaning
@@ -20368,6 +20368,7 @@ module drcc_m0__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id
     localparam  zero7 = 7'b0;
     localparam  zero16 = 16'h0;
     localparam  zero32 = 32'h0;
+    localparam  dmr_present = 1'b1;
     
     // Local signals
     reg  sel_enabled;
@@ -20436,6 +20437,9 @@ module drcc_m0__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id
         end
         else begin
             hit = 1'b0;
+            writable = 1'b0;
+        end
+        if (~|dmr_present) begin
             writable = 1'b0;
         end
         illegal = 1'b0;
@@ -25187,6 +25191,8 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
     localparam  policy_reset = 2'b1;
     localparam  k_reset = 4'h1;
     localparam  mode_reset = 2'b0;
+    localparam  dmr_present = 1'b1;
+    localparam  star_present = 1'b1;
     
     // Stub signals
     reg  reset_mode_q__d;
@@ -25312,12 +25318,12 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
                     redundancy_q__d = wdat[p_redundancy];
                     policy_q__d = wdat[(p_policy)+:(2)];
                     dual_tx_q__d = wdat[p_dual_tx];
-                    star_q__d = wdat[p_star];
+                    star_q__d = wdat[p_star] & |star_present;
                     k_q__d = k_in;
                     mode_a_q__d = wdat[(p_mode_a)+:(2)];
                     mode_b_q__d = wdat[(p_mode_b)+:(2)];
                     single_shot_q__d = wdat[p_single_shot];
-                    dmr_q__d = wdat[p_dmr];
+                    dmr_q__d = wdat[p_dmr] & |dmr_present;
                 end
             end
             else begin
@@ -25561,6 +25567,8 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,
     localparam  mode_listen = 2'b1;
     localparam  zero4 = 4'h0;
     localparam  one4 = 4'h1;
+    localparam  dmr_present = 1'b1;
+    localparam  star_present = 1'b1;
     
     // Local signals
     reg  cfg_differs;
@@ -25575,7 +25583,7 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,
             k_in = wdat[(p_k)+:(4)];
         end
         listen = (wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen);
-        refused = ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]);
+        refused = ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]) | (wdat[p_dmr] & ~|dmr_present) | (wdat[p_star] & ~|star_present);
         cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (wdat[p_star] != star) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr);
         if (reset_mode) begin
             illegal = refused;
@@ -26301,7 +26309,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         else begin
             frame_sel = rxf_a__q;
         end
-        scan_e = scan_i__q[(32'h0)+:(5)] - one5;
+        scan_e = (scan_i__q[(32'h0)+:(5)] - one5) & hmask;
         if (free_found__q) begin
             slot = free_e__q;
         end

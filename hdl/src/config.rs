@@ -19,6 +19,13 @@ pub struct DrccConfig {
     pub tx_queue_depth: usize,
     /// Duplicate-removal history entries (§7): 4, 8, 16 or 32.
     pub history: usize,
+    /// The CiA 701 DMR function (`CTRL.dmr`, DMR contract): without it a `CTRL`
+    /// write with `dmr` is refused and synthesis removes the DMR logic.
+    pub dmr: bool,
+    /// The replicated-star node (`CTRL.star`, §4.4, §4.5): without it a `CTRL`
+    /// write with `star` is refused and synthesis removes the echo and the
+    /// hub-frame follower's mode logic.
+    pub star: bool,
 }
 
 /// The values each size may take (powers of two up to the default, which sets
@@ -38,6 +45,8 @@ impl DrccConfig {
         rx_fifo_depth: 32,
         tx_queue_depth: 8,
         history: 32,
+        dmr: true,
+        star: true,
     };
 
     /// No mailboxes, otherwise the default (`rtl-out/drcc_m0.v`).
@@ -46,14 +55,17 @@ impl DrccConfig {
         ..DrccConfig::DEFAULT
     };
 
-    /// For a small FPGA (`rtl-out/drcc_small.v`): no DMR mailboxes, an RX FIFO of
-    /// 8, TX queues of 4, a history of 16 (the 4-node fault scenarios need ~15
-    /// frames between a message's two copies, §7).
+    /// For a small FPGA (`rtl-out/drcc_small.v`): the DRCC paper's dual-bus
+    /// controller without the later modes (no CiA 701 DMR, no replicated-star
+    /// node), an RX FIFO of 8, TX queues of 4, a history of 16 (the 4-node fault
+    /// scenarios need ~15 frames between a message's two copies, §7).
     pub const SMALL: DrccConfig = DrccConfig {
         mailboxes: 0,
         rx_fifo_depth: 8,
         tx_queue_depth: 4,
         history: 16,
+        dmr: false,
+        star: false,
     };
 
     /// The named configurations, as `drcc generate --config NAME` spells them.
@@ -79,6 +91,12 @@ impl DrccConfig {
             ("tx_queue_depth", self.tx_queue_depth, TX_QUEUE_DEPTHS),
             ("history", self.history, HISTORY_SIZES),
         ];
+        if self.mailboxes != 0 && !self.dmr {
+            return Err(format!(
+                "mailboxes = {} needs the DMR function: set dmr = true or mailboxes = 0",
+                self.mailboxes
+            ));
+        }
         for (name, v, offered) in sizes {
             if !offered.contains(&v) {
                 let list: Vec<String> = offered.iter().map(|o| o.to_string()).collect();
@@ -98,6 +116,8 @@ impl DrccConfig {
             ("RX_FIFO_DEPTH", self.rx_fifo_depth.to_string()),
             ("TX_QUEUE_DEPTH", self.tx_queue_depth.to_string()),
             ("HISTORY", self.history.to_string()),
+            ("DMR", (self.dmr as u8).to_string()),
+            ("STAR", (self.star as u8).to_string()),
         ]
     }
 }

@@ -21,7 +21,7 @@
 
 use crate::channel::bsp::field::Field;
 use crate::channel::can_channel::CanChannel;
-use crate::channel::sized::Const;
+use crate::channel::sized::{Const, Param};
 use crate::config::DrccConfig;
 use crate::dmr::control::DmrControl;
 use crate::dmr::engine::{DmrEngine, MAILBOXES};
@@ -209,8 +209,11 @@ impl<const M: usize> DrccCore<M> {
     pub fn with_config(cfg: &DrccConfig) -> Self {
         assert_eq!(cfg.mailboxes, M, "DrccCore<{M}> has {M} DMR mailboxes");
         cfg.check().unwrap_or_else(|e| panic!("{e}"));
+        let mut dmr_check = DmrCheck::<M>::new();
+        dmr_check.dmr_present = Param::new(cfg.dmr as u64);
         Self {
-            regs: WbRegs::with_queue_depth(cfg.tx_queue_depth),
+            regs: WbRegs::with_config(cfg),
+            dmr_check,
             txbuf: TxBuffer::new(cfg.tx_queue_depth),
             rxfifo: RxFifo::new(cfg.rx_fifo_depth),
             rxw: RxWriter::new(cfg.history, cfg.rx_fifo_depth),

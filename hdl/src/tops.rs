@@ -200,6 +200,8 @@ pub static TOPS: &[Top] = &[
             ("RX_FIFO_DEPTH", "32"),
             ("TX_QUEUE_DEPTH", "8"),
             ("HISTORY", "32"),
+            ("DMR", "1"),
+            ("STAR", "1"),
         ],
         block: "DrccCore",
         source_path: "hdl/src/drcc.rs",
@@ -220,6 +222,8 @@ pub static TOPS: &[Top] = &[
             ("RX_FIFO_DEPTH", "32"),
             ("TX_QUEUE_DEPTH", "8"),
             ("HISTORY", "32"),
+            ("DMR", "1"),
+            ("STAR", "1"),
         ],
         block: "DrccCore",
         source_path: "hdl/src/drcc.rs",
@@ -232,21 +236,24 @@ pub static TOPS: &[Top] = &[
     },
     Top {
         name: "drcc_small",
-        summary: "the DRCC for a small FPGA: no DMR mailboxes, RX FIFO 8, TX queues 4, history 16",
+        summary: "the DRCC for a small FPGA: the dual-bus controller of the DRCC paper without the CiA 701 DMR function and the replicated-star node; RX FIFO 8, TX queues 4, history 16",
         contract: "cosim/src/model/drcc_contract.md",
         params: &[
             ("M", "0"),
             ("RX_FIFO_DEPTH", "8"),
             ("TX_QUEUE_DEPTH", "4"),
             ("HISTORY", "16"),
+            ("DMR", "0"),
+            ("STAR", "0"),
         ],
         block: "DrccCore",
         source_path: "hdl/src/drcc.rs",
         source: include_str!("drcc.rs"),
-        notes: "The drcc_m0 with the small configuration (hdl/src/config.rs, contract section 1.1):\n\
-                the same ports and registers; a push to a TX queue holding 4 frames is refused,\n\
-                the RX FIFO overruns at 8 frames, duplicate removal remembers 16 frames.\n\
-                Registers: docs/registers.md, rtl-out/drcc_regs.h.",
+        notes: "The small configuration (hdl/src/config.rs, drcc_contract.md section 1.1): the\n\
+                same ports and registers as drcc; a CTRL write with dmr or star is refused\n\
+                (INT_STATUS.illegal), a push to a TX queue holding 4 frames is refused, the RX\n\
+                FIFO overruns at 8 frames, duplicate removal remembers 16 frames. Registers:\n\
+                docs/registers.md, rtl-out/drcc_regs.h.",
         raw_verilog: raw_verilog_small,
         ports: ports_of::<DrccM0>,
     },

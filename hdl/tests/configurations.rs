@@ -1,7 +1,7 @@
 //! Every offered configuration (drcc_contract.md §1.1, `drcc_hdl::config`) emits
 //! the same Verilog as the proven top with its `M` (`drcc` or `drcc_m0`) except
-//! for the values of the size parameters' `localparam`s: the sizes change
-//! constants only, never the structure. So the lint of `drcc`, `drcc_m0` and
+//! for the values of the parameters' `localparam`s: the sizes and the mode
+//! switches (`dmr`, `star`) change constants only, never the structure. So the lint of `drcc`, `drcc_m0` and
 //! `drcc_small` (hdl/lint/lint.sh) speaks for every configuration's structure,
 //! and the lock step of `drcc_small` (testbench/tests/drcc_small_faults.rs,
 //! drcc_sizes.rs) for the constants' meaning.
@@ -48,8 +48,16 @@ fn sizes_change_localparam_values_only() {
             rx_fifo_depth: RX_FIFO_DEPTHS[0],
             tx_queue_depth: TX_QUEUE_DEPTHS[0],
             history: HISTORY_SIZES[0],
+            star: false,
+            ..base
         }];
         if m == 0 {
+            variants.push(DrccConfig { dmr: false, ..base });
+            variants.push(DrccConfig {
+                star: false,
+                ..base
+            });
+            variants.push(DrccConfig::SMALL);
             variants.extend(RX_FIFO_DEPTHS.iter().map(|&d| DrccConfig {
                 rx_fifo_depth: d,
                 ..base
@@ -86,6 +94,8 @@ fn the_size_localparams_carry_the_configuration() {
         rx_fifo_depth: 4,
         tx_queue_depth: 2,
         history: 4,
+        dmr: false,
+        star: false,
     };
     let v = drcc_with_config("drcc_cfg", &tiny).unwrap();
     for line in [
@@ -95,6 +105,8 @@ fn the_size_localparams_carry_the_configuration() {
         "localparam  fifo_depth = 6'b100;",
         "localparam  qmask = 3'b1;", // TX queues of 2
         "localparam  queue_full = 4'h2;",
+        "localparam  dmr_present = 1'b0;",  // no DMR function
+        "localparam  star_present = 1'b0;", // no replicated-star node
     ] {
         assert!(v.contains(line), "missing {line}");
     }

@@ -9,6 +9,8 @@
 //! rx_fifo_depth = 16   # 4, 8, 16 or 32
 //! tx_queue_depth = 4   # 2, 4 or 8
 //! history = 8          # duplicate-removal history: 4, 8, 16 or 32
+//! dmr = false          # the CiA 701 DMR function (CTRL.dmr)
+//! star = false         # the replicated-star node (CTRL.star)
 //! ```
 //!
 //! Keys left out take the default configuration's value. Anything else (an
@@ -30,6 +32,8 @@ const KEYS: &[&str] = &[
     "rx_fifo_depth",
     "tx_queue_depth",
     "history",
+    "dmr",
+    "star",
 ];
 
 /// A configuration to generate: the module name and the sizes.
@@ -118,12 +122,24 @@ pub fn parse(text: &str) -> Result<Generated, String> {
             )),
         }
     };
+    let switch = |key: &str, default: bool| -> Result<bool, String> {
+        match table.get(key) {
+            None => Ok(default),
+            Some(toml::Value::Boolean(b)) => Ok(*b),
+            Some(v) => Err(format!(
+                "{key} must be true or false, not {}",
+                shorten(&v.to_string())
+            )),
+        }
+    };
     let d = DrccConfig::DEFAULT;
     let config = DrccConfig {
         mailboxes: size("mailboxes", d.mailboxes)?,
         rx_fifo_depth: size("rx_fifo_depth", d.rx_fifo_depth)?,
         tx_queue_depth: size("tx_queue_depth", d.tx_queue_depth)?,
         history: size("history", d.history)?,
+        dmr: switch("dmr", d.dmr)?,
+        star: switch("star", d.star)?,
     };
     config.check()?;
     Ok(Generated {
@@ -197,6 +213,8 @@ mod tests {
             ("name = \"9lives\"", "is not a module name"),
             ("name = \"a__b\"", "is not a module name"),
             ("name = 3", "name must be a string"),
+            ("dmr = 0", "dmr must be true or false"),
+            ("dmr = false", "mailboxes = 16 needs the DMR function"),
             ("history = ", "line 1"),
         ] {
             let e = parse(text).unwrap_err();

@@ -213,3 +213,45 @@ fn small_rx_fifo_overruns_at_its_configured_depth() {
 fn default_rx_fifo_overruns_at_its_configured_depth() {
     fifo_holds(Bench::default_build(), 32, 8);
 }
+
+/// §1.1: `drcc_small` has neither the DMR function nor the replicated-star node:
+/// a `CTRL` write setting `dmr` or `star` is refused as a whole (nothing stored,
+/// `INT_STATUS.illegal`), and so is a write to a DMR register (it keeps its reset
+/// value, DMR contract §2.1: `DMR_CFG` 100), where `drcc` takes the same words.
+#[test]
+fn small_refuses_the_modes_it_lacks() {
+    let illegal = put("INT_STATUS", "illegal", 1);
+    let dmr = ctrl(true) | put("CTRL", "dmr", 1);
+    let star = ctrl(true)
+        | put("CTRL", "star", 1)
+        | put(
+            "CTRL",
+            "redundancy",
+            drcc_hdl::host::registers::Mode::Redundancy.code(),
+        );
+    for (mut b, has_modes) in [
+        (Bench::small_build(), false),
+        (Bench::default_build(), true),
+    ] {
+        for word in [dmr, star] {
+            let before = b.read(map::CTRL);
+            b.write(map::CTRL, word);
+            let refused = b.read(map::INT_STATUS) & illegal != 0;
+            b.write(map::INT_STATUS, illegal);
+            assert_eq!(refused, !has_modes, "CTRL {word:#x} refused");
+            let after = b.read(map::CTRL);
+            if has_modes {
+                assert_eq!(after, word, "stored");
+                b.write(map::CTRL, ctrl(true));
+            } else {
+                assert_eq!(after, before, "nothing stored");
+            }
+        }
+        assert_eq!(b.read(map::DMR_CFG), 100, "reset value");
+        b.write(map::DMR_CFG, 50);
+        let refused = b.read(map::INT_STATUS) & illegal != 0;
+        assert_eq!(refused, !has_modes, "DMR_CFG write refused");
+        let want = if has_modes { 50 } else { 100 };
+        assert_eq!(b.read(map::DMR_CFG), want);
+    }
+}

@@ -6,12 +6,16 @@
 //!   policy code is legal: 3 is the warning-limit policy of §5);
 //! - outside reset mode only `reset_mode` is taken, and a write whose cfg fields
 //!   differ from the stored ones is flagged;
-//! - `k = 0` is stored as 1 (not illegal).
+//! - `k = 0` is stored as 1 (not illegal);
+//! - in a configuration without the DMR function or without the replicated-star
+//!   node (drcc_contract.md §1.1), a write with `dmr` or `star` set is refused as
+//!   a whole in reset mode (outside it the cfg fields cannot change anyway).
 //!
 //! Field positions and codes come from the table (`super::registers`).
 
 use super::map::lsb;
 use super::registers::{ChannelMode, MAP};
+use crate::channel::sized::Param;
 use rust_hdl::prelude::*;
 
 /// The §9 checks of a `CTRL` write.
@@ -64,6 +68,10 @@ pub struct CtrlCheck {
     mode_listen: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     one4: Constant<Bits<4>>,
+    /// The configuration has the CiA 701 DMR function (generation parameter).
+    pub(crate) dmr_present: Param<1, 1>,
+    /// The configuration has the replicated-star node (generation parameter).
+    pub(crate) star_present: Param<1, 1>,
 }
 
 impl Default for CtrlCheck {
@@ -97,6 +105,8 @@ impl Default for CtrlCheck {
             mode_listen: Constant::new((ChannelMode::ListenOnly.code() as u64).into()),
             zero4: Constant::new(0.into()),
             one4: Constant::new(1.into()),
+            dmr_present: Default::default(),
+            star_present: Default::default(),
         }
     }
 }
@@ -120,7 +130,9 @@ impl Logic for CtrlCheck {
             | self.wdat.val().get_bit(self.p_dmr.val().index()))
             & self.listen.val())
             | (self.wdat.val().get_bit(self.p_redundancy.val().index())
-                & self.wdat.val().get_bit(self.p_dmr.val().index()));
+                & self.wdat.val().get_bit(self.p_dmr.val().index()))
+            | (self.wdat.val().get_bit(self.p_dmr.val().index()) & !self.dmr_present.val().any())
+            | (self.wdat.val().get_bit(self.p_star.val().index()) & !self.star_present.val().any());
         self.cfg_differs.next = (self.wdat.val().get_bit(self.p_redundancy.val().index())
             != self.redundancy.val())
             | (self.wdat.val().get_bits::<2>(self.p_policy.val().index()) != self.policy.val())

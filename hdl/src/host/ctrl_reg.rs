@@ -8,7 +8,10 @@
 //!   write with the illegal policy code, or with redundancy and a listen-only
 //!   channel, is refused as a whole (`illegal`); `k = 0` is stored as 1;
 //! - outside reset mode only `reset_mode` is taken; a write whose cfg fields
-//!   differ from the stored ones sets `illegal`.
+//!   differ from the stored ones sets `illegal`;
+//! - a configuration without the DMR function or the replicated-star node
+//!   (drcc_contract.md §1.1) stores `dmr` / `star` as a constant 0 (its writes
+//!   are refused by [`CtrlCheck`]), so synthesis removes what only those modes use.
 //!
 //! Field positions and reset values come from the table (`super::registers`).
 
@@ -18,6 +21,7 @@ use super::map::lsb;
 #[cfg(doc)]
 use super::registers::ChannelMode;
 use super::registers::{Mode, MAP};
+use crate::channel::sized::Param;
 use rust_hdl::prelude::*;
 
 /// `CTRL`.
@@ -93,6 +97,10 @@ pub struct CtrlReg {
     policy_reset: Constant<Bits<2>>,
     k_reset: Constant<Bits<4>>,
     mode_reset: Constant<Bits<2>>,
+    /// The configuration has the CiA 701 DMR function (generation parameter).
+    pub(crate) dmr_present: Param<1, 1>,
+    /// The configuration has the replicated-star node (generation parameter).
+    pub(crate) star_present: Param<1, 1>,
 }
 
 impl Default for CtrlReg {
@@ -148,6 +156,8 @@ impl Default for CtrlReg {
             policy_reset: Constant::new(reset("policy").into()),
             k_reset: Constant::new(reset("k").into()),
             mode_reset: Constant::new(reset("mode_a").into()),
+            dmr_present: Default::default(),
+            star_present: Default::default(),
         }
     }
 }
@@ -181,7 +191,8 @@ impl Logic for CtrlReg {
                     self.policy_q.d.next =
                         self.wdat.val().get_bits::<2>(self.p_policy.val().index());
                     self.dual_tx_q.d.next = self.wdat.val().get_bit(self.p_dual_tx.val().index());
-                    self.star_q.d.next = self.wdat.val().get_bit(self.p_star.val().index());
+                    self.star_q.d.next = self.wdat.val().get_bit(self.p_star.val().index())
+                        & self.star_present.val().any();
                     self.k_q.d.next = self.k_in.val();
                     self.mode_a_q.d.next =
                         self.wdat.val().get_bits::<2>(self.p_mode_a.val().index());
@@ -189,7 +200,8 @@ impl Logic for CtrlReg {
                         self.wdat.val().get_bits::<2>(self.p_mode_b.val().index());
                     self.single_shot_q.d.next =
                         self.wdat.val().get_bit(self.p_single_shot.val().index());
-                    self.dmr_q.d.next = self.wdat.val().get_bit(self.p_dmr.val().index());
+                    self.dmr_q.d.next = self.wdat.val().get_bit(self.p_dmr.val().index())
+                        & self.dmr_present.val().any();
                 }
             } else {
                 // outside reset mode only reset_mode is taken

@@ -8,10 +8,13 @@
 //! mailbox identifier equal to a connection-service identifier; `MB_SEL` beyond
 //! the generated mailboxes; any cfg register outside reset mode; with `M = 0`
 //! every window write. `MB_ID`, `MB_MASK` and `MB_CFG` read 0 outside reset mode
-//! (§2.1), and the window reads 0 with `M = 0`.
+//! (§2.1), and the window reads 0 with `M = 0`. In a configuration without the
+//! DMR function (drcc_contract.md §1.1) no DMR register is writable: every write
+//! is refused and they keep their reset values.
 
 use super::map::placed;
 use super::registers::{self as map, MAP};
+use crate::channel::sized::Param;
 use rust_hdl::prelude::*;
 
 /// Decode, reads and refusals of the DMR registers of a DRCC with `M` mailboxes.
@@ -84,6 +87,8 @@ pub struct DmrCheck<const M: usize> {
     zero7: Constant<Bits<7>>,
     zero16: Constant<Bits<16>>,
     zero32: Constant<Bits<32>>,
+    /// The configuration has the CiA 701 DMR function (generation parameter).
+    pub(crate) dmr_present: Param<1, 1>,
 }
 
 impl<const M: usize> DmrCheck<M> {
@@ -155,6 +160,7 @@ impl<const M: usize> DmrCheck<M> {
             zero7: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             zero32: Constant::new(0.into()),
+            dmr_present: Default::default(),
         }
     }
 }
@@ -229,6 +235,12 @@ impl<const M: usize> Logic for DmrCheck<M> {
             }
         } else {
             self.hit.next = false;
+            self.writable.next = false;
+        }
+
+        // §1.1: without the DMR function its registers take no write (the
+        // register block then flags every write to them as illegal)
+        if !self.dmr_present.val().any() {
             self.writable.next = false;
         }
 

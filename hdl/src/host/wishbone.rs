@@ -18,6 +18,8 @@ use super::ctrl_reg::CtrlReg;
 use super::map::lsb;
 use super::registers::{self as map, MAP};
 use super::wb_slave::WbSlave;
+use crate::channel::sized::Param;
+use crate::config::DrccConfig;
 use rust_hdl::prelude::*;
 
 /// The DRCC's Wishbone register block.
@@ -366,13 +368,19 @@ impl Default for WbRegs {
 }
 
 impl WbRegs {
-    /// The register block of a DRCC whose TX queues hold `depth` frames (a push
-    /// to a queue with `depth` frames is refused, contract §6).
-    pub fn with_queue_depth(depth: usize) -> Self {
-        Self {
-            queue_full: reset(depth as u32),
+    /// The register block of a DRCC generated with `cfg` (contract §1.1): a push
+    /// to a TX queue holding `tx_queue_depth` frames is refused (§6), and so is
+    /// a `CTRL` with `dmr` / `star` when the configuration lacks that mode.
+    pub fn with_config(cfg: &DrccConfig) -> Self {
+        let mut r = Self {
+            queue_full: reset(cfg.tx_queue_depth as u32),
             ..Default::default()
-        }
+        };
+        r.ctrl.dmr_present = Param::new(cfg.dmr as u64);
+        r.ctrl.star_present = Param::new(cfg.star as u64);
+        r.ctrl_check.dmr_present = Param::new(cfg.dmr as u64);
+        r.ctrl_check.star_present = Param::new(cfg.star as u64);
+        r
     }
 }
 

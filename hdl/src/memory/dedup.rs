@@ -235,7 +235,10 @@ impl Logic for RxWriter {
         } else {
             self.frame_sel.next = self.rxf_a.q.val();
         }
-        self.scan_e.next = self.scan_i.q.val().get_bits::<5>(0) - self.one5.val();
+        // masked to H entries, so every index register (free_e, hit_e, rel_e, the
+        // slot) and the decoder below have constant upper bits with H < 32
+        self.scan_e.next =
+            (self.scan_i.q.val().get_bits::<5>(0) - self.one5.val()) & self.hmask.val();
         // where a new frame is recorded: the first free entry, else hist_ptr
         if self.free_found.q.val() {
             self.slot.next = self.free_e.q.val();

@@ -94,6 +94,8 @@ pub struct DrccModel {
     dmr: DmrBlock,
     /// The hubs' decision as this star node sees it (§4.5).
     star: star::StarFollow,
+    /// Generation parameters (§1.1).
+    params: DrccParams,
 }
 
 impl Default for DrccModel {
@@ -132,6 +134,7 @@ impl DrccModel {
             }),
             dmr: DmrBlock::new(p.mailboxes),
             star: star::StarFollow::default(),
+            params: *p,
         }
     }
 
@@ -263,8 +266,14 @@ impl DrccModel {
                             let any_listen_only =
                                 listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
                             let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
+                            // §1.1: a mode the configuration lacks is refused.
+                            let absent = (dmr && !self.params.dmr)
+                                || (w & ctrl::STAR != 0 && !self.params.star);
                             // DMR §2: one mode at a time; both lines must transmit.
-                            if (red && (any_listen_only || dmr)) || (dmr && any_listen_only) {
+                            if (red && (any_listen_only || dmr))
+                                || (dmr && any_listen_only)
+                                || absent
+                            {
                                 ints |= int::ILLEGAL;
                             } else {
                                 n.ctrl = w;
@@ -408,7 +417,8 @@ impl DrccModel {
             rd_sel: self.txq.rd_sel,
         });
         if let Some((adr, d)) = dmr_write {
-            if self.dmr.write(adr, d, reset_mode) != Some(true) {
+            // §1.1: without the DMR function its registers take no write.
+            if !self.params.dmr || self.dmr.write(adr, d, reset_mode) != Some(true) {
                 ints |= int::ILLEGAL;
             }
         }

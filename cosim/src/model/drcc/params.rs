@@ -13,6 +13,10 @@ pub struct DrccParams {
     pub tx_queue_depth: u8,
     /// Duplicate-removal history entries `H` (§7).
     pub history: u8,
+    /// The CiA 701 DMR function: without it `CTRL.dmr` cannot be set (§1.1).
+    pub dmr: bool,
+    /// The replicated-star node: without it `CTRL.star` cannot be set (§1.1).
+    pub star: bool,
 }
 
 impl DrccParams {
@@ -22,14 +26,19 @@ impl DrccParams {
         rx_fifo_depth: 32,
         tx_queue_depth: 8,
         history: 32,
+        dmr: true,
+        star: true,
     };
 
-    /// `drcc_small`: M = 0, RX FIFO 8, TX queues 4, history 16.
+    /// `drcc_small`: no DMR, no star node, M = 0, RX FIFO 8, TX queues 4,
+    /// history 16.
     pub const SMALL: DrccParams = DrccParams {
         mailboxes: 0,
         rx_fifo_depth: 8,
         tx_queue_depth: 4,
         history: 16,
+        dmr: false,
+        star: false,
     };
 
     /// The default sizes with `m` mailboxes (`drcc_m0`: 0).

@@ -20362,7 +20362,7 @@ module drcc_m0__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id
     localparam  a_mask = 6'b100001;
     localparam  a_mbcfg = 6'b100010;
     localparam  a_state = 6'b100011;
-    localparam  mailboxes = 5'b0;
+    localparam  mailbox_mask = 16'h0;
     localparam  no_mailboxes = 1'b1;
     localparam  enable_bit = 32'h80000000;
     localparam  zero7 = 7'b0;
@@ -20444,7 +20444,7 @@ module drcc_m0__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id
         end
         illegal = 1'b0;
         if (adr == a_sel) begin
-            illegal = ((wdat[(32'h0)+:(4)]) & 5'h1f) >= mailboxes;
+            illegal = ~mailbox_mask[wdat[(32'h0)+:(4)]];
         end
         else if (writable & ~reset_mode) begin
             illegal = 1'b1;

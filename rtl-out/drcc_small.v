@@ -20364,7 +20364,7 @@ module drcc_small__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs
     localparam  a_mask = 6'b100001;
     localparam  a_mbcfg = 6'b100010;
     localparam  a_state = 6'b100011;
-    localparam  mailboxes = 5'b0;
+    localparam  mailbox_mask = 16'h0;
     localparam  no_mailboxes = 1'b1;
     localparam  enable_bit = 32'h80000000;
     localparam  zero7 = 7'b0;
@@ -20446,7 +20446,7 @@ module drcc_small__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs
         end
         illegal = 1'b0;
         if (adr == a_sel) begin
-            illegal = ((wdat[(32'h0)+:(4)]) & 5'h1f) >= mailboxes;
+            illegal = ~mailbox_mask[wdat[(32'h0)+:(4)]];
         end
         else if (writable & ~reset_mode) begin
             illegal = 1'b1;

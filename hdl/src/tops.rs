@@ -29,7 +29,7 @@ pub mod verilog;
 use crate::channel::can_channel::CanChannel;
 use crate::config::DrccConfig;
 use crate::drcc::{Drcc, DrccCore, DrccM0};
-use crate::hub::hub::{Hub4x2, HubB4x2};
+use crate::hub::hub::{Hub, Hub4x2, HubB4x2};
 use crate::redcan::rcm::Rcm;
 use rust_hdl::prelude::*;
 
@@ -151,6 +151,98 @@ pub fn drcc_with_config(name: &str, cfg: &DrccConfig) -> Result<String, String> 
         ..*base
     };
     Ok(verilog::finish(&t, &raw, &t.ports()))
+}
+
+/// The raw Verilog and the ports of the hub with `n` node ports, `m`
+/// interlinks and identification frame `hub_id` (hub contract §9.1), for every
+/// shape the hub supports (N 2..8, M 1..4, P = N + M); `None` for another.
+fn hub_of_shape(n: usize, m: usize, hub_id: usize) -> Option<(String, Vec<Port>)> {
+    fn of<B: Block + Default>() -> Option<(String, Vec<Port>)> {
+        Some((raw_verilog_of::<B>(), ports_of::<B>()))
+    }
+    macro_rules! shapes {
+        ($( ($N:literal, $M:literal, $P:literal) ),* $(,)?) => {
+            match (n, m, hub_id) {
+                $(
+                    ($N, $M, 0) => of::<Hub<$N, $M, $P, 0>>(),
+                    ($N, $M, 1) => of::<Hub<$N, $M, $P, 1>>(),
+                )*
+                _ => None,
+            }
+        };
+    }
+    shapes!(
+        (2, 1, 3),
+        (2, 2, 4),
+        (2, 3, 5),
+        (2, 4, 6),
+        (3, 1, 4),
+        (3, 2, 5),
+        (3, 3, 6),
+        (3, 4, 7),
+        (4, 1, 5),
+        (4, 2, 6),
+        (4, 3, 7),
+        (4, 4, 8),
+        (5, 1, 6),
+        (5, 2, 7),
+        (5, 3, 8),
+        (5, 4, 9),
+        (6, 1, 7),
+        (6, 2, 8),
+        (6, 3, 9),
+        (6, 4, 10),
+        (7, 1, 8),
+        (7, 2, 9),
+        (7, 3, 10),
+        (7, 4, 11),
+        (8, 1, 9),
+        (8, 2, 10),
+        (8, 3, 11),
+        (8, 4, 12),
+    )
+}
+
+/// The finished Verilog of a hub generated with `n` node ports, `m` interlinks
+/// and identification frame `hub_id` (0 = hub A, 1 = hub B), as module `name`
+/// (`drcc generate --config`): the `hub` top's header, port docs and notes with
+/// these parameters. Refuses a shape the hub does not support, naming the ranges.
+pub fn hub_with_shape(name: &str, n: usize, m: usize, hub_id: usize) -> Result<String, String> {
+    // M = 1 simulates (rust-hdl, the model) but is not emitted: rust-hdl writes a
+    // one-bit vector as a scalar and still indexes it (`sub_q[0]`), which
+    // Verilog refuses
+    let offered = m >= 2;
+    let (raw, mut ports) = hub_of_shape(n, m, hub_id)
+        .filter(|_| offered)
+        .ok_or_else(|| {
+            format!(
+                "hub shape nodes = {n}, interlinks = {m}, hub_id = {hub_id} is not offered: \
+                 nodes 2..8, interlinks 2..4, hub_id 0 (hub A) or 1 (hub B)"
+            )
+        })?;
+    let base = top("hub").expect("the hub top");
+    let params: Vec<(&'static str, &'static str)> = [
+        ("HUB_ID", hub_id.to_string()),
+        ("N", n.to_string()),
+        ("M", m.to_string()),
+    ]
+    .into_iter()
+    .map(|(k, v)| (k, &*Box::leak(v.into_boxed_str())))
+    .collect();
+    // a one-shot top of the CLI: its few strings live for the process
+    let t = Top {
+        name: Box::leak(name.to_string().into_boxed_str()),
+        summary: "the ReCANcentrate hub generated with a shape of its own (drcc generate --config)",
+        params: Box::leak(params.into_boxed_slice()),
+        ..*base
+    };
+    let docs = port_docs::port_docs(t.source, t.block);
+    for p in &mut ports {
+        if let Some((_, doc)) = docs.iter().find(|(nm, _)| *nm == p.name) {
+            p.doc = doc.clone();
+        }
+    }
+    Ok(verilog::finish(&t, &raw, &ports))
 }
 
 fn ports_of<B: Block + Default>() -> Vec<Port> {
@@ -405,6 +497,34 @@ mod tests {
             ..DrccConfig::SMALL
         };
         assert!(drcc_with_config("x", &bad).is_err());
+    }
+
+    /// `hub_with_shape` of the emitted shapes is the `hub` / `hub_b` Verilog
+    /// body; another shape has its own port widths; shapes outside 2..8 x 1..4
+    /// are refused.
+    #[test]
+    fn hub_shapes_are_generated_with_their_widths() {
+        for (name, id) in [("hub", 0), ("hub_b", 1)] {
+            let emitted = top(name).unwrap().verilog();
+            let shaped = hub_with_shape(name, 4, 2, id).unwrap();
+            let body = |t: &str| t[t.find(&format!("module {name}(")).unwrap()..].to_string();
+            assert_eq!(body(&emitted), body(&shaped), "{name}");
+        }
+        let v = hub_with_shape("hub_6x3", 6, 3, 0).unwrap();
+        assert!(
+            v.contains("Parameters: HUB_ID = 0, N = 6, M = 3"),
+            "{}",
+            &v[..600]
+        );
+        assert!(v.contains("output reg  [5:0] downlink;"), "6 downlinks");
+        assert!(v.contains("input wire  [2:0] sublink_in;"), "3 interlinks");
+        assert!(hub_with_shape("x", 9, 2, 0)
+            .unwrap_err()
+            .contains("nodes 2..8"));
+        assert!(hub_with_shape("x", 4, 1, 0)
+            .unwrap_err()
+            .contains("interlinks 2..4"));
+        assert!(hub_with_shape("x", 4, 2, 2).is_err());
     }
 
     /// The probe walk finds exactly the ports the Verilog module header declares.

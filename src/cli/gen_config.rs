@@ -13,6 +13,16 @@
 //! star = false         # the replicated-star node (CTRL.star)
 //! ```
 //!
+//! or, with `top = "hub"`, a ReCANcentrate hub of another shape (hub contract):
+//!
+//! ```toml
+//! top = "hub"
+//! name = "hub_6x3"
+//! nodes = 6            # node ports N: 2..8 (default 4)
+//! interlinks = 3       # interlinks M: 2..4 (default 2)
+//! hub_id = 0           # 0 hub A (identification frame 0x000), 1 hub B (0x001)
+//! ```
+//!
 //! Keys left out take the default configuration's value. Anything else (an
 //! unknown key, a size not offered, a name that is not an identifier or is an
 //! emitted top's) is refused with one message naming it.
@@ -25,8 +35,9 @@ use drcc_hdl::config::DrccConfig;
 /// Config files are a few lines; anything larger is refused unread.
 const MAX_CONFIG_BYTES: u64 = 64 * 1024;
 
-/// The keys a config file may have.
+/// The keys a DRCC config file may have.
 const KEYS: &[&str] = &[
+    "top",
     "name",
     "mailboxes",
     "rx_fifo_depth",
@@ -36,15 +47,69 @@ const KEYS: &[&str] = &[
     "star",
 ];
 
+/// The keys a hub config file may have.
+const HUB_KEYS: &[&str] = &["top", "name", "nodes", "interlinks", "hub_id"];
+
+/// What a configuration generates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// A DRCC with these sizes.
+    Drcc(DrccConfig),
+    /// A hub with N node ports, M interlinks and this identification frame.
+    Hub {
+        nodes: usize,
+        interlinks: usize,
+        hub_id: usize,
+    },
+}
+
 /// A configuration to generate: the module name and the sizes.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Generated {
     /// Module and file name (`<name>.v`).
     pub name: String,
-    /// The sizes.
-    pub config: DrccConfig,
+    /// What it is.
+    pub shape: Shape,
     /// A named configuration, whose top is in `rtl-out/`.
     pub named: bool,
+}
+
+impl Generated {
+    /// The finished Verilog.
+    pub fn verilog(&self) -> Result<String, String> {
+        match (drcc_hdl::tops::top(&self.name), self.shape) {
+            (Some(t), _) if self.named => Ok(t.verilog()),
+            (_, Shape::Drcc(c)) => drcc_hdl::tops::drcc_with_config(&self.name, &c),
+            (
+                _,
+                Shape::Hub {
+                    nodes,
+                    interlinks,
+                    hub_id,
+                },
+            ) => drcc_hdl::tops::hub_with_shape(&self.name, nodes, interlinks, hub_id),
+        }
+    }
+
+    /// `NAME = value` pairs, for the summary line.
+    pub fn params(&self) -> Vec<String> {
+        match self.shape {
+            Shape::Drcc(c) => c
+                .params()
+                .iter()
+                .map(|(k, v)| format!("{k} = {v}"))
+                .collect(),
+            Shape::Hub {
+                nodes,
+                interlinks,
+                hub_id,
+            } => vec![
+                format!("HUB_ID = {hub_id}"),
+                format!("N = {nodes}"),
+                format!("M = {interlinks}"),
+            ],
+        }
+    }
 }
 
 /// A named configuration, or the file at `spec`.
@@ -57,7 +122,7 @@ pub fn resolve(spec: &str) -> Result<Generated, String> {
         };
         return Ok(Generated {
             name: name.to_string(),
-            config,
+            shape: Shape::Drcc(config),
             named: true,
         });
     }
@@ -97,16 +162,30 @@ pub fn parse(text: &str) -> Result<Generated, String> {
             None => msg,
         }
     })?;
-    for key in table.keys() {
-        if !KEYS.contains(&key.as_str()) {
+    let hub = match table.get("top") {
+        None => false,
+        Some(toml::Value::String(t)) if t == "drcc" => false,
+        Some(toml::Value::String(t)) if t == "hub" => true,
+        Some(v) => {
             return Err(format!(
-                "unknown key {:?}: the keys are {}",
+                "top must be \"drcc\" or \"hub\", not {}",
+                shorten(&v.to_string())
+            ))
+        }
+    };
+    let keys = if hub { HUB_KEYS } else { KEYS };
+    for key in table.keys() {
+        if !keys.contains(&key.as_str()) {
+            return Err(format!(
+                "unknown key {:?} for a {}: the keys are {}",
                 shorten(key),
-                KEYS.join(", ")
+                if hub { "hub" } else { "DRCC" },
+                keys.join(", ")
             ));
         }
     }
     let name = match table.get("name") {
+        None if hub => "hub_custom".to_string(),
         None => "drcc_custom".to_string(),
         Some(toml::Value::String(s)) => s.clone(),
         Some(_) => return Err("name must be a string, e.g. name = \"drcc_tiny\"".to_string()),
@@ -132,6 +211,21 @@ pub fn parse(text: &str) -> Result<Generated, String> {
             )),
         }
     };
+    if hub {
+        let shape = Shape::Hub {
+            nodes: size("nodes", 4)?,
+            interlinks: size("interlinks", 2)?,
+            hub_id: size("hub_id", 0)?,
+        };
+        let g = Generated {
+            name,
+            shape,
+            named: false,
+        };
+        // refuses a shape outside the offer, naming the ranges
+        g.verilog()?;
+        return Ok(g);
+    }
     let d = DrccConfig::DEFAULT;
     let config = DrccConfig {
         mailboxes: size("mailboxes", d.mailboxes)?,
@@ -144,7 +238,7 @@ pub fn parse(text: &str) -> Result<Generated, String> {
     config.check()?;
     Ok(Generated {
         name,
-        config,
+        shape: Shape::Drcc(config),
         named: false,
     })
 }
@@ -191,12 +285,12 @@ mod tests {
         let g = parse("name = \"drcc_tiny\"\nmailboxes = 0\nhistory = 8\n").unwrap();
         assert_eq!(g.name, "drcc_tiny");
         assert_eq!(
-            g.config,
-            DrccConfig {
+            g.shape,
+            Shape::Drcc(DrccConfig {
                 mailboxes: 0,
                 history: 8,
                 ..DrccConfig::DEFAULT
-            }
+            })
         );
         assert!(!g.named);
     }
@@ -215,6 +309,13 @@ mod tests {
             ("name = 3", "name must be a string"),
             ("dmr = 0", "dmr must be true or false"),
             ("dmr = false", "mailboxes = 16 needs the DMR function"),
+            ("top = \"ring\"", "top must be \"drcc\" or \"hub\""),
+            (
+                "top = \"hub\"\nhistory = 8",
+                "unknown key \"history\" for a hub",
+            ),
+            ("top = \"hub\"\nnodes = 9", "nodes 2..8"),
+            ("top = \"hub\"\nname = \"hub_b\"", "is an emitted top"),
             ("history = ", "line 1"),
         ] {
             let e = parse(text).unwrap_err();
@@ -225,7 +326,10 @@ mod tests {
     #[test]
     fn named_configurations_are_their_tops() {
         assert_eq!(resolve("small").unwrap().name, "drcc_small");
-        assert_eq!(resolve("small").unwrap().config, DrccConfig::SMALL);
+        assert_eq!(
+            resolve("small").unwrap().shape,
+            Shape::Drcc(DrccConfig::SMALL)
+        );
         assert_eq!(resolve("default").unwrap().name, "drcc");
         assert!(resolve("tiny").unwrap_err().contains("default, m0, small"));
     }

@@ -37,10 +37,7 @@ pub fn run_config(spec: &str, out: Option<PathBuf>, check: bool) -> CliResult {
             )))
         }
     };
-    let text = match drcc_hdl::tops::top(&g.name) {
-        Some(t) if g.named => t.verilog(),
-        _ => drcc_hdl::tops::drcc_with_config(&g.name, &g.config)?,
-    };
+    let text = g.verilog()?;
     let path = dir.join(format!("{}.v", g.name));
     if check {
         return check_files(&[(path, text)]);
@@ -56,17 +53,14 @@ pub fn run_config(spec: &str, out: Option<PathBuf>, check: bool) -> CliResult {
         }
     }
     write_dir(&dir, &files)?;
-    let params: Vec<String> = g
-        .config
-        .params()
-        .iter()
-        .map(|(k, v)| format!("{k} = {v}"))
-        .collect();
+    let regs = match g.shape {
+        gen_config::Shape::Drcc(_) => "docs/registers.md, C header rtl-out/drcc_regs.h",
+        gen_config::Shape::Hub { .. } => "docs/hub_registers.md, C header rtl-out/hub_regs.h",
+    };
     println!(
-        "{}: {} (registers: docs/registers.md, C header rtl-out/drcc_regs.h, as for every \
-         configuration)",
+        "{}: {} (registers: {regs}, as for every configuration)",
         g.name,
-        params.join(", ")
+        g.params().join(", ")
     );
     Ok(())
 }

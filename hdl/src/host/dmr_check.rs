@@ -81,7 +81,8 @@ pub struct DmrCheck<const M: usize> {
     a_mask: Constant<Bits<6>>,
     a_mbcfg: Constant<Bits<6>>,
     a_state: Constant<Bits<6>>,
-    mailboxes: Constant<Bits<5>>,
+    /// Bit i set for every generated mailbox i < M (`MB_SEL` indices taken).
+    mailbox_mask: Constant<Bits<16>>,
     no_mailboxes: Constant<Bit>,
     enable_bit: Constant<Bits<32>>,
     zero7: Constant<Bits<7>>,
@@ -154,7 +155,7 @@ impl<const M: usize> DmrCheck<M> {
             a_mask: adr(map::MB_MASK),
             a_mbcfg: adr(map::MB_CFG),
             a_state: adr(map::MB_STATE),
-            mailboxes: Constant::new((mailboxes as u64).into()),
+            mailbox_mask: Constant::new(((1u64 << mailboxes) - 1).into()),
             no_mailboxes: Constant::new(mailboxes == 0),
             enable_bit: Constant::new((1u64 << 31).into()),
             zero7: Constant::new(0.into()),
@@ -248,8 +249,12 @@ impl<const M: usize> Logic for DmrCheck<M> {
         self.illegal.next = false;
         if self.adr.val() == self.a_sel.val() {
             // not a cfg register: a mailbox can be watched while the DRCC runs
-            self.illegal.next =
-                bit_cast::<5, 4>(self.wdat.val().get_bits::<4>(0)) >= self.mailboxes.val();
+            // index >= M, as a lookup so that no configuration compares against
+            // a constant its range decides (M = 0 and M = 16)
+            self.illegal.next = !self
+                .mailbox_mask
+                .val()
+                .get_bit(self.wdat.val().get_bits::<4>(0).index());
         } else if self.writable.val() & !self.reset_mode.val() {
             self.illegal.next = true;
         } else if self.no_mailboxes.val()

@@ -1,0 +1,127 @@
+//! `drcc generate --config`: configurations of your own come out lint-clean
+//! (Verilator -Wall with the repository's waivers, Icarus, yosys `check
+//! -assert`, the three checks of hdl/lint/lint.sh). The DRCC's sizes change
+//! localparams only (hdl/tests/configurations.rs), so one DRCC configuration with
+//! every size at its smallest stands for them; the hub's shape changes port and
+//! vector widths, so its extremes are linted: the smallest (N 2, M 2, hub A) and
+//! the largest (N 8, M 4, hub B). Also: the files land only in `--out`, and
+//! `--check` passes on them.
+//!
+//! Without the tools the lint is skipped, except under CI, where it fails.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn drcc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_drcc"))
+        .args(args)
+        .output()
+        .expect("cannot run the drcc binary")
+}
+
+fn have(tool: &str) -> bool {
+    Command::new(tool).arg("-V").output().is_ok()
+        || Command::new(tool).arg("--version").output().is_ok()
+}
+
+/// The three checks of hdl/lint/lint.sh on `dir/top.v`.
+fn lint(dir: &Path, top: &str) {
+    let file = dir.join(format!("{top}.v"));
+    let file = file.to_str().unwrap();
+    let waivers = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/hdl/lint/verilator_waivers.vlt"
+    );
+    let run = |cmd: &mut Command, what: &str| {
+        let out = cmd.output().unwrap_or_else(|e| panic!("{what}: {e}"));
+        assert!(
+            out.status.success(),
+            "{top}: {what} failed:\n{}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+    };
+    run(
+        Command::new("verilator").args([
+            "--lint-only",
+            "-Wall",
+            waivers,
+            file,
+            "--top-module",
+            top,
+        ]),
+        "verilator --lint-only -Wall",
+    );
+    let vvp = dir.join(format!("{top}.vvp"));
+    run(
+        Command::new("iverilog").args(["-g2005", "-o", vvp.to_str().unwrap(), "-s", top, file]),
+        "iverilog",
+    );
+    run(
+        Command::new("yosys").args([
+            "-q",
+            "-p",
+            &format!(
+                "read_verilog {file}; synth -flatten -top {top}; check -assert; \
+                 select -assert-none t:$*latch* t:$_DLATCH*_ t:$_SR_*"
+            ),
+        ]),
+        "yosys synth + check -assert",
+    );
+}
+
+#[test]
+fn configurations_of_your_own_are_lint_clean() {
+    let dir = std::env::temp_dir().join(format!("drcc-genconfig-test-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let configs = [
+        (
+            "drcc_tiny",
+            "name = \"drcc_tiny\"\nmailboxes = 0\nrx_fifo_depth = 4\ntx_queue_depth = 2\n\
+             history = 4\ndmr = false\nstar = false\n",
+        ),
+        (
+            "hub_2x2",
+            "top = \"hub\"\nname = \"hub_2x2\"\nnodes = 2\ninterlinks = 2\n",
+        ),
+        (
+            "hub_b_8x4",
+            "top = \"hub\"\nname = \"hub_b_8x4\"\nnodes = 8\ninterlinks = 4\nhub_id = 1\n",
+        ),
+    ];
+    let out_dir = dir.join("out");
+    let out_s = out_dir.to_str().unwrap().to_string();
+    for (top, text) in configs {
+        let cfg = dir.join(format!("{top}.toml"));
+        std::fs::write(&cfg, text).unwrap();
+        let cfg_s = cfg.to_str().unwrap();
+        let o = drcc(&["generate", "--config", cfg_s, "--out", &out_s]);
+        assert!(
+            o.status.success(),
+            "{top}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let o = drcc(&["generate", "--config", cfg_s, "--out", &out_s, "--check"]);
+        assert!(o.status.success(), "{top}: --check after writing");
+    }
+    let mut written: Vec<String> = std::fs::read_dir(&out_dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    written.sort();
+    assert_eq!(written, ["drcc_tiny.v", "hub_2x2.v", "hub_b_8x4.v"]);
+    let tools = ["verilator", "iverilog", "yosys"];
+    if let Some(missing) = tools.iter().find(|t| !have(t)) {
+        assert!(
+            !drcc_testbench::engines::tools_required(),
+            "{missing} is required in CI: install it with `apt-get install {missing}`"
+        );
+        eprintln!("skipped the lint: {missing} not found");
+        return;
+    }
+    for (top, _) in configs {
+        lint(&out_dir, top);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

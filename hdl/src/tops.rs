@@ -22,14 +22,19 @@
 //! `<Name>In` / `<Name>Out` and the wrapper `verilator_sys::<Name>`. Only an
 //! engine that drives the top (`cosim/src/engine/`) is written by hand.
 
+mod configured;
 pub mod port_docs;
 pub mod shim_table;
 pub mod verilog;
 
+use configured::raw_verilog_small;
+pub use configured::{drcc_with_config, hub_with_shape};
+
 use crate::channel::can_channel::CanChannel;
+#[cfg(test)]
 use crate::config::DrccConfig;
-use crate::drcc::{Drcc, DrccCore, DrccM0};
-use crate::hub::hub::{Hub, Hub4x2, HubB4x2};
+use crate::drcc::{Drcc, DrccM0};
+use crate::hub::hub::{Hub4x2, HubB4x2};
 use crate::redcan::rcm::Rcm;
 use rust_hdl::prelude::*;
 
@@ -115,134 +120,6 @@ fn connected<B: Block + Default>() -> B {
 
 fn raw_verilog_of<B: Block + Default>() -> String {
     generate_verilog(&connected::<B>())
-}
-
-/// The raw Verilog of the DRCC with the sizes of `cfg` (`M` = `cfg.mailboxes`).
-fn raw_verilog_drcc<const M: usize>(cfg: &DrccConfig) -> String {
-    let mut uut = DrccCore::<M>::with_config(cfg);
-    uut.connect_all();
-    generate_verilog(&uut)
-}
-
-fn raw_verilog_small() -> String {
-    raw_verilog_drcc::<0>(&DrccConfig::SMALL)
-}
-
-/// The finished Verilog of a DRCC generated with `cfg`, as module `name`
-/// (`drcc generate --config`): the `drcc` top's header, ports and notes, with
-/// `cfg`'s parameters. Refuses a configuration [`DrccConfig::check`] refuses.
-pub fn drcc_with_config(name: &str, cfg: &DrccConfig) -> Result<String, String> {
-    cfg.check()?;
-    let raw = match cfg.mailboxes {
-        0 => raw_verilog_drcc::<0>(cfg),
-        _ => raw_verilog_drcc::<16>(cfg),
-    };
-    let base = top("drcc").expect("the drcc top");
-    // a one-shot top of the CLI: its few strings live for the process
-    let params: Vec<(&'static str, &'static str)> = cfg
-        .params()
-        .into_iter()
-        .map(|(k, v)| (k, &*Box::leak(v.into_boxed_str())))
-        .collect();
-    let t = Top {
-        name: Box::leak(name.to_string().into_boxed_str()),
-        summary: "the DRCC generated with a configuration of its own (drcc generate --config)",
-        params: Box::leak(params.into_boxed_slice()),
-        ..*base
-    };
-    Ok(verilog::finish(&t, &raw, &t.ports()))
-}
-
-/// The raw Verilog and the ports of the hub with `n` node ports, `m`
-/// interlinks and identification frame `hub_id` (hub contract §9.1), for every
-/// shape the hub supports (N 2..8, M 1..4, P = N + M); `None` for another.
-fn hub_of_shape(n: usize, m: usize, hub_id: usize) -> Option<(String, Vec<Port>)> {
-    fn of<B: Block + Default>() -> Option<(String, Vec<Port>)> {
-        Some((raw_verilog_of::<B>(), ports_of::<B>()))
-    }
-    macro_rules! shapes {
-        ($( ($N:literal, $M:literal, $P:literal) ),* $(,)?) => {
-            match (n, m, hub_id) {
-                $(
-                    ($N, $M, 0) => of::<Hub<$N, $M, $P, 0>>(),
-                    ($N, $M, 1) => of::<Hub<$N, $M, $P, 1>>(),
-                )*
-                _ => None,
-            }
-        };
-    }
-    shapes!(
-        (2, 1, 3),
-        (2, 2, 4),
-        (2, 3, 5),
-        (2, 4, 6),
-        (3, 1, 4),
-        (3, 2, 5),
-        (3, 3, 6),
-        (3, 4, 7),
-        (4, 1, 5),
-        (4, 2, 6),
-        (4, 3, 7),
-        (4, 4, 8),
-        (5, 1, 6),
-        (5, 2, 7),
-        (5, 3, 8),
-        (5, 4, 9),
-        (6, 1, 7),
-        (6, 2, 8),
-        (6, 3, 9),
-        (6, 4, 10),
-        (7, 1, 8),
-        (7, 2, 9),
-        (7, 3, 10),
-        (7, 4, 11),
-        (8, 1, 9),
-        (8, 2, 10),
-        (8, 3, 11),
-        (8, 4, 12),
-    )
-}
-
-/// The finished Verilog of a hub generated with `n` node ports, `m` interlinks
-/// and identification frame `hub_id` (0 = hub A, 1 = hub B), as module `name`
-/// (`drcc generate --config`): the `hub` top's header, port docs and notes with
-/// these parameters. Refuses a shape the hub does not support, naming the ranges.
-pub fn hub_with_shape(name: &str, n: usize, m: usize, hub_id: usize) -> Result<String, String> {
-    // M = 1 simulates (rust-hdl, the model) but is not emitted: rust-hdl writes a
-    // one-bit vector as a scalar and still indexes it (`sub_q[0]`), which
-    // Verilog refuses
-    let offered = m >= 2;
-    let (raw, mut ports) = hub_of_shape(n, m, hub_id)
-        .filter(|_| offered)
-        .ok_or_else(|| {
-            format!(
-                "hub shape nodes = {n}, interlinks = {m}, hub_id = {hub_id} is not offered: \
-                 nodes 2..8, interlinks 2..4, hub_id 0 (hub A) or 1 (hub B)"
-            )
-        })?;
-    let base = top("hub").expect("the hub top");
-    let params: Vec<(&'static str, &'static str)> = [
-        ("HUB_ID", hub_id.to_string()),
-        ("N", n.to_string()),
-        ("M", m.to_string()),
-    ]
-    .into_iter()
-    .map(|(k, v)| (k, &*Box::leak(v.into_boxed_str())))
-    .collect();
-    // a one-shot top of the CLI: its few strings live for the process
-    let t = Top {
-        name: Box::leak(name.to_string().into_boxed_str()),
-        summary: "the ReCANcentrate hub generated with a shape of its own (drcc generate --config)",
-        params: Box::leak(params.into_boxed_slice()),
-        ..*base
-    };
-    let docs = port_docs::port_docs(t.source, t.block);
-    for p in &mut ports {
-        if let Some((_, doc)) = docs.iter().find(|(nm, _)| *nm == p.name) {
-            p.doc = doc.clone();
-        }
-    }
-    Ok(verilog::finish(&t, &raw, &ports))
 }
 
 fn ports_of<B: Block + Default>() -> Vec<Port> {

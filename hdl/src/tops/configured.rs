@@ -1,0 +1,146 @@
+//! Tops generated with a configuration of their own (`drcc generate --config`):
+//! the DRCC with the sizes and modes of a [`DrccConfig`] (drcc_contract.md §1.1)
+//! and the hub in any shape it offers, each finished like an emitted top (header,
+//! port table, port comments) under the user's module name.
+
+use super::{port_docs, ports_of, raw_verilog_of, top, verilog, Port, Top};
+use crate::config::DrccConfig;
+use crate::drcc::DrccCore;
+use crate::hub::hub::Hub;
+use rust_hdl::prelude::*;
+
+/// The raw Verilog of the DRCC with the sizes of `cfg` (`M` = `cfg.mailboxes`).
+fn raw_verilog_drcc<const M: usize>(cfg: &DrccConfig) -> String {
+    let mut uut = DrccCore::<M>::with_config(cfg);
+    uut.connect_all();
+    generate_verilog(&uut)
+}
+
+pub(super) fn raw_verilog_small() -> String {
+    raw_verilog_drcc::<0>(&DrccConfig::SMALL)
+}
+
+/// A top like `base` under another module name, summary and parameters: a
+/// one-shot top of the CLI (`drcc generate --config`), whose few strings live
+/// for the process.
+fn configured(
+    base: &Top,
+    name: &str,
+    summary: &'static str,
+    params: Vec<(&'static str, String)>,
+) -> Top {
+    let params: Vec<(&'static str, &'static str)> = params
+        .into_iter()
+        .map(|(k, v)| (k, &*Box::leak(v.into_boxed_str())))
+        .collect();
+    Top {
+        name: Box::leak(name.to_string().into_boxed_str()),
+        summary,
+        params: Box::leak(params.into_boxed_slice()),
+        ..*base
+    }
+}
+
+/// The finished Verilog of a DRCC generated with `cfg`, as module `name`
+/// (`drcc generate --config`): the `drcc` top's header, ports and notes, with
+/// `cfg`'s parameters. Refuses a configuration [`DrccConfig::check`] refuses.
+pub fn drcc_with_config(name: &str, cfg: &DrccConfig) -> Result<String, String> {
+    cfg.check()?;
+    let raw = match cfg.mailboxes {
+        0 => raw_verilog_drcc::<0>(cfg),
+        _ => raw_verilog_drcc::<16>(cfg),
+    };
+    let t = configured(
+        top("drcc").expect("the drcc top"),
+        name,
+        "the DRCC generated with a configuration of its own (drcc generate --config)",
+        cfg.params(),
+    );
+    Ok(verilog::finish(&t, &raw, &t.ports()))
+}
+
+/// The raw Verilog and the ports of the hub with `n` node ports, `m`
+/// interlinks and identification frame `hub_id` (hub contract §9.1), for every
+/// shape the hub supports (N 2..8, M 1..4, P = N + M); `None` for another.
+fn hub_of_shape(n: usize, m: usize, hub_id: usize) -> Option<(String, Vec<Port>)> {
+    fn of<B: Block + Default>() -> Option<(String, Vec<Port>)> {
+        Some((raw_verilog_of::<B>(), ports_of::<B>()))
+    }
+    macro_rules! shapes {
+        ($( ($N:literal, $M:literal, $P:literal) ),* $(,)?) => {
+            match (n, m, hub_id) {
+                $(
+                    ($N, $M, 0) => of::<Hub<$N, $M, $P, 0>>(),
+                    ($N, $M, 1) => of::<Hub<$N, $M, $P, 1>>(),
+                )*
+                _ => None,
+            }
+        };
+    }
+    shapes!(
+        (2, 1, 3),
+        (2, 2, 4),
+        (2, 3, 5),
+        (2, 4, 6),
+        (3, 1, 4),
+        (3, 2, 5),
+        (3, 3, 6),
+        (3, 4, 7),
+        (4, 1, 5),
+        (4, 2, 6),
+        (4, 3, 7),
+        (4, 4, 8),
+        (5, 1, 6),
+        (5, 2, 7),
+        (5, 3, 8),
+        (5, 4, 9),
+        (6, 1, 7),
+        (6, 2, 8),
+        (6, 3, 9),
+        (6, 4, 10),
+        (7, 1, 8),
+        (7, 2, 9),
+        (7, 3, 10),
+        (7, 4, 11),
+        (8, 1, 9),
+        (8, 2, 10),
+        (8, 3, 11),
+        (8, 4, 12),
+    )
+}
+
+/// The finished Verilog of a hub generated with `n` node ports, `m` interlinks
+/// and identification frame `hub_id` (0 = hub A, 1 = hub B), as module `name`
+/// (`drcc generate --config`): the `hub` top's header, port docs and notes with
+/// these parameters. Refuses a shape the hub does not support, naming the ranges.
+pub fn hub_with_shape(name: &str, n: usize, m: usize, hub_id: usize) -> Result<String, String> {
+    // M = 1 simulates (rust-hdl, the model) but is not emitted: rust-hdl writes a
+    // one-bit vector as a scalar and still indexes it (`sub_q[0]`), which
+    // Verilog refuses
+    let offered = m >= 2;
+    let (raw, mut ports) = hub_of_shape(n, m, hub_id)
+        .filter(|_| offered)
+        .ok_or_else(|| {
+            format!(
+                "hub shape nodes = {n}, interlinks = {m}, hub_id = {hub_id} is not offered: \
+                 nodes 2..8, interlinks 2..4, hub_id 0 (hub A) or 1 (hub B)"
+            )
+        })?;
+    let t = configured(
+        top("hub").expect("the hub top"),
+        name,
+        "the ReCANcentrate hub generated with a shape of its own (drcc generate --config)",
+        vec![
+            ("HUB_ID", hub_id.to_string()),
+            ("N", n.to_string()),
+            ("M", m.to_string()),
+        ],
+    );
+    let docs = port_docs::port_docs(t.source, t.block);
+    for p in &mut ports {
+        if let Some((_, doc)) = docs.iter().find(|(nm, _)| *nm == p.name) {
+            p.doc = doc.clone();
+        }
+    }
+    Ok(verilog::finish(&t, &raw, &ports))
+}

@@ -286,6 +286,46 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     wire  tracker__ev_stuff_rec;
     wire  tracker__ev_rid;
     wire  tracker__ev_ack;
+    reg  guard_stage__clk;
+    reg  guard_stage__rst;
+    reg  guard_stage__reset_mode;
+    reg  guard_stage__sample;
+    reg  [3:0] guard_stage__node_q;
+    reg  [1:0] guard_stage__sub_q;
+    reg  guard_stage__b;
+    reg  guard_stage__ev_sof;
+    reg  guard_stage__ev_frame;
+    reg  guard_stage__in_arb;
+    reg  guard_stage__ev_stuff_rec;
+    reg  guard_stage__ev_rid;
+    reg  guard_stage__ev_ack;
+    reg  guard_stage__nrap_active;
+    reg  guard_stage__decoupled;
+    reg  guard_stage__p_watch;
+    reg  guard_stage__p_enable;
+    reg  guard_stage__p_exchange;
+    reg  guard_stage__p_off_sub;
+    reg  guard_stage__p_join;
+    reg  guard_stage__recouple;
+    wire  guard_stage__hold_d;
+    wire  guard_stage__sample_d;
+    wire  [3:0] guard_stage__node_q_d;
+    wire  [1:0] guard_stage__sub_q_d;
+    wire  guard_stage__b_d;
+    wire  guard_stage__ev_sof_d;
+    wire  guard_stage__ev_frame_d;
+    wire  guard_stage__in_arb_d;
+    wire  guard_stage__ev_stuff_rec_d;
+    wire  guard_stage__ev_rid_d;
+    wire  guard_stage__ev_ack_d;
+    wire  guard_stage__node_freeze_d;
+    wire  guard_stage__sub_freeze_d;
+    wire  guard_stage__p_watch_d;
+    wire  guard_stage__p_enable_d;
+    wire  guard_stage__p_exchange_d;
+    wire  guard_stage__p_off_sub_d;
+    wire  guard_stage__p_join_d;
+    wire  guard_stage__recouple_d;
     reg  node_guards__0__clk;
     reg  node_guards__0__rst;
     reg  node_guards__0__freeze;
@@ -505,6 +545,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     
     // Local signals
     reg  guard_rst;
+    reg  guard_hold;
     reg  btl_rst;
     reg  ack_win;
     reg  ctrl_cmd;
@@ -678,6 +719,48 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .ev_stuff_rec(tracker__ev_stuff_rec),
         .ev_rid(tracker__ev_rid),
         .ev_ack(tracker__ev_ack)
+    );
+    hub__guard_stage guard_stage(
+        .clk(guard_stage__clk),
+        .rst(guard_stage__rst),
+        .reset_mode(guard_stage__reset_mode),
+        .sample(guard_stage__sample),
+        .node_q(guard_stage__node_q),
+        .sub_q(guard_stage__sub_q),
+        .b(guard_stage__b),
+        .ev_sof(guard_stage__ev_sof),
+        .ev_frame(guard_stage__ev_frame),
+        .in_arb(guard_stage__in_arb),
+        .ev_stuff_rec(guard_stage__ev_stuff_rec),
+        .ev_rid(guard_stage__ev_rid),
+        .ev_ack(guard_stage__ev_ack),
+        .nrap_active(guard_stage__nrap_active),
+        .decoupled(guard_stage__decoupled),
+        .p_watch(guard_stage__p_watch),
+        .p_enable(guard_stage__p_enable),
+        .p_exchange(guard_stage__p_exchange),
+        .p_off_sub(guard_stage__p_off_sub),
+        .p_join(guard_stage__p_join),
+        .recouple(guard_stage__recouple),
+        .hold_d(guard_stage__hold_d),
+        .sample_d(guard_stage__sample_d),
+        .node_q_d(guard_stage__node_q_d),
+        .sub_q_d(guard_stage__sub_q_d),
+        .b_d(guard_stage__b_d),
+        .ev_sof_d(guard_stage__ev_sof_d),
+        .ev_frame_d(guard_stage__ev_frame_d),
+        .in_arb_d(guard_stage__in_arb_d),
+        .ev_stuff_rec_d(guard_stage__ev_stuff_rec_d),
+        .ev_rid_d(guard_stage__ev_rid_d),
+        .ev_ack_d(guard_stage__ev_ack_d),
+        .node_freeze_d(guard_stage__node_freeze_d),
+        .sub_freeze_d(guard_stage__sub_freeze_d),
+        .p_watch_d(guard_stage__p_watch_d),
+        .p_enable_d(guard_stage__p_enable_d),
+        .p_exchange_d(guard_stage__p_exchange_d),
+        .p_off_sub_d(guard_stage__p_off_sub_d),
+        .p_join_d(guard_stage__p_join_d),
+        .recouple_d(guard_stage__recouple_d)
     );
     hub__node_guards__0 node_guards__0(
         .clk(node_guards__0__clk),
@@ -920,30 +1003,52 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         ctrl_cmd = wb_cyc_i & wb_stb_i & ~regs__wb_ack_o & wb_we_i & (wb_adr_i == a_ctrl) & ~regs__reset_mode & ~wb_dat_i[32'h0];
         recouple = ctrl_cmd & ~wb_dat_i[32'h1] & wb_dat_i[32'h2];
         force_cmd = ctrl_cmd & wb_dat_i[32'h1] & ~wb_dat_i[32'h2];
+        guard_stage__clk = clk;
+        guard_stage__rst = rst;
+        guard_stage__reset_mode = regs__reset_mode;
+        guard_stage__sample = btl__sample;
+        guard_stage__node_q = coupler__node_q;
+        guard_stage__sub_q = coupler__sub_q;
+        guard_stage__b = coupler__coupled;
+        guard_stage__ev_sof = tracker__ev_sof;
+        guard_stage__ev_frame = tracker__ev_frame;
+        guard_stage__in_arb = tracker__in_arb;
+        guard_stage__ev_stuff_rec = tracker__ev_stuff_rec;
+        guard_stage__ev_rid = tracker__ev_rid;
+        guard_stage__ev_ack = tracker__ev_ack;
+        guard_stage__nrap_active = nrap__active;
+        guard_stage__decoupled = regs__decoupled;
+        guard_stage__p_watch = nrap__p_watch;
+        guard_stage__p_enable = nrap__p_enable;
+        guard_stage__p_exchange = nrap__p_exchange;
+        guard_stage__p_off_sub = nrap__p_off_sub;
+        guard_stage__p_join = nrap__p_join;
+        guard_stage__recouple = recouple;
+        guard_hold = rst | guard_stage__hold_d;
         node_en = zero_n;
         sub_en = zero_m;
         port_rd = zero32;
         ev_iso = 1'b0;
         ev_rest = 1'b0;
         node_guards__0__clk = clk;
-        node_guards__0__rst = guard_rst;
-        node_guards__0__freeze = nrap__active;
+        node_guards__0__rst = guard_hold;
+        node_guards__0__freeze = guard_stage__node_freeze_d;
         node_guards__0__rid_en = 1'b1;
         node_guards__0__recouple = 1'b0;
-        node_guards__0__sample = btl__sample;
-        node_guards__0__pb = coupler__node_q[0];
-        node_guards__0__b = coupler__coupled;
-        node_guards__0__ev_sof = tracker__ev_sof;
-        node_guards__0__ev_frame = tracker__ev_frame;
-        node_guards__0__in_arb = tracker__in_arb;
-        node_guards__0__ev_stuff_rec = tracker__ev_stuff_rec;
-        node_guards__0__ev_rid = tracker__ev_rid;
-        node_guards__0__ev_ack = tracker__ev_ack;
+        node_guards__0__sample = guard_stage__sample_d;
+        node_guards__0__pb = guard_stage__node_q_d[0];
+        node_guards__0__b = guard_stage__b_d;
+        node_guards__0__ev_sof = guard_stage__ev_sof_d;
+        node_guards__0__ev_frame = guard_stage__ev_frame_d;
+        node_guards__0__in_arb = guard_stage__in_arb_d;
+        node_guards__0__ev_stuff_rec = guard_stage__ev_stuff_rec_d;
+        node_guards__0__ev_rid = guard_stage__ev_rid_d;
+        node_guards__0__ev_ack = guard_stage__ev_ack_d;
         node_guards__0__n_rrun = 1'b0;
-        node_guards__0__n_watch = nrap__p_watch;
+        node_guards__0__n_watch = guard_stage__p_watch_d;
         node_guards__0__n_off = 1'b0;
         node_guards__0__n_clr = 1'b0;
-        node_guards__0__n_enable = nrap__p_enable;
+        node_guards__0__n_enable = guard_stage__p_enable_d;
         node_guards__0__sd_limit = hub_cfg__sd_run_up;
         node_guards__0__bf_limit = hub_cfg__bf_up;
         node_guards__0__sr_frames = hub_cfg__sr_frames;
@@ -955,24 +1060,24 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         ev_iso = ev_iso | node_guards__0__iso_evt;
         ev_rest = ev_rest | node_guards__0__rest_evt;
         node_guards__1__clk = clk;
-        node_guards__1__rst = guard_rst;
-        node_guards__1__freeze = nrap__active;
+        node_guards__1__rst = guard_hold;
+        node_guards__1__freeze = guard_stage__node_freeze_d;
         node_guards__1__rid_en = 1'b1;
         node_guards__1__recouple = 1'b0;
-        node_guards__1__sample = btl__sample;
-        node_guards__1__pb = coupler__node_q[1];
-        node_guards__1__b = coupler__coupled;
-        node_guards__1__ev_sof = tracker__ev_sof;
-        node_guards__1__ev_frame = tracker__ev_frame;
-        node_guards__1__in_arb = tracker__in_arb;
-        node_guards__1__ev_stuff_rec = tracker__ev_stuff_rec;
-        node_guards__1__ev_rid = tracker__ev_rid;
-        node_guards__1__ev_ack = tracker__ev_ack;
+        node_guards__1__sample = guard_stage__sample_d;
+        node_guards__1__pb = guard_stage__node_q_d[1];
+        node_guards__1__b = guard_stage__b_d;
+        node_guards__1__ev_sof = guard_stage__ev_sof_d;
+        node_guards__1__ev_frame = guard_stage__ev_frame_d;
+        node_guards__1__in_arb = guard_stage__in_arb_d;
+        node_guards__1__ev_stuff_rec = guard_stage__ev_stuff_rec_d;
+        node_guards__1__ev_rid = guard_stage__ev_rid_d;
+        node_guards__1__ev_ack = guard_stage__ev_ack_d;
         node_guards__1__n_rrun = 1'b0;
-        node_guards__1__n_watch = nrap__p_watch;
+        node_guards__1__n_watch = guard_stage__p_watch_d;
         node_guards__1__n_off = 1'b0;
         node_guards__1__n_clr = 1'b0;
-        node_guards__1__n_enable = nrap__p_enable;
+        node_guards__1__n_enable = guard_stage__p_enable_d;
         node_guards__1__sd_limit = hub_cfg__sd_run_up;
         node_guards__1__bf_limit = hub_cfg__bf_up;
         node_guards__1__sr_frames = hub_cfg__sr_frames;
@@ -984,24 +1089,24 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         ev_iso = ev_iso | node_guards__1__iso_evt;
         ev_rest = ev_rest | node_guards__1__rest_evt;
         node_guards__2__clk = clk;
-        node_guards__2__rst = guard_rst;
-        node_guards__2__freeze = nrap__active;
+        node_guards__2__rst = guard_hold;
+        node_guards__2__freeze = guard_stage__node_freeze_d;
         node_guards__2__rid_en = 1'b1;
         node_guards__2__recouple = 1'b0;
-        node_guards__2__sample = btl__sample;
-        node_guards__2__pb = coupler__node_q[2];
-        node_guards__2__b = coupler__coupled;
-        node_guards__2__ev_sof = tracker__ev_sof;
-        node_guards__2__ev_frame = tracker__ev_frame;
-        node_guards__2__in_arb = tracker__in_arb;
-        node_guards__2__ev_stuff_rec = tracker__ev_stuff_rec;
-        node_guards__2__ev_rid = tracker__ev_rid;
-        node_guards__2__ev_ack = tracker__ev_ack;
+        node_guards__2__sample = guard_stage__sample_d;
+        node_guards__2__pb = guard_stage__node_q_d[2];
+        node_guards__2__b = guard_stage__b_d;
+        node_guards__2__ev_sof = guard_stage__ev_sof_d;
+        node_guards__2__ev_frame = guard_stage__ev_frame_d;
+        node_guards__2__in_arb = guard_stage__in_arb_d;
+        node_guards__2__ev_stuff_rec = guard_stage__ev_stuff_rec_d;
+        node_guards__2__ev_rid = guard_stage__ev_rid_d;
+        node_guards__2__ev_ack = guard_stage__ev_ack_d;
         node_guards__2__n_rrun = 1'b0;
-        node_guards__2__n_watch = nrap__p_watch;
+        node_guards__2__n_watch = guard_stage__p_watch_d;
         node_guards__2__n_off = 1'b0;
         node_guards__2__n_clr = 1'b0;
-        node_guards__2__n_enable = nrap__p_enable;
+        node_guards__2__n_enable = guard_stage__p_enable_d;
         node_guards__2__sd_limit = hub_cfg__sd_run_up;
         node_guards__2__bf_limit = hub_cfg__bf_up;
         node_guards__2__sr_frames = hub_cfg__sr_frames;
@@ -1013,24 +1118,24 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         ev_iso = ev_iso | node_guards__2__iso_evt;
         ev_rest = ev_rest | node_guards__2__rest_evt;
         node_guards__3__clk = clk;
-        node_guards__3__rst = guard_rst;
-        node_guards__3__freeze = nrap__active;
+        node_guards__3__rst = guard_hold;
+        node_guards__3__freeze = guard_stage__node_freeze_d;
         node_guards__3__rid_en = 1'b1;
         node_guards__3__recouple = 1'b0;
-        node_guards__3__sample = btl__sample;
-        node_guards__3__pb = coupler__node_q[3];
-        node_guards__3__b = coupler__coupled;
-        node_guards__3__ev_sof = tracker__ev_sof;
-        node_guards__3__ev_frame = tracker__ev_frame;
-        node_guards__3__in_arb = tracker__in_arb;
-        node_guards__3__ev_stuff_rec = tracker__ev_stuff_rec;
-        node_guards__3__ev_rid = tracker__ev_rid;
-        node_guards__3__ev_ack = tracker__ev_ack;
+        node_guards__3__sample = guard_stage__sample_d;
+        node_guards__3__pb = guard_stage__node_q_d[3];
+        node_guards__3__b = guard_stage__b_d;
+        node_guards__3__ev_sof = guard_stage__ev_sof_d;
+        node_guards__3__ev_frame = guard_stage__ev_frame_d;
+        node_guards__3__in_arb = guard_stage__in_arb_d;
+        node_guards__3__ev_stuff_rec = guard_stage__ev_stuff_rec_d;
+        node_guards__3__ev_rid = guard_stage__ev_rid_d;
+        node_guards__3__ev_ack = guard_stage__ev_ack_d;
         node_guards__3__n_rrun = 1'b0;
-        node_guards__3__n_watch = nrap__p_watch;
+        node_guards__3__n_watch = guard_stage__p_watch_d;
         node_guards__3__n_off = 1'b0;
         node_guards__3__n_clr = 1'b0;
-        node_guards__3__n_enable = nrap__p_enable;
+        node_guards__3__n_enable = guard_stage__p_enable_d;
         node_guards__3__sd_limit = hub_cfg__sd_run_up;
         node_guards__3__bf_limit = hub_cfg__bf_up;
         node_guards__3__sr_frames = hub_cfg__sr_frames;
@@ -1042,23 +1147,23 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         ev_iso = ev_iso | node_guards__3__iso_evt;
         ev_rest = ev_rest | node_guards__3__rest_evt;
         sub_guards__0__clk = clk;
-        sub_guards__0__rst = guard_rst;
-        sub_guards__0__freeze = regs__decoupled | nrap__active;
+        sub_guards__0__rst = guard_hold;
+        sub_guards__0__freeze = guard_stage__sub_freeze_d;
         sub_guards__0__rid_en = 1'b0;
-        sub_guards__0__recouple = recouple;
-        sub_guards__0__sample = btl__sample;
-        sub_guards__0__pb = coupler__sub_q[0];
-        sub_guards__0__b = coupler__coupled;
-        sub_guards__0__ev_sof = tracker__ev_sof;
-        sub_guards__0__ev_frame = tracker__ev_frame;
-        sub_guards__0__in_arb = tracker__in_arb;
-        sub_guards__0__ev_stuff_rec = tracker__ev_stuff_rec;
-        sub_guards__0__ev_rid = tracker__ev_rid;
-        sub_guards__0__ev_ack = tracker__ev_ack;
-        sub_guards__0__n_rrun = nrap__p_exchange;
+        sub_guards__0__recouple = guard_stage__recouple_d;
+        sub_guards__0__sample = guard_stage__sample_d;
+        sub_guards__0__pb = guard_stage__sub_q_d[0];
+        sub_guards__0__b = guard_stage__b_d;
+        sub_guards__0__ev_sof = guard_stage__ev_sof_d;
+        sub_guards__0__ev_frame = guard_stage__ev_frame_d;
+        sub_guards__0__in_arb = guard_stage__in_arb_d;
+        sub_guards__0__ev_stuff_rec = guard_stage__ev_stuff_rec_d;
+        sub_guards__0__ev_rid = guard_stage__ev_rid_d;
+        sub_guards__0__ev_ack = guard_stage__ev_ack_d;
+        sub_guards__0__n_rrun = guard_stage__p_exchange_d;
         sub_guards__0__n_watch = 1'b0;
-        sub_guards__0__n_off = nrap__p_off_sub;
-        sub_guards__0__n_clr = nrap__p_join;
+        sub_guards__0__n_off = guard_stage__p_off_sub_d;
+        sub_guards__0__n_clr = guard_stage__p_join_d;
         sub_guards__0__n_enable = 1'b0;
         sub_guards__0__sd_limit = hub_cfg__sd_run_sub;
         sub_guards__0__bf_limit = hub_cfg__bf_sub;
@@ -1071,23 +1176,23 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         ev_iso = ev_iso | sub_guards__0__iso_evt;
         ev_rest = ev_rest | sub_guards__0__rest_evt;
         sub_guards__1__clk = clk;
-        sub_guards__1__rst = guard_rst;
-        sub_guards__1__freeze = regs__decoupled | nrap__active;
+        sub_guards__1__rst = guard_hold;
+        sub_guards__1__freeze = guard_stage__sub_freeze_d;
         sub_guards__1__rid_en = 1'b0;
-        sub_guards__1__recouple = recouple;
-        sub_guards__1__sample = btl__sample;
-        sub_guards__1__pb = coupler__sub_q[1];
-        sub_guards__1__b = coupler__coupled;
-        sub_guards__1__ev_sof = tracker__ev_sof;
-        sub_guards__1__ev_frame = tracker__ev_frame;
-        sub_guards__1__in_arb = tracker__in_arb;
-        sub_guards__1__ev_stuff_rec = tracker__ev_stuff_rec;
-        sub_guards__1__ev_rid = tracker__ev_rid;
-        sub_guards__1__ev_ack = tracker__ev_ack;
-        sub_guards__1__n_rrun = nrap__p_exchange;
+        sub_guards__1__recouple = guard_stage__recouple_d;
+        sub_guards__1__sample = guard_stage__sample_d;
+        sub_guards__1__pb = guard_stage__sub_q_d[1];
+        sub_guards__1__b = guard_stage__b_d;
+        sub_guards__1__ev_sof = guard_stage__ev_sof_d;
+        sub_guards__1__ev_frame = guard_stage__ev_frame_d;
+        sub_guards__1__in_arb = guard_stage__in_arb_d;
+        sub_guards__1__ev_stuff_rec = guard_stage__ev_stuff_rec_d;
+        sub_guards__1__ev_rid = guard_stage__ev_rid_d;
+        sub_guards__1__ev_ack = guard_stage__ev_ack_d;
+        sub_guards__1__n_rrun = guard_stage__p_exchange_d;
         sub_guards__1__n_watch = 1'b0;
-        sub_guards__1__n_off = nrap__p_off_sub;
-        sub_guards__1__n_clr = nrap__p_join;
+        sub_guards__1__n_off = guard_stage__p_off_sub_d;
+        sub_guards__1__n_clr = guard_stage__p_join_d;
         sub_guards__1__n_enable = 1'b0;
         sub_guards__1__sd_limit = hub_cfg__sd_run_sub;
         sub_guards__1__bf_limit = hub_cfg__bf_sub;
@@ -4113,6 +4218,618 @@ module hub__coupler__sub_s1(d,q,clock);
 endmodule // hub__coupler__sub_s1
 
 
+module hub__guard_stage(clk,rst,reset_mode,sample,node_q,sub_q,b,ev_sof,ev_frame,in_arb,ev_stuff_rec,ev_rid,ev_ack,nrap_active,decoupled,p_watch,p_enable,p_exchange,p_off_sub,p_join,recouple,hold_d,sample_d,node_q_d,sub_q_d,b_d,ev_sof_d,ev_frame_d,in_arb_d,ev_stuff_rec_d,ev_rid_d,ev_ack_d,node_freeze_d,sub_freeze_d,p_watch_d,p_enable_d,p_exchange_d,p_off_sub_d,p_join_d,recouple_d);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  reset_mode;
+    input wire  sample;
+    input wire  [3:0] node_q;
+    input wire  [1:0] sub_q;
+    input wire  b;
+    input wire  ev_sof;
+    input wire  ev_frame;
+    input wire  in_arb;
+    input wire  ev_stuff_rec;
+    input wire  ev_rid;
+    input wire  ev_ack;
+    input wire  nrap_active;
+    input wire  decoupled;
+    input wire  p_watch;
+    input wire  p_enable;
+    input wire  p_exchange;
+    input wire  p_off_sub;
+    input wire  p_join;
+    input wire  recouple;
+    output reg  hold_d;
+    output reg  sample_d;
+    output reg  [3:0] node_q_d;
+    output reg  [1:0] sub_q_d;
+    output reg  b_d;
+    output reg  ev_sof_d;
+    output reg  ev_frame_d;
+    output reg  in_arb_d;
+    output reg  ev_stuff_rec_d;
+    output reg  ev_rid_d;
+    output reg  ev_ack_d;
+    output reg  node_freeze_d;
+    output reg  sub_freeze_d;
+    output reg  p_watch_d;
+    output reg  p_enable_d;
+    output reg  p_exchange_d;
+    output reg  p_off_sub_d;
+    output reg  p_join_d;
+    output reg  recouple_d;
+    
+    // Constant declarations
+    localparam  ones_n = 4'hf;
+    localparam  ones_m = 2'b11;
+    
+    // Stub signals
+    reg  hold_q__d;
+    wire  hold_q__q;
+    reg  hold_q__clock;
+    reg  sample_q__d;
+    wire  sample_q__q;
+    reg  sample_q__clock;
+    reg  [3:0] node_q_q__d;
+    wire  [3:0] node_q_q__q;
+    reg  node_q_q__clock;
+    reg  [1:0] sub_q_q__d;
+    wire  [1:0] sub_q_q__q;
+    reg  sub_q_q__clock;
+    reg  b_q__d;
+    wire  b_q__q;
+    reg  b_q__clock;
+    reg  ev_sof_q__d;
+    wire  ev_sof_q__q;
+    reg  ev_sof_q__clock;
+    reg  ev_frame_q__d;
+    wire  ev_frame_q__q;
+    reg  ev_frame_q__clock;
+    reg  in_arb_q__d;
+    wire  in_arb_q__q;
+    reg  in_arb_q__clock;
+    reg  ev_stuff_rec_q__d;
+    wire  ev_stuff_rec_q__q;
+    reg  ev_stuff_rec_q__clock;
+    reg  ev_rid_q__d;
+    wire  ev_rid_q__q;
+    reg  ev_rid_q__clock;
+    reg  ev_ack_q__d;
+    wire  ev_ack_q__q;
+    reg  ev_ack_q__clock;
+    reg  node_freeze_q__d;
+    wire  node_freeze_q__q;
+    reg  node_freeze_q__clock;
+    reg  sub_freeze_q__d;
+    wire  sub_freeze_q__q;
+    reg  sub_freeze_q__clock;
+    reg  p_watch_q__d;
+    wire  p_watch_q__q;
+    reg  p_watch_q__clock;
+    reg  p_enable_q__d;
+    wire  p_enable_q__q;
+    reg  p_enable_q__clock;
+    reg  p_exchange_q__d;
+    wire  p_exchange_q__q;
+    reg  p_exchange_q__clock;
+    reg  p_off_sub_q__d;
+    wire  p_off_sub_q__q;
+    reg  p_off_sub_q__clock;
+    reg  p_join_q__d;
+    wire  p_join_q__q;
+    reg  p_join_q__clock;
+    reg  recouple_q__d;
+    wire  recouple_q__q;
+    reg  recouple_q__clock;
+    
+    // Sub module instances
+    hub__guard_stage__hold_q hold_q(
+        .d(hold_q__d),
+        .q(hold_q__q),
+        .clock(hold_q__clock)
+    );
+    hub__guard_stage__sample_q sample_q(
+        .d(sample_q__d),
+        .q(sample_q__q),
+        .clock(sample_q__clock)
+    );
+    hub__guard_stage__node_q_q node_q_q(
+        .d(node_q_q__d),
+        .q(node_q_q__q),
+        .clock(node_q_q__clock)
+    );
+    hub__guard_stage__sub_q_q sub_q_q(
+        .d(sub_q_q__d),
+        .q(sub_q_q__q),
+        .clock(sub_q_q__clock)
+    );
+    hub__guard_stage__b_q b_q(
+        .d(b_q__d),
+        .q(b_q__q),
+        .clock(b_q__clock)
+    );
+    hub__guard_stage__ev_sof_q ev_sof_q(
+        .d(ev_sof_q__d),
+        .q(ev_sof_q__q),
+        .clock(ev_sof_q__clock)
+    );
+    hub__guard_stage__ev_frame_q ev_frame_q(
+        .d(ev_frame_q__d),
+        .q(ev_frame_q__q),
+        .clock(ev_frame_q__clock)
+    );
+    hub__guard_stage__in_arb_q in_arb_q(
+        .d(in_arb_q__d),
+        .q(in_arb_q__q),
+        .clock(in_arb_q__clock)
+    );
+    hub__guard_stage__ev_stuff_rec_q ev_stuff_rec_q(
+        .d(ev_stuff_rec_q__d),
+        .q(ev_stuff_rec_q__q),
+        .clock(ev_stuff_rec_q__clock)
+    );
+    hub__guard_stage__ev_rid_q ev_rid_q(
+        .d(ev_rid_q__d),
+        .q(ev_rid_q__q),
+        .clock(ev_rid_q__clock)
+    );
+    hub__guard_stage__ev_ack_q ev_ack_q(
+        .d(ev_ack_q__d),
+        .q(ev_ack_q__q),
+        .clock(ev_ack_q__clock)
+    );
+    hub__guard_stage__node_freeze_q node_freeze_q(
+        .d(node_freeze_q__d),
+        .q(node_freeze_q__q),
+        .clock(node_freeze_q__clock)
+    );
+    hub__guard_stage__sub_freeze_q sub_freeze_q(
+        .d(sub_freeze_q__d),
+        .q(sub_freeze_q__q),
+        .clock(sub_freeze_q__clock)
+    );
+    hub__guard_stage__p_watch_q p_watch_q(
+        .d(p_watch_q__d),
+        .q(p_watch_q__q),
+        .clock(p_watch_q__clock)
+    );
+    hub__guard_stage__p_enable_q p_enable_q(
+        .d(p_enable_q__d),
+        .q(p_enable_q__q),
+        .clock(p_enable_q__clock)
+    );
+    hub__guard_stage__p_exchange_q p_exchange_q(
+        .d(p_exchange_q__d),
+        .q(p_exchange_q__q),
+        .clock(p_exchange_q__clock)
+    );
+    hub__guard_stage__p_off_sub_q p_off_sub_q(
+        .d(p_off_sub_q__d),
+        .q(p_off_sub_q__q),
+        .clock(p_off_sub_q__clock)
+    );
+    hub__guard_stage__p_join_q p_join_q(
+        .d(p_join_q__d),
+        .q(p_join_q__q),
+        .clock(p_join_q__clock)
+    );
+    hub__guard_stage__recouple_q recouple_q(
+        .d(recouple_q__d),
+        .q(recouple_q__q),
+        .clock(recouple_q__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hold_q__clock = clk;
+        sample_q__clock = clk;
+        node_q_q__clock = clk;
+        sub_q_q__clock = clk;
+        b_q__clock = clk;
+        ev_sof_q__clock = clk;
+        ev_frame_q__clock = clk;
+        in_arb_q__clock = clk;
+        ev_stuff_rec_q__clock = clk;
+        ev_rid_q__clock = clk;
+        ev_ack_q__clock = clk;
+        node_freeze_q__clock = clk;
+        sub_freeze_q__clock = clk;
+        p_watch_q__clock = clk;
+        p_enable_q__clock = clk;
+        p_exchange_q__clock = clk;
+        p_off_sub_q__clock = clk;
+        p_join_q__clock = clk;
+        recouple_q__clock = clk;
+        hold_q__d = hold_q__q;
+        sample_q__d = sample_q__q;
+        node_q_q__d = node_q_q__q;
+        sub_q_q__d = sub_q_q__q;
+        b_q__d = b_q__q;
+        ev_sof_q__d = ev_sof_q__q;
+        ev_frame_q__d = ev_frame_q__q;
+        in_arb_q__d = in_arb_q__q;
+        ev_stuff_rec_q__d = ev_stuff_rec_q__q;
+        ev_rid_q__d = ev_rid_q__q;
+        ev_ack_q__d = ev_ack_q__q;
+        node_freeze_q__d = node_freeze_q__q;
+        sub_freeze_q__d = sub_freeze_q__q;
+        p_watch_q__d = p_watch_q__q;
+        p_enable_q__d = p_enable_q__q;
+        p_exchange_q__d = p_exchange_q__q;
+        p_off_sub_q__d = p_off_sub_q__q;
+        p_join_q__d = p_join_q__q;
+        recouple_q__d = recouple_q__q;
+        hold_q__d = reset_mode;
+        sample_q__d = sample;
+        node_q_q__d = node_q;
+        sub_q_q__d = sub_q;
+        b_q__d = b;
+        ev_sof_q__d = ev_sof;
+        ev_frame_q__d = ev_frame;
+        in_arb_q__d = in_arb;
+        ev_stuff_rec_q__d = ev_stuff_rec;
+        ev_rid_q__d = ev_rid;
+        ev_ack_q__d = ev_ack;
+        node_freeze_q__d = nrap_active;
+        sub_freeze_q__d = decoupled | nrap_active;
+        p_watch_q__d = p_watch;
+        p_enable_q__d = p_enable;
+        p_exchange_q__d = p_exchange;
+        p_off_sub_q__d = p_off_sub;
+        p_join_q__d = p_join;
+        recouple_q__d = recouple;
+        if (rst) begin
+            hold_q__d = 1'b1;
+            sample_q__d = 1'b0;
+            node_q_q__d = ones_n;
+            sub_q_q__d = ones_m;
+            b_q__d = 1'b1;
+            ev_sof_q__d = 1'b0;
+            ev_frame_q__d = 1'b0;
+            in_arb_q__d = 1'b0;
+            ev_stuff_rec_q__d = 1'b0;
+            ev_rid_q__d = 1'b0;
+            ev_ack_q__d = 1'b0;
+            node_freeze_q__d = 1'b0;
+            sub_freeze_q__d = 1'b0;
+            p_watch_q__d = 1'b0;
+            p_enable_q__d = 1'b0;
+            p_exchange_q__d = 1'b0;
+            p_off_sub_q__d = 1'b0;
+            p_join_q__d = 1'b0;
+            recouple_q__d = 1'b0;
+        end
+        hold_d = hold_q__q;
+        sample_d = sample_q__q;
+        node_q_d = node_q_q__q;
+        sub_q_d = sub_q_q__q;
+        b_d = b_q__q;
+        ev_sof_d = ev_sof_q__q;
+        ev_frame_d = ev_frame_q__q;
+        in_arb_d = in_arb_q__q;
+        ev_stuff_rec_d = ev_stuff_rec_q__q;
+        ev_rid_d = ev_rid_q__q;
+        ev_ack_d = ev_ack_q__q;
+        node_freeze_d = node_freeze_q__q;
+        sub_freeze_d = sub_freeze_q__q;
+        p_watch_d = p_watch_q__q;
+        p_enable_d = p_enable_q__q;
+        p_exchange_d = p_exchange_q__q;
+        p_off_sub_d = p_off_sub_q__q;
+        p_join_d = p_join_q__q;
+        recouple_d = recouple_q__q;
+    end
+    
+endmodule // hub__guard_stage
+
+
+module hub__guard_stage__b_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__b_q
+
+
+module hub__guard_stage__ev_ack_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__ev_ack_q
+
+
+module hub__guard_stage__ev_frame_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__ev_frame_q
+
+
+module hub__guard_stage__ev_rid_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__ev_rid_q
+
+
+module hub__guard_stage__ev_sof_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__ev_sof_q
+
+
+module hub__guard_stage__ev_stuff_rec_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__ev_stuff_rec_q
+
+
+module hub__guard_stage__hold_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__hold_q
+
+
+module hub__guard_stage__in_arb_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__in_arb_q
+
+
+module hub__guard_stage__node_freeze_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__node_freeze_q
+
+
+module hub__guard_stage__node_q_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__node_q_q
+
+
+module hub__guard_stage__p_enable_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__p_enable_q
+
+
+module hub__guard_stage__p_exchange_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__p_exchange_q
+
+
+module hub__guard_stage__p_join_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__p_join_q
+
+
+module hub__guard_stage__p_off_sub_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__p_off_sub_q
+
+
+module hub__guard_stage__p_watch_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__p_watch_q
+
+
+module hub__guard_stage__recouple_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__recouple_q
+
+
+module hub__guard_stage__sample_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__sample_q
+
+
+module hub__guard_stage__sub_freeze_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__sub_freeze_q
+
+
+module hub__guard_stage__sub_q_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__guard_stage__sub_q_q
+
+
 module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw,sd_run_up,sd_run_sub,sr_frames,bf_up,bf_sub,restore_bits,decouple_bits,force_bits,srp_pairs,nrp_pairs,ddsp_frames,srp_bits,nrp_bits,ddsp_bits,block_frames);
     
     // Module arguments
@@ -5261,8 +5978,49 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  [3:0] rrun__d;
     wire  [3:0] rrun__q;
     reg  rrun__clock;
+    reg  [5:0] pre_dom__d;
+    wire  [5:0] pre_dom__q;
+    reg  pre_dom__clock;
+    reg  pre_sd__d;
+    wire  pre_sd__q;
+    reg  pre_sd__clock;
+    reg  [7:0] pre_pec_b__d;
+    wire  [7:0] pre_pec_b__q;
+    reg  pre_pec_b__clock;
+    reg  pre_bf__d;
+    wire  pre_bf__q;
+    reg  pre_bf__clock;
+    reg  [7:0] pre_pec_dec__d;
+    wire  [7:0] pre_pec_dec__q;
+    reg  pre_pec_dec__clock;
+    reg  [3:0] pre_sil__d;
+    wire  [3:0] pre_sil__q;
+    reg  pre_sil__clock;
+    reg  pre_sr__d;
+    wire  pre_sr__q;
+    reg  pre_sr__clock;
+    reg  [15:0] pre_rc__d;
+    wire  [15:0] pre_rc__q;
+    reg  pre_rc__clock;
+    reg  pre_rest__d;
+    wire  pre_rest__q;
+    reg  pre_rest__clock;
+    reg  [3:0] pre_rrun__d;
+    wire  [3:0] pre_rrun__q;
+    reg  pre_rrun__clock;
+    reg  pre_rrun11__d;
+    wire  pre_rrun11__q;
+    reg  pre_rrun11__clock;
     
     // Local signals
+    reg  [7:0] pec_eff;
+    reg  [3:0] sil_eff;
+    reg  [15:0] rc_eff;
+    reg  [5:0] dom_inc;
+    reg  [7:0] pec_inc;
+    reg  [3:0] sil_inc;
+    reg  [15:0] rc_inc;
+    reg  [3:0] rrun_inc;
     reg  run;
     reg  [5:0] dom_new;
     reg  sd_hit;
@@ -5278,6 +6036,7 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  symptom;
     reg  [15:0] rc_new;
     reg  [3:0] rrun_new;
+    reg  en_out;
     
     // Sub module instances
     hub__node_guards__0__enabled_q enabled_q(
@@ -5345,6 +6104,61 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         .q(rrun__q),
         .clock(rrun__clock)
     );
+    hub__node_guards__0__pre_dom pre_dom(
+        .d(pre_dom__d),
+        .q(pre_dom__q),
+        .clock(pre_dom__clock)
+    );
+    hub__node_guards__0__pre_sd pre_sd(
+        .d(pre_sd__d),
+        .q(pre_sd__q),
+        .clock(pre_sd__clock)
+    );
+    hub__node_guards__0__pre_pec_b pre_pec_b(
+        .d(pre_pec_b__d),
+        .q(pre_pec_b__q),
+        .clock(pre_pec_b__clock)
+    );
+    hub__node_guards__0__pre_bf pre_bf(
+        .d(pre_bf__d),
+        .q(pre_bf__q),
+        .clock(pre_bf__clock)
+    );
+    hub__node_guards__0__pre_pec_dec pre_pec_dec(
+        .d(pre_pec_dec__d),
+        .q(pre_pec_dec__q),
+        .clock(pre_pec_dec__clock)
+    );
+    hub__node_guards__0__pre_sil pre_sil(
+        .d(pre_sil__d),
+        .q(pre_sil__q),
+        .clock(pre_sil__clock)
+    );
+    hub__node_guards__0__pre_sr pre_sr(
+        .d(pre_sr__d),
+        .q(pre_sr__q),
+        .clock(pre_sr__clock)
+    );
+    hub__node_guards__0__pre_rc pre_rc(
+        .d(pre_rc__d),
+        .q(pre_rc__q),
+        .clock(pre_rc__clock)
+    );
+    hub__node_guards__0__pre_rest pre_rest(
+        .d(pre_rest__d),
+        .q(pre_rest__q),
+        .clock(pre_rest__clock)
+    );
+    hub__node_guards__0__pre_rrun pre_rrun(
+        .d(pre_rrun__d),
+        .q(pre_rrun__q),
+        .clock(pre_rrun__clock)
+    );
+    hub__node_guards__0__pre_rrun11 pre_rrun11(
+        .d(pre_rrun11__d),
+        .q(pre_rrun11__q),
+        .clock(pre_rrun11__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -5361,6 +6175,17 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__clock = clk;
         active__clock = clk;
         rrun__clock = clk;
+        pre_dom__clock = clk;
+        pre_sd__clock = clk;
+        pre_pec_b__clock = clk;
+        pre_bf__clock = clk;
+        pre_pec_dec__clock = clk;
+        pre_sil__clock = clk;
+        pre_sr__clock = clk;
+        pre_rc__clock = clk;
+        pre_rest__clock = clk;
+        pre_rrun__clock = clk;
+        pre_rrun11__clock = clk;
         enabled_q__d = enabled_q__q;
         kind__d = kind__q;
         pec__d = pec__q;
@@ -5374,19 +6199,81 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__d = blamed__q;
         active__d = active__q;
         rrun__d = rrun__q;
+        pre_dom__d = pre_dom__q;
+        pre_sd__d = pre_sd__q;
+        pre_pec_b__d = pre_pec_b__q;
+        pre_bf__d = pre_bf__q;
+        pre_pec_dec__d = pre_pec_dec__q;
+        pre_sil__d = pre_sil__q;
+        pre_sr__d = pre_sr__q;
+        pre_rc__d = pre_rc__q;
+        pre_rest__d = pre_rest__q;
+        pre_rrun__d = pre_rrun__q;
+        pre_rrun11__d = pre_rrun11__q;
         iso_evt = 1'b0;
         rest_evt = 1'b0;
         run = sample & ~freeze;
+        pec_eff = pec__q;
+        sil_eff = silent__q;
+        rc_eff = restore_cnt__q;
+        if (recouple) begin
+            pec_eff = zero8;
+            sil_eff = zero4;
+            rc_eff = zero16;
+        end
+        if (dom_run__q == max6) begin
+            dom_inc = max6;
+        end
+        else begin
+            dom_inc = dom_run__q + one6;
+        end
+        pre_dom__d = dom_inc;
+        pre_sd__d = dom_inc >= sd_limit;
+        if (pec_eff >= sat8) begin
+            pec_inc = max8;
+        end
+        else begin
+            pec_inc = pec_eff + eight8;
+        end
+        pre_pec_b__d = pec_inc;
+        pre_bf__d = pec_inc >= bf_limit;
+        pre_pec_dec__d = pec_eff - one8;
+        if (sil_eff == max4) begin
+            sil_inc = max4;
+        end
+        else begin
+            sil_inc = sil_eff + one4;
+        end
+        pre_sil__d = sil_inc;
+        pre_sr__d = (sr_frames != zero4) & (sil_inc >= sr_frames);
+        if (rc_eff == max16) begin
+            rc_inc = max16;
+        end
+        else begin
+            rc_inc = rc_eff + one16;
+        end
+        pre_rc__d = rc_inc;
+        pre_rest__d = (restore_bits != zero16) & (rc_inc >= restore_bits);
+        if (rrun__q == max4) begin
+            rrun_inc = max4;
+        end
+        else begin
+            rrun_inc = rrun__q + one4;
+        end
+        pre_rrun__d = rrun_inc;
+        pre_rrun11__d = rrun_inc >= eleven4;
         if (pb) begin
             dom_new = zero6;
         end
-        else if (dom_run__q == max6) begin
-            dom_new = max6;
+        else begin
+            dom_new = pre_dom__q;
+        end
+        if (pb) begin
+            sd_hit = sd_limit == zero6;
         end
         else begin
-            dom_new = dom_run__q + one6;
+            sd_hit = pre_sd__q;
         end
-        sd_hit = dom_new >= sd_limit;
         cand_n = cand__q;
         lost_n = lost__q;
         active_n = active__q;
@@ -5408,30 +6295,17 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         blame = ev_frame & ~blamed__q & ((~in_arb & ~pb & ~cand_n) | (ev_stuff_rec & cand_n));
-        if (pec__q >= sat8) begin
-            pec_blamed = max8;
-        end
-        else begin
-            pec_blamed = pec__q + eight8;
-        end
-        bf_hit = blame & (pec_blamed >= bf_limit);
+        pec_blamed = pre_pec_b__q;
+        bf_hit = blame & pre_bf__q;
         rid_hit = ev_rid & rid_en & cand_n;
-        if (silent__q == max4) begin
-            silent_new = max4;
-        end
-        else begin
-            silent_new = silent__q + one4;
-        end
-        sr_hit = ev_ack & ~active_n & (sr_frames != zero4) & (silent_new >= sr_frames);
+        silent_new = pre_sil__q;
+        sr_hit = ev_ack & ~active_n & pre_sr__q;
         symptom = (~pb & b) | sd_hit | (ev_ack & ~active_n);
         if (symptom) begin
             rc_new = zero16;
         end
-        else if (restore_cnt__q == max16) begin
-            rc_new = max16;
-        end
         else begin
-            rc_new = restore_cnt__q + one16;
+            rc_new = pre_rc__q;
         end
         if (run) begin
             dom_run__d = dom_new;
@@ -5448,7 +6322,7 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                 end
                 if (ev_ack) begin
                     if (~blamed__q & (pec__q != zero8)) begin
-                        pec__d = pec__q - one8;
+                        pec__d = pre_pec_dec__q;
                     end
                     if (active_n) begin
                         silent__d = zero4;
@@ -5479,7 +6353,7 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                     silent__d = zero4;
                 end
             end
-            else if ((restore_bits != zero16) & (rc_new >= restore_bits)) begin
+            else if (~symptom & pre_rest__q) begin
                 rest_evt = 1'b1;
                 enabled_q__d = 1'b1;
                 if (restorations__q != max8) begin
@@ -5494,19 +6368,14 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         if (pb) begin
-            if (rrun__q == max4) begin
-                rrun_new = max4;
-            end
-            else begin
-                rrun_new = rrun__q + one4;
-            end
+            rrun_new = pre_rrun__q;
         end
         else begin
             rrun_new = zero4;
         end
         if (n_rrun & ~enabled_q__q) begin
             rrun__d = rrun_new;
-            if (rrun_new >= eleven4) begin
+            if (pb & pre_rrun11__q) begin
                 enabled_q__d = 1'b1;
                 pec__d = zero8;
                 silent__d = zero4;
@@ -5552,8 +6421,9 @@ module hub__node_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             iso_evt = 1'b0;
             rest_evt = 1'b0;
         end
-        enabled = enabled_q__q;
-        word = ((enabled_q__q) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
+        en_out = enabled_q__q | recouple;
+        enabled = en_out;
+        word = ((en_out) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
     end
     
 endmodule // hub__node_guards__0
@@ -5701,6 +6571,182 @@ module hub__node_guards__0__pec(d,q,clock);
     end
           
 endmodule // hub__node_guards__0__pec
+
+
+module hub__node_guards__0__pre_bf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_bf
+
+
+module hub__node_guards__0__pre_dom(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_dom
+
+
+module hub__node_guards__0__pre_pec_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_pec_b
+
+
+module hub__node_guards__0__pre_pec_dec(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_pec_dec
+
+
+module hub__node_guards__0__pre_rc(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_rc
+
+
+module hub__node_guards__0__pre_rest(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_rest
+
+
+module hub__node_guards__0__pre_rrun(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_rrun
+
+
+module hub__node_guards__0__pre_rrun11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_rrun11
+
+
+module hub__node_guards__0__pre_sd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_sd
+
+
+module hub__node_guards__0__pre_sil(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_sil
+
+
+module hub__node_guards__0__pre_sr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__0__pre_sr
 
 
 module hub__node_guards__0__restorations(d,q,clock);
@@ -5860,8 +6906,49 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  [3:0] rrun__d;
     wire  [3:0] rrun__q;
     reg  rrun__clock;
+    reg  [5:0] pre_dom__d;
+    wire  [5:0] pre_dom__q;
+    reg  pre_dom__clock;
+    reg  pre_sd__d;
+    wire  pre_sd__q;
+    reg  pre_sd__clock;
+    reg  [7:0] pre_pec_b__d;
+    wire  [7:0] pre_pec_b__q;
+    reg  pre_pec_b__clock;
+    reg  pre_bf__d;
+    wire  pre_bf__q;
+    reg  pre_bf__clock;
+    reg  [7:0] pre_pec_dec__d;
+    wire  [7:0] pre_pec_dec__q;
+    reg  pre_pec_dec__clock;
+    reg  [3:0] pre_sil__d;
+    wire  [3:0] pre_sil__q;
+    reg  pre_sil__clock;
+    reg  pre_sr__d;
+    wire  pre_sr__q;
+    reg  pre_sr__clock;
+    reg  [15:0] pre_rc__d;
+    wire  [15:0] pre_rc__q;
+    reg  pre_rc__clock;
+    reg  pre_rest__d;
+    wire  pre_rest__q;
+    reg  pre_rest__clock;
+    reg  [3:0] pre_rrun__d;
+    wire  [3:0] pre_rrun__q;
+    reg  pre_rrun__clock;
+    reg  pre_rrun11__d;
+    wire  pre_rrun11__q;
+    reg  pre_rrun11__clock;
     
     // Local signals
+    reg  [7:0] pec_eff;
+    reg  [3:0] sil_eff;
+    reg  [15:0] rc_eff;
+    reg  [5:0] dom_inc;
+    reg  [7:0] pec_inc;
+    reg  [3:0] sil_inc;
+    reg  [15:0] rc_inc;
+    reg  [3:0] rrun_inc;
     reg  run;
     reg  [5:0] dom_new;
     reg  sd_hit;
@@ -5877,6 +6964,7 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  symptom;
     reg  [15:0] rc_new;
     reg  [3:0] rrun_new;
+    reg  en_out;
     
     // Sub module instances
     hub__node_guards__1__enabled_q enabled_q(
@@ -5944,6 +7032,61 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         .q(rrun__q),
         .clock(rrun__clock)
     );
+    hub__node_guards__1__pre_dom pre_dom(
+        .d(pre_dom__d),
+        .q(pre_dom__q),
+        .clock(pre_dom__clock)
+    );
+    hub__node_guards__1__pre_sd pre_sd(
+        .d(pre_sd__d),
+        .q(pre_sd__q),
+        .clock(pre_sd__clock)
+    );
+    hub__node_guards__1__pre_pec_b pre_pec_b(
+        .d(pre_pec_b__d),
+        .q(pre_pec_b__q),
+        .clock(pre_pec_b__clock)
+    );
+    hub__node_guards__1__pre_bf pre_bf(
+        .d(pre_bf__d),
+        .q(pre_bf__q),
+        .clock(pre_bf__clock)
+    );
+    hub__node_guards__1__pre_pec_dec pre_pec_dec(
+        .d(pre_pec_dec__d),
+        .q(pre_pec_dec__q),
+        .clock(pre_pec_dec__clock)
+    );
+    hub__node_guards__1__pre_sil pre_sil(
+        .d(pre_sil__d),
+        .q(pre_sil__q),
+        .clock(pre_sil__clock)
+    );
+    hub__node_guards__1__pre_sr pre_sr(
+        .d(pre_sr__d),
+        .q(pre_sr__q),
+        .clock(pre_sr__clock)
+    );
+    hub__node_guards__1__pre_rc pre_rc(
+        .d(pre_rc__d),
+        .q(pre_rc__q),
+        .clock(pre_rc__clock)
+    );
+    hub__node_guards__1__pre_rest pre_rest(
+        .d(pre_rest__d),
+        .q(pre_rest__q),
+        .clock(pre_rest__clock)
+    );
+    hub__node_guards__1__pre_rrun pre_rrun(
+        .d(pre_rrun__d),
+        .q(pre_rrun__q),
+        .clock(pre_rrun__clock)
+    );
+    hub__node_guards__1__pre_rrun11 pre_rrun11(
+        .d(pre_rrun11__d),
+        .q(pre_rrun11__q),
+        .clock(pre_rrun11__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -5960,6 +7103,17 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__clock = clk;
         active__clock = clk;
         rrun__clock = clk;
+        pre_dom__clock = clk;
+        pre_sd__clock = clk;
+        pre_pec_b__clock = clk;
+        pre_bf__clock = clk;
+        pre_pec_dec__clock = clk;
+        pre_sil__clock = clk;
+        pre_sr__clock = clk;
+        pre_rc__clock = clk;
+        pre_rest__clock = clk;
+        pre_rrun__clock = clk;
+        pre_rrun11__clock = clk;
         enabled_q__d = enabled_q__q;
         kind__d = kind__q;
         pec__d = pec__q;
@@ -5973,19 +7127,81 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__d = blamed__q;
         active__d = active__q;
         rrun__d = rrun__q;
+        pre_dom__d = pre_dom__q;
+        pre_sd__d = pre_sd__q;
+        pre_pec_b__d = pre_pec_b__q;
+        pre_bf__d = pre_bf__q;
+        pre_pec_dec__d = pre_pec_dec__q;
+        pre_sil__d = pre_sil__q;
+        pre_sr__d = pre_sr__q;
+        pre_rc__d = pre_rc__q;
+        pre_rest__d = pre_rest__q;
+        pre_rrun__d = pre_rrun__q;
+        pre_rrun11__d = pre_rrun11__q;
         iso_evt = 1'b0;
         rest_evt = 1'b0;
         run = sample & ~freeze;
+        pec_eff = pec__q;
+        sil_eff = silent__q;
+        rc_eff = restore_cnt__q;
+        if (recouple) begin
+            pec_eff = zero8;
+            sil_eff = zero4;
+            rc_eff = zero16;
+        end
+        if (dom_run__q == max6) begin
+            dom_inc = max6;
+        end
+        else begin
+            dom_inc = dom_run__q + one6;
+        end
+        pre_dom__d = dom_inc;
+        pre_sd__d = dom_inc >= sd_limit;
+        if (pec_eff >= sat8) begin
+            pec_inc = max8;
+        end
+        else begin
+            pec_inc = pec_eff + eight8;
+        end
+        pre_pec_b__d = pec_inc;
+        pre_bf__d = pec_inc >= bf_limit;
+        pre_pec_dec__d = pec_eff - one8;
+        if (sil_eff == max4) begin
+            sil_inc = max4;
+        end
+        else begin
+            sil_inc = sil_eff + one4;
+        end
+        pre_sil__d = sil_inc;
+        pre_sr__d = (sr_frames != zero4) & (sil_inc >= sr_frames);
+        if (rc_eff == max16) begin
+            rc_inc = max16;
+        end
+        else begin
+            rc_inc = rc_eff + one16;
+        end
+        pre_rc__d = rc_inc;
+        pre_rest__d = (restore_bits != zero16) & (rc_inc >= restore_bits);
+        if (rrun__q == max4) begin
+            rrun_inc = max4;
+        end
+        else begin
+            rrun_inc = rrun__q + one4;
+        end
+        pre_rrun__d = rrun_inc;
+        pre_rrun11__d = rrun_inc >= eleven4;
         if (pb) begin
             dom_new = zero6;
         end
-        else if (dom_run__q == max6) begin
-            dom_new = max6;
+        else begin
+            dom_new = pre_dom__q;
+        end
+        if (pb) begin
+            sd_hit = sd_limit == zero6;
         end
         else begin
-            dom_new = dom_run__q + one6;
+            sd_hit = pre_sd__q;
         end
-        sd_hit = dom_new >= sd_limit;
         cand_n = cand__q;
         lost_n = lost__q;
         active_n = active__q;
@@ -6007,30 +7223,17 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         blame = ev_frame & ~blamed__q & ((~in_arb & ~pb & ~cand_n) | (ev_stuff_rec & cand_n));
-        if (pec__q >= sat8) begin
-            pec_blamed = max8;
-        end
-        else begin
-            pec_blamed = pec__q + eight8;
-        end
-        bf_hit = blame & (pec_blamed >= bf_limit);
+        pec_blamed = pre_pec_b__q;
+        bf_hit = blame & pre_bf__q;
         rid_hit = ev_rid & rid_en & cand_n;
-        if (silent__q == max4) begin
-            silent_new = max4;
-        end
-        else begin
-            silent_new = silent__q + one4;
-        end
-        sr_hit = ev_ack & ~active_n & (sr_frames != zero4) & (silent_new >= sr_frames);
+        silent_new = pre_sil__q;
+        sr_hit = ev_ack & ~active_n & pre_sr__q;
         symptom = (~pb & b) | sd_hit | (ev_ack & ~active_n);
         if (symptom) begin
             rc_new = zero16;
         end
-        else if (restore_cnt__q == max16) begin
-            rc_new = max16;
-        end
         else begin
-            rc_new = restore_cnt__q + one16;
+            rc_new = pre_rc__q;
         end
         if (run) begin
             dom_run__d = dom_new;
@@ -6047,7 +7250,7 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                 end
                 if (ev_ack) begin
                     if (~blamed__q & (pec__q != zero8)) begin
-                        pec__d = pec__q - one8;
+                        pec__d = pre_pec_dec__q;
                     end
                     if (active_n) begin
                         silent__d = zero4;
@@ -6078,7 +7281,7 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                     silent__d = zero4;
                 end
             end
-            else if ((restore_bits != zero16) & (rc_new >= restore_bits)) begin
+            else if (~symptom & pre_rest__q) begin
                 rest_evt = 1'b1;
                 enabled_q__d = 1'b1;
                 if (restorations__q != max8) begin
@@ -6093,19 +7296,14 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         if (pb) begin
-            if (rrun__q == max4) begin
-                rrun_new = max4;
-            end
-            else begin
-                rrun_new = rrun__q + one4;
-            end
+            rrun_new = pre_rrun__q;
         end
         else begin
             rrun_new = zero4;
         end
         if (n_rrun & ~enabled_q__q) begin
             rrun__d = rrun_new;
-            if (rrun_new >= eleven4) begin
+            if (pb & pre_rrun11__q) begin
                 enabled_q__d = 1'b1;
                 pec__d = zero8;
                 silent__d = zero4;
@@ -6151,8 +7349,9 @@ module hub__node_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             iso_evt = 1'b0;
             rest_evt = 1'b0;
         end
-        enabled = enabled_q__q;
-        word = ((enabled_q__q) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
+        en_out = enabled_q__q | recouple;
+        enabled = en_out;
+        word = ((en_out) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
     end
     
 endmodule // hub__node_guards__1
@@ -6300,6 +7499,182 @@ module hub__node_guards__1__pec(d,q,clock);
     end
           
 endmodule // hub__node_guards__1__pec
+
+
+module hub__node_guards__1__pre_bf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_bf
+
+
+module hub__node_guards__1__pre_dom(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_dom
+
+
+module hub__node_guards__1__pre_pec_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_pec_b
+
+
+module hub__node_guards__1__pre_pec_dec(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_pec_dec
+
+
+module hub__node_guards__1__pre_rc(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_rc
+
+
+module hub__node_guards__1__pre_rest(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_rest
+
+
+module hub__node_guards__1__pre_rrun(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_rrun
+
+
+module hub__node_guards__1__pre_rrun11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_rrun11
+
+
+module hub__node_guards__1__pre_sd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_sd
+
+
+module hub__node_guards__1__pre_sil(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_sil
+
+
+module hub__node_guards__1__pre_sr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__1__pre_sr
 
 
 module hub__node_guards__1__restorations(d,q,clock);
@@ -6459,8 +7834,49 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  [3:0] rrun__d;
     wire  [3:0] rrun__q;
     reg  rrun__clock;
+    reg  [5:0] pre_dom__d;
+    wire  [5:0] pre_dom__q;
+    reg  pre_dom__clock;
+    reg  pre_sd__d;
+    wire  pre_sd__q;
+    reg  pre_sd__clock;
+    reg  [7:0] pre_pec_b__d;
+    wire  [7:0] pre_pec_b__q;
+    reg  pre_pec_b__clock;
+    reg  pre_bf__d;
+    wire  pre_bf__q;
+    reg  pre_bf__clock;
+    reg  [7:0] pre_pec_dec__d;
+    wire  [7:0] pre_pec_dec__q;
+    reg  pre_pec_dec__clock;
+    reg  [3:0] pre_sil__d;
+    wire  [3:0] pre_sil__q;
+    reg  pre_sil__clock;
+    reg  pre_sr__d;
+    wire  pre_sr__q;
+    reg  pre_sr__clock;
+    reg  [15:0] pre_rc__d;
+    wire  [15:0] pre_rc__q;
+    reg  pre_rc__clock;
+    reg  pre_rest__d;
+    wire  pre_rest__q;
+    reg  pre_rest__clock;
+    reg  [3:0] pre_rrun__d;
+    wire  [3:0] pre_rrun__q;
+    reg  pre_rrun__clock;
+    reg  pre_rrun11__d;
+    wire  pre_rrun11__q;
+    reg  pre_rrun11__clock;
     
     // Local signals
+    reg  [7:0] pec_eff;
+    reg  [3:0] sil_eff;
+    reg  [15:0] rc_eff;
+    reg  [5:0] dom_inc;
+    reg  [7:0] pec_inc;
+    reg  [3:0] sil_inc;
+    reg  [15:0] rc_inc;
+    reg  [3:0] rrun_inc;
     reg  run;
     reg  [5:0] dom_new;
     reg  sd_hit;
@@ -6476,6 +7892,7 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  symptom;
     reg  [15:0] rc_new;
     reg  [3:0] rrun_new;
+    reg  en_out;
     
     // Sub module instances
     hub__node_guards__2__enabled_q enabled_q(
@@ -6543,6 +7960,61 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         .q(rrun__q),
         .clock(rrun__clock)
     );
+    hub__node_guards__2__pre_dom pre_dom(
+        .d(pre_dom__d),
+        .q(pre_dom__q),
+        .clock(pre_dom__clock)
+    );
+    hub__node_guards__2__pre_sd pre_sd(
+        .d(pre_sd__d),
+        .q(pre_sd__q),
+        .clock(pre_sd__clock)
+    );
+    hub__node_guards__2__pre_pec_b pre_pec_b(
+        .d(pre_pec_b__d),
+        .q(pre_pec_b__q),
+        .clock(pre_pec_b__clock)
+    );
+    hub__node_guards__2__pre_bf pre_bf(
+        .d(pre_bf__d),
+        .q(pre_bf__q),
+        .clock(pre_bf__clock)
+    );
+    hub__node_guards__2__pre_pec_dec pre_pec_dec(
+        .d(pre_pec_dec__d),
+        .q(pre_pec_dec__q),
+        .clock(pre_pec_dec__clock)
+    );
+    hub__node_guards__2__pre_sil pre_sil(
+        .d(pre_sil__d),
+        .q(pre_sil__q),
+        .clock(pre_sil__clock)
+    );
+    hub__node_guards__2__pre_sr pre_sr(
+        .d(pre_sr__d),
+        .q(pre_sr__q),
+        .clock(pre_sr__clock)
+    );
+    hub__node_guards__2__pre_rc pre_rc(
+        .d(pre_rc__d),
+        .q(pre_rc__q),
+        .clock(pre_rc__clock)
+    );
+    hub__node_guards__2__pre_rest pre_rest(
+        .d(pre_rest__d),
+        .q(pre_rest__q),
+        .clock(pre_rest__clock)
+    );
+    hub__node_guards__2__pre_rrun pre_rrun(
+        .d(pre_rrun__d),
+        .q(pre_rrun__q),
+        .clock(pre_rrun__clock)
+    );
+    hub__node_guards__2__pre_rrun11 pre_rrun11(
+        .d(pre_rrun11__d),
+        .q(pre_rrun11__q),
+        .clock(pre_rrun11__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -6559,6 +8031,17 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__clock = clk;
         active__clock = clk;
         rrun__clock = clk;
+        pre_dom__clock = clk;
+        pre_sd__clock = clk;
+        pre_pec_b__clock = clk;
+        pre_bf__clock = clk;
+        pre_pec_dec__clock = clk;
+        pre_sil__clock = clk;
+        pre_sr__clock = clk;
+        pre_rc__clock = clk;
+        pre_rest__clock = clk;
+        pre_rrun__clock = clk;
+        pre_rrun11__clock = clk;
         enabled_q__d = enabled_q__q;
         kind__d = kind__q;
         pec__d = pec__q;
@@ -6572,19 +8055,81 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__d = blamed__q;
         active__d = active__q;
         rrun__d = rrun__q;
+        pre_dom__d = pre_dom__q;
+        pre_sd__d = pre_sd__q;
+        pre_pec_b__d = pre_pec_b__q;
+        pre_bf__d = pre_bf__q;
+        pre_pec_dec__d = pre_pec_dec__q;
+        pre_sil__d = pre_sil__q;
+        pre_sr__d = pre_sr__q;
+        pre_rc__d = pre_rc__q;
+        pre_rest__d = pre_rest__q;
+        pre_rrun__d = pre_rrun__q;
+        pre_rrun11__d = pre_rrun11__q;
         iso_evt = 1'b0;
         rest_evt = 1'b0;
         run = sample & ~freeze;
+        pec_eff = pec__q;
+        sil_eff = silent__q;
+        rc_eff = restore_cnt__q;
+        if (recouple) begin
+            pec_eff = zero8;
+            sil_eff = zero4;
+            rc_eff = zero16;
+        end
+        if (dom_run__q == max6) begin
+            dom_inc = max6;
+        end
+        else begin
+            dom_inc = dom_run__q + one6;
+        end
+        pre_dom__d = dom_inc;
+        pre_sd__d = dom_inc >= sd_limit;
+        if (pec_eff >= sat8) begin
+            pec_inc = max8;
+        end
+        else begin
+            pec_inc = pec_eff + eight8;
+        end
+        pre_pec_b__d = pec_inc;
+        pre_bf__d = pec_inc >= bf_limit;
+        pre_pec_dec__d = pec_eff - one8;
+        if (sil_eff == max4) begin
+            sil_inc = max4;
+        end
+        else begin
+            sil_inc = sil_eff + one4;
+        end
+        pre_sil__d = sil_inc;
+        pre_sr__d = (sr_frames != zero4) & (sil_inc >= sr_frames);
+        if (rc_eff == max16) begin
+            rc_inc = max16;
+        end
+        else begin
+            rc_inc = rc_eff + one16;
+        end
+        pre_rc__d = rc_inc;
+        pre_rest__d = (restore_bits != zero16) & (rc_inc >= restore_bits);
+        if (rrun__q == max4) begin
+            rrun_inc = max4;
+        end
+        else begin
+            rrun_inc = rrun__q + one4;
+        end
+        pre_rrun__d = rrun_inc;
+        pre_rrun11__d = rrun_inc >= eleven4;
         if (pb) begin
             dom_new = zero6;
         end
-        else if (dom_run__q == max6) begin
-            dom_new = max6;
+        else begin
+            dom_new = pre_dom__q;
+        end
+        if (pb) begin
+            sd_hit = sd_limit == zero6;
         end
         else begin
-            dom_new = dom_run__q + one6;
+            sd_hit = pre_sd__q;
         end
-        sd_hit = dom_new >= sd_limit;
         cand_n = cand__q;
         lost_n = lost__q;
         active_n = active__q;
@@ -6606,30 +8151,17 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         blame = ev_frame & ~blamed__q & ((~in_arb & ~pb & ~cand_n) | (ev_stuff_rec & cand_n));
-        if (pec__q >= sat8) begin
-            pec_blamed = max8;
-        end
-        else begin
-            pec_blamed = pec__q + eight8;
-        end
-        bf_hit = blame & (pec_blamed >= bf_limit);
+        pec_blamed = pre_pec_b__q;
+        bf_hit = blame & pre_bf__q;
         rid_hit = ev_rid & rid_en & cand_n;
-        if (silent__q == max4) begin
-            silent_new = max4;
-        end
-        else begin
-            silent_new = silent__q + one4;
-        end
-        sr_hit = ev_ack & ~active_n & (sr_frames != zero4) & (silent_new >= sr_frames);
+        silent_new = pre_sil__q;
+        sr_hit = ev_ack & ~active_n & pre_sr__q;
         symptom = (~pb & b) | sd_hit | (ev_ack & ~active_n);
         if (symptom) begin
             rc_new = zero16;
         end
-        else if (restore_cnt__q == max16) begin
-            rc_new = max16;
-        end
         else begin
-            rc_new = restore_cnt__q + one16;
+            rc_new = pre_rc__q;
         end
         if (run) begin
             dom_run__d = dom_new;
@@ -6646,7 +8178,7 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                 end
                 if (ev_ack) begin
                     if (~blamed__q & (pec__q != zero8)) begin
-                        pec__d = pec__q - one8;
+                        pec__d = pre_pec_dec__q;
                     end
                     if (active_n) begin
                         silent__d = zero4;
@@ -6677,7 +8209,7 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                     silent__d = zero4;
                 end
             end
-            else if ((restore_bits != zero16) & (rc_new >= restore_bits)) begin
+            else if (~symptom & pre_rest__q) begin
                 rest_evt = 1'b1;
                 enabled_q__d = 1'b1;
                 if (restorations__q != max8) begin
@@ -6692,19 +8224,14 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         if (pb) begin
-            if (rrun__q == max4) begin
-                rrun_new = max4;
-            end
-            else begin
-                rrun_new = rrun__q + one4;
-            end
+            rrun_new = pre_rrun__q;
         end
         else begin
             rrun_new = zero4;
         end
         if (n_rrun & ~enabled_q__q) begin
             rrun__d = rrun_new;
-            if (rrun_new >= eleven4) begin
+            if (pb & pre_rrun11__q) begin
                 enabled_q__d = 1'b1;
                 pec__d = zero8;
                 silent__d = zero4;
@@ -6750,8 +8277,9 @@ module hub__node_guards__2(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             iso_evt = 1'b0;
             rest_evt = 1'b0;
         end
-        enabled = enabled_q__q;
-        word = ((enabled_q__q) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
+        en_out = enabled_q__q | recouple;
+        enabled = en_out;
+        word = ((en_out) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
     end
     
 endmodule // hub__node_guards__2
@@ -6899,6 +8427,182 @@ module hub__node_guards__2__pec(d,q,clock);
     end
           
 endmodule // hub__node_guards__2__pec
+
+
+module hub__node_guards__2__pre_bf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_bf
+
+
+module hub__node_guards__2__pre_dom(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_dom
+
+
+module hub__node_guards__2__pre_pec_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_pec_b
+
+
+module hub__node_guards__2__pre_pec_dec(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_pec_dec
+
+
+module hub__node_guards__2__pre_rc(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_rc
+
+
+module hub__node_guards__2__pre_rest(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_rest
+
+
+module hub__node_guards__2__pre_rrun(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_rrun
+
+
+module hub__node_guards__2__pre_rrun11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_rrun11
+
+
+module hub__node_guards__2__pre_sd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_sd
+
+
+module hub__node_guards__2__pre_sil(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_sil
+
+
+module hub__node_guards__2__pre_sr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__2__pre_sr
 
 
 module hub__node_guards__2__restorations(d,q,clock);
@@ -7058,8 +8762,49 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  [3:0] rrun__d;
     wire  [3:0] rrun__q;
     reg  rrun__clock;
+    reg  [5:0] pre_dom__d;
+    wire  [5:0] pre_dom__q;
+    reg  pre_dom__clock;
+    reg  pre_sd__d;
+    wire  pre_sd__q;
+    reg  pre_sd__clock;
+    reg  [7:0] pre_pec_b__d;
+    wire  [7:0] pre_pec_b__q;
+    reg  pre_pec_b__clock;
+    reg  pre_bf__d;
+    wire  pre_bf__q;
+    reg  pre_bf__clock;
+    reg  [7:0] pre_pec_dec__d;
+    wire  [7:0] pre_pec_dec__q;
+    reg  pre_pec_dec__clock;
+    reg  [3:0] pre_sil__d;
+    wire  [3:0] pre_sil__q;
+    reg  pre_sil__clock;
+    reg  pre_sr__d;
+    wire  pre_sr__q;
+    reg  pre_sr__clock;
+    reg  [15:0] pre_rc__d;
+    wire  [15:0] pre_rc__q;
+    reg  pre_rc__clock;
+    reg  pre_rest__d;
+    wire  pre_rest__q;
+    reg  pre_rest__clock;
+    reg  [3:0] pre_rrun__d;
+    wire  [3:0] pre_rrun__q;
+    reg  pre_rrun__clock;
+    reg  pre_rrun11__d;
+    wire  pre_rrun11__q;
+    reg  pre_rrun11__clock;
     
     // Local signals
+    reg  [7:0] pec_eff;
+    reg  [3:0] sil_eff;
+    reg  [15:0] rc_eff;
+    reg  [5:0] dom_inc;
+    reg  [7:0] pec_inc;
+    reg  [3:0] sil_inc;
+    reg  [15:0] rc_inc;
+    reg  [3:0] rrun_inc;
     reg  run;
     reg  [5:0] dom_new;
     reg  sd_hit;
@@ -7075,6 +8820,7 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
     reg  symptom;
     reg  [15:0] rc_new;
     reg  [3:0] rrun_new;
+    reg  en_out;
     
     // Sub module instances
     hub__node_guards__3__enabled_q enabled_q(
@@ -7142,6 +8888,61 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         .q(rrun__q),
         .clock(rrun__clock)
     );
+    hub__node_guards__3__pre_dom pre_dom(
+        .d(pre_dom__d),
+        .q(pre_dom__q),
+        .clock(pre_dom__clock)
+    );
+    hub__node_guards__3__pre_sd pre_sd(
+        .d(pre_sd__d),
+        .q(pre_sd__q),
+        .clock(pre_sd__clock)
+    );
+    hub__node_guards__3__pre_pec_b pre_pec_b(
+        .d(pre_pec_b__d),
+        .q(pre_pec_b__q),
+        .clock(pre_pec_b__clock)
+    );
+    hub__node_guards__3__pre_bf pre_bf(
+        .d(pre_bf__d),
+        .q(pre_bf__q),
+        .clock(pre_bf__clock)
+    );
+    hub__node_guards__3__pre_pec_dec pre_pec_dec(
+        .d(pre_pec_dec__d),
+        .q(pre_pec_dec__q),
+        .clock(pre_pec_dec__clock)
+    );
+    hub__node_guards__3__pre_sil pre_sil(
+        .d(pre_sil__d),
+        .q(pre_sil__q),
+        .clock(pre_sil__clock)
+    );
+    hub__node_guards__3__pre_sr pre_sr(
+        .d(pre_sr__d),
+        .q(pre_sr__q),
+        .clock(pre_sr__clock)
+    );
+    hub__node_guards__3__pre_rc pre_rc(
+        .d(pre_rc__d),
+        .q(pre_rc__q),
+        .clock(pre_rc__clock)
+    );
+    hub__node_guards__3__pre_rest pre_rest(
+        .d(pre_rest__d),
+        .q(pre_rest__q),
+        .clock(pre_rest__clock)
+    );
+    hub__node_guards__3__pre_rrun pre_rrun(
+        .d(pre_rrun__d),
+        .q(pre_rrun__q),
+        .clock(pre_rrun__clock)
+    );
+    hub__node_guards__3__pre_rrun11 pre_rrun11(
+        .d(pre_rrun11__d),
+        .q(pre_rrun11__q),
+        .clock(pre_rrun11__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -7158,6 +8959,17 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__clock = clk;
         active__clock = clk;
         rrun__clock = clk;
+        pre_dom__clock = clk;
+        pre_sd__clock = clk;
+        pre_pec_b__clock = clk;
+        pre_bf__clock = clk;
+        pre_pec_dec__clock = clk;
+        pre_sil__clock = clk;
+        pre_sr__clock = clk;
+        pre_rc__clock = clk;
+        pre_rest__clock = clk;
+        pre_rrun__clock = clk;
+        pre_rrun11__clock = clk;
         enabled_q__d = enabled_q__q;
         kind__d = kind__q;
         pec__d = pec__q;
@@ -7171,19 +8983,81 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
         blamed__d = blamed__q;
         active__d = active__q;
         rrun__d = rrun__q;
+        pre_dom__d = pre_dom__q;
+        pre_sd__d = pre_sd__q;
+        pre_pec_b__d = pre_pec_b__q;
+        pre_bf__d = pre_bf__q;
+        pre_pec_dec__d = pre_pec_dec__q;
+        pre_sil__d = pre_sil__q;
+        pre_sr__d = pre_sr__q;
+        pre_rc__d = pre_rc__q;
+        pre_rest__d = pre_rest__q;
+        pre_rrun__d = pre_rrun__q;
+        pre_rrun11__d = pre_rrun11__q;
         iso_evt = 1'b0;
         rest_evt = 1'b0;
         run = sample & ~freeze;
+        pec_eff = pec__q;
+        sil_eff = silent__q;
+        rc_eff = restore_cnt__q;
+        if (recouple) begin
+            pec_eff = zero8;
+            sil_eff = zero4;
+            rc_eff = zero16;
+        end
+        if (dom_run__q == max6) begin
+            dom_inc = max6;
+        end
+        else begin
+            dom_inc = dom_run__q + one6;
+        end
+        pre_dom__d = dom_inc;
+        pre_sd__d = dom_inc >= sd_limit;
+        if (pec_eff >= sat8) begin
+            pec_inc = max8;
+        end
+        else begin
+            pec_inc = pec_eff + eight8;
+        end
+        pre_pec_b__d = pec_inc;
+        pre_bf__d = pec_inc >= bf_limit;
+        pre_pec_dec__d = pec_eff - one8;
+        if (sil_eff == max4) begin
+            sil_inc = max4;
+        end
+        else begin
+            sil_inc = sil_eff + one4;
+        end
+        pre_sil__d = sil_inc;
+        pre_sr__d = (sr_frames != zero4) & (sil_inc >= sr_frames);
+        if (rc_eff == max16) begin
+            rc_inc = max16;
+        end
+        else begin
+            rc_inc = rc_eff + one16;
+        end
+        pre_rc__d = rc_inc;
+        pre_rest__d = (restore_bits != zero16) & (rc_inc >= restore_bits);
+        if (rrun__q == max4) begin
+            rrun_inc = max4;
+        end
+        else begin
+            rrun_inc = rrun__q + one4;
+        end
+        pre_rrun__d = rrun_inc;
+        pre_rrun11__d = rrun_inc >= eleven4;
         if (pb) begin
             dom_new = zero6;
         end
-        else if (dom_run__q == max6) begin
-            dom_new = max6;
+        else begin
+            dom_new = pre_dom__q;
+        end
+        if (pb) begin
+            sd_hit = sd_limit == zero6;
         end
         else begin
-            dom_new = dom_run__q + one6;
+            sd_hit = pre_sd__q;
         end
-        sd_hit = dom_new >= sd_limit;
         cand_n = cand__q;
         lost_n = lost__q;
         active_n = active__q;
@@ -7205,30 +9079,17 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         blame = ev_frame & ~blamed__q & ((~in_arb & ~pb & ~cand_n) | (ev_stuff_rec & cand_n));
-        if (pec__q >= sat8) begin
-            pec_blamed = max8;
-        end
-        else begin
-            pec_blamed = pec__q + eight8;
-        end
-        bf_hit = blame & (pec_blamed >= bf_limit);
+        pec_blamed = pre_pec_b__q;
+        bf_hit = blame & pre_bf__q;
         rid_hit = ev_rid & rid_en & cand_n;
-        if (silent__q == max4) begin
-            silent_new = max4;
-        end
-        else begin
-            silent_new = silent__q + one4;
-        end
-        sr_hit = ev_ack & ~active_n & (sr_frames != zero4) & (silent_new >= sr_frames);
+        silent_new = pre_sil__q;
+        sr_hit = ev_ack & ~active_n & pre_sr__q;
         symptom = (~pb & b) | sd_hit | (ev_ack & ~active_n);
         if (symptom) begin
             rc_new = zero16;
         end
-        else if (restore_cnt__q == max16) begin
-            rc_new = max16;
-        end
         else begin
-            rc_new = restore_cnt__q + one16;
+            rc_new = pre_rc__q;
         end
         if (run) begin
             dom_run__d = dom_new;
@@ -7245,7 +9106,7 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                 end
                 if (ev_ack) begin
                     if (~blamed__q & (pec__q != zero8)) begin
-                        pec__d = pec__q - one8;
+                        pec__d = pre_pec_dec__q;
                     end
                     if (active_n) begin
                         silent__d = zero4;
@@ -7276,7 +9137,7 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
                     silent__d = zero4;
                 end
             end
-            else if ((restore_bits != zero16) & (rc_new >= restore_bits)) begin
+            else if (~symptom & pre_rest__q) begin
                 rest_evt = 1'b1;
                 enabled_q__d = 1'b1;
                 if (restorations__q != max8) begin
@@ -7291,19 +9152,14 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             end
         end
         if (pb) begin
-            if (rrun__q == max4) begin
-                rrun_new = max4;
-            end
-            else begin
-                rrun_new = rrun__q + one4;
-            end
+            rrun_new = pre_rrun__q;
         end
         else begin
             rrun_new = zero4;
         end
         if (n_rrun & ~enabled_q__q) begin
             rrun__d = rrun_new;
-            if (rrun_new >= eleven4) begin
+            if (pb & pre_rrun11__q) begin
                 enabled_q__d = 1'b1;
                 pec__d = zero8;
                 silent__d = zero4;
@@ -7349,8 +9205,9 @@ module hub__node_guards__3(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_
             iso_evt = 1'b0;
             rest_evt = 1'b0;
         end
-        enabled = enabled_q__q;
-        word = ((enabled_q__q) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
+        en_out = enabled_q__q | recouple;
+        enabled = en_out;
+        word = ((en_out) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
     end
     
 endmodule // hub__node_guards__3
@@ -7500,6 +9357,182 @@ module hub__node_guards__3__pec(d,q,clock);
 endmodule // hub__node_guards__3__pec
 
 
+module hub__node_guards__3__pre_bf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_bf
+
+
+module hub__node_guards__3__pre_dom(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_dom
+
+
+module hub__node_guards__3__pre_pec_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_pec_b
+
+
+module hub__node_guards__3__pre_pec_dec(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_pec_dec
+
+
+module hub__node_guards__3__pre_rc(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_rc
+
+
+module hub__node_guards__3__pre_rest(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_rest
+
+
+module hub__node_guards__3__pre_rrun(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_rrun
+
+
+module hub__node_guards__3__pre_rrun11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_rrun11
+
+
+module hub__node_guards__3__pre_sd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_sd
+
+
+module hub__node_guards__3__pre_sil(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_sil
+
+
+module hub__node_guards__3__pre_sr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__node_guards__3__pre_sr
+
+
 module hub__node_guards__3__restorations(d,q,clock);
     
     // Module arguments
@@ -7637,6 +9670,34 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
     localparam  max16 = 16'hffff;
     
     // Stub signals
+    reg  ahead__clk;
+    reg  [15:0] ahead__nt;
+    reg  [3:0] ahead__ncnt;
+    reg  [4:0] ahead__unacked;
+    reg  ahead__clear;
+    reg  [9:0] ahead__force_bits;
+    reg  [15:0] ahead__srp_bits;
+    reg  [15:0] ahead__nrp_bits;
+    reg  [15:0] ahead__ddsp_bits;
+    reg  [3:0] ahead__srp_pairs;
+    reg  [3:0] ahead__nrp_pairs;
+    reg  [3:0] ahead__ddsp_frames;
+    reg  [4:0] ahead__block_frames;
+    wire  [15:0] ahead__nt_inc;
+    wire  ahead__nt_force;
+    wire  ahead__nt_srp;
+    wire  ahead__nt_nrp;
+    wire  ahead__nt_ddsp;
+    wire  [3:0] ahead__ncnt_inc;
+    wire  ahead__srp0;
+    wire  ahead__srp1;
+    wire  ahead__nrp0;
+    wire  ahead__nrp1;
+    wire  ahead__ddsp0;
+    wire  ahead__ddsp1;
+    wire  [4:0] ahead__un_inc;
+    wire  ahead__blk0;
+    wire  ahead__blk1;
     reg  [2:0] nrap_q__d;
     wire  [2:0] nrap_q__q;
     reg  nrap_q__clock;
@@ -7686,8 +9747,40 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
     reg  next_active;
     reg  [1:0] last_new;
     reg  half_join;
+    reg  blocked;
+    reg  chg;
     
     // Sub module instances
+    hub__nrap__ahead ahead(
+        .clk(ahead__clk),
+        .nt(ahead__nt),
+        .ncnt(ahead__ncnt),
+        .unacked(ahead__unacked),
+        .clear(ahead__clear),
+        .force_bits(ahead__force_bits),
+        .srp_bits(ahead__srp_bits),
+        .nrp_bits(ahead__nrp_bits),
+        .ddsp_bits(ahead__ddsp_bits),
+        .srp_pairs(ahead__srp_pairs),
+        .nrp_pairs(ahead__nrp_pairs),
+        .ddsp_frames(ahead__ddsp_frames),
+        .block_frames(ahead__block_frames),
+        .nt_inc(ahead__nt_inc),
+        .nt_force(ahead__nt_force),
+        .nt_srp(ahead__nt_srp),
+        .nt_nrp(ahead__nt_nrp),
+        .nt_ddsp(ahead__nt_ddsp),
+        .ncnt_inc(ahead__ncnt_inc),
+        .srp0(ahead__srp0),
+        .srp1(ahead__srp1),
+        .nrp0(ahead__nrp0),
+        .nrp1(ahead__nrp1),
+        .ddsp0(ahead__ddsp0),
+        .ddsp1(ahead__ddsp1),
+        .un_inc(ahead__un_inc),
+        .blk0(ahead__blk0),
+        .blk1(ahead__blk1)
+    );
     hub__nrap__nrap_q nrap_q(
         .d(nrap_q__d),
         .q(nrap_q__q),
@@ -7755,19 +9848,35 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
         st_send = nrap_q__q == ph_send;
         is_active = st_srp_force | st_exchange | st_nrp | st_ddsp_force | st_send;
         go = st_run & nrap_on & ~decoupled;
-        if (nt__q == max16) begin
-            nt_new = max16;
+        ahead__clk = clk;
+        ahead__nt = nt__q;
+        ahead__ncnt = ncnt__q;
+        ahead__unacked = unacked__q;
+        if (cmd_run) begin
+            ahead__clear = ~st_run;
         end
         else begin
-            nt_new = nt__q + one16;
+            ahead__clear = cmd_split & nrap_on & (nrap_q__q != ph_split);
         end
+        ahead__force_bits = force_bits;
+        ahead__srp_bits = srp_bits;
+        ahead__nrp_bits = nrp_bits;
+        ahead__ddsp_bits = ddsp_bits;
+        ahead__srp_pairs = srp_pairs;
+        ahead__nrp_pairs = nrp_pairs;
+        ahead__ddsp_frames = ddsp_frames;
+        ahead__block_frames = block_frames;
+        nt_new = ahead__nt_inc;
         unacked_new = unacked__q;
+        blocked = ahead__blk0;
         if (ev_delim) begin
             if (b) begin
                 unacked_new = zero5;
+                blocked = 1'b0;
             end
-            else if (unacked__q != max5) begin
-                unacked_new = unacked__q + one5;
+            else begin
+                unacked_new = ahead__un_inc;
+                blocked = ahead__blk1;
             end
         end
         ack_own = ev_ack & own_frame;
@@ -7800,13 +9909,14 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
             end
         end
         inc = (pairs & ack_b & ackd & half__q) | (st_send & ack_own & ~b);
-        if (inc & (ncnt__q != max4)) begin
-            ncnt_new = ncnt__q + one4;
+        if (inc) begin
+            ncnt_new = ahead__ncnt_inc;
         end
         else begin
             ncnt_new = ncnt__q;
         end
         next = nrap_q__q;
+        chg = 1'b0;
         last_new = last__q;
         set_decoupled = 1'b0;
         p_exchange = 1'b0;
@@ -7825,70 +9935,81 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
         end
         if (sample) begin
             if (st_run) begin
-                if (go & (~any_sub_en | ((block_frames != zero5) & (unacked_new >= block_frames)))) begin
+                if (go & (~any_sub_en | blocked)) begin
                     next = ph_srp_force;
+                    chg = 1'b1;
                     last_new = last_none;
                 end
                 else if (go & ack_twin) begin
                     next = ph_exchange;
+                    chg = 1'b1;
                     last_new = last_twin;
                     half_join = is_b & ~b;
                     p_join = 1'b1;
                 end
             end
             else if (st_srp_force) begin
-                if (nt_new >= ((force_bits) & 16'hffff)) begin
+                if (ahead__nt_force) begin
                     next = ph_exchange;
+                    chg = 1'b1;
                     p_off_sub = 1'b1;
                 end
             end
             else if (st_exchange) begin
                 p_exchange = 1'b1;
-                if (ncnt_new >= srp_pairs) begin
+                if ((inc & ahead__srp1) | (~inc & ahead__srp0)) begin
                     next = ph_nrp;
+                    chg = 1'b1;
                     p_enable = 1'b1;
                 end
-                else if (nt_new >= srp_bits) begin
+                else if (ahead__nt_srp) begin
                     next = ph_ddsp_force;
+                    chg = 1'b1;
                     set_decoupled = 1'b1;
                     p_off_sub = 1'b1;
                 end
             end
             else if (st_nrp) begin
                 p_watch = in_id;
-                if (ncnt_new >= nrp_pairs) begin
+                if ((inc & ahead__nrp1) | (~inc & ahead__nrp0)) begin
                     next = ph_run;
+                    chg = 1'b1;
                 end
-                else if (nt_new >= nrp_bits) begin
+                else if (ahead__nt_nrp) begin
                     next = ph_ddsp_force;
+                    chg = 1'b1;
                     set_decoupled = 1'b1;
                     p_off_sub = 1'b1;
                 end
             end
             else if (st_ddsp_force) begin
-                if (nt_new >= ((force_bits) & 16'hffff)) begin
+                if (ahead__nt_force) begin
                     next = ph_send;
+                    chg = 1'b1;
                     p_enable = 1'b1;
                 end
             end
             else if (st_send) begin
                 p_watch = in_id;
-                if ((ncnt_new >= ddsp_frames) | (nt_new >= ddsp_bits)) begin
+                if ((inc & ahead__ddsp1) | (~inc & ahead__ddsp0) | ahead__nt_ddsp) begin
                     next = ph_split;
+                    chg = 1'b1;
                 end
             end
         end
         if (cmd_run) begin
             next = ph_run;
+            chg = ~st_run;
         end
         else if (cmd_split & nrap_on) begin
             next = ph_split;
+            chg = nrap_q__q != ph_split;
         end
         next_active = (next != ph_run) & (next != ph_split);
         nrap_q__d = next;
         last__d = last_new;
         unacked__d = unacked_new;
-        ev_phase = next != nrap_q__q;
+        ev_phase = chg;
         if (ev_phase) begin
             nt__d = zero16;
             ncnt__d = zero4;
@@ -7939,6 +10060,818 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
     end
     
 endmodule // hub__nrap
+
+
+module hub__nrap__ahead(clk,nt,ncnt,unacked,clear,force_bits,srp_bits,nrp_bits,ddsp_bits,srp_pairs,nrp_pairs,ddsp_frames,block_frames,nt_inc,nt_force,nt_srp,nt_nrp,nt_ddsp,ncnt_inc,srp0,srp1,nrp0,nrp1,ddsp0,ddsp1,un_inc,blk0,blk1);
+    
+    // Module arguments
+    input wire  clk;
+    input wire  [15:0] nt;
+    input wire  [3:0] ncnt;
+    input wire  [4:0] unacked;
+    input wire  clear;
+    input wire  [9:0] force_bits;
+    input wire  [15:0] srp_bits;
+    input wire  [15:0] nrp_bits;
+    input wire  [15:0] ddsp_bits;
+    input wire  [3:0] srp_pairs;
+    input wire  [3:0] nrp_pairs;
+    input wire  [3:0] ddsp_frames;
+    input wire  [4:0] block_frames;
+    output reg  [15:0] nt_inc;
+    output reg  nt_force;
+    output reg  nt_srp;
+    output reg  nt_nrp;
+    output reg  nt_ddsp;
+    output reg  [3:0] ncnt_inc;
+    output reg  srp0;
+    output reg  srp1;
+    output reg  nrp0;
+    output reg  nrp1;
+    output reg  ddsp0;
+    output reg  ddsp1;
+    output reg  [4:0] un_inc;
+    output reg  blk0;
+    output reg  blk1;
+    
+    // Constant declarations
+    localparam  zero4 = 4'h0;
+    localparam  one4 = 4'h1;
+    localparam  max4 = 4'hf;
+    localparam  zero5 = 5'b0;
+    localparam  one5 = 5'b1;
+    localparam  max5 = 5'b11111;
+    localparam  zero16 = 16'h0;
+    localparam  one16 = 16'h1;
+    localparam  max16 = 16'hffff;
+    
+    // Stub signals
+    reg  [15:0] nt_inc_q__d;
+    wire  [15:0] nt_inc_q__q;
+    reg  nt_inc_q__clock;
+    reg  nt_force_q__d;
+    wire  nt_force_q__q;
+    reg  nt_force_q__clock;
+    reg  nt_srp_q__d;
+    wire  nt_srp_q__q;
+    reg  nt_srp_q__clock;
+    reg  nt_nrp_q__d;
+    wire  nt_nrp_q__q;
+    reg  nt_nrp_q__clock;
+    reg  nt_ddsp_q__d;
+    wire  nt_ddsp_q__q;
+    reg  nt_ddsp_q__clock;
+    reg  [3:0] ncnt_inc_q__d;
+    wire  [3:0] ncnt_inc_q__q;
+    reg  ncnt_inc_q__clock;
+    reg  srp0_q__d;
+    wire  srp0_q__q;
+    reg  srp0_q__clock;
+    reg  srp1_q__d;
+    wire  srp1_q__q;
+    reg  srp1_q__clock;
+    reg  nrp0_q__d;
+    wire  nrp0_q__q;
+    reg  nrp0_q__clock;
+    reg  nrp1_q__d;
+    wire  nrp1_q__q;
+    reg  nrp1_q__clock;
+    reg  ddsp0_q__d;
+    wire  ddsp0_q__q;
+    reg  ddsp0_q__clock;
+    reg  ddsp1_q__d;
+    wire  ddsp1_q__q;
+    reg  ddsp1_q__clock;
+    reg  [4:0] un_inc_q__d;
+    wire  [4:0] un_inc_q__q;
+    reg  un_inc_q__clock;
+    reg  blk0_q__d;
+    wire  blk0_q__q;
+    reg  blk0_q__clock;
+    reg  blk1_q__d;
+    wire  blk1_q__q;
+    reg  blk1_q__clock;
+    reg  clear_q__d;
+    wire  clear_q__q;
+    reg  clear_q__clock;
+    reg  c_force__d;
+    wire  c_force__q;
+    reg  c_force__clock;
+    reg  c_srp__d;
+    wire  c_srp__q;
+    reg  c_srp__clock;
+    reg  c_nrp__d;
+    wire  c_nrp__q;
+    reg  c_nrp__clock;
+    reg  c_ddsp__d;
+    wire  c_ddsp__q;
+    reg  c_ddsp__clock;
+    reg  c_srp0__d;
+    wire  c_srp0__q;
+    reg  c_srp0__clock;
+    reg  c_srp1__d;
+    wire  c_srp1__q;
+    reg  c_srp1__clock;
+    reg  c_nrp0__d;
+    wire  c_nrp0__q;
+    reg  c_nrp0__clock;
+    reg  c_nrp1__d;
+    wire  c_nrp1__q;
+    reg  c_nrp1__clock;
+    reg  c_ddsp0__d;
+    wire  c_ddsp0__q;
+    reg  c_ddsp0__clock;
+    reg  c_ddsp1__d;
+    wire  c_ddsp1__q;
+    reg  c_ddsp1__clock;
+    
+    // Local signals
+    reg  [15:0] nt_n;
+    reg  [3:0] ncnt_n;
+    reg  [4:0] un_n;
+    reg  blk_on;
+    
+    // Sub module instances
+    hub__nrap__ahead__nt_inc_q nt_inc_q(
+        .d(nt_inc_q__d),
+        .q(nt_inc_q__q),
+        .clock(nt_inc_q__clock)
+    );
+    hub__nrap__ahead__nt_force_q nt_force_q(
+        .d(nt_force_q__d),
+        .q(nt_force_q__q),
+        .clock(nt_force_q__clock)
+    );
+    hub__nrap__ahead__nt_srp_q nt_srp_q(
+        .d(nt_srp_q__d),
+        .q(nt_srp_q__q),
+        .clock(nt_srp_q__clock)
+    );
+    hub__nrap__ahead__nt_nrp_q nt_nrp_q(
+        .d(nt_nrp_q__d),
+        .q(nt_nrp_q__q),
+        .clock(nt_nrp_q__clock)
+    );
+    hub__nrap__ahead__nt_ddsp_q nt_ddsp_q(
+        .d(nt_ddsp_q__d),
+        .q(nt_ddsp_q__q),
+        .clock(nt_ddsp_q__clock)
+    );
+    hub__nrap__ahead__ncnt_inc_q ncnt_inc_q(
+        .d(ncnt_inc_q__d),
+        .q(ncnt_inc_q__q),
+        .clock(ncnt_inc_q__clock)
+    );
+    hub__nrap__ahead__srp0_q srp0_q(
+        .d(srp0_q__d),
+        .q(srp0_q__q),
+        .clock(srp0_q__clock)
+    );
+    hub__nrap__ahead__srp1_q srp1_q(
+        .d(srp1_q__d),
+        .q(srp1_q__q),
+        .clock(srp1_q__clock)
+    );
+    hub__nrap__ahead__nrp0_q nrp0_q(
+        .d(nrp0_q__d),
+        .q(nrp0_q__q),
+        .clock(nrp0_q__clock)
+    );
+    hub__nrap__ahead__nrp1_q nrp1_q(
+        .d(nrp1_q__d),
+        .q(nrp1_q__q),
+        .clock(nrp1_q__clock)
+    );
+    hub__nrap__ahead__ddsp0_q ddsp0_q(
+        .d(ddsp0_q__d),
+        .q(ddsp0_q__q),
+        .clock(ddsp0_q__clock)
+    );
+    hub__nrap__ahead__ddsp1_q ddsp1_q(
+        .d(ddsp1_q__d),
+        .q(ddsp1_q__q),
+        .clock(ddsp1_q__clock)
+    );
+    hub__nrap__ahead__un_inc_q un_inc_q(
+        .d(un_inc_q__d),
+        .q(un_inc_q__q),
+        .clock(un_inc_q__clock)
+    );
+    hub__nrap__ahead__blk0_q blk0_q(
+        .d(blk0_q__d),
+        .q(blk0_q__q),
+        .clock(blk0_q__clock)
+    );
+    hub__nrap__ahead__blk1_q blk1_q(
+        .d(blk1_q__d),
+        .q(blk1_q__q),
+        .clock(blk1_q__clock)
+    );
+    hub__nrap__ahead__clear_q clear_q(
+        .d(clear_q__d),
+        .q(clear_q__q),
+        .clock(clear_q__clock)
+    );
+    hub__nrap__ahead__c_force c_force(
+        .d(c_force__d),
+        .q(c_force__q),
+        .clock(c_force__clock)
+    );
+    hub__nrap__ahead__c_srp c_srp(
+        .d(c_srp__d),
+        .q(c_srp__q),
+        .clock(c_srp__clock)
+    );
+    hub__nrap__ahead__c_nrp c_nrp(
+        .d(c_nrp__d),
+        .q(c_nrp__q),
+        .clock(c_nrp__clock)
+    );
+    hub__nrap__ahead__c_ddsp c_ddsp(
+        .d(c_ddsp__d),
+        .q(c_ddsp__q),
+        .clock(c_ddsp__clock)
+    );
+    hub__nrap__ahead__c_srp0 c_srp0(
+        .d(c_srp0__d),
+        .q(c_srp0__q),
+        .clock(c_srp0__clock)
+    );
+    hub__nrap__ahead__c_srp1 c_srp1(
+        .d(c_srp1__d),
+        .q(c_srp1__q),
+        .clock(c_srp1__clock)
+    );
+    hub__nrap__ahead__c_nrp0 c_nrp0(
+        .d(c_nrp0__d),
+        .q(c_nrp0__q),
+        .clock(c_nrp0__clock)
+    );
+    hub__nrap__ahead__c_nrp1 c_nrp1(
+        .d(c_nrp1__d),
+        .q(c_nrp1__q),
+        .clock(c_nrp1__clock)
+    );
+    hub__nrap__ahead__c_ddsp0 c_ddsp0(
+        .d(c_ddsp0__d),
+        .q(c_ddsp0__q),
+        .clock(c_ddsp0__clock)
+    );
+    hub__nrap__ahead__c_ddsp1 c_ddsp1(
+        .d(c_ddsp1__d),
+        .q(c_ddsp1__q),
+        .clock(c_ddsp1__clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        nt_inc_q__clock = clk;
+        nt_force_q__clock = clk;
+        nt_srp_q__clock = clk;
+        nt_nrp_q__clock = clk;
+        nt_ddsp_q__clock = clk;
+        ncnt_inc_q__clock = clk;
+        srp0_q__clock = clk;
+        srp1_q__clock = clk;
+        nrp0_q__clock = clk;
+        nrp1_q__clock = clk;
+        ddsp0_q__clock = clk;
+        ddsp1_q__clock = clk;
+        un_inc_q__clock = clk;
+        blk0_q__clock = clk;
+        blk1_q__clock = clk;
+        clear_q__clock = clk;
+        c_force__clock = clk;
+        c_srp__clock = clk;
+        c_nrp__clock = clk;
+        c_ddsp__clock = clk;
+        c_srp0__clock = clk;
+        c_srp1__clock = clk;
+        c_nrp0__clock = clk;
+        c_nrp1__clock = clk;
+        c_ddsp0__clock = clk;
+        c_ddsp1__clock = clk;
+        nt_inc_q__d = nt_inc_q__q;
+        nt_force_q__d = nt_force_q__q;
+        nt_srp_q__d = nt_srp_q__q;
+        nt_nrp_q__d = nt_nrp_q__q;
+        nt_ddsp_q__d = nt_ddsp_q__q;
+        ncnt_inc_q__d = ncnt_inc_q__q;
+        srp0_q__d = srp0_q__q;
+        srp1_q__d = srp1_q__q;
+        nrp0_q__d = nrp0_q__q;
+        nrp1_q__d = nrp1_q__q;
+        ddsp0_q__d = ddsp0_q__q;
+        ddsp1_q__d = ddsp1_q__q;
+        un_inc_q__d = un_inc_q__q;
+        blk0_q__d = blk0_q__q;
+        blk1_q__d = blk1_q__q;
+        clear_q__d = clear_q__q;
+        c_force__d = c_force__q;
+        c_srp__d = c_srp__q;
+        c_nrp__d = c_nrp__q;
+        c_ddsp__d = c_ddsp__q;
+        c_srp0__d = c_srp0__q;
+        c_srp1__d = c_srp1__q;
+        c_nrp0__d = c_nrp0__q;
+        c_nrp1__d = c_nrp1__q;
+        c_ddsp0__d = c_ddsp0__q;
+        c_ddsp1__d = c_ddsp1__q;
+        clear_q__d = clear;
+        c_force__d = one16 >= ((force_bits) & 16'hffff);
+        c_srp__d = one16 >= srp_bits;
+        c_nrp__d = one16 >= nrp_bits;
+        c_ddsp__d = one16 >= ddsp_bits;
+        c_srp0__d = srp_pairs == zero4;
+        c_srp1__d = one4 >= srp_pairs;
+        c_nrp0__d = nrp_pairs == zero4;
+        c_nrp1__d = one4 >= nrp_pairs;
+        c_ddsp0__d = ddsp_frames == zero4;
+        c_ddsp1__d = one4 >= ddsp_frames;
+        if (nt == max16) begin
+            nt_n = max16;
+        end
+        else begin
+            nt_n = nt + one16;
+        end
+        nt_inc_q__d = nt_n;
+        nt_force_q__d = nt_n >= ((force_bits) & 16'hffff);
+        nt_srp_q__d = nt_n >= srp_bits;
+        nt_nrp_q__d = nt_n >= nrp_bits;
+        nt_ddsp_q__d = nt_n >= ddsp_bits;
+        if (ncnt == max4) begin
+            ncnt_n = max4;
+        end
+        else begin
+            ncnt_n = ncnt + one4;
+        end
+        ncnt_inc_q__d = ncnt_n;
+        srp0_q__d = ncnt >= srp_pairs;
+        srp1_q__d = ncnt_n >= srp_pairs;
+        nrp0_q__d = ncnt >= nrp_pairs;
+        nrp1_q__d = ncnt_n >= nrp_pairs;
+        ddsp0_q__d = ncnt >= ddsp_frames;
+        ddsp1_q__d = ncnt_n >= ddsp_frames;
+        if (unacked == max5) begin
+            un_n = max5;
+        end
+        else begin
+            un_n = unacked + one5;
+        end
+        un_inc_q__d = un_n;
+        blk_on = block_frames != zero5;
+        blk0_q__d = blk_on & (unacked >= block_frames);
+        blk1_q__d = blk_on & (un_n >= block_frames);
+        if (clear_q__q) begin
+            nt_inc = one16;
+            nt_force = c_force__q;
+            nt_srp = c_srp__q;
+            nt_nrp = c_nrp__q;
+            nt_ddsp = c_ddsp__q;
+            ncnt_inc = one4;
+            srp0 = c_srp0__q;
+            srp1 = c_srp1__q;
+            nrp0 = c_nrp0__q;
+            nrp1 = c_nrp1__q;
+            ddsp0 = c_ddsp0__q;
+            ddsp1 = c_ddsp1__q;
+        end
+        else begin
+            nt_inc = nt_inc_q__q;
+            nt_force = nt_force_q__q;
+            nt_srp = nt_srp_q__q;
+            nt_nrp = nt_nrp_q__q;
+            nt_ddsp = nt_ddsp_q__q;
+            ncnt_inc = ncnt_inc_q__q;
+            srp0 = srp0_q__q;
+            srp1 = srp1_q__q;
+            nrp0 = nrp0_q__q;
+            nrp1 = nrp1_q__q;
+            ddsp0 = ddsp0_q__q;
+            ddsp1 = ddsp1_q__q;
+        end
+        un_inc = un_inc_q__q;
+        blk0 = blk0_q__q;
+        blk1 = blk1_q__q;
+    end
+    
+endmodule // hub__nrap__ahead
+
+
+module hub__nrap__ahead__blk0_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__blk0_q
+
+
+module hub__nrap__ahead__blk1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__blk1_q
+
+
+module hub__nrap__ahead__c_ddsp(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_ddsp
+
+
+module hub__nrap__ahead__c_ddsp0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_ddsp0
+
+
+module hub__nrap__ahead__c_ddsp1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_ddsp1
+
+
+module hub__nrap__ahead__c_force(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_force
+
+
+module hub__nrap__ahead__c_nrp(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_nrp
+
+
+module hub__nrap__ahead__c_nrp0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_nrp0
+
+
+module hub__nrap__ahead__c_nrp1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_nrp1
+
+
+module hub__nrap__ahead__c_srp(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_srp
+
+
+module hub__nrap__ahead__c_srp0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_srp0
+
+
+module hub__nrap__ahead__c_srp1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__c_srp1
+
+
+module hub__nrap__ahead__clear_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__clear_q
+
+
+module hub__nrap__ahead__ddsp0_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__ddsp0_q
+
+
+module hub__nrap__ahead__ddsp1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__ddsp1_q
+
+
+module hub__nrap__ahead__ncnt_inc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__ncnt_inc_q
+
+
+module hub__nrap__ahead__nrp0_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__nrp0_q
+
+
+module hub__nrap__ahead__nrp1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__nrp1_q
+
+
+module hub__nrap__ahead__nt_ddsp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__nt_ddsp_q
+
+
+module hub__nrap__ahead__nt_force_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__nt_force_q
+
+
+module hub__nrap__ahead__nt_inc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__nt_inc_q
+
+
+module hub__nrap__ahead__nt_nrp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__nt_nrp_q
+
+
+module hub__nrap__ahead__nt_srp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__nt_srp_q
+
+
+module hub__nrap__ahead__srp0_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__srp0_q
+
+
+module hub__nrap__ahead__srp1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__srp1_q
+
+
+module hub__nrap__ahead__un_inc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__nrap__ahead__un_inc_q
 
 
 module hub__nrap__half(d,q,clock);
@@ -8833,8 +11766,49 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
     reg  [3:0] rrun__d;
     wire  [3:0] rrun__q;
     reg  rrun__clock;
+    reg  [5:0] pre_dom__d;
+    wire  [5:0] pre_dom__q;
+    reg  pre_dom__clock;
+    reg  pre_sd__d;
+    wire  pre_sd__q;
+    reg  pre_sd__clock;
+    reg  [7:0] pre_pec_b__d;
+    wire  [7:0] pre_pec_b__q;
+    reg  pre_pec_b__clock;
+    reg  pre_bf__d;
+    wire  pre_bf__q;
+    reg  pre_bf__clock;
+    reg  [7:0] pre_pec_dec__d;
+    wire  [7:0] pre_pec_dec__q;
+    reg  pre_pec_dec__clock;
+    reg  [3:0] pre_sil__d;
+    wire  [3:0] pre_sil__q;
+    reg  pre_sil__clock;
+    reg  pre_sr__d;
+    wire  pre_sr__q;
+    reg  pre_sr__clock;
+    reg  [15:0] pre_rc__d;
+    wire  [15:0] pre_rc__q;
+    reg  pre_rc__clock;
+    reg  pre_rest__d;
+    wire  pre_rest__q;
+    reg  pre_rest__clock;
+    reg  [3:0] pre_rrun__d;
+    wire  [3:0] pre_rrun__q;
+    reg  pre_rrun__clock;
+    reg  pre_rrun11__d;
+    wire  pre_rrun11__q;
+    reg  pre_rrun11__clock;
     
     // Local signals
+    reg  [7:0] pec_eff;
+    reg  [3:0] sil_eff;
+    reg  [15:0] rc_eff;
+    reg  [5:0] dom_inc;
+    reg  [7:0] pec_inc;
+    reg  [3:0] sil_inc;
+    reg  [15:0] rc_inc;
+    reg  [3:0] rrun_inc;
     reg  run;
     reg  [5:0] dom_new;
     reg  sd_hit;
@@ -8850,6 +11824,7 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
     reg  symptom;
     reg  [15:0] rc_new;
     reg  [3:0] rrun_new;
+    reg  en_out;
     
     // Sub module instances
     hub__sub_guards__0__enabled_q enabled_q(
@@ -8917,6 +11892,61 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         .q(rrun__q),
         .clock(rrun__clock)
     );
+    hub__sub_guards__0__pre_dom pre_dom(
+        .d(pre_dom__d),
+        .q(pre_dom__q),
+        .clock(pre_dom__clock)
+    );
+    hub__sub_guards__0__pre_sd pre_sd(
+        .d(pre_sd__d),
+        .q(pre_sd__q),
+        .clock(pre_sd__clock)
+    );
+    hub__sub_guards__0__pre_pec_b pre_pec_b(
+        .d(pre_pec_b__d),
+        .q(pre_pec_b__q),
+        .clock(pre_pec_b__clock)
+    );
+    hub__sub_guards__0__pre_bf pre_bf(
+        .d(pre_bf__d),
+        .q(pre_bf__q),
+        .clock(pre_bf__clock)
+    );
+    hub__sub_guards__0__pre_pec_dec pre_pec_dec(
+        .d(pre_pec_dec__d),
+        .q(pre_pec_dec__q),
+        .clock(pre_pec_dec__clock)
+    );
+    hub__sub_guards__0__pre_sil pre_sil(
+        .d(pre_sil__d),
+        .q(pre_sil__q),
+        .clock(pre_sil__clock)
+    );
+    hub__sub_guards__0__pre_sr pre_sr(
+        .d(pre_sr__d),
+        .q(pre_sr__q),
+        .clock(pre_sr__clock)
+    );
+    hub__sub_guards__0__pre_rc pre_rc(
+        .d(pre_rc__d),
+        .q(pre_rc__q),
+        .clock(pre_rc__clock)
+    );
+    hub__sub_guards__0__pre_rest pre_rest(
+        .d(pre_rest__d),
+        .q(pre_rest__q),
+        .clock(pre_rest__clock)
+    );
+    hub__sub_guards__0__pre_rrun pre_rrun(
+        .d(pre_rrun__d),
+        .q(pre_rrun__q),
+        .clock(pre_rrun__clock)
+    );
+    hub__sub_guards__0__pre_rrun11 pre_rrun11(
+        .d(pre_rrun11__d),
+        .q(pre_rrun11__q),
+        .clock(pre_rrun11__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -8933,6 +11963,17 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         blamed__clock = clk;
         active__clock = clk;
         rrun__clock = clk;
+        pre_dom__clock = clk;
+        pre_sd__clock = clk;
+        pre_pec_b__clock = clk;
+        pre_bf__clock = clk;
+        pre_pec_dec__clock = clk;
+        pre_sil__clock = clk;
+        pre_sr__clock = clk;
+        pre_rc__clock = clk;
+        pre_rest__clock = clk;
+        pre_rrun__clock = clk;
+        pre_rrun11__clock = clk;
         enabled_q__d = enabled_q__q;
         kind__d = kind__q;
         pec__d = pec__q;
@@ -8946,19 +11987,81 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         blamed__d = blamed__q;
         active__d = active__q;
         rrun__d = rrun__q;
+        pre_dom__d = pre_dom__q;
+        pre_sd__d = pre_sd__q;
+        pre_pec_b__d = pre_pec_b__q;
+        pre_bf__d = pre_bf__q;
+        pre_pec_dec__d = pre_pec_dec__q;
+        pre_sil__d = pre_sil__q;
+        pre_sr__d = pre_sr__q;
+        pre_rc__d = pre_rc__q;
+        pre_rest__d = pre_rest__q;
+        pre_rrun__d = pre_rrun__q;
+        pre_rrun11__d = pre_rrun11__q;
         iso_evt = 1'b0;
         rest_evt = 1'b0;
         run = sample & ~freeze;
+        pec_eff = pec__q;
+        sil_eff = silent__q;
+        rc_eff = restore_cnt__q;
+        if (recouple) begin
+            pec_eff = zero8;
+            sil_eff = zero4;
+            rc_eff = zero16;
+        end
+        if (dom_run__q == max6) begin
+            dom_inc = max6;
+        end
+        else begin
+            dom_inc = dom_run__q + one6;
+        end
+        pre_dom__d = dom_inc;
+        pre_sd__d = dom_inc >= sd_limit;
+        if (pec_eff >= sat8) begin
+            pec_inc = max8;
+        end
+        else begin
+            pec_inc = pec_eff + eight8;
+        end
+        pre_pec_b__d = pec_inc;
+        pre_bf__d = pec_inc >= bf_limit;
+        pre_pec_dec__d = pec_eff - one8;
+        if (sil_eff == max4) begin
+            sil_inc = max4;
+        end
+        else begin
+            sil_inc = sil_eff + one4;
+        end
+        pre_sil__d = sil_inc;
+        pre_sr__d = (sr_frames != zero4) & (sil_inc >= sr_frames);
+        if (rc_eff == max16) begin
+            rc_inc = max16;
+        end
+        else begin
+            rc_inc = rc_eff + one16;
+        end
+        pre_rc__d = rc_inc;
+        pre_rest__d = (restore_bits != zero16) & (rc_inc >= restore_bits);
+        if (rrun__q == max4) begin
+            rrun_inc = max4;
+        end
+        else begin
+            rrun_inc = rrun__q + one4;
+        end
+        pre_rrun__d = rrun_inc;
+        pre_rrun11__d = rrun_inc >= eleven4;
         if (pb) begin
             dom_new = zero6;
         end
-        else if (dom_run__q == max6) begin
-            dom_new = max6;
+        else begin
+            dom_new = pre_dom__q;
+        end
+        if (pb) begin
+            sd_hit = sd_limit == zero6;
         end
         else begin
-            dom_new = dom_run__q + one6;
+            sd_hit = pre_sd__q;
         end
-        sd_hit = dom_new >= sd_limit;
         cand_n = cand__q;
         lost_n = lost__q;
         active_n = active__q;
@@ -8980,30 +12083,17 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
             end
         end
         blame = ev_frame & ~blamed__q & ((~in_arb & ~pb & ~cand_n) | (ev_stuff_rec & cand_n));
-        if (pec__q >= sat8) begin
-            pec_blamed = max8;
-        end
-        else begin
-            pec_blamed = pec__q + eight8;
-        end
-        bf_hit = blame & (pec_blamed >= bf_limit);
+        pec_blamed = pre_pec_b__q;
+        bf_hit = blame & pre_bf__q;
         rid_hit = ev_rid & rid_en & cand_n;
-        if (silent__q == max4) begin
-            silent_new = max4;
-        end
-        else begin
-            silent_new = silent__q + one4;
-        end
-        sr_hit = ev_ack & ~active_n & (sr_frames != zero4) & (silent_new >= sr_frames);
+        silent_new = pre_sil__q;
+        sr_hit = ev_ack & ~active_n & pre_sr__q;
         symptom = (~pb & b) | sd_hit | (ev_ack & ~active_n);
         if (symptom) begin
             rc_new = zero16;
         end
-        else if (restore_cnt__q == max16) begin
-            rc_new = max16;
-        end
         else begin
-            rc_new = restore_cnt__q + one16;
+            rc_new = pre_rc__q;
         end
         if (run) begin
             dom_run__d = dom_new;
@@ -9020,7 +12110,7 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
                 end
                 if (ev_ack) begin
                     if (~blamed__q & (pec__q != zero8)) begin
-                        pec__d = pec__q - one8;
+                        pec__d = pre_pec_dec__q;
                     end
                     if (active_n) begin
                         silent__d = zero4;
@@ -9051,7 +12141,7 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
                     silent__d = zero4;
                 end
             end
-            else if ((restore_bits != zero16) & (rc_new >= restore_bits)) begin
+            else if (~symptom & pre_rest__q) begin
                 rest_evt = 1'b1;
                 enabled_q__d = 1'b1;
                 if (restorations__q != max8) begin
@@ -9066,19 +12156,14 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
             end
         end
         if (pb) begin
-            if (rrun__q == max4) begin
-                rrun_new = max4;
-            end
-            else begin
-                rrun_new = rrun__q + one4;
-            end
+            rrun_new = pre_rrun__q;
         end
         else begin
             rrun_new = zero4;
         end
         if (n_rrun & ~enabled_q__q) begin
             rrun__d = rrun_new;
-            if (rrun_new >= eleven4) begin
+            if (pb & pre_rrun11__q) begin
                 enabled_q__d = 1'b1;
                 pec__d = zero8;
                 silent__d = zero4;
@@ -9124,8 +12209,9 @@ module hub__sub_guards__0(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
             iso_evt = 1'b0;
             rest_evt = 1'b0;
         end
-        enabled = enabled_q__q;
-        word = ((enabled_q__q) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
+        en_out = enabled_q__q | recouple;
+        enabled = en_out;
+        word = ((en_out) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
     end
     
 endmodule // hub__sub_guards__0
@@ -9273,6 +12359,182 @@ module hub__sub_guards__0__pec(d,q,clock);
     end
           
 endmodule // hub__sub_guards__0__pec
+
+
+module hub__sub_guards__0__pre_bf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_bf
+
+
+module hub__sub_guards__0__pre_dom(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_dom
+
+
+module hub__sub_guards__0__pre_pec_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_pec_b
+
+
+module hub__sub_guards__0__pre_pec_dec(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_pec_dec
+
+
+module hub__sub_guards__0__pre_rc(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_rc
+
+
+module hub__sub_guards__0__pre_rest(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_rest
+
+
+module hub__sub_guards__0__pre_rrun(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_rrun
+
+
+module hub__sub_guards__0__pre_rrun11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_rrun11
+
+
+module hub__sub_guards__0__pre_sd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_sd
+
+
+module hub__sub_guards__0__pre_sil(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_sil
+
+
+module hub__sub_guards__0__pre_sr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__0__pre_sr
 
 
 module hub__sub_guards__0__restorations(d,q,clock);
@@ -9432,8 +12694,49 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
     reg  [3:0] rrun__d;
     wire  [3:0] rrun__q;
     reg  rrun__clock;
+    reg  [5:0] pre_dom__d;
+    wire  [5:0] pre_dom__q;
+    reg  pre_dom__clock;
+    reg  pre_sd__d;
+    wire  pre_sd__q;
+    reg  pre_sd__clock;
+    reg  [7:0] pre_pec_b__d;
+    wire  [7:0] pre_pec_b__q;
+    reg  pre_pec_b__clock;
+    reg  pre_bf__d;
+    wire  pre_bf__q;
+    reg  pre_bf__clock;
+    reg  [7:0] pre_pec_dec__d;
+    wire  [7:0] pre_pec_dec__q;
+    reg  pre_pec_dec__clock;
+    reg  [3:0] pre_sil__d;
+    wire  [3:0] pre_sil__q;
+    reg  pre_sil__clock;
+    reg  pre_sr__d;
+    wire  pre_sr__q;
+    reg  pre_sr__clock;
+    reg  [15:0] pre_rc__d;
+    wire  [15:0] pre_rc__q;
+    reg  pre_rc__clock;
+    reg  pre_rest__d;
+    wire  pre_rest__q;
+    reg  pre_rest__clock;
+    reg  [3:0] pre_rrun__d;
+    wire  [3:0] pre_rrun__q;
+    reg  pre_rrun__clock;
+    reg  pre_rrun11__d;
+    wire  pre_rrun11__q;
+    reg  pre_rrun11__clock;
     
     // Local signals
+    reg  [7:0] pec_eff;
+    reg  [3:0] sil_eff;
+    reg  [15:0] rc_eff;
+    reg  [5:0] dom_inc;
+    reg  [7:0] pec_inc;
+    reg  [3:0] sil_inc;
+    reg  [15:0] rc_inc;
+    reg  [3:0] rrun_inc;
     reg  run;
     reg  [5:0] dom_new;
     reg  sd_hit;
@@ -9449,6 +12752,7 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
     reg  symptom;
     reg  [15:0] rc_new;
     reg  [3:0] rrun_new;
+    reg  en_out;
     
     // Sub module instances
     hub__sub_guards__1__enabled_q enabled_q(
@@ -9516,6 +12820,61 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         .q(rrun__q),
         .clock(rrun__clock)
     );
+    hub__sub_guards__1__pre_dom pre_dom(
+        .d(pre_dom__d),
+        .q(pre_dom__q),
+        .clock(pre_dom__clock)
+    );
+    hub__sub_guards__1__pre_sd pre_sd(
+        .d(pre_sd__d),
+        .q(pre_sd__q),
+        .clock(pre_sd__clock)
+    );
+    hub__sub_guards__1__pre_pec_b pre_pec_b(
+        .d(pre_pec_b__d),
+        .q(pre_pec_b__q),
+        .clock(pre_pec_b__clock)
+    );
+    hub__sub_guards__1__pre_bf pre_bf(
+        .d(pre_bf__d),
+        .q(pre_bf__q),
+        .clock(pre_bf__clock)
+    );
+    hub__sub_guards__1__pre_pec_dec pre_pec_dec(
+        .d(pre_pec_dec__d),
+        .q(pre_pec_dec__q),
+        .clock(pre_pec_dec__clock)
+    );
+    hub__sub_guards__1__pre_sil pre_sil(
+        .d(pre_sil__d),
+        .q(pre_sil__q),
+        .clock(pre_sil__clock)
+    );
+    hub__sub_guards__1__pre_sr pre_sr(
+        .d(pre_sr__d),
+        .q(pre_sr__q),
+        .clock(pre_sr__clock)
+    );
+    hub__sub_guards__1__pre_rc pre_rc(
+        .d(pre_rc__d),
+        .q(pre_rc__q),
+        .clock(pre_rc__clock)
+    );
+    hub__sub_guards__1__pre_rest pre_rest(
+        .d(pre_rest__d),
+        .q(pre_rest__q),
+        .clock(pre_rest__clock)
+    );
+    hub__sub_guards__1__pre_rrun pre_rrun(
+        .d(pre_rrun__d),
+        .q(pre_rrun__q),
+        .clock(pre_rrun__clock)
+    );
+    hub__sub_guards__1__pre_rrun11 pre_rrun11(
+        .d(pre_rrun11__d),
+        .q(pre_rrun11__q),
+        .clock(pre_rrun11__clock)
+    );
     
     // Update code
     always @(*) begin
@@ -9532,6 +12891,17 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         blamed__clock = clk;
         active__clock = clk;
         rrun__clock = clk;
+        pre_dom__clock = clk;
+        pre_sd__clock = clk;
+        pre_pec_b__clock = clk;
+        pre_bf__clock = clk;
+        pre_pec_dec__clock = clk;
+        pre_sil__clock = clk;
+        pre_sr__clock = clk;
+        pre_rc__clock = clk;
+        pre_rest__clock = clk;
+        pre_rrun__clock = clk;
+        pre_rrun11__clock = clk;
         enabled_q__d = enabled_q__q;
         kind__d = kind__q;
         pec__d = pec__q;
@@ -9545,19 +12915,81 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
         blamed__d = blamed__q;
         active__d = active__q;
         rrun__d = rrun__q;
+        pre_dom__d = pre_dom__q;
+        pre_sd__d = pre_sd__q;
+        pre_pec_b__d = pre_pec_b__q;
+        pre_bf__d = pre_bf__q;
+        pre_pec_dec__d = pre_pec_dec__q;
+        pre_sil__d = pre_sil__q;
+        pre_sr__d = pre_sr__q;
+        pre_rc__d = pre_rc__q;
+        pre_rest__d = pre_rest__q;
+        pre_rrun__d = pre_rrun__q;
+        pre_rrun11__d = pre_rrun11__q;
         iso_evt = 1'b0;
         rest_evt = 1'b0;
         run = sample & ~freeze;
+        pec_eff = pec__q;
+        sil_eff = silent__q;
+        rc_eff = restore_cnt__q;
+        if (recouple) begin
+            pec_eff = zero8;
+            sil_eff = zero4;
+            rc_eff = zero16;
+        end
+        if (dom_run__q == max6) begin
+            dom_inc = max6;
+        end
+        else begin
+            dom_inc = dom_run__q + one6;
+        end
+        pre_dom__d = dom_inc;
+        pre_sd__d = dom_inc >= sd_limit;
+        if (pec_eff >= sat8) begin
+            pec_inc = max8;
+        end
+        else begin
+            pec_inc = pec_eff + eight8;
+        end
+        pre_pec_b__d = pec_inc;
+        pre_bf__d = pec_inc >= bf_limit;
+        pre_pec_dec__d = pec_eff - one8;
+        if (sil_eff == max4) begin
+            sil_inc = max4;
+        end
+        else begin
+            sil_inc = sil_eff + one4;
+        end
+        pre_sil__d = sil_inc;
+        pre_sr__d = (sr_frames != zero4) & (sil_inc >= sr_frames);
+        if (rc_eff == max16) begin
+            rc_inc = max16;
+        end
+        else begin
+            rc_inc = rc_eff + one16;
+        end
+        pre_rc__d = rc_inc;
+        pre_rest__d = (restore_bits != zero16) & (rc_inc >= restore_bits);
+        if (rrun__q == max4) begin
+            rrun_inc = max4;
+        end
+        else begin
+            rrun_inc = rrun__q + one4;
+        end
+        pre_rrun__d = rrun_inc;
+        pre_rrun11__d = rrun_inc >= eleven4;
         if (pb) begin
             dom_new = zero6;
         end
-        else if (dom_run__q == max6) begin
-            dom_new = max6;
+        else begin
+            dom_new = pre_dom__q;
+        end
+        if (pb) begin
+            sd_hit = sd_limit == zero6;
         end
         else begin
-            dom_new = dom_run__q + one6;
+            sd_hit = pre_sd__q;
         end
-        sd_hit = dom_new >= sd_limit;
         cand_n = cand__q;
         lost_n = lost__q;
         active_n = active__q;
@@ -9579,30 +13011,17 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
             end
         end
         blame = ev_frame & ~blamed__q & ((~in_arb & ~pb & ~cand_n) | (ev_stuff_rec & cand_n));
-        if (pec__q >= sat8) begin
-            pec_blamed = max8;
-        end
-        else begin
-            pec_blamed = pec__q + eight8;
-        end
-        bf_hit = blame & (pec_blamed >= bf_limit);
+        pec_blamed = pre_pec_b__q;
+        bf_hit = blame & pre_bf__q;
         rid_hit = ev_rid & rid_en & cand_n;
-        if (silent__q == max4) begin
-            silent_new = max4;
-        end
-        else begin
-            silent_new = silent__q + one4;
-        end
-        sr_hit = ev_ack & ~active_n & (sr_frames != zero4) & (silent_new >= sr_frames);
+        silent_new = pre_sil__q;
+        sr_hit = ev_ack & ~active_n & pre_sr__q;
         symptom = (~pb & b) | sd_hit | (ev_ack & ~active_n);
         if (symptom) begin
             rc_new = zero16;
         end
-        else if (restore_cnt__q == max16) begin
-            rc_new = max16;
-        end
         else begin
-            rc_new = restore_cnt__q + one16;
+            rc_new = pre_rc__q;
         end
         if (run) begin
             dom_run__d = dom_new;
@@ -9619,7 +13038,7 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
                 end
                 if (ev_ack) begin
                     if (~blamed__q & (pec__q != zero8)) begin
-                        pec__d = pec__q - one8;
+                        pec__d = pre_pec_dec__q;
                     end
                     if (active_n) begin
                         silent__d = zero4;
@@ -9650,7 +13069,7 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
                     silent__d = zero4;
                 end
             end
-            else if ((restore_bits != zero16) & (rc_new >= restore_bits)) begin
+            else if (~symptom & pre_rest__q) begin
                 rest_evt = 1'b1;
                 enabled_q__d = 1'b1;
                 if (restorations__q != max8) begin
@@ -9665,19 +13084,14 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
             end
         end
         if (pb) begin
-            if (rrun__q == max4) begin
-                rrun_new = max4;
-            end
-            else begin
-                rrun_new = rrun__q + one4;
-            end
+            rrun_new = pre_rrun__q;
         end
         else begin
             rrun_new = zero4;
         end
         if (n_rrun & ~enabled_q__q) begin
             rrun__d = rrun_new;
-            if (rrun_new >= eleven4) begin
+            if (pb & pre_rrun11__q) begin
                 enabled_q__d = 1'b1;
                 pec__d = zero8;
                 silent__d = zero4;
@@ -9723,8 +13137,9 @@ module hub__sub_guards__1(clk,rst,freeze,rid_en,recouple,sample,pb,b,ev_sof,ev_f
             iso_evt = 1'b0;
             rest_evt = 1'b0;
         end
-        enabled = enabled_q__q;
-        word = ((enabled_q__q) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
+        en_out = enabled_q__q | recouple;
+        enabled = en_out;
+        word = ((en_out) & 32'hffffffff) | (((kind__q) & 32'hffffffff) << 32'h1) | (((pec__q) & 32'hffffffff) << 32'h8) | (((isolations__q) & 32'hffffffff) << 32'h10) | (((restorations__q) & 32'hffffffff) << 32'h18);
     end
     
 endmodule // hub__sub_guards__1
@@ -9872,6 +13287,182 @@ module hub__sub_guards__1__pec(d,q,clock);
     end
           
 endmodule // hub__sub_guards__1__pec
+
+
+module hub__sub_guards__1__pre_bf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_bf
+
+
+module hub__sub_guards__1__pre_dom(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_dom
+
+
+module hub__sub_guards__1__pre_pec_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_pec_b
+
+
+module hub__sub_guards__1__pre_pec_dec(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_pec_dec
+
+
+module hub__sub_guards__1__pre_rc(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_rc
+
+
+module hub__sub_guards__1__pre_rest(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_rest
+
+
+module hub__sub_guards__1__pre_rrun(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_rrun
+
+
+module hub__sub_guards__1__pre_rrun11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_rrun11
+
+
+module hub__sub_guards__1__pre_sd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_sd
+
+
+module hub__sub_guards__1__pre_sil(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_sil
+
+
+module hub__sub_guards__1__pre_sr(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // hub__sub_guards__1__pre_sr
 
 
 module hub__sub_guards__1__restorations(d,q,clock);

@@ -14,7 +14,8 @@ fn decoupling_after_decouple_bits_is_sticky_until_recouple() {
         b.step();
     }
     let iso = k + 8 + 27 * CPB;
-    assert!(!enabled(&b.log[iso], 2));
+    // §6.1: in the guard registers one clock after the SAMPLE edge
+    assert!(!enabled(&b.log[iso + 1], 2));
     // no_twin counts from the next sample (the isolation edge still had it
     // enabled before the edge): decoupled at the 30th sample after it.
     let dec = iso + 30 * CPB;
@@ -92,6 +93,9 @@ fn entering_reset_mode_clears_the_guards_but_keeps_int_status() {
     b.idle_bits(2);
     assert_eq!(b.port_reg(0) & 1, 0);
     b.write(CTRL, ACK_INTERDEP | RESET_MODE);
+    // §6.1: the hold reaches the guard registers one edge after the decision
+    // state (held from the write's next edge on)
+    b.step();
     assert_eq!(b.port_reg(0), 1);
     assert_eq!(b.read(STATUS), 1 | 0b111 << 16);
     assert_eq!(b.read(STATS), 0);

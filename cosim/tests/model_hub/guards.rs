@@ -14,12 +14,14 @@ fn stuck_dominant_node_port_is_isolated_at_its_14th_dominant_sample() {
     // Samples at k+8, k+16, ...: dom_run reaches 14 at the 14th.
     let iso = k + 8 + 13 * CPB;
     assert!(b.log[iso].probes.sample_point);
-    assert!(enabled(&b.log[iso - 1], 0));
-    assert!(!enabled(&b.log[iso], 0));
-    // Effective on the coupling at the next edge.
-    assert!(!b.log[iso].probes.coupled && b.log[iso].downlink == 0);
-    assert!(b.log[iso + 1].probes.coupled && b.log[iso + 1].downlink == 0b11);
-    assert!(!b.log[iso].irq && b.log[iso + 1].irq);
+    // §6.1: decided at the SAMPLE edge, in the guard registers one clock later.
+    assert!(enabled(&b.log[iso], 0));
+    assert!(!enabled(&b.log[iso + 1], 0));
+    // Effective on the coupling at the edge after that.
+    assert!(!b.log[iso + 1].probes.coupled && b.log[iso + 1].downlink == 0);
+    assert!(b.log[iso + 2].probes.coupled && b.log[iso + 2].downlink == 0b11);
+    // INT_STATUS.isolation at iso + 1, the registered irq one edge later.
+    assert!(!b.log[iso + 1].irq && b.log[iso + 2].irq);
     assert_eq!(b.port_reg(0), 1 << 1 | 1 << 16, "kind 1, one isolation");
     assert_eq!(b.port_reg(1), 1);
     assert_eq!(b.read(INT_STATUS), INT_ISOLATION);
@@ -35,9 +37,10 @@ fn stuck_dominant_sublink_is_isolated_at_its_28th_dominant_sample() {
         b.step();
     }
     let iso = k + 8 + 27 * CPB;
-    assert!(enabled(&b.log[iso - 1], 2));
-    assert!(!enabled(&b.log[iso], 2));
-    assert!(b.log[iso + 1].probes.coupled);
+    // §6.1: in the guard registers one clock after the SAMPLE edge
+    assert!(enabled(&b.log[iso], 2));
+    assert!(!enabled(&b.log[iso + 1], 2));
+    assert!(b.log[iso + 2].probes.coupled);
     assert_eq!(b.port_reg(2), 1 << 1 | 1 << 16);
     // Thresholds from GUARD_CFG: sd_run_sub 20.
     let mut b = Bench::running(2, 1, &[(GUARD_CFG, 14 | 20 << 8 | 8 << 16)], true);
@@ -47,7 +50,7 @@ fn stuck_dominant_sublink_is_isolated_at_its_28th_dominant_sample() {
         b.step();
     }
     let iso = k + 8 + 19 * CPB;
-    assert!(enabled(&b.log[iso - 1], 2) && !enabled(&b.log[iso], 2));
+    assert!(enabled(&b.log[iso], 2) && !enabled(&b.log[iso + 1], 2));
 }
 
 #[test]
@@ -55,7 +58,8 @@ fn isolation_event_beats_a_w1c_clear_at_the_same_edge() {
     let mut b = Bench::running(2, 1, &[], true);
     b.pins = 0b110;
     let k = b.now();
-    let iso = k + 8 + 13 * CPB;
+    // decided at the SAMPLE edge k + 8 + 13 * CPB, the event one clock later (§6.1)
+    let iso = k + 8 + 13 * CPB + 1;
     while b.now() < iso {
         b.step();
     }
@@ -105,7 +109,7 @@ fn bit_flipping_port_is_blamed_per_frame_and_isolated_at_bf_up() {
     let lanes = flipping_frame(&b, true);
     let t0 = b.drive(&lanes);
     let at = sample_step(t0, f.raw_at[14]);
-    assert!(enabled(&b.log[at - 1], 1) && !enabled(&b.log[at], 1));
+    assert!(enabled(&b.log[at], 1) && !enabled(&b.log[at + 1], 1));
     let r = b.port_reg(1);
     assert_eq!((r & 1, kind(r), pec(r), r >> 16 & 0xFF), (0, 3, 32, 1));
     assert_eq!(b.read(STATS) & 0xFFFF, 4);
@@ -155,8 +159,9 @@ fn reserved_identifier_from_a_node_port_isolates_it() {
         let t0 = b.send(&f, 0, 0);
         // Isolated at the sample of identifier bit 10 (data bit pos 10).
         let at = sample_step(t0, f.raw_at[10]);
-        assert!(enabled(&b.log[at - 1], 0), "id {id:#x}");
-        assert!(!enabled(&b.log[at], 0), "id {id:#x}");
+        // §6.1: in the guard registers one clock after the SAMPLE edge
+        assert!(enabled(&b.log[at], 0), "id {id:#x}");
+        assert!(!enabled(&b.log[at + 1], 0), "id {id:#x}");
         let r = b.port_reg(0);
         assert_eq!((kind(r), r & 1), (4, 0), "id {id:#x}");
         assert_eq!(b.port_reg(1), 1);
@@ -167,7 +172,7 @@ fn reserved_identifier_from_a_node_port_isolates_it() {
     let mut b = Bench::running(2, 1, &[], true);
     let f = encode(0x0000_0F0F, true, false, 0, &[]);
     let t0 = b.send(&f, 0, 0);
-    assert!(!enabled(&b.log[sample_step(t0, f.raw_at[10])], 0));
+    assert!(!enabled(&b.log[sample_step(t0, f.raw_at[10]) + 1], 0));
     assert_eq!(kind(b.port_reg(0)), 4);
     // 0x002 is an ordinary identifier.
     let mut b = Bench::running(2, 1, &[], true);
@@ -199,7 +204,7 @@ fn silent_port_is_isolated_after_sr_frames() {
     }
     let t0 = b.send(&f, 0, 0b1010);
     let at = sample_step(t0, f.ack);
-    assert!(enabled(&b.log[at - 1], 2) && !enabled(&b.log[at], 2));
+    assert!(enabled(&b.log[at], 2) && !enabled(&b.log[at + 1], 2));
     let r = b.port_reg(2);
     assert_eq!((r & 1, kind(r)), (0, 2));
     for p in [0, 1, 3] {
@@ -224,17 +229,18 @@ fn isolated_port_is_restored_after_restore_bits_symptom_free_samples() {
     }
     // Isolated at the 14th sample; released at k + 160: the last dominant sample
     // is k + 160 (pb = pin of step 157), the first recessive one k + 168.
-    assert!(!enabled(&b.log[k + 8 + 13 * CPB], 0));
+    assert!(!enabled(&b.log[k + 8 + 13 * CPB + 1], 0));
     b.pins = 0b111;
     for _ in 0..40 * CPB {
         b.step();
     }
     let back = k + 168 + 19 * CPB; // the 20th symptom-free sample
     assert!(b.log[back].probes.sample_point);
-    for s in k + 8 + 13 * CPB..back {
+    // §6.1: decisions reach the guard registers one clock after their edge
+    for s in k + 8 + 13 * CPB + 1..=back {
         assert!(!enabled(&b.log[s], 0), "step k+{}", s - k);
     }
-    assert!(enabled(&b.log[back], 0));
+    assert!(enabled(&b.log[back + 1], 0));
     let r = b.port_reg(0);
     // enabled, kind kept (1), pec 0, 1 isolation, 1 restoration.
     assert_eq!(r, 1 | 1 << 1 | 1 << 16 | 1 << 24);

@@ -26,6 +26,12 @@
 //! While NRAP is active no rule of §6 runs (every guard is frozen, as the sublink
 //! guards are while decoupled).
 //!
+//! Guard stage (§6.1, for Fmax on the iCE40UP5K): every guard input (the SAMPLE
+//! edge, `port_q`, `coupled_q`, the tracker's events, the freezes, NRAP's port
+//! strobes, `recouple` and the reset-mode hold) passes one register
+//! (`super::guard_stage`), so the guards apply at edge t + 1 what §6 decides at
+//! edge t; `rst` itself is not delayed.
+//!
 //! Parametrisation: const generics `N`, `M`, `P` and `H` (stable Rust cannot write
 //! `N + M` in a type, so `P` is passed and checked to equal `N + M`; `H` defaults
 //! to 0, hub A); the guards are arrays of blocks and the per-port wiring is written
@@ -34,6 +40,7 @@
 use super::ack_unit::AckUnit;
 use super::config::HubConfig;
 use super::coupler::Coupler;
+use super::guard_stage::GuardStage;
 use super::id_frame::IdFrame;
 use super::nrap::Nrap;
 use super::port_guard::PortGuard;
@@ -120,12 +127,14 @@ pub struct Hub<const N: usize, const M: usize, const P: usize, const H: usize = 
     cfg_regs: ChannelConfig,
     btl: BitTimingLogic,
     tracker: FrameTracker,
+    guard_stage: GuardStage<N, M>,
     node_guards: [PortGuard; N],
     sub_guards: [PortGuard; M],
     nrap: Nrap<H>,
     id_frame: IdFrame<H>,
     // glue
     guard_rst: Signal<Local, Bit>,
+    guard_hold: Signal<Local, Bit>,
     btl_rst: Signal<Local, Bit>,
     ack_win: Signal<Local, Bit>,
     ctrl_cmd: Signal<Local, Bit>,
@@ -187,11 +196,13 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Default for
             cfg_regs: Default::default(),
             btl: Default::default(),
             tracker: Default::default(),
+            guard_stage: Default::default(),
             node_guards: std::array::from_fn(|_| Default::default()),
             sub_guards: std::array::from_fn(|_| Default::default()),
             nrap: Default::default(),
             id_frame: Default::default(),
             guard_rst: Default::default(),
+            guard_hold: Default::default(),
             btl_rst: Default::default(),
             ack_win: Default::default(),
             ctrl_cmd: Default::default(),
@@ -246,7 +257,33 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.force_cmd.next =
             self.ctrl_cmd.val() & self.wb_dat_i.val().get_bit(1) & !self.wb_dat_i.val().get_bit(2);
 
-        // ---- guards (§6) ----
+        // ---- guard stage (§6.1): the guards' inputs one clock late ----
+        self.guard_stage.clk.next = self.clk.val();
+        self.guard_stage.rst.next = self.rst.val();
+        self.guard_stage.reset_mode.next = self.regs.reset_mode.val();
+        self.guard_stage.sample.next = self.btl.sample.val();
+        self.guard_stage.node_q.next = self.coupler.node_q.val();
+        self.guard_stage.sub_q.next = self.coupler.sub_q.val();
+        self.guard_stage.b.next = self.coupler.coupled.val();
+        self.guard_stage.ev_sof.next = self.tracker.ev_sof.val();
+        self.guard_stage.ev_frame.next = self.tracker.ev_frame.val();
+        self.guard_stage.in_arb.next = self.tracker.in_arb.val();
+        self.guard_stage.ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
+        self.guard_stage.ev_rid.next = self.tracker.ev_rid.val();
+        self.guard_stage.ev_ack.next = self.tracker.ev_ack.val();
+        self.guard_stage.nrap_active.next = self.nrap.active.val();
+        self.guard_stage.decoupled.next = self.regs.decoupled.val();
+        self.guard_stage.p_watch.next = self.nrap.p_watch.val();
+        self.guard_stage.p_enable.next = self.nrap.p_enable.val();
+        self.guard_stage.p_exchange.next = self.nrap.p_exchange.val();
+        self.guard_stage.p_off_sub.next = self.nrap.p_off_sub.val();
+        self.guard_stage.p_join.next = self.nrap.p_join.val();
+        self.guard_stage.recouple.next = self.recouple.val();
+        // §6.1: the guards reset at the `rst` edge and hold one clock after reset
+        // mode
+        self.guard_hold.next = self.rst.val() | self.guard_stage.hold_d.val();
+
+        // ---- guards (§6, run one clock late, §6.1) ----
         self.node_en.next = self.zero_n.val();
         self.sub_en.next = self.zero_m.val();
         self.port_rd.next = self.zero32.val();
@@ -254,26 +291,26 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.ev_rest.next = false;
         for i in 0..N {
             self.node_guards[i].clk.next = self.clk.val();
-            self.node_guards[i].rst.next = self.guard_rst.val();
+            self.node_guards[i].rst.next = self.guard_hold.val();
             // §6: no rule runs while NRAP is active
-            self.node_guards[i].freeze.next = self.nrap.active.val();
+            self.node_guards[i].freeze.next = self.guard_stage.node_freeze_d.val();
             self.node_guards[i].rid_en.next = true;
             self.node_guards[i].recouple.next = false;
-            self.node_guards[i].sample.next = self.btl.sample.val();
-            self.node_guards[i].pb.next = self.coupler.node_q.val().get_bit(i);
-            self.node_guards[i].b.next = self.coupler.coupled.val();
-            self.node_guards[i].ev_sof.next = self.tracker.ev_sof.val();
-            self.node_guards[i].ev_frame.next = self.tracker.ev_frame.val();
-            self.node_guards[i].in_arb.next = self.tracker.in_arb.val();
-            self.node_guards[i].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
-            self.node_guards[i].ev_rid.next = self.tracker.ev_rid.val();
-            self.node_guards[i].ev_ack.next = self.tracker.ev_ack.val();
+            self.node_guards[i].sample.next = self.guard_stage.sample_d.val();
+            self.node_guards[i].pb.next = self.guard_stage.node_q_d.val().get_bit(i);
+            self.node_guards[i].b.next = self.guard_stage.b_d.val();
+            self.node_guards[i].ev_sof.next = self.guard_stage.ev_sof_d.val();
+            self.node_guards[i].ev_frame.next = self.guard_stage.ev_frame_d.val();
+            self.node_guards[i].in_arb.next = self.guard_stage.in_arb_d.val();
+            self.node_guards[i].ev_stuff_rec.next = self.guard_stage.ev_stuff_rec_d.val();
+            self.node_guards[i].ev_rid.next = self.guard_stage.ev_rid_d.val();
+            self.node_guards[i].ev_ack.next = self.guard_stage.ev_ack_d.val();
             // §9.2: the NRAP actions on node ports
             self.node_guards[i].n_rrun.next = false;
-            self.node_guards[i].n_watch.next = self.nrap.p_watch.val();
+            self.node_guards[i].n_watch.next = self.guard_stage.p_watch_d.val();
             self.node_guards[i].n_off.next = false;
             self.node_guards[i].n_clr.next = false;
-            self.node_guards[i].n_enable.next = self.nrap.p_enable.val();
+            self.node_guards[i].n_enable.next = self.guard_stage.p_enable_d.val();
             self.node_guards[i].sd_limit.next = self.hub_cfg.sd_run_up.val();
             self.node_guards[i].bf_limit.next = self.hub_cfg.bf_up.val();
             self.node_guards[i].sr_frames.next = self.hub_cfg.sr_frames.val();
@@ -290,26 +327,26 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         }
         for j in 0..M {
             self.sub_guards[j].clk.next = self.clk.val();
-            self.sub_guards[j].rst.next = self.guard_rst.val();
+            self.sub_guards[j].rst.next = self.guard_hold.val();
             // §6: the sublink guards are frozen while decoupled and while NRAP is
             // active
-            self.sub_guards[j].freeze.next = self.regs.decoupled.val() | self.nrap.active.val();
+            self.sub_guards[j].freeze.next = self.guard_stage.sub_freeze_d.val();
             self.sub_guards[j].rid_en.next = false;
-            self.sub_guards[j].recouple.next = self.recouple.val();
-            self.sub_guards[j].sample.next = self.btl.sample.val();
-            self.sub_guards[j].pb.next = self.coupler.sub_q.val().get_bit(j);
-            self.sub_guards[j].b.next = self.coupler.coupled.val();
-            self.sub_guards[j].ev_sof.next = self.tracker.ev_sof.val();
-            self.sub_guards[j].ev_frame.next = self.tracker.ev_frame.val();
-            self.sub_guards[j].in_arb.next = self.tracker.in_arb.val();
-            self.sub_guards[j].ev_stuff_rec.next = self.tracker.ev_stuff_rec.val();
-            self.sub_guards[j].ev_rid.next = self.tracker.ev_rid.val();
-            self.sub_guards[j].ev_ack.next = self.tracker.ev_ack.val();
+            self.sub_guards[j].recouple.next = self.guard_stage.recouple_d.val();
+            self.sub_guards[j].sample.next = self.guard_stage.sample_d.val();
+            self.sub_guards[j].pb.next = self.guard_stage.sub_q_d.val().get_bit(j);
+            self.sub_guards[j].b.next = self.guard_stage.b_d.val();
+            self.sub_guards[j].ev_sof.next = self.guard_stage.ev_sof_d.val();
+            self.sub_guards[j].ev_frame.next = self.guard_stage.ev_frame_d.val();
+            self.sub_guards[j].in_arb.next = self.guard_stage.in_arb_d.val();
+            self.sub_guards[j].ev_stuff_rec.next = self.guard_stage.ev_stuff_rec_d.val();
+            self.sub_guards[j].ev_rid.next = self.guard_stage.ev_rid_d.val();
+            self.sub_guards[j].ev_ack.next = self.guard_stage.ev_ack_d.val();
             // §9.2: the NRAP actions on sublinks
-            self.sub_guards[j].n_rrun.next = self.nrap.p_exchange.val();
+            self.sub_guards[j].n_rrun.next = self.guard_stage.p_exchange_d.val();
             self.sub_guards[j].n_watch.next = false;
-            self.sub_guards[j].n_off.next = self.nrap.p_off_sub.val();
-            self.sub_guards[j].n_clr.next = self.nrap.p_join.val();
+            self.sub_guards[j].n_off.next = self.guard_stage.p_off_sub_d.val();
+            self.sub_guards[j].n_clr.next = self.guard_stage.p_join_d.val();
             self.sub_guards[j].n_enable.next = false;
             self.sub_guards[j].sd_limit.next = self.hub_cfg.sd_run_sub.val();
             self.sub_guards[j].bf_limit.next = self.hub_cfg.bf_sub.val();

@@ -7,11 +7,13 @@
 pub mod ack_unit;
 pub mod config;
 pub mod coupler;
+pub mod guard_stage;
 // `hub/hub.rs` is the top, named like the other tops (`docs/design.md`, layout).
 #[allow(clippy::module_inception)]
 pub mod hub;
 pub mod id_frame;
 pub mod nrap;
+pub mod nrap_ahead;
 pub mod port_guard;
 pub mod registers;
 #[cfg(test)]

@@ -29,6 +29,10 @@
 //!   generic `HUB_ID`).
 //! - `DDSP_SEND`: the own frame's ACK slot with the bus dominant counts.
 //!
+//! Structural, for Fmax: the increments of `nt`, `ncnt`, `unacked` and their
+//! comparisons with the limits come registered from `super::nrap_ahead`, computed
+//! in the clock before the SAMPLE edge (the counters cannot change in between).
+//!
 //! The per-port NRAP field (`rrun`) and the writes to the ports' `enabled`, `pec`,
 //! `silent` and `restore_cnt` live in the port guards (`super::port_guard`); this
 //! block hands them one strobe per action, valid in the clock of the edge (the top
@@ -65,6 +69,7 @@
 //! `nt`, `ncnt`, `half`, `last` and `unacked` at 0 and suppresses every event and
 //! strobe; `runs` and `outcome` clear with `rst` only.
 
+use super::nrap_ahead::NrapAhead;
 use crate::host::hub_registers::{NrapPhase, MAP};
 use crate::host::map::lsb;
 use rust_hdl::prelude::*;
@@ -163,6 +168,8 @@ pub struct Nrap<const H: usize> {
     /// `SRP_EXCHANGE` → `NRP`, `DDSP_FORCE` → `DDSP_SEND`: every node port enabled.
     pub p_enable: Signal<Out, Bit>,
     // ---- registers ----
+    /// The counters' increments and comparisons, one clock ahead (structural).
+    ahead: NrapAhead,
     nrap_q: DFF<Bits<3>>,
     nt: DFF<Bits<16>>,
     ncnt: DFF<Bits<4>>,
@@ -195,6 +202,8 @@ pub struct Nrap<const H: usize> {
     next_active: Signal<Local, Bit>,
     last_new: Signal<Local, Bits<2>>,
     half_join: Signal<Local, Bit>,
+    blocked: Signal<Local, Bit>,
+    chg: Signal<Local, Bit>,
     // ---- constants ----
     ph_run: Constant<Bits<3>>,
     ph_srp_force: Constant<Bits<3>>,
@@ -268,6 +277,7 @@ impl<const H: usize> Default for Nrap<H> {
             p_off_sub: Default::default(),
             p_join: Default::default(),
             p_enable: Default::default(),
+            ahead: Default::default(),
             nrap_q: Default::default(),
             nt: Default::default(),
             ncnt: Default::default(),
@@ -299,6 +309,8 @@ impl<const H: usize> Default for Nrap<H> {
             next_active: Default::default(),
             last_new: Default::default(),
             half_join: Default::default(),
+            blocked: Default::default(),
+            chg: Default::default(),
             ph_run: phase(NrapPhase::Run),
             ph_srp_force: phase(NrapPhase::SrpForce),
             ph_exchange: phase(NrapPhase::SrpExchange),
@@ -348,19 +360,40 @@ impl<const H: usize> Logic for Nrap<H> {
         // NRAP may start from RUN
         self.go.next = self.st_run.val() & self.nrap_on.val() & !self.decoupled.val();
 
-        // new nt: every SAMPLE edge counts (saturating)
-        if self.nt.q.val() == self.max16.val() {
-            self.nt_new.next = self.max16.val();
+        // the counters' increments and comparisons, registered in the clock before
+        // (`super::nrap_ahead`); a command that changes the phase clears nt, ncnt
+        self.ahead.clk.next = self.clk.val();
+        self.ahead.nt.next = self.nt.q.val();
+        self.ahead.ncnt.next = self.ncnt.q.val();
+        self.ahead.unacked.next = self.unacked.q.val();
+        if self.cmd_run.val() {
+            self.ahead.clear.next = !self.st_run.val();
         } else {
-            self.nt_new.next = self.nt.q.val() + self.one16.val();
+            self.ahead.clear.next = self.cmd_split.val()
+                & self.nrap_on.val()
+                & (self.nrap_q.q.val() != self.ph_split.val());
         }
-        // new unacked: frames in a row with an error flag at their ACK delimiter
+        self.ahead.force_bits.next = self.force_bits.val();
+        self.ahead.srp_bits.next = self.srp_bits.val();
+        self.ahead.nrp_bits.next = self.nrp_bits.val();
+        self.ahead.ddsp_bits.next = self.ddsp_bits.val();
+        self.ahead.srp_pairs.next = self.srp_pairs.val();
+        self.ahead.nrp_pairs.next = self.nrp_pairs.val();
+        self.ahead.ddsp_frames.next = self.ddsp_frames.val();
+        self.ahead.block_frames.next = self.block_frames.val();
+        // new nt: every SAMPLE edge counts (saturating)
+        self.nt_new.next = self.ahead.nt_inc.val();
+        // new unacked: frames in a row with an error flag at their ACK delimiter;
+        // `blocked`: the new unacked >= block_frames != 0
         self.unacked_new.next = self.unacked.q.val();
+        self.blocked.next = self.ahead.blk0.val();
         if self.ev_delim.val() {
             if self.b.val() {
                 self.unacked_new.next = self.zero5.val();
-            } else if self.unacked.q.val() != self.max5.val() {
-                self.unacked_new.next = self.unacked.q.val() + self.one5.val();
+                self.blocked.next = false;
+            } else {
+                self.unacked_new.next = self.ahead.un_inc.val();
+                self.blocked.next = self.ahead.blk1.val();
             }
         }
         // the ACK slot of an identification frame; hub A's and hub B's by HUB_ID
@@ -394,14 +427,17 @@ impl<const H: usize> Logic for Nrap<H> {
         // new ncnt: the pairs, or in DDSP_SEND the own frames, the phase counts
         self.inc.next = (self.pairs.val() & self.ack_b.val() & self.ackd.val() & self.half.q.val())
             | (self.st_send.val() & self.ack_own.val() & !self.b.val());
-        if self.inc.val() & (self.ncnt.q.val() != self.max4.val()) {
-            self.ncnt_new.next = self.ncnt.q.val() + self.one4.val();
+        if self.inc.val() {
+            self.ncnt_new.next = self.ahead.ncnt_inc.val();
         } else {
             self.ncnt_new.next = self.ncnt.q.val();
         }
 
         // ---- the phase rules (§9.2), at SAMPLE edges ----
         self.next.next = self.nrap_q.q.val();
+        // `chg`: the phase changes (every rule below moves to another phase), kept
+        // beside `next` so that the clears need no comparison of the two
+        self.chg.next = false;
         self.last_new.next = self.last.q.val();
         self.set_decoupled.next = false;
         self.p_exchange.next = false;
@@ -420,66 +456,79 @@ impl<const H: usize> Logic for Nrap<H> {
         }
         if self.sample.val() {
             if self.st_run.val() {
-                if self.go.val()
-                    & (!self.any_sub_en.val()
-                        | ((self.block_frames.val() != self.zero5.val())
-                            & (self.unacked_new.val() >= self.block_frames.val())))
-                {
+                if self.go.val() & (!self.any_sub_en.val() | self.blocked.val()) {
                     // Trigger (no sublink enabled) or Blocked network
                     self.next.next = self.ph_srp_force.val();
+                    self.chg.next = true;
                     self.last_new.next = self.last_none.val();
                 } else if self.go.val() & self.ack_twin.val() {
                     // Joining: the twin's identification frame came through; its
                     // ACK slot counts for the pairs as in SRP_EXCHANGE (the twin's
                     // frame is hub A's when this hub is B)
                     self.next.next = self.ph_exchange.val();
+                    self.chg.next = true;
                     self.last_new.next = self.last_twin.val();
                     self.half_join.next = self.is_b.val() & !self.b.val();
                     self.p_join.next = true;
                 }
             } else if self.st_srp_force.val() {
-                if self.nt_new.val() >= bit_cast::<16, 10>(self.force_bits.val()) {
+                if self.ahead.nt_force.val() {
                     self.next.next = self.ph_exchange.val();
+                    self.chg.next = true;
                     self.p_off_sub.next = true;
                 }
             } else if self.st_exchange.val() {
                 self.p_exchange.next = true;
-                if self.ncnt_new.val() >= self.srp_pairs.val() {
+                // new ncnt >= srp_pairs, new nt >= srp_bits
+                if (self.inc.val() & self.ahead.srp1.val())
+                    | (!self.inc.val() & self.ahead.srp0.val())
+                {
                     self.next.next = self.ph_nrp.val();
+                    self.chg.next = true;
                     self.p_enable.next = true;
-                } else if self.nt_new.val() >= self.srp_bits.val() {
+                } else if self.ahead.nt_srp.val() {
                     self.next.next = self.ph_ddsp_force.val();
+                    self.chg.next = true;
                     self.set_decoupled.next = true;
                     self.p_off_sub.next = true;
                 }
             } else if self.st_nrp.val() {
                 self.p_watch.next = self.in_id.val();
-                if self.ncnt_new.val() >= self.nrp_pairs.val() {
+                if (self.inc.val() & self.ahead.nrp1.val())
+                    | (!self.inc.val() & self.ahead.nrp0.val())
+                {
                     self.next.next = self.ph_run.val();
-                } else if self.nt_new.val() >= self.nrp_bits.val() {
+                    self.chg.next = true;
+                } else if self.ahead.nt_nrp.val() {
                     self.next.next = self.ph_ddsp_force.val();
+                    self.chg.next = true;
                     self.set_decoupled.next = true;
                     self.p_off_sub.next = true;
                 }
             } else if self.st_ddsp_force.val() {
-                if self.nt_new.val() >= bit_cast::<16, 10>(self.force_bits.val()) {
+                if self.ahead.nt_force.val() {
                     self.next.next = self.ph_send.val();
+                    self.chg.next = true;
                     self.p_enable.next = true;
                 }
             } else if self.st_send.val() {
                 self.p_watch.next = self.in_id.val();
-                if (self.ncnt_new.val() >= self.ddsp_frames.val())
-                    | (self.nt_new.val() >= self.ddsp_bits.val())
+                if (self.inc.val() & self.ahead.ddsp1.val())
+                    | (!self.inc.val() & self.ahead.ddsp0.val())
+                    | self.ahead.nt_ddsp.val()
                 {
                     self.next.next = self.ph_split.val();
+                    self.chg.next = true;
                 }
             }
         }
         // ---- host commands decide the phase of their edge (§8) ----
         if self.cmd_run.val() {
             self.next.next = self.ph_run.val();
+            self.chg.next = !self.st_run.val();
         } else if self.cmd_split.val() & self.nrap_on.val() {
             self.next.next = self.ph_split.val();
+            self.chg.next = self.nrap_q.q.val() != self.ph_split.val();
         }
         self.next_active.next =
             (self.next.val() != self.ph_run.val()) & (self.next.val() != self.ph_split.val());
@@ -488,7 +537,7 @@ impl<const H: usize> Logic for Nrap<H> {
         self.nrap_q.d.next = self.next.val();
         self.last.d.next = self.last_new.val();
         self.unacked.d.next = self.unacked_new.val();
-        self.ev_phase.next = self.next.val() != self.nrap_q.q.val();
+        self.ev_phase.next = self.chg.val();
         if self.ev_phase.val() {
             // every phase change clears the phase's timer, counter and half pair;
             // the joining frame's ACK slot then counts as in SRP_EXCHANGE

@@ -19,6 +19,20 @@
 //! active, §6), and the host's `recouple` command wins over a guard event at the
 //! same edge (§8).
 //!
+//! Guard stage (§6.1): every input but `rst` comes one clock late through
+//! `super::guard_stage`, so the guard applies at edge t + 1 what §6 decides at edge
+//! t; its registers are §6's fields one clock late. The one exception is
+//! `recouple`'s enable, which `enabled` and `word` show already in the clock after
+//! the command's own edge (so NRAP never sees the recoupled sublinks disabled).
+//!
+//! Precomputed counters (structural, for Fmax): between two SAMPLE edges the
+//! fields change only at the guard's own step (one clock after a SAMPLE edge),
+//! at a reset or at a `recouple` (whose writes `*_eff` below anticipate), and two
+//! SAMPLE edges are more than 2 clocks apart (§6.1); so in the clock before a step
+//! the fields already hold the values the step reads. Every clock registers the
+//! saturating increments and the threshold comparisons of those values (`pre_*`),
+//! and the step uses them instead of computing them after the tracker's events.
+//!
 //! NRAP (§9.2) keeps the port's NRAP field here (`rrun`) and writes the guard's
 //! fields through strobes from the phase machine (`super::nrap`; each implies a
 //! SAMPLE edge; the top wires to a port only the strobes §9.2 gives its kind of
@@ -57,7 +71,8 @@ pub struct PortGuard {
     pub freeze: Signal<In, Bit>,
     /// The reserved-identifier rule applies (node ports only).
     pub rid_en: Signal<In, Bit>,
-    /// Host command `CTRL.recouple` for this port (sublinks only).
+    /// Host command `CTRL.recouple` for this port (sublinks only), one clock
+    /// late like every input (§6.1); `enabled` shows it at once.
     pub recouple: Signal<In, Bit>,
     // SAMPLE edge, port value and bus value (before the edge)
     pub sample: Signal<In, Bit>,
@@ -110,6 +125,26 @@ pub struct PortGuard {
     active: DFF<Bit>,
     // NRAP field (§9.2)
     rrun: DFF<Bits<4>>,
+    // precomputed for the next step (see the header)
+    pre_dom: DFF<Bits<6>>,
+    pre_sd: DFF<Bit>,
+    pre_pec_b: DFF<Bits<8>>,
+    pre_bf: DFF<Bit>,
+    pre_pec_dec: DFF<Bits<8>>,
+    pre_sil: DFF<Bits<4>>,
+    pre_sr: DFF<Bit>,
+    pre_rc: DFF<Bits<16>>,
+    pre_rest: DFF<Bit>,
+    pre_rrun: DFF<Bits<4>>,
+    pre_rrun11: DFF<Bit>,
+    pec_eff: Signal<Local, Bits<8>>,
+    sil_eff: Signal<Local, Bits<4>>,
+    rc_eff: Signal<Local, Bits<16>>,
+    dom_inc: Signal<Local, Bits<6>>,
+    pec_inc: Signal<Local, Bits<8>>,
+    sil_inc: Signal<Local, Bits<4>>,
+    rc_inc: Signal<Local, Bits<16>>,
+    rrun_inc: Signal<Local, Bits<4>>,
     // combinational
     run: Signal<Local, Bit>,
     dom_new: Signal<Local, Bits<6>>,
@@ -126,6 +161,7 @@ pub struct PortGuard {
     symptom: Signal<Local, Bit>,
     rc_new: Signal<Local, Bits<16>>,
     rrun_new: Signal<Local, Bits<4>>,
+    en_out: Signal<Local, Bit>,
     // constants
     k_sd: Constant<Bits<3>>,
     k_sr: Constant<Bits<3>>,
@@ -192,6 +228,25 @@ impl Default for PortGuard {
             blamed: Default::default(),
             active: Default::default(),
             rrun: Default::default(),
+            pre_dom: Default::default(),
+            pre_sd: Default::default(),
+            pre_pec_b: Default::default(),
+            pre_bf: Default::default(),
+            pre_pec_dec: Default::default(),
+            pre_sil: Default::default(),
+            pre_sr: Default::default(),
+            pre_rc: Default::default(),
+            pre_rest: Default::default(),
+            pre_rrun: Default::default(),
+            pre_rrun11: Default::default(),
+            pec_eff: Default::default(),
+            sil_eff: Default::default(),
+            rc_eff: Default::default(),
+            dom_inc: Default::default(),
+            pec_inc: Default::default(),
+            sil_inc: Default::default(),
+            rc_inc: Default::default(),
+            rrun_inc: Default::default(),
             run: Default::default(),
             dom_new: Default::default(),
             sd_hit: Default::default(),
@@ -207,6 +262,7 @@ impl Default for PortGuard {
             symptom: Default::default(),
             rc_new: Default::default(),
             rrun_new: Default::default(),
+            en_out: Default::default(),
             k_sd: Constant::new(KIND_STUCK_DOMINANT.into()),
             k_sr: Constant::new(KIND_SILENT.into()),
             k_bf: Constant::new(KIND_BIT_FLIPPING.into()),
@@ -249,21 +305,84 @@ impl Logic for PortGuard {
             lost,
             blamed,
             active,
-            rrun
+            rrun,
+            pre_dom,
+            pre_sd,
+            pre_pec_b,
+            pre_bf,
+            pre_pec_dec,
+            pre_sil,
+            pre_sr,
+            pre_rc,
+            pre_rest,
+            pre_rrun,
+            pre_rrun11
         );
         self.iso_evt.next = false;
         self.rest_evt.next = false;
         self.run.next = self.sample.val() & !self.freeze.val();
 
+        // ---- precomputed for the next step (header): the fields as they will be
+        // at it (a pending `recouple` clears pec, silent and restore_cnt first) ----
+        self.pec_eff.next = self.pec.q.val();
+        self.sil_eff.next = self.silent.q.val();
+        self.rc_eff.next = self.restore_cnt.q.val();
+        if self.recouple.val() {
+            self.pec_eff.next = self.zero8.val();
+            self.sil_eff.next = self.zero4.val();
+            self.rc_eff.next = self.zero16.val();
+        }
+        if self.dom_run.q.val() == self.max6.val() {
+            self.dom_inc.next = self.max6.val();
+        } else {
+            self.dom_inc.next = self.dom_run.q.val() + self.one6.val();
+        }
+        self.pre_dom.d.next = self.dom_inc.val();
+        self.pre_sd.d.next = self.dom_inc.val() >= self.sd_limit.val();
+        if self.pec_eff.val() >= self.sat8.val() {
+            self.pec_inc.next = self.max8.val();
+        } else {
+            self.pec_inc.next = self.pec_eff.val() + self.eight8.val();
+        }
+        self.pre_pec_b.d.next = self.pec_inc.val();
+        self.pre_bf.d.next = self.pec_inc.val() >= self.bf_limit.val();
+        self.pre_pec_dec.d.next = self.pec_eff.val() - self.one8.val();
+        if self.sil_eff.val() == self.max4.val() {
+            self.sil_inc.next = self.max4.val();
+        } else {
+            self.sil_inc.next = self.sil_eff.val() + self.one4.val();
+        }
+        self.pre_sil.d.next = self.sil_inc.val();
+        self.pre_sr.d.next = (self.sr_frames.val() != self.zero4.val())
+            & (self.sil_inc.val() >= self.sr_frames.val());
+        if self.rc_eff.val() == self.max16.val() {
+            self.rc_inc.next = self.max16.val();
+        } else {
+            self.rc_inc.next = self.rc_eff.val() + self.one16.val();
+        }
+        self.pre_rc.d.next = self.rc_inc.val();
+        self.pre_rest.d.next = (self.restore_bits.val() != self.zero16.val())
+            & (self.rc_inc.val() >= self.restore_bits.val());
+        if self.rrun.q.val() == self.max4.val() {
+            self.rrun_inc.next = self.max4.val();
+        } else {
+            self.rrun_inc.next = self.rrun.q.val() + self.one4.val();
+        }
+        self.pre_rrun.d.next = self.rrun_inc.val();
+        self.pre_rrun11.d.next = self.rrun_inc.val() >= self.eleven4.val();
+
         // every SAMPLE, every port: dom_run = pb ? 0 : min(dom_run + 1, 63)
         if self.pb.val() {
             self.dom_new.next = self.zero6.val();
-        } else if self.dom_run.q.val() == self.max6.val() {
-            self.dom_new.next = self.max6.val();
         } else {
-            self.dom_new.next = self.dom_run.q.val() + self.one6.val();
+            self.dom_new.next = self.pre_dom.q.val();
         }
-        self.sd_hit.next = self.dom_new.val() >= self.sd_limit.val();
+        // dom_new >= sd_limit
+        if self.pb.val() {
+            self.sd_hit.next = self.sd_limit.val() == self.zero6.val();
+        } else {
+            self.sd_hit.next = self.pre_sd.q.val();
+        }
 
         // per-frame flags, tracked for every port
         self.cand_n.next = self.cand.q.val();
@@ -292,34 +411,21 @@ impl Logic for PortGuard {
             & !self.blamed.q.val()
             & ((!self.in_arb.val() & !self.pb.val() & !self.cand_n.val())
                 | (self.ev_stuff_rec.val() & self.cand_n.val()));
-        if self.pec.q.val() >= self.sat8.val() {
-            self.pec_blamed.next = self.max8.val();
-        } else {
-            self.pec_blamed.next = self.pec.q.val() + self.eight8.val();
-        }
-        self.bf_hit.next = self.blame.val() & (self.pec_blamed.val() >= self.bf_limit.val());
+        self.pec_blamed.next = self.pre_pec_b.q.val();
+        self.bf_hit.next = self.blame.val() & self.pre_bf.q.val();
         // rule RID
         self.rid_hit.next = self.ev_rid.val() & self.rid_en.val() & self.cand_n.val();
         // rule SR
-        if self.silent.q.val() == self.max4.val() {
-            self.silent_new.next = self.max4.val();
-        } else {
-            self.silent_new.next = self.silent.q.val() + self.one4.val();
-        }
-        self.sr_hit.next = self.ev_ack.val()
-            & !self.active_n.val()
-            & (self.sr_frames.val() != self.zero4.val())
-            & (self.silent_new.val() >= self.sr_frames.val());
+        self.silent_new.next = self.pre_sil.q.val();
+        self.sr_hit.next = self.ev_ack.val() & !self.active_n.val() & self.pre_sr.q.val();
         // restoration
         self.symptom.next = (!self.pb.val() & self.b.val())
             | self.sd_hit.val()
             | (self.ev_ack.val() & !self.active_n.val());
         if self.symptom.val() {
             self.rc_new.next = self.zero16.val();
-        } else if self.restore_cnt.q.val() == self.max16.val() {
-            self.rc_new.next = self.max16.val();
         } else {
-            self.rc_new.next = self.restore_cnt.q.val() + self.one16.val();
+            self.rc_new.next = self.pre_rc.q.val();
         }
 
         if self.run.val() {
@@ -337,7 +443,7 @@ impl Logic for PortGuard {
                 }
                 if self.ev_ack.val() {
                     if !self.blamed.q.val() & (self.pec.q.val() != self.zero8.val()) {
-                        self.pec.d.next = self.pec.q.val() - self.one8.val();
+                        self.pec.d.next = self.pre_pec_dec.q.val();
                     }
                     if self.active_n.val() {
                         self.silent.d.next = self.zero4.val();
@@ -364,9 +470,8 @@ impl Logic for PortGuard {
                     self.restore_cnt.d.next = self.zero16.val();
                     self.silent.d.next = self.zero4.val();
                 }
-            } else if (self.restore_bits.val() != self.zero16.val())
-                & (self.rc_new.val() >= self.restore_bits.val())
-            {
+            } else if !self.symptom.val() & self.pre_rest.q.val() {
+                // new restore_cnt >= restore_bits != 0 (a symptom makes it 0)
                 // restoration
                 self.rest_evt.next = true;
                 self.enabled_q.d.next = true;
@@ -383,18 +488,14 @@ impl Logic for PortGuard {
 
         // ---- NRAP (§9.2) ----
         if self.pb.val() {
-            if self.rrun.q.val() == self.max4.val() {
-                self.rrun_new.next = self.max4.val();
-            } else {
-                self.rrun_new.next = self.rrun.q.val() + self.one4.val();
-            }
+            self.rrun_new.next = self.pre_rrun.q.val();
         } else {
             self.rrun_new.next = self.zero4.val();
         }
         if self.n_rrun.val() & !self.enabled_q.q.val() {
             // a silent sublink: 11 recessive bits, an idle twin
             self.rrun.d.next = self.rrun_new.val();
-            if self.rrun_new.val() >= self.eleven4.val() {
+            if self.pb.val() & self.pre_rrun11.q.val() {
                 self.enabled_q.d.next = true;
                 self.pec.d.next = self.zero8.val();
                 self.silent.d.next = self.zero4.val();
@@ -448,8 +549,11 @@ impl Logic for PortGuard {
             self.iso_evt.next = false;
             self.rest_evt.next = false;
         }
-        self.enabled.next = self.enabled_q.q.val();
-        self.word.next = bit_cast::<32, 1>(self.enabled_q.q.val().into())
+        // §6.1: the command's enable shows at its own edge (`recouple` is the
+        // command one clock late, whose writes land now)
+        self.en_out.next = self.enabled_q.q.val() | self.recouple.val();
+        self.enabled.next = self.en_out.val();
+        self.word.next = bit_cast::<32, 1>(self.en_out.val().into())
             | (bit_cast::<32, 3>(self.kind.q.val()) << 1)
             | (bit_cast::<32, 8>(self.pec.q.val()) << 8)
             | (bit_cast::<32, 8>(self.isolations.q.val()) << 16)

@@ -16,6 +16,13 @@
 //! commands (a command wins over a guard event of the same edge), then
 //! `INT_STATUS` and `irq`.
 //!
+//! Guard stage (§6.1): `ports` are the guards as §6 decides them, edge by edge;
+//! the RTL's guard registers, which everything else reads (the coupling, the ACK
+//! unit, NRAP's decisions, §7, `STATUS`, `PORT_p`, `port_enabled`) and whose
+//! events set `INT_STATUS`, are that state one clock late: `late`, `enabled` and
+//! `late_ints`. `late` takes the value `ports` had before an edge at the end of
+//! that edge, copied only after an edge that could change `ports`.
+//!
 //! Speed: a clock without a sample point and without a Wishbone access moves only
 //! the synchronizers, the coupling registers and the prescaler (the accesses and
 //! the commands are out of line); nothing allocates.
@@ -115,9 +122,16 @@ pub struct HubModel {
     /// `sample_point` probe register.
     sample_point: bool,
     trk: Tracker,
+    /// The guards as §6 decides them (§6.1: the decision state).
     ports: [PortGuard; MAX_PORTS],
-    /// Bit p = `ports[p].enabled` (kept in step with the guards).
+    /// The guard registers (§6.1): `ports` one clock late.
+    late: [PortGuard; MAX_PORTS],
+    /// Bit p = `late[p].enabled`: the enabled mask everything else reads.
     enabled: u16,
+    /// `INT_STATUS` events of the guards decided at the last edge (set at this one).
+    late_ints: u32,
+    /// `ports` may have changed at the last edge (`late` must follow).
+    moved: bool,
     dec: Decoupler,
     /// NRAP (§9): phases, transmitter, recogniser.
     nrap: Nrap,
@@ -158,7 +172,10 @@ impl HubModel {
             sample_point: false,
             trk: Tracker::new(),
             ports: [PortGuard::new(); MAX_PORTS],
+            late: [PortGuard::new(); MAX_PORTS],
             enabled: 0,
+            late_ints: 0,
+            moved: false,
             dec: Decoupler::default(),
             nrap: Nrap::new(hub_id & 1),
             ack: AckUnit::new(),
@@ -198,20 +215,33 @@ impl HubModel {
         self.timing = timing_of(btr::RESET);
         self.sample_point = false;
         self.hold_reset_mode();
+        // `rst` resets the guard registers at its own edge (§6.1)
+        self.late = self.ports;
+        self.enabled = self.node_mask | self.sub_mask;
+        self.late_ints = 0;
+        self.moved = false;
     }
 
     /// The fields reset mode holds at their reset values (§8 "Reset mode").
     fn hold_reset_mode(&mut self) {
         self.trk = Tracker::new();
         self.ports = [PortGuard::new(); MAX_PORTS];
-        self.enabled = self.node_mask | self.sub_mask;
+        self.moved = true;
         self.dec = Decoupler::default();
         self.nrap.hold_reset_mode();
     }
 
-    fn update_enabled(&mut self) {
+    /// §6.1: the guard registers take the decision state `before` (the value
+    /// `ports` had before this edge).
+    fn follow(&mut self, before: &[PortGuard; MAX_PORTS]) {
+        self.late = *before;
+        self.late_mask();
+    }
+
+    /// `enabled` from the guard registers.
+    fn late_mask(&mut self) {
         let mut e = 0u16;
-        for (p, g) in self.ports[..self.n + self.m].iter().enumerate() {
+        for (p, g) in self.late[..self.n + self.m].iter().enumerate() {
             e |= (g.enabled as u16) << p;
         }
         self.enabled = e;
@@ -243,7 +273,7 @@ impl HubModel {
             idx::NRAP_DDSP => r.nrap_ddsp,
             idx::NRAP_STATUS => self.nrap.status(),
             a if a >= idx::PORT0 && ((a - idx::PORT0) as usize) < self.n + self.m => {
-                self.ports[(a - idx::PORT0) as usize].reg()
+                self.late[(a - idx::PORT0) as usize].reg()
             }
             _ => 0,
         }
@@ -264,6 +294,11 @@ impl HubModel {
     /// One edge out of `rst`.
     #[inline]
     fn edge(&mut self, i: &HubInputs) {
+        // §6.1: the decision state before this edge, for the guard registers at
+        // its end (only when it may have moved at the last edge).
+        let before = if self.moved { Some(self.ports) } else { None };
+        self.moved = false;
+        let late_ints = std::mem::take(&mut self.late_ints);
         // The registers this edge needs as they are before it.
         let reset_mode = self.regs.reset_mode;
         let btl_reset = reset_mode || self.regs.reset_mode_q;
@@ -347,7 +382,9 @@ impl HubModel {
                         // The guard configuration cannot change at a SAMPLE edge
                         // (it is written only in reset mode), so `self.regs` holds
                         // the values before the edge.
-                        ints |= self.sample(sampled, pq);
+                        let (now, guards) = self.sample(sampled, pq);
+                        ints |= now;
+                        self.late_ints = guards;
                     }
                     BtlEvent::BitStart { hard } => {
                         let sub_any = self.enabled & self.sub_mask != 0;
@@ -373,6 +410,20 @@ impl HubModel {
         if fx.force_decouple | fx.recouple {
             ints |= self.command(&fx);
         }
+
+        // §6.1: the guard registers, one clock behind the decisions
+        if let Some(before) = before {
+            self.follow(&before);
+        }
+        if fx.recouple {
+            // §6.1: the command's enable shows at its own edge (its other writes
+            // one clock later, with the rest of the guard state)
+            for g in self.late[self.n..self.n + self.m].iter_mut() {
+                g.enabled = true;
+            }
+            self.late_mask();
+        }
+        ints |= late_ints;
 
         self.regs.reset_mode_q = reset_mode;
         self.regs.int_status = (int_before & !fx.w1c) | ints;
@@ -420,14 +471,15 @@ impl HubModel {
                 g.silent = 0;
                 g.pec = 0;
             }
-            self.update_enabled();
+            self.moved = true;
         }
         ints
     }
 
     /// A SAMPLE edge: tracker, guards, decoupling. `b` = the sampled bus value,
-    /// `pq` = `port_q` before the edge. Returns the `INT_STATUS` events.
-    fn sample(&mut self, b: bool, pq: u16) -> u32 {
+    /// `pq` = `port_q` before the edge. Returns the `INT_STATUS` events of this
+    /// edge and those of the guards (set one clock later, §6.1).
+    fn sample(&mut self, b: bool, pq: u16) -> (u32, u32) {
         let r = &self.regs;
         let decouple_bits = r.decouple_bits();
         let ack_slot = self.trk.state == tracker::ACK_SLOT;
@@ -451,6 +503,8 @@ impl HubModel {
             ..node
         };
         let mut ints = 0;
+        let mut guard_ints = 0;
+        self.moved = true;
         // While NRAP is active no guard rule runs; while decoupled the sublink
         // guards are frozen.
         let ports = if nrap_active {
@@ -464,10 +518,10 @@ impl HubModel {
             let lim = if p < self.n { &node } else { &sub };
             let e = g.sample((pq >> p) & 1 != 0, b, ev, lim);
             if e.isolated {
-                ints |= int::ISOLATION;
+                guard_ints |= int::ISOLATION;
             }
             if e.restored {
-                ints |= int::RESTORATION;
+                guard_ints |= int::RESTORATION;
             }
         }
         // NRAP (§9), on the values before the edge.
@@ -495,12 +549,11 @@ impl HubModel {
             self.dec.decoupled = true;
             ints |= int::DECOUPLED;
         }
-        self.update_enabled();
         // §7 decouples only without NRAP.
         if !nrap_on && self.dec.sample(any_sub_enabled, decouple_bits) {
             ints |= int::DECOUPLED;
         }
-        ints
+        (ints, guard_ints)
     }
 
     /// The outputs after the last edge.
@@ -529,9 +582,10 @@ impl HubModel {
         }
     }
 
-    /// The guard registers of port `p` (node ports `0..N`, sublinks `N..N+M`).
+    /// The guard registers of port `p` (node ports `0..N`, sublinks `N..N+M`), as
+    /// `PORT_p` shows them (one clock behind the decisions, §6.1).
     pub fn port(&self, p: usize) -> &PortGuard {
-        &self.ports[p]
+        &self.late[p]
     }
 
     /// The tracker (state and `STATS` counters).

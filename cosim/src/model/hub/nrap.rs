@@ -107,7 +107,9 @@ pub struct SampleInputs {
     pub ack_slot: bool,
     /// `trk == ACK_DELIM` before the edge.
     pub ack_delim: bool,
-    /// Enabled mask before the edge.
+    /// Enabled mask before the edge, as the guards show it (one clock late,
+    /// §6.1): NRAP's own decisions use it; its writes to a port judge that
+    /// guard's own `enabled`.
     pub enabled: u16,
     pub nrap_on: bool,
     pub decoupled: bool,
@@ -311,7 +313,8 @@ impl Nrap {
             return;
         }
         for (p, g) in ports[..n].iter_mut().enumerate() {
-            if (i.enabled >> p) & 1 == 1 && (i.pq >> p) & 1 == 0 {
+            // the guard's own `enabled` (§6.1: the guard judges its own state)
+            if g.enabled && (i.pq >> p) & 1 == 0 {
                 coverage::hit("hub nrap: a node port errs and is disabled");
                 g.enabled = false;
             }
@@ -439,7 +442,8 @@ impl Nrap {
             }
             phase::SRP_EXCHANGE => {
                 for (p, g) in ports.iter_mut().enumerate().skip(n) {
-                    if (i.enabled >> p) & 1 == 0 {
+                    // the guard's own `enabled` (§6.1), not the late copy
+                    if !g.enabled {
                         let r = if (i.pq >> p) & 1 == 1 {
                             (self.rrun[p] + 1).min(15)
                         } else {

@@ -505,8 +505,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  nrap__twin_b;
     reg  nrap__sample;
     reg  nrap__b;
-    reg  nrap__ev_ack;
-    reg  nrap__ev_delim;
+    reg  nrap__at_ack;
+    reg  nrap__at_delim;
     reg  nrap__own_frame;
     reg  nrap__twin_frame;
     reg  nrap__in_id;
@@ -954,8 +954,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .twin_b(nrap__twin_b),
         .sample(nrap__sample),
         .b(nrap__b),
-        .ev_ack(nrap__ev_ack),
-        .ev_delim(nrap__ev_delim),
+        .at_ack(nrap__at_ack),
+        .at_delim(nrap__at_delim),
         .own_frame(nrap__own_frame),
         .twin_frame(nrap__twin_frame),
         .in_id(nrap__in_id),
@@ -1254,8 +1254,8 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         nrap__twin_b = &(coupler__sub_q | ~sub_en);
         nrap__sample = btl__sample;
         nrap__b = coupler__coupled;
-        nrap__ev_ack = tracker__ev_ack;
-        nrap__ev_delim = btl__sample & (tracker__trk == s_delim);
+        nrap__at_ack = tracker__trk == s_ack;
+        nrap__at_delim = tracker__trk == s_delim;
         nrap__own_frame = id_frame__own_frame;
         nrap__twin_frame = id_frame__twin_frame;
         nrap__in_id = id_frame__in_id;
@@ -9597,7 +9597,7 @@ module hub__node_guards__3__silent(d,q,clock);
 endmodule // hub__node_guards__3__silent
 
 
-module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames,srp_bits,nrp_bits,ddsp_bits,block_frames,decoupled,any_sub_en,twin_b,sample,b,ev_ack,ev_delim,own_frame,twin_frame,in_id,cmd_run,cmd_split,phase,active,forcing,send,ack_en,hush,quiet_twin,status,ev_phase,set_decoupled,p_exchange,p_watch,p_off_sub,p_join,p_enable);
+module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames,srp_bits,nrp_bits,ddsp_bits,block_frames,decoupled,any_sub_en,twin_b,sample,b,at_ack,at_delim,own_frame,twin_frame,in_id,cmd_run,cmd_split,phase,active,forcing,send,ack_en,hush,quiet_twin,status,ev_phase,set_decoupled,p_exchange,p_watch,p_off_sub,p_join,p_enable);
     
     // Module arguments
     input wire  clk;
@@ -9617,8 +9617,8 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
     input wire  twin_b;
     input wire  sample;
     input wire  b;
-    input wire  ev_ack;
-    input wire  ev_delim;
+    input wire  at_ack;
+    input wire  at_delim;
     input wire  own_frame;
     input wire  twin_frame;
     input wire  in_id;
@@ -9869,7 +9869,7 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
         nt_new = ahead__nt_inc;
         unacked_new = unacked__q;
         blocked = ahead__blk0;
-        if (ev_delim) begin
+        if (at_delim) begin
             if (b) begin
                 unacked_new = zero5;
                 blocked = 1'b0;
@@ -9879,8 +9879,8 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
                 blocked = ahead__blk1;
             end
         end
-        ack_own = ev_ack & own_frame;
-        ack_twin = ev_ack & twin_frame;
+        ack_own = at_ack & own_frame;
+        ack_twin = at_ack & twin_frame;
         if (is_b) begin
             ack_a = ack_twin;
             ack_b = ack_own;
@@ -10007,8 +10007,10 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
         end
         next_active = (next != ph_run) & (next != ph_split);
         nrap_q__d = next;
-        last__d = last_new;
-        unacked__d = unacked_new;
+        if (sample) begin
+            last__d = last_new;
+            unacked__d = unacked_new;
+        end
         ev_phase = chg;
         if (ev_phase) begin
             nt__d = zero16;
@@ -10018,9 +10020,9 @@ module hub__nrap(clk,rst,hold,nrap_on,force_bits,srp_pairs,nrp_pairs,ddsp_frames
         else begin
             if (sample) begin
                 nt__d = nt_new;
+                ncnt__d = ncnt_new;
+                half__d = half_new;
             end
-            ncnt__d = ncnt_new;
-            half__d = half_new;
         end
         if (~hold) begin
             if (st_run & next_active & (runs__q != max4)) begin

@@ -420,9 +420,8 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.nrap.twin_b.next = (self.coupler.sub_q.val() | !self.sub_en.val()).all();
         self.nrap.sample.next = self.btl.sample.val();
         self.nrap.b.next = self.coupler.coupled.val();
-        self.nrap.ev_ack.next = self.tracker.ev_ack.val();
-        self.nrap.ev_delim.next =
-            self.btl.sample.val() & (self.tracker.trk.val() == self.s_delim.val());
+        self.nrap.at_ack.next = self.tracker.trk.val() == self.s_ack.val();
+        self.nrap.at_delim.next = self.tracker.trk.val() == self.s_delim.val();
         self.nrap.own_frame.next = self.id_frame.own_frame.val();
         self.nrap.twin_frame.next = self.id_frame.twin_frame.val();
         self.nrap.in_id.next = self.id_frame.in_id.val();

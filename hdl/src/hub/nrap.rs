@@ -32,6 +32,10 @@
 //! Structural, for Fmax: the increments of `nt`, `ncnt`, `unacked` and their
 //! comparisons with the limits come registered from `super::nrap_ahead`, computed
 //! in the clock before the SAMPLE edge (the counters cannot change in between).
+//! The rules are computed every clock from the tracker's state (`at_ack`,
+//! `at_delim`), not from its SAMPLE-edge events, and `sample` gates only the
+//! register writes: the bit timing's sample decision, which comes late in the
+//! clock, then meets the rules at their last gate instead of their first.
 //!
 //! The per-port NRAP field (`rrun`) and the writes to the ports' `enabled`, `pec`,
 //! `silent` and `restore_cnt` live in the port guards (`super::port_guard`); this
@@ -120,10 +124,11 @@ pub struct Nrap<const H: usize> {
     pub sample: Signal<In, Bit>,
     /// `coupled_q`: the bus value sampled at a SAMPLE edge.
     pub b: Signal<In, Bit>,
-    /// `ACK_PORTS`: the SAMPLE edge of the ACK slot.
-    pub ev_ack: Signal<In, Bit>,
-    /// The SAMPLE edge of the ACK delimiter (`trk == ACK_DELIM` before it).
-    pub ev_delim: Signal<In, Bit>,
+    /// The tracker is in the ACK slot (`trk == ACK_SLOT`): at a SAMPLE edge this
+    /// is `ACK_PORTS`.
+    pub at_ack: Signal<In, Bit>,
+    /// The tracker is at the ACK delimiter (`trk == ACK_DELIM`).
+    pub at_delim: Signal<In, Bit>,
     /// The frame in its ACK slot is the own identification frame.
     pub own_frame: Signal<In, Bit>,
     /// The frame in its ACK slot is the twin's identification frame.
@@ -255,8 +260,8 @@ impl<const H: usize> Default for Nrap<H> {
             twin_b: Default::default(),
             sample: Default::default(),
             b: Default::default(),
-            ev_ack: Default::default(),
-            ev_delim: Default::default(),
+            at_ack: Default::default(),
+            at_delim: Default::default(),
             own_frame: Default::default(),
             twin_frame: Default::default(),
             in_id: Default::default(),
@@ -387,7 +392,7 @@ impl<const H: usize> Logic for Nrap<H> {
         // `blocked`: the new unacked >= block_frames != 0
         self.unacked_new.next = self.unacked.q.val();
         self.blocked.next = self.ahead.blk0.val();
-        if self.ev_delim.val() {
+        if self.at_delim.val() {
             if self.b.val() {
                 self.unacked_new.next = self.zero5.val();
                 self.blocked.next = false;
@@ -397,8 +402,8 @@ impl<const H: usize> Logic for Nrap<H> {
             }
         }
         // the ACK slot of an identification frame; hub A's and hub B's by HUB_ID
-        self.ack_own.next = self.ev_ack.val() & self.own_frame.val();
-        self.ack_twin.next = self.ev_ack.val() & self.twin_frame.val();
+        self.ack_own.next = self.at_ack.val() & self.own_frame.val();
+        self.ack_twin.next = self.at_ack.val() & self.twin_frame.val();
         if self.is_b.val() {
             self.ack_a.next = self.ack_twin.val();
             self.ack_b.next = self.ack_own.val();
@@ -535,8 +540,10 @@ impl<const H: usize> Logic for Nrap<H> {
 
         // ---- registers ----
         self.nrap_q.d.next = self.next.val();
-        self.last.d.next = self.last_new.val();
-        self.unacked.d.next = self.unacked_new.val();
+        if self.sample.val() {
+            self.last.d.next = self.last_new.val();
+            self.unacked.d.next = self.unacked_new.val();
+        }
         self.ev_phase.next = self.chg.val();
         if self.ev_phase.val() {
             // every phase change clears the phase's timer, counter and half pair;
@@ -547,9 +554,9 @@ impl<const H: usize> Logic for Nrap<H> {
         } else {
             if self.sample.val() {
                 self.nt.d.next = self.nt_new.val();
+                self.ncnt.d.next = self.ncnt_new.val();
+                self.half.d.next = self.half_new.val();
             }
-            self.ncnt.d.next = self.ncnt_new.val();
-            self.half.d.next = self.half_new.val();
         }
         if !self.hold.val() {
             if self.st_run.val() & self.next_active.val() & (self.runs.q.val() != self.max4.val()) {

@@ -19,8 +19,10 @@
 use super::dmr_config::DmrConfig;
 use crate::engine::drcc::{DrccInputs, DrccOutputs};
 use crate::frame::Frame;
+use drcc_hdl::host::map::Field;
 use drcc_hdl::host::registers::{SwitchPolicy, MAP};
 use std::collections::VecDeque;
+use std::sync::LazyLock;
 
 /// Word indices of the DRCC registers, from the register table of drcc-hdl
 /// (`drcc_hdl::host::registers`, contract §3) as the `u8` the bus carries.
@@ -75,6 +77,10 @@ fn put(reg: &str, field: &str, value: u32) -> u32 {
 fn get(reg: &str, field: &str, word: u32) -> u32 {
     MAP.field(reg, field).get(word)
 }
+
+/// `RX_ID.rx_ready`, looked up once: the host polls `RX_ID` every other clock,
+/// and a lookup by name there was a twentieth of a campaign's time.
+static RX_READY: LazyLock<&'static Field> = LazyLock::new(|| MAP.field("RX_ID", "rx_ready"));
 
 /// Transmit policy of redundancy mode (`CTRL.policy`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -506,7 +512,7 @@ impl HostDriver {
                 }
             }
             Purpose::RxId => {
-                if get("RX_ID", "rx_ready", data) != 0 {
+                if RX_READY.get(data) != 0 {
                     self.rx_partial.0 = Frame {
                         id: get("RX_ID", "id", data),
                         ide: get("RX_ID", "ide", data) != 0,

@@ -8,7 +8,7 @@
 //!
 //! Without Verilator, or without the RTL files, the crate is built without the
 //! model (a `cargo:warning` says why; `verilator_sys::available()` is false)
-//! unless Verilator is required (`src/required.rs`: `DRCC_REQUIRE_VERILATOR` or
+//! unless Verilator is required (`drcc_tools::required`: `DRCC_REQUIRE_VERILATOR` or
 //! `CI` set to anything but empty, `0`, `false`, `no`, `off`), which turns every
 //! such case into a build error.
 //!
@@ -23,8 +23,6 @@
 
 #[path = "build/eval_step.rs"]
 mod eval_step;
-#[path = "src/required.rs"]
-mod required;
 #[path = "build/tables.rs"]
 mod tables;
 
@@ -89,7 +87,7 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(drcc_verilator)");
     for var in ["VERILATOR", "DRCC_RTL_DIR"]
         .into_iter()
-        .chain(required::REQUIRE_VARS)
+        .chain(drcc_tools::REQUIRE_VARS)
     {
         println!("cargo::rerun-if-env-changed={var}");
     }
@@ -97,7 +95,7 @@ fn main() {
     let shim_dir = manifest.join("shim");
     println!("cargo::rerun-if-changed={}", shim_dir.display());
     // The script and the files it includes with #[path].
-    for own in ["build.rs", "build", "src/required.rs"] {
+    for own in ["build.rs", "build"] {
         println!("cargo::rerun-if-changed={own}");
     }
     if let Ok(entries) = fs::read_dir(&shim_dir) {
@@ -111,7 +109,7 @@ fn main() {
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("OUT_DIR"));
     write_if_changed(&out.join("tops.rs"), &tables::rust_bindings(&tops));
 
-    let required = required::required();
+    let required = drcc_tools::required();
     match build(&manifest, &shim_dir, &tops) {
         Ok(version) => {
             println!("cargo::rustc-cfg=drcc_verilator");

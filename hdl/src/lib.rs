@@ -7,6 +7,9 @@ pub mod generated;
 pub mod host;
 pub mod hub;
 pub mod memory;
+pub mod pins;
 pub mod redcan;
 pub mod rmb;
+#[cfg(test)]
+mod synth_check;
 pub mod tops;

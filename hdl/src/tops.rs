@@ -23,7 +23,9 @@
 //! engine that drives the top (`cosim/src/engine/`) is written by hand.
 
 mod configured;
+pub mod fusesoc;
 pub mod port_docs;
+pub mod readable;
 pub mod shim_table;
 pub mod verilog;
 
@@ -81,6 +83,10 @@ pub struct Top {
     source: &'static str,
     /// Extra lines for the header of the emitted file (layouts, pointers).
     pub notes: &'static str,
+    /// The CAN transmit pins (1 = recessive): recessive from configuration on.
+    pub can_tx: &'static [&'static str],
+    /// The CAN receive pins (1 = recessive), asynchronous, synchronized inside.
+    pub can_rx: &'static [&'static str],
     /// The raw rust-hdl Verilog of the block (before [`finish_verilog`]).
     raw_verilog: fn() -> String,
     /// The ports of the block, from its probe walk.
@@ -157,6 +163,8 @@ pub static TOPS: &[Top] = &[
         source_path: "hdl/src/channel/can_channel.rs",
         source: include_str!("channel/can_channel.rs"),
         notes: CHANNEL_NOTES,
+        can_tx: &["tx"],
+        can_rx: &["rx"],
         raw_verilog: raw_verilog_of::<CanChannel>,
         ports: ports_of::<CanChannel>,
     },
@@ -179,6 +187,8 @@ pub static TOPS: &[Top] = &[
                 docs/registers.md, C header rtl-out/drcc_regs.h. In TX_DATA0/1 and\n\
                 RX_DATA0/1 byte 0 (the first on the bus) is in [7:0]; on can_channel's ports it\n\
                 is in [63:56] (see the table in can_channel.v).",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
         raw_verilog: raw_verilog_of::<Drcc>,
         ports: ports_of::<Drcc>,
     },
@@ -200,6 +210,8 @@ pub static TOPS: &[Top] = &[
         notes: "The drcc with M = 0 DMR mailboxes (cosim/src/model/dmr_contract.md section 2):\n\
                 the same ports and registers; MB_SEL and the mailbox window refuse every\n\
                 write and read 0. Registers: docs/registers.md, rtl-out/drcc_regs.h.",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
         raw_verilog: raw_verilog_of::<DrccM0>,
         ports: ports_of::<DrccM0>,
     },
@@ -223,6 +235,8 @@ pub static TOPS: &[Top] = &[
                 (INT_STATUS.illegal), a push to a TX queue holding 4 frames is refused, the RX\n\
                 FIFO overruns at 8 frames, duplicate removal remembers 16 frames. Registers:\n\
                 docs/registers.md, rtl-out/drcc_regs.h.",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
         raw_verilog: raw_verilog_small,
         ports: ports_of::<DrccM0>,
     },
@@ -235,6 +249,8 @@ pub static TOPS: &[Top] = &[
         source_path: "hdl/src/hub/hub.rs",
         source: include_str!("hub/hub.rs"),
         notes: HUB_NOTES,
+        can_tx: &["downlink", "sublink_out", "hub_tx"],
+        can_rx: &["uplink", "sublink_in"],
         raw_verilog: raw_verilog_of::<Hub4x2>,
         ports: ports_of::<Hub4x2>,
     },
@@ -247,6 +263,8 @@ pub static TOPS: &[Top] = &[
         source_path: "hdl/src/hub/hub.rs",
         source: include_str!("hub/hub.rs"),
         notes: HUB_NOTES,
+        can_tx: &["downlink", "sublink_out", "hub_tx"],
+        can_rx: &["uplink", "sublink_in"],
         raw_verilog: raw_verilog_of::<HubB4x2>,
         ports: ports_of::<HubB4x2>,
     },
@@ -261,6 +279,8 @@ pub static TOPS: &[Top] = &[
         notes: "ctl = {connect right, connect left}: 11 transparent (reset), 01 left, 10 right,\n\
                 00 refused (illegal). The driver outputs are the coil and switch drives; the\n\
                 ring simulator applies them after the relay's operate time (section 1).",
+        can_tx: &[],
+        can_rx: &[],
         raw_verilog: raw_verilog_of::<Rcm>,
         ports: ports_of::<Rcm>,
     },

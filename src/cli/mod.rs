@@ -102,8 +102,13 @@ pub fn project_root(instead: &str) -> Result<PathBuf, CliError> {
 
 /// The temporary file beside `path` that an atomic write goes through.
 fn tmp_path(path: &Path) -> PathBuf {
+    // Unique per process and per call: several `drcc` processes writing one
+    // directory at once (a parallel build, CI jobs sharing a workspace) must not
+    // rename one another's temporary files away.
+    static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
-    path.with_file_name(format!(".{name}.drcc-tmp"))
+    path.with_file_name(format!(".{name}.{}-{n}.drcc-tmp", std::process::id()))
 }
 
 /// Writes `text` to `path` through a temporary file beside it and a rename, so an

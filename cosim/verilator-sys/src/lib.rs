@@ -12,8 +12,8 @@
 //! that a build error instead.
 //!
 //! # When Verilator is required
-//! One rule, [`required`], used by the build script (it includes the same
-//! source file) and by every test and tool that skips without Verilator:
+//! One rule, [`required`] (from `drcc-tools`), used by the build script and by
+//! every test and tool that skips without Verilator:
 //! required iff `DRCC_REQUIRE_VERILATOR` or `CI` is set to a value other than
 //! empty, `0`, `false`, `no` or `off` (case-insensitive).
 //!
@@ -47,8 +47,7 @@
 //! one bus) can live in one process and be stepped alternately, on any thread,
 //! but one instance is never stepped from two threads at once (`Send`, not `Sync`).
 
-mod required;
-pub use required::{required, REQUIRE_VARS};
+pub use drcc_tools::{required, REQUIRE_VARS};
 
 use std::fmt;
 
@@ -425,27 +424,6 @@ mod tests {
         for (name, width) in CanChannelIn::PORTS.iter().chain(CanChannelOut::PORTS) {
             assert!(*width >= 1 && *width <= 64, "{name}");
         }
-    }
-
-    /// The rule of the crate docs, value by value.
-    #[test]
-    fn required_rule() {
-        for off in [
-            None,
-            Some(""),
-            Some("0"),
-            Some("false"),
-            Some("FALSE"),
-            Some("no"),
-            Some("Off"),
-            Some(" 0 "),
-        ] {
-            assert!(!required::is_on(off), "{off:?}");
-        }
-        for on in ["1", "true", "TRUE", "yes", "on", "anything"] {
-            assert!(required::is_on(Some(on)), "{on}");
-        }
-        assert_eq!(REQUIRE_VARS, ["DRCC_REQUIRE_VERILATOR", "CI"]);
     }
 
     #[test]

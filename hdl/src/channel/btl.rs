@@ -435,5 +435,5 @@ impl Logic for BitTimingLogic {
 fn btl_synthesizes() {
     let mut uut = BitTimingLogic::default();
     uut.connect_all();
-    yosys_validate("bit_timing_logic", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("bit_timing_logic", &generate_verilog(&uut));
 }

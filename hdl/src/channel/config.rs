@@ -224,5 +224,5 @@ impl Logic for ChannelConfig {
 fn channel_config_synthesizes() {
     let mut uut = ChannelConfig::default();
     uut.connect_all();
-    yosys_validate("channel_config", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("channel_config", &generate_verilog(&uut));
 }

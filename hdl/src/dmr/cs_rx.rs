@@ -158,5 +158,5 @@ impl Logic for DmrCsRx {
 fn dmr_cs_rx_synthesizes() {
     let mut uut = DmrCsRx::default();
     uut.connect_all();
-    yosys_validate("dmr_cs_rx", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_cs_rx", &generate_verilog(&uut));
 }

@@ -458,5 +458,5 @@ impl<const M: usize> Logic for DmrEngine<M> {
 fn dmr_engine_synthesizes() {
     let mut uut = DmrEngine::<MAILBOXES>::default();
     uut.connect_all();
-    yosys_validate("dmr_engine", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_engine", &generate_verilog(&uut));
 }

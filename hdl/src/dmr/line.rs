@@ -393,5 +393,5 @@ impl Logic for DmrLine {
 fn dmr_line_synthesizes() {
     let mut uut = DmrLine::default();
     uut.connect_all();
-    yosys_validate("dmr_line", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_line", &generate_verilog(&uut));
 }

@@ -61,5 +61,5 @@ impl Logic for MailboxCfg {
 fn mailbox_cfg_synthesizes() {
     let mut uut = MailboxCfg::default();
     uut.connect_all();
-    yosys_validate("mailbox_cfg", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("mailbox_cfg", &generate_verilog(&uut));
 }

@@ -196,5 +196,5 @@ impl<const M: usize> Logic for MailboxState<M> {
 fn mailbox_state_synthesizes() {
     let mut uut = MailboxState::<16>::default();
     uut.connect_all();
-    yosys_validate("mailbox_state", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("mailbox_state", &generate_verilog(&uut));
 }

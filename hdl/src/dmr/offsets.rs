@@ -156,5 +156,5 @@ impl Logic for DmrOffsets {
 fn dmr_offsets_synthesizes() {
     let mut uut = DmrOffsets::default();
     uut.connect_all();
-    yosys_validate("dmr_offsets", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_offsets", &generate_verilog(&uut));
 }

@@ -78,5 +78,5 @@ fn sat_count8_saturates() {
 fn sat_count8_synthesizes() {
     let mut uut = SatCount8::default();
     uut.connect_all();
-    yosys_validate("sat_count8", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("sat_count8", &generate_verilog(&uut));
 }

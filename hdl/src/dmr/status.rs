@@ -232,5 +232,5 @@ impl Logic for DmrStatus {
 fn dmr_status_synthesizes() {
     let mut uut = DmrStatus::default();
     uut.connect_all();
-    yosys_validate("dmr_status", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_status", &generate_verilog(&uut));
 }

@@ -132,5 +132,5 @@ fn dmr_time_base_periods() {
 fn dmr_time_base_synthesizes() {
     let mut uut = DmrTimeBase::default();
     uut.connect_all();
-    yosys_validate("dmr_time_base", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_time_base", &generate_verilog(&uut));
 }

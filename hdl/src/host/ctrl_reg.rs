@@ -252,5 +252,5 @@ impl Logic for CtrlReg {
 fn ctrl_reg_synthesizes() {
     let mut uut = CtrlReg::default();
     uut.connect_all();
-    yosys_validate("ctrl_reg", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("ctrl_reg", &generate_verilog(&uut));
 }

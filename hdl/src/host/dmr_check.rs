@@ -287,5 +287,5 @@ impl<const M: usize> Logic for DmrCheck<M> {
 fn dmr_check_synthesizes() {
     let mut uut = DmrCheck::<16>::default();
     uut.connect_all();
-    yosys_validate("dmr_check", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_check", &generate_verilog(&uut));
 }

@@ -247,5 +247,5 @@ impl<const M: usize> Logic for DmrRegs<M> {
 fn dmr_regs_synthesizes() {
     let mut uut = DmrRegs::<16>::default();
     uut.connect_all();
-    yosys_validate("dmr_regs", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("dmr_regs", &generate_verilog(&uut));
 }

@@ -87,8 +87,12 @@ pub struct Field {
     pub lsb: u32,
     /// Width in bits.
     pub width: u32,
-    /// Value after `rst`.
+    /// Value after `rst` (for a [`Field::held`] field: after power-up only).
     pub reset: u32,
+    /// Not reset by `rst`: the field reads a memory's output (the RX FIFO's
+    /// head), which keeps what it held before a warm reset. Documented as
+    /// "not reset" with the flag that says when it is meaningful.
+    pub held: bool,
     /// Configuration field: writable only in reset mode.
     pub cfg: bool,
     /// Command: writing 1 acts, the field reads 0.
@@ -102,6 +106,11 @@ impl Field {
     /// The field's bits in place.
     pub const fn mask(&self) -> u32 {
         (((1u64 << self.width) - 1) << self.lsb) as u32
+    }
+
+    /// The same field, not reset by `rst` (see [`Field::held`]).
+    pub const fn not_reset(self) -> Field {
+        Field { held: true, ..self }
     }
 
     /// The same field with named codes.
@@ -129,6 +138,7 @@ pub const fn f(name: &'static str, lsb: u32, width: u32, reset: u32, desc: &'sta
         reset,
         cfg: false,
         command: false,
+        held: false,
         desc,
         codes: &[],
     }

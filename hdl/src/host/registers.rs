@@ -333,14 +333,14 @@ pub const REGISTERS: &[Register] = &[
         index: TX_DATA0,
         access: Access::Rw,
         desc: "Staged frame: data bytes 0..3 (byte 0 in [7:0])",
-        fields: &[f("data", 0, 32, 0, "bytes 0..3")],
+        fields: &[f("data", 0, 32, 0, "bytes 0..3 (valid while `RX_ID.rx_ready`)").not_reset()],
     },
     Register {
         name: "TX_DATA1",
         index: TX_DATA1,
         access: Access::Rw,
         desc: "Staged frame: data bytes 4..7 (byte 4 in [7:0])",
-        fields: &[f("data", 0, 32, 0, "bytes 4..7")],
+        fields: &[f("data", 0, 32, 0, "bytes 4..7 (valid while `RX_ID.rx_ready`)").not_reset()],
     },
     Register {
         name: "TX_CMD",
@@ -355,9 +355,9 @@ pub const REGISTERS: &[Register] = &[
         access: Access::Ro,
         desc: "Head of the RX FIFO: identifier",
         fields: &[
-            f("id", 0, 29, 0, "identifier"),
-            f("ide", 29, 1, 0, "extended frame"),
-            f("rtr", 30, 1, 0, "remote frame"),
+            f("id", 0, 29, 0, "identifier (valid while `rx_ready`)").not_reset(),
+            f("ide", 29, 1, 0, "extended frame (valid while `rx_ready`)").not_reset(),
+            f("rtr", 30, 1, 0, "remote frame (valid while `rx_ready`)").not_reset(),
             f("rx_ready", 31, 1, 0, "the head is valid: the RX FIFO was not empty at the previous edge"),
         ],
     },
@@ -367,8 +367,10 @@ pub const REGISTERS: &[Register] = &[
         access: Access::Ro,
         desc: "Head of the RX FIFO: length and channel",
         fields: &[
-            f("dlc", 0, 4, 0, "data length code as received"),
-            f("channel", 8, 1, 0, "channel the frame came from: 0 A, 1 B"),
+            f("dlc", 0, 4, 0, "data length code as received (valid while `RX_ID.rx_ready`)")
+                .not_reset(),
+            f("channel", 8, 1, 0, "channel the frame came from: 0 A, 1 B (valid while `RX_ID.rx_ready`)")
+                .not_reset(),
         ],
     },
     Register {

@@ -392,5 +392,5 @@ mod update;
 fn wb_regs_synthesizes() {
     let mut uut = WbRegs::default();
     uut.connect_all();
-    yosys_validate("wb_regs", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("wb_regs", &generate_verilog(&uut));
 }

@@ -42,6 +42,7 @@
 
 use super::tracker::{FrameTracker, ACK_DELIM, ACK_SLOT, IDLE_WAIT};
 use crate::channel::btl::BitTimingLogic;
+use crate::pins::RecessiveReg;
 use rust_hdl::prelude::*;
 
 /// The ACK unit of a hub with N node ports, M interlinks and P = N + M ports.
@@ -102,7 +103,8 @@ pub struct AckUnit<const N: usize, const M: usize, const P: usize> {
     u_s1: DFF<Bits<P>>,
     u_in_s: DFF<Bits<P>>,
     u_view_q: DFF<Bit>,
-    downlink_q: DFF<Bits<N>>,
+    /// The downlinks' register: recessive from configuration on.
+    downlink_q: RecessiveReg<Bits<N>>,
     blocks_q: DFF<Bits<16>>,
     u_blocked: DFF<Bit>,
     // ---- combinational ----
@@ -272,7 +274,7 @@ impl<const N: usize, const M: usize, const P: usize> Logic for AckUnit<N, M, P> 
 fn ack_unit_synthesizes() {
     let mut uut = AckUnit::<4, 2, 6>::default();
     uut.connect_all();
-    yosys_validate("hub_ack_unit", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_ack_unit", &generate_verilog(&uut));
 }
 
 #[cfg(test)]

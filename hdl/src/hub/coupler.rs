@@ -15,6 +15,7 @@
 //! `DDSP_SEND` or `SPLIT`, `quiet_twin`, §9.4) keeps `sublink_out` recessive.
 //! Every register resets to 1 (recessive); an empty AND is 1.
 
+use crate::pins::RecessiveReg;
 use rust_hdl::prelude::*;
 
 /// Synchronizers and two-stage AND coupling for N node ports and M interlinks.
@@ -58,7 +59,8 @@ pub struct Coupler<const N: usize, const M: usize> {
     sub_pq: DFF<Bits<M>>,
     // outputs (§3)
     coupled_q: DFF<Bit>,
-    sub_out_q: DFF<Bits<M>>,
+    /// The sublinks' register: recessive from configuration on.
+    sub_out_q: RecessiveReg<Bits<M>>,
     // stage 1 / stage 2
     own: Signal<Local, Bit>,
     twin: Signal<Local, Bit>,
@@ -163,7 +165,7 @@ impl<const N: usize, const M: usize> Logic for Coupler<N, M> {
 fn coupler_synthesizes() {
     let mut uut = Coupler::<4, 2>::default();
     uut.connect_all();
-    yosys_validate("hub_coupler", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_coupler", &generate_verilog(&uut));
 }
 
 #[cfg(test)]

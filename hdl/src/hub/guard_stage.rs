@@ -285,5 +285,5 @@ impl<const N: usize, const M: usize> Logic for GuardStage<N, M> {
 fn guard_stage_synthesizes() {
     let mut uut = GuardStage::<4, 2>::default();
     uut.connect_all();
-    yosys_validate("hub_guard_stage", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_guard_stage", &generate_verilog(&uut));
 }

@@ -29,6 +29,7 @@
 //!
 //! `rst` (the hub's `rst | reset_mode`) holds every register at its reset value.
 
+use crate::pins::RecessiveReg;
 use rust_hdl::prelude::*;
 
 /// The CAN CRC-15 generator polynomial (ISO 11898-1 10.4.2.6).
@@ -135,7 +136,8 @@ pub struct IdFrame<const H: usize> {
     /// `r_own | r_twin`: the frame so far is an identification frame.
     pub in_id: Signal<Out, Bit>,
     // ---- transmitter ----
-    tx_q: DFF<Bit>,
+    /// The transmitter's pin register: recessive from configuration on.
+    tx_q: RecessiveReg<Bit>,
     tx_on: DFF<Bit>,
     tx_idx: DFF<Bits<6>>,
     ack_due: DFF<Bit>,
@@ -313,7 +315,7 @@ impl<const H: usize> Logic for IdFrame<H> {
 fn id_frame_synthesizes() {
     let mut uut = IdFrame::<0>::default();
     uut.connect_all();
-    yosys_validate("hub_id_frame", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_id_frame", &generate_verilog(&uut));
 }
 
 #[cfg(test)]

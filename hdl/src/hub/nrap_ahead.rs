@@ -289,5 +289,5 @@ impl Logic for NrapAhead {
 fn nrap_ahead_synthesizes() {
     let mut uut = NrapAhead::default();
     uut.connect_all();
-    yosys_validate("hub_nrap_ahead", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_nrap_ahead", &generate_verilog(&uut));
 }

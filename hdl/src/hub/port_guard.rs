@@ -565,5 +565,5 @@ impl Logic for PortGuard {
 fn port_guard_synthesizes() {
     let mut uut = PortGuard::default();
     uut.connect_all();
-    yosys_validate("hub_port_guard", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_port_guard", &generate_verilog(&uut));
 }

@@ -513,5 +513,5 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
 fn hub_regs_synthesizes() {
     let mut uut = HubRegs::<4, 2, 6, 0>::default();
     uut.connect_all();
-    yosys_validate("hub_regs", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_regs", &generate_verilog(&uut));
 }

@@ -347,7 +347,7 @@ impl Logic for FrameTracker {
 fn tracker_synthesizes() {
     let mut uut = FrameTracker::default();
     uut.connect_all();
-    yosys_validate("hub_tracker", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("hub_tracker", &generate_verilog(&uut));
 }
 
 #[cfg(test)]

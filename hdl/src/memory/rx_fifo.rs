@@ -132,5 +132,5 @@ impl Logic for RxFifo {
 fn rx_fifo_synthesizes() {
     let mut uut = RxFifo::default();
     uut.connect_all();
-    yosys_validate("rx_fifo", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("rx_fifo", &generate_verilog(&uut));
 }

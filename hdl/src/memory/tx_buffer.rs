@@ -316,5 +316,5 @@ impl Logic for TxBuffer {
 fn tx_buffer_synthesizes() {
     let mut uut = TxBuffer::default();
     uut.connect_all();
-    yosys_validate("tx_buffer", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("tx_buffer", &generate_verilog(&uut));
 }

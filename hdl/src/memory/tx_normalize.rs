@@ -120,7 +120,7 @@ mod tests {
     fn frame_normalizer_synthesizes() {
         let mut uut = FrameNormalizer::default();
         uut.connect_all();
-        yosys_validate("frame_normalizer", &generate_verilog(&uut)).unwrap();
+        crate::synth_check::yosys_check("frame_normalizer", &generate_verilog(&uut));
     }
 
     /// Contract §6: the frame as a receiver delivers it, for every dlc.

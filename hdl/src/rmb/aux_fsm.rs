@@ -291,5 +291,5 @@ impl Logic for AuxFsm {
 fn aux_fsm_synthesizes() {
     let mut uut = AuxFsm::default();
     uut.connect_all();
-    yosys_validate("aux_fsm", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("aux_fsm", &generate_verilog(&uut));
 }

@@ -119,5 +119,5 @@ fn bit_tick_period() {
     // (1+1) * (1 + 5 + 2) = 16 clocks per bit, first tick 16 clocks after hold.
     assert_eq!(&ticks[..3], &[17, 33, 49]);
     assert_eq!(uut.now.val(), Bits::<16>::from(ticks.len() as u64));
-    yosys_validate("bit_tick", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("bit_tick", &generate_verilog(&uut));
 }

@@ -267,7 +267,7 @@ mod tests {
     fn star_follow_synthesizes() {
         let mut uut = StarFollow::default();
         uut.connect_all();
-        yosys_validate("star_follow", &generate_verilog(&uut)).unwrap();
+        crate::synth_check::yosys_check("star_follow", &generate_verilog(&uut));
     }
 
     /// Only base data frames 0x000 / 0x001 with DLC 0 are the hubs' frames.

@@ -82,5 +82,5 @@ impl Logic for RedundancyStats {
 fn redundancy_stats_synthesizes() {
     let mut uut = RedundancyStats::default();
     uut.connect_all();
-    yosys_validate("redundancy_stats", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("redundancy_stats", &generate_verilog(&uut));
 }

@@ -261,6 +261,6 @@ mod tests {
     fn error_capture_synthesizes() {
         let mut uut = ErrorCapture::default();
         uut.connect_all();
-        yosys_validate("error_capture", &generate_verilog(&uut)).unwrap();
+        crate::synth_check::yosys_check("error_capture", &generate_verilog(&uut));
     }
 }

@@ -283,5 +283,5 @@ impl Logic for ErrorDecision {
 fn error_decision_synthesizes() {
     let mut uut = ErrorDecision::default();
     uut.connect_all();
-    yosys_validate("error_decision", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("error_decision", &generate_verilog(&uut));
 }

@@ -138,5 +138,5 @@ impl Logic for FaultConfinement {
 fn fault_confinement_synthesizes() {
     let mut uut = FaultConfinement::default();
     uut.connect_all();
-    yosys_validate("fault_confinement", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("fault_confinement", &generate_verilog(&uut));
 }

@@ -243,6 +243,6 @@ mod tests {
     fn fault_confinement_rules_synthesize() {
         let mut uut = FaultConfinementRules::default();
         uut.connect_all();
-        yosys_validate("fault_confinement_rules", &generate_verilog(&uut)).unwrap();
+        crate::synth_check::yosys_check("fault_confinement_rules", &generate_verilog(&uut));
     }
 }

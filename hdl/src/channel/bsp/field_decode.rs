@@ -272,6 +272,6 @@ mod tests {
     fn field_decode_synthesizes() {
         let mut uut = FieldDecode::default();
         uut.connect_all();
-        yosys_validate("field_decode", &generate_verilog(&uut)).unwrap();
+        crate::synth_check::yosys_check("field_decode", &generate_verilog(&uut));
     }
 }

@@ -388,5 +388,5 @@ impl Logic for ProtocolController {
 fn protocol_controller_synthesizes() {
     let mut uut = ProtocolController::default();
     uut.connect_all();
-    yosys_validate("protocol_controller", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("protocol_controller", &generate_verilog(&uut));
 }

@@ -594,5 +594,5 @@ impl Logic for ProtocolFsm {
 fn protocol_fsm_synthesizes() {
     let mut uut = ProtocolFsm::default();
     uut.connect_all();
-    yosys_validate("protocol_fsm", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("protocol_fsm", &generate_verilog(&uut));
 }

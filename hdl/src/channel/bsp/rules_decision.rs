@@ -242,5 +242,5 @@ impl Logic for RulesDecision {
 fn rules_decision_synthesizes() {
     let mut uut = RulesDecision::default();
     uut.connect_all();
-    yosys_validate("rules_decision", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("rules_decision", &generate_verilog(&uut));
 }

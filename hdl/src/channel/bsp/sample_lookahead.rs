@@ -53,5 +53,5 @@ impl Logic for SampleLookahead {
 fn sample_lookahead_synthesizes() {
     let mut uut = SampleLookahead::default();
     uut.connect_all();
-    yosys_validate("sample_lookahead", &generate_verilog(&uut)).unwrap();
+    crate::synth_check::yosys_check("sample_lookahead", &generate_verilog(&uut));
 }

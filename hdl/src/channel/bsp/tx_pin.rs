@@ -8,6 +8,7 @@
 //! frame bit.) Listen-only never drives a dominant bit (contract §7).
 
 use super::field::Field;
+use crate::pins::RecessiveReg;
 use rust_hdl::prelude::*;
 
 /// The register behind the CAN `tx` pin and the bit it sends next.
@@ -45,7 +46,8 @@ pub struct TxPin {
     pub crc_ok: Signal<In, Bit>,
     /// The bit this node drives on the bus (true: recessive).
     pub tx: Signal<Out, Bit>,
-    tx_q: DFF<Bit>,
+    /// The pin's register: recessive from configuration on (`RecessiveReg`).
+    tx_q: RecessiveReg<Bit>,
     tx_bit_n: Signal<Local, Bit>,
     tx_bit: Signal<Local, Bit>,
 }
@@ -164,6 +166,6 @@ mod tests {
     fn tx_pin_synthesizes() {
         let mut uut = TxPin::default();
         uut.connect_all();
-        yosys_validate("tx_pin", &generate_verilog(&uut)).unwrap();
+        crate::synth_check::yosys_check("tx_pin", &generate_verilog(&uut));
     }
 }

@@ -324,6 +324,6 @@ mod tests {
     fn tx_request_synthesizes() {
         let mut uut = TxRequest::default();
         uut.connect_all();
-        yosys_validate("tx_request", &generate_verilog(&uut)).unwrap();
+        crate::synth_check::yosys_check("tx_request", &generate_verilog(&uut));
     }
 }

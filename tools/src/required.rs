@@ -1,13 +1,13 @@
 //! The one rule that decides whether a missing Verilator is an error or a skip.
 //!
-//! Shared by the crate ([`crate::required`]) and its build script (`build.rs`
-//! includes this file with `#[path]`), so the build, the tests and the tools all
-//! read `CI` and `DRCC_REQUIRE_VERILATOR` the same way. Standard library only.
+//! Shared by every test that needs an external tool ([`crate::need`]) and by
+//! verilator-sys's build script, so the build, the tests and the tools all read
+//! `CI` and `DRCC_REQUIRE_VERILATOR` the same way. Standard library only.
 
 /// The variables that make Verilator required, in the order they are read.
 pub const REQUIRE_VARS: [&str; 2] = ["DRCC_REQUIRE_VERILATOR", "CI"];
 
-/// Whether a missing Verilator (or a missing external tool the tests need) must
+/// Whether a missing Verilator (or any other external tool the tests need) must
 /// fail instead of being skipped.
 ///
 /// Rule: required iff `DRCC_REQUIRE_VERILATOR` or `CI` is set to a value other

@@ -1,5 +1,5 @@
-//! Where the commands write generated files, and how (issue 15, "writes to places
-//! the user did not choose"): only into the DRCC checkout they run in (the current
+//! Where the commands write generated files, and how (no write to a place the
+//! user did not choose): only into the DRCC checkout they run in (the current
 //! directory or its nearest ancestor holding `Cargo.toml`, `hdl/src/tops.rs` and
 //! `cosim/src/model/drcc_contract.md`), or into `--out DIR`; never into a directory
 //! that merely has a `docs/` or `rtl-out/`, never into the checkout the binary was
@@ -118,4 +118,42 @@ fn inside_the_checkout_any_subdirectory_means_the_checkout() {
         )),
         "{out}"
     );
+}
+
+/// Eight `drcc generate --out DIR` started at once into one directory (a
+/// parallel build, CI jobs sharing a workspace) all succeed, and every file is
+/// whole: each process writes through a temporary file of its own.
+#[test]
+fn concurrent_generates_into_one_directory_all_succeed() {
+    let d = lookalike("concurrent");
+    let out = d.join("gen");
+    let children: Vec<_> = (0..8)
+        .map(|_| {
+            Command::new(env!("CARGO_BIN_EXE_drcc"))
+                .current_dir(&d)
+                .args(["generate", "--out", out.to_str().unwrap()])
+                .stdout(std::process::Stdio::null())
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .expect("cannot run the drcc binary")
+        })
+        .collect();
+    for c in children {
+        let o = c.wait_with_output().unwrap();
+        assert!(
+            o.status.success(),
+            "a concurrent generate failed: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    // Whole files: `--check` finds every one current, and no temporary is left.
+    let o = drcc_in(&d, &["generate", "--out", out.to_str().unwrap(), "--check"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        !snapshot(&out)
+            .iter()
+            .any(|(p, _)| p.to_string_lossy().ends_with(".drcc-tmp")),
+        "a temporary file was left"
+    );
+    let _ = std::fs::remove_dir_all(&d);
 }

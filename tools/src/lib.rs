@@ -131,6 +131,36 @@ pub fn need_all(tools: &[Tool]) -> bool {
     tools.iter().all(need)
 }
 
+/// A Python interpreter that imports every module of `modules`:
+/// `$DRCC_PYTHON`, else the workspace's [`PY_VENV`] python, else `python3`.
+/// When there is none, [`skip`] rules (`install` says how to get them): `None`
+/// locally, a panic in CI.
+pub fn python_with(modules: &[&str], install: &str) -> Option<std::path::PathBuf> {
+    let venv = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join(PY_VENV)
+        .join("bin/python");
+    let import = format!("import {}", modules.join(", "));
+    let candidates = std::env::var_os("DRCC_PYTHON")
+        .map(std::path::PathBuf::from)
+        .into_iter()
+        .chain([venv, std::path::PathBuf::from("python3")]);
+    for python in candidates {
+        let ok = Command::new(&python)
+            .args(["-c", &import])
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success());
+        if ok {
+            return Some(python);
+        }
+    }
+    skip(&format!("a python with {}", modules.join(", ")), install);
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

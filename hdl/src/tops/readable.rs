@@ -474,7 +474,7 @@ mod equivalence {
         std::fs::write(&r, &gate).unwrap();
         let prep = |file: &std::path::Path, as_name: &str| {
             format!(
-                "read_verilog {f}; hierarchy -top {name}; proc; flatten; opt_clean; \
+                "read_verilog {f}; hierarchy -top {name}; proc; flatten; proc; memory; opt_clean; \
                  rename {name} {as_name}; design -stash {as_name};",
                 f = file.display()
             )

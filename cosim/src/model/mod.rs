@@ -14,6 +14,7 @@
 
 pub mod bsp;
 pub mod btl;
+pub mod bus;
 pub mod coverage;
 pub mod crc;
 pub mod drcc;

@@ -20,21 +20,29 @@
 //                                              where the host writes the channel configuration
 //                                              (`CTRL`, `BTR`).
 // input      1  wb_cyc_i                       Wishbone cycle, active high. A transaction is taken
-//                                              at an edge where `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+//                                              at an edge where
+//                                              `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
 // input      1  wb_stb_i                       Wishbone strobe, active high.
 // input      1  wb_we_i                        Wishbone write enable: 1 = write, 0 = read.
 // input      6  wb_adr_i                       Wishbone word address: register index 0..63, byte
 //                                              offset = 4 x `wb_adr_i`.
-// input     32  wb_dat_i                       Wishbone write data, always a full word (no
-//                                              `wb_sel_i`). Data bytes in `TX_DATA0/1`: byte 0
-//                                              (first on the bus) in `[7:0]`, unlike the channel
-//                                              ports.
+// input     32  wb_dat_i                       Wishbone write data. Data bytes in `TX_DATA0/1`:
+//                                              byte 0 (first on the bus) in `[7:0]`, unlike the
+//                                              channel ports.
+// input      4  wb_sel_i                       Wishbone byte select of a write: `TX_ID`, `TX_CTRL`,
+//                                              `TX_DATA0/1` take the selected bytes; a partial
+//                                              write to another word is refused (`wb_err_o`).
+//                                              Ignored on reads. Tie to `4'b1111` without byte
+//                                              lanes.
 // output    32  wb_dat_o                       Wishbone read data, valid while `wb_ack_o = 1`, else
 //                                              0. Reads have no side effects; unmapped addresses
 //                                              read 0.
 // output     1  wb_ack_o                       Wishbone acknowledge, 1 for the clock after the edge
 //                                              that took the transaction: every access takes 2
 //                                              clocks.
+// output     1  wb_err_o                       Wishbone error, instead of the acknowledge, for a
+//                                              refused access (it also sets `INT_STATUS.illegal`):
+//                                              bus_contract.md §1.
 // output     1  irq                            Interrupt request, active-high level, registered:
 //                                              `|(INT_STATUS & INT_ENABLE)`.
 // output     1  chan_a_tx                      Channel A CAN transmit pin, 1 = recessive (a
@@ -110,7 +118,7 @@
 
 
 
-module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick);
+module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick);
 
     // Module arguments
     // Clock. Every register changes at its rising edge; the channels' bit timing (register `BTR`)
@@ -121,7 +129,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     // (`CTRL.reset_mode = 1`), where the host writes the channel configuration (`CTRL`, `BTR`).
     input wire  rst;
     // Wishbone cycle, active high. A transaction is taken at an edge where
-    // `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+    // `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
     input wire  wb_cyc_i;
     // Wishbone strobe, active high.
     input wire  wb_stb_i;
@@ -129,15 +137,22 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     input wire  wb_we_i;
     // Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i`.
     input wire  [5:0] wb_adr_i;
-    // Wishbone write data, always a full word (no `wb_sel_i`). Data bytes in `TX_DATA0/1`: byte 0
-    // (first on the bus) in `[7:0]`, unlike the channel ports.
+    // Wishbone write data. Data bytes in `TX_DATA0/1`: byte 0 (first on the bus) in `[7:0]`, unlike
+    // the channel ports.
     input wire  [31:0] wb_dat_i;
+    // Wishbone byte select of a write: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes; a
+    // partial write to another word is refused (`wb_err_o`). Ignored on reads. Tie to `4'b1111`
+    // without byte lanes.
+    input wire  [3:0] wb_sel_i;
     // Wishbone read data, valid while `wb_ack_o = 1`, else 0. Reads have no side effects; unmapped
     // addresses read 0.
     output reg  [31:0] wb_dat_o;
     // Wishbone acknowledge, 1 for the clock after the edge that took the transaction: every access
     // takes 2 clocks.
     output reg  wb_ack_o;
+    // Wishbone error, instead of the acknowledge, for a refused access (it also sets
+    // `INT_STATUS.illegal`): bus_contract.md §1.
+    output reg  wb_err_o;
     // Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     output reg  irq;
     // Channel A CAN transmit pin, 1 = recessive (a register).
@@ -255,8 +270,10 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
     reg  regs__wb_we_i;
     reg  [5:0] regs__wb_adr_i;
     reg  [31:0] regs__wb_dat_i;
+    reg  [3:0] regs__wb_sel_i;
     wire  [31:0] regs__wb_dat_o;
     wire  regs__wb_ack_o;
+    wire  regs__wb_err_o;
     wire  regs__irq;
     reg  [31:0] regs__ro_word;
     reg  [1:0] regs__es_a;
@@ -751,8 +768,10 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         .wb_we_i(regs__wb_we_i),
         .wb_adr_i(regs__wb_adr_i),
         .wb_dat_i(regs__wb_dat_i),
+        .wb_sel_i(regs__wb_sel_i),
         .wb_dat_o(regs__wb_dat_o),
         .wb_ack_o(regs__wb_ack_o),
+        .wb_err_o(regs__wb_err_o),
         .irq(regs__irq),
         .ro_word(regs__ro_word),
         .es_a(regs__es_a),
@@ -1268,6 +1287,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         regs__wb_we_i = wb_we_i;
         regs__wb_adr_i = wb_adr_i;
         regs__wb_dat_i = wb_dat_i;
+        regs__wb_sel_i = wb_sel_i;
         regs__ro_word = status__word;
         regs__es_a = chan_a__err_state;
         regs__es_b = chan_b__err_state;
@@ -1282,6 +1302,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_a
         regs__ev_aux = aux_a__fail_evt | aux_a__recover_evt | aux_b__fail_evt | aux_b__recover_evt;
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
+        wb_err_o = regs__wb_err_o;
         irq = regs__irq;
         regs__ext_hit = dmr_check__hit;
         regs__ext_word = dmr_check__word;
@@ -8907,7 +8928,7 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
 endmodule // drcc_m0__main
 
 
-module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
 
     // Module arguments
     input wire  clk;
@@ -8917,8 +8938,10 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     input wire  wb_we_i;
     input wire  [5:0] wb_adr_i;
     input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
+    output reg  wb_err_o;
     output reg  irq;
     input wire  [31:0] ro_word;
     input wire  [1:0] es_a;
@@ -9012,6 +9035,11 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     localparam  zero16 = 16'h0;
     localparam  zero31 = 31'h0;
     localparam  zero32 = 32'h0;
+    localparam  all_lanes = 4'hf;
+    localparam  lane0 = 32'hff;
+    localparam  lane1 = 32'hff00;
+    localparam  lane2 = 32'hff0000;
+    localparam  lane3 = 32'hff000000;
 
     // Stub signals
     reg  bus__clk;
@@ -9082,9 +9110,16 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
     reg  [1:0] es_a_prev__q;
     reg  [1:0] es_b_prev__d;
     reg  [1:0] es_b_prev__q;
+    reg  err_q__d;
+    reg  err_q__q;
 
     // Local signals
     reg  wr;
+    reg  full;
+    reg  laned;
+    reg  [31:0] lane_mask;
+    reg  [31:0] lane_old;
+    reg  [31:0] tx_ctrl_word;
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
@@ -9161,15 +9196,31 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         tx_data1_q__d = tx_data1_q__q;
         es_a_prev__d = es_a_prev__q;
         es_b_prev__d = es_b_prev__q;
+        err_q__d = err_q__q;
         bus__clk = clk;
         bus__rst = rst;
         bus__wb_cyc_i = wb_cyc_i;
         bus__wb_stb_i = wb_stb_i;
         bus__wb_we_i = wb_we_i;
         wr = bus__wr;
-        wdat = wb_dat_i;
+        full = wb_sel_i == all_lanes;
+        laned = (wb_adr_i == a_tx_id) | (wb_adr_i == a_tx_ctrl) | (wb_adr_i == a_tx_data0) | (wb_adr_i == a_tx_data1);
+        lane_mask = zero32;
+        if (wb_sel_i[32'h0]) begin
+            lane_mask = lane_mask | lane0;
+        end
+        if (wb_sel_i[32'h1]) begin
+            lane_mask = lane_mask | lane1;
+        end
+        if (wb_sel_i[32'h2]) begin
+            lane_mask = lane_mask | lane2;
+        end
+        if (wb_sel_i[32'h3]) begin
+            lane_mask = lane_mask | lane3;
+        end
         es_evt = (es_a != es_a_prev__q) | (es_b != es_b_prev__q);
         tx_data64 = (((tx_data0_q__q[(32'h0)+:(8)]) & 64'hffffffffffffffff) << 32'h38) | (((tx_data0_q__q[(32'h8)+:(8)]) & 64'hffffffffffffffff) << 32'h30) | (((tx_data0_q__q[(32'h10)+:(8)]) & 64'hffffffffffffffff) << 32'h28) | (((tx_data0_q__q[(32'h18)+:(8)]) & 64'hffffffffffffffff) << 32'h20) | (((tx_data1_q__q[(32'h0)+:(8)]) & 64'hffffffffffffffff) << 32'h18) | (((tx_data1_q__q[(32'h8)+:(8)]) & 64'hffffffffffffffff) << 32'h10) | (((tx_data1_q__q[(32'h10)+:(8)]) & 64'hffffffffffffffff) << 32'h8) | ((tx_data1_q__q[(32'h18)+:(8)]) & 64'hffffffffffffffff);
+        tx_ctrl_word = (((tx_dlc_q__q) & 32'hffffffff) << t_dlc) | (((tx_queue_q__q) & 32'hffffffff) << t_queue);
         if (wb_adr_i == a_ctrl) begin
             rdata = ctrl__word;
         end
@@ -9192,7 +9243,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
             rdata = ((tx_id_q__q) & 32'hffffffff);
         end
         else if (wb_adr_i == a_tx_ctrl) begin
-            rdata = (((tx_dlc_q__q) & 32'hffffffff) << t_dlc) | (((tx_queue_q__q) & 32'hffffffff) << t_queue);
+            rdata = tx_ctrl_word;
         end
         else if (wb_adr_i == a_tx_data0) begin
             rdata = tx_data0_q__q;
@@ -9207,10 +9258,24 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
             rdata = ro_word;
         end
         bus__rdata = rdata;
+        lane_old = zero32;
+        if (wb_adr_i == a_tx_id) begin
+            lane_old = ((tx_id_q__q) & 32'hffffffff);
+        end
+        else if (wb_adr_i == a_tx_ctrl) begin
+            lane_old = tx_ctrl_word;
+        end
+        else if (wb_adr_i == a_tx_data0) begin
+            lane_old = tx_data0_q__q;
+        end
+        else if (wb_adr_i == a_tx_data1) begin
+            lane_old = tx_data1_q__q;
+        end
+        wdat = (lane_old & ~lane_mask) | (wb_dat_i & lane_mask);
         ctrl__clk = clk;
         ctrl__rst = rst;
-        ctrl__we = wr & (wb_adr_i == a_ctrl);
-        ctrl__wdat = wdat;
+        ctrl__we = wr & full & (wb_adr_i == a_ctrl);
+        ctrl__wdat = wb_dat_i;
         ctrl__refused = ctrl_check__refused;
         ctrl__k_in = ctrl_check__k_in;
         ctrl_check__wdat = wb_dat_i;
@@ -9227,7 +9292,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         illegal = 1'b0;
         w1c = zero10;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wdat[(32'h0)+:(10)];
+        bus__int_enable_d = wb_dat_i[(32'h0)+:(10)];
         push = 1'b0;
         pop = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr) begin
@@ -9236,13 +9301,16 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         else begin
             target_count = txq_a;
         end
-        if (wr) begin
+        if (wr & ~full & ~laned) begin
+            illegal = 1'b1;
+        end
+        else if (wr) begin
             if (wb_adr_i == a_ctrl) begin
                 illegal = ctrl_check__illegal;
             end
             else if (wb_adr_i == a_btr) begin
                 if (ctrl__reset_mode) begin
-                    btr_q__d = wdat[(32'h0)+:(24)];
+                    btr_q__d = wb_dat_i[(32'h0)+:(24)];
                 end
                 else begin
                     illegal = 1'b1;
@@ -9250,7 +9318,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
             end
             else if (wb_adr_i == a_rmb_cfg) begin
                 if (ctrl__reset_mode) begin
-                    rmb_cfg_q__d = wdat;
+                    rmb_cfg_q__d = wb_dat_i;
                 end
                 else begin
                     illegal = 1'b1;
@@ -9258,14 +9326,14 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
             end
             else if (wb_adr_i == a_dedup_cfg) begin
                 if (ctrl__reset_mode) begin
-                    window_q__d = wdat[(d_window)+:(15)];
+                    window_q__d = wb_dat_i[(d_window)+:(15)];
                 end
                 else begin
                     illegal = 1'b1;
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wdat[(32'h0)+:(10)];
+                w1c = wb_dat_i[(32'h0)+:(10)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -9284,7 +9352,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
                 tx_data1_q__d = wdat;
             end
             else if (wb_adr_i == a_tx_cmd) begin
-                if (wdat[t_push]) begin
+                if (wb_dat_i[t_push]) begin
                     if (ctrl__reset_mode | (target_count == queue_full)) begin
                         illegal = 1'b1;
                     end
@@ -9294,7 +9362,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
                 end
             end
             else if (wb_adr_i == a_rx_cmd) begin
-                if (wdat[r_pop]) begin
+                if (wb_dat_i[r_pop]) begin
                     if (rx_count == zero6) begin
                         illegal = 1'b1;
                     end
@@ -9312,6 +9380,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         end
         bus__events = (((ev_rx) & 10'h3ff) << i_rx) | (((ev_tx_done) & 10'h3ff) << i_tx_done) | (((ev_switch) & 10'h3ff) << i_switch) | (((es_evt) & 10'h3ff) << i_err_state) | (((ev_overrun) & 10'h3ff) << i_overrun) | (((ev_tx_failure) & 10'h3ff) << i_tx_failure) | (((illegal) & 10'h3ff) << i_illegal) | (((ev_aux) & 10'h3ff) << i_aux) | (((ev_dmr) & 10'h3ff) << i_dmr) | (((ev_domain) & 10'h3ff) << i_domain);
         bus__w1c = w1c;
+        err_q__d = illegal;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
         if (rst) begin
@@ -9327,8 +9396,10 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
             es_b_prev__d = zero2;
             push = 1'b0;
             pop = 1'b0;
+            err_q__d = 1'b0;
         end
-        wb_ack_o = bus__wb_ack_o;
+        wb_ack_o = bus__wb_ack_o & ~err_q__q;
+        wb_err_o = err_q__q;
         wb_dat_o = bus__wb_dat_o;
         irq = bus__irq;
         reset_mode = ctrl__reset_mode;
@@ -9342,7 +9413,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         mode_b = ctrl__mode_b;
         single_shot = ctrl__single_shot;
         dmr = ctrl__dmr;
-        wr_o = wr;
+        wr_o = wr & full;
         brp = btr_q__q[(b_brp)+:(6)];
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
         tseg2 = btr_q__q[(b_tseg2)+:(3)];
@@ -9368,6 +9439,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_
         tx_data1_q__q <= tx_data1_q__d;
         es_a_prev__q <= es_a_prev__d;
         es_b_prev__q <= es_b_prev__d;
+        err_q__q <= err_q__d;
     end
 
 endmodule // drcc_m0__regs
@@ -9420,7 +9492,7 @@ module drcc_m0__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,ir
         int_status_q__d = int_status_q__q;
         int_enable_q__d = int_enable_q__q;
         taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
-        wr = taken & wb_we_i;
+        wr = wb_cyc_i & wb_stb_i & ~ack_q__q & wb_we_i;
         ack_q__d = taken;
         dat_q__d = zero32;
         if (taken & ~wb_we_i) begin

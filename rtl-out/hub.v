@@ -16,15 +16,20 @@
 //                             `rst = 1` every register takes its reset value and every link output
 //                             is recessive.
 // input      1  wb_cyc_i      Wishbone cycle, active high. A transaction is taken at an edge where
-//                             `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+//                             `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
 // input      1  wb_stb_i      Wishbone strobe, active high.
 // input      1  wb_we_i       Wishbone write enable: 1 = write, 0 = read.
 // input      6  wb_adr_i      Wishbone word address: register index 0..63, byte offset = 4 x
 //                             `wb_adr_i` (hub contract §8).
-// input     32  wb_dat_i      Wishbone write data, always a full word (no `wb_sel_i`).
+// input     32  wb_dat_i      Wishbone write data.
+// input      4  wb_sel_i      Wishbone byte select of a write: every hub word is written whole, a
+//                             write with another select than `4'b1111` is refused (`wb_err_o`).
+//                             Ignored on reads.
 // output    32  wb_dat_o      Wishbone read data, valid while `wb_ack_o = 1`, else 0.
 // output     1  wb_ack_o      Wishbone acknowledge, 1 for the clock after the edge that took the
 //                             transaction: every access takes 2 clocks.
+// output     1  wb_err_o      Wishbone error, instead of the acknowledge, for a refused access (it
+//                             also sets `INT_STATUS.illegal`): bus_contract.md §1.
 // output     1  irq           Interrupt request, active-high level, registered:
 //                             `|(INT_STATUS & INT_ENABLE)`.
 // input      4  uplink        Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive;
@@ -61,7 +66,7 @@
 
 
 
-module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,uplink,downlink,sublink_out,sublink_in,coupled,sample_point,trk_state,ack_window,decoupled,port_enabled,nrap_phase,hub_tx);
+module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,uplink,downlink,sublink_out,sublink_in,coupled,sample_point,trk_state,ack_window,decoupled,port_enabled,nrap_phase,hub_tx);
 
     // Module arguments
     // Clock. Every register changes at its rising edge; the hub's bit timing (register `BTR`) is
@@ -71,7 +76,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     // its reset value and every link output is recessive.
     input wire  rst;
     // Wishbone cycle, active high. A transaction is taken at an edge where
-    // `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+    // `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
     input wire  wb_cyc_i;
     // Wishbone strobe, active high.
     input wire  wb_stb_i;
@@ -79,13 +84,19 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     input wire  wb_we_i;
     // Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i` (hub contract §8).
     input wire  [5:0] wb_adr_i;
-    // Wishbone write data, always a full word (no `wb_sel_i`).
+    // Wishbone write data.
     input wire  [31:0] wb_dat_i;
+    // Wishbone byte select of a write: every hub word is written whole, a write with another select
+    // than `4'b1111` is refused (`wb_err_o`). Ignored on reads.
+    input wire  [3:0] wb_sel_i;
     // Wishbone read data, valid while `wb_ack_o = 1`, else 0.
     output reg  [31:0] wb_dat_o;
     // Wishbone acknowledge, 1 for the clock after the edge that took the transaction: every access
     // takes 2 clocks.
     output reg  wb_ack_o;
+    // Wishbone error, instead of the acknowledge, for a refused access (it also sets
+    // `INT_STATUS.illegal`): bus_contract.md §1.
+    output reg  wb_err_o;
     // Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     output reg  irq;
     // Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive; each is synchronized by
@@ -130,6 +141,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     localparam  a_sub__1 = 6'b10101;
     localparam  shift_n = 4'h4;
     localparam  a_ctrl = 6'b1;
+    localparam  all_lanes = 4'hf;
     localparam  s_idle = 2'b0;
     localparam  s_ack = 2'b10;
     localparam  s_delim = 2'b11;
@@ -147,8 +159,10 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
     reg  regs__wb_we_i;
     reg  [5:0] regs__wb_adr_i;
     reg  [31:0] regs__wb_dat_i;
+    reg  [3:0] regs__wb_sel_i;
     wire  [31:0] regs__wb_dat_o;
     wire  regs__wb_ack_o;
+    wire  regs__wb_err_o;
     wire  regs__irq;
     reg  regs__sample;
     reg  regs__any_sub_en;
@@ -568,8 +582,10 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         .wb_we_i(regs__wb_we_i),
         .wb_adr_i(regs__wb_adr_i),
         .wb_dat_i(regs__wb_dat_i),
+        .wb_sel_i(regs__wb_sel_i),
         .wb_dat_o(regs__wb_dat_o),
         .wb_ack_o(regs__wb_ack_o),
+        .wb_err_o(regs__wb_err_o),
         .irq(regs__irq),
         .sample(regs__sample),
         .any_sub_en(regs__any_sub_en),
@@ -1001,7 +1017,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         guard_rst = rst | regs__reset_mode;
         btl_rst = rst | regs__reset_mode | regs__reset_mode_d;
         ack_win = (tracker__trk == s_ack) | (tracker__trk == s_delim);
-        ctrl_cmd = wb_cyc_i & wb_stb_i & ~regs__wb_ack_o & wb_we_i & (wb_adr_i == a_ctrl) & ~regs__reset_mode & ~wb_dat_i[32'h0];
+        ctrl_cmd = wb_cyc_i & wb_stb_i & ~(regs__wb_ack_o | regs__wb_err_o) & wb_we_i & (wb_sel_i == all_lanes) & (wb_adr_i == a_ctrl) & ~regs__reset_mode & ~wb_dat_i[32'h0];
         recouple = ctrl_cmd & ~wb_dat_i[32'h1] & wb_dat_i[32'h2];
         force_cmd = ctrl_cmd & wb_dat_i[32'h1] & ~wb_dat_i[32'h2];
         guard_stage__clk = clk;
@@ -1213,6 +1229,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         regs__wb_we_i = wb_we_i;
         regs__wb_adr_i = wb_adr_i;
         regs__wb_dat_i = wb_dat_i;
+        regs__wb_sel_i = wb_sel_i;
         regs__sample = btl__sample;
         regs__any_sub_en = sub_en != zero_m;
         regs__trk = tracker__trk;
@@ -1326,6 +1343,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o
         tracker__b = coupler__coupled;
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
+        wb_err_o = regs__wb_err_o;
         irq = regs__irq;
         downlink = ack_unit__downlink;
         sublink_out = coupler__sublink_out;
@@ -4294,7 +4312,7 @@ module hub__nrap__ahead(clk,nt,ncnt,unacked,clear,force_bits,srp_bits,nrp_bits,d
 endmodule // hub__nrap__ahead
 
 
-module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,sample,any_sub_en,trk,ack_window,port_en,frames,errors,port_rd,blocks,u_window,decouple_bits,cfg_hit,cfg_rdata,nrap_status,ev_iso,ev_rest,ev_ack_unit,ev_nrap,nrap_decouple,wr,reset_mode,reset_mode_d,ack_interdep,nrap_on,fi_ack_leak,fi_no_twin,decoupled);
+module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,sample,any_sub_en,trk,ack_window,port_en,frames,errors,port_rd,blocks,u_window,decouple_bits,cfg_hit,cfg_rdata,nrap_status,ev_iso,ev_rest,ev_ack_unit,ev_nrap,nrap_decouple,wr,reset_mode,reset_mode_d,ack_interdep,nrap_on,fi_ack_leak,fi_no_twin,decoupled);
 
     // Module arguments
     input wire  clk;
@@ -4304,8 +4322,10 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     input wire  wb_we_i;
     input wire  [5:0] wb_adr_i;
     input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
+    output reg  wb_err_o;
     output reg  irq;
     input wire  sample;
     input wire  any_sub_en;
@@ -4370,6 +4390,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     localparam  u_u_window = 5'b10000;
     localparam  id_val = 32'h48550402;
     localparam  zero6 = 6'b0;
+    localparam  all_lanes = 4'hf;
     localparam  zero16 = 16'h0;
     localparam  one16 = 16'h1;
     localparam  max16 = 16'hffff;
@@ -4408,12 +4429,15 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
     reg  decoupled_q__q;
     reg  [15:0] no_twin__d;
     reg  [15:0] no_twin__q;
+    reg  err_q__d;
+    reg  err_q__q;
 
     // Local signals
     reg  [31:0] wdat;
     reg  [31:0] rdata;
     reg  is_port;
     reg  illegal;
+    reg  full;
     reg  [5:0] w1c;
     reg  dec_evt;
     reg  [15:0] no_twin_new;
@@ -4448,12 +4472,14 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         fi_no_twin_q__d = fi_no_twin_q__q;
         decoupled_q__d = decoupled_q__q;
         no_twin__d = no_twin__q;
+        err_q__d = err_q__q;
         bus__clk = clk;
         bus__rst = rst;
         bus__wb_cyc_i = wb_cyc_i;
         bus__wb_stb_i = wb_stb_i;
         bus__wb_we_i = wb_we_i;
-        wr = bus__wr;
+        full = wb_sel_i == all_lanes;
+        wr = bus__wr & full;
         wdat = wb_dat_i;
         is_port = (wb_adr_i >= a_port0) & (wb_adr_i < a_port_end);
         rdata = zero32;
@@ -4514,7 +4540,10 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         w1c = zero6;
         bus__int_enable_we = 1'b0;
         bus__int_enable_d = wdat[(32'h0)+:(6)];
-        if (wr) begin
+        if (bus__wr & ~full) begin
+            illegal = 1'b1;
+        end
+        else if (wr) begin
             if (wb_adr_i == a_ctrl) begin
                 if (wdat[c_force] & wdat[c_recouple]) begin
                     illegal = 1'b1;
@@ -4563,6 +4592,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         end
         bus__events = (((ev_iso) & 6'h3f) << i_isolation) | (((ev_rest) & 6'h3f) << i_restoration) | (((dec_evt) & 6'h3f) << i_decoupled) | (((illegal) & 6'h3f) << i_illegal) | (((ev_ack_unit) & 6'h3f) << i_ack_unit) | (((ev_nrap) & 6'h3f) << i_nrap);
         bus__w1c = w1c;
+        err_q__d = illegal;
         if (rst) begin
             reset_mode_q__d = 1'b1;
             reset_mode_dq__d = 1'b1;
@@ -4572,8 +4602,10 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
             fi_no_twin_q__d = 1'b0;
             decoupled_q__d = 1'b0;
             no_twin__d = zero16;
+            err_q__d = 1'b0;
         end
-        wb_ack_o = bus__wb_ack_o;
+        wb_ack_o = bus__wb_ack_o & ~err_q__q;
+        wb_err_o = err_q__q;
         wb_dat_o = bus__wb_dat_o;
         irq = bus__irq;
         reset_mode = reset_mode_q__q;
@@ -4595,6 +4627,7 @@ module hub__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb
         fi_no_twin_q__q <= fi_no_twin_q__d;
         decoupled_q__q <= decoupled_q__d;
         no_twin__q <= no_twin__d;
+        err_q__q <= err_q__d;
     end
 
 endmodule // hub__regs
@@ -4647,7 +4680,7 @@ module hub__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr
         int_status_q__d = int_status_q__q;
         int_enable_q__d = int_enable_q__q;
         taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
-        wr = taken & wb_we_i;
+        wr = wb_cyc_i & wb_stb_i & ~ack_q__q & wb_we_i;
         ack_q__d = taken;
         dat_q__d = zero32;
         if (taken & ~wb_we_i) begin

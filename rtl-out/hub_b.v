@@ -15,15 +15,20 @@
 //                             `rst = 1` every register takes its reset value and every link output
 //                             is recessive.
 // input      1  wb_cyc_i      Wishbone cycle, active high. A transaction is taken at an edge where
-//                             `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+//                             `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
 // input      1  wb_stb_i      Wishbone strobe, active high.
 // input      1  wb_we_i       Wishbone write enable: 1 = write, 0 = read.
 // input      6  wb_adr_i      Wishbone word address: register index 0..63, byte offset = 4 x
 //                             `wb_adr_i` (hub contract §8).
-// input     32  wb_dat_i      Wishbone write data, always a full word (no `wb_sel_i`).
+// input     32  wb_dat_i      Wishbone write data.
+// input      4  wb_sel_i      Wishbone byte select of a write: every hub word is written whole, a
+//                             write with another select than `4'b1111` is refused (`wb_err_o`).
+//                             Ignored on reads.
 // output    32  wb_dat_o      Wishbone read data, valid while `wb_ack_o = 1`, else 0.
 // output     1  wb_ack_o      Wishbone acknowledge, 1 for the clock after the edge that took the
 //                             transaction: every access takes 2 clocks.
+// output     1  wb_err_o      Wishbone error, instead of the acknowledge, for a refused access (it
+//                             also sets `INT_STATUS.illegal`): bus_contract.md §1.
 // output     1  irq           Interrupt request, active-high level, registered:
 //                             `|(INT_STATUS & INT_ENABLE)`.
 // input      4  uplink        Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive;
@@ -60,7 +65,7 @@
 
 
 
-module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,uplink,downlink,sublink_out,sublink_in,coupled,sample_point,trk_state,ack_window,decoupled,port_enabled,nrap_phase,hub_tx);
+module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,uplink,downlink,sublink_out,sublink_in,coupled,sample_point,trk_state,ack_window,decoupled,port_enabled,nrap_phase,hub_tx);
 
     // Module arguments
     // Clock. Every register changes at its rising edge; the hub's bit timing (register `BTR`) is
@@ -70,7 +75,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     // its reset value and every link output is recessive.
     input wire  rst;
     // Wishbone cycle, active high. A transaction is taken at an edge where
-    // `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+    // `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
     input wire  wb_cyc_i;
     // Wishbone strobe, active high.
     input wire  wb_stb_i;
@@ -78,13 +83,19 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     input wire  wb_we_i;
     // Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i` (hub contract §8).
     input wire  [5:0] wb_adr_i;
-    // Wishbone write data, always a full word (no `wb_sel_i`).
+    // Wishbone write data.
     input wire  [31:0] wb_dat_i;
+    // Wishbone byte select of a write: every hub word is written whole, a write with another select
+    // than `4'b1111` is refused (`wb_err_o`). Ignored on reads.
+    input wire  [3:0] wb_sel_i;
     // Wishbone read data, valid while `wb_ack_o = 1`, else 0.
     output reg  [31:0] wb_dat_o;
     // Wishbone acknowledge, 1 for the clock after the edge that took the transaction: every access
     // takes 2 clocks.
     output reg  wb_ack_o;
+    // Wishbone error, instead of the acknowledge, for a refused access (it also sets
+    // `INT_STATUS.illegal`): bus_contract.md §1.
+    output reg  wb_err_o;
     // Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     output reg  irq;
     // Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive; each is synchronized by
@@ -129,6 +140,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     localparam  a_sub__1 = 6'b10101;
     localparam  shift_n = 4'h4;
     localparam  a_ctrl = 6'b1;
+    localparam  all_lanes = 4'hf;
     localparam  s_idle = 2'b0;
     localparam  s_ack = 2'b10;
     localparam  s_delim = 2'b11;
@@ -146,8 +158,10 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
     reg  regs__wb_we_i;
     reg  [5:0] regs__wb_adr_i;
     reg  [31:0] regs__wb_dat_i;
+    reg  [3:0] regs__wb_sel_i;
     wire  [31:0] regs__wb_dat_o;
     wire  regs__wb_ack_o;
+    wire  regs__wb_err_o;
     wire  regs__irq;
     reg  regs__sample;
     reg  regs__any_sub_en;
@@ -567,8 +581,10 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         .wb_we_i(regs__wb_we_i),
         .wb_adr_i(regs__wb_adr_i),
         .wb_dat_i(regs__wb_dat_i),
+        .wb_sel_i(regs__wb_sel_i),
         .wb_dat_o(regs__wb_dat_o),
         .wb_ack_o(regs__wb_ack_o),
+        .wb_err_o(regs__wb_err_o),
         .irq(regs__irq),
         .sample(regs__sample),
         .any_sub_en(regs__any_sub_en),
@@ -1000,7 +1016,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         guard_rst = rst | regs__reset_mode;
         btl_rst = rst | regs__reset_mode | regs__reset_mode_d;
         ack_win = (tracker__trk == s_ack) | (tracker__trk == s_delim);
-        ctrl_cmd = wb_cyc_i & wb_stb_i & ~regs__wb_ack_o & wb_we_i & (wb_adr_i == a_ctrl) & ~regs__reset_mode & ~wb_dat_i[32'h0];
+        ctrl_cmd = wb_cyc_i & wb_stb_i & ~(regs__wb_ack_o | regs__wb_err_o) & wb_we_i & (wb_sel_i == all_lanes) & (wb_adr_i == a_ctrl) & ~regs__reset_mode & ~wb_dat_i[32'h0];
         recouple = ctrl_cmd & ~wb_dat_i[32'h1] & wb_dat_i[32'h2];
         force_cmd = ctrl_cmd & wb_dat_i[32'h1] & ~wb_dat_i[32'h2];
         guard_stage__clk = clk;
@@ -1212,6 +1228,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         regs__wb_we_i = wb_we_i;
         regs__wb_adr_i = wb_adr_i;
         regs__wb_dat_i = wb_dat_i;
+        regs__wb_sel_i = wb_sel_i;
         regs__sample = btl__sample;
         regs__any_sub_en = sub_en != zero_m;
         regs__trk = tracker__trk;
@@ -1325,6 +1342,7 @@ module hub_b(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack
         tracker__b = coupler__coupled;
         wb_dat_o = regs__wb_dat_o;
         wb_ack_o = regs__wb_ack_o;
+        wb_err_o = regs__wb_err_o;
         irq = regs__irq;
         downlink = ack_unit__downlink;
         sublink_out = coupler__sublink_out;
@@ -4293,7 +4311,7 @@ module hub_b__nrap__ahead(clk,nt,ncnt,unacked,clear,force_bits,srp_bits,nrp_bits
 endmodule // hub_b__nrap__ahead
 
 
-module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,wb_ack_o,irq,sample,any_sub_en,trk,ack_window,port_en,frames,errors,port_rd,blocks,u_window,decouple_bits,cfg_hit,cfg_rdata,nrap_status,ev_iso,ev_rest,ev_ack_unit,ev_nrap,nrap_decouple,wr,reset_mode,reset_mode_d,ack_interdep,nrap_on,fi_ack_leak,fi_no_twin,decoupled);
+module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,sample,any_sub_en,trk,ack_window,port_en,frames,errors,port_rd,blocks,u_window,decouple_bits,cfg_hit,cfg_rdata,nrap_status,ev_iso,ev_rest,ev_ack_unit,ev_nrap,nrap_decouple,wr,reset_mode,reset_mode_d,ack_interdep,nrap_on,fi_ack_leak,fi_no_twin,decoupled);
 
     // Module arguments
     input wire  clk;
@@ -4303,8 +4321,10 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
     input wire  wb_we_i;
     input wire  [5:0] wb_adr_i;
     input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
+    output reg  wb_err_o;
     output reg  irq;
     input wire  sample;
     input wire  any_sub_en;
@@ -4369,6 +4389,7 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
     localparam  u_u_window = 5'b10000;
     localparam  id_val = 32'h48551402;
     localparam  zero6 = 6'b0;
+    localparam  all_lanes = 4'hf;
     localparam  zero16 = 16'h0;
     localparam  one16 = 16'h1;
     localparam  max16 = 16'hffff;
@@ -4407,12 +4428,15 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
     reg  decoupled_q__q;
     reg  [15:0] no_twin__d;
     reg  [15:0] no_twin__q;
+    reg  err_q__d;
+    reg  err_q__q;
 
     // Local signals
     reg  [31:0] wdat;
     reg  [31:0] rdata;
     reg  is_port;
     reg  illegal;
+    reg  full;
     reg  [5:0] w1c;
     reg  dec_evt;
     reg  [15:0] no_twin_new;
@@ -4447,12 +4471,14 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
         fi_no_twin_q__d = fi_no_twin_q__q;
         decoupled_q__d = decoupled_q__q;
         no_twin__d = no_twin__q;
+        err_q__d = err_q__q;
         bus__clk = clk;
         bus__rst = rst;
         bus__wb_cyc_i = wb_cyc_i;
         bus__wb_stb_i = wb_stb_i;
         bus__wb_we_i = wb_we_i;
-        wr = bus__wr;
+        full = wb_sel_i == all_lanes;
+        wr = bus__wr & full;
         wdat = wb_dat_i;
         is_port = (wb_adr_i >= a_port0) & (wb_adr_i < a_port_end);
         rdata = zero32;
@@ -4513,7 +4539,10 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
         w1c = zero6;
         bus__int_enable_we = 1'b0;
         bus__int_enable_d = wdat[(32'h0)+:(6)];
-        if (wr) begin
+        if (bus__wr & ~full) begin
+            illegal = 1'b1;
+        end
+        else if (wr) begin
             if (wb_adr_i == a_ctrl) begin
                 if (wdat[c_force] & wdat[c_recouple]) begin
                     illegal = 1'b1;
@@ -4562,6 +4591,7 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
         end
         bus__events = (((ev_iso) & 6'h3f) << i_isolation) | (((ev_rest) & 6'h3f) << i_restoration) | (((dec_evt) & 6'h3f) << i_decoupled) | (((illegal) & 6'h3f) << i_illegal) | (((ev_ack_unit) & 6'h3f) << i_ack_unit) | (((ev_nrap) & 6'h3f) << i_nrap);
         bus__w1c = w1c;
+        err_q__d = illegal;
         if (rst) begin
             reset_mode_q__d = 1'b1;
             reset_mode_dq__d = 1'b1;
@@ -4571,8 +4601,10 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
             fi_no_twin_q__d = 1'b0;
             decoupled_q__d = 1'b0;
             no_twin__d = zero16;
+            err_q__d = 1'b0;
         end
-        wb_ack_o = bus__wb_ack_o;
+        wb_ack_o = bus__wb_ack_o & ~err_q__q;
+        wb_err_o = err_q__q;
         wb_dat_o = bus__wb_dat_o;
         irq = bus__irq;
         reset_mode = reset_mode_q__q;
@@ -4594,6 +4626,7 @@ module hub_b__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_dat_o,
         fi_no_twin_q__q <= fi_no_twin_q__d;
         decoupled_q__q <= decoupled_q__d;
         no_twin__q <= no_twin__d;
+        err_q__q <= err_q__d;
     end
 
 endmodule // hub_b__regs
@@ -4646,7 +4679,7 @@ module hub_b__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,
         int_status_q__d = int_status_q__q;
         int_enable_q__d = int_enable_q__q;
         taken = wb_cyc_i & wb_stb_i & ~ack_q__q;
-        wr = taken & wb_we_i;
+        wr = wb_cyc_i & wb_stb_i & ~ack_q__q & wb_we_i;
         ack_q__d = taken;
         dat_q__d = zero32;
         if (taken & ~wb_we_i) begin

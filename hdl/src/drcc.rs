@@ -62,7 +62,7 @@ pub struct DrccCore<const M: usize> {
     // Wishbone B4 classic slave (drcc_contract.md §2); register map:
     // docs/registers.md, rtl-out/drcc_regs.h
     /// Wishbone cycle, active high. A transaction is taken at an edge where
-    /// `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+    /// `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
     pub wb_cyc_i: Signal<In, Bit>,
     /// Wishbone strobe, active high.
     pub wb_stb_i: Signal<In, Bit>,
@@ -70,15 +70,22 @@ pub struct DrccCore<const M: usize> {
     pub wb_we_i: Signal<In, Bit>,
     /// Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i`.
     pub wb_adr_i: Signal<In, Bits<6>>,
-    /// Wishbone write data, always a full word (no `wb_sel_i`). Data bytes in
-    /// `TX_DATA0/1`: byte 0 (first on the bus) in `[7:0]`, unlike the channel ports.
+    /// Wishbone write data. Data bytes in `TX_DATA0/1`: byte 0 (first on the
+    /// bus) in `[7:0]`, unlike the channel ports.
     pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Wishbone byte select of a write: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take
+    /// the selected bytes; a partial write to another word is refused
+    /// (`wb_err_o`). Ignored on reads. Tie to `4'b1111` without byte lanes.
+    pub wb_sel_i: Signal<In, Bits<4>>,
     /// Wishbone read data, valid while `wb_ack_o = 1`, else 0. Reads have no side
     /// effects; unmapped addresses read 0.
     pub wb_dat_o: Signal<Out, Bits<32>>,
     /// Wishbone acknowledge, 1 for the clock after the edge that took the
     /// transaction: every access takes 2 clocks.
     pub wb_ack_o: Signal<Out, Bit>,
+    /// Wishbone error, instead of the acknowledge, for a refused access (it
+    /// also sets `INT_STATUS.illegal`): bus_contract.md §1.
+    pub wb_err_o: Signal<Out, Bit>,
     /// Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     pub irq: Signal<Out, Bit>,
     // CAN pins (1 = recessive, 0 = dominant); A is the paper's channel 1, B channel 2

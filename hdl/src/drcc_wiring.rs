@@ -35,6 +35,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.regs.wb_we_i.next = self.wb_we_i.val();
         self.regs.wb_adr_i.next = self.wb_adr_i.val();
         self.regs.wb_dat_i.next = self.wb_dat_i.val();
+        self.regs.wb_sel_i.next = self.wb_sel_i.val();
         self.regs.ro_word.next = self.status.word.val();
         self.regs.es_a.next = self.chan_a.err_state.val();
         self.regs.es_b.next = self.chan_b.err_state.val();
@@ -54,6 +55,7 @@ impl<const M: usize> Logic for DrccCore<M> {
             | self.aux_b.recover_evt.val();
         self.wb_dat_o.next = self.regs.wb_dat_o.val();
         self.wb_ack_o.next = self.regs.wb_ack_o.val();
+        self.wb_err_o.next = self.regs.wb_err_o.val();
         self.irq.next = self.regs.irq.val();
         self.regs.ext_hit.next = self.dmr_check.hit.val();
         self.regs.ext_word.next = self.dmr_check.word.val();

@@ -1,4 +1,5 @@
 //! drcc-hdl: the DRCC hardware, described in rust-hdl, one block per file.
+pub mod bus;
 pub mod channel;
 pub mod config;
 pub mod dmr;

@@ -32,6 +32,7 @@ pub mod verilog;
 use configured::raw_verilog_small;
 pub use configured::{drcc_with_config, hub_with_shape};
 
+use crate::bus::drcc_tops::{DrccApb, DrccAxi};
 use crate::channel::can_channel::CanChannel;
 #[cfg(test)]
 use crate::config::DrccConfig;
@@ -239,6 +240,54 @@ pub static TOPS: &[Top] = &[
         can_rx: &["chan_a_rx", "chan_b_rx"],
         raw_verilog: raw_verilog_small,
         ports: ports_of::<DrccM0>,
+    },
+    Top {
+        name: "drcc_apb",
+        summary: "the drcc on an AMBA APB4 slave (PSTRB, PREADY, PSLVERR): the same registers, interrupt and CAN pins",
+        contract: "cosim/src/model/bus_contract.md",
+        params: &[
+            ("M", "16"),
+            ("RX_FIFO_DEPTH", "32"),
+            ("TX_QUEUE_DEPTH", "8"),
+            ("HISTORY", "32"),
+            ("DMR", "1"),
+            ("STAR", "1"),
+            ("BUS", "apb"),
+        ],
+        block: "DrccApb",
+        source_path: "hdl/src/bus/drcc_tops.rs",
+        source: include_str!("bus/drcc_tops.rs"),
+        notes: "The drcc (M = 16) behind the APB front end of cosim/src/model/bus_contract.md\n\
+                section 2: every access phase lasts two clocks, a refused access ends with\n\
+                PSLVERR. Registers: docs/registers.md, rtl-out/drcc_regs.h (byte offsets).",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
+        raw_verilog: raw_verilog_of::<DrccApb<16>>,
+        ports: ports_of::<DrccApb<16>>,
+    },
+    Top {
+        name: "drcc_axi",
+        summary: "the drcc on an AXI4-Lite slave: the same registers, interrupt and CAN pins",
+        contract: "cosim/src/model/bus_contract.md",
+        params: &[
+            ("M", "16"),
+            ("RX_FIFO_DEPTH", "32"),
+            ("TX_QUEUE_DEPTH", "8"),
+            ("HISTORY", "32"),
+            ("DMR", "1"),
+            ("STAR", "1"),
+            ("BUS", "axi4-lite"),
+        ],
+        block: "DrccAxi",
+        source_path: "hdl/src/bus/drcc_tops.rs",
+        source: include_str!("bus/drcc_tops.rs"),
+        notes: "The drcc (M = 16) behind the AXI4-Lite front end of cosim/src/model/bus_contract.md\n\
+                section 3: one access at a time, writes and reads alternating; a refused\n\
+                write answers SLVERR. Registers: docs/registers.md, rtl-out/drcc_regs.h.",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
+        raw_verilog: raw_verilog_of::<DrccAxi<16>>,
+        ports: ports_of::<DrccAxi<16>>,
     },
     Top {
         name: "hub",

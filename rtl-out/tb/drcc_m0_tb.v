@@ -13,8 +13,10 @@ module drcc_m0_tb;
   reg  wb_we_i;
   reg  [5:0] wb_adr_i;
   reg  [31:0] wb_dat_i;
+  reg  [3:0] wb_sel_i;
   wire [31:0] wb_dat_o;
   wire wb_ack_o;
+  wire wb_err_o;
   wire irq;
   wire chan_a_tx;
   reg  chan_a_rx;
@@ -52,7 +54,7 @@ module drcc_m0_tb;
   wire rcl_rx_fault;
   wire dmr_tick;
 
-  drcc_m0 uut(.clk(clk), .rst(rst), .wb_cyc_i(wb_cyc_i), .wb_stb_i(wb_stb_i), .wb_we_i(wb_we_i), .wb_adr_i(wb_adr_i), .wb_dat_i(wb_dat_i), .wb_dat_o(wb_dat_o), .wb_ack_o(wb_ack_o), .irq(irq), .chan_a_tx(chan_a_tx), .chan_a_rx(chan_a_rx), .chan_b_tx(chan_b_tx), .chan_b_rx(chan_b_rx), .state(state), .tx_channel(tx_channel), .transmission_ack(transmission_ack), .chan_a_transmission_req(chan_a_transmission_req), .chan_b_transmission_req(chan_b_transmission_req), .tx_success(tx_success), .tx_ok_channel(tx_ok_channel), .tx_failure(tx_failure), .tx_failure_channel(tx_failure_channel), .tx_going_on(tx_going_on), .chan_a_bsp_tx_err_cnt(chan_a_bsp_tx_err_cnt), .chan_a_bsp_node_error_passive(chan_a_bsp_node_error_passive), .chan_b_bsp_tx_err_cnt(chan_b_bsp_tx_err_cnt), .chan_b_bsp_node_error_passive(chan_b_bsp_node_error_passive), .aux_a_state(aux_a_state), .aux_b_state(aux_b_state), .chan_a_sample_point(chan_a_sample_point), .chan_b_sample_point(chan_b_sample_point), .chan_a_field(chan_a_field), .chan_b_field(chan_b_field), .chan_a_rec(chan_a_rec), .chan_b_rec(chan_b_rec), .chan_a_err_state(chan_a_err_state), .chan_b_err_state(chan_b_err_state), .dmr_state(dmr_state), .acl(acl), .dcl_tx_fault(dcl_tx_fault), .dcl_rx_fault(dcl_rx_fault), .rcl_tx_fault(rcl_tx_fault), .rcl_rx_fault(rcl_rx_fault), .dmr_tick(dmr_tick));
+  drcc_m0 uut(.clk(clk), .rst(rst), .wb_cyc_i(wb_cyc_i), .wb_stb_i(wb_stb_i), .wb_we_i(wb_we_i), .wb_adr_i(wb_adr_i), .wb_dat_i(wb_dat_i), .wb_sel_i(wb_sel_i), .wb_dat_o(wb_dat_o), .wb_ack_o(wb_ack_o), .wb_err_o(wb_err_o), .irq(irq), .chan_a_tx(chan_a_tx), .chan_a_rx(chan_a_rx), .chan_b_tx(chan_b_tx), .chan_b_rx(chan_b_rx), .state(state), .tx_channel(tx_channel), .transmission_ack(transmission_ack), .chan_a_transmission_req(chan_a_transmission_req), .chan_b_transmission_req(chan_b_transmission_req), .tx_success(tx_success), .tx_ok_channel(tx_ok_channel), .tx_failure(tx_failure), .tx_failure_channel(tx_failure_channel), .tx_going_on(tx_going_on), .chan_a_bsp_tx_err_cnt(chan_a_bsp_tx_err_cnt), .chan_a_bsp_node_error_passive(chan_a_bsp_node_error_passive), .chan_b_bsp_tx_err_cnt(chan_b_bsp_tx_err_cnt), .chan_b_bsp_node_error_passive(chan_b_bsp_node_error_passive), .aux_a_state(aux_a_state), .aux_b_state(aux_b_state), .chan_a_sample_point(chan_a_sample_point), .chan_b_sample_point(chan_b_sample_point), .chan_a_field(chan_a_field), .chan_b_field(chan_b_field), .chan_a_rec(chan_a_rec), .chan_b_rec(chan_b_rec), .chan_a_err_state(chan_a_err_state), .chan_b_err_state(chan_b_err_state), .dmr_state(dmr_state), .acl(acl), .dcl_tx_fault(dcl_tx_fault), .dcl_rx_fault(dcl_rx_fault), .rcl_tx_fault(rcl_tx_fault), .rcl_rx_fault(rcl_rx_fault), .dmr_tick(dmr_tick));
 
   integer i;
   initial begin
@@ -63,6 +65,7 @@ module drcc_m0_tb;
     wb_we_i = 0;
     wb_adr_i = 0;
     wb_dat_i = 0;
+    wb_sel_i = 0;
     chan_a_rx = {32{1'b1}};
     chan_b_rx = {32{1'b1}};
     #1000;

@@ -13,8 +13,10 @@ module hub_tb;
   reg  wb_we_i;
   reg  [5:0] wb_adr_i;
   reg  [31:0] wb_dat_i;
+  reg  [3:0] wb_sel_i;
   wire [31:0] wb_dat_o;
   wire wb_ack_o;
+  wire wb_err_o;
   wire irq;
   reg  [3:0] uplink;
   wire [3:0] downlink;
@@ -29,7 +31,7 @@ module hub_tb;
   wire [2:0] nrap_phase;
   wire hub_tx;
 
-  hub uut(.clk(clk), .rst(rst), .wb_cyc_i(wb_cyc_i), .wb_stb_i(wb_stb_i), .wb_we_i(wb_we_i), .wb_adr_i(wb_adr_i), .wb_dat_i(wb_dat_i), .wb_dat_o(wb_dat_o), .wb_ack_o(wb_ack_o), .irq(irq), .uplink(uplink), .downlink(downlink), .sublink_out(sublink_out), .sublink_in(sublink_in), .coupled(coupled), .sample_point(sample_point), .trk_state(trk_state), .ack_window(ack_window), .decoupled(decoupled), .port_enabled(port_enabled), .nrap_phase(nrap_phase), .hub_tx(hub_tx));
+  hub uut(.clk(clk), .rst(rst), .wb_cyc_i(wb_cyc_i), .wb_stb_i(wb_stb_i), .wb_we_i(wb_we_i), .wb_adr_i(wb_adr_i), .wb_dat_i(wb_dat_i), .wb_sel_i(wb_sel_i), .wb_dat_o(wb_dat_o), .wb_ack_o(wb_ack_o), .wb_err_o(wb_err_o), .irq(irq), .uplink(uplink), .downlink(downlink), .sublink_out(sublink_out), .sublink_in(sublink_in), .coupled(coupled), .sample_point(sample_point), .trk_state(trk_state), .ack_window(ack_window), .decoupled(decoupled), .port_enabled(port_enabled), .nrap_phase(nrap_phase), .hub_tx(hub_tx));
 
   integer i;
   initial begin
@@ -40,6 +42,7 @@ module hub_tb;
     wb_we_i = 0;
     wb_adr_i = 0;
     wb_dat_i = 0;
+    wb_sel_i = 0;
     uplink = {32{1'b1}};
     sublink_in = {32{1'b1}};
     #1000;

@@ -41,7 +41,7 @@ pub struct HubStim {
     faults: Vec<(PortFault, u64)>,
     clock_in_bit: u64,
     /// Wishbone: the access in progress and an idle count before the next one.
-    wb: Option<(bool, u8, u32)>,
+    wb: Option<(bool, u8, u32, u8)>,
     wb_idle: u64,
     setup: VecDeque<(u8, u32)>,
     pub cycle: u64,
@@ -239,8 +239,8 @@ impl HubStim {
         self.clock_in_bit = (self.clock_in_bit + 1) % STIM_CLOCKS_PER_BIT;
         // Wishbone.
         if !i.rst {
-            if let Some((w, a, d)) = self.wb {
-                if prev.wb_ack {
+            if let Some((w, a, d, sel)) = self.wb {
+                if prev.wb_ack || prev.wb_err {
                     self.wb = None;
                     self.wb_idle = self.rng.below(if self.setup.is_empty() { 400 } else { 2 });
                 } else {
@@ -249,12 +249,13 @@ impl HubStim {
                     i.wb_we = w;
                     i.wb_adr = a;
                     i.wb_dat_w = d;
+                    i.wb_sel = sel;
                 }
             } else if self.wb_idle > 0 {
                 self.wb_idle -= 1;
             } else {
                 let op = if let Some((a, d)) = self.setup.pop_front() {
-                    (true, a, d)
+                    (true, a, d, 0xF)
                 } else {
                     let write = self.rng.percent(30);
                     let adr = if self.rng.percent(80) {
@@ -278,7 +279,14 @@ impl HubStim {
                     if write && adr == 7 {
                         data &= 0xF;
                     }
-                    (write, adr, data)
+                    // a write in 13 with partial byte lanes, from the data bits so
+                    // that the random stream stays the one the seeds were chosen on
+                    let sel = if write && data % 13 == 0 {
+                        ((data >> 4) & 0xF) as u8
+                    } else {
+                        0xF
+                    };
+                    (write, adr, data, sel)
                 };
                 self.wb = Some(op);
                 i.wb_cyc = true;
@@ -286,6 +294,7 @@ impl HubStim {
                 i.wb_we = op.0;
                 i.wb_adr = op.1;
                 i.wb_dat_w = op.2;
+                i.wb_sel = op.3;
             }
         }
         self.cycle += 1;

@@ -150,19 +150,26 @@ fn run_seed(seed: u64, cycles: u64) {
         model.add_fault(line, f).unwrap();
         rtl.add_fault(line, f).unwrap();
     }
-    // Register writes at random times: any address, random or edge values.
-    let mut writes: Vec<(u64, usize, u8, u32)> = (0..rng.below(25))
+    // Register writes at random times: any address, random or edge values,
+    // a third of them with random byte lanes (bus_contract.md §1).
+    let mut writes: Vec<(u64, usize, u8, u32, u8)> = (0..rng.below(25))
         .map(|_| {
             let value = match rng.below(4) {
                 0 => 0,
                 1 => u32::MAX,
                 _ => rng.next_u64() as u32,
             };
+            let sel = if rng.below(3) == 0 {
+                rng.below(16) as u8
+            } else {
+                0xF
+            };
             (
                 rng.below(cycles),
                 rng.below(nodes as u64) as usize,
                 rng.below(64) as u8,
                 value,
+                sel,
             )
         })
         .collect();
@@ -171,9 +178,9 @@ fn run_seed(seed: u64, cycles: u64) {
     let mut recent: std::collections::VecDeque<String> = std::collections::VecDeque::new();
     for cycle in 0..cycles {
         while next < writes.len() && writes[next].0 == cycle {
-            let (_, n, reg, value) = writes[next];
-            model.node_mut(n).host.write(reg, value);
-            rtl.node_mut(n).host.write(reg, value);
+            let (_, n, reg, value, sel) = writes[next];
+            model.node_mut(n).host.write_lanes(reg, value, sel);
+            rtl.node_mut(n).host.write_lanes(reg, value, sel);
             if reg % 7 == 0 {
                 model.node_mut(n).host.read(reg);
                 rtl.node_mut(n).host.read(reg);

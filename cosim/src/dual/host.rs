@@ -250,6 +250,8 @@ struct Op {
     write: bool,
     reg: u8,
     value: u32,
+    /// Byte lanes of a write (bus_contract.md §1).
+    sel: u8,
     purpose: Purpose,
 }
 
@@ -267,7 +269,7 @@ pub struct HostDriver {
     ops: VecDeque<Op>,
     current: Option<Op>,
     submissions: VecDeque<Submission>,
-    explicit: VecDeque<(u8, Option<u32>)>,
+    explicit: VecDeque<(u8, Option<(u32, u8)>)>,
     rx_partial: (Frame, u8),
     pushing: Option<Submission>,
     /// Frames pushed, frames popped, explicit reads.
@@ -317,6 +319,7 @@ impl HostDriver {
                 write: true,
                 reg,
                 value,
+                sel: 0xF,
                 purpose: Purpose::Config,
             });
         }
@@ -353,7 +356,13 @@ impl HostDriver {
 
     /// Asks for one register write (done before any further reads or pushes).
     pub fn write(&mut self, reg: u8, value: u32) {
-        self.explicit.push_back((reg, Some(value)));
+        self.explicit.push_back((reg, Some((value, 0xF))));
+    }
+
+    /// Asks for one register write with the byte lanes `sel` (4 bits; a partial
+    /// write: bus_contract.md §1).
+    pub fn write_lanes(&mut self, reg: u8, value: u32, sel: u8) {
+        self.explicit.push_back((reg, Some((value, sel & 0xF))));
     }
 
     /// Drops the submissions not yet being pushed (a host that gives up on what
@@ -389,11 +398,12 @@ impl HostDriver {
         inputs.wb_we = false;
         inputs.wb_adr = 0;
         inputs.wb_dat_w = 0;
+        inputs.wb_sel = 0xF;
         if rst {
             return;
         }
         if let Some(op) = self.current {
-            if prev.wb_ack {
+            if prev.wb_ack || prev.wb_err {
                 self.current = None;
                 self.complete(cycle, op, prev.wb_dat_r);
             }
@@ -407,6 +417,7 @@ impl HostDriver {
             inputs.wb_we = op.write;
             inputs.wb_adr = op.reg;
             inputs.wb_dat_w = op.value;
+            inputs.wb_sel = op.sel;
         }
     }
 
@@ -419,7 +430,8 @@ impl HostDriver {
             return Some(Op {
                 write: value.is_some(),
                 reg,
-                value: value.unwrap_or(0),
+                value: value.map_or(0, |(v, _)| v),
+                sel: value.map_or(0xF, |(_, sel)| sel),
                 purpose: if value.is_some() {
                     Purpose::Write
                 } else {
@@ -435,6 +447,7 @@ impl HostDriver {
                 write: false,
                 reg: reg::STATUS,
                 value: 0,
+                sel: 0xF,
                 purpose: Purpose::TxSpace,
             });
         }
@@ -442,6 +455,7 @@ impl HostDriver {
             write: false,
             reg: reg::RX_ID,
             value: 0,
+            sel: 0xF,
             purpose: Purpose::RxId,
         })
     }
@@ -483,6 +497,7 @@ impl HostDriver {
                             write: true,
                             reg,
                             value,
+                            sel: 0xF,
                             purpose: Purpose::TxWrite,
                         });
                     }
@@ -490,6 +505,7 @@ impl HostDriver {
                         write: true,
                         reg: reg::TX_CMD,
                         value: put("TX_CMD", "push", 1),
+                        sel: 0xF,
                         purpose: Purpose::TxPush,
                     });
                 } else {
@@ -498,6 +514,7 @@ impl HostDriver {
                         write: false,
                         reg: reg::RX_ID,
                         value: 0,
+                        sel: 0xF,
                         purpose: Purpose::RxId,
                     });
                 }
@@ -528,6 +545,7 @@ impl HostDriver {
                             write: false,
                             reg,
                             value: 0,
+                            sel: 0xF,
                             purpose,
                         });
                     }
@@ -535,6 +553,7 @@ impl HostDriver {
                         write: true,
                         reg: reg::RX_CMD,
                         value: put("RX_CMD", "pop", 1),
+                        sel: 0xF,
                         purpose: Purpose::RxPop,
                     });
                 }

@@ -211,6 +211,11 @@ pub const EXTRA_SIGNALS: &[DrccSignal] = &[
         get: |n| n.outputs.wb_ack as u64,
     },
     DrccSignal {
+        name: "wb_err_o",
+        width: 1,
+        get: |n| n.outputs.wb_err as u64,
+    },
+    DrccSignal {
         name: "wb_dat_o",
         width: 32,
         get: |n| n.outputs.wb_dat_r as u64,

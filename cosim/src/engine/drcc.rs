@@ -5,7 +5,10 @@
 //! reset. The clock-level behaviour is `crate::model::drcc` (`drcc_contract.md`).
 
 /// Inputs of the DRCC top for one clock.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+///
+/// `Default` is an idle bus with every byte lane selected (`wb_sel = 0xF`) and
+/// everything else 0.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct DrccInputs {
     /// Synchronous reset.
     pub rst: bool,
@@ -17,10 +20,28 @@ pub struct DrccInputs {
     pub wb_adr: u8,
     /// Write data.
     pub wb_dat_w: u32,
+    /// Byte lanes of a write, 4 bits (bus_contract.md §1).
+    pub wb_sel: u8,
     /// Channel A (the paper's channel 1) receive pin, 1 = recessive.
     pub chan_a_rx: bool,
     /// Channel B (channel 2) receive pin.
     pub chan_b_rx: bool,
+}
+
+impl Default for DrccInputs {
+    fn default() -> Self {
+        Self {
+            rst: false,
+            wb_cyc: false,
+            wb_stb: false,
+            wb_we: false,
+            wb_adr: 0,
+            wb_dat_w: 0,
+            wb_sel: 0xF,
+            chan_a_rx: false,
+            chan_b_rx: false,
+        }
+    }
 }
 
 /// The DRCC probes: the paper's signal names (DRCC contract §1) and the channel probes.
@@ -68,6 +89,8 @@ pub struct DrccProbes {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrccOutputs {
     pub wb_ack: bool,
+    /// The access was refused (Wishbone `ERR`, instead of the ack).
+    pub wb_err: bool,
     pub wb_dat_r: u32,
     pub irq: bool,
     pub chan_a_tx: bool,

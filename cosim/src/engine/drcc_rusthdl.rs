@@ -78,6 +78,7 @@ impl<const M: usize> DrccEngine for DrccCoreRustHdlEngine<M> {
         u.wb_we_i.next = i.wb_we;
         u.wb_adr_i.next = ((i.wb_adr & 0x3F) as u64).into();
         u.wb_dat_i.next = (i.wb_dat_w as u64).into();
+        u.wb_sel_i.next = ((i.wb_sel & 0xF) as u64).into();
         u.chan_a_rx.next = i.chan_a_rx;
         u.chan_b_rx.next = i.chan_b_rx;
         self.settle();
@@ -87,6 +88,7 @@ impl<const M: usize> DrccEngine for DrccCoreRustHdlEngine<M> {
         let b = |s: &Signal<Out, Bit>| s.val();
         DrccOutputs {
             wb_ack: u.wb_ack_o.val(),
+            wb_err: u.wb_err_o.val(),
             wb_dat_r: u.wb_dat_o.val().to_u64() as u32,
             irq: u.irq.val(),
             chan_a_tx: u.chan_a_tx.val(),

@@ -16,6 +16,7 @@ macro_rules! decode_fields {
         let o = $o;
         DrccOutputs {
             wb_ack: o.wb_ack_o != 0,
+            wb_err: o.wb_err_o != 0,
             wb_dat_r: o.wb_dat_o,
             irq: o.irq != 0,
             chan_a_tx: o.chan_a_tx != 0,
@@ -117,6 +118,7 @@ macro_rules! drcc_verilator_engine {
                     wb_we_i: i.wb_we as u8,
                     wb_adr_i: i.wb_adr,
                     wb_dat_i: i.wb_dat_w,
+                    wb_sel_i: i.wb_sel & 0xF,
                     chan_a_rx: i.chan_a_rx as u8,
                     chan_b_rx: i.chan_b_rx as u8,
                 };

@@ -14,7 +14,10 @@ pub const MAX_NODE_PORTS: usize = 8;
 pub const MAX_INTERLINKS: usize = 4;
 
 /// Inputs of the hub top for one clock.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+///
+/// `Default` is an idle bus with every byte lane selected (`wb_sel = 0xF`) and
+/// everything else 0.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct HubInputs {
     /// Synchronous reset.
     pub rst: bool,
@@ -26,10 +29,28 @@ pub struct HubInputs {
     pub wb_adr: u8,
     /// Write data.
     pub wb_dat_w: u32,
+    /// Byte lanes of a write, 4 bits (bus_contract.md §1).
+    pub wb_sel: u8,
     /// Node transmit values, bit i = node port i.
     pub uplink: u16,
     /// The twin hub's contribution, bit j = interlink j.
     pub sublink_in: u8,
+}
+
+impl Default for HubInputs {
+    fn default() -> Self {
+        Self {
+            rst: false,
+            wb_cyc: false,
+            wb_stb: false,
+            wb_we: false,
+            wb_adr: 0,
+            wb_dat_w: 0,
+            wb_sel: 0xF,
+            uplink: 0,
+            sublink_in: 0,
+        }
+    }
 }
 
 /// Hub probes (contract §1).
@@ -55,6 +76,8 @@ pub struct HubProbes {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct HubOutputs {
     pub wb_ack: bool,
+    /// The access was refused (Wishbone `ERR`, instead of the ack).
+    pub wb_err: bool,
     pub wb_dat_r: u32,
     pub irq: bool,
     /// Bit i = downlink to node port i.

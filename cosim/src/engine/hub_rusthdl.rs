@@ -51,6 +51,7 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> HubSim for 
         u.wb_we_i.next = i.wb_we;
         u.wb_adr_i.next = ((i.wb_adr & 0x3F) as u64).into();
         u.wb_dat_i.next = (i.wb_dat_w as u64).into();
+        u.wb_sel_i.next = ((i.wb_sel & 0xF) as u64).into();
         u.uplink.next = ((i.uplink as u64) & ((1u64 << N) - 1)).into();
         u.sublink_in.next = ((i.sublink_in as u64) & ((1u64 << M) - 1)).into();
         self.settle();
@@ -59,6 +60,7 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> HubSim for 
         let u = &self.uut;
         HubOutputs {
             wb_ack: u.wb_ack_o.val(),
+            wb_err: u.wb_err_o.val(),
             wb_dat_r: u.wb_dat_o.val().to_u64() as u32,
             irq: u.irq.val(),
             downlink: u.downlink.val().to_u64() as u16,

@@ -82,6 +82,7 @@ macro_rules! step_top {
             wb_we_i: $i.wb_we as u8,
             wb_adr_i: $i.wb_adr & 0x3F,
             wb_dat_i: $i.wb_dat_w,
+            wb_sel_i: $i.wb_sel & 0xF,
             uplink: ($i.uplink & ((1 << N) - 1)) as u8,
             sublink_in: $i.sublink_in & ((1 << M) - 1),
         };
@@ -89,6 +90,7 @@ macro_rules! step_top {
         let o = &*$pout;
         HubOutputs {
             wb_ack: o.wb_ack_o != 0,
+            wb_err: o.wb_err_o != 0,
             wb_dat_r: o.wb_dat_o,
             irq: o.irq != 0,
             downlink: o.downlink as u16,

@@ -229,7 +229,7 @@ impl HubHost {
             return;
         }
         if let Some(op) = self.current {
-            if prev.wb_ack {
+            if prev.wb_ack || prev.wb_err {
                 self.current = None;
                 if !op.write {
                     self.reads.push(HubRead {

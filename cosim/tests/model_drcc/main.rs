@@ -228,26 +228,42 @@ impl Sys {
     /// Wishbone access (contract §2): the request clock (taken: ack 1 after it) and
     /// the ack clock (the master drops the strobe: ack 0 after it).
     fn access(&mut self, n: usize, adr: u8, we: bool, dat: u32) -> u32 {
-        assert!(!self.nodes[n].out.wb_ack, "no access while ack is high");
+        self.access_lanes(n, adr, we, dat, 0xF).0
+    }
+
+    /// An access with the byte lanes `sel` (bus_contract.md §1): the read data
+    /// and whether it ended with ERR.
+    fn access_lanes(&mut self, n: usize, adr: u8, we: bool, dat: u32, sel: u8) -> (u32, bool) {
+        assert!(
+            !(self.nodes[n].out.wb_ack || self.nodes[n].out.wb_err),
+            "no access while ack or err is high"
+        );
         self.nodes[n].wb = DrccInputs {
             wb_cyc: true,
             wb_stb: true,
             wb_we: we,
             wb_adr: adr,
             wb_dat_w: dat,
+            wb_sel: sel,
             ..Default::default()
         };
         self.step();
         let o = self.nodes[n].out;
-        assert!(o.wb_ack, "ack one clock after the request");
+        assert!(
+            o.wb_ack != o.wb_err,
+            "ack or err one clock after the request"
+        );
         self.nodes[n].wb = DrccInputs::default();
         self.step();
-        assert!(!self.nodes[n].out.wb_ack, "ack is a one-clock pulse");
+        assert!(
+            !(self.nodes[n].out.wb_ack || self.nodes[n].out.wb_err),
+            "ack and err are one-clock pulses"
+        );
         assert_eq!(self.nodes[n].out.wb_dat_r, 0, "wb_dat_o is 0 without ack");
         if we {
             assert_eq!(o.wb_dat_r, 0, "a write returns no data");
         }
-        o.wb_dat_r
+        (o.wb_dat_r, o.wb_err)
     }
 
     fn write(&mut self, n: usize, adr: u8, dat: u32) {

@@ -228,3 +228,58 @@ fn configuration_in_the_write_that_leaves_reset_mode_is_taken() {
     );
     assert_eq!(sys.read(0, CHAN_A_ERR) & 0x1FF, 0, "no ACK error counted");
 }
+
+/// Byte lanes and the error response (bus_contract.md §1): the staged frame's
+/// words take the selected bytes and keep the others; a partial write to any
+/// other word is refused with ERR and `INT_STATUS.illegal` and changes nothing;
+/// reads ignore the select; a refused whole-word write (§9) ends with ERR too.
+#[test]
+fn byte_lanes_and_error_responses() {
+    let mut sys = Sys::new(1);
+    sys.write(0, TX_DATA0, 0x1122_3344);
+    // one byte, then a halfword, as a byte-wise memcpy would store them
+    assert!(!sys.access_lanes(0, TX_DATA0, true, 0xAAAA_AAAA, 0b0100).1);
+    assert_eq!(sys.read(0, TX_DATA0), 0x11AA_3344);
+    assert!(!sys.access_lanes(0, TX_DATA0, true, 0xBBBB_CCDD, 0b0011).1);
+    assert_eq!(sys.read(0, TX_DATA0), 0x11AA_CCDD);
+    // TX_ID, TX_CTRL and TX_DATA1 honour lanes too; no lane writes nothing
+    assert!(!sys.access_lanes(0, TX_ID, true, 0x0000_0123, 0b0001).1);
+    assert_eq!(sys.read(0, TX_ID), 0x23);
+    assert!(!sys.access_lanes(0, TX_CTRL, true, 0x0000_0008, 0b0001).1);
+    assert_eq!(sys.read(0, TX_CTRL) & 0xF, 8);
+    assert!(!sys.access_lanes(0, TX_DATA1, true, 0xFFFF_FFFF, 0).1);
+    assert_eq!(sys.read(0, TX_DATA1), 0);
+    assert_eq!(
+        sys.read(0, INT_STATUS) & I_ILLEGAL,
+        0,
+        "none of these is illegal"
+    );
+    // a partial write to a whole word: ERR, illegal, nothing written
+    let btr = sys.read(0, BTR);
+    assert!(sys.access_lanes(0, BTR, true, 0, 0b0001).1, "ERR");
+    assert_eq!(sys.read(0, BTR), btr, "BTR unchanged");
+    assert_ne!(sys.read(0, INT_STATUS) & I_ILLEGAL, 0);
+    sys.write(0, INT_STATUS, I_ILLEGAL);
+    // the W1C word by bytes is refused too: the flag stays up
+    assert!(sys.access_lanes(0, RX_CMD, true, 1, 0b0001).1);
+    assert_ne!(sys.read(0, INT_STATUS) & I_ILLEGAL, 0);
+    assert!(sys.access_lanes(0, INT_STATUS, true, I_ILLEGAL, 0b0001).1);
+    assert_ne!(
+        sys.read(0, INT_STATUS) & I_ILLEGAL,
+        0,
+        "not cleared by a byte"
+    );
+    sys.write(0, INT_STATUS, I_ILLEGAL);
+    // reads ignore the select
+    assert_eq!(sys.access_lanes(0, ID, false, 0, 0).0, 0x4452_4343);
+    // a whole-word write the register rules refuse (§9) also ends with ERR
+    assert!(
+        sys.access_lanes(0, ID, true, 0, 0xF).1,
+        "write to a read-only word"
+    );
+    assert!(
+        sys.access_lanes(0, RX_CMD, true, 1, 0xF).1,
+        "pop of an empty FIFO"
+    );
+    assert!(!sys.access_lanes(0, INT_STATUS, true, I_ILLEGAL, 0xF).1);
+}

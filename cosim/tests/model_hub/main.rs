@@ -240,7 +240,7 @@ impl Bench {
             wb_dat_w: dat,
             ..self.pin_inputs()
         });
-        assert!(o.wb_ack, "access to word {adr} not acknowledged");
+        assert!(o.wb_ack != o.wb_err, "access to word {adr} not answered");
         let data = o.wb_dat_r;
         let idle = self.step_with(self.pin_inputs());
         assert!(!idle.wb_ack && idle.wb_dat_r == 0);

@@ -150,7 +150,8 @@ fn irq_is_registered_one_clock_after_int_status() {
         wb_adr: ID,
         ..b.pin_inputs()
     });
-    assert!(o.wb_ack && !o.irq);
+    // bus_contract.md §1: a refused write ends with ERR, not ACK.
+    assert!(o.wb_err && !o.wb_ack && !o.irq);
     let s = b.step();
     assert!(b.log[s].irq);
     assert_eq!(b.read(INT_STATUS), INT_ILLEGAL);

@@ -24,17 +24,19 @@
 // clang-format off
 #define DRCC_DRCC_SMALL_INPUTS(X) \
     X(uint8_t,  rst,                            1)  /* Synchronous reset of everything, active high: registers, queues, FIFO and both channels take their reset values at an edge with `rst = 1`, and the DRCC leaves it in reset mode (`CTRL.reset_mode = 1`), where the host writes the channel configuration (`CTRL`, `BTR`). */ \
-    X(uint8_t,  wb_cyc_i,                       1)  /* Wishbone cycle, active high. A transaction is taken at an edge where `wb_cyc_i & wb_stb_i & !wb_ack_o`. */ \
+    X(uint8_t,  wb_cyc_i,                       1)  /* Wishbone cycle, active high. A transaction is taken at an edge where `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`. */ \
     X(uint8_t,  wb_stb_i,                       1)  /* Wishbone strobe, active high. */ \
     X(uint8_t,  wb_we_i,                        1)  /* Wishbone write enable: 1 = write, 0 = read. */ \
     X(uint8_t,  wb_adr_i,                       6)  /* Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i`. */ \
-    X(uint32_t, wb_dat_i,                      32)  /* Wishbone write data, always a full word (no `wb_sel_i`). Data bytes in `TX_DATA0/1`: byte 0 (first on the bus) in `[7:0]`, unlike the channel ports. */ \
+    X(uint32_t, wb_dat_i,                      32)  /* Wishbone write data. Data bytes in `TX_DATA0/1`: byte 0 (first on the bus) in `[7:0]`, unlike the channel ports. */ \
+    X(uint8_t,  wb_sel_i,                       4)  /* Wishbone byte select of a write: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes; a partial write to another word is refused (`wb_err_o`). Ignored on reads. Tie to `4'b1111` without byte lanes. */ \
     X(uint8_t,  chan_a_rx,                      1)  /* Channel A CAN receive pin, 1 = recessive; synchronized by two flip-flops. */ \
     X(uint8_t,  chan_b_rx,                      1)  /* Channel B CAN receive pin, 1 = recessive; synchronized by two flip-flops. */
 
 #define DRCC_DRCC_SMALL_OUTPUTS(X) \
     X(uint32_t, wb_dat_o,                      32)  /* Wishbone read data, valid while `wb_ack_o = 1`, else 0. Reads have no side effects; unmapped addresses read 0. */ \
     X(uint8_t,  wb_ack_o,                       1)  /* Wishbone acknowledge, 1 for the clock after the edge that took the transaction: every access takes 2 clocks. */ \
+    X(uint8_t,  wb_err_o,                       1)  /* Wishbone error, instead of the acknowledge, for a refused access (it also sets `INT_STATUS.illegal`): bus_contract.md §1. */ \
     X(uint8_t,  irq,                            1)  /* Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`. */ \
     X(uint8_t,  chan_a_tx,                      1)  /* Channel A CAN transmit pin, 1 = recessive (a register). */ \
     X(uint8_t,  chan_b_tx,                      1)  /* Channel B CAN transmit pin, 1 = recessive (a register). */ \

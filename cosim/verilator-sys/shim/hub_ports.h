@@ -24,17 +24,19 @@
 // clang-format off
 #define DRCC_HUB_INPUTS(X) \
     X(uint8_t,  rst,           1)  /* Synchronous reset of everything, active high: at an edge with `rst = 1` every register takes its reset value and every link output is recessive. */ \
-    X(uint8_t,  wb_cyc_i,      1)  /* Wishbone cycle, active high. A transaction is taken at an edge where `wb_cyc_i & wb_stb_i & !wb_ack_o`. */ \
+    X(uint8_t,  wb_cyc_i,      1)  /* Wishbone cycle, active high. A transaction is taken at an edge where `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`. */ \
     X(uint8_t,  wb_stb_i,      1)  /* Wishbone strobe, active high. */ \
     X(uint8_t,  wb_we_i,       1)  /* Wishbone write enable: 1 = write, 0 = read. */ \
     X(uint8_t,  wb_adr_i,      6)  /* Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i` (hub contract §8). */ \
-    X(uint32_t, wb_dat_i,     32)  /* Wishbone write data, always a full word (no `wb_sel_i`). */ \
+    X(uint32_t, wb_dat_i,     32)  /* Wishbone write data. */ \
+    X(uint8_t,  wb_sel_i,      4)  /* Wishbone byte select of a write: every hub word is written whole, a write with another select than `4'b1111` is refused (`wb_err_o`). Ignored on reads. */ \
     X(uint8_t,  uplink,        4)  /* Node transmit values, bit i = node i's `tx` (N bits), 1 = recessive; each is synchronized by two flip-flops. */ \
     X(uint8_t,  sublink_in,    2)  /* The twin hub's contribution, bit j = interlink j (M bits), 1 = recessive; each is synchronized by two flip-flops. */
 
 #define DRCC_HUB_OUTPUTS(X) \
     X(uint32_t, wb_dat_o,     32)  /* Wishbone read data, valid while `wb_ack_o = 1`, else 0. */ \
     X(uint8_t,  wb_ack_o,      1)  /* Wishbone acknowledge, 1 for the clock after the edge that took the transaction: every access takes 2 clocks. */ \
+    X(uint8_t,  wb_err_o,      1)  /* Wishbone error, instead of the acknowledge, for a refused access (it also sets `INT_STATUS.illegal`): bus_contract.md §1. */ \
     X(uint8_t,  irq,           1)  /* Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`. */ \
     X(uint8_t,  downlink,      4)  /* What node i receives, bit i (N bits), 1 = recessive; every bit carries the same value (registers; in the ACK window only the twin hub's contribution while ACK interdependence is on). */ \
     X(uint8_t,  sublink_out,   2)  /* This hub's contribution (the AND of its enabled node ports and of its NRAP transmitter), the same on each of the M interlinks, 1 = recessive. Wire it to the twin's `sublink_in`. */ \

@@ -27,6 +27,7 @@ const IDLE: HubIn = HubIn {
     wb_we_i: 0,
     wb_adr_i: 0,
     wb_dat_i: 0,
+    wb_sel_i: 0xF,
     uplink: 0xF,
     sublink_in: 0x3,
 };

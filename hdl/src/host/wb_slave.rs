@@ -6,6 +6,9 @@
 //!   taken at an edge where `cyc & stb & !ack`; then `ack <= 1` and, for a read,
 //!   `dat_o <=` the addressed register's value before the edge (`rdata`). At every
 //!   other edge `ack <= 0`, `dat_o <= 0`. So every access takes two clocks.
+//!   The register block turns the ack of a refused write into `ERR`
+//!   (bus_contract.md §1) with a flip-flop of its own: `refused` must not come
+//!   back into this block, whose `wr` it depends on.
 //! - Interrupts: `INT_STATUS` is write-1-to-clear and an event at the same edge
 //!   wins: `int_status <= (int_status & !w1c) | events`; `INT_ENABLE` is stored
 //!   when `int_enable_we`; `irq <= |(int_status & int_enable)` (registered, so it
@@ -105,7 +108,13 @@ impl<const W: usize> Logic for WbSlave<W> {
         dff_setup!(self, clk, ack_q, dat_q, irq_q, int_status_q, int_enable_q);
         // classic cycle: take a request unless it is the one just acknowledged
         self.taken.next = self.wb_cyc_i.val() & self.wb_stb_i.val() & !self.ack_q.q.val();
-        self.wr.next = self.taken.val() & self.wb_we_i.val();
+        // written out rather than from `taken`, so that Verilator can order `wr`
+        // apart from the read data the register block returns on it (no
+        // circular logic, UNOPTFLAT)
+        self.wr.next = self.wb_cyc_i.val()
+            & self.wb_stb_i.val()
+            & !self.ack_q.q.val()
+            & self.wb_we_i.val();
         self.ack_q.d.next = self.taken.val();
         self.dat_q.d.next = self.zero32.val();
         if self.taken.val() & !self.wb_we_i.val() {

@@ -5,6 +5,9 @@
 //! read-only words are assembled beside it by `super::status_words` and come in
 //! as `ro_word`.
 //!
+//! - Byte lanes (bus_contract.md §1): `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the
+//!   selected bytes and keep the others; a partial write to any other word is
+//!   refused. A refused access ends with `wb_err_o` instead of `wb_ack_o`.
 //! - cfg fields (CTRL except `reset_mode`, BTR, RMB_CFG, DEDUP_CFG) are writable
 //!   only in reset mode; CTRL with redundancy and a listen-only channel is
 //!   refused; k = 0 is stored as 1; refused writes,
@@ -41,10 +44,14 @@ pub struct WbRegs {
     pub wb_adr_i: Signal<In, Bits<6>>,
     /// Write data.
     pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Byte lanes of a write (lane i = `wb_dat_i[8i+7:8i]`).
+    pub wb_sel_i: Signal<In, Bits<4>>,
     /// Read data (registered, with the ack).
     pub wb_dat_o: Signal<Out, Bits<32>>,
     /// Acknowledge (registered).
     pub wb_ack_o: Signal<Out, Bit>,
+    /// Error: the access was refused (registered, instead of the ack).
+    pub wb_err_o: Signal<Out, Bit>,
     /// Interrupt request (registered).
     pub irq: Signal<Out, Bit>,
     // ---- status in ----
@@ -86,7 +93,7 @@ pub struct WbRegs {
     pub ev_dmr: Signal<In, Bit>,
     /// A star node's `STAR_STATUS.split` changed (`INT_STATUS.domain`, §4.5).
     pub ev_domain: Signal<In, Bit>,
-    /// A write is taken at this edge.
+    /// A whole-word write is taken at this edge (the DMR registers take no other).
     pub wr_o: Signal<Out, Bit>,
     // ---- configuration out ----
     /// `CTRL.reset_mode`.
@@ -154,8 +161,20 @@ pub struct WbRegs {
     tx_data1_q: DFF<Bits<32>>,
     es_a_prev: DFF<Bits<2>>,
     es_b_prev: DFF<Bits<2>>,
+    /// The access answered now was refused: its ack is `ERR` (bus_contract.md §1).
+    err_q: DFF<Bit>,
     // ---- decode ----
     wr: Signal<Local, Bit>,
+    /// All four byte lanes are selected.
+    full: Signal<Local, Bit>,
+    /// The addressed word honours byte lanes (the staged TX frame).
+    laned: Signal<Local, Bit>,
+    /// `wb_sel_i` widened to bits.
+    lane_mask: Signal<Local, Bits<32>>,
+    /// The addressed laned word's value (0 for the others).
+    lane_old: Signal<Local, Bits<32>>,
+    /// `TX_CTRL` as it reads.
+    tx_ctrl_word: Signal<Local, Bits<32>>,
     rdata: Signal<Local, Bits<32>>,
     wdat: Signal<Local, Bits<32>>,
     illegal: Signal<Local, Bit>,
@@ -213,6 +232,11 @@ pub struct WbRegs {
     zero16: Constant<Bits<16>>,
     zero31: Constant<Bits<31>>,
     zero32: Constant<Bits<32>>,
+    all_lanes: Constant<Bits<4>>,
+    lane0: Constant<Bits<32>>,
+    lane1: Constant<Bits<32>>,
+    lane2: Constant<Bits<32>>,
+    lane3: Constant<Bits<32>>,
 }
 
 fn adr(index: u32) -> Constant<Bits<6>> {
@@ -249,8 +273,10 @@ impl Default for WbRegs {
             wb_we_i: Default::default(),
             wb_adr_i: Default::default(),
             wb_dat_i: Default::default(),
+            wb_sel_i: Default::default(),
             wb_dat_o: Default::default(),
             wb_ack_o: Default::default(),
+            wb_err_o: Default::default(),
             irq: Default::default(),
             ro_word: Default::default(),
             es_a: Default::default(),
@@ -308,7 +334,13 @@ impl Default for WbRegs {
             tx_data1_q: Default::default(),
             es_a_prev: Default::default(),
             es_b_prev: Default::default(),
+            err_q: Default::default(),
             wr: Default::default(),
+            full: Default::default(),
+            laned: Default::default(),
+            lane_mask: Default::default(),
+            lane_old: Default::default(),
+            tx_ctrl_word: Default::default(),
             rdata: Default::default(),
             wdat: Default::default(),
             illegal: Default::default(),
@@ -363,6 +395,11 @@ impl Default for WbRegs {
             zero16: Constant::new(0.into()),
             zero31: Constant::new(0.into()),
             zero32: Constant::new(0.into()),
+            all_lanes: Constant::new(0xF.into()),
+            lane0: Constant::new(0xFF.into()),
+            lane1: Constant::new(0xFF00.into()),
+            lane2: Constant::new(0xFF_0000.into()),
+            lane3: Constant::new(0xFF00_0000u64.into()),
         }
     }
 }

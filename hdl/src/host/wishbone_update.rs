@@ -12,7 +12,7 @@ impl Logic for WbRegs {
     fn update(&mut self) {
         dff_setup!(
             self, clk, btr_q, rmb_cfg_q, window_q, tx_id_q, tx_dlc_q, tx_queue_q, tx_data0_q,
-            tx_data1_q, es_a_prev, es_b_prev
+            tx_data1_q, es_a_prev, es_b_prev, err_q
         );
         // ---- Wishbone slave (§2) ----
         self.bus.clk.next = self.clk.val();
@@ -21,7 +21,24 @@ impl Logic for WbRegs {
         self.bus.wb_stb_i.next = self.wb_stb_i.val();
         self.bus.wb_we_i.next = self.wb_we_i.val();
         self.wr.next = self.bus.wr.val();
-        self.wdat.next = self.wb_dat_i.val();
+        self.full.next = self.wb_sel_i.val() == self.all_lanes.val();
+        self.laned.next = (self.wb_adr_i.val() == self.a_tx_id.val())
+            | (self.wb_adr_i.val() == self.a_tx_ctrl.val())
+            | (self.wb_adr_i.val() == self.a_tx_data0.val())
+            | (self.wb_adr_i.val() == self.a_tx_data1.val());
+        self.lane_mask.next = self.zero32.val();
+        if self.wb_sel_i.val().get_bit(0) {
+            self.lane_mask.next = self.lane_mask.val() | self.lane0.val();
+        }
+        if self.wb_sel_i.val().get_bit(1) {
+            self.lane_mask.next = self.lane_mask.val() | self.lane1.val();
+        }
+        if self.wb_sel_i.val().get_bit(2) {
+            self.lane_mask.next = self.lane_mask.val() | self.lane2.val();
+        }
+        if self.wb_sel_i.val().get_bit(3) {
+            self.lane_mask.next = self.lane_mask.val() | self.lane3.val();
+        }
         self.es_evt.next = (self.es_a.val() != self.es_a_prev.q.val())
             | (self.es_b.val() != self.es_b_prev.q.val());
 
@@ -35,6 +52,8 @@ impl Logic for WbRegs {
             | (bit_cast::<64, 8>(self.tx_data1_q.q.val().get_bits::<8>(8)) << 16)
             | (bit_cast::<64, 8>(self.tx_data1_q.q.val().get_bits::<8>(16)) << 8)
             | bit_cast::<64, 8>(self.tx_data1_q.q.val().get_bits::<8>(24));
+        self.tx_ctrl_word.next = (bit_cast::<32, 4>(self.tx_dlc_q.q.val()) << self.t_dlc.val())
+            | (bit_cast::<32, 1>(self.tx_queue_q.q.val().into()) << self.t_queue.val());
         if self.wb_adr_i.val() == self.a_ctrl.val() {
             self.rdata.next = self.ctrl.word.val();
         } else if self.wb_adr_i.val() == self.a_btr.val() {
@@ -50,8 +69,7 @@ impl Logic for WbRegs {
         } else if self.wb_adr_i.val() == self.a_tx_id.val() {
             self.rdata.next = bit_cast::<32, 31>(self.tx_id_q.q.val());
         } else if self.wb_adr_i.val() == self.a_tx_ctrl.val() {
-            self.rdata.next = (bit_cast::<32, 4>(self.tx_dlc_q.q.val()) << self.t_dlc.val())
-                | (bit_cast::<32, 1>(self.tx_queue_q.q.val().into()) << self.t_queue.val());
+            self.rdata.next = self.tx_ctrl_word.val();
         } else if self.wb_adr_i.val() == self.a_tx_data0.val() {
             self.rdata.next = self.tx_data0_q.q.val();
         } else if self.wb_adr_i.val() == self.a_tx_data1.val() {
@@ -62,12 +80,28 @@ impl Logic for WbRegs {
             self.rdata.next = self.ro_word.val();
         }
         self.bus.rdata.next = self.rdata.val();
+        // bus_contract.md §1: unselected byte lanes keep the word's value (only
+        // the laned words are written with a partial select, so only their
+        // values are merged: the status words stay off the write path)
+        self.lane_old.next = self.zero32.val();
+        if self.wb_adr_i.val() == self.a_tx_id.val() {
+            self.lane_old.next = bit_cast::<32, 31>(self.tx_id_q.q.val());
+        } else if self.wb_adr_i.val() == self.a_tx_ctrl.val() {
+            self.lane_old.next = self.tx_ctrl_word.val();
+        } else if self.wb_adr_i.val() == self.a_tx_data0.val() {
+            self.lane_old.next = self.tx_data0_q.q.val();
+        } else if self.wb_adr_i.val() == self.a_tx_data1.val() {
+            self.lane_old.next = self.tx_data1_q.q.val();
+        }
+        self.wdat.next = (self.lane_old.val() & !self.lane_mask.val())
+            | (self.wb_dat_i.val() & self.lane_mask.val());
 
         // ---- writes (§3, §9) ----
         self.ctrl.clk.next = self.clk.val();
         self.ctrl.rst.next = self.rst.val();
-        self.ctrl.we.next = self.wr.val() & (self.wb_adr_i.val() == self.a_ctrl.val());
-        self.ctrl.wdat.next = self.wdat.val();
+        self.ctrl.we.next =
+            self.wr.val() & self.full.val() & (self.wb_adr_i.val() == self.a_ctrl.val());
+        self.ctrl.wdat.next = self.wb_dat_i.val();
         self.ctrl.refused.next = self.ctrl_check.refused.val();
         self.ctrl.k_in.next = self.ctrl_check.k_in.val();
         // from the port, not the local copy: Verilator then orders this apart from
@@ -86,7 +120,7 @@ impl Logic for WbRegs {
         self.illegal.next = false;
         self.w1c.next = self.zero10.val();
         self.bus.int_enable_we.next = false;
-        self.bus.int_enable_d.next = self.wdat.val().get_bits::<10>(0);
+        self.bus.int_enable_d.next = self.wb_dat_i.val().get_bits::<10>(0);
         self.push.next = false;
         self.pop.next = false;
 
@@ -98,30 +132,35 @@ impl Logic for WbRegs {
             self.target_count.next = self.txq_a.val();
         }
 
-        if self.wr.val() {
+        if self.wr.val() & !self.full.val() & !self.laned.val() {
+            // a partial write to a whole-word register (bus_contract.md §1)
+            self.illegal.next = true;
+        } else if self.wr.val() {
             if self.wb_adr_i.val() == self.a_ctrl.val() {
                 self.illegal.next = self.ctrl_check.illegal.val();
             } else if self.wb_adr_i.val() == self.a_btr.val() {
                 if self.ctrl.reset_mode.val() {
-                    self.btr_q.d.next = self.wdat.val().get_bits::<24>(0);
+                    self.btr_q.d.next = self.wb_dat_i.val().get_bits::<24>(0);
                 } else {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_rmb_cfg.val() {
                 if self.ctrl.reset_mode.val() {
-                    self.rmb_cfg_q.d.next = self.wdat.val();
+                    self.rmb_cfg_q.d.next = self.wb_dat_i.val();
                 } else {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_dedup_cfg.val() {
                 if self.ctrl.reset_mode.val() {
-                    self.window_q.d.next =
-                        self.wdat.val().get_bits::<15>(self.d_window.val().index());
+                    self.window_q.d.next = self
+                        .wb_dat_i
+                        .val()
+                        .get_bits::<15>(self.d_window.val().index());
                 } else {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_int_status.val() {
-                self.w1c.next = self.wdat.val().get_bits::<10>(0);
+                self.w1c.next = self.wb_dat_i.val().get_bits::<10>(0);
             } else if self.wb_adr_i.val() == self.a_int_enable.val() {
                 self.bus.int_enable_we.next = true;
             } else if self.wb_adr_i.val() == self.a_tx_id.val() {
@@ -134,7 +173,7 @@ impl Logic for WbRegs {
             } else if self.wb_adr_i.val() == self.a_tx_data1.val() {
                 self.tx_data1_q.d.next = self.wdat.val();
             } else if self.wb_adr_i.val() == self.a_tx_cmd.val() {
-                if self.wdat.val().get_bit(self.t_push.val().index()) {
+                if self.wb_dat_i.val().get_bit(self.t_push.val().index()) {
                     if self.ctrl.reset_mode.val()
                         | (self.target_count.val() == self.queue_full.val())
                     {
@@ -144,7 +183,7 @@ impl Logic for WbRegs {
                     }
                 }
             } else if self.wb_adr_i.val() == self.a_rx_cmd.val() {
-                if self.wdat.val().get_bit(self.r_pop.val().index()) {
+                if self.wb_dat_i.val().get_bit(self.r_pop.val().index()) {
                     if self.rx_count.val() == self.zero6.val() {
                         self.illegal.next = true;
                     } else {
@@ -171,6 +210,8 @@ impl Logic for WbRegs {
             | (bit_cast::<10, 1>(self.ev_dmr.val().into()) << self.i_dmr.val())
             | (bit_cast::<10, 1>(self.ev_domain.val().into()) << self.i_domain.val());
         self.bus.w1c.next = self.w1c.val();
+        // the refused write's answer is ERR (illegal comes only with a write)
+        self.err_q.d.next = self.illegal.val();
         self.es_a_prev.d.next = self.es_a.val();
         self.es_b_prev.d.next = self.es_b.val();
 
@@ -187,10 +228,12 @@ impl Logic for WbRegs {
             self.es_b_prev.d.next = self.zero2.val();
             self.push.next = false;
             self.pop.next = false;
+            self.err_q.d.next = false;
         }
 
         // ---- outputs ----
-        self.wb_ack_o.next = self.bus.wb_ack_o.val();
+        self.wb_ack_o.next = self.bus.wb_ack_o.val() & !self.err_q.q.val();
+        self.wb_err_o.next = self.err_q.q.val();
         self.wb_dat_o.next = self.bus.wb_dat_o.val();
         self.irq.next = self.bus.irq.val();
         self.reset_mode.next = self.ctrl.reset_mode.val();
@@ -204,7 +247,7 @@ impl Logic for WbRegs {
         self.mode_b.next = self.ctrl.mode_b.val();
         self.single_shot.next = self.ctrl.single_shot.val();
         self.dmr.next = self.ctrl.dmr.val();
-        self.wr_o.next = self.wr.val();
+        self.wr_o.next = self.wr.val() & self.full.val();
         self.brp.next = self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index());
         self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());
         self.tseg2.next = self.btr_q.q.val().get_bits::<3>(self.b_tseg2.val().index());

@@ -63,7 +63,7 @@ pub struct Hub<const N: usize, const M: usize, const P: usize, const H: usize = 
     pub rst: Signal<In, Bit>,
     // Wishbone B4 classic slave, as the DRCC's (hub_contract.md §1, §8)
     /// Wishbone cycle, active high. A transaction is taken at an edge where
-    /// `wb_cyc_i & wb_stb_i & !wb_ack_o`.
+    /// `wb_cyc_i & wb_stb_i & !(wb_ack_o | wb_err_o)`.
     pub wb_cyc_i: Signal<In, Bit>,
     /// Wishbone strobe, active high.
     pub wb_stb_i: Signal<In, Bit>,
@@ -72,13 +72,20 @@ pub struct Hub<const N: usize, const M: usize, const P: usize, const H: usize = 
     /// Wishbone word address: register index 0..63, byte offset = 4 x `wb_adr_i`
     /// (hub contract §8).
     pub wb_adr_i: Signal<In, Bits<6>>,
-    /// Wishbone write data, always a full word (no `wb_sel_i`).
+    /// Wishbone write data.
     pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Wishbone byte select of a write: every hub word is written whole, a
+    /// write with another select than `4'b1111` is refused (`wb_err_o`).
+    /// Ignored on reads.
+    pub wb_sel_i: Signal<In, Bits<4>>,
     /// Wishbone read data, valid while `wb_ack_o = 1`, else 0.
     pub wb_dat_o: Signal<Out, Bits<32>>,
     /// Wishbone acknowledge, 1 for the clock after the edge that took the
     /// transaction: every access takes 2 clocks.
     pub wb_ack_o: Signal<Out, Bit>,
+    /// Wishbone error, instead of the acknowledge, for a refused access (it
+    /// also sets `INT_STATUS.illegal`): bus_contract.md §1.
+    pub wb_err_o: Signal<Out, Bit>,
     /// Interrupt request, active-high level, registered: `|(INT_STATUS & INT_ENABLE)`.
     pub irq: Signal<Out, Bit>,
     // node links: bit i belongs to node port i (1 = recessive, 0 = dominant);
@@ -150,6 +157,7 @@ pub struct Hub<const N: usize, const M: usize, const P: usize, const H: usize = 
     a_sub: [Constant<Bits<6>>; M],
     shift_n: Constant<Bits<4>>,
     a_ctrl: Constant<Bits<6>>,
+    all_lanes: Constant<Bits<4>>,
     s_idle: Constant<Bits<2>>,
     s_ack: Constant<Bits<2>>,
     s_delim: Constant<Bits<2>>,
@@ -174,8 +182,10 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Default for
             wb_we_i: Default::default(),
             wb_adr_i: Default::default(),
             wb_dat_i: Default::default(),
+            wb_sel_i: Default::default(),
             wb_dat_o: Default::default(),
             wb_ack_o: Default::default(),
+            wb_err_o: Default::default(),
             irq: Default::default(),
             uplink: Default::default(),
             downlink: Default::default(),
@@ -218,6 +228,7 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Default for
             a_sub: std::array::from_fn(|j| Constant::new((port0 + (N + j) as u64).into())),
             shift_n: Constant::new((N as u64).into()),
             a_ctrl: Constant::new((super::registers::CTRL as u64).into()),
+            all_lanes: Constant::new(0xF.into()),
             s_idle: Constant::new(super::tracker::IDLE_WAIT.into()),
             s_ack: Constant::new(super::tracker::ACK_SLOT.into()),
             s_delim: Constant::new(super::tracker::ACK_DELIM.into()),
@@ -245,10 +256,13 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         // CTRL.recouple / CTRL.force_decouple (§8): a CTRL write with one of bits 2
         // and 1, and reset_mode 0 before the write and in the written value (the
         // register block takes the rest of the command)
+        // (written out from the ports, not from the register block's `wr`, so
+        // that Verilator orders it apart from that block: no UNOPTFLAT)
         self.ctrl_cmd.next = self.wb_cyc_i.val()
             & self.wb_stb_i.val()
-            & !self.regs.wb_ack_o.val()
+            & !(self.regs.wb_ack_o.val() | self.regs.wb_err_o.val())
             & self.wb_we_i.val()
+            & (self.wb_sel_i.val() == self.all_lanes.val())
             & (self.wb_adr_i.val() == self.a_ctrl.val())
             & !self.regs.reset_mode.val()
             & !self.wb_dat_i.val().get_bit(0);
@@ -374,6 +388,7 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.regs.wb_we_i.next = self.wb_we_i.val();
         self.regs.wb_adr_i.next = self.wb_adr_i.val();
         self.regs.wb_dat_i.next = self.wb_dat_i.val();
+        self.regs.wb_sel_i.next = self.wb_sel_i.val();
         self.regs.sample.next = self.btl.sample.val();
         self.regs.any_sub_en.next = self.sub_en.val() != self.zero_m.val();
         self.regs.trk.next = self.tracker.trk.val();
@@ -509,6 +524,7 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         // ---- outputs ----
         self.wb_dat_o.next = self.regs.wb_dat_o.val();
         self.wb_ack_o.next = self.regs.wb_ack_o.val();
+        self.wb_err_o.next = self.regs.wb_err_o.val();
         self.irq.next = self.regs.irq.val();
         self.downlink.next = self.ack_unit.downlink.val();
         self.sublink_out.next = self.coupler.sublink_out.val();

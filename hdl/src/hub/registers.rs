@@ -69,10 +69,15 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize, const H: usiz
     pub wb_adr_i: Signal<In, Bits<6>>,
     /// Write data.
     pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Byte lanes of a write: every hub word is written whole, so a write with
+    /// another select than `4'b1111` is refused (bus_contract.md §1).
+    pub wb_sel_i: Signal<In, Bits<4>>,
     /// Read data (registered, with the ack).
     pub wb_dat_o: Signal<Out, Bits<32>>,
     /// Acknowledge (registered).
     pub wb_ack_o: Signal<Out, Bit>,
+    /// Error: the access was refused (registered, instead of the ack).
+    pub wb_err_o: Signal<Out, Bit>,
     /// Interrupt request (registered).
     pub irq: Signal<Out, Bit>,
     // ---- status in ----
@@ -116,7 +121,7 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize, const H: usiz
     /// NRAP enters `DDSP_FORCE`: `decoupled = 1` (§9.2).
     pub nrap_decouple: Signal<In, Bit>,
     // ---- configuration and state out ----
-    /// A write is taken at this edge (for `super::config`).
+    /// A whole-word write is taken at this edge (for `super::config`).
     pub wr: Signal<Out, Bit>,
     /// `CTRL.reset_mode`.
     pub reset_mode: Signal<Out, Bit>,
@@ -143,11 +148,15 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize, const H: usiz
     fi_no_twin_q: DFF<Bit>,
     decoupled_q: DFF<Bit>,
     no_twin: DFF<Bits<16>>,
+    /// The access answered now was refused: its ack is `ERR` (bus_contract.md §1).
+    err_q: DFF<Bit>,
     // ---- decode ----
     wdat: Signal<Local, Bits<32>>,
     rdata: Signal<Local, Bits<32>>,
     is_port: Signal<Local, Bit>,
     illegal: Signal<Local, Bit>,
+    /// All four byte lanes are selected.
+    full: Signal<Local, Bit>,
     w1c: Signal<Local, Bits<6>>,
     dec_evt: Signal<Local, Bit>,
     no_twin_new: Signal<Local, Bits<16>>,
@@ -188,6 +197,7 @@ pub struct HubRegs<const N: usize, const M: usize, const P: usize, const H: usiz
     // ---- values ----
     id_val: Constant<Bits<32>>,
     zero6: Constant<Bits<6>>,
+    all_lanes: Constant<Bits<4>>,
     zero16: Constant<Bits<16>>,
     one16: Constant<Bits<16>>,
     max16: Constant<Bits<16>>,
@@ -231,8 +241,10 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Default
             wb_we_i: Default::default(),
             wb_adr_i: Default::default(),
             wb_dat_i: Default::default(),
+            wb_sel_i: Default::default(),
             wb_dat_o: Default::default(),
             wb_ack_o: Default::default(),
+            wb_err_o: Default::default(),
             irq: Default::default(),
             sample: Default::default(),
             any_sub_en: Default::default(),
@@ -270,10 +282,12 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Default
             fi_no_twin_q: Default::default(),
             decoupled_q: Default::default(),
             no_twin: Default::default(),
+            err_q: Default::default(),
             wdat: Default::default(),
             rdata: Default::default(),
             is_port: Default::default(),
             illegal: Default::default(),
+            full: Default::default(),
             w1c: Default::default(),
             dec_evt: Default::default(),
             no_twin_new: Default::default(),
@@ -311,6 +325,7 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Default
             u_u_window: lsb(&MAP, "ACK_UNIT", "u_window", 1),
             id_val: Constant::new((map::id_value(H as u32, N as u32, M as u32) as u64).into()),
             zero6: Constant::new(0.into()),
+            all_lanes: Constant::new(0xF.into()),
             zero16: Constant::new(0.into()),
             one16: Constant::new(1.into()),
             max16: Constant::new(0xFFFF.into()),
@@ -332,7 +347,8 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
             fi_ack_leak_q,
             fi_no_twin_q,
             decoupled_q,
-            no_twin
+            no_twin,
+            err_q
         );
         // ---- Wishbone slave ----
         self.bus.clk.next = self.clk.val();
@@ -340,7 +356,8 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.bus.wb_cyc_i.next = self.wb_cyc_i.val();
         self.bus.wb_stb_i.next = self.wb_stb_i.val();
         self.bus.wb_we_i.next = self.wb_we_i.val();
-        self.wr.next = self.bus.wr.val();
+        self.full.next = self.wb_sel_i.val() == self.all_lanes.val();
+        self.wr.next = self.bus.wr.val() & self.full.val();
         self.wdat.next = self.wb_dat_i.val();
         self.is_port.next = (self.wb_adr_i.val() >= self.a_port0.val())
             & (self.wb_adr_i.val() < self.a_port_end.val());
@@ -416,7 +433,10 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.w1c.next = self.zero6.val();
         self.bus.int_enable_we.next = false;
         self.bus.int_enable_d.next = self.wdat.val().get_bits::<6>(0);
-        if self.wr.val() {
+        if self.bus.wr.val() & !self.full.val() {
+            // a partial write (bus_contract.md §1)
+            self.illegal.next = true;
+        } else if self.wr.val() {
             if self.wb_adr_i.val() == self.a_ctrl.val() {
                 if self.wdat.val().get_bit(self.c_force.val().index())
                     & self.wdat.val().get_bit(self.c_recouple.val().index())
@@ -483,6 +503,8 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
             | (bit_cast::<6, 1>(self.ev_ack_unit.val().into()) << self.i_ack_unit.val())
             | (bit_cast::<6, 1>(self.ev_nrap.val().into()) << self.i_nrap.val());
         self.bus.w1c.next = self.w1c.val();
+        // the refused write's answer is ERR (illegal comes only with a write)
+        self.err_q.d.next = self.illegal.val();
 
         if self.rst.val() {
             self.reset_mode_q.d.next = true;
@@ -493,10 +515,12 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
             self.fi_no_twin_q.d.next = false;
             self.decoupled_q.d.next = false;
             self.no_twin.d.next = self.zero16.val();
+            self.err_q.d.next = false;
         }
 
         // ---- outputs ----
-        self.wb_ack_o.next = self.bus.wb_ack_o.val();
+        self.wb_ack_o.next = self.bus.wb_ack_o.val() & !self.err_q.q.val();
+        self.wb_err_o.next = self.err_q.q.val();
         self.wb_dat_o.next = self.bus.wb_dat_o.val();
         self.irq.next = self.bus.irq.val();
         self.reset_mode.next = self.reset_mode_q.q.val();

@@ -42,7 +42,7 @@ use std::fmt;
 pub type Signal = (&'static str, u64);
 
 /// Signals compared per DRCC node.
-pub const NODE_SIGNALS: usize = 44;
+pub const NODE_SIGNALS: usize = 46;
 /// Signals compared per RCM.
 pub const RCM_SIGNALS: usize = 8;
 
@@ -52,6 +52,7 @@ pub const RCM_SIGNALS: usize = 8;
 pub fn node_signals(i: &DrccInputs, o: &DrccOutputs) -> [Signal; NODE_SIGNALS] {
     let DrccOutputs {
         wb_ack,
+        wb_err,
         wb_dat_r,
         irq,
         chan_a_tx,
@@ -98,6 +99,7 @@ pub fn node_signals(i: &DrccInputs, o: &DrccOutputs) -> [Signal; NODE_SIGNALS] {
         wb_we,
         wb_adr,
         wb_dat_w,
+        wb_sel,
         chan_a_rx,
         chan_b_rx,
     } = *i;
@@ -128,6 +130,7 @@ pub fn node_signals(i: &DrccInputs, o: &DrccOutputs) -> [Signal; NODE_SIGNALS] {
         ("chan_b_tx", chan_b_tx as u64),
         ("irq", irq as u64),
         ("wb_ack_o", wb_ack as u64),
+        ("wb_err_o", wb_err as u64),
         ("wb_dat_o", wb_dat_r as u64),
         ("chan_a_sample_point", chan_a_sample_point as u64),
         ("chan_b_sample_point", chan_b_sample_point as u64),
@@ -150,6 +153,7 @@ pub fn node_signals(i: &DrccInputs, o: &DrccOutputs) -> [Signal; NODE_SIGNALS] {
         ("wb_we_i", wb_we as u64),
         ("wb_adr_i", wb_adr as u64),
         ("wb_dat_i", wb_dat_w as u64),
+        ("wb_sel_i", wb_sel as u64),
         ("chan_a_rx", chan_a_rx as u64),
         ("chan_b_rx", chan_b_rx as u64),
     ]

@@ -101,9 +101,10 @@ impl AxiLiteBridge {
         }
 
         // 2. Start an access (fair arbitration when both are ready).
-        if !s.cyc & !s.bvalid & !s.rvalid {
-            let write_ready = s.aw_full & s.w_full;
-            let read_ready = s.ar_full;
+        if !s.cyc {
+            // a held response blocks only its own kind
+            let write_ready = s.aw_full & s.w_full & !s.bvalid;
+            let read_ready = s.ar_full & !s.rvalid;
             let start = match (write_ready, read_ready) {
                 (true, true) => Some(!s.last_write),
                 (true, false) => Some(true),

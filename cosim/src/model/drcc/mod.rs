@@ -249,15 +249,35 @@ impl DrccModel {
         let mut push = None;
         let mut pop = false;
         let mut dmr_write = None;
-        let take = i.wb_cyc && i.wb_stb && !r.wb_ack;
-        n.wb_ack = take;
+        // bus_contract.md §1: an access is taken unless it is the one just
+        // answered; a refused one (it raises `illegal`) ends with ERR.
+        let take = i.wb_cyc && i.wb_stb && !(r.wb_ack || r.wb_err);
         n.wb_dat = 0;
         if take {
             let adr = i.wb_adr & 0x3F;
-            let d = i.wb_dat_w;
+            // Byte lanes: the staged frame's words merge the selected bytes into
+            // their value; every other word takes only a whole-word write.
+            let lanes = (0..4)
+                .filter(|b| i.wb_sel >> b & 1 != 0)
+                .fold(0u32, |m, b| m | 0xFF << (8 * b));
+            let laned = matches!(
+                adr,
+                idx::TX_ID | idx::TX_CTRL | idx::TX_DATA0 | idx::TX_DATA1
+            );
+            let d = if laned {
+                (self.read_reg(adr) & !lanes) | (i.wb_dat_w & lanes)
+            } else {
+                i.wb_dat_w
+            };
             if !i.wb_we {
                 n.wb_dat = self.read_reg(adr);
+            } else if lanes != u32::MAX && !laned {
+                coverage::hit("drcc register port: a partial write to a whole word is refused");
+                ints |= int::ILLEGAL;
             } else {
+                if lanes != u32::MAX {
+                    coverage::hit("drcc register port: a partial write to a staged TX word");
+                }
                 match adr {
                     idx::CTRL => {
                         let w = clamp_k(d & ctrl::DEFINED);
@@ -490,6 +510,13 @@ impl DrccModel {
             ints |= int::ERR_STATE;
         }
         n.err_q = es;
+        // Every `illegal` comes from the access taken at this edge (§9).
+        let refused = take && ints & int::ILLEGAL != 0;
+        n.wb_ack = take && !refused;
+        n.wb_err = refused;
+        if refused {
+            n.wb_dat = 0;
+        }
         n.int_status = (r.int_status & !w1c) | ints;
         n.irq = r.int_status & r.int_enable != 0;
         self.r = n;
@@ -501,6 +528,7 @@ impl DrccModel {
         let f = &self.fsm;
         DrccOutputs {
             wb_ack: self.r.wb_ack,
+            wb_err: self.r.wb_err,
             wb_dat_r: self.r.wb_dat,
             irq: self.r.irq,
             chan_a_tx: a.tx,

@@ -18,6 +18,8 @@ pub(super) struct Regs {
     pub(super) int_enable: u32,
     pub(super) irq: bool,
     pub(super) wb_ack: bool,
+    /// Wishbone `ERR`: the last access was refused (bus_contract.md §1).
+    pub(super) wb_err: bool,
     pub(super) wb_dat: u32,
     pub(super) tx_id: u32,
     pub(super) tx_ctrl: u32,
@@ -46,6 +48,7 @@ impl Regs {
             int_enable: 0,
             irq: false,
             wb_ack: false,
+            wb_err: false,
             wb_dat: 0,
             tx_id: 0,
             tx_ctrl: 0,

@@ -9,6 +9,7 @@ use super::nrap::phase;
 use super::regs::{self, idx, int, WriteEffects};
 use super::HubModel;
 use crate::engine::hub::HubInputs;
+use crate::model::coverage;
 
 impl HubModel {
     /// The value a Wishbone read of word `adr` returns (registers before the edge).
@@ -49,15 +50,26 @@ impl HubModel {
     #[inline(never)]
     pub(super) fn wishbone(&mut self, i: &HubInputs) -> WriteEffects {
         let adr = i.wb_adr & 0x3F;
-        self.regs.wb_ack = true;
-        if i.wb_we {
+        let fx = if i.wb_we && i.wb_sel & 0xF != 0xF {
+            // bus_contract.md §1: every hub word is written whole.
+            coverage::hit("hub register port: a partial write is refused");
+            self.regs.wb_dat = 0;
+            WriteEffects {
+                illegal: true,
+                ..WriteEffects::default()
+            }
+        } else if i.wb_we {
             let before = self.regs;
             self.regs.wb_dat = 0;
             self.regs.write(&before, adr, i.wb_dat_w)
         } else {
             self.regs.wb_dat = self.read(adr);
             WriteEffects::default()
-        }
+        };
+        // A refused access ends with ERR instead of the ack.
+        self.regs.wb_ack = !fx.illegal;
+        self.regs.wb_err = fx.illegal;
+        fx
     }
 
     /// `CTRL.force_decouple` / `CTRL.recouple` acting at this edge; returns the

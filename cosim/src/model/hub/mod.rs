@@ -279,12 +279,13 @@ impl HubModel {
         let irq = int_before & self.regs.int_enable != 0;
 
         // Wishbone (§D.2): a transaction is taken when the ack register is low.
-        let take = i.wb_cyc && i.wb_stb && !self.regs.wb_ack;
+        let take = i.wb_cyc && i.wb_stb && !(self.regs.wb_ack || self.regs.wb_err);
         let mut fx = WriteEffects::default();
         if take {
             fx = self.wishbone(i);
         } else {
             self.regs.wb_ack = false;
+            self.regs.wb_err = false;
             self.regs.wb_dat = 0;
         }
         let mut ints = if fx.illegal { int::ILLEGAL } else { 0 };
@@ -484,6 +485,7 @@ impl HubModel {
     pub fn outputs(&self) -> HubOutputs {
         HubOutputs {
             wb_ack: self.regs.wb_ack,
+            wb_err: self.regs.wb_err,
             wb_dat_r: self.regs.wb_dat,
             irq: self.regs.irq,
             downlink: if self.ack.downlink { self.node_mask } else { 0 },

@@ -145,6 +145,8 @@ pub struct Regs {
     /// `irq` register: `|(INT_STATUS & INT_ENABLE)` one edge later.
     pub irq: bool,
     pub wb_ack: bool,
+    /// Wishbone `ERR` (bus_contract.md §1).
+    pub wb_err: bool,
     pub wb_dat: u32,
 }
 
@@ -188,6 +190,7 @@ impl Regs {
             int_enable: 0,
             irq: false,
             wb_ack: false,
+            wb_err: false,
             wb_dat: 0,
         }
     }

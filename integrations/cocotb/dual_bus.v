@@ -17,6 +17,7 @@ module dual_bus (
     input  wire [31:0] n0_datwr,
     output wire [31:0] n0_datrd,
     output wire        n0_ack,
+    output wire        n0_err,
     output wire        n0_irq,
     // node 1
     input  wire        n1_cyc,
@@ -26,6 +27,7 @@ module dual_bus (
     input  wire [31:0] n1_datwr,
     output wire [31:0] n1_datrd,
     output wire        n1_ack,
+    output wire        n1_err,
     output wire        n1_irq,
     // faults
     input  wire        cut_a,
@@ -42,13 +44,15 @@ module dual_bus (
     drcc n0 (
         .clk(clk), .rst(rst),
         .wb_cyc_i(n0_cyc), .wb_stb_i(n0_stb), .wb_we_i(n0_we), .wb_adr_i(n0_adr),
-        .wb_dat_i(n0_datwr), .wb_dat_o(n0_datrd), .wb_ack_o(n0_ack), .irq(n0_irq),
+        .wb_dat_i(n0_datwr), .wb_sel_i(4'b1111), .wb_dat_o(n0_datrd), .wb_ack_o(n0_ack),
+        .wb_err_o(n0_err), .irq(n0_irq),
         .chan_a_tx(n0_a_tx), .chan_a_rx(n0_a_rx), .chan_b_tx(n0_b_tx), .chan_b_rx(line_b)
     );
     drcc n1 (
         .clk(clk), .rst(rst),
         .wb_cyc_i(n1_cyc), .wb_stb_i(n1_stb), .wb_we_i(n1_we), .wb_adr_i(n1_adr),
-        .wb_dat_i(n1_datwr), .wb_dat_o(n1_datrd), .wb_ack_o(n1_ack), .irq(n1_irq),
+        .wb_dat_i(n1_datwr), .wb_sel_i(4'b1111), .wb_dat_o(n1_datrd), .wb_ack_o(n1_ack),
+        .wb_err_o(n1_err), .irq(n1_irq),
         .chan_a_tx(n1_a_tx), .chan_a_rx(n1_a_rx), .chan_b_tx(n1_b_tx), .chan_b_rx(line_b)
     );
 endmodule

@@ -37,6 +37,9 @@ def _regs():
 R = _regs()
 
 
+ACK, ERR = 1, 2  # cocotbext-wishbone's reply codes
+
+
 def idx(name):
     return R[f"{name}_INDEX"]
 
@@ -60,11 +63,14 @@ class Node:
                 "datwr": "datwr",
                 "datrd": "datrd",
                 "ack": "ack",
+                "err": "err",
             },
         )
 
     async def write(self, reg, value):
-        await self.wb.send_cycle([WBOp(adr=idx(reg), dat=value)])
+        """Writes a whole word; returns the reply: 1 ACK, 2 ERR (refused)."""
+        res = await self.wb.send_cycle([WBOp(adr=idx(reg), dat=value)])
+        return res[0].ack
 
     async def read_bits(self, reg):
         """The register's value as read, unknown bits and all."""
@@ -166,11 +172,12 @@ async def send_receive_and_hide_a_cut_line(dut):
 async def refused_accesses_change_nothing(dut):
     tx, _ = await start(dut)
     btr = await tx.read("BTR")
-    await tx.write("INT_STATUS", 0xFFFFFFFF)
-    await tx.write("ID", 0x12345678)  # read-only
+    assert await tx.write("INT_STATUS", 0xFFFFFFFF) == ACK
+    # read-only: refused with the bus's error response (bus_contract.md 1)
+    assert await tx.write("ID", 0x12345678) == ERR
     assert await tx.read("ID") == R["ID_RESET"]
     assert await tx.read("INT_STATUS") & R["INT_STATUS_ILLEGAL_MASK"], "illegal set"
     await tx.write("INT_STATUS", R["INT_STATUS_ILLEGAL_MASK"])
-    await tx.write("BTR", btr ^ 0x3F)  # outside reset mode
+    assert await tx.write("BTR", btr ^ 0x3F) == ERR  # outside reset mode
     assert await tx.read("BTR") == btr, "BTR unchanged outside reset mode"
     assert await tx.read("INT_STATUS") & R["INT_STATUS_ILLEGAL_MASK"], "illegal set"

@@ -66,16 +66,18 @@ class DRCC(LiteXModule):
             i_wb_we_i=self.bus.we,
             i_wb_adr_i=self.bus.adr[:6],
             i_wb_dat_i=self.bus.dat_w,
+            i_wb_sel_i=self.bus.sel,
             o_wb_dat_o=self.bus.dat_r,
             o_wb_ack_o=self.bus.ack,
+            o_wb_err_o=self.bus.err,
             o_irq=self.irq,
             o_chan_a_tx=self.chan_a_tx,
             i_chan_a_rx=self.chan_a_rx,
             o_chan_b_tx=self.chan_b_tx,
             i_chan_b_rx=self.chan_b_rx,
         )
-        # The core answers every access with ack; it has no error response.
-        self.comb += self.bus.err.eq(0)
+        # A refused access (INT_STATUS.illegal, a partial write to a whole-word
+        # register) ends with err instead of ack (bus_contract.md section 1).
 
         if pads is not None:
             self.comb += [

@@ -30,6 +30,7 @@
 use std::io::Read;
 use std::path::Path;
 
+use drcc_hdl::bus::Bus;
 use drcc_hdl::config::DrccConfig;
 
 /// Config files are a few lines; anything larger is refused unread.
@@ -45,6 +46,8 @@ const KEYS: &[&str] = &[
     "history",
     "dmr",
     "star",
+    "bus",
+    "data_width",
 ];
 
 /// The keys a hub config file may have.
@@ -53,8 +56,8 @@ const HUB_KEYS: &[&str] = &["top", "name", "nodes", "interlinks", "hub_id"];
 /// What a configuration generates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Shape {
-    /// A DRCC with these sizes.
-    Drcc(DrccConfig),
+    /// A DRCC with these sizes, on this host bus.
+    Drcc(DrccConfig, Bus),
     /// A hub with N node ports, M interlinks and this identification frame.
     Hub {
         nodes: usize,
@@ -79,7 +82,7 @@ impl Generated {
     pub fn verilog(&self) -> Result<String, String> {
         match (drcc_hdl::tops::top(&self.name), self.shape) {
             (Some(t), _) if self.named => Ok(t.verilog()),
-            (_, Shape::Drcc(c)) => drcc_hdl::tops::drcc_with_config(&self.name, &c),
+            (_, Shape::Drcc(c, bus)) => drcc_hdl::tops::drcc_with_config_on(&self.name, &c, bus),
             (
                 _,
                 Shape::Hub {
@@ -94,10 +97,11 @@ impl Generated {
     /// `NAME = value` pairs, for the summary line.
     pub fn params(&self) -> Vec<String> {
         match self.shape {
-            Shape::Drcc(c) => c
+            Shape::Drcc(c, bus) => c
                 .params()
                 .iter()
                 .map(|(k, v)| format!("{k} = {v}"))
+                .chain((bus != Bus::Wishbone).then(|| format!("BUS = {}", bus.name())))
                 .collect(),
             Shape::Hub {
                 nodes,
@@ -122,7 +126,7 @@ pub fn resolve(spec: &str) -> Result<Generated, String> {
         };
         return Ok(Generated {
             name: name.to_string(),
-            shape: Shape::Drcc(config),
+            shape: Shape::Drcc(config, Bus::Wishbone),
             named: true,
         });
     }
@@ -236,9 +240,21 @@ pub fn parse(text: &str) -> Result<Generated, String> {
         star: switch("star", d.star)?,
     };
     config.check()?;
+    let bus = match table.get("bus") {
+        None => "wishbone".to_string(),
+        Some(toml::Value::String(b)) => b.clone(),
+        Some(v) => {
+            return Err(format!(
+                "bus must be a string, one of {}, not {}",
+                Bus::NAMES.join(", "),
+                shorten(&v.to_string())
+            ))
+        }
+    };
+    let bus = Bus::parse(&shorten(&bus), size("data_width", 32)?)?;
     Ok(Generated {
         name,
-        shape: Shape::Drcc(config),
+        shape: Shape::Drcc(config, bus),
         named: false,
     })
 }
@@ -286,13 +302,18 @@ mod tests {
         assert_eq!(g.name, "drcc_tiny");
         assert_eq!(
             g.shape,
-            Shape::Drcc(DrccConfig {
-                mailboxes: 0,
-                history: 8,
-                ..DrccConfig::DEFAULT
-            })
+            Shape::Drcc(
+                DrccConfig {
+                    mailboxes: 0,
+                    history: 8,
+                    ..DrccConfig::DEFAULT
+                },
+                Bus::Wishbone
+            )
         );
         assert!(!g.named);
+        let g = parse("name = \"drcc_apb_s\"\nbus = \"apb\"\ndata_width = 32\n").unwrap();
+        assert_eq!(g.shape, Shape::Drcc(DrccConfig::DEFAULT, Bus::Apb));
     }
 
     #[test]
@@ -317,6 +338,15 @@ mod tests {
             ("top = \"hub\"\nnodes = 9", "nodes 2..8"),
             ("top = \"hub\"\nname = \"hub_b\"", "is an emitted top"),
             ("history = ", "line 1"),
+            ("bus = \"avalon\"", "choose one of wishbone, apb, axi4-lite"),
+            (
+                "bus = 3",
+                "bus must be a string, one of wishbone, apb, axi4-lite",
+            ),
+            (
+                "bus = \"apb\"\ndata_width = 64",
+                "data_width 64 is not offered",
+            ),
         ] {
             let e = parse(text).unwrap_err();
             assert!(e.contains(says), "{text:?}: {e}");
@@ -328,7 +358,7 @@ mod tests {
         assert_eq!(resolve("small").unwrap().name, "drcc_small");
         assert_eq!(
             resolve("small").unwrap().shape,
-            Shape::Drcc(DrccConfig::SMALL)
+            Shape::Drcc(DrccConfig::SMALL, Bus::Wishbone)
         );
         assert_eq!(resolve("default").unwrap().name, "drcc");
         assert!(resolve("tiny").unwrap_err().contains("default, m0, small"));

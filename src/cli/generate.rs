@@ -55,7 +55,7 @@ pub fn run_config(spec: &str, out: Option<PathBuf>, check: bool) -> CliResult {
     }
     write_dir(&dir, &files)?;
     let regs = match g.shape {
-        gen_config::Shape::Drcc(_) => "docs/registers.md, C header rtl-out/drcc_regs.h",
+        gen_config::Shape::Drcc(..) => "docs/registers.md, C header rtl-out/drcc_regs.h",
         gen_config::Shape::Hub { .. } => "docs/hub_registers.md, C header rtl-out/hub_regs.h",
     };
     println!(

@@ -111,10 +111,8 @@ impl<const W: usize> Logic for WbSlave<W> {
         // written out rather than from `taken`, so that Verilator can order `wr`
         // apart from the read data the register block returns on it (no
         // circular logic, UNOPTFLAT)
-        self.wr.next = self.wb_cyc_i.val()
-            & self.wb_stb_i.val()
-            & !self.ack_q.q.val()
-            & self.wb_we_i.val();
+        self.wr.next =
+            self.wb_cyc_i.val() & self.wb_stb_i.val() & !self.ack_q.q.val() & self.wb_we_i.val();
         self.ack_q.d.next = self.taken.val();
         self.dat_q.d.next = self.zero32.val();
         if self.taken.val() & !self.wb_we_i.val() {

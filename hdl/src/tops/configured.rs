@@ -4,6 +4,8 @@
 //! port table, port comments) under the user's module name.
 
 use super::{port_docs, ports_of, raw_verilog_of, top, verilog, Port, Top};
+use crate::bus::drcc_tops::{DrccApb, DrccAxi};
+use crate::bus::Bus;
 use crate::config::DrccConfig;
 use crate::drcc::DrccCore;
 use crate::hub::hub::Hub;
@@ -14,6 +16,23 @@ fn raw_verilog_drcc<const M: usize>(cfg: &DrccConfig) -> String {
     let mut uut = DrccCore::<M>::with_config(cfg);
     uut.connect_all();
     generate_verilog(&uut)
+}
+
+/// The raw Verilog of the DRCC with the sizes of `cfg` on `bus`.
+fn raw_verilog_drcc_on<const M: usize>(cfg: &DrccConfig, bus: Bus) -> String {
+    match bus {
+        Bus::Wishbone => raw_verilog_drcc::<M>(cfg),
+        Bus::Apb => {
+            let mut uut = DrccApb::<M>::with_config(cfg);
+            uut.connect_all();
+            generate_verilog(&uut)
+        }
+        Bus::AxiLite => {
+            let mut uut = DrccAxi::<M>::with_config(cfg);
+            uut.connect_all();
+            generate_verilog(&uut)
+        }
+    }
 }
 
 pub(super) fn raw_verilog_small() -> String {
@@ -45,16 +64,31 @@ fn configured(
 /// (`drcc generate --config`): the `drcc` top's header, ports and notes, with
 /// `cfg`'s parameters. Refuses a configuration [`DrccConfig::check`] refuses.
 pub fn drcc_with_config(name: &str, cfg: &DrccConfig) -> Result<String, String> {
+    drcc_with_config_on(name, cfg, Bus::Wishbone)
+}
+
+/// [`drcc_with_config`] on the host bus `bus` (bus_contract.md): the header,
+/// ports and notes of the `drcc`, `drcc_apb` or `drcc_axi` top.
+pub fn drcc_with_config_on(name: &str, cfg: &DrccConfig, bus: Bus) -> Result<String, String> {
     cfg.check()?;
     let raw = match cfg.mailboxes {
-        0 => raw_verilog_drcc::<0>(cfg),
-        _ => raw_verilog_drcc::<16>(cfg),
+        0 => raw_verilog_drcc_on::<0>(cfg, bus),
+        _ => raw_verilog_drcc_on::<16>(cfg, bus),
     };
+    let base = match bus {
+        Bus::Wishbone => "drcc",
+        Bus::Apb => "drcc_apb",
+        Bus::AxiLite => "drcc_axi",
+    };
+    let mut params = cfg.params();
+    if bus != Bus::Wishbone {
+        params.push(("BUS", bus.name().to_string()));
+    }
     let t = configured(
-        top("drcc").expect("the drcc top"),
+        top(base).expect("the drcc tops"),
         name,
         "the DRCC generated with a configuration of its own (drcc generate --config)",
-        cfg.params(),
+        params,
     );
     Ok(verilog::finish(&t, &raw, &t.ports()))
 }

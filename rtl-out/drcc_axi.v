@@ -2271,6 +2271,8 @@ module drcc_axi__core__aux(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,
             left_q__d = rb_eff;
             done_q__d = 1'b0;
             causes_q__d = zero5;
+            failures_q__d = failures_q__q;
+            recoveries_q__d = recoveries_q__q;
             fail_evt = 1'b0;
             recover_evt = 1'b0;
         end

@@ -1805,6 +1805,8 @@ module drcc_small__aux(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_u
             left_q__d = rb_eff;
             done_q__d = 1'b0;
             causes_q__d = zero5;
+            failures_q__d = failures_q__q;
+            recoveries_q__d = recoveries_q__q;
             fail_evt = 1'b0;
             recover_evt = 1'b0;
         end

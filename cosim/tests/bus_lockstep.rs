@@ -116,21 +116,23 @@ fn port_out(o: &DrccOutputs) -> PortOut {
 }
 
 fn run_apb(seed: u64, clocks: u64) -> (u64, u64) {
-    let mut rng = Rng(seed | 1);
+    let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
     let mut rtl = DrccApb::new().expect("model available");
     let mut model = DrccModel::new();
     let bridge = ApbBridge;
     let mut bus = ApbIn::default();
     let mut out = ApbOut::default();
+    // the outputs the master saw in the clock of `bus` (before its edge)
+    let mut seen = ApbOut::default();
     let mut tx = (true, true);
     let mut setup = SETUP.iter();
     let (mut transfers, mut errors) = (0, 0);
     for clock in 0..clocks {
         let rst = clock < 4 || rng.below(40_000) == 0;
         // the master: an access phase ends at the edge where pready is 1
-        if bus.psel && bus.penable && out.pready {
+        if bus.psel && bus.penable && seen.pready {
             transfers += 1;
-            errors += out.pslverr as u64;
+            errors += seen.pslverr as u64;
             bus = ApbIn::default();
         } else if bus.psel {
             bus.penable = true;
@@ -150,6 +152,7 @@ fn run_apb(seed: u64, clocks: u64) -> (u64, u64) {
         }
         let pin = bridge.port_in(&bus);
         let o = model.step(&core_in(rst, &pin, tx));
+        seen = out;
         out = bridge.outputs(&port_out(&o));
         let r = rtl.step(&DrccApbIn {
             rst: rst as u8,
@@ -197,12 +200,14 @@ struct AxiMaster {
 }
 
 fn run_axi(seed: u64, clocks: u64) -> (u64, u64) {
-    let mut rng = Rng(seed | 1);
+    let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
     let mut rtl = DrccAxi::new().expect("model available");
     let mut model = DrccModel::new();
     let mut bridge = AxiLiteBridge::default();
     let mut m = AxiMaster::default();
     let mut out = AxiOut::default();
+    // the outputs the master saw in the clock of `bus` (before its edge)
+    let mut seen = AxiOut::default();
     let mut bus = AxiIn::default();
     let mut port_before = PortOut::default();
     let mut tx = (true, true);
@@ -211,19 +216,19 @@ fn run_axi(seed: u64, clocks: u64) -> (u64, u64) {
     for clock in 0..clocks {
         let rst = clock < 4 || rng.below(40_000) == 0;
         // handshakes at the last edge: valid and ready before it
-        if bus.awvalid && out.awready {
+        if bus.awvalid && seen.awready {
             m.aw = None;
         }
-        if bus.wvalid && out.wready {
+        if bus.wvalid && seen.wready {
             m.w = None;
         }
-        if bus.arvalid && out.arready {
+        if bus.arvalid && seen.arready {
             m.ar = None;
         }
-        if (bus.bready && out.bvalid) || (bus.rready && out.rvalid) {
+        if (bus.bready && seen.bvalid) || (bus.rready && seen.rvalid) {
             responses += 1;
         }
-        if bus.bready && out.bvalid && out.bresp == 2 {
+        if bus.bready && seen.bvalid && seen.bresp == 2 {
             errors += 1;
         }
         if rst {
@@ -261,6 +266,7 @@ fn run_axi(seed: u64, clocks: u64) -> (u64, u64) {
             bridge.edge(&bus, &port_before);
         }
         port_before = port_out(&o);
+        seen = out;
         out = bridge.outputs();
         let r = rtl.step(&DrccAxiIn {
             rst: rst as u8,

@@ -269,6 +269,10 @@ impl Logic for AuxFsm {
             self.left_q.d.next = self.rb_eff.val();
             self.done_q.d.next = false;
             self.causes_q.d.next = self.zero5.val();
+            // held, the FSM judges nothing: no failure or recovery is counted
+            // (contract §5; found by reading AUX_* in the bus tops' lock step)
+            self.failures_q.d.next = self.failures_q.q.val();
+            self.recoveries_q.d.next = self.recoveries_q.q.val();
             self.fail_evt.next = false;
             self.recover_evt.next = false;
         }

@@ -281,7 +281,7 @@ impl HubStim {
                     }
                     // a write in 13 with partial byte lanes, from the data bits so
                     // that the random stream stays the one the seeds were chosen on
-                    let sel = if write && data % 13 == 0 {
+                    let sel = if write && data.is_multiple_of(13) {
                         ((data >> 4) & 0xF) as u8
                     } else {
                         0xF

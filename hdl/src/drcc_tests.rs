@@ -47,15 +47,20 @@ impl Bench {
         u.wb_we_i.next = we;
         u.wb_adr_i.next = (adr as u64).into();
         u.wb_dat_i.next = (dat as u64).into();
+        u.wb_sel_i.next = 0xF.into();
         self.step();
-        assert!(self.uut.wb_ack_o.val(), "no ack");
+        // a refused write ends with ERR instead (bus_contract.md §1)
+        assert!(
+            self.uut.wb_ack_o.val() != self.uut.wb_err_o.val(),
+            "no answer"
+        );
         let value = self.uut.wb_dat_o.val().to_u64() as u32;
         let u = self.uut.as_mut();
         u.wb_cyc_i.next = false;
         u.wb_stb_i.next = false;
         u.wb_we_i.next = false;
         self.step();
-        assert!(!self.uut.wb_ack_o.val());
+        assert!(!self.uut.wb_ack_o.val() && !self.uut.wb_err_o.val());
         value
     }
 

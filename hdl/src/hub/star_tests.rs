@@ -57,8 +57,10 @@ impl<const H: usize> Side<H> {
         u.wb_we_i.next = we;
         u.wb_adr_i.next = (adr as u64).into();
         u.wb_dat_i.next = (dat as u64).into();
+        u.wb_sel_i.next = 0xF.into();
         self.clock(sublink_in);
-        assert!(self.uut.wb_ack_o.val());
+        // a refused write ends with ERR instead (bus_contract.md §1)
+        assert!(self.uut.wb_ack_o.val() != self.uut.wb_err_o.val());
         let r = self.uut.wb_dat_o.val().to_u64();
         self.uut.wb_cyc_i.next = false;
         self.uut.wb_stb_i.next = false;

@@ -17,7 +17,7 @@
 // input      1  s_apb_penable  Enable: the access phase.
 // input      1  s_apb_pwrite   Direction: 1 = write.
 // input      8  s_apb_paddr    Byte address of the register; `[1:0]` are ignored.
-// input     32  s_apb_pwdata   Write data.
+// input     32  s_apb_pwdata   Write data, a word or the lanes its strobes select.
 // input      4  s_apb_pstrb    Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected
 //                              bytes, a partial write to another register is refused. APB3: tie to
 //                              `4'b1111`.
@@ -56,7 +56,7 @@ module drcc_apb(clk,rst,s_apb_psel,s_apb_penable,s_apb_pwrite,s_apb_paddr,s_apb_
     input wire  s_apb_pwrite;
     // Byte address of the register; `[1:0]` are ignored.
     input wire  [7:0] s_apb_paddr;
-    // Write data.
+    // Write data, a word or the lanes its strobes select.
     input wire  [31:0] s_apb_pwdata;
     // Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes, a partial write to
     // another register is refused. APB3: tie to `4'b1111`.

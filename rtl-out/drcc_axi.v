@@ -15,7 +15,7 @@
 // input      8  s_axi_awaddr   Write byte address; `[1:0]` are ignored.
 // input      1  s_axi_awvalid  Write address valid.
 // output     1  s_axi_awready  Write address ready: no write address is held.
-// input     32  s_axi_wdata    Write data.
+// input     32  s_axi_wdata    Write data, a word or the lanes its strobes select.
 // input      4  s_axi_wstrb    Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected
 //                              bytes, a partial write to another register is refused (`SLVERR`).
 // input      1  s_axi_wvalid   Write data valid.
@@ -60,7 +60,7 @@ module drcc_axi(clk,rst,s_axi_awaddr,s_axi_awvalid,s_axi_awready,s_axi_wdata,s_a
     input wire  s_axi_awvalid;
     // Write address ready: no write address is held.
     output reg  s_axi_awready;
-    // Write data.
+    // Write data, a word or the lanes its strobes select.
     input wire  [31:0] s_axi_wdata;
     // Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes, a partial write to
     // another register is refused (`SLVERR`).

@@ -28,7 +28,7 @@
     X(uint8_t,  s_apb_penable,  1)  /* Enable: the access phase. */ \
     X(uint8_t,  s_apb_pwrite,   1)  /* Direction: 1 = write. */ \
     X(uint8_t,  s_apb_paddr,    8)  /* Byte address of the register; `[1:0]` are ignored. */ \
-    X(uint32_t, s_apb_pwdata,  32)  /* Write data. */ \
+    X(uint32_t, s_apb_pwdata,  32)  /* Write data, a word or the lanes its strobes select. */ \
     X(uint8_t,  s_apb_pstrb,    4)  /* Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes, a partial write to another register is refused. APB3: tie to `4'b1111`. */ \
     X(uint8_t,  chan_a_rx,      1)  /* Channel A CAN receive pin, 1 = recessive; synchronized by two flip-flops. */ \
     X(uint8_t,  chan_b_rx,      1)  /* Channel B CAN receive pin, 1 = recessive; synchronized by two flip-flops. */

@@ -26,7 +26,7 @@
     X(uint8_t,  rst,            1)  /* Synchronous reset of everything, active high (`ARESETn` inverted); hold it for at least 4 clock edges (README "Integrate it"). */ \
     X(uint8_t,  s_axi_awaddr,   8)  /* Write byte address; `[1:0]` are ignored. */ \
     X(uint8_t,  s_axi_awvalid,  1)  /* Write address valid. */ \
-    X(uint32_t, s_axi_wdata,   32)  /* Write data. */ \
+    X(uint32_t, s_axi_wdata,   32)  /* Write data, a word or the lanes its strobes select. */ \
     X(uint8_t,  s_axi_wstrb,    4)  /* Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes, a partial write to another register is refused (`SLVERR`). */ \
     X(uint8_t,  s_axi_wvalid,   1)  /* Write data valid. */ \
     X(uint8_t,  s_axi_bready,   1)  /* Write response ready. */ \

@@ -28,7 +28,7 @@ pub struct DrccApb<const M: usize> {
     pub s_apb_pwrite: Signal<In, Bit>,
     /// Byte address of the register; `[1:0]` are ignored.
     pub s_apb_paddr: Signal<In, Bits<8>>,
-    /// Write data.
+    /// Write data, a word or the lanes its strobes select.
     pub s_apb_pwdata: Signal<In, Bits<32>>,
     /// Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes,
     /// a partial write to another register is refused. APB3: tie to `4'b1111`.
@@ -114,7 +114,7 @@ pub struct DrccAxi<const M: usize> {
     pub s_axi_awvalid: Signal<In, Bit>,
     /// Write address ready: no write address is held.
     pub s_axi_awready: Signal<Out, Bit>,
-    /// Write data.
+    /// Write data, a word or the lanes its strobes select.
     pub s_axi_wdata: Signal<In, Bits<32>>,
     /// Write strobes: `TX_ID`, `TX_CTRL`, `TX_DATA0/1` take the selected bytes,
     /// a partial write to another register is refused (`SLVERR`).

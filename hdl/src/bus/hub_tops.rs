@@ -27,7 +27,7 @@ pub struct HubApb<const N: usize, const M: usize, const P: usize, const H: usize
     pub s_apb_pwrite: Signal<In, Bit>,
     /// Byte address of the register; `[1:0]` are ignored.
     pub s_apb_paddr: Signal<In, Bits<8>>,
-    /// Write data.
+    /// Write data, a word or the lanes its strobes select.
     pub s_apb_pwdata: Signal<In, Bits<32>>,
     /// Write strobes: every hub register is written whole: a
     /// partial write is refused. APB3: tie to `4'b1111`.
@@ -106,7 +106,7 @@ pub struct HubAxi<const N: usize, const M: usize, const P: usize, const H: usize
     pub s_axi_awvalid: Signal<In, Bit>,
     /// Write address ready: no write address is held.
     pub s_axi_awready: Signal<Out, Bit>,
-    /// Write data.
+    /// Write data, a word or the lanes its strobes select.
     pub s_axi_wdata: Signal<In, Bits<32>>,
     /// Write strobes: every hub register is written whole: a
     /// partial write is refused (`SLVERR`).

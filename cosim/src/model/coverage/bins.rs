@@ -336,6 +336,23 @@ pub fn bins() -> Vec<Bin> {
         ],
     ));
     v.extend(named(
+        "register port byte lanes",
+        &[
+            (
+                "drcc register port: a partial write to a staged TX word",
+                "bus contract §1 (TX_ID, TX_CTRL, TX_DATA0/1 honour byte lanes)",
+            ),
+            (
+                "drcc register port: a partial write to a whole word is refused",
+                "bus contract §1 (ERR, INT_STATUS.illegal)",
+            ),
+            (
+                "hub register port: a partial write is refused",
+                "bus contract §1 (every hub word is written whole)",
+            ),
+        ],
+    ));
+    v.extend(named(
         "DMR",
         &[
             (

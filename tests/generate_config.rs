@@ -4,7 +4,7 @@
 //! localparams only (hdl/tests/configurations.rs), so one DRCC configuration with
 //! every size at its smallest stands for them; the hub's shape changes port and
 //! vector widths, so its extremes are linted: the smallest (N 2, M 2, hub A) and
-//! the largest (N 8, M 4, hub B). Also: the files land only in `--out`, and
+//! the largest (N 8, M 4, hub B), and one hub on each of APB and AXI4-Lite. Also: the files land only in `--out`, and
 //! `--check` passes on them.
 //!
 //! Without the tools the lint is skipped, except under CI, where it fails.
@@ -17,11 +17,6 @@ fn drcc(args: &[&str]) -> Output {
         .args(args)
         .output()
         .expect("cannot run the drcc binary")
-}
-
-fn have(tool: &str) -> bool {
-    Command::new(tool).arg("-V").output().is_ok()
-        || Command::new(tool).arg("--version").output().is_ok()
 }
 
 /// The three checks of hdl/lint/lint.sh on `dir/top.v`.
@@ -89,6 +84,15 @@ fn configurations_of_your_own_are_lint_clean() {
             "hub_b_8x4",
             "top = \"hub\"\nname = \"hub_b_8x4\"\nnodes = 8\ninterlinks = 4\nhub_id = 1\n",
         ),
+        (
+            "hub_apb_3x2",
+            "top = \"hub\"\nname = \"hub_apb_3x2\"\nnodes = 3\nbus = \"apb\"\n",
+        ),
+        (
+            "hub_b_axi_2x3",
+            "top = \"hub\"\nname = \"hub_b_axi_2x3\"\nnodes = 2\ninterlinks = 3\nhub_id = 1\n\
+             bus = \"axi4-lite\"\ndata_width = 32\n",
+        ),
     ];
     let out_dir = dir.join("out");
     let out_s = out_dir.to_str().unwrap().to_string();
@@ -110,14 +114,32 @@ fn configurations_of_your_own_are_lint_clean() {
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     written.sort();
-    assert_eq!(written, ["drcc_tiny.v", "hub_2x2.v", "hub_b_8x4.v"]);
-    let tools = ["verilator", "iverilog", "yosys"];
-    if let Some(missing) = tools.iter().find(|t| !have(t)) {
-        assert!(
-            !drcc_testbench::engines::tools_required(),
-            "{missing} is required in CI: install it with `apt-get install {missing}`"
-        );
-        eprintln!("skipped the lint: {missing} not found");
+    assert_eq!(
+        written,
+        [
+            "drcc_tiny.v",
+            "hub_2x2.v",
+            "hub_apb_3x2.v",
+            "hub_b_8x4.v",
+            "hub_b_axi_2x3.v"
+        ]
+    );
+    // the bus is the one asked for, and named in the header
+    let text = |top: &str| std::fs::read_to_string(out_dir.join(format!("{top}.v"))).unwrap();
+    let apb = text("hub_apb_3x2");
+    assert!(apb.contains("BUS = apb") && apb.contains("input wire  s_apb_psel;"));
+    assert!(!apb.contains("wb_cyc_i"), "no Wishbone port on the APB hub");
+    let axi = text("hub_b_axi_2x3");
+    assert!(axi.contains("BUS = axi4-lite") && axi.contains("output reg  s_axi_bvalid;"));
+    assert!(
+        axi.contains("input wire  [2:0] sublink_in;"),
+        "3 interlinks"
+    );
+    if !drcc_tools::need_all(&[
+        drcc_tools::VERILATOR,
+        drcc_tools::IVERILOG,
+        drcc_tools::YOSYS,
+    ]) {
         return;
     }
     for (top, _) in configs {

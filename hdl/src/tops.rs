@@ -30,7 +30,7 @@ pub mod shim_table;
 pub mod verilog;
 
 use configured::raw_verilog_small;
-pub use configured::{drcc_with_config, drcc_with_config_on, hub_with_shape};
+pub use configured::{drcc_with_config, drcc_with_config_on, hub_with_shape, hub_with_shape_on};
 
 use crate::bus::drcc_tops::{DrccApb, DrccAxi};
 use crate::channel::can_channel::CanChannel;

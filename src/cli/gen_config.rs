@@ -51,18 +51,28 @@ const KEYS: &[&str] = &[
 ];
 
 /// The keys a hub config file may have.
-const HUB_KEYS: &[&str] = &["top", "name", "nodes", "interlinks", "hub_id"];
+const HUB_KEYS: &[&str] = &[
+    "top",
+    "name",
+    "nodes",
+    "interlinks",
+    "hub_id",
+    "bus",
+    "data_width",
+];
 
 /// What a configuration generates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Shape {
     /// A DRCC with these sizes, on this host bus.
     Drcc(DrccConfig, Bus),
-    /// A hub with N node ports, M interlinks and this identification frame.
+    /// A hub with N node ports, M interlinks and this identification frame, on
+    /// this host bus.
     Hub {
         nodes: usize,
         interlinks: usize,
         hub_id: usize,
+        bus: Bus,
     },
 }
 
@@ -89,8 +99,9 @@ impl Generated {
                     nodes,
                     interlinks,
                     hub_id,
+                    bus,
                 },
-            ) => drcc_hdl::tops::hub_with_shape(&self.name, nodes, interlinks, hub_id),
+            ) => drcc_hdl::tops::hub_with_shape_on(&self.name, nodes, interlinks, hub_id, bus),
         }
     }
 
@@ -107,11 +118,15 @@ impl Generated {
                 nodes,
                 interlinks,
                 hub_id,
-            } => vec![
+                bus,
+            } => [
                 format!("HUB_ID = {hub_id}"),
                 format!("N = {nodes}"),
                 format!("M = {interlinks}"),
-            ],
+            ]
+            .into_iter()
+            .chain((bus != Bus::Wishbone).then(|| format!("BUS = {}", bus.name())))
+            .collect(),
         }
     }
 }
@@ -215,11 +230,24 @@ pub fn parse(text: &str) -> Result<Generated, String> {
             )),
         }
     };
+    let bus = match table.get("bus") {
+        None => "wishbone".to_string(),
+        Some(toml::Value::String(b)) => b.clone(),
+        Some(v) => {
+            return Err(format!(
+                "bus must be a string, one of {}, not {}",
+                Bus::NAMES.join(", "),
+                shorten(&v.to_string())
+            ))
+        }
+    };
+    let bus = Bus::parse(&shorten(&bus), size("data_width", 32)?)?;
     if hub {
         let shape = Shape::Hub {
             nodes: size("nodes", 4)?,
             interlinks: size("interlinks", 2)?,
             hub_id: size("hub_id", 0)?,
+            bus,
         };
         let g = Generated {
             name,
@@ -240,18 +268,6 @@ pub fn parse(text: &str) -> Result<Generated, String> {
         star: switch("star", d.star)?,
     };
     config.check()?;
-    let bus = match table.get("bus") {
-        None => "wishbone".to_string(),
-        Some(toml::Value::String(b)) => b.clone(),
-        Some(v) => {
-            return Err(format!(
-                "bus must be a string, one of {}, not {}",
-                Bus::NAMES.join(", "),
-                shorten(&v.to_string())
-            ))
-        }
-    };
-    let bus = Bus::parse(&shorten(&bus), size("data_width", 32)?)?;
     Ok(Generated {
         name,
         shape: Shape::Drcc(config, bus),
@@ -314,6 +330,17 @@ mod tests {
         assert!(!g.named);
         let g = parse("name = \"drcc_apb_s\"\nbus = \"apb\"\ndata_width = 32\n").unwrap();
         assert_eq!(g.shape, Shape::Drcc(DrccConfig::DEFAULT, Bus::Apb));
+        let g = parse("top = \"hub\"\nname = \"hub_axi\"\nbus = \"axi4-lite\"\n").unwrap();
+        assert_eq!(
+            g.shape,
+            Shape::Hub {
+                nodes: 4,
+                interlinks: 2,
+                hub_id: 0,
+                bus: Bus::AxiLite
+            }
+        );
+        assert!(g.params().contains(&"BUS = axi4-lite".to_string()));
     }
 
     #[test]
@@ -336,6 +363,14 @@ mod tests {
                 "unknown key \"history\" for a hub",
             ),
             ("top = \"hub\"\nnodes = 9", "nodes 2..8"),
+            (
+                "top = \"hub\"\nbus = \"avalon\"",
+                "choose one of wishbone, apb, axi4-lite",
+            ),
+            (
+                "top = \"hub\"\nbus = \"apb\"\ndata_width = 8",
+                "data_width 8 is not offered",
+            ),
             ("top = \"hub\"\nname = \"hub_b\"", "is an emitted top"),
             ("history = ", "line 1"),
             ("bus = \"avalon\"", "choose one of wishbone, apb, axi4-lite"),

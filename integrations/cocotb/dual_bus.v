@@ -5,6 +5,8 @@
 // between the nodes: each node's channel A then hears only itself (no
 // acknowledgement, no frames from the other node), a fault the redundancy must
 // hide. Copy it as the start of your own bench: node N's Wishbone is nN_*.
+// dual_bus_apb.v and dual_bus_axi.v are the same bench on the APB and
+// AXI4-Lite tops.
 `timescale 1ns/1ps
 module dual_bus (
     input  wire        clk,
@@ -15,6 +17,7 @@ module dual_bus (
     input  wire        n0_we,
     input  wire [5:0]  n0_adr,
     input  wire [31:0] n0_datwr,
+    input  wire [3:0]  n0_sel,
     output wire [31:0] n0_datrd,
     output wire        n0_ack,
     output wire        n0_err,
@@ -25,6 +28,7 @@ module dual_bus (
     input  wire        n1_we,
     input  wire [5:0]  n1_adr,
     input  wire [31:0] n1_datwr,
+    input  wire [3:0]  n1_sel,
     output wire [31:0] n1_datrd,
     output wire        n1_ack,
     output wire        n1_err,
@@ -44,14 +48,14 @@ module dual_bus (
     drcc n0 (
         .clk(clk), .rst(rst),
         .wb_cyc_i(n0_cyc), .wb_stb_i(n0_stb), .wb_we_i(n0_we), .wb_adr_i(n0_adr),
-        .wb_dat_i(n0_datwr), .wb_sel_i(4'b1111), .wb_dat_o(n0_datrd), .wb_ack_o(n0_ack),
+        .wb_dat_i(n0_datwr), .wb_sel_i(n0_sel), .wb_dat_o(n0_datrd), .wb_ack_o(n0_ack),
         .wb_err_o(n0_err), .irq(n0_irq),
         .chan_a_tx(n0_a_tx), .chan_a_rx(n0_a_rx), .chan_b_tx(n0_b_tx), .chan_b_rx(line_b)
     );
     drcc n1 (
         .clk(clk), .rst(rst),
         .wb_cyc_i(n1_cyc), .wb_stb_i(n1_stb), .wb_we_i(n1_we), .wb_adr_i(n1_adr),
-        .wb_dat_i(n1_datwr), .wb_sel_i(4'b1111), .wb_dat_o(n1_datrd), .wb_ack_o(n1_ack),
+        .wb_dat_i(n1_datwr), .wb_sel_i(n1_sel), .wb_dat_o(n1_datrd), .wb_ack_o(n1_ack),
         .wb_err_o(n1_err), .irq(n1_irq),
         .chan_a_tx(n1_a_tx), .chan_a_rx(n1_a_rx), .chan_b_tx(n1_b_tx), .chan_b_rx(line_b)
     );

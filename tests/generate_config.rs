@@ -4,7 +4,8 @@
 //! localparams only (hdl/tests/configurations.rs), so one DRCC configuration with
 //! every size at its smallest stands for them; the hub's shape changes port and
 //! vector widths, so its extremes are linted: the smallest (N 2, M 2, hub A) and
-//! the largest (N 8, M 4, hub B), and one hub on each of APB and AXI4-Lite. Also: the files land only in `--out`, and
+//! the largest (N 8, M 4, hub B), and one hub on each of APB and AXI4-Lite (named
+//! `*_apb` / `*_axi`, which the lint waivers for a bus top's unused probes match). Also: the files land only in `--out`, and
 //! `--check` passes on them.
 //!
 //! Without the tools the lint is skipped, except under CI, where it fails.
@@ -85,12 +86,12 @@ fn configurations_of_your_own_are_lint_clean() {
             "top = \"hub\"\nname = \"hub_b_8x4\"\nnodes = 8\ninterlinks = 4\nhub_id = 1\n",
         ),
         (
-            "hub_apb_3x2",
-            "top = \"hub\"\nname = \"hub_apb_3x2\"\nnodes = 3\nbus = \"apb\"\n",
+            "hub_3x2_apb",
+            "top = \"hub\"\nname = \"hub_3x2_apb\"\nnodes = 3\nbus = \"apb\"\n",
         ),
         (
-            "hub_b_axi_2x3",
-            "top = \"hub\"\nname = \"hub_b_axi_2x3\"\nnodes = 2\ninterlinks = 3\nhub_id = 1\n\
+            "hub_b_2x3_axi",
+            "top = \"hub\"\nname = \"hub_b_2x3_axi\"\nnodes = 2\ninterlinks = 3\nhub_id = 1\n\
              bus = \"axi4-lite\"\ndata_width = 32\n",
         ),
     ];
@@ -119,17 +120,24 @@ fn configurations_of_your_own_are_lint_clean() {
         [
             "drcc_tiny.v",
             "hub_2x2.v",
-            "hub_apb_3x2.v",
-            "hub_b_8x4.v",
-            "hub_b_axi_2x3.v"
+            "hub_3x2_apb.v",
+            "hub_b_2x3_axi.v",
+            "hub_b_8x4.v"
         ]
     );
     // the bus is the one asked for, and named in the header
     let text = |top: &str| std::fs::read_to_string(out_dir.join(format!("{top}.v"))).unwrap();
-    let apb = text("hub_apb_3x2");
+    let apb = text("hub_3x2_apb");
     assert!(apb.contains("BUS = apb") && apb.contains("input wire  s_apb_psel;"));
-    assert!(!apb.contains("wb_cyc_i"), "no Wishbone port on the APB hub");
-    let axi = text("hub_b_axi_2x3");
+    let header = apb
+        .lines()
+        .find(|l| l.starts_with("module hub_3x2_apb("))
+        .expect("the top module");
+    assert!(
+        header.contains("s_apb_pready") && !header.contains("wb_cyc_i"),
+        "APB ports and no Wishbone port on the APB hub's top: {header}"
+    );
+    let axi = text("hub_b_2x3_axi");
     assert!(axi.contains("BUS = axi4-lite") && axi.contains("output reg  s_axi_bvalid;"));
     assert!(
         axi.contains("input wire  [2:0] sublink_in;"),

@@ -27,7 +27,7 @@ fn frame(id: u32, data: &[u8]) -> Frame {
 /// 3 intermission) and the 26th when passive (+ 8 suspend).
 #[test]
 fn ack_errors_raise_tec_to_128_then_exception_1_holds_it() {
-    for brp in [0u8, 1] {
+    for brp in [0u16, 1] {
         let t = timing(brp);
         let mut bus = Bus::new(1, t);
         bus.integrate();

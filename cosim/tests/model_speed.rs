@@ -50,7 +50,7 @@ fn run(timing: BitTiming, clocks: u64) -> (f64, u64) {
 #[ignore]
 fn model_speed() {
     let clocks = 20_000_000;
-    for brp in [0u8, 3] {
+    for brp in [0u16, 3] {
         let timing = BitTiming {
             brp,
             tseg1: 5,

@@ -10,6 +10,10 @@
 
 use drcc_cosim::BitTiming;
 
+/// The largest prescaler value: BRP is 10 bits wide (timing contract §1), so
+/// 10 kbit/s is reachable at 100 MHz (BRP 499, 20 tq).
+pub const BRP_MAX: u32 = 1023;
+
 /// Lowest and highest sample point accepted, in per mille.
 pub const SAMPLE_POINT_RANGE: (u32, u32) = (750, 875);
 /// Preferred sample point, per mille.
@@ -33,7 +37,7 @@ fn split(tq: u32, brp: u32) -> Option<BitTiming> {
         }
         let dist = sp.abs_diff(SAMPLE_POINT_TARGET);
         let t = BitTiming {
-            brp: brp as u8,
+            brp: brp as u16,
             tseg1: tseg1 as u8,
             tseg2: tseg2 as u8,
             sjw: tseg2.min(4) as u8,
@@ -67,7 +71,7 @@ pub fn solve(clock_hz: u64, bitrate: u64) -> Result<BitTiming, String> {
             continue;
         }
         let brp = clocks / tq - 1;
-        if brp > 63 {
+        if brp > BRP_MAX as u64 {
             continue;
         }
         if let Some(t) = split(tq as u32, brp as u32) {
@@ -76,7 +80,7 @@ pub fn solve(clock_hz: u64, bitrate: u64) -> Result<BitTiming, String> {
     }
     Err(format!(
         "cannot reach {bitrate} bit/s from a {clock_hz} Hz clock: {clocks} clocks per bit \
-         cannot be split as (brp+1) x tq with brp 0..=63, 8..=25 tq per bit and a sample \
+         cannot be split as (brp+1) x tq with brp 0..={BRP_MAX}, 8..=25 tq per bit and a sample \
          point of 75..87.5 %{}; or give [timing] explicitly",
         suggestion(clock_hz, bitrate)
     ))
@@ -85,7 +89,7 @@ pub fn solve(clock_hz: u64, bitrate: u64) -> Result<BitTiming, String> {
 /// "; nearest reachable: X and Y bit/s" (or nothing).
 fn suggestion(clock_hz: u64, bitrate: u64) -> String {
     let mut reachable: Vec<u64> = Vec::new();
-    for brp in 0..=63u64 {
+    for brp in 0..=BRP_MAX as u64 {
         for tq in 8..=25u64 {
             let clocks = (brp + 1) * tq;
             if clock_hz.is_multiple_of(clocks) && split(tq as u32, brp as u32).is_some() {
@@ -120,6 +124,12 @@ mod tests {
             (24_000_000, 1_000_000, (1, 9, 2)),
             (24_000_000, 500_000, (2, 12, 3)),
             (24_000_000, 125_000, (11, 12, 3)),
+            // BRP past 6 bits: 10 kbit/s at 100 MHz is 10,000 clocks a bit; 25
+            // tq cannot place the sample point in 75..87.5 % with TSEG1 <= 16,
+            // 24..21 do not divide 10,000, so 20 tq of 500 clocks (BRP 499),
+            // sample point 16/20 = 80 %.
+            (100_000_000, 10_000, (499, 15, 4)),
+            (8_000_000, 10_000, (39, 15, 4)),
         ];
         for (clk, rate, (brp, t1, t2)) in cases {
             let t = solve(clk, rate).unwrap();
@@ -141,5 +151,8 @@ mod tests {
         assert!(e.contains("4 clocks per bit"), "{e}");
         assert!(e.contains("1000000"), "{e}");
         assert!(solve(8_000_000, 0).is_err());
+        // 100,000 clocks a bit need BRP 4999 at 20 tq: past BRP_MAX
+        let e = solve(100_000_000, 1_000).unwrap_err();
+        assert!(e.contains("brp 0..=1023"), "{e}");
     }
 }

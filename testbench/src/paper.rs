@@ -26,7 +26,7 @@ pub const CLOCK_HZ: u64 = 8_000_000;
 pub struct Rate {
     pub name: &'static str,
     pub bps: u64,
-    pub brp: u8,
+    pub brp: u16,
 }
 
 impl Rate {

@@ -91,7 +91,7 @@ fn run_seed(seed: u64, cycles: u64) {
     let Some(_) = verilated() else { return };
     let mut rng = SplitMix64::new(seed);
     // 1 Mbit/s at 8 MHz or 500 kbit/s (BRP 1), 8 tq.
-    let brp = rng.below(2) as u8;
+    let brp = rng.below(2) as u16;
     let timing = btr(brp, 5, 2, 1, false, 96);
     let cpb = 8 * (brp as u64 + 1);
     let nodes = 3;

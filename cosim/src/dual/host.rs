@@ -152,9 +152,11 @@ impl Default for HostConfig {
     }
 }
 
-/// `BTR` value for the given timing in time quanta (tseg1 1..=16, tseg2 1..=8, sjw 1..=4).
-pub fn btr(brp: u8, tseg1: u8, tseg2: u8, sjw: u8, triple: bool, ewl: u8) -> u32 {
-    put("BTR", "brp", brp as u32)
+/// `BTR` value for the given timing in time quanta (brp 0..=1023, tseg1 1..=16,
+/// tseg2 1..=8, sjw 1..=4): BRP[5:0] in `brp`, BRP[9:6] in `brp_ext`.
+pub fn btr(brp: u16, tseg1: u8, tseg2: u8, sjw: u8, triple: bool, ewl: u8) -> u32 {
+    put("BTR", "brp", brp as u32 & 0x3F)
+        | put("BTR", "brp_ext", (brp as u32 >> 6) & 0xF)
         | put("BTR", "tseg1", tseg1.saturating_sub(1) as u32)
         | put("BTR", "tseg2", tseg2.saturating_sub(1) as u32)
         | put("BTR", "sjw", sjw.saturating_sub(1) as u32)

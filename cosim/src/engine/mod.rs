@@ -32,8 +32,8 @@ pub const MIN_TSEG1_CLOCKS: u32 = 3;
 /// The RTL ports carry `value - 1` for tseg1/tseg2/sjw (see `drcc_hdl::channel::btl`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BitTiming {
-    /// Baud-rate prescaler: one time quantum lasts `brp + 1` clocks (0..=63).
-    pub brp: u8,
+    /// Baud-rate prescaler: one time quantum lasts `brp + 1` clocks (0..=1023).
+    pub brp: u16,
     /// TSEG1 = PROP_SEG + PHASE_SEG1 in tq (1..=16).
     pub tseg1: u8,
     /// TSEG2 = PHASE_SEG2 in tq (1..=8).
@@ -78,7 +78,12 @@ impl BitTiming {
                 Ok(())
             }
         };
-        check("brp", self.brp, 0, 63)?;
+        if self.brp > 1023 {
+            return Err(format!(
+                "bit timing field `brp` = {} is out of range: legal values are 0..=1023",
+                self.brp
+            ));
+        }
         check("tseg1", self.tseg1, 1, 16)?;
         check("tseg2", self.tseg2, 1, 8)?;
         check("sjw", self.sjw, 1, 4)?;

@@ -61,7 +61,7 @@ impl ChannelEngine for RustHdlEngine {
         u.clk.next = Clock::from(false);
         u.rst.next = i.rst;
         u.rx.next = i.rx;
-        u.cfg_brp.next = (i.timing.brp.min(63) as u64).into();
+        u.cfg_brp.next = (i.timing.brp.min(1023) as u64).into();
         u.cfg_tseg1.next = (i.timing.tseg1.clamp(1, 16) as u64 - 1).into();
         u.cfg_tseg2.next = (i.timing.tseg2.clamp(1, 8) as u64 - 1).into();
         u.cfg_sjw.next = (i.timing.sjw.clamp(1, 4) as u64 - 1).into();

@@ -139,7 +139,7 @@ fn encode(i: &ChannelInputs, p: &mut CanChannelIn) {
     let f = &i.tx_frame;
     *p = CanChannelIn {
         rst: i.rst as u8,
-        cfg_brp: t.brp.min(63),
+        cfg_brp: t.brp.min(1023) as _,
         cfg_tseg1: t.tseg1.clamp(1, 16) - 1,
         cfg_tseg2: t.tseg2.clamp(1, 8) - 1,
         cfg_sjw: t.sjw.clamp(1, 4) - 1,

@@ -13,8 +13,8 @@ use crate::engine::BitTiming;
 /// ports can carry and to ISO 11898-1 (contract §6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Timing {
-    /// Prescaler: a time quantum lasts `brp + 1` clocks (0..=63).
-    pub brp: u8,
+    /// Prescaler: a time quantum lasts `brp + 1` clocks (0..=1023).
+    pub brp: u16,
     /// `T1'`: TSEG1 lengthened to at least `7 - T2` tq and 3 clocks.
     pub t1: u8,
     /// `T2`: TSEG2 (1..=8).
@@ -33,13 +33,13 @@ impl Default for Timing {
 
 impl Timing {
     /// The configuration registers loaded at a reset edge (contract §6). Fields
-    /// first take the range of their port (`brp` 6 bits, `tseg1 - 1` 4 bits,
+    /// first take the range of their port (`brp` 10 bits, `tseg1 - 1` 4 bits,
     /// `tseg2 - 1` 3 bits, `sjw - 1` 2 bits; out-of-range struct values saturate),
     /// then the ISO 11898-1 clamps: `SJW' = min(SJW, T2)`,
     /// `T1' = max(T1, 7 - T2, M)` with `M` = 3 for BRP 0, 2 for BRP 1, else 1, so a
     /// bit has at least 8 tq and TSEG1 lasts at least 3 clocks.
     pub fn capture(t: &BitTiming) -> Self {
-        let brp = t.brp.min(63);
+        let brp = t.brp.min(1023);
         let t1 = t.tseg1.clamp(1, 16);
         let t2 = t.tseg2.clamp(1, 8);
         let sjw = t.sjw.clamp(1, 4).min(t2);
@@ -92,7 +92,7 @@ pub enum BtlEvent {
 pub struct Btl {
     rx_meta: bool,
     rx_s: bool,
-    brp_cnt: u8,
+    brp_cnt: u16,
     seg: Seg,
     q: u8,
     t1: u8,
@@ -136,7 +136,7 @@ impl Btl {
     /// One clock edge of the synchronizer and the prescaler. Returns `rx_s` as it
     /// was *before* the edge (the value the bit timing logic uses) and `tick`.
     #[inline]
-    pub fn clock(&mut self, rx: bool, brp: u8) -> (bool, bool) {
+    pub fn clock(&mut self, rx: bool, brp: u16) -> (bool, bool) {
         let rx_s = self.rx_s;
         self.rx_s = self.rx_meta;
         self.rx_meta = rx;

@@ -76,6 +76,6 @@ fn assert_bit_length(tx: &[bool], clocks: usize, what: &str) {
     }
 }
 
-fn with_brp(t: BitTiming, brp: u8) -> BitTiming {
+fn with_brp(t: BitTiming, brp: u16) -> BitTiming {
     BitTiming { brp, ..t }
 }

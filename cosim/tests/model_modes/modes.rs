@@ -166,7 +166,7 @@ fn listen_only_never_acks() {
 /// stays 0, no error; a listen-only node on the same bus receives the frame.
 #[test]
 fn self_test_lone_transmitter_succeeds() {
-    for brp in [0u8, 2] {
+    for brp in [0u16, 2] {
         let t = timing(brp);
         let mut bus = Bus::new(2, t);
         bus.configs[0] = cfg(Mode::SelfTest);
@@ -211,7 +211,7 @@ fn self_test_lone_transmitter_succeeds() {
 /// loop-back node.
 #[test]
 fn loopback_receives_own_frame_with_pin_recessive() {
-    for brp in [0u8, 1] {
+    for brp in [0u16, 1] {
         let t = timing(brp);
         let bpc = t.clocks_per_bit() as u64;
         let mut bus = Bus::new(2, t);

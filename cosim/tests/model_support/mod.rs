@@ -37,7 +37,7 @@ pub mod code {
 }
 
 /// The timing of the brief: 8 tq, sample point after 6 tq, SJW 1.
-pub fn timing(brp: u8) -> BitTiming {
+pub fn timing(brp: u16) -> BitTiming {
     BitTiming {
         brp,
         tseg1: 5,

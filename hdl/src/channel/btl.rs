@@ -20,6 +20,7 @@
 //! `seg`/`quantum`/`tseg1_len`/`tseg2_len`. A resync in TSEG1 never samples in the
 //! same tq (the jump is >= 1 tq), which is why `sample` needs only `last1`.
 
+use crate::channel::BRP_BITS;
 use rust_hdl::prelude::*;
 
 /// Segment of the nominal bit time.
@@ -39,7 +40,7 @@ pub struct BitTimingLogic {
     // configuration (minus-one encodings for the segment lengths)
     /// The BRP the prescaler counts from the next clock on (the configuration
     /// input while `rst` captures it).
-    pub cfg_brp_next: Signal<In, Bits<6>>,
+    pub cfg_brp_next: Signal<In, Bits<BRP_BITS>>,
     pub cfg_tseg1_len: Signal<In, Bits<5>>,
     pub cfg_tseg2_len: Signal<In, Bits<4>>,
     pub cfg_sjw_len: Signal<In, Bits<4>>,
@@ -58,7 +59,7 @@ pub struct BitTimingLogic {
     pub sample_point: Signal<Out, Bit>,
     pub last_sample: Signal<Out, Bit>,
     // state
-    brp_cnt: DFF<Bits<6>>,
+    brp_cnt: DFF<Bits<BRP_BITS>>,
     seg: DFF<Segment>,
     quantum: DFF<Bits<5>>,
     tseg1_len: DFF<Bits<5>>,
@@ -89,7 +90,7 @@ pub struct BitTimingLogic {
     tseg1_eff: Signal<Local, Bits<5>>,
     tseg2_eff: Signal<Local, Bits<4>>,
     sample_value: Signal<Local, Bit>,
-    brp_cnt_n: Signal<Local, Bits<6>>,
+    brp_cnt_n: Signal<Local, Bits<BRP_BITS>>,
     quantum_next2: Signal<Local, Bits<5>>,
     q2_next: Signal<Local, Bits<4>>,
     q2_next2: Signal<Local, Bits<4>>,
@@ -110,9 +111,9 @@ pub struct BitTimingLogic {
     last1_enter: Signal<Local, Bit>,
     one4: Constant<Bits<4>>,
     one5: Constant<Bits<5>>,
-    one6: Constant<Bits<6>>,
+    one_brp: Constant<Bits<BRP_BITS>>,
     zero5: Constant<Bits<5>>,
-    zero6: Constant<Bits<6>>,
+    zero_brp: Constant<Bits<BRP_BITS>>,
 }
 
 impl Default for BitTimingLogic {
@@ -184,9 +185,9 @@ impl Default for BitTimingLogic {
             last1_enter: Default::default(),
             one4: Constant::new(1.into()),
             one5: Constant::new(1.into()),
-            one6: Constant::new(1.into()),
+            one_brp: Constant::new(1.into()),
             zero5: Constant::new(0.into()),
-            zero6: Constant::new(0.into()),
+            zero_brp: Constant::new(0.into()),
         }
     }
 }
@@ -223,9 +224,9 @@ impl Logic for BitTimingLogic {
         // (brp_cnt >= BRP), registered one clock ahead from the next count.
         self.tick.next = self.tick_q.q.val();
         if self.rst.val() || self.tick.val() {
-            self.brp_cnt_n.next = self.zero6.val();
+            self.brp_cnt_n.next = self.zero_brp.val();
         } else {
-            self.brp_cnt_n.next = self.brp_cnt.q.val() + self.one6.val();
+            self.brp_cnt_n.next = self.brp_cnt.q.val() + self.one_brp.val();
         }
         self.brp_cnt.d.next = self.brp_cnt_n.val();
         self.tick_q.d.next = self.brp_cnt_n.val() >= self.cfg_brp_next.val();

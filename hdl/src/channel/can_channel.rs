@@ -8,6 +8,7 @@ use super::bsp::protocol::ProtocolController;
 use super::btl::BitTimingLogic;
 use super::bus_sampling::synchronizer::RxSynchronizer;
 use super::config::ChannelConfig;
+use super::BRP_BITS;
 use rust_hdl::prelude::*;
 
 /// One CAN channel: BTL + BSP.
@@ -22,9 +23,9 @@ pub struct CanChannel {
     pub rst: Signal<In, Bit>,
     // bit-timing configuration (ISO 11898-1 11.3): captured at every edge where
     // `rst = 1`, held while `rst = 0` (contract §6)
-    /// Baud-rate prescaler BRP, 0..63, taken as is (not a minus-one code): a time
-    /// quantum lasts `cfg_brp + 1` clocks. Captured while `rst = 1`.
-    pub cfg_brp: Signal<In, Bits<6>>,
+    /// Baud-rate prescaler BRP, 0..1023, taken as is (not a minus-one code): a
+    /// time quantum lasts `cfg_brp + 1` clocks. Captured while `rst = 1`.
+    pub cfg_brp: Signal<In, Bits<BRP_BITS>>,
     /// TSEG1 minus one: PROP_SEG + PHASE_SEG1 lasts `cfg_tseg1 + 1` tq (1..16),
     /// lengthened if needed so a bit has at least 8 tq and TSEG1 at least 3 clocks
     /// (contract §6). Captured while `rst = 1`.

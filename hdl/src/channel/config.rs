@@ -12,6 +12,7 @@
 //!
 //! All values use the minus-one encodings of the ports.
 
+use crate::channel::BRP_BITS;
 use rust_hdl::prelude::*;
 
 /// Captured, clamped configuration.
@@ -21,7 +22,7 @@ pub struct ChannelConfig {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
     // configuration inputs
-    pub cfg_brp: Signal<In, Bits<6>>,
+    pub cfg_brp: Signal<In, Bits<BRP_BITS>>,
     pub cfg_tseg1: Signal<In, Bits<4>>,
     pub cfg_tseg2: Signal<In, Bits<3>>,
     pub cfg_sjw: Signal<In, Bits<2>>,
@@ -32,7 +33,7 @@ pub struct ChannelConfig {
     // held configuration
     /// The BRP held from the next clock on (the input while capturing), so the
     /// prescaler can register its tick one clock ahead.
-    pub brp_next: Signal<Out, Bits<6>>,
+    pub brp_next: Signal<Out, Bits<BRP_BITS>>,
     pub triple: Signal<Out, Bit>,
     pub mode: Signal<Out, Bits<2>>,
     pub ewl: Signal<Out, Bits<8>>,
@@ -47,7 +48,7 @@ pub struct ChannelConfig {
     sjw_len_q: DFF<Bits<4>>,
     one4: Constant<Bits<4>>,
     one5: Constant<Bits<5>>,
-    brp_q: DFF<Bits<6>>,
+    brp_q: DFF<Bits<BRP_BITS>>,
     triple_q: DFF<Bit>,
     mode_q: DFF<Bits<2>>,
     ewl_q: DFF<Bits<8>>,
@@ -77,8 +78,8 @@ pub struct ChannelConfig {
     n4_0: Constant<Bits<4>>,
     n4_1: Constant<Bits<4>>,
     n4_2: Constant<Bits<4>>,
-    n6_0: Constant<Bits<6>>,
-    n6_1: Constant<Bits<6>>,
+    brp_is_0: Constant<Bits<BRP_BITS>>,
+    brp_is_1: Constant<Bits<BRP_BITS>>,
 }
 
 impl Default for ChannelConfig {
@@ -136,8 +137,8 @@ impl Default for ChannelConfig {
             n4_0: Constant::new(0.into()),
             n4_1: Constant::new(1.into()),
             n4_2: Constant::new(2.into()),
-            n6_0: Constant::new(0.into()),
-            n6_1: Constant::new(1.into()),
+            brp_is_0: Constant::new(0.into()),
+            brp_is_1: Constant::new(1.into()),
         }
     }
 }
@@ -162,8 +163,8 @@ impl Logic for ChannelConfig {
         // read-back: (BRP+1) * TSEG1 >= 3 clocks)). L and L + 1 are a table of the
         // inputs and TSEG1 + 1 is formed beside the comparison, so the capture path
         // has one comparator and no chained adders.
-        self.brp0.next = self.cfg_brp.val() == self.n6_0.val();
-        self.brp1.next = self.cfg_brp.val() == self.n6_1.val();
+        self.brp0.next = self.cfg_brp.val() == self.brp_is_0.val();
+        self.brp1.next = self.cfg_brp.val() == self.brp_is_1.val();
         if self.cfg_tseg2.val() == self.n3_0.val() {
             self.tseg1_low.next = self.n4_5.val();
             self.tseg1_low_len.next = self.n5_6.val();

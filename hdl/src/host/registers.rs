@@ -221,12 +221,13 @@ pub const REGISTERS: &[Register] = &[
         access: Access::Rw,
         desc: "Bit timing of both channels (fields carry value - 1); writable only in reset mode",
         fields: &[
-            cfg("brp", 0, 6, 0, "time quantum = brp + 1 clocks"),
+            cfg("brp", 0, 6, 0, "BRP[5:0]: time quantum = BRP + 1 clocks, BRP = {brp_ext, brp} (0..1023)"),
             cfg("tseg1", 6, 4, 4, "TSEG1 = tseg1 + 1 quanta"),
             cfg("tseg2", 10, 3, 1, "TSEG2 = tseg2 + 1 quanta"),
             cfg("sjw", 13, 2, 0, "SJW = sjw + 1 quanta"),
             cfg("triple", 15, 1, 0, "triple sampling"),
             cfg("ewl", 16, 8, 96, "error warning limit"),
+            cfg("brp_ext", 24, 4, 0, "BRP[9:6], the prescaler's high bits (0 for BRP 0..63: the 6-bit layout reads the same)"),
         ],
     },
     Register {

@@ -22,6 +22,7 @@ use super::map::lsb;
 use super::registers::{self as map, MAP};
 use super::wb_slave::WbSlave;
 use crate::channel::sized::Param;
+use crate::channel::BRP_BITS;
 use crate::config::DrccConfig;
 use rust_hdl::prelude::*;
 
@@ -119,8 +120,8 @@ pub struct WbRegs {
     pub single_shot: Signal<Out, Bit>,
     /// `CTRL.dmr`: CiA 701 DMR mode.
     pub dmr: Signal<Out, Bit>,
-    /// `BTR.brp`.
-    pub brp: Signal<Out, Bits<6>>,
+    /// The prescaler BRP, `{BTR.brp_ext, BTR.brp}` (0..1023).
+    pub brp: Signal<Out, Bits<BRP_BITS>>,
     /// `BTR.tseg1`.
     pub tseg1: Signal<Out, Bits<4>>,
     /// `BTR.tseg2`.
@@ -151,7 +152,7 @@ pub struct WbRegs {
     ctrl: CtrlReg,
     ctrl_check: CtrlCheck,
     // ---- registers ----
-    btr_q: DFF<Bits<24>>,
+    btr_q: DFF<Bits<28>>,
     rmb_cfg_q: DFF<Bits<32>>,
     window_q: DFF<Bits<15>>,
     tx_id_q: DFF<Bits<31>>,
@@ -197,6 +198,8 @@ pub struct WbRegs {
     a_rx_cmd: Constant<Bits<6>>,
     // ---- field positions (from the table) ----
     b_brp: Constant<Bits<5>>,
+    b_brp_ext: Constant<Bits<5>>,
+    brp_ext_shift: Constant<Bits<4>>,
     b_tseg1: Constant<Bits<5>>,
     b_tseg2: Constant<Bits<5>>,
     b_sjw: Constant<Bits<5>>,
@@ -220,7 +223,7 @@ pub struct WbRegs {
     i_dmr: Constant<Bits<5>>,
     i_domain: Constant<Bits<5>>,
     // ---- reset values and codes ----
-    btr_reset: Constant<Bits<24>>,
+    btr_reset: Constant<Bits<28>>,
     rmb_cfg_reset: Constant<Bits<32>>,
     window_reset: Constant<Bits<15>>,
     queue_full: Constant<Bits<4>>,
@@ -260,7 +263,7 @@ fn stored_in(reg: &str, bits: u32) {
 
 impl Default for WbRegs {
     fn default() -> Self {
-        stored_in("BTR", 24);
+        stored_in("BTR", 28);
         stored_in("RMB_CFG", 32);
         stored_in("INT_STATUS", 10);
         stored_in("INT_ENABLE", 10);
@@ -361,6 +364,8 @@ impl Default for WbRegs {
             a_tx_cmd: adr(map::TX_CMD),
             a_rx_cmd: adr(map::RX_CMD),
             b_brp: lsb(&MAP, "BTR", "brp", 6),
+            b_brp_ext: lsb(&MAP, "BTR", "brp_ext", 4),
+            brp_ext_shift: Constant::new(6.into()),
             b_tseg1: lsb(&MAP, "BTR", "tseg1", 4),
             b_tseg2: lsb(&MAP, "BTR", "tseg2", 3),
             b_sjw: lsb(&MAP, "BTR", "sjw", 2),

@@ -57,7 +57,7 @@ impl Logic for WbRegs {
         if self.wb_adr_i.val() == self.a_ctrl.val() {
             self.rdata.next = self.ctrl.word.val();
         } else if self.wb_adr_i.val() == self.a_btr.val() {
-            self.rdata.next = bit_cast::<32, 24>(self.btr_q.q.val());
+            self.rdata.next = bit_cast::<32, 28>(self.btr_q.q.val());
         } else if self.wb_adr_i.val() == self.a_rmb_cfg.val() {
             self.rdata.next = self.rmb_cfg_q.q.val();
         } else if self.wb_adr_i.val() == self.a_dedup_cfg.val() {
@@ -140,7 +140,7 @@ impl Logic for WbRegs {
                 self.illegal.next = self.ctrl_check.illegal.val();
             } else if self.wb_adr_i.val() == self.a_btr.val() {
                 if self.ctrl.reset_mode.val() {
-                    self.btr_q.d.next = self.wb_dat_i.val().get_bits::<24>(0);
+                    self.btr_q.d.next = self.wb_dat_i.val().get_bits::<28>(0);
                 } else {
                     self.illegal.next = true;
                 }
@@ -248,7 +248,14 @@ impl Logic for WbRegs {
         self.single_shot.next = self.ctrl.single_shot.val();
         self.dmr.next = self.ctrl.dmr.val();
         self.wr_o.next = self.wr.val() & self.full.val();
-        self.brp.next = self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index());
+        self.brp.next =
+            bit_cast::<BRP_BITS, 6>(self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index()))
+                | (bit_cast::<BRP_BITS, 4>(
+                    self.btr_q
+                        .q
+                        .val()
+                        .get_bits::<4>(self.b_brp_ext.val().index()),
+                ) << self.brp_ext_shift.val());
         self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());
         self.tseg2.next = self.btr_q.q.val().get_bits::<3>(self.b_tseg2.val().index());
         self.sjw.next = self.btr_q.q.val().get_bits::<2>(self.b_sjw.val().index());

@@ -42,6 +42,7 @@
 
 use super::tracker::{FrameTracker, ACK_DELIM, ACK_SLOT, IDLE_WAIT};
 use crate::channel::btl::BitTimingLogic;
+use crate::channel::BRP_BITS;
 use crate::pins::RecessiveReg;
 use rust_hdl::prelude::*;
 
@@ -69,7 +70,7 @@ pub struct AckUnit<const N: usize, const M: usize, const P: usize> {
     pub downlink: Signal<Out, Bits<N>>,
     // ---- from the hub: configuration (the hub's captured bit timing, §5) ----
     /// Captured BRP, as the hub's BTL gets it (`ChannelConfig::brp_next`).
-    pub cfg_brp_next: Signal<In, Bits<6>>,
+    pub cfg_brp_next: Signal<In, Bits<BRP_BITS>>,
     /// Captured TSEG1' in time quanta.
     pub cfg_tseg1_len: Signal<In, Bits<5>>,
     /// Captured TSEG2 in time quanta.

@@ -12,6 +12,7 @@
 //! 256; `block_frames` 1..3 store 4 (0 stays: off). Word indices, field positions, reset values and clamps come from the
 //! table (`crate::host::hub_registers`).
 
+use crate::channel::BRP_BITS;
 use crate::host::hub_registers::{
     self as map, BF_MIN, BLOCK_MIN, FORCE_MIN, MAP, NRAP_BITS_MIN, NRAP_COUNT_MIN, SD_MIN,
 };
@@ -55,8 +56,8 @@ pub struct HubConfig {
     /// Value of the addressed register (0 when `hit` is 0).
     pub rdata: Signal<Out, Bits<32>>,
     // ---- configuration out ----
-    /// `BTR.brp`.
-    pub brp: Signal<Out, Bits<6>>,
+    /// The prescaler BRP, `{BTR.brp_ext, BTR.brp}` (0..1023).
+    pub brp: Signal<Out, Bits<BRP_BITS>>,
     /// `BTR.tseg1`.
     pub tseg1: Signal<Out, Bits<4>>,
     /// `BTR.tseg2`.
@@ -95,6 +96,7 @@ pub struct HubConfig {
     pub block_frames: Signal<Out, Bits<5>>,
     // ---- registers ----
     btr_q: DFF<Bits<15>>,
+    brp_ext_q: DFF<Bits<4>>,
     sd_up_q: DFF<Bits<6>>,
     sd_sub_q: DFF<Bits<6>>,
     sr_q: DFF<Bits<4>>,
@@ -134,6 +136,9 @@ pub struct HubConfig {
     a_nddsp: Constant<Bits<6>>,
     // ---- field positions (BTR's index the 15-bit register) ----
     b_brp: Constant<Bits<4>>,
+    /// `BTR.brp_ext`'s position in the word (it is held in `brp_ext_q`).
+    b_brp_ext: Constant<Bits<5>>,
+    brp_ext_shift: Constant<Bits<4>>,
     b_tseg1: Constant<Bits<4>>,
     b_tseg2: Constant<Bits<4>>,
     b_sjw: Constant<Bits<4>>,
@@ -154,6 +159,7 @@ pub struct HubConfig {
     n_block: Constant<Bits<5>>,
     // ---- reset values and clamps ----
     btr_reset: Constant<Bits<15>>,
+    zero4: Constant<Bits<4>>,
     sd_up_reset: Constant<Bits<6>>,
     sd_sub_reset: Constant<Bits<6>>,
     sd_min: Constant<Bits<6>>,
@@ -183,8 +189,8 @@ impl Default for HubConfig {
     fn default() -> Self {
         let btr = map::register("BTR").unwrap();
         assert!(
-            btr.defined() >> 15 == 0,
-            "register map HUB: BTR has fields above bit 14"
+            btr.defined() & !0x7FFF == 0xF << 24,
+            "register map HUB: BTR has fields above bit 14 other than brp_ext [27:24]"
         );
         Self {
             clk: Default::default(),
@@ -215,6 +221,7 @@ impl Default for HubConfig {
             ddsp_bits: Default::default(),
             block_frames: Default::default(),
             btr_q: Default::default(),
+            brp_ext_q: Default::default(),
             sd_up_q: Default::default(),
             sd_sub_q: Default::default(),
             sr_q: Default::default(),
@@ -251,6 +258,8 @@ impl Default for HubConfig {
             a_ntime: adr(map::NRAP_TIME),
             a_nddsp: adr(map::NRAP_DDSP),
             b_brp: lsb(&MAP, "BTR", "brp", 6),
+            b_brp_ext: lsb(&MAP, "BTR", "brp_ext", 4),
+            brp_ext_shift: Constant::new(6.into()),
             b_tseg1: lsb(&MAP, "BTR", "tseg1", 4),
             b_tseg2: lsb(&MAP, "BTR", "tseg2", 3),
             b_sjw: lsb(&MAP, "BTR", "sjw", 2),
@@ -270,6 +279,7 @@ impl Default for HubConfig {
             n_ddsp_bits: lsb(&MAP, "NRAP_DDSP", "ddsp_bits", 16),
             n_block: lsb(&MAP, "NRAP_DDSP", "block_frames", 5),
             btr_reset: Constant::new((btr.reset_value() as u64).into()),
+            zero4: Constant::new(0.into()),
             sd_up_reset: reset("GUARD_CFG", "sd_run_up"),
             sd_sub_reset: reset("GUARD_CFG", "sd_run_sub"),
             sd_min: min(SD_MIN),
@@ -304,6 +314,7 @@ impl Logic for HubConfig {
             self,
             clk,
             btr_q,
+            brp_ext_q,
             sd_up_q,
             sd_sub_q,
             sr_q,
@@ -325,7 +336,8 @@ impl Logic for HubConfig {
         self.rdata.next = self.zero32.val();
         if self.adr.val() == self.a_btr.val() {
             self.hit.next = true;
-            self.rdata.next = bit_cast::<32, 15>(self.btr_q.q.val());
+            self.rdata.next = bit_cast::<32, 15>(self.btr_q.q.val())
+                | (bit_cast::<32, 4>(self.brp_ext_q.q.val()) << self.b_brp_ext.val());
         } else if self.adr.val() == self.a_guard.val() {
             self.hit.next = true;
             self.rdata.next = (bit_cast::<32, 6>(self.sd_up_q.q.val()) << self.g_sd_up.val())
@@ -394,6 +406,7 @@ impl Logic for HubConfig {
         if self.store.val() {
             if self.adr.val() == self.a_btr.val() {
                 self.btr_q.d.next = self.wdat.val().get_bits::<15>(0);
+                self.brp_ext_q.d.next = self.wdat.val().get_bits::<4>(self.b_brp_ext.val().index());
             } else if self.adr.val() == self.a_guard.val() {
                 if self.w6a.val() < self.sd_min.val() {
                     self.sd_up_q.d.next = self.sd_min.val();
@@ -472,6 +485,7 @@ impl Logic for HubConfig {
 
         if self.rst.val() {
             self.btr_q.d.next = self.btr_reset.val();
+            self.brp_ext_q.d.next = self.zero4.val();
             self.sd_up_q.d.next = self.sd_up_reset.val();
             self.sd_sub_q.d.next = self.sd_sub_reset.val();
             self.sr_q.d.next = self.sr_reset.val();
@@ -490,7 +504,9 @@ impl Logic for HubConfig {
         }
 
         // ---- outputs ----
-        self.brp.next = self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index());
+        self.brp.next =
+            bit_cast::<BRP_BITS, 6>(self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index()))
+                | (bit_cast::<BRP_BITS, 4>(self.brp_ext_q.q.val()) << self.brp_ext_shift.val());
         self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());
         self.tseg2.next = self.btr_q.q.val().get_bits::<3>(self.b_tseg2.val().index());
         self.sjw.next = self.btr_q.q.val().get_bits::<2>(self.b_sjw.val().index());

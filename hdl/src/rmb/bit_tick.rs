@@ -5,6 +5,7 @@
 //! `tick`; `tick` is combinational from them. `now` counts ticks (16 bits,
 //! wrapping). Everything is 0 while `hold` (reset mode).
 
+use crate::channel::BRP_BITS;
 use rust_hdl::prelude::*;
 
 /// Bit tick and `now`.
@@ -14,23 +15,23 @@ pub struct BitTick {
     pub clk: Signal<In, Clock>,
     pub hold: Signal<In, Bit>,
     // BTR fields (value - 1 encodings)
-    pub brp: Signal<In, Bits<6>>,
+    pub brp: Signal<In, Bits<BRP_BITS>>,
     pub tseg1: Signal<In, Bits<4>>,
     pub tseg2: Signal<In, Bits<3>>,
     // outputs
     pub tick: Signal<Out, Bit>,
     pub now: Signal<Out, Bits<16>>,
-    tq_cnt: DFF<Bits<6>>,
+    tq_cnt: DFF<Bits<BRP_BITS>>,
     bit_cnt: DFF<Bits<5>>,
     now_q: DFF<Bits<16>>,
     tq_last: Signal<Local, Bits<5>>,
     tick_l: Signal<Local, Bit>,
     one5: Constant<Bits<5>>,
     two5: Constant<Bits<5>>,
-    one6: Constant<Bits<6>>,
+    one_brp: Constant<Bits<BRP_BITS>>,
     one16: Constant<Bits<16>>,
     zero5: Constant<Bits<5>>,
-    zero6: Constant<Bits<6>>,
+    zero_brp: Constant<Bits<BRP_BITS>>,
     zero16: Constant<Bits<16>>,
 }
 
@@ -51,10 +52,10 @@ impl Default for BitTick {
             tick_l: Default::default(),
             one5: Constant::new(1.into()),
             two5: Constant::new(2.into()),
-            one6: Constant::new(1.into()),
+            one_brp: Constant::new(1.into()),
             one16: Constant::new(1.into()),
             zero5: Constant::new(0.into()),
-            zero6: Constant::new(0.into()),
+            zero_brp: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
         }
     }
@@ -70,11 +71,11 @@ impl Logic for BitTick {
             + self.two5.val();
         self.tick_l.next =
             (self.tq_cnt.q.val() == self.brp.val()) & (self.bit_cnt.q.val() == self.tq_last.val());
-        self.tq_cnt.d.next = self.tq_cnt.q.val() + self.one6.val();
+        self.tq_cnt.d.next = self.tq_cnt.q.val() + self.one_brp.val();
         self.bit_cnt.d.next = self.bit_cnt.q.val();
         self.now_q.d.next = self.now_q.q.val();
         if self.tq_cnt.q.val() == self.brp.val() {
-            self.tq_cnt.d.next = self.zero6.val();
+            self.tq_cnt.d.next = self.zero_brp.val();
             if self.bit_cnt.q.val() == self.tq_last.val() {
                 self.bit_cnt.d.next = self.zero5.val();
             } else {
@@ -85,7 +86,7 @@ impl Logic for BitTick {
             self.now_q.d.next = self.now_q.q.val() + self.one16.val();
         }
         if self.hold.val() {
-            self.tq_cnt.d.next = self.zero6.val();
+            self.tq_cnt.d.next = self.zero_brp.val();
             self.bit_cnt.d.next = self.zero5.val();
             self.now_q.d.next = self.zero16.val();
             self.tick_l.next = false;

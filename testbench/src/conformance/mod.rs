@@ -59,6 +59,19 @@ pub fn timing_brp() -> BitTiming {
     }
 }
 
+/// 10 kbit/s at 100 MHz, as the bit-rate solver picks it: brp 499 (a prescaler
+/// past the 6 bits of the SJA1000's BRP), tseg1 15, tseg2 4, sjw 4 (20 tq of 500
+/// clocks, 10,000 clocks per bit, sample point 80 %).
+pub fn timing_slow() -> BitTiming {
+    BitTiming {
+        brp: 499,
+        tseg1: 15,
+        tseg2: 4,
+        sjw: 4,
+        triple_sampling: false,
+    }
+}
+
 /// A 16-tq timing with a wide SJW for the resynchronisation items: brp 0,
 /// tseg1 11, tseg2 4, sjw 3.
 pub fn timing_wide() -> BitTiming {

@@ -14,7 +14,7 @@ impl Loader<'_> {
         let field = |v: &Spanned<i64>, name: &str, lo: i64, hi: i64| {
             let x = *v.get_ref();
             if (lo..=hi).contains(&x) {
-                Ok(x as u8)
+                Ok(x as u16)
             } else {
                 Err(self.err(
                     v.span(),
@@ -25,13 +25,13 @@ impl Loader<'_> {
                 ))
             }
         };
-        let tseg2 = field(&t.tseg2, "tseg2", 1, 8)?;
+        let tseg2 = field(&t.tseg2, "tseg2", 1, 8)? as u8;
         let bt = BitTiming {
-            brp: field(&t.brp, "brp", 0, 63)?,
-            tseg1: field(&t.tseg1, "tseg1", 1, 16)?,
+            brp: field(&t.brp, "brp", 0, 1023)?,
+            tseg1: field(&t.tseg1, "tseg1", 1, 16)? as u8,
             tseg2,
             sjw: match &t.sjw {
-                Some(s) => field(s, "sjw", 1, 4)?,
+                Some(s) => field(s, "sjw", 1, 4)? as u8,
                 None => tseg2.clamp(1, 4),
             },
             triple_sampling: t.triple_sampling,

@@ -13,7 +13,7 @@
 //! single_shot = false          # optional: no automatic retransmission
 //!
 //! [timing]                     # explicit bit timing instead of `bitrate`
-//! brp = 0                      # 0..=63: one tq = brp+1 clocks
+//! brp = 0                      # 0..=1023: one tq = brp+1 clocks
 //! tseg1 = 12                   # 1..=16 tq
 //! tseg2 = 3                    # 1..=8 tq
 //! sjw = 3                      # 1..=4, <= tseg2 (default min(4, tseg2))

@@ -42,7 +42,7 @@ pub use run::*;
 /// propagation segment covers the loop node → hub → twin hub → node → and back
 /// (6 + 2 + 1 clocks each way through the hubs, the nodes' synchronizers and
 /// output registers; `docs/hub.md` computes it).
-pub const STAR_BRP: u8 = 1;
+pub const STAR_BRP: u16 = 1;
 pub const STAR_TSEG1: u8 = 13;
 pub const STAR_TSEG2: u8 = 4;
 pub const STAR_SJW: u8 = 2;

@@ -21,7 +21,7 @@ pub(super) fn build(spec: &Stress, seed: u64) -> (Scenario, FaultPlan) {
     let cpb = sc.clocks_per_bit();
     sc.name = format!("error-stress-{}-{seed:#x}", spec.name);
     if let Some((brp, tseg1, tseg2, sjw)) = spec.timing {
-        sc.timing.brp = brp;
+        sc.timing.brp = brp.into();
         sc.timing.tseg1 = tseg1;
         sc.timing.tseg2 = tseg2;
         sc.timing.sjw = sjw;

@@ -25,7 +25,7 @@ pub(super) struct Regs {
     pub(super) tx_ctrl: u32,
     pub(super) tx_data: [u32; 2],
     /// Nominal bit tick counters (§4.3).
-    pub(super) tq_cnt: u8,
+    pub(super) tq_cnt: u16,
     pub(super) bit_cnt: u8,
     /// Channel `err_state` one clock earlier (INT_STATUS.err_state).
     pub(super) err_q: [u8; 2],
@@ -86,8 +86,8 @@ impl Regs {
     pub(super) fn window(&self) -> u16 {
         (self.dedup & dedup::WINDOW_MASK) as u16
     }
-    pub(super) fn brp(&self) -> u8 {
-        (self.btr & btr::BRP_MASK) as u8
+    pub(super) fn brp(&self) -> u16 {
+        btr::brp(self.btr)
     }
     /// `1 + (tseg1+1) + (tseg2+1)` from the fields as written.
     pub(super) fn tq_per_bit(&self) -> u8 {

@@ -81,13 +81,21 @@ pub mod ctrl {
 
 /// `BTR` fields (value - 1 encodings as the channel ports, §C.6).
 pub mod btr {
+    /// BRP[5:0].
     pub const BRP_MASK: u32 = 0x3F;
+    /// `brp_ext` [27:24] is BRP[9:6].
+    pub const BRP_EXT_SHIFT: u32 = 24;
     pub const TSEG1_SHIFT: u32 = 6;
     pub const TSEG2_SHIFT: u32 = 10;
     pub const SJW_SHIFT: u32 = 13;
     pub const TRIPLE: u32 = 1 << 15;
     pub const EWL_SHIFT: u32 = 16;
-    pub const DEFINED: u32 = 0x00FF_FFFF;
+    pub const DEFINED: u32 = 0x0FFF_FFFF;
+
+    /// The prescaler BRP of a `BTR` value: `{brp_ext, brp}`, 0..1023.
+    pub fn brp(btr: u32) -> u16 {
+        ((btr & BRP_MASK) | ((btr >> BRP_EXT_SHIFT) & 0xF) << 6) as u16
+    }
     /// Reset value: brp 0, tseg1 4 (5 tq), tseg2 1 (2 tq), sjw 0 (1 tq), ewl 96.
     pub const RESET: u32 = (4 << TSEG1_SHIFT) | (1 << TSEG2_SHIFT) | (96 << EWL_SHIFT);
 }

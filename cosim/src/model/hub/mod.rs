@@ -96,7 +96,7 @@ pub const MAX_PORTS: usize = MAX_NODE_PORTS + MAX_INTERLINKS;
 /// channel clamps its configuration (§C.6).
 pub fn timing_of(btr_value: u32) -> Timing {
     Timing::capture(&BitTiming {
-        brp: (btr_value & btr::BRP_MASK) as u8,
+        brp: ((btr_value & btr::BRP_MASK) | ((btr_value >> btr::BRP_EXT_SHIFT) & 0xF) << 6) as u16,
         tseg1: ((btr_value >> btr::TSEG1_SHIFT) & 0xF) as u8 + 1,
         tseg2: ((btr_value >> btr::TSEG2_SHIFT) & 0x7) as u8 + 1,
         sjw: ((btr_value >> btr::SJW_SHIFT) & 0x3) as u8 + 1,

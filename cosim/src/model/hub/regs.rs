@@ -68,14 +68,17 @@ pub mod nrap_cfg {
     pub const BLOCK_MIN: u32 = 4;
 }
 
-/// `BTR` fields (value - 1 encodings, as the DRCC's `BTR`; [31:15] read 0).
+/// `BTR` fields (value - 1 encodings, as the DRCC's `BTR`; [23:15] and [31:28]
+/// read 0).
 pub mod btr {
     pub const BRP_MASK: u32 = 0x3F;
+    /// `brp_ext` [27:24] is BRP[9:6].
+    pub const BRP_EXT_SHIFT: u32 = 24;
     pub const TSEG1_SHIFT: u32 = 6;
     pub const TSEG2_SHIFT: u32 = 10;
     pub const SJW_SHIFT: u32 = 13;
     /// Every stored bit.
-    pub const DEFINED: u32 = 0x7FFF;
+    pub const DEFINED: u32 = 0x0F00_7FFF;
     /// brp 0, tseg1 field 4 (5 tq), tseg2 field 1 (2 tq), sjw field 0 (1 tq).
     pub const RESET: u32 = (4 << TSEG1_SHIFT) | (1 << TSEG2_SHIFT);
 }

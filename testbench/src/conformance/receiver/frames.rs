@@ -20,12 +20,20 @@ fn receive_all(iut: &Iut, frames: &[Frame]) {
         lt.set_context(format!("brp 1: {f}"));
         receive_ok(&mut lt, &mut exp, &FrameBits::new(f));
     }
+    // one frame at 10 kbit/s from 100 MHz (brp 499: the prescaler's high bits)
+    let mut lt = LowerTester::start(iut, timing_slow());
+    let mut exp = Expected::default();
+    let f = &frames[13];
+    lt.set_context(format!("brp 499: {f}"));
+    receive_ok(&mut lt, &mut exp, &FrameBits::new(f));
+    assert_eq!(lt.received, vec![f.normalized()], "{}: brp 499", lt.name());
 }
 
 /// 7.1.1: base data frames with the ISO identifiers (555h, 2AAh, 000h, 7FFh and
 /// one more), each with every DLC 0..=8, and base remote frames: ACK in the ACK
 /// slot only, `rx_valid` at EOF bit 6 with the frame, REC unchanged; the same on a
-/// timing with a prescaler (brp 1).
+/// timing with a prescaler (brp 1), and one frame at 10 kbit/s from 100 MHz (brp
+/// 499).
 pub fn iso_7_1_1_base_frames(iut: &Iut) {
     let frames = iso_id_frames(false);
     assert!(frames.iter().all(|f| !f.ide) && frames.len() == 49);

@@ -19,7 +19,7 @@ use drcc_cosim::Frame;
 use super::bits::{stuff_site_set, stuffing_frames, Field, FrameBits, Options};
 use super::lower_tester::{field, state, Iut, LowerTester, Lt, Run, Script};
 use super::procedures::{base, ext, rec_to, remote, rx_error, rx_stuff_error, Expected};
-use super::{timing, timing_brp};
+use super::{timing, timing_brp, timing_slow};
 
 mod error_detection;
 mod error_frames;

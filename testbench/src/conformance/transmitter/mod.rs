@@ -27,7 +27,7 @@ use super::procedures::{
 use super::receiver::{
     data_pattern_frames, iso_id_frames, lose_arbitration, lost_then_error_then_send, receive_ok,
 };
-use super::{timing, timing_brp};
+use super::{timing, timing_brp, timing_slow};
 
 mod error_detection;
 mod error_frames;

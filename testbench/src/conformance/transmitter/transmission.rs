@@ -5,7 +5,7 @@ use super::*;
 
 /// Sends every frame of `frames`: the IUT's `tx` equals the tester's encoding bit
 /// by bit, `tx_done` at EOF bit 7, TEC stays 0; then every third one again on a
-/// timing with a prescaler (brp 1).
+/// timing with a prescaler (brp 1), and one at 10 kbit/s from 100 MHz (brp 499).
 fn send_all(iut: &Iut, frames: &[Frame]) {
     let (mut lt, mut exp) = start(iut);
     for f in frames {
@@ -18,6 +18,12 @@ fn send_all(iut: &Iut, frames: &[Frame]) {
         lt.set_context(format!("brp 1: {f}"));
         send_ok(&mut lt, &mut exp, f);
     }
+    // one frame at 10 kbit/s from 100 MHz (brp 499: the prescaler's high bits)
+    let mut lt = LowerTester::start(iut, timing_slow());
+    let f = &frames[13];
+    lt.set_context(format!("brp 499: {f}"));
+    send_ok(&mut lt, &mut exp, f);
+    assert_eq!(lt.tx_done, 1, "{}: brp 499", lt.name());
     assert_eq!(exp.tec, 0);
 }
 

@@ -16,7 +16,7 @@
 // input      1  rst              Synchronous reset, active high: at an edge with `rst = 1` every
 //                                register takes its reset value and the `cfg_*` inputs are captured
 //                                (contract §1, §6).
-// input      6  cfg_brp          Baud-rate prescaler BRP, 0..63, taken as is (not a minus-one
+// input     10  cfg_brp          Baud-rate prescaler BRP, 0..1023, taken as is (not a minus-one
 //                                code): a time quantum lasts `cfg_brp + 1` clocks. Captured while
 //                                `rst = 1`.
 // input      4  cfg_tseg1        TSEG1 minus one: PROP_SEG + PHASE_SEG1 lasts `cfg_tseg1 + 1` tq
@@ -147,9 +147,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     // Synchronous reset, active high: at an edge with `rst = 1` every register takes its reset
     // value and the `cfg_*` inputs are captured (contract §1, §6).
     input wire  rst;
-    // Baud-rate prescaler BRP, 0..63, taken as is (not a minus-one code): a time quantum lasts
+    // Baud-rate prescaler BRP, 0..1023, taken as is (not a minus-one code): a time quantum lasts
     // `cfg_brp + 1` clocks. Captured while `rst = 1`.
-    input wire  [5:0] cfg_brp;
+    input wire  [9:0] cfg_brp;
     // TSEG1 minus one: PROP_SEG + PHASE_SEG1 lasts `cfg_tseg1 + 1` tq (1..16), lengthened if needed
     // so a bit has at least 8 tq and TSEG1 at least 3 clocks (contract §6). Captured while
     // `rst = 1`.
@@ -303,7 +303,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     // Stub signals
     reg  cfg_regs__clk;
     reg  cfg_regs__rst;
-    reg  [5:0] cfg_regs__cfg_brp;
+    reg  [9:0] cfg_regs__cfg_brp;
     reg  [3:0] cfg_regs__cfg_tseg1;
     reg  [2:0] cfg_regs__cfg_tseg2;
     reg  [1:0] cfg_regs__cfg_sjw;
@@ -311,7 +311,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     reg  [1:0] cfg_regs__cfg_mode;
     reg  [7:0] cfg_regs__cfg_ewl;
     reg  cfg_regs__cfg_single_shot;
-    wire  [5:0] cfg_regs__brp_next;
+    wire  [9:0] cfg_regs__brp_next;
     wire  cfg_regs__triple;
     wire  [1:0] cfg_regs__mode;
     wire  [7:0] cfg_regs__ewl;
@@ -325,7 +325,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     wire  rx_sync__rx_s;
     reg  btl__clk;
     reg  btl__rst;
-    reg  [5:0] btl__cfg_brp_next;
+    reg  [9:0] btl__cfg_brp_next;
     reg  [4:0] btl__cfg_tseg1_len;
     reg  [3:0] btl__cfg_tseg2_len;
     reg  [3:0] btl__cfg_sjw_len;
@@ -4648,7 +4648,7 @@ module can_channel__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp_next;
+    input wire  [9:0] cfg_brp_next;
     input wire  [4:0] cfg_tseg1_len;
     input wire  [3:0] cfg_tseg2_len;
     input wire  [3:0] cfg_sjw_len;
@@ -4666,9 +4666,9 @@ module can_channel__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw
     // Constant declarations
     localparam  one4 = 4'h1;
     localparam  one5 = 5'b1;
-    localparam  one6 = 6'b1;
+    localparam  one_brp = 10'b1;
     localparam  zero5 = 5'b0;
-    localparam  zero6 = 6'b0;
+    localparam  zero_brp = 10'b0;
 
     // Enums
     localparam Segment__Sync = 0;
@@ -4676,8 +4676,8 @@ module can_channel__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw
     localparam Segment__Tseg2 = 2;
 
     // Stub signals
-    reg  [5:0] brp_cnt__d;
-    reg  [5:0] brp_cnt__q;
+    reg  [9:0] brp_cnt__d;
+    reg  [9:0] brp_cnt__q;
     reg  [1:0] seg__d;
     reg  [1:0] seg__q;
     reg  [4:0] quantum__d;
@@ -4723,7 +4723,7 @@ module can_channel__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw
     reg  [4:0] tseg1_eff;
     reg  [3:0] tseg2_eff;
     reg  sample_value;
-    reg  [5:0] brp_cnt_n;
+    reg  [9:0] brp_cnt_n;
     reg  [4:0] quantum_next2;
     reg  [3:0] q2_next;
     reg  [3:0] q2_next2;
@@ -4766,10 +4766,10 @@ module can_channel__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw
         sjw_eff = cfg_sjw_len;
         tick = tick_q__q;
         if (rst || tick) begin
-            brp_cnt_n = zero6;
+            brp_cnt_n = zero_brp;
         end
         else begin
-            brp_cnt_n = brp_cnt__q + one6;
+            brp_cnt_n = brp_cnt__q + one_brp;
         end
         brp_cnt__d = brp_cnt_n;
         tick_q__d = brp_cnt_n >= cfg_brp_next;
@@ -4985,7 +4985,7 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [9:0] cfg_brp;
     input wire  [3:0] cfg_tseg1;
     input wire  [2:0] cfg_tseg2;
     input wire  [1:0] cfg_sjw;
@@ -4993,7 +4993,7 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     input wire  [1:0] cfg_mode;
     input wire  [7:0] cfg_ewl;
     input wire  cfg_single_shot;
-    output reg  [5:0] brp_next;
+    output reg  [9:0] brp_next;
     output reg  triple;
     output reg  [1:0] mode;
     output reg  [7:0] ewl;
@@ -5022,8 +5022,8 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     localparam  n4_0 = 4'h0;
     localparam  n4_1 = 4'h1;
     localparam  n4_2 = 4'h2;
-    localparam  n6_0 = 6'b0;
-    localparam  n6_1 = 6'b1;
+    localparam  brp_is_0 = 10'b0;
+    localparam  brp_is_1 = 10'b1;
 
     // Stub signals
     reg  [4:0] tseg1_len_q__d;
@@ -5032,8 +5032,8 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
     reg  [3:0] tseg2_len_q__q;
     reg  [3:0] sjw_len_q__d;
     reg  [3:0] sjw_len_q__q;
-    reg  [5:0] brp_q__d;
-    reg  [5:0] brp_q__q;
+    reg  [9:0] brp_q__d;
+    reg  [9:0] brp_q__q;
     reg  triple_q__d;
     reg  triple_q__q;
     reg  [1:0] mode_q__d;
@@ -5062,8 +5062,8 @@ module can_channel__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_tri
         tseg1_len_q__d = tseg1_len_q__q;
         tseg2_len_q__d = tseg2_len_q__q;
         sjw_len_q__d = sjw_len_q__q;
-        brp0 = cfg_brp == n6_0;
-        brp1 = cfg_brp == n6_1;
+        brp0 = cfg_brp == brp_is_0;
+        brp1 = cfg_brp == brp_is_1;
         if (cfg_tseg2 == n3_0) begin
             tseg1_low = n4_5;
             tseg1_low_len = n5_6;

@@ -432,7 +432,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  [1:0] regs__mode_b;
     wire  regs__single_shot;
     wire  regs__dmr;
-    wire  [5:0] regs__brp;
+    wire  [9:0] regs__brp;
     wire  [3:0] regs__tseg1;
     wire  [2:0] regs__tseg2;
     wire  [1:0] regs__sjw;
@@ -638,7 +638,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  [15:0] status__omissions_b;
     reg  ticker__clk;
     reg  ticker__hold;
-    reg  [5:0] ticker__brp;
+    reg  [9:0] ticker__brp;
     reg  [3:0] ticker__tseg1;
     reg  [2:0] ticker__tseg2;
     wire  ticker__tick;
@@ -816,7 +816,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  [7:0] rxw__expired;
     reg  chan_a__clk;
     reg  chan_a__rst;
-    reg  [5:0] chan_a__cfg_brp;
+    reg  [9:0] chan_a__cfg_brp;
     reg  [3:0] chan_a__cfg_tseg1;
     reg  [2:0] chan_a__cfg_tseg2;
     reg  [1:0] chan_a__cfg_sjw;
@@ -863,7 +863,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  [7:0] chan_a__cnt_ack;
     reg  chan_b__clk;
     reg  chan_b__rst;
-    reg  [5:0] chan_b__cfg_brp;
+    reg  [9:0] chan_b__cfg_brp;
     reg  [3:0] chan_b__cfg_tseg1;
     reg  [2:0] chan_b__cfg_tseg2;
     reg  [1:0] chan_b__cfg_sjw;
@@ -2133,7 +2133,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [9:0] cfg_brp;
     input wire  [3:0] cfg_tseg1;
     input wire  [2:0] cfg_tseg2;
     input wire  [1:0] cfg_sjw;
@@ -2210,7 +2210,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
     // Stub signals
     reg  cfg_regs__clk;
     reg  cfg_regs__rst;
-    reg  [5:0] cfg_regs__cfg_brp;
+    reg  [9:0] cfg_regs__cfg_brp;
     reg  [3:0] cfg_regs__cfg_tseg1;
     reg  [2:0] cfg_regs__cfg_tseg2;
     reg  [1:0] cfg_regs__cfg_sjw;
@@ -2218,7 +2218,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
     reg  [1:0] cfg_regs__cfg_mode;
     reg  [7:0] cfg_regs__cfg_ewl;
     reg  cfg_regs__cfg_single_shot;
-    wire  [5:0] cfg_regs__brp_next;
+    wire  [9:0] cfg_regs__brp_next;
     wire  cfg_regs__triple;
     wire  [1:0] cfg_regs__mode;
     wire  [7:0] cfg_regs__ewl;
@@ -2232,7 +2232,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
     wire  rx_sync__rx_s;
     reg  btl__clk;
     reg  btl__rst;
-    reg  [5:0] btl__cfg_brp_next;
+    reg  [9:0] btl__cfg_brp_next;
     reg  [4:0] btl__cfg_tseg1_len;
     reg  [3:0] btl__cfg_tseg2_len;
     reg  [3:0] btl__cfg_sjw_len;
@@ -6555,7 +6555,7 @@ module drcc_apb__core__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_le
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp_next;
+    input wire  [9:0] cfg_brp_next;
     input wire  [4:0] cfg_tseg1_len;
     input wire  [3:0] cfg_tseg2_len;
     input wire  [3:0] cfg_sjw_len;
@@ -6573,9 +6573,9 @@ module drcc_apb__core__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_le
     // Constant declarations
     localparam  one4 = 4'h1;
     localparam  one5 = 5'b1;
-    localparam  one6 = 6'b1;
+    localparam  one_brp = 10'b1;
     localparam  zero5 = 5'b0;
-    localparam  zero6 = 6'b0;
+    localparam  zero_brp = 10'b0;
 
     // Enums
     localparam Segment__Sync = 0;
@@ -6583,8 +6583,8 @@ module drcc_apb__core__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_le
     localparam Segment__Tseg2 = 2;
 
     // Stub signals
-    reg  [5:0] brp_cnt__d;
-    reg  [5:0] brp_cnt__q;
+    reg  [9:0] brp_cnt__d;
+    reg  [9:0] brp_cnt__q;
     reg  [1:0] seg__d;
     reg  [1:0] seg__q;
     reg  [4:0] quantum__d;
@@ -6630,7 +6630,7 @@ module drcc_apb__core__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_le
     reg  [4:0] tseg1_eff;
     reg  [3:0] tseg2_eff;
     reg  sample_value;
-    reg  [5:0] brp_cnt_n;
+    reg  [9:0] brp_cnt_n;
     reg  [4:0] quantum_next2;
     reg  [3:0] q2_next;
     reg  [3:0] q2_next2;
@@ -6673,10 +6673,10 @@ module drcc_apb__core__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_le
         sjw_eff = cfg_sjw_len;
         tick = tick_q__q;
         if (rst || tick) begin
-            brp_cnt_n = zero6;
+            brp_cnt_n = zero_brp;
         end
         else begin
-            brp_cnt_n = brp_cnt__q + one6;
+            brp_cnt_n = brp_cnt__q + one_brp;
         end
         brp_cnt__d = brp_cnt_n;
         tick_q__d = brp_cnt_n >= cfg_brp_next;
@@ -6892,7 +6892,7 @@ module drcc_apb__core__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sj
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [9:0] cfg_brp;
     input wire  [3:0] cfg_tseg1;
     input wire  [2:0] cfg_tseg2;
     input wire  [1:0] cfg_sjw;
@@ -6900,7 +6900,7 @@ module drcc_apb__core__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sj
     input wire  [1:0] cfg_mode;
     input wire  [7:0] cfg_ewl;
     input wire  cfg_single_shot;
-    output reg  [5:0] brp_next;
+    output reg  [9:0] brp_next;
     output reg  triple;
     output reg  [1:0] mode;
     output reg  [7:0] ewl;
@@ -6929,8 +6929,8 @@ module drcc_apb__core__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sj
     localparam  n4_0 = 4'h0;
     localparam  n4_1 = 4'h1;
     localparam  n4_2 = 4'h2;
-    localparam  n6_0 = 6'b0;
-    localparam  n6_1 = 6'b1;
+    localparam  brp_is_0 = 10'b0;
+    localparam  brp_is_1 = 10'b1;
 
     // Stub signals
     reg  [4:0] tseg1_len_q__d;
@@ -6939,8 +6939,8 @@ module drcc_apb__core__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sj
     reg  [3:0] tseg2_len_q__q;
     reg  [3:0] sjw_len_q__d;
     reg  [3:0] sjw_len_q__q;
-    reg  [5:0] brp_q__d;
-    reg  [5:0] brp_q__q;
+    reg  [9:0] brp_q__d;
+    reg  [9:0] brp_q__q;
     reg  triple_q__d;
     reg  triple_q__q;
     reg  [1:0] mode_q__d;
@@ -6969,8 +6969,8 @@ module drcc_apb__core__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sj
         tseg1_len_q__d = tseg1_len_q__q;
         tseg2_len_q__d = tseg2_len_q__q;
         sjw_len_q__d = sjw_len_q__q;
-        brp0 = cfg_brp == n6_0;
-        brp1 = cfg_brp == n6_1;
+        brp0 = cfg_brp == brp_is_0;
+        brp1 = cfg_brp == brp_is_1;
         if (cfg_tseg2 == n3_0) begin
             tseg1_low = n4_5;
             tseg1_low_len = n5_6;
@@ -10171,7 +10171,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     output reg  [1:0] mode_b;
     output reg  single_shot;
     output reg  dmr;
-    output reg  [5:0] brp;
+    output reg  [9:0] brp;
     output reg  [3:0] tseg1;
     output reg  [2:0] tseg2;
     output reg  [1:0] sjw;
@@ -10199,6 +10199,8 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  a_tx_cmd = 6'b10000;
     localparam  a_rx_cmd = 6'b10101;
     localparam  b_brp = 5'b0;
+    localparam  b_brp_ext = 5'b11000;
+    localparam  brp_ext_shift = 4'h6;
     localparam  b_tseg1 = 5'b110;
     localparam  b_tseg2 = 5'b1010;
     localparam  b_sjw = 5'b1101;
@@ -10221,7 +10223,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  i_aux = 5'b111;
     localparam  i_dmr = 5'b1000;
     localparam  i_domain = 5'b1001;
-    localparam  btr_reset = 24'h600500;
+    localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
     localparam  queue_full = 4'h8;
@@ -10288,8 +10290,8 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     wire  [3:0] ctrl_check__k_in;
     wire  ctrl_check__refused;
     wire  ctrl_check__illegal;
-    reg  [23:0] btr_q__d;
-    reg  [23:0] btr_q__q;
+    reg  [27:0] btr_q__d;
+    reg  [27:0] btr_q__q;
     reg  [31:0] rmb_cfg_q__d;
     reg  [31:0] rmb_cfg_q__q;
     reg  [14:0] window_q__d;
@@ -10508,7 +10510,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
             end
             else if (wb_adr_i == a_btr) begin
                 if (ctrl__reset_mode) begin
-                    btr_q__d = wb_dat_i[(32'h0)+:(24)];
+                    btr_q__d = wb_dat_i[(32'h0)+:(28)];
                 end
                 else begin
                     illegal = 1'b1;
@@ -10612,7 +10614,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         single_shot = ctrl__single_shot;
         dmr = ctrl__dmr;
         wr_o = wr & full;
-        brp = btr_q__q[(b_brp)+:(6)];
+        brp = ((btr_q__q[(b_brp)+:(6)]) & 10'h3ff) | (((btr_q__q[(b_brp_ext)+:(4)]) & 10'h3ff) << brp_ext_shift);
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
         tseg2 = btr_q__q[(b_tseg2)+:(3)];
         sjw = btr_q__q[(b_sjw)+:(2)];
@@ -12030,7 +12032,7 @@ module drcc_apb__core__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
     // Module arguments
     input wire  clk;
     input wire  hold;
-    input wire  [5:0] brp;
+    input wire  [9:0] brp;
     input wire  [3:0] tseg1;
     input wire  [2:0] tseg2;
     output reg  tick;
@@ -12039,15 +12041,15 @@ module drcc_apb__core__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
     // Constant declarations
     localparam  one5 = 5'b1;
     localparam  two5 = 5'b10;
-    localparam  one6 = 6'b1;
+    localparam  one_brp = 10'b1;
     localparam  one16 = 16'h1;
     localparam  zero5 = 5'b0;
-    localparam  zero6 = 6'b0;
+    localparam  zero_brp = 10'b0;
     localparam  zero16 = 16'h0;
 
     // Stub signals
-    reg  [5:0] tq_cnt__d;
-    reg  [5:0] tq_cnt__q;
+    reg  [9:0] tq_cnt__d;
+    reg  [9:0] tq_cnt__q;
     reg  [4:0] bit_cnt__d;
     reg  [4:0] bit_cnt__q;
     reg  [15:0] now_q__d;
@@ -12064,11 +12066,11 @@ module drcc_apb__core__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
         now_q__d = now_q__q;
         tq_last = ((tseg1) & 5'h1f) + ((tseg2) & 5'h1f) + two5;
         tick_l = (tq_cnt__q == brp) & (bit_cnt__q == tq_last);
-        tq_cnt__d = tq_cnt__q + one6;
+        tq_cnt__d = tq_cnt__q + one_brp;
         bit_cnt__d = bit_cnt__q;
         now_q__d = now_q__q;
         if (tq_cnt__q == brp) begin
-            tq_cnt__d = zero6;
+            tq_cnt__d = zero_brp;
             if (bit_cnt__q == tq_last) begin
                 bit_cnt__d = zero5;
             end
@@ -12080,7 +12082,7 @@ module drcc_apb__core__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
             now_q__d = now_q__q + one16;
         end
         if (hold) begin
-            tq_cnt__d = zero6;
+            tq_cnt__d = zero_brp;
             bit_cnt__d = zero5;
             now_q__d = zero16;
             tick_l = 1'b0;

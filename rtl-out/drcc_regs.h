@@ -54,6 +54,8 @@
 #define DRCC_BTR_TRIPLE_MASK 0x00008000u
 #define DRCC_BTR_EWL_SHIFT 16u
 #define DRCC_BTR_EWL_MASK 0x00FF0000u
+#define DRCC_BTR_BRP_EXT_SHIFT 24u
+#define DRCC_BTR_BRP_EXT_MASK 0x0F000000u
 
 /* RMB_CFG: Redundancy management; writable only in reset mode (RW) */
 #define DRCC_RMB_CFG_OFFSET 0x0Cu

@@ -307,7 +307,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     wire  [1:0] regs__mode_b;
     wire  regs__single_shot;
     wire  regs__dmr;
-    wire  [5:0] regs__brp;
+    wire  [9:0] regs__brp;
     wire  [3:0] regs__tseg1;
     wire  [2:0] regs__tseg2;
     wire  [1:0] regs__sjw;
@@ -475,7 +475,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     reg  [15:0] status__omissions_b;
     reg  ticker__clk;
     reg  ticker__hold;
-    reg  [5:0] ticker__brp;
+    reg  [9:0] ticker__brp;
     reg  [3:0] ticker__tseg1;
     reg  [2:0] ticker__tseg2;
     wire  ticker__tick;
@@ -653,7 +653,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     wire  [7:0] rxw__expired;
     reg  chan_a__clk;
     reg  chan_a__rst;
-    reg  [5:0] chan_a__cfg_brp;
+    reg  [9:0] chan_a__cfg_brp;
     reg  [3:0] chan_a__cfg_tseg1;
     reg  [2:0] chan_a__cfg_tseg2;
     reg  [1:0] chan_a__cfg_sjw;
@@ -700,7 +700,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     wire  [7:0] chan_a__cnt_ack;
     reg  chan_b__clk;
     reg  chan_b__rst;
-    reg  [5:0] chan_b__cfg_brp;
+    reg  [9:0] chan_b__cfg_brp;
     reg  [3:0] chan_b__cfg_tseg1;
     reg  [2:0] chan_b__cfg_tseg2;
     reg  [1:0] chan_b__cfg_sjw;
@@ -1887,7 +1887,7 @@ module drcc_small__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,c
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [9:0] cfg_brp;
     input wire  [3:0] cfg_tseg1;
     input wire  [2:0] cfg_tseg2;
     input wire  [1:0] cfg_sjw;
@@ -1964,7 +1964,7 @@ module drcc_small__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,c
     // Stub signals
     reg  cfg_regs__clk;
     reg  cfg_regs__rst;
-    reg  [5:0] cfg_regs__cfg_brp;
+    reg  [9:0] cfg_regs__cfg_brp;
     reg  [3:0] cfg_regs__cfg_tseg1;
     reg  [2:0] cfg_regs__cfg_tseg2;
     reg  [1:0] cfg_regs__cfg_sjw;
@@ -1972,7 +1972,7 @@ module drcc_small__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,c
     reg  [1:0] cfg_regs__cfg_mode;
     reg  [7:0] cfg_regs__cfg_ewl;
     reg  cfg_regs__cfg_single_shot;
-    wire  [5:0] cfg_regs__brp_next;
+    wire  [9:0] cfg_regs__brp_next;
     wire  cfg_regs__triple;
     wire  [1:0] cfg_regs__mode;
     wire  [7:0] cfg_regs__ewl;
@@ -1986,7 +1986,7 @@ module drcc_small__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,c
     wire  rx_sync__rx_s;
     reg  btl__clk;
     reg  btl__rst;
-    reg  [5:0] btl__cfg_brp_next;
+    reg  [9:0] btl__cfg_brp_next;
     reg  [4:0] btl__cfg_tseg1_len;
     reg  [3:0] btl__cfg_tseg2_len;
     reg  [3:0] btl__cfg_sjw_len;
@@ -6309,7 +6309,7 @@ module drcc_small__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cf
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp_next;
+    input wire  [9:0] cfg_brp_next;
     input wire  [4:0] cfg_tseg1_len;
     input wire  [3:0] cfg_tseg2_len;
     input wire  [3:0] cfg_sjw_len;
@@ -6327,9 +6327,9 @@ module drcc_small__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cf
     // Constant declarations
     localparam  one4 = 4'h1;
     localparam  one5 = 5'b1;
-    localparam  one6 = 6'b1;
+    localparam  one_brp = 10'b1;
     localparam  zero5 = 5'b0;
-    localparam  zero6 = 6'b0;
+    localparam  zero_brp = 10'b0;
 
     // Enums
     localparam Segment__Sync = 0;
@@ -6337,8 +6337,8 @@ module drcc_small__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cf
     localparam Segment__Tseg2 = 2;
 
     // Stub signals
-    reg  [5:0] brp_cnt__d;
-    reg  [5:0] brp_cnt__q;
+    reg  [9:0] brp_cnt__d;
+    reg  [9:0] brp_cnt__q;
     reg  [1:0] seg__d;
     reg  [1:0] seg__q;
     reg  [4:0] quantum__d;
@@ -6384,7 +6384,7 @@ module drcc_small__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cf
     reg  [4:0] tseg1_eff;
     reg  [3:0] tseg2_eff;
     reg  sample_value;
-    reg  [5:0] brp_cnt_n;
+    reg  [9:0] brp_cnt_n;
     reg  [4:0] quantum_next2;
     reg  [3:0] q2_next;
     reg  [3:0] q2_next2;
@@ -6427,10 +6427,10 @@ module drcc_small__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cf
         sjw_eff = cfg_sjw_len;
         tick = tick_q__q;
         if (rst || tick) begin
-            brp_cnt_n = zero6;
+            brp_cnt_n = zero_brp;
         end
         else begin
-            brp_cnt_n = brp_cnt__q + one6;
+            brp_cnt_n = brp_cnt__q + one_brp;
         end
         brp_cnt__d = brp_cnt_n;
         tick_q__d = brp_cnt_n >= cfg_brp_next;
@@ -6646,7 +6646,7 @@ module drcc_small__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cf
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [9:0] cfg_brp;
     input wire  [3:0] cfg_tseg1;
     input wire  [2:0] cfg_tseg2;
     input wire  [1:0] cfg_sjw;
@@ -6654,7 +6654,7 @@ module drcc_small__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cf
     input wire  [1:0] cfg_mode;
     input wire  [7:0] cfg_ewl;
     input wire  cfg_single_shot;
-    output reg  [5:0] brp_next;
+    output reg  [9:0] brp_next;
     output reg  triple;
     output reg  [1:0] mode;
     output reg  [7:0] ewl;
@@ -6683,8 +6683,8 @@ module drcc_small__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cf
     localparam  n4_0 = 4'h0;
     localparam  n4_1 = 4'h1;
     localparam  n4_2 = 4'h2;
-    localparam  n6_0 = 6'b0;
-    localparam  n6_1 = 6'b1;
+    localparam  brp_is_0 = 10'b0;
+    localparam  brp_is_1 = 10'b1;
 
     // Stub signals
     reg  [4:0] tseg1_len_q__d;
@@ -6693,8 +6693,8 @@ module drcc_small__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cf
     reg  [3:0] tseg2_len_q__q;
     reg  [3:0] sjw_len_q__d;
     reg  [3:0] sjw_len_q__q;
-    reg  [5:0] brp_q__d;
-    reg  [5:0] brp_q__q;
+    reg  [9:0] brp_q__d;
+    reg  [9:0] brp_q__q;
     reg  triple_q__d;
     reg  triple_q__q;
     reg  [1:0] mode_q__d;
@@ -6723,8 +6723,8 @@ module drcc_small__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cf
         tseg1_len_q__d = tseg1_len_q__q;
         tseg2_len_q__d = tseg2_len_q__q;
         sjw_len_q__d = sjw_len_q__q;
-        brp0 = cfg_brp == n6_0;
-        brp1 = cfg_brp == n6_1;
+        brp0 = cfg_brp == brp_is_0;
+        brp1 = cfg_brp == brp_is_1;
         if (cfg_tseg2 == n3_0) begin
             tseg1_low = n4_5;
             tseg1_low_len = n5_6;
@@ -8977,7 +8977,7 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
     output reg  [1:0] mode_b;
     output reg  single_shot;
     output reg  dmr;
-    output reg  [5:0] brp;
+    output reg  [9:0] brp;
     output reg  [3:0] tseg1;
     output reg  [2:0] tseg2;
     output reg  [1:0] sjw;
@@ -9005,6 +9005,8 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
     localparam  a_tx_cmd = 6'b10000;
     localparam  a_rx_cmd = 6'b10101;
     localparam  b_brp = 5'b0;
+    localparam  b_brp_ext = 5'b11000;
+    localparam  brp_ext_shift = 4'h6;
     localparam  b_tseg1 = 5'b110;
     localparam  b_tseg2 = 5'b1010;
     localparam  b_sjw = 5'b1101;
@@ -9027,7 +9029,7 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
     localparam  i_aux = 5'b111;
     localparam  i_dmr = 5'b1000;
     localparam  i_domain = 5'b1001;
-    localparam  btr_reset = 24'h600500;
+    localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
     localparam  queue_full = 4'h4;
@@ -9094,8 +9096,8 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
     wire  [3:0] ctrl_check__k_in;
     wire  ctrl_check__refused;
     wire  ctrl_check__illegal;
-    reg  [23:0] btr_q__d;
-    reg  [23:0] btr_q__q;
+    reg  [27:0] btr_q__d;
+    reg  [27:0] btr_q__q;
     reg  [31:0] rmb_cfg_q__d;
     reg  [31:0] rmb_cfg_q__q;
     reg  [14:0] window_q__d;
@@ -9314,7 +9316,7 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
             end
             else if (wb_adr_i == a_btr) begin
                 if (ctrl__reset_mode) begin
-                    btr_q__d = wb_dat_i[(32'h0)+:(24)];
+                    btr_q__d = wb_dat_i[(32'h0)+:(28)];
                 end
                 else begin
                     illegal = 1'b1;
@@ -9418,7 +9420,7 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
         single_shot = ctrl__single_shot;
         dmr = ctrl__dmr;
         wr_o = wr & full;
-        brp = btr_q__q[(b_brp)+:(6)];
+        brp = ((btr_q__q[(b_brp)+:(6)]) & 10'h3ff) | (((btr_q__q[(b_brp_ext)+:(4)]) & 10'h3ff) << brp_ext_shift);
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
         tseg2 = btr_q__q[(b_tseg2)+:(3)];
         sjw = btr_q__q[(b_sjw)+:(2)];
@@ -10836,7 +10838,7 @@ module drcc_small__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
     // Module arguments
     input wire  clk;
     input wire  hold;
-    input wire  [5:0] brp;
+    input wire  [9:0] brp;
     input wire  [3:0] tseg1;
     input wire  [2:0] tseg2;
     output reg  tick;
@@ -10845,15 +10847,15 @@ module drcc_small__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
     // Constant declarations
     localparam  one5 = 5'b1;
     localparam  two5 = 5'b10;
-    localparam  one6 = 6'b1;
+    localparam  one_brp = 10'b1;
     localparam  one16 = 16'h1;
     localparam  zero5 = 5'b0;
-    localparam  zero6 = 6'b0;
+    localparam  zero_brp = 10'b0;
     localparam  zero16 = 16'h0;
 
     // Stub signals
-    reg  [5:0] tq_cnt__d;
-    reg  [5:0] tq_cnt__q;
+    reg  [9:0] tq_cnt__d;
+    reg  [9:0] tq_cnt__q;
     reg  [4:0] bit_cnt__d;
     reg  [4:0] bit_cnt__q;
     reg  [15:0] now_q__d;
@@ -10870,11 +10872,11 @@ module drcc_small__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
         now_q__d = now_q__q;
         tq_last = ((tseg1) & 5'h1f) + ((tseg2) & 5'h1f) + two5;
         tick_l = (tq_cnt__q == brp) & (bit_cnt__q == tq_last);
-        tq_cnt__d = tq_cnt__q + one6;
+        tq_cnt__d = tq_cnt__q + one_brp;
         bit_cnt__d = bit_cnt__q;
         now_q__d = now_q__q;
         if (tq_cnt__q == brp) begin
-            tq_cnt__d = zero6;
+            tq_cnt__d = zero_brp;
             if (bit_cnt__q == tq_last) begin
                 bit_cnt__d = zero5;
             end
@@ -10886,7 +10888,7 @@ module drcc_small__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
             now_q__d = now_q__q + one16;
         end
         if (hold) begin
-            tq_cnt__d = zero6;
+            tq_cnt__d = zero_brp;
             bit_cnt__d = zero5;
             now_q__d = zero16;
             tick_l = 1'b0;

@@ -199,7 +199,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o
     reg  hub_cfg__reset_mode;
     wire  hub_cfg__hit;
     wire  [31:0] hub_cfg__rdata;
-    wire  [5:0] hub_cfg__brp;
+    wire  [9:0] hub_cfg__brp;
     wire  [3:0] hub_cfg__tseg1;
     wire  [2:0] hub_cfg__tseg2;
     wire  [1:0] hub_cfg__sjw;
@@ -242,7 +242,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o
     reg  [3:0] ack_unit__uplink;
     reg  [1:0] ack_unit__sublink_in;
     wire  [3:0] ack_unit__downlink;
-    reg  [5:0] ack_unit__cfg_brp_next;
+    reg  [9:0] ack_unit__cfg_brp_next;
     reg  [4:0] ack_unit__cfg_tseg1_len;
     reg  [3:0] ack_unit__cfg_tseg2_len;
     reg  [3:0] ack_unit__cfg_sjw_len;
@@ -256,7 +256,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o
     wire  ack_unit__ev_block;
     reg  cfg_regs__clk;
     reg  cfg_regs__rst;
-    reg  [5:0] cfg_regs__cfg_brp;
+    reg  [9:0] cfg_regs__cfg_brp;
     reg  [3:0] cfg_regs__cfg_tseg1;
     reg  [2:0] cfg_regs__cfg_tseg2;
     reg  [1:0] cfg_regs__cfg_sjw;
@@ -264,7 +264,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o
     reg  [1:0] cfg_regs__cfg_mode;
     reg  [7:0] cfg_regs__cfg_ewl;
     reg  cfg_regs__cfg_single_shot;
-    wire  [5:0] cfg_regs__brp_next;
+    wire  [9:0] cfg_regs__brp_next;
     wire  cfg_regs__triple;
     wire  [1:0] cfg_regs__mode;
     wire  [7:0] cfg_regs__ewl;
@@ -274,7 +274,7 @@ module hub(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o
     wire  [3:0] cfg_regs__sjw_len;
     reg  btl__clk;
     reg  btl__rst;
-    reg  [5:0] btl__cfg_brp_next;
+    reg  [9:0] btl__cfg_brp_next;
     reg  [4:0] btl__cfg_tseg1_len;
     reg  [3:0] btl__cfg_tseg2_len;
     reg  [3:0] btl__cfg_sjw_len;
@@ -1370,7 +1370,7 @@ module hub__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_brp_
     input wire  [3:0] uplink;
     input wire  [1:0] sublink_in;
     output reg  [3:0] downlink;
-    input wire  [5:0] cfg_brp_next;
+    input wire  [9:0] cfg_brp_next;
     input wire  [4:0] cfg_tseg1_len;
     input wire  [3:0] cfg_tseg2_len;
     input wire  [3:0] cfg_sjw_len;
@@ -1400,7 +1400,7 @@ module hub__ack_unit(clk,rst,trk_rst,btl_rst,uplink,sublink_in,downlink,cfg_brp_
     // Stub signals
     reg  u_btl__clk;
     reg  u_btl__rst;
-    reg  [5:0] u_btl__cfg_brp_next;
+    reg  [9:0] u_btl__cfg_brp_next;
     reg  [4:0] u_btl__cfg_tseg1_len;
     reg  [3:0] u_btl__cfg_tseg2_len;
     reg  [3:0] u_btl__cfg_sjw_len;
@@ -1599,7 +1599,7 @@ module hub__ack_unit__u_btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp_next;
+    input wire  [9:0] cfg_brp_next;
     input wire  [4:0] cfg_tseg1_len;
     input wire  [3:0] cfg_tseg2_len;
     input wire  [3:0] cfg_sjw_len;
@@ -1617,9 +1617,9 @@ module hub__ack_unit__u_btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg
     // Constant declarations
     localparam  one4 = 4'h1;
     localparam  one5 = 5'b1;
-    localparam  one6 = 6'b1;
+    localparam  one_brp = 10'b1;
     localparam  zero5 = 5'b0;
-    localparam  zero6 = 6'b0;
+    localparam  zero_brp = 10'b0;
 
     // Enums
     localparam Segment__Sync = 0;
@@ -1627,8 +1627,8 @@ module hub__ack_unit__u_btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg
     localparam Segment__Tseg2 = 2;
 
     // Stub signals
-    reg  [5:0] brp_cnt__d;
-    reg  [5:0] brp_cnt__q;
+    reg  [9:0] brp_cnt__d;
+    reg  [9:0] brp_cnt__q;
     reg  [1:0] seg__d;
     reg  [1:0] seg__q;
     reg  [4:0] quantum__d;
@@ -1674,7 +1674,7 @@ module hub__ack_unit__u_btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg
     reg  [4:0] tseg1_eff;
     reg  [3:0] tseg2_eff;
     reg  sample_value;
-    reg  [5:0] brp_cnt_n;
+    reg  [9:0] brp_cnt_n;
     reg  [4:0] quantum_next2;
     reg  [3:0] q2_next;
     reg  [3:0] q2_next2;
@@ -1717,10 +1717,10 @@ module hub__ack_unit__u_btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg
         sjw_eff = cfg_sjw_len;
         tick = tick_q__q;
         if (rst || tick) begin
-            brp_cnt_n = zero6;
+            brp_cnt_n = zero_brp;
         end
         else begin
-            brp_cnt_n = brp_cnt__q + one6;
+            brp_cnt_n = brp_cnt__q + one_brp;
         end
         brp_cnt__d = brp_cnt_n;
         tick_q__d = brp_cnt_n >= cfg_brp_next;
@@ -2207,7 +2207,7 @@ module hub__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     // Module arguments
     input wire  clk;
     input wire  rst;
-    input wire  [5:0] cfg_brp;
+    input wire  [9:0] cfg_brp;
     input wire  [3:0] cfg_tseg1;
     input wire  [2:0] cfg_tseg2;
     input wire  [1:0] cfg_sjw;
@@ -2215,7 +2215,7 @@ module hub__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     input wire  [1:0] cfg_mode;
     input wire  [7:0] cfg_ewl;
     input wire  cfg_single_shot;
-    output reg  [5:0] brp_next;
+    output reg  [9:0] brp_next;
     output reg  triple;
     output reg  [1:0] mode;
     output reg  [7:0] ewl;
@@ -2244,8 +2244,8 @@ module hub__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     localparam  n4_0 = 4'h0;
     localparam  n4_1 = 4'h1;
     localparam  n4_2 = 4'h2;
-    localparam  n6_0 = 6'b0;
-    localparam  n6_1 = 6'b1;
+    localparam  brp_is_0 = 10'b0;
+    localparam  brp_is_1 = 10'b1;
 
     // Stub signals
     reg  [4:0] tseg1_len_q__d;
@@ -2254,8 +2254,8 @@ module hub__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     reg  [3:0] tseg2_len_q__q;
     reg  [3:0] sjw_len_q__d;
     reg  [3:0] sjw_len_q__q;
-    reg  [5:0] brp_q__d;
-    reg  [5:0] brp_q__q;
+    reg  [9:0] brp_q__d;
+    reg  [9:0] brp_q__q;
     reg  triple_q__d;
     reg  triple_q__q;
     reg  [1:0] mode_q__d;
@@ -2284,8 +2284,8 @@ module hub__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         tseg1_len_q__d = tseg1_len_q__q;
         tseg2_len_q__d = tseg2_len_q__q;
         sjw_len_q__d = sjw_len_q__q;
-        brp0 = cfg_brp == n6_0;
-        brp1 = cfg_brp == n6_1;
+        brp0 = cfg_brp == brp_is_0;
+        brp1 = cfg_brp == brp_is_1;
         if (cfg_tseg2 == n3_0) begin
             tseg1_low = n4_5;
             tseg1_low_len = n5_6;
@@ -2717,7 +2717,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
     input wire  reset_mode;
     output reg  hit;
     output reg  [31:0] rdata;
-    output reg  [5:0] brp;
+    output reg  [9:0] brp;
     output reg  [3:0] tseg1;
     output reg  [2:0] tseg2;
     output reg  [1:0] sjw;
@@ -2746,6 +2746,8 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
     localparam  a_ntime = 6'b1100;
     localparam  a_nddsp = 6'b1101;
     localparam  b_brp = 4'h0;
+    localparam  b_brp_ext = 5'b11000;
+    localparam  brp_ext_shift = 4'h6;
     localparam  b_tseg1 = 4'h6;
     localparam  b_tseg2 = 4'ha;
     localparam  b_sjw = 4'hd;
@@ -2765,6 +2767,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
     localparam  n_ddsp_bits = 5'b0;
     localparam  n_block = 5'b10000;
     localparam  btr_reset = 15'b10100000000;
+    localparam  zero4 = 4'h0;
     localparam  sd_up_reset = 6'b1110;
     localparam  sd_sub_reset = 6'b11100;
     localparam  sd_min = 6'b1110;
@@ -2792,6 +2795,8 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
     // Stub signals
     reg  [14:0] btr_q__d;
     reg  [14:0] btr_q__q;
+    reg  [3:0] brp_ext_q__d;
+    reg  [3:0] brp_ext_q__q;
     reg  [5:0] sd_up_q__d;
     reg  [5:0] sd_up_q__q;
     reg  [5:0] sd_sub_q__d;
@@ -2841,6 +2846,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
     // Update code
     always @(*) begin
         btr_q__d = btr_q__q;
+        brp_ext_q__d = brp_ext_q__q;
         sd_up_q__d = sd_up_q__q;
         sd_sub_q__d = sd_sub_q__q;
         sr_q__d = sr_q__q;
@@ -2860,7 +2866,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
         rdata = zero32;
         if (adr == a_btr) begin
             hit = 1'b1;
-            rdata = ((btr_q__q) & 32'hffffffff);
+            rdata = ((btr_q__q) & 32'hffffffff) | (((brp_ext_q__q) & 32'hffffffff) << b_brp_ext);
         end
         else if (adr == a_guard) begin
             hit = 1'b1;
@@ -2902,6 +2908,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
         if (store) begin
             if (adr == a_btr) begin
                 btr_q__d = wdat[(32'h0)+:(15)];
+                brp_ext_q__d = wdat[(b_brp_ext)+:(4)];
             end
             else if (adr == a_guard) begin
                 if (w6a < sd_min) begin
@@ -2993,6 +3000,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
         end
         if (rst) begin
             btr_q__d = btr_reset;
+            brp_ext_q__d = zero4;
             sd_up_q__d = sd_up_reset;
             sd_sub_q__d = sd_sub_reset;
             sr_q__d = sr_reset;
@@ -3009,7 +3017,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
             ddsp_bits_q__d = ddsp_bits_reset;
             block_q__d = block_reset;
         end
-        brp = btr_q__q[(b_brp)+:(6)];
+        brp = ((btr_q__q[(b_brp)+:(6)]) & 10'h3ff) | (((brp_ext_q__q) & 10'h3ff) << brp_ext_shift);
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
         tseg2 = btr_q__q[(b_tseg2)+:(3)];
         sjw = btr_q__q[(b_sjw)+:(2)];
@@ -3033,6 +3041,7 @@ module hub__hub_cfg(clk,rst,wr,adr,wdat,reset_mode,hit,rdata,brp,tseg1,tseg2,sjw
     // Flip-flops
     always @(posedge clk) begin
         btr_q__q <= btr_q__d;
+        brp_ext_q__q <= brp_ext_q__d;
         sd_up_q__q <= sd_up_q__d;
         sd_sub_q__q <= sd_sub_q__d;
         sr_q__q <= sr_q__d;

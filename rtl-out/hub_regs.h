@@ -58,6 +58,8 @@
 #define HUB_BTR_TSEG2_MASK 0x00001C00u
 #define HUB_BTR_SJW_SHIFT 13u
 #define HUB_BTR_SJW_MASK 0x00006000u
+#define HUB_BTR_BRP_EXT_SHIFT 24u
+#define HUB_BTR_BRP_EXT_MASK 0x0F000000u
 
 /* GUARD_CFG: Port guard thresholds; writable only in reset mode (RW) */
 #define HUB_GUARD_CFG_OFFSET 0x0Cu

@@ -8,7 +8,7 @@
 module can_channel_tb;
   reg  clk;
   reg  rst;
-  reg  [5:0] cfg_brp;
+  reg  [9:0] cfg_brp;
   reg  [3:0] cfg_tseg1;
   reg  [2:0] cfg_tseg2;
   reg  [1:0] cfg_sjw;

@@ -24,7 +24,7 @@
 // clang-format off
 #define DRCC_CAN_CHANNEL_INPUTS(X) \
     X(uint8_t,  rst,              1)  /* Synchronous reset, active high: at an edge with `rst = 1` every register takes its reset value and the `cfg_*` inputs are captured (contract §1, §6). */ \
-    X(uint8_t,  cfg_brp,          6)  /* Baud-rate prescaler BRP, 0..63, taken as is (not a minus-one code): a time quantum lasts `cfg_brp + 1` clocks. Captured while `rst = 1`. */ \
+    X(uint16_t, cfg_brp,         10)  /* Baud-rate prescaler BRP, 0..1023, taken as is (not a minus-one code): a time quantum lasts `cfg_brp + 1` clocks. Captured while `rst = 1`. */ \
     X(uint8_t,  cfg_tseg1,        4)  /* TSEG1 minus one: PROP_SEG + PHASE_SEG1 lasts `cfg_tseg1 + 1` tq (1..16), lengthened if needed so a bit has at least 8 tq and TSEG1 at least 3 clocks (contract §6). Captured while `rst = 1`. */ \
     X(uint8_t,  cfg_tseg2,        3)  /* TSEG2 minus one: PHASE_SEG2 lasts `cfg_tseg2 + 1` tq (1..8). Captured while `rst = 1`. */ \
     X(uint8_t,  cfg_sjw,          2)  /* SJW minus one: the resynchronisation jump width is `min(cfg_sjw + 1, TSEG2)` tq (1..4). Captured while `rst = 1`. */ \

@@ -7,6 +7,9 @@
 // Contract:   cosim/src/model/drcc_contract.md
 // Source:     hdl/src/drcc.rs (`DrccCore`, port docs from its `///` comments)
 // Parameters: M = 16, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32, DMR = 1, STAR = 1
+// Verilog parameters: RX_FIFO_DEPTH, TX_QUEUE_DEPTH, HISTORY, STAR, set per instance within their
+// offer (the top's declarations); M (and DMR, which mailboxes need) is fixed when the file is
+// generated.
 //
 // Ports:
 // dir    width  port                           meaning
@@ -120,6 +123,32 @@
 
 
 module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick);
+    // Sizes (drcc_contract.md §1.1), settable per instance; each default is
+    // this file's generated size. A value outside the offer stops elaboration.
+    // RX FIFO entries (drcc_contract.md §7): a frame that arrives with this many waiting overruns;
+    // one of 4, 8, 16, 32.
+    parameter integer RX_FIFO_DEPTH = 32;
+    // entries of each TX queue (§6): a push to a full queue is refused; one of 2, 4, 8.
+    parameter integer TX_QUEUE_DEPTH = 8;
+    // frames duplicate removal remembers (§7); one of 4, 8, 16, 32.
+    parameter integer HISTORY = 32;
+    // 1: the replicated-star node (CTRL.star, §4.4); 0: a CTRL write with star is refused; one of
+    // 0, 1.
+    parameter integer STAR = 1;
+    generate
+        if (RX_FIFO_DEPTH != 4 && RX_FIFO_DEPTH != 8 && RX_FIFO_DEPTH != 16 && RX_FIFO_DEPTH != 32) begin : refuse_rx_fifo_depth
+            RX_FIFO_DEPTH_must_be_4_8_16_or_32 refused();
+        end
+        if (TX_QUEUE_DEPTH != 2 && TX_QUEUE_DEPTH != 4 && TX_QUEUE_DEPTH != 8) begin : refuse_tx_queue_depth
+            TX_QUEUE_DEPTH_must_be_2_4_or_8 refused();
+        end
+        if (HISTORY != 4 && HISTORY != 8 && HISTORY != 16 && HISTORY != 32) begin : refuse_history
+            HISTORY_must_be_4_8_16_or_32 refused();
+        end
+        if (STAR != 0 && STAR != 1) begin : refuse_star
+            STAR_must_be_0_or_1 refused();
+        end
+    endgenerate
 
     // Module arguments
     // Clock. Every register changes at its rising edge; the channels' bit timing (register `BTR`)
@@ -799,7 +828,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
     reg  [3:0] eval_mb;
 
     // Sub module instances
-    drcc__regs regs(
+    drcc__regs #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0]), .STAR(STAR[0:0])) regs(
         .clk(regs__clk),
         .rst(regs__rst),
         .wb_cyc_i(regs__wb_cyc_i),
@@ -1192,7 +1221,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .fail_evt(aux_b__fail_evt),
         .recover_evt(aux_b__recover_evt)
     );
-    drcc__txbuf txbuf(
+    drcc__txbuf #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0])) txbuf(
         .clk(txbuf__clk),
         .clear(txbuf__clear),
         .redundancy(txbuf__redundancy),
@@ -1217,7 +1246,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .done_evt(txbuf__done_evt),
         .failed_evt(txbuf__failed_evt)
     );
-    drcc__rxfifo rxfifo(
+    drcc__rxfifo #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0])) rxfifo(
         .clk(rxfifo__clk),
         .clear(rxfifo__clear),
         .wr(rxfifo__wr),
@@ -1227,7 +1256,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .rd_data(rxfifo__rd_data),
         .rx_ready(rxfifo__rx_ready)
     );
-    drcc__rxw rxw(
+    drcc__rxw #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0]), .HISTORY(HISTORY[5:0])) rxw(
         .clk(rxw__clk),
         .rst(rxw__rst),
         .clear(rxw__clear),
@@ -10001,6 +10030,8 @@ endmodule // drcc__main
 
 
 module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  clk;
@@ -10100,7 +10131,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
-    localparam  queue_full = 4'h8;
+    localparam [3:0] queue_full = TX_QUEUE_DEPTH;
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
@@ -10221,7 +10252,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .int_enable_we(bus__int_enable_we),
         .int_enable_d(bus__int_enable_d)
     );
-    drcc__regs__ctrl ctrl(
+    drcc__regs__ctrl #(.STAR(STAR)) ctrl(
         .clk(ctrl__clk),
         .rst(ctrl__rst),
         .we(ctrl__we),
@@ -10241,7 +10272,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .single_shot(ctrl__single_shot),
         .dmr(ctrl__dmr)
     );
-    drcc__regs__ctrl_check ctrl_check(
+    drcc__regs__ctrl_check #(.STAR(STAR)) ctrl_check(
         .wdat(ctrl_check__wdat),
         .reset_mode(ctrl_check__reset_mode),
         .redundancy(ctrl_check__redundancy),
@@ -10605,6 +10636,7 @@ endmodule // drcc__regs__bus
 
 
 module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr);
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  clk;
@@ -10642,7 +10674,7 @@ module drcc__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_
     localparam  k_reset = 4'h1;
     localparam  mode_reset = 2'b0;
     localparam  dmr_present = 1'b1;
-    localparam  star_present = 1'b1;
+    localparam [0:0] star_present = STAR;
 
     // Stub signals
     reg  reset_mode_q__d;
@@ -10747,6 +10779,7 @@ endmodule // drcc__regs__ctrl
 
 
 module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  [31:0] wdat;
@@ -10778,7 +10811,7 @@ module drcc__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,m
     localparam  zero4 = 4'h0;
     localparam  one4 = 4'h1;
     localparam  dmr_present = 1'b1;
-    localparam  star_present = 1'b1;
+    localparam [0:0] star_present = STAR;
 
     // Local signals
     reg  cfg_differs;
@@ -10807,6 +10840,7 @@ endmodule // drcc__regs__ctrl_check
 
 
 module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd32;
 
     // Module arguments
     input wire  clk;
@@ -10819,7 +10853,7 @@ module drcc__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     output reg  rx_ready;
 
     // Constant declarations
-    localparam  mask = 5'b11111;
+    localparam [4:0] mask = RX_FIFO_DEPTH[4:0] - 5'd1;
     localparam  one5 = 5'b1;
     localparam  one6 = 6'b1;
     localparam  zero5 = 5'b0;
@@ -10929,6 +10963,8 @@ endmodule // drcc__rx
 
 
 module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd32;
+    parameter [5:0] HISTORY = 6'd32;
 
     // Module arguments
     input wire  clk;
@@ -10970,9 +11006,9 @@ module drcc__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,fram
     localparam  one5 = 5'b1;
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
-    localparam  last_scan = 6'b100000;
-    localparam  hmask = 5'b11111;
-    localparam  fifo_depth = 6'b100000;
+    localparam [5:0] last_scan = HISTORY;
+    localparam [4:0] hmask = HISTORY[4:0] - 5'd1;
+    localparam [5:0] fifo_depth = RX_FIFO_DEPTH;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  zero15 = 15'b0;
@@ -11976,6 +12012,7 @@ endmodule // drcc__ticker
 
 
 module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
 
     // Module arguments
     input wire  clk;
@@ -12003,7 +12040,7 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
     output reg  failed_evt;
 
     // Constant declarations
-    localparam  qmask = 3'b111;
+    localparam [2:0] qmask = TX_QUEUE_DEPTH[2:0] - 3'd1;
     localparam  one3 = 3'b1;
     localparam  one4 = 4'h1;
     localparam  zero3 = 3'b0;

@@ -7,6 +7,9 @@
 // Contract:   cosim/src/model/bus_contract.md
 // Source:     hdl/src/bus/drcc_tops.rs (`DrccApb`, port docs from its `///` comments)
 // Parameters: M = 16, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32, DMR = 1, STAR = 1, BUS = apb
+// Verilog parameters: RX_FIFO_DEPTH, TX_QUEUE_DEPTH, HISTORY, STAR, set per instance within their
+// offer (the top's declarations); M (and DMR, which mailboxes need) is fixed when the file is
+// generated.
 //
 // Ports:
 // dir    width  port           meaning
@@ -41,6 +44,32 @@
 
 
 module drcc_apb(clk,rst,s_apb_psel,s_apb_penable,s_apb_pwrite,s_apb_paddr,s_apb_pwdata,s_apb_pstrb,s_apb_prdata,s_apb_pready,s_apb_pslverr,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx);
+    // Sizes (drcc_contract.md §1.1), settable per instance; each default is
+    // this file's generated size. A value outside the offer stops elaboration.
+    // RX FIFO entries (drcc_contract.md §7): a frame that arrives with this many waiting overruns;
+    // one of 4, 8, 16, 32.
+    parameter integer RX_FIFO_DEPTH = 32;
+    // entries of each TX queue (§6): a push to a full queue is refused; one of 2, 4, 8.
+    parameter integer TX_QUEUE_DEPTH = 8;
+    // frames duplicate removal remembers (§7); one of 4, 8, 16, 32.
+    parameter integer HISTORY = 32;
+    // 1: the replicated-star node (CTRL.star, §4.4); 0: a CTRL write with star is refused; one of
+    // 0, 1.
+    parameter integer STAR = 1;
+    generate
+        if (RX_FIFO_DEPTH != 4 && RX_FIFO_DEPTH != 8 && RX_FIFO_DEPTH != 16 && RX_FIFO_DEPTH != 32) begin : refuse_rx_fifo_depth
+            RX_FIFO_DEPTH_must_be_4_8_16_or_32 refused();
+        end
+        if (TX_QUEUE_DEPTH != 2 && TX_QUEUE_DEPTH != 4 && TX_QUEUE_DEPTH != 8) begin : refuse_tx_queue_depth
+            TX_QUEUE_DEPTH_must_be_2_4_or_8 refused();
+        end
+        if (HISTORY != 4 && HISTORY != 8 && HISTORY != 16 && HISTORY != 32) begin : refuse_history
+            HISTORY_must_be_4_8_16_or_32 refused();
+        end
+        if (STAR != 0 && STAR != 1) begin : refuse_star
+            STAR_must_be_0_or_1 refused();
+        end
+    endgenerate
 
     // Module arguments
     // Clock (`PCLK`). The channels' bit timing (`BTR`) counts its periods.
@@ -189,7 +218,7 @@ module drcc_apb(clk,rst,s_apb_psel,s_apb_penable,s_apb_pwrite,s_apb_paddr,s_apb_
         .wb_ack_i(bridge__wb_ack_i),
         .wb_err_i(bridge__wb_err_i)
     );
-    drcc_apb__core core(
+    drcc_apb__core #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0]), .TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0]), .HISTORY(HISTORY[5:0]), .STAR(STAR[0:0])) core(
         .clk(core__clk),
         .rst(core__rst),
         .wb_cyc_i(core__wb_cyc_i),
@@ -308,6 +337,10 @@ endmodule // drcc_apb__bridge
 
 
 module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd32;
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
+    parameter [5:0] HISTORY = 6'd32;
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  clk;
@@ -925,7 +958,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  [3:0] eval_mb;
 
     // Sub module instances
-    drcc_apb__core__regs regs(
+    drcc_apb__core__regs #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH), .STAR(STAR)) regs(
         .clk(regs__clk),
         .rst(regs__rst),
         .wb_cyc_i(regs__wb_cyc_i),
@@ -1318,7 +1351,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .fail_evt(aux_b__fail_evt),
         .recover_evt(aux_b__recover_evt)
     );
-    drcc_apb__core__txbuf txbuf(
+    drcc_apb__core__txbuf #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH)) txbuf(
         .clk(txbuf__clk),
         .clear(txbuf__clear),
         .redundancy(txbuf__redundancy),
@@ -1343,7 +1376,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .done_evt(txbuf__done_evt),
         .failed_evt(txbuf__failed_evt)
     );
-    drcc_apb__core__rxfifo rxfifo(
+    drcc_apb__core__rxfifo #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH)) rxfifo(
         .clk(rxfifo__clk),
         .clear(rxfifo__clear),
         .wr(rxfifo__wr),
@@ -1353,7 +1386,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .rd_data(rxfifo__rd_data),
         .rx_ready(rxfifo__rx_ready)
     );
-    drcc_apb__core__rxw rxw(
+    drcc_apb__core__rxw #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH), .HISTORY(HISTORY)) rxw(
         .clk(rxw__clk),
         .rst(rxw__rst),
         .clear(rxw__clear),
@@ -10127,6 +10160,8 @@ endmodule // drcc_apb__core__main
 
 
 module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  clk;
@@ -10226,7 +10261,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
-    localparam  queue_full = 4'h8;
+    localparam [3:0] queue_full = TX_QUEUE_DEPTH;
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
@@ -10347,7 +10382,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         .int_enable_we(bus__int_enable_we),
         .int_enable_d(bus__int_enable_d)
     );
-    drcc_apb__core__regs__ctrl ctrl(
+    drcc_apb__core__regs__ctrl #(.STAR(STAR)) ctrl(
         .clk(ctrl__clk),
         .rst(ctrl__rst),
         .we(ctrl__we),
@@ -10367,7 +10402,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         .single_shot(ctrl__single_shot),
         .dmr(ctrl__dmr)
     );
-    drcc_apb__core__regs__ctrl_check ctrl_check(
+    drcc_apb__core__regs__ctrl_check #(.STAR(STAR)) ctrl_check(
         .wdat(ctrl_check__wdat),
         .reset_mode(ctrl_check__reset_mode),
         .redundancy(ctrl_check__redundancy),
@@ -10731,6 +10766,7 @@ endmodule // drcc_apb__core__regs__bus
 
 
 module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr);
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  clk;
@@ -10768,7 +10804,7 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
     localparam  k_reset = 4'h1;
     localparam  mode_reset = 2'b0;
     localparam  dmr_present = 1'b1;
-    localparam  star_present = 1'b1;
+    localparam [0:0] star_present = STAR;
 
     // Stub signals
     reg  reset_mode_q__d;
@@ -10873,6 +10909,7 @@ endmodule // drcc_apb__core__regs__ctrl
 
 
 module drcc_apb__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  [31:0] wdat;
@@ -10904,7 +10941,7 @@ module drcc_apb__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_t
     localparam  zero4 = 4'h0;
     localparam  one4 = 4'h1;
     localparam  dmr_present = 1'b1;
-    localparam  star_present = 1'b1;
+    localparam [0:0] star_present = STAR;
 
     // Local signals
     reg  cfg_differs;
@@ -10933,6 +10970,7 @@ endmodule // drcc_apb__core__regs__ctrl_check
 
 
 module drcc_apb__core__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd32;
 
     // Module arguments
     input wire  clk;
@@ -10945,7 +10983,7 @@ module drcc_apb__core__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     output reg  rx_ready;
 
     // Constant declarations
-    localparam  mask = 5'b11111;
+    localparam [4:0] mask = RX_FIFO_DEPTH[4:0] - 5'd1;
     localparam  one5 = 5'b1;
     localparam  one6 = 6'b1;
     localparam  zero5 = 5'b0;
@@ -11055,6 +11093,8 @@ endmodule // drcc_apb__core__rx
 
 
 module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd32;
+    parameter [5:0] HISTORY = 6'd32;
 
     // Module arguments
     input wire  clk;
@@ -11096,9 +11136,9 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
     localparam  one5 = 5'b1;
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
-    localparam  last_scan = 6'b100000;
-    localparam  hmask = 5'b11111;
-    localparam  fifo_depth = 6'b100000;
+    localparam [5:0] last_scan = HISTORY;
+    localparam [4:0] hmask = HISTORY[4:0] - 5'd1;
+    localparam [5:0] fifo_depth = RX_FIFO_DEPTH;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  zero15 = 15'b0;
@@ -12102,6 +12142,7 @@ endmodule // drcc_apb__core__ticker
 
 
 module drcc_apb__core__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
 
     // Module arguments
     input wire  clk;
@@ -12129,7 +12170,7 @@ module drcc_apb__core__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,pu
     output reg  failed_evt;
 
     // Constant declarations
-    localparam  qmask = 3'b111;
+    localparam [2:0] qmask = TX_QUEUE_DEPTH[2:0] - 3'd1;
     localparam  one3 = 3'b1;
     localparam  one4 = 4'h1;
     localparam  zero3 = 3'b0;

@@ -7,6 +7,8 @@
 // Contract:   cosim/src/model/drcc_contract.md
 // Source:     hdl/src/drcc.rs (`DrccCore`, port docs from its `///` comments)
 // Parameters: M = 0, RX_FIFO_DEPTH = 8, TX_QUEUE_DEPTH = 4, HISTORY = 16, DMR = 0, STAR = 0
+// Verilog parameters: RX_FIFO_DEPTH, TX_QUEUE_DEPTH, HISTORY, DMR, STAR, set per instance within
+// their offer (the top's declarations); M is fixed when the file is generated.
 //
 // Ports:
 // dir    width  port                           meaning
@@ -121,6 +123,37 @@
 
 
 module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick);
+    // Sizes (drcc_contract.md §1.1), settable per instance; each default is
+    // this file's generated size. A value outside the offer stops elaboration.
+    // RX FIFO entries (drcc_contract.md §7): a frame that arrives with this many waiting overruns;
+    // one of 4, 8, 16, 32.
+    parameter integer RX_FIFO_DEPTH = 8;
+    // entries of each TX queue (§6): a push to a full queue is refused; one of 2, 4, 8.
+    parameter integer TX_QUEUE_DEPTH = 4;
+    // frames duplicate removal remembers (§7); one of 4, 8, 16, 32.
+    parameter integer HISTORY = 16;
+    // 1: the CiA 701 DMR function (CTRL.dmr); 0: a CTRL write with dmr is refused; one of 0, 1.
+    parameter integer DMR = 0;
+    // 1: the replicated-star node (CTRL.star, §4.4); 0: a CTRL write with star is refused; one of
+    // 0, 1.
+    parameter integer STAR = 0;
+    generate
+        if (RX_FIFO_DEPTH != 4 && RX_FIFO_DEPTH != 8 && RX_FIFO_DEPTH != 16 && RX_FIFO_DEPTH != 32) begin : refuse_rx_fifo_depth
+            RX_FIFO_DEPTH_must_be_4_8_16_or_32 refused();
+        end
+        if (TX_QUEUE_DEPTH != 2 && TX_QUEUE_DEPTH != 4 && TX_QUEUE_DEPTH != 8) begin : refuse_tx_queue_depth
+            TX_QUEUE_DEPTH_must_be_2_4_or_8 refused();
+        end
+        if (HISTORY != 4 && HISTORY != 8 && HISTORY != 16 && HISTORY != 32) begin : refuse_history
+            HISTORY_must_be_4_8_16_or_32 refused();
+        end
+        if (DMR != 0 && DMR != 1) begin : refuse_dmr
+            DMR_must_be_0_or_1 refused();
+        end
+        if (STAR != 0 && STAR != 1) begin : refuse_star
+            STAR_must_be_0_or_1 refused();
+        end
+    endgenerate
 
     // Module arguments
     // Clock. Every register changes at its rising edge; the channels' bit timing (register `BTR`)
@@ -762,7 +795,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     reg  [3:0] eval_mb;
 
     // Sub module instances
-    drcc_small__regs regs(
+    drcc_small__regs #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0]), .DMR(DMR[0:0]), .STAR(STAR[0:0])) regs(
         .clk(regs__clk),
         .rst(regs__rst),
         .wb_cyc_i(regs__wb_cyc_i),
@@ -819,7 +852,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .tx_frame(regs__tx_frame),
         .pop(regs__pop)
     );
-    drcc_small__dmr_check dmr_check(
+    drcc_small__dmr_check #(.DMR(DMR[0:0])) dmr_check(
         .adr(dmr_check__adr),
         .wdat(dmr_check__wdat),
         .reset_mode(dmr_check__reset_mode),
@@ -1113,7 +1146,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .fail_evt(aux_b__fail_evt),
         .recover_evt(aux_b__recover_evt)
     );
-    drcc_small__txbuf txbuf(
+    drcc_small__txbuf #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0])) txbuf(
         .clk(txbuf__clk),
         .clear(txbuf__clear),
         .redundancy(txbuf__redundancy),
@@ -1138,7 +1171,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .done_evt(txbuf__done_evt),
         .failed_evt(txbuf__failed_evt)
     );
-    drcc_small__rxfifo rxfifo(
+    drcc_small__rxfifo #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0])) rxfifo(
         .clk(rxfifo__clk),
         .clear(rxfifo__clear),
         .wr(rxfifo__wr),
@@ -1148,7 +1181,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .rd_data(rxfifo__rd_data),
         .rx_ready(rxfifo__rx_ready)
     );
-    drcc_small__rxw rxw(
+    drcc_small__rxw #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0]), .HISTORY(HISTORY[5:0])) rxw(
         .clk(rxw__clk),
         .rst(rxw__rst),
         .clear(rxw__clear),
@@ -6862,6 +6895,7 @@ endmodule // drcc_small__chan__rx_sync__rx_sync
 
 
 module drcc_small__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_id_word,mb_mask,status_word,cs_count_word,rx_stats_word,mb_state_word,hit,word,writable,illegal);
+    parameter [0:0] DMR = 1'd0;
 
     // Module arguments
     input wire  [5:0] adr;
@@ -6903,7 +6937,7 @@ module drcc_small__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs
     localparam  zero7 = 7'b0;
     localparam  zero16 = 16'h0;
     localparam  zero32 = 32'h0;
-    localparam  dmr_present = 1'b0;
+    localparam [0:0] dmr_present = DMR;
 
     // Local signals
     reg  sel_enabled;
@@ -8933,6 +8967,9 @@ endmodule // drcc_small__main
 
 
 module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd4;
+    parameter [0:0] DMR = 1'd0;
+    parameter [0:0] STAR = 1'd0;
 
     // Module arguments
     input wire  clk;
@@ -9032,7 +9069,7 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
     localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
-    localparam  queue_full = 4'h4;
+    localparam [3:0] queue_full = TX_QUEUE_DEPTH;
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
@@ -9153,7 +9190,7 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
         .int_enable_we(bus__int_enable_we),
         .int_enable_d(bus__int_enable_d)
     );
-    drcc_small__regs__ctrl ctrl(
+    drcc_small__regs__ctrl #(.DMR(DMR), .STAR(STAR)) ctrl(
         .clk(ctrl__clk),
         .rst(ctrl__rst),
         .we(ctrl__we),
@@ -9173,7 +9210,7 @@ module drcc_small__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
         .single_shot(ctrl__single_shot),
         .dmr(ctrl__dmr)
     );
-    drcc_small__regs__ctrl_check ctrl_check(
+    drcc_small__regs__ctrl_check #(.DMR(DMR), .STAR(STAR)) ctrl_check(
         .wdat(ctrl_check__wdat),
         .reset_mode(ctrl_check__reset_mode),
         .redundancy(ctrl_check__redundancy),
@@ -9537,6 +9574,8 @@ endmodule // drcc_small__regs__bus
 
 
 module drcc_small__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr);
+    parameter [0:0] DMR = 1'd0;
+    parameter [0:0] STAR = 1'd0;
 
     // Module arguments
     input wire  clk;
@@ -9573,8 +9612,8 @@ module drcc_small__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset
     localparam  policy_reset = 2'b1;
     localparam  k_reset = 4'h1;
     localparam  mode_reset = 2'b0;
-    localparam  dmr_present = 1'b0;
-    localparam  star_present = 1'b0;
+    localparam [0:0] dmr_present = DMR;
+    localparam [0:0] star_present = STAR;
 
     // Stub signals
     reg  reset_mode_q__d;
@@ -9679,6 +9718,8 @@ endmodule // drcc_small__regs__ctrl
 
 
 module drcc_small__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
+    parameter [0:0] DMR = 1'd0;
+    parameter [0:0] STAR = 1'd0;
 
     // Module arguments
     input wire  [31:0] wdat;
@@ -9709,8 +9750,8 @@ module drcc_small__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,st
     localparam  mode_listen = 2'b1;
     localparam  zero4 = 4'h0;
     localparam  one4 = 4'h1;
-    localparam  dmr_present = 1'b0;
-    localparam  star_present = 1'b0;
+    localparam [0:0] dmr_present = DMR;
+    localparam [0:0] star_present = STAR;
 
     // Local signals
     reg  cfg_differs;
@@ -9739,6 +9780,7 @@ endmodule // drcc_small__regs__ctrl_check
 
 
 module drcc_small__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd8;
 
     // Module arguments
     input wire  clk;
@@ -9751,7 +9793,7 @@ module drcc_small__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     output reg  rx_ready;
 
     // Constant declarations
-    localparam  mask = 5'b111;
+    localparam [4:0] mask = RX_FIFO_DEPTH[4:0] - 5'd1;
     localparam  one5 = 5'b1;
     localparam  one6 = 6'b1;
     localparam  zero5 = 5'b0;
@@ -9861,6 +9903,8 @@ endmodule // drcc_small__rx
 
 
 module drcc_small__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd8;
+    parameter [5:0] HISTORY = 6'd16;
 
     // Module arguments
     input wire  clk;
@@ -9902,9 +9946,9 @@ module drcc_small__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_
     localparam  one5 = 5'b1;
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
-    localparam  last_scan = 6'b10000;
-    localparam  hmask = 5'b1111;
-    localparam  fifo_depth = 6'b1000;
+    localparam [5:0] last_scan = HISTORY;
+    localparam [4:0] hmask = HISTORY[4:0] - 5'd1;
+    localparam [5:0] fifo_depth = RX_FIFO_DEPTH;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  zero15 = 15'b0;
@@ -10908,6 +10952,7 @@ endmodule // drcc_small__ticker
 
 
 module drcc_small__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd4;
 
     // Module arguments
     input wire  clk;
@@ -10935,7 +10980,7 @@ module drcc_small__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,p
     output reg  failed_evt;
 
     // Constant declarations
-    localparam  qmask = 3'b11;
+    localparam [2:0] qmask = TX_QUEUE_DEPTH[2:0] - 3'd1;
     localparam  one3 = 3'b1;
     localparam  one4 = 4'h1;
     localparam  zero3 = 3'b0;

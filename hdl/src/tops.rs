@@ -24,6 +24,7 @@
 
 mod configured;
 pub mod fusesoc;
+pub mod params;
 pub mod port_docs;
 pub mod readable;
 pub mod shim_table;

@@ -44,15 +44,15 @@ filesets:
       - tb/{name}_tb.v
     file_type: verilogSource
 
-targets:
+{param_section}targets:
   default:
     filesets: [rtl]
-    toplevel: {name}
+{target_params}    toplevel: {name}
   lint:
     description: Verilator -Wall with the repository's waivers
     default_tool: verilator
     filesets: [waivers, rtl]
-    toplevel: {name}
+{target_params}    toplevel: {name}
     tools:
       verilator:
         mode: lint-only
@@ -69,16 +69,47 @@ targets:
     description: yosys synthesis for iCE40
     default_tool: yosys
     filesets: [rtl]
-    toplevel: {name}
+{target_params}    toplevel: {name}
     tools:
       yosys:
         arch: ice40
         output_format: json
 ",
         spdx = crate::generated::spdx_line(".core"),
+        param_section = param_section(top),
+        target_params = target_params(top),
         summary = top.summary.replace('"', "'"),
         summary_short = top.summary.split(':').next().unwrap_or(top.summary),
     )
+}
+
+/// The `parameters:` section: the top's sizes that are Verilog parameters
+/// (`fusesoc run --target lint ... --RX_FIFO_DEPTH=8`).
+fn param_section(top: &Top) -> String {
+    let sizes = super::params::verilog_parameters(top.params);
+    if sizes.is_empty() {
+        return String::new();
+    }
+    let mut t = String::from("parameters:\n");
+    for (name, value) in sizes {
+        t.push_str(&format!(
+            "  {name}:\n    datatype: int\n    default: {value}\n    paramtype: vlogparam\n    \
+             description: \"{}\"\n",
+            super::params::describe(name)
+        ));
+    }
+    t.push('\n');
+    t
+}
+
+/// A target's `parameters:` line, if the top has sizes as parameters.
+fn target_params(top: &Top) -> String {
+    let sizes = super::params::verilog_parameters(top.params);
+    if sizes.is_empty() {
+        return String::new();
+    }
+    let names: Vec<&str> = sizes.iter().map(|(n, _)| *n).collect();
+    format!("    parameters: [{}]\n", names.join(", "))
 }
 
 /// The text of `rtl-out/tb/<name>_tb.v`: the smoke testbench of [`core_file`]'s

@@ -14,6 +14,7 @@ const WIDTH: usize = 100;
 pub fn finish(top: &Top, raw: &str, ports: &[Port]) -> String {
     let body = super::readable::readable(&strip_initial_blocks(&rename_modules(top.name, raw)));
     let body = comment_declarations(top.name, &body, ports);
+    let body = super::params::parameterize(top.name, &body, top.params);
     let mut text = header(top, ports);
     text.push_str(body.trim_end());
     text.push('\n');
@@ -43,6 +44,7 @@ pub fn header(top: &Top, ports: &[Port]) -> String {
          // Contract:   {contract}\n\
          // Source:     {source} (`{block}`, port docs from its `///` comments)\n\
          // Parameters: {params}\n\
+         {verilog_params}\
          //\n",
         spdx = crate::generated::spdx_line(".v"),
         name = top.name,
@@ -62,6 +64,7 @@ pub fn header(top: &Top, ports: &[Port]) -> String {
                 .collect::<Vec<_>>()
                 .join(", ")
         },
+        verilog_params = verilog_params_line(top),
     );
     h.push_str(&port_table(ports));
     if !top.notes.is_empty() {
@@ -73,6 +76,31 @@ pub fn header(top: &Top, ports: &[Port]) -> String {
     }
     h.push('\n');
     h
+}
+
+/// The header line naming the sizes that are Verilog parameters, if any.
+fn verilog_params_line(top: &Top) -> String {
+    let sizes = super::params::verilog_parameters(top.params);
+    if sizes.is_empty() {
+        return String::new();
+    }
+    let names: Vec<&str> = sizes.iter().map(|(n, _)| *n).collect();
+    let fixed = if names.contains(&"DMR") {
+        ""
+    } else {
+        " (and DMR, which mailboxes need)"
+    };
+    wrap(
+        &format!(
+            "Verilog parameters: {}, set per instance within their offer (the top's \
+             declarations); M{fixed} is fixed when the file is generated.",
+            names.join(", ")
+        ),
+        WIDTH - 3,
+    )
+    .iter()
+    .map(|l| format!("// {l}\n"))
+    .collect()
 }
 
 /// One row per port: `dir width name meaning`, the meaning wrapped under itself.

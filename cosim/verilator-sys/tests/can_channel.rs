@@ -214,7 +214,7 @@ fn single_eval_edge_matches_two_evals() {
         // A reset with new bit timing every 50k clocks (and at the start).
         let rst = n % 50_000 < 2;
         if n % 50_000 == 0 {
-            let brp = rng.below(3) as u8;
+            let brp = rng.below(3) as u16;
             let tseg2 = 2 + rng.below(3) as u8;
             for i in &mut inputs {
                 i.cfg_brp = brp;

@@ -1,7 +1,8 @@
 //! Every offered configuration (drcc_contract.md §1.1, `drcc_hdl::config`) emits
 //! the same Verilog as the proven top with its `M` (`drcc` or `drcc_m0`) except
-//! for the values of the parameters' `localparam`s: the sizes and the mode
-//! switches (`dmr`, `star`) change constants only, never the structure. So the lint of `drcc`, `drcc_m0` and
+//! for the defaults of the size parameters (`parameter ... = value;`, which set
+//! the `localparam`s): the sizes and the mode switches (`dmr`, `star`) change
+//! constants only, never the structure. So the lint of `drcc`, `drcc_m0` and
 //! `drcc_small` (hdl/lint/lint.sh) speaks for every configuration's structure,
 //! and the lock step of `drcc_small` (testbench/tests/drcc_small_faults.rs,
 //! drcc_sizes.rs) for the constants' meaning.
@@ -9,18 +10,21 @@
 use drcc_hdl::config::{DrccConfig, HISTORY_SIZES, RX_FIFO_DEPTHS, TX_QUEUE_DEPTHS};
 use drcc_hdl::tops::drcc_with_config;
 
-/// The Verilog with the header comment dropped and every localparam's value
-/// blanked (`localparam  mask = 5'b11111;` -> `localparam  mask;`).
+/// The Verilog with the header comment dropped and every parameter's and
+/// localparam's value blanked (`parameter integer HISTORY = 32;` ->
+/// `parameter integer HISTORY;`).
 fn structure(cfg: &DrccConfig) -> String {
     let v = drcc_with_config("drcc_cfg", cfg).unwrap();
     let body = &v[v.find("module drcc_cfg(").expect("module")..];
     body.lines()
-        .map(
-            |l| match (l.trim_start().starts_with("localparam"), l.find('=')) {
+        .map(|l| {
+            let t = l.trim_start();
+            let constant = t.starts_with("localparam") || t.starts_with("parameter");
+            match (constant, l.find('=')) {
                 (true, Some(eq)) => format!("{};", l[..eq].trim_end()),
                 _ => l.to_string(),
-            },
-        )
+            }
+        })
         .collect::<Vec<_>>()
         .join("\n")
 }
@@ -84,9 +88,9 @@ fn sizes_change_localparam_values_only() {
     }
 }
 
-/// And the values do change: the smallest configuration's localparams differ
-/// from the default's exactly where the contract's sizes are (the masks and
-/// the full counts), so the test above is not comparing two equal texts.
+/// And the values do change: the smallest configuration's parameter defaults
+/// are its sizes, and they reach the masks and the full counts, so the test
+/// above is not comparing two equal texts.
 #[test]
 fn the_size_localparams_carry_the_configuration() {
     let tiny = DrccConfig {
@@ -99,14 +103,19 @@ fn the_size_localparams_carry_the_configuration() {
     };
     let v = drcc_with_config("drcc_cfg", &tiny).unwrap();
     for line in [
-        "localparam  mask = 5'b11;",       // RX FIFO: depth 4
-        "localparam  hmask = 5'b11;",      // history: 4 entries
-        "localparam  last_scan = 6'b100;", // a scan of H + 1 clocks
-        "localparam  fifo_depth = 6'b100;",
-        "localparam  qmask = 3'b1;", // TX queues of 2
-        "localparam  queue_full = 4'h2;",
-        "localparam  dmr_present = 1'b0;",  // no DMR function
-        "localparam  star_present = 1'b0;", // no replicated-star node
+        "parameter integer RX_FIFO_DEPTH = 4;",
+        "parameter integer TX_QUEUE_DEPTH = 2;",
+        "parameter integer HISTORY = 4;",
+        "parameter integer DMR = 0;",  // no DMR function
+        "parameter integer STAR = 0;", // no replicated-star node
+        "localparam [4:0] mask = RX_FIFO_DEPTH[4:0] - 5'd1;", // RX FIFO pointer mask
+        "localparam [4:0] hmask = HISTORY[4:0] - 5'd1;", // history index mask
+        "localparam [5:0] last_scan = HISTORY;", // a scan of H + 1 clocks
+        "localparam [5:0] fifo_depth = RX_FIFO_DEPTH;",
+        "localparam [2:0] qmask = TX_QUEUE_DEPTH[2:0] - 3'd1;", // TX queue mask
+        "localparam [3:0] queue_full = TX_QUEUE_DEPTH;",
+        "localparam [0:0] dmr_present = DMR;",
+        "localparam [0:0] star_present = STAR;",
     ] {
         assert!(v.contains(line), "missing {line}");
     }

@@ -87,7 +87,11 @@ fn configuration_writes_are_clamped_in_reset_mode() {
     b.write(BF_CFG, 200 | 9 << 8);
     assert_eq!(b.read(BF_CFG), 200 | 9 << 8);
     b.write(BTR, 0xFFFF_FFFF);
-    assert_eq!(b.read(BTR), 0x7FFF, "BTR [31:15] read 0");
+    assert_eq!(
+        b.read(BTR),
+        0x0F00_7FFF,
+        "BTR [23:15] and [31:28] read 0, brp_ext [27:24] kept"
+    );
     b.write(RESTORE_CFG, 0x1234_5678);
     assert_eq!(b.read(RESTORE_CFG), 0x1234_5678);
     b.write(INT_ENABLE, 0xFF);

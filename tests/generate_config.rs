@@ -1,12 +1,12 @@
 //! `drcc generate --config`: configurations of your own come out lint-clean
-//! (Verilator -Wall with the repository's waivers, Icarus, yosys `check
-//! -assert`, the three checks of hdl/lint/lint.sh). The DRCC's sizes change
+//! (hdl/lint/lint.sh: Verilator -Wall with the repository's waivers, Icarus,
+//! yosys `check -assert`). The DRCC's sizes change
 //! localparams only (hdl/tests/configurations.rs), so one DRCC configuration with
 //! every size at its smallest stands for them; the hub's shape changes port and
 //! vector widths, so its extremes are linted: the smallest (N 2, M 2, hub A) and
 //! the largest (N 8, M 4, hub B), and one hub on each of APB and AXI4-Lite (named
-//! `*_apb` / `*_axi`, which the lint waivers for a bus top's unused probes match). Also: the files land only in `--out`, and
-//! `--check` passes on them.
+//! `*_apb` / `*_axi`, which the lint waivers for a bus top's unused probes
+//! match). Also: the files land only in `--out`, and `--check` passes on them.
 //!
 //! Without the tools the lint is skipped, except under CI, where it fails.
 
@@ -20,49 +20,23 @@ fn drcc(args: &[&str]) -> Output {
         .expect("cannot run the drcc binary")
 }
 
-/// The three checks of hdl/lint/lint.sh on `dir/top.v`.
-fn lint(dir: &Path, top: &str) {
-    let file = dir.join(format!("{top}.v"));
-    let file = file.to_str().unwrap();
-    let waivers = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/hdl/lint/verilator_waivers.vlt"
-    );
-    let run = |cmd: &mut Command, what: &str| {
-        let out = cmd.output().unwrap_or_else(|e| panic!("{what}: {e}"));
-        assert!(
-            out.status.success(),
-            "{top}: {what} failed:\n{}{}",
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
-        );
-    };
-    run(
-        Command::new("verilator").args([
-            "--lint-only",
-            "-Wall",
-            waivers,
-            file,
-            "--top-module",
-            top,
-        ]),
-        "verilator --lint-only -Wall",
-    );
-    let vvp = dir.join(format!("{top}.vvp"));
-    run(
-        Command::new("iverilog").args(["-g2005", "-o", vvp.to_str().unwrap(), "-s", top, file]),
-        "iverilog",
-    );
-    run(
-        Command::new("yosys").args([
-            "-q",
-            "-p",
-            &format!(
-                "read_verilog {file}; synth -flatten -top {top}; check -assert; \
-                 select -assert-none t:$*latch* t:$_DLATCH*_ t:$_SR_*"
-            ),
-        ]),
-        "yosys synth + check -assert",
+/// hdl/lint/lint.sh (its three checks) on `dir/<top>.v` for every top.
+fn lint(dir: &Path, tops: &[&str]) {
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/hdl/lint/lint.sh");
+    let files: Vec<String> = tops
+        .iter()
+        .map(|t| dir.join(format!("{t}.v")).to_str().unwrap().to_string())
+        .collect();
+    let out = Command::new("bash")
+        .arg(script)
+        .args(&files)
+        .output()
+        .expect("cannot run bash");
+    assert!(
+        out.status.success(),
+        "lint.sh failed:\n{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
     );
 }
 
@@ -150,8 +124,7 @@ fn configurations_of_your_own_are_lint_clean() {
     ]) {
         return;
     }
-    for (top, _) in configs {
-        lint(&out_dir, top);
-    }
+    let tops: Vec<&str> = configs.iter().map(|(top, _)| *top).collect();
+    lint(&out_dir, &tops);
     let _ = std::fs::remove_dir_all(&dir);
 }

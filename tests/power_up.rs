@@ -103,7 +103,7 @@ fn testbench(top: &str) -> String {
 
 /// Runs the testbench on `sources` with Icarus and checks every pin line.
 fn run_icarus(dir: &Path, top: &str, what: &str, sources: &[PathBuf]) {
-    let tb = dir.join(format!("{top}_power_up_tb.v"));
+    let tb = dir.join(format!("{top}_{what}_power_up_tb.v"));
     std::fs::write(&tb, testbench(top)).unwrap();
     let vvp = dir.join(format!("{top}_{what}.vvp"));
     let out = Command::new("iverilog")
@@ -225,13 +225,19 @@ fn synthesized_pins_are_recessive_before_any_clock_or_reset() {
         return;
     }
     let dir = scratch("net");
-    for (top, family) in [
-        ("can_channel", "ice40"),
-        ("can_channel", "xilinx"),
-        ("hub", "ice40"),
-    ] {
-        let sources = netlist(&dir, top, family);
-        run_icarus(&dir, top, family, &sources);
-    }
+    // one thread per netlist: the yosys runs take the test's time
+    std::thread::scope(|scope| {
+        for (top, family) in [
+            ("can_channel", "ice40"),
+            ("can_channel", "xilinx"),
+            ("hub", "ice40"),
+        ] {
+            let dir = &dir;
+            scope.spawn(move || {
+                let sources = netlist(dir, top, family);
+                run_icarus(dir, top, family, &sources);
+            });
+        }
+    });
     let _ = std::fs::remove_dir_all(&dir);
 }

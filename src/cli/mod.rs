@@ -339,8 +339,11 @@ pub fn coverage() -> CliResult {
     let r = drcc_testbench::coverage::collect(|w| eprintln!("drcc coverage: {w} ..."))
         .map_err(CliError::Error)?;
     println!("{}", r.table());
+    for (name, took) in &r.times {
+        eprintln!("drcc coverage: {:7.1} s  {name}", took.as_secs_f64());
+    }
     eprintln!(
-        "drcc coverage: {} workloads in {:.0} s",
+        "drcc coverage: {} workloads in {:.0} s (on every core)",
         r.times.len(),
         t.elapsed().as_secs_f64()
     );

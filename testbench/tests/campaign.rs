@@ -1,6 +1,6 @@
-//! The smoke fault campaign (issue 15, part 5): 1,000 random single-fault
-//! scenarios on a dual bus of 3..6 DRCC nodes (`drcc_testbench::campaign`), on the
-//! reference model. Every one: no frame lost, none delivered from both lines, none
+//! The smoke fault campaign: 500 random single-fault scenarios on a dual bus of
+//! 3..6 DRCC nodes (`drcc_testbench::campaign`), and 100 on the star, on the
+//! reference model (the full 10^5 of each run in the soak, scripts/soak.sh). Every one: no frame lost, none delivered from both lines, none
 //! that nobody sent, no node left out of normal operation. CAN's own double
 //! reception (a line carrying a frame twice after an error in the last EOF bit) is
 //! counted, not judged. The summary of every campaign is reproducible from its
@@ -44,13 +44,13 @@ fn run(c: &Campaign) -> (Vec<u8>, Summary) {
 }
 
 #[test]
-fn a_thousand_single_faults_lose_duplicate_and_lock_up_nothing() {
-    let (out, s) = run(&campaign(1000, 2024, (1, 1)));
+fn five_hundred_single_faults_lose_duplicate_and_lock_up_nothing() {
+    let (out, s) = run(&campaign(500, 2024, (1, 1)));
     println!("{}", s.table());
-    assert_eq!(s.scenarios(), 1000);
-    assert_eq!(String::from_utf8(out).unwrap().lines().count(), 1000);
+    assert_eq!(s.scenarios(), 500);
+    assert_eq!(String::from_utf8(out).unwrap().lines().count(), 500);
     for ((_, class), t) in &s.classes {
-        assert!(t.scenarios > 50, "{class}: {} scenarios", t.scenarios);
+        assert!(t.scenarios >= 40, "{class}: {} scenarios", t.scenarios);
         assert_eq!(
             (t.lost, t.duplicated, t.foreign, t.lockups),
             (0, 0, 0, 0),
@@ -61,17 +61,17 @@ fn a_thousand_single_faults_lose_duplicate_and_lock_up_nothing() {
     assert_eq!(s.failing(), 0);
 }
 
-/// The star smoke campaign: 200 random single faults on the links of two coupled
+/// The star smoke campaign: 100 random single faults on the links of two coupled
 /// hubs (every star class drawn), nothing lost, duplicated or locked up, every
 /// isolated hub port restored and the hubs coupled at the end.
 #[test]
-fn two_hundred_single_star_faults_lose_duplicate_and_lock_up_nothing() {
-    let (_, s) = run(&on(Topology::Star, 200, 2024, (1, 1)));
+fn a_hundred_single_star_faults_lose_duplicate_and_lock_up_nothing() {
+    let (_, s) = run(&on(Topology::Star, 100, 2024, (1, 1)));
     println!("{}", s.table());
-    assert_eq!(s.scenarios(), 200);
+    assert_eq!(s.scenarios(), 100);
     for ((topology, class), t) in &s.classes {
         assert_eq!(topology, "star");
-        assert!(t.scenarios > 8, "{class}: {} scenarios", t.scenarios);
+        assert!(t.scenarios >= 5, "{class}: {} scenarios", t.scenarios);
         assert_eq!(
             (t.lost, t.duplicated, t.foreign, t.lockups),
             (0, 0, 0, 0),

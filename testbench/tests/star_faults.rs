@@ -453,21 +453,41 @@ fn the_ack_units_hold_two_hubs_that_leak_their_own_ack() {
     }
 }
 
+/// Runs `rows` with rust-hdl's hubs in lock step with the hub models, one thread
+/// per row.
+fn rust_hdl_rows(rows: &[StarFault]) {
+    std::thread::scope(|scope| {
+        for &f in rows {
+            scope.spawn(move || {
+                let s = StarScenario::standard(f);
+                let r = run_star(&s, EngineKind::Model, Some(EngineKind::RustHdl))
+                    .unwrap_or_else(|e| panic!("{e}"));
+                assert!(r.exactly_once(), "{}", f.name());
+            });
+        }
+    });
+}
+
 /// The third engine: rust-hdl's simulation of the hub blocks (hub A and hub B, with
-/// model nodes) in lock step with the hub models on the NRAP rows, clock by clock,
-/// every hub output and probe (the Verilated RTL runs the same rows above).
+/// model nodes) in lock step with the hub models, clock by clock, every hub output
+/// and probe, on the NRAP row where one hub triggers, the other joins and both
+/// recouple (§9.2) (the Verilated RTL runs every row above). A row in lock step
+/// with rust-hdl takes about ten times as long as with the Verilated RTL (130 s
+/// against 15 s on a 2-core machine), so the other NRAP rows run on it in the
+/// soak below.
 #[test]
-fn the_rust_hdl_hubs_agree_with_the_models_on_the_nrap_rows() {
-    for f in [
+fn the_rust_hdl_hubs_agree_with_the_models_through_an_nrap_recoupling() {
+    rust_hdl_rows(&[StarFault::TransientDecoupling]);
+}
+
+/// The soak (scripts/soak.sh): the other NRAP rows on rust-hdl's hubs.
+#[test]
+#[ignore = "soak: scripts/soak.sh runs it"]
+fn soak_the_rust_hdl_hubs_agree_with_the_models_on_every_nrap_row() {
+    rust_hdl_rows(&[
         StarFault::AllInterlinksLost,
-        StarFault::TransientDecoupling,
         StarFault::PermanentDecoupling,
         StarFault::HubIgnoresTwin,
         StarFault::HubLeaksAck,
-    ] {
-        let s = StarScenario::standard(f);
-        let r = run_star(&s, EngineKind::Model, Some(EngineKind::RustHdl))
-            .unwrap_or_else(|e| panic!("{e}"));
-        assert!(r.exactly_once(), "{}", f.name());
-    }
+    ]);
 }

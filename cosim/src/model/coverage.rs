@@ -13,12 +13,22 @@
 //! neither list is *unlisted*: an illegal transition or a cover point without a
 //! definition; `drcc coverage` reports it and the coverage test fails on it.
 
+use std::cell::OnceCell;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
+
+/// The counts of one thread. Each thread counts into its own map (a lock nobody
+/// else takes while it runs), registered once in [`THREADS`] so that [`stop`]
+/// sums the counts of every thread, finished or not.
+type Counts = Arc<Mutex<BTreeMap<String, u64>>>;
 
 static ON: AtomicBool = AtomicBool::new(false);
-static COUNTS: Mutex<BTreeMap<String, u64>> = Mutex::new(BTreeMap::new());
+static THREADS: Mutex<Vec<Counts>> = Mutex::new(Vec::new());
+
+thread_local! {
+    static MINE: OnceCell<Counts> = const { OnceCell::new() };
+}
 
 /// Coverage is being collected.
 #[inline]
@@ -30,7 +40,7 @@ pub fn enabled() -> bool {
 #[inline]
 pub fn hit(name: &str) {
     if enabled() {
-        add(name.to_string());
+        add(name);
     }
 }
 
@@ -38,25 +48,50 @@ pub fn hit(name: &str) {
 #[inline]
 pub fn hit_with(name: impl FnOnce() -> String) {
     if enabled() {
-        add(name());
+        add(&name());
     }
 }
 
-fn add(name: String) {
-    let mut c = COUNTS.lock().unwrap_or_else(|e| e.into_inner());
-    *c.entry(name).or_default() += 1;
+fn add(name: &str) {
+    MINE.with(|cell| {
+        let counts = cell.get_or_init(|| {
+            let c = Counts::default();
+            lock(&THREADS).push(c.clone());
+            c
+        });
+        let mut c = lock(counts);
+        match c.get_mut(name) {
+            Some(n) => *n += 1,
+            None => {
+                c.insert(name.to_string(), 1);
+            }
+        }
+    });
+}
+
+/// A lock that a panicking test thread may have poisoned: the counts stay valid.
+fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 /// Starts a collection with every count at 0.
 pub fn start() {
-    COUNTS.lock().unwrap_or_else(|e| e.into_inner()).clear();
+    for c in lock(&THREADS).iter() {
+        lock(c).clear();
+    }
     ON.store(true, Ordering::Relaxed);
 }
 
-/// Ends the collection and returns the counts by bin name.
+/// Ends the collection and returns the counts by bin name, summed over threads.
 pub fn stop() -> BTreeMap<String, u64> {
     ON.store(false, Ordering::Relaxed);
-    std::mem::take(&mut *COUNTS.lock().unwrap_or_else(|e| e.into_inner()))
+    let mut sum = BTreeMap::new();
+    for c in lock(&THREADS).iter() {
+        for (name, n) in std::mem::take(&mut *lock(c)) {
+            *sum.entry(name).or_default() += n;
+        }
+    }
+    sum
 }
 
 mod bins;
@@ -87,5 +122,17 @@ mod tests {
         hit("test: a");
         start();
         assert_eq!(stop().get("test: a"), None);
+        // counts of threads that ended before the collection stopped are summed
+        start();
+        hit("test: c");
+        std::thread::scope(|s| {
+            for _ in 0..3 {
+                s.spawn(|| {
+                    hit("test: c");
+                    hit("test: c");
+                });
+            }
+        });
+        assert_eq!(stop().get("test: c"), Some(&7));
     }
 }

@@ -474,46 +474,29 @@ impl Report {
     }
 }
 
-/// Runs every workload on the model with coverage on, on as many threads as the
-/// machine has cores (the counts are summed over threads); `progress` sees each
-/// workload's name before it runs. One collection at a time per process (the
-/// counters are global). The first failing workload's error is returned.
+/// Runs every workload on the model with coverage on, on every core (rayon; the
+/// counts are summed over threads); `progress` sees each workload's name before
+/// it runs. One collection at a time per process (the counters are global). The
+/// first failing workload's error, in run order, is returned.
 pub fn collect(progress: impl Fn(&str) + Sync) -> Result<Report, String> {
+    use rayon::prelude::*;
     let list = workloads();
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |n| n.get())
-        .min(list.len());
     coverage::start();
-    // each thread takes the next workload until none is left
-    let results: Vec<Vec<(usize, Result<Duration, String>)>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..threads)
-            .map(|_| {
-                scope.spawn(|| {
-                    let mut done = Vec::new();
-                    loop {
-                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                        let Some(w) = list.get(i) else { break };
-                        progress(w.name);
-                        let t = Instant::now();
-                        let r = (w.run)().map(|()| t.elapsed());
-                        done.push((i, r.map_err(|e| format!("{}: {e}", w.name))));
-                    }
-                    done
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .collect()
-    });
+    let done: Vec<Result<Duration, String>> = list
+        .par_iter()
+        .with_max_len(1)
+        .map(|w| {
+            progress(w.name);
+            let t = Instant::now();
+            (w.run)()
+                .map(|()| t.elapsed())
+                .map_err(|e| format!("{}: {e}", w.name))
+        })
+        .collect();
     let counts = coverage::stop();
-    let mut done: Vec<_> = results.into_iter().flatten().collect();
-    done.sort_by_key(|(i, _)| *i);
     let mut times = Vec::new();
-    for (i, r) in done {
-        times.push((list[i].name, r?));
+    for (w, r) in list.iter().zip(done) {
+        times.push((w.name, r?));
     }
     Ok(Report {
         counts,

@@ -179,7 +179,7 @@ pub struct DrccCore<const M: usize> {
     status: StatusWords,
     ticker: BitTick,
     stats: RedundancyStats,
-    main: MainFsm,
+    pub main: MainFsm,
     echo: Echo,
     aux_a: AuxFsm,
     aux_b: AuxFsm,
@@ -232,7 +232,3 @@ impl<const M: usize> DrccCore<M> {
 // The update (every block's wiring) lives beside this file.
 #[path = "drcc_wiring.rs"]
 mod wiring;
-
-#[cfg(test)]
-#[path = "drcc_tests.rs"]
-mod tests;

@@ -11,6 +11,5 @@ pub mod memory;
 pub mod pins;
 pub mod redcan;
 pub mod rmb;
-#[cfg(test)]
-mod synth_check;
+
 pub mod tops;

@@ -35,8 +35,7 @@ pub use configured::{drcc_with_config, drcc_with_config_on, hub_with_shape, hub_
 
 use crate::bus::drcc_tops::{DrccApb, DrccAxi};
 use crate::channel::can_channel::CanChannel;
-#[cfg(test)]
-use crate::config::DrccConfig;
+
 use crate::drcc::{Drcc, DrccM0};
 use crate::hub::hub::{Hub4x2, HubB4x2};
 use crate::redcan::rcm::Rcm;
@@ -126,7 +125,7 @@ fn connected<B: Block + Default>() -> B {
     uut
 }
 
-fn raw_verilog_of<B: Block + Default>() -> String {
+pub fn raw_verilog_of<B: Block + Default>() -> String {
     generate_verilog(&connected::<B>())
 }
 
@@ -415,6 +414,3 @@ pub fn emit(name: &str) -> Option<String> {
 pub fn emit_all() -> Vec<(&'static str, String)> {
     TOPS.iter().map(|t| (t.name, t.verilog())).collect()
 }
-
-#[cfg(test)]
-mod tests;

@@ -431,10 +431,3 @@ impl Logic for BitTimingLogic {
         }
     }
 }
-
-#[test]
-fn btl_synthesizes() {
-    let mut uut = BitTimingLogic::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("bit_timing_logic", &generate_verilog(&uut));
-}

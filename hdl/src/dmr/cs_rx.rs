@@ -153,10 +153,3 @@ impl Logic for DmrCsRx {
             | (bit_cast::<32, 8>(self.rcl_bad.count.val()) << 24);
     }
 }
-
-#[test]
-fn dmr_cs_rx_synthesizes() {
-    let mut uut = DmrCsRx::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("dmr_cs_rx", &generate_verilog(&uut));
-}

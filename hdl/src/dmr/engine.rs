@@ -453,10 +453,3 @@ impl<const M: usize> Logic for DmrEngine<M> {
         }
     }
 }
-
-#[test]
-fn dmr_engine_synthesizes() {
-    let mut uut = DmrEngine::<MAILBOXES>::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("dmr_engine", &generate_verilog(&uut));
-}

@@ -49,10 +49,3 @@ impl<B: Block, const M: usize> Block for IfMailboxes<B, M> {
 impl<B: Logic, const M: usize> Logic for IfMailboxes<B, M> {
     fn update(&mut self) {}
 }
-
-#[test]
-fn holds_one_block_with_mailboxes_and_none_without() {
-    assert_eq!(IfMailboxes::<DFF<Bit>, 16>::default().len(), 1);
-    assert_eq!(IfMailboxes::<DFF<Bit>, 1>::default().len(), 1);
-    assert_eq!(IfMailboxes::<DFF<Bit>, 0>::default().len(), 0);
-}

@@ -388,10 +388,3 @@ impl Logic for DmrLine {
         self.rx_fault.next = self.rx_fault_q.q.val();
     }
 }
-
-#[test]
-fn dmr_line_synthesizes() {
-    let mut uut = DmrLine::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("dmr_line", &generate_verilog(&uut));
-}

@@ -56,10 +56,3 @@ impl Logic for MailboxCfg {
         self.mask.next = self.mask_ram.read_data.val();
     }
 }
-
-#[test]
-fn mailbox_cfg_synthesizes() {
-    let mut uut = MailboxCfg::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("mailbox_cfg", &generate_verilog(&uut));
-}

@@ -191,10 +191,3 @@ impl<const M: usize> Logic for MailboxState<M> {
         }
     }
 }
-
-#[test]
-fn mailbox_state_synthesizes() {
-    let mut uut = MailboxState::<16>::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("mailbox_state", &generate_verilog(&uut));
-}

@@ -151,10 +151,3 @@ impl Logic for DmrOffsets {
         self.off_rcl.next = self.off_rcl_q.q.val();
     }
 }
-
-#[test]
-fn dmr_offsets_synthesizes() {
-    let mut uut = DmrOffsets::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("dmr_offsets", &generate_verilog(&uut));
-}

@@ -227,10 +227,3 @@ impl Logic for DmrStatus {
             | (bit_cast::<32, 8>(self.acl_switches.count.val()) << 24);
     }
 }
-
-#[test]
-fn dmr_status_synthesizes() {
-    let mut uut = DmrStatus::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("dmr_status", &generate_verilog(&uut));
-}

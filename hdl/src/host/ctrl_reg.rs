@@ -247,10 +247,3 @@ impl Logic for CtrlReg {
         self.dmr.next = self.dmr_q.q.val();
     }
 }
-
-#[test]
-fn ctrl_reg_synthesizes() {
-    let mut uut = CtrlReg::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("ctrl_reg", &generate_verilog(&uut));
-}

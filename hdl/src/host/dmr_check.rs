@@ -282,10 +282,3 @@ impl<const M: usize> Logic for DmrCheck<M> {
         }
     }
 }
-
-#[test]
-fn dmr_check_synthesizes() {
-    let mut uut = DmrCheck::<16>::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("dmr_check", &generate_verilog(&uut));
-}

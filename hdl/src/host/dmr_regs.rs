@@ -242,10 +242,3 @@ impl<const M: usize> Logic for DmrRegs<M> {
         self.mb_limits.next = self.limits_q.q.val() & self.present_limits.val();
     }
 }
-
-#[test]
-fn dmr_regs_synthesizes() {
-    let mut uut = DmrRegs::<16>::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("dmr_regs", &generate_verilog(&uut));
-}

@@ -429,10 +429,3 @@ impl WbRegs {
 // The update (the access decode, the writes, the events) lives beside this file.
 #[path = "wishbone_update.rs"]
 mod update;
-
-#[test]
-fn wb_regs_synthesizes() {
-    let mut uut = WbRegs::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("wb_regs", &generate_verilog(&uut));
-}

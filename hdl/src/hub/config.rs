@@ -527,10 +527,3 @@ impl Logic for HubConfig {
         self.block_frames.next = self.block_q.q.val();
     }
 }
-
-#[test]
-fn hub_config_synthesizes() {
-    let mut uut = HubConfig::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("hub_config", &generate_verilog(&uut));
-}

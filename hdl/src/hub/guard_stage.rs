@@ -280,10 +280,3 @@ impl<const N: usize, const M: usize> Logic for GuardStage<N, M> {
         self.recouple_d.next = self.recouple_q.q.val();
     }
 }
-
-#[test]
-fn guard_stage_synthesizes() {
-    let mut uut = GuardStage::<4, 2>::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("hub_guard_stage", &generate_verilog(&uut));
-}

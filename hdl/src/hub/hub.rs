@@ -544,29 +544,3 @@ pub type Hub4x2 = Hub<4, 2, 6>;
 
 /// The emitted hub B (`hub_b.v`): N = 4 node ports, M = 2 interlinks, HUB_ID 1.
 pub type HubB4x2 = Hub<4, 2, 6, 1>;
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn hub_synthesizes() {
-        let mut uut = Hub4x2::default();
-        uut.connect_all();
-        crate::synth_check::yosys_check("hub", &generate_verilog(&uut));
-    }
-
-    #[test]
-    fn hub_b_synthesizes() {
-        let mut uut = HubB4x2::default();
-        uut.connect_all();
-        crate::synth_check::yosys_check("hub_b", &generate_verilog(&uut));
-    }
-
-    #[test]
-    fn hub_2x1_synthesizes() {
-        let mut uut = Hub::<2, 1, 3>::default();
-        uut.connect_all();
-        crate::synth_check::yosys_check("hub_2x1", &generate_verilog(&uut));
-    }
-}

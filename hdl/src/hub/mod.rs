@@ -16,6 +16,5 @@ pub mod nrap;
 pub mod nrap_ahead;
 pub mod port_guard;
 pub mod registers;
-#[cfg(test)]
-mod star_tests;
+
 pub mod tracker;

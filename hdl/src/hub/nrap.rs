@@ -349,10 +349,3 @@ impl<const H: usize> Default for Nrap<H> {
 
 #[path = "nrap_update.rs"]
 mod update;
-
-#[test]
-fn nrap_synthesizes() {
-    let mut uut = Nrap::<0>::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("hub_nrap", &generate_verilog(&uut));
-}

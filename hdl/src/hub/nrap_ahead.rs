@@ -284,10 +284,3 @@ impl Logic for NrapAhead {
         self.blk1.next = self.blk1_q.q.val();
     }
 }
-
-#[test]
-fn nrap_ahead_synthesizes() {
-    let mut uut = NrapAhead::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("hub_nrap_ahead", &generate_verilog(&uut));
-}

@@ -532,10 +532,3 @@ impl<const N: usize, const M: usize, const P: usize, const H: usize> Logic for H
         self.decoupled.next = self.decoupled_q.q.val();
     }
 }
-
-#[test]
-fn hub_regs_synthesizes() {
-    let mut uut = HubRegs::<4, 2, 6, 0>::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("hub_regs", &generate_verilog(&uut));
-}

@@ -569,10 +569,3 @@ impl Logic for RxWriter {
         self.expired.next = self.stats.expired.val();
     }
 }
-
-#[test]
-fn rx_writer_synthesizes() {
-    let mut uut = RxWriter::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("rx_writer", &generate_verilog(&uut));
-}

@@ -311,10 +311,3 @@ impl Logic for TxBuffer {
         self.rd_sel_o.next = self.rd_sel.q.val();
     }
 }
-
-#[test]
-fn tx_buffer_synthesizes() {
-    let mut uut = TxBuffer::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("tx_buffer", &generate_verilog(&uut));
-}

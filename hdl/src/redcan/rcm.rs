@@ -104,15 +104,3 @@ impl Logic for Rcm {
         self.changes.next = self.changes_q.q.val();
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn rcm_synthesizes() {
-        let mut uut = Rcm::default();
-        uut.connect_all();
-        crate::synth_check::yosys_check("rcm", &generate_verilog(&uut));
-    }
-}

@@ -290,10 +290,3 @@ impl Logic for AuxFsm {
         self.recoveries.next = self.recoveries_q.q.val();
     }
 }
-
-#[test]
-fn aux_fsm_synthesizes() {
-    let mut uut = AuxFsm::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("aux_fsm", &generate_verilog(&uut));
-}

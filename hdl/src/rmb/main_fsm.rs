@@ -469,10 +469,3 @@ impl Logic for MainFsm {
         self.switch_time.next = self.switch_time_q.q.val();
     }
 }
-
-#[test]
-fn main_fsm_synthesizes() {
-    let mut uut = MainFsm::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("main_fsm", &generate_verilog(&uut));
-}

@@ -77,10 +77,3 @@ impl Logic for RedundancyStats {
         self.recoveries.next = self.recov_q.q.val();
     }
 }
-
-#[test]
-fn redundancy_stats_synthesizes() {
-    let mut uut = RedundancyStats::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("redundancy_stats", &generate_verilog(&uut));
-}

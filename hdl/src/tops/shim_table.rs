@@ -144,19 +144,3 @@ pub fn ports_header(top: &Top, ports: &[Port]) -> String {
         outputs = table(Direction::Output),
     )
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn names_and_types() {
-        assert_eq!(camel("can_channel"), "CanChannel");
-        assert_eq!(camel("hub"), "Hub");
-        assert_eq!(c_type(1), "uint8_t");
-        assert_eq!(c_type(8), "uint8_t");
-        assert_eq!(c_type(9), "uint16_t");
-        assert_eq!(c_type(29), "uint32_t");
-        assert_eq!(c_type(64), "uint64_t");
-    }
-}

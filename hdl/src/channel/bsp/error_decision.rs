@@ -278,10 +278,3 @@ impl Logic for ErrorDecision {
         self.kind_ack.next = self.la_kind_ack.decision.val();
     }
 }
-
-#[test]
-fn error_decision_synthesizes() {
-    let mut uut = ErrorDecision::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("error_decision", &generate_verilog(&uut));
-}

@@ -383,10 +383,3 @@ impl Logic for ProtocolController {
         self.cnt_ack.next = self.err_capture.cnt_ack.val();
     }
 }
-
-#[test]
-fn protocol_controller_synthesizes() {
-    let mut uut = ProtocolController::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("protocol_controller", &generate_verilog(&uut));
-}

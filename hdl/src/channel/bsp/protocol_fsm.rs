@@ -589,10 +589,3 @@ impl Logic for ProtocolFsm {
         }
     }
 }
-
-#[test]
-fn protocol_fsm_synthesizes() {
-    let mut uut = ProtocolFsm::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("protocol_fsm", &generate_verilog(&uut));
-}

@@ -237,10 +237,3 @@ impl Logic for RulesDecision {
         self.tx_success.next = self.tx_valid.val() && !self.listen_only.val();
     }
 }
-
-#[test]
-fn rules_decision_synthesizes() {
-    let mut uut = RulesDecision::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("rules_decision", &generate_verilog(&uut));
-}

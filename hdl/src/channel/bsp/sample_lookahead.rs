@@ -48,10 +48,3 @@ impl Logic for SampleLookahead {
         }
     }
 }
-
-#[test]
-fn sample_lookahead_synthesizes() {
-    let mut uut = SampleLookahead::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("sample_lookahead", &generate_verilog(&uut));
-}

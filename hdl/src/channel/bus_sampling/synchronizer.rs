@@ -32,10 +32,3 @@ impl Logic for RxSynchronizer {
         self.rx_s.next = self.rx_sync.q.val();
     }
 }
-
-#[test]
-fn synchronizer_synthesizes() {
-    let mut uut = RxSynchronizer::default();
-    uut.connect_all();
-    crate::synth_check::yosys_check("rx_synchronizer", &generate_verilog(&uut));
-}

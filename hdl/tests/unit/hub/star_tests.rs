@@ -7,8 +7,8 @@
 //! silent. These are smoke tests of the RTL's structure; the clock-by-clock check
 //! is the lock-step comparison with the reference model.
 
-use super::hub::Hub;
-use crate::host::hub_registers::{self as map, NrapPhase};
+use drcc_hdl::host::hub_registers::{self as map, NrapPhase};
+use drcc_hdl::hub::hub::Hub;
 use rust_hdl::prelude::*;
 
 /// One hub, its nodes and its host.

@@ -141,7 +141,7 @@ fn header_lists_exactly_the_probed_ports() {
             .collect();
         assert_eq!(rows, probed, "header port table of {}", t.name);
         for p in t.ports() {
-            let first_doc_line: String = port_docs::wrap(&p.doc, 60)[0]
+            let first_doc_line: String = drcc_hdl::tops::port_docs::wrap(&p.doc, 60)[0]
                 .split_whitespace()
                 .take(3)
                 .collect::<Vec<_>>()

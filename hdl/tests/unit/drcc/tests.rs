@@ -3,7 +3,7 @@
 //! replicated star node (echo, identification frames).
 
 use super::*;
-use crate::host::registers::{self as map, REGISTERS};
+use drcc_hdl::host::registers::{self as map, REGISTERS};
 
 /// The DRCC in rust-hdl's simulator, with the two CAN pins of each channel on
 /// one wired-AND bus (the value after the previous edge).
@@ -249,7 +249,7 @@ fn star_node_takes_the_echo_of_its_own_frame() {
 /// (the other hub's frame: one domain, `split` stays 0). Reset mode clears it.
 #[test]
 fn star_node_takes_an_identification_frame_out_of_the_rx_path() {
-    use crate::host::registers::StarLast;
+    use drcc_hdl::host::registers::StarLast;
     let mut b = Bench::new();
     let star = map::MAP.field("CTRL", "star").put(1);
     let ctrl = 1 | (1 << 1) | (1 << 2) | (1 << 8) | (2 << 12) | (2 << 14) | star;

@@ -1,0 +1,3 @@
+//! Tests of `drcc_hdl::channel::bus_sampling`.
+
+mod synchronizer;

@@ -1,0 +1,12 @@
+//! Tests of `drcc_hdl::host`.
+
+mod ctrl_check;
+mod ctrl_reg;
+mod dmr_check;
+mod dmr_regs;
+mod hub_registers;
+mod map;
+mod registers;
+mod status_words;
+mod wb_slave;
+mod wishbone;

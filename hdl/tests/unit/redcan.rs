@@ -1,0 +1,3 @@
+//! Tests of `drcc_hdl::redcan`.
+
+mod rcm;

@@ -323,6 +323,9 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
     reg  regs__ext_illegal;
     reg  regs__ev_dmr;
     reg  regs__ev_domain;
+    reg  regs__ev_err_warning;
+    reg  regs__ev_arb_lost;
+    reg  regs__ev_bus_error;
     wire  regs__wr_o;
     wire  regs__reset_mode;
     wire  regs__reset_mode_d;
@@ -348,6 +351,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
     wire  regs__push_q;
     wire  [98:0] regs__tx_frame;
     wire  regs__pop;
+    wire  regs__rearm_err;
+    wire  regs__rearm_alc;
     reg  [5:0] dmr_check__adr;
     reg  [31:0] dmr_check__wdat;
     reg  dmr_check__reset_mode;
@@ -539,6 +544,31 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
     reg  [31:0] status__star_word;
     reg  [15:0] status__omissions_a;
     reg  [15:0] status__omissions_b;
+    reg  [31:0] status__cap_a;
+    reg  [31:0] status__cap_b;
+    reg  caps__clk;
+    reg  caps__rst;
+    reg  caps__err_valid_a;
+    reg  [2:0] caps__err_kind_a;
+    reg  [4:0] caps__err_field_a;
+    reg  caps__err_tx_a;
+    reg  caps__arb_lost_a;
+    reg  [4:0] caps__alc_a;
+    reg  caps__ew_a;
+    reg  caps__err_valid_b;
+    reg  [2:0] caps__err_kind_b;
+    reg  [4:0] caps__err_field_b;
+    reg  caps__err_tx_b;
+    reg  caps__arb_lost_b;
+    reg  [4:0] caps__alc_b;
+    reg  caps__ew_b;
+    reg  caps__rearm_err;
+    reg  caps__rearm_alc;
+    wire  [31:0] caps__cap_a;
+    wire  [31:0] caps__cap_b;
+    wire  caps__ev_err_warning;
+    wire  caps__ev_arb_lost;
+    wire  caps__ev_bus_error;
     reg  ticker__clk;
     reg  ticker__hold;
     reg  [9:0] ticker__brp;
@@ -859,6 +889,9 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .ext_illegal(regs__ext_illegal),
         .ev_dmr(regs__ev_dmr),
         .ev_domain(regs__ev_domain),
+        .ev_err_warning(regs__ev_err_warning),
+        .ev_arb_lost(regs__ev_arb_lost),
+        .ev_bus_error(regs__ev_bus_error),
         .wr_o(regs__wr_o),
         .reset_mode(regs__reset_mode),
         .reset_mode_d(regs__reset_mode_d),
@@ -883,7 +916,9 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .push(regs__push),
         .push_q(regs__push_q),
         .tx_frame(regs__tx_frame),
-        .pop(regs__pop)
+        .pop(regs__pop),
+        .rearm_err(regs__rearm_err),
+        .rearm_alc(regs__rearm_alc)
     );
     drcc__dmr_check dmr_check(
         .adr(dmr_check__adr),
@@ -1048,7 +1083,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .fault_mb(dmr_eng__0__fault_mb),
         .e_state(dmr_eng__0__e_state)
     );
-    drcc__status status(
+    drcc__status #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0]), .TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0]), .HISTORY(HISTORY[5:0]), .STAR(STAR[0:0])) status(
         .adr(status__adr),
         .word(status__word),
         .state(status__state),
@@ -1086,7 +1121,34 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .recoveries(status__recoveries),
         .star_word(status__star_word),
         .omissions_a(status__omissions_a),
-        .omissions_b(status__omissions_b)
+        .omissions_b(status__omissions_b),
+        .cap_a(status__cap_a),
+        .cap_b(status__cap_b)
+    );
+    drcc__caps caps(
+        .clk(caps__clk),
+        .rst(caps__rst),
+        .err_valid_a(caps__err_valid_a),
+        .err_kind_a(caps__err_kind_a),
+        .err_field_a(caps__err_field_a),
+        .err_tx_a(caps__err_tx_a),
+        .arb_lost_a(caps__arb_lost_a),
+        .alc_a(caps__alc_a),
+        .ew_a(caps__ew_a),
+        .err_valid_b(caps__err_valid_b),
+        .err_kind_b(caps__err_kind_b),
+        .err_field_b(caps__err_field_b),
+        .err_tx_b(caps__err_tx_b),
+        .arb_lost_b(caps__arb_lost_b),
+        .alc_b(caps__alc_b),
+        .ew_b(caps__ew_b),
+        .rearm_err(caps__rearm_err),
+        .rearm_alc(caps__rearm_alc),
+        .cap_a(caps__cap_a),
+        .cap_b(caps__cap_b),
+        .ev_err_warning(caps__ev_err_warning),
+        .ev_arb_lost(caps__ev_arb_lost),
+        .ev_bus_error(caps__ev_bus_error)
     );
     drcc__ticker ticker(
         .clk(ticker__clk),
@@ -1420,6 +1482,27 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         regs__ext_illegal = dmr_check__illegal;
         regs__ev_dmr = dmr_ctl__int_evt;
         regs__ev_domain = echo__ev_domain;
+        regs__ev_err_warning = caps__ev_err_warning;
+        regs__ev_arb_lost = caps__ev_arb_lost;
+        regs__ev_bus_error = caps__ev_bus_error;
+        caps__clk = clk;
+        caps__rst = rst;
+        caps__err_valid_a = chan_a__err_valid;
+        caps__err_kind_a = chan_a__err_kind;
+        caps__err_field_a = chan_a__err_field;
+        caps__err_tx_a = chan_a__err_tx;
+        caps__arb_lost_a = chan_a__arb_lost;
+        caps__alc_a = chan_a__alc;
+        caps__ew_a = chan_a__err_warning;
+        caps__err_valid_b = chan_b__err_valid;
+        caps__err_kind_b = chan_b__err_kind;
+        caps__err_field_b = chan_b__err_field;
+        caps__err_tx_b = chan_b__err_tx;
+        caps__arb_lost_b = chan_b__arb_lost;
+        caps__alc_b = chan_b__alc;
+        caps__ew_b = chan_b__err_warning;
+        caps__rearm_err = regs__rearm_err;
+        caps__rearm_alc = regs__rearm_alc;
         mb_id_word = zero31;
         mb_mask = zero29;
         mb_state_word = zero32;
@@ -1565,6 +1648,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         status__omissions_a = rxw__omissions_a;
         status__omissions_b = rxw__omissions_b;
         status__recoveries = stats__recoveries;
+        status__cap_a = caps__cap_a;
+        status__cap_b = caps__cap_b;
         stats__clk = clk;
         stats__rst = rst;
         stats__switch_evt = main__switch_evt;
@@ -2029,6 +2114,142 @@ module drcc__aux__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,err_wa
     end
 
 endmodule // drcc__aux__judge
+
+
+module drcc__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  err_valid_a;
+    input wire  [2:0] err_kind_a;
+    input wire  [4:0] err_field_a;
+    input wire  err_tx_a;
+    input wire  arb_lost_a;
+    input wire  [4:0] alc_a;
+    input wire  ew_a;
+    input wire  err_valid_b;
+    input wire  [2:0] err_kind_b;
+    input wire  [4:0] err_field_b;
+    input wire  err_tx_b;
+    input wire  arb_lost_b;
+    input wire  [4:0] alc_b;
+    input wire  ew_b;
+    input wire  rearm_err;
+    input wire  rearm_alc;
+    output reg  [31:0] cap_a;
+    output reg  [31:0] cap_b;
+    output reg  ev_err_warning;
+    output reg  ev_arb_lost;
+    output reg  ev_bus_error;
+
+    // Constant declarations
+    localparam  at_err = 5'b0;
+    localparam  at_alc = 5'b10000;
+    localparam  zero6 = 6'b0;
+    localparam  zero10 = 10'b0;
+    localparam  keep_err = 10'b111111111;
+    localparam  keep_alc = 6'b11111;
+
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+
+    // Stub signals
+    reg  [9:0] err_a__d;
+    reg  [9:0] err_a__q;
+    reg  [9:0] err_b__d;
+    reg  [9:0] err_b__q;
+    reg  [5:0] alc_a_q__d;
+    reg  [5:0] alc_a_q__q;
+    reg  [5:0] alc_b_q__d;
+    reg  [5:0] alc_b_q__q;
+    reg  ew_a_prev__d;
+    reg  ew_a_prev__q;
+    reg  ew_b_prev__d;
+    reg  ew_b_prev__q;
+
+    // Update code
+    always @(*) begin
+        err_a__d = err_a__q;
+        err_b__d = err_b__q;
+        alc_a_q__d = alc_a_q__q;
+        alc_b_q__d = alc_b_q__q;
+        ew_a_prev__d = ew_a_prev__q;
+        ew_b_prev__d = ew_b_prev__q;
+        if (err_valid_a & (~err_a__q[32'h9] | rearm_err)) begin
+            err_a__d = ((err_kind_a) & 10'h3ff) | (((err_field_a) & 10'h3ff) << 32'h3) | (((err_tx_a) & 10'h3ff) << 32'h8) | (((1'b1) & 10'h3ff) << 32'h9);
+        end
+        else if (rearm_err) begin
+            err_a__d = err_a__q & keep_err;
+        end
+        if (err_valid_b & (~err_b__q[32'h9] | rearm_err)) begin
+            err_b__d = ((err_kind_b) & 10'h3ff) | (((err_field_b) & 10'h3ff) << 32'h3) | (((err_tx_b) & 10'h3ff) << 32'h8) | (((1'b1) & 10'h3ff) << 32'h9);
+        end
+        else if (rearm_err) begin
+            err_b__d = err_b__q & keep_err;
+        end
+        if (arb_lost_a & (~alc_a_q__q[32'h5] | rearm_alc)) begin
+            alc_a_q__d = ((alc_a) & 6'h3f) | (((1'b1) & 6'h3f) << 32'h5);
+        end
+        else if (rearm_alc) begin
+            alc_a_q__d = alc_a_q__q & keep_alc;
+        end
+        if (arb_lost_b & (~alc_b_q__q[32'h5] | rearm_alc)) begin
+            alc_b_q__d = ((alc_b) & 6'h3f) | (((1'b1) & 6'h3f) << 32'h5);
+        end
+        else if (rearm_alc) begin
+            alc_b_q__d = alc_b_q__q & keep_alc;
+        end
+        ew_a_prev__d = ew_a;
+        ew_b_prev__d = ew_b;
+        if (rst) begin
+            err_a__d = zero10;
+            err_b__d = zero10;
+            alc_a_q__d = zero6;
+            alc_b_q__d = zero6;
+            ew_a_prev__d = 1'b0;
+            ew_b_prev__d = 1'b0;
+        end
+        ev_err_warning = (ew_a != ew_a_prev__q) | (ew_b != ew_b_prev__q);
+        ev_arb_lost = arb_lost_a | arb_lost_b;
+        ev_bus_error = err_valid_a | err_valid_b;
+        cap_a = (((err_a__q) & 32'hffffffff) << at_err) | (((alc_a_q__q) & 32'hffffffff) << at_alc);
+        cap_b = (((err_b__q) & 32'hffffffff) << at_err) | (((alc_b_q__q) & 32'hffffffff) << at_alc);
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        err_a__q <= err_a__d;
+        err_b__q <= err_b__d;
+        alc_a_q__q <= alc_a_q__d;
+        alc_b_q__q <= alc_b_q__d;
+        ew_a_prev__q <= ew_a_prev__d;
+        ew_b_prev__q <= ew_b_prev__d;
+    end
+
+endmodule // drcc__caps
 
 
 module drcc__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
@@ -10029,7 +10250,7 @@ module drcc__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_
 endmodule // drcc__main
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,rearm_err,rearm_alc);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [0:0] STAR = 1'd1;
 
@@ -10064,6 +10285,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     input wire  ext_illegal;
     input wire  ev_dmr;
     input wire  ev_domain;
+    input wire  ev_err_warning;
+    input wire  ev_arb_lost;
+    input wire  ev_bus_error;
     output reg  wr_o;
     output reg  reset_mode;
     output reg  reset_mode_d;
@@ -10089,6 +10313,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     output reg  push_q;
     output reg  [98:0] tx_frame;
     output reg  pop;
+    output reg  rearm_err;
+    output reg  rearm_alc;
 
     // Constant declarations
     localparam  a_ctrl = 6'b1;
@@ -10128,6 +10354,11 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     localparam  i_aux = 5'b111;
     localparam  i_dmr = 5'b1000;
     localparam  i_domain = 5'b1001;
+    localparam  i_err_warning = 5'b1010;
+    localparam  i_arb_lost = 5'b1011;
+    localparam  i_bus_error = 5'b1100;
+    localparam  m_bus_error = 13'b1000000000000;
+    localparam  m_arb_lost = 13'b100000000000;
     localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
@@ -10135,7 +10366,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
-    localparam  zero10 = 10'b0;
+    localparam  zero13 = 13'b0;
     localparam  zero15 = 15'b0;
     localparam  zero16 = 16'h0;
     localparam  zero31 = 31'h0;
@@ -10156,13 +10387,13 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     wire  bus__wb_ack_o;
     wire  bus__irq;
     wire  bus__wr;
-    wire  [9:0] bus__int_status;
-    wire  [9:0] bus__int_enable;
+    wire  [12:0] bus__int_status;
+    wire  [12:0] bus__int_enable;
     reg  [31:0] bus__rdata;
-    reg  [9:0] bus__events;
-    reg  [9:0] bus__w1c;
+    reg  [12:0] bus__events;
+    reg  [12:0] bus__w1c;
     reg  bus__int_enable_we;
-    reg  [9:0] bus__int_enable_d;
+    reg  [12:0] bus__int_enable_d;
     reg  ctrl__clk;
     reg  ctrl__rst;
     reg  ctrl__we;
@@ -10228,7 +10459,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
-    reg  [9:0] w1c;
+    reg  [12:0] w1c;
     reg  [3:0] target_count;
     reg  es_evt;
     reg  [63:0] tx_data64;
@@ -10395,9 +10626,9 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         ctrl_check__single_shot = ctrl__single_shot;
         ctrl_check__dmr = ctrl__dmr;
         illegal = 1'b0;
-        w1c = zero10;
+        w1c = zero13;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wb_dat_i[(32'h0)+:(10)];
+        bus__int_enable_d = wb_dat_i[(32'h0)+:(13)];
         push = 1'b0;
         pop = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr) begin
@@ -10438,7 +10669,7 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wb_dat_i[(32'h0)+:(10)];
+                w1c = wb_dat_i[(32'h0)+:(13)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -10483,8 +10714,10 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
                 illegal = 1'b1;
             end
         end
-        bus__events = (((ev_rx) & 10'h3ff) << i_rx) | (((ev_tx_done) & 10'h3ff) << i_tx_done) | (((ev_switch) & 10'h3ff) << i_switch) | (((es_evt) & 10'h3ff) << i_err_state) | (((ev_overrun) & 10'h3ff) << i_overrun) | (((ev_tx_failure) & 10'h3ff) << i_tx_failure) | (((illegal) & 10'h3ff) << i_illegal) | (((ev_aux) & 10'h3ff) << i_aux) | (((ev_dmr) & 10'h3ff) << i_dmr) | (((ev_domain) & 10'h3ff) << i_domain);
+        bus__events = (((ev_rx) & 13'h1fff) << i_rx) | (((ev_tx_done) & 13'h1fff) << i_tx_done) | (((ev_switch) & 13'h1fff) << i_switch) | (((es_evt) & 13'h1fff) << i_err_state) | (((ev_overrun) & 13'h1fff) << i_overrun) | (((ev_tx_failure) & 13'h1fff) << i_tx_failure) | (((illegal) & 13'h1fff) << i_illegal) | (((ev_aux) & 13'h1fff) << i_aux) | (((ev_dmr) & 13'h1fff) << i_dmr) | (((ev_domain) & 13'h1fff) << i_domain) | (((ev_err_warning) & 13'h1fff) << i_err_warning) | (((ev_arb_lost) & 13'h1fff) << i_arb_lost) | (((ev_bus_error) & 13'h1fff) << i_bus_error);
         bus__w1c = w1c;
+        rearm_err = (w1c & m_bus_error) != zero13;
+        rearm_alc = (w1c & m_arb_lost) != zero13;
         err_q__d = illegal;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
@@ -10562,16 +10795,16 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,w
     output reg  wb_ack_o;
     output reg  irq;
     output reg  wr;
-    output reg  [9:0] int_status;
-    output reg  [9:0] int_enable;
+    output reg  [12:0] int_status;
+    output reg  [12:0] int_enable;
     input wire  [31:0] rdata;
-    input wire  [9:0] events;
-    input wire  [9:0] w1c;
+    input wire  [12:0] events;
+    input wire  [12:0] w1c;
     input wire  int_enable_we;
-    input wire  [9:0] int_enable_d;
+    input wire  [12:0] int_enable_d;
 
     // Constant declarations
-    localparam  zero_w = 10'b0;
+    localparam  zero_w = 13'b0;
     localparam  zero32 = 32'h0;
 
     // Stub signals
@@ -10581,10 +10814,10 @@ module drcc__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,w
     reg  [31:0] dat_q__q;
     reg  irq_q__d;
     reg  irq_q__q;
-    reg  [9:0] int_status_q__d;
-    reg  [9:0] int_status_q__q;
-    reg  [9:0] int_enable_q__d;
-    reg  [9:0] int_enable_q__q;
+    reg  [12:0] int_status_q__d;
+    reg  [12:0] int_status_q__q;
+    reg  [12:0] int_enable_q__d;
+    reg  [12:0] int_enable_q__q;
 
     // Local signals
     reg  taken;
@@ -11788,7 +12021,11 @@ module drcc__stats(clk,rst,switch_evt,recover_a,recover_b,switches,recoveries);
 endmodule // drcc__stats
 
 
-module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,switches,recoveries,star_word,omissions_a,omissions_b);
+module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,switches,recoveries,star_word,omissions_a,omissions_b,cap_a,cap_b);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd32;
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
+    parameter [5:0] HISTORY = 6'd32;
+    parameter [0:0] STAR = 1'd1;
 
     // Module arguments
     input wire  [5:0] adr;
@@ -11829,8 +12066,16 @@ module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_ti
     input wire  [31:0] star_word;
     input wire  [15:0] omissions_a;
     input wire  [15:0] omissions_b;
+    input wire  [31:0] cap_a;
+    input wire  [31:0] cap_b;
 
     // Constant declarations
+    localparam [5:0] sz_rx_fifo = RX_FIFO_DEPTH;
+    localparam [3:0] sz_tx_queue = TX_QUEUE_DEPTH;
+    localparam [5:0] sz_history = HISTORY;
+    localparam  sz_mailboxes = 5'b10000;
+    localparam  sz_dmr = 1'b1;
+    localparam [0:0] sz_star = STAR;
     localparam  a_id = 6'b0;
     localparam  a_status = 6'b101;
     localparam  a_chan_a_err = 6'b1000;
@@ -11846,7 +12091,12 @@ module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_ti
     localparam  a_times = 6'b11000;
     localparam  a_star_status = 6'b100100;
     localparam  a_omissions = 6'b100101;
+    localparam  a_version = 6'b100110;
+    localparam  a_sizes = 6'b100111;
+    localparam  a_cap_a = 6'b101000;
+    localparam  a_cap_b = 6'b101001;
     localparam  id_value = 32'h44524343;
+    localparam  version_value = 32'h101;
     localparam  zero32 = 32'h0;
     localparam  st_state = 5'b0;
     localparam  st_tx_channel = 5'b100;
@@ -11879,6 +12129,12 @@ module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_ti
     localparam  t_switch = 5'b10000;
     localparam  o_a = 5'b0;
     localparam  o_b = 5'b10000;
+    localparam  z_rx_fifo = 5'b0;
+    localparam  z_tx_queue = 5'b1000;
+    localparam  z_history = 5'b10000;
+    localparam  z_mailboxes = 5'b11000;
+    localparam  z_dmr = 5'b11101;
+    localparam  z_star = 5'b11110;
 
     // Local signals
     reg  [63:0] rx_data64;
@@ -11931,6 +12187,18 @@ module drcc__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_ti
         end
         else if (adr == a_omissions) begin
             word = (((omissions_a) & 32'hffffffff) << o_a) | (((omissions_b) & 32'hffffffff) << o_b);
+        end
+        else if (adr == a_version) begin
+            word = version_value;
+        end
+        else if (adr == a_sizes) begin
+            word = (((sz_rx_fifo) & 32'hffffffff) << z_rx_fifo) | (((sz_tx_queue) & 32'hffffffff) << z_tx_queue) | (((sz_history) & 32'hffffffff) << z_history) | (((sz_mailboxes) & 32'hffffffff) << z_mailboxes) | (((sz_dmr) & 32'hffffffff) << z_dmr) | (((sz_star) & 32'hffffffff) << z_star);
+        end
+        else if (adr == a_cap_a) begin
+            word = cap_a;
+        end
+        else if (adr == a_cap_b) begin
+            word = cap_b;
         end
     end
 

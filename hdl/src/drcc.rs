@@ -27,6 +27,7 @@ use crate::dmr::control::DmrControl;
 use crate::dmr::engine::{DmrEngine, MAILBOXES};
 use crate::dmr::if_mailboxes::IfMailboxes;
 use crate::dmr::mailbox_cfg::MailboxCfg;
+use crate::host::captures::Captures;
 use crate::host::dmr_check::DmrCheck;
 use crate::host::dmr_regs::DmrRegs;
 use crate::host::status_words::StatusWords;
@@ -177,6 +178,7 @@ pub struct DrccCore<const M: usize> {
     dmr_ctl: DmrControl,
     dmr_eng: IfMailboxes<DmrEngine<M>, M>,
     status: StatusWords,
+    caps: Captures,
     ticker: BitTick,
     stats: RedundancyStats,
     pub main: MainFsm,
@@ -220,6 +222,7 @@ impl<const M: usize> DrccCore<M> {
         dmr_check.dmr_present = Param::new(cfg.dmr as u64);
         Self {
             regs: WbRegs::with_config(cfg),
+            status: StatusWords::with_config(cfg),
             dmr_check,
             txbuf: TxBuffer::new(cfg.tx_queue_depth),
             rxfifo: RxFifo::new(cfg.rx_fifo_depth),

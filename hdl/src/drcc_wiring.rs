@@ -63,6 +63,29 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.regs.ext_illegal.next = self.dmr_check.illegal.val();
         self.regs.ev_dmr.next = self.dmr_ctl.int_evt.val();
         self.regs.ev_domain.next = self.echo.ev_domain.val();
+        self.regs.ev_err_warning.next = self.caps.ev_err_warning.val();
+        self.regs.ev_arb_lost.next = self.caps.ev_arb_lost.val();
+        self.regs.ev_bus_error.next = self.caps.ev_bus_error.val();
+
+        // ---- the channels' captures (§10.2) ----
+        self.caps.clk.next = self.clk.val();
+        self.caps.rst.next = self.rst.val();
+        self.caps.err_valid_a.next = self.chan_a.err_valid.val();
+        self.caps.err_kind_a.next = self.chan_a.err_kind.val();
+        self.caps.err_field_a.next = self.chan_a.err_field.val();
+        self.caps.err_tx_a.next = self.chan_a.err_tx.val();
+        self.caps.arb_lost_a.next = self.chan_a.arb_lost.val();
+        self.caps.alc_a.next = self.chan_a.alc.val();
+        self.caps.ew_a.next = self.chan_a.err_warning.val();
+        self.caps.err_valid_b.next = self.chan_b.err_valid.val();
+        self.caps.err_kind_b.next = self.chan_b.err_kind.val();
+        self.caps.err_field_b.next = self.chan_b.err_field.val();
+        self.caps.err_tx_b.next = self.chan_b.err_tx.val();
+        self.caps.arb_lost_b.next = self.chan_b.arb_lost.val();
+        self.caps.alc_b.next = self.chan_b.alc.val();
+        self.caps.ew_b.next = self.chan_b.err_warning.val();
+        self.caps.rearm_err.next = self.regs.rearm_err.val();
+        self.caps.rearm_alc.next = self.regs.rearm_alc.val();
 
         // ---- the mailboxes (DMR contract §4), generated with M > 0 ----
         self.mb_id_word.next = self.zero31.val();
@@ -220,6 +243,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.status.omissions_a.next = self.rxw.omissions_a.val();
         self.status.omissions_b.next = self.rxw.omissions_b.val();
         self.status.recoveries.next = self.stats.recoveries.val();
+        self.status.cap_a.next = self.caps.cap_a.val();
+        self.status.cap_b.next = self.caps.cap_b.val();
         self.stats.clk.next = self.clk.val();
         self.stats.rst.next = self.rst.val();
         self.stats.switch_evt.next = self.main.switch_evt.val();

@@ -15,6 +15,7 @@ use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
 use drcc_cosim::Frame;
+use drcc_hdl::host::registers as map;
 use drcc_testbench::engines::verilator_required;
 use drcc_testbench::random::SplitMix64;
 
@@ -174,6 +175,29 @@ fn run_seed(seed: u64, cycles: u64) {
         })
         .collect();
     writes.sort();
+    // Reads at random times of the registers a driver polls besides the frames:
+    // the §10 words (VERSION, SIZES, the captures) and INT_STATUS, so their
+    // values are compared on the bus too, not only through irq. Drawn after
+    // every other choice, so the rest of each system stays as it was.
+    let polled = [
+        map::VERSION,
+        map::SIZES,
+        map::CAP_A,
+        map::CAP_B,
+        map::INT_STATUS,
+        map::CHAN_A_ERR,
+    ];
+    let mut reads: Vec<(u64, usize, u8)> = (0..40)
+        .map(|_| {
+            (
+                rng.below(cycles),
+                rng.below(nodes as u64) as usize,
+                polled[rng.below(polled.len() as u64) as usize] as u8,
+            )
+        })
+        .collect();
+    reads.sort();
+    let mut next_read = 0;
     let mut next = 0;
     let mut recent: std::collections::VecDeque<String> = std::collections::VecDeque::new();
     for cycle in 0..cycles {
@@ -186,6 +210,12 @@ fn run_seed(seed: u64, cycles: u64) {
                 rtl.node_mut(n).host.read(reg);
             }
             next += 1;
+        }
+        while next_read < reads.len() && reads[next_read].0 == cycle {
+            let (_, n, reg) = reads[next_read];
+            model.node_mut(n).host.read(reg);
+            rtl.node_mut(n).host.read(reg);
+            next_read += 1;
         }
         model.step();
         rtl.step();

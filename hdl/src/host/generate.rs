@@ -149,6 +149,17 @@ pub fn c_header(map: &RegisterMap) -> String {
     if !map.defines.is_empty() {
         s.push('\n');
     }
+    if !map.sizes.is_empty() {
+        let _ = writeln!(
+            s,
+            "/* Sizes of the default top ({p}_SIZES at reset). Firmware built for another\n * configuration defines its own before including this header. */"
+        );
+        for (n, reg, field) in map.sizes {
+            let v = map.field(reg, field).reset;
+            let _ = writeln!(s, "#ifndef {p}_{n}\n#define {p}_{n} {v}u\n#endif");
+        }
+        s.push('\n');
+    }
     for r in map.registers {
         let reg = r.name;
         let _ = writeln!(s, "/* {reg}: {} ({}) */", r.desc, r.access.label());

@@ -351,6 +351,7 @@ pub static MAP: RegisterMap = RegisterMap {
         ("NRAP_COUNT_MIN", NRAP_COUNT_MIN),
         ("BLOCK_MIN", BLOCK_MIN),
     ],
+    sizes: &[],
 };
 
 /// The register named `name`.

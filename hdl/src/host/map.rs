@@ -265,6 +265,9 @@ pub struct RegisterMap {
     pub lists: &'static [CodeList],
     /// Extra `#define`s (name without prefix, value) for the header.
     pub defines: &'static [(&'static str, u32)],
+    /// Size macros of the header, each `(name, register, field)`: the field's
+    /// reset value (the default top's size) as an overridable `#ifndef` default.
+    pub sizes: &'static [(&'static str, &'static str, &'static str)],
 }
 
 impl RegisterMap {

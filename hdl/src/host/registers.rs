@@ -56,9 +56,19 @@ pub const MB_CFG: u32 = 34;
 pub const MB_STATE: u32 = 35;
 pub const STAR_STATUS: u32 = 36;
 pub const OMISSIONS: u32 = 37;
+pub const VERSION: u32 = 38;
+pub const SIZES: u32 = 39;
+pub const CAP_A: u32 = 40;
+pub const CAP_B: u32 = 41;
 
 /// The constant read from `ID`: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
+
+/// `VERSION.major` (contract §10.1): changes when a register or field moves or
+/// changes its meaning.
+pub const VERSION_MAJOR: u32 = 1;
+/// `VERSION.minor`: changes when a register or field is added.
+pub const VERSION_MINOR: u32 = 1;
 
 const INT_FIELDS: &[Field] = &[
     f("rx", 0, 1, 0, "a frame was written to the RX FIFO"),
@@ -119,6 +129,27 @@ const INT_FIELDS: &[Field] = &[
         0,
         "replicated star node: the hubs' decision (STAR_STATUS.split) changed (contract §4.5)",
     ),
+    f(
+        "err_warning",
+        10,
+        1,
+        0,
+        "a channel's err_warning (TEC or REC >= BTR.ewl) changed, either way (contract §10.2)",
+    ),
+    f(
+        "arb_lost",
+        11,
+        1,
+        0,
+        "a channel lost arbitration (CAP_x.alc; writing 1 here re-arms its capture)",
+    ),
+    f(
+        "bus_error",
+        12,
+        1,
+        0,
+        "a channel detected a bus error (CAP_x.err_*; writing 1 here re-arms its capture)",
+    ),
 ];
 
 const CHAN_ERR_FIELDS: &[Field] = &[
@@ -126,6 +157,45 @@ const CHAN_ERR_FIELDS: &[Field] = &[
     f("rec", 16, 8, 0, "receive error counter"),
     f("err_state", 24, 2, 0, "fault confinement state").coded(ErrState::ENCODING),
     f("err_warning", 26, 1, 0, "TEC or REC >= error warning limit"),
+];
+
+const CAP_FIELDS: &[Field] = &[
+    f(
+        "err_kind",
+        0,
+        3,
+        0,
+        "kind of the captured error: 0 none, 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK",
+    ),
+    f(
+        "err_field",
+        3,
+        5,
+        0,
+        "frame field of the bit in error (the channel's field code, timing contract §4.1)",
+    ),
+    f("err_tx", 8, 1, 0, "the channel was transmitter at the error"),
+    f(
+        "err_valid",
+        9,
+        1,
+        0,
+        "an error was captured; later errors are not, until INT_STATUS.bus_error is written 1",
+    ),
+    f(
+        "alc",
+        16,
+        5,
+        0,
+        "arbitration lost at: base-ID bit i (0 = first) is i, SRR/RTR 11, IDE 12, extension bit j is 13 + j, extended RTR 31",
+    ),
+    f(
+        "alc_valid",
+        21,
+        1,
+        0,
+        "a lost arbitration was captured; later ones are not, until INT_STATUS.arb_lost is written 1",
+    ),
 ];
 
 const AUX_FIELDS: &[Field] = &[
@@ -459,6 +529,44 @@ pub const REGISTERS: &[Register] = &[
             f("omissions_b", 16, 16, 0, "frames only channel A delivered (omissions of channel B)"),
         ],
     },
+    Register {
+        name: "VERSION",
+        index: VERSION,
+        access: Access::Ro,
+        desc: "Version of this register map (contract §10.1; 0 on maps before it)",
+        fields: &[
+            f("minor", 0, 8, VERSION_MINOR, "a register or field was added"),
+            f("major", 8, 8, VERSION_MAJOR, "a register or field moved or changed its meaning"),
+        ],
+    },
+    Register {
+        name: "SIZES",
+        index: SIZES,
+        access: Access::Ro,
+        desc: "The sizes this instance was built with, Verilog parameters included (contract §1.1, §10.1); reset values are the default top's",
+        fields: &[
+            f("rx_fifo_depth", 0, 6, 32, "RX FIFO entries (RX_FIFO_DEPTH)"),
+            f("tx_queue_depth", 8, 4, 8, "entries of each TX queue (TX_QUEUE_DEPTH)"),
+            f("history", 16, 6, 32, "duplicate-removal history entries (HISTORY)"),
+            f("mailboxes", 24, 5, 16, "DMR mailboxes (M)"),
+            f("dmr", 29, 1, 1, "CTRL.dmr can be set (DMR)"),
+            f("star", 30, 1, 1, "CTRL.star can be set (STAR)"),
+        ],
+    },
+    Register {
+        name: "CAP_A",
+        index: CAP_A,
+        access: Access::Ro,
+        desc: "Channel A: the first error and the first lost arbitration since their interrupt was acknowledged (contract §10.2; cleared by rst only)",
+        fields: CAP_FIELDS,
+    },
+    Register {
+        name: "CAP_B",
+        index: CAP_B,
+        access: Access::Ro,
+        desc: "Channel B: the same as CAP_A",
+        fields: CAP_FIELDS,
+    },
 ];
 
 /// Main FSM state encodings (paper Table 1), for the header (`DRCC_STATE_*`).
@@ -499,6 +607,12 @@ pub static MAP: RegisterMap = RegisterMap {
         },
     ],
     defines: &[("ID_VALUE", ID_VALUE)],
+    sizes: &[
+        ("RX_FIFO_DEPTH", "SIZES", "rx_fifo_depth"),
+        ("TX_QUEUE_DEPTH", "SIZES", "tx_queue_depth"),
+        ("HISTORY", "SIZES", "history"),
+        ("MAILBOXES", "SIZES", "mailboxes"),
+    ],
 };
 
 /// The register named `name`.

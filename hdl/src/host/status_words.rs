@@ -1,7 +1,8 @@
 //! The read-only registers of the DRCC map (contract §3): `ID`, `STATUS`,
 //! `CHAN_x_ERR`, `AUX_x`, the head of the RX FIFO (`RX_ID`, `RX_CTRL`,
 //! `RX_DATAx`), `STATS0`, `STATS1`, `TIMES`, `STAR_STATUS` (§4.5, assembled by
-//! `crate::rmb::star`) and `OMISSIONS` (§7), from the status of the
+//! `crate::rmb::star`), `OMISSIONS` (§7), `VERSION`, `SIZES` and `CAP_x` (§10,
+//! the captures assembled by `super::captures`), from the status of the
 //! blocks that own it, with every field at its position in the table
 //! (`super::registers`). Combinational: `word` is the addressed register's value
 //! (0 when the address is not one of them); the register block registers it
@@ -9,6 +10,8 @@
 
 use super::map::{lsb, placed};
 use super::registers::{self as map, MAP};
+use crate::channel::sized::Param;
+use crate::config::DrccConfig;
 use rust_hdl::prelude::*;
 
 /// The read-only words of the DRCC register map.
@@ -100,6 +103,18 @@ pub struct StatusWords {
     pub omissions_a: Signal<In, Bits<16>>,
     /// Frames only channel A delivered (omissions of B).
     pub omissions_b: Signal<In, Bits<16>>,
+    // ---- captures (CAP_A, CAP_B) ----
+    /// `CAP_A`, assembled by `super::captures`.
+    pub cap_a: Signal<In, Bits<32>>,
+    /// `CAP_B`.
+    pub cap_b: Signal<In, Bits<32>>,
+    // ---- the sizes (SIZES, §1.1): Verilog parameters of the top but M ----
+    sz_rx_fifo: Param<6, 32>,
+    sz_tx_queue: Param<4, 8>,
+    sz_history: Param<6, 32>,
+    sz_mailboxes: Param<5, 16>,
+    sz_dmr: Param<1, 1>,
+    sz_star: Param<1, 1>,
     // ---- decode ----
     rx_data64: Signal<Local, Bits<64>>,
     a_id: Constant<Bits<6>>,
@@ -117,7 +132,12 @@ pub struct StatusWords {
     a_times: Constant<Bits<6>>,
     a_star_status: Constant<Bits<6>>,
     a_omissions: Constant<Bits<6>>,
+    a_version: Constant<Bits<6>>,
+    a_sizes: Constant<Bits<6>>,
+    a_cap_a: Constant<Bits<6>>,
+    a_cap_b: Constant<Bits<6>>,
     id_value: Constant<Bits<32>>,
+    version_value: Constant<Bits<32>>,
     zero32: Constant<Bits<32>>,
     // ---- field positions (from the table) ----
     st_state: Constant<Bits<5>>,
@@ -151,6 +171,12 @@ pub struct StatusWords {
     t_switch: Constant<Bits<5>>,
     o_a: Constant<Bits<5>>,
     o_b: Constant<Bits<5>>,
+    z_rx_fifo: Constant<Bits<5>>,
+    z_tx_queue: Constant<Bits<5>>,
+    z_history: Constant<Bits<5>>,
+    z_mailboxes: Constant<Bits<5>>,
+    z_dmr: Constant<Bits<5>>,
+    z_star: Constant<Bits<5>>,
 }
 
 fn adr(index: u32) -> Constant<Bits<6>> {
@@ -190,6 +216,22 @@ fn check_structural_fields() {
 impl Default for StatusWords {
     fn default() -> Self {
         check_structural_fields();
+        // the table's SIZES reset values are the default top's sizes
+        let d = DrccConfig::DEFAULT;
+        for (field, size) in [
+            ("rx_fifo_depth", d.rx_fifo_depth),
+            ("tx_queue_depth", d.tx_queue_depth),
+            ("history", d.history),
+            ("mailboxes", d.mailboxes),
+            ("dmr", d.dmr as usize),
+            ("star", d.star as usize),
+        ] {
+            assert_eq!(
+                MAP.field("SIZES", field).reset as usize,
+                size,
+                "register map DRCC: SIZES.{field} resets to the default top's size"
+            );
+        }
         // CHAN_B_ERR and AUX_B share the field list of CHAN_A_ERR and AUX_A
         for (a, b) in [("CHAN_A_ERR", "CHAN_B_ERR"), ("AUX_A", "AUX_B")] {
             let (a, b) = (map::register(a).unwrap(), map::register(b).unwrap());
@@ -243,6 +285,14 @@ impl Default for StatusWords {
             star_word: Default::default(),
             omissions_a: Default::default(),
             omissions_b: Default::default(),
+            cap_a: Default::default(),
+            cap_b: Default::default(),
+            sz_rx_fifo: Default::default(),
+            sz_tx_queue: Default::default(),
+            sz_history: Default::default(),
+            sz_mailboxes: Default::default(),
+            sz_dmr: Default::default(),
+            sz_star: Default::default(),
             rx_data64: Default::default(),
             a_id: adr(map::ID),
             a_status: adr(map::STATUS),
@@ -259,7 +309,14 @@ impl Default for StatusWords {
             a_times: adr(map::TIMES),
             a_star_status: adr(map::STAR_STATUS),
             a_omissions: adr(map::OMISSIONS),
+            a_version: adr(map::VERSION),
+            a_sizes: adr(map::SIZES),
+            a_cap_a: adr(map::CAP_A),
+            a_cap_b: adr(map::CAP_B),
             id_value: Constant::new((map::ID_VALUE as u64).into()),
+            version_value: Constant::new(
+                (map::register("VERSION").unwrap().reset_value() as u64).into(),
+            ),
             zero32: Constant::new(0.into()),
             st_state: lsb(&MAP, "STATUS", "state", 4),
             st_tx_channel: lsb(&MAP, "STATUS", "tx_channel", 1),
@@ -292,6 +349,28 @@ impl Default for StatusWords {
             t_switch: lsb(&MAP, "TIMES", "switch_time", 16),
             o_a: lsb(&MAP, "OMISSIONS", "omissions_a", 16),
             o_b: lsb(&MAP, "OMISSIONS", "omissions_b", 16),
+            z_rx_fifo: lsb(&MAP, "SIZES", "rx_fifo_depth", 6),
+            z_tx_queue: lsb(&MAP, "SIZES", "tx_queue_depth", 4),
+            z_history: lsb(&MAP, "SIZES", "history", 6),
+            z_mailboxes: lsb(&MAP, "SIZES", "mailboxes", 5),
+            z_dmr: lsb(&MAP, "SIZES", "dmr", 1),
+            z_star: lsb(&MAP, "SIZES", "star", 1),
+        }
+    }
+}
+
+impl StatusWords {
+    /// The words of a DRCC built with `cfg`: `SIZES` reads its sizes (each a
+    /// `localparam` that the top's Verilog parameters set, `crate::tops::params`).
+    pub fn with_config(cfg: &DrccConfig) -> Self {
+        Self {
+            sz_rx_fifo: Param::new(cfg.rx_fifo_depth as u64),
+            sz_tx_queue: Param::new(cfg.tx_queue_depth as u64),
+            sz_history: Param::new(cfg.history as u64),
+            sz_mailboxes: Param::new(cfg.mailboxes as u64),
+            sz_dmr: Param::new(cfg.dmr as u64),
+            sz_star: Param::new(cfg.star as u64),
+            ..Default::default()
         }
     }
 }
@@ -371,6 +450,19 @@ impl Logic for StatusWords {
         } else if self.adr.val() == self.a_omissions.val() {
             self.word.next = (bit_cast::<32, 16>(self.omissions_a.val()) << self.o_a.val())
                 | (bit_cast::<32, 16>(self.omissions_b.val()) << self.o_b.val());
+        } else if self.adr.val() == self.a_version.val() {
+            self.word.next = self.version_value.val();
+        } else if self.adr.val() == self.a_sizes.val() {
+            self.word.next = (bit_cast::<32, 6>(self.sz_rx_fifo.val()) << self.z_rx_fifo.val())
+                | (bit_cast::<32, 4>(self.sz_tx_queue.val()) << self.z_tx_queue.val())
+                | (bit_cast::<32, 6>(self.sz_history.val()) << self.z_history.val())
+                | (bit_cast::<32, 5>(self.sz_mailboxes.val()) << self.z_mailboxes.val())
+                | (bit_cast::<32, 1>(self.sz_dmr.val()) << self.z_dmr.val())
+                | (bit_cast::<32, 1>(self.sz_star.val()) << self.z_star.val());
+        } else if self.adr.val() == self.a_cap_a.val() {
+            self.word.next = self.cap_a.val();
+        } else if self.adr.val() == self.a_cap_b.val() {
+            self.word.next = self.cap_b.val();
         }
     }
 }

@@ -94,6 +94,12 @@ pub struct WbRegs {
     pub ev_dmr: Signal<In, Bit>,
     /// A star node's `STAR_STATUS.split` changed (`INT_STATUS.domain`, §4.5).
     pub ev_domain: Signal<In, Bit>,
+    /// A channel's warning flag changed (`INT_STATUS.err_warning`, §10.2).
+    pub ev_err_warning: Signal<In, Bit>,
+    /// A channel lost arbitration (`INT_STATUS.arb_lost`).
+    pub ev_arb_lost: Signal<In, Bit>,
+    /// A channel detected a bus error (`INT_STATUS.bus_error`).
+    pub ev_bus_error: Signal<In, Bit>,
     /// A whole-word write is taken at this edge (the DMR registers take no other).
     pub wr_o: Signal<Out, Bit>,
     // ---- configuration out ----
@@ -147,8 +153,12 @@ pub struct WbRegs {
     pub tx_frame: Signal<Out, Bits<99>>,
     /// `RX_CMD.pop` accepted.
     pub pop: Signal<Out, Bit>,
+    /// `INT_STATUS.bus_error` written 1: the error captures re-arm (§10.2).
+    pub rearm_err: Signal<Out, Bit>,
+    /// `INT_STATUS.arb_lost` written 1: the arbitration-lost captures re-arm.
+    pub rearm_alc: Signal<Out, Bit>,
     // ---- blocks ----
-    bus: WbSlave<10>,
+    bus: WbSlave<13>,
     ctrl: CtrlReg,
     ctrl_check: CtrlCheck,
     // ---- registers ----
@@ -179,7 +189,7 @@ pub struct WbRegs {
     rdata: Signal<Local, Bits<32>>,
     wdat: Signal<Local, Bits<32>>,
     illegal: Signal<Local, Bit>,
-    w1c: Signal<Local, Bits<10>>,
+    w1c: Signal<Local, Bits<13>>,
     target_count: Signal<Local, Bits<4>>,
     es_evt: Signal<Local, Bit>,
     tx_data64: Signal<Local, Bits<64>>,
@@ -222,6 +232,13 @@ pub struct WbRegs {
     i_aux: Constant<Bits<5>>,
     i_dmr: Constant<Bits<5>>,
     i_domain: Constant<Bits<5>>,
+    i_err_warning: Constant<Bits<5>>,
+    i_arb_lost: Constant<Bits<5>>,
+    i_bus_error: Constant<Bits<5>>,
+    /// `INT_STATUS.bus_error` as a mask (the re-arm of §10.2).
+    m_bus_error: Constant<Bits<13>>,
+    /// `INT_STATUS.arb_lost` as a mask.
+    m_arb_lost: Constant<Bits<13>>,
     // ---- reset values and codes ----
     btr_reset: Constant<Bits<28>>,
     rmb_cfg_reset: Constant<Bits<32>>,
@@ -230,7 +247,7 @@ pub struct WbRegs {
     zero2: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     zero6: Constant<Bits<6>>,
-    zero10: Constant<Bits<10>>,
+    zero13: Constant<Bits<13>>,
     zero15: Constant<Bits<15>>,
     zero16: Constant<Bits<16>>,
     zero31: Constant<Bits<31>>,
@@ -265,8 +282,8 @@ impl Default for WbRegs {
     fn default() -> Self {
         stored_in("BTR", 28);
         stored_in("RMB_CFG", 32);
-        stored_in("INT_STATUS", 10);
-        stored_in("INT_ENABLE", 10);
+        stored_in("INT_STATUS", 13);
+        stored_in("INT_ENABLE", 13);
         let field_reset = |reg: &str, field: &str| MAP.field(reg, field).reset;
         Self {
             clk: Default::default(),
@@ -310,6 +327,9 @@ impl Default for WbRegs {
             ext_illegal: Default::default(),
             ev_dmr: Default::default(),
             ev_domain: Default::default(),
+            ev_err_warning: Default::default(),
+            ev_arb_lost: Default::default(),
+            ev_bus_error: Default::default(),
             wr_o: Default::default(),
             brp: Default::default(),
             tseg1: Default::default(),
@@ -324,6 +344,8 @@ impl Default for WbRegs {
             push_q: Default::default(),
             tx_frame: Default::default(),
             pop: Default::default(),
+            rearm_err: Default::default(),
+            rearm_alc: Default::default(),
             bus: Default::default(),
             ctrl: Default::default(),
             ctrl_check: Default::default(),
@@ -388,6 +410,11 @@ impl Default for WbRegs {
             i_aux: lsb(&MAP, "INT_STATUS", "aux", 1),
             i_dmr: lsb(&MAP, "INT_STATUS", "dmr", 1),
             i_domain: lsb(&MAP, "INT_STATUS", "domain", 1),
+            i_err_warning: lsb(&MAP, "INT_STATUS", "err_warning", 1),
+            i_arb_lost: lsb(&MAP, "INT_STATUS", "arb_lost", 1),
+            i_bus_error: lsb(&MAP, "INT_STATUS", "bus_error", 1),
+            m_bus_error: Constant::new((MAP.field("INT_STATUS", "bus_error").mask() as u64).into()),
+            m_arb_lost: Constant::new((MAP.field("INT_STATUS", "arb_lost").mask() as u64).into()),
             btr_reset: reset(map::register("BTR").unwrap().reset_value()),
             rmb_cfg_reset: reset(map::register("RMB_CFG").unwrap().reset_value()),
             window_reset: reset(field_reset("DEDUP_CFG", "window")),
@@ -395,7 +422,7 @@ impl Default for WbRegs {
             zero2: Constant::new(0.into()),
             zero4: Constant::new(0.into()),
             zero6: Constant::new(0.into()),
-            zero10: Constant::new(0.into()),
+            zero13: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             zero31: Constant::new(0.into()),

@@ -97,7 +97,8 @@ const fn site(
 
 /// Every localparam a size sets (the `Param` fields of `memory/rx_fifo.rs`,
 /// `memory/dedup.rs`, `memory/tx_buffer.rs`, `host/wishbone.rs`,
-/// `host/ctrl_reg.rs`, `host/ctrl_check.rs`, `host/dmr_check.rs`).
+/// `host/ctrl_reg.rs`, `host/ctrl_check.rs`, `host/dmr_check.rs`,
+/// `host/status_words.rs`).
 const SITES: &[Site] = &[
     site("rxfifo", "mask", "RX_FIFO_DEPTH", 5, true),
     site("rxw", "fifo_depth", "RX_FIFO_DEPTH", 6, false),
@@ -110,6 +111,11 @@ const SITES: &[Site] = &[
     site("ctrl_check", "dmr_present", "DMR", 1, false),
     site("ctrl_check", "star_present", "STAR", 1, false),
     site("dmr_check", "dmr_present", "DMR", 1, false),
+    site("status", "sz_rx_fifo", "RX_FIFO_DEPTH", 6, false),
+    site("status", "sz_tx_queue", "TX_QUEUE_DEPTH", 4, false),
+    site("status", "sz_history", "HISTORY", 6, false),
+    site("status", "sz_dmr", "DMR", 1, false),
+    site("status", "sz_star", "STAR", 1, false),
 ];
 
 /// The sizes of a top's `params` that are Verilog parameters, with their values:

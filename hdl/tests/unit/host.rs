@@ -1,5 +1,6 @@
 //! Tests of `drcc_hdl::host`.
 
+mod captures;
 mod ctrl_check;
 mod ctrl_reg;
 mod dmr_check;

@@ -52,6 +52,7 @@ mod tests {
             }],
             lists: &[],
             defines: &[],
+            sizes: &[],
         };
         let _: Constant<Bits<5>> = lsb(&MAP, "X", "b", 2);
     }

@@ -11012,7 +11012,7 @@ module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch
     localparam [5:0] sz_rx_fifo = RX_FIFO_DEPTH;
     localparam [3:0] sz_tx_queue = TX_QUEUE_DEPTH;
     localparam [5:0] sz_history = HISTORY;
-    localparam  sz_mailboxes = 5'b10000;
+    localparam  sz_mailboxes = 5'b0;
     localparam [0:0] sz_dmr = DMR;
     localparam [0:0] sz_star = STAR;
     localparam  a_id = 6'b0;

@@ -67,6 +67,10 @@ fn model_host_and_generated_header_agree_on_every_register() {
         ("MB_STATE", idx::MB_STATE, reg::MB_STATE),
         ("STAR_STATUS", idx::STAR_STATUS, reg::STAR_STATUS),
         ("OMISSIONS", idx::OMISSIONS, reg::OMISSIONS),
+        ("VERSION", idx::VERSION, reg::VERSION),
+        ("SIZES", idx::SIZES, reg::SIZES),
+        ("CAP_A", idx::CAP_A, reg::CAP_A),
+        ("CAP_B", idx::CAP_B, reg::CAP_B),
     ];
     let header = header_offsets();
     assert_eq!(

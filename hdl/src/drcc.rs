@@ -177,7 +177,7 @@ pub struct DrccCore<const M: usize> {
     mailbox_cfg: IfMailboxes<MailboxCfg, M>,
     dmr_ctl: DmrControl,
     dmr_eng: IfMailboxes<DmrEngine<M>, M>,
-    status: StatusWords,
+    status: StatusWords<M>,
     caps: Captures,
     ticker: BitTick,
     stats: RedundancyStats,

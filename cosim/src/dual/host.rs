@@ -55,6 +55,10 @@ pub mod reg {
     pub const TIMES: u8 = map::TIMES as u8;
     pub const STAR_STATUS: u8 = map::STAR_STATUS as u8;
     pub const OMISSIONS: u8 = map::OMISSIONS as u8;
+    pub const VERSION: u8 = map::VERSION as u8;
+    pub const SIZES: u8 = map::SIZES as u8;
+    pub const CAP_A: u8 = map::CAP_A as u8;
+    pub const CAP_B: u8 = map::CAP_B as u8;
     pub const DMR_CFG: u8 = map::DMR_CFG as u8;
     pub const DMR_TIME: u8 = map::DMR_TIME as u8;
     pub const DMR_CS: u8 = map::DMR_CS as u8;

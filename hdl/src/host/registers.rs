@@ -404,14 +404,14 @@ pub const REGISTERS: &[Register] = &[
         index: TX_DATA0,
         access: Access::Rw,
         desc: "Staged frame: data bytes 0..3 (byte 0 in [7:0])",
-        fields: &[f("data", 0, 32, 0, "bytes 0..3 (valid while `RX_ID.rx_ready`)").not_reset()],
+        fields: &[f("data", 0, 32, 0, "bytes 0..3")],
     },
     Register {
         name: "TX_DATA1",
         index: TX_DATA1,
         access: Access::Rw,
         desc: "Staged frame: data bytes 4..7 (byte 4 in [7:0])",
-        fields: &[f("data", 0, 32, 0, "bytes 4..7 (valid while `RX_ID.rx_ready`)").not_reset()],
+        fields: &[f("data", 0, 32, 0, "bytes 4..7")],
     },
     Register {
         name: "TX_CMD",
@@ -449,14 +449,14 @@ pub const REGISTERS: &[Register] = &[
         index: RX_DATA0,
         access: Access::Ro,
         desc: "Head of the RX FIFO: data bytes 0..3 (byte 0 in [7:0])",
-        fields: &[f("data", 0, 32, 0, "bytes 0..3")],
+        fields: &[f("data", 0, 32, 0, "bytes 0..3 (valid while `RX_ID.rx_ready`)").not_reset()],
     },
     Register {
         name: "RX_DATA1",
         index: RX_DATA1,
         access: Access::Ro,
         desc: "Head of the RX FIFO: data bytes 4..7 (byte 4 in [7:0])",
-        fields: &[f("data", 0, 32, 0, "bytes 4..7")],
+        fields: &[f("data", 0, 32, 0, "bytes 4..7 (valid while `RX_ID.rx_ready`)").not_reset()],
     },
     Register {
         name: "RX_CMD",

@@ -14,9 +14,10 @@ use crate::channel::sized::Param;
 use crate::config::DrccConfig;
 use rust_hdl::prelude::*;
 
-/// The read-only words of the DRCC register map.
+/// The read-only words of the DRCC register map, for a DRCC with `M` DMR
+/// mailboxes (`SIZES.mailboxes`).
 #[derive(LogicBlock)]
-pub struct StatusWords {
+pub struct StatusWords<const M: usize> {
     /// Word index on the bus (`wb_adr_i`).
     pub adr: Signal<In, Bits<6>>,
     /// The addressed read-only register, 0 for any other address.
@@ -213,7 +214,7 @@ fn check_structural_fields() {
     }
 }
 
-impl Default for StatusWords {
+impl<const M: usize> Default for StatusWords<M> {
     fn default() -> Self {
         check_structural_fields();
         // the table's SIZES reset values are the default top's sizes
@@ -290,7 +291,7 @@ impl Default for StatusWords {
             sz_rx_fifo: Default::default(),
             sz_tx_queue: Default::default(),
             sz_history: Default::default(),
-            sz_mailboxes: Default::default(),
+            sz_mailboxes: Param::new(M as u64),
             sz_dmr: Default::default(),
             sz_star: Default::default(),
             rx_data64: Default::default(),
@@ -359,15 +360,18 @@ impl Default for StatusWords {
     }
 }
 
-impl StatusWords {
+impl<const M: usize> StatusWords<M> {
     /// The words of a DRCC built with `cfg`: `SIZES` reads its sizes (each a
     /// `localparam` that the top's Verilog parameters set, `crate::tops::params`).
     pub fn with_config(cfg: &DrccConfig) -> Self {
+        assert_eq!(
+            cfg.mailboxes, M,
+            "StatusWords<{M}> is for {M} DMR mailboxes"
+        );
         Self {
             sz_rx_fifo: Param::new(cfg.rx_fifo_depth as u64),
             sz_tx_queue: Param::new(cfg.tx_queue_depth as u64),
             sz_history: Param::new(cfg.history as u64),
-            sz_mailboxes: Param::new(cfg.mailboxes as u64),
             sz_dmr: Param::new(cfg.dmr as u64),
             sz_star: Param::new(cfg.star as u64),
             ..Default::default()
@@ -375,7 +379,7 @@ impl StatusWords {
     }
 }
 
-impl Logic for StatusWords {
+impl<const M: usize> Logic for StatusWords<M> {
     #[hdl_gen]
     fn update(&mut self) {
         // register byte order: byte 0 in [7:0]; channel order: byte 0 in [63:56]

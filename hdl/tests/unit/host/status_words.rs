@@ -9,7 +9,7 @@ mod tests {
 
     #[test]
     fn status_words_synthesizes() {
-        let mut uut = StatusWords::default();
+        let mut uut = StatusWords::<16>::default();
         uut.connect_all();
         crate::synth_check::yosys_check("status_words", &generate_verilog(&uut));
     }
@@ -18,10 +18,10 @@ mod tests {
     /// with all ones in turn and the word must be exactly the field's mask.
     #[test]
     fn status_fields_sit_at_their_table_positions() {
-        let mut uut = StatusWords::default();
+        let mut uut = StatusWords::<16>::default();
         uut.connect_all();
         uut.adr.next = (map::STATUS as u64).into();
-        type Drive = fn(&mut StatusWords, bool);
+        type Drive = fn(&mut StatusWords<16>, bool);
         let fields: [(&str, Drive); 11] = [
             ("state", |u, on| {
                 u.state.next = if on { 0xF.into() } else { 0.into() }

@@ -10,10 +10,11 @@
 mod common;
 
 use common::{
-    bus_or_skip, exchange, frames, port, Budget, Regs, Sent, BIT, BITRATE, CLOCK_HZ, FRAME_BITS,
+    bus_or_skip, c_isr, c_send, exchange, frames, port, queue_of, rust_isr, rust_send, Budget,
+    Regs, Sent, BIT, BITRATE, CLOCK_HZ, FRAME_BITS,
 };
-use drcc_driver::{BitTiming, Channel, Config, Drcc, Error, Mode};
-use drcc_driver_sim::{CConfig, CDriver, CFrame, DualBus, C_MODE_NORMAL};
+use drcc_driver::{BitTiming, Config, Drcc, Mode};
+use drcc_driver_sim::{CConfig, CDriver, DualBus, C_MODE_NORMAL};
 use std::cell::RefCell;
 use std::rc::Rc;
 
@@ -56,11 +57,6 @@ fn integrate(bus: &Rc<RefCell<DualBus>>) {
     bus.borrow_mut().tick(20 * BIT);
 }
 
-/// Frame k goes to queue k % 2 (0 = A, 1 = B).
-fn queue_of(k: usize) -> u32 {
-    (k % 2) as u32
-}
-
 /// The frames of queue `q` in the order sent, tagged with channel `q`.
 fn expected_on(q: u32) -> Vec<(Sent, u8)> {
     frames()
@@ -94,66 +90,6 @@ const BUDGET: Budget = Budget {
     settle_bits: 2 * FRAME_BITS,
     budget_bits: 12 * FRAME_BITS,
 };
-
-fn c_send(c: &mut CDriver) -> impl FnMut(&Sent) -> bool + '_ {
-    let mut k = 0;
-    move |f| {
-        let rc = c.send(&f.to_c(), queue_of(k));
-        assert!(rc == 0 || rc == -5, "drcc_send: {rc}");
-        if rc == 0 {
-            k += 1;
-        }
-        rc == 0
-    }
-}
-
-fn rust_send(d: &mut Drcc<Regs>) -> impl FnMut(&Sent) -> bool + '_ {
-    let mut k = 0;
-    move |f| {
-        let q = if queue_of(k) == 1 {
-            Channel::B
-        } else {
-            Channel::A
-        };
-        match d.send(&f.to_rust(), q) {
-            Ok(()) => {
-                k += 1;
-                true
-            }
-            Err(Error::Full) => false,
-            Err(e) => panic!("send: {e:?}"),
-        }
-    }
-}
-
-fn c_isr(c: &mut CDriver) -> impl FnMut() -> Vec<(Sent, u8)> + '_ {
-    move || {
-        let mut buf = [CFrame::default(); 4];
-        let mut out = Vec::new();
-        loop {
-            let r = c.isr(&mut buf);
-            out.extend(buf[..r.frames].iter().map(Sent::from_c));
-            if r.more == 0 {
-                return out;
-            }
-        }
-    }
-}
-
-fn rust_isr(d: &mut Drcc<Regs>) -> impl FnMut() -> Vec<(Sent, u8)> + '_ {
-    move || {
-        let mut buf =
-            [drcc_driver::Frame::data_frame(embedded_can::StandardId::ZERO, &[]).unwrap(); 4];
-        let mut out = Vec::new();
-        loop {
-            let r = d.isr(&mut buf);
-            out.extend(buf[..r.frames].iter().map(Sent::from_rust));
-            if !r.more {
-                return out;
-            }
-        }
-    }
-}
 
 #[test]
 fn c_driver_to_c_driver() {

@@ -3,8 +3,8 @@
 //! the tests send (the oracle) and the send/receive loop.
 #![allow(dead_code)]
 
-use drcc_driver::{Channel, Frame, Registers};
-use drcc_driver_sim::{CFrame, DualBus, NodePort};
+use drcc_driver::{Channel, Drcc, Error, Frame, Registers};
+use drcc_driver_sim::{CDriver, CFrame, DualBus, NodePort};
 use embedded_can::{ExtendedId, Frame as _, Id, StandardId};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -164,7 +164,7 @@ impl Sent {
 /// `rx_node`'s `irq` is high, until every frame arrived and `settle_bits`
 /// more bit times passed (a duplicate would show up then), or `budget_bits`
 /// bit times ran out. `at_clock` runs once per bus clock with the number of
-/// frames queued so far (to inject faults). Returns the frames with their
+/// frames received so far (to inject faults). Returns the frames with their
 /// channel, in arrival order.
 pub fn exchange(
     bus: &Rc<RefCell<DualBus>>,
@@ -194,7 +194,7 @@ pub fn exchange(
         {
             let mut b = bus.borrow_mut();
             b.step();
-            at_clock(&mut b, queued);
+            at_clock(&mut b, got.len());
         }
         if bus.borrow().irq(rx_node) {
             got.extend(isr());
@@ -224,3 +224,74 @@ pub struct Budget {
 /// Bit times for one frame with margin (at most 135 bits with stuffing, plus
 /// intermission), used for budgets.
 pub const FRAME_BITS: u64 = 160;
+
+/// Frame k goes to queue k % 2 (0 = A, 1 = B) in normal mode.
+pub fn queue_of(k: usize) -> u32 {
+    (k % 2) as u32
+}
+
+/// Queues frames through the C driver (`drcc_send`, frame k to `queue_of(k)`);
+/// false while the queue is full (DRCC_E_FULL).
+pub fn c_send(c: &mut CDriver) -> impl FnMut(&Sent) -> bool + '_ {
+    let mut k = 0;
+    move |f| {
+        let rc = c.send(&f.to_c(), queue_of(k));
+        assert!(rc == 0 || rc == -5, "drcc_send: {rc}");
+        if rc == 0 {
+            k += 1;
+        }
+        rc == 0
+    }
+}
+
+/// Queues frames through the Rust driver (`Drcc::send`, frame k to
+/// `queue_of(k)`); false while the queue is full.
+pub fn rust_send(d: &mut Drcc<Regs>) -> impl FnMut(&Sent) -> bool + '_ {
+    let mut k = 0;
+    move |f| {
+        let q = if queue_of(k) == 1 {
+            Channel::B
+        } else {
+            Channel::A
+        };
+        match d.send(&f.to_rust(), q) {
+            Ok(()) => {
+                k += 1;
+                true
+            }
+            Err(Error::Full) => false,
+            Err(e) => panic!("send: {e:?}"),
+        }
+    }
+}
+
+/// The C driver's interrupt handler (`drcc_isr`, a 4-frame buffer, called
+/// again while it reports more).
+pub fn c_isr(c: &mut CDriver) -> impl FnMut() -> Vec<(Sent, u8)> + '_ {
+    move || {
+        let mut buf = [CFrame::default(); 4];
+        let mut out = Vec::new();
+        loop {
+            let r = c.isr(&mut buf);
+            out.extend(buf[..r.frames].iter().map(Sent::from_c));
+            if r.more == 0 {
+                return out;
+            }
+        }
+    }
+}
+
+/// The Rust driver's interrupt handler (`Drcc::isr`, a 4-frame buffer).
+pub fn rust_isr(d: &mut Drcc<Regs>) -> impl FnMut() -> Vec<(Sent, u8)> + '_ {
+    move || {
+        let mut buf = [Frame::data_frame(StandardId::ZERO, &[]).unwrap(); 4];
+        let mut out = Vec::new();
+        loop {
+            let r = d.isr(&mut buf);
+            out.extend(buf[..r.frames].iter().map(Sent::from_rust));
+            if !r.more {
+                return out;
+            }
+        }
+    }
+}

@@ -1,11 +1,16 @@
-//! Redundancy mode on the Verilated dual bus: line A is cut in the middle of
-//! the traffic (node 0, the sender, is disconnected from line A while it is
-//! transmitting a frame on it) and every frame still arrives exactly once at
-//! node 1, drained by its driver's interrupt handler. docs/drcc.md promises
-//! it: in redundancy mode the host sees one logical controller, a failed
-//! channel is left for the other (k-failed policy, k = 1: after one failed
-//! attempt), frames from both channels reach the host once (duplicate
-//! removal), and `dual_tx` sends every message on A and then on B.
+//! Redundancy mode on the Verilated dual bus: a line A fault starts in the
+//! middle of the traffic, during a frame on line A, and every frame still
+//! arrives exactly once at node 1, drained by its driver's interrupt handler.
+//! Faults: node 0 (the sender) cut from line A (an open stub: it hears only
+//! itself), with and without `dual_tx`; line A stuck dominant for both nodes,
+//! with `dual_tx`. docs/drcc.md promises it: in redundancy mode the host sees
+//! one logical controller, a failed channel is left for the other (k-failed
+//! policy, k = 1: after one failed attempt; a line stuck dominant at the
+//! latest after the stall limit), frames from both channels reach the host
+//! once (duplicate removal), and `dual_tx` sends every message on A and then
+//! on B. The recovery time is short, so the sender also goes back to A while
+//! the fault lasts and leaves it again ("a wrong guess costs one failed
+//! attempt ... it never loses or duplicates a message").
 //!
 //! The oracle is the frames sent, in order (one logical queue). Beyond it, the
 //! tests check what the docs say must have happened for that: the first frame

@@ -6,10 +6,12 @@
 
 use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
+use drcc_cosim::model::drcc::DrccParams;
 use drcc_cosim::model::ChannelModel;
 use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Frame};
 
 mod channel_switching;
+mod driver_features;
 mod reception;
 mod registers;
 mod star_node;
@@ -40,6 +42,10 @@ const RX_CMD: u8 = 21;
 const STATS0: u8 = 22;
 const STATS1: u8 = 23;
 const TIMES: u8 = 24;
+const VERSION: u8 = 38;
+const SIZES: u8 = 39;
+const CAP_A: u8 = 40;
+const CAP_B: u8 = 41;
 
 // CTRL fields.
 const RESET_MODE: u32 = 1;
@@ -61,6 +67,9 @@ const I_OVERRUN: u32 = 1 << 4;
 const I_TX_FAILURE: u32 = 1 << 5;
 const I_ILLEGAL: u32 = 1 << 6;
 const I_AUX: u32 = 1 << 7;
+const I_ERR_WARNING: u32 = 1 << 10;
+const I_ARB_LOST: u32 = 1 << 11;
+const I_BUS_ERROR: u32 = 1 << 12;
 
 // Main FSM states (Table 1) and aux states (§5).
 const IDLE1: u8 = 0;
@@ -134,9 +143,14 @@ struct Sys {
 
 impl Sys {
     fn new(drcc: usize) -> Self {
+        Self::with_params(drcc, &DrccParams::default())
+    }
+
+    /// `drcc` DRCC nodes generated with the sizes of `p` (contract §1.1).
+    fn with_params(drcc: usize, p: &DrccParams) -> Self {
         let nodes = (0..drcc)
             .map(|_| Node {
-                engine: DrccModelEngine::new(),
+                engine: DrccModelEngine::with_params(p),
                 out: DrccOutputs {
                     chan_a_tx: true,
                     chan_b_tx: true,

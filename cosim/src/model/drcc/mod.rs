@@ -25,8 +25,9 @@
 //!    `reset_mode` register before the edge: queues, RX FIFO, writer FSM, history,
 //!    `rxp`, `now`, `hist_idle`, `tx_time`, tick counters are held cleared while it
 //!    is 1 (the clear takes effect at the first edge after `reset_mode` rises).
-//!    `INT_STATUS`, `INT_ENABLE`, `irq` and the staged TX registers are not cleared by
-//!    reset mode. Clearing `failover` in reset mode is not a switch event.
+//!    `INT_STATUS`, `INT_ENABLE`, `irq`, the staged TX registers and (contract
+//!    §10.2) `CAP_A`, `CAP_B` are not cleared by reset mode. Clearing `failover`
+//!    in reset mode is not a switch event.
 //! 4. RAMs are read-first: a read port loaded at an edge where the same address is
 //!    written gets the old contents. RAM contents are never reset (power-up 0); the
 //!    read data registers keep loading at `rst` and reset-mode edges, and `RX_ID`,
@@ -55,6 +56,13 @@
 //! 11. `tick` is not gated by reset mode (the counters are cleared there, so it
 //!     cannot fire after the first reset-mode edge; everything it drives is held
 //!     cleared in reset mode anyway).
+//! 12. §10.2 re-arm: "a write to `INT_STATUS` (taken)" is read as a write that
+//!     takes effect, i.e. the same write whose W1C clears bits: a partial
+//!     (byte-lane) write to `INT_STATUS` is refused (§2, `illegal`), clears
+//!     nothing and re-arms nothing. The `err_warning` comparison register and the
+//!     captures are updated at every non-`rst` edge, reset mode included (the
+//!     channels held in reset raise no `err_valid`/`arb_lost` there, and leaving
+//!     the warning limit by the counters' reset is an event).
 #![doc = include_str!("../drcc_contract.md")]
 
 pub mod aux_fsm;
@@ -510,6 +518,25 @@ impl DrccModel {
             ints |= int::ERR_STATE;
         }
         n.err_q = es;
+        // §10.2: the driver's events and the captures, the same in every mode.
+        let warn = [pa.diag.err_warning, pb.diag.err_warning];
+        if warn != r.warn_q {
+            ints |= int::ERR_WARNING;
+        }
+        n.warn_q = warn;
+        if pa.arb_lost || pb.arb_lost {
+            ints |= int::ARB_LOST;
+        }
+        if pa.diag.err_valid || pb.diag.err_valid {
+            ints |= int::BUS_ERROR;
+        }
+        // Re-arm: the acknowledgement of the interrupt (an INT_STATUS write that
+        // took effect) clears both channels' valid bits; a capture at this edge wins.
+        let (rearm_err, rearm_alc) = (w1c & int::BUS_ERROR != 0, w1c & int::ARB_LOST != 0);
+        n.cap = [
+            r.cap[0].edge(pa, rearm_err, rearm_alc),
+            r.cap[1].edge(pb, rearm_err, rearm_alc),
+        ];
         // Every `illegal` comes from the access taken at this edge (§9).
         let refused = take && ints & int::ILLEGAL != 0;
         n.wb_ack = take && !refused;

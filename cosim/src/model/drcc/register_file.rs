@@ -29,6 +29,10 @@ pub(super) struct Regs {
     pub(super) bit_cnt: u8,
     /// Channel `err_state` one clock earlier (INT_STATUS.err_state).
     pub(super) err_q: [u8; 2],
+    /// Channel `err_warning` one clock earlier (INT_STATUS.err_warning, §10.2).
+    pub(super) warn_q: [bool; 2],
+    /// `CAP_A`, `CAP_B` (§10.2): cleared by `rst` only.
+    pub(super) cap: [Capture; 2],
     /// STATS1[31:16].
     pub(super) recoveries: u16,
     /// `reset_mode` one edge earlier: the channels stay in reset one clock longer
@@ -56,6 +60,8 @@ impl Regs {
             tq_cnt: 0,
             bit_cnt: 0,
             err_q: [0; 2],
+            warn_q: [false; 2],
+            cap: [Capture::default(); 2],
             recoveries: 0,
             reset_mode_q: true,
         }
@@ -115,6 +121,55 @@ impl Regs {
     }
 }
 
+/// One channel's capture registers (§10.2): the first error and the first lost
+/// arbitration since the host last re-armed them, held until then.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct Capture {
+    pub(super) err_kind: u8,
+    pub(super) err_field: u8,
+    pub(super) err_tx: bool,
+    pub(super) err_valid: bool,
+    pub(super) alc: u8,
+    pub(super) alc_valid: bool,
+}
+
+impl Capture {
+    /// The edge of one channel's captures, on the channel outputs before the edge
+    /// (the channel loaded `err_kind/err_field/err_tx` and `alc` at the edge that
+    /// raised `err_valid` / `arb_lost`, so they already describe this event). A
+    /// re-arm clears the valid bit; a capture at the same edge wins.
+    pub(super) fn edge(&self, o: &ChannelOutputs, rearm_err: bool, rearm_alc: bool) -> Self {
+        let mut c = *self;
+        if rearm_err {
+            c.err_valid = false;
+        }
+        if rearm_alc {
+            c.alc_valid = false;
+        }
+        if o.diag.err_valid && !c.err_valid {
+            c.err_kind = o.diag.err_kind;
+            c.err_field = o.diag.err_field;
+            c.err_tx = o.diag.err_tx;
+            c.err_valid = true;
+        }
+        if o.arb_lost && !c.alc_valid {
+            c.alc = o.diag.alc;
+            c.alc_valid = true;
+        }
+        c
+    }
+
+    /// The `CAP_x` word.
+    pub(super) fn reg(&self) -> u32 {
+        (self.err_kind as u32 & cap::ERR_KIND_MASK)
+            | (self.err_field as u32 & cap::ERR_FIELD_MASK) << cap::ERR_FIELD_SHIFT
+            | if self.err_tx { cap::ERR_TX } else { 0 }
+            | if self.err_valid { cap::ERR_VALID } else { 0 }
+            | (self.alc as u32 & cap::ALC_MASK) << cap::ALC_SHIFT
+            | if self.alc_valid { cap::ALC_VALID } else { 0 }
+    }
+}
+
 /// `CTRL` write value with `k = 0` clamped to 1 (§9).
 pub(super) fn clamp_k(w: u32) -> u32 {
     if w & ctrl::K_MASK == 0 {
@@ -125,6 +180,18 @@ pub(super) fn clamp_k(w: u32) -> u32 {
 }
 
 impl DrccModel {
+    /// `SIZES` (§10.1): the generation parameters of §1.1, and whether
+    /// `CTRL.dmr` / `CTRL.star` can be set (the same predicates that refuse them).
+    fn sizes(&self) -> u32 {
+        let p = &self.params;
+        (p.rx_fifo_depth as u32 & 0x3F) << sizes::RX_FIFO_DEPTH_SHIFT
+            | (p.tx_queue_depth as u32 & 0xF) << sizes::TX_QUEUE_DEPTH_SHIFT
+            | (p.history as u32 & 0x3F) << sizes::HISTORY_SHIFT
+            | (p.mailboxes as u32 & 0x1F) << sizes::MAILBOXES_SHIFT
+            | if p.dmr { sizes::DMR } else { 0 }
+            | if p.star { sizes::STAR } else { 0 }
+    }
+
     /// The value a Wishbone read of word `adr` returns (registers before the edge).
     pub(super) fn read_reg(&self, adr: u8) -> u32 {
         let r = &self.r;
@@ -182,6 +249,12 @@ impl DrccModel {
             idx::TIMES => self.fsm.last_tx_time as u32 | (self.fsm.switch_time as u32) << 16,
             idx::STAR_STATUS => self.star.reg(),
             idx::OMISSIONS => self.rx.omissions[0] as u32 | (self.rx.omissions[1] as u32) << 16,
+            // §10.1: identification.
+            idx::VERSION => VERSION_VALUE,
+            idx::SIZES => self.sizes(),
+            // §10.2: the held captures.
+            idx::CAP_A => r.cap[0].reg(),
+            idx::CAP_B => r.cap[1].reg(),
             // DMR registers (dmr_contract.md §2.1); TX_CMD, RX_CMD (write only) and
             // unmapped words read 0.
             _ => self

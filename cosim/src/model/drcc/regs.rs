@@ -4,6 +4,9 @@
 /// `ID` register value: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
 
+/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 1 in [7:0].
+pub const VERSION_VALUE: u32 = 0x0000_0101;
+
 /// Word indices (`wb_adr_i`, byte offset / 4).
 pub mod idx {
     pub const ID: u8 = 0;
@@ -47,6 +50,12 @@ pub mod idx {
     pub const STAR_STATUS: u8 = 36;
     /// Frames only the other channel delivered, per channel (§7).
     pub const OMISSIONS: u8 = 37;
+    /// Identification (§10.1): the map's version and the instance's sizes.
+    pub const VERSION: u8 = 38;
+    pub const SIZES: u8 = 39;
+    /// Error and arbitration-lost captures of channel A / B (§10.2).
+    pub const CAP_A: u8 = 40;
+    pub const CAP_B: u8 = 41;
 }
 
 /// `CTRL` fields.
@@ -125,7 +134,39 @@ pub mod int {
     pub const DMR: u32 = 1 << 8;
     /// The hubs' decision changed (§4.5).
     pub const DOMAIN: u32 = 1 << 9;
-    pub const ALL: u32 = 0x3FF;
+    /// Either channel's `err_warning` changed, either direction (§10.2).
+    pub const ERR_WARNING: u32 = 1 << 10;
+    /// Either channel lost arbitration (§10.2); writing it re-arms `alc`.
+    pub const ARB_LOST: u32 = 1 << 11;
+    /// Either channel raised `err_valid` (§10.2); writing it re-arms the error
+    /// capture.
+    pub const BUS_ERROR: u32 = 1 << 12;
+    /// The 13 bits of `INT_STATUS` / `INT_ENABLE`.
+    pub const ALL: u32 = 0x1FFF;
+}
+
+/// `SIZES` fields (§10.1): the generation parameters of §1.1.
+pub mod sizes {
+    pub const RX_FIFO_DEPTH_SHIFT: u32 = 0;
+    pub const TX_QUEUE_DEPTH_SHIFT: u32 = 8;
+    pub const HISTORY_SHIFT: u32 = 16;
+    pub const MAILBOXES_SHIFT: u32 = 24;
+    /// `CTRL.dmr` can be set.
+    pub const DMR: u32 = 1 << 29;
+    /// `CTRL.star` can be set.
+    pub const STAR: u32 = 1 << 30;
+}
+
+/// `CAP_A` / `CAP_B` fields (§10.2; codes of the channel's §C.9).
+pub mod cap {
+    pub const ERR_KIND_MASK: u32 = 0x7;
+    pub const ERR_FIELD_SHIFT: u32 = 3;
+    pub const ERR_FIELD_MASK: u32 = 0x1F;
+    pub const ERR_TX: u32 = 1 << 8;
+    pub const ERR_VALID: u32 = 1 << 9;
+    pub const ALC_SHIFT: u32 = 16;
+    pub const ALC_MASK: u32 = 0x1F;
+    pub const ALC_VALID: u32 = 1 << 21;
 }
 
 /// `TX_ID` / `RX_ID` fields.

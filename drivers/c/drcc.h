@@ -1,0 +1,232 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* drcc.h: portable C99 driver for the DRCC dual-redundancy CAN 2.0B controller
+ * (its own Wishbone register view, rtl-out/drcc_regs.h). Register access goes
+ * through two hooks the user provides; nothing here touches memory directly.
+ *
+ * Not in the hardware, so not in this API: acceptance filters, receive
+ * timestamps and transmit abort. Every received frame is delivered; a queued
+ * frame stays queued until it is sent (or reset mode empties the queues). */
+#ifndef DRCC_DRIVER_H
+#define DRCC_DRIVER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "drcc_regs.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Reads the 32-bit register at byte offset `offset` (a DRCC_*_OFFSET). */
+typedef uint32_t (*drcc_read32_fn)(void *ctx, uint32_t offset);
+/** Writes the 32-bit register at byte offset `offset` as a whole word. */
+typedef void (*drcc_write32_fn)(void *ctx, uint32_t offset, uint32_t value);
+
+/** Result codes: 0 is success, every error is negative. */
+enum drcc_result {
+    DRCC_OK = 0,
+    /** An argument is out of range (identifier, DLC, mode, field value). */
+    DRCC_E_INVAL = -1,
+    /** No bit timing gives exactly this bit rate from this clock. */
+    DRCC_E_NO_TIMING = -2,
+    /** The ID register does not read "DRCC". */
+    DRCC_E_NODEV = -3,
+    /** The controller refused a write (read back differs): e.g. DMR or star
+     * mode on a top generated without it, redundancy with a listen-only
+     * channel, or configuration outside reset mode. */
+    DRCC_E_REFUSED = -4,
+    /** The target TX queue is full. */
+    DRCC_E_FULL = -5,
+    /** The RX FIFO is empty. */
+    DRCC_E_EMPTY = -6,
+    /** The controller is not in the state the call needs (reset mode). */
+    DRCC_E_STATE = -7
+};
+
+/** One controller: the user's hooks and what the driver remembers. */
+typedef struct drcc_dev {
+    drcc_read32_fn read32;   /**< register read hook */
+    drcc_write32_fn write32; /**< register write hook */
+    void *ctx;               /**< passed to both hooks */
+    uint32_t ctrl;           /**< CTRL configuration last written (reset_mode 0) */
+    unsigned tx_queue_depth; /**< frames per TX queue (8; drcc_small 4) */
+} drcc_dev;
+
+/** Bit timing in real units (not the register's minus-one codes). */
+typedef struct drcc_bit_timing {
+    uint16_t brp;   /**< prescaler: one time quantum = brp clocks, 1..1024 */
+    uint8_t tseg1;  /**< PROP_SEG + PHASE_SEG1 in tq, 1..16 */
+    uint8_t tseg2;  /**< PHASE_SEG2 in tq, 1..8 */
+    uint8_t sjw;    /**< resynchronisation jump width in tq, 1..4 */
+    uint8_t triple; /**< 1 = three samples per bit */
+} drcc_bit_timing;
+
+/** Operating mode (CTRL.redundancy, CTRL.dmr). */
+typedef enum drcc_mode {
+    DRCC_MODE_NORMAL = 0,     /**< two independent controllers, queue per channel */
+    DRCC_MODE_REDUNDANCY = 1, /**< one logical controller on a channel pair */
+    DRCC_MODE_DMR = 2         /**< CiA 701 DMR (generation option: not drcc_small) */
+} drcc_mode;
+
+/** Channel mode (CTRL.mode_a, CTRL.mode_b; values of DRCC_CTRL_MODE_A_*). */
+typedef enum drcc_chan_mode {
+    DRCC_CHAN_NORMAL = DRCC_CTRL_MODE_A_NORMAL,
+    DRCC_CHAN_LISTEN_ONLY = DRCC_CTRL_MODE_A_LISTEN_ONLY,
+    DRCC_CHAN_SELF_TEST = DRCC_CTRL_MODE_A_SELF_TEST,
+    DRCC_CHAN_LOOPBACK = DRCC_CTRL_MODE_A_LOOPBACK
+} drcc_chan_mode;
+
+/** Everything drcc_configure() writes. Start from drcc_config_default(). */
+typedef struct drcc_config {
+    drcc_bit_timing timing;  /**< both channels */
+    uint8_t ewl;             /**< error warning limit (BTR.ewl) */
+    drcc_mode mode;          /**< normal, redundancy or DMR */
+    unsigned policy;         /**< DRCC_CTRL_POLICY_* (redundancy mode) */
+    unsigned k;              /**< failed attempts for K_FAILED, 1..15 */
+    int dual_tx;             /**< redundancy: every message on A, then on B */
+    int star;                /**< redundancy: replicated star node (generation option) */
+    drcc_chan_mode mode_a;   /**< channel A mode */
+    drcc_chan_mode mode_b;   /**< channel B mode */
+    int single_shot;         /**< no automatic retransmission (normal mode) */
+    uint16_t recovery_bits;  /**< RMB_CFG.recovery_bits */
+    uint16_t stall_limit;    /**< RMB_CFG.stall_limit, 0 = off */
+    uint16_t dedup_window;   /**< DEDUP_CFG.window in bit times (0..32767), 0 = off */
+    uint32_t int_enable;     /**< INT_ENABLE bits (DRCC_INT_ENABLE_*_MASK) */
+    unsigned tx_queue_depth; /**< TX_QUEUE_DEPTH of the top: 8 (drcc), 4 (drcc_small) */
+    /* DMR mode only (written when mode == DRCC_MODE_DMR): */
+    uint16_t dmr_timeout;        /**< DMR_CFG.timeout in ticks, not 0 */
+    uint16_t dmr_cs_period;      /**< DMR_CFG.cs_period in ticks, 0 = none */
+    uint16_t dmr_tick_bits;      /**< DMR_TIME.tick_bits, not 0 */
+    uint16_t dmr_recovery_delay; /**< DMR_TIME.recovery_delay in ticks, not 0 */
+    uint16_t dmr_cs_id_dcl;      /**< DMR_CS.cs_id_dcl (11 bits) */
+    uint16_t dmr_cs_id_rcl;      /**< DMR_CS.cs_id_rcl (11 bits, != dcl) */
+} drcc_config;
+
+/** A classical CAN frame as the registers carry it. */
+typedef struct drcc_frame {
+    uint32_t id;     /**< 11-bit (base) or 29-bit (extended) identifier, right-aligned */
+    uint8_t ide;     /**< 1 = extended frame */
+    uint8_t rtr;     /**< 1 = remote frame */
+    uint8_t dlc;     /**< data length code 0..15 (min(dlc, 8) data bytes) */
+    uint8_t channel; /**< received: 0 = channel A, 1 = B; ignored on send */
+    uint8_t data[8]; /**< data bytes, byte 0 first on the bus */
+} drcc_frame;
+
+/** What drcc_isr() did. */
+typedef struct drcc_irq_result {
+    uint32_t events; /**< INT_STATUS as read and acknowledged */
+    size_t frames;   /**< frames stored into the caller's buffer */
+    int more;        /**< 1: the buffer filled up and the FIFO still holds frames */
+} drcc_irq_result;
+
+/** One channel's fault confinement and validity. */
+typedef struct drcc_chan_status {
+    uint16_t tec;        /**< transmit error counter */
+    uint8_t rec;         /**< receive error counter */
+    uint8_t err_state;   /**< 0 error active, 1 error passive, 2 bus-off */
+    uint8_t err_warning; /**< TEC or REC >= ewl */
+    uint8_t aux_state;   /**< DRCC_AUX_* */
+    uint8_t aux_causes;  /**< AUX_x bits [6:2] (passive, busoff, kfail, stall, warning) */
+    uint8_t fail_cnt;    /**< failed attempts since the last success */
+    uint8_t failures;    /**< times judged failed */
+    uint8_t recoveries;  /**< times recovered */
+} drcc_chan_status;
+
+/** STATUS and the per-channel registers, decoded. */
+typedef struct drcc_status {
+    uint8_t state;       /**< main FSM state, DRCC_STATE_* */
+    uint8_t tx_channel;  /**< 0 A, 1 B */
+    uint8_t reset_mode;  /**< CTRL.reset_mode */
+    uint8_t tx_going_on; /**< a transmission is in progress */
+    uint8_t txq_a;       /**< frames in TX queue A */
+    uint8_t txq_b;       /**< frames in TX queue B */
+    uint8_t rx_count;    /**< frames in the RX FIFO */
+    drcc_chan_status a;  /**< channel A */
+    drcc_chan_status b;  /**< channel B */
+} drcc_status;
+
+/** Statistics registers, decoded (saturating; cleared by rst only). */
+typedef struct drcc_stats {
+    uint16_t duplicates;   /**< STATS0: duplicates dropped */
+    uint16_t overruns;     /**< STATS0: frames lost to a full RX FIFO */
+    uint16_t switches;     /**< STATS1: channel switches */
+    uint16_t recoveries;   /**< STATS1: channel recoveries */
+    uint16_t last_tx_time; /**< TIMES, bit times */
+    uint16_t switch_time;  /**< TIMES, bit times */
+    uint16_t omissions_a;  /**< OMISSIONS: frames only channel B delivered */
+    uint16_t omissions_b;  /**< OMISSIONS: frames only channel A delivered */
+    uint32_t dmr_status;   /**< DMR_STATUS, raw (DRCC_DMR_STATUS_* fields) */
+    uint32_t dmr_cs_count; /**< DMR_CS_COUNT, raw */
+    uint32_t dmr_rx_stats; /**< DMR_RX_STATS, raw */
+} drcc_stats;
+
+/** Computes a bit timing giving exactly `bitrate` from `clock_hz`: 8..25 tq
+ * per bit, TSEG2 2..8 (ISO 11898-1's information processing time), TSEG1
+ * 1..16 and at least 3 clocks, sample point as near 87.5 % as possible (ties:
+ * the smaller prescaler), SJW = min(4, TSEG2). DRCC_E_NO_TIMING if none. */
+int drcc_calc_bit_timing(uint32_t clock_hz, uint32_t bitrate, drcc_bit_timing *out);
+
+/** The BTR word for `bt` and the error warning limit `ewl` (minus-one codes,
+ * BRP split into brp and brp_ext). `bt` must pass drcc_bit_timing_valid(). */
+uint32_t drcc_btr_encode(const drcc_bit_timing *bt, uint8_t ewl);
+
+/** 1 if every field of `bt` is inside the register's range, else 0. */
+int drcc_bit_timing_valid(const drcc_bit_timing *bt);
+
+/** Fills `cfg` with the reset values: normal mode, 1 Mbit/s at 8 MHz timing
+ * (BTR's reset value), policy error-passive, k 1, no interrupts enabled. */
+void drcc_config_default(drcc_config *cfg);
+
+/** Binds the hooks and checks the ID register. DRCC_E_NODEV if not a DRCC. */
+int drcc_init(drcc_dev *dev, drcc_read32_fn read32, drcc_write32_fn write32, void *ctx);
+
+/** Enters reset mode (channels held in reset, TX queues and RX FIFO emptied). */
+int drcc_enter_reset(drcc_dev *dev);
+
+/** Enters reset mode, writes the whole configuration and leaves reset mode with
+ * CTRL (the mode) in one write. DRCC_E_REFUSED if the controller did not take it
+ * (then it stays in reset mode). */
+int drcc_configure(drcc_dev *dev, const drcc_config *cfg);
+
+/** Changes only the operating mode (through reset mode, so the queues and the
+ * FIFO are emptied), keeping the rest of the configuration. */
+int drcc_set_mode(drcc_dev *dev, drcc_mode mode);
+
+/** DMR mode: configures mailbox `index` (0..15); call in reset mode (after
+ * drcc_enter_reset(), before drcc_configure() with DRCC_MODE_DMR, which keeps
+ * mailboxes). `dir` 0 receive, 1 transmit; `mask` 1 bits must match; `limit`
+ * 1..127. DRCC_E_REFUSED on a top without mailboxes. */
+int drcc_dmr_mailbox(drcc_dev *dev, unsigned index, uint32_t id, int ide, int dir,
+                     uint32_t mask, unsigned limit);
+
+/** Queues `frame` for sending: `queue` 0 (channel A) or 1 (B) in normal mode,
+ * ignored otherwise. DRCC_E_FULL when the queue is full, DRCC_E_STATE in reset
+ * mode, DRCC_E_INVAL for an identifier or DLC out of range. */
+int drcc_send(drcc_dev *dev, const drcc_frame *frame, unsigned queue);
+
+/** Takes the head of the RX FIFO into `frame`; DRCC_E_EMPTY if there is none. */
+int drcc_receive(drcc_dev *dev, drcc_frame *frame);
+
+/** The interrupt handler: reads INT_STATUS and acknowledges it first (W1C), then
+ * drains the RX FIFO into `buf` (at most `cap` frames). Loses no event: a frame
+ * arriving during the drain raises INT_STATUS.rx again. */
+drcc_irq_result drcc_isr(drcc_dev *dev, drcc_frame *buf, size_t cap);
+
+/** Sets INT_ENABLE. */
+void drcc_irq_enable(drcc_dev *dev, uint32_t mask);
+/** Reads INT_STATUS. */
+uint32_t drcc_irq_status(drcc_dev *dev);
+/** Clears the INT_STATUS bits of `mask` (write 1 to clear). */
+void drcc_irq_ack(drcc_dev *dev, uint32_t mask);
+
+/** Reads STATUS, CHAN_A_ERR, CHAN_B_ERR, AUX_A and AUX_B. */
+void drcc_get_status(drcc_dev *dev, drcc_status *st);
+/** Reads STATS0, STATS1, TIMES, OMISSIONS and the DMR statistics. */
+void drcc_get_stats(drcc_dev *dev, drcc_stats *stats);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DRCC_DRIVER_H */

@@ -1,0 +1,74 @@
+//! `drcc-driver`: a `#![no_std]` driver for the DRCC dual-redundancy CAN 2.0B
+//! controller, through its own Wishbone register view (`docs/registers.md`).
+//!
+//! Register access goes through [`Registers`], which the user implements
+//! (`read32` / `write32` at byte offsets, e.g. volatile accesses to the mapped
+//! base). [`Drcc`] brings the controller up ([`Drcc::configure`]), switches
+//! between normal, redundancy and DMR mode, sends and receives [`Frame`]s,
+//! drains the receive FIFO from an interrupt handler ([`Drcc::isr`]) and reads
+//! status and statistics. It implements `embedded-can` 0.4's
+//! [`embedded_can::blocking::Can`] and [`embedded_can::nb::Can`].
+//!
+//! The register constants in [`regs`] are generated at build time from the C
+//! header `rtl-out/drcc_regs.h`. The C driver in `drivers/c` offers the same
+//! functions. Acceptance filters, receive timestamps and transmit abort do not
+//! exist in the hardware and are not offered.
+#![no_std]
+#![deny(missing_docs)]
+
+mod config;
+mod device;
+mod frame;
+pub mod regs;
+mod status;
+mod timing;
+
+pub use config::{ChanMode, Config, DmrConfig, Mode, Policy};
+pub use device::{Drcc, IrqResult};
+pub use frame::{Channel, Frame};
+pub use status::{ChanStatus, Stats, Status};
+pub use timing::BitTiming;
+
+/// Register access the user provides: 32-bit words at byte offsets
+/// (`regs::*_OFFSET`).
+pub trait Registers {
+    /// Reads the word at byte offset `offset`.
+    fn read32(&mut self, offset: u32) -> u32;
+    /// Writes the whole word at byte offset `offset`.
+    fn write32(&mut self, offset: u32, value: u32);
+}
+
+impl<R: Registers + ?Sized> Registers for &mut R {
+    fn read32(&mut self, offset: u32) -> u32 {
+        (**self).read32(offset)
+    }
+    fn write32(&mut self, offset: u32, value: u32) {
+        (**self).write32(offset, value)
+    }
+}
+
+/// Errors of the driver (the C driver's `DRCC_E_*`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Error {
+    /// An argument is out of range (identifier, DLC, field value).
+    Invalid,
+    /// No bit timing gives exactly the bit rate from the clock.
+    NoTiming,
+    /// The `ID` register does not read "DRCC".
+    NoDevice,
+    /// The controller did not take a write (read back differs): a mode the top
+    /// was generated without, redundancy with a listen-only channel, ...
+    Refused,
+    /// The target TX queue is full.
+    Full,
+    /// The RX FIFO is empty.
+    Empty,
+    /// The controller is not in the state the call needs (e.g. reset mode).
+    State,
+}
+
+impl embedded_can::Error for Error {
+    fn kind(&self) -> embedded_can::ErrorKind {
+        embedded_can::ErrorKind::Other
+    }
+}

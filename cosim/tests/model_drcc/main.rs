@@ -12,6 +12,7 @@ use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Fra
 
 mod channel_switching;
 mod driver_features;
+mod identification;
 mod reception;
 mod registers;
 mod star_node;

@@ -12,6 +12,7 @@ pub mod dmr_regs;
 pub mod generate;
 pub mod hub_registers;
 pub mod map;
+mod register_fields;
 pub mod registers;
 pub mod status_words;
 pub mod wb_slave;

@@ -456,6 +456,10 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  regs__ev_err_warning;
     reg  regs__ev_arb_lost;
     reg  regs__ev_bus_error;
+    reg  regs__ev_tx_done_a;
+    reg  regs__ev_tx_done_b;
+    reg  regs__ev_tx_failure_a;
+    reg  regs__ev_tx_failure_b;
     wire  regs__wr_o;
     wire  regs__reset_mode;
     wire  regs__reset_mode_d;
@@ -483,6 +487,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  regs__pop;
     wire  regs__rearm_err;
     wire  regs__rearm_alc;
+    wire  regs__stats_clear;
     reg  [5:0] dmr_check__adr;
     reg  [31:0] dmr_check__wdat;
     reg  dmr_check__reset_mode;
@@ -523,6 +528,19 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  [127:0] dmr_regs__mb_limits;
     wire  dmr_regs__mb_we_id;
     wire  dmr_regs__mb_we_mask;
+    reg  filters__clk;
+    reg  filters__rst;
+    reg  filters__wr;
+    reg  [5:0] filters__adr;
+    reg  [31:0] filters__wdat;
+    reg  filters__reset_mode;
+    wire  filters__hit;
+    wire  [31:0] filters__word;
+    wire  filters__illegal;
+    wire  [30:0] filters__id0;
+    wire  [31:0] filters__mask0;
+    wire  [30:0] filters__id1;
+    wire  [31:0] filters__mask1;
     reg  mailbox_cfg__0__clk;
     reg  [3:0] mailbox_cfg__0__read_address;
     wire  [30:0] mailbox_cfg__0__id_word;
@@ -665,7 +683,8 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  [3:0] status__fail_cnt_b;
     reg  [7:0] status__failures_b;
     reg  [7:0] status__recoveries_b;
-    reg  [99:0] status__rx_head;
+    reg  [115:0] status__rx_head;
+    reg  [15:0] status__now;
     reg  status__rx_ready;
     reg  [15:0] status__duplicates;
     reg  [15:0] status__overruns;
@@ -846,10 +865,10 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  rxfifo__clk;
     reg  rxfifo__clear;
     reg  rxfifo__wr;
-    reg  [99:0] rxfifo__wr_data;
+    reg  [115:0] rxfifo__wr_data;
     reg  rxfifo__pop;
     wire  [5:0] rxfifo__count;
-    wire  [99:0] rxfifo__rd_data;
+    wire  [115:0] rxfifo__rd_data;
     wire  rxfifo__rx_ready;
     reg  rxw__clk;
     reg  rxw__rst;
@@ -864,7 +883,12 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  [98:0] rxw__frame_b;
     reg  [5:0] rxw__fifo_count;
     wire  rxw__fifo_wr;
-    wire  [99:0] rxw__fifo_data;
+    wire  [115:0] rxw__fifo_data;
+    reg  [30:0] rxw__filt_id0;
+    reg  [31:0] rxw__filt_mask0;
+    reg  [30:0] rxw__filt_id1;
+    reg  [31:0] rxw__filt_mask1;
+    reg  rxw__stats_clear;
     wire  rxw__rx_evt;
     wire  rxw__overrun_evt;
     wire  [15:0] rxw__duplicates;
@@ -1022,6 +1046,10 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .ev_err_warning(regs__ev_err_warning),
         .ev_arb_lost(regs__ev_arb_lost),
         .ev_bus_error(regs__ev_bus_error),
+        .ev_tx_done_a(regs__ev_tx_done_a),
+        .ev_tx_done_b(regs__ev_tx_done_b),
+        .ev_tx_failure_a(regs__ev_tx_failure_a),
+        .ev_tx_failure_b(regs__ev_tx_failure_b),
         .wr_o(regs__wr_o),
         .reset_mode(regs__reset_mode),
         .reset_mode_d(regs__reset_mode_d),
@@ -1048,7 +1076,8 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .tx_frame(regs__tx_frame),
         .pop(regs__pop),
         .rearm_err(regs__rearm_err),
-        .rearm_alc(regs__rearm_alc)
+        .rearm_alc(regs__rearm_alc),
+        .stats_clear(regs__stats_clear)
     );
     drcc_apb__core__dmr_check dmr_check(
         .adr(dmr_check__adr),
@@ -1093,6 +1122,21 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .mb_limits(dmr_regs__mb_limits),
         .mb_we_id(dmr_regs__mb_we_id),
         .mb_we_mask(dmr_regs__mb_we_mask)
+    );
+    drcc_apb__core__filters filters(
+        .clk(filters__clk),
+        .rst(filters__rst),
+        .wr(filters__wr),
+        .adr(filters__adr),
+        .wdat(filters__wdat),
+        .reset_mode(filters__reset_mode),
+        .hit(filters__hit),
+        .word(filters__word),
+        .illegal(filters__illegal),
+        .id0(filters__id0),
+        .mask0(filters__mask0),
+        .id1(filters__id1),
+        .mask1(filters__mask1)
     );
     drcc_apb__core__mailbox_cfg__0 mailbox_cfg__0(
         .clk(mailbox_cfg__0__clk),
@@ -1244,6 +1288,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .failures_b(status__failures_b),
         .recoveries_b(status__recoveries_b),
         .rx_head(status__rx_head),
+        .now(status__now),
         .rx_ready(status__rx_ready),
         .duplicates(status__duplicates),
         .overruns(status__overruns),
@@ -1463,6 +1508,11 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .fifo_count(rxw__fifo_count),
         .fifo_wr(rxw__fifo_wr),
         .fifo_data(rxw__fifo_data),
+        .filt_id0(rxw__filt_id0),
+        .filt_mask0(rxw__filt_mask0),
+        .filt_id1(rxw__filt_id1),
+        .filt_mask1(rxw__filt_mask1),
+        .stats_clear(rxw__stats_clear),
         .rx_evt(rxw__rx_evt),
         .overrun_evt(rxw__overrun_evt),
         .duplicates(rxw__duplicates),
@@ -1606,15 +1656,25 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         wb_ack_o = regs__wb_ack_o;
         wb_err_o = regs__wb_err_o;
         irq = regs__irq;
-        regs__ext_hit = dmr_check__hit;
-        regs__ext_word = dmr_check__word;
-        regs__ext_writable = dmr_check__writable;
-        regs__ext_illegal = dmr_check__illegal;
+        regs__ext_hit = dmr_check__hit | filters__hit;
+        regs__ext_word = dmr_check__word | filters__word;
+        regs__ext_writable = dmr_check__writable | filters__hit;
+        regs__ext_illegal = dmr_check__illegal | filters__illegal;
+        filters__clk = clk;
+        filters__rst = rst;
+        filters__wr = regs__wr_o;
+        filters__adr = wb_adr_i;
+        filters__wdat = wb_dat_i;
+        filters__reset_mode = regs__reset_mode;
         regs__ev_dmr = dmr_ctl__int_evt;
         regs__ev_domain = echo__ev_domain;
         regs__ev_err_warning = caps__ev_err_warning;
         regs__ev_arb_lost = caps__ev_arb_lost;
         regs__ev_bus_error = caps__ev_bus_error;
+        regs__ev_tx_done_a = chan_a__tx_done;
+        regs__ev_tx_done_b = chan_b__tx_done;
+        regs__ev_tx_failure_a = chan_a__tx_failed;
+        regs__ev_tx_failure_b = chan_b__tx_failed;
         caps__clk = clk;
         caps__rst = rst;
         caps__err_valid_a = chan_a__err_valid;
@@ -1770,6 +1830,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         status__failures_b = aux_b__failures;
         status__recoveries_b = aux_b__recoveries;
         status__rx_head = rxfifo__rd_data;
+        status__now = ticker__now;
         status__rx_ready = rxfifo__rx_ready;
         status__duplicates = rxw__duplicates;
         status__overruns = rxw__overruns;
@@ -1781,7 +1842,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         status__cap_a = caps__cap_a;
         status__cap_b = caps__cap_b;
         stats__clk = clk;
-        stats__rst = rst;
+        stats__rst = rst | regs__stats_clear;
         stats__switch_evt = main__switch_evt;
         stats__recover_a = aux_a__recover_evt;
         stats__recover_b = aux_b__recover_evt;
@@ -1816,7 +1877,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         echo__rx_valid_b = chan_b__rx_valid;
         echo__frame_b = rx_frame_b;
         aux_a__clk = clk;
-        aux_a__rst = rst;
+        aux_a__rst = rst | regs__stats_clear;
         aux_a__hold = rmb_hold;
         aux_a__policy = regs__policy;
         aux_a__k = regs__k;
@@ -1834,7 +1895,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         aux_a__err_warning = chan_a__err_warning;
         aux_a__sample_point = chan_a__sample_point;
         aux_b__clk = clk;
-        aux_b__rst = rst;
+        aux_b__rst = rst | regs__stats_clear;
         aux_b__hold = rmb_hold;
         aux_b__policy = regs__policy;
         aux_b__k = regs__k;
@@ -1880,6 +1941,11 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         rxw__release_set = dmr_ctl__acl_switch;
         rxw__window = regs__window;
         rxw__now = ticker__now;
+        rxw__stats_clear = regs__stats_clear;
+        rxw__filt_id0 = filters__id0;
+        rxw__filt_mask0 = filters__mask0;
+        rxw__filt_id1 = filters__id1;
+        rxw__filt_mask1 = filters__mask1;
         rxw__tick = ticker__tick;
         if (dmr_hold) begin
             rxw__rxv_a = echo__rxv_a;
@@ -9879,6 +9945,99 @@ module drcc_apb__core__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key
 endmodule // drcc_apb__core__echo__follow
 
 
+module drcc_apb__core__filters(clk,rst,wr,adr,wdat,reset_mode,hit,word,illegal,id0,mask0,id1,mask1);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wr;
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  reset_mode;
+    output reg  hit;
+    output reg  [31:0] word;
+    output reg  illegal;
+    output reg  [30:0] id0;
+    output reg  [31:0] mask0;
+    output reg  [30:0] id1;
+    output reg  [31:0] mask1;
+
+    // Constant declarations
+    localparam  a_id0 = 6'b101010;
+    localparam  a_mask0 = 6'b101011;
+    localparam  a_id1 = 6'b101100;
+    localparam  a_mask1 = 6'b101101;
+    localparam  zero31 = 31'h0;
+    localparam  zero32 = 32'h0;
+
+    // Stub signals
+    reg  [30:0] id0_q__d;
+    reg  [30:0] id0_q__q;
+    reg  [31:0] mask0_q__d;
+    reg  [31:0] mask0_q__q;
+    reg  [30:0] id1_q__d;
+    reg  [30:0] id1_q__q;
+    reg  [31:0] mask1_q__d;
+    reg  [31:0] mask1_q__q;
+
+    // Update code
+    always @(*) begin
+        id0_q__d = id0_q__q;
+        mask0_q__d = mask0_q__q;
+        id1_q__d = id1_q__q;
+        mask1_q__d = mask1_q__q;
+        hit = (adr == a_id0) | (adr == a_mask0) | (adr == a_id1) | (adr == a_mask1);
+        word = zero32;
+        if (adr == a_id0) begin
+            word = ((id0_q__q) & 32'hffffffff);
+        end
+        else if (adr == a_mask0) begin
+            word = mask0_q__q;
+        end
+        else if (adr == a_id1) begin
+            word = ((id1_q__q) & 32'hffffffff);
+        end
+        else if (adr == a_mask1) begin
+            word = mask1_q__q;
+        end
+        illegal = hit & ~reset_mode;
+        if (wr & reset_mode) begin
+            if (adr == a_id0) begin
+                id0_q__d = wdat[(32'h0)+:(31)];
+            end
+            else if (adr == a_mask0) begin
+                mask0_q__d = wdat;
+            end
+            else if (adr == a_id1) begin
+                id1_q__d = wdat[(32'h0)+:(31)];
+            end
+            else if (adr == a_mask1) begin
+                mask1_q__d = wdat;
+            end
+        end
+        if (rst) begin
+            id0_q__d = zero31;
+            mask0_q__d = zero32;
+            id1_q__d = zero31;
+            mask1_q__d = zero32;
+        end
+        id0 = id0_q__q;
+        mask0 = mask0_q__q;
+        id1 = id1_q__q;
+        mask1 = mask1_q__q;
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        id0_q__q <= id0_q__d;
+        mask0_q__q <= mask0_q__d;
+        id1_q__q <= id1_q__d;
+        mask1_q__q <= mask1_q__d;
+    end
+
+endmodule // drcc_apb__core__filters
+
+
 module drcc_apb__core__mailbox_cfg__0(clk,read_address,id_word,mask,write_address,we_id,we_mask,wdat);
 
     // Module arguments
@@ -10380,7 +10539,7 @@ module drcc_apb__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_
 endmodule // drcc_apb__core__main
 
 
-module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,rearm_err,rearm_alc);
+module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,rearm_err,rearm_alc,stats_clear);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [0:0] STAR = 1'd1;
 
@@ -10418,6 +10577,10 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     input wire  ev_err_warning;
     input wire  ev_arb_lost;
     input wire  ev_bus_error;
+    input wire  ev_tx_done_a;
+    input wire  ev_tx_done_b;
+    input wire  ev_tx_failure_a;
+    input wire  ev_tx_failure_b;
     output reg  wr_o;
     output reg  reset_mode;
     output reg  reset_mode_d;
@@ -10445,6 +10608,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     output reg  pop;
     output reg  rearm_err;
     output reg  rearm_alc;
+    output reg  stats_clear;
 
     // Constant declarations
     localparam  a_ctrl = 6'b1;
@@ -10459,6 +10623,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  a_tx_data1 = 6'b1111;
     localparam  a_tx_cmd = 6'b10000;
     localparam  a_rx_cmd = 6'b10101;
+    localparam  a_stats_clr = 6'b101111;
     localparam  b_brp = 5'b0;
     localparam  b_brp_ext = 5'b11000;
     localparam  brp_ext_shift = 4'h6;
@@ -10474,6 +10639,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  t_queue = 5'b1000;
     localparam  t_push = 5'b0;
     localparam  r_pop = 5'b0;
+    localparam  c_clear = 5'b0;
     localparam  i_rx = 5'b0;
     localparam  i_tx_done = 5'b1;
     localparam  i_switch = 5'b10;
@@ -10487,8 +10653,12 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  i_err_warning = 5'b1010;
     localparam  i_arb_lost = 5'b1011;
     localparam  i_bus_error = 5'b1100;
-    localparam  m_bus_error = 13'b1000000000000;
-    localparam  m_arb_lost = 13'b100000000000;
+    localparam  i_tx_done_a = 5'b1101;
+    localparam  i_tx_done_b = 5'b1110;
+    localparam  i_tx_failure_a = 5'b1111;
+    localparam  i_tx_failure_b = 5'b10000;
+    localparam  m_bus_error = 17'b1000000000000;
+    localparam  m_arb_lost = 17'b100000000000;
     localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
@@ -10496,7 +10666,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
-    localparam  zero13 = 13'b0;
+    localparam  zero17 = 17'b0;
     localparam  zero15 = 15'b0;
     localparam  zero16 = 16'h0;
     localparam  zero31 = 31'h0;
@@ -10517,13 +10687,13 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     wire  bus__wb_ack_o;
     wire  bus__irq;
     wire  bus__wr;
-    wire  [12:0] bus__int_status;
-    wire  [12:0] bus__int_enable;
+    wire  [16:0] bus__int_status;
+    wire  [16:0] bus__int_enable;
     reg  [31:0] bus__rdata;
-    reg  [12:0] bus__events;
-    reg  [12:0] bus__w1c;
+    reg  [16:0] bus__events;
+    reg  [16:0] bus__w1c;
     reg  bus__int_enable_we;
-    reg  [12:0] bus__int_enable_d;
+    reg  [16:0] bus__int_enable_d;
     reg  ctrl__clk;
     reg  ctrl__rst;
     reg  ctrl__we;
@@ -10589,7 +10759,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
-    reg  [12:0] w1c;
+    reg  [16:0] w1c;
     reg  [3:0] target_count;
     reg  es_evt;
     reg  [63:0] tx_data64;
@@ -10756,11 +10926,12 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         ctrl_check__single_shot = ctrl__single_shot;
         ctrl_check__dmr = ctrl__dmr;
         illegal = 1'b0;
-        w1c = zero13;
+        w1c = zero17;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wb_dat_i[(32'h0)+:(13)];
+        bus__int_enable_d = wb_dat_i[(32'h0)+:(17)];
         push = 1'b0;
         pop = 1'b0;
+        stats_clear = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr) begin
             target_count = txq_b;
         end
@@ -10799,7 +10970,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wb_dat_i[(32'h0)+:(13)];
+                w1c = wb_dat_i[(32'h0)+:(17)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -10837,6 +11008,9 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
                     end
                 end
             end
+            else if (wb_adr_i == a_stats_clr) begin
+                stats_clear = wb_dat_i[c_clear];
+            end
             else if (ext_writable) begin
                 illegal = ext_illegal;
             end
@@ -10844,10 +11018,10 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
                 illegal = 1'b1;
             end
         end
-        bus__events = (((ev_rx) & 13'h1fff) << i_rx) | (((ev_tx_done) & 13'h1fff) << i_tx_done) | (((ev_switch) & 13'h1fff) << i_switch) | (((es_evt) & 13'h1fff) << i_err_state) | (((ev_overrun) & 13'h1fff) << i_overrun) | (((ev_tx_failure) & 13'h1fff) << i_tx_failure) | (((illegal) & 13'h1fff) << i_illegal) | (((ev_aux) & 13'h1fff) << i_aux) | (((ev_dmr) & 13'h1fff) << i_dmr) | (((ev_domain) & 13'h1fff) << i_domain) | (((ev_err_warning) & 13'h1fff) << i_err_warning) | (((ev_arb_lost) & 13'h1fff) << i_arb_lost) | (((ev_bus_error) & 13'h1fff) << i_bus_error);
+        bus__events = (((ev_rx) & 17'h1ffff) << i_rx) | (((ev_tx_done) & 17'h1ffff) << i_tx_done) | (((ev_switch) & 17'h1ffff) << i_switch) | (((es_evt) & 17'h1ffff) << i_err_state) | (((ev_overrun) & 17'h1ffff) << i_overrun) | (((ev_tx_failure) & 17'h1ffff) << i_tx_failure) | (((illegal) & 17'h1ffff) << i_illegal) | (((ev_aux) & 17'h1ffff) << i_aux) | (((ev_dmr) & 17'h1ffff) << i_dmr) | (((ev_domain) & 17'h1ffff) << i_domain) | (((ev_err_warning) & 17'h1ffff) << i_err_warning) | (((ev_arb_lost) & 17'h1ffff) << i_arb_lost) | (((ev_bus_error) & 17'h1ffff) << i_bus_error) | (((ev_tx_done_a) & 17'h1ffff) << i_tx_done_a) | (((ev_tx_done_b) & 17'h1ffff) << i_tx_done_b) | (((ev_tx_failure_a) & 17'h1ffff) << i_tx_failure_a) | (((ev_tx_failure_b) & 17'h1ffff) << i_tx_failure_b);
         bus__w1c = w1c;
-        rearm_err = (w1c & m_bus_error) != zero13;
-        rearm_alc = (w1c & m_arb_lost) != zero13;
+        rearm_err = (w1c & m_bus_error) != zero17;
+        rearm_alc = (w1c & m_arb_lost) != zero17;
         err_q__d = illegal;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
@@ -10864,6 +11038,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
             es_b_prev__d = zero2;
             push = 1'b0;
             pop = 1'b0;
+            stats_clear = 1'b0;
             err_q__d = 1'b0;
         end
         wb_ack_o = bus__wb_ack_o & ~err_q__q;
@@ -10925,16 +11100,16 @@ module drcc_apb__core__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_a
     output reg  wb_ack_o;
     output reg  irq;
     output reg  wr;
-    output reg  [12:0] int_status;
-    output reg  [12:0] int_enable;
+    output reg  [16:0] int_status;
+    output reg  [16:0] int_enable;
     input wire  [31:0] rdata;
-    input wire  [12:0] events;
-    input wire  [12:0] w1c;
+    input wire  [16:0] events;
+    input wire  [16:0] w1c;
     input wire  int_enable_we;
-    input wire  [12:0] int_enable_d;
+    input wire  [16:0] int_enable_d;
 
     // Constant declarations
-    localparam  zero_w = 13'b0;
+    localparam  zero_w = 17'b0;
     localparam  zero32 = 32'h0;
 
     // Stub signals
@@ -10944,10 +11119,10 @@ module drcc_apb__core__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_a
     reg  [31:0] dat_q__q;
     reg  irq_q__d;
     reg  irq_q__q;
-    reg  [12:0] int_status_q__d;
-    reg  [12:0] int_status_q__q;
-    reg  [12:0] int_enable_q__d;
-    reg  [12:0] int_enable_q__q;
+    reg  [16:0] int_status_q__d;
+    reg  [16:0] int_status_q__q;
+    reg  [16:0] int_enable_q__d;
+    reg  [16:0] int_enable_q__q;
 
     // Local signals
     reg  taken;
@@ -11209,10 +11384,10 @@ module drcc_apb__core__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     input wire  clk;
     input wire  clear;
     input wire  wr;
-    input wire  [99:0] wr_data;
+    input wire  [115:0] wr_data;
     input wire  pop;
     output reg  [5:0] count;
-    output reg  [99:0] rd_data;
+    output reg  [115:0] rd_data;
     output reg  rx_ready;
 
     // Constant declarations
@@ -11226,9 +11401,9 @@ module drcc_apb__core__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     reg  ram__clk;
     reg  [4:0] ram__read_address;
     reg  ram__read_enable;
-    wire  [99:0] ram__read_data;
+    wire  [115:0] ram__read_data;
     reg  [4:0] ram__write_address;
-    reg  [99:0] ram__write_data;
+    reg  [115:0] ram__write_data;
     reg  ram__write_enable;
     reg  [4:0] head__d;
     reg  [4:0] head__q;
@@ -11241,7 +11416,7 @@ module drcc_apb__core__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     reg  [4:0] pop5;
 
     // Sub module instances
-    drcc_apb__core__rx ram(
+    drcc_apb__core__rxfifo__ram ram(
         .clk(ram__clk),
         .read_address(ram__read_address),
         .read_enable(ram__read_enable),
@@ -11295,20 +11470,20 @@ module drcc_apb__core__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
 endmodule // drcc_apb__core__rxfifo
 
 
-module drcc_apb__core__rx(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc_apb__core__rxfifo__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
 
     // Module arguments
     input wire  clk;
     input wire  [4:0] read_address;
     input wire  read_enable;
-    output reg  [99:0] read_data;
+    output reg  [115:0] read_data;
     input wire  [4:0] write_address;
-    input wire  [99:0] write_data;
+    input wire  [115:0] write_data;
     input wire  write_enable;
 
     // Update code (custom)
     (* no_rw_check *)
-    reg[99:0] mem[31:0];
+    reg[115:0] mem[31:0];
 
     always @(posedge clk) begin
        if (read_enable) begin
@@ -11322,10 +11497,10 @@ module drcc_apb__core__rx(clk,read_address,read_enable,read_data,write_address,w
        end
     end
 
-endmodule // drcc_apb__core__rx
+endmodule // drcc_apb__core__rxfifo__ram
 
 
-module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
+module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,filt_id0,filt_mask0,filt_id1,filt_mask1,stats_clear,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
     parameter [5:0] HISTORY = 6'd32;
 
@@ -11343,7 +11518,12 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
     input wire  [98:0] frame_b;
     input wire  [5:0] fifo_count;
     output reg  fifo_wr;
-    output reg  [99:0] fifo_data;
+    output reg  [115:0] fifo_data;
+    input wire  [30:0] filt_id0;
+    input wire  [31:0] filt_mask0;
+    input wire  [30:0] filt_id1;
+    input wire  [31:0] filt_mask1;
+    input wire  stats_clear;
     output reg  rx_evt;
     output reg  overrun_evt;
     output reg  [15:0] duplicates;
@@ -11372,6 +11552,7 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
     localparam [5:0] last_scan = HISTORY;
     localparam [4:0] hmask = HISTORY[4:0] - 5'd1;
     localparam [5:0] fifo_depth = RX_FIFO_DEPTH;
+    localparam  zero31 = 31'h0;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  zero15 = 15'b0;
@@ -11486,9 +11667,13 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
     reg  w_fifo;
     reg  w_hist;
     reg  omit;
+    reg  [30:0] f_word;
+    reg  f_match0;
+    reg  f_match1;
+    reg  accept;
 
     // Sub module instances
-    drcc_apb__core__rx hist(
+    drcc_apb__core__rxw__hist hist(
         .clk(hist__clk),
         .read_address(hist__read_address),
         .read_enable(hist__read_enable),
@@ -11565,7 +11750,7 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
         rel__clk = clk;
         rel__clear = clear;
         stats__clk = clk;
-        stats__rst = rst;
+        stats__rst = rst | stats_clear;
         if (sel__q) begin
             frame_sel = rxf_b__q;
         end
@@ -11631,11 +11816,16 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
         hist_ts__write_data = now;
         fifo_wr = 1'b0;
         if (w_state__q == s_release) begin
-            fifo_data = (((acl) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((e_frame) & 100'hfffffffffffffffffffffffff);
+            fifo_data = (((acl) & 116'hfffffffffffffffffffffffffffff) << 32'h63) | ((e_frame) & 116'hfffffffffffffffffffffffffffff);
         end
         else begin
-            fifo_data = (((sel__q) & 100'hfffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 100'hfffffffffffffffffffffffff);
+            fifo_data = (((sel__q) & 116'hfffffffffffffffffffffffffffff) << 32'h63) | ((frame_sel) & 116'hfffffffffffffffffffffffffffff);
         end
+        fifo_data = fifo_data | (((now) & 116'hfffffffffffffffffffffffffffff) << 32'h64);
+        f_word = fifo_data[(32'h44)+:(31)];
+        f_match0 = filt_mask0[32'h1f] & (((f_word ^ filt_id0) & filt_mask0[(32'h0)+:(31)]) == zero31);
+        f_match1 = filt_mask1[32'h1f] & (((f_word ^ filt_id1) & filt_mask1[(32'h0)+:(31)]) == zero31);
+        accept = ~(filt_mask0[32'h1f] | filt_mask1[32'h1f]) | f_match0 | f_match1;
         rx_evt = 1'b0;
         overrun_evt = 1'b0;
         rel__start = 1'b0;
@@ -11762,6 +11952,8 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
         else if (w_state__q == s_write) begin
             if (~w_fifo) begin
             end
+            else if (~accept) begin
+            end
             else if (fifo_full) begin
                 stats__overrun_inc = 1'b1;
                 overrun_evt = 1'b1;
@@ -11791,7 +11983,9 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
             w_state__d = s_release;
         end
         else begin
-            if (fifo_full) begin
+            if (~accept) begin
+            end
+            else if (fifo_full) begin
                 stats__overrun_inc = 1'b1;
                 overrun_evt = 1'b1;
             end
@@ -11879,6 +12073,36 @@ module drcc_apb__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,fr
     end
 
 endmodule // drcc_apb__core__rxw
+
+
+module drcc_apb__core__rxw__hist(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+
+    // Module arguments
+    input wire  clk;
+    input wire  [4:0] read_address;
+    input wire  read_enable;
+    output reg  [99:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [99:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[99:0] mem[31:0];
+
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+
+endmodule // drcc_apb__core__rxw__hist
 
 
 module drcc_apb__core__rxw__hist_ts(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
@@ -12151,7 +12375,7 @@ module drcc_apb__core__stats(clk,rst,switch_evt,recover_a,recover_b,switches,rec
 endmodule // drcc_apb__core__stats
 
 
-module drcc_apb__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,rx_ready,duplicates,overruns,switches,recoveries,star_word,omissions_a,omissions_b,cap_a,cap_b);
+module drcc_apb__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,now,rx_ready,duplicates,overruns,switches,recoveries,star_word,omissions_a,omissions_b,cap_a,cap_b);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [5:0] HISTORY = 6'd32;
@@ -12187,7 +12411,8 @@ module drcc_apb__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time
     input wire  [3:0] fail_cnt_b;
     input wire  [7:0] failures_b;
     input wire  [7:0] recoveries_b;
-    input wire  [99:0] rx_head;
+    input wire  [115:0] rx_head;
+    input wire  [15:0] now;
     input wire  rx_ready;
     input wire  [15:0] duplicates;
     input wire  [15:0] overruns;
@@ -12225,8 +12450,9 @@ module drcc_apb__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time
     localparam  a_sizes = 6'b100111;
     localparam  a_cap_a = 6'b101000;
     localparam  a_cap_b = 6'b101001;
+    localparam  a_rx_time = 6'b101110;
     localparam  id_value = 32'h44524343;
-    localparam  version_value = 32'h101;
+    localparam  version_value = 32'h102;
     localparam  zero32 = 32'h0;
     localparam  st_state = 5'b0;
     localparam  st_tx_channel = 5'b100;
@@ -12259,6 +12485,8 @@ module drcc_apb__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time
     localparam  t_switch = 5'b10000;
     localparam  o_a = 5'b0;
     localparam  o_b = 5'b10000;
+    localparam  rt_rx_time = 5'b0;
+    localparam  rt_now = 5'b10000;
     localparam  z_rx_fifo = 5'b0;
     localparam  z_tx_queue = 5'b1000;
     localparam  z_history = 5'b10000;
@@ -12329,6 +12557,9 @@ module drcc_apb__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time
         end
         else if (adr == a_cap_b) begin
             word = cap_b;
+        end
+        else if (adr == a_rx_time) begin
+            word = (((rx_head[(32'h64)+:(16)]) & 32'hffffffff) << rt_rx_time) | (((now) & 32'hffffffff) << rt_now);
         end
     end
 

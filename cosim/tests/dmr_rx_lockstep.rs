@@ -75,6 +75,12 @@ impl Logic for RxBench {
         w.dmr.next = self.dmr.val();
         w.acl.next = self.acl.val();
         w.release_set.next = self.release_set.val();
+        // the filters (DRCC contract §11.1) are the system lock step's: disabled here
+        w.filt_id0.next = Bits::<31>::default();
+        w.filt_mask0.next = Bits::<32>::default();
+        w.filt_id1.next = Bits::<31>::default();
+        w.filt_mask1.next = Bits::<32>::default();
+        w.stats_clear.next = false;
         let nonempty = self.fifo.count.val().any();
         let f = &mut self.fifo;
         f.clk.next = self.clk.val();
@@ -304,7 +310,13 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         assert_eq!(overrun_evt, ev.overrun, "overrun_evt, {}", ctx());
         if ev.rx {
             let slot = ((pre.head + pre.count) & 31) as usize;
-            assert_eq!(fifo_data, entry_bits(&m.ram[slot]), "fifo_data, {}", ctx());
+            // [115:100], the timestamp (§11.2), is the system lock step's
+            assert_eq!(
+                fifo_data.get_bits::<100>(0),
+                entry_bits(&m.ram[slot]),
+                "fifo_data, {}",
+                ctx()
+            );
         }
         let w = &uut.rxw;
         assert_eq!(w.w_state.q.val().to_u8(), m.w_state, "w_state, {}", ctx());
@@ -337,7 +349,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         let popped = pop && pre.count != 0 && !rst && !reset_mode;
         if m.rx_ready && !popped {
             assert_eq!(
-                f.rd_data.val(),
+                f.rd_data.val().get_bits::<100>(0),
                 entry_bits(&m.rd),
                 "FIFO head data, {}",
                 ctx()

@@ -30,6 +30,7 @@ use crate::dmr::mailbox_cfg::MailboxCfg;
 use crate::host::captures::Captures;
 use crate::host::dmr_check::DmrCheck;
 use crate::host::dmr_regs::DmrRegs;
+use crate::host::filters::FilterRegs;
 use crate::host::status_words::StatusWords;
 use crate::host::wishbone::WbRegs;
 use crate::memory::dedup::RxWriter;
@@ -174,6 +175,7 @@ pub struct DrccCore<const M: usize> {
     regs: WbRegs,
     dmr_check: DmrCheck<M>,
     dmr_regs: DmrRegs<M>,
+    filters: FilterRegs,
     mailbox_cfg: IfMailboxes<MailboxCfg, M>,
     dmr_ctl: DmrControl,
     dmr_eng: IfMailboxes<DmrEngine<M>, M>,

@@ -57,15 +57,27 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.wb_ack_o.next = self.regs.wb_ack_o.val();
         self.wb_err_o.next = self.regs.wb_err_o.val();
         self.irq.next = self.regs.irq.val();
-        self.regs.ext_hit.next = self.dmr_check.hit.val();
-        self.regs.ext_word.next = self.dmr_check.word.val();
-        self.regs.ext_writable.next = self.dmr_check.writable.val();
-        self.regs.ext_illegal.next = self.dmr_check.illegal.val();
+        // the registers kept outside the block: DMR (25..35) and filters (§11.1)
+        self.regs.ext_hit.next = self.dmr_check.hit.val() | self.filters.hit.val();
+        self.regs.ext_word.next = self.dmr_check.word.val() | self.filters.word.val();
+        self.regs.ext_writable.next = self.dmr_check.writable.val() | self.filters.hit.val();
+        self.regs.ext_illegal.next = self.dmr_check.illegal.val() | self.filters.illegal.val();
+        self.filters.clk.next = self.clk.val();
+        self.filters.rst.next = self.rst.val();
+        self.filters.wr.next = self.regs.wr_o.val();
+        self.filters.adr.next = self.wb_adr_i.val();
+        self.filters.wdat.next = self.wb_dat_i.val();
+        self.filters.reset_mode.next = self.regs.reset_mode.val();
         self.regs.ev_dmr.next = self.dmr_ctl.int_evt.val();
         self.regs.ev_domain.next = self.echo.ev_domain.val();
         self.regs.ev_err_warning.next = self.caps.ev_err_warning.val();
         self.regs.ev_arb_lost.next = self.caps.ev_arb_lost.val();
         self.regs.ev_bus_error.next = self.caps.ev_bus_error.val();
+        // §11.3: which channel finished or dropped its frame
+        self.regs.ev_tx_done_a.next = self.chan_a.tx_done.val();
+        self.regs.ev_tx_done_b.next = self.chan_b.tx_done.val();
+        self.regs.ev_tx_failure_a.next = self.chan_a.tx_failed.val();
+        self.regs.ev_tx_failure_b.next = self.chan_b.tx_failed.val();
 
         // ---- the channels' captures (§10.2) ----
         self.caps.clk.next = self.clk.val();
@@ -235,6 +247,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.status.failures_b.next = self.aux_b.failures.val();
         self.status.recoveries_b.next = self.aux_b.recoveries.val();
         self.status.rx_head.next = self.rxfifo.rd_data.val();
+        self.status.now.next = self.ticker.now.val();
         self.status.rx_ready.next = self.rxfifo.rx_ready.val();
         self.status.duplicates.next = self.rxw.duplicates.val();
         self.status.overruns.next = self.rxw.overruns.val();
@@ -246,7 +259,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.status.cap_a.next = self.caps.cap_a.val();
         self.status.cap_b.next = self.caps.cap_b.val();
         self.stats.clk.next = self.clk.val();
-        self.stats.rst.next = self.rst.val();
+        // §11.4: STATS_CLR clears the counts as rst does
+        self.stats.rst.next = self.rst.val() | self.regs.stats_clear.val();
         self.stats.switch_evt.next = self.main.switch_evt.val();
         self.stats.recover_a.next = self.aux_a.recover_evt.val();
         self.stats.recover_b.next = self.aux_b.recover_evt.val();
@@ -292,7 +306,7 @@ impl<const M: usize> Logic for DrccCore<M> {
 
         // ---- auxiliary FSMs ----
         self.aux_a.clk.next = self.clk.val();
-        self.aux_a.rst.next = self.rst.val();
+        self.aux_a.rst.next = self.rst.val() | self.regs.stats_clear.val();
         self.aux_a.hold.next = self.rmb_hold.val();
         self.aux_a.policy.next = self.regs.policy.val();
         self.aux_a.k.next = self.regs.k.val();
@@ -311,7 +325,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.aux_a.err_warning.next = self.chan_a.err_warning.val();
         self.aux_a.sample_point.next = self.chan_a.sample_point.val();
         self.aux_b.clk.next = self.clk.val();
-        self.aux_b.rst.next = self.rst.val();
+        self.aux_b.rst.next = self.rst.val() | self.regs.stats_clear.val();
         self.aux_b.hold.next = self.rmb_hold.val();
         self.aux_b.policy.next = self.regs.policy.val();
         self.aux_b.k.next = self.regs.k.val();
@@ -364,6 +378,11 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rxw.release_set.next = self.dmr_ctl.acl_switch.val();
         self.rxw.window.next = self.regs.window.val();
         self.rxw.now.next = self.ticker.now.val();
+        self.rxw.stats_clear.next = self.regs.stats_clear.val();
+        self.rxw.filt_id0.next = self.filters.id0.val();
+        self.rxw.filt_mask0.next = self.filters.mask0.val();
+        self.rxw.filt_id1.next = self.filters.id1.val();
+        self.rxw.filt_mask1.next = self.filters.mask1.val();
         self.rxw.tick.next = self.ticker.tick.val();
         if self.dmr_hold.val() {
             // neither an echo (the node's own frame, §4.4) nor a hub's

@@ -3,7 +3,9 @@
 //! with a random policy, `dual_tx`, channel modes and bit timing; random frames
 //! (base/extended, data/remote, every DLC, bursts that fill the TX queues and
 //! overrun RX FIFOs); random register writes at random times, legal and illegal
-//! (every address, random values, reset-mode toggles); random line faults. Every
+//! (every address, random values, reset-mode toggles); acceptance filters set in a
+//! mid-run reconfiguration, timestamps and statistics clears (DRCC contract §11);
+//! random line faults. Every
 //! output of every node must agree every clock. The expected values are the model's
 //! (the oracle written from the contract), never the RTL's.
 
@@ -186,6 +188,8 @@ fn run_seed(seed: u64, cycles: u64) {
         map::CAP_B,
         map::INT_STATUS,
         map::CHAN_A_ERR,
+        map::RX_TIME,
+        map::STATS0,
     ];
     let mut reads: Vec<(u64, usize, u8)> = (0..40)
         .map(|_| {
@@ -197,6 +201,36 @@ fn run_seed(seed: u64, cycles: u64) {
         })
         .collect();
     reads.sort();
+    // §11: a node may enter reset mode once, set random acceptance filters and
+    // leave it (half of the filters enabled, each comparing a few identifier bits
+    // and sometimes IDE, so about half the frames pass), and clear its
+    // statistics later. Drawn last as well.
+    let mut reconf: Vec<(u64, usize, [u32; 4])> = Vec::new();
+    let mut clears: Vec<(u64, usize)> = Vec::new();
+    for n in 0..nodes {
+        if rng.percent(50) {
+            let mut words = [0u32; 4];
+            for k in 0..2 {
+                let ide = rng.percent(50) as u32;
+                words[2 * k] = (rng.next_u64() as u32 & 0x1FFF_FFFF) | (ide << 29);
+                let mut mask = 0u32;
+                for _ in 0..1 + rng.below(2) {
+                    mask |= 1 << rng.below(11);
+                }
+                if rng.percent(30) {
+                    mask |= 1 << 29;
+                }
+                if rng.percent(50) {
+                    mask |= 1 << 31;
+                }
+                words[2 * k + 1] = mask;
+            }
+            reconf.push((rng.below(cycles / 2), n, words));
+        }
+        if rng.percent(50) {
+            clears.push((rng.below(cycles), n));
+        }
+    }
     let mut next_read = 0;
     let mut next = 0;
     let mut recent: std::collections::VecDeque<String> = std::collections::VecDeque::new();
@@ -210,6 +244,21 @@ fn run_seed(seed: u64, cycles: u64) {
                 rtl.node_mut(n).host.read(reg);
             }
             next += 1;
+        }
+        for &(_, n, words) in reconf.iter().filter(|r| r.0 == cycle) {
+            let c = &configs[n];
+            for sys in [&mut model, &mut rtl] {
+                let host = &mut sys.node_mut(n).host;
+                host.write(map::CTRL as u8, c.ctrl(true));
+                for (k, w) in words.iter().enumerate() {
+                    host.write((map::FILT_ID0 as usize + k) as u8, *w);
+                }
+                host.write(map::CTRL as u8, c.ctrl(false));
+            }
+        }
+        for &(_, n) in clears.iter().filter(|r| r.0 == cycle) {
+            model.node_mut(n).host.write(map::STATS_CLR as u8, 1);
+            rtl.node_mut(n).host.write(map::STATS_CLR as u8, 1);
         }
         while next_read < reads.len() && reads[next_read].0 == cycle {
             let (_, n, reg) = reads[next_read];

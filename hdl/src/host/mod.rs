@@ -9,6 +9,7 @@ pub mod ctrl_reg;
 pub mod dmr_check;
 pub mod dmr_registers;
 pub mod dmr_regs;
+pub mod filters;
 pub mod generate;
 pub mod hub_registers;
 pub mod map;

@@ -1,10 +1,10 @@
 //! The field lists that more than one register of the DRCC map shares
 //! (`INT_STATUS` and `INT_ENABLE`, `CHAN_A_ERR` and `CHAN_B_ERR`, `CAP_A` and
-//! `CAP_B`, `AUX_A` and `AUX_B`): one list each, so the pairs cannot drift
-//! (DRCC contract §3, §5, §8, §10). The table is `super::registers`.
+//! `CAP_B`, `AUX_A` and `AUX_B`, the two acceptance filters): one list each, so the pairs cannot drift
+//! (DRCC contract §3, §5, §8, §10, §11). The table is `super::registers`.
 
 use super::codes::{AuxState, ErrState};
-use super::map::{f, Field};
+use super::map::{cfg, f, Field};
 
 pub(super) const INT_FIELDS: &[Field] = &[
     f("rx", 0, 1, 0, "a frame was written to the RX FIFO"),
@@ -85,6 +85,55 @@ pub(super) const INT_FIELDS: &[Field] = &[
         1,
         0,
         "a channel detected a bus error (CAP_x.err_*; writing 1 here re-arms its capture)",
+    ),
+    f(
+        "tx_done_a",
+        13,
+        1,
+        0,
+        "channel A's tx_done: the frame it sent became valid (contract §11.3)",
+    ),
+    f("tx_done_b", 14, 1, 0, "channel B's tx_done"),
+    f(
+        "tx_failure_a",
+        15,
+        1,
+        0,
+        "channel A's tx_failed: it dropped the frame it held (single shot, an abort, a refusal)",
+    ),
+    f("tx_failure_b", 16, 1, 0, "channel B's tx_failed"),
+];
+
+/// `FILT_IDk` (contract §11.1): the `TX_ID` layout.
+pub(super) const FILT_ID_FIELDS: &[Field] = &[
+    cfg(
+        "id",
+        0,
+        29,
+        0,
+        "identifier to compare (a base identifier in id[10:0])",
+    ),
+    cfg("ide", 29, 1, 0, "IDE to compare"),
+    cfg("rtr", 30, 1, 0, "RTR to compare"),
+];
+
+/// `FILT_MASKk`: a mask bit 1 = that bit of the frame must equal `FILT_IDk`'s.
+pub(super) const FILT_MASK_FIELDS: &[Field] = &[
+    cfg("id", 0, 29, 0, "identifier bits compared"),
+    cfg(
+        "ide",
+        29,
+        1,
+        0,
+        "compare IDE (set it to tell base from extended frames)",
+    ),
+    cfg("rtr", 30, 1, 0, "compare RTR"),
+    cfg(
+        "enable",
+        31,
+        1,
+        0,
+        "the filter is in use (no filter enabled: every frame is accepted)",
     ),
 ];
 

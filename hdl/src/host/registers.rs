@@ -12,7 +12,9 @@
 
 use super::map::{cfg, cmd, f, CodeList, RegisterMap};
 pub use super::map::{Access, Field, Register};
-use super::register_fields::{AUX_FIELDS, CAP_FIELDS, CHAN_ERR_FIELDS, INT_FIELDS};
+use super::register_fields::{
+    AUX_FIELDS, CAP_FIELDS, CHAN_ERR_FIELDS, FILT_ID_FIELDS, FILT_MASK_FIELDS, INT_FIELDS,
+};
 
 pub use super::codes::{
     AuxState, ChannelMode, DmrCause, DmrState, ErrState, MainState, Mode, StarLast, SwitchPolicy,
@@ -61,6 +63,12 @@ pub const VERSION: u32 = 38;
 pub const SIZES: u32 = 39;
 pub const CAP_A: u32 = 40;
 pub const CAP_B: u32 = 41;
+pub const FILT_ID0: u32 = 42;
+pub const FILT_MASK0: u32 = 43;
+pub const FILT_ID1: u32 = 44;
+pub const FILT_MASK1: u32 = 45;
+pub const RX_TIME: u32 = 46;
+pub const STATS_CLR: u32 = 47;
 
 /// The constant read from `ID`: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
@@ -69,7 +77,7 @@ pub const ID_VALUE: u32 = 0x4452_4343;
 /// changes its meaning.
 pub const VERSION_MAJOR: u32 = 1;
 /// `VERSION.minor`: changes when a register or field is added.
-pub const VERSION_MINOR: u32 = 1;
+pub const VERSION_MINOR: u32 = 2;
 
 /// The register map, in index order.
 pub const REGISTERS: &[Register] = &[
@@ -379,6 +387,51 @@ pub const REGISTERS: &[Register] = &[
         access: Access::Ro,
         desc: "Channel B: the same as CAP_A",
         fields: CAP_FIELDS,
+    },
+    Register {
+        name: "FILT_ID0",
+        index: FILT_ID0,
+        access: Access::Rw,
+        desc: "Acceptance filter 0: the frame word {rtr, ide, id} to compare (contract §11.1); writable only in reset mode",
+        fields: FILT_ID_FIELDS,
+    },
+    Register {
+        name: "FILT_MASK0",
+        index: FILT_MASK0,
+        access: Access::Rw,
+        desc: "Acceptance filter 0: the bits compared and the enable; a frame is accepted if no filter is enabled or an enabled one matches",
+        fields: FILT_MASK_FIELDS,
+    },
+    Register {
+        name: "FILT_ID1",
+        index: FILT_ID1,
+        access: Access::Rw,
+        desc: "Acceptance filter 1: as FILT_ID0",
+        fields: FILT_ID_FIELDS,
+    },
+    Register {
+        name: "FILT_MASK1",
+        index: FILT_MASK1,
+        access: Access::Rw,
+        desc: "Acceptance filter 1: as FILT_MASK0",
+        fields: FILT_MASK_FIELDS,
+    },
+    Register {
+        name: "RX_TIME",
+        index: RX_TIME,
+        access: Access::Ro,
+        desc: "Timestamps (contract §11.2): the RX FIFO head's, and the bit-time counter now",
+        fields: &[
+            f("rx_time", 0, 16, 0, "now at the edge the head frame was written into the RX FIFO"),
+            f("now", 16, 16, 0, "nominal bit times since reset mode was left (wrapping)"),
+        ],
+    },
+    Register {
+        name: "STATS_CLR",
+        index: STATS_CLR,
+        access: Access::Wo,
+        desc: "Clears STATS0, STATS1, OMISSIONS, DMR_RX_STATS and the AUX_x failures and recoveries counts (contract §11.4)",
+        fields: &[cmd("clear", 0, "1 = clear the statistics")],
     },
 ];
 

@@ -2,7 +2,7 @@
 //! `CHAN_x_ERR`, `AUX_x`, the head of the RX FIFO (`RX_ID`, `RX_CTRL`,
 //! `RX_DATAx`), `STATS0`, `STATS1`, `TIMES`, `STAR_STATUS` (§4.5, assembled by
 //! `crate::rmb::star`), `OMISSIONS` (§7), `VERSION`, `SIZES` and `CAP_x` (§10,
-//! the captures assembled by `super::captures`), from the status of the
+//! the captures assembled by `super::captures`), `RX_TIME` (§11.2), from the status of the
 //! blocks that own it, with every field at its position in the table
 //! (`super::registers`). Combinational: `word` is the addressed register's value
 //! (0 when the address is not one of them); the register block registers it
@@ -83,9 +83,11 @@ pub struct StatusWords<const M: usize> {
     /// Times B recovered.
     pub recoveries_b: Signal<In, Bits<8>>,
     // ---- RX FIFO head (RX_ID, RX_CTRL, RX_DATAx) ----
-    /// Head entry: [99] channel, [98:68] {rtr, ide, id}, [67:64] dlc, [63:0] data
-    /// (byte 0 in [63:56]).
-    pub rx_head: Signal<In, Bits<100>>,
+    /// Head entry: [115:100] timestamp (§11.2), [99] channel, [98:68] {rtr, ide,
+    /// id}, [67:64] dlc, [63:0] data (byte 0 in [63:56]).
+    pub rx_head: Signal<In, Bits<116>>,
+    /// `now` (§7), for `RX_TIME.now`.
+    pub now: Signal<In, Bits<16>>,
     /// The head is valid.
     pub rx_ready: Signal<In, Bit>,
     // ---- statistics (STATS0, STATS1) ----
@@ -137,6 +139,7 @@ pub struct StatusWords<const M: usize> {
     a_sizes: Constant<Bits<6>>,
     a_cap_a: Constant<Bits<6>>,
     a_cap_b: Constant<Bits<6>>,
+    a_rx_time: Constant<Bits<6>>,
     id_value: Constant<Bits<32>>,
     version_value: Constant<Bits<32>>,
     zero32: Constant<Bits<32>>,
@@ -172,6 +175,8 @@ pub struct StatusWords<const M: usize> {
     t_switch: Constant<Bits<5>>,
     o_a: Constant<Bits<5>>,
     o_b: Constant<Bits<5>>,
+    rt_rx_time: Constant<Bits<5>>,
+    rt_now: Constant<Bits<5>>,
     z_rx_fifo: Constant<Bits<5>>,
     z_tx_queue: Constant<Bits<5>>,
     z_history: Constant<Bits<5>>,
@@ -278,6 +283,7 @@ impl<const M: usize> Default for StatusWords<M> {
             failures_b: Default::default(),
             recoveries_b: Default::default(),
             rx_head: Default::default(),
+            now: Default::default(),
             rx_ready: Default::default(),
             duplicates: Default::default(),
             overruns: Default::default(),
@@ -314,6 +320,7 @@ impl<const M: usize> Default for StatusWords<M> {
             a_sizes: adr(map::SIZES),
             a_cap_a: adr(map::CAP_A),
             a_cap_b: adr(map::CAP_B),
+            a_rx_time: adr(map::RX_TIME),
             id_value: Constant::new((map::ID_VALUE as u64).into()),
             version_value: Constant::new(
                 (map::register("VERSION").unwrap().reset_value() as u64).into(),
@@ -350,6 +357,8 @@ impl<const M: usize> Default for StatusWords<M> {
             t_switch: lsb(&MAP, "TIMES", "switch_time", 16),
             o_a: lsb(&MAP, "OMISSIONS", "omissions_a", 16),
             o_b: lsb(&MAP, "OMISSIONS", "omissions_b", 16),
+            rt_rx_time: lsb(&MAP, "RX_TIME", "rx_time", 16),
+            rt_now: lsb(&MAP, "RX_TIME", "now", 16),
             z_rx_fifo: lsb(&MAP, "SIZES", "rx_fifo_depth", 6),
             z_tx_queue: lsb(&MAP, "SIZES", "tx_queue_depth", 4),
             z_history: lsb(&MAP, "SIZES", "history", 6),
@@ -467,6 +476,10 @@ impl<const M: usize> Logic for StatusWords<M> {
             self.word.next = self.cap_a.val();
         } else if self.adr.val() == self.a_cap_b.val() {
             self.word.next = self.cap_b.val();
+        } else if self.adr.val() == self.a_rx_time.val() {
+            self.word.next = (bit_cast::<32, 16>(self.rx_head.val().get_bits::<16>(100))
+                << self.rt_rx_time.val())
+                | (bit_cast::<32, 16>(self.now.val()) << self.rt_now.val());
         }
     }
 }

@@ -100,6 +100,14 @@ pub struct WbRegs {
     pub ev_arb_lost: Signal<In, Bit>,
     /// A channel detected a bus error (`INT_STATUS.bus_error`).
     pub ev_bus_error: Signal<In, Bit>,
+    /// Channel A's `tx_done` (`INT_STATUS.tx_done_a`, §11.3).
+    pub ev_tx_done_a: Signal<In, Bit>,
+    /// Channel B's `tx_done`.
+    pub ev_tx_done_b: Signal<In, Bit>,
+    /// Channel A's `tx_failed` (`INT_STATUS.tx_failure_a`).
+    pub ev_tx_failure_a: Signal<In, Bit>,
+    /// Channel B's `tx_failed`.
+    pub ev_tx_failure_b: Signal<In, Bit>,
     /// A whole-word write is taken at this edge (the DMR registers take no other).
     pub wr_o: Signal<Out, Bit>,
     // ---- configuration out ----
@@ -157,8 +165,10 @@ pub struct WbRegs {
     pub rearm_err: Signal<Out, Bit>,
     /// `INT_STATUS.arb_lost` written 1: the arbitration-lost captures re-arm.
     pub rearm_alc: Signal<Out, Bit>,
+    /// `STATS_CLR.clear` written 1: the statistics clear at this edge (§11.4).
+    pub stats_clear: Signal<Out, Bit>,
     // ---- blocks ----
-    bus: WbSlave<13>,
+    bus: WbSlave<17>,
     ctrl: CtrlReg,
     ctrl_check: CtrlCheck,
     // ---- registers ----
@@ -189,7 +199,7 @@ pub struct WbRegs {
     rdata: Signal<Local, Bits<32>>,
     wdat: Signal<Local, Bits<32>>,
     illegal: Signal<Local, Bit>,
-    w1c: Signal<Local, Bits<13>>,
+    w1c: Signal<Local, Bits<17>>,
     target_count: Signal<Local, Bits<4>>,
     es_evt: Signal<Local, Bit>,
     tx_data64: Signal<Local, Bits<64>>,
@@ -206,6 +216,7 @@ pub struct WbRegs {
     a_tx_data1: Constant<Bits<6>>,
     a_tx_cmd: Constant<Bits<6>>,
     a_rx_cmd: Constant<Bits<6>>,
+    a_stats_clr: Constant<Bits<6>>,
     // ---- field positions (from the table) ----
     b_brp: Constant<Bits<5>>,
     b_brp_ext: Constant<Bits<5>>,
@@ -222,6 +233,7 @@ pub struct WbRegs {
     t_queue: Constant<Bits<5>>,
     t_push: Constant<Bits<5>>,
     r_pop: Constant<Bits<5>>,
+    c_clear: Constant<Bits<5>>,
     i_rx: Constant<Bits<5>>,
     i_tx_done: Constant<Bits<5>>,
     i_switch: Constant<Bits<5>>,
@@ -235,10 +247,14 @@ pub struct WbRegs {
     i_err_warning: Constant<Bits<5>>,
     i_arb_lost: Constant<Bits<5>>,
     i_bus_error: Constant<Bits<5>>,
+    i_tx_done_a: Constant<Bits<5>>,
+    i_tx_done_b: Constant<Bits<5>>,
+    i_tx_failure_a: Constant<Bits<5>>,
+    i_tx_failure_b: Constant<Bits<5>>,
     /// `INT_STATUS.bus_error` as a mask (the re-arm of §10.2).
-    m_bus_error: Constant<Bits<13>>,
+    m_bus_error: Constant<Bits<17>>,
     /// `INT_STATUS.arb_lost` as a mask.
-    m_arb_lost: Constant<Bits<13>>,
+    m_arb_lost: Constant<Bits<17>>,
     // ---- reset values and codes ----
     btr_reset: Constant<Bits<28>>,
     rmb_cfg_reset: Constant<Bits<32>>,
@@ -247,7 +263,7 @@ pub struct WbRegs {
     zero2: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     zero6: Constant<Bits<6>>,
-    zero13: Constant<Bits<13>>,
+    zero17: Constant<Bits<17>>,
     zero15: Constant<Bits<15>>,
     zero16: Constant<Bits<16>>,
     zero31: Constant<Bits<31>>,
@@ -282,8 +298,8 @@ impl Default for WbRegs {
     fn default() -> Self {
         stored_in("BTR", 28);
         stored_in("RMB_CFG", 32);
-        stored_in("INT_STATUS", 13);
-        stored_in("INT_ENABLE", 13);
+        stored_in("INT_STATUS", 17);
+        stored_in("INT_ENABLE", 17);
         let field_reset = |reg: &str, field: &str| MAP.field(reg, field).reset;
         Self {
             clk: Default::default(),
@@ -330,6 +346,10 @@ impl Default for WbRegs {
             ev_err_warning: Default::default(),
             ev_arb_lost: Default::default(),
             ev_bus_error: Default::default(),
+            ev_tx_done_a: Default::default(),
+            ev_tx_done_b: Default::default(),
+            ev_tx_failure_a: Default::default(),
+            ev_tx_failure_b: Default::default(),
             wr_o: Default::default(),
             brp: Default::default(),
             tseg1: Default::default(),
@@ -346,6 +366,7 @@ impl Default for WbRegs {
             pop: Default::default(),
             rearm_err: Default::default(),
             rearm_alc: Default::default(),
+            stats_clear: Default::default(),
             bus: Default::default(),
             ctrl: Default::default(),
             ctrl_check: Default::default(),
@@ -385,6 +406,7 @@ impl Default for WbRegs {
             a_tx_data1: adr(map::TX_DATA1),
             a_tx_cmd: adr(map::TX_CMD),
             a_rx_cmd: adr(map::RX_CMD),
+            a_stats_clr: adr(map::STATS_CLR),
             b_brp: lsb(&MAP, "BTR", "brp", 6),
             b_brp_ext: lsb(&MAP, "BTR", "brp_ext", 4),
             brp_ext_shift: Constant::new(6.into()),
@@ -400,6 +422,7 @@ impl Default for WbRegs {
             t_queue: lsb(&MAP, "TX_CTRL", "queue", 1),
             t_push: lsb(&MAP, "TX_CMD", "push", 1),
             r_pop: lsb(&MAP, "RX_CMD", "pop", 1),
+            c_clear: lsb(&MAP, "STATS_CLR", "clear", 1),
             i_rx: lsb(&MAP, "INT_STATUS", "rx", 1),
             i_tx_done: lsb(&MAP, "INT_STATUS", "tx_done", 1),
             i_switch: lsb(&MAP, "INT_STATUS", "switch", 1),
@@ -413,6 +436,10 @@ impl Default for WbRegs {
             i_err_warning: lsb(&MAP, "INT_STATUS", "err_warning", 1),
             i_arb_lost: lsb(&MAP, "INT_STATUS", "arb_lost", 1),
             i_bus_error: lsb(&MAP, "INT_STATUS", "bus_error", 1),
+            i_tx_done_a: lsb(&MAP, "INT_STATUS", "tx_done_a", 1),
+            i_tx_done_b: lsb(&MAP, "INT_STATUS", "tx_done_b", 1),
+            i_tx_failure_a: lsb(&MAP, "INT_STATUS", "tx_failure_a", 1),
+            i_tx_failure_b: lsb(&MAP, "INT_STATUS", "tx_failure_b", 1),
             m_bus_error: Constant::new((MAP.field("INT_STATUS", "bus_error").mask() as u64).into()),
             m_arb_lost: Constant::new((MAP.field("INT_STATUS", "arb_lost").mask() as u64).into()),
             btr_reset: reset(map::register("BTR").unwrap().reset_value()),
@@ -422,7 +449,7 @@ impl Default for WbRegs {
             zero2: Constant::new(0.into()),
             zero4: Constant::new(0.into()),
             zero6: Constant::new(0.into()),
-            zero13: Constant::new(0.into()),
+            zero17: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             zero31: Constant::new(0.into()),

@@ -7,7 +7,10 @@
 //! delivered from the other channel at most `window` bit times earlier that has
 //! not already cancelled a copy; such a frame is dropped as a duplicate.
 //! Otherwise the frame is written to the RX FIFO (or counted as an overrun when
-//! the FIFO is full) and recorded in the history.
+//! the FIFO is full) and recorded in the history. At the FIFO port, and only
+//! there, the acceptance filters judge it (§11.1: a frame no enabled filter
+//! matches is dropped silently, after the history has seen it), and the entry
+//! is stamped with `now` (§11.2).
 //!
 //! scan (H + 1 clocks, `scan_i` 0..H): history read address = `scan_i mod H`;
 //! at the edge with `scan_i = i >= 1` the read data is entry `i - 1`.
@@ -87,7 +90,20 @@ pub struct RxWriter {
     // RX FIFO
     pub fifo_count: Signal<In, Bits<6>>,
     pub fifo_wr: Signal<Out, Bit>,
-    pub fifo_data: Signal<Out, Bits<100>>,
+    /// The FIFO entry: [115:100] `now` (the RX timestamp, contract §11.2), [99]
+    /// channel, [98:0] frame.
+    pub fifo_data: Signal<Out, Bits<116>>,
+    // acceptance filters (contract §11.1; the registers are `crate::host::filters`)
+    /// `FILT_ID0[30:0]`: the frame word {rtr, ide, id} to compare.
+    pub filt_id0: Signal<In, Bits<31>>,
+    /// `FILT_MASK0`: [30:0] the bits compared, [31] `enable`.
+    pub filt_mask0: Signal<In, Bits<32>>,
+    /// `FILT_ID1[30:0]`.
+    pub filt_id1: Signal<In, Bits<31>>,
+    /// `FILT_MASK1`.
+    pub filt_mask1: Signal<In, Bits<32>>,
+    /// `STATS_CLR.clear` (contract §11.4): the statistics clear at this edge.
+    pub stats_clear: Signal<In, Bit>,
     // events and statistics
     pub rx_evt: Signal<Out, Bit>,
     pub overrun_evt: Signal<Out, Bit>,
@@ -170,6 +186,12 @@ pub struct RxWriter {
     w_fifo: Signal<Local, Bit>,
     w_hist: Signal<Local, Bit>,
     omit: Signal<Local, Bit>,
+    /// The frame word {rtr, ide, id} at the FIFO port (the filters' input).
+    f_word: Signal<Local, Bits<31>>,
+    f_match0: Signal<Local, Bit>,
+    f_match1: Signal<Local, Bit>,
+    /// §11.1: no filter enabled, or an enabled one matches.
+    accept: Signal<Local, Bit>,
     // constants
     s_idle: Const<3, 0>,
     s_scan: Const<3, 1>,
@@ -188,6 +210,7 @@ pub struct RxWriter {
     hmask: Param<5, 31>,
     /// The RX FIFO depth: its count when full (generation parameter).
     fifo_depth: Param<6, 32>,
+    zero31: Const<31, 0>,
     zero32: Const<32, 0>,
     one32: Const<32, 1>,
     zero15: Const<15, 0>,
@@ -226,7 +249,7 @@ impl Logic for RxWriter {
         self.rel.clk.next = self.clk.val();
         self.rel.clear.next = self.clear.val();
         self.stats.clk.next = self.clk.val();
-        self.stats.rst.next = self.rst.val();
+        self.stats.rst.next = self.rst.val() | self.stats_clear.val();
 
         // the frame being processed (latched at its rx_valid), and the history
         // entry being read
@@ -308,12 +331,27 @@ impl Logic for RxWriter {
         self.fifo_wr.next = false;
         if self.w_state.q.val() == self.s_release.val() {
             // §8: a released frame goes to the FIFO with channel acl
-            self.fifo_data.next = (bit_cast::<100, 1>(self.acl.val().into()) << 99)
-                | bit_cast::<100, 99>(self.e_frame.val());
+            self.fifo_data.next = (bit_cast::<116, 1>(self.acl.val().into()) << 99)
+                | bit_cast::<116, 99>(self.e_frame.val());
         } else {
-            self.fifo_data.next = (bit_cast::<100, 1>(self.sel.q.val().into()) << 99)
-                | bit_cast::<100, 99>(self.frame_sel.val());
+            self.fifo_data.next = (bit_cast::<116, 1>(self.sel.q.val().into()) << 99)
+                | bit_cast::<116, 99>(self.frame_sel.val());
         }
+        // §11.2: stamped with now at the write edge
+        self.fifo_data.next = self.fifo_data.val() | (bit_cast::<116, 16>(self.now.val()) << 100);
+        // §11.1: the filters judge the frame at the FIFO port, nothing before it
+        self.f_word.next = self.fifo_data.val().get_bits::<31>(68);
+        self.f_match0.next = self.filt_mask0.val().get_bit(31)
+            & (((self.f_word.val() ^ self.filt_id0.val())
+                & self.filt_mask0.val().get_bits::<31>(0))
+                == self.zero31.val());
+        self.f_match1.next = self.filt_mask1.val().get_bit(31)
+            & (((self.f_word.val() ^ self.filt_id1.val())
+                & self.filt_mask1.val().get_bits::<31>(0))
+                == self.zero31.val());
+        self.accept.next = !(self.filt_mask0.val().get_bit(31) | self.filt_mask1.val().get_bit(31))
+            | self.f_match0.val()
+            | self.f_match1.val();
         self.rx_evt.next = false;
         self.overrun_evt.next = false;
         // release scan: a candidate is a waiting frame of the ACL (§8)
@@ -476,6 +514,8 @@ impl Logic for RxWriter {
         } else if self.w_state.q.val() == self.s_write.val() {
             if !self.w_fifo.val() {
                 // DMR: a PCL frame waits in the history
+            } else if !self.accept.val() {
+                // §11.1: filtered out, dropped silently (still recorded below)
             } else if self.fifo_full.val() {
                 self.stats.overrun_inc.next = true;
                 self.overrun_evt.next = true;
@@ -504,7 +544,9 @@ impl Logic for RxWriter {
             self.w_state.d.next = self.s_release.val();
         } else {
             // release (§8): the waiting frame is delivered on the ACL
-            if self.fifo_full.val() {
+            if !self.accept.val() {
+                // §11.1: filtered out, dropped silently
+            } else if self.fifo_full.val() {
                 self.stats.overrun_inc.next = true;
                 self.overrun_evt.next = true;
             } else {

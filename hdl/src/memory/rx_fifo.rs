@@ -1,6 +1,6 @@
-//! RX FIFO (DRCC contract §7): one synchronous RAM of `depth` entries x 100 bits
-//! (the 99 frame bits of the channel `rx_*` ports and, in [99], the channel the
-//! frame came from), `head[4:0]`, `count[5:0]`. The read data register is loaded
+//! RX FIFO (DRCC contract §7): one synchronous RAM of `depth` entries x 116 bits
+//! (the 99 frame bits of the channel `rx_*` ports, in [99] the channel the
+//! frame came from, in [115:100] its timestamp, §11.2), `head[4:0]`, `count[5:0]`. The read data register is loaded
 //! at every edge from `head`; the RX_* registers read it. `rx_ready` (RX_ID[31])
 //! is `count != 0` registered (0 in reset mode). The writer (`dedup.rs`)
 //! writes only when not full, the register block pops only when not empty.
@@ -34,13 +34,13 @@ pub struct RxFifo {
     pub clear: Signal<In, Bit>,
     // write side (writer FSM) and pop (RX_CMD)
     pub wr: Signal<In, Bit>,
-    pub wr_data: Signal<In, Bits<100>>,
+    pub wr_data: Signal<In, Bits<116>>,
     pub pop: Signal<In, Bit>,
     // outputs
     pub count: Signal<Out, Bits<6>>,
-    pub rd_data: Signal<Out, Bits<100>>,
+    pub rd_data: Signal<Out, Bits<116>>,
     pub rx_ready: Signal<Out, Bit>,
-    ram: Bram<Bits<100>, 5>,
+    ram: Bram<Bits<116>, 5>,
     /// `depth - 1`: the pointer wrap (generation parameter).
     mask: Param<5, 31>,
     /// FIFO head (public for lock-step probes).

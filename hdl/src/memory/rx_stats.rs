@@ -1,5 +1,5 @@
 //! The receive statistics of the RX writer (`super::dedup`), each saturating and
-//! cleared only by `rst` (reset mode keeps them): `STATS0` (duplicates dropped,
+//! cleared only by `rst` or `STATS_CLR` (§11.4; reset mode keeps them): `STATS0` (duplicates dropped,
 //! RX overruns; DRCC contract §7), `OMISSIONS` (per channel, history entries
 //! of the other channel that expired without a copy; §7) and `DMR_RX_STATS`
 //! (`pcl_frames` 16 bits, `released` and `expired` 8 bits; DMR contract §2.1,

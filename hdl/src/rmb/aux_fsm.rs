@@ -24,7 +24,8 @@
 //! `probe_cnt <= rb_eff` and `probe_cnt >= rb_eff` <=> `left_q == 0`.
 //!
 //! While `hold` (normal or reset mode) it sits in valid with the working counters
-//! and cause bits cleared; `failures` and `recoveries` clear with `rst` only.
+//! and cause bits cleared; `failures` and `recoveries` clear with `rst` only (the top ORs in `STATS_CLR`,
+//! DRCC contract §11.4).
 
 use super::switch_policy::FailureJudge;
 use crate::host::registers::{AuxState, ErrState};

@@ -1,6 +1,6 @@
 //! `STATS1` of the DRCC (contract §3, §4.3, §5): the channel switches of the main
 //! FSM and the recoveries of both auxiliary FSMs, 16-bit saturating counters
-//! cleared only by `rst`.
+//! cleared only by `rst` (the top ORs in `STATS_CLR`, DRCC contract §11.4).
 
 use rust_hdl::prelude::*;
 

@@ -5,6 +5,7 @@ mod ctrl_check;
 mod ctrl_reg;
 mod dmr_check;
 mod dmr_regs;
+mod filters;
 mod hub_registers;
 mod map;
 mod registers;

@@ -193,6 +193,15 @@ impl Node for Drcc<Regs> {
         let mut buf = [drcc_driver::Frame::new(StandardId::ZERO, &[]).unwrap(); 4];
         loop {
             let r = Drcc::isr(self, &mut buf);
+            // The decoded flags agree with the raw bits of the contract's map.
+            let bit = |m: u32| r.events & m != 0;
+            assert_eq!(r.bus_error(), bit(regs::INT_STATUS_BUS_ERROR_MASK));
+            assert_eq!(r.arb_lost(), bit(regs::INT_STATUS_ARB_LOST_MASK));
+            assert_eq!(r.err_warning(), bit(regs::INT_STATUS_ERR_WARNING_MASK));
+            assert_eq!(r.tx_done_on(Channel::A), bit(1 << 13));
+            assert_eq!(r.tx_done_on(Channel::B), bit(1 << 14));
+            assert_eq!(r.tx_failure_on(Channel::A), bit(1 << 15));
+            assert_eq!(r.tx_failure_on(Channel::B), bit(1 << 16));
             if out.events == 0 {
                 (out.events, out.cap_a, out.cap_b) = (r.events, r.cap_a, r.cap_b);
             }

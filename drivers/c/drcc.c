@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* drcc.c: the portable C99 DRCC driver (see drcc.h): bit timing, bring-up,
- * modes, send, the interrupt handler's receive path, status and statistics.
+ * identification, modes, filters, send, the interrupt handler's receive path
+ * with timestamps and captures, status and statistics.
  * Every register access goes through the user's read32/write32 hooks; every
  * offset and field comes from the generated rtl-out/drcc_regs.h. */
 #include "drcc.h"
@@ -113,7 +114,7 @@ void drcc_config_default(drcc_config *cfg)
     cfg->stall_limit = (uint16_t)FIELD_GET(DRCC_RMB_CFG_STALL_LIMIT, DRCC_RMB_CFG_RESET);
     cfg->dedup_window = (uint16_t)FIELD_GET(DRCC_DEDUP_CFG_WINDOW, DRCC_DEDUP_CFG_RESET);
     cfg->int_enable = 0;
-    cfg->tx_queue_depth = 8;
+    cfg->tx_queue_depth = 0;
     cfg->dmr_timeout = (uint16_t)FIELD_GET(DRCC_DMR_CFG_TIMEOUT, DRCC_DMR_CFG_RESET);
     cfg->dmr_cs_period = (uint16_t)FIELD_GET(DRCC_DMR_CFG_CS_PERIOD, DRCC_DMR_CFG_RESET);
     cfg->dmr_tick_bits = (uint16_t)FIELD_GET(DRCC_DMR_TIME_TICK_BITS, DRCC_DMR_TIME_RESET);
@@ -125,16 +126,31 @@ void drcc_config_default(drcc_config *cfg)
 
 int drcc_init(drcc_dev *dev, drcc_read32_fn read32, drcc_write32_fn write32, void *ctx)
 {
+    uint32_t version, sizes;
     if (dev == NULL || read32 == NULL || write32 == NULL) {
         return DRCC_E_INVAL;
     }
     dev->read32 = read32;
     dev->write32 = write32;
     dev->ctx = ctx;
-    dev->tx_queue_depth = 8;
     if (rd(dev, DRCC_ID_OFFSET) != DRCC_ID_VALUE) {
         return DRCC_E_NODEV;
     }
+    version = rd(dev, DRCC_VERSION_OFFSET);
+    sizes = rd(dev, DRCC_SIZES_OFFSET);
+    dev->ident.major = (uint8_t)FIELD_GET(DRCC_VERSION_MAJOR, version);
+    dev->ident.minor = (uint8_t)FIELD_GET(DRCC_VERSION_MINOR, version);
+    dev->ident.rx_fifo_depth = (uint8_t)FIELD_GET(DRCC_SIZES_RX_FIFO_DEPTH, sizes);
+    dev->ident.tx_queue_depth = (uint8_t)FIELD_GET(DRCC_SIZES_TX_QUEUE_DEPTH, sizes);
+    dev->ident.history = (uint8_t)FIELD_GET(DRCC_SIZES_HISTORY, sizes);
+    dev->ident.mailboxes = (uint8_t)FIELD_GET(DRCC_SIZES_MAILBOXES, sizes);
+    dev->ident.dmr = (uint8_t)FIELD_GET(DRCC_SIZES_DMR, sizes);
+    dev->ident.star = (uint8_t)FIELD_GET(DRCC_SIZES_STAR, sizes);
+    /* Major 0 is the map before VERSION existed (0x98 reads 0). */
+    if (dev->ident.major != 1u) {
+        return DRCC_E_VERSION;
+    }
+    dev->tx_queue_depth = dev->ident.tx_queue_depth;
     dev->ctrl = rd(dev, DRCC_CTRL_OFFSET) & ~DRCC_CTRL_RESET_MODE_MASK;
     return DRCC_OK;
 }
@@ -191,7 +207,7 @@ int drcc_configure(drcc_dev *dev, const drcc_config *cfg)
     int rc;
 
     if (cfg == NULL || !drcc_bit_timing_valid(&cfg->timing) || cfg->dedup_window > 0x7FFFu ||
-        cfg->tx_queue_depth == 0u || cfg->tx_queue_depth > 15u) {
+        (cfg->tx_queue_depth != 0u && cfg->tx_queue_depth != dev->ident.tx_queue_depth)) {
         return DRCC_E_INVAL;
     }
     ctrl = ctrl_word(cfg);
@@ -202,7 +218,6 @@ int drcc_configure(drcc_dev *dev, const drcc_config *cfg)
     if (rc != DRCC_OK) {
         return rc;
     }
-    dev->tx_queue_depth = cfg->tx_queue_depth;
     rc = write_checked(dev, DRCC_BTR_OFFSET, drcc_btr_encode(&cfg->timing, cfg->ewl));
     if (rc == DRCC_OK) {
         rc = write_checked(dev, DRCC_RMB_CFG_OFFSET,
@@ -355,6 +370,7 @@ int drcc_receive(drcc_dev *dev, drcc_frame *frame)
     frame->channel = (uint8_t)FIELD_GET(DRCC_RX_CTRL_CHANNEL, ctrl);
     data_bytes(rd(dev, DRCC_RX_DATA0_OFFSET), &frame->data[0]);
     data_bytes(rd(dev, DRCC_RX_DATA1_OFFSET), &frame->data[4]);
+    frame->timestamp = (uint16_t)FIELD_GET(DRCC_RX_TIME_RX_TIME, rd(dev, DRCC_RX_TIME_OFFSET));
     wr(dev, DRCC_RX_CMD_OFFSET, DRCC_RX_CMD_POP_MASK);
     return DRCC_OK;
 }
@@ -365,6 +381,12 @@ drcc_irq_result drcc_isr(drcc_dev *dev, drcc_frame *buf, size_t cap)
     r.events = rd(dev, DRCC_INT_STATUS_OFFSET);
     r.frames = 0;
     r.more = 0;
+    r.cap_a = drcc_decode_capture(0);
+    r.cap_b = r.cap_a;
+    /* The acknowledgement re-arms the captures: read them before it. */
+    if (r.events & (DRCC_INT_STATUS_BUS_ERROR_MASK | DRCC_INT_STATUS_ARB_LOST_MASK)) {
+        drcc_get_captures(dev, &r.cap_a, &r.cap_b);
+    }
     /* Acknowledge first, then drain: a frame arriving meanwhile sets rx again. */
     wr(dev, DRCC_INT_STATUS_OFFSET, r.events);
     while (r.frames < cap) {
@@ -431,4 +453,99 @@ void drcc_get_stats(drcc_dev *dev, drcc_stats *stats)
     stats->dmr_status = rd(dev, DRCC_DMR_STATUS_OFFSET);
     stats->dmr_cs_count = rd(dev, DRCC_DMR_CS_COUNT_OFFSET);
     stats->dmr_rx_stats = rd(dev, DRCC_DMR_RX_STATS_OFFSET);
+}
+
+void drcc_clear_stats(drcc_dev *dev) { wr(dev, DRCC_STATS_CLR_OFFSET, DRCC_STATS_CLR_CLEAR_MASK); }
+
+uint16_t drcc_now(drcc_dev *dev)
+{
+    return (uint16_t)FIELD_GET(DRCC_RX_TIME_NOW, rd(dev, DRCC_RX_TIME_OFFSET));
+}
+
+drcc_capture drcc_decode_capture(uint32_t w)
+{
+    drcc_capture c;
+    c.err_valid = (uint8_t)FIELD_GET(DRCC_CAP_A_ERR_VALID, w);
+    c.err_kind = (uint8_t)FIELD_GET(DRCC_CAP_A_ERR_KIND, w);
+    c.err_field = (uint8_t)FIELD_GET(DRCC_CAP_A_ERR_FIELD, w);
+    c.err_tx = (uint8_t)FIELD_GET(DRCC_CAP_A_ERR_TX, w);
+    c.alc_valid = (uint8_t)FIELD_GET(DRCC_CAP_A_ALC_VALID, w);
+    c.alc = (uint8_t)FIELD_GET(DRCC_CAP_A_ALC, w);
+    return c;
+}
+
+void drcc_get_captures(drcc_dev *dev, drcc_capture *a, drcc_capture *b)
+{
+    if (a != NULL) {
+        *a = drcc_decode_capture(rd(dev, DRCC_CAP_A_OFFSET));
+    }
+    if (b != NULL) {
+        *b = drcc_decode_capture(rd(dev, DRCC_CAP_B_OFFSET));
+    }
+}
+
+void drcc_rearm_captures(drcc_dev *dev, int errors, int arb)
+{
+    uint32_t m = (errors ? DRCC_INT_STATUS_BUS_ERROR_MASK : 0u) |
+                 (arb ? DRCC_INT_STATUS_ARB_LOST_MASK : 0u);
+    if (m != 0u) {
+        wr(dev, DRCC_INT_STATUS_OFFSET, m);
+    }
+}
+
+/* Writes both words of filter `index` (FILT_ID1/FILT_MASK1 follow 8 bytes on). */
+static int write_filter(drcc_dev *dev, unsigned index, uint32_t id, uint32_t mask)
+{
+    uint32_t step = index * (DRCC_FILT_ID1_OFFSET - DRCC_FILT_ID0_OFFSET);
+    int rc = write_checked(dev, DRCC_FILT_ID0_OFFSET + step, id);
+    return rc == DRCC_OK ? write_checked(dev, DRCC_FILT_MASK0_OFFSET + step, mask) : rc;
+}
+
+/* Writes the filter words of `ids`/`masks` for the filters in `which` (bit k =
+ * filter k) in reset mode, leaving it again if the controller was running. */
+static int write_filters(drcc_dev *dev, unsigned which, const uint32_t *ids, const uint32_t *masks)
+{
+    unsigned k;
+    int rc = DRCC_OK;
+    int running = !FIELD_GET(DRCC_STATUS_RESET_MODE, rd(dev, DRCC_STATUS_OFFSET));
+    if (running) {
+        rc = drcc_enter_reset(dev);
+    }
+    for (k = 0; k < 2u && rc == DRCC_OK; k++) {
+        if (which & (1u << k)) {
+            rc = write_filter(dev, k, ids[k], masks[k]);
+        }
+    }
+    if (rc != DRCC_OK || !running) {
+        return rc;
+    }
+    return start(dev, dev->ctrl);
+}
+
+int drcc_set_filter(drcc_dev *dev, unsigned index, const drcc_filter *f)
+{
+    uint32_t ids[2] = {0, 0}, masks[2] = {0, 0};
+    if (index > 1u) {
+        return DRCC_E_INVAL;
+    }
+    if (f != NULL) {
+        uint32_t id_max = f->ide ? DRCC_FILT_ID0_ID_MASK : 0x7FFu;
+        if (f->id > id_max || f->mask > id_max) {
+            return DRCC_E_INVAL;
+        }
+        /* The ide mask bit is always set: a base filter never passes an
+         * extended frame whose low 11 bits are equal, and vice versa. */
+        ids[index] = FIELD_PUT(DRCC_FILT_ID0_ID, f->id) | FIELD_PUT(DRCC_FILT_ID0_IDE, f->ide != 0) |
+                     FIELD_PUT(DRCC_FILT_ID0_RTR, f->rtr != 0);
+        masks[index] = FIELD_PUT(DRCC_FILT_MASK0_ID, f->mask) | DRCC_FILT_MASK0_IDE_MASK |
+                       FIELD_PUT(DRCC_FILT_MASK0_RTR, f->match_rtr != 0) |
+                       DRCC_FILT_MASK0_ENABLE_MASK;
+    }
+    return write_filters(dev, 1u << index, ids, masks);
+}
+
+int drcc_clear_filters(drcc_dev *dev)
+{
+    static const uint32_t zero[2] = {0, 0};
+    return write_filters(dev, 3u, zero, zero);
 }

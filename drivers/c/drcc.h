@@ -3,9 +3,8 @@
  * (its own Wishbone register view, rtl-out/drcc_regs.h). Register access goes
  * through two hooks the user provides; nothing here touches memory directly.
  *
- * Not in the hardware, so not in this API: acceptance filters, receive
- * timestamps and transmit abort. Every received frame is delivered; a queued
- * frame stays queued until it is sent (or reset mode empties the queues). */
+ * Not in the hardware, so not in this API: transmit abort. A queued frame
+ * stays queued until it is sent (or reset mode empties the queues). */
 #ifndef DRCC_DRIVER_H
 #define DRCC_DRIVER_H
 
@@ -41,8 +40,22 @@ enum drcc_result {
     /** The RX FIFO is empty. */
     DRCC_E_EMPTY = -6,
     /** The controller is not in the state the call needs (reset mode). */
-    DRCC_E_STATE = -7
+    DRCC_E_STATE = -7,
+    /** VERSION.major is not 1: a register map this driver does not know. */
+    DRCC_E_VERSION = -8
 };
+
+/** VERSION and SIZES, read by drcc_init(). */
+typedef struct drcc_ident {
+    uint8_t major;          /**< VERSION.major (1) */
+    uint8_t minor;          /**< VERSION.minor (registers added since 1.0) */
+    uint8_t rx_fifo_depth;  /**< SIZES: RX FIFO entries */
+    uint8_t tx_queue_depth; /**< SIZES: entries of each TX queue */
+    uint8_t history;        /**< SIZES: duplicate-removal history entries */
+    uint8_t mailboxes;      /**< SIZES: DMR mailboxes (0 or 16) */
+    uint8_t dmr;            /**< SIZES: 1 if CTRL.dmr can be set */
+    uint8_t star;           /**< SIZES: 1 if CTRL.star can be set */
+} drcc_ident;
 
 /** One controller: the user's hooks and what the driver remembers. */
 typedef struct drcc_dev {
@@ -50,7 +63,8 @@ typedef struct drcc_dev {
     drcc_write32_fn write32; /**< register write hook */
     void *ctx;               /**< passed to both hooks */
     uint32_t ctrl;           /**< CTRL configuration last written (reset_mode 0) */
-    unsigned tx_queue_depth; /**< frames per TX queue (8; drcc_small 4) */
+    unsigned tx_queue_depth; /**< frames per TX queue (SIZES.tx_queue_depth) */
+    drcc_ident ident;        /**< VERSION and SIZES as drcc_init() read them */
 } drcc_dev;
 
 /** Bit timing in real units (not the register's minus-one codes). */
@@ -93,7 +107,7 @@ typedef struct drcc_config {
     uint16_t stall_limit;    /**< RMB_CFG.stall_limit, 0 = off */
     uint16_t dedup_window;   /**< DEDUP_CFG.window in bit times (0..32767), 0 = off */
     uint32_t int_enable;     /**< INT_ENABLE bits (DRCC_INT_ENABLE_*_MASK) */
-    unsigned tx_queue_depth; /**< TX_QUEUE_DEPTH of the top: 8 (drcc), 4 (drcc_small) */
+    unsigned tx_queue_depth; /**< 0: SIZES' value; else must equal it */
     /* DMR mode only (written when mode == DRCC_MODE_DMR): */
     uint16_t dmr_timeout;        /**< DMR_CFG.timeout in ticks, not 0 */
     uint16_t dmr_cs_period;      /**< DMR_CFG.cs_period in ticks, 0 = none */
@@ -111,14 +125,60 @@ typedef struct drcc_frame {
     uint8_t dlc;     /**< data length code 0..15 (min(dlc, 8) data bytes) */
     uint8_t channel; /**< received: 0 = channel A, 1 = B; ignored on send */
     uint8_t data[8]; /**< data bytes, byte 0 first on the bus */
+    /** received: RX_TIME.rx_time, nominal bit times (16 bits, wrapping) when
+     * the frame entered the RX FIFO; ignored on send */
+    uint16_t timestamp;
 } drcc_frame;
+
+/** One channel's capture register (CAP_A / CAP_B), decoded. */
+typedef struct drcc_capture {
+    uint8_t err_valid; /**< an error was captured since the last re-arm */
+    uint8_t err_kind;  /**< 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK (DRCC_ERR_*) */
+    uint8_t err_field; /**< the frame field of the error (DRCC_FIELD_*) */
+    uint8_t err_tx;    /**< 1: the channel was transmitting */
+    uint8_t alc_valid; /**< an arbitration loss was captured since the last re-arm */
+    uint8_t alc;       /**< lost bit: base id bit i (MSB first) i, SRR/RTR 11, IDE 12,
+                            extension bit j 13 + j, extended RTR 31 */
+} drcc_capture;
+
+/** Error kinds of drcc_capture.err_kind. */
+enum drcc_err_kind {
+    DRCC_ERR_BIT = 1,
+    DRCC_ERR_STUFF = 2,
+    DRCC_ERR_CRC = 3,
+    DRCC_ERR_FORM = 4,
+    DRCC_ERR_ACK = 5
+};
+
+/** A few frame fields of drcc_capture.err_field (the channel's field codes). */
+enum drcc_field {
+    DRCC_FIELD_IDLE = 1,
+    DRCC_FIELD_ID_A = 2,
+    DRCC_FIELD_DATA = 10,
+    DRCC_FIELD_CRC = 11,
+    DRCC_FIELD_ACK_SLOT = 13,
+    DRCC_FIELD_EOF = 15
+};
 
 /** What drcc_isr() did. */
 typedef struct drcc_irq_result {
-    uint32_t events; /**< INT_STATUS as read and acknowledged */
-    size_t frames;   /**< frames stored into the caller's buffer */
-    int more;        /**< 1: the buffer filled up and the FIFO still holds frames */
+    uint32_t events;    /**< INT_STATUS as read and acknowledged (DRCC_INT_STATUS_*) */
+    size_t frames;      /**< frames stored into the caller's buffer */
+    int more;           /**< 1: the buffer filled up and the FIFO still holds frames */
+    drcc_capture cap_a; /**< CAP_A before the acknowledgement re-armed it */
+    drcc_capture cap_b; /**< CAP_B likewise */
 } drcc_irq_result;
+
+/** An acceptance filter: a frame passes if its format is `ide`, its identifier
+ * agrees with `id` in every bit set in `mask`, and (if `match_rtr`) its remote
+ * flag is `rtr`. */
+typedef struct drcc_filter {
+    uint32_t id;       /**< identifier (11 or 29 bits) */
+    uint32_t mask;     /**< identifier bits compared, 1 = must match */
+    uint8_t ide;       /**< 0: base frames only, 1: extended frames only */
+    uint8_t rtr;       /**< the remote flag to match (with match_rtr) */
+    uint8_t match_rtr; /**< 1: compare the remote flag too */
+} drcc_filter;
 
 /** One channel's fault confinement and validity. */
 typedef struct drcc_chan_status {
@@ -146,7 +206,7 @@ typedef struct drcc_status {
     drcc_chan_status b;  /**< channel B */
 } drcc_status;
 
-/** Statistics registers, decoded (saturating; cleared by rst only). */
+/** Statistics registers, decoded (saturating; cleared by rst and drcc_clear_stats()). */
 typedef struct drcc_stats {
     uint16_t duplicates;   /**< STATS0: duplicates dropped */
     uint16_t overruns;     /**< STATS0: frames lost to a full RX FIFO */
@@ -178,7 +238,9 @@ int drcc_bit_timing_valid(const drcc_bit_timing *bt);
  * (BTR's reset value), policy error-passive, k 1, no interrupts enabled. */
 void drcc_config_default(drcc_config *cfg);
 
-/** Binds the hooks and checks the ID register. DRCC_E_NODEV if not a DRCC. */
+/** Binds the hooks, checks the ID register (DRCC_E_NODEV if not a DRCC), reads
+ * VERSION and SIZES into dev->ident (DRCC_E_VERSION unless major is 1) and
+ * takes the TX queue depth from SIZES. Writes nothing. */
 int drcc_init(drcc_dev *dev, drcc_read32_fn read32, drcc_write32_fn write32, void *ctx);
 
 /** Enters reset mode (channels held in reset, TX queues and RX FIFO emptied). */
@@ -205,13 +267,36 @@ int drcc_dmr_mailbox(drcc_dev *dev, unsigned index, uint32_t id, int ide, int di
  * mode, DRCC_E_INVAL for an identifier or DLC out of range. */
 int drcc_send(drcc_dev *dev, const drcc_frame *frame, unsigned queue);
 
-/** Takes the head of the RX FIFO into `frame`; DRCC_E_EMPTY if there is none. */
+/** Takes the head of the RX FIFO into `frame`, with its timestamp;
+ * DRCC_E_EMPTY if there is none. */
 int drcc_receive(drcc_dev *dev, drcc_frame *frame);
 
-/** The interrupt handler: reads INT_STATUS and acknowledges it first (W1C), then
- * drains the RX FIFO into `buf` (at most `cap` frames). Loses no event: a frame
- * arriving during the drain raises INT_STATUS.rx again. */
+/** RX_TIME.now: nominal bit times since reset mode was left (16 bits,
+ * wrapping); a frame's age is (uint16_t)(drcc_now() - frame.timestamp). */
+uint16_t drcc_now(drcc_dev *dev);
+
+/** The interrupt handler: reads INT_STATUS; if bus_error or arb_lost is set,
+ * reads CAP_A and CAP_B; acknowledges INT_STATUS (W1C, which also re-arms the
+ * captures), then drains the RX FIFO into `buf` (at most `cap` frames). Loses
+ * no event: a frame arriving during the drain raises INT_STATUS.rx again. */
 drcc_irq_result drcc_isr(drcc_dev *dev, drcc_frame *buf, size_t cap);
+
+/** Sets acceptance filter `index` (0 or 1) and enables it; `f` NULL disables
+ * it. Filters are configuration: called outside reset mode, it enters reset
+ * mode (emptying the queues and the FIFO), writes and leaves it with the
+ * configuration kept; called in reset mode, it stays there. With no filter
+ * enabled every frame is accepted. */
+int drcc_set_filter(drcc_dev *dev, unsigned index, const drcc_filter *f);
+/** Disables both filters (every frame accepted), as drcc_set_filter(). */
+int drcc_clear_filters(drcc_dev *dev);
+
+/** Decodes a CAP_A / CAP_B word. */
+drcc_capture drcc_decode_capture(uint32_t word);
+/** Reads CAP_A and CAP_B (either pointer may be NULL); no side effect. */
+void drcc_get_captures(drcc_dev *dev, drcc_capture *a, drcc_capture *b);
+/** Re-arms the captures: clears INT_STATUS.bus_error (if `errors`) and
+ * INT_STATUS.arb_lost (if `arb`), which clears err_valid / alc_valid of both. */
+void drcc_rearm_captures(drcc_dev *dev, int errors, int arb);
 
 /** Sets INT_ENABLE. */
 void drcc_irq_enable(drcc_dev *dev, uint32_t mask);
@@ -224,6 +309,9 @@ void drcc_irq_ack(drcc_dev *dev, uint32_t mask);
 void drcc_get_status(drcc_dev *dev, drcc_status *st);
 /** Reads STATS0, STATS1, TIMES, OMISSIONS and the DMR statistics. */
 void drcc_get_stats(drcc_dev *dev, drcc_stats *stats);
+/** STATS_CLR: clears STATS0, STATS1, OMISSIONS, DMR_RX_STATS and the AUX
+ * failures/recoveries counts (TIMES and the error counters stay). */
+void drcc_clear_stats(drcc_dev *dev);
 
 #ifdef __cplusplus
 }

@@ -152,7 +152,8 @@ pub struct Config {
     pub dedup_window: u16,
     /// `INT_ENABLE` bits (`regs::INT_ENABLE_*_MASK`).
     pub int_enable: u32,
-    /// Frames per TX queue of the top (8 for `drcc`, 4 for `drcc_small`).
+    /// Frames per TX queue: 0 takes `SIZES.tx_queue_depth` (read by
+    /// [`crate::Drcc::new`]); any other value must equal it.
     pub tx_queue_depth: u8,
     /// DMR parameters (written in [`Mode::Dmr`] only).
     pub dmr: DmrConfig,
@@ -183,7 +184,7 @@ impl Default for Config {
                 regs::DEDUP_CFG_RESET,
             ) as u16,
             int_enable: 0,
-            tx_queue_depth: 8,
+            tx_queue_depth: 0,
             dmr: DmrConfig::default(),
         }
     }

@@ -3,6 +3,7 @@
 //! traits.
 
 use crate::config::{Config, Mode};
+use crate::features::{Capture, Ident};
 use crate::frame::{Channel, Frame};
 use crate::regs::{self, get, put};
 use crate::status::{ChanStatus, Stats, Status};
@@ -17,29 +18,83 @@ pub struct IrqResult {
     pub frames: usize,
     /// The buffer filled up while the FIFO still held frames.
     pub more: bool,
+    /// `CAP_A` as read before the acknowledgement re-armed it (read only when
+    /// `bus_error` or `arb_lost` was set, else empty).
+    pub cap_a: Capture,
+    /// `CAP_B`, likewise.
+    pub cap_b: Capture,
+}
+
+impl IrqResult {
+    fn has(&self, mask: u32) -> bool {
+        self.events & mask != 0
+    }
+    /// `INT_STATUS.bus_error`: a channel detected an error.
+    pub fn bus_error(&self) -> bool {
+        self.has(regs::INT_STATUS_BUS_ERROR_MASK)
+    }
+    /// `INT_STATUS.arb_lost`: a channel lost arbitration.
+    pub fn arb_lost(&self) -> bool {
+        self.has(regs::INT_STATUS_ARB_LOST_MASK)
+    }
+    /// `INT_STATUS.err_warning`: a channel's warning flag changed.
+    pub fn err_warning(&self) -> bool {
+        self.has(regs::INT_STATUS_ERR_WARNING_MASK)
+    }
+    /// `INT_STATUS.tx_done_a` / `tx_done_b`: that channel transmitted a frame.
+    pub fn tx_done_on(&self, channel: Channel) -> bool {
+        self.has(match channel {
+            Channel::A => regs::INT_STATUS_TX_DONE_A_MASK,
+            Channel::B => regs::INT_STATUS_TX_DONE_B_MASK,
+        })
+    }
+    /// `INT_STATUS.tx_failure_a` / `tx_failure_b`: that channel dropped its frame.
+    pub fn tx_failure_on(&self, channel: Channel) -> bool {
+        self.has(match channel {
+            Channel::A => regs::INT_STATUS_TX_FAILURE_A_MASK,
+            Channel::B => regs::INT_STATUS_TX_FAILURE_B_MASK,
+        })
+    }
 }
 
 /// One DRCC behind its register hooks.
 #[derive(Debug)]
 pub struct Drcc<R: Registers> {
-    regs: R,
-    ctrl: u32,
+    pub(crate) regs: R,
+    pub(crate) ctrl: u32,
     tx_queue_depth: u8,
+    ident: Ident,
 }
 
 impl<R: Registers> Drcc<R> {
-    /// Binds the hooks and checks the `ID` register ([`Error::NoDevice`] if it
-    /// does not read "DRCC"). Nothing is written.
+    /// Binds the hooks, checks the `ID` register ([`Error::NoDevice`] if it
+    /// does not read "DRCC") and reads `VERSION` and `SIZES`
+    /// ([`Error::Version`] unless the major version is 1; the TX queue depth
+    /// is taken from `SIZES`). Nothing is written.
     pub fn new(mut regs: R) -> Result<Self, Error> {
         if regs.read32(regs::ID_OFFSET) != regs::ID_VALUE {
             return Err(Error::NoDevice);
+        }
+        let ident = Ident::decode(
+            regs.read32(regs::VERSION_OFFSET),
+            regs.read32(regs::SIZES_OFFSET),
+        );
+        // Major 0 is the map before VERSION existed (its address reads 0).
+        if ident.major != 1 {
+            return Err(Error::Version);
         }
         let ctrl = regs.read32(regs::CTRL_OFFSET) & !regs::CTRL_RESET_MODE_MASK;
         Ok(Drcc {
             regs,
             ctrl,
-            tx_queue_depth: 8,
+            tx_queue_depth: ident.tx_queue_depth,
+            ident,
         })
+    }
+
+    /// `VERSION` and `SIZES` as [`Drcc::new`] read them.
+    pub fn ident(&self) -> Ident {
+        self.ident
     }
 
     /// The register hooks back.
@@ -65,7 +120,7 @@ impl<R: Registers> Drcc<R> {
         Ok(())
     }
 
-    fn write_checked(&mut self, offset: u32, value: u32) -> Result<(), Error> {
+    pub(crate) fn write_checked(&mut self, offset: u32, value: u32) -> Result<(), Error> {
         self.regs.write32(offset, value);
         if self.regs.read32(offset) == value {
             Ok(())
@@ -75,7 +130,7 @@ impl<R: Registers> Drcc<R> {
     }
 
     /// Writes CTRL with `reset_mode` 0; [`Error::Refused`] if it was not taken.
-    fn start(&mut self, ctrl: u32) -> Result<(), Error> {
+    pub(crate) fn start(&mut self, ctrl: u32) -> Result<(), Error> {
         self.regs.write32(regs::CTRL_OFFSET, ctrl);
         if self.regs.read32(regs::CTRL_OFFSET) != ctrl {
             return Err(Error::Refused);
@@ -133,7 +188,9 @@ impl<R: Registers> Drcc<R> {
     pub fn configure(&mut self, cfg: &Config) -> Result<(), Error> {
         let btr = cfg.timing.btr(cfg.ewl)?;
         let ctrl = Self::ctrl_word(cfg)?;
-        if cfg.dedup_window > 0x7FFF || cfg.tx_queue_depth == 0 || cfg.tx_queue_depth > 15 {
+        if cfg.dedup_window > 0x7FFF
+            || (cfg.tx_queue_depth != 0 && cfg.tx_queue_depth != self.ident.tx_queue_depth)
+        {
             return Err(Error::Invalid);
         }
         let d = &cfg.dmr;
@@ -148,7 +205,6 @@ impl<R: Registers> Drcc<R> {
             return Err(Error::Invalid);
         }
         self.enter_reset()?;
-        self.tx_queue_depth = cfg.tx_queue_depth;
         self.write_checked(regs::BTR_OFFSET, btr)?;
         self.write_checked(
             regs::RMB_CFG_OFFSET,
@@ -340,6 +396,7 @@ impl<R: Registers> Drcc<R> {
         let ctrl = self.regs.read32(regs::RX_CTRL_OFFSET);
         let d0 = self.regs.read32(regs::RX_DATA0_OFFSET).to_le_bytes();
         let d1 = self.regs.read32(regs::RX_DATA1_OFFSET).to_le_bytes();
+        let time = self.regs.read32(regs::RX_TIME_OFFSET);
         self.regs
             .write32(regs::RX_CMD_OFFSET, regs::RX_CMD_POP_MASK);
         let data = [d0[0], d0[1], d0[2], d0[3], d1[0], d1[1], d1[2], d1[3]];
@@ -356,15 +413,35 @@ impl<R: Registers> Drcc<R> {
             get(regs::RX_CTRL_DLC_MASK, regs::RX_CTRL_DLC_SHIFT, ctrl) as u8,
             data,
         )
-        .map(|f| f.with_channel(channel))
+        .map(|f| {
+            f.with_channel(channel).with_timestamp(get(
+                regs::RX_TIME_RX_TIME_MASK,
+                regs::RX_TIME_RX_TIME_SHIFT,
+                time,
+            ) as u16)
+        })
     }
 
-    /// The interrupt handler: reads `INT_STATUS` and acknowledges it first
-    /// (write 1 to clear), then drains the RX FIFO into `buf`. Loses no event:
-    /// a frame arriving during the drain sets `INT_STATUS.rx` again.
+    /// The interrupt handler: reads `INT_STATUS`, and `CAP_A` / `CAP_B` when
+    /// `bus_error` or `arb_lost` is set; acknowledges `INT_STATUS` (write 1 to
+    /// clear, which re-arms the captures), then drains the RX FIFO into `buf`.
+    /// Loses no event: a frame arriving during the drain sets `INT_STATUS.rx`
+    /// again.
     pub fn isr(&mut self, buf: &mut [Frame]) -> IrqResult {
         let events = self.regs.read32(regs::INT_STATUS_OFFSET);
+        let (cap_a, cap_b) =
+            if events & (regs::INT_STATUS_BUS_ERROR_MASK | regs::INT_STATUS_ARB_LOST_MASK) != 0 {
+                self.captures()
+            } else {
+                (Capture::default(), Capture::default())
+            };
         self.regs.write32(regs::INT_STATUS_OFFSET, events);
+        let mut result = IrqResult {
+            events,
+            cap_a,
+            cap_b,
+            ..IrqResult::default()
+        };
         let mut frames = 0;
         while frames < buf.len() {
             match self.try_receive() {
@@ -373,20 +450,14 @@ impl<R: Registers> Drcc<R> {
                     frames += 1;
                 }
                 None => {
-                    return IrqResult {
-                        events,
-                        frames,
-                        more: false,
-                    }
+                    result.frames = frames;
+                    return result;
                 }
             }
         }
-        let more = self.regs.read32(regs::RX_ID_OFFSET) & regs::RX_ID_RX_READY_MASK != 0;
-        IrqResult {
-            events,
-            frames,
-            more,
-        }
+        result.frames = frames;
+        result.more = self.regs.read32(regs::RX_ID_OFFSET) & regs::RX_ID_RX_READY_MASK != 0;
+        result
     }
 
     /// Sets `INT_ENABLE`.

@@ -14,14 +14,18 @@ pub enum Channel {
 }
 
 /// A CAN 2.0B frame: identifier, remote flag, DLC 0..=15 (at most 8 data bytes)
-/// and, for a received frame, the channel it came from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// and, for a received frame, the channel it came from and its timestamp.
+///
+/// Equality compares everything but the timestamp (reception metadata), so
+/// a received frame equals the frame built to describe it on that channel.
+#[derive(Clone, Copy, Debug)]
 pub struct Frame {
     id: Id,
     rtr: bool,
     dlc: u8,
     data: [u8; 8],
     channel: Channel,
+    timestamp: u16,
 }
 
 impl Frame {
@@ -38,6 +42,7 @@ impl Frame {
             dlc: data.len() as u8,
             data: bytes,
             channel: Channel::A,
+            timestamp: 0,
         })
     }
 
@@ -49,6 +54,7 @@ impl Frame {
             dlc,
             data: [0; 8],
             channel: Channel::A,
+            timestamp: 0,
         })
     }
 
@@ -69,6 +75,7 @@ impl Frame {
             dlc,
             data,
             channel: Channel::A,
+            timestamp: 0,
         };
         let len = frame.len();
         frame.data[len..].fill(0);
@@ -99,6 +106,19 @@ impl Frame {
         self
     }
 
+    /// For a received frame, `RX_TIME.rx_time`: the nominal bit time (16 bits,
+    /// wrapping, the clock of [`crate::Drcc::now`]) at which it entered the RX
+    /// FIFO; 0 for a frame built here. Its age is `now.wrapping_sub(timestamp)`.
+    pub fn timestamp(&self) -> u16 {
+        self.timestamp
+    }
+
+    /// The same frame with `timestamp`.
+    pub fn with_timestamp(mut self, timestamp: u16) -> Frame {
+        self.timestamp = timestamp;
+        self
+    }
+
     /// All eight data bytes as the registers hold them (bytes past the length 0).
     pub fn raw_data(&self) -> [u8; 8] {
         self.data
@@ -112,6 +132,15 @@ impl Frame {
         }
     }
 }
+
+impl PartialEq for Frame {
+    fn eq(&self, other: &Frame) -> bool {
+        (self.id, self.rtr, self.dlc, self.data, self.channel)
+            == (other.id, other.rtr, other.dlc, other.data, other.channel)
+    }
+}
+
+impl Eq for Frame {}
 
 impl embedded_can::Frame for Frame {
     fn new(id: impl Into<Id>, data: &[u8]) -> Option<Self> {

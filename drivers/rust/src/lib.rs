@@ -9,15 +9,26 @@
 //! status and statistics. It implements `embedded-can` 0.4's
 //! [`embedded_can::blocking::Can`] and [`embedded_can::nb::Can`].
 //!
+//! Identification: [`Drcc::new`] reads `VERSION` and `SIZES` ([`Drcc::ident`],
+//! [`Ident`]) and refuses a register map whose major version is not 1
+//! ([`Error::Version`]). Acceptance filters: [`Drcc::set_filter`] with a
+//! [`Filter`], [`Drcc::clear_filters`]. Every received [`Frame`] carries its
+//! RX FIFO timestamp in nominal bit times ([`Frame::timestamp`]), and
+//! [`Drcc::now`] reads the same clock. [`Drcc::clear_stats`] clears the
+//! statistics. The error and arbitration-lost captures ([`Capture`]) are read
+//! by [`Drcc::captures`] and by the interrupt handler before it acknowledges
+//! (which re-arms them, [`Drcc::rearm_captures`]); [`IrqResult`] decodes the
+//! bus-error, arbitration-lost, error-warning and per-channel transmit events.
+//!
 //! The register constants in [`regs`] are generated at build time from the C
 //! header `rtl-out/drcc_regs.h`. The C driver in `drivers/c` offers the same
-//! functions. Acceptance filters, receive timestamps and transmit abort do not
-//! exist in the hardware and are not offered.
+//! functions. Transmit abort does not exist in the hardware and is not offered.
 #![no_std]
 #![deny(missing_docs)]
 
 mod config;
 mod device;
+mod features;
 mod frame;
 pub mod regs;
 mod status;
@@ -25,6 +36,7 @@ mod timing;
 
 pub use config::{ChanMode, Config, DmrConfig, Mode, Policy};
 pub use device::{Drcc, IrqResult};
+pub use features::{Capture, Filter, Ident};
 pub use frame::{Channel, Frame};
 pub use status::{ChanStatus, Stats, Status};
 pub use timing::BitTiming;
@@ -65,6 +77,8 @@ pub enum Error {
     Empty,
     /// The controller is not in the state the call needs (e.g. reset mode).
     State,
+    /// `VERSION.major` is not 1: a register map this driver does not know.
+    Version,
 }
 
 impl embedded_can::Error for Error {

@@ -50,6 +50,23 @@ int sim_c_configure(drcc_dev *dev, uint32_t clock_hz, uint32_t bitrate, int mode
     return drcc_configure(dev, &cfg);
 }
 
+/* drcc_configure() in normal mode with single-shot transmission (no
+ * automatic retransmission), the bit timing of drcc_calc_bit_timing(). */
+int sim_c_configure_single_shot(drcc_dev *dev, uint32_t clock_hz, uint32_t bitrate,
+                                uint32_t int_enable)
+{
+    drcc_config cfg;
+    int rc;
+    drcc_config_default(&cfg);
+    rc = drcc_calc_bit_timing(clock_hz, bitrate, &cfg.timing);
+    if (rc != DRCC_OK) {
+        return rc;
+    }
+    cfg.single_shot = 1;
+    cfg.int_enable = int_enable;
+    return drcc_configure(dev, &cfg);
+}
+
 /* STATS0 duplicates and STATS1 switches through drcc_get_stats(). */
 void sim_c_stats(drcc_dev *dev, uint32_t *duplicates, uint32_t *switches)
 {
@@ -57,4 +74,71 @@ void sim_c_stats(drcc_dev *dev, uint32_t *duplicates, uint32_t *switches)
     drcc_get_stats(dev, &s);
     *duplicates = s.duplicates;
     *switches = s.switches;
+}
+
+/* drcc_get_stats() in full (the tests read overruns too). */
+void sim_c_stats_all(drcc_dev *dev, drcc_stats *out) { drcc_get_stats(dev, out); }
+
+/* VERSION and SIZES as drcc_init() read them. */
+drcc_ident sim_c_ident(const drcc_dev *dev) { return dev->ident; }
+
+/* drcc_set_filter() with the filter's fields as arguments (enable 0: NULL). */
+int sim_c_set_filter(drcc_dev *dev, unsigned index, int enable, uint32_t id, uint32_t mask,
+                     int ide)
+{
+    drcc_filter f;
+    f.id = id;
+    f.mask = mask;
+    f.ide = (uint8_t)(ide != 0);
+    f.rtr = 0;
+    f.match_rtr = 0;
+    return drcc_set_filter(dev, index, enable ? &f : NULL);
+}
+
+/* The README's example (drivers/c/README.md, section "Example"), compiled from
+ * the README itself by build.rs. */
+int can_start(drcc_dev *can, drcc_read32_fn rd, drcc_write32_fn wr, void *base);
+
+/* A new driver brought up by the README example's can_start(); NULL and *rc
+ * on error. */
+drcc_dev *sim_c_example_open(drcc_read32_fn read32, drcc_write32_fn write32, void *ctx, int *rc)
+{
+    drcc_dev *dev = malloc(sizeof *dev);
+    if (dev == NULL) {
+        *rc = DRCC_E_INVAL;
+        return NULL;
+    }
+    *rc = can_start(dev, read32, write32, ctx);
+    if (*rc != DRCC_OK) {
+        free(dev);
+        return NULL;
+    }
+    return dev;
+}
+
+/* Fake register hooks for drcc_init(): ID reads "DRCC", VERSION the value
+ * `ctx` points to, SIZES the default top's, everything else 0. */
+static uint32_t fake_read(void *ctx, uint32_t off)
+{
+    if (off == DRCC_ID_OFFSET) {
+        return DRCC_ID_VALUE;
+    }
+    if (off == DRCC_VERSION_OFFSET) {
+        return *(const uint32_t *)ctx;
+    }
+    return off == DRCC_SIZES_OFFSET ? DRCC_SIZES_RESET : 0u;
+}
+
+static void fake_write(void *ctx, uint32_t off, uint32_t value)
+{
+    (void)ctx;
+    (void)off;
+    (void)value;
+}
+
+/* drcc_init() on a device whose VERSION reads `version`. */
+int sim_c_init_with_version(uint32_t version)
+{
+    drcc_dev dev;
+    return drcc_init(&dev, fake_read, fake_write, &version);
 }

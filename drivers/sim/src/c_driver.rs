@@ -27,6 +27,76 @@ pub struct CFrame {
     pub channel: u8,
     /// Data bytes.
     pub data: [u8; 8],
+    /// Received: RX_TIME.rx_time (bit times).
+    pub timestamp: u16,
+}
+
+/// Mirror of the C `drcc_capture`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CCapture {
+    /// An error was captured.
+    pub err_valid: u8,
+    /// Error kind (1 bit .. 5 ACK).
+    pub err_kind: u8,
+    /// Field code of the error.
+    pub err_field: u8,
+    /// Transmitter at the error.
+    pub err_tx: u8,
+    /// An arbitration loss was captured.
+    pub alc_valid: u8,
+    /// Arbitration-lost position.
+    pub alc: u8,
+}
+
+/// Mirror of the C `drcc_ident`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CIdent {
+    /// VERSION.major.
+    pub major: u8,
+    /// VERSION.minor.
+    pub minor: u8,
+    /// SIZES.rx_fifo_depth.
+    pub rx_fifo_depth: u8,
+    /// SIZES.tx_queue_depth.
+    pub tx_queue_depth: u8,
+    /// SIZES.history.
+    pub history: u8,
+    /// SIZES.mailboxes.
+    pub mailboxes: u8,
+    /// SIZES.dmr.
+    pub dmr: u8,
+    /// SIZES.star.
+    pub star: u8,
+}
+
+/// Mirror of the C `drcc_stats`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CStats {
+    /// STATS0 duplicates.
+    pub duplicates: u16,
+    /// STATS0 overruns.
+    pub overruns: u16,
+    /// STATS1 switches.
+    pub switches: u16,
+    /// STATS1 recoveries.
+    pub recoveries: u16,
+    /// TIMES last_tx_time.
+    pub last_tx_time: u16,
+    /// TIMES switch_time.
+    pub switch_time: u16,
+    /// OMISSIONS of A.
+    pub omissions_a: u16,
+    /// OMISSIONS of B.
+    pub omissions_b: u16,
+    /// DMR_STATUS.
+    pub dmr_status: u32,
+    /// DMR_CS_COUNT.
+    pub dmr_cs_count: u32,
+    /// DMR_RX_STATS.
+    pub dmr_rx_stats: u32,
 }
 
 /// Mirror of the C `drcc_bit_timing`.
@@ -55,6 +125,10 @@ pub struct CIrqResult {
     pub frames: usize,
     /// The buffer filled up with frames still in the FIFO.
     pub more: i32,
+    /// CAP_A before the acknowledgement.
+    pub cap_a: CCapture,
+    /// CAP_B before the acknowledgement.
+    pub cap_b: CCapture,
 }
 
 type Read32 = extern "C" fn(*mut c_void, u32) -> u32;
@@ -63,6 +137,37 @@ type Write32 = extern "C" fn(*mut c_void, u32, u32);
 extern "C" {
     fn sim_c_open(read32: Read32, write32: Write32, ctx: *mut c_void, rc: *mut i32) -> *mut c_void;
     fn sim_c_close(dev: *mut c_void);
+    fn sim_c_example_open(
+        read32: Read32,
+        write32: Write32,
+        ctx: *mut c_void,
+        rc: *mut i32,
+    ) -> *mut c_void;
+    fn sim_c_stats_all(dev: *mut c_void, out: *mut CStats);
+    fn sim_c_ident(dev: *const c_void) -> CIdent;
+    fn sim_c_set_filter(
+        dev: *mut c_void,
+        index: u32,
+        enable: i32,
+        id: u32,
+        mask: u32,
+        ide: i32,
+    ) -> i32;
+    fn drcc_clear_filters(dev: *mut c_void) -> i32;
+    fn sim_c_init_with_version(version: u32) -> i32;
+    fn sim_c_configure_single_shot(
+        dev: *mut c_void,
+        clock_hz: u32,
+        bitrate: u32,
+        int_enable: u32,
+    ) -> i32;
+    fn drcc_now(dev: *mut c_void) -> u16;
+    fn drcc_clear_stats(dev: *mut c_void);
+    fn drcc_get_captures(dev: *mut c_void, a: *mut CCapture, b: *mut CCapture);
+    fn drcc_rearm_captures(dev: *mut c_void, errors: i32, arb: i32);
+    fn drcc_irq_status(dev: *mut c_void) -> u32;
+    fn drcc_irq_ack(dev: *mut c_void, mask: u32);
+    fn can_poll(dev: *mut c_void, f: *mut CFrame, tries: std::ffi::c_ulong) -> std::ffi::c_long;
     #[allow(clippy::too_many_arguments)]
     fn sim_c_configure(
         dev: *mut c_void,
@@ -128,18 +233,115 @@ pub struct CConfig {
     pub int_enable: u32,
 }
 
+type Opener = unsafe extern "C" fn(Read32, Write32, *mut c_void, *mut i32) -> *mut c_void;
+
 impl CDriver {
-    /// `drcc_init` on `port`; the C result code on failure.
-    pub fn open(port: NodePort) -> Result<CDriver, i32> {
+    fn open_with(port: NodePort, opener: Opener) -> Result<CDriver, i32> {
         let port = Box::new(port);
         let ctx = &*port as *const NodePort as *mut c_void;
         let mut rc = 0;
         // SAFETY: the hooks and ctx stay valid as long as the returned CDriver.
-        let dev = unsafe { sim_c_open(read_hook, write_hook, ctx, &mut rc) };
+        let dev = unsafe { opener(read_hook, write_hook, ctx, &mut rc) };
         if dev.is_null() {
             return Err(rc);
         }
         Ok(CDriver { dev, _port: port })
+    }
+
+    /// `drcc_init` on `port`; the C result code on failure.
+    pub fn open(port: NodePort) -> Result<CDriver, i32> {
+        CDriver::open_with(port, sim_c_open)
+    }
+
+    /// The README example's `can_start` on `port` (drivers/c/README.md).
+    pub fn open_readme_example(port: NodePort) -> Result<CDriver, i32> {
+        CDriver::open_with(port, sim_c_example_open)
+    }
+
+    /// The README example's `can_poll`: the frame's age in bit times (or -1)
+    /// and the frame.
+    pub fn readme_poll(&mut self, tries: u32) -> (i64, CFrame) {
+        let mut f = CFrame::default();
+        // SAFETY: dev is live, f a valid drcc_frame.
+        let age = unsafe { can_poll(self.dev, &mut f, tries.into()) };
+        // `long` is 32 bits on some targets, 64 on this one.
+        #[allow(clippy::useless_conversion)]
+        let age = i64::from(age);
+        (age, f)
+    }
+
+    /// `dev->ident` (VERSION and SIZES read by drcc_init).
+    pub fn ident(&self) -> CIdent {
+        // SAFETY: dev is live.
+        unsafe { sim_c_ident(self.dev) }
+    }
+
+    /// `drcc_set_filter` (`None`: disable); the C result code.
+    pub fn set_filter(&mut self, index: u32, filter: Option<(u32, u32, bool)>) -> i32 {
+        let (id, mask, ide) = filter.unwrap_or((0, 0, false));
+        // SAFETY: dev is live.
+        unsafe {
+            sim_c_set_filter(
+                self.dev,
+                index,
+                i32::from(filter.is_some()),
+                id,
+                mask,
+                i32::from(ide),
+            )
+        }
+    }
+
+    /// `drcc_clear_filters`; the C result code.
+    pub fn clear_filters(&mut self) -> i32 {
+        // SAFETY: dev is live.
+        unsafe { drcc_clear_filters(self.dev) }
+    }
+
+    /// `drcc_now`.
+    pub fn now(&mut self) -> u16 {
+        // SAFETY: dev is live.
+        unsafe { drcc_now(self.dev) }
+    }
+
+    /// `drcc_clear_stats`.
+    pub fn clear_stats(&mut self) {
+        // SAFETY: dev is live.
+        unsafe { drcc_clear_stats(self.dev) }
+    }
+
+    /// `drcc_get_stats`.
+    pub fn stats_all(&mut self) -> CStats {
+        let mut s = CStats::default();
+        // SAFETY: dev is live, s a valid drcc_stats.
+        unsafe { sim_c_stats_all(self.dev, &mut s) };
+        s
+    }
+
+    /// `drcc_get_captures`: (CAP_A, CAP_B).
+    pub fn captures(&mut self) -> (CCapture, CCapture) {
+        let (mut a, mut b) = (CCapture::default(), CCapture::default());
+        // SAFETY: dev is live.
+        unsafe { drcc_get_captures(self.dev, &mut a, &mut b) };
+        (a, b)
+    }
+
+    /// `drcc_rearm_captures`.
+    pub fn rearm_captures(&mut self, errors: bool, arb: bool) {
+        // SAFETY: dev is live.
+        unsafe { drcc_rearm_captures(self.dev, i32::from(errors), i32::from(arb)) }
+    }
+
+    /// `drcc_irq_status`.
+    pub fn irq_status(&mut self) -> u32 {
+        // SAFETY: dev is live.
+        unsafe { drcc_irq_status(self.dev) }
+    }
+
+    /// `drcc_irq_ack`.
+    pub fn irq_ack(&mut self, mask: u32) {
+        // SAFETY: dev is live.
+        unsafe { drcc_irq_ack(self.dev, mask) }
     }
 
     /// `drcc_configure` (through the glue); the C result code.
@@ -160,6 +362,13 @@ impl CDriver {
                 c.int_enable,
             )
         }
+    }
+
+    /// `drcc_configure` in normal mode with single-shot transmission; the C
+    /// result code.
+    pub fn configure_single_shot(&mut self, clock_hz: u32, bitrate: u32, int_enable: u32) -> i32 {
+        // SAFETY: dev is live.
+        unsafe { sim_c_configure_single_shot(self.dev, clock_hz, bitrate, int_enable) }
     }
 
     /// `drcc_send`; the C result code.
@@ -198,6 +407,13 @@ impl Drop for CDriver {
         // SAFETY: dev came from sim_c_open and is freed once.
         unsafe { sim_c_close(self.dev) }
     }
+}
+
+/// `drcc_init` on fake registers whose `VERSION` reads `version` (`ID` reads
+/// "DRCC", `SIZES` the default top's); the C result code.
+pub fn c_init_with_version(version: u32) -> i32 {
+    // SAFETY: plain function on its own fake hooks.
+    unsafe { sim_c_init_with_version(version) }
 }
 
 /// `drcc_calc_bit_timing` of the C driver: the timing or the C result code.

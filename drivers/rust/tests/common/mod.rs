@@ -112,6 +112,7 @@ impl Sent {
             dlc: self.dlc,
             channel: 0,
             data,
+            timestamp: 0,
         }
     }
 

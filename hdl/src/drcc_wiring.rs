@@ -356,6 +356,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.txbuf.push_q.next = self.regs.push_q.val();
         self.txbuf.push_frame.next = self.regs.tx_frame.val();
         self.txbuf.pop_red.next = self.main.pop.val();
+        self.txbuf.abort_a.next = self.regs.abort_a.val();
+        self.txbuf.abort_b.next = self.regs.abort_b.val();
         self.txbuf.done_a.next = self.chan_a.tx_done.val();
         self.txbuf.failed_a.next = self.chan_a.tx_failed.val();
         self.txbuf.done_b.next = self.chan_b.tx_done.val();
@@ -420,7 +422,9 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.chan_a.rx.next = self.chan_a_rx.val();
         self.chan_a.tx_req.next =
             self.main.req_a.val() | self.txbuf.req_a.val() | self.dmr_ctl.tx_req_dcl.val();
-        self.chan_a.tx_abort.next = self.main.abort_a.val() | self.dmr_ctl.tx_abort_dcl.val();
+        self.chan_a.tx_abort.next = self.main.abort_a.val()
+            | self.dmr_ctl.tx_abort_dcl.val()
+            | self.txbuf.chan_abort_a.val();
         if self.dmr_ctl.cs_req_dcl.val() {
             // the CS frame of the line: base format, DLC 0, data frame (§7)
             self.chan_a.tx_rtr.next = false;
@@ -454,7 +458,9 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.chan_b.rx.next = self.chan_b_rx.val();
         self.chan_b.tx_req.next =
             self.main.req_b.val() | self.txbuf.req_b.val() | self.dmr_ctl.tx_req_rcl.val();
-        self.chan_b.tx_abort.next = self.main.abort_b.val() | self.dmr_ctl.tx_abort_rcl.val();
+        self.chan_b.tx_abort.next = self.main.abort_b.val()
+            | self.dmr_ctl.tx_abort_rcl.val()
+            | self.txbuf.chan_abort_b.val();
         if self.dmr_ctl.cs_req_rcl.val() {
             // the CS frame of the line: base format, DLC 0, data frame (§7)
             self.chan_b.tx_rtr.next = false;

@@ -239,7 +239,11 @@ pub const REGISTERS: &[Register] = &[
         index: TX_CMD,
         access: Access::Wo,
         desc: "Transmit command",
-        fields: &[cmd("push", 0, "append the staged frame to a TX queue (refused in reset mode or when full)")],
+        fields: &[
+            cmd("push", 0, "append the staged frame to a TX queue (refused in reset mode or when full)"),
+            cmd("abort_a", 1, "drop queue A's frames no channel holds; normal mode: abort channel A's frame (contract §11.5; refused with push or in DMR mode)"),
+            cmd("abort_b", 2, "the same for queue B (normal mode only)"),
+        ],
     },
     Register {
         name: "RX_ID",

@@ -159,6 +159,10 @@ pub struct WbRegs {
     pub push_q: Signal<Out, Bit>,
     /// The staged frame: [98:68] {rtr, ide, id}, [67:64] dlc, [63:0] data.
     pub tx_frame: Signal<Out, Bits<99>>,
+    /// `TX_CMD.abort_a` accepted (§11.5): queue A keeps only what a channel holds.
+    pub abort_a: Signal<Out, Bit>,
+    /// `TX_CMD.abort_b` accepted.
+    pub abort_b: Signal<Out, Bit>,
     /// `RX_CMD.pop` accepted.
     pub pop: Signal<Out, Bit>,
     /// `INT_STATUS.bus_error` written 1: the error captures re-arm (§10.2).
@@ -232,6 +236,8 @@ pub struct WbRegs {
     t_dlc: Constant<Bits<5>>,
     t_queue: Constant<Bits<5>>,
     t_push: Constant<Bits<5>>,
+    t_abort_a: Constant<Bits<5>>,
+    t_abort_b: Constant<Bits<5>>,
     r_pop: Constant<Bits<5>>,
     c_clear: Constant<Bits<5>>,
     i_rx: Constant<Bits<5>>,
@@ -367,6 +373,8 @@ impl Default for WbRegs {
             rearm_err: Default::default(),
             rearm_alc: Default::default(),
             stats_clear: Default::default(),
+            abort_a: Default::default(),
+            abort_b: Default::default(),
             bus: Default::default(),
             ctrl: Default::default(),
             ctrl_check: Default::default(),
@@ -421,6 +429,8 @@ impl Default for WbRegs {
             t_dlc: lsb(&MAP, "TX_CTRL", "dlc", 4),
             t_queue: lsb(&MAP, "TX_CTRL", "queue", 1),
             t_push: lsb(&MAP, "TX_CMD", "push", 1),
+            t_abort_a: lsb(&MAP, "TX_CMD", "abort_a", 1),
+            t_abort_b: lsb(&MAP, "TX_CMD", "abort_b", 1),
             r_pop: lsb(&MAP, "RX_CMD", "pop", 1),
             c_clear: lsb(&MAP, "STATS_CLR", "clear", 1),
             i_rx: lsb(&MAP, "INT_STATUS", "rx", 1),

@@ -124,6 +124,8 @@ impl Logic for WbRegs {
         self.push.next = false;
         self.pop.next = false;
         self.stats_clear.next = false;
+        self.abort_a.next = false;
+        self.abort_b.next = false;
 
         // target queue of a push: A in redundancy and DMR modes (one logical
         // queue), else TX_CTRL.queue
@@ -174,7 +176,13 @@ impl Logic for WbRegs {
             } else if self.wb_adr_i.val() == self.a_tx_data1.val() {
                 self.tx_data1_q.d.next = self.wdat.val();
             } else if self.wb_adr_i.val() == self.a_tx_cmd.val() {
-                if self.wb_dat_i.val().get_bit(self.t_push.val().index()) {
+                if (self.wb_dat_i.val().get_bit(self.t_abort_a.val().index())
+                    | self.wb_dat_i.val().get_bit(self.t_abort_b.val().index()))
+                    & (self.wb_dat_i.val().get_bit(self.t_push.val().index()) | self.ctrl.dmr.val())
+                {
+                    // §11.5: an abort with a push, or in DMR mode, is refused
+                    self.illegal.next = true;
+                } else if self.wb_dat_i.val().get_bit(self.t_push.val().index()) {
                     if self.ctrl.reset_mode.val()
                         | (self.target_count.val() == self.queue_full.val())
                     {
@@ -182,6 +190,9 @@ impl Logic for WbRegs {
                     } else {
                         self.push.next = true;
                     }
+                } else {
+                    self.abort_a.next = self.wb_dat_i.val().get_bit(self.t_abort_a.val().index());
+                    self.abort_b.next = self.wb_dat_i.val().get_bit(self.t_abort_b.val().index());
                 }
             } else if self.wb_adr_i.val() == self.a_rx_cmd.val() {
                 if self.wb_dat_i.val().get_bit(self.r_pop.val().index()) {
@@ -243,6 +254,8 @@ impl Logic for WbRegs {
             self.push.next = false;
             self.pop.next = false;
             self.stats_clear.next = false;
+            self.abort_a.next = false;
+            self.abort_b.next = false;
             self.err_q.d.next = false;
         }
 

@@ -13,6 +13,11 @@
 //! edge in normal mode, so a normal-mode request `req_c` is raised only at an edge
 //! where the read data being loaded is queue c's head. In redundancy mode queue A
 //! is the one logical queue and the main FSM pops it (`pop_red`).
+//!
+//! Host abort (contract §11.5): normal mode, queue c keeps only the frame
+//! channel c holds (`busy_c` and not ending at this edge) and that channel gets
+//! `tx_abort` one clock later; redundancy mode, queue A keeps only its head
+//! (the redundancy manager's message). No request is raised at an abort edge.
 //! Frame layout (the TX_ID register bits in [98:68]): [98] rtr, [97] ide,
 //! [96:68] id, [67:64] dlc, [63:0] data (byte 0 in [63:56], as the channel ports).
 //!
@@ -60,6 +65,16 @@ pub struct TxBuffer {
     pub push_frame: Signal<In, Bits<99>>,
     // redundancy mode: the main FSM's finish
     pub pop_red: Signal<In, Bit>,
+    // host abort (contract §11.5, already accepted by the register block)
+    /// `TX_CMD.abort_a`: queue A keeps only the frame a channel holds.
+    pub abort_a: Signal<In, Bit>,
+    /// `TX_CMD.abort_b` (normal mode).
+    pub abort_b: Signal<In, Bit>,
+    /// Normal mode: channel A's `tx_abort`, one clock after an abort that kept
+    /// the frame channel A holds.
+    pub chan_abort_a: Signal<Out, Bit>,
+    /// Normal mode: channel B's `tx_abort`.
+    pub chan_abort_b: Signal<Out, Bit>,
     // channel events
     pub done_a: Signal<In, Bit>,
     pub failed_a: Signal<In, Bit>,
@@ -89,6 +104,11 @@ pub struct TxBuffer {
     req_b_q: DFF<Bit>,
     busy_a: DFF<Bit>,
     busy_b: DFF<Bit>,
+    chan_abort_a_q: DFF<Bit>,
+    chan_abort_b_q: DFF<Bit>,
+    /// Normal mode: channel c holds the head and keeps it past this edge.
+    holds_a: Signal<Local, Bit>,
+    holds_b: Signal<Local, Bit>,
     pop_a: Signal<Local, Bit>,
     pop_n: Signal<Local, Bits<4>>,
     dmr_slot: Signal<Local, Bits<3>>,
@@ -117,6 +137,14 @@ impl Default for TxBuffer {
             push_q: Default::default(),
             push_frame: Default::default(),
             pop_red: Default::default(),
+            abort_a: Default::default(),
+            abort_b: Default::default(),
+            chan_abort_a: Default::default(),
+            chan_abort_b: Default::default(),
+            chan_abort_a_q: Default::default(),
+            chan_abort_b_q: Default::default(),
+            holds_a: Default::default(),
+            holds_b: Default::default(),
             done_a: Default::default(),
             failed_a: Default::default(),
             done_b: Default::default(),
@@ -172,7 +200,19 @@ impl Logic for TxBuffer {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, head_a, head_b, cnt_a, cnt_b, rd_sel, req_a_q, req_b_q, busy_a, busy_b
+            self,
+            clk,
+            head_a,
+            head_b,
+            cnt_a,
+            cnt_b,
+            rd_sel,
+            req_a_q,
+            req_b_q,
+            busy_a,
+            busy_b,
+            chan_abort_a_q,
+            chan_abort_b_q
         );
         self.ram.clk.next = self.clk.val();
         self.ram.read_enable.next = true;
@@ -262,7 +302,37 @@ impl Logic for TxBuffer {
             self.cnt_b.d.next = self.cnt_b.q.val() - self.one4.val();
         }
 
+        // §11.5, host abort: normal mode keeps the frame channel c holds (and
+        // aborts it in the channel one clock later), redundancy mode the head
+        self.holds_a.next = self.busy_a.q.val()
+            & !self.done_a.val()
+            & !self.failed_a.val()
+            & !self.redundancy.val();
+        self.holds_b.next = self.busy_b.q.val()
+            & !self.done_b.val()
+            & !self.failed_b.val()
+            & !self.redundancy.val();
+        if self.abort_a.val() {
+            self.cnt_a.d.next = self.zero4.val();
+            if self.redundancy.val() & (self.cnt_a.q.val() != self.zero4.val()) & !self.pop_a.val()
+            {
+                self.cnt_a.d.next = self.one4.val();
+            }
+            if self.holds_a.val() {
+                self.cnt_a.d.next = self.one4.val();
+            }
+        }
+        if self.abort_b.val() {
+            self.cnt_b.d.next = self.zero4.val();
+            if self.holds_b.val() {
+                self.cnt_b.d.next = self.one4.val();
+            }
+        }
+        self.chan_abort_a_q.d.next = self.abort_a.val() & self.holds_a.val() & !self.dmr.val();
+        self.chan_abort_b_q.d.next = self.abort_b.val() & self.holds_b.val() & !self.dmr.val();
+
         // normal mode: req_c <= (rd_sel == c) && count_c > 0 && !busy_c && !req_c
+        // (none for queue c at its abort edge, §11.5)
         // the read port alternates between the queues (normal mode) or the
         // lines (DMR mode, whose requests are the DMR control's)
         self.rd_sel.d.next = !self.rd_sel.q.val() & !self.redundancy.val();
@@ -271,13 +341,15 @@ impl Logic for TxBuffer {
             & !self.rd_sel.q.val()
             & (self.cnt_a.q.val() != self.zero4.val())
             & !self.busy_a.q.val()
-            & !self.req_a_q.q.val();
+            & !self.req_a_q.q.val()
+            & !self.abort_a.val();
         self.req_b_q.d.next = !self.redundancy.val()
             & !self.dmr.val()
             & self.rd_sel.q.val()
             & (self.cnt_b.q.val() != self.zero4.val())
             & !self.busy_b.q.val()
-            & !self.req_b_q.q.val();
+            & !self.req_b_q.q.val()
+            & !self.abort_b.val();
         self.busy_a.d.next = self.busy_a.q.val() | self.req_a_q.d.val();
         self.busy_b.d.next = self.busy_b.q.val() | self.req_b_q.d.val();
         if self.dmr.val() | (!self.redundancy.val() & (self.done_a.val() | self.failed_a.val())) {
@@ -301,6 +373,8 @@ impl Logic for TxBuffer {
             self.req_b_q.d.next = false;
             self.busy_a.d.next = false;
             self.busy_b.d.next = false;
+            self.chan_abort_a_q.d.next = false;
+            self.chan_abort_b_q.d.next = false;
             self.done_evt.next = false;
             self.failed_evt.next = false;
         }
@@ -308,6 +382,8 @@ impl Logic for TxBuffer {
         self.count_b.next = self.cnt_b.q.val();
         self.req_a.next = self.req_a_q.q.val();
         self.req_b.next = self.req_b_q.q.val();
+        self.chan_abort_a.next = self.chan_abort_a_q.q.val();
+        self.chan_abort_b.next = self.chan_abort_b_q.q.val();
         self.rd_sel_o.next = self.rd_sel.q.val();
     }
 }

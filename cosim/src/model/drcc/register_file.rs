@@ -306,10 +306,12 @@ impl DrccModel {
         let r = &self.r;
         let reset_mode = r.reset_mode();
         let (redundancy, dmr_mode) = (r.redundancy(), r.dmr());
-        let mut a = Access::default();
         // bus_contract.md §1: an access is taken unless it is the one just
         // answered; a refused one (it raises `illegal`) ends with ERR.
-        a.take = i.wb_cyc && i.wb_stb && !(r.wb_ack || r.wb_err);
+        let mut a = Access {
+            take: i.wb_cyc && i.wb_stb && !(r.wb_ack || r.wb_err),
+            ..Access::default()
+        };
         n.wb_dat = 0;
         if a.take {
             let adr = i.wb_adr & 0x3F;
@@ -395,10 +397,10 @@ impl DrccModel {
                     idx::DMR_CFG..=idx::MB_STATE => a.dmr_write = Some((adr, d)),
                     // §11.1: the filters are cfg registers.
                     idx::FILT_ID0..=idx::FILT_MASK1 => {
-                        let k = ((adr - idx::FILT_ID0) / 2) as usize;
+                        let (k, mask) = ((adr - idx::FILT_ID0) as usize / 2, adr & 1 != 0);
                         if !reset_mode {
                             a.ints |= int::ILLEGAL;
-                        } else if (adr - idx::FILT_ID0) % 2 == 0 {
+                        } else if !mask {
                             n.filt.id[k] = d & filt::WORD;
                         } else {
                             n.filt.mask[k] = d;

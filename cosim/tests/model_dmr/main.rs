@@ -11,6 +11,7 @@ use drcc_cosim::engine::drcc_model::DrccModelEngine;
 use drcc_cosim::model::ChannelModel;
 use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Frame};
 
+mod driver_features;
 mod engine;
 mod network;
 mod reception;

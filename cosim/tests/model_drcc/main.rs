@@ -12,10 +12,13 @@ use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Fra
 
 mod channel_switching;
 mod driver_features;
+mod filters;
 mod identification;
 mod reception;
 mod registers;
 mod star_node;
+mod stats_clear;
+mod timestamps_events;
 
 // Word indices (contract §3).
 const ID: u8 = 0;

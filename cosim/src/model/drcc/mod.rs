@@ -63,10 +63,21 @@
 //!     captures are updated at every non-`rst` edge, reset mode included (the
 //!     channels held in reset raise no `err_valid`/`arb_lost` there, and leaving
 //!     the warning limit by the counters' reset is an event).
+//! 13. §11.1 filters: `FILT_IDk` stores [30:0] (bit 31 reads 0), `FILT_MASKk` all
+//!     32 bits. A frame released by the DMR ACL rule and then rejected still
+//!     counts as `released` and is marked delivered (`hd`): the DMR rules see it
+//!     as before, only the FIFO write is skipped.
+//! 14. §11.2 the timestamp is `now` before the write edge (the value every rule
+//!     reads, as the history's `ts`); a tick at that edge is not in it.
+//! 15. §11.4 `STATS_CLR` keeps the byte-lane rule of §2: a partial write is
+//!     refused like that of every whole word ("never refused" is read as "in
+//!     any mode"). The counts of `DMR_STATUS` (`state_changes`, `acl_switches`)
+//!     are not in the contract's list and are kept, as `DMR_CS_COUNT`.
 #![doc = include_str!("../drcc_contract.md")]
 
 pub mod aux_fsm;
 pub mod dmr;
+pub mod features;
 pub mod main_fsm;
 mod params;
 mod register_file;
@@ -82,7 +93,7 @@ use aux_fsm::{AuxFsm, AuxInputs};
 use dmr::{DmrBlock, DmrInputs};
 use main_fsm::{FsmInputs, MainFsm};
 pub use params::DrccParams;
-use register_file::{clamp_k, Regs};
+use register_file::Regs;
 use regs::dmr as dmr_regs;
 use regs::*;
 use rx_path::{RxInputs, RxPath, RxSizes};
@@ -251,103 +262,10 @@ impl DrccModel {
             n.tq_cnt = r.tq_cnt + 1;
         }
 
-        // Wishbone (§2, §3, §9).
-        let mut ints = 0u32;
-        let mut w1c = 0u32;
-        let mut push = None;
-        let mut pop = false;
-        let mut dmr_write = None;
-        // bus_contract.md §1: an access is taken unless it is the one just
-        // answered; a refused one (it raises `illegal`) ends with ERR.
-        let take = i.wb_cyc && i.wb_stb && !(r.wb_ack || r.wb_err);
-        n.wb_dat = 0;
-        if take {
-            let adr = i.wb_adr & 0x3F;
-            // Byte lanes: the staged frame's words merge the selected bytes into
-            // their value; every other word takes only a whole-word write.
-            let lanes = (0..4)
-                .filter(|b| i.wb_sel >> b & 1 != 0)
-                .fold(0u32, |m, b| m | 0xFF << (8 * b));
-            let laned = matches!(
-                adr,
-                idx::TX_ID | idx::TX_CTRL | idx::TX_DATA0 | idx::TX_DATA1
-            );
-            let d = if laned {
-                (self.read_reg(adr) & !lanes) | (i.wb_dat_w & lanes)
-            } else {
-                i.wb_dat_w
-            };
-            if !i.wb_we {
-                n.wb_dat = self.read_reg(adr);
-            } else if lanes != u32::MAX && !laned {
-                coverage::hit("drcc register port: a partial write to a whole word is refused");
-                ints |= int::ILLEGAL;
-            } else {
-                if lanes != u32::MAX {
-                    coverage::hit("drcc register port: a partial write to a staged TX word");
-                }
-                match adr {
-                    idx::CTRL => {
-                        let w = clamp_k(d & ctrl::DEFINED);
-                        if reset_mode {
-                            let listen_only = |shift: u32| (w >> shift) & 3 == 1;
-                            let any_listen_only =
-                                listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
-                            let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
-                            // §1.1: a mode the configuration lacks is refused.
-                            let absent = (dmr && !self.params.dmr)
-                                || (w & ctrl::STAR != 0 && !self.params.star);
-                            // DMR §2: one mode at a time; both lines must transmit.
-                            if (red && (any_listen_only || dmr))
-                                || (dmr && any_listen_only)
-                                || absent
-                            {
-                                ints |= int::ILLEGAL;
-                            } else {
-                                n.ctrl = w;
-                            }
-                        } else {
-                            if w & ctrl::CFG != r.ctrl & ctrl::CFG {
-                                ints |= int::ILLEGAL;
-                            }
-                            n.ctrl = (r.ctrl & !ctrl::RESET_MODE) | (w & ctrl::RESET_MODE);
-                        }
-                    }
-                    idx::BTR | idx::RMB_CFG | idx::DEDUP_CFG => {
-                        if !reset_mode {
-                            ints |= int::ILLEGAL;
-                        } else if adr == idx::BTR {
-                            n.btr = d & btr::DEFINED;
-                        } else if adr == idx::RMB_CFG {
-                            n.rmb = d;
-                        } else {
-                            n.dedup = d & dedup::WINDOW_MASK;
-                        }
-                    }
-                    idx::INT_STATUS => w1c = d & int::ALL,
-                    idx::INT_ENABLE => n.int_enable = d & int::ALL,
-                    idx::TX_ID => n.tx_id = d & (frame_id::ID_MASK | frame_id::IDE | frame_id::RTR),
-                    idx::TX_CTRL => n.tx_ctrl = d & frame_ctrl::DEFINED,
-                    idx::TX_DATA0 => n.tx_data[0] = d,
-                    idx::TX_DATA1 => n.tx_data[1] = d,
-                    idx::TX_CMD => {
-                        if d & 1 != 0 {
-                            let q = if redundancy || dmr_mode {
-                                0
-                            } else {
-                                (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
-                            };
-                            push = Some((q, r.staged()));
-                        }
-                    }
-                    idx::RX_CMD => pop = d & 1 != 0,
-                    // DMR registers: applied after the DMR block's edge.
-                    idx::DMR_CFG..=idx::MB_STATE => dmr_write = Some((adr, d)),
-                    // Read-only and unmapped words.
-                    _ => ints |= int::ILLEGAL,
-                }
-            }
-        }
+        // Wishbone (§2, §3, §9, §11).
+        let acc = self.access(i, &mut n);
+        let mut ints = acc.ints;
+        let (take, w1c, push, pop) = (acc.take, acc.w1c, acc.push, acc.pop);
 
         // Echo (§4.4): in a star node, a channel's reception of the attempted head
         // message (the TX RAM read data) is the node's own frame heard through the
@@ -444,7 +362,7 @@ impl DrccModel {
             rd: self.txq.rd,
             rd_sel: self.txq.rd_sel,
         });
-        if let Some((adr, d)) = dmr_write {
+        if let Some((adr, d)) = acc.dmr_write {
             // §1.1: without the DMR function its registers take no write.
             if !self.params.dmr || self.dmr.write(adr, d, reset_mode) != Some(true) {
                 ints |= int::ILLEGAL;
@@ -477,8 +395,8 @@ impl DrccModel {
             ints |= int::TX_FAILURE;
         }
 
-        // RX FIFO and duplicate removal (§7).
-        let rev = self.rx.edge(
+        // RX FIFO and duplicate removal (§7), the filters at its write port (§11.1).
+        let rev = self.rx.edge_filtered(
             &RxInputs {
                 reset_mode,
                 dedup_on: (redundancy || dmr_mode) && r.window() != 0,
@@ -501,6 +419,7 @@ impl DrccModel {
                 },
             },
             [&pa.rx_frame, &pb.rx_frame],
+            &r.filt,
         );
         if rev.pop_refused {
             ints |= int::ILLEGAL;
@@ -530,6 +449,8 @@ impl DrccModel {
         if pa.diag.err_valid || pb.diag.err_valid {
             ints |= int::BUS_ERROR;
         }
+        // §11.3: which channel completed or dropped its frame, in every mode.
+        ints |= features::tx_channel_events(pa, pb);
         // Re-arm: the acknowledgement of the interrupt (an INT_STATUS write that
         // took effect) clears both channels' valid bits; a capture at this edge wins.
         let (rearm_err, rearm_alc) = (w1c & int::BUS_ERROR != 0, w1c & int::ARB_LOST != 0);
@@ -547,6 +468,10 @@ impl DrccModel {
         n.int_status = (r.int_status & !w1c) | ints;
         n.irq = r.int_status & r.int_enable != 0;
         self.r = n;
+        // §11.4: the clear wins over every count's event at this edge.
+        if acc.stats_clr {
+            self.clear_statistics();
+        }
     }
 
     /// The outputs after the last edge.

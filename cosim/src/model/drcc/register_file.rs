@@ -2,10 +2,13 @@
 //! stored registers and the read side of the Wishbone map. The write side stays
 //! in the edge of [`super::DrccModel`], beside the blocks it drives.
 
+use super::features::Filters;
 use super::regs::*;
 use super::DrccModel;
+use crate::engine::drcc::DrccInputs;
 use crate::engine::ChannelOutputs;
 use crate::frame::Frame;
+use crate::model::coverage;
 
 /// The register file and the small top-level registers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,6 +38,8 @@ pub(super) struct Regs {
     pub(super) cap: [Capture; 2],
     /// STATS1[31:16].
     pub(super) recoveries: u16,
+    /// `FILT_ID0` .. `FILT_MASK1` (§11.1): cleared by `rst` only.
+    pub(super) filt: Filters,
     /// `reset_mode` one edge earlier: the channels stay in reset one clock longer
     /// so that they capture the configuration written with the write that leaves
     /// reset mode (contract §6).
@@ -63,6 +68,7 @@ impl Regs {
             warn_q: [false; 2],
             cap: [Capture::default(); 2],
             recoveries: 0,
+            filt: Filters::default(),
             reset_mode_q: true,
         }
     }
@@ -255,6 +261,14 @@ impl DrccModel {
             // §10.2: the held captures.
             idx::CAP_A => r.cap[0].reg(),
             idx::CAP_B => r.cap[1].reg(),
+            // §11: the filters, the head's timestamp with the present `now`; the
+            // write-only STATS_CLR reads 0.
+            idx::FILT_ID0 => r.filt.id[0],
+            idx::FILT_MASK0 => r.filt.mask[0],
+            idx::FILT_ID1 => r.filt.id[1],
+            idx::FILT_MASK1 => r.filt.mask[1],
+            idx::RX_TIME => self.rx.rd_ts as u32 | (self.rx.now as u32) << 16,
+            idx::STATS_CLR => 0,
             // DMR registers (dmr_contract.md §2.1); TX_CMD, RX_CMD (write only) and
             // unmapped words read 0.
             _ => self
@@ -262,5 +276,143 @@ impl DrccModel {
                 .read(adr, r.reset_mode(), self.rx.dmr_stats())
                 .unwrap_or(0),
         }
+    }
+}
+
+/// What the Wishbone access taken at an edge asks of the other blocks.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Access {
+    /// An access is taken at this edge (§2).
+    pub(super) take: bool,
+    /// `INT_STATUS.illegal` when the access is refused (§9).
+    pub(super) ints: u32,
+    /// The W1C bits of an `INT_STATUS` write.
+    pub(super) w1c: u32,
+    /// `TX_CMD.push`: the target queue and the staged frame, normalized.
+    pub(super) push: Option<(usize, Frame)>,
+    /// `RX_CMD.pop`.
+    pub(super) pop: bool,
+    /// A DMR register write, applied after the DMR block's edge.
+    pub(super) dmr_write: Option<(u8, u32)>,
+    /// `STATS_CLR.clear` (§11.4).
+    pub(super) stats_clr: bool,
+}
+
+impl DrccModel {
+    /// The Wishbone access of this edge (§2, §3, §9, §11): the writes to the
+    /// register file go to `n` (the registers after the edge), the rest is
+    /// returned for the blocks it drives.
+    pub(super) fn access(&self, i: &DrccInputs, n: &mut Regs) -> Access {
+        let r = &self.r;
+        let reset_mode = r.reset_mode();
+        let (redundancy, dmr_mode) = (r.redundancy(), r.dmr());
+        // bus_contract.md §1: an access is taken unless it is the one just
+        // answered; a refused one (it raises `illegal`) ends with ERR.
+        let mut a = Access {
+            take: i.wb_cyc && i.wb_stb && !(r.wb_ack || r.wb_err),
+            ..Access::default()
+        };
+        n.wb_dat = 0;
+        if a.take {
+            let adr = i.wb_adr & 0x3F;
+            // Byte lanes: the staged frame's words merge the selected bytes into
+            // their value; every other word takes only a whole-word write.
+            let lanes = (0..4)
+                .filter(|b| i.wb_sel >> b & 1 != 0)
+                .fold(0u32, |m, b| m | 0xFF << (8 * b));
+            let laned = matches!(
+                adr,
+                idx::TX_ID | idx::TX_CTRL | idx::TX_DATA0 | idx::TX_DATA1
+            );
+            let d = if laned {
+                (self.read_reg(adr) & !lanes) | (i.wb_dat_w & lanes)
+            } else {
+                i.wb_dat_w
+            };
+            if !i.wb_we {
+                n.wb_dat = self.read_reg(adr);
+            } else if lanes != u32::MAX && !laned {
+                coverage::hit("drcc register port: a partial write to a whole word is refused");
+                a.ints |= int::ILLEGAL;
+            } else {
+                if lanes != u32::MAX {
+                    coverage::hit("drcc register port: a partial write to a staged TX word");
+                }
+                match adr {
+                    idx::CTRL => {
+                        let w = clamp_k(d & ctrl::DEFINED);
+                        if reset_mode {
+                            let listen_only = |shift: u32| (w >> shift) & 3 == 1;
+                            let any_listen_only =
+                                listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
+                            let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
+                            // §1.1: a mode the configuration lacks is refused.
+                            let absent = (dmr && !self.params.dmr)
+                                || (w & ctrl::STAR != 0 && !self.params.star);
+                            // DMR §2: one mode at a time; both lines must transmit.
+                            if (red && (any_listen_only || dmr))
+                                || (dmr && any_listen_only)
+                                || absent
+                            {
+                                a.ints |= int::ILLEGAL;
+                            } else {
+                                n.ctrl = w;
+                            }
+                        } else {
+                            if w & ctrl::CFG != r.ctrl & ctrl::CFG {
+                                a.ints |= int::ILLEGAL;
+                            }
+                            n.ctrl = (r.ctrl & !ctrl::RESET_MODE) | (w & ctrl::RESET_MODE);
+                        }
+                    }
+                    idx::BTR | idx::RMB_CFG | idx::DEDUP_CFG => {
+                        if !reset_mode {
+                            a.ints |= int::ILLEGAL;
+                        } else if adr == idx::BTR {
+                            n.btr = d & btr::DEFINED;
+                        } else if adr == idx::RMB_CFG {
+                            n.rmb = d;
+                        } else {
+                            n.dedup = d & dedup::WINDOW_MASK;
+                        }
+                    }
+                    idx::INT_STATUS => a.w1c = d & int::ALL,
+                    idx::INT_ENABLE => n.int_enable = d & int::ALL,
+                    idx::TX_ID => n.tx_id = d & (frame_id::ID_MASK | frame_id::IDE | frame_id::RTR),
+                    idx::TX_CTRL => n.tx_ctrl = d & frame_ctrl::DEFINED,
+                    idx::TX_DATA0 => n.tx_data[0] = d,
+                    idx::TX_DATA1 => n.tx_data[1] = d,
+                    idx::TX_CMD => {
+                        if d & 1 != 0 {
+                            let q = if redundancy || dmr_mode {
+                                0
+                            } else {
+                                (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
+                            };
+                            a.push = Some((q, r.staged()));
+                        }
+                    }
+                    idx::RX_CMD => a.pop = d & 1 != 0,
+                    // DMR registers: applied after the DMR block's edge.
+                    idx::DMR_CFG..=idx::MB_STATE => a.dmr_write = Some((adr, d)),
+                    // §11.1: the filters are cfg registers.
+                    idx::FILT_ID0..=idx::FILT_MASK1 => {
+                        let (k, mask) = ((adr - idx::FILT_ID0) as usize / 2, adr & 1 != 0);
+                        if !reset_mode {
+                            a.ints |= int::ILLEGAL;
+                        } else if !mask {
+                            n.filt.id[k] = d & filt::WORD;
+                        } else {
+                            n.filt.mask[k] = d;
+                        }
+                    }
+                    // §11.4: never refused; bit 0 = 0 does nothing.
+                    idx::STATS_CLR => a.stats_clr = d & 1 != 0,
+                    // Read-only and unmapped words.
+                    _ => a.ints |= int::ILLEGAL,
+                }
+            }
+        }
+        a
     }
 }

@@ -4,8 +4,9 @@
 /// `ID` register value: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
 
-/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 1 in [7:0].
-pub const VERSION_VALUE: u32 = 0x0000_0101;
+/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 2 in [7:0]
+/// (§11 added registers).
+pub const VERSION_VALUE: u32 = 0x0000_0102;
 
 /// Word indices (`wb_adr_i`, byte offset / 4).
 pub mod idx {
@@ -56,6 +57,15 @@ pub mod idx {
     /// Error and arbitration-lost captures of channel A / B (§10.2).
     pub const CAP_A: u8 = 40;
     pub const CAP_B: u8 = 41;
+    /// Acceptance filters (§11.1): identifier / mask pairs 0 and 1.
+    pub const FILT_ID0: u8 = 42;
+    pub const FILT_MASK0: u8 = 43;
+    pub const FILT_ID1: u8 = 44;
+    pub const FILT_MASK1: u8 = 45;
+    /// The RX FIFO head's timestamp and the present `now` (§11.2).
+    pub const RX_TIME: u8 = 46;
+    /// Clearing the statistics (§11.4).
+    pub const STATS_CLR: u8 = 47;
 }
 
 /// `CTRL` fields.
@@ -141,8 +151,13 @@ pub mod int {
     /// Either channel raised `err_valid` (§10.2); writing it re-arms the error
     /// capture.
     pub const BUS_ERROR: u32 = 1 << 12;
-    /// The 13 bits of `INT_STATUS` / `INT_ENABLE`.
-    pub const ALL: u32 = 0x1FFF;
+    /// Per-channel transmit events (§11.3): the channel's `tx_done` / `tx_failed`.
+    pub const TX_DONE_A: u32 = 1 << 13;
+    pub const TX_DONE_B: u32 = 1 << 14;
+    pub const TX_FAILURE_A: u32 = 1 << 15;
+    pub const TX_FAILURE_B: u32 = 1 << 16;
+    /// The 17 bits of `INT_STATUS` / `INT_ENABLE` (§11).
+    pub const ALL: u32 = 0x1_FFFF;
 }
 
 /// `SIZES` fields (§10.1): the generation parameters of §1.1.
@@ -167,6 +182,14 @@ pub mod cap {
     pub const ALC_SHIFT: u32 = 16;
     pub const ALC_MASK: u32 = 0x1F;
     pub const ALC_VALID: u32 = 1 << 21;
+}
+
+/// `FILT_IDk` / `FILT_MASKk` fields (§11.1): the `TX_ID` layout; the mask adds
+/// `enable`.
+pub mod filt {
+    /// The frame word `{rtr, ide, id}`: [28:0] id, [29] ide, [30] rtr.
+    pub const WORD: u32 = 0x7FFF_FFFF;
+    pub const ENABLE: u32 = 1 << 31;
 }
 
 /// `TX_ID` / `RX_ID` fields.

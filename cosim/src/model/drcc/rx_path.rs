@@ -5,6 +5,7 @@
 //! frames of the passive line wait in the history (`hd` = 0) and are released,
 //! oldest first, at an ACL switch (states `RSCAN`, `FETCH`, `RELEASE`).
 
+use super::features::Filters;
 use crate::frame::Frame;
 use crate::model::coverage;
 
@@ -67,6 +68,9 @@ pub struct RxInputs {
 pub struct RxEvents {
     /// Pop on an empty FIFO: INT_STATUS.illegal.
     pub pop_refused: bool,
+    /// A frame the writer would have written, not accepted by the filters
+    /// (DRCC contract §11.1): dropped silently.
+    pub rejected: bool,
     pub rx: bool,
     pub overrun: bool,
 }
@@ -84,10 +88,14 @@ pub struct HistEntry {
 pub struct RxPath {
     /// RX RAM: frame and channel (public for the block-level lock-step test).
     pub ram: [(Frame, u8); 32],
+    /// The RX RAM's timestamps (DRCC contract §11.2): `now` at the write edge.
+    pub ts: [u16; 32],
     pub head: u8,
     pub count: u8,
     /// RAM read data register (the RX_* registers).
     pub rd: (Frame, u8),
+    /// The timestamp of the read data (`RX_TIME.rx_time`).
+    pub rd_ts: u16,
     /// `RX_ID[31]`: `count != 0` at the previous edge.
     pub rx_ready: bool,
     pub rxp: [bool; 2],
@@ -161,24 +169,69 @@ impl RxPath {
     /// reset), every register and statistic clears.
     pub fn reset(&mut self) {
         let rd = self.ram[self.head as usize];
+        let rd_ts = self.ts[self.head as usize];
         let hist_rd = self.hist[self.hist_addr(self.w_state, self.scan_i, self.rel_e)];
         *self = RxPath {
             ram: self.ram,
+            ts: self.ts,
             hist: self.hist,
             sizes: self.sizes,
             rd,
+            rd_ts,
             hist_rd,
             ..RxPath::default()
         };
     }
 
-    /// One rising edge; `rx_frame` are the channels' `rx_*` outputs (read with
-    /// `rx_valid` only).
+    /// One rising edge without filters (every frame accepted); `rx_frame` are
+    /// the channels' `rx_*` outputs (read with `rx_valid` only).
     pub fn edge(&mut self, i: &RxInputs, rx_frame: [&Frame; 2]) -> RxEvents {
+        self.edge_filtered(i, rx_frame, &Filters::default())
+    }
+
+    /// The FIFO write port (DRCC contract §7 `write`, DMR contract §8 `release`,
+    /// §11.1 order): not accepted → dropped silently; else full → overrun; else
+    /// written with its channel and the timestamp `now` (§11.2, the value before
+    /// the edge, as the history's). Returns whether the frame was written.
+    fn fifo_write(
+        &mut self,
+        c: &RxRegs,
+        f: &Frame,
+        ch: u8,
+        filt: &Filters,
+        ev: &mut RxEvents,
+    ) -> bool {
+        let depth = self.sizes.fifo_depth;
+        if !filt.accepts(f) {
+            coverage::hit("rx: a frame rejected by the acceptance filters");
+            ev.rejected = true;
+            false
+        } else if c.count >= depth {
+            self.overruns = c.overruns.saturating_add(1);
+            ev.overrun = true;
+            false
+        } else {
+            let a = ((c.head + c.count) & (depth - 1)) as usize;
+            self.ram[a] = (*f, ch);
+            self.ts[a] = c.now;
+            ev.rx = true;
+            true
+        }
+    }
+
+    /// One rising edge with the acceptance filters `filt` at the FIFO's write
+    /// port (DRCC contract §11.1).
+    pub fn edge_filtered(
+        &mut self,
+        i: &RxInputs,
+        rx_frame: [&Frame; 2],
+        filt: &Filters,
+    ) -> RxEvents {
         let mut ev = RxEvents::default();
         let c = self.clone_regs();
         // Registered read ports (read-first: the RAM contents before the edge).
         self.rd = self.ram[c.head as usize];
+        self.rd_ts = self.ts[c.head as usize];
         self.hist_rd = self.hist[self.hist_addr(c.w_state, c.scan_i, c.rel_e)];
         let (depth, hist_size) = (self.sizes.fifo_depth, self.sizes.history);
         ev.pop_refused = i.pop && c.count == 0;
@@ -365,29 +418,16 @@ impl RxPath {
             W_FETCH => self.w_state = W_RELEASE,
             W_RELEASE => {
                 let frame = c.hist_rd.frame;
-                if c.count >= depth {
-                    self.overruns = c.overruns.saturating_add(1);
-                    ev.overrun = true;
-                } else {
-                    self.ram[((c.head + c.count) & (depth - 1)) as usize] = (frame, i.acl);
-                    pushed = true;
-                    ev.rx = true;
-                }
+                pushed = self.fifo_write(&c, &frame, i.acl, filt, &mut ev);
                 self.hd |= 1 << c.rel_e;
                 self.released = c.released.saturating_add(1);
                 self.w_state = W_IDLE;
             }
             _ => {
                 let frame = c.rxf[c.sel as usize];
-                if !c.w_fifo {
-                    // A PCL frame: it waits in the history (§8).
-                } else if c.count >= depth {
-                    self.overruns = c.overruns.saturating_add(1);
-                    ev.overrun = true;
-                } else {
-                    self.ram[((c.head + c.count) & (depth - 1)) as usize] = (frame, c.sel);
-                    pushed = true;
-                    ev.rx = true;
+                // A PCL frame (!w_fifo) waits in the history (§8).
+                if c.w_fifo {
+                    pushed = self.fifo_write(&c, &frame, c.sel, filt, &mut ev);
                 }
                 if c.w_hist {
                     let p = if c.free_found {

@@ -354,6 +354,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
     wire  regs__push;
     wire  regs__push_q;
     wire  [98:0] regs__tx_frame;
+    wire  regs__abort_a;
+    wire  regs__abort_b;
     wire  regs__pop;
     wire  regs__rearm_err;
     wire  regs__rearm_alc;
@@ -720,6 +722,10 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
     reg  txbuf__push_q;
     reg  [98:0] txbuf__push_frame;
     reg  txbuf__pop_red;
+    reg  txbuf__abort_a;
+    reg  txbuf__abort_b;
+    wire  txbuf__chan_abort_a;
+    wire  txbuf__chan_abort_b;
     reg  txbuf__done_a;
     reg  txbuf__failed_a;
     reg  txbuf__done_b;
@@ -944,6 +950,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .push(regs__push),
         .push_q(regs__push_q),
         .tx_frame(regs__tx_frame),
+        .abort_a(regs__abort_a),
+        .abort_b(regs__abort_b),
         .pop(regs__pop),
         .rearm_err(regs__rearm_err),
         .rearm_alc(regs__rearm_alc),
@@ -1340,6 +1348,10 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .push_q(txbuf__push_q),
         .push_frame(txbuf__push_frame),
         .pop_red(txbuf__pop_red),
+        .abort_a(txbuf__abort_a),
+        .abort_b(txbuf__abort_b),
+        .chan_abort_a(txbuf__chan_abort_a),
+        .chan_abort_b(txbuf__chan_abort_b),
         .done_a(txbuf__done_a),
         .failed_a(txbuf__failed_a),
         .done_b(txbuf__done_b),
@@ -1793,6 +1805,8 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         txbuf__push_q = regs__push_q;
         txbuf__push_frame = regs__tx_frame;
         txbuf__pop_red = main__pop;
+        txbuf__abort_a = regs__abort_a;
+        txbuf__abort_b = regs__abort_b;
         txbuf__done_a = chan_a__tx_done;
         txbuf__failed_a = chan_a__tx_failed;
         txbuf__done_b = chan_b__tx_done;
@@ -1841,7 +1855,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         chan_a__cfg_single_shot = regs__single_shot & ~regs__redundancy & ~regs__dmr;
         chan_a__rx = chan_a_rx;
         chan_a__tx_req = main__req_a | txbuf__req_a | dmr_ctl__tx_req_dcl;
-        chan_a__tx_abort = main__abort_a | dmr_ctl__tx_abort_dcl;
+        chan_a__tx_abort = main__abort_a | dmr_ctl__tx_abort_dcl | txbuf__chan_abort_a;
         if (dmr_ctl__cs_req_dcl) begin
             chan_a__tx_rtr = 1'b0;
             chan_a__tx_ide = 1'b0;
@@ -1869,7 +1883,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         chan_b__cfg_single_shot = regs__single_shot & ~regs__redundancy & ~regs__dmr;
         chan_b__rx = chan_b_rx;
         chan_b__tx_req = main__req_b | txbuf__req_b | dmr_ctl__tx_req_rcl;
-        chan_b__tx_abort = main__abort_b | dmr_ctl__tx_abort_rcl;
+        chan_b__tx_abort = main__abort_b | dmr_ctl__tx_abort_rcl | txbuf__chan_abort_b;
         if (dmr_ctl__cs_req_rcl) begin
             chan_b__tx_rtr = 1'b0;
             chan_b__tx_ide = 1'b0;
@@ -10409,7 +10423,7 @@ module drcc__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_
 endmodule // drcc__main
 
 
-module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,pop,rearm_err,rearm_alc,stats_clear);
+module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,pop,rearm_err,rearm_alc,stats_clear);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [0:0] STAR = 1'd1;
 
@@ -10475,6 +10489,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     output reg  push;
     output reg  push_q;
     output reg  [98:0] tx_frame;
+    output reg  abort_a;
+    output reg  abort_b;
     output reg  pop;
     output reg  rearm_err;
     output reg  rearm_alc;
@@ -10508,6 +10524,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     localparam  t_dlc = 5'b0;
     localparam  t_queue = 5'b1000;
     localparam  t_push = 5'b0;
+    localparam  t_abort_a = 5'b1;
+    localparam  t_abort_b = 5'b10;
     localparam  r_pop = 5'b0;
     localparam  c_clear = 5'b0;
     localparam  i_rx = 5'b0;
@@ -10802,6 +10820,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         push = 1'b0;
         pop = 1'b0;
         stats_clear = 1'b0;
+        abort_a = 1'b0;
+        abort_b = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr) begin
             target_count = txq_b;
         end
@@ -10859,13 +10879,20 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
                 tx_data1_q__d = wdat;
             end
             else if (wb_adr_i == a_tx_cmd) begin
-                if (wb_dat_i[t_push]) begin
+                if ((wb_dat_i[t_abort_a] | wb_dat_i[t_abort_b]) & (wb_dat_i[t_push] | ctrl__dmr)) begin
+                    illegal = 1'b1;
+                end
+                else if (wb_dat_i[t_push]) begin
                     if (ctrl__reset_mode | (target_count == queue_full)) begin
                         illegal = 1'b1;
                     end
                     else begin
                         push = 1'b1;
                     end
+                end
+                else begin
+                    abort_a = wb_dat_i[t_abort_a];
+                    abort_b = wb_dat_i[t_abort_b];
                 end
             end
             else if (wb_adr_i == a_rx_cmd) begin
@@ -10909,6 +10936,8 @@ module drcc__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
             push = 1'b0;
             pop = 1'b0;
             stats_clear = 1'b0;
+            abort_a = 1'b0;
+            abort_b = 1'b0;
             err_q__d = 1'b0;
         end
         wb_ack_o = bus__wb_ack_o & ~err_q__q;
@@ -12510,7 +12539,7 @@ module drcc__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
 endmodule // drcc__ticker
 
 
-module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
+module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,abort_a,abort_b,chan_abort_a,chan_abort_b,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
 
     // Module arguments
@@ -12525,6 +12554,10 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
     input wire  push_q;
     input wire  [98:0] push_frame;
     input wire  pop_red;
+    input wire  abort_a;
+    input wire  abort_b;
+    output reg  chan_abort_a;
+    output reg  chan_abort_b;
     input wire  done_a;
     input wire  failed_a;
     input wire  done_b;
@@ -12573,8 +12606,14 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
     reg  busy_a__q;
     reg  busy_b__d;
     reg  busy_b__q;
+    reg  chan_abort_a_q__d;
+    reg  chan_abort_a_q__q;
+    reg  chan_abort_b_q__d;
+    reg  chan_abort_b_q__q;
 
     // Local signals
+    reg  holds_a;
+    reg  holds_b;
     reg  pop_a;
     reg  [3:0] pop_n;
     reg  [2:0] dmr_slot;
@@ -12610,6 +12649,8 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
         req_b_q__d = req_b_q__q;
         busy_a__d = busy_a__q;
         busy_b__d = busy_b__q;
+        chan_abort_a_q__d = chan_abort_a_q__q;
+        chan_abort_b_q__d = chan_abort_b_q__q;
         ram__clk = clk;
         ram__read_enable = 1'b1;
         if (dmr) begin
@@ -12686,9 +12727,28 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
         else if (~push_b & pop_b) begin
             cnt_b__d = cnt_b__q - one4;
         end
+        holds_a = busy_a__q & ~done_a & ~failed_a & ~redundancy;
+        holds_b = busy_b__q & ~done_b & ~failed_b & ~redundancy;
+        if (abort_a) begin
+            cnt_a__d = zero4;
+            if (redundancy & (cnt_a__q != zero4) & ~pop_a) begin
+                cnt_a__d = one4;
+            end
+            if (holds_a) begin
+                cnt_a__d = one4;
+            end
+        end
+        if (abort_b) begin
+            cnt_b__d = zero4;
+            if (holds_b) begin
+                cnt_b__d = one4;
+            end
+        end
+        chan_abort_a_q__d = abort_a & holds_a & ~dmr;
+        chan_abort_b_q__d = abort_b & holds_b & ~dmr;
         rd_sel__d = ~rd_sel__q & ~redundancy;
-        req_a_q__d = ~redundancy & ~dmr & ~rd_sel__q & (cnt_a__q != zero4) & ~busy_a__q & ~req_a_q__q;
-        req_b_q__d = ~redundancy & ~dmr & rd_sel__q & (cnt_b__q != zero4) & ~busy_b__q & ~req_b_q__q;
+        req_a_q__d = ~redundancy & ~dmr & ~rd_sel__q & (cnt_a__q != zero4) & ~busy_a__q & ~req_a_q__q & ~abort_a;
+        req_b_q__d = ~redundancy & ~dmr & rd_sel__q & (cnt_b__q != zero4) & ~busy_b__q & ~req_b_q__q & ~abort_b;
         busy_a__d = busy_a__q | req_a_q__d;
         busy_b__d = busy_b__q | req_b_q__d;
         if (dmr | (~redundancy & (done_a | failed_a))) begin
@@ -12709,6 +12769,8 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
             req_b_q__d = 1'b0;
             busy_a__d = 1'b0;
             busy_b__d = 1'b0;
+            chan_abort_a_q__d = 1'b0;
+            chan_abort_b_q__d = 1'b0;
             done_evt = 1'b0;
             failed_evt = 1'b0;
         end
@@ -12716,6 +12778,8 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
         count_b = cnt_b__q;
         req_a = req_a_q__q;
         req_b = req_b_q__q;
+        chan_abort_a = chan_abort_a_q__q;
+        chan_abort_b = chan_abort_b_q__q;
         rd_sel_o = rd_sel__q;
     end
 
@@ -12730,6 +12794,8 @@ module drcc__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,
         req_b_q__q <= req_b_q__d;
         busy_a__q <= busy_a__d;
         busy_b__q <= busy_b__d;
+        chan_abort_a_q__q <= chan_abort_a_q__d;
+        chan_abort_b_q__q <= chan_abort_b_q__d;
     end
 
 endmodule // drcc__txbuf

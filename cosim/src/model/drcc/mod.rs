@@ -192,6 +192,7 @@ impl DrccModel {
                 self.txq.rd
             },
             tx_abort: self.dmr.abort[c]
+                || self.txq.abort[c]
                 || if c == 0 {
                     self.fsm.abort_a
                 } else {
@@ -255,6 +256,7 @@ impl DrccModel {
         let mut ints = 0u32;
         let mut w1c = 0u32;
         let mut push = None;
+        let mut abort = [false; 2];
         let mut pop = false;
         let mut dmr_write = None;
         // bus_contract.md §1: an access is taken unless it is the one just
@@ -331,7 +333,13 @@ impl DrccModel {
                     idx::TX_DATA0 => n.tx_data[0] = d,
                     idx::TX_DATA1 => n.tx_data[1] = d,
                     idx::TX_CMD => {
-                        if d & 1 != 0 {
+                        let aborts = [tx_cmd::ABORT_A, tx_cmd::ABORT_B].map(|b| d & b != 0);
+                        if aborts.contains(&true) && (d & tx_cmd::PUSH != 0 || dmr_mode) {
+                            // §11.5: an abort with a push, or in DMR mode.
+                            ints |= int::ILLEGAL;
+                        } else if d & tx_cmd::PUSH == 0 {
+                            abort = aborts;
+                        } else {
                             let q = if redundancy || dmr_mode {
                                 0
                             } else {
@@ -463,6 +471,7 @@ impl DrccModel {
             redundancy,
             dmr: dmr_mode.then_some((dmr_off, dev.pop)),
             push,
+            abort,
             fsm_pop: fev.pop,
             done: [pa.tx_done, pb.tx_done],
             failed: [pa.tx_failed, pb.tx_failed],

@@ -16,6 +16,7 @@ mod identification;
 mod reception;
 mod registers;
 mod star_node;
+mod tx_abort;
 
 // Word indices (contract §3).
 const ID: u8 = 0;

@@ -19,6 +19,7 @@ mod registers;
 mod star_node;
 mod stats_clear;
 mod timestamps_events;
+mod tx_abort;
 
 // Word indices (contract §3).
 const ID: u8 = 0;

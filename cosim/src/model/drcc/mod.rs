@@ -203,6 +203,7 @@ impl DrccModel {
                 self.txq.rd
             },
             tx_abort: self.dmr.abort[c]
+                || self.txq.abort[c]
                 || if c == 0 {
                     self.fsm.abort_a
                 } else {
@@ -265,7 +266,7 @@ impl DrccModel {
         // Wishbone (§2, §3, §9, §11).
         let acc = self.access(i, &mut n);
         let mut ints = acc.ints;
-        let (take, w1c, push, pop) = (acc.take, acc.w1c, acc.push, acc.pop);
+        let (take, w1c, push, pop, abort) = (acc.take, acc.w1c, acc.push, acc.pop, acc.abort);
 
         // Echo (§4.4): in a star node, a channel's reception of the attempted head
         // message (the TX RAM read data) is the node's own frame heard through the
@@ -381,6 +382,7 @@ impl DrccModel {
             redundancy,
             dmr: dmr_mode.then_some((dmr_off, dev.pop)),
             push,
+            abort,
             fsm_pop: fev.pop,
             done: [pa.tx_done, pb.tx_done],
             failed: [pa.tx_failed, pb.tx_failed],

@@ -290,6 +290,8 @@ pub(super) struct Access {
     pub(super) w1c: u32,
     /// `TX_CMD.push`: the target queue and the staged frame, normalized.
     pub(super) push: Option<(usize, Frame)>,
+    /// `TX_CMD.abort_a`, `abort_b` (§11.5), legal ones only.
+    pub(super) abort: [bool; 2],
     /// `RX_CMD.pop`.
     pub(super) pop: bool,
     /// A DMR register write, applied after the DMR block's edge.
@@ -383,7 +385,13 @@ impl DrccModel {
                     idx::TX_DATA0 => n.tx_data[0] = d,
                     idx::TX_DATA1 => n.tx_data[1] = d,
                     idx::TX_CMD => {
-                        if d & 1 != 0 {
+                        let aborts = [tx_cmd::ABORT_A, tx_cmd::ABORT_B].map(|b| d & b != 0);
+                        if aborts.contains(&true) && (d & tx_cmd::PUSH != 0 || dmr_mode) {
+                            // §11.5: an abort with a push, or in DMR mode.
+                            a.ints |= int::ILLEGAL;
+                        } else if d & tx_cmd::PUSH == 0 {
+                            a.abort = aborts;
+                        } else {
                             let q = if redundancy || dmr_mode {
                                 0
                             } else {

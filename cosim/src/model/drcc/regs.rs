@@ -208,6 +208,15 @@ pub mod frame_ctrl {
     pub const DEFINED: u32 = DLC_MASK | QUEUE;
 }
 
+/// `TX_CMD` fields (write only).
+pub mod tx_cmd {
+    /// Append the staged frame to a TX queue (§6).
+    pub const PUSH: u32 = 1 << 0;
+    /// Drop queue A's / B's frames not yet in a channel (§11.5).
+    pub const ABORT_A: u32 = 1 << 1;
+    pub const ABORT_B: u32 = 1 << 2;
+}
+
 /// Main FSM state encoding (Table 1).
 pub mod state {
     pub const IDLE1: u8 = 0;

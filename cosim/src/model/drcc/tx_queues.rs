@@ -3,6 +3,13 @@
 //! channels; the normal-mode request / busy logic of each channel. In DMR mode
 //! (dmr_contract.md §5) queue A is the one logical queue, read at `head + off[L]`
 //! for the line the read port serves; the DMR block pops what both lines sent.
+//! The host's abort (§11.5) drops a queue's frames behind the one in the channel
+//! (normal mode) or behind the head (redundancy mode).
+//!
+//! Abort readings: "DMR mode" is `CTRL.dmr` as written, so an abort is refused
+//! while `CTRL.dmr` is set even in reset mode; an abort of a queue that is
+//! neither held nor counted (count 0) is legal and does nothing; `abort_b` in
+//! redundancy mode is not refused.
 
 use crate::frame::Frame;
 
@@ -13,6 +20,9 @@ pub struct TxqInputs {
     pub redundancy: bool,
     /// A `TX_CMD.push` write at this edge, with its target queue.
     pub push: Option<(usize, Frame)>,
+    /// A `TX_CMD` write with `abort_a` / `abort_b` at this edge, already judged
+    /// legal (no `push`, not DMR mode, §11.5).
+    pub abort: [bool; 2],
     /// Redundancy mode: the main FSM's "finish" pops queue A.
     pub fsm_pop: bool,
     /// DMR mode: the read offset `off[rd_sel]` and the entries to pop (§5).
@@ -45,6 +55,9 @@ pub struct TxQueues {
     /// Normal mode: channel `tx_req` pulses.
     pub req: [bool; 2],
     pub busy: [bool; 2],
+    /// Normal mode: the channels' `tx_abort` pulse registers (§11.5), set at the
+    /// edge of a host abort that keeps the frame the channel holds.
+    pub abort: [bool; 2],
     /// Entries per queue `Q` (generation parameter, not reset).
     pub depth: u8,
 }
@@ -60,6 +73,7 @@ impl Default for TxQueues {
             rd_sel: 0,
             req: [false; 2],
             busy: [false; 2],
+            abort: [false; 2],
             depth: 8,
         }
     }
@@ -112,11 +126,15 @@ impl TxQueues {
             self.rd_sel = 0;
             self.req = [false; 2];
             self.busy = [false; 2];
+            self.abort = [false; 2];
             return ev;
         }
         let (head, count) = (self.head, self.count);
         let mut pop = [false; 2];
         let mut dmr_pop = 0;
+        // §11.5: what an abort leaves in each queue (None: no abort of that queue).
+        let mut kept: [Option<u8>; 2] = [None; 2];
+        self.abort = [false; 2];
         if let Some((_, p)) = i.dmr {
             // DMR: the lines' own request logic lives in the DMR block (§5).
             dmr_pop = p.min(count[0]);
@@ -125,13 +143,25 @@ impl TxQueues {
             self.rd_sel ^= 1;
         } else if i.redundancy {
             pop[0] = i.fsm_pop;
+            // The head stays unless the main FSM pops it at this edge.
+            if i.abort[0] {
+                kept[0] = Some((count[0] != 0 && !i.fsm_pop) as u8);
+            }
             self.req = [false; 2];
             self.busy = [false; 2];
             self.rd_sel = 0;
         } else {
             let (req, busy) = (self.req, self.busy);
             for c in 0..2 {
-                self.req[c] = self.rd_sel as usize == c && count[c] > 0 && !busy[c] && !req[c];
+                self.req[c] =
+                    self.rd_sel as usize == c && count[c] > 0 && !busy[c] && !req[c] && !i.abort[c];
+                if i.abort[c] {
+                    // Only the frame channel c holds stays, and the channel is
+                    // told to drop it at the next edge.
+                    let held = busy[c] && !i.done[c] && !i.failed[c];
+                    kept[c] = Some(held as u8);
+                    self.abort[c] = held;
+                }
                 if i.done[c] || i.failed[c] {
                     pop[c] = true;
                     self.busy[c] = false;
@@ -159,7 +189,10 @@ impl TxQueues {
                 (pop[c] && count[c] > 0) as u8
             };
             self.head[c] = (head[c] + popped) & (self.q() - 1);
-            self.count[c] = count[c] + (push_q == Some(c)) as u8 - popped;
+            self.count[c] = match kept[c] {
+                Some(k) => k,
+                None => count[c] + (push_q == Some(c)) as u8 - popped,
+            };
         }
         ev
     }

@@ -71,6 +71,12 @@ fn model_host_and_generated_header_agree_on_every_register() {
         ("SIZES", idx::SIZES, reg::SIZES),
         ("CAP_A", idx::CAP_A, reg::CAP_A),
         ("CAP_B", idx::CAP_B, reg::CAP_B),
+        ("FILT_ID0", idx::FILT_ID0, reg::FILT_ID0),
+        ("FILT_MASK0", idx::FILT_MASK0, reg::FILT_MASK0),
+        ("FILT_ID1", idx::FILT_ID1, reg::FILT_ID1),
+        ("FILT_MASK1", idx::FILT_MASK1, reg::FILT_MASK1),
+        ("RX_TIME", idx::RX_TIME, reg::RX_TIME),
+        ("STATS_CLR", idx::STATS_CLR, reg::STATS_CLR),
     ];
     let header = header_offsets();
     assert_eq!(

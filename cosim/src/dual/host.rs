@@ -59,6 +59,12 @@ pub mod reg {
     pub const SIZES: u8 = map::SIZES as u8;
     pub const CAP_A: u8 = map::CAP_A as u8;
     pub const CAP_B: u8 = map::CAP_B as u8;
+    pub const FILT_ID0: u8 = map::FILT_ID0 as u8;
+    pub const FILT_MASK0: u8 = map::FILT_MASK0 as u8;
+    pub const FILT_ID1: u8 = map::FILT_ID1 as u8;
+    pub const FILT_MASK1: u8 = map::FILT_MASK1 as u8;
+    pub const RX_TIME: u8 = map::RX_TIME as u8;
+    pub const STATS_CLR: u8 = map::STATS_CLR as u8;
     pub const DMR_CFG: u8 = map::DMR_CFG as u8;
     pub const DMR_TIME: u8 = map::DMR_TIME as u8;
     pub const DMR_CS: u8 = map::DMR_CS as u8;

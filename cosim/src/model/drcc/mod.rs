@@ -41,7 +41,8 @@
 //!    current ones after the `k = 0 -> 1` clamp (writing k = 0 while k = 1 is not
 //!    illegal); reserved bits are ignored. `policy = 3` outside reset mode is such a
 //!    difference (illegal, `reset_mode` still taken).
-//! 7. A write to `TX_CMD` / `RX_CMD` with bit 0 clear does nothing (not illegal).
+//! 7. A write to `TX_CMD` with bits 0..2 clear, or to `RX_CMD` with bit 0 clear,
+//!    does nothing (not illegal; `TX_CMD`'s abort bits: §11.5).
 //!    `TX_CMD` and `RX_CMD` read 0. Writes to `INT_STATUS` (W1C) and every RW
 //!    register are legal in any mode.
 //! 8. `rxp` set (a new `rx_valid`) and clear (the writer takes it) at the same edge:

@@ -189,7 +189,7 @@ fn normal_abort_before_the_channel_has_the_frame_empties_the_queue() {
     let data = 0x0101_0101 * (f.id & 0xFF);
     sys.write(0, TX_DATA0, data);
     sys.write(0, TX_DATA1, data);
-    if (sys.clock + 1 - x) % 2 == 0 {
+    if (sys.clock + 1 - x).is_multiple_of(2) {
         sys.step();
     }
     let push = write_watch(&mut sys, 0, TX_CMD, PUSH);

@@ -189,6 +189,8 @@ pub struct ChannelInputs {
     pub tx_abort: bool,
     /// Error counter reset: TEC = REC = 0, error active, unless bus-off (§4.5).
     pub err_reset: bool,
+    /// Bus-off hold: a bus-off node does not count its recovery (§4.5).
+    pub boff_hold: bool,
 }
 
 /// Named internal signals compared clock by clock in co-simulation.

@@ -232,6 +232,7 @@ mod tests {
             },
             tx_abort: true,
             err_reset: true,
+            boff_hold: false,
         };
         let mut p = CanChannelIn::default();
         encode(&inputs, &mut p);

@@ -397,6 +397,7 @@ impl System {
                 tx_frame: self.tx_frame[i],
                 tx_abort,
                 err_reset: false,
+                boff_hold: false,
             };
             let out = self.engines[i].step(&inputs);
             self.sample.tx_req[i] = tx_req;

@@ -85,6 +85,7 @@ impl System {
                 tx_frame: self.tx_frame[i],
                 tx_abort: false,
                 err_reset: false,
+                boff_hold: false,
             });
         }
         self.sample.rst = false;

@@ -241,6 +241,7 @@ impl Sys {
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: false,
                 err_reset: false,
+                boff_hold: false,
             });
             if p.out.rx_valid {
                 p.received.push((self.clock + 1, p.out.rx_frame));

@@ -224,6 +224,7 @@ impl Sys {
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: false,
                 err_reset: false,
+                boff_hold: false,
             });
             if p.out.rx_valid {
                 p.received.push(p.out.rx_frame);

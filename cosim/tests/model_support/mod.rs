@@ -235,6 +235,7 @@ impl Bus {
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: std::mem::take(&mut self.abort[i]),
                 err_reset: false,
+                boff_hold: false,
             });
             self.tx[i] = out.tx;
             outs.push(out);
@@ -320,6 +321,7 @@ impl Tester {
                 tx_frame: req.unwrap_or_default(),
                 tx_abort: false,
                 err_reset: false,
+                boff_hold: false,
             });
             self.tx = out.tx;
             if self.record {

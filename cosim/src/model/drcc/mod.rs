@@ -170,6 +170,7 @@ impl DrccModel {
                 || self.dmr.restart[c],
             // §5: a star node's restart is soft (counters only, no re-integration).
             err_reset: self.aux[c].restarting() && r.star(),
+            boff_hold: false,
             rx,
             timing: BitTiming {
                 brp: r.brp(),

@@ -146,42 +146,59 @@ fn sps(o: &[DrccOutputs; 2], c: usize) -> u32 {
     o.iter().map(|o| chan(o, c).1 as u32).sum()
 }
 
-/// `busoff_manual` = 1, normal mode: channel A, driven bus-off, stays bus-off
+/// `busoff_manual` = 1, normal mode: channel `c`, driven bus-off, stays bus-off
 /// with its pin recessive for 5 x 128 x 11 bit times of idle bus, keeping its
-/// frame (queue A count 1, nothing on bus A). `recover_a` is taken (ack, not
-/// illegal) at edge E: `recover_a` is 1 after E, so `boff_hold` is 0 from edge
-/// E+1 on and the channel recovers at exactly the 1408th sample point from E+1
-/// on (§11.6, timing contract §4.5: the counts stood still at 0 since the
-/// bus-off entry). The held frame is then sent once (tx_done, queue empty).
-/// The permission ended with the bus-off (it is 0 from the first edge after the
-/// recovery): a second bus-off is held again.
-#[test]
-fn manual_recovery_waits_for_recover_then_takes_128_x_11_bits() {
-    let (mut sys, [pa, _]) = setup(BUSOFF_MANUAL | policy(1) | k(1));
+/// frame (queue `c` count 1, nothing on its bus), though the other channel's
+/// `recover` bit (not bus-off: nothing, §11.6) was written at the start.
+/// `recover_c` is taken (ack, not illegal) at edge E: `recover_c` is 1 after E,
+/// so `boff_hold` is 0 from edge E+1 on and the channel recovers at exactly the
+/// 1408th sample point from E+1 on (§11.6, timing contract §4.5: the counts
+/// stood still at 0 since the bus-off entry). The held frame is then sent once
+/// (tx_done, queue empty). The permission ended with the bus-off (it is 0 from
+/// the first edge after the recovery): a second bus-off is held again.
+fn manual_recovery(c: usize) {
+    let (mut sys, plain) = setup(BUSOFF_MANUAL | policy(1) | k(1));
+    let [own, other] = [[RECOVER_A, RECOVER_B][c], [RECOVER_A, RECOVER_B][1 - c]];
     let f = frame(0x0A5, false, false, 2, &[0x12, 0x34]);
-    cut_to_bus_off(&mut sys, 0, &f);
-    reconnect(&mut sys, 0);
-    held(&mut sys, 0, 5 * RECOVERY as u64);
-    assert!(sys.plain[pa].received.is_empty(), "nothing sent on bus A");
+    cut_to_bus_off(&mut sys, c, &f);
+    reconnect(&mut sys, c);
+    let o = tx_cmd(&mut sys, other);
+    assert!(o[0].wb_ack, "the other channel's recover is taken");
+    held(&mut sys, c, 5 * RECOVERY as u64);
+    assert!(sys.plain[plain[c]].received.is_empty(), "nothing sent");
     let s = sys.read(0, STATUS);
-    assert_eq!(s >> 9 & 3, 2, "STATUS: channel A bus-off");
-    assert_eq!(status_txq(s, 0), 1, "the frame stays in queue A");
-    assert_eq!(sys.read(0, CHAN_A_ERR) >> 24 & 3, 2);
-    let o = tx_cmd(&mut sys, RECOVER_A);
-    assert!(o[0].wb_ack && !o[0].wb_err, "recover_a is taken");
+    assert_eq!(s >> (9 + 2 * c) & 3, 2, "STATUS: channel {c} bus-off");
+    assert_eq!(status_txq(s, c as u32), 1, "the frame stays in queue {c}");
+    assert_eq!(sys.read(0, [CHAN_A_ERR, CHAN_B_ERR][c]) >> 24 & 3, 2);
+    let o = tx_cmd(&mut sys, own);
+    assert!(o[0].wb_ack && !o[0].wb_err, "recover_c is taken");
     // o[0] is edge E (still held); o[1] is E+1, the first edge that counts.
-    let n = samples_to_recovery(&mut sys, 0, chan(&o[1], 0).1 as u32);
+    let n = samples_to_recovery(&mut sys, c, chan(&o[1], c).1 as u32);
     assert_eq!(n, RECOVERY, "128 x 11 recessive bits after the write");
     assert_eq!(sys.read(0, INT_STATUS) & I_ILLEGAL, 0);
     sys.run(200 * CPB);
-    assert_eq!(sys.plain[pa].received, vec![f], "the held frame, once");
-    assert_eq!(status_txq(sys.read(0, STATUS), 0), 0);
+    assert_eq!(
+        sys.plain[plain[c]].received,
+        vec![f],
+        "the held frame, once"
+    );
+    assert_eq!(status_txq(sys.read(0, STATUS), c as u32), 0);
     assert_eq!(sys.read(0, INT_STATUS) & I_TX_DONE, I_TX_DONE);
 
     // The permission is gone: the next bus-off is held again.
     let g = frame(0x0A6, false, false, 1, &[0x56]);
-    cut_to_bus_off(&mut sys, 0, &g);
-    held(&mut sys, 0, 3 * RECOVERY as u64);
+    cut_to_bus_off(&mut sys, c, &g);
+    held(&mut sys, c, 3 * RECOVERY as u64);
+}
+
+#[test]
+fn manual_recovery_of_a_waits_for_recover_a_then_takes_128_x_11_bits() {
+    manual_recovery(0);
+}
+
+#[test]
+fn manual_recovery_of_b_waits_for_recover_b_then_takes_128_x_11_bits() {
+    manual_recovery(1);
 }
 
 /// `busoff_manual` = 0: the recovery is automatic, the 1408th recessive sample

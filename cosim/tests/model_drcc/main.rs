@@ -119,6 +119,7 @@ fn frame(id: u32, ide: bool, rtr: bool, dlc: u8, data: &[u8]) -> Frame {
 }
 
 /// A DRCC node: its engine, its last outputs and the Wishbone inputs of the next clock.
+#[derive(Clone)]
 struct Node {
     engine: DrccModelEngine,
     out: DrccOutputs,
@@ -128,6 +129,7 @@ struct Node {
 }
 
 /// A plain channel on one bus: acknowledges, receives, transmits on request.
+#[derive(Clone)]
 struct Plain {
     chan: ChannelModel,
     out: ChannelOutputs,
@@ -139,6 +141,7 @@ struct Plain {
 }
 
 /// Two wired-AND buses (A = 0, B = 1) of DRCC nodes and plain nodes.
+#[derive(Clone)]
 struct Sys {
     nodes: Vec<Node>,
     plain: Vec<Plain>,
@@ -359,7 +362,7 @@ fn status_rx_count(s: u32) -> u32 {
 }
 
 /// Everything the paper scenario records, clock by clock.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Trace {
     states: Vec<(u64, u8)>,
     aux_a: Vec<(u64, u8)>,

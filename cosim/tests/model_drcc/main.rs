@@ -10,6 +10,7 @@ use drcc_cosim::model::drcc::DrccParams;
 use drcc_cosim::model::ChannelModel;
 use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Frame};
 
+mod busoff_recovery;
 mod channel_switching;
 mod driver_features;
 mod filters;
@@ -144,6 +145,8 @@ struct Sys {
     clock: u64,
     /// Node 0's paper probes, every clock.
     trace: Trace,
+    /// Bus A / B held dominant (a fault of the line), whatever the nodes drive.
+    stuck: [bool; 2],
 }
 
 impl Sys {
@@ -170,6 +173,7 @@ impl Sys {
             plain: Vec::new(),
             clock: 0,
             trace: Trace::default(),
+            stuck: [false; 2],
         }
     }
 
@@ -191,7 +195,7 @@ impl Sys {
 
     /// The level of each bus as the nodes see it in the next step.
     fn levels(&self) -> [bool; 2] {
-        let mut l = [true, true];
+        let mut l = self.stuck.map(|s| !s);
         for n in &self.nodes {
             l[0] &= n.out.chan_a_tx || !n.on[0];
             l[1] &= n.out.chan_b_tx || !n.on[1];

@@ -87,6 +87,9 @@ fn random_config(rng: &mut SplitMix64, timing: u32) -> HostConfig {
         // Drawn last, so the other fields keep their draws; on a dual bus the
         // echo (DRCC contract §4.4) fires only for another node's identical frame.
         star: redundancy && rng.percent(25),
+        // Drawn after the rest for the same reason; a channel that goes bus-off
+        // then stays held (the random host never writes recover, §11.6).
+        busoff_manual: rng.percent(25),
     }
 }
 

@@ -67,6 +67,9 @@
 //                                is not bus-off ends with TEC = REC = 0, error active; it stays on
 //                                the bus (no re-integration, unlike `rst`). 0 in normal use
 //                                (contract §4.5).
+// input      1  boff_hold        Bus-off hold: while 1, a bus-off node does not count its recovery
+//                                (128 runs of 11 recessive bits); it stays bus-off until the host
+//                                lets it go. 0 in normal use (contract §4.5).
 // output     1  tx_pending       A frame is latched and not yet sent or dropped: 1 from the
 //                                `tx_req` edge until `tx_done` or `tx_failed`.
 // output     1  tx_failed        One-clock pulse: the pending frame was dropped (single-shot
@@ -138,7 +141,7 @@
 
 
 
-module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     // Clock. Every register changes at its rising edge; the bit timing is counted in its periods (a
@@ -204,6 +207,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     // = REC = 0, error active; it stays on the bus (no re-integration, unlike `rst`). 0 in normal
     // use (contract §4.5).
     input wire  err_reset;
+    // Bus-off hold: while 1, a bus-off node does not count its recovery (128 runs of 11 recessive
+    // bits); it stays bus-off until the host lets it go. 0 in normal use (contract §4.5).
+    input wire  boff_hold;
     // A frame is latched and not yet sent or dropped: 1 from the `tx_req` edge until `tx_done` or
     // `tx_failed`.
     output reg  tx_pending;
@@ -358,6 +364,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     reg  [63:0] bsp__tx_data;
     reg  bsp__tx_abort;
     reg  bsp__err_reset;
+    reg  bsp__boff_hold;
     wire  bsp__tx_pending;
     wire  bsp__tx_failed;
     wire  bsp__tx_done;
@@ -449,6 +456,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         .tx_data(bsp__tx_data),
         .tx_abort(bsp__tx_abort),
         .err_reset(bsp__err_reset),
+        .boff_hold(bsp__boff_hold),
         .tx_pending(bsp__tx_pending),
         .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
@@ -522,6 +530,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
         bsp__err_reset = err_reset;
+        bsp__boff_hold = boff_hold;
         bsp__mode = cfg_regs__mode;
         bsp__ewl = cfg_regs__ewl;
         bsp__single_shot = cfg_regs__single_shot;
@@ -557,7 +566,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
 endmodule // can_channel
 
 
-module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -579,6 +588,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     input wire  [63:0] tx_data;
     input wire  tx_abort;
     input wire  err_reset;
+    input wire  boff_hold;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -642,6 +652,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     wire  fsm__hard_sync_enable;
     reg  fsm__listen_only;
     reg  fsm__loopback;
+    reg  fsm__boff_hold;
     reg  fsm__tx_starts;
     reg  fsm__tx_joins;
     reg  fsm__frame_ide;
@@ -918,6 +929,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .hard_sync_enable(fsm__hard_sync_enable),
         .listen_only(fsm__listen_only),
         .loopback(fsm__loopback),
+        .boff_hold(fsm__boff_hold),
         .tx_starts(fsm__tx_starts),
         .tx_joins(fsm__tx_joins),
         .frame_ide(fsm__frame_ide),
@@ -1227,6 +1239,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         fsm__sample = sample;
         fsm__sampled = sampled;
         fsm__listen_only = listen_only;
+        fsm__boff_hold = boff_hold;
         fsm__loopback = loopback;
         fsm__tx_starts = tx_request__starts;
         fsm__tx_joins = tx_request__joins;
@@ -2494,7 +2507,7 @@ module can_channel__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
 endmodule // can_channel__bsp__frame_crc__crc_step
 
 
-module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
+module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
 
     // Module arguments
     input wire  clk;
@@ -2504,6 +2517,7 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only
     output reg  hard_sync_enable;
     input wire  listen_only;
     input wire  loopback;
+    input wire  boff_hold;
     input wire  tx_starts;
     input wire  tx_joins;
     input wire  frame_ide;
@@ -2966,24 +2980,26 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only
                     end
                 Field__BusOff:
                     begin
-                        if (sampled) begin
-                            if (decode__bc10) begin
-                                bit_cnt_n = n7_0;
-                                if (decode__recovery_end) begin
-                                    field_n = Field__Idle;
-                                    recovered = 1'b1;
-                                    recovery_cnt__d = n7_0;
+                        if (~boff_hold) begin
+                            if (sampled) begin
+                                if (decode__bc10) begin
+                                    bit_cnt_n = n7_0;
+                                    if (decode__recovery_end) begin
+                                        field_n = Field__Idle;
+                                        recovered = 1'b1;
+                                        recovery_cnt__d = n7_0;
+                                    end
+                                    else begin
+                                        recovery_cnt__d = recovery_cnt__q + n7_1;
+                                    end
                                 end
                                 else begin
-                                    recovery_cnt__d = recovery_cnt__q + n7_1;
+                                    bit_cnt_n = bit_cnt_inc;
                                 end
                             end
                             else begin
-                                bit_cnt_n = bit_cnt_inc;
+                                bit_cnt_n = n7_0;
                             end
-                        end
-                        else begin
-                            bit_cnt_n = n7_0;
                         end
                     end
                 default:

@@ -472,6 +472,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  [1:0] regs__mode_b;
     wire  regs__single_shot;
     wire  regs__dmr;
+    wire  regs__busoff_manual;
     wire  [9:0] regs__brp;
     wire  [3:0] regs__tseg1;
     wire  [2:0] regs__tseg2;
@@ -486,6 +487,8 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  [98:0] regs__tx_frame;
     wire  regs__abort_a;
     wire  regs__abort_b;
+    wire  regs__recover_a;
+    wire  regs__recover_b;
     wire  regs__pop;
     wire  regs__rearm_err;
     wire  regs__rearm_alc;
@@ -927,6 +930,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  [63:0] chan_a__tx_data;
     reg  chan_a__tx_abort;
     reg  chan_a__err_reset;
+    reg  chan_a__boff_hold;
     wire  chan_a__tx_pending;
     wire  chan_a__tx_failed;
     wire  chan_a__tx_done;
@@ -974,6 +978,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     reg  [63:0] chan_b__tx_data;
     reg  chan_b__tx_abort;
     reg  chan_b__err_reset;
+    reg  chan_b__boff_hold;
     wire  chan_b__tx_pending;
     wire  chan_b__tx_failed;
     wire  chan_b__tx_done;
@@ -1001,6 +1006,18 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
     wire  [7:0] chan_b__cnt_crc;
     wire  [7:0] chan_b__cnt_form;
     wire  [7:0] chan_b__cnt_ack;
+    reg  busoff_a__clk;
+    reg  busoff_a__rst;
+    reg  busoff_a__busoff_manual;
+    reg  busoff_a__recover;
+    reg  [1:0] busoff_a__err_state;
+    wire  busoff_a__boff_hold;
+    reg  busoff_b__clk;
+    reg  busoff_b__rst;
+    reg  busoff_b__busoff_manual;
+    reg  busoff_b__recover;
+    reg  [1:0] busoff_b__err_state;
+    wire  busoff_b__boff_hold;
 
     // Local signals
     reg  clear;
@@ -1068,6 +1085,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .mode_b(regs__mode_b),
         .single_shot(regs__single_shot),
         .dmr(regs__dmr),
+        .busoff_manual(regs__busoff_manual),
         .brp(regs__brp),
         .tseg1(regs__tseg1),
         .tseg2(regs__tseg2),
@@ -1082,6 +1100,8 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .tx_frame(regs__tx_frame),
         .abort_a(regs__abort_a),
         .abort_b(regs__abort_b),
+        .recover_a(regs__recover_a),
+        .recover_b(regs__recover_b),
         .pop(regs__pop),
         .rearm_err(regs__rearm_err),
         .rearm_alc(regs__rearm_alc),
@@ -1559,6 +1579,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .tx_data(chan_a__tx_data),
         .tx_abort(chan_a__tx_abort),
         .err_reset(chan_a__err_reset),
+        .boff_hold(chan_a__boff_hold),
         .tx_pending(chan_a__tx_pending),
         .tx_failed(chan_a__tx_failed),
         .tx_done(chan_a__tx_done),
@@ -1608,6 +1629,7 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .tx_data(chan_b__tx_data),
         .tx_abort(chan_b__tx_abort),
         .err_reset(chan_b__err_reset),
+        .boff_hold(chan_b__boff_hold),
         .tx_pending(chan_b__tx_pending),
         .tx_failed(chan_b__tx_failed),
         .tx_done(chan_b__tx_done),
@@ -1635,6 +1657,22 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         .cnt_crc(chan_b__cnt_crc),
         .cnt_form(chan_b__cnt_form),
         .cnt_ack(chan_b__cnt_ack)
+    );
+    drcc_apb__core__busoff busoff_a(
+        .clk(busoff_a__clk),
+        .rst(busoff_a__rst),
+        .busoff_manual(busoff_a__busoff_manual),
+        .recover(busoff_a__recover),
+        .err_state(busoff_a__err_state),
+        .boff_hold(busoff_a__boff_hold)
+    );
+    drcc_apb__core__busoff busoff_b(
+        .clk(busoff_b__clk),
+        .rst(busoff_b__rst),
+        .busoff_manual(busoff_b__busoff_manual),
+        .recover(busoff_b__recover),
+        .err_state(busoff_b__err_state),
+        .boff_hold(busoff_b__boff_hold)
     );
 
     // Update code
@@ -1975,6 +2013,12 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         chan_a__clk = clk;
         chan_a__rst = clear | regs__reset_mode_d | (aux_a__chan_rst & ~regs__star) | dmr_ctl__restart_dcl;
         chan_a__err_reset = aux_a__chan_rst & regs__star;
+        busoff_a__clk = clk;
+        busoff_a__rst = rst;
+        busoff_a__busoff_manual = regs__busoff_manual;
+        busoff_a__recover = regs__recover_a;
+        busoff_a__err_state = chan_a__err_state;
+        chan_a__boff_hold = busoff_a__boff_hold;
         chan_a__cfg_brp = regs__brp;
         chan_a__cfg_tseg1 = regs__tseg1;
         chan_a__cfg_tseg2 = regs__tseg2;
@@ -2003,6 +2047,12 @@ module drcc_apb__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel
         chan_b__clk = clk;
         chan_b__rst = clear | regs__reset_mode_d | (aux_b__chan_rst & ~regs__star) | dmr_ctl__restart_rcl;
         chan_b__err_reset = aux_b__chan_rst & regs__star;
+        busoff_b__clk = clk;
+        busoff_b__rst = rst;
+        busoff_b__busoff_manual = regs__busoff_manual;
+        busoff_b__recover = regs__recover_b;
+        busoff_b__err_state = chan_b__err_state;
+        chan_b__boff_hold = busoff_b__boff_hold;
         chan_b__cfg_brp = regs__brp;
         chan_b__cfg_tseg1 = regs__tseg1;
         chan_b__cfg_tseg2 = regs__tseg2;
@@ -2326,6 +2376,45 @@ module drcc_apb__core__aux__judge(policy,k,stall_limit,err_state,fail_cnt,stall_
 endmodule // drcc_apb__core__aux__judge
 
 
+module drcc_apb__core__busoff(clk,rst,busoff_manual,recover,err_state,boff_hold);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  busoff_manual;
+    input wire  recover;
+    input wire  [1:0] err_state;
+    output reg  boff_hold;
+
+    // Constant declarations
+    localparam  es_bus_off = 2'b10;
+
+    // Stub signals
+    reg  permit__d;
+    reg  permit__q;
+
+    // Local signals
+    reg  bus_off;
+
+    // Update code
+    always @(*) begin
+        permit__d = permit__q;
+        bus_off = err_state == es_bus_off;
+        permit__d = bus_off & (permit__q | recover);
+        if (rst) begin
+            permit__d = 1'b0;
+        end
+        boff_hold = busoff_manual & ~permit__q;
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        permit__q <= permit__d;
+    end
+
+endmodule // drcc_apb__core__busoff
+
+
 module drcc_apb__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
 
     // Module arguments
@@ -2462,7 +2551,7 @@ module drcc_apb__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,
 endmodule // drcc_apb__core__caps
 
 
-module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -2485,6 +2574,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
     input wire  [63:0] tx_data;
     input wire  tx_abort;
     input wire  err_reset;
+    input wire  boff_hold;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -2599,6 +2689,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
     reg  [63:0] bsp__tx_data;
     reg  bsp__tx_abort;
     reg  bsp__err_reset;
+    reg  bsp__boff_hold;
     wire  bsp__tx_pending;
     wire  bsp__tx_failed;
     wire  bsp__tx_done;
@@ -2690,6 +2781,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
         .tx_data(bsp__tx_data),
         .tx_abort(bsp__tx_abort),
         .err_reset(bsp__err_reset),
+        .boff_hold(bsp__boff_hold),
         .tx_pending(bsp__tx_pending),
         .tx_failed(bsp__tx_failed),
         .tx_done(bsp__tx_done),
@@ -2763,6 +2855,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
         bsp__err_reset = err_reset;
+        bsp__boff_hold = boff_hold;
         bsp__mode = cfg_regs__mode;
         bsp__ewl = cfg_regs__ewl;
         bsp__single_shot = cfg_regs__single_shot;
@@ -2798,7 +2891,7 @@ module drcc_apb__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_trip
 endmodule // drcc_apb__core__chan
 
 
-module drcc_apb__core__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_apb__core__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -2820,6 +2913,7 @@ module drcc_apb__core__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard
     input wire  [63:0] tx_data;
     input wire  tx_abort;
     input wire  err_reset;
+    input wire  boff_hold;
     output reg  tx_pending;
     output reg  tx_failed;
     output reg  tx_done;
@@ -2883,6 +2977,7 @@ module drcc_apb__core__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard
     wire  fsm__hard_sync_enable;
     reg  fsm__listen_only;
     reg  fsm__loopback;
+    reg  fsm__boff_hold;
     reg  fsm__tx_starts;
     reg  fsm__tx_joins;
     reg  fsm__frame_ide;
@@ -3159,6 +3254,7 @@ module drcc_apb__core__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard
         .hard_sync_enable(fsm__hard_sync_enable),
         .listen_only(fsm__listen_only),
         .loopback(fsm__loopback),
+        .boff_hold(fsm__boff_hold),
         .tx_starts(fsm__tx_starts),
         .tx_joins(fsm__tx_joins),
         .frame_ide(fsm__frame_ide),
@@ -3468,6 +3564,7 @@ module drcc_apb__core__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard
         fsm__sample = sample;
         fsm__sampled = sampled;
         fsm__listen_only = listen_only;
+        fsm__boff_hold = boff_hold;
         fsm__loopback = loopback;
         fsm__tx_starts = tx_request__starts;
         fsm__tx_joins = tx_request__joins;
@@ -4735,7 +4832,7 @@ module drcc_apb__core__chan__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
 endmodule // drcc_apb__core__chan__bsp__frame_crc__crc_step
 
 
-module drcc_apb__core__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
+module drcc_apb__core__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
 
     // Module arguments
     input wire  clk;
@@ -4745,6 +4842,7 @@ module drcc_apb__core__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,li
     output reg  hard_sync_enable;
     input wire  listen_only;
     input wire  loopback;
+    input wire  boff_hold;
     input wire  tx_starts;
     input wire  tx_joins;
     input wire  frame_ide;
@@ -5207,24 +5305,26 @@ module drcc_apb__core__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,li
                     end
                 Field__BusOff:
                     begin
-                        if (sampled) begin
-                            if (decode__bc10) begin
-                                bit_cnt_n = n7_0;
-                                if (decode__recovery_end) begin
-                                    field_n = Field__Idle;
-                                    recovered = 1'b1;
-                                    recovery_cnt__d = n7_0;
+                        if (~boff_hold) begin
+                            if (sampled) begin
+                                if (decode__bc10) begin
+                                    bit_cnt_n = n7_0;
+                                    if (decode__recovery_end) begin
+                                        field_n = Field__Idle;
+                                        recovered = 1'b1;
+                                        recovery_cnt__d = n7_0;
+                                    end
+                                    else begin
+                                        recovery_cnt__d = recovery_cnt__q + n7_1;
+                                    end
                                 end
                                 else begin
-                                    recovery_cnt__d = recovery_cnt__q + n7_1;
+                                    bit_cnt_n = bit_cnt_inc;
                                 end
                             end
                             else begin
-                                bit_cnt_n = bit_cnt_inc;
+                                bit_cnt_n = n7_0;
                             end
-                        end
-                        else begin
-                            bit_cnt_n = n7_0;
                         end
                     end
                 default:
@@ -10553,7 +10653,7 @@ module drcc_apb__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_
 endmodule // drcc_apb__core__main
 
 
-module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,pop,rearm_err,rearm_alc,stats_clear);
+module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,recover_a,recover_b,pop,rearm_err,rearm_alc,stats_clear);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [0:0] STAR = 1'd1;
 
@@ -10607,6 +10707,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     output reg  [1:0] mode_b;
     output reg  single_shot;
     output reg  dmr;
+    output reg  busoff_manual;
     output reg  [9:0] brp;
     output reg  [3:0] tseg1;
     output reg  [2:0] tseg2;
@@ -10621,6 +10722,8 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     output reg  [98:0] tx_frame;
     output reg  abort_a;
     output reg  abort_b;
+    output reg  recover_a;
+    output reg  recover_b;
     output reg  pop;
     output reg  rearm_err;
     output reg  rearm_alc;
@@ -10656,6 +10759,8 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     localparam  t_push = 5'b0;
     localparam  t_abort_a = 5'b1;
     localparam  t_abort_b = 5'b10;
+    localparam  t_recover_a = 5'b11;
+    localparam  t_recover_b = 5'b100;
     localparam  r_pop = 5'b0;
     localparam  c_clear = 5'b0;
     localparam  i_rx = 5'b0;
@@ -10730,6 +10835,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     wire  [1:0] ctrl__mode_b;
     wire  ctrl__single_shot;
     wire  ctrl__dmr;
+    wire  ctrl__busoff_manual;
     reg  [31:0] ctrl_check__wdat;
     reg  ctrl_check__reset_mode;
     reg  ctrl_check__redundancy;
@@ -10741,6 +10847,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     reg  [1:0] ctrl_check__mode_b;
     reg  ctrl_check__single_shot;
     reg  ctrl_check__dmr;
+    reg  ctrl_check__busoff_manual;
     wire  [3:0] ctrl_check__k_in;
     wire  ctrl_check__refused;
     wire  ctrl_check__illegal;
@@ -10819,7 +10926,8 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         .mode_a(ctrl__mode_a),
         .mode_b(ctrl__mode_b),
         .single_shot(ctrl__single_shot),
-        .dmr(ctrl__dmr)
+        .dmr(ctrl__dmr),
+        .busoff_manual(ctrl__busoff_manual)
     );
     drcc_apb__core__regs__ctrl_check #(.STAR(STAR)) ctrl_check(
         .wdat(ctrl_check__wdat),
@@ -10833,6 +10941,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         .mode_b(ctrl_check__mode_b),
         .single_shot(ctrl_check__single_shot),
         .dmr(ctrl_check__dmr),
+        .busoff_manual(ctrl_check__busoff_manual),
         .k_in(ctrl_check__k_in),
         .refused(ctrl_check__refused),
         .illegal(ctrl_check__illegal)
@@ -10943,6 +11052,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         ctrl_check__mode_b = ctrl__mode_b;
         ctrl_check__single_shot = ctrl__single_shot;
         ctrl_check__dmr = ctrl__dmr;
+        ctrl_check__busoff_manual = ctrl__busoff_manual;
         illegal = 1'b0;
         w1c = zero17;
         bus__int_enable_we = 1'b0;
@@ -10952,6 +11062,8 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         stats_clear = 1'b0;
         abort_a = 1'b0;
         abort_b = 1'b0;
+        recover_a = 1'b0;
+        recover_b = 1'b0;
         if (tx_queue_q__q & ~ctrl__redundancy & ~ctrl__dmr) begin
             target_count = txq_b;
         end
@@ -11018,11 +11130,15 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
                     end
                     else begin
                         push = 1'b1;
+                        recover_a = wb_dat_i[t_recover_a];
+                        recover_b = wb_dat_i[t_recover_b];
                     end
                 end
                 else begin
                     abort_a = wb_dat_i[t_abort_a];
                     abort_b = wb_dat_i[t_abort_b];
+                    recover_a = wb_dat_i[t_recover_a];
+                    recover_b = wb_dat_i[t_recover_b];
                 end
             end
             else if (wb_adr_i == a_rx_cmd) begin
@@ -11068,6 +11184,8 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
             stats_clear = 1'b0;
             abort_a = 1'b0;
             abort_b = 1'b0;
+            recover_a = 1'b0;
+            recover_b = 1'b0;
             err_q__d = 1'b0;
         end
         wb_ack_o = bus__wb_ack_o & ~err_q__q;
@@ -11085,6 +11203,7 @@ module drcc_apb__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         mode_b = ctrl__mode_b;
         single_shot = ctrl__single_shot;
         dmr = ctrl__dmr;
+        busoff_manual = ctrl__busoff_manual;
         wr_o = wr & full;
         brp = ((btr_q__q[(b_brp)+:(6)]) & 10'h3ff) | (((btr_q__q[(b_brp_ext)+:(4)]) & 10'h3ff) << brp_ext_shift);
         tseg1 = btr_q__q[(b_tseg1)+:(4)];
@@ -11202,7 +11321,7 @@ module drcc_apb__core__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_a
 endmodule // drcc_apb__core__regs__bus
 
 
-module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr);
+module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual);
     parameter [0:0] STAR = 1'd1;
 
     // Module arguments
@@ -11224,6 +11343,7 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
     output reg  [1:0] mode_b;
     output reg  single_shot;
     output reg  dmr;
+    output reg  busoff_manual;
 
     // Constant declarations
     localparam  p_reset_mode = 5'b0;
@@ -11236,6 +11356,7 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
     localparam  p_dmr = 5'b10001;
+    localparam  p_busoff_manual = 5'b10010;
     localparam  redundancy_reset = 1'b0;
     localparam  policy_reset = 2'b1;
     localparam  k_reset = 4'h1;
@@ -11266,6 +11387,8 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
     reg  single_shot_q__q;
     reg  dmr_q__d;
     reg  dmr_q__q;
+    reg  busoff_manual_q__d;
+    reg  busoff_manual_q__q;
 
     // Update code
     always @(*) begin
@@ -11280,6 +11403,7 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
         mode_b_q__d = mode_b_q__q;
         single_shot_q__d = single_shot_q__q;
         dmr_q__d = dmr_q__q;
+        busoff_manual_q__d = busoff_manual_q__q;
         reset_mode_dq__d = reset_mode_q__q;
         if (we) begin
             if (reset_mode_q__q) begin
@@ -11294,6 +11418,7 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
                     mode_b_q__d = wdat[(p_mode_b)+:(2)];
                     single_shot_q__d = wdat[p_single_shot];
                     dmr_q__d = wdat[p_dmr] & |dmr_present;
+                    busoff_manual_q__d = wdat[p_busoff_manual];
                 end
             end
             else begin
@@ -11312,8 +11437,9 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
             mode_b_q__d = mode_reset;
             single_shot_q__d = 1'b0;
             dmr_q__d = 1'b0;
+            busoff_manual_q__d = 1'b0;
         end
-        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((star_q__q) & 32'hffffffff) << p_star) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr);
+        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((star_q__q) & 32'hffffffff) << p_star) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr) | (((busoff_manual_q__q) & 32'hffffffff) << p_busoff_manual);
         reset_mode = reset_mode_q__q;
         reset_mode_d = reset_mode_dq__q;
         redundancy = redundancy_q__q;
@@ -11325,6 +11451,7 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
         mode_b = mode_b_q__q;
         single_shot = single_shot_q__q;
         dmr = dmr_q__q;
+        busoff_manual = busoff_manual_q__q;
     end
 
     // Flip-flops
@@ -11340,12 +11467,13 @@ module drcc_apb__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,r
         mode_b_q__q <= mode_b_q__d;
         single_shot_q__q <= single_shot_q__d;
         dmr_q__q <= dmr_q__d;
+        busoff_manual_q__q <= busoff_manual_q__d;
     end
 
 endmodule // drcc_apb__core__regs__ctrl
 
 
-module drcc_apb__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,k_in,refused,illegal);
+module drcc_apb__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,k_in,refused,illegal);
     parameter [0:0] STAR = 1'd1;
 
     // Module arguments
@@ -11360,6 +11488,7 @@ module drcc_apb__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_t
     input wire  [1:0] mode_b;
     input wire  single_shot;
     input wire  dmr;
+    input wire  busoff_manual;
     output reg  [3:0] k_in;
     output reg  refused;
     output reg  illegal;
@@ -11374,6 +11503,7 @@ module drcc_apb__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_t
     localparam  p_mode_b = 5'b1110;
     localparam  p_single_shot = 5'b10000;
     localparam  p_dmr = 5'b10001;
+    localparam  p_busoff_manual = 5'b10010;
     localparam  mode_listen = 2'b1;
     localparam  zero4 = 4'h0;
     localparam  one4 = 4'h1;
@@ -11394,7 +11524,7 @@ module drcc_apb__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_t
         end
         listen = (wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen);
         refused = ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]) | (wdat[p_dmr] & ~|dmr_present) | (wdat[p_star] & ~|star_present);
-        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (wdat[p_star] != star) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr);
+        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (wdat[p_star] != star) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr) | (wdat[p_busoff_manual] != busoff_manual);
         if (reset_mode) begin
             illegal = refused;
         end
@@ -12481,7 +12611,7 @@ module drcc_apb__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time
     localparam  a_cap_b = 6'b101001;
     localparam  a_rx_time = 6'b101110;
     localparam  id_value = 32'h44524343;
-    localparam  version_value = 32'h102;
+    localparam  version_value = 32'h103;
     localparam  zero32 = 32'h0;
     localparam  st_state = 5'b0;
     localparam  st_tx_channel = 5'b100;

@@ -52,6 +52,8 @@
 #define DRCC_CTRL_SINGLE_SHOT_MASK 0x00010000u
 #define DRCC_CTRL_DMR_SHIFT 17u
 #define DRCC_CTRL_DMR_MASK 0x00020000u
+#define DRCC_CTRL_BUSOFF_MANUAL_SHIFT 18u
+#define DRCC_CTRL_BUSOFF_MANUAL_MASK 0x00040000u
 
 /* BTR: Bit timing of both channels (fields carry value - 1); writable only in reset mode (RW) */
 #define DRCC_BTR_OFFSET 0x08u
@@ -309,6 +311,10 @@
 #define DRCC_TX_CMD_ABORT_A_MASK 0x00000002u
 #define DRCC_TX_CMD_ABORT_B_SHIFT 2u
 #define DRCC_TX_CMD_ABORT_B_MASK 0x00000004u
+#define DRCC_TX_CMD_RECOVER_A_SHIFT 3u
+#define DRCC_TX_CMD_RECOVER_A_MASK 0x00000008u
+#define DRCC_TX_CMD_RECOVER_B_SHIFT 4u
+#define DRCC_TX_CMD_RECOVER_B_MASK 0x00000010u
 
 /* RX_ID: Head of the RX FIFO: identifier (RO) */
 #define DRCC_RX_ID_OFFSET 0x44u
@@ -528,7 +534,7 @@
 /* VERSION: Version of this register map (contract §10.1; 0 on maps before it) (RO) */
 #define DRCC_VERSION_OFFSET 0x98u
 #define DRCC_VERSION_INDEX 38u
-#define DRCC_VERSION_RESET 0x00000102u
+#define DRCC_VERSION_RESET 0x00000103u
 #define DRCC_VERSION_MINOR_SHIFT 0u
 #define DRCC_VERSION_MINOR_MASK 0x000000FFu
 #define DRCC_VERSION_MAJOR_SHIFT 8u

@@ -392,3 +392,145 @@ fn bus_off_and_recovery() {
     assert_eq!(done, 1);
     assert_eq!(a_prev.probes.tec, 0);
 }
+
+/// ISO 11898-1 12.1.4.2 rule l: a bus-off node recovers after 128 occurrences of
+/// 11 consecutive recessive bits.
+const RECOVERY_SAMPLES: u32 = 128 * 11;
+
+/// Node 0 of a two-node bus driven into bus-off as in `bus_off_and_recovery`
+/// (its own DATA bits forced dominant: bit errors, TEC + 8 each, rule c), with
+/// `boff_hold` = `hold` from the start (§4.5: the hold acts only once bus-off,
+/// so the way there is the same). At the edge where node 0 becomes bus-off, node
+/// 1 is cut from the bus, so that from then on the bus is node 0's recessive `tx`
+/// unless the test forces it. Returns the bus and node 0's frame.
+fn bus_off_node_0(hold: bool) -> (Bus, Frame) {
+    let t = timing(0);
+    let mut bus = Bus::new(2, t);
+    bus.boff_hold[0] = hold;
+    bus.integrate();
+    let f = frame(0x0C4, &[0xFF]);
+    let mut req = vec![Some(f), None];
+    let mut prev = bus.nodes[0].outputs();
+    for _ in 0..4000 * t.clocks_per_bit() {
+        bus.force_dominant = prev.probes.field == code::DATA && prev.tx;
+        let o = bus.step(&req);
+        req = vec![None, None];
+        prev = o[0];
+        if prev.probes.err_state == 2 {
+            assert_eq!(prev.probes.tec, 256, "bus-off at TEC 256 (rule j)");
+            assert_eq!(prev.probes.field, code::BUS_OFF);
+            bus.force_dominant = false;
+            bus.connected[1] = false;
+            return (bus, f);
+        }
+    }
+    panic!("node 0 never became bus-off");
+}
+
+/// Steps until node 0 leaves bus-off, forcing nothing; returns the number of
+/// recessive samples it took from the first step on (the recovering edge is a
+/// sample point and counts). Every step before it: still bus-off, `tx` recessive,
+/// the frame pending; at it TEC = REC = 0, error active, IDLE (§4.5).
+fn samples_to_recovery(bus: &mut Bus, limit: u32) -> u32 {
+    let mut samples = 0;
+    loop {
+        let a = bus.step(&[])[0];
+        let p = a.probes;
+        assert!(a.tx, "a bus-off node drives recessive");
+        if p.sample_point {
+            assert!(p.sampled_bit, "nothing drives the bus dominant");
+            samples += 1;
+        }
+        if p.err_state != 2 {
+            assert!(p.sample_point, "recovery at a SAMPLE edge");
+            assert_eq!((p.tec, p.rec, p.err_state, p.field), (0, 0, 0, code::IDLE));
+            return samples;
+        }
+        assert_eq!(p.field, code::BUS_OFF);
+        assert!(a.tx_pending, "the frame stays pending");
+        assert!(samples <= limit, "no recovery within {limit} samples");
+    }
+}
+
+/// Timing contract §4.5, `boff_hold`: while it is 1 a bus-off node does not count
+/// its recovery, however long the bus stays recessive (here 5 x 128 x 11 bit
+/// times): it stays bus-off, `tx` recessive, TEC 256, the frame pending. From the
+/// first edge with `boff_hold` 0 it needs the whole 128 x 11 recessive bits (the
+/// counts were 0 at bus-off entry and stood still), then sends the pending frame,
+/// which node 1 (back on the bus) receives and acknowledges.
+#[test]
+fn boff_hold_keeps_a_bus_off_node_from_recovering() {
+    let (mut bus, f) = bus_off_node_0(true);
+    let cpb = bus.timing.clocks_per_bit() as u64;
+    let mut samples = 0;
+    for _ in 0..5 * RECOVERY_SAMPLES as u64 * cpb {
+        let a = bus.step(&[])[0];
+        let p = a.probes;
+        samples += p.sample_point as u32;
+        assert_eq!(
+            (p.err_state, p.field, p.tec),
+            (2, code::BUS_OFF, 256),
+            "held after {samples} recessive samples"
+        );
+        assert!(a.tx && a.tx_pending);
+    }
+    assert!(samples >= 5 * RECOVERY_SAMPLES - 1);
+    // Node 1 has been idle for thousands of bits: back on the bus to acknowledge.
+    bus.connected[1] = true;
+    bus.boff_hold[0] = false;
+    assert_eq!(
+        samples_to_recovery(&mut bus, RECOVERY_SAMPLES),
+        RECOVERY_SAMPLES
+    );
+    let mut received = Vec::new();
+    let mut done = 0;
+    for _ in 0..200 * cpb {
+        let o = bus.step(&[]);
+        done += o[0].tx_done as u32;
+        if o[1].rx_valid {
+            received.push(o[1].rx_frame);
+        }
+    }
+    assert_eq!(done, 1, "the pending frame is sent after the recovery");
+    assert_eq!(received, vec![f]);
+}
+
+/// Timing contract §4.5: the hold freezes both counts where they are, the
+/// recessive samples of the current run and the completed runs, and a dominant
+/// sample while held does not restart the run. Node 0 counts 5 runs and 7
+/// recessive bits of a sixth (62 samples), is held for 300 bit times in which the
+/// bus is dominant for 20 single bits and recessive otherwise, and is released:
+/// it recovers after exactly 128 x 11 - 62 more recessive samples.
+#[test]
+fn boff_hold_freezes_the_recovery_counts_where_they_are() {
+    let (mut bus, _) = bus_off_node_0(false);
+    let cpb = bus.timing.clocks_per_bit() as u64;
+    let before = 5 * 11 + 7;
+    let mut samples = 0;
+    while samples < before {
+        let p = bus.step(&[])[0].probes;
+        assert_eq!(p.err_state, 2);
+        if p.sample_point {
+            assert!(p.sampled_bit);
+            samples += 1;
+        }
+    }
+    bus.boff_hold[0] = true;
+    let mut dominant = 0;
+    for bit in 0..300 {
+        // Every 15th bit time dominant (bits 0, 15, ..., 285: 20 of them).
+        bus.force_dominant = bit % 15 == 0;
+        for _ in 0..cpb {
+            let p = bus.step(&[])[0].probes;
+            assert_eq!((p.err_state, p.field), (2, code::BUS_OFF), "held");
+            dominant += (p.sample_point && !p.sampled_bit) as u32;
+        }
+    }
+    assert_eq!(dominant, 20, "the node sampled every dominant bit");
+    bus.force_dominant = false;
+    bus.boff_hold[0] = false;
+    assert_eq!(
+        samples_to_recovery(&mut bus, RECOVERY_SAMPLES),
+        RECOVERY_SAMPLES - before
+    );
+}

@@ -27,6 +27,7 @@ use crate::dmr::control::DmrControl;
 use crate::dmr::engine::{DmrEngine, MAILBOXES};
 use crate::dmr::if_mailboxes::IfMailboxes;
 use crate::dmr::mailbox_cfg::MailboxCfg;
+use crate::host::busoff_recovery::BusoffRecovery;
 use crate::host::captures::Captures;
 use crate::host::dmr_check::DmrCheck;
 use crate::host::dmr_regs::DmrRegs;
@@ -192,6 +193,9 @@ pub struct DrccCore<const M: usize> {
     rxw: RxWriter,
     chan_a: CanChannel,
     chan_b: CanChannel,
+    // manual bus-off recovery of each channel (§11.6)
+    busoff_a: BusoffRecovery,
+    busoff_b: BusoffRecovery,
     // glue
     clear: Signal<Local, Bit>,
     rmb_hold: Signal<Local, Bit>,

@@ -410,6 +410,13 @@ impl<const M: usize> Logic for DrccCore<M> {
             | self.dmr_ctl.restart_dcl.val();
         // §5: a star node's restart is soft (counters only, no re-integration)
         self.chan_a.err_reset.next = self.aux_a.chan_rst.val() & self.regs.star.val();
+        // §11.6: with CTRL.busoff_manual the recovery waits for TX_CMD.recover_a
+        self.busoff_a.clk.next = self.clk.val();
+        self.busoff_a.rst.next = self.rst.val();
+        self.busoff_a.busoff_manual.next = self.regs.busoff_manual.val();
+        self.busoff_a.recover.next = self.regs.recover_a.val();
+        self.busoff_a.err_state.next = self.chan_a.err_state.val();
+        self.chan_a.boff_hold.next = self.busoff_a.boff_hold.val();
         self.chan_a.cfg_brp.next = self.regs.brp.val();
         self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
@@ -446,6 +453,12 @@ impl<const M: usize> Logic for DrccCore<M> {
             | self.dmr_ctl.restart_rcl.val();
         // §5: a star node's restart is soft (counters only, no re-integration)
         self.chan_b.err_reset.next = self.aux_b.chan_rst.val() & self.regs.star.val();
+        self.busoff_b.clk.next = self.clk.val();
+        self.busoff_b.rst.next = self.rst.val();
+        self.busoff_b.busoff_manual.next = self.regs.busoff_manual.val();
+        self.busoff_b.recover.next = self.regs.recover_b.val();
+        self.busoff_b.err_state.next = self.chan_b.err_state.val();
+        self.chan_b.boff_hold.next = self.busoff_b.boff_hold.val();
         self.chan_b.cfg_brp.next = self.regs.brp.val();
         self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();

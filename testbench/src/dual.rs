@@ -95,6 +95,10 @@ pub struct DualScenario {
     pub stall_bits: u16,
     /// The generated DRCC every node is (contract §1.1).
     pub build: DrccBuild,
+    /// Manual bus-off recovery (DRCC contract §11.6): every node runs with
+    /// `CTRL.busoff_manual`, and node 0's host writes `TX_CMD.recover_a` this
+    /// many bit times after the fault ended. `None`: automatic recovery.
+    pub manual_recovery_bits: Option<u64>,
 }
 
 impl DualScenario {
@@ -120,6 +124,7 @@ impl DualScenario {
             // frames of waiting for arbitration.
             stall_bits: 500,
             build: DrccBuild::Default,
+            manual_recovery_bits: None,
         }
     }
 
@@ -135,6 +140,7 @@ impl DualScenario {
             stall_limit: self.stall_bits,
             dedup_window: 2_000,
             tx_queue_depth: self.build.params().tx_queue_depth as u32,
+            busoff_manual: self.manual_recovery_bits.is_some(),
             ..HostConfig::default()
         }
     }
@@ -161,7 +167,8 @@ impl DualScenario {
         let fault_end = self.fault_start_bits + self.fault_bits;
         // Bus-off recovery (128 x 11 bits) + the aux probation before channel A is
         // used again, then a few frames on A.
-        traffic.max(fault_end + 1_408 + self.recovery_bits as u64 + 6 * self.period_bits)
+        let held = self.manual_recovery_bits.unwrap_or(0);
+        traffic.max(fault_end + held + 1_408 + self.recovery_bits as u64 + 6 * self.period_bits)
     }
 
     fn faults(&self, sys: &mut DualBusSystem, start: u64) -> Result<(), String> {
@@ -252,6 +259,11 @@ pub struct DualReport {
     pub fault_end: u64,
     /// Frames the hosts pushed into their DRCC.
     pub pushed: usize,
+    /// Clock at which node 0's host wrote `TX_CMD.recover_a` (manual recovery),
+    /// and the first clock after the fault at which node 0's channel A was no
+    /// longer bus-off.
+    pub recover_written: Option<u64>,
+    pub a_bus_off_end: Option<u64>,
 }
 
 impl DualReport {
@@ -351,7 +363,14 @@ pub fn run_dual_observed(
     };
     let total = s.run_bits() * CLOCKS_PER_BIT;
     let fault_end = start + s.fault_bits * CLOCKS_PER_BIT;
-    let read_during = fault_end.saturating_sub(50 * CLOCKS_PER_BIT);
+    // With manual recovery the reads "during" come just before the host's
+    // recover: the channel must still be bus-off there.
+    let recover_at = s
+        .manual_recovery_bits
+        .map(|d| fault_end + d * CLOCKS_PER_BIT);
+    let read_during = recover_at
+        .unwrap_or(fault_end)
+        .saturating_sub(50 * CLOCKS_PER_BIT);
     let mut report = DualReport {
         scenario: s.fault.name().to_string(),
         back_on_a: vec![None; s.nodes],
@@ -384,7 +403,23 @@ pub fn run_dual_observed(
                 read_regs(o, &[reg::STATUS, reg::AUX_A, reg::STATS0]);
             }
         }
+        if Some(cycle) == recover_at {
+            let recover = drcc_hdl::host::registers::MAP
+                .field("TX_CMD", "recover_a")
+                .put(1);
+            main.node_mut(0).host.write(reg::TX_CMD, recover);
+            if let Some(o) = other.as_mut() {
+                o.node_mut(0).host.write(reg::TX_CMD, recover);
+            }
+            report.recover_written = Some(cycle);
+        }
         main.step();
+        if cycle > fault_end
+            && report.a_bus_off_end.is_none()
+            && main.node(0).outputs.probes.chan_a_err_state != 2
+        {
+            report.a_bus_off_end = Some(cycle);
+        }
         if let Some(w) = writer.as_mut() {
             w.write_cycle(&main).map_err(|e| e.to_string())?;
         }

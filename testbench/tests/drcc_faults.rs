@@ -144,3 +144,50 @@ fn node_0_channel_a_bus_off() {
         r.status_during[0]
     );
 }
+
+/// DRCC contract §11.6, manual bus-off recovery, in lock step with the RTL:
+/// every node runs with `CTRL.busoff_manual`; node 0's channel A goes bus-off
+/// (its transmitter babbles) and stays bus-off after the fault until its host
+/// writes `TX_CMD.recover_a`, long after the automatic recovery of the same
+/// scenario has ended; from the write it needs at least ISO 11898-1's 128 x 11
+/// recessive bits (12.1.4.4) to become error active; the redundancy loses
+/// nothing meanwhile and node 0 returns to channel A afterwards.
+#[test]
+fn node_0_channel_a_bus_off_manual_recovery() {
+    const HELD_BITS: u64 = 4_000;
+    let auto = run(DualFault::ABusOff);
+    let s = DualScenario {
+        manual_recovery_bits: Some(HELD_BITS),
+        ..DualScenario::standard(DualFault::ABusOff)
+    };
+    let r = run_dual(&s, EngineKind::Model, cosim_engine()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        r.exactly_once(),
+        "manual recovery: missing {:?}, duplicates {:?}, foreign {}",
+        r.missing,
+        r.duplicates,
+        r.foreign
+    );
+    assert_eq!(r.delivered, s.nodes * (s.nodes - 1) * s.frames_per_node);
+    check_failure_and_return(&r, &[0]);
+    let bit = (r.fault_end - r.fault_start) / s.fault_bits;
+    let auto_end = auto.a_bus_off_end.expect("automatic recovery ends");
+    let written = r.recover_written.expect("the host wrote recover_a");
+    assert!(
+        auto_end < written - 50 * bit,
+        "the automatic recovery ({auto_end}) ends before the manual one is asked ({written})"
+    );
+    // STATUS[10:9], read 50 bit times before the write: still bus-off.
+    assert_eq!(
+        r.status_during[0] >> 9 & 3,
+        2,
+        "node 0 STATUS {:#x}: channel A held bus-off",
+        r.status_during[0]
+    );
+    let end = r.a_bus_off_end.expect("channel A recovers after the write");
+    assert!(
+        end >= written + 128 * 11 * bit,
+        "recovery took {} bit times after the write, ISO 11898-1 needs 128 x 11",
+        (end - written) / bit
+    );
+}

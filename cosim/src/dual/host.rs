@@ -138,6 +138,9 @@ pub struct HostConfig {
     /// driver pushes only while a queue holds fewer (firmware is built for its
     /// configuration; 8 in the default).
     pub tx_queue_depth: u32,
+    /// `CTRL.busoff_manual` (DRCC contract §11.6): a bus-off channel recovers
+    /// only after the host's `TX_CMD.recover_x`.
+    pub busoff_manual: bool,
 }
 
 impl Default for HostConfig {
@@ -158,6 +161,7 @@ impl Default for HostConfig {
             int_enable: MAP.register("INT_ENABLE").map_or(0, |r| r.defined()),
             dmr: None,
             tx_queue_depth: 8,
+            busoff_manual: false,
         }
     }
 }
@@ -192,6 +196,7 @@ impl HostConfig {
             | put("CTRL", "mode_a", self.mode_a as u32)
             | put("CTRL", "mode_b", self.mode_b as u32)
             | put("CTRL", "dmr", self.dmr.is_some() as u32)
+            | put("CTRL", "busoff_manual", self.busoff_manual as u32)
     }
 
     /// DMR mode (redundancy off) with `dmr`, the given bit timing and duplicate

@@ -77,6 +77,7 @@ impl ChannelEngine for RustHdlEngine {
         u.tx_data.next = i.tx_frame.data_word().into();
         u.tx_abort.next = i.tx_abort;
         u.err_reset.next = i.err_reset;
+        u.boff_hold.next = i.boff_hold;
         self.settle();
         self.uut.clk.next = Clock::from(true);
         self.settle();

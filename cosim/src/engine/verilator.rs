@@ -156,6 +156,7 @@ fn encode(i: &ChannelInputs, p: &mut CanChannelIn) {
         tx_data: f.data_word(),
         tx_abort: i.tx_abort as u8,
         err_reset: i.err_reset as u8,
+        boff_hold: i.boff_hold as u8,
     };
 }
 
@@ -232,7 +233,7 @@ mod tests {
             },
             tx_abort: true,
             err_reset: true,
-            boff_hold: false,
+            boff_hold: true,
         };
         let mut p = CanChannelIn::default();
         encode(&inputs, &mut p);
@@ -257,6 +258,7 @@ mod tests {
                 tx_data: 0x0102_0304_0506_0708,
                 tx_abort: 1,
                 err_reset: 1,
+                boff_hold: 1,
             }
         );
         // Every mode travels as its code.
@@ -276,8 +278,14 @@ mod tests {
             encode(&i, &mut p);
             assert_eq!(Mode::from_code(p.cfg_mode), mode);
             assert_eq!(
-                (p.cfg_ewl, p.cfg_single_shot, p.tx_abort, p.err_reset),
-                (96, 0, 0, 0)
+                (
+                    p.cfg_ewl,
+                    p.cfg_single_shot,
+                    p.tx_abort,
+                    p.err_reset,
+                    p.boff_hold
+                ),
+                (96, 0, 0, 0, 0)
             );
         }
     }

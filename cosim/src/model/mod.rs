@@ -158,7 +158,7 @@ impl ChannelModel {
                 BtlEvent::None => {}
                 BtlEvent::Sample(b) => {
                     self.sample_point = true;
-                    self.bsp.sample(b);
+                    self.bsp.sample(b, inputs.boff_hold);
                 }
                 BtlEvent::BitStart { hard } => self.bsp.bit_start(hard),
             }

@@ -8,7 +8,8 @@ use super::*;
 const STAR: u32 = 1 << 5;
 const DMR: u32 = 1 << 17;
 
-/// VERSION is 0x102 (§10.1: major 1, minor 2 since §11 added registers) and
+/// VERSION is 0x103 (§10.1: major 1, minor 3 since §11.6 added fields; minor 2
+/// was §11.1-§11.5) and
 /// SIZES the configuration's sizes, in every configuration
 /// of §1.1; `dmr` and `star` say whether CTRL takes those bits; all four new
 /// registers are read-only.
@@ -38,7 +39,7 @@ fn version_and_sizes_identify_the_instance() {
     ];
     for (name, p, sizes) in cases {
         let mut sys = Sys::with_params(1, &p);
-        assert_eq!(sys.read(0, VERSION), 0x102, "{name}: major 1, minor 2");
+        assert_eq!(sys.read(0, VERSION), 0x103, "{name}: major 1, minor 3");
         assert_eq!(sys.read(0, SIZES), sizes, "{name}: SIZES");
         // CTRL.dmr / CTRL.star are taken (in reset mode) iff SIZES says they can be
         // set. (CTRL.star is written with redundancy, where it means something.)
@@ -62,7 +63,7 @@ fn version_and_sizes_identify_the_instance() {
             if running {
                 sys.start(0, policy(1) | k(1));
             }
-            for (adr, value) in [(VERSION, 0x102), (SIZES, sizes), (CAP_A, 0), (CAP_B, 0)] {
+            for (adr, value) in [(VERSION, 0x103), (SIZES, sizes), (CAP_A, 0), (CAP_B, 0)] {
                 let (_, err) = sys.access_lanes(0, adr, true, 0xFFFF_FFFF, 0xF);
                 assert!(err, "{name}: a write to word {adr} is refused (ERR)");
                 assert_eq!(
@@ -81,7 +82,7 @@ fn version_and_sizes_identify_the_instance() {
         sys.nodes[0].wb.rst = true;
         sys.step();
         sys.nodes[0].wb.rst = false;
-        assert_eq!(sys.read(0, VERSION), 0x102);
+        assert_eq!(sys.read(0, VERSION), 0x103);
         assert_eq!(sys.read(0, SIZES), sizes, "{name}: SIZES after rst");
     }
 }

@@ -10,6 +10,7 @@ use drcc_cosim::model::drcc::DrccParams;
 use drcc_cosim::model::ChannelModel;
 use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Frame};
 
+mod busoff_recovery;
 mod channel_switching;
 mod driver_features;
 mod filters;
@@ -118,6 +119,7 @@ fn frame(id: u32, ide: bool, rtr: bool, dlc: u8, data: &[u8]) -> Frame {
 }
 
 /// A DRCC node: its engine, its last outputs and the Wishbone inputs of the next clock.
+#[derive(Clone)]
 struct Node {
     engine: DrccModelEngine,
     out: DrccOutputs,
@@ -127,6 +129,7 @@ struct Node {
 }
 
 /// A plain channel on one bus: acknowledges, receives, transmits on request.
+#[derive(Clone)]
 struct Plain {
     chan: ChannelModel,
     out: ChannelOutputs,
@@ -138,12 +141,15 @@ struct Plain {
 }
 
 /// Two wired-AND buses (A = 0, B = 1) of DRCC nodes and plain nodes.
+#[derive(Clone)]
 struct Sys {
     nodes: Vec<Node>,
     plain: Vec<Plain>,
     clock: u64,
     /// Node 0's paper probes, every clock.
     trace: Trace,
+    /// Bus A / B held dominant (a fault of the line), whatever the nodes drive.
+    stuck: [bool; 2],
 }
 
 impl Sys {
@@ -170,6 +176,7 @@ impl Sys {
             plain: Vec::new(),
             clock: 0,
             trace: Trace::default(),
+            stuck: [false; 2],
         }
     }
 
@@ -191,7 +198,7 @@ impl Sys {
 
     /// The level of each bus as the nodes see it in the next step.
     fn levels(&self) -> [bool; 2] {
-        let mut l = [true, true];
+        let mut l = self.stuck.map(|s| !s);
         for n in &self.nodes {
             l[0] &= n.out.chan_a_tx || !n.on[0];
             l[1] &= n.out.chan_b_tx || !n.on[1];
@@ -355,7 +362,7 @@ fn status_rx_count(s: u32) -> u32 {
 }
 
 /// Everything the paper scenario records, clock by clock.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Trace {
     states: Vec<(u64, u8)>,
     aux_a: Vec<(u64, u8)>,

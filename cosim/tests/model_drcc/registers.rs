@@ -102,8 +102,9 @@ fn illegal_writes_set_illegal_with_the_documented_effect() {
     assert!(!take_illegal(&mut sys));
     assert_eq!(sys.read(0, CTRL), RESET_MODE | policy(2) | k(1));
     // Reserved bits are not stored.
-    // (Bit 5 is `star`, DRCC contract §4.4; bit 17 is `dmr`, dmr_contract.md §2.)
-    sys.write(0, CTRL, RESET_MODE | policy(1) | k(1) | 0xC0 | 0xFFFC_0000);
+    // (Bit 5 is `star`, DRCC contract §4.4; bit 17 is `dmr`, dmr_contract.md §2;
+    // bit 18 is `busoff_manual`, §11.6.)
+    sys.write(0, CTRL, RESET_MODE | policy(1) | k(1) | 0xC0 | 0xFFF8_0000);
     assert!(!take_illegal(&mut sys));
     assert_eq!(sys.read(0, CTRL), RESET_MODE | policy(1) | k(1));
 

@@ -13,7 +13,8 @@ const ABORT_A: u32 = 1 << 1;
 const ABORT_B: u32 = 1 << 2;
 /// `CTRL.dmr` (DMR contract §2).
 const DMR: u32 = 1 << 17;
-// INT_STATUS per-channel transmit failures (§11.3).
+// INT_STATUS per-channel transmit events (§11.3).
+const I_TX_DONE_A: u32 = 1 << 13;
 const I_TX_FAILURE_A: u32 = 1 << 15;
 const I_TX_FAILURE_B: u32 = 1 << 16;
 /// The transmit-related INT_STATUS bits these tests judge.
@@ -206,6 +207,49 @@ fn normal_abort_before_the_channel_has_the_frame_empties_the_queue() {
     assert!(a.tx[0], "channel A keeps retrying");
     // Nothing was in channel B: no event (§11.5, "no event").
     assert_eq!(sys.read(0, INT_STATUS) & I_TX, 0);
+}
+
+/// §11.5: the queue keeps the frame channel c holds only if the channel's
+/// `tx_done` and `tx_failed` are 0 at the write edge. Queue A holds two frames,
+/// a plain node acknowledges. The edge E where channel A's `tx_done` for the
+/// head is seen is found on copies of the system (the first edge after which
+/// `INT_STATUS.tx_done_a` reads 1, §11.3: it is set at that edge). `abort_a`
+/// taken at E finds the head sent: queue A keeps nothing (count 0; the head is
+/// popped by that `tx_done`, the frame behind it dropped), no request follows
+/// and only the head is on the bus, with `tx_done` and no `tx_failure`.
+#[test]
+fn normal_abort_at_the_tx_done_edge_keeps_nothing() {
+    let mut sys = Sys::new(1);
+    let p = sys.add_plain(0, true);
+    sys.start(0, policy(1) | k(1));
+    sys.run(20 * CPB);
+    let frames = [0x111, 0x112].map(long_frame);
+    for f in &frames {
+        sys.push(0, f, 0);
+    }
+    assert_eq!(counts(&mut sys), [2, 0]);
+    // From state k (k edges so far), a read taken at edge k + 1 returns
+    // INT_STATUS after edge k.
+    let mut probe = sys.clone();
+    let e = loop {
+        if probe.clone().read(0, INT_STATUS) & I_TX_DONE_A != 0 {
+            break probe.clock;
+        }
+        probe.step();
+        assert!(probe.clock < sys.clock + 300 * CPB, "the head is sent");
+    };
+    assert!(e > sys.clock, "the head was not sent yet");
+    while sys.clock < e - 1 {
+        sys.step();
+    }
+    let o = write_watch(&mut sys, 0, TX_CMD, ABORT_A);
+    assert!(o[0].wb_ack && !o[0].wb_err, "the abort is taken");
+    assert_eq!(counts(&mut sys), [0, 0], "nothing kept: the head was sent");
+    let a = watch(&mut sys, 300);
+    assert!(!a.req[0], "no further request to channel A");
+    assert_eq!(sys.plain[p].received, frames[..1], "only the head is sent");
+    assert_eq!(sys.read(0, INT_STATUS) & I_TX, I_TX_DONE);
+    assert_eq!(counts(&mut sys), [0, 0]);
 }
 
 /// `push` with an abort bit: refused (ERR, `illegal`), nothing done: the staged

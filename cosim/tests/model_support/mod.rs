@@ -198,6 +198,8 @@ pub struct Bus {
     /// `tx_abort` of each node for the next step only.
     pub abort: Vec<bool>,
     pub force_dominant: bool,
+    /// Each node's `boff_hold` input (timing contract §4.5), 0 unless a test sets it.
+    pub boff_hold: Vec<bool>,
     pub clock: u64,
 }
 
@@ -211,6 +213,7 @@ impl Bus {
             configs: vec![ControllerConfig::default(); n],
             abort: vec![false; n],
             force_dominant: false,
+            boff_hold: vec![false; n],
             clock: 0,
         }
     }
@@ -235,7 +238,7 @@ impl Bus {
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: std::mem::take(&mut self.abort[i]),
                 err_reset: false,
-                boff_hold: false,
+                boff_hold: self.boff_hold[i],
             });
             self.tx[i] = out.tx;
             outs.push(out);

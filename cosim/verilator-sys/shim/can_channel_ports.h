@@ -40,7 +40,8 @@
     X(uint8_t,  tx_dlc,           4)  /* Data length code as sent, 0..15; 9..15 carry 8 bytes. Latched by `tx_req`. */ \
     X(uint64_t, tx_data,         64)  /* Data bytes, byte 0 (the first on the bus) in `[63:56]`, byte 7 in `[7:0]`: the data field leaves MSB first from bit 63 down. Bytes past `min(tx_dlc, 8)` are not sent. Latched by `tx_req`. */ \
     X(uint8_t,  tx_abort,         1)  /* Abort request, a one-clock pulse: drops the pending frame at once while the node is not transmitting it (and `tx` is recessive), else when the attempt in progress fails; a successful attempt still ends with `tx_done` (contract §8). */ \
-    X(uint8_t,  err_reset,        1)  /* Error counter reset: at an edge with `err_reset = 1` a node that is not bus-off ends with TEC = REC = 0, error active; it stays on the bus (no re-integration, unlike `rst`). 0 in normal use (contract §4.5). */
+    X(uint8_t,  err_reset,        1)  /* Error counter reset: at an edge with `err_reset = 1` a node that is not bus-off ends with TEC = REC = 0, error active; it stays on the bus (no re-integration, unlike `rst`). 0 in normal use (contract §4.5). */ \
+    X(uint8_t,  boff_hold,        1)  /* Bus-off hold: while 1, a bus-off node does not count its recovery (128 runs of 11 recessive bits); it stays bus-off until the host lets it go. 0 in normal use (contract §4.5). */
 
 #define DRCC_CAN_CHANNEL_OUTPUTS(X) \
     X(uint8_t,  tx,               1)  /* CAN transmit pin, 1 = recessive. A register, recessive after reset and constant 1 in loop-back mode; it changes only at the start of a bit. */ \

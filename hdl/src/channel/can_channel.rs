@@ -87,6 +87,10 @@ pub struct CanChannel {
     /// bus-off ends with TEC = REC = 0, error active; it stays on the bus (no
     /// re-integration, unlike `rst`). 0 in normal use (contract §4.5).
     pub err_reset: Signal<In, Bit>,
+    /// Bus-off hold: while 1, a bus-off node does not count its recovery (128
+    /// runs of 11 recessive bits); it stays bus-off until the host lets it go.
+    /// 0 in normal use (contract §4.5).
+    pub boff_hold: Signal<In, Bit>,
     /// A frame is latched and not yet sent or dropped: 1 from the `tx_req` edge
     /// until `tx_done` or `tx_failed`.
     pub tx_pending: Signal<Out, Bit>,
@@ -192,6 +196,7 @@ impl Default for CanChannel {
             tx_data: Default::default(),
             tx_abort: Default::default(),
             err_reset: Default::default(),
+            boff_hold: Default::default(),
             tx_pending: Default::default(),
             tx_failed: Default::default(),
             tx_done: Default::default(),
@@ -279,6 +284,7 @@ impl Logic for CanChannel {
         self.bsp.tx_data.next = self.tx_data.val();
         self.bsp.tx_abort.next = self.tx_abort.val();
         self.bsp.err_reset.next = self.err_reset.val();
+        self.bsp.boff_hold.next = self.boff_hold.val();
         self.bsp.mode.next = self.cfg_regs.mode.val();
         self.bsp.ewl.next = self.cfg_regs.ewl.val();
         self.bsp.single_shot.next = self.cfg_regs.single_shot.val();

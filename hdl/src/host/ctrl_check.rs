@@ -45,6 +45,8 @@ pub struct CtrlCheck {
     pub single_shot: Signal<In, Bit>,
     /// Stored `dmr`.
     pub dmr: Signal<In, Bit>,
+    /// Stored `busoff_manual`.
+    pub busoff_manual: Signal<In, Bit>,
     // ---- verdict ----
     /// The `k` to store: the written one, 0 read as 1.
     pub k_in: Signal<Out, Bits<4>>,
@@ -65,6 +67,7 @@ pub struct CtrlCheck {
     p_mode_b: Constant<Bits<5>>,
     p_single_shot: Constant<Bits<5>>,
     p_dmr: Constant<Bits<5>>,
+    p_busoff_manual: Constant<Bits<5>>,
     mode_listen: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     one4: Constant<Bits<4>>,
@@ -88,6 +91,7 @@ impl Default for CtrlCheck {
             mode_b: Default::default(),
             single_shot: Default::default(),
             dmr: Default::default(),
+            busoff_manual: Default::default(),
             k_in: Default::default(),
             refused: Default::default(),
             illegal: Default::default(),
@@ -102,6 +106,7 @@ impl Default for CtrlCheck {
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
             p_dmr: lsb(&MAP, "CTRL", "dmr", 1),
+            p_busoff_manual: lsb(&MAP, "CTRL", "busoff_manual", 1),
             mode_listen: Constant::new((ChannelMode::ListenOnly.code() as u64).into()),
             zero4: Constant::new(0.into()),
             one4: Constant::new(1.into()),
@@ -142,7 +147,9 @@ impl Logic for CtrlCheck {
             | (self.wdat.val().get_bits::<2>(self.p_mode_a.val().index()) != self.mode_a.val())
             | (self.wdat.val().get_bits::<2>(self.p_mode_b.val().index()) != self.mode_b.val())
             | (self.wdat.val().get_bit(self.p_single_shot.val().index()) != self.single_shot.val())
-            | (self.wdat.val().get_bit(self.p_dmr.val().index()) != self.dmr.val());
+            | (self.wdat.val().get_bit(self.p_dmr.val().index()) != self.dmr.val())
+            | (self.wdat.val().get_bit(self.p_busoff_manual.val().index())
+                != self.busoff_manual.val());
         if self.reset_mode.val() {
             self.illegal.next = self.refused.val();
         } else {

@@ -1,6 +1,6 @@
 //! The DRCC's `CTRL` register (DRCC contract §3, §9): the storage of reset
 //! mode, the operating mode ([`Mode`], and `dmr`), the switch policy, `dual_tx`,
-//! `star`, `k`, the channel modes ([`ChannelMode`]) and `single_shot`. The refusals of §9 are
+//! `star`, `k`, the channel modes ([`ChannelMode`]), `single_shot` and `busoff_manual`. The refusals of §9 are
 //! decided by [`CtrlCheck`] (combinational, beside it in the register block, so
 //! that no always block both takes the write and flags it):
 //!
@@ -69,6 +69,8 @@ pub struct CtrlReg {
     pub single_shot: Signal<Out, Bit>,
     /// CiA 701 DMR mode (DMR contract §2).
     pub dmr: Signal<Out, Bit>,
+    /// A bus-off channel waits for the host's `recover` (contract §11.6).
+    pub busoff_manual: Signal<Out, Bit>,
     // ---- state ----
     reset_mode_q: DFF<Bit>,
     reset_mode_dq: DFF<Bit>,
@@ -81,6 +83,7 @@ pub struct CtrlReg {
     mode_b_q: DFF<Bits<2>>,
     single_shot_q: DFF<Bit>,
     dmr_q: DFF<Bit>,
+    busoff_manual_q: DFF<Bit>,
     // ---- field positions (from the table) ----
     p_reset_mode: Constant<Bits<5>>,
     p_redundancy: Constant<Bits<5>>,
@@ -92,6 +95,7 @@ pub struct CtrlReg {
     p_mode_b: Constant<Bits<5>>,
     p_single_shot: Constant<Bits<5>>,
     p_dmr: Constant<Bits<5>>,
+    p_busoff_manual: Constant<Bits<5>>,
     // ---- codes and reset values ----
     redundancy_reset: Constant<Bit>,
     policy_reset: Constant<Bits<2>>,
@@ -108,7 +112,11 @@ impl Default for CtrlReg {
         let reset = |field: &str| MAP.field("CTRL", field).reset as u64;
         assert_eq!(reset("reset_mode"), 1, "CTRL resets into reset mode (§3)");
         assert_eq!(
-            reset("dual_tx") + reset("star") + reset("single_shot") + reset("dmr"),
+            reset("dual_tx")
+                + reset("star")
+                + reset("single_shot")
+                + reset("dmr")
+                + reset("busoff_manual"),
             0
         );
         assert_eq!(reset("mode_a"), reset("mode_b"));
@@ -131,6 +139,7 @@ impl Default for CtrlReg {
             mode_b: Default::default(),
             single_shot: Default::default(),
             dmr: Default::default(),
+            busoff_manual: Default::default(),
             reset_mode_q: Default::default(),
             reset_mode_dq: Default::default(),
             redundancy_q: Default::default(),
@@ -142,6 +151,7 @@ impl Default for CtrlReg {
             mode_b_q: Default::default(),
             single_shot_q: Default::default(),
             dmr_q: Default::default(),
+            busoff_manual_q: Default::default(),
             p_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
             p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
             p_policy: lsb(&MAP, "CTRL", "policy", 2),
@@ -152,6 +162,7 @@ impl Default for CtrlReg {
             p_mode_b: lsb(&MAP, "CTRL", "mode_b", 2),
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
             p_dmr: lsb(&MAP, "CTRL", "dmr", 1),
+            p_busoff_manual: lsb(&MAP, "CTRL", "busoff_manual", 1),
             redundancy_reset: Constant::new(reset("redundancy") == Mode::Redundancy.code() as u64),
             policy_reset: Constant::new(reset("policy").into()),
             k_reset: Constant::new(reset("k").into()),
@@ -178,7 +189,8 @@ impl Logic for CtrlReg {
             mode_a_q,
             mode_b_q,
             single_shot_q,
-            dmr_q
+            dmr_q,
+            busoff_manual_q
         );
         self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
         if self.we.val() {
@@ -202,6 +214,8 @@ impl Logic for CtrlReg {
                         self.wdat.val().get_bit(self.p_single_shot.val().index());
                     self.dmr_q.d.next = self.wdat.val().get_bit(self.p_dmr.val().index())
                         & self.dmr_present.val().any();
+                    self.busoff_manual_q.d.next =
+                        self.wdat.val().get_bit(self.p_busoff_manual.val().index());
                 }
             } else {
                 // outside reset mode only reset_mode is taken
@@ -221,6 +235,7 @@ impl Logic for CtrlReg {
             self.mode_b_q.d.next = self.mode_reset.val();
             self.single_shot_q.d.next = false;
             self.dmr_q.d.next = false;
+            self.busoff_manual_q.d.next = false;
         }
 
         self.word.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
@@ -233,7 +248,9 @@ impl Logic for CtrlReg {
             | (bit_cast::<32, 2>(self.mode_a_q.q.val()) << self.p_mode_a.val())
             | (bit_cast::<32, 2>(self.mode_b_q.q.val()) << self.p_mode_b.val())
             | (bit_cast::<32, 1>(self.single_shot_q.q.val().into()) << self.p_single_shot.val())
-            | (bit_cast::<32, 1>(self.dmr_q.q.val().into()) << self.p_dmr.val());
+            | (bit_cast::<32, 1>(self.dmr_q.q.val().into()) << self.p_dmr.val())
+            | (bit_cast::<32, 1>(self.busoff_manual_q.q.val().into())
+                << self.p_busoff_manual.val());
         self.reset_mode.next = self.reset_mode_q.q.val();
         self.reset_mode_d.next = self.reset_mode_dq.q.val();
         self.redundancy.next = self.redundancy_q.q.val();
@@ -245,5 +262,6 @@ impl Logic for CtrlReg {
         self.mode_b.next = self.mode_b_q.q.val();
         self.single_shot.next = self.single_shot_q.q.val();
         self.dmr.next = self.dmr_q.q.val();
+        self.busoff_manual.next = self.busoff_manual_q.q.val();
     }
 }

@@ -2,6 +2,7 @@
 //! of the DRCC's and the hub's maps, with the generators of their documents and
 //! C headers), the Wishbone B4 classic slave both register blocks instantiate,
 //! and the DRCC's register block.
+pub mod busoff_recovery;
 pub mod captures;
 pub mod codes;
 pub mod ctrl_check;

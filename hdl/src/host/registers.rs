@@ -77,7 +77,7 @@ pub const ID_VALUE: u32 = 0x4452_4343;
 /// changes its meaning.
 pub const VERSION_MAJOR: u32 = 1;
 /// `VERSION.minor`: changes when a register or field is added.
-pub const VERSION_MINOR: u32 = 2;
+pub const VERSION_MINOR: u32 = 3;
 
 /// The register map, in index order.
 pub const REGISTERS: &[Register] = &[
@@ -104,6 +104,7 @@ pub const REGISTERS: &[Register] = &[
             cfg("mode_b", 14, 2, 0, "channel B mode").coded(ChannelMode::ENCODING),
             cfg("single_shot", 16, 1, 0, "no automatic retransmission (normal mode only)"),
             cfg("dmr", 17, 1, 0, "CiA 701 DMR mode (DMR contract; refused with redundancy or a listen-only channel)"),
+            cfg("busoff_manual", 18, 1, 0, "a bus-off channel starts its recovery only after `TX_CMD.recover_x` (contract §11.6)"),
         ],
     },
     Register {
@@ -243,6 +244,8 @@ pub const REGISTERS: &[Register] = &[
             cmd("push", 0, "append the staged frame to a TX queue (refused in reset mode or when full)"),
             cmd("abort_a", 1, "drop queue A's frames no channel holds; normal mode: abort channel A's frame (contract §11.5; refused with push or in DMR mode)"),
             cmd("abort_b", 2, "the same for queue B (normal mode only)"),
+            cmd("recover_a", 3, "with `CTRL.busoff_manual`: bus-off channel A starts its recovery (contract §11.6)"),
+            cmd("recover_b", 4, "the same for channel B"),
         ],
     },
     Register {

@@ -134,6 +134,8 @@ pub struct WbRegs {
     pub single_shot: Signal<Out, Bit>,
     /// `CTRL.dmr`: CiA 701 DMR mode.
     pub dmr: Signal<Out, Bit>,
+    /// `CTRL.busoff_manual`: bus-off recovery at the host's request (§11.6).
+    pub busoff_manual: Signal<Out, Bit>,
     /// The prescaler BRP, `{BTR.brp_ext, BTR.brp}` (0..1023).
     pub brp: Signal<Out, Bits<BRP_BITS>>,
     /// `BTR.tseg1`.
@@ -163,6 +165,10 @@ pub struct WbRegs {
     pub abort_a: Signal<Out, Bit>,
     /// `TX_CMD.abort_b` accepted.
     pub abort_b: Signal<Out, Bit>,
+    /// `TX_CMD.recover_a` accepted (§11.6): bus-off channel A may recover.
+    pub recover_a: Signal<Out, Bit>,
+    /// `TX_CMD.recover_b` accepted.
+    pub recover_b: Signal<Out, Bit>,
     /// `RX_CMD.pop` accepted.
     pub pop: Signal<Out, Bit>,
     /// `INT_STATUS.bus_error` written 1: the error captures re-arm (§10.2).
@@ -238,6 +244,8 @@ pub struct WbRegs {
     t_push: Constant<Bits<5>>,
     t_abort_a: Constant<Bits<5>>,
     t_abort_b: Constant<Bits<5>>,
+    t_recover_a: Constant<Bits<5>>,
+    t_recover_b: Constant<Bits<5>>,
     r_pop: Constant<Bits<5>>,
     c_clear: Constant<Bits<5>>,
     i_rx: Constant<Bits<5>>,
@@ -343,6 +351,7 @@ impl Default for WbRegs {
             mode_b: Default::default(),
             single_shot: Default::default(),
             dmr: Default::default(),
+            busoff_manual: Default::default(),
             ext_hit: Default::default(),
             ext_word: Default::default(),
             ext_writable: Default::default(),
@@ -375,6 +384,8 @@ impl Default for WbRegs {
             stats_clear: Default::default(),
             abort_a: Default::default(),
             abort_b: Default::default(),
+            recover_a: Default::default(),
+            recover_b: Default::default(),
             bus: Default::default(),
             ctrl: Default::default(),
             ctrl_check: Default::default(),
@@ -431,6 +442,8 @@ impl Default for WbRegs {
             t_push: lsb(&MAP, "TX_CMD", "push", 1),
             t_abort_a: lsb(&MAP, "TX_CMD", "abort_a", 1),
             t_abort_b: lsb(&MAP, "TX_CMD", "abort_b", 1),
+            t_recover_a: lsb(&MAP, "TX_CMD", "recover_a", 1),
+            t_recover_b: lsb(&MAP, "TX_CMD", "recover_b", 1),
             r_pop: lsb(&MAP, "RX_CMD", "pop", 1),
             c_clear: lsb(&MAP, "STATS_CLR", "clear", 1),
             i_rx: lsb(&MAP, "INT_STATUS", "rx", 1),

@@ -117,6 +117,7 @@ impl Logic for WbRegs {
         self.ctrl_check.mode_b.next = self.ctrl.mode_b.val();
         self.ctrl_check.single_shot.next = self.ctrl.single_shot.val();
         self.ctrl_check.dmr.next = self.ctrl.dmr.val();
+        self.ctrl_check.busoff_manual.next = self.ctrl.busoff_manual.val();
         self.illegal.next = false;
         self.w1c.next = self.zero17.val();
         self.bus.int_enable_we.next = false;
@@ -126,6 +127,8 @@ impl Logic for WbRegs {
         self.stats_clear.next = false;
         self.abort_a.next = false;
         self.abort_b.next = false;
+        self.recover_a.next = false;
+        self.recover_b.next = false;
 
         // target queue of a push: A in redundancy and DMR modes (one logical
         // queue), else TX_CTRL.queue
@@ -189,10 +192,19 @@ impl Logic for WbRegs {
                         self.illegal.next = true;
                     } else {
                         self.push.next = true;
+                        self.recover_a.next =
+                            self.wb_dat_i.val().get_bit(self.t_recover_a.val().index());
+                        self.recover_b.next =
+                            self.wb_dat_i.val().get_bit(self.t_recover_b.val().index());
                     }
                 } else {
                     self.abort_a.next = self.wb_dat_i.val().get_bit(self.t_abort_a.val().index());
                     self.abort_b.next = self.wb_dat_i.val().get_bit(self.t_abort_b.val().index());
+                    // §11.6: taken with any write that is not refused
+                    self.recover_a.next =
+                        self.wb_dat_i.val().get_bit(self.t_recover_a.val().index());
+                    self.recover_b.next =
+                        self.wb_dat_i.val().get_bit(self.t_recover_b.val().index());
                 }
             } else if self.wb_adr_i.val() == self.a_rx_cmd.val() {
                 if self.wb_dat_i.val().get_bit(self.r_pop.val().index()) {
@@ -256,6 +268,8 @@ impl Logic for WbRegs {
             self.stats_clear.next = false;
             self.abort_a.next = false;
             self.abort_b.next = false;
+            self.recover_a.next = false;
+            self.recover_b.next = false;
             self.err_q.d.next = false;
         }
 
@@ -275,6 +289,7 @@ impl Logic for WbRegs {
         self.mode_b.next = self.ctrl.mode_b.val();
         self.single_shot.next = self.ctrl.single_shot.val();
         self.dmr.next = self.ctrl.dmr.val();
+        self.busoff_manual.next = self.ctrl.busoff_manual.val();
         self.wr_o.next = self.wr.val() & self.full.val();
         self.brp.next =
             bit_cast::<BRP_BITS, 6>(self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index()))

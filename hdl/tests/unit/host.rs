@@ -1,5 +1,6 @@
 //! Tests of `drcc_hdl::host`.
 
+mod busoff_recovery;
 mod captures;
 mod ctrl_check;
 mod ctrl_reg;

@@ -41,6 +41,9 @@
 //!    bit is sent, `tx` is recessive from the next bit_start, the pending frame
 //!    stays pending. Recovery after 128 x 11 recessive bits goes to IDLE (the node
 //!    has just seen 11 recessive bits, which is bus integration), TEC = REC = 0.
+//!    While the `boff_hold` input is 1 at a SAMPLE edge, neither count (the
+//!    recessive samples of the run, the completed runs) changes at that edge, and a
+//!    dominant sample does not restart the run; the node stays in BUS_OFF.
 //! 10. A node whose suspend transmission is due (error passive, transmitter of the
 //!     frame that just ended) does not join a SOF at intermission bit 3: for it
 //!     `start_ok` is false there, as in SUSPEND.
@@ -344,13 +347,17 @@ impl Bsp {
         };
     }
 
-    /// A SAMPLE edge with the sampled bus value `b` (`true` = recessive).
-    pub fn sample(&mut self, b: bool) {
+    /// A SAMPLE edge with the sampled bus value `b` (`true` = recessive) and the
+    /// `boff_hold` input before the edge (contract §4.5: while it is 1 a bus-off
+    /// node's recovery counts stand still, decision 9).
+    pub fn sample(&mut self, b: bool, boff_hold: bool) {
         match self.field {
             field::INTEGRATING => self.integrating(b),
             field::IDLE => self.idle(b),
             field::INTERMISSION => self.intermission(b),
             field::SUSPEND => self.suspend(b),
+            // §4.5: `boff_hold` freezes both recovery counts.
+            field::BUS_OFF if boff_hold => {}
             field::BUS_OFF => self.bus_off(b),
             field::ID_A..=field::CRC_DELIM => self.stuffed_bit(b),
             field::ACK_SLOT => self.ack_slot(b),

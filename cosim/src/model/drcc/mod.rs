@@ -41,8 +41,9 @@
 //!    current ones after the `k = 0 -> 1` clamp (writing k = 0 while k = 1 is not
 //!    illegal); reserved bits are ignored. `policy = 3` outside reset mode is such a
 //!    difference (illegal, `reset_mode` still taken).
-//! 7. A write to `TX_CMD` with bits 0..2 clear, or to `RX_CMD` with bit 0 clear,
-//!    does nothing (not illegal; `TX_CMD`'s abort bits: §11.5).
+//! 7. A write to `TX_CMD` with bits 0..4 clear, or to `RX_CMD` with bit 0 clear,
+//!    does nothing (not illegal; `TX_CMD`'s abort bits: §11.5, recover bits:
+//!    §11.6).
 //!    `TX_CMD` and `RX_CMD` read 0. Writes to `INT_STATUS` (W1C) and every RW
 //!    register are legal in any mode.
 //! 8. `rxp` set (a new `rx_valid`) and clear (the writer takes it) at the same edge:
@@ -74,6 +75,10 @@
 //!     refused like that of every whole word ("never refused" is read as "in
 //!     any mode"). The counts of `DMR_STATUS` (`state_changes`, `acl_switches`)
 //!     are not in the contract's list and are kept, as `DMR_CS_COUNT`.
+//! 16. §11.6: a `TX_CMD` write refused for any reason takes no `recover`: a
+//!     partial write (§2), an abort with `push` or in DMR mode (§11.5), both
+//!     decoded at the register port, and a `push` the queue refuses (§6: reset
+//!     mode, queue full), judged by the TX queues at the same edge.
 #![doc = include_str!("../drcc_contract.md")]
 
 pub mod aux_fsm;
@@ -170,7 +175,9 @@ impl DrccModel {
                 || self.dmr.restart[c],
             // §5: a star node's restart is soft (counters only, no re-integration).
             err_reset: self.aux[c].restarting() && r.star(),
-            boff_hold: false,
+            // §11.6: a bus-off channel counts its recovery only with the host's
+            // permission when `busoff_manual` is set (in every mode).
+            boff_hold: r.boff_hold(c),
             rx,
             timing: BitTiming {
                 brp: r.brp(),
@@ -269,7 +276,6 @@ impl DrccModel {
         let acc = self.access(i, &mut n);
         let mut ints = acc.ints;
         let (take, w1c, push, pop, abort) = (acc.take, acc.w1c, acc.push, acc.pop, acc.abort);
-
         // Echo (§4.4): in a star node, a channel's reception of the attempted head
         // message (the TX RAM read data) is the node's own frame heard through the
         // other hub.
@@ -391,6 +397,12 @@ impl DrccModel {
         });
         if tev.push_refused {
             ints |= int::ILLEGAL;
+        }
+        // §11.6: the host's permission, taken and kept only while bus-off; a
+        // write refused for any reason (here: its push, §6) takes none.
+        for (c, o) in [pa, pb].into_iter().enumerate() {
+            let w = acc.recover[c] && !tev.push_refused;
+            n.recover[c] = o.probes.err_state == 2 && (r.recover[c] || w);
         }
         if tev.tx_done {
             ints |= int::TX_DONE;

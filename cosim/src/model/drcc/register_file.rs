@@ -40,6 +40,9 @@ pub(super) struct Regs {
     pub(super) recoveries: u16,
     /// `FILT_ID0` .. `FILT_MASK1` (§11.1): cleared by `rst` only.
     pub(super) filt: Filters,
+    /// `recover_a`, `recover_b` (§11.6): the host's permission for a bus-off
+    /// channel to count its recovery; taken only while the channel is bus-off.
+    pub(super) recover: [bool; 2],
     /// `reset_mode` one edge earlier: the channels stay in reset one clock longer
     /// so that they capture the configuration written with the write that leaves
     /// reset mode (contract §6).
@@ -69,6 +72,7 @@ impl Regs {
             cap: [Capture::default(); 2],
             recoveries: 0,
             filt: Filters::default(),
+            recover: [false; 2],
             reset_mode_q: true,
         }
     }
@@ -91,6 +95,14 @@ impl Regs {
     /// Replicated star node (§4.4).
     pub(super) fn star(&self) -> bool {
         self.ctrl & ctrl::STAR != 0
+    }
+    /// Manual bus-off recovery (§11.6).
+    pub(super) fn busoff_manual(&self) -> bool {
+        self.ctrl & ctrl::BUSOFF_MANUAL != 0
+    }
+    /// Channel `c`'s `boff_hold` input (§11.6): `busoff_manual && !recover_c`.
+    pub(super) fn boff_hold(&self, c: usize) -> bool {
+        self.busoff_manual() && !self.recover[c]
     }
     pub(super) fn k(&self) -> u8 {
         ((self.ctrl & ctrl::K_MASK) >> ctrl::K_SHIFT) as u8
@@ -292,6 +304,9 @@ pub(super) struct Access {
     pub(super) push: Option<(usize, Frame)>,
     /// `TX_CMD.abort_a`, `abort_b` (§11.5), legal ones only.
     pub(super) abort: [bool; 2],
+    /// `TX_CMD.recover_a`, `recover_b` (§11.6) of a write not refused here (a
+    /// push the queues refuse cancels them too).
+    pub(super) recover: [bool; 2],
     /// `RX_CMD.pop`.
     pub(super) pop: bool,
     /// A DMR register write, applied after the DMR block's edge.
@@ -387,17 +402,24 @@ impl DrccModel {
                     idx::TX_CMD => {
                         let aborts = [tx_cmd::ABORT_A, tx_cmd::ABORT_B].map(|b| d & b != 0);
                         if aborts.contains(&true) && (d & tx_cmd::PUSH != 0 || dmr_mode) {
-                            // §11.5: an abort with a push, or in DMR mode.
+                            // §11.5: an abort with a push, or in DMR mode; the
+                            // refused write takes no recover either (§11.6).
                             a.ints |= int::ILLEGAL;
-                        } else if d & tx_cmd::PUSH == 0 {
-                            a.abort = aborts;
                         } else {
-                            let q = if redundancy || dmr_mode {
-                                0
+                            // §11.6: never refused on its own; acts by its own rule
+                            // beside a push or an abort (a refused push takes it
+                            // back, in the edge).
+                            a.recover = [tx_cmd::RECOVER_A, tx_cmd::RECOVER_B].map(|b| d & b != 0);
+                            if d & tx_cmd::PUSH == 0 {
+                                a.abort = aborts;
                             } else {
-                                (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
-                            };
-                            a.push = Some((q, r.staged()));
+                                let q = if redundancy || dmr_mode {
+                                    0
+                                } else {
+                                    (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
+                                };
+                                a.push = Some((q, r.staged()));
+                            }
                         }
                     }
                     idx::RX_CMD => a.pop = d & 1 != 0,

@@ -4,9 +4,9 @@
 /// `ID` register value: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
 
-/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 2 in [7:0]
-/// (§11 added registers).
-pub const VERSION_VALUE: u32 = 0x0000_0102;
+/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 3 in [7:0]
+/// (§11.1-§11.5 added registers, §11.6 fields).
+pub const VERSION_VALUE: u32 = 0x0000_0103;
 
 /// Word indices (`wb_adr_i`, byte offset / 4).
 pub mod idx {
@@ -84,8 +84,10 @@ pub mod ctrl {
     pub const SINGLE_SHOT: u32 = 1 << 16;
     /// DMR mode (dmr_contract.md §2): the third DRCC mode.
     pub const DMR: u32 = 1 << 17;
+    /// Manual bus-off recovery (§11.6).
+    pub const BUSOFF_MANUAL: u32 = 1 << 18;
     /// Every defined bit (reserved bits read 0).
-    pub const DEFINED: u32 = 0x3_FF3F;
+    pub const DEFINED: u32 = 0x7_FF3F;
     /// Every cfg field (all defined bits but `reset_mode`).
     pub const CFG: u32 = DEFINED & !RESET_MODE;
     /// Reset value: reset mode, policy error-passive, k = 1.
@@ -215,6 +217,9 @@ pub mod tx_cmd {
     /// Drop queue A's / B's frames not yet in a channel (§11.5).
     pub const ABORT_A: u32 = 1 << 1;
     pub const ABORT_B: u32 = 1 << 2;
+    /// Let a bus-off channel A / B held by `CTRL.busoff_manual` recover (§11.6).
+    pub const RECOVER_A: u32 = 1 << 3;
+    pub const RECOVER_B: u32 = 1 << 4;
 }
 
 /// Main FSM state encoding (Table 1).

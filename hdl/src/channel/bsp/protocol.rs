@@ -93,6 +93,8 @@ pub struct ProtocolController {
     pub tx_abort: Signal<In, Bit>,
     /// Error counter reset (contract §4.5).
     pub err_reset: Signal<In, Bit>,
+    /// Bus-off hold: the recovery is not counted (contract §4.5).
+    pub boff_hold: Signal<In, Bit>,
     /// A frame is pending.
     pub tx_pending: Signal<Out, Bit>,
     /// One clock: the pending frame was dropped.
@@ -198,6 +200,7 @@ impl Logic for ProtocolController {
         self.fsm.sample.next = self.sample.val();
         self.fsm.sampled.next = self.sampled.val();
         self.fsm.listen_only.next = self.listen_only.val();
+        self.fsm.boff_hold.next = self.boff_hold.val();
         self.fsm.loopback.next = self.loopback.val();
         self.fsm.tx_starts.next = self.tx_request.starts.val();
         self.fsm.tx_joins.next = self.tx_request.joins.val();

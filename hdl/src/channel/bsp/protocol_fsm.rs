@@ -36,6 +36,8 @@ pub struct ProtocolFsm {
     pub listen_only: Signal<In, Bit>,
     /// Loop-back mode (contract §7): the transmitter receives its own frame.
     pub loopback: Signal<In, Bit>,
+    /// Host: a bus-off node does not count its recovery while 1 (contract §4.5).
+    pub boff_hold: Signal<In, Bit>,
     // from the transmit request
     /// A SOF from idle is this node's frame (or its SOF is already on `tx`).
     pub tx_starts: Signal<In, Bit>,
@@ -444,23 +446,26 @@ impl Logic for ProtocolFsm {
                     }
                 }
                 Field::BusOff => {
-                    // 12.1.4.4: 128 occurrences of 11 consecutive recessive bits.
-                    if self.sampled.val() {
-                        if self.decode.bc10.val() {
-                            self.bit_cnt_n.next = self.n7_0.val();
-                            if self.decode.recovery_end.val() {
-                                self.field_n.next = Field::Idle;
-                                self.recovered.next = true;
-                                self.recovery_cnt.d.next = self.n7_0.val();
+                    // 12.1.4.4: 128 occurrences of 11 consecutive recessive bits,
+                    // counted only while the host does not hold them (contract §4.5).
+                    if !self.boff_hold.val() {
+                        if self.sampled.val() {
+                            if self.decode.bc10.val() {
+                                self.bit_cnt_n.next = self.n7_0.val();
+                                if self.decode.recovery_end.val() {
+                                    self.field_n.next = Field::Idle;
+                                    self.recovered.next = true;
+                                    self.recovery_cnt.d.next = self.n7_0.val();
+                                } else {
+                                    self.recovery_cnt.d.next =
+                                        self.recovery_cnt.q.val() + self.n7_1.val();
+                                }
                             } else {
-                                self.recovery_cnt.d.next =
-                                    self.recovery_cnt.q.val() + self.n7_1.val();
+                                self.bit_cnt_n.next = self.bit_cnt_inc.val();
                             }
                         } else {
-                            self.bit_cnt_n.next = self.bit_cnt_inc.val();
+                            self.bit_cnt_n.next = self.n7_0.val();
                         }
-                    } else {
-                        self.bit_cnt_n.next = self.n7_0.val();
                     }
                 }
                 _ => {}

@@ -21,22 +21,6 @@
 #define TSEG2_MAX 8u
 #define SJW_MAX 4u
 
-/* Contract §11.6 (map 1.3) until rtl-out/drcc_regs.h carries it: CTRL[18]
- * busoff_manual, TX_CMD[3] recover_a, TX_CMD[4] recover_b. The header's own
- * definitions win whenever it has them. */
-#ifndef DRCC_CTRL_BUSOFF_MANUAL_MASK
-#define DRCC_CTRL_BUSOFF_MANUAL_SHIFT 18u
-#define DRCC_CTRL_BUSOFF_MANUAL_MASK 0x00040000u
-#endif
-#ifndef DRCC_TX_CMD_RECOVER_A_MASK
-#define DRCC_TX_CMD_RECOVER_A_SHIFT 3u
-#define DRCC_TX_CMD_RECOVER_A_MASK 0x00000008u
-#endif
-#ifndef DRCC_TX_CMD_RECOVER_B_MASK
-#define DRCC_TX_CMD_RECOVER_B_SHIFT 4u
-#define DRCC_TX_CMD_RECOVER_B_MASK 0x00000010u
-#endif
-
 static uint32_t rd(drcc_dev *dev, uint32_t off) { return dev->read32(dev->ctx, off); }
 
 static void wr(drcc_dev *dev, uint32_t off, uint32_t v) { dev->write32(dev->ctx, off, v); }

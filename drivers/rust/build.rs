@@ -2,26 +2,11 @@
 //! `rtl-out/drcc_regs.h` (the one generated register table; nothing is copied
 //! by hand): every `#define DRCC_<NAME> <value>u` becomes `pub const <NAME>: u32`
 //! in `$OUT_DIR/regs.rs`. `DRCC_REGS_H` overrides the header's path.
-//!
-//! [`PENDING`] lists fields of the contract the header may not carry yet
-//! (written from `cosim/src/model/drcc_contract.md`); each is emitted only
-//! when the header lacks it, so the header's own definition always wins.
 
 use std::env;
 use std::fmt::Write as _;
 use std::fs;
 use std::path::PathBuf;
-
-/// Contract §11.6 (map 1.3): `CTRL[18]` `busoff_manual`, `TX_CMD[3]`
-/// `recover_a`, `TX_CMD[4]` `recover_b`, for a header generated before them.
-const PENDING: &[(&str, u32)] = &[
-    ("CTRL_BUSOFF_MANUAL_SHIFT", 18),
-    ("CTRL_BUSOFF_MANUAL_MASK", 1 << 18),
-    ("TX_CMD_RECOVER_A_SHIFT", 3),
-    ("TX_CMD_RECOVER_A_MASK", 1 << 3),
-    ("TX_CMD_RECOVER_B_SHIFT", 4),
-    ("TX_CMD_RECOVER_B_MASK", 1 << 4),
-];
 
 fn main() {
     let header = match env::var_os("DRCC_REGS_H") {
@@ -35,7 +20,6 @@ fn main() {
         .unwrap_or_else(|e| panic!("cannot read {}: {e}", header.display()));
     let mut out = String::new();
     let mut count = 0;
-    let mut names = Vec::new();
     for line in text.lines() {
         let mut words = line.split_whitespace();
         if words.next() != Some("#define") {
@@ -59,18 +43,7 @@ fn main() {
             parsed.unwrap_or_else(|_| panic!("{}: cannot parse `{line}`", header.display()));
         writeln!(out, "/// `DRCC_{name}` of `drcc_regs.h`.").unwrap();
         writeln!(out, "pub const {name}: u32 = {value:#010X};").unwrap();
-        names.push(name.to_string());
         count += 1;
-    }
-    for (name, value) in PENDING {
-        if !names.iter().any(|n| n == name) {
-            writeln!(
-                out,
-                "/// `DRCC_{name}` of the contract (not yet in `drcc_regs.h`)."
-            )
-            .unwrap();
-            writeln!(out, "pub const {name}: u32 = {value:#010X};").unwrap();
-        }
     }
     assert!(
         count > 100,

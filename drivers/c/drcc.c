@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* drcc.c: the portable C99 DRCC driver (see drcc.h): bit timing, bring-up,
- * identification, modes, filters, send, the interrupt handler's receive path
- * with timestamps and captures, status and statistics.
+ * identification, modes, filters, send, transmit abort, manual bus-off
+ * recovery, the interrupt handler's receive path with timestamps and
+ * captures, status and statistics.
  * Every register access goes through the user's read32/write32 hooks; every
  * offset and field comes from the generated rtl-out/drcc_regs.h. */
 #include "drcc.h"
@@ -110,6 +111,7 @@ void drcc_config_default(drcc_config *cfg)
     cfg->mode_a = DRCC_CHAN_NORMAL;
     cfg->mode_b = DRCC_CHAN_NORMAL;
     cfg->single_shot = 0;
+    cfg->busoff_manual = 0;
     cfg->recovery_bits = (uint16_t)FIELD_GET(DRCC_RMB_CFG_RECOVERY_BITS, DRCC_RMB_CFG_RESET);
     cfg->stall_limit = (uint16_t)FIELD_GET(DRCC_RMB_CFG_STALL_LIMIT, DRCC_RMB_CFG_RESET);
     cfg->dedup_window = (uint16_t)FIELD_GET(DRCC_DEDUP_CFG_WINDOW, DRCC_DEDUP_CFG_RESET);
@@ -180,7 +182,8 @@ static uint32_t ctrl_word(const drcc_config *cfg)
            FIELD_PUT(DRCC_CTRL_POLICY, cfg->policy) | FIELD_PUT(DRCC_CTRL_DUAL_TX, cfg->dual_tx != 0) |
            FIELD_PUT(DRCC_CTRL_STAR, cfg->star != 0) | FIELD_PUT(DRCC_CTRL_K, k) |
            FIELD_PUT(DRCC_CTRL_MODE_A, cfg->mode_a) | FIELD_PUT(DRCC_CTRL_MODE_B, cfg->mode_b) |
-           FIELD_PUT(DRCC_CTRL_SINGLE_SHOT, cfg->single_shot != 0);
+           FIELD_PUT(DRCC_CTRL_SINGLE_SHOT, cfg->single_shot != 0) |
+           FIELD_PUT(DRCC_CTRL_BUSOFF_MANUAL, cfg->busoff_manual != 0);
 }
 
 /* Writes `value` to a configuration register and checks it was taken. */
@@ -213,6 +216,9 @@ int drcc_configure(drcc_dev *dev, const drcc_config *cfg)
     ctrl = ctrl_word(cfg);
     if (ctrl == 0xFFFFFFFFu) {
         return DRCC_E_INVAL;
+    }
+    if (cfg->busoff_manual && dev->ident.minor < DRCC_MINOR_BUSOFF_MANUAL) {
+        return DRCC_E_UNSUPPORTED;
     }
     rc = drcc_enter_reset(dev);
     if (rc != DRCC_OK) {
@@ -351,6 +357,50 @@ int drcc_send(drcc_dev *dev, const drcc_frame *frame, unsigned queue)
     wr(dev, DRCC_TX_DATA0_OFFSET, data_word(&data[0]));
     wr(dev, DRCC_TX_DATA1_OFFSET, data_word(&data[4]));
     wr(dev, DRCC_TX_CMD_OFFSET, DRCC_TX_CMD_PUSH_MASK);
+    return DRCC_OK;
+}
+
+/* The TX_CMD bits `a` / `b` of the channels in `channels`, or 0 if the set
+ * is empty or has unknown bits. */
+static uint32_t tx_cmd_bits(unsigned channels, uint32_t a, uint32_t b)
+{
+    if (channels == 0u || (channels & ~(unsigned)DRCC_CH_BOTH) != 0u) {
+        return 0u;
+    }
+    return ((channels & (unsigned)DRCC_CH_A) ? a : 0u) | ((channels & (unsigned)DRCC_CH_B) ? b : 0u);
+}
+
+int drcc_abort(drcc_dev *dev, unsigned channels)
+{
+    uint32_t cmd = tx_cmd_bits(channels, DRCC_TX_CMD_ABORT_A_MASK, DRCC_TX_CMD_ABORT_B_MASK);
+    if (cmd == 0u) {
+        return DRCC_E_INVAL;
+    }
+    if (dev->ident.minor < DRCC_MINOR_ABORT) {
+        return DRCC_E_UNSUPPORTED;
+    }
+    /* The hardware refuses an abort in DMR mode (illegal): do not write. */
+    if (dev->ctrl & DRCC_CTRL_DMR_MASK) {
+        return DRCC_E_STATE;
+    }
+    /* Redundancy mode: the one logical queue is queue A (abort_b is ignored). */
+    if (dev->ctrl & DRCC_CTRL_REDUNDANCY_MASK) {
+        cmd = DRCC_TX_CMD_ABORT_A_MASK;
+    }
+    wr(dev, DRCC_TX_CMD_OFFSET, cmd);
+    return DRCC_OK;
+}
+
+int drcc_recover(drcc_dev *dev, unsigned channels)
+{
+    uint32_t cmd = tx_cmd_bits(channels, DRCC_TX_CMD_RECOVER_A_MASK, DRCC_TX_CMD_RECOVER_B_MASK);
+    if (cmd == 0u) {
+        return DRCC_E_INVAL;
+    }
+    if (dev->ident.minor < DRCC_MINOR_BUSOFF_MANUAL) {
+        return DRCC_E_UNSUPPORTED;
+    }
+    wr(dev, DRCC_TX_CMD_OFFSET, cmd);
     return DRCC_OK;
 }
 

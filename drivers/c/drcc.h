@@ -3,8 +3,10 @@
  * (its own Wishbone register view, rtl-out/drcc_regs.h). Register access goes
  * through two hooks the user provides; nothing here touches memory directly.
  *
- * Not in the hardware, so not in this API: transmit abort. A queued frame
- * stays queued until it is sent (or reset mode empties the queues). */
+ * Features newer than the map 1.0 need the instance's VERSION.minor (read by
+ * drcc_init()): transmit abort (drcc_abort) needs minor 2, manual bus-off
+ * recovery (drcc_config.busoff_manual, drcc_recover) minor 3. On an older
+ * instance those calls return DRCC_E_UNSUPPORTED and write nothing. */
 #ifndef DRCC_DRIVER_H
 #define DRCC_DRIVER_H
 
@@ -42,7 +44,23 @@ enum drcc_result {
     /** The controller is not in the state the call needs (reset mode). */
     DRCC_E_STATE = -7,
     /** VERSION.major is not 1: a register map this driver does not know. */
-    DRCC_E_VERSION = -8
+    DRCC_E_VERSION = -8,
+    /** The instance's VERSION.minor is below the one the feature needs
+     * (DRCC_MINOR_ABORT, DRCC_MINOR_BUSOFF_MANUAL); nothing was written. */
+    DRCC_E_UNSUPPORTED = -9
+};
+
+/** VERSION.minor from which TX_CMD.abort_a/abort_b exist (contract §11.5). */
+#define DRCC_MINOR_ABORT 2u
+/** VERSION.minor from which CTRL.busoff_manual and TX_CMD.recover_a/recover_b
+ * exist (contract §11.6). */
+#define DRCC_MINOR_BUSOFF_MANUAL 3u
+
+/** A set of channels (a bit mask) for drcc_abort() and drcc_recover(). */
+enum drcc_channels {
+    DRCC_CH_A = 1,   /**< channel A (queue 0) */
+    DRCC_CH_B = 2,   /**< channel B (queue 1) */
+    DRCC_CH_BOTH = 3 /**< both, in one register write */
 };
 
 /** VERSION and SIZES, read by drcc_init(). */
@@ -103,6 +121,11 @@ typedef struct drcc_config {
     drcc_chan_mode mode_a;   /**< channel A mode */
     drcc_chan_mode mode_b;   /**< channel B mode */
     int single_shot;         /**< no automatic retransmission (normal mode) */
+    /** CTRL.busoff_manual (every mode, map 1.3): a channel that goes bus-off
+     * stays bus-off until drcc_recover() allows its recovery. 0 = automatic
+     * recovery after 128 x 11 recessive bits (ISO 11898-1). 1 on an instance
+     * older than 1.3: drcc_configure() returns DRCC_E_UNSUPPORTED. */
+    int busoff_manual;
     uint16_t recovery_bits;  /**< RMB_CFG.recovery_bits */
     uint16_t stall_limit;    /**< RMB_CFG.stall_limit, 0 = off */
     uint16_t dedup_window;   /**< DEDUP_CFG.window in bit times (0..32767), 0 = off */
@@ -266,6 +289,38 @@ int drcc_dmr_mailbox(drcc_dev *dev, unsigned index, uint32_t id, int ide, int di
  * ignored otherwise. DRCC_E_FULL when the queue is full, DRCC_E_STATE in reset
  * mode, DRCC_E_INVAL for an identifier or DLC out of range. */
 int drcc_send(drcc_dev *dev, const drcc_frame *frame, unsigned queue);
+
+/** Transmit abort (TX_CMD.abort_a / abort_b, contract §11.5) of the queues in
+ * `channels` (DRCC_CH_A, DRCC_CH_B or DRCC_CH_BOTH: one write, both at the same
+ * clock).
+ * - Normal mode: the queue's frames that no channel holds yet are dropped (no
+ *   event); the frame the channel holds is aborted as the SJA1000's CMR.AT
+ *   does: dropped at once if it is not on the bus, else the attempt in
+ *   progress ends (a success stays a success) and is not retried. Either way
+ *   that frame ends with INT_STATUS.tx_done or tx_failure and the channel's
+ *   tx_done_a/b or tx_failure_a/b, and the queue count drops to 0.
+ * - Redundancy mode: one logical queue; any non-empty `channels` aborts it
+ *   (abort_a). Its head, the message the redundancy manager holds, is kept
+ *   and ends as every message does (sent once, or failed); the messages behind
+ *   it are dropped.
+ * - DMR mode: the hardware refuses an abort (CiA 701: every message goes on
+ *   both lines); the driver returns DRCC_E_STATE and writes nothing.
+ * - Reset mode: the queues are empty; the write does nothing.
+ * DRCC_E_INVAL for an empty or unknown `channels`, DRCC_E_UNSUPPORTED below
+ * map 1.2 (nothing written). */
+int drcc_abort(drcc_dev *dev, unsigned channels);
+
+/** Manual bus-off recovery (TX_CMD.recover_a / recover_b, contract §11.6):
+ * allows the channels in `channels` (DRCC_CH_A, DRCC_CH_B, DRCC_CH_BOTH), when
+ * bus-off and held by drcc_config.busoff_manual, to start their recovery:
+ * 128 x 11 recessive bits from the write on (never shorter), then error
+ * active (err_state 0, INT_STATUS.err_state), and the frame the channel held
+ * is sent. The permission is taken only from a bus-off channel: call it once
+ * the channel is bus-off (INT_STATUS.err_state, drcc_get_status()); for a
+ * channel that is not bus-off, or without busoff_manual, the write does
+ * nothing. Every mode. DRCC_E_INVAL for an empty or unknown `channels`,
+ * DRCC_E_UNSUPPORTED below map 1.3 (nothing written). */
+int drcc_recover(drcc_dev *dev, unsigned channels);
 
 /** Takes the head of the RX FIFO into `frame`, with its timestamp;
  * DRCC_E_EMPTY if there is none. */

@@ -144,6 +144,12 @@ pub struct Config {
     pub mode_b: ChanMode,
     /// No automatic retransmission (normal mode).
     pub single_shot: bool,
+    /// `CTRL.busoff_manual` (every mode, map 1.3): a channel that goes bus-off
+    /// stays bus-off until [`crate::Drcc::recover`] allows its recovery.
+    /// `false`: automatic recovery after 128 x 11 recessive bits (ISO
+    /// 11898-1). `true` on an instance older than 1.3: [`crate::Drcc::configure`]
+    /// returns [`crate::Error::Unsupported`] and writes nothing.
+    pub busoff_manual: bool,
     /// Error-free bit times before a failed channel is valid again.
     pub recovery_bits: u16,
     /// Bit times a message may stay pending before its channel is judged failed (0 = off).
@@ -172,6 +178,7 @@ impl Default for Config {
             mode_a: ChanMode::Normal,
             mode_b: ChanMode::Normal,
             single_shot: false,
+            busoff_manual: false,
             recovery_bits: regs::get(
                 regs::RMB_CFG_RECOVERY_BITS_MASK,
                 regs::RMB_CFG_RECOVERY_BITS_SHIFT,

@@ -179,15 +179,25 @@ impl<R: Registers> Drcc<R> {
                 regs::CTRL_SINGLE_SHOT_MASK,
                 regs::CTRL_SINGLE_SHOT_SHIFT,
                 u32::from(cfg.single_shot),
+            )
+            | put(
+                regs::CTRL_BUSOFF_MANUAL_MASK,
+                regs::CTRL_BUSOFF_MANUAL_SHIFT,
+                u32::from(cfg.busoff_manual),
             ))
     }
 
     /// Enters reset mode, writes the whole configuration and leaves reset mode
     /// with `CTRL` (the mode) in one write. [`Error::Refused`] if the controller
-    /// did not take a word (it then stays in reset mode).
+    /// did not take a word (it then stays in reset mode);
+    /// [`Error::Unsupported`] (nothing written) for
+    /// [`Config::busoff_manual`] on an instance older than map 1.3.
     pub fn configure(&mut self, cfg: &Config) -> Result<(), Error> {
         let btr = cfg.timing.btr(cfg.ewl)?;
         let ctrl = Self::ctrl_word(cfg)?;
+        if cfg.busoff_manual && self.ident.minor < crate::MINOR_BUSOFF_MANUAL {
+            return Err(Error::Unsupported);
+        }
         if cfg.dedup_window > 0x7FFF
             || (cfg.tx_queue_depth != 0 && cfg.tx_queue_depth != self.ident.tx_queue_depth)
         {
@@ -509,8 +519,8 @@ impl<R: Registers> embedded_can::nb::Can for Drcc<R> {
     type Error = Error;
 
     /// Queues the frame (queue A in normal mode); `WouldBlock` while the queue
-    /// is full. The hardware cannot abort a queued frame, so nothing is ever
-    /// replaced: `Ok(None)`.
+    /// is full. A queued frame is never replaced by a new one (the queues are
+    /// FIFOs; [`Drcc::abort`] drops frames explicitly): `Ok(None)`.
     fn transmit(&mut self, frame: &Frame) -> nb::Result<Option<Frame>, Error> {
         match self.send(frame, Channel::A) {
             Ok(()) => Ok(None),

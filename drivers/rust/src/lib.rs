@@ -22,7 +22,12 @@
 //!
 //! The register constants in [`regs`] are generated at build time from the C
 //! header `rtl-out/drcc_regs.h`. The C driver in `drivers/c` offers the same
-//! functions. Transmit abort does not exist in the hardware and is not offered.
+//! functions.
+//!
+//! Transmit abort ([`Drcc::abort`], map 1.2) and manual bus-off recovery
+//! ([`Config::busoff_manual`], [`Drcc::recover`], map 1.3) act on a set of
+//! [`Channels`]; on an instance whose `VERSION.minor` is older they return
+//! [`Error::Unsupported`] and write nothing.
 #![no_std]
 #![deny(missing_docs)]
 
@@ -33,6 +38,7 @@ mod frame;
 pub mod regs;
 mod status;
 mod timing;
+mod txctl;
 
 pub use config::{ChanMode, Config, DmrConfig, Mode, Policy};
 pub use device::{Drcc, IrqResult};
@@ -40,6 +46,7 @@ pub use features::{Capture, Filter, Ident};
 pub use frame::{Channel, Frame};
 pub use status::{ChanStatus, Stats, Status};
 pub use timing::BitTiming;
+pub use txctl::{Channels, MINOR_ABORT, MINOR_BUSOFF_MANUAL};
 
 /// Register access the user provides: 32-bit words at byte offsets
 /// (`regs::*_OFFSET`).
@@ -79,6 +86,9 @@ pub enum Error {
     State,
     /// `VERSION.major` is not 1: a register map this driver does not know.
     Version,
+    /// The instance's `VERSION.minor` is below the one the feature needs
+    /// ([`MINOR_ABORT`], [`MINOR_BUSOFF_MANUAL`]); nothing was written.
+    Unsupported,
 }
 
 impl embedded_can::Error for Error {

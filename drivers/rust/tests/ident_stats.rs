@@ -1,8 +1,8 @@
 //! Identification, clearing the statistics and the per-channel transmit
 //! events, through each driver.
 //!
-//! - VERSION / SIZES: the default top `drcc` reads version 1.2 (contract
-//!   §10.1, §11) and the sizes of contract §1.1: RX FIFO 32, TX queues 8,
+//! - VERSION / SIZES: the default top `drcc` reads version 1.3 (contract
+//!   §10.1, §11; §11.6 made it 3) and the sizes of contract §1.1: RX FIFO 32, TX queues 8,
 //!   history 32, 16 mailboxes, DMR, and star mode (only `drcc_small` is built
 //!   without it).
 //! - a map whose major version is not 1 is refused by both drivers' init
@@ -28,7 +28,7 @@ use drcc_driver_sim::c_init_with_version;
 /// The default top's VERSION and SIZES (contract §1.1, §10.1).
 const DEFAULT_TOP: Ident = Ident {
     major: 1,
-    minor: 2,
+    minor: 3,
     rx_fifo_depth: 32,
     tx_queue_depth: 8,
     history: 32,

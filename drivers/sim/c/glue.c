@@ -142,3 +142,93 @@ int sim_c_init_with_version(uint32_t version)
     drcc_dev dev;
     return drcc_init(&dev, fake_read, fake_write, &version);
 }
+
+/* drcc_configure() in mode `mode` with CTRL.busoff_manual = `busoff_manual`,
+ * the bit timing of drcc_calc_bit_timing(); the rest drcc_config_default(). */
+int sim_c_configure_manual(drcc_dev *dev, uint32_t clock_hz, uint32_t bitrate, int mode,
+                           int busoff_manual, uint32_t int_enable)
+{
+    drcc_config cfg;
+    int rc;
+    drcc_config_default(&cfg);
+    rc = drcc_calc_bit_timing(clock_hz, bitrate, &cfg.timing);
+    if (rc != DRCC_OK) {
+        return rc;
+    }
+    cfg.mode = (drcc_mode)mode;
+    cfg.busoff_manual = busoff_manual;
+    cfg.int_enable = int_enable;
+    return drcc_configure(dev, &cfg);
+}
+
+/* drcc_get_status(). */
+void sim_c_status(drcc_dev *dev, drcc_status *out) { drcc_get_status(dev, out); }
+
+/* Fake registers that count writes: ID "DRCC", VERSION and CTRL as given,
+ * SIZES the default top's, everything else 0. */
+typedef struct fake_counting {
+    uint32_t version;
+    uint32_t ctrl;
+    unsigned writes;
+    uint32_t last_offset;
+    uint32_t last_value;
+} fake_counting;
+
+static uint32_t counting_read(void *ctx, uint32_t off)
+{
+    const fake_counting *f = (const fake_counting *)ctx;
+    if (off == DRCC_ID_OFFSET) {
+        return DRCC_ID_VALUE;
+    }
+    if (off == DRCC_VERSION_OFFSET) {
+        return f->version;
+    }
+    if (off == DRCC_CTRL_OFFSET) {
+        return f->ctrl;
+    }
+    return off == DRCC_SIZES_OFFSET ? DRCC_SIZES_RESET : 0u;
+}
+
+static void counting_write(void *ctx, uint32_t off, uint32_t value)
+{
+    fake_counting *f = (fake_counting *)ctx;
+    f->writes++;
+    f->last_offset = off;
+    f->last_value = value;
+}
+
+/* On a device whose VERSION reads `version` and CTRL `ctrl`: what = 0
+ * drcc_abort(channels), 1 drcc_recover(channels), 2 drcc_configure() with
+ * busoff_manual = channels. Returns the result code; *writes = register
+ * writes the call made, last[0] / last[1] the offset and value of the last. */
+int sim_c_call_with_version(uint32_t version, uint32_t ctrl, int what, unsigned channels,
+                            unsigned *writes, uint32_t last[2])
+{
+    drcc_dev dev;
+    fake_counting f;
+    int rc;
+    f.version = version;
+    f.ctrl = ctrl;
+    f.writes = 0;
+    f.last_offset = 0;
+    f.last_value = 0;
+    rc = drcc_init(&dev, counting_read, counting_write, &f);
+    if (rc != DRCC_OK) {
+        return rc;
+    }
+    f.writes = 0;
+    if (what == 0) {
+        rc = drcc_abort(&dev, channels);
+    } else if (what == 1) {
+        rc = drcc_recover(&dev, channels);
+    } else {
+        drcc_config cfg;
+        drcc_config_default(&cfg);
+        cfg.busoff_manual = (int)channels;
+        rc = drcc_configure(&dev, &cfg);
+    }
+    *writes = f.writes;
+    last[0] = f.last_offset;
+    last[1] = f.last_value;
+    return rc;
+}

@@ -10,6 +10,8 @@ use std::ffi::c_void;
 pub const C_MODE_NORMAL: i32 = 0;
 /// `drcc_mode` DRCC_MODE_REDUNDANCY.
 pub const C_MODE_REDUNDANCY: i32 = 1;
+/// `drcc_mode` DRCC_MODE_DMR.
+pub const C_MODE_DMR: i32 = 2;
 
 /// Mirror of the C `drcc_frame`.
 #[repr(C)]
@@ -99,6 +101,54 @@ pub struct CStats {
     pub dmr_rx_stats: u32,
 }
 
+/// Mirror of the C `drcc_chan_status`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CChanStatus {
+    /// Transmit error counter.
+    pub tec: u16,
+    /// Receive error counter.
+    pub rec: u8,
+    /// 0 error active, 1 error passive, 2 bus-off.
+    pub err_state: u8,
+    /// TEC or REC >= ewl.
+    pub err_warning: u8,
+    /// Auxiliary FSM state.
+    pub aux_state: u8,
+    /// AUX_x causes.
+    pub aux_causes: u8,
+    /// Failed attempts.
+    pub fail_cnt: u8,
+    /// Times judged failed.
+    pub failures: u8,
+    /// Times recovered.
+    pub recoveries: u8,
+}
+
+/// Mirror of the C `drcc_status`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CStatus {
+    /// Main FSM state.
+    pub state: u8,
+    /// Channel in use.
+    pub tx_channel: u8,
+    /// CTRL.reset_mode.
+    pub reset_mode: u8,
+    /// A transmission is in progress.
+    pub tx_going_on: u8,
+    /// Frames in TX queue A.
+    pub txq_a: u8,
+    /// Frames in TX queue B.
+    pub txq_b: u8,
+    /// Frames in the RX FIFO.
+    pub rx_count: u8,
+    /// Channel A.
+    pub a: CChanStatus,
+    /// Channel B.
+    pub b: CChanStatus,
+}
+
 /// Mirror of the C `drcc_bit_timing`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -162,6 +212,25 @@ extern "C" {
         int_enable: u32,
     ) -> i32;
     fn drcc_now(dev: *mut c_void) -> u16;
+    fn drcc_abort(dev: *mut c_void, channels: u32) -> i32;
+    fn drcc_recover(dev: *mut c_void, channels: u32) -> i32;
+    fn sim_c_status(dev: *mut c_void, out: *mut CStatus);
+    fn sim_c_configure_manual(
+        dev: *mut c_void,
+        clock_hz: u32,
+        bitrate: u32,
+        mode: i32,
+        busoff_manual: i32,
+        int_enable: u32,
+    ) -> i32;
+    fn sim_c_call_with_version(
+        version: u32,
+        ctrl: u32,
+        what: i32,
+        channels: u32,
+        writes: *mut u32,
+        last: *mut [u32; 2],
+    ) -> i32;
     fn drcc_clear_stats(dev: *mut c_void);
     fn drcc_get_captures(dev: *mut c_void, a: *mut CCapture, b: *mut CCapture);
     fn drcc_rearm_captures(dev: *mut c_void, errors: i32, arb: i32);
@@ -304,6 +373,50 @@ impl CDriver {
         unsafe { drcc_now(self.dev) }
     }
 
+    /// `drcc_abort(channels)` (`DRCC_CH_A` 1, `DRCC_CH_B` 2, both 3); the C
+    /// result code.
+    pub fn abort(&mut self, channels: u32) -> i32 {
+        // SAFETY: dev is live.
+        unsafe { drcc_abort(self.dev, channels) }
+    }
+
+    /// `drcc_recover(channels)`; the C result code.
+    pub fn recover(&mut self, channels: u32) -> i32 {
+        // SAFETY: dev is live.
+        unsafe { drcc_recover(self.dev, channels) }
+    }
+
+    /// `drcc_get_status`.
+    pub fn status(&mut self) -> CStatus {
+        let mut s = CStatus::default();
+        // SAFETY: dev is live, s a valid drcc_status.
+        unsafe { sim_c_status(self.dev, &mut s) };
+        s
+    }
+
+    /// `drcc_configure` in `mode` (`C_MODE_*`, 2 = DMR) with
+    /// `busoff_manual`, the rest at `drcc_config_default`; the C result code.
+    pub fn configure_manual(
+        &mut self,
+        clock_hz: u32,
+        bitrate: u32,
+        mode: i32,
+        busoff_manual: bool,
+        int_enable: u32,
+    ) -> i32 {
+        // SAFETY: dev is live.
+        unsafe {
+            sim_c_configure_manual(
+                self.dev,
+                clock_hz,
+                bitrate,
+                mode,
+                i32::from(busoff_manual),
+                int_enable,
+            )
+        }
+    }
+
     /// `drcc_clear_stats`.
     pub fn clear_stats(&mut self) {
         // SAFETY: dev is live.
@@ -414,6 +527,33 @@ impl Drop for CDriver {
 pub fn c_init_with_version(version: u32) -> i32 {
     // SAFETY: plain function on its own fake hooks.
     unsafe { sim_c_init_with_version(version) }
+}
+
+/// Which call [`c_call_with_version`] makes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CCall {
+    /// `drcc_abort(channels)`.
+    Abort(u32),
+    /// `drcc_recover(channels)`.
+    Recover(u32),
+    /// `drcc_configure` with `busoff_manual`.
+    Configure(bool),
+}
+
+/// After `drcc_init` on fake registers whose `VERSION` reads `version` and
+/// `CTRL` reads `ctrl`: the C result code of `call`, the number of register
+/// writes it made and the (offset, value) of the last one ((0, 0) if none).
+pub fn c_call_with_version(version: u32, ctrl: u32, call: CCall) -> (i32, u32, (u32, u32)) {
+    let (what, arg) = match call {
+        CCall::Abort(c) => (0, c),
+        CCall::Recover(c) => (1, c),
+        CCall::Configure(m) => (2, u32::from(m)),
+    };
+    let mut writes = 0;
+    let mut last = [0; 2];
+    // SAFETY: plain function on its own fake hooks.
+    let rc = unsafe { sim_c_call_with_version(version, ctrl, what, arg, &mut writes, &mut last) };
+    (rc, writes, (last[0], last[1]))
 }
 
 /// `drcc_calc_bit_timing` of the C driver: the timing or the C result code.

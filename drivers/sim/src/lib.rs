@@ -12,8 +12,9 @@
 mod c_driver;
 
 pub use c_driver::{
-    c_btr_encode, c_calc_bit_timing, c_init_with_version, CBitTiming, CCapture, CConfig, CDriver,
-    CFrame, CIdent, CIrqResult, CStats, C_MODE_NORMAL, C_MODE_REDUNDANCY,
+    c_btr_encode, c_calc_bit_timing, c_call_with_version, c_init_with_version, CBitTiming, CCall,
+    CCapture, CChanStatus, CConfig, CDriver, CFrame, CIdent, CIrqResult, CStats, CStatus,
+    C_MODE_DMR, C_MODE_NORMAL, C_MODE_REDUNDANCY,
 };
 pub use verilator_sys::{available, required, unavailable_reason};
 

@@ -5,8 +5,14 @@
 #![allow(dead_code)]
 
 use crate::common::{port, Regs, Sent, BIT, BITRATE, CLOCK_HZ};
-use drcc_driver::{regs, BitTiming, Capture, Channel, Config, Drcc, Error, Filter, Ident};
-use drcc_driver_sim::{CCapture, CConfig, CDriver, CFrame, DualBus, C_MODE_NORMAL};
+use drcc_driver::{
+    regs, BitTiming, Capture, ChanStatus, Channel, Channels, Config, Drcc, Error, Filter, Ident,
+    Mode, Status,
+};
+use drcc_driver_sim::{
+    CCapture, CChanStatus, CConfig, CDriver, CFrame, CStatus, DualBus, C_MODE_DMR, C_MODE_NORMAL,
+    C_MODE_REDUNDANCY,
+};
 use embedded_can::{Frame as _, StandardId};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -75,6 +81,66 @@ pub trait Node {
     fn overruns(&mut self) -> u16;
     /// VERSION and SIZES as read at init.
     fn ident(&self) -> Ident;
+    /// Transmit abort of `channels`: 0, or the driver's error as the C
+    /// driver's result code ([`code`]).
+    fn abort(&mut self, channels: Channels) -> i32;
+    /// Manual bus-off recovery of `channels`: 0 or the result code.
+    fn recover(&mut self, channels: Channels) -> i32;
+    /// STATUS, CHAN_x_ERR and AUX_x, decoded.
+    fn status(&mut self) -> Status;
+}
+
+/// The C driver's result code of a Rust driver error (drcc.h `DRCC_E_*`).
+pub fn code(e: Error) -> i32 {
+    match e {
+        Error::Invalid => -1,
+        Error::NoTiming => -2,
+        Error::NoDevice => -3,
+        Error::Refused => -4,
+        Error::Full => -5,
+        Error::Empty => -6,
+        Error::State => -7,
+        Error::Version => -8,
+        Error::Unsupported => -9,
+    }
+}
+
+/// `DRCC_E_STATE`.
+pub const E_STATE: i32 = -7;
+/// `DRCC_E_UNSUPPORTED`.
+pub const E_UNSUPPORTED: i32 = -9;
+
+/// The C driver's channel mask (`DRCC_CH_A` 1, `DRCC_CH_B` 2) of `channels`.
+pub fn c_mask(channels: Channels) -> u32 {
+    u32::from(channels.contains(Channel::A)) | u32::from(channels.contains(Channel::B)) << 1
+}
+
+fn chan_of_c(c: &CChanStatus) -> ChanStatus {
+    ChanStatus {
+        tec: c.tec,
+        rec: c.rec,
+        err_state: c.err_state,
+        err_warning: c.err_warning != 0,
+        aux_state: c.aux_state,
+        aux_causes: c.aux_causes,
+        fail_cnt: c.fail_cnt,
+        failures: c.failures,
+        recoveries: c.recoveries,
+    }
+}
+
+fn status_of_c(s: &CStatus) -> Status {
+    Status {
+        state: s.state,
+        tx_channel: s.tx_channel,
+        reset_mode: s.reset_mode != 0,
+        tx_going_on: s.tx_going_on != 0,
+        txq_a: s.txq_a,
+        txq_b: s.txq_b,
+        rx_count: s.rx_count,
+        a: chan_of_c(&s.a),
+        b: chan_of_c(&s.b),
+    }
 }
 
 fn cap_of(c: CCapture) -> Capture {
@@ -165,6 +231,15 @@ impl Node for CDriver {
             star: i.star != 0,
         }
     }
+    fn abort(&mut self, channels: Channels) -> i32 {
+        CDriver::abort(self, c_mask(channels))
+    }
+    fn recover(&mut self, channels: Channels) -> i32 {
+        CDriver::recover(self, c_mask(channels))
+    }
+    fn status(&mut self) -> Status {
+        status_of_c(&CDriver::status(self))
+    }
 }
 
 fn rx_of_rust(f: &drcc_driver::Frame) -> Rx {
@@ -248,6 +323,15 @@ impl Node for Drcc<Regs> {
     fn ident(&self) -> Ident {
         Drcc::ident(self)
     }
+    fn abort(&mut self, channels: Channels) -> i32 {
+        Drcc::abort(self, channels).map_or_else(code, |()| 0)
+    }
+    fn recover(&mut self, channels: Channels) -> i32 {
+        Drcc::recover(self, channels).map_or_else(code, |()| 0)
+    }
+    fn status(&mut self) -> Status {
+        Drcc::status(self)
+    }
 }
 
 /// Node `n` of `bus` with driver `kind`, configured in normal mode at
@@ -298,6 +382,44 @@ pub fn single_shot_node(bus: &Rc<RefCell<DualBus>>, n: usize, kind: Kind) -> Box
             let cfg = Config {
                 timing: BitTiming::calc(CLOCK_HZ, BITRATE).expect("16 clocks a bit"),
                 single_shot: true,
+                ..Config::default()
+            };
+            d.configure(&cfg).expect("configure");
+            Box::new(d)
+        }
+    }
+}
+
+/// Node `n` of `bus` with driver `kind`, configured in `mode` with
+/// `busoff_manual` (the rest at the drivers' defaults) at `BITRATE` from
+/// `CLOCK_HZ`, with `int_enable`.
+pub fn node_with(
+    bus: &Rc<RefCell<DualBus>>,
+    n: usize,
+    kind: Kind,
+    mode: Mode,
+    busoff_manual: bool,
+    int_enable: u32,
+) -> Box<dyn Node> {
+    match kind {
+        Kind::C => {
+            let mut c = CDriver::open(port(bus, n)).expect("drcc_init");
+            let m = match mode {
+                Mode::Normal => C_MODE_NORMAL,
+                Mode::Redundancy => C_MODE_REDUNDANCY,
+                Mode::Dmr => C_MODE_DMR,
+            };
+            let rc = c.configure_manual(CLOCK_HZ, BITRATE, m, busoff_manual, int_enable);
+            assert_eq!(rc, 0, "drcc_configure");
+            Box::new(c)
+        }
+        Kind::Rust => {
+            let mut d = Drcc::new(Regs(port(bus, n))).expect("the DRCC answers");
+            let cfg = Config {
+                timing: BitTiming::calc(CLOCK_HZ, BITRATE).expect("16 clocks a bit"),
+                mode,
+                busoff_manual,
+                int_enable,
                 ..Config::default()
             };
             d.configure(&cfg).expect("configure");

@@ -35,8 +35,8 @@ mod both;
 mod common;
 
 use both::{
-    drain, node, node_with, send_now, std_frame, wait_bits, Kind, Node, E_STATE, E_UNSUPPORTED,
-    KINDS,
+    drain, node, node_with, send_now, std_frame, wait_bits, wait_until, Kind, Node, E_STATE,
+    E_UNSUPPORTED, KINDS,
 };
 use common::{bus_or_skip, Sent, FRAME_BITS};
 use drcc_driver::{regs, Channel, Channels, Drcc, Error, Mode, Registers};
@@ -45,17 +45,6 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 type Bus = Rc<RefCell<DualBus>>;
-
-/// Polls `cond` once a bit time, for at most `bits` bit times.
-fn wait_until(bus: &Bus, bits: u64, mut cond: impl FnMut() -> bool) -> bool {
-    for _ in 0..bits {
-        if cond() {
-            return true;
-        }
-        wait_bits(bus, 1);
-    }
-    cond()
-}
 
 fn has(events: u32, mask: u32) -> bool {
     events & mask != 0

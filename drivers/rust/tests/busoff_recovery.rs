@@ -35,7 +35,8 @@ mod both;
 mod common;
 
 use both::{
-    drain, node, node_with, send_now, std_frame, wait_bits, Kind, Node, E_UNSUPPORTED, KINDS,
+    drain, node, node_with, send_now, std_frame, wait_bits, wait_until, Kind, Node, E_UNSUPPORTED,
+    KINDS,
 };
 use common::{bus_or_skip, BIT, FRAME_BITS};
 use drcc_driver::{regs, Channels, Config, Drcc, Error, Mode, Registers};
@@ -81,13 +82,7 @@ fn frame() -> common::Sent {
 /// Polls channel A's `err_state` once a bit time until it is 0; the bus
 /// clock of the read that saw it, or `None` after `bits` bit times.
 fn until_active(bus: &Bus, n0: &mut dyn Node, bits: u64) -> Option<u64> {
-    for _ in 0..bits {
-        if n0.status().a.err_state == 0 {
-            return Some(bus.borrow().clock());
-        }
-        wait_bits(bus, 1);
-    }
-    None
+    wait_until(bus, bits, || n0.status().a.err_state == 0).then(|| bus.borrow().clock())
 }
 
 /// The recovery took 1,408 recessive samples: more than 1,407 bit times

@@ -433,6 +433,17 @@ pub fn wait_bits(bus: &Rc<RefCell<DualBus>>, bits: u64) {
     bus.borrow_mut().tick(bits * BIT);
 }
 
+/// Polls `cond` once a bit time, for at most `bits` bit times.
+pub fn wait_until(bus: &Rc<RefCell<DualBus>>, bits: u64, mut cond: impl FnMut() -> bool) -> bool {
+    for _ in 0..bits {
+        if cond() {
+            return true;
+        }
+        wait_bits(bus, 1);
+    }
+    cond()
+}
+
 /// A base data frame.
 pub fn std_frame(id: u32, data: &[u8]) -> Sent {
     Sent {

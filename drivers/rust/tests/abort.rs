@@ -40,11 +40,7 @@ use both::{
 };
 use common::{bus_or_skip, Sent, FRAME_BITS};
 use drcc_driver::{regs, Channel, Channels, Drcc, Error, Mode, Registers};
-use drcc_driver_sim::{c_call_with_version, CCall, DualBus, Fault, Line};
-use std::cell::RefCell;
-use std::rc::Rc;
-
-type Bus = Rc<RefCell<DualBus>>;
+use drcc_driver_sim::{c_call_with_version, CCall, Fault, Line};
 
 fn has(events: u32, mask: u32) -> bool {
     events & mask != 0

@@ -63,6 +63,9 @@
 //                                while the node is not transmitting it (and `tx` is recessive),
 //                                else when the attempt in progress fails; a successful attempt
 //                                still ends with `tx_done` (contract §8).
+// input      1  tx_single        1 = the frame of this `tx_req` is single shot, as with
+//                                `cfg_single_shot` but for this frame only. Latched by `tx_req`
+//                                (contract §8).
 // input      1  err_reset        Error counter reset: at an edge with `err_reset = 1` a node that
 //                                is not bus-off ends with TEC = REC = 0, error active; it stays on
 //                                the bus (no re-integration, unlike `rst`). 0 in normal use
@@ -107,6 +110,11 @@
 // output     8  rec              Receive error counter REC, saturating at 255.
 // output     2  err_state        Fault confinement state: 0 error active, 1 error passive, 2
 //                                bus-off.
+// output     1  is_tx            The node is transmitter of the frame on the bus: from the SOF it
+//                                starts until it loses arbitration, the end of the intermission
+//                                after its frame, or bus-off (contract §4.5, "Roles").
+// output     7  boff_runs        Completed runs of 11 recessive bits in the current bus-off
+//                                (0..127), 0 outside bus-off (contract §4.5).
 // output     1  err_warning      `tec >= cfg_ewl || rec >= cfg_ewl` (error warning limit reached).
 // output     1  err_valid        One-clock pulse: an error was detected; `err_kind`, `err_field`
 //                                and `err_tx` are loaded at that edge.
@@ -141,7 +149,7 @@
 
 
 
-module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_single,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     // Clock. Every register changes at its rising edge; the bit timing is counted in its periods (a
@@ -203,6 +211,9 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     // transmitting it (and `tx` is recessive), else when the attempt in progress fails; a
     // successful attempt still ends with `tx_done` (contract §8).
     input wire  tx_abort;
+    // 1 = the frame of this `tx_req` is single shot, as with `cfg_single_shot` but for this frame
+    // only. Latched by `tx_req` (contract §8).
+    input wire  tx_single;
     // Error counter reset: at an edge with `err_reset = 1` a node that is not bus-off ends with TEC
     // = REC = 0, error active; it stays on the bus (no re-integration, unlike `rst`). 0 in normal
     // use (contract §4.5).
@@ -252,6 +263,13 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     output reg  [7:0] rec;
     // Fault confinement state: 0 error active, 1 error passive, 2 bus-off.
     output reg  [1:0] err_state;
+    // The node is transmitter of the frame on the bus: from the SOF it starts until it loses
+    // arbitration, the end of the intermission after its frame, or bus-off (contract §4.5,
+    // "Roles").
+    output reg  is_tx;
+    // Completed runs of 11 recessive bits in the current bus-off (0..127), 0 outside bus-off
+    // (contract §4.5).
+    output reg  [6:0] boff_runs;
     // `tec >= cfg_ewl || rec >= cfg_ewl` (error warning limit reached).
     output reg  err_warning;
     // One-clock pulse: an error was detected; `err_kind`, `err_field` and `err_tx` are loaded at
@@ -362,6 +380,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     reg  bsp__tx_rtr;
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
+    reg  bsp__tx_single;
     reg  bsp__tx_abort;
     reg  bsp__err_reset;
     reg  bsp__boff_hold;
@@ -379,6 +398,8 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
     wire  [8:0] bsp__tec;
     wire  [7:0] bsp__rec;
     wire  [1:0] bsp__err_state;
+    wire  bsp__is_tx;
+    wire  [6:0] bsp__boff_runs;
     wire  bsp__err_warning;
     wire  bsp__err_valid;
     wire  [2:0] bsp__err_kind;
@@ -454,6 +475,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         .tx_rtr(bsp__tx_rtr),
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
+        .tx_single(bsp__tx_single),
         .tx_abort(bsp__tx_abort),
         .err_reset(bsp__err_reset),
         .boff_hold(bsp__boff_hold),
@@ -471,6 +493,8 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         .tec(bsp__tec),
         .rec(bsp__rec),
         .err_state(bsp__err_state),
+        .is_tx(bsp__is_tx),
+        .boff_runs(bsp__boff_runs),
         .err_warning(bsp__err_warning),
         .err_valid(bsp__err_valid),
         .err_kind(bsp__err_kind),
@@ -529,6 +553,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
+        bsp__tx_single = tx_single;
         bsp__err_reset = err_reset;
         bsp__boff_hold = boff_hold;
         bsp__mode = cfg_regs__mode;
@@ -549,6 +574,8 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
         tec = bsp__tec;
         rec = bsp__rec;
         err_state = bsp__err_state;
+        is_tx = bsp__is_tx;
+        boff_runs = bsp__boff_runs;
         tx_failed = bsp__tx_failed;
         err_warning = bsp__err_warning;
         err_valid = bsp__err_valid;
@@ -566,7 +593,7 @@ module can_channel(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mo
 endmodule // can_channel
 
 
-module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_single,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -586,6 +613,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     input wire  tx_rtr;
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
+    input wire  tx_single;
     input wire  tx_abort;
     input wire  err_reset;
     input wire  boff_hold;
@@ -603,6 +631,8 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     output reg  [8:0] tec;
     output reg  [7:0] rec;
     output reg  [1:0] err_state;
+    output reg  is_tx;
+    output reg  [6:0] boff_runs;
     output reg  err_warning;
     output reg  err_valid;
     output reg  [2:0] err_kind;
@@ -703,12 +733,14 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
     wire  fsm__rx_publish;
     wire  fsm__tx_valid;
     wire  fsm__recovered;
+    wire  [6:0] fsm__boff_runs;
     wire  fsm__suspend_due;
     reg  tx_request__clk;
     reg  tx_request__rst;
     reg  tx_request__listen_only;
     reg  tx_request__single_shot;
     reg  tx_request__tx_req;
+    reg  tx_request__tx_single;
     reg  tx_request__tx_abort;
     wire  tx_request__tx_pending;
     wire  tx_request__tx_failed;
@@ -980,6 +1012,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .rx_publish(fsm__rx_publish),
         .tx_valid(fsm__tx_valid),
         .recovered(fsm__recovered),
+        .boff_runs(fsm__boff_runs),
         .suspend_due(fsm__suspend_due)
     );
     can_channel__bsp__tx_request tx_request(
@@ -988,6 +1021,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         .listen_only(tx_request__listen_only),
         .single_shot(tx_request__single_shot),
         .tx_req(tx_request__tx_req),
+        .tx_single(tx_request__tx_single),
         .tx_abort(tx_request__tx_abort),
         .tx_pending(tx_request__tx_pending),
         .tx_failed(tx_request__tx_failed),
@@ -1261,6 +1295,7 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         tx_request__single_shot = single_shot;
         tx_request__tx_req = tx_req;
         tx_request__tx_abort = tx_abort;
+        tx_request__tx_single = tx_single;
         tx_request__bus_off = fc__bus_off;
         tx_request__suspend_due = fsm__suspend_due;
         tx_request__is_tx = fsm__is_tx;
@@ -1400,6 +1435,8 @@ module can_channel__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_ena
         tec = fc__tec;
         rec = fc__rec;
         err_state = fc__err_state;
+        is_tx = fsm__is_tx;
+        boff_runs = fsm__boff_runs;
         err_warning = fc__warning;
         err_valid = err_capture__err_valid;
         err_kind = err_capture__err_kind;
@@ -2507,7 +2544,7 @@ module can_channel__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
 endmodule // can_channel__bsp__frame_crc__crc_step
 
 
-module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
+module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,boff_runs,suspend_due);
 
     // Module arguments
     input wire  clk;
@@ -2568,6 +2605,7 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only
     output reg  rx_publish;
     output reg  tx_valid;
     output reg  recovered;
+    output reg  [6:0] boff_runs;
     output reg  suspend_due;
 
     // Constant declarations
@@ -3072,6 +3110,7 @@ module can_channel__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
+        boff_runs = recovery_cnt__q;
         flag_passive = flag_passive_q__q;
         last_bit_arb = last_bit_arb_q__q;
         in_arbitration = decode__in_arbitration;
@@ -4523,7 +4562,7 @@ module can_channel__bsp__tx_pin__tx_q(d,q,clock);
 endmodule // can_channel__bsp__tx_pin__tx_q
 
 
-module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
+module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_single,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
 
     // Module arguments
     input wire  clk;
@@ -4531,6 +4570,7 @@ module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_ab
     input wire  listen_only;
     input wire  single_shot;
     input wire  tx_req;
+    input wire  tx_single;
     input wire  tx_abort;
     output reg  tx_pending;
     output reg  tx_failed;
@@ -4556,6 +4596,8 @@ module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_ab
     // Stub signals
     reg  pending__d;
     reg  pending__q;
+    reg  single_q__d;
+    reg  single_q__q;
     reg  abort_pending__d;
     reg  abort_pending__q;
     reg  attempt__d;
@@ -4574,6 +4616,7 @@ module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_ab
     // Update code
     always @(*) begin
         pending__d = pending__q;
+        single_q__d = single_q__q;
         abort_pending__d = abort_pending__q;
         attempt__d = attempt__q;
         tx_failed_q__d = tx_failed_q__q;
@@ -4614,7 +4657,7 @@ module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_ab
             end
             if ((attempt__q && is_tx && (lost || error || flag_error)) || sof_error) begin
                 attempt__d = 1'b0;
-                if (single_shot || abort_pending__q) begin
+                if (single_shot || single_q__q || abort_pending__q) begin
                     pending__d = 1'b0;
                     tx_failed_q__d = 1'b1;
                     abort_pending__d = 1'b0;
@@ -4630,6 +4673,7 @@ module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_ab
         end
         else if (tx_req && ~pending__q) begin
             pending__d = 1'b1;
+            single_q__d = tx_single;
             tx_load = 1'b1;
         end
         tx_pending = pending__q;
@@ -4638,6 +4682,7 @@ module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_ab
         tx_failed = tx_failed_q__q;
         if (rst) begin
             pending__d = 1'b0;
+            single_q__d = 1'b0;
             abort_pending__d = 1'b0;
             attempt__d = 1'b0;
             tx_failed_q__d = 1'b0;
@@ -4649,6 +4694,7 @@ module can_channel__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_ab
     // Flip-flops
     always @(posedge clk) begin
         pending__q <= pending__d;
+        single_q__q <= single_q__d;
         abort_pending__q <= abort_pending__d;
         attempt__q <= attempt__d;
         tx_failed_q__q <= tx_failed_q__d;

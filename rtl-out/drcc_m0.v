@@ -764,6 +764,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     reg  [3:0] chan_a__tx_dlc;
     reg  [63:0] chan_a__tx_data;
     reg  chan_a__tx_abort;
+    reg  chan_a__tx_single;
     reg  chan_a__err_reset;
     reg  chan_a__boff_hold;
     wire  chan_a__tx_pending;
@@ -782,6 +783,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     wire  [8:0] chan_a__tec;
     wire  [7:0] chan_a__rec;
     wire  [1:0] chan_a__err_state;
+    wire  chan_a__is_tx;
+    wire  [6:0] chan_a__boff_runs;
     wire  chan_a__err_warning;
     wire  chan_a__err_valid;
     wire  [2:0] chan_a__err_kind;
@@ -812,6 +815,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     reg  [3:0] chan_b__tx_dlc;
     reg  [63:0] chan_b__tx_data;
     reg  chan_b__tx_abort;
+    reg  chan_b__tx_single;
     reg  chan_b__err_reset;
     reg  chan_b__boff_hold;
     wire  chan_b__tx_pending;
@@ -830,6 +834,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     wire  [8:0] chan_b__tec;
     wire  [7:0] chan_b__rec;
     wire  [1:0] chan_b__err_state;
+    wire  chan_b__is_tx;
+    wire  [6:0] chan_b__boff_runs;
     wire  chan_b__err_warning;
     wire  chan_b__err_valid;
     wire  [2:0] chan_b__err_kind;
@@ -1371,6 +1377,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .tx_dlc(chan_a__tx_dlc),
         .tx_data(chan_a__tx_data),
         .tx_abort(chan_a__tx_abort),
+        .tx_single(chan_a__tx_single),
         .err_reset(chan_a__err_reset),
         .boff_hold(chan_a__boff_hold),
         .tx_pending(chan_a__tx_pending),
@@ -1389,6 +1396,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .tec(chan_a__tec),
         .rec(chan_a__rec),
         .err_state(chan_a__err_state),
+        .is_tx(chan_a__is_tx),
+        .boff_runs(chan_a__boff_runs),
         .err_warning(chan_a__err_warning),
         .err_valid(chan_a__err_valid),
         .err_kind(chan_a__err_kind),
@@ -1421,6 +1430,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .tx_dlc(chan_b__tx_dlc),
         .tx_data(chan_b__tx_data),
         .tx_abort(chan_b__tx_abort),
+        .tx_single(chan_b__tx_single),
         .err_reset(chan_b__err_reset),
         .boff_hold(chan_b__boff_hold),
         .tx_pending(chan_b__tx_pending),
@@ -1439,6 +1449,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .tec(chan_b__tec),
         .rec(chan_b__rec),
         .err_state(chan_b__err_state),
+        .is_tx(chan_b__is_tx),
+        .boff_runs(chan_b__boff_runs),
         .err_warning(chan_b__err_warning),
         .err_valid(chan_b__err_valid),
         .err_kind(chan_b__err_kind),
@@ -1771,6 +1783,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         busoff_a__recover = regs__recover_a;
         busoff_a__err_state = chan_a__err_state;
         chan_a__boff_hold = busoff_a__boff_hold;
+        chan_a__tx_single = 1'b0;
         chan_a__cfg_brp = regs__brp;
         chan_a__cfg_tseg1 = regs__tseg1;
         chan_a__cfg_tseg2 = regs__tseg2;
@@ -1805,6 +1818,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         busoff_b__recover = regs__recover_b;
         busoff_b__err_state = chan_b__err_state;
         chan_b__boff_hold = busoff_b__boff_hold;
+        chan_b__tx_single = 1'b0;
         chan_b__cfg_brp = regs__brp;
         chan_b__cfg_tseg1 = regs__tseg1;
         chan_b__cfg_tseg2 = regs__tseg2;
@@ -2303,7 +2317,7 @@ module drcc_m0__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_los
 endmodule // drcc_m0__caps
 
 
-module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_single,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -2325,6 +2339,7 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
     input wire  tx_abort;
+    input wire  tx_single;
     input wire  err_reset;
     input wire  boff_hold;
     output reg  tx_pending;
@@ -2343,6 +2358,8 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     output reg  [8:0] tec;
     output reg  [7:0] rec;
     output reg  [1:0] err_state;
+    output reg  is_tx;
+    output reg  [6:0] boff_runs;
     output reg  err_warning;
     output reg  err_valid;
     output reg  [2:0] err_kind;
@@ -2439,6 +2456,7 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     reg  bsp__tx_rtr;
     reg  [3:0] bsp__tx_dlc;
     reg  [63:0] bsp__tx_data;
+    reg  bsp__tx_single;
     reg  bsp__tx_abort;
     reg  bsp__err_reset;
     reg  bsp__boff_hold;
@@ -2456,6 +2474,8 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     wire  [8:0] bsp__tec;
     wire  [7:0] bsp__rec;
     wire  [1:0] bsp__err_state;
+    wire  bsp__is_tx;
+    wire  [6:0] bsp__boff_runs;
     wire  bsp__err_warning;
     wire  bsp__err_valid;
     wire  [2:0] bsp__err_kind;
@@ -2531,6 +2551,7 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         .tx_rtr(bsp__tx_rtr),
         .tx_dlc(bsp__tx_dlc),
         .tx_data(bsp__tx_data),
+        .tx_single(bsp__tx_single),
         .tx_abort(bsp__tx_abort),
         .err_reset(bsp__err_reset),
         .boff_hold(bsp__boff_hold),
@@ -2548,6 +2569,8 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         .tec(bsp__tec),
         .rec(bsp__rec),
         .err_state(bsp__err_state),
+        .is_tx(bsp__is_tx),
+        .boff_runs(bsp__boff_runs),
         .err_warning(bsp__err_warning),
         .err_valid(bsp__err_valid),
         .err_kind(bsp__err_kind),
@@ -2606,6 +2629,7 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         bsp__tx_dlc = tx_dlc;
         bsp__tx_data = tx_data;
         bsp__tx_abort = tx_abort;
+        bsp__tx_single = tx_single;
         bsp__err_reset = err_reset;
         bsp__boff_hold = boff_hold;
         bsp__mode = cfg_regs__mode;
@@ -2626,6 +2650,8 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         tec = bsp__tec;
         rec = bsp__rec;
         err_state = bsp__err_state;
+        is_tx = bsp__is_tx;
+        boff_runs = bsp__boff_runs;
         tx_failed = bsp__tx_failed;
         err_warning = bsp__err_warning;
         err_valid = bsp__err_valid;
@@ -2643,7 +2669,7 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
 endmodule // drcc_m0__chan
 
 
-module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_single,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -2663,6 +2689,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
     input wire  tx_rtr;
     input wire  [3:0] tx_dlc;
     input wire  [63:0] tx_data;
+    input wire  tx_single;
     input wire  tx_abort;
     input wire  err_reset;
     input wire  boff_hold;
@@ -2680,6 +2707,8 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
     output reg  [8:0] tec;
     output reg  [7:0] rec;
     output reg  [1:0] err_state;
+    output reg  is_tx;
+    output reg  [6:0] boff_runs;
     output reg  err_warning;
     output reg  err_valid;
     output reg  [2:0] err_kind;
@@ -2780,12 +2809,14 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
     wire  fsm__rx_publish;
     wire  fsm__tx_valid;
     wire  fsm__recovered;
+    wire  [6:0] fsm__boff_runs;
     wire  fsm__suspend_due;
     reg  tx_request__clk;
     reg  tx_request__rst;
     reg  tx_request__listen_only;
     reg  tx_request__single_shot;
     reg  tx_request__tx_req;
+    reg  tx_request__tx_single;
     reg  tx_request__tx_abort;
     wire  tx_request__tx_pending;
     wire  tx_request__tx_failed;
@@ -3057,6 +3088,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .rx_publish(fsm__rx_publish),
         .tx_valid(fsm__tx_valid),
         .recovered(fsm__recovered),
+        .boff_runs(fsm__boff_runs),
         .suspend_due(fsm__suspend_due)
     );
     drcc_m0__chan__bsp__tx_request tx_request(
@@ -3065,6 +3097,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .listen_only(tx_request__listen_only),
         .single_shot(tx_request__single_shot),
         .tx_req(tx_request__tx_req),
+        .tx_single(tx_request__tx_single),
         .tx_abort(tx_request__tx_abort),
         .tx_pending(tx_request__tx_pending),
         .tx_failed(tx_request__tx_failed),
@@ -3338,6 +3371,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         tx_request__single_shot = single_shot;
         tx_request__tx_req = tx_req;
         tx_request__tx_abort = tx_abort;
+        tx_request__tx_single = tx_single;
         tx_request__bus_off = fc__bus_off;
         tx_request__suspend_due = fsm__suspend_due;
         tx_request__is_tx = fsm__is_tx;
@@ -3477,6 +3511,8 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         tec = fc__tec;
         rec = fc__rec;
         err_state = fc__err_state;
+        is_tx = fsm__is_tx;
+        boff_runs = fsm__boff_runs;
         err_warning = fc__warning;
         err_valid = err_capture__err_valid;
         err_kind = err_capture__err_kind;
@@ -4584,7 +4620,7 @@ module drcc_m0__chan__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
 endmodule // drcc_m0__chan__bsp__frame_crc__crc_step
 
 
-module drcc_m0__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,suspend_due);
+module drcc_m0__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,boff_runs,suspend_due);
 
     // Module arguments
     input wire  clk;
@@ -4645,6 +4681,7 @@ module drcc_m0__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_on
     output reg  rx_publish;
     output reg  tx_valid;
     output reg  recovered;
+    output reg  [6:0] boff_runs;
     output reg  suspend_due;
 
     // Constant declarations
@@ -5149,6 +5186,7 @@ module drcc_m0__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_on
         field = field_q__q;
         bit_cnt = bit_cnt_q__q[(32'h0)+:(6)];
         is_tx = is_tx_q__q;
+        boff_runs = recovery_cnt__q;
         flag_passive = flag_passive_q__q;
         last_bit_arb = last_bit_arb_q__q;
         in_arbitration = decode__in_arbitration;
@@ -6600,7 +6638,7 @@ module drcc_m0__chan__bsp__tx_pin__tx_q(d,q,clock);
 endmodule // drcc_m0__chan__bsp__tx_pin__tx_q
 
 
-module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
+module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_single,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
 
     // Module arguments
     input wire  clk;
@@ -6608,6 +6646,7 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
     input wire  listen_only;
     input wire  single_shot;
     input wire  tx_req;
+    input wire  tx_single;
     input wire  tx_abort;
     output reg  tx_pending;
     output reg  tx_failed;
@@ -6633,6 +6672,8 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
     // Stub signals
     reg  pending__d;
     reg  pending__q;
+    reg  single_q__d;
+    reg  single_q__q;
     reg  abort_pending__d;
     reg  abort_pending__q;
     reg  attempt__d;
@@ -6651,6 +6692,7 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
     // Update code
     always @(*) begin
         pending__d = pending__q;
+        single_q__d = single_q__q;
         abort_pending__d = abort_pending__q;
         attempt__d = attempt__q;
         tx_failed_q__d = tx_failed_q__q;
@@ -6691,7 +6733,7 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
             end
             if ((attempt__q && is_tx && (lost || error || flag_error)) || sof_error) begin
                 attempt__d = 1'b0;
-                if (single_shot || abort_pending__q) begin
+                if (single_shot || single_q__q || abort_pending__q) begin
                     pending__d = 1'b0;
                     tx_failed_q__d = 1'b1;
                     abort_pending__d = 1'b0;
@@ -6707,6 +6749,7 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
         end
         else if (tx_req && ~pending__q) begin
             pending__d = 1'b1;
+            single_q__d = tx_single;
             tx_load = 1'b1;
         end
         tx_pending = pending__q;
@@ -6715,6 +6758,7 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
         tx_failed = tx_failed_q__q;
         if (rst) begin
             pending__d = 1'b0;
+            single_q__d = 1'b0;
             abort_pending__d = 1'b0;
             attempt__d = 1'b0;
             tx_failed_q__d = 1'b0;
@@ -6726,6 +6770,7 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
     // Flip-flops
     always @(posedge clk) begin
         pending__q <= pending__d;
+        single_q__q <= single_q__d;
         abort_pending__q <= abort_pending__d;
         attempt__q <= attempt__d;
         tx_failed_q__q <= tx_failed_q__d;

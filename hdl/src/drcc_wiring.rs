@@ -417,6 +417,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.busoff_a.recover.next = self.regs.recover_a.val();
         self.busoff_a.err_state.next = self.chan_a.err_state.val();
         self.chan_a.boff_hold.next = self.busoff_a.boff_hold.val();
+        // the native map has no per-frame single shot (CTRL.single_shot is per channel)
+        self.chan_a.tx_single.next = false;
         self.chan_a.cfg_brp.next = self.regs.brp.val();
         self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
@@ -459,6 +461,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.busoff_b.recover.next = self.regs.recover_b.val();
         self.busoff_b.err_state.next = self.chan_b.err_state.val();
         self.chan_b.boff_hold.next = self.busoff_b.boff_hold.val();
+        self.chan_b.tx_single.next = false;
         self.chan_b.cfg_brp.next = self.regs.brp.val();
         self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();

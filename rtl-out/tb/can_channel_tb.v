@@ -25,6 +25,7 @@ module can_channel_tb;
   reg  [3:0] tx_dlc;
   reg  [63:0] tx_data;
   reg  tx_abort;
+  reg  tx_single;
   reg  err_reset;
   reg  boff_hold;
   wire tx_pending;
@@ -43,6 +44,8 @@ module can_channel_tb;
   wire [8:0] tec;
   wire [7:0] rec;
   wire [1:0] err_state;
+  wire is_tx;
+  wire [6:0] boff_runs;
   wire err_warning;
   wire err_valid;
   wire [2:0] err_kind;
@@ -55,7 +58,7 @@ module can_channel_tb;
   wire [7:0] cnt_form;
   wire [7:0] cnt_ack;
 
-  can_channel uut(.clk(clk), .rst(rst), .cfg_brp(cfg_brp), .cfg_tseg1(cfg_tseg1), .cfg_tseg2(cfg_tseg2), .cfg_sjw(cfg_sjw), .cfg_triple(cfg_triple), .cfg_mode(cfg_mode), .cfg_ewl(cfg_ewl), .cfg_single_shot(cfg_single_shot), .rx(rx), .tx(tx), .tx_req(tx_req), .tx_id(tx_id), .tx_ide(tx_ide), .tx_rtr(tx_rtr), .tx_dlc(tx_dlc), .tx_data(tx_data), .tx_abort(tx_abort), .err_reset(err_reset), .boff_hold(boff_hold), .tx_pending(tx_pending), .tx_failed(tx_failed), .tx_done(tx_done), .arb_lost(arb_lost), .rx_valid(rx_valid), .rx_id(rx_id), .rx_ide(rx_ide), .rx_rtr(rx_rtr), .rx_dlc(rx_dlc), .rx_data(rx_data), .sample_point(sample_point), .sampled_bit(sampled_bit), .field(field), .tec(tec), .rec(rec), .err_state(err_state), .err_warning(err_warning), .err_valid(err_valid), .err_kind(err_kind), .err_field(err_field), .err_tx(err_tx), .alc(alc), .cnt_bit(cnt_bit), .cnt_stuff(cnt_stuff), .cnt_crc(cnt_crc), .cnt_form(cnt_form), .cnt_ack(cnt_ack));
+  can_channel uut(.clk(clk), .rst(rst), .cfg_brp(cfg_brp), .cfg_tseg1(cfg_tseg1), .cfg_tseg2(cfg_tseg2), .cfg_sjw(cfg_sjw), .cfg_triple(cfg_triple), .cfg_mode(cfg_mode), .cfg_ewl(cfg_ewl), .cfg_single_shot(cfg_single_shot), .rx(rx), .tx(tx), .tx_req(tx_req), .tx_id(tx_id), .tx_ide(tx_ide), .tx_rtr(tx_rtr), .tx_dlc(tx_dlc), .tx_data(tx_data), .tx_abort(tx_abort), .tx_single(tx_single), .err_reset(err_reset), .boff_hold(boff_hold), .tx_pending(tx_pending), .tx_failed(tx_failed), .tx_done(tx_done), .arb_lost(arb_lost), .rx_valid(rx_valid), .rx_id(rx_id), .rx_ide(rx_ide), .rx_rtr(rx_rtr), .rx_dlc(rx_dlc), .rx_data(rx_data), .sample_point(sample_point), .sampled_bit(sampled_bit), .field(field), .tec(tec), .rec(rec), .err_state(err_state), .is_tx(is_tx), .boff_runs(boff_runs), .err_warning(err_warning), .err_valid(err_valid), .err_kind(err_kind), .err_field(err_field), .err_tx(err_tx), .alc(alc), .cnt_bit(cnt_bit), .cnt_stuff(cnt_stuff), .cnt_crc(cnt_crc), .cnt_form(cnt_form), .cnt_ack(cnt_ack));
 
   integer i;
   initial begin
@@ -77,6 +80,7 @@ module can_channel_tb;
     tx_dlc = 0;
     tx_data = 0;
     tx_abort = 0;
+    tx_single = 0;
     err_reset = 0;
     boff_hold = 0;
     #1000;

@@ -131,6 +131,7 @@ impl Traffic {
                     node,
                     at_cycle: t,
                     frame,
+                    single_shot: false,
                 });
             }
             // Gap: none a quarter of the time (back-to-back), else random, at a

@@ -55,7 +55,11 @@ pub fn build_system_with(
         sys.add_fault(*f)?;
     }
     for f in &sc.frames {
-        sys.submit(f.node, f.at_cycle, f.frame)?;
+        if f.single_shot {
+            sys.submit_single_shot(f.node, f.at_cycle, f.frame)?;
+        } else {
+            sys.submit(f.node, f.at_cycle, f.frame)?;
+        }
     }
     for a in &sc.aborts {
         sys.abort(a.node, a.at_cycle)?;

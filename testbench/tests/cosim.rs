@@ -6,8 +6,8 @@
 //! - model vs rust-hdl: every bundled scenario and 50 random frames (rust-hdl's
 //!   simulator is about 50 times slower than Verilator);
 //! - the controller configuration and host control (timing contract §6-§9):
-//!   every mode, single shot, low warning limits, per-node mixes, bus errors and
-//!   aborts, model vs verilator (and a short mix on rust-hdl), so `tx_failed` and
+//!   every mode, single shot (configured and per frame), low warning limits,
+//!   per-node mixes, bus errors and aborts, model vs verilator (and a short mix on rust-hdl), so `tx_failed` and
 //!   every diagnostics register are compared clock by clock.
 //!
 //! A missing Verilator skips locally and fails in CI (`CI` or
@@ -209,6 +209,11 @@ fn configured(seed: u64, frames: usize, label: &str, configs: Vec<ControllerConf
             cycles: if k % 3 == 0 { cpb } else { k % 3 },
         })
         .collect();
+    // Every third frame is requested single shot (timing contract §8
+    // `tx_single`), on top of the node's configuration.
+    for f in sc.frames.iter_mut().skip(1).step_by(3) {
+        f.single_shot = true;
+    }
     sc.aborts = sc
         .frames
         .iter()

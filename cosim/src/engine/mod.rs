@@ -187,6 +187,8 @@ pub struct ChannelInputs {
     pub tx_frame: Frame,
     /// One-clock request: abort the pending frame (§8).
     pub tx_abort: bool,
+    /// Latched with `tx_req`: that frame is single shot (§8).
+    pub tx_single: bool,
     /// Error counter reset: TEC = REC = 0, error active, unless bus-off (§4.5).
     pub err_reset: bool,
     /// Bus-off hold: a bus-off node does not count its recovery (§4.5).
@@ -208,6 +210,11 @@ pub struct Probes {
     pub rec: u8,
     /// 0 error active, 1 error passive, 2 bus-off.
     pub err_state: u8,
+    /// The node is transmitter (§4.5, "Roles").
+    pub is_tx: bool,
+    /// Completed runs of 11 recessive bits in the current bus-off, 0 outside
+    /// it (§4.5).
+    pub boff_runs: u8,
 }
 
 /// Host-visible diagnostics (timing contract §9).

@@ -76,6 +76,7 @@ impl ChannelEngine for RustHdlEngine {
         u.tx_dlc.next = ((i.tx_frame.dlc & 0xF) as u64).into();
         u.tx_data.next = i.tx_frame.data_word().into();
         u.tx_abort.next = i.tx_abort;
+        u.tx_single.next = i.tx_single;
         u.err_reset.next = i.err_reset;
         u.boff_hold.next = i.boff_hold;
         self.settle();
@@ -105,6 +106,8 @@ impl ChannelEngine for RustHdlEngine {
                 tec: u.tec.val().to_u64() as u16,
                 rec: u.rec.val().to_u64() as u8,
                 err_state: u.err_state.val().to_u64() as u8,
+                is_tx: u.is_tx.val(),
+                boff_runs: u.boff_runs.val().to_u64() as u8,
             },
             diag: Diagnostics {
                 err_warning: u.err_warning.val(),

@@ -155,6 +155,7 @@ fn encode(i: &ChannelInputs, p: &mut CanChannelIn) {
         tx_dlc: f.dlc & 0xF,
         tx_data: f.data_word(),
         tx_abort: i.tx_abort as u8,
+        tx_single: i.tx_single as u8,
         err_reset: i.err_reset as u8,
         boff_hold: i.boff_hold as u8,
     };
@@ -184,6 +185,8 @@ fn decode(p: &CanChannelOut) -> ChannelOutputs {
             tec: p.tec,
             rec: p.rec,
             err_state: p.err_state,
+            is_tx: p.is_tx != 0,
+            boff_runs: p.boff_runs,
         },
         diag: Diagnostics {
             err_warning: p.err_warning != 0,
@@ -232,6 +235,7 @@ mod tests {
                 data: [1, 2, 3, 4, 5, 6, 7, 8],
             },
             tx_abort: true,
+            tx_single: true,
             err_reset: true,
             boff_hold: true,
         };
@@ -257,6 +261,7 @@ mod tests {
                 tx_dlc: 8,
                 tx_data: 0x0102_0304_0506_0708,
                 tx_abort: 1,
+                tx_single: 1,
                 err_reset: 1,
                 boff_hold: 1,
             }
@@ -282,10 +287,11 @@ mod tests {
                     p.cfg_ewl,
                     p.cfg_single_shot,
                     p.tx_abort,
+                    p.tx_single,
                     p.err_reset,
                     p.boff_hold
                 ),
-                (96, 0, 0, 0, 0)
+                (96, 0, 0, 0, 0, 0)
             );
         }
     }
@@ -310,6 +316,8 @@ mod tests {
             tec: 256,
             rec: 127,
             err_state: 2,
+            is_tx: 1,
+            boff_runs: 100,
             err_warning: 1,
             err_valid: 0,
             err_kind: 4,
@@ -343,6 +351,8 @@ mod tests {
                 tec: 256,
                 rec: 127,
                 err_state: 2,
+                is_tx: true,
+                boff_runs: 100,
             }
         );
         assert_eq!(

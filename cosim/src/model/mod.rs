@@ -190,6 +190,9 @@ impl ChannelModel {
                 tec: counters.tec(),
                 rec: counters.rec(),
                 err_state: counters.state(),
+                // TODO(model): §4.5 role and bus-off run count, not modelled yet.
+                is_tx: false,
+                boff_runs: 0,
             },
             diag: Diagnostics {
                 err_warning: counters.tec() >= self.ewl as u16 || counters.rec() >= self.ewl,

@@ -108,6 +108,8 @@ impl RunOutcome {
 struct Queued {
     due: u64,
     frame: Frame,
+    /// Requested with `tx_single` (timing contract §8).
+    single: bool,
 }
 
 /// N channel engines on one bus.
@@ -279,6 +281,28 @@ impl System {
 
     /// Queues `frame` on `node`, to be requested at `at_cycle` or later.
     pub fn submit(&mut self, node: usize, at_cycle: u64, frame: Frame) -> Result<(), String> {
+        self.enqueue(node, at_cycle, frame, false)
+    }
+
+    /// [`System::submit`], requested with `tx_single`: the frame is dropped at
+    /// its first failed attempt whatever the node's configuration (timing
+    /// contract §8).
+    pub fn submit_single_shot(
+        &mut self,
+        node: usize,
+        at_cycle: u64,
+        frame: Frame,
+    ) -> Result<(), String> {
+        self.enqueue(node, at_cycle, frame, true)
+    }
+
+    fn enqueue(
+        &mut self,
+        node: usize,
+        at_cycle: u64,
+        frame: Frame,
+        single: bool,
+    ) -> Result<(), String> {
         let nodes = self.nodes();
         let q = self
             .queues
@@ -291,6 +315,7 @@ impl System {
             Queued {
                 due: at_cycle,
                 frame,
+                single,
             },
         );
         Ok(())
@@ -378,10 +403,12 @@ impl System {
                 }
             }
             let mut tx_req = false;
+            let mut tx_single = false;
             if !rst && !tx_abort && !self.sample.outputs[i].tx_pending && !self.sample.tx_req[i] {
                 if let Some(head) = self.queues[i].front() {
                     if head.due <= cycle {
                         tx_req = true;
+                        tx_single = head.single;
                         self.tx_frame[i] = head.frame;
                         self.in_flight[i] = Some(head.frame);
                         self.queues[i].pop_front();
@@ -396,6 +423,7 @@ impl System {
                 tx_req,
                 tx_frame: self.tx_frame[i],
                 tx_abort,
+                tx_single,
                 err_reset: false,
                 boff_hold: false,
             };

@@ -84,6 +84,7 @@ impl System {
                 tx_req: false,
                 tx_frame: self.tx_frame[i],
                 tx_abort: false,
+                tx_single: false,
                 err_reset: false,
                 boff_hold: false,
             });

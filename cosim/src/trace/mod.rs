@@ -142,6 +142,16 @@ pub const OUTPUT_SIGNALS: &[OutputSignal] = &[
         get: |o| o.probes.err_state as u64,
     },
     OutputSignal {
+        name: "is_tx",
+        width: 1,
+        get: |o| o.probes.is_tx as u64,
+    },
+    OutputSignal {
+        name: "boff_runs",
+        width: 7,
+        get: |o| o.probes.boff_runs as u64,
+    },
+    OutputSignal {
         name: "err_warning",
         width: 1,
         get: |o| o.diag.err_warning as u64,

@@ -230,6 +230,7 @@ impl Sys {
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: false,
+                tx_single: false,
                 err_reset: false,
                 boff_hold: false,
             });

@@ -237,6 +237,7 @@ impl Bus {
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: std::mem::take(&mut self.abort[i]),
+                tx_single: false,
                 err_reset: false,
                 boff_hold: self.boff_hold[i],
             });
@@ -323,6 +324,7 @@ impl Tester {
                 tx_req: req.is_some(),
                 tx_frame: req.unwrap_or_default(),
                 tx_abort: false,
+                tx_single: false,
                 err_reset: false,
                 boff_hold: false,
             });

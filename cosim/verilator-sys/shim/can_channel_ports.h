@@ -40,6 +40,7 @@
     X(uint8_t,  tx_dlc,           4)  /* Data length code as sent, 0..15; 9..15 carry 8 bytes. Latched by `tx_req`. */ \
     X(uint64_t, tx_data,         64)  /* Data bytes, byte 0 (the first on the bus) in `[63:56]`, byte 7 in `[7:0]`: the data field leaves MSB first from bit 63 down. Bytes past `min(tx_dlc, 8)` are not sent. Latched by `tx_req`. */ \
     X(uint8_t,  tx_abort,         1)  /* Abort request, a one-clock pulse: drops the pending frame at once while the node is not transmitting it (and `tx` is recessive), else when the attempt in progress fails; a successful attempt still ends with `tx_done` (contract §8). */ \
+    X(uint8_t,  tx_single,        1)  /* 1 = the frame of this `tx_req` is single shot, as with `cfg_single_shot` but for this frame only. Latched by `tx_req` (contract §8). */ \
     X(uint8_t,  err_reset,        1)  /* Error counter reset: at an edge with `err_reset = 1` a node that is not bus-off ends with TEC = REC = 0, error active; it stays on the bus (no re-integration, unlike `rst`). 0 in normal use (contract §4.5). */ \
     X(uint8_t,  boff_hold,        1)  /* Bus-off hold: while 1, a bus-off node does not count its recovery (128 runs of 11 recessive bits); it stays bus-off until the host lets it go. 0 in normal use (contract §4.5). */
 
@@ -61,6 +62,8 @@
     X(uint16_t, tec,              9)  /* Transmit error counter TEC (ISO 11898-1 12.1.4); above 255 the node is bus-off. */ \
     X(uint8_t,  rec,              8)  /* Receive error counter REC, saturating at 255. */ \
     X(uint8_t,  err_state,        2)  /* Fault confinement state: 0 error active, 1 error passive, 2 bus-off. */ \
+    X(uint8_t,  is_tx,            1)  /* The node is transmitter of the frame on the bus: from the SOF it starts until it loses arbitration, the end of the intermission after its frame, or bus-off (contract §4.5, "Roles"). */ \
+    X(uint8_t,  boff_runs,        7)  /* Completed runs of 11 recessive bits in the current bus-off (0..127), 0 outside bus-off (contract §4.5). */ \
     X(uint8_t,  err_warning,      1)  /* `tec >= cfg_ewl || rec >= cfg_ewl` (error warning limit reached). */ \
     X(uint8_t,  err_valid,        1)  /* One-clock pulse: an error was detected; `err_kind`, `err_field` and `err_tx` are loaded at that edge. */ \
     X(uint8_t,  err_kind,         3)  /* Kind of the last error: 1 bit, 2 stuff, 3 CRC, 4 form, 5 ACK (0 none since reset). Held until the next error. */ \

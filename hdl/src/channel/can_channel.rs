@@ -82,6 +82,9 @@ pub struct CanChannel {
     /// node is not transmitting it (and `tx` is recessive), else when the attempt in
     /// progress fails; a successful attempt still ends with `tx_done` (contract §8).
     pub tx_abort: Signal<In, Bit>,
+    /// 1 = the frame of this `tx_req` is single shot, as with `cfg_single_shot`
+    /// but for this frame only. Latched by `tx_req` (contract §8).
+    pub tx_single: Signal<In, Bit>,
     // ---- error control ----
     /// Error counter reset: at an edge with `err_reset = 1` a node that is not
     /// bus-off ends with TEC = REC = 0, error active; it stays on the bus (no
@@ -138,6 +141,13 @@ pub struct CanChannel {
     pub rec: Signal<Out, Bits<8>>,
     /// Fault confinement state: 0 error active, 1 error passive, 2 bus-off.
     pub err_state: Signal<Out, Bits<2>>,
+    /// The node is transmitter of the frame on the bus: from the SOF it starts
+    /// until it loses arbitration, the end of the intermission after its frame,
+    /// or bus-off (contract §4.5, "Roles").
+    pub is_tx: Signal<Out, Bit>,
+    /// Completed runs of 11 recessive bits in the current bus-off (0..127), 0
+    /// outside bus-off (contract §4.5).
+    pub boff_runs: Signal<Out, Bits<7>>,
     // diagnostics, host-visible registers (contract §9)
     /// `tec >= cfg_ewl || rec >= cfg_ewl` (error warning limit reached).
     pub err_warning: Signal<Out, Bit>,
@@ -195,6 +205,7 @@ impl Default for CanChannel {
             tx_dlc: Default::default(),
             tx_data: Default::default(),
             tx_abort: Default::default(),
+            tx_single: Default::default(),
             err_reset: Default::default(),
             boff_hold: Default::default(),
             tx_pending: Default::default(),
@@ -213,6 +224,8 @@ impl Default for CanChannel {
             tec: Default::default(),
             rec: Default::default(),
             err_state: Default::default(),
+            is_tx: Default::default(),
+            boff_runs: Default::default(),
             err_warning: Default::default(),
             err_valid: Default::default(),
             err_kind: Default::default(),
@@ -283,6 +296,7 @@ impl Logic for CanChannel {
         self.bsp.tx_dlc.next = self.tx_dlc.val();
         self.bsp.tx_data.next = self.tx_data.val();
         self.bsp.tx_abort.next = self.tx_abort.val();
+        self.bsp.tx_single.next = self.tx_single.val();
         self.bsp.err_reset.next = self.err_reset.val();
         self.bsp.boff_hold.next = self.boff_hold.val();
         self.bsp.mode.next = self.cfg_regs.mode.val();
@@ -304,6 +318,8 @@ impl Logic for CanChannel {
         self.tec.next = self.bsp.tec.val();
         self.rec.next = self.bsp.rec.val();
         self.err_state.next = self.bsp.err_state.val();
+        self.is_tx.next = self.bsp.is_tx.val();
+        self.boff_runs.next = self.bsp.boff_runs.val();
         self.tx_failed.next = self.bsp.tx_failed.val();
         self.err_warning.next = self.bsp.err_warning.val();
         self.err_valid.next = self.bsp.err_valid.val();

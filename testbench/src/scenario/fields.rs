@@ -232,6 +232,7 @@ impl Loader<'_> {
             node,
             at_cycle,
             frame,
+            single_shot: f.single_shot,
         })
     }
 

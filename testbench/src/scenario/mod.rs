@@ -104,6 +104,9 @@ pub struct ScheduledFrame {
     pub at_cycle: u64,
     /// The frame.
     pub frame: Frame,
+    /// Requested single shot (`tx_single`, timing contract §8): dropped at its
+    /// first failed attempt whatever the node's configuration.
+    pub single_shot: bool,
 }
 
 /// A one-clock `tx_abort` request.

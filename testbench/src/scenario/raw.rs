@@ -63,6 +63,8 @@ pub(super) struct RawFrame {
     pub(super) remote: bool,
     pub(super) dlc: Option<Spanned<i64>>,
     pub(super) data: Option<Spanned<Vec<i64>>>,
+    #[serde(default)]
+    pub(super) single_shot: bool,
 }
 
 #[derive(Deserialize)]

@@ -66,6 +66,9 @@ impl Scenario {
                     .collect();
                 let _ = writeln!(s, "data = [{}]", d.join(", "));
             }
+            if f.single_shot {
+                let _ = writeln!(s, "single_shot = true");
+            }
         }
         if let Expectations::Explicit(list) = &self.expect {
             for e in list {

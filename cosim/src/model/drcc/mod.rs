@@ -178,6 +178,8 @@ impl DrccModel {
             // §11.6: a bus-off channel counts its recovery only with the host's
             // permission when `busoff_manual` is set (in every mode).
             boff_hold: r.boff_hold(c),
+            // The native map has no per-frame single shot.
+            tx_single: false,
             rx,
             timing: BitTiming {
                 brp: r.brp(),

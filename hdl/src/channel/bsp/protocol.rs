@@ -89,6 +89,8 @@ pub struct ProtocolController {
     pub tx_dlc: Signal<In, Bits<4>>,
     /// Data, byte 0 in bits 63..56.
     pub tx_data: Signal<In, Bits<64>>,
+    /// Latched with `tx_req`: this frame is single shot (contract §8).
+    pub tx_single: Signal<In, Bit>,
     /// Abort the pending frame (contract §8).
     pub tx_abort: Signal<In, Bit>,
     /// Error counter reset (contract §4.5).
@@ -125,6 +127,10 @@ pub struct ProtocolController {
     pub rec: Signal<Out, Bits<8>>,
     /// 0 error active, 1 error passive, 2 bus-off.
     pub err_state: Signal<Out, Bits<2>>,
+    /// The node is transmitter (contract §4.5, "Roles").
+    pub is_tx: Signal<Out, Bit>,
+    /// Completed runs of the bus-off recovery (contract §4.5).
+    pub boff_runs: Signal<Out, Bits<7>>,
     // diagnostics (contract §9)
     /// TEC or REC at or above the error warning limit.
     pub err_warning: Signal<Out, Bit>,
@@ -224,6 +230,7 @@ impl Logic for ProtocolController {
         self.tx_request.single_shot.next = self.single_shot.val();
         self.tx_request.tx_req.next = self.tx_req.val();
         self.tx_request.tx_abort.next = self.tx_abort.val();
+        self.tx_request.tx_single.next = self.tx_single.val();
         self.tx_request.bus_off.next = self.fc.bus_off.val();
         self.tx_request.suspend_due.next = self.fsm.suspend_due.val();
         self.tx_request.is_tx.next = self.fsm.is_tx.val();
@@ -373,6 +380,8 @@ impl Logic for ProtocolController {
         self.tec.next = self.fc.tec.val();
         self.rec.next = self.fc.rec.val();
         self.err_state.next = self.fc.err_state.val();
+        self.is_tx.next = self.fsm.is_tx.val();
+        self.boff_runs.next = self.fsm.boff_runs.val();
         self.err_warning.next = self.fc.warning.val();
         self.err_valid.next = self.err_capture.err_valid.val();
         self.err_kind.next = self.err_capture.err_kind.val();

@@ -144,6 +144,9 @@ pub struct ProtocolFsm {
     pub tx_valid: Signal<Out, Bit>,
     /// Bus-off recovery completed (12.1.4.4).
     pub recovered: Signal<Out, Bit>,
+    /// Completed runs of 11 recessive bits in this bus-off, 0 outside it
+    /// (contract §4.5 `boff_runs`).
+    pub boff_runs: Signal<Out, Bits<7>>,
     /// An error-passive transmitter suspends after this frame (10.4.5).
     pub suspend_due: Signal<Out, Bit>,
     // protocol state
@@ -566,6 +569,7 @@ impl Logic for ProtocolFsm {
         self.field.next = self.field_q.q.val();
         self.bit_cnt.next = self.bit_cnt_q.q.val().get_bits::<6>(0);
         self.is_tx.next = self.is_tx_q.q.val();
+        self.boff_runs.next = self.recovery_cnt.q.val();
         self.flag_passive.next = self.flag_passive_q.q.val();
         self.last_bit_arb.next = self.last_bit_arb_q.q.val();
         self.in_arbitration.next = self.decode.in_arbitration.val();

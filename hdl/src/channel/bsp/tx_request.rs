@@ -6,7 +6,8 @@
 //! is sent again (automatic retransmission) until it is valid for the
 //! transmitter (10.7). An attempt runs from its SOF to `tx_done`, lost
 //! arbitration or the first error it detects as transmitter; with single shot,
-//! or an abort due, a failed attempt drops the frame. An abort is carried out at
+//! per configuration or per request (`tx_single`), or an abort due, a failed
+//! attempt drops the frame. An abort is carried out at
 //! the first clock the frame is not on the bus, else remembered until then.
 //! The protocol control tells this block what happened by one-clock strobes at
 //! the sample point; it answers with `starts` / `joins` for the next SOF.
@@ -28,6 +29,8 @@ pub struct TxRequest {
     // host transmit control
     /// One clock: a frame to send (latched while nothing is pending).
     pub tx_req: Signal<In, Bit>,
+    /// Latched with `tx_req`: this frame is single shot (contract §8).
+    pub tx_single: Signal<In, Bit>,
     /// Abort the pending frame at the first bit it is not on the bus.
     pub tx_abort: Signal<In, Bit>,
     /// A frame is pending.
@@ -77,6 +80,8 @@ pub struct TxRequest {
     /// A SOF at intermission bit 3 is this node's frame (10.4.5).
     pub joins: Signal<Out, Bit>,
     pending: DFF<Bit>,
+    /// The pending frame was requested single shot (`tx_single`).
+    single_q: DFF<Bit>,
     /// An abort waits for the frame to leave the bus.
     abort_pending: DFF<Bit>,
     /// An attempt to send the pending frame is on the bus.
@@ -95,6 +100,7 @@ impl Logic for TxRequest {
             self,
             clk,
             pending,
+            single_q,
             abort_pending,
             attempt,
             tx_failed_q,
@@ -155,7 +161,7 @@ impl Logic for TxRequest {
                 || self.sof_error.val()
             {
                 self.attempt.d.next = false;
-                if self.single_shot.val() || self.abort_pending.q.val() {
+                if self.single_shot.val() || self.single_q.q.val() || self.abort_pending.q.val() {
                     self.pending.d.next = false;
                     self.tx_failed_q.d.next = true;
                     self.abort_pending.d.next = false;
@@ -174,6 +180,7 @@ impl Logic for TxRequest {
             self.tx_failed_q.d.next = true;
         } else if self.tx_req.val() && !self.pending.q.val() {
             self.pending.d.next = true;
+            self.single_q.d.next = self.tx_single.val();
             self.tx_load.next = true;
         }
 
@@ -185,6 +192,7 @@ impl Logic for TxRequest {
         // ---- synchronous reset
         if self.rst.val() {
             self.pending.d.next = false;
+            self.single_q.d.next = false;
             self.abort_pending.d.next = false;
             self.attempt.d.next = false;
             self.tx_failed_q.d.next = false;

@@ -8,6 +8,7 @@ pub mod generated;
 pub mod host;
 pub mod hub;
 pub mod memory;
+pub mod pelican;
 pub mod pins;
 pub mod redcan;
 pub mod rmb;

@@ -10,6 +10,7 @@ mod drcc;
 mod host;
 mod hub;
 mod memory;
+mod pelican;
 mod pins;
 mod redcan;
 mod rmb;

@@ -1,0 +1,4 @@
+//! The SJA1000 (PeliCAN) host view of the DRCC (`cosim/src/model/pelican_contract.md`,
+//! user's page `docs/pelican.md`): its blocks, one concern each.
+
+pub mod acceptance_filter;

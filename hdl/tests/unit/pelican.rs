@@ -1,0 +1,3 @@
+//! Tests of `drcc_hdl::pelican`.
+
+mod acceptance_filter;

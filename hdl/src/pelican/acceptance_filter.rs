@@ -141,8 +141,8 @@ impl Logic for AcceptanceFilter {
             .any();
 
         // P-ACF-1: a data byte the frame does not carry matches.
-        self.no_d1.next = self.rtr.val() || (self.dlc.val() == 0);
-        self.no_d2.next = self.rtr.val() || (self.dlc.val() < 2);
+        self.no_d1.next = self.rtr.val() || !self.dlc.val().any();
+        self.no_d2.next = self.rtr.val() || !self.dlc.val().get_bits::<3>(1).any();
 
         if self.ide.val() {
             self.single.next = self.ext_hi_0.val()

@@ -2,3 +2,4 @@
 //! user's page `docs/pelican.md`): its blocks, one concern each.
 
 pub mod acceptance_filter;
+pub mod ecc_code;

@@ -2,4 +2,5 @@
 //! user's page `docs/pelican.md`): its blocks, one concern each.
 
 pub mod acceptance_filter;
+pub mod armed_capture;
 pub mod ecc_code;

@@ -1,4 +1,5 @@
 //! Tests of `drcc_hdl::pelican`.
 
 mod acceptance_filter;
+mod armed_capture;
 mod ecc_code;

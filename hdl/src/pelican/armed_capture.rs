@@ -4,7 +4,7 @@
 //! it, later events leave it alone until the host reads it again. The view has
 //! two: `ALC` (event `arb_lost`) and `ECC` (event `err_valid`).
 //!
-//! At an edge with `event` while armed: the register takes `value` and
+//! At an edge with `pulse` while armed: the register takes `value` and
 //! disarms. A read of the register taken at an edge re-arms it at that edge;
 //! an event at the same edge wins (it loads and stays disarmed). `rst` clears
 //! the register and arms it; the view's reset mode changes neither.
@@ -21,8 +21,8 @@ pub struct ArmedCapture {
     /// Synchronous reset: the register 0, armed.
     pub rst: Signal<In, Bit>,
     // ---- the channel's event ----
-    /// The event of this clock (the channel's pulse).
-    pub event: Signal<In, Bit>,
+    /// The channel's event pulse of this clock (`event` is a SystemVerilog keyword).
+    pub pulse: Signal<In, Bit>,
     /// The value to capture with it.
     pub value: Signal<In, Bits<8>>,
     // ---- the host ----
@@ -42,7 +42,7 @@ impl Logic for ArmedCapture {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, capture, armed);
-        if self.event.val() && self.armed.q.val() {
+        if self.pulse.val() && self.armed.q.val() {
             self.capture.d.next = self.value.val();
             self.armed.d.next = false;
         } else if self.read.val() {

@@ -4,3 +4,4 @@
 pub mod acceptance_filter;
 pub mod armed_capture;
 pub mod ecc_code;
+pub mod tx_frame_buffer;

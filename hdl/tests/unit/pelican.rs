@@ -3,3 +3,4 @@
 mod acceptance_filter;
 mod armed_capture;
 mod ecc_code;
+mod tx_frame_buffer;

@@ -17,7 +17,7 @@ fn clock(uut: &mut ArmedCapture) {
 fn fresh() -> ArmedCapture {
     let mut uut = ArmedCapture::default();
     uut.connect_all();
-    uut.event.next = false;
+    uut.pulse.next = false;
     uut.read.next = false;
     uut.value.next = 0u64.into();
     uut.rst.next = true;
@@ -28,7 +28,7 @@ fn fresh() -> ArmedCapture {
 
 /// One edge: `event` with `value`, `read` taken; returns the register after it.
 fn edge(uut: &mut ArmedCapture, event: Option<u8>, read: bool) -> u8 {
-    uut.event.next = event.is_some();
+    uut.pulse.next = event.is_some();
     uut.value.next = (event.unwrap_or(0xEE) as u64).into();
     uut.read.next = read;
     clock(uut);

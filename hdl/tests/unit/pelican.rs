@@ -3,4 +3,5 @@
 mod acceptance_filter;
 mod armed_capture;
 mod ecc_code;
+mod rx_window;
 mod tx_frame_buffer;

@@ -4,5 +4,6 @@
 pub mod acceptance_filter;
 pub mod armed_capture;
 pub mod ecc_code;
+pub mod rbsa;
 pub mod rx_window;
 pub mod tx_frame_buffer;

@@ -3,5 +3,6 @@
 mod acceptance_filter;
 mod armed_capture;
 mod ecc_code;
+mod rbsa;
 mod rx_window;
 mod tx_frame_buffer;

@@ -3,6 +3,7 @@
 
 pub mod acceptance_filter;
 pub mod armed_capture;
+pub mod byte_lanes;
 pub mod ecc_code;
 pub mod rbsa;
 pub mod rx_window;

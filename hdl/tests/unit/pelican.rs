@@ -2,6 +2,7 @@
 
 mod acceptance_filter;
 mod armed_capture;
+mod byte_lanes;
 mod ecc_code;
 mod rbsa;
 mod rx_window;

@@ -253,6 +253,62 @@ fn model_vs_rusthdl_modes_and_aborts() {
     );
 }
 
+/// Bus-off and its recovery, clock by clock: node 0's receiver stuck
+/// recessive reads each of its own dominant bits back wrong (bit errors, TEC
+/// + 8, §4.5), so it goes bus-off, counts its 128 runs of 11 recessive bits
+/// (`boff_runs`) and recovers, again and again while the fault lasts; the
+/// transmitter role (`is_tx`) begins and ends with every attempt. The model
+/// run shows that the scenario does reach bus-off and a whole recovery.
+fn bus_off_and_recovery() -> Scenario {
+    let mut sc = random(320, 6, 8_000_000, 500_000);
+    let cpb = sc.clocks_per_bit();
+    sc.name = format!("{}-rx-stuck", sc.name);
+    sc.expect = Expectations::Explicit(Vec::new());
+    let first = sc.frames.iter().map(|f| f.at_cycle).min().unwrap_or(0);
+    for f in sc.frames.iter_mut() {
+        f.node = 0;
+    }
+    sc.faults = vec![Fault {
+        target: FaultTarget::Rx(0),
+        kind: FaultKind::StuckRecessive,
+        start: first.saturating_sub(5 * cpb),
+        cycles: 4000 * cpb,
+    }];
+    sc.max_cycles = sc.max_cycles.max(first + 8000 * cpb);
+    sc
+}
+
+#[test]
+fn bus_off_and_recovery_model_reaches_a_whole_recovery() {
+    let sc = bus_off_and_recovery();
+    let mut sys = drcc_testbench::run::build_system(&sc, EngineKind::Model).unwrap();
+    let (mut max_runs, mut recoveries, mut was_off) = (0u8, 0, false);
+    for _ in 0..sc.max_cycles {
+        let p = sys.step().outputs[0].probes;
+        max_runs = max_runs.max(p.boff_runs);
+        if was_off && p.err_state != 2 {
+            recoveries += 1;
+        }
+        was_off = p.err_state == 2;
+    }
+    assert_eq!(max_runs, 127, "the last run before the recovery edge");
+    assert!(
+        recoveries >= 2,
+        "bus-off and recovery, twice ({recoveries})"
+    );
+}
+
+#[test]
+fn model_vs_verilator_bus_off_and_recovery() {
+    if verilator_present() {
+        lockstep(
+            &bus_off_and_recovery(),
+            EngineKind::Model,
+            EngineKind::Verilator,
+        );
+    }
+}
+
 /// The comparison itself: two model systems of the demo, one with a glitch on
 /// node 2's receiver, must diverge at the glitch; the VCDs written around it show
 /// the same first difference to `wave-diff`.

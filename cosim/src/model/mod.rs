@@ -164,7 +164,7 @@ impl ChannelModel {
             }
         }
         if request {
-            self.bsp.latch(&inputs.tx_frame);
+            self.bsp.latch(&inputs.tx_frame, inputs.tx_single);
         }
     }
 
@@ -190,9 +190,8 @@ impl ChannelModel {
                 tec: counters.tec(),
                 rec: counters.rec(),
                 err_state: counters.state(),
-                // TODO(model): §4.5 role and bus-off run count, not modelled yet.
-                is_tx: false,
-                boff_runs: 0,
+                is_tx: self.bsp.is_tx(),
+                boff_runs: self.bsp.boff_runs(),
             },
             diag: Diagnostics {
                 err_warning: counters.tec() >= self.ewl as u16 || counters.rec() >= self.ewl,

@@ -240,9 +240,9 @@ impl Sys {
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: false,
-                tx_single: false,
                 err_reset: false,
                 boff_hold: false,
+                tx_single: false,
             });
             if p.out.rx_valid {
                 p.received.push((self.clock + 1, p.out.rx_frame));

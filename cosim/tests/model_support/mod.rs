@@ -200,6 +200,9 @@ pub struct Bus {
     pub force_dominant: bool,
     /// Each node's `boff_hold` input (timing contract §4.5), 0 unless a test sets it.
     pub boff_hold: Vec<bool>,
+    /// Each node's `tx_single` input (timing contract §8), applied at every step
+    /// (it matters only with an accepted `tx_req`), 0 unless a test sets it.
+    pub tx_single: Vec<bool>,
     pub clock: u64,
 }
 
@@ -214,6 +217,7 @@ impl Bus {
             abort: vec![false; n],
             force_dominant: false,
             boff_hold: vec![false; n],
+            tx_single: vec![false; n],
             clock: 0,
         }
     }
@@ -237,9 +241,9 @@ impl Bus {
                 tx_req: r.is_some(),
                 tx_frame: r.unwrap_or_default(),
                 tx_abort: std::mem::take(&mut self.abort[i]),
-                tx_single: false,
                 err_reset: false,
                 boff_hold: self.boff_hold[i],
+                tx_single: self.tx_single[i],
             });
             self.tx[i] = out.tx;
             outs.push(out);
@@ -324,9 +328,9 @@ impl Tester {
                 tx_req: req.is_some(),
                 tx_frame: req.unwrap_or_default(),
                 tx_abort: false,
-                tx_single: false,
                 err_reset: false,
                 boff_hold: false,
+                tx_single: false,
             });
             self.tx = out.tx;
             if self.record {
@@ -357,5 +361,64 @@ impl Tester {
     /// The outputs at the last sample point.
     pub fn last(&self) -> ChannelOutputs {
         *self.samples.last().expect("no sample point yet")
+    }
+}
+
+/// ISO 11898-1 12.1.4.2 rule l: a bus-off node recovers after 128 occurrences of
+/// 11 consecutive recessive bits.
+pub const RECOVERY_SAMPLES: u32 = 128 * 11;
+
+/// Node 0 of a two-node bus driven into bus-off as in `bus_off_and_recovery`
+/// (its own DATA bits forced dominant: bit errors, TEC + 8 each, rule c), with
+/// `boff_hold` = `hold` from the start (§4.5: the hold acts only once bus-off,
+/// so the way there is the same). At the edge where node 0 becomes bus-off, node
+/// 1 is cut from the bus, so that from then on the bus is node 0's recessive `tx`
+/// unless the test forces it. Returns the bus and node 0's frame.
+pub fn bus_off_node_0(hold: bool) -> (Bus, Frame) {
+    let t = timing(0);
+    let mut bus = Bus::new(2, t);
+    bus.boff_hold[0] = hold;
+    bus.integrate();
+    let f = Frame::base(0x0C4, &[0xFF]);
+    let mut req = vec![Some(f), None];
+    let mut prev = bus.nodes[0].outputs();
+    for _ in 0..4000 * t.clocks_per_bit() {
+        bus.force_dominant = prev.probes.field == code::DATA && prev.tx;
+        let o = bus.step(&req);
+        req = vec![None, None];
+        prev = o[0];
+        if prev.probes.err_state == 2 {
+            assert_eq!(prev.probes.tec, 256, "bus-off at TEC 256 (rule j)");
+            assert_eq!(prev.probes.field, code::BUS_OFF);
+            bus.force_dominant = false;
+            bus.connected[1] = false;
+            return (bus, f);
+        }
+    }
+    panic!("node 0 never became bus-off");
+}
+
+/// Steps until node 0 leaves bus-off, forcing nothing; returns the number of
+/// recessive samples it took from the first step on (the recovering edge is a
+/// sample point and counts). Every step before it: still bus-off, `tx` recessive,
+/// the frame pending; at it TEC = REC = 0, error active, IDLE (§4.5).
+pub fn samples_to_recovery(bus: &mut Bus, limit: u32) -> u32 {
+    let mut samples = 0;
+    loop {
+        let a = bus.step(&[])[0];
+        let p = a.probes;
+        assert!(a.tx, "a bus-off node drives recessive");
+        if p.sample_point {
+            assert!(p.sampled_bit, "nothing drives the bus dominant");
+            samples += 1;
+        }
+        if p.err_state != 2 {
+            assert!(p.sample_point, "recovery at a SAMPLE edge");
+            assert_eq!((p.tec, p.rec, p.err_state, p.field), (0, 0, 0, code::IDLE));
+            return samples;
+        }
+        assert_eq!(p.field, code::BUS_OFF);
+        assert!(a.tx_pending, "the frame stays pending");
+        assert!(samples <= limit, "no recovery within {limit} samples");
     }
 }

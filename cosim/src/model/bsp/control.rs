@@ -65,13 +65,14 @@ impl Bsp {
     }
 
     /// The attempt ended without success (lost arbitration, or an error detected
-    /// as transmitter): in single-shot mode, or with an abort remembered before
+    /// as transmitter): in single-shot mode (`cfg_single_shot`, or `tx_single`
+    /// latched with this frame), or with an abort remembered before
     /// this edge, the frame is dropped at this edge (§8); otherwise it stays
     /// pending (an abort that arrived at this very edge is carried out at the next
     /// edge where the node is no transmitter and its `tx` recessive).
     pub(super) fn attempt_failed(&mut self) {
         self.attempt = false;
-        if self.single_shot || (self.abort_pending && !self.abort_new) {
+        if self.single_shot || self.tx_single || (self.abort_pending && !self.abort_new) {
             self.drop_frame();
         }
     }

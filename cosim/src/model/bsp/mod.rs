@@ -12,8 +12,10 @@
 //! Decisions where the standard or the contract leave room (the list is repeated
 //! in timing_contract.md §4.5):
 //! 1. Roles. A node is *transmitter* from the SOF it starts as transmitter until
-//!    the next SOF, until it loses arbitration, or until the end of the
-//!    intermission that follows its frame; error and overload frames in between
+//!    the next SOF, until it loses arbitration, until the end of the
+//!    intermission that follows its frame (the SAMPLE edge of the 3rd recessive
+//!    intermission bit), or until it becomes bus-off; the `is_tx` probe shows
+//!    the role after the edge. Error and overload frames in between
 //!    count for it as transmitter (rules c, d, f) and make it suspend transmission
 //!    when error passive. Every other node is a receiver.
 //! 2. Counters change at the SAMPLE edge where the error is detected (for a CRC
@@ -63,7 +65,8 @@
 //! 14. An *attempt* runs from the SOF at which the node becomes transmitter until
 //!     `tx_done`, lost arbitration or the first error it detects as transmitter.
 //!     An attempt that ends without success drops the frame (`tx_failed`) in
-//!     single-shot mode or when an abort is remembered.
+//!     single-shot mode (`cfg_single_shot`, or `tx_single` latched with the frame
+//!     by its accepted `tx_req`) or when an abort is remembered.
 //! 15. `tx_abort` (and a remembered abort, at every edge until it is carried out)
 //!     drops the pending frame at once when the node is not transmitter and its
 //!     `tx` register is recessive; otherwise it is remembered. A node whose own
@@ -145,6 +148,8 @@ pub struct Bsp {
     loopback: bool,
     /// No automatic retransmission.
     single_shot: bool,
+    /// `tx_single` latched with the pending frame: this frame is single shot (§8).
+    tx_single: bool,
     // §8: transmit control.
     /// The pending frame's attempt is on the bus (decision 14).
     attempt: bool,
@@ -217,6 +222,7 @@ impl Bsp {
             ack_optional: matches!(mode, Mode::SelfTest | Mode::Loopback),
             loopback: mode == Mode::Loopback,
             single_shot,
+            tx_single: false,
             attempt: false,
             abort_pending: false,
             abort_new: false,
@@ -288,15 +294,33 @@ impl Bsp {
         self.abort_new = false;
     }
 
-    /// `tx_req` while nothing is pending (contract §4.4): latch the frame, or in
-    /// LISTEN_ONLY refuse it with `tx_failed` (§7).
-    pub fn latch(&mut self, frame: &Frame) {
+    /// `tx_req` while nothing is pending (contract §4.4): latch the frame and its
+    /// `tx_single` (§8), or in LISTEN_ONLY refuse it with `tx_failed` (§7).
+    pub fn latch(&mut self, frame: &Frame, single: bool) {
         if self.listen_only {
             self.tx_failed = true;
             return;
         }
         self.stream = TxStream::encode(frame);
+        self.tx_single = single;
         self.tx_pending = true;
+    }
+
+    /// The `is_tx` probe: the transmitter role (contract §4.5 "Roles").
+    #[inline]
+    pub fn is_tx(&self) -> bool {
+        self.transmitter
+    }
+
+    /// The `boff_runs` probe: completed runs of 11 recessive samples in the
+    /// current bus-off, 0 outside bus-off (contract §4.5 "Bus-off").
+    #[inline]
+    pub fn boff_runs(&self) -> u8 {
+        if self.counters.is_bus_off() {
+            self.busoff_occ
+        } else {
+            0
+        }
     }
 
     /// `hard_sync_enable` (contract §4.1).

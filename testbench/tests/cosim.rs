@@ -255,7 +255,7 @@ fn model_vs_rusthdl_modes_and_aborts() {
 
 /// Bus-off and its recovery, clock by clock: node 0's receiver stuck
 /// recessive reads each of its own dominant bits back wrong (bit errors, TEC
-/// + 8, §4.5), so it goes bus-off, counts its 128 runs of 11 recessive bits
+/// plus 8, §4.5), so it goes bus-off, counts its 128 runs of 11 recessive bits
 /// (`boff_runs`) and recovers, again and again while the fault lasts; the
 /// transmitter role (`is_tx`) begins and ends with every attempt. The model
 /// run shows that the scenario does reach bus-off and a whole recovery.

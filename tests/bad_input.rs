@@ -252,13 +252,14 @@ fn wave_diff_names_truncated_files_and_compares_across_timescales() {
     let full = std::fs::read_to_string(d.join("a.vcd")).unwrap();
     // cut inside a line
     std::fs::write(d.join("cut.vcd"), &full[..full.len() / 2 + 3]).unwrap();
-    // cut at a line, half way
+    // cut at a line, half way: before a time stamp, so that every time step
+    // it keeps is whole (a cut between a time stamp and its value changes
+    // would be a real difference at that time)
     let lines: Vec<&str> = full.lines().collect();
-    std::fs::write(
-        d.join("short.vcd"),
-        lines[..lines.len() / 2].join("\n") + "\n",
-    )
-    .unwrap();
+    let half = (lines.len() / 2..lines.len())
+        .find(|&k| lines[k].starts_with('#'))
+        .expect("a time stamp in the second half");
+    std::fs::write(d.join("short.vcd"), lines[..half].join("\n") + "\n").unwrap();
     // the same trace in picoseconds
     let ps: Vec<String> = lines
         .iter()

@@ -5,6 +5,8 @@ pub mod acceptance_filter;
 pub mod armed_capture;
 pub mod byte_lanes;
 pub mod ecc_code;
+pub mod interrupts;
+pub mod mode_control;
 pub mod rbsa;
 pub mod rx_window;
 pub mod tx_frame_buffer;

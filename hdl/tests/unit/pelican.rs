@@ -4,6 +4,8 @@ mod acceptance_filter;
 mod armed_capture;
 mod byte_lanes;
 mod ecc_code;
+mod interrupts;
+mod mode_control;
 mod rbsa;
 mod rx_window;
 mod tx_frame_buffer;

@@ -22,6 +22,9 @@ fn linux_transmit_standard_and_extended() {
             n.received.clear();
             n.w(1, 0x01);
             assert_eq!(n.r(2) & 0x0C, 0, "P-TX-2: TBS and TCS fall at the TR edge");
+            let fi = n.r(96);
+            n.w(16, fi ^ 0x0F);
+            assert_eq!(n.r(96), fi, "P-TX-1: TX buffer locked while TBS = 0");
             n.until(200 * BIT, |n| n.dut.core().core_view().chan[0].tx_done);
             n.idle(3);
             assert_eq!(n.r(2) & 0x0C, 0x0C, "P-TX-7: TBS, TCS after success");
@@ -190,4 +193,18 @@ fn redundancy_line_a_cut() {
     assert_eq!(n.r(120) & 1, 1, "P-X-2: XIR.switch");
     assert_eq!(n.r(2) & 0x80, 0, "P-LOG-3: no logical bus-off");
     let _ = Mode::Normal;
+}
+
+/// P-IR-2: RI needs RIE; RBS shows the frame regardless.
+#[test]
+fn p_ir_2_ri_needs_rie() {
+    let mut n = Net::new(single_a(4, true));
+    n.linux_start(0x02, 0x00);
+    n.peer_req[0] = Some(Frame::base(0x321, &[5]));
+    n.until(600 * BIT, |n| n.dut.read(2) & 1 != 0);
+    n.idle(3);
+    assert_eq!(n.r(3) & 1, 0, "P-IR-2: no RI without RIE");
+    assert!(!n.out.irq, "no irq");
+    n.w(4, 0x01);
+    assert_eq!(n.r(3) & 1, 1, "P-IR-2: RI as a level once RIE is set");
 }

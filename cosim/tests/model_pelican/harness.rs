@@ -9,6 +9,7 @@ use drcc_cosim::{ChannelInputs, ChannelOutputs, ControllerConfig, Frame, Mode};
 /// Clocks per bit with BTR0 = 0, BTR1 = 0x14: 2 clocks a tq, 8 tq.
 pub const BIT: u64 = 16;
 
+#[derive(Clone)]
 pub struct Net {
     pub dut: PelicanModel,
     pub peer: [ChannelModel; 2],

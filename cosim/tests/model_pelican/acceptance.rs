@@ -71,7 +71,7 @@ fn p_acf_1_dual() {
         "filter 2 ignores data"
     );
     assert!(!a.accepts(&Frame::base(0x112, &[])));
-    let id = 0x0ABC_DEF;
+    let id = 0x00AB_CDEF;
     let a = acf(
         [0, 0, (id >> 21) as u8, (id >> 13) as u8],
         [0, 0, 0, 0],

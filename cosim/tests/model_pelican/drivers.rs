@@ -62,7 +62,7 @@ fn p15_ti_and_irq_clocks() {
 fn linux_receive_window_rrb() {
     let mut n = Net::new(single_a(4, true));
     n.linux_start(0x01, 0x00);
-    let f1 = ext(0x0ABC_DEF, &[1, 2, 3, 4, 5]);
+    let f1 = ext(0x00AB_CDEF, &[1, 2, 3, 4, 5]);
     let f2 = Frame {
         rtr: true,
         dlc: 4,
@@ -86,7 +86,7 @@ fn linux_receive_window_rrb() {
     assert_eq!(n.r(16), 0x85, "P-RX-2: FI = ide, dlc");
     assert_eq!(
         n.r(20),
-        ((0x0ABC_DEF & 0x1F) << 3) as u8,
+        ((0x00AB_CDEF & 0x1F) << 3) as u8,
         "P-RX-2: ext byte 20"
     );
     n.w(1, 0x04);

@@ -332,11 +332,7 @@ impl PelicanModel {
                 reconfig(n, v.ewlr, b);
                 n.ewlr = b;
             }
-            adr::RXERR | adr::TXERR if rm => {
-                if v.boh || b != 0 {
-                    n.xir |= xir::IGN;
-                }
-            }
+            adr::RXERR | adr::TXERR if rm && (v.boh || b != 0) => n.xir |= xir::IGN,
             16..=23 if rm => {
                 let k = (r - 16) as usize;
                 if k < 4 {
@@ -488,7 +484,9 @@ impl PelicanModel {
         if (es != v.es_q || bs != v.bs_q) && en(ier::EIE) {
             n.ir |= ir::EI;
         }
-        let epi = (v.st_q == 0 && st == 1) || (v.st_q == 1 && st == 0 && !(v.es_q && !es));
+        // Passive -> active counts unless ES falls at the same edge (P-IR-6).
+        let es_falls = v.es_q && !es;
+        let epi = (v.st_q == 0 && st == 1) || (v.st_q == 1 && st == 0 && !es_falls);
         if epi && en(ier::EPIE) {
             n.ir |= ir::EPI;
         }

@@ -140,6 +140,17 @@ fn zephyr_self_test_srr() {
     n.until(200 * BIT, |n| n.dut.read(2) & 0x04 != 0);
     assert_eq!(n.r(2) & 0x08, 0x08, "self test: success without ACK");
     assert_eq!(n.r(15), 0, "no error counted");
+    n.idle(4);
+    assert_eq!(n.r(29), 1, "P-TX-5: the own frame enters the RX FIFO");
+    assert_eq!(n.read_rx(), Frame::base(0x0F0, &[0x11, 0x22]), "P-TX-5");
+    // P-ACF-2: a self-received frame passes the filter, TR alone is not
+    // self-received.
+    n.w(1, 0x04);
+    n.load_tx(&Frame::base(0x0F1, &[0x33]));
+    n.w(1, 0x01);
+    n.until(200 * BIT, |n| n.dut.read(2) & 0x04 != 0);
+    n.idle(10);
+    assert_eq!(n.r(29), 0, "P-CMR-2: TR alone is not self-received");
 }
 
 /// Zephyr listen-only: a start completes at once without transmission

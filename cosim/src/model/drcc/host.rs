@@ -31,6 +31,8 @@ pub struct HostDrive {
     pub tx_abort: [bool; 2],
     /// Per-channel bus-off hold (P-CORE-2, P-BO-3).
     pub boff_hold: [bool; 2],
+    /// A self-received frame offered to the RX writer (source `S`, P-TX-5).
+    pub self_frame: Option<Frame>,
     /// The acceptance gate at the RX FIFO's write port (P-CORE-4).
     pub gate: Option<Acf>,
 }
@@ -79,6 +81,7 @@ impl DrccModel {
             self.r.ctrl = drive.ctrl;
             self.r.btr = drive.btr;
             self.r.filt.gate = drive.gate;
+            self.rx.offer_s = drive.self_frame;
         }
         self.host_ev = HostEvents::default();
         self.step(&DrccInputs {

@@ -12,8 +12,10 @@
 //!
 //! ## Interpretations (where the contract leaves a choice)
 //!
-//! 1. P-TX-5 self-reception (RX writer source `S`, P-CORE-4) is not modelled:
-//!    `SRR` transmits like `TR` and the frame is not offered to the RX FIFO.
+//! 1. P-TX-5 self-reception: the frame of `TXB` (unchanged while `TBS = 0`) is
+//!    offered to the RX writer's source `S` at the completion edge of a
+//!    successful message started with `SRR`; `S` is taken after A and B when
+//!    the writer is idle, and its FIFO entry's channel reads 2 (`XSTAT[7]` 0).
 //! 2. P-CORE-3: the auxiliary FSMs follow the core's hold (`reset_mode`) as the
 //!    native core does; they are not kept running through a bus-off hold.
 //! 3. P-X-3/P-X-4 native window: `XWIN_IDX` and `XWIN_D0..3` are stored and read
@@ -316,6 +318,7 @@ impl PelicanModel {
             tx_single: v.one_shot && v.single(),
             tx_abort,
             boff_hold,
+            self_frame: None,
             gate: Some(Acf {
                 acr: v.acr,
                 amr: v.amr,
@@ -336,7 +339,7 @@ impl PelicanModel {
         let mut n = v;
         let mut drive = self.drive(&v);
         self.access(i, &mut n, &mut drive);
-        self.events(&mut n);
+        drive.self_frame = self.events(&mut n);
         // P-MOD-5: the edge where RM rises.
         if !v.rm() && n.rm() {
             n.tbs = true;

@@ -424,7 +424,8 @@ impl PelicanModel {
     }
 
     /// The events of this edge from the core's outputs before it (§7-§10).
-    pub(super) fn events(&self, n: &mut View) {
+    /// Returns the frame offered for self-reception (P-TX-5).
+    pub(super) fn events(&self, n: &mut View) -> Option<Frame> {
         let v = self.v;
         let c = self.core.core_view();
         let o = self.core.outputs();
@@ -447,6 +448,7 @@ impl PelicanModel {
                 _ => (self.ev.dmr_tx_done, true),
             }
         };
+        let offer = (done && ok && v.self_rx && !v.lo_start).then(|| txb_frame(&v.txb));
         if done {
             n.lo_start = false;
             n.tbs = true;
@@ -496,6 +498,7 @@ impl PelicanModel {
         n.es_q = es;
         n.bs_q = bs;
         n.st_q = st;
+        offer
     }
 }
 

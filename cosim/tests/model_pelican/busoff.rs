@@ -3,11 +3,9 @@
 use crate::harness::*;
 use drcc_cosim::Frame;
 
-/// Drive the DUT to bus-off: the peer's line forced dominant-free but no ACK
-/// (peer off) and the DUT sending a frame repeatedly... with no ACK a TEC
-/// stops at 128 (ISO 11898-1 exception), so line A's DUT tx is shorted to a
-/// stuck-dominant by the peer in SELF_TEST? Instead: cut line A's receive so
-/// every bit error counts.
+/// Drive the DUT to bus-off: line A's receive is cut (the DUT hears only
+/// recessive), so every dominant bit it sends is a bit error and TEC climbs by
+/// 8 per attempt to 256 (no ACK-error exception applies to bit errors).
 fn to_busoff(n: &mut Net) {
     n.linux_start(0xFF, 0x00);
     n.load_tx(&Frame::base(0x555, &[0xFF, 0x00]));

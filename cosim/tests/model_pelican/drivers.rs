@@ -3,7 +3,7 @@
 
 use crate::harness::*;
 use drcc_cosim::model::pelican::{PelicanInputs, PelicanParams};
-use drcc_cosim::{Frame, Mode};
+use drcc_cosim::Frame;
 
 /// Linux: start, transmit a standard and an extended frame with CMR = TR; the
 /// other node receives each (P-MOD-3, P-CFG-2, P-TX-1, P-TX-2, P-TX-7, P-IR-4).
@@ -203,7 +203,6 @@ fn redundancy_line_a_cut() {
     assert_eq!(n.r(117) & 1, 1, "XSTAT.u = B");
     assert_eq!(n.r(120) & 1, 1, "P-X-2: XIR.switch");
     assert_eq!(n.r(2) & 0x80, 0, "P-LOG-3: no logical bus-off");
-    let _ = Mode::Normal;
 }
 
 /// P-IR-2: RI needs RIE; RBS shows the frame regardless.

@@ -20,6 +20,7 @@ pub mod crc;
 pub mod drcc;
 pub mod field;
 pub mod hub;
+pub mod pelican;
 pub mod rcm;
 
 use crate::engine::{ChannelInputs, ChannelOutputs, Diagnostics, Mode, Probes};

@@ -16,6 +16,8 @@ pub struct Filters {
     pub id: [u32; 2],
     /// `FILT_MASKk` ([30:0] mask, [31] enable).
     pub mask: [u32; 2],
+    /// A host view's acceptance filter (PeliCAN P-CORE-4); `None` natively.
+    pub gate: Option<crate::model::pelican::acf::Acf>,
 }
 
 impl Filters {
@@ -34,6 +36,9 @@ impl Filters {
     /// Accepted: no filter is enabled, or an enabled filter matches.
     pub fn accepts(&self, f: &Frame) -> bool {
         let word = Self::word(f);
+        if self.gate.is_some_and(|g| !g.accepts(f)) {
+            return false;
+        }
         let enabled = [0, 1].map(|k| self.mask[k] & filt::ENABLE != 0);
         !enabled.contains(&true) || (0..2).any(|k| enabled[k] && self.matches(k, word))
     }

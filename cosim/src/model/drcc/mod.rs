@@ -84,6 +84,7 @@
 pub mod aux_fsm;
 pub mod dmr;
 pub mod features;
+mod host;
 pub mod main_fsm;
 mod params;
 mod register_file;
@@ -97,6 +98,7 @@ use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, 
 use crate::model::{coverage, field, ChannelModel};
 use aux_fsm::{AuxFsm, AuxInputs};
 use dmr::{DmrBlock, DmrInputs};
+pub use host::{HostDrive, HostEvents};
 use main_fsm::{FsmInputs, MainFsm};
 pub use params::DrccParams;
 use register_file::Regs;
@@ -121,6 +123,11 @@ pub struct DrccModel {
     star: star::StarFollow,
     /// Generation parameters (§1.1).
     params: DrccParams,
+    /// A non-native host view's drive of this edge (PeliCAN contract §14);
+    /// `None` for the native register file.
+    host: Option<HostDrive>,
+    /// What the core reported to the host view at the last edge.
+    host_ev: HostEvents,
 }
 
 impl Default for DrccModel {
@@ -160,6 +167,8 @@ impl DrccModel {
             dmr: DmrBlock::new(p.mailboxes),
             star: star::StarFollow::default(),
             params: *p,
+            host: None,
+            host_ev: HostEvents::default(),
         }
     }
 
@@ -167,19 +176,22 @@ impl DrccModel {
     fn chan_inputs(&self, c: usize, rst: bool, rx: bool) -> ChannelInputs {
         let r = &self.r;
         let b = r.btr;
+        let h = self.host.as_ref();
+        // P-CORE-3: a host view splits the hold (`reset_mode`) from the
+        // channels' reset.
+        let chan_reset = h.map_or(r.reset_mode() || r.reset_mode_q, |h| h.chan_reset[c]);
         ChannelInputs {
             rst: rst
-                || r.reset_mode()
-                || r.reset_mode_q
+                || chan_reset
                 || (self.aux[c].restarting() && !r.star())
                 || self.dmr.restart[c],
             // §5: a star node's restart is soft (counters only, no re-integration).
             err_reset: self.aux[c].restarting() && r.star(),
             // §11.6: a bus-off channel counts its recovery only with the host's
             // permission when `busoff_manual` is set (in every mode).
-            boff_hold: r.boff_hold(c),
-            // The native map has no per-frame single shot.
-            tx_single: false,
+            boff_hold: r.boff_hold(c) || h.is_some_and(|h| h.boff_hold[c]),
+            // The native map has no per-frame single shot (P-CORE-1).
+            tx_single: h.is_some_and(|h| h.tx_single),
             rx,
             timing: BitTiming {
                 brp: r.brp(),
@@ -213,7 +225,8 @@ impl DrccModel {
             } else {
                 self.txq.rd
             },
-            tx_abort: self.dmr.abort[c]
+            tx_abort: h.is_some_and(|h| h.tx_abort[c])
+                || self.dmr.abort[c]
                 || self.txq.abort[c]
                 || if c == 0 {
                     self.fsm.abort_a
@@ -275,7 +288,11 @@ impl DrccModel {
         }
 
         // Wishbone (§2, §3, §9, §11).
-        let acc = self.access(i, &mut n);
+        let mut acc = self.access(i, &mut n);
+        if let Some(h) = &self.host {
+            acc.push = h.push;
+            acc.pop = h.pop;
+        }
         let mut ints = acc.ints;
         let (take, w1c, push, pop, abort) = (acc.take, acc.w1c, acc.push, acc.pop, acc.abort);
         // Echo (§4.4): in a star node, a channel's reception of the attempted head
@@ -483,6 +500,13 @@ impl DrccModel {
         if refused {
             n.wb_dat = 0;
         }
+        self.host_ev = HostEvents {
+            ints,
+            tx_success: fev.tx_success,
+            stored: rev.rx,
+            overrun: rev.overrun,
+            dmr_tx_done: dev.tx_done,
+        };
         n.int_status = (r.int_status & !w1c) | ints;
         n.irq = r.int_status & r.int_enable != 0;
         self.r = n;

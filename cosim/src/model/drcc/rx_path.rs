@@ -86,6 +86,13 @@ pub struct HistEntry {
 /// The RX FIFO, the writer FSM and the dedup history.
 #[derive(Clone, Debug, Default)]
 pub struct RxPath {
+    /// PeliCAN P-CORE-4: the self-received frame offered by a host view at
+    /// this edge (source `S`), set by [`super::DrccModel::step_host`].
+    pub offer_s: Option<Frame>,
+    /// Source `S` pending (offered, not yet taken by the writer).
+    pub s_pend: Option<Frame>,
+    /// The frame of source `S` the writer took.
+    pub s_frame: Frame,
     /// RX RAM: frame and channel (public for the block-level lock-step test).
     pub ram: [(Frame, u8); 32],
     /// The RX RAM's timestamps (DRCC contract §11.2): `now` at the write edge.
@@ -145,6 +152,9 @@ impl RxPath {
     /// An RX path with the sizes of one configuration.
     pub fn new(sizes: RxSizes) -> Self {
         RxPath {
+            offer_s: None,
+            s_pend: None,
+            s_frame: Frame::default(),
             sizes,
             ..RxPath::default()
         }
@@ -229,6 +239,7 @@ impl RxPath {
     ) -> RxEvents {
         let mut ev = RxEvents::default();
         let c = self.clone_regs();
+        let (s_pend, s_frame, offer) = (self.s_pend, self.s_frame, self.offer_s.take());
         // Registered read ports (read-first: the RAM contents before the edge).
         self.rd = self.ram[c.head as usize];
         self.rd_ts = self.ts[c.head as usize];
@@ -260,6 +271,7 @@ impl RxPath {
             self.w_fifo = false;
             self.w_hist = false;
             self.w_pcl = false;
+            self.s_pend = None;
             return ev;
         }
         if i.tick {
@@ -270,6 +282,8 @@ impl RxPath {
             self.hv = 0;
         }
         self.rxp = [c.rxp[0] | i.rx_valid[0], c.rxp[1] | i.rx_valid[1]];
+        // An offer at this edge sets the pending source S (set wins).
+        self.s_pend = offer.or(s_pend);
         for (s, f) in rx_frame.iter().enumerate() {
             if i.rx_valid[s] {
                 self.rxf[s] = **f;
@@ -305,6 +319,15 @@ impl RxPath {
                     self.scan_i = 0;
                     self.hit = false;
                     self.free_found = false;
+                } else if let Some(f) = s_pend {
+                    // P-CORE-4: source S after A and B, written without the
+                    // scan and without a history entry.
+                    self.sel = 2;
+                    self.s_frame = f;
+                    self.s_pend = offer;
+                    self.w_state = W_WRITE;
+                    self.w_fifo = true;
+                    self.w_hist = false;
                 } else if i.dmr && c.release && i.dedup_on {
                     self.w_state = W_RSCAN;
                     self.scan_i = 0;
@@ -424,7 +447,11 @@ impl RxPath {
                 self.w_state = W_IDLE;
             }
             _ => {
-                let frame = c.rxf[c.sel as usize];
+                let frame = if c.sel == 2 {
+                    s_frame
+                } else {
+                    c.rxf[c.sel as usize]
+                };
                 // A PCL frame (!w_fifo) waits in the history (§8).
                 if c.w_fifo {
                     pushed = self.fifo_write(&c, &frame, c.sel, filt, &mut ev);

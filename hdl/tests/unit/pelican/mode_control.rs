@@ -132,7 +132,7 @@ fn leaving_host_reset_keeps_the_channels_in_reset_one_clock_more() {
     );
     edge(&mut uut);
     assert!(!uut.chan_reset.val());
-    assert_eq!(write_mod(&mut uut, RM).rm_rise, true);
+    assert!(write_mod(&mut uut, RM).rm_rise);
     assert!(uut.rm.val() && uut.hrm.val() && uut.chan_reset.val());
 }
 

@@ -5,7 +5,7 @@
 // drcc_m0: the DRCC without DMR mailboxes (M = 0): DMR faults found by bus-off and the connection
 // service only.
 // Contract:   cosim/src/model/drcc_contract.md
-// Source:     hdl/src/drcc.rs (`DrccCore`, port docs from its `///` comments)
+// Source:     hdl/src/drcc.rs (`DrccTop`, port docs from its `///` comments)
 // Parameters: M = 0, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32, DMR = 1, STAR = 1
 // Verilog parameters: RX_FIFO_DEPTH, TX_QUEUE_DEPTH, HISTORY, DMR, STAR, set per instance within
 // their offer (the top's declarations); M is fixed when the file is generated.
@@ -265,6 +265,426 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     output reg  dmr_tick;
 
     // Constant declarations
+    localparam  zero2 = 2'b0;
+    localparam  zero28 = 28'h0;
+    localparam  zero32 = 32'h0;
+    localparam  zero99 = 99'h0;
+
+    // Enums
+    localparam Field__Integrating = 0;
+    localparam Field__Idle = 1;
+    localparam Field__IdA = 2;
+    localparam Field__SrrRtr = 3;
+    localparam Field__Ide = 4;
+    localparam Field__IdB = 5;
+    localparam Field__RtrExt = 6;
+    localparam Field__R1 = 7;
+    localparam Field__R0 = 8;
+    localparam Field__Dlc = 9;
+    localparam Field__Data = 10;
+    localparam Field__Crc = 11;
+    localparam Field__CrcDelim = 12;
+    localparam Field__AckSlot = 13;
+    localparam Field__AckDelim = 14;
+    localparam Field__Eof = 15;
+    localparam Field__Intermission = 16;
+    localparam Field__Suspend = 17;
+    localparam Field__ErrorFlag = 18;
+    localparam Field__ErrorDelim = 19;
+    localparam Field__OverloadFlag = 20;
+    localparam Field__OverloadDelim = 21;
+    localparam Field__BusOff = 22;
+
+    // Stub signals
+    reg  core__clk;
+    reg  core__rst;
+    reg  core__wb_cyc_i;
+    reg  core__wb_stb_i;
+    reg  core__wb_we_i;
+    reg  [5:0] core__wb_adr_i;
+    reg  [31:0] core__wb_dat_i;
+    reg  [3:0] core__wb_sel_i;
+    wire  [31:0] core__wb_dat_o;
+    wire  core__wb_ack_o;
+    wire  core__wb_err_o;
+    wire  core__irq;
+    wire  core__chan_a_tx;
+    reg  core__chan_a_rx;
+    wire  core__chan_b_tx;
+    reg  core__chan_b_rx;
+    wire  [3:0] core__state;
+    wire  core__tx_channel;
+    wire  core__transmission_ack;
+    wire  core__chan_a_transmission_req;
+    wire  core__chan_b_transmission_req;
+    wire  core__tx_success;
+    wire  [1:0] core__tx_ok_channel;
+    wire  core__tx_failure;
+    wire  [1:0] core__tx_failure_channel;
+    wire  core__tx_going_on;
+    wire  [8:0] core__chan_a_bsp_tx_err_cnt;
+    wire  core__chan_a_bsp_node_error_passive;
+    wire  [8:0] core__chan_b_bsp_tx_err_cnt;
+    wire  core__chan_b_bsp_node_error_passive;
+    wire  [1:0] core__aux_a_state;
+    wire  [1:0] core__aux_b_state;
+    wire  core__chan_a_sample_point;
+    wire  core__chan_b_sample_point;
+    wire  [4:0] core__chan_a_field;
+    wire  [4:0] core__chan_b_field;
+    wire  [7:0] core__chan_a_rec;
+    wire  [7:0] core__chan_b_rec;
+    wire  [1:0] core__chan_a_err_state;
+    wire  [1:0] core__chan_b_err_state;
+    wire  [1:0] core__dmr_state;
+    wire  core__acl;
+    wire  core__dcl_tx_fault;
+    wire  core__dcl_rx_fault;
+    wire  core__rcl_tx_fault;
+    wire  core__rcl_rx_fault;
+    wire  core__dmr_tick;
+    reg  core__view_on;
+    reg  [31:0] core__view_ctrl;
+    reg  [27:0] core__view_btr;
+    reg  [1:0] core__view_chan_reset;
+    reg  core__view_push;
+    reg  core__view_push_q;
+    reg  [98:0] core__view_push_frame;
+    reg  core__view_pop;
+    reg  core__view_tx_single;
+    reg  [1:0] core__view_tx_abort;
+    reg  [1:0] core__view_boff_hold;
+    reg  core__view_offer_s;
+    reg  [98:0] core__view_frame_s;
+    reg  core__view_gate_on;
+    reg  core__view_afm;
+    reg  [31:0] core__view_acr;
+    reg  [31:0] core__view_amr;
+    wire  core__rx_stored;
+    wire  core__rx_overrun;
+    wire  core__rx_ready;
+    wire  [5:0] core__rx_count;
+    wire  [115:0] core__rx_head;
+    wire  core__dmr_tx_done;
+    wire  core__ev_switch;
+    wire  core__ev_aux;
+    wire  core__ev_dmr;
+    wire  core__ev_domain;
+    wire  core__star_split;
+    wire  core__chan_a_tx_done;
+    wire  core__chan_a_tx_failed;
+    wire  core__chan_a_tx_pending;
+    wire  core__chan_a_is_tx;
+    wire  [6:0] core__chan_a_boff_runs;
+    wire  core__chan_a_err_warning;
+    wire  [8:0] core__chan_a_tec;
+    wire  core__chan_a_err_valid;
+    wire  [2:0] core__chan_a_err_kind;
+    wire  [4:0] core__chan_a_err_field;
+    wire  core__chan_a_err_tx;
+    wire  core__chan_a_arb_lost;
+    wire  [4:0] core__chan_a_alc;
+    wire  core__chan_b_tx_done;
+    wire  core__chan_b_tx_failed;
+    wire  core__chan_b_tx_pending;
+    wire  core__chan_b_is_tx;
+    wire  [6:0] core__chan_b_boff_runs;
+    wire  core__chan_b_err_warning;
+    wire  [8:0] core__chan_b_tec;
+    wire  core__chan_b_err_valid;
+    wire  [2:0] core__chan_b_err_kind;
+    wire  [4:0] core__chan_b_err_field;
+    wire  core__chan_b_err_tx;
+    wire  core__chan_b_arb_lost;
+    wire  [4:0] core__chan_b_alc;
+
+    // Sub module instances
+    drcc_m0__core #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0]), .TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0]), .HISTORY(HISTORY[5:0]), .DMR(DMR[0:0]), .STAR(STAR[0:0])) core(
+        .clk(core__clk),
+        .rst(core__rst),
+        .wb_cyc_i(core__wb_cyc_i),
+        .wb_stb_i(core__wb_stb_i),
+        .wb_we_i(core__wb_we_i),
+        .wb_adr_i(core__wb_adr_i),
+        .wb_dat_i(core__wb_dat_i),
+        .wb_sel_i(core__wb_sel_i),
+        .wb_dat_o(core__wb_dat_o),
+        .wb_ack_o(core__wb_ack_o),
+        .wb_err_o(core__wb_err_o),
+        .irq(core__irq),
+        .chan_a_tx(core__chan_a_tx),
+        .chan_a_rx(core__chan_a_rx),
+        .chan_b_tx(core__chan_b_tx),
+        .chan_b_rx(core__chan_b_rx),
+        .state(core__state),
+        .tx_channel(core__tx_channel),
+        .transmission_ack(core__transmission_ack),
+        .chan_a_transmission_req(core__chan_a_transmission_req),
+        .chan_b_transmission_req(core__chan_b_transmission_req),
+        .tx_success(core__tx_success),
+        .tx_ok_channel(core__tx_ok_channel),
+        .tx_failure(core__tx_failure),
+        .tx_failure_channel(core__tx_failure_channel),
+        .tx_going_on(core__tx_going_on),
+        .chan_a_bsp_tx_err_cnt(core__chan_a_bsp_tx_err_cnt),
+        .chan_a_bsp_node_error_passive(core__chan_a_bsp_node_error_passive),
+        .chan_b_bsp_tx_err_cnt(core__chan_b_bsp_tx_err_cnt),
+        .chan_b_bsp_node_error_passive(core__chan_b_bsp_node_error_passive),
+        .aux_a_state(core__aux_a_state),
+        .aux_b_state(core__aux_b_state),
+        .chan_a_sample_point(core__chan_a_sample_point),
+        .chan_b_sample_point(core__chan_b_sample_point),
+        .chan_a_field(core__chan_a_field),
+        .chan_b_field(core__chan_b_field),
+        .chan_a_rec(core__chan_a_rec),
+        .chan_b_rec(core__chan_b_rec),
+        .chan_a_err_state(core__chan_a_err_state),
+        .chan_b_err_state(core__chan_b_err_state),
+        .dmr_state(core__dmr_state),
+        .acl(core__acl),
+        .dcl_tx_fault(core__dcl_tx_fault),
+        .dcl_rx_fault(core__dcl_rx_fault),
+        .rcl_tx_fault(core__rcl_tx_fault),
+        .rcl_rx_fault(core__rcl_rx_fault),
+        .dmr_tick(core__dmr_tick),
+        .view_on(core__view_on),
+        .view_ctrl(core__view_ctrl),
+        .view_btr(core__view_btr),
+        .view_chan_reset(core__view_chan_reset),
+        .view_push(core__view_push),
+        .view_push_q(core__view_push_q),
+        .view_push_frame(core__view_push_frame),
+        .view_pop(core__view_pop),
+        .view_tx_single(core__view_tx_single),
+        .view_tx_abort(core__view_tx_abort),
+        .view_boff_hold(core__view_boff_hold),
+        .view_offer_s(core__view_offer_s),
+        .view_frame_s(core__view_frame_s),
+        .view_gate_on(core__view_gate_on),
+        .view_afm(core__view_afm),
+        .view_acr(core__view_acr),
+        .view_amr(core__view_amr),
+        .rx_stored(core__rx_stored),
+        .rx_overrun(core__rx_overrun),
+        .rx_ready(core__rx_ready),
+        .rx_count(core__rx_count),
+        .rx_head(core__rx_head),
+        .dmr_tx_done(core__dmr_tx_done),
+        .ev_switch(core__ev_switch),
+        .ev_aux(core__ev_aux),
+        .ev_dmr(core__ev_dmr),
+        .ev_domain(core__ev_domain),
+        .star_split(core__star_split),
+        .chan_a_tx_done(core__chan_a_tx_done),
+        .chan_a_tx_failed(core__chan_a_tx_failed),
+        .chan_a_tx_pending(core__chan_a_tx_pending),
+        .chan_a_is_tx(core__chan_a_is_tx),
+        .chan_a_boff_runs(core__chan_a_boff_runs),
+        .chan_a_err_warning(core__chan_a_err_warning),
+        .chan_a_tec(core__chan_a_tec),
+        .chan_a_err_valid(core__chan_a_err_valid),
+        .chan_a_err_kind(core__chan_a_err_kind),
+        .chan_a_err_field(core__chan_a_err_field),
+        .chan_a_err_tx(core__chan_a_err_tx),
+        .chan_a_arb_lost(core__chan_a_arb_lost),
+        .chan_a_alc(core__chan_a_alc),
+        .chan_b_tx_done(core__chan_b_tx_done),
+        .chan_b_tx_failed(core__chan_b_tx_failed),
+        .chan_b_tx_pending(core__chan_b_tx_pending),
+        .chan_b_is_tx(core__chan_b_is_tx),
+        .chan_b_boff_runs(core__chan_b_boff_runs),
+        .chan_b_err_warning(core__chan_b_err_warning),
+        .chan_b_tec(core__chan_b_tec),
+        .chan_b_err_valid(core__chan_b_err_valid),
+        .chan_b_err_kind(core__chan_b_err_kind),
+        .chan_b_err_field(core__chan_b_err_field),
+        .chan_b_err_tx(core__chan_b_err_tx),
+        .chan_b_arb_lost(core__chan_b_arb_lost),
+        .chan_b_alc(core__chan_b_alc)
+    );
+
+    // Update code
+    always @(*) begin
+        core__clk = clk;
+        core__rst = rst;
+        core__wb_cyc_i = wb_cyc_i;
+        core__wb_stb_i = wb_stb_i;
+        core__wb_we_i = wb_we_i;
+        core__wb_adr_i = wb_adr_i;
+        core__wb_dat_i = wb_dat_i;
+        core__wb_sel_i = wb_sel_i;
+        core__chan_a_rx = chan_a_rx;
+        core__chan_b_rx = chan_b_rx;
+        wb_dat_o = core__wb_dat_o;
+        wb_ack_o = core__wb_ack_o;
+        wb_err_o = core__wb_err_o;
+        irq = core__irq;
+        chan_a_tx = core__chan_a_tx;
+        chan_b_tx = core__chan_b_tx;
+        state = core__state;
+        tx_channel = core__tx_channel;
+        transmission_ack = core__transmission_ack;
+        chan_a_transmission_req = core__chan_a_transmission_req;
+        chan_b_transmission_req = core__chan_b_transmission_req;
+        tx_success = core__tx_success;
+        tx_ok_channel = core__tx_ok_channel;
+        tx_failure = core__tx_failure;
+        tx_failure_channel = core__tx_failure_channel;
+        tx_going_on = core__tx_going_on;
+        chan_a_bsp_tx_err_cnt = core__chan_a_bsp_tx_err_cnt;
+        chan_a_bsp_node_error_passive = core__chan_a_bsp_node_error_passive;
+        chan_b_bsp_tx_err_cnt = core__chan_b_bsp_tx_err_cnt;
+        chan_b_bsp_node_error_passive = core__chan_b_bsp_node_error_passive;
+        aux_a_state = core__aux_a_state;
+        aux_b_state = core__aux_b_state;
+        chan_a_sample_point = core__chan_a_sample_point;
+        chan_b_sample_point = core__chan_b_sample_point;
+        chan_a_field = core__chan_a_field;
+        chan_b_field = core__chan_b_field;
+        chan_a_rec = core__chan_a_rec;
+        chan_b_rec = core__chan_b_rec;
+        chan_a_err_state = core__chan_a_err_state;
+        chan_b_err_state = core__chan_b_err_state;
+        dmr_state = core__dmr_state;
+        acl = core__acl;
+        dcl_tx_fault = core__dcl_tx_fault;
+        dcl_rx_fault = core__dcl_rx_fault;
+        rcl_tx_fault = core__rcl_tx_fault;
+        rcl_rx_fault = core__rcl_rx_fault;
+        dmr_tick = core__dmr_tick;
+        core__view_on = 1'b0;
+        core__view_ctrl = zero32;
+        core__view_btr = zero28;
+        core__view_chan_reset = zero2;
+        core__view_push = 1'b0;
+        core__view_push_q = 1'b0;
+        core__view_push_frame = zero99;
+        core__view_pop = 1'b0;
+        core__view_tx_single = 1'b0;
+        core__view_tx_abort = zero2;
+        core__view_boff_hold = zero2;
+        core__view_offer_s = 1'b0;
+        core__view_frame_s = zero99;
+        core__view_gate_on = 1'b0;
+        core__view_afm = 1'b0;
+        core__view_acr = zero32;
+        core__view_amr = zero32;
+    end
+
+endmodule // drcc_m0
+
+
+module drcc_m0__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,view_on,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,rx_stored,rx_overrun,rx_ready,rx_count,rx_head,dmr_tx_done,ev_switch,ev_aux,ev_dmr,ev_domain,star_split,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_is_tx,chan_a_boff_runs,chan_a_err_warning,chan_a_tec,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_is_tx,chan_b_boff_runs,chan_b_err_warning,chan_b_tec,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc);
+    parameter [5:0] RX_FIFO_DEPTH = 6'd32;
+    parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
+    parameter [5:0] HISTORY = 6'd32;
+    parameter [0:0] DMR = 1'd1;
+    parameter [0:0] STAR = 1'd1;
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wb_cyc_i;
+    input wire  wb_stb_i;
+    input wire  wb_we_i;
+    input wire  [5:0] wb_adr_i;
+    input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
+    output reg  [31:0] wb_dat_o;
+    output reg  wb_ack_o;
+    output reg  wb_err_o;
+    output reg  irq;
+    output reg  chan_a_tx;
+    input wire  chan_a_rx;
+    output reg  chan_b_tx;
+    input wire  chan_b_rx;
+    output reg  [3:0] state;
+    output reg  tx_channel;
+    output reg  transmission_ack;
+    output reg  chan_a_transmission_req;
+    output reg  chan_b_transmission_req;
+    output reg  tx_success;
+    output reg  [1:0] tx_ok_channel;
+    output reg  tx_failure;
+    output reg  [1:0] tx_failure_channel;
+    output reg  tx_going_on;
+    output reg  [8:0] chan_a_bsp_tx_err_cnt;
+    output reg  chan_a_bsp_node_error_passive;
+    output reg  [8:0] chan_b_bsp_tx_err_cnt;
+    output reg  chan_b_bsp_node_error_passive;
+    output reg  [1:0] aux_a_state;
+    output reg  [1:0] aux_b_state;
+    output reg  chan_a_sample_point;
+    output reg  chan_b_sample_point;
+    output reg  [4:0] chan_a_field;
+    output reg  [4:0] chan_b_field;
+    output reg  [7:0] chan_a_rec;
+    output reg  [7:0] chan_b_rec;
+    output reg  [1:0] chan_a_err_state;
+    output reg  [1:0] chan_b_err_state;
+    output reg  [1:0] dmr_state;
+    output reg  acl;
+    output reg  dcl_tx_fault;
+    output reg  dcl_rx_fault;
+    output reg  rcl_tx_fault;
+    output reg  rcl_rx_fault;
+    output reg  dmr_tick;
+    input wire  view_on;
+    input wire  [31:0] view_ctrl;
+    input wire  [27:0] view_btr;
+    input wire  [1:0] view_chan_reset;
+    input wire  view_push;
+    input wire  view_push_q;
+    input wire  [98:0] view_push_frame;
+    input wire  view_pop;
+    input wire  view_tx_single;
+    input wire  [1:0] view_tx_abort;
+    input wire  [1:0] view_boff_hold;
+    input wire  view_offer_s;
+    input wire  [98:0] view_frame_s;
+    input wire  view_gate_on;
+    input wire  view_afm;
+    input wire  [31:0] view_acr;
+    input wire  [31:0] view_amr;
+    output reg  rx_stored;
+    output reg  rx_overrun;
+    output reg  rx_ready;
+    output reg  [5:0] rx_count;
+    output reg  [115:0] rx_head;
+    output reg  dmr_tx_done;
+    output reg  ev_switch;
+    output reg  ev_aux;
+    output reg  ev_dmr;
+    output reg  ev_domain;
+    output reg  star_split;
+    output reg  chan_a_tx_done;
+    output reg  chan_a_tx_failed;
+    output reg  chan_a_tx_pending;
+    output reg  chan_a_is_tx;
+    output reg  [6:0] chan_a_boff_runs;
+    output reg  chan_a_err_warning;
+    output reg  [8:0] chan_a_tec;
+    output reg  chan_a_err_valid;
+    output reg  [2:0] chan_a_err_kind;
+    output reg  [4:0] chan_a_err_field;
+    output reg  chan_a_err_tx;
+    output reg  chan_a_arb_lost;
+    output reg  [4:0] chan_a_alc;
+    output reg  chan_b_tx_done;
+    output reg  chan_b_tx_failed;
+    output reg  chan_b_tx_pending;
+    output reg  chan_b_is_tx;
+    output reg  [6:0] chan_b_boff_runs;
+    output reg  chan_b_err_warning;
+    output reg  [8:0] chan_b_tec;
+    output reg  chan_b_err_valid;
+    output reg  [2:0] chan_b_err_kind;
+    output reg  [4:0] chan_b_err_field;
+    output reg  chan_b_err_tx;
+    output reg  chan_b_arb_lost;
+    output reg  [4:0] chan_b_alc;
+
+    // Constant declarations
     localparam  zero4 = 4'h0;
     localparam  zero29 = 29'h0;
     localparam  zero31 = 31'h0;
@@ -308,6 +728,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     wire  regs__wb_ack_o;
     wire  regs__wb_err_o;
     wire  regs__irq;
+    reg  regs__view_on;
+    reg  [31:0] regs__view_ctrl;
+    reg  [27:0] regs__view_btr;
     reg  [31:0] regs__ro_word;
     reg  [1:0] regs__es_a;
     reg  [1:0] regs__es_b;
@@ -732,6 +1155,12 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     reg  [31:0] rxw__filt_mask0;
     reg  [30:0] rxw__filt_id1;
     reg  [31:0] rxw__filt_mask1;
+    reg  rxw__offer_s;
+    reg  [98:0] rxw__frame_s;
+    reg  rxw__gate_on;
+    reg  rxw__gate_afm;
+    reg  [31:0] rxw__gate_acr;
+    reg  [31:0] rxw__gate_amr;
     reg  rxw__stats_clear;
     wire  rxw__rx_evt;
     wire  rxw__overrun_evt;
@@ -863,6 +1292,8 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     // Local signals
     reg  clear;
     reg  rmb_hold;
+    reg  chan_reset_a;
+    reg  chan_reset_b;
     reg  dmr_hold;
     reg  [98:0] rx_frame_a;
     reg  [98:0] rx_frame_b;
@@ -876,7 +1307,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     reg  [3:0] eval_mb;
 
     // Sub module instances
-    drcc_m0__regs #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0]), .DMR(DMR[0:0]), .STAR(STAR[0:0])) regs(
+    drcc_m0__core__regs #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH), .DMR(DMR), .STAR(STAR)) regs(
         .clk(regs__clk),
         .rst(regs__rst),
         .wb_cyc_i(regs__wb_cyc_i),
@@ -889,6 +1320,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .wb_ack_o(regs__wb_ack_o),
         .wb_err_o(regs__wb_err_o),
         .irq(regs__irq),
+        .view_on(regs__view_on),
+        .view_ctrl(regs__view_ctrl),
+        .view_btr(regs__view_btr),
         .ro_word(regs__ro_word),
         .es_a(regs__es_a),
         .es_b(regs__es_b),
@@ -948,7 +1382,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .rearm_alc(regs__rearm_alc),
         .stats_clear(regs__stats_clear)
     );
-    drcc_m0__dmr_check #(.DMR(DMR[0:0])) dmr_check(
+    drcc_m0__core__dmr_check #(.DMR(DMR)) dmr_check(
         .adr(dmr_check__adr),
         .wdat(dmr_check__wdat),
         .reset_mode(dmr_check__reset_mode),
@@ -970,7 +1404,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .writable(dmr_check__writable),
         .illegal(dmr_check__illegal)
     );
-    drcc_m0__dmr_regs dmr_regs(
+    drcc_m0__core__dmr_regs dmr_regs(
         .clk(dmr_regs__clk),
         .rst(dmr_regs__rst),
         .wr(dmr_regs__wr),
@@ -992,7 +1426,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .mb_we_id(dmr_regs__mb_we_id),
         .mb_we_mask(dmr_regs__mb_we_mask)
     );
-    drcc_m0__filters filters(
+    drcc_m0__core__filters filters(
         .clk(filters__clk),
         .rst(filters__rst),
         .wr(filters__wr),
@@ -1007,7 +1441,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .id1(filters__id1),
         .mask1(filters__mask1)
     );
-    drcc_m0__dmr_ctl dmr_ctl(
+    drcc_m0__core__dmr_ctl dmr_ctl(
         .clk(dmr_ctl__clk),
         .rst(dmr_ctl__rst),
         .hold(dmr_ctl__hold),
@@ -1084,7 +1518,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .status_word(dmr_ctl__status_word),
         .cs_count_word(dmr_ctl__cs_count_word)
     );
-    drcc_m0__status #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0]), .TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0]), .HISTORY(HISTORY[5:0]), .DMR(DMR[0:0]), .STAR(STAR[0:0])) status(
+    drcc_m0__core__status #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH), .TX_QUEUE_DEPTH(TX_QUEUE_DEPTH), .HISTORY(HISTORY), .DMR(DMR), .STAR(STAR)) status(
         .adr(status__adr),
         .word(status__word),
         .state(status__state),
@@ -1127,7 +1561,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .cap_a(status__cap_a),
         .cap_b(status__cap_b)
     );
-    drcc_m0__caps caps(
+    drcc_m0__core__caps caps(
         .clk(caps__clk),
         .rst(caps__rst),
         .err_valid_a(caps__err_valid_a),
@@ -1152,7 +1586,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .ev_arb_lost(caps__ev_arb_lost),
         .ev_bus_error(caps__ev_bus_error)
     );
-    drcc_m0__ticker ticker(
+    drcc_m0__core__ticker ticker(
         .clk(ticker__clk),
         .hold(ticker__hold),
         .brp(ticker__brp),
@@ -1161,7 +1595,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .tick(ticker__tick),
         .now(ticker__now)
     );
-    drcc_m0__stats stats(
+    drcc_m0__core__stats stats(
         .clk(stats__clk),
         .rst(stats__rst),
         .switch_evt(stats__switch_evt),
@@ -1170,7 +1604,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .switches(stats__switches),
         .recoveries(stats__recoveries)
     );
-    drcc_m0__main main(
+    drcc_m0__core__main main(
         .clk(main__clk),
         .rst(main__rst),
         .hold(main__hold),
@@ -1209,7 +1643,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .in_use_a(main__in_use_a),
         .in_use_b(main__in_use_b)
     );
-    drcc_m0__echo echo(
+    drcc_m0__core__echo echo(
         .clk(echo__clk),
         .star(echo__star),
         .clear(echo__clear),
@@ -1227,7 +1661,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .star_word(echo__star_word),
         .star_split(echo__star_split)
     );
-    drcc_m0__aux aux_a(
+    drcc_m0__core__aux aux_a(
         .clk(aux_a__clk),
         .rst(aux_a__rst),
         .hold(aux_a__hold),
@@ -1256,7 +1690,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .fail_evt(aux_a__fail_evt),
         .recover_evt(aux_a__recover_evt)
     );
-    drcc_m0__aux aux_b(
+    drcc_m0__core__aux aux_b(
         .clk(aux_b__clk),
         .rst(aux_b__rst),
         .hold(aux_b__hold),
@@ -1285,7 +1719,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .fail_evt(aux_b__fail_evt),
         .recover_evt(aux_b__recover_evt)
     );
-    drcc_m0__txbuf #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH[3:0])) txbuf(
+    drcc_m0__core__txbuf #(.TX_QUEUE_DEPTH(TX_QUEUE_DEPTH)) txbuf(
         .clk(txbuf__clk),
         .clear(txbuf__clear),
         .redundancy(txbuf__redundancy),
@@ -1314,7 +1748,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .done_evt(txbuf__done_evt),
         .failed_evt(txbuf__failed_evt)
     );
-    drcc_m0__rxfifo #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0])) rxfifo(
+    drcc_m0__core__rxfifo #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH)) rxfifo(
         .clk(rxfifo__clk),
         .clear(rxfifo__clear),
         .wr(rxfifo__wr),
@@ -1324,7 +1758,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .rd_data(rxfifo__rd_data),
         .rx_ready(rxfifo__rx_ready)
     );
-    drcc_m0__rxw #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH[5:0]), .HISTORY(HISTORY[5:0])) rxw(
+    drcc_m0__core__rxw #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH), .HISTORY(HISTORY)) rxw(
         .clk(rxw__clk),
         .rst(rxw__rst),
         .clear(rxw__clear),
@@ -1343,6 +1777,12 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .filt_mask0(rxw__filt_mask0),
         .filt_id1(rxw__filt_id1),
         .filt_mask1(rxw__filt_mask1),
+        .offer_s(rxw__offer_s),
+        .frame_s(rxw__frame_s),
+        .gate_on(rxw__gate_on),
+        .gate_afm(rxw__gate_afm),
+        .gate_acr(rxw__gate_acr),
+        .gate_amr(rxw__gate_amr),
         .stats_clear(rxw__stats_clear),
         .rx_evt(rxw__rx_evt),
         .overrun_evt(rxw__overrun_evt),
@@ -1357,7 +1797,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .released(rxw__released),
         .expired(rxw__expired)
     );
-    drcc_m0__chan chan_a(
+    drcc_m0__core__chan chan_a(
         .clk(chan_a__clk),
         .rst(chan_a__rst),
         .cfg_brp(chan_a__cfg_brp),
@@ -1410,7 +1850,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .cnt_form(chan_a__cnt_form),
         .cnt_ack(chan_a__cnt_ack)
     );
-    drcc_m0__chan chan_b(
+    drcc_m0__core__chan chan_b(
         .clk(chan_b__clk),
         .rst(chan_b__rst),
         .cfg_brp(chan_b__cfg_brp),
@@ -1463,7 +1903,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .cnt_form(chan_b__cnt_form),
         .cnt_ack(chan_b__cnt_ack)
     );
-    drcc_m0__busoff busoff_a(
+    drcc_m0__core__busoff busoff_a(
         .clk(busoff_a__clk),
         .rst(busoff_a__rst),
         .busoff_manual(busoff_a__busoff_manual),
@@ -1471,7 +1911,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         .err_state(busoff_a__err_state),
         .boff_hold(busoff_a__boff_hold)
     );
-    drcc_m0__busoff busoff_b(
+    drcc_m0__core__busoff busoff_b(
         .clk(busoff_b__clk),
         .rst(busoff_b__rst),
         .busoff_manual(busoff_b__busoff_manual),
@@ -1484,6 +1924,14 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
     always @(*) begin
         clear = rst | regs__reset_mode;
         rmb_hold = rst | regs__reset_mode | ~regs__redundancy;
+        if (view_on) begin
+            chan_reset_a = rst | view_chan_reset[32'h0];
+            chan_reset_b = rst | view_chan_reset[32'h1];
+        end
+        else begin
+            chan_reset_a = clear | regs__reset_mode_d;
+            chan_reset_b = clear | regs__reset_mode_d;
+        end
         dmr_hold = regs__reset_mode | ~regs__dmr;
         rx_frame_a = (((chan_a__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_a__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_a__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_a__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_a__rx_data) & 99'h7ffffffffffffffffffffffff);
         rx_frame_b = (((chan_b__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_b__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_b__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_b__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_b__rx_data) & 99'h7ffffffffffffffffffffffff);
@@ -1495,6 +1943,9 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         regs__wb_adr_i = wb_adr_i;
         regs__wb_dat_i = wb_dat_i;
         regs__wb_sel_i = wb_sel_i;
+        regs__view_on = view_on;
+        regs__view_ctrl = view_ctrl;
+        regs__view_btr = view_btr;
         regs__ro_word = status__word;
         regs__es_a = chan_a__err_state;
         regs__es_b = chan_b__err_state;
@@ -1733,9 +2184,16 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         txbuf__off_dcl = dmr_ctl__off_dcl[(32'h0)+:(3)];
         txbuf__off_rcl = dmr_ctl__off_rcl[(32'h0)+:(3)];
         txbuf__dmr_pop = dmr_ctl__pop;
-        txbuf__push = regs__push;
-        txbuf__push_q = regs__push_q;
-        txbuf__push_frame = regs__tx_frame;
+        if (view_on) begin
+            txbuf__push = view_push;
+            txbuf__push_q = view_push_q;
+            txbuf__push_frame = view_push_frame;
+        end
+        else begin
+            txbuf__push = regs__push;
+            txbuf__push_q = regs__push_q;
+            txbuf__push_frame = regs__tx_frame;
+        end
         txbuf__pop_red = main__pop;
         txbuf__abort_a = regs__abort_a;
         txbuf__abort_b = regs__abort_b;
@@ -1747,7 +2205,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         rxfifo__clear = clear;
         rxfifo__wr = rxw__fifo_wr;
         rxfifo__wr_data = rxw__fifo_data;
-        rxfifo__pop = regs__pop;
+        rxfifo__pop = (regs__pop & ~view_on) | (view_pop & view_on);
         rxw__clk = clk;
         rxw__rst = rst;
         rxw__clear = clear;
@@ -1763,6 +2221,12 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         rxw__filt_id1 = filters__id1;
         rxw__filt_mask1 = filters__mask1;
         rxw__tick = ticker__tick;
+        rxw__offer_s = view_offer_s;
+        rxw__frame_s = view_frame_s;
+        rxw__gate_on = view_gate_on;
+        rxw__gate_afm = view_afm;
+        rxw__gate_acr = view_acr;
+        rxw__gate_amr = view_amr;
         if (dmr_hold) begin
             rxw__rxv_a = echo__rxv_a;
             rxw__rxv_b = echo__rxv_b;
@@ -1775,15 +2239,15 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         rxw__frame_b = rx_frame_b;
         rxw__fifo_count = rxfifo__count;
         chan_a__clk = clk;
-        chan_a__rst = clear | regs__reset_mode_d | (aux_a__chan_rst & ~regs__star) | dmr_ctl__restart_dcl;
+        chan_a__rst = chan_reset_a | (aux_a__chan_rst & ~regs__star) | dmr_ctl__restart_dcl;
         chan_a__err_reset = aux_a__chan_rst & regs__star;
         busoff_a__clk = clk;
         busoff_a__rst = rst;
         busoff_a__busoff_manual = regs__busoff_manual;
         busoff_a__recover = regs__recover_a;
         busoff_a__err_state = chan_a__err_state;
-        chan_a__boff_hold = busoff_a__boff_hold;
-        chan_a__tx_single = 1'b0;
+        chan_a__boff_hold = busoff_a__boff_hold | view_boff_hold[32'h0];
+        chan_a__tx_single = view_tx_single;
         chan_a__cfg_brp = regs__brp;
         chan_a__cfg_tseg1 = regs__tseg1;
         chan_a__cfg_tseg2 = regs__tseg2;
@@ -1794,7 +2258,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         chan_a__cfg_single_shot = regs__single_shot & ~regs__redundancy & ~regs__dmr;
         chan_a__rx = chan_a_rx;
         chan_a__tx_req = main__req_a | txbuf__req_a | dmr_ctl__tx_req_dcl;
-        chan_a__tx_abort = main__abort_a | dmr_ctl__tx_abort_dcl | txbuf__chan_abort_a;
+        chan_a__tx_abort = main__abort_a | dmr_ctl__tx_abort_dcl | txbuf__chan_abort_a | view_tx_abort[32'h0];
         if (dmr_ctl__cs_req_dcl) begin
             chan_a__tx_rtr = 1'b0;
             chan_a__tx_ide = 1'b0;
@@ -1810,15 +2274,15 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
             chan_a__tx_data = txbuf__rd_frame[(32'h0)+:(64)];
         end
         chan_b__clk = clk;
-        chan_b__rst = clear | regs__reset_mode_d | (aux_b__chan_rst & ~regs__star) | dmr_ctl__restart_rcl;
+        chan_b__rst = chan_reset_b | (aux_b__chan_rst & ~regs__star) | dmr_ctl__restart_rcl;
         chan_b__err_reset = aux_b__chan_rst & regs__star;
         busoff_b__clk = clk;
         busoff_b__rst = rst;
         busoff_b__busoff_manual = regs__busoff_manual;
         busoff_b__recover = regs__recover_b;
         busoff_b__err_state = chan_b__err_state;
-        chan_b__boff_hold = busoff_b__boff_hold;
-        chan_b__tx_single = 1'b0;
+        chan_b__boff_hold = busoff_b__boff_hold | view_boff_hold[32'h1];
+        chan_b__tx_single = view_tx_single;
         chan_b__cfg_brp = regs__brp;
         chan_b__cfg_tseg1 = regs__tseg1;
         chan_b__cfg_tseg2 = regs__tseg2;
@@ -1829,7 +2293,7 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         chan_b__cfg_single_shot = regs__single_shot & ~regs__redundancy & ~regs__dmr;
         chan_b__rx = chan_b_rx;
         chan_b__tx_req = main__req_b | txbuf__req_b | dmr_ctl__tx_req_rcl;
-        chan_b__tx_abort = main__abort_b | dmr_ctl__tx_abort_rcl | txbuf__chan_abort_b;
+        chan_b__tx_abort = main__abort_b | dmr_ctl__tx_abort_rcl | txbuf__chan_abort_b | view_tx_abort[32'h1];
         if (dmr_ctl__cs_req_rcl) begin
             chan_b__tx_rtr = 1'b0;
             chan_b__tx_ide = 1'b0;
@@ -1877,12 +2341,49 @@ module drcc_m0(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_d
         rcl_tx_fault = dmr_ctl__rcl_tx_fault;
         rcl_rx_fault = dmr_ctl__rcl_rx_fault;
         dmr_tick = dmr_ctl__dmr_tick;
+        rx_stored = rxw__rx_evt;
+        rx_overrun = rxw__overrun_evt;
+        rx_ready = rxfifo__rx_ready;
+        rx_count = rxfifo__count;
+        rx_head = rxfifo__rd_data;
+        dmr_tx_done = dmr_ctl__tx_done_evt;
+        ev_switch = main__switch_evt;
+        ev_aux = aux_a__fail_evt | aux_a__recover_evt | aux_b__fail_evt | aux_b__recover_evt;
+        ev_dmr = dmr_ctl__int_evt;
+        ev_domain = echo__ev_domain;
+        star_split = echo__star_split;
+        chan_a_tx_done = chan_a__tx_done;
+        chan_a_tx_failed = chan_a__tx_failed;
+        chan_a_tx_pending = chan_a__tx_pending;
+        chan_a_is_tx = chan_a__is_tx;
+        chan_a_boff_runs = chan_a__boff_runs;
+        chan_a_err_warning = chan_a__err_warning;
+        chan_a_tec = chan_a__tec;
+        chan_a_err_valid = chan_a__err_valid;
+        chan_a_err_kind = chan_a__err_kind;
+        chan_a_err_field = chan_a__err_field;
+        chan_a_err_tx = chan_a__err_tx;
+        chan_a_arb_lost = chan_a__arb_lost;
+        chan_a_alc = chan_a__alc;
+        chan_b_tx_done = chan_b__tx_done;
+        chan_b_tx_failed = chan_b__tx_failed;
+        chan_b_tx_pending = chan_b__tx_pending;
+        chan_b_is_tx = chan_b__is_tx;
+        chan_b_boff_runs = chan_b__boff_runs;
+        chan_b_err_warning = chan_b__err_warning;
+        chan_b_tec = chan_b__tec;
+        chan_b_err_valid = chan_b__err_valid;
+        chan_b_err_kind = chan_b__err_kind;
+        chan_b_err_field = chan_b__err_field;
+        chan_b_err_tx = chan_b__err_tx;
+        chan_b_arb_lost = chan_b__arb_lost;
+        chan_b_alc = chan_b__alc;
     end
 
-endmodule // drcc_m0
+endmodule // drcc_m0__core
 
 
-module drcc_m0__aux(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,err_warning,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
+module drcc_m0__core__aux(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,restart_ok,err_valid,err_tx,tx_done,tx_pending,rx_valid,err_state,err_warning,sample_point,aux_state,valid,chan_rst,causes,fail_cnt,failures,recoveries,fail_evt,recover_evt);
 
     // Module arguments
     input wire  clk;
@@ -1962,7 +2463,7 @@ module drcc_m0__aux(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,
     reg  [15:0] rb_eff;
 
     // Sub module instances
-    drcc_m0__aux__judge judge(
+    drcc_m0__core__aux__judge judge(
         .policy(judge__policy),
         .k(judge__k),
         .stall_limit(judge__stall_limit),
@@ -2095,10 +2596,10 @@ module drcc_m0__aux(clk,rst,hold,policy,k,stall_limit,recovery_bits,tick,in_use,
         recoveries_q__q <= recoveries_q__d;
     end
 
-endmodule // drcc_m0__aux
+endmodule // drcc_m0__core__aux
 
 
-module drcc_m0__aux__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,err_warning,causes,failed);
+module drcc_m0__core__aux__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,err_warning,causes,failed);
 
     // Module arguments
     input wire  [1:0] policy;
@@ -2139,10 +2640,10 @@ module drcc_m0__aux__judge(policy,k,stall_limit,err_state,fail_cnt,stall_cnt,err
         failed = causes != zero5;
     end
 
-endmodule // drcc_m0__aux__judge
+endmodule // drcc_m0__core__aux__judge
 
 
-module drcc_m0__busoff(clk,rst,busoff_manual,recover,err_state,boff_hold);
+module drcc_m0__core__busoff(clk,rst,busoff_manual,recover,err_state,boff_hold);
 
     // Module arguments
     input wire  clk;
@@ -2178,10 +2679,10 @@ module drcc_m0__busoff(clk,rst,busoff_manual,recover,err_state,boff_hold);
         permit__q <= permit__d;
     end
 
-endmodule // drcc_m0__busoff
+endmodule // drcc_m0__core__busoff
 
 
-module drcc_m0__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
+module drcc_m0__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
 
     // Module arguments
     input wire  clk;
@@ -2314,10 +2815,10 @@ module drcc_m0__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_los
         ew_b_prev__q <= ew_b_prev__d;
     end
 
-endmodule // drcc_m0__caps
+endmodule // drcc_m0__core__caps
 
 
-module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_single,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__core__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,rx,tx,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_abort,tx_single,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,sample_point,sampled_bit,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -2489,7 +2990,7 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
     wire  [7:0] bsp__cnt_ack;
 
     // Sub module instances
-    drcc_m0__chan__cfg_regs cfg_regs(
+    drcc_m0__core__chan__cfg_regs cfg_regs(
         .clk(cfg_regs__clk),
         .rst(cfg_regs__rst),
         .cfg_brp(cfg_regs__cfg_brp),
@@ -2509,13 +3010,13 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         .tseg2_len(cfg_regs__tseg2_len),
         .sjw_len(cfg_regs__sjw_len)
     );
-    drcc_m0__chan__rx_sync rx_sync(
+    drcc_m0__core__chan__rx_sync rx_sync(
         .clk(rx_sync__clk),
         .rst(rx_sync__rst),
         .rx(rx_sync__rx),
         .rx_s(rx_sync__rx_s)
     );
-    drcc_m0__chan__btl btl(
+    drcc_m0__core__chan__btl btl(
         .clk(btl__clk),
         .rst(btl__rst),
         .cfg_brp_next(btl__cfg_brp_next),
@@ -2533,7 +3034,7 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         .sample_point(btl__sample_point),
         .last_sample(btl__last_sample)
     );
-    drcc_m0__chan__bsp bsp(
+    drcc_m0__core__chan__bsp bsp(
         .clk(bsp__clk),
         .rst(bsp__rst),
         .sample(bsp__sample),
@@ -2666,10 +3167,10 @@ module drcc_m0__chan(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_
         cnt_ack = bsp__cnt_ack;
     end
 
-endmodule // drcc_m0__chan
+endmodule // drcc_m0__core__chan
 
 
-module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_single,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__core__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_enable,tx,mode,ewl,single_shot,tx_req,tx_id,tx_ide,tx_rtr,tx_dlc,tx_data,tx_single,tx_abort,err_reset,boff_hold,tx_pending,tx_failed,tx_done,arb_lost,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data,field,tec,rec,err_state,is_tx,boff_runs,err_warning,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -3029,7 +3530,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
     reg  loopback;
 
     // Sub module instances
-    drcc_m0__chan__bsp__fsm fsm(
+    drcc_m0__core__chan__bsp__fsm fsm(
         .clk(fsm__clk),
         .rst(fsm__rst),
         .sample(fsm__sample),
@@ -3091,7 +3592,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .boff_runs(fsm__boff_runs),
         .suspend_due(fsm__suspend_due)
     );
-    drcc_m0__chan__bsp__tx_request tx_request(
+    drcc_m0__core__chan__bsp__tx_request tx_request(
         .clk(tx_request__clk),
         .rst(tx_request__rst),
         .listen_only(tx_request__listen_only),
@@ -3120,7 +3621,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .starts(tx_request__starts),
         .joins(tx_request__joins)
     );
-    drcc_m0__chan__bsp__tx_pin tx_pin(
+    drcc_m0__core__chan__bsp__tx_pin tx_pin(
         .clk(tx_pin__clk),
         .rst(tx_pin__rst),
         .bit_start(tx_pin__bit_start),
@@ -3136,7 +3637,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .crc_ok(tx_pin__crc_ok),
         .tx(tx_pin__tx)
     );
-    drcc_m0__chan__bsp__stuffing stuffing(
+    drcc_m0__core__chan__bsp__stuffing stuffing(
         .clk(stuffing__clk),
         .rst(stuffing__rst),
         .sample(stuffing__sample),
@@ -3148,7 +3649,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .at_stuff_bit(stuffing__at_stuff_bit),
         .last(stuffing__last)
     );
-    drcc_m0__chan__bsp__frame_crc frame_crc(
+    drcc_m0__core__chan__bsp__frame_crc frame_crc(
         .clk(frame_crc__clk),
         .rst(frame_crc__rst),
         .sampled(frame_crc__sampled),
@@ -3160,7 +3661,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .crc(frame_crc__crc),
         .crc_ok(frame_crc__crc_ok)
     );
-    drcc_m0__chan__bsp__tx_frame tx_frame(
+    drcc_m0__core__chan__bsp__tx_frame tx_frame(
         .clk(tx_frame__clk),
         .load(tx_frame__load),
         .id(tx_frame__id),
@@ -3174,7 +3675,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .frame_bit(tx_frame__frame_bit),
         .frame_ide(tx_frame__frame_ide)
     );
-    drcc_m0__chan__bsp__rx_frame rx_frame(
+    drcc_m0__core__chan__bsp__rx_frame rx_frame(
         .clk(rx_frame__clk),
         .rst(rx_frame__rst),
         .sampled(rx_frame__sampled),
@@ -3198,7 +3699,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .rx_dlc(rx_frame__rx_dlc),
         .rx_data(rx_frame__rx_data)
     );
-    drcc_m0__chan__bsp__detect detect(
+    drcc_m0__core__chan__bsp__detect detect(
         .clk(detect__clk),
         .sample(detect__sample),
         .sampled(detect__sampled),
@@ -3239,7 +3740,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .rec_tec_exempt(detect__rec_tec_exempt),
         .rec_sof_error(detect__rec_sof_error)
     );
-    drcc_m0__chan__bsp__rules rules(
+    drcc_m0__core__chan__bsp__rules rules(
         .clk(rules__clk),
         .sample(rules__sample),
         .sampled(rules__sampled),
@@ -3280,7 +3781,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .ack_defer(rules__ack_defer),
         .ack_counted(rules__ack_counted)
     );
-    drcc_m0__chan__bsp__fc fc(
+    drcc_m0__core__chan__bsp__fc fc(
         .clk(fc__clk),
         .rst(fc__rst),
         .tec_add8(fc__tec_add8),
@@ -3298,7 +3799,7 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         .bus_off(fc__bus_off),
         .warning(fc__warning)
     );
-    drcc_m0__chan__bsp__err_capture err_capture(
+    drcc_m0__core__chan__bsp__err_capture err_capture(
         .clk(err_capture__clk),
         .rst(err_capture__rst),
         .capture(err_capture__capture),
@@ -3526,10 +4027,10 @@ module drcc_m0__chan__bsp(clk,rst,sample,sampled,bit_start,hard_sync,hard_sync_e
         cnt_ack = err_capture__cnt_ack;
     end
 
-endmodule // drcc_m0__chan__bsp
+endmodule // drcc_m0__core__chan__bsp
 
 
-module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
+module drcc_m0__core__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,sof_error,lost,kind_bit,kind_stuff,kind_crc,kind_form,kind_ack,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error);
 
     // Module arguments
     input wire  clk;
@@ -3726,7 +4227,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
     reg  rec_capture;
 
     // Sub module instances
-    drcc_m0__chan__bsp__detect__if if_dominant(
+    drcc_m0__core__chan__bsp__detect__if if_dominant(
         .sample(if_dominant__sample),
         .sampled(if_dominant__sampled),
         .field(if_dominant__field),
@@ -3757,7 +4258,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .lost(if_dominant__lost),
         .tec_exempt(if_dominant__tec_exempt)
     );
-    drcc_m0__chan__bsp__detect__if if_recessive(
+    drcc_m0__core__chan__bsp__detect__if if_recessive(
         .sample(if_recessive__sample),
         .sampled(if_recessive__sampled),
         .field(if_recessive__field),
@@ -3788,7 +4289,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .lost(if_recessive__lost),
         .tec_exempt(if_recessive__tec_exempt)
     );
-    drcc_m0__chan__bsp__la la_error(
+    drcc_m0__core__chan__bsp__la la_error(
         .clk(la_error__clk),
         .sample(la_error__sample),
         .sampled(la_error__sampled),
@@ -3796,7 +4297,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_error__if_recessive),
         .decision(la_error__decision)
     );
-    drcc_m0__chan__bsp__la la_flag_error(
+    drcc_m0__core__chan__bsp__la la_flag_error(
         .clk(la_flag_error__clk),
         .sample(la_flag_error__sample),
         .sampled(la_flag_error__sampled),
@@ -3804,7 +4305,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_flag_error__if_recessive),
         .decision(la_flag_error__decision)
     );
-    drcc_m0__chan__bsp__la la_sof_error(
+    drcc_m0__core__chan__bsp__la la_sof_error(
         .clk(la_sof_error__clk),
         .sample(la_sof_error__sample),
         .sampled(la_sof_error__sampled),
@@ -3812,7 +4313,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_sof_error__if_recessive),
         .decision(la_sof_error__decision)
     );
-    drcc_m0__chan__bsp__la la_lost(
+    drcc_m0__core__chan__bsp__la la_lost(
         .clk(la_lost__clk),
         .sample(la_lost__sample),
         .sampled(la_lost__sampled),
@@ -3820,7 +4321,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_lost__if_recessive),
         .decision(la_lost__decision)
     );
-    drcc_m0__chan__bsp__la la_kind_bit(
+    drcc_m0__core__chan__bsp__la la_kind_bit(
         .clk(la_kind_bit__clk),
         .sample(la_kind_bit__sample),
         .sampled(la_kind_bit__sampled),
@@ -3828,7 +4329,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_kind_bit__if_recessive),
         .decision(la_kind_bit__decision)
     );
-    drcc_m0__chan__bsp__la la_kind_stuff(
+    drcc_m0__core__chan__bsp__la la_kind_stuff(
         .clk(la_kind_stuff__clk),
         .sample(la_kind_stuff__sample),
         .sampled(la_kind_stuff__sampled),
@@ -3836,7 +4337,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_kind_stuff__if_recessive),
         .decision(la_kind_stuff__decision)
     );
-    drcc_m0__chan__bsp__la la_kind_crc(
+    drcc_m0__core__chan__bsp__la la_kind_crc(
         .clk(la_kind_crc__clk),
         .sample(la_kind_crc__sample),
         .sampled(la_kind_crc__sampled),
@@ -3844,7 +4345,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_kind_crc__if_recessive),
         .decision(la_kind_crc__decision)
     );
-    drcc_m0__chan__bsp__la la_kind_form(
+    drcc_m0__core__chan__bsp__la la_kind_form(
         .clk(la_kind_form__clk),
         .sample(la_kind_form__sample),
         .sampled(la_kind_form__sampled),
@@ -3852,7 +4353,7 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         .if_recessive(la_kind_form__if_recessive),
         .decision(la_kind_form__decision)
     );
-    drcc_m0__chan__bsp__la la_kind_ack(
+    drcc_m0__core__chan__bsp__la la_kind_ack(
         .clk(la_kind_ack__clk),
         .sample(la_kind_ack__sample),
         .sampled(la_kind_ack__sampled),
@@ -3979,10 +4480,10 @@ module drcc_m0__chan__bsp__detect(clk,sample,sampled,field,is_tx,tx_bit,in_frame
         kind_ack = la_kind_ack__decision;
     end
 
-endmodule // drcc_m0__chan__bsp__detect
+endmodule // drcc_m0__core__chan__bsp__detect
 
 
-module drcc_m0__chan__bsp__detect__if(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
+module drcc_m0__core__chan__bsp__detect__if(sample,sampled,field,is_tx,tx_bit,in_frame,in_arbitration,ack_slot,in_delim,bc0,bc6,bc7,flag_passive,crc_ok,last_bit_arb,at_stuff_bit,stuff_last,listen_only,ack_check_off,error,flag_error,bit_err,stuff_err,form_err,crc_err,ack_err,sof_error,lost,tec_exempt);
 
     // Module arguments
     input wire  sample;
@@ -4132,10 +4633,10 @@ module drcc_m0__chan__bsp__detect__if(sample,sampled,field,is_tx,tx_bit,in_frame
         bit_err = stuff_as_bit || bit_mon || flag_error;
     end
 
-endmodule // drcc_m0__chan__bsp__detect__if
+endmodule // drcc_m0__core__chan__bsp__detect__if
 
 
-module drcc_m0__chan__bsp__la(clk,sample,sampled,if_dominant,if_recessive,decision);
+module drcc_m0__core__chan__bsp__la(clk,sample,sampled,if_dominant,if_recessive,decision);
 
     // Module arguments
     input wire  clk;
@@ -4171,10 +4672,10 @@ module drcc_m0__chan__bsp__la(clk,sample,sampled,if_dominant,if_recessive,decisi
         recessive_q__q <= recessive_q__d;
     end
 
-endmodule // drcc_m0__chan__bsp__la
+endmodule // drcc_m0__core__chan__bsp__la
 
 
-module drcc_m0__chan__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
+module drcc_m0__core__chan__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_form,kind_ack,kind_crc,as_tx,arb_lost,field,bit_cnt,err_valid,err_kind,err_field,err_tx,alc,cnt_bit,cnt_stuff,cnt_crc,cnt_form,cnt_ack);
 
     // Module arguments
     input wire  clk;
@@ -4407,10 +4908,10 @@ module drcc_m0__chan__bsp__err_capture(clk,rst,capture,kind_bit,kind_stuff,kind_
         p_cnt_ack_max__q <= p_cnt_ack_max__d;
     end
 
-endmodule // drcc_m0__chan__bsp__err_capture
+endmodule // drcc_m0__core__chan__bsp__err_capture
 
 
-module drcc_m0__chan__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,err_reset,ewl,tec,rec,err_state,error_passive,bus_off,warning);
+module drcc_m0__core__chan__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_success,recovered,err_reset,ewl,tec,rec,err_state,error_passive,bus_off,warning);
 
     // Module arguments
     input wire  clk;
@@ -4510,10 +5011,10 @@ module drcc_m0__chan__bsp__fc(clk,rst,tec_add8,rec_add1,rec_add8,tx_success,rx_s
         rec_q__q <= rec_q__d;
     end
 
-endmodule // drcc_m0__chan__bsp__fc
+endmodule // drcc_m0__core__chan__bsp__fc
 
 
-module drcc_m0__chan__bsp__frame_crc(clk,rst,sampled,start,step,check,in_crc_field,bit_cnt,crc,crc_ok);
+module drcc_m0__core__chan__bsp__frame_crc(clk,rst,sampled,start,step,check,in_crc_field,bit_cnt,crc,crc_ok);
 
     // Module arguments
     input wire  clk;
@@ -4546,7 +5047,7 @@ module drcc_m0__chan__bsp__frame_crc(clk,rst,sampled,start,step,check,in_crc_fie
     reg  [3:0] crc_rx_idx;
 
     // Sub module instances
-    drcc_m0__chan__bsp__frame_crc__crc_step crc_step(
+    drcc_m0__core__chan__bsp__frame_crc__crc_step crc_step(
         .crc(crc_step__crc),
         .data_bit(crc_step__data_bit),
         .crc_next(crc_step__crc_next)
@@ -4589,10 +5090,10 @@ module drcc_m0__chan__bsp__frame_crc(clk,rst,sampled,start,step,check,in_crc_fie
         p_crc_bit__q <= p_crc_bit__d;
     end
 
-endmodule // drcc_m0__chan__bsp__frame_crc
+endmodule // drcc_m0__core__chan__bsp__frame_crc
 
 
-module drcc_m0__chan__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
+module drcc_m0__core__chan__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
 
     // Module arguments
     input wire  [14:0] crc;
@@ -4617,10 +5118,10 @@ module drcc_m0__chan__bsp__frame_crc__crc_step(crc,data_bit,crc_next);
         end
     end
 
-endmodule // drcc_m0__chan__bsp__frame_crc__crc_step
+endmodule // drcc_m0__core__chan__bsp__frame_crc__crc_step
 
 
-module drcc_m0__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,boff_runs,suspend_due);
+module drcc_m0__core__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_only,loopback,boff_hold,tx_starts,tx_joins,frame_ide,at_stuff_bit,stuff_last,no_data,data_end,error,flag_error,lost,sof_error,passive_after,bus_off_after,ack_defer,ack_counted,error_passive,field,bit_cnt,bit_cnt_inc,is_tx,flag_passive,last_bit_arb,delim_first,dom7,ack_pending,in_arbitration,in_frame,ack_slot,in_delim,after_error_flag,bc0,bc6,bc7,in_crc_field,sof,sof_as_tx,stuff_stop,stuff_resync,crc_step,crc_check,rx_shift_id,rx_take_srr_rtr,rx_take_ide,rx_take_rtr_ext,rx_take_dlc,rx_take_data_len,rx_take_data,rx_publish,tx_valid,recovered,boff_runs,suspend_due);
 
     // Module arguments
     input wire  clk;
@@ -4774,7 +5275,7 @@ module drcc_m0__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_on
     reg  hse_n;
 
     // Sub module instances
-    drcc_m0__chan__bsp__fsm__decode decode(
+    drcc_m0__core__chan__bsp__fsm__decode decode(
         .clk(decode__clk),
         .field(decode__field),
         .bit_cnt(decode__bit_cnt),
@@ -5230,10 +5731,10 @@ module drcc_m0__chan__bsp__fsm(clk,rst,sample,sampled,hard_sync_enable,listen_on
         hse_off__q <= hse_off__d;
     end
 
-endmodule // drcc_m0__chan__bsp__fsm
+endmodule // drcc_m0__core__chan__bsp__fsm
 
 
-module drcc_m0__chan__bsp__fsm__decode(clk,field,bit_cnt,recovery_cnt,dom_cnt,is_tx,error_passive,frame_ide,in_arbitration,in_frame,crc_covered,in_delim,after_error_flag,ack_slot,bc0,bc2,bc3,bc5,bc6,bc7,bc10,bc14,bc17,recovery_end,suspend_due,dom7);
+module drcc_m0__core__chan__bsp__fsm__decode(clk,field,bit_cnt,recovery_cnt,dom_cnt,is_tx,error_passive,frame_ide,in_arbitration,in_frame,crc_covered,in_delim,after_error_flag,ack_slot,bc0,bc2,bc3,bc5,bc6,bc7,bc10,bc14,bc17,recovery_end,suspend_due,dom7);
 
     // Module arguments
     input wire  clk;
@@ -5508,10 +6009,10 @@ module drcc_m0__chan__bsp__fsm__decode(clk,field,bit_cnt,recovery_cnt,dom_cnt,is
         p_dom7__q <= p_dom7__d;
     end
 
-endmodule // drcc_m0__chan__bsp__fsm__decode
+endmodule // drcc_m0__core__chan__bsp__fsm__decode
 
 
-module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,tx_valid,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,rx_success,tx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__core__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,tx_valid,dom_error,dom_flag_error,dom_ack_err,dom_tec_exempt,dom_sof_error,rec_error,rec_flag_error,rec_ack_err,rec_tec_exempt,rec_sof_error,tec,rec,error_passive,bus_off,tec_add8,rec_add1,rec_add8,rx_success,tx_success,passive_after,bus_off_after,ack_defer,ack_counted);
 
     // Module arguments
     input wire  clk;
@@ -5708,7 +6209,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
     reg  rec_ge120;
 
     // Sub module instances
-    drcc_m0__chan__bsp__rules__if if_dominant(
+    drcc_m0__core__chan__bsp__rules__if if_dominant(
         .sample(if_dominant__sample),
         .sampled(if_dominant__sampled),
         .at_stuff_bit(if_dominant__at_stuff_bit),
@@ -5743,7 +6244,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .ack_defer(if_dominant__ack_defer),
         .ack_counted(if_dominant__ack_counted)
     );
-    drcc_m0__chan__bsp__rules__if if_recessive(
+    drcc_m0__core__chan__bsp__rules__if if_recessive(
         .sample(if_recessive__sample),
         .sampled(if_recessive__sampled),
         .at_stuff_bit(if_recessive__at_stuff_bit),
@@ -5778,7 +6279,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .ack_defer(if_recessive__ack_defer),
         .ack_counted(if_recessive__ack_counted)
     );
-    drcc_m0__chan__bsp__la la_tec_add8(
+    drcc_m0__core__chan__bsp__la la_tec_add8(
         .clk(la_tec_add8__clk),
         .sample(la_tec_add8__sample),
         .sampled(la_tec_add8__sampled),
@@ -5786,7 +6287,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .if_recessive(la_tec_add8__if_recessive),
         .decision(la_tec_add8__decision)
     );
-    drcc_m0__chan__bsp__la la_rec_add1(
+    drcc_m0__core__chan__bsp__la la_rec_add1(
         .clk(la_rec_add1__clk),
         .sample(la_rec_add1__sample),
         .sampled(la_rec_add1__sampled),
@@ -5794,7 +6295,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .if_recessive(la_rec_add1__if_recessive),
         .decision(la_rec_add1__decision)
     );
-    drcc_m0__chan__bsp__la la_rec_add8(
+    drcc_m0__core__chan__bsp__la la_rec_add8(
         .clk(la_rec_add8__clk),
         .sample(la_rec_add8__sample),
         .sampled(la_rec_add8__sampled),
@@ -5802,7 +6303,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .if_recessive(la_rec_add8__if_recessive),
         .decision(la_rec_add8__decision)
     );
-    drcc_m0__chan__bsp__la la_rx_success(
+    drcc_m0__core__chan__bsp__la la_rx_success(
         .clk(la_rx_success__clk),
         .sample(la_rx_success__sample),
         .sampled(la_rx_success__sampled),
@@ -5810,7 +6311,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .if_recessive(la_rx_success__if_recessive),
         .decision(la_rx_success__decision)
     );
-    drcc_m0__chan__bsp__la la_passive_after(
+    drcc_m0__core__chan__bsp__la la_passive_after(
         .clk(la_passive_after__clk),
         .sample(la_passive_after__sample),
         .sampled(la_passive_after__sampled),
@@ -5818,7 +6319,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .if_recessive(la_passive_after__if_recessive),
         .decision(la_passive_after__decision)
     );
-    drcc_m0__chan__bsp__la la_bus_off_after(
+    drcc_m0__core__chan__bsp__la la_bus_off_after(
         .clk(la_bus_off_after__clk),
         .sample(la_bus_off_after__sample),
         .sampled(la_bus_off_after__sampled),
@@ -5826,7 +6327,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .if_recessive(la_bus_off_after__if_recessive),
         .decision(la_bus_off_after__decision)
     );
-    drcc_m0__chan__bsp__la la_ack_defer(
+    drcc_m0__core__chan__bsp__la la_ack_defer(
         .clk(la_ack_defer__clk),
         .sample(la_ack_defer__sample),
         .sampled(la_ack_defer__sampled),
@@ -5834,7 +6335,7 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         .if_recessive(la_ack_defer__if_recessive),
         .decision(la_ack_defer__decision)
     );
-    drcc_m0__chan__bsp__la la_ack_counted(
+    drcc_m0__core__chan__bsp__la la_ack_counted(
         .clk(la_ack_counted__clk),
         .sample(la_ack_counted__sample),
         .sampled(la_ack_counted__sampled),
@@ -5950,10 +6451,10 @@ module drcc_m0__chan__bsp__rules(clk,sample,sampled,at_stuff_bit,field,is_tx,tx_
         tx_success = tx_valid && ~listen_only;
     end
 
-endmodule // drcc_m0__chan__bsp__rules
+endmodule // drcc_m0__core__chan__bsp__rules
 
 
-module drcc_m0__chan__bsp__rules__if(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
+module drcc_m0__core__chan__bsp__rules__if(sample,sampled,at_stuff_bit,field,is_tx,tx_bit,flag_passive,in_delim,after_error_flag,bc0,delim_first,dom7,ack_pending,listen_only,error,flag_error,ack_err,tec_exempt,as_tx,passive_now,bus_off_now,tec_ge120,tec_ge248,rec_ge127,rec_ge120,tec_add8,rec_add1,rec_add8,rx_success,passive_after,bus_off_after,ack_defer,ack_counted);
 
     // Module arguments
     input wire  sample;
@@ -6084,10 +6585,10 @@ module drcc_m0__chan__bsp__rules__if(sample,sampled,at_stuff_bit,field,is_tx,tx_
         rx_success = ev_rx_success && ~listen_only;
     end
 
-endmodule // drcc_m0__chan__bsp__rules__if
+endmodule // drcc_m0__core__chan__bsp__rules__if
 
 
-module drcc_m0__chan__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);
+module drcc_m0__core__chan__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shift_id,take_srr_rtr,take_ide,take_rtr_ext,take_dlc,take_data_len,take_data,publish,no_data,data_end,rx_valid,rx_id,rx_ide,rx_rtr,rx_dlc,rx_data);
 
     // Module arguments
     input wire  clk;
@@ -6261,10 +6762,10 @@ module drcc_m0__chan__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,sh
         rx_data_q__q <= rx_data_q__d;
     end
 
-endmodule // drcc_m0__chan__bsp__rx_frame
+endmodule // drcc_m0__core__chan__bsp__rx_frame
 
 
-module drcc_m0__chan__bsp__stuffing(clk,rst,sample,sampled,start,stop,resync,insert,at_stuff_bit,last);
+module drcc_m0__core__chan__bsp__stuffing(clk,rst,sample,sampled,start,stop,resync,insert,at_stuff_bit,last);
 
     // Module arguments
     input wire  clk;
@@ -6345,10 +6846,10 @@ module drcc_m0__chan__bsp__stuffing(clk,rst,sample,sampled,start,stop,resync,ins
         at_stuff_q__q <= at_stuff_q__d;
     end
 
-endmodule // drcc_m0__chan__bsp__stuffing
+endmodule // drcc_m0__core__chan__bsp__stuffing
 
 
-module drcc_m0__chan__bsp__tx_frame(clk,load,id,ide,rtr,dlc,data,field,bit_cnt,crc,frame_bit,frame_ide);
+module drcc_m0__core__chan__bsp__tx_frame(clk,load,id,ide,rtr,dlc,data,field,bit_cnt,crc,frame_bit,frame_ide);
 
     // Module arguments
     input wire  clk;
@@ -6497,10 +6998,10 @@ module drcc_m0__chan__bsp__tx_frame(clk,load,id,ide,rtr,dlc,data,field,bit_cnt,c
         data_q__q <= data_q__d;
     end
 
-endmodule // drcc_m0__chan__bsp__tx_frame
+endmodule // drcc_m0__core__chan__bsp__tx_frame
 
 
-module drcc_m0__chan__bsp__tx_pin(clk,rst,bit_start,hard_sync,listen_only,field,is_tx,flag_passive,tx_starts,frame_bit,stuff_insert,stuff_last,crc_ok,tx);
+module drcc_m0__core__chan__bsp__tx_pin(clk,rst,bit_start,hard_sync,listen_only,field,is_tx,flag_passive,tx_starts,frame_bit,stuff_insert,stuff_last,crc_ok,tx);
 
     // Module arguments
     input wire  clk;
@@ -6553,7 +7054,7 @@ module drcc_m0__chan__bsp__tx_pin(clk,rst,bit_start,hard_sync,listen_only,field,
     reg  tx_bit;
 
     // Sub module instances
-    drcc_m0__chan__bsp__tx_pin__tx_q tx_q(
+    drcc_m0__core__chan__bsp__tx_pin__tx_q tx_q(
         .d(tx_q__d),
         .q(tx_q__q),
         .clock(tx_q__clock)
@@ -6613,10 +7114,10 @@ module drcc_m0__chan__bsp__tx_pin(clk,rst,bit_start,hard_sync,listen_only,field,
         end
     end
 
-endmodule // drcc_m0__chan__bsp__tx_pin
+endmodule // drcc_m0__core__chan__bsp__tx_pin
 
 
-module drcc_m0__chan__bsp__tx_pin__tx_q(d,q,clock);
+module drcc_m0__core__chan__bsp__tx_pin__tx_q(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6635,10 +7136,10 @@ module drcc_m0__chan__bsp__tx_pin__tx_q(d,q,clock);
     always @(*) begin
        q = ~dominant;
     end
-endmodule // drcc_m0__chan__bsp__tx_pin__tx_q
+endmodule // drcc_m0__core__chan__bsp__tx_pin__tx_q
 
 
-module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_single,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
+module drcc_m0__core__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_single,tx_abort,tx_pending,tx_failed,tx_done,arb_lost,tx_load,bus_off,suspend_due,is_tx,tx_pin,sample,sof,sof_as_tx,sent,lost,error,flag_error,sof_error,bus_off_after,starts,joins);
 
     // Module arguments
     input wire  clk;
@@ -6778,10 +7279,10 @@ module drcc_m0__chan__bsp__tx_request(clk,rst,listen_only,single_shot,tx_req,tx_
         arb_lost_q__q <= arb_lost_q__d;
     end
 
-endmodule // drcc_m0__chan__bsp__tx_request
+endmodule // drcc_m0__core__chan__bsp__tx_request
 
 
-module drcc_m0__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
+module drcc_m0__core__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_sjw_len,cfg_triple,rx_s,tx,hard_sync_enable,sample,sampled,bit_start,hard_sync,sample_point,last_sample);
 
     // Module arguments
     input wire  clk;
@@ -7115,10 +7616,10 @@ module drcc_m0__chan__btl(clk,rst,cfg_brp_next,cfg_tseg1_len,cfg_tseg2_len,cfg_s
         hse_q__q <= hse_q__d;
     end
 
-endmodule // drcc_m0__chan__btl
+endmodule // drcc_m0__core__chan__btl
 
 
-module drcc_m0__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp_next,triple,mode,ewl,single_shot,tseg1_len,tseg2_len,sjw_len);
+module drcc_m0__core__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_triple,cfg_mode,cfg_ewl,cfg_single_shot,brp_next,triple,mode,ewl,single_shot,tseg1_len,tseg2_len,sjw_len);
 
     // Module arguments
     input wire  clk;
@@ -7276,10 +7777,10 @@ module drcc_m0__chan__cfg_regs(clk,rst,cfg_brp,cfg_tseg1,cfg_tseg2,cfg_sjw,cfg_t
         single_shot_q__q <= single_shot_q__d;
     end
 
-endmodule // drcc_m0__chan__cfg_regs
+endmodule // drcc_m0__core__chan__cfg_regs
 
 
-module drcc_m0__chan__rx_sync(clk,rst,rx,rx_s);
+module drcc_m0__core__chan__rx_sync(clk,rst,rx,rx_s);
 
     // Module arguments
     input wire  clk;
@@ -7294,7 +7795,7 @@ module drcc_m0__chan__rx_sync(clk,rst,rx,rx_s);
     wire  rx_sync__q;
 
     // Sub module instances
-    drcc_m0__chan__rx_sync__rx_sync rx_sync(
+    drcc_m0__core__chan__rx_sync__rx_sync rx_sync(
         .clock(rx_sync__clock),
         .rst(rx_sync__rst),
         .d(rx_sync__d),
@@ -7309,10 +7810,10 @@ module drcc_m0__chan__rx_sync(clk,rst,rx,rx_s);
         rx_s = rx_sync__q;
     end
 
-endmodule // drcc_m0__chan__rx_sync
+endmodule // drcc_m0__core__chan__rx_sync
 
 
-module drcc_m0__chan__rx_sync__rx_sync(clock,rst,d,q);
+module drcc_m0__core__chan__rx_sync__rx_sync(clock,rst,d,q);
 
     // Module arguments
     input wire  clock;
@@ -7335,10 +7836,10 @@ module drcc_m0__chan__rx_sync__rx_sync(clock,rst,d,q);
     always @(*) begin
        q = sync;
     end
-endmodule // drcc_m0__chan__rx_sync__rx_sync
+endmodule // drcc_m0__core__chan__rx_sync__rx_sync
 
 
-module drcc_m0__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_id_word,mb_mask,status_word,cs_count_word,rx_stats_word,mb_state_word,hit,word,writable,illegal);
+module drcc_m0__core__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_id_word,mb_mask,status_word,cs_count_word,rx_stats_word,mb_state_word,hit,word,writable,illegal);
     parameter [0:0] DMR = 1'd1;
 
     // Module arguments
@@ -7482,10 +7983,10 @@ module drcc_m0__dmr_check(adr,wdat,reset_mode,cfg_word,time_word,cs_id_dcl,cs_id
         end
     end
 
-endmodule // drcc_m0__dmr_check
+endmodule // drcc_m0__core__dmr_check
 
 
-module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,tick,reset_mode_q,done_dcl,failed_dcl,rx_valid_dcl,rx_ide_dcl,rx_rtr_dcl,rx_dlc_dcl,rx_id_dcl,err_state_dcl,done_rcl,failed_rcl,rx_valid_rcl,rx_ide_rcl,rx_rtr_rcl,rx_dlc_rcl,rx_id_rcl,err_state_rcl,q_count,rd_ide,rd_id,rd_sel,eval_fault,eval_line,eval_tx,eval_deviation,eval_mb,tx_req_dcl,tx_req_rcl,cs_req_dcl,cs_req_rcl,tx_abort_dcl,tx_abort_rcl,restart_dcl,restart_rcl,off_dcl,off_rcl,pop,raise_tx_dcl,raise_tx_rcl,raise_rx_dcl,raise_rx_rcl,raise_req_dcl,raise_req_rcl,key_tx_dcl,key_tx_rcl,key_rx_dcl,key_rx_rcl,key_req_dcl,key_req_rcl,raise_eval,clear_mailboxes,rx_deliver_dcl,rx_deliver_rcl,acl_switch,tx_done_evt,int_evt,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,status_word,cs_count_word);
+module drcc_m0__core__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,tick,reset_mode_q,done_dcl,failed_dcl,rx_valid_dcl,rx_ide_dcl,rx_rtr_dcl,rx_dlc_dcl,rx_id_dcl,err_state_dcl,done_rcl,failed_rcl,rx_valid_rcl,rx_ide_rcl,rx_rtr_rcl,rx_dlc_rcl,rx_id_rcl,err_state_rcl,q_count,rd_ide,rd_id,rd_sel,eval_fault,eval_line,eval_tx,eval_deviation,eval_mb,tx_req_dcl,tx_req_rcl,cs_req_dcl,cs_req_rcl,tx_abort_dcl,tx_abort_rcl,restart_dcl,restart_rcl,off_dcl,off_rcl,pop,raise_tx_dcl,raise_tx_rcl,raise_rx_dcl,raise_rx_rcl,raise_req_dcl,raise_req_rcl,key_tx_dcl,key_tx_rcl,key_rx_dcl,key_rx_rcl,key_req_dcl,key_req_rcl,raise_eval,clear_mailboxes,rx_deliver_dcl,rx_deliver_rcl,acl_switch,tx_done_evt,int_evt,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,status_word,cs_count_word);
 
     // Module arguments
     input wire  clk;
@@ -7698,7 +8199,7 @@ module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,
     reg  [29:0] rd_key;
 
     // Sub module instances
-    drcc_m0__dmr_ctl__time_base time_base(
+    drcc_m0__core__dmr_ctl__time_base time_base(
         .clk(time_base__clk),
         .clear(time_base__clear),
         .tick_bits(time_base__tick_bits),
@@ -7707,7 +8208,7 @@ module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,
         .dmr_tick(time_base__dmr_tick),
         .period_due(time_base__period_due)
     );
-    drcc_m0__dmr_ctl__cs_rx cs_rx(
+    drcc_m0__core__dmr_ctl__cs_rx cs_rx(
         .clk(cs_rx__clk),
         .rst(cs_rx__rst),
         .run(cs_rx__run),
@@ -7727,7 +8228,7 @@ module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,
         .deliver_rcl(cs_rx__deliver_rcl),
         .cs_count_word(cs_rx__cs_count_word)
     );
-    drcc_m0__dmr_ctl__dcl dcl(
+    drcc_m0__core__dmr_ctl__dcl dcl(
         .clk(dcl__clk),
         .rst(dcl__rst),
         .hold(dcl__hold),
@@ -7761,7 +8262,7 @@ module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,
         .tx_fault(dcl__tx_fault),
         .rx_fault(dcl__rx_fault)
     );
-    drcc_m0__dmr_ctl__dcl rcl(
+    drcc_m0__core__dmr_ctl__dcl rcl(
         .clk(rcl__clk),
         .rst(rcl__rst),
         .hold(rcl__hold),
@@ -7795,7 +8296,7 @@ module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,
         .tx_fault(rcl__tx_fault),
         .rx_fault(rcl__rx_fault)
     );
-    drcc_m0__dmr_ctl__offsets offsets(
+    drcc_m0__core__dmr_ctl__offsets offsets(
         .clk(offsets__clk),
         .clear(offsets__clear),
         .q_count(offsets__q_count),
@@ -7812,7 +8313,7 @@ module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,
         .complete_rcl(offsets__complete_rcl),
         .first(offsets__first)
     );
-    drcc_m0__dmr_ctl__status status(
+    drcc_m0__core__dmr_ctl__status status(
         .clk(status__clk),
         .rst(status__rst),
         .hold(status__hold),
@@ -7963,10 +8464,10 @@ module drcc_m0__dmr_ctl(clk,rst,hold,timeout,cs_period,tick_bits,recovery_delay,
         cs_count_word = cs_rx__cs_count_word;
     end
 
-endmodule // drcc_m0__dmr_ctl
+endmodule // drcc_m0__core__dmr_ctl
 
 
-module drcc_m0__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_ide_dcl,rx_rtr_dcl,rx_dlc_dcl,rx_id_dcl,rx_valid_rcl,rx_ide_rcl,rx_rtr_rcl,rx_dlc_rcl,rx_id_rcl,deliver_dcl,deliver_rcl,cs_count_word);
+module drcc_m0__core__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_ide_dcl,rx_rtr_dcl,rx_dlc_dcl,rx_id_dcl,rx_valid_rcl,rx_ide_rcl,rx_rtr_rcl,rx_dlc_rcl,rx_id_rcl,deliver_dcl,deliver_rcl,cs_count_word);
 
     // Module arguments
     input wire  clk;
@@ -8020,25 +8521,25 @@ module drcc_m0__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_i
     reg  cs_rcl;
 
     // Sub module instances
-    drcc_m0__dmr_ctl__cs_rx__dcl_bad dcl_good(
+    drcc_m0__core__dmr_ctl__cs_rx__dcl_bad dcl_good(
         .clk(dcl_good__clk),
         .rst(dcl_good__rst),
         .inc(dcl_good__inc),
         .count(dcl_good__count)
     );
-    drcc_m0__dmr_ctl__cs_rx__dcl_bad dcl_bad(
+    drcc_m0__core__dmr_ctl__cs_rx__dcl_bad dcl_bad(
         .clk(dcl_bad__clk),
         .rst(dcl_bad__rst),
         .inc(dcl_bad__inc),
         .count(dcl_bad__count)
     );
-    drcc_m0__dmr_ctl__cs_rx__dcl_bad rcl_good(
+    drcc_m0__core__dmr_ctl__cs_rx__dcl_bad rcl_good(
         .clk(rcl_good__clk),
         .rst(rcl_good__rst),
         .inc(rcl_good__inc),
         .count(rcl_good__count)
     );
-    drcc_m0__dmr_ctl__cs_rx__dcl_bad rcl_bad(
+    drcc_m0__core__dmr_ctl__cs_rx__dcl_bad rcl_bad(
         .clk(rcl_bad__clk),
         .rst(rcl_bad__rst),
         .inc(rcl_bad__inc),
@@ -8072,10 +8573,10 @@ module drcc_m0__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_id_rcl,rx_valid_dcl,rx_i
         cs_count_word = ((dcl_good__count) & 32'hffffffff) | (((dcl_bad__count) & 32'hffffffff) << 32'h8) | (((rcl_good__count) & 32'hffffffff) << 32'h10) | (((rcl_bad__count) & 32'hffffffff) << 32'h18);
     end
 
-endmodule // drcc_m0__dmr_ctl__cs_rx
+endmodule // drcc_m0__core__dmr_ctl__cs_rx
 
 
-module drcc_m0__dmr_ctl__cs_rx__dcl_bad(clk,rst,inc,count);
+module drcc_m0__core__dmr_ctl__cs_rx__dcl_bad(clk,rst,inc,count);
 
     // Module arguments
     input wire  clk;
@@ -8109,10 +8610,10 @@ module drcc_m0__dmr_ctl__cs_rx__dcl_bad(clk,rst,inc,count);
         count_q__q <= count_q__d;
     end
 
-endmodule // drcc_m0__dmr_ctl__cs_rx__dcl_bad
+endmodule // drcc_m0__core__dmr_ctl__cs_rx__dcl_bad
 
 
-module drcc_m0__dmr_ctl__dcl(clk,rst,hold,timeout,recovery_delay,dmr_tick,period_due,mine,more,rd_key,reset_mode_q,done,failed,err_state,tx_req,cs_req,abort,restart,other_sends,eval_here,eval_tx,raise_req,raise_tx,key_tx,complete,cs_fail,busoff,against,sends_next,recovered,tx_fault,rx_fault);
+module drcc_m0__core__dmr_ctl__dcl(clk,rst,hold,timeout,recovery_delay,dmr_tick,period_due,mine,more,rd_key,reset_mode_q,done,failed,err_state,tx_req,cs_req,abort,restart,other_sends,eval_here,eval_tx,raise_req,raise_tx,key_tx,complete,cs_fail,busoff,against,sends_next,recovered,tx_fault,rx_fault);
 
     // Module arguments
     input wire  clk;
@@ -8352,10 +8853,10 @@ module drcc_m0__dmr_ctl__dcl(clk,rst,hold,timeout,recovery_delay,dmr_tick,period
         busoff_q__q <= busoff_q__d;
     end
 
-endmodule // drcc_m0__dmr_ctl__dcl
+endmodule // drcc_m0__core__dmr_ctl__dcl
 
 
-module drcc_m0__dmr_ctl__offsets(clk,clear,q_count,pop,off_dcl,off_rcl,more_dcl,more_rcl,tx_fault_dcl,tx_fault_rcl,sends_next_dcl,sends_next_rcl,complete_dcl,complete_rcl,first);
+module drcc_m0__core__dmr_ctl__offsets(clk,clear,q_count,pop,off_dcl,off_rcl,more_dcl,more_rcl,tx_fault_dcl,tx_fault_rcl,sends_next_dcl,sends_next_rcl,complete_dcl,complete_rcl,first);
 
     // Module arguments
     input wire  clk;
@@ -8451,10 +8952,10 @@ module drcc_m0__dmr_ctl__offsets(clk,clear,q_count,pop,off_dcl,off_rcl,more_dcl,
         off_rcl_q__q <= off_rcl_q__d;
     end
 
-endmodule // drcc_m0__dmr_ctl__offsets
+endmodule // drcc_m0__core__dmr_ctl__offsets
 
 
-module drcc_m0__dmr_ctl__status(clk,rst,hold,tx_fault_dcl,rx_fault_dcl,tx_fault_rcl,rx_fault_rcl,against_dcl,against_rcl,cs_fail_dcl,cs_fail_rcl,busoff_dcl,busoff_rcl,eval_fault,eval_line,eval_deviation,eval_mb,acl,dmr_state,acl_switch,int_evt,status_word);
+module drcc_m0__core__dmr_ctl__status(clk,rst,hold,tx_fault_dcl,rx_fault_dcl,tx_fault_rcl,rx_fault_rcl,against_dcl,against_rcl,cs_fail_dcl,cs_fail_rcl,busoff_dcl,busoff_rcl,eval_fault,eval_line,eval_deviation,eval_mb,acl,dmr_state,acl_switch,int_evt,status_word);
 
     // Module arguments
     input wire  clk;
@@ -8517,13 +9018,13 @@ module drcc_m0__dmr_ctl__status(clk,rst,hold,tx_fault_dcl,rx_fault_dcl,tx_fault_
     reg  changed;
 
     // Sub module instances
-    drcc_m0__dmr_ctl__cs_rx__dcl_bad state_changes(
+    drcc_m0__core__dmr_ctl__cs_rx__dcl_bad state_changes(
         .clk(state_changes__clk),
         .rst(state_changes__rst),
         .inc(state_changes__inc),
         .count(state_changes__count)
     );
-    drcc_m0__dmr_ctl__cs_rx__dcl_bad acl_switches(
+    drcc_m0__core__dmr_ctl__cs_rx__dcl_bad acl_switches(
         .clk(acl_switches__clk),
         .rst(acl_switches__rst),
         .inc(acl_switches__inc),
@@ -8615,10 +9116,10 @@ module drcc_m0__dmr_ctl__status(clk,rst,hold,tx_fault_dcl,rx_fault_dcl,tx_fault_
         cause_mb_q__q <= cause_mb_q__d;
     end
 
-endmodule // drcc_m0__dmr_ctl__status
+endmodule // drcc_m0__core__dmr_ctl__status
 
 
-module drcc_m0__dmr_ctl__time_base(clk,clear,tick_bits,cs_period,tick,dmr_tick,period_due);
+module drcc_m0__core__dmr_ctl__time_base(clk,clear,tick_bits,cs_period,tick,dmr_tick,period_due);
 
     // Module arguments
     input wire  clk;
@@ -8689,10 +9190,10 @@ module drcc_m0__dmr_ctl__time_base(clk,clear,tick_bits,cs_period,tick,dmr_tick,p
         period_cnt__q <= period_cnt__d;
     end
 
-endmodule // drcc_m0__dmr_ctl__time_base
+endmodule // drcc_m0__core__dmr_ctl__time_base
 
 
-module drcc_m0__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_we_id,mb_we_mask);
+module drcc_m0__core__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word,timeout,cs_period,tick_bits,recovery_delay,cs_id_dcl,cs_id_rcl,mb_sel,mb_enable,mb_limits,mb_we_id,mb_we_mask);
 
     // Module arguments
     input wire  clk;
@@ -8832,10 +9333,10 @@ module drcc_m0__dmr_regs(clk,rst,wr,adr,wdat,writable,refused,cfg_word,time_word
         limits_q__q <= limits_q__d;
     end
 
-endmodule // drcc_m0__dmr_regs
+endmodule // drcc_m0__core__dmr_regs
 
 
-module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b,rxv_a,rxv_b,ev_domain,star_word,star_split);
+module drcc_m0__core__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b,frame_b,echo_a,echo_b,rxv_a,rxv_b,ev_domain,star_word,star_split);
 
     // Module arguments
     input wire  clk;
@@ -8873,7 +9374,7 @@ module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b
     reg  armed;
 
     // Sub module instances
-    drcc_m0__echo__follow follow(
+    drcc_m0__core__echo__follow follow(
         .clk(follow__clk),
         .clear(follow__clear),
         .on(follow__on),
@@ -8907,10 +9408,10 @@ module drcc_m0__echo(clk,star,clear,attempted,head,rx_valid_a,frame_a,rx_valid_b
         star_split = follow__split_q;
     end
 
-endmodule // drcc_m0__echo
+endmodule // drcc_m0__core__echo
 
 
-module drcc_m0__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,hubf_b,ev_domain,word,split_q);
+module drcc_m0__core__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf_a,hubf_b,ev_domain,word,split_q);
 
     // Module arguments
     input wire  clk;
@@ -9035,10 +9536,10 @@ module drcc_m0__echo__follow(clk,clear,on,rx_valid_a,key_a,rx_valid_b,key_b,hubf
         frames_b__q <= frames_b__d;
     end
 
-endmodule // drcc_m0__echo__follow
+endmodule // drcc_m0__core__echo__follow
 
 
-module drcc_m0__filters(clk,rst,wr,adr,wdat,reset_mode,hit,word,illegal,id0,mask0,id1,mask1);
+module drcc_m0__core__filters(clk,rst,wr,adr,wdat,reset_mode,hit,word,illegal,id0,mask0,id1,mask1);
 
     // Module arguments
     input wire  clk;
@@ -9128,10 +9629,10 @@ module drcc_m0__filters(clk,rst,wr,adr,wdat,reset_mode,hit,word,illegal,id0,mask
         mask1_q__q <= mask1_q__d;
     end
 
-endmodule // drcc_m0__filters
+endmodule // drcc_m0__core__filters
 
 
-module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,echo_a,echo_b,attempted,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
+module drcc_m0__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,echo_a,echo_b,attempted,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
 
     // Module arguments
     input wire  clk;
@@ -9500,10 +10001,10 @@ module drcc_m0__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pendi
         switch_time_q__q <= switch_time_q__d;
     end
 
-endmodule // drcc_m0__main
+endmodule // drcc_m0__core__main
 
 
-module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,recover_a,recover_b,pop,rearm_err,rearm_alc,stats_clear);
+module drcc_m0__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,view_on,view_ctrl,view_btr,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,recover_a,recover_b,pop,rearm_err,rearm_alc,stats_clear);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [0:0] DMR = 1'd1;
     parameter [0:0] STAR = 1'd1;
@@ -9521,6 +10022,9 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
     output reg  wb_ack_o;
     output reg  wb_err_o;
     output reg  irq;
+    input wire  view_on;
+    input wire  [31:0] view_ctrl;
+    input wire  [27:0] view_btr;
     input wire  [31:0] ro_word;
     input wire  [1:0] es_a;
     input wire  [1:0] es_b;
@@ -9675,6 +10179,8 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
     reg  ctrl__refused;
     reg  [3:0] ctrl__k_in;
     wire  [31:0] ctrl__word;
+    reg  ctrl__view_on;
+    reg  [31:0] ctrl__view_word;
     wire  ctrl__reset_mode;
     wire  ctrl__reset_mode_d;
     wire  ctrl__redundancy;
@@ -9726,6 +10232,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
     reg  err_q__q;
 
     // Local signals
+    reg  [27:0] btr_word;
     reg  wr;
     reg  full;
     reg  laned;
@@ -9741,7 +10248,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
     reg  [63:0] tx_data64;
 
     // Sub module instances
-    drcc_m0__regs__bus bus(
+    drcc_m0__core__regs__bus bus(
         .clk(bus__clk),
         .rst(bus__rst),
         .wb_cyc_i(bus__wb_cyc_i),
@@ -9759,7 +10266,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
         .int_enable_we(bus__int_enable_we),
         .int_enable_d(bus__int_enable_d)
     );
-    drcc_m0__regs__ctrl #(.DMR(DMR), .STAR(STAR)) ctrl(
+    drcc_m0__core__regs__ctrl #(.DMR(DMR), .STAR(STAR)) ctrl(
         .clk(ctrl__clk),
         .rst(ctrl__rst),
         .we(ctrl__we),
@@ -9767,6 +10274,8 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
         .refused(ctrl__refused),
         .k_in(ctrl__k_in),
         .word(ctrl__word),
+        .view_on(ctrl__view_on),
+        .view_word(ctrl__view_word),
         .reset_mode(ctrl__reset_mode),
         .reset_mode_d(ctrl__reset_mode_d),
         .redundancy(ctrl__redundancy),
@@ -9780,7 +10289,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
         .dmr(ctrl__dmr),
         .busoff_manual(ctrl__busoff_manual)
     );
-    drcc_m0__regs__ctrl_check #(.DMR(DMR), .STAR(STAR)) ctrl_check(
+    drcc_m0__core__regs__ctrl_check #(.DMR(DMR), .STAR(STAR)) ctrl_check(
         .wdat(ctrl_check__wdat),
         .reset_mode(ctrl_check__reset_mode),
         .redundancy(ctrl_check__redundancy),
@@ -9811,6 +10320,12 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
         es_a_prev__d = es_a_prev__q;
         es_b_prev__d = es_b_prev__q;
         err_q__d = err_q__q;
+        if (view_on) begin
+            btr_word = view_btr;
+        end
+        else begin
+            btr_word = btr_q__q;
+        end
         bus__clk = clk;
         bus__rst = rst;
         bus__wb_cyc_i = wb_cyc_i;
@@ -9839,7 +10354,7 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
             rdata = ctrl__word;
         end
         else if (wb_adr_i == a_btr) begin
-            rdata = ((btr_q__q) & 32'hffffffff);
+            rdata = ((btr_word) & 32'hffffffff);
         end
         else if (wb_adr_i == a_rmb_cfg) begin
             rdata = rmb_cfg_q__q;
@@ -9892,6 +10407,8 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
         ctrl__wdat = wb_dat_i;
         ctrl__refused = ctrl_check__refused;
         ctrl__k_in = ctrl_check__k_in;
+        ctrl__view_on = view_on;
+        ctrl__view_word = view_ctrl;
         ctrl_check__wdat = wb_dat_i;
         ctrl_check__reset_mode = ctrl__reset_mode;
         ctrl_check__redundancy = ctrl__redundancy;
@@ -10056,12 +10573,12 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
         dmr = ctrl__dmr;
         busoff_manual = ctrl__busoff_manual;
         wr_o = wr & full;
-        brp = ((btr_q__q[(b_brp)+:(6)]) & 10'h3ff) | (((btr_q__q[(b_brp_ext)+:(4)]) & 10'h3ff) << brp_ext_shift);
-        tseg1 = btr_q__q[(b_tseg1)+:(4)];
-        tseg2 = btr_q__q[(b_tseg2)+:(3)];
-        sjw = btr_q__q[(b_sjw)+:(2)];
-        triple = btr_q__q[b_triple];
-        ewl = btr_q__q[(b_ewl)+:(8)];
+        brp = ((btr_word[(b_brp)+:(6)]) & 10'h3ff) | (((btr_word[(b_brp_ext)+:(4)]) & 10'h3ff) << brp_ext_shift);
+        tseg1 = btr_word[(b_tseg1)+:(4)];
+        tseg2 = btr_word[(b_tseg2)+:(3)];
+        sjw = btr_word[(b_sjw)+:(2)];
+        triple = btr_word[b_triple];
+        ewl = btr_word[(b_ewl)+:(8)];
         recovery_bits = rmb_cfg_q__q[(r_recovery)+:(16)];
         stall_limit = rmb_cfg_q__q[(r_stall)+:(16)];
         window = window_q__q;
@@ -10084,10 +10601,10 @@ module drcc_m0__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_
         err_q__q <= err_q__d;
     end
 
-endmodule // drcc_m0__regs
+endmodule // drcc_m0__core__regs
 
 
-module drcc_m0__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
+module drcc_m0__core__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,irq,wr,int_status,int_enable,rdata,events,w1c,int_enable_we,int_enable_d);
 
     // Module arguments
     input wire  clk;
@@ -10169,10 +10686,10 @@ module drcc_m0__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_dat_o,wb_ack_o,ir
         int_enable_q__q <= int_enable_q__d;
     end
 
-endmodule // drcc_m0__regs__bus
+endmodule // drcc_m0__core__regs__bus
 
 
-module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual);
+module drcc_m0__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,view_on,view_word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual);
     parameter [0:0] DMR = 1'd1;
     parameter [0:0] STAR = 1'd1;
 
@@ -10184,6 +10701,8 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
     input wire  refused;
     input wire  [3:0] k_in;
     output reg  [31:0] word;
+    input wire  view_on;
+    input wire  [31:0] view_word;
     output reg  reset_mode;
     output reg  reset_mode_d;
     output reg  redundancy;
@@ -10242,6 +10761,10 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
     reg  busoff_manual_q__d;
     reg  busoff_manual_q__q;
 
+    // Local signals
+    reg  [31:0] stored;
+    reg  [31:0] cur;
+
     // Update code
     always @(*) begin
         reset_mode_q__d = reset_mode_q__q;
@@ -10256,7 +10779,14 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
         single_shot_q__d = single_shot_q__q;
         dmr_q__d = dmr_q__q;
         busoff_manual_q__d = busoff_manual_q__q;
-        reset_mode_dq__d = reset_mode_q__q;
+        stored = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((star_q__q) & 32'hffffffff) << p_star) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr) | (((busoff_manual_q__q) & 32'hffffffff) << p_busoff_manual);
+        if (view_on) begin
+            cur = view_word;
+        end
+        else begin
+            cur = stored;
+        end
+        reset_mode_dq__d = cur[p_reset_mode];
         if (we) begin
             if (reset_mode_q__q) begin
                 if (~refused) begin
@@ -10291,19 +10821,19 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
             dmr_q__d = 1'b0;
             busoff_manual_q__d = 1'b0;
         end
-        word = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((star_q__q) & 32'hffffffff) << p_star) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr) | (((busoff_manual_q__q) & 32'hffffffff) << p_busoff_manual);
-        reset_mode = reset_mode_q__q;
+        word = cur;
+        reset_mode = cur[p_reset_mode];
         reset_mode_d = reset_mode_dq__q;
-        redundancy = redundancy_q__q;
-        policy = policy_q__q;
-        dual_tx = dual_tx_q__q;
-        star = star_q__q;
-        k = k_q__q;
-        mode_a = mode_a_q__q;
-        mode_b = mode_b_q__q;
-        single_shot = single_shot_q__q;
-        dmr = dmr_q__q;
-        busoff_manual = busoff_manual_q__q;
+        redundancy = cur[p_redundancy];
+        policy = cur[(p_policy)+:(2)];
+        dual_tx = cur[p_dual_tx];
+        star = cur[p_star];
+        k = cur[(p_k)+:(4)];
+        mode_a = cur[(p_mode_a)+:(2)];
+        mode_b = cur[(p_mode_b)+:(2)];
+        single_shot = cur[p_single_shot];
+        dmr = cur[p_dmr];
+        busoff_manual = cur[p_busoff_manual];
     end
 
     // Flip-flops
@@ -10322,10 +10852,10 @@ module drcc_m0__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,reset_mode,reset_mo
         busoff_manual_q__q <= busoff_manual_q__d;
     end
 
-endmodule // drcc_m0__regs__ctrl
+endmodule // drcc_m0__core__regs__ctrl
 
 
-module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,k_in,refused,illegal);
+module drcc_m0__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,k_in,refused,illegal);
     parameter [0:0] DMR = 1'd1;
     parameter [0:0] STAR = 1'd1;
 
@@ -10386,10 +10916,10 @@ module drcc_m0__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,
         end
     end
 
-endmodule // drcc_m0__regs__ctrl_check
+endmodule // drcc_m0__core__regs__ctrl_check
 
 
-module drcc_m0__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
+module drcc_m0__core__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
 
     // Module arguments
@@ -10428,7 +10958,7 @@ module drcc_m0__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
     reg  [4:0] pop5;
 
     // Sub module instances
-    drcc_m0__rxfifo__ram ram(
+    drcc_m0__core__rxfifo__ram ram(
         .clk(ram__clk),
         .read_address(ram__read_address),
         .read_enable(ram__read_enable),
@@ -10479,10 +11009,10 @@ module drcc_m0__rxfifo(clk,clear,wr,wr_data,pop,count,rd_data,rx_ready);
         ready__q <= ready__d;
     end
 
-endmodule // drcc_m0__rxfifo
+endmodule // drcc_m0__core__rxfifo
 
 
-module drcc_m0__rxfifo__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc_m0__core__rxfifo__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
 
     // Module arguments
     input wire  clk;
@@ -10509,10 +11039,10 @@ module drcc_m0__rxfifo__ram(clk,read_address,read_enable,read_data,write_address
        end
     end
 
-endmodule // drcc_m0__rxfifo__ram
+endmodule // drcc_m0__core__rxfifo__ram
 
 
-module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,filt_id0,filt_mask0,filt_id1,filt_mask1,stats_clear,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
+module drcc_m0__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,filt_id0,filt_mask0,filt_id1,filt_mask1,offer_s,frame_s,gate_on,gate_afm,gate_acr,gate_amr,stats_clear,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
     parameter [5:0] HISTORY = 6'd32;
 
@@ -10535,6 +11065,12 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     input wire  [31:0] filt_mask0;
     input wire  [30:0] filt_id1;
     input wire  [31:0] filt_mask1;
+    input wire  offer_s;
+    input wire  [98:0] frame_s;
+    input wire  gate_on;
+    input wire  gate_afm;
+    input wire  [31:0] gate_acr;
+    input wire  [31:0] gate_amr;
     input wire  stats_clear;
     output reg  rx_evt;
     output reg  overrun_evt;
@@ -10596,6 +11132,22 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     reg  rel__tick;
     wire  rel__found;
     wire  [4:0] rel__rel_e;
+    reg  [7:0] acf__acr0;
+    reg  [7:0] acf__acr1;
+    reg  [7:0] acf__acr2;
+    reg  [7:0] acf__acr3;
+    reg  [7:0] acf__amr0;
+    reg  [7:0] acf__amr1;
+    reg  [7:0] acf__amr2;
+    reg  [7:0] acf__amr3;
+    reg  acf__afm;
+    reg  [28:0] acf__id;
+    reg  acf__ide;
+    reg  acf__rtr;
+    reg  [3:0] acf__dlc;
+    reg  [7:0] acf__data1;
+    reg  [7:0] acf__data2;
+    wire  acf__accept;
     reg  stats__clk;
     reg  stats__rst;
     reg  stats__dup_inc;
@@ -10624,6 +11176,14 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     reg  [98:0] rxf_b__q;
     reg  sel__d;
     reg  sel__q;
+    reg  sel_s__d;
+    reg  sel_s__q;
+    reg  s_pend__d;
+    reg  s_pend__q;
+    reg  [98:0] s_pend_frame__d;
+    reg  [98:0] s_pend_frame__q;
+    reg  [98:0] s_frame__d;
+    reg  [98:0] s_frame__q;
     reg  [5:0] scan_i__d;
     reg  [5:0] scan_i__q;
     reg  hit__d;
@@ -10685,7 +11245,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
     reg  accept;
 
     // Sub module instances
-    drcc_m0__rxw__hist hist(
+    drcc_m0__core__rxw__hist hist(
         .clk(hist__clk),
         .read_address(hist__read_address),
         .read_enable(hist__read_enable),
@@ -10694,7 +11254,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         .write_data(hist__write_data),
         .write_enable(hist__write_enable)
     );
-    drcc_m0__rxw__hist_ts hist_ts(
+    drcc_m0__core__rxw__hist_ts hist_ts(
         .clk(hist_ts__clk),
         .read_address(hist_ts__read_address),
         .read_enable(hist_ts__read_enable),
@@ -10703,7 +11263,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         .write_data(hist_ts__write_data),
         .write_enable(hist_ts__write_enable)
     );
-    drcc_m0__rxw__rel rel(
+    drcc_m0__core__rxw__rel rel(
         .clk(rel__clk),
         .clear(rel__clear),
         .start(rel__start),
@@ -10714,7 +11274,25 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         .found(rel__found),
         .rel_e(rel__rel_e)
     );
-    drcc_m0__rxw__stats stats(
+    drcc_m0__core__rxw__acf acf(
+        .acr0(acf__acr0),
+        .acr1(acf__acr1),
+        .acr2(acf__acr2),
+        .acr3(acf__acr3),
+        .amr0(acf__amr0),
+        .amr1(acf__amr1),
+        .amr2(acf__amr2),
+        .amr3(acf__amr3),
+        .afm(acf__afm),
+        .id(acf__id),
+        .ide(acf__ide),
+        .rtr(acf__rtr),
+        .dlc(acf__dlc),
+        .data1(acf__data1),
+        .data2(acf__data2),
+        .accept(acf__accept)
+    );
+    drcc_m0__core__rxw__stats stats(
         .clk(stats__clk),
         .rst(stats__rst),
         .dup_inc(stats__dup_inc),
@@ -10755,6 +11333,10 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         release_q__d = release_q__q;
         w_pcl__d = w_pcl__q;
         hit_hd__d = hit_hd__q;
+        sel_s__d = sel_s__q;
+        s_pend__d = s_pend__q;
+        s_pend_frame__d = s_pend_frame__q;
+        s_frame__d = s_frame__q;
         hist__clk = clk;
         hist__read_enable = 1'b1;
         hist_ts__clk = clk;
@@ -10763,7 +11345,10 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         rel__clear = clear;
         stats__clk = clk;
         stats__rst = rst | stats_clear;
-        if (sel__q) begin
+        if (sel_s__q) begin
+            frame_sel = s_frame__q;
+        end
+        else if (sel__q) begin
             frame_sel = rxf_b__q;
         end
         else begin
@@ -10806,8 +11391,8 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         in_scan = (w_state__q == s_scan) | (w_state__q == s_rscan);
         judging = in_scan & (scan_i__q != zero6);
         pcl = sel__q != acl;
-        w_fifo = ~(dmr & w_pcl__q);
-        w_hist = dedup_on & ~hit__q;
+        w_fifo = sel_s__q | ~(dmr & w_pcl__q);
+        w_hist = dedup_on & ~hit__q & ~sel_s__q;
         if (w_state__q == s_fetch) begin
             hist__read_address = rel__rel_e;
         end
@@ -10837,7 +11422,22 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         f_word = fifo_data[(32'h44)+:(31)];
         f_match0 = filt_mask0[32'h1f] & (((f_word ^ filt_id0) & filt_mask0[(32'h0)+:(31)]) == zero31);
         f_match1 = filt_mask1[32'h1f] & (((f_word ^ filt_id1) & filt_mask1[(32'h0)+:(31)]) == zero31);
-        accept = ~(filt_mask0[32'h1f] | filt_mask1[32'h1f]) | f_match0 | f_match1;
+        acf__afm = gate_afm;
+        acf__acr0 = gate_acr[(32'h0)+:(8)];
+        acf__acr1 = gate_acr[(32'h8)+:(8)];
+        acf__acr2 = gate_acr[(32'h10)+:(8)];
+        acf__acr3 = gate_acr[(32'h18)+:(8)];
+        acf__amr0 = gate_amr[(32'h0)+:(8)];
+        acf__amr1 = gate_amr[(32'h8)+:(8)];
+        acf__amr2 = gate_amr[(32'h10)+:(8)];
+        acf__amr3 = gate_amr[(32'h18)+:(8)];
+        acf__rtr = fifo_data[32'h62];
+        acf__ide = fifo_data[32'h61];
+        acf__id = fifo_data[(32'h44)+:(29)];
+        acf__dlc = fifo_data[(32'h40)+:(4)];
+        acf__data1 = fifo_data[(32'h38)+:(8)];
+        acf__data2 = fifo_data[(32'h30)+:(8)];
+        accept = (~(filt_mask0[32'h1f] | filt_mask1[32'h1f]) | f_match0 | f_match1) & (~gate_on | acf__accept);
         rx_evt = 1'b0;
         overrun_evt = 1'b0;
         rel__start = 1'b0;
@@ -10858,6 +11458,10 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         rxp_a__d = rxp_a__q;
         rxp_b__d = rxp_b__q;
         sel__d = sel__q;
+        sel_s__d = sel_s__q;
+        s_pend__d = s_pend__q;
+        s_pend_frame__d = s_pend_frame__q;
+        s_frame__d = s_frame__q;
         scan_i__d = scan_i__q;
         hit__d = hit__q;
         hit_e__d = hit_e__q;
@@ -10896,6 +11500,7 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
                     sel__d = 1'b1;
                     rxp_b__d = 1'b0;
                 end
+                sel_s__d = 1'b0;
                 hist_idle__d = zero15;
                 scan_i__d = zero6;
                 hit__d = 1'b0;
@@ -10909,6 +11514,13 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
                 else begin
                     w_state__d = s_write;
                 end
+            end
+            else if (s_pend__q) begin
+                sel__d = 1'b0;
+                sel_s__d = 1'b1;
+                s_frame__d = s_pend_frame__q;
+                s_pend__d = 1'b0;
+                w_state__d = s_write;
             end
             else if (dmr & release_q__q & dedup_on) begin
                 w_state__d = s_rscan;
@@ -11020,11 +11632,17 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         if (release_set) begin
             release_q__d = 1'b1;
         end
+        if (offer_s) begin
+            s_pend__d = 1'b1;
+            s_pend_frame__d = frame_s;
+        end
         if (clear) begin
             w_state__d = s_idle;
             rxp_a__d = 1'b0;
             rxp_b__d = 1'b0;
             sel__d = 1'b0;
+            sel_s__d = 1'b0;
+            s_pend__d = 1'b0;
             scan_i__d = zero6;
             hit__d = 1'b0;
             hit_e__d = zero5;
@@ -11068,6 +11686,10 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         rxf_a__q <= rxf_a__d;
         rxf_b__q <= rxf_b__d;
         sel__q <= sel__d;
+        sel_s__q <= sel_s__d;
+        s_pend__q <= s_pend__d;
+        s_pend_frame__q <= s_pend_frame__d;
+        s_frame__q <= s_frame__d;
         scan_i__q <= scan_i__d;
         hit__q <= hit__d;
         hit_e__q <= hit_e__d;
@@ -11084,10 +11706,94 @@ module drcc_m0__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,f
         hit_hd__q <= hit_hd__d;
     end
 
-endmodule // drcc_m0__rxw
+endmodule // drcc_m0__core__rxw
 
 
-module drcc_m0__rxw__hist(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc_m0__core__rxw__acf(acr0,acr1,acr2,acr3,amr0,amr1,amr2,amr3,afm,id,ide,rtr,dlc,data1,data2,accept);
+
+    // Module arguments
+    input wire  [7:0] acr0;
+    input wire  [7:0] acr1;
+    input wire  [7:0] acr2;
+    input wire  [7:0] acr3;
+    input wire  [7:0] amr0;
+    input wire  [7:0] amr1;
+    input wire  [7:0] amr2;
+    input wire  [7:0] amr3;
+    input wire  afm;
+    input wire  [28:0] id;
+    input wire  ide;
+    input wire  rtr;
+    input wire  [3:0] dlc;
+    input wire  [7:0] data1;
+    input wire  [7:0] data2;
+    output reg  accept;
+
+    // Local signals
+    reg  std_id_0;
+    reg  std_id_2;
+    reg  std_lo_1;
+    reg  std_lo_3;
+    reg  std_d1;
+    reg  std_d2;
+    reg  std_d1_dual;
+    reg  no_d1;
+    reg  no_d2;
+    reg  ext_hi_0;
+    reg  ext_mid_1;
+    reg  ext_hi_2;
+    reg  ext_mid_3;
+    reg  ext_lo_2;
+    reg  ext_lo_3;
+    reg  single;
+    reg  dual1;
+    reg  dual2;
+    reg  rtr_1;
+    reg  rtr_3;
+    reg  rtr_3x;
+
+    // Update code
+    always @(*) begin
+        rtr_1 = amr1[32'h4] || (acr1[32'h4] == rtr);
+        rtr_3 = amr3[32'h4] || (acr3[32'h4] == rtr);
+        rtr_3x = amr3[32'h2] || (acr3[32'h2] == rtr);
+        std_id_0 = ~|((acr0 ^ id[(32'h3)+:(8)]) & ~amr0);
+        std_id_2 = ~|((acr2 ^ id[(32'h3)+:(8)]) & ~amr2);
+        std_lo_1 = rtr_1 && ~|((acr1[(32'h5)+:(3)] ^ id[(32'h0)+:(3)]) & ~amr1[(32'h5)+:(3)]);
+        std_lo_3 = rtr_3 && ~|((acr3[(32'h5)+:(3)] ^ id[(32'h0)+:(3)]) & ~amr3[(32'h5)+:(3)]);
+        std_d1 = ~|((acr2 ^ data1) & ~amr2);
+        std_d2 = ~|((acr3 ^ data2) & ~amr3);
+        std_d1_dual = ~|((acr1[(32'h0)+:(4)] ^ data1[(32'h4)+:(4)]) & ~amr1[(32'h0)+:(4)]) && ~|((acr3[(32'h0)+:(4)] ^ data1[(32'h0)+:(4)]) & ~amr3[(32'h0)+:(4)]);
+        ext_hi_0 = ~|((acr0 ^ id[(32'h15)+:(8)]) & ~amr0);
+        ext_mid_1 = ~|((acr1 ^ id[(32'hd)+:(8)]) & ~amr1);
+        ext_hi_2 = ~|((acr2 ^ id[(32'h15)+:(8)]) & ~amr2);
+        ext_mid_3 = ~|((acr3 ^ id[(32'hd)+:(8)]) & ~amr3);
+        ext_lo_2 = ~|((acr2 ^ id[(32'h5)+:(8)]) & ~amr2);
+        ext_lo_3 = rtr_3x && ~|((acr3[(32'h3)+:(5)] ^ id[(32'h0)+:(5)]) & ~amr3[(32'h3)+:(5)]);
+        no_d1 = rtr || ~|dlc;
+        no_d2 = rtr || ~|dlc[(32'h1)+:(3)];
+        if (ide) begin
+            single = ext_hi_0 && ext_mid_1 && ext_lo_2 && ext_lo_3;
+            dual1 = ext_hi_0 && ext_mid_1;
+            dual2 = ext_hi_2 && ext_mid_3;
+        end
+        else begin
+            single = std_id_0 && std_lo_1 && (no_d1 || std_d1) && (no_d2 || std_d2);
+            dual1 = std_id_0 && std_lo_1 && (no_d1 || std_d1_dual);
+            dual2 = std_id_2 && std_lo_3;
+        end
+        if (afm) begin
+            accept = single;
+        end
+        else begin
+            accept = dual1 || dual2;
+        end
+    end
+
+endmodule // drcc_m0__core__rxw__acf
+
+
+module drcc_m0__core__rxw__hist(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
 
     // Module arguments
     input wire  clk;
@@ -11114,10 +11820,10 @@ module drcc_m0__rxw__hist(clk,read_address,read_enable,read_data,write_address,w
        end
     end
 
-endmodule // drcc_m0__rxw__hist
+endmodule // drcc_m0__core__rxw__hist
 
 
-module drcc_m0__rxw__hist_ts(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc_m0__core__rxw__hist_ts(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
 
     // Module arguments
     input wire  clk;
@@ -11144,10 +11850,10 @@ module drcc_m0__rxw__hist_ts(clk,read_address,read_enable,read_data,write_addres
        end
     end
 
-endmodule // drcc_m0__rxw__hist_ts
+endmodule // drcc_m0__core__rxw__hist_ts
 
 
-module drcc_m0__rxw__rel(clk,clear,start,cand,scan_e,next_age,tick,found,rel_e);
+module drcc_m0__core__rxw__rel(clk,clear,start,cand,scan_e,next_age,tick,found,rel_e);
 
     // Module arguments
     input wire  clk;
@@ -11212,10 +11918,10 @@ module drcc_m0__rxw__rel(clk,clear,start,cand,scan_e,next_age,tick,found,rel_e);
         rel_age__q <= rel_age__d;
     end
 
-endmodule // drcc_m0__rxw__rel
+endmodule // drcc_m0__core__rxw__rel
 
 
-module drcc_m0__rxw__stats(clk,rst,dup_inc,overrun_inc,omit_a,omit_b,pcl_inc,released_inc,expired_inc,duplicates,overruns,omissions_a,omissions_b,pcl_frames,released,expired);
+module drcc_m0__core__rxw__stats(clk,rst,dup_inc,overrun_inc,omit_a,omit_b,pcl_inc,released_inc,expired_inc,duplicates,overruns,omissions_a,omissions_b,pcl_frames,released,expired);
 
     // Module arguments
     input wire  clk;
@@ -11325,10 +12031,10 @@ module drcc_m0__rxw__stats(clk,rst,dup_inc,overrun_inc,omit_a,omit_b,pcl_inc,rel
         expired_q__q <= expired_q__d;
     end
 
-endmodule // drcc_m0__rxw__stats
+endmodule // drcc_m0__core__rxw__stats
 
 
-module drcc_m0__stats(clk,rst,switch_evt,recover_a,recover_b,switches,recoveries);
+module drcc_m0__core__stats(clk,rst,switch_evt,recover_a,recover_b,switches,recoveries);
 
     // Module arguments
     input wire  clk;
@@ -11384,10 +12090,10 @@ module drcc_m0__stats(clk,rst,switch_evt,recover_a,recover_b,switches,recoveries
         recov_q__q <= recov_q__d;
     end
 
-endmodule // drcc_m0__stats
+endmodule // drcc_m0__core__stats
 
 
-module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,now,rx_ready,duplicates,overruns,switches,recoveries,star_word,omissions_a,omissions_b,cap_a,cap_b);
+module drcc_m0__core__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch_time,reset_mode,txq_a,txq_b,rx_count,es_a,tec_a,rec_a,ew_a,es_b,tec_b,rec_b,ew_b,aux_a_state,causes_a,fail_cnt_a,failures_a,recoveries_a,aux_b_state,causes_b,fail_cnt_b,failures_b,recoveries_b,rx_head,now,rx_ready,duplicates,overruns,switches,recoveries,star_word,omissions_a,omissions_b,cap_a,cap_b);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [5:0] HISTORY = 6'd32;
@@ -11576,10 +12282,10 @@ module drcc_m0__status(adr,word,state,tx_channel,tx_going_on,last_tx_time,switch
         end
     end
 
-endmodule // drcc_m0__status
+endmodule // drcc_m0__core__status
 
 
-module drcc_m0__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
+module drcc_m0__core__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
 
     // Module arguments
     input wire  clk;
@@ -11650,10 +12356,10 @@ module drcc_m0__ticker(clk,hold,brp,tseg1,tseg2,tick,now);
         now_q__q <= now_q__d;
     end
 
-endmodule // drcc_m0__ticker
+endmodule // drcc_m0__core__ticker
 
 
-module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,abort_a,abort_b,chan_abort_a,chan_abort_b,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
+module drcc_m0__core__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push_q,push_frame,pop_red,abort_a,abort_b,chan_abort_a,chan_abort_b,done_a,failed_a,done_b,failed_b,count_a,count_b,rd_frame,rd_sel_o,req_a,req_b,done_evt,failed_evt);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
 
     // Module arguments
@@ -11738,7 +12444,7 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
     reg  [2:0] rd_slot;
 
     // Sub module instances
-    drcc_m0__txbuf__ram ram(
+    drcc_m0__core__txbuf__ram ram(
         .clk(ram__clk),
         .read_address(ram__read_address),
         .read_enable(ram__read_enable),
@@ -11747,7 +12453,7 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
         .write_data(ram__write_data),
         .write_enable(ram__write_enable)
     );
-    drcc_m0__txbuf__norm norm(
+    drcc_m0__core__txbuf__norm norm(
         .frame(norm__frame),
         .normalized(norm__normalized)
     );
@@ -11912,10 +12618,10 @@ module drcc_m0__txbuf(clk,clear,redundancy,dmr,off_dcl,off_rcl,dmr_pop,push,push
         chan_abort_b_q__q <= chan_abort_b_q__d;
     end
 
-endmodule // drcc_m0__txbuf
+endmodule // drcc_m0__core__txbuf
 
 
-module drcc_m0__txbuf__norm(frame,normalized);
+module drcc_m0__core__txbuf__norm(frame,normalized);
 
     // Module arguments
     input wire  [98:0] frame;
@@ -11963,10 +12669,10 @@ module drcc_m0__txbuf__norm(frame,normalized);
         normalized = (((rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((data) & 99'h7ffffffffffffffffffffffff);
     end
 
-endmodule // drcc_m0__txbuf__norm
+endmodule // drcc_m0__core__txbuf__norm
 
 
-module drcc_m0__txbuf__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+module drcc_m0__core__txbuf__ram(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
 
     // Module arguments
     input wire  clk;
@@ -11993,4 +12699,4 @@ module drcc_m0__txbuf__ram(clk,read_address,read_enable,read_data,write_address,
        end
     end
 
-endmodule // drcc_m0__txbuf__ram
+endmodule // drcc_m0__core__txbuf__ram

@@ -17,42 +17,28 @@
 //! [`Drcc`] (`M = 16`), `drcc_m0` is [`DrccM0`] (`M = 0`: no mailbox engine, no
 //! identifier memory; DMR faults are then found by bus-off and the connection
 //! service only). The other sizes (TX queue and RX FIFO depths, the history) are
-//! set by [`DrccCore::with_config`] (`crate::config`; `drcc_small`).
+//! set by [`DrccTop::with_config`] (`crate::config`; `drcc_small`).
+//!
+//! The logic is the core's ([`DrccCore`], `crate::drcc_core`); this top gives it its
+//! ports and ties its host-view inputs off, so the native register block is the
+//! host.
 
 use crate::channel::bsp::field::Field;
-use crate::channel::can_channel::CanChannel;
-use crate::channel::sized::{Const, Param};
+use crate::channel::sized::Const;
 use crate::config::DrccConfig;
-use crate::dmr::control::DmrControl;
-use crate::dmr::engine::{DmrEngine, MAILBOXES};
-use crate::dmr::if_mailboxes::IfMailboxes;
-use crate::dmr::mailbox_cfg::MailboxCfg;
-use crate::host::busoff_recovery::BusoffRecovery;
-use crate::host::captures::Captures;
-use crate::host::dmr_check::DmrCheck;
-use crate::host::dmr_regs::DmrRegs;
-use crate::host::filters::FilterRegs;
-use crate::host::status_words::StatusWords;
-use crate::host::wishbone::WbRegs;
-use crate::memory::dedup::RxWriter;
-use crate::memory::rx_fifo::RxFifo;
-use crate::memory::tx_buffer::TxBuffer;
-use crate::rmb::aux_fsm::AuxFsm;
-use crate::rmb::bit_tick::BitTick;
-use crate::rmb::echo::Echo;
-use crate::rmb::main_fsm::MainFsm;
-use crate::rmb::stats::RedundancyStats;
+use crate::dmr::engine::MAILBOXES;
+use crate::drcc_core::DrccCore;
 use rust_hdl::prelude::*;
 
 /// The DRCC with the default 16 DMR mailboxes (`rtl-out/drcc.v`).
-pub type Drcc = DrccCore<MAILBOXES>;
+pub type Drcc = DrccTop<MAILBOXES>;
 
 /// The DRCC without DMR mailboxes (`rtl-out/drcc_m0.v`).
-pub type DrccM0 = DrccCore<0>;
+pub type DrccM0 = DrccTop<0>;
 
 /// The DRCC top, generated with `M` DMR mailboxes (0..16).
 #[derive(LogicBlock, Default)]
-pub struct DrccCore<const M: usize> {
+pub struct DrccTop<const M: usize> {
     // clock and reset
     /// Clock. Every register changes at its rising edge; the channels' bit timing
     /// (register `BTR`) is counted in its periods.
@@ -172,72 +158,93 @@ pub struct DrccCore<const M: usize> {
     pub rcl_rx_fault: Signal<Out, Bit>,
     /// One-clock pulse every `DMR_TIME.tick_bits` nominal bit times (the DMR tick).
     pub dmr_tick: Signal<Out, Bit>,
-    // blocks
-    regs: WbRegs,
-    dmr_check: DmrCheck<M>,
-    dmr_regs: DmrRegs<M>,
-    filters: FilterRegs,
-    mailbox_cfg: IfMailboxes<MailboxCfg, M>,
-    dmr_ctl: DmrControl,
-    dmr_eng: IfMailboxes<DmrEngine<M>, M>,
-    status: StatusWords<M>,
-    caps: Captures,
-    ticker: BitTick,
-    stats: RedundancyStats,
-    pub main: MainFsm,
-    echo: Echo,
-    aux_a: AuxFsm,
-    aux_b: AuxFsm,
-    txbuf: TxBuffer,
-    rxfifo: RxFifo,
-    rxw: RxWriter,
-    chan_a: CanChannel,
-    chan_b: CanChannel,
-    // manual bus-off recovery of each channel (§11.6)
-    busoff_a: BusoffRecovery,
-    busoff_b: BusoffRecovery,
-    // glue
-    clear: Signal<Local, Bit>,
-    rmb_hold: Signal<Local, Bit>,
-    dmr_hold: Signal<Local, Bit>,
-    // the channels' received frames, laid out as the TX RAM (id, ide, rtr, dlc, data)
-    rx_frame_a: Signal<Local, Bits<99>>,
-    rx_frame_b: Signal<Local, Bits<99>>,
-    // the mailbox blocks' outputs (0 with M = 0)
-    mb_id_word: Signal<Local, Bits<31>>,
-    mb_mask: Signal<Local, Bits<29>>,
-    mb_state_word: Signal<Local, Bits<32>>,
-    eval_fault: Signal<Local, Bit>,
-    eval_line: Signal<Local, Bit>,
-    eval_tx: Signal<Local, Bit>,
-    eval_deviation: Signal<Local, Bit>,
-    eval_mb: Signal<Local, Bits<4>>,
-    zero4: Const<4, 0>,
-    zero29: Const<29, 0>,
-    zero31: Const<31, 0>,
+    // the DRCC core, its host-view inputs tied off
+    /// The core (public for block-level probes in tests).
+    pub core: DrccCore<M>,
+    zero2: Const<2, 0>,
+    zero28: Const<28, 0>,
     zero32: Const<32, 0>,
+    zero99: Const<99, 0>,
 }
 
-impl<const M: usize> DrccCore<M> {
+impl<const M: usize> DrccTop<M> {
     /// The DRCC with the sizes of `cfg` (its `mailboxes` must be `M`): the TX
     /// queues, the RX FIFO and the duplicate-removal history (`crate::config`).
     pub fn with_config(cfg: &DrccConfig) -> Self {
-        assert_eq!(cfg.mailboxes, M, "DrccCore<{M}> has {M} DMR mailboxes");
-        cfg.check().unwrap_or_else(|e| panic!("{e}"));
-        let mut dmr_check = DmrCheck::<M>::new();
-        dmr_check.dmr_present = Param::new(cfg.dmr as u64);
         Self {
-            regs: WbRegs::with_config(cfg),
-            status: StatusWords::with_config(cfg),
-            dmr_check,
-            txbuf: TxBuffer::new(cfg.tx_queue_depth),
-            rxfifo: RxFifo::new(cfg.rx_fifo_depth),
-            rxw: RxWriter::new(cfg.history, cfg.rx_fifo_depth),
+            core: DrccCore::with_config(cfg),
             ..Default::default()
         }
     }
 }
 
-// The update (every block's wiring) lives beside this file.
-#[path = "drcc_wiring.rs"]
-mod wiring;
+impl<const M: usize> Logic for DrccTop<M> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.core.clk.next = self.clk.val();
+        self.core.rst.next = self.rst.val();
+        self.core.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.core.wb_stb_i.next = self.wb_stb_i.val();
+        self.core.wb_we_i.next = self.wb_we_i.val();
+        self.core.wb_adr_i.next = self.wb_adr_i.val();
+        self.core.wb_dat_i.next = self.wb_dat_i.val();
+        self.core.wb_sel_i.next = self.wb_sel_i.val();
+        self.core.chan_a_rx.next = self.chan_a_rx.val();
+        self.core.chan_b_rx.next = self.chan_b_rx.val();
+        self.wb_dat_o.next = self.core.wb_dat_o.val();
+        self.wb_ack_o.next = self.core.wb_ack_o.val();
+        self.wb_err_o.next = self.core.wb_err_o.val();
+        self.irq.next = self.core.irq.val();
+        self.chan_a_tx.next = self.core.chan_a_tx.val();
+        self.chan_b_tx.next = self.core.chan_b_tx.val();
+        self.state.next = self.core.state.val();
+        self.tx_channel.next = self.core.tx_channel.val();
+        self.transmission_ack.next = self.core.transmission_ack.val();
+        self.chan_a_transmission_req.next = self.core.chan_a_transmission_req.val();
+        self.chan_b_transmission_req.next = self.core.chan_b_transmission_req.val();
+        self.tx_success.next = self.core.tx_success.val();
+        self.tx_ok_channel.next = self.core.tx_ok_channel.val();
+        self.tx_failure.next = self.core.tx_failure.val();
+        self.tx_failure_channel.next = self.core.tx_failure_channel.val();
+        self.tx_going_on.next = self.core.tx_going_on.val();
+        self.chan_a_bsp_tx_err_cnt.next = self.core.chan_a_bsp_tx_err_cnt.val();
+        self.chan_a_bsp_node_error_passive.next = self.core.chan_a_bsp_node_error_passive.val();
+        self.chan_b_bsp_tx_err_cnt.next = self.core.chan_b_bsp_tx_err_cnt.val();
+        self.chan_b_bsp_node_error_passive.next = self.core.chan_b_bsp_node_error_passive.val();
+        self.aux_a_state.next = self.core.aux_a_state.val();
+        self.aux_b_state.next = self.core.aux_b_state.val();
+        self.chan_a_sample_point.next = self.core.chan_a_sample_point.val();
+        self.chan_b_sample_point.next = self.core.chan_b_sample_point.val();
+        self.chan_a_field.next = self.core.chan_a_field.val();
+        self.chan_b_field.next = self.core.chan_b_field.val();
+        self.chan_a_rec.next = self.core.chan_a_rec.val();
+        self.chan_b_rec.next = self.core.chan_b_rec.val();
+        self.chan_a_err_state.next = self.core.chan_a_err_state.val();
+        self.chan_b_err_state.next = self.core.chan_b_err_state.val();
+        self.dmr_state.next = self.core.dmr_state.val();
+        self.acl.next = self.core.acl.val();
+        self.dcl_tx_fault.next = self.core.dcl_tx_fault.val();
+        self.dcl_rx_fault.next = self.core.dcl_rx_fault.val();
+        self.rcl_tx_fault.next = self.core.rcl_tx_fault.val();
+        self.rcl_rx_fault.next = self.core.rcl_rx_fault.val();
+        self.dmr_tick.next = self.core.dmr_tick.val();
+        // no host view: the native register block is the host
+        self.core.view_on.next = false;
+        self.core.view_ctrl.next = self.zero32.val();
+        self.core.view_btr.next = self.zero28.val();
+        self.core.view_chan_reset.next = self.zero2.val();
+        self.core.view_push.next = false;
+        self.core.view_push_q.next = false;
+        self.core.view_push_frame.next = self.zero99.val();
+        self.core.view_pop.next = false;
+        self.core.view_tx_single.next = false;
+        self.core.view_tx_abort.next = self.zero2.val();
+        self.core.view_boff_hold.next = self.zero2.val();
+        self.core.view_offer_s.next = false;
+        self.core.view_frame_s.next = self.zero99.val();
+        self.core.view_gate_on.next = false;
+        self.core.view_afm.next = false;
+        self.core.view_acr.next = self.zero32.val();
+        self.core.view_amr.next = self.zero32.val();
+    }
+}

@@ -4,6 +4,7 @@ pub mod channel;
 pub mod config;
 pub mod dmr;
 pub mod drcc;
+pub mod drcc_core;
 pub mod generated;
 pub mod host;
 pub mod hub;

@@ -181,7 +181,7 @@ pub static TOPS: &[Top] = &[
             ("DMR", "1"),
             ("STAR", "1"),
         ],
-        block: "DrccCore",
+        block: "DrccTop",
         source_path: "hdl/src/drcc.rs",
         source: include_str!("drcc.rs"),
         notes: "M DMR mailboxes (cosim/src/model/dmr_contract.md section 2). Registers:\n\
@@ -205,7 +205,7 @@ pub static TOPS: &[Top] = &[
             ("DMR", "1"),
             ("STAR", "1"),
         ],
-        block: "DrccCore",
+        block: "DrccTop",
         source_path: "hdl/src/drcc.rs",
         source: include_str!("drcc.rs"),
         notes: "The drcc with M = 0 DMR mailboxes (cosim/src/model/dmr_contract.md section 2):\n\
@@ -228,7 +228,7 @@ pub static TOPS: &[Top] = &[
             ("DMR", "0"),
             ("STAR", "0"),
         ],
-        block: "DrccCore",
+        block: "DrccTop",
         source_path: "hdl/src/drcc.rs",
         source: include_str!("drcc.rs"),
         notes: "The small configuration (hdl/src/config.rs, drcc_contract.md section 1.1): the\n\

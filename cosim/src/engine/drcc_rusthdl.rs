@@ -1,4 +1,4 @@
-//! The `rust-hdl` engine of the DRCC tops: the `drcc_hdl::drcc::DrccCore<M>` block
+//! The `rust-hdl` engine of the DRCC tops: the `drcc_hdl::drcc::DrccTop<M>` block
 //! (`M` DMR mailboxes: `drcc` 16, `drcc_m0` 0) in
 //! rust-hdl's own simulator. It runs the Rust description `rtl-out/drcc.v` is
 //! emitted from, so comparing it with the model and the Verilated RTL checks that
@@ -11,15 +11,58 @@
 use super::drcc::{DrccEngine, DrccInputs, DrccOutputs, DrccProbes};
 use super::rusthdl::{field_code, settle};
 use drcc_hdl::config::DrccConfig;
-use drcc_hdl::drcc::DrccCore;
+use drcc_hdl::drcc::DrccTop;
 use rust_hdl::prelude::*;
+
+/// The DRCC probes of a block with the DRCC top's probe ports (the native top
+/// or the core), read after an edge.
+macro_rules! drcc_probes {
+    ($u:expr) => {{
+        let u = $u;
+        let b = |s: &Signal<Out, Bit>| s.val();
+        DrccProbes {
+            state: u.state.val().to_u64() as u8,
+            tx_channel: b(&u.tx_channel),
+            transmission_ack: b(&u.transmission_ack),
+            chan_a_transmission_req: b(&u.chan_a_transmission_req),
+            chan_b_transmission_req: b(&u.chan_b_transmission_req),
+            tx_success: b(&u.tx_success),
+            tx_ok_channel: u.tx_ok_channel.val().to_u64() as u8,
+            tx_failure: b(&u.tx_failure),
+            tx_failure_channel: u.tx_failure_channel.val().to_u64() as u8,
+            tx_going_on: b(&u.tx_going_on),
+            chan_a_bsp_tx_err_cnt: u.chan_a_bsp_tx_err_cnt.val().to_u64() as u16,
+            chan_a_bsp_node_error_passive: b(&u.chan_a_bsp_node_error_passive),
+            chan_b_bsp_tx_err_cnt: u.chan_b_bsp_tx_err_cnt.val().to_u64() as u16,
+            chan_b_bsp_node_error_passive: b(&u.chan_b_bsp_node_error_passive),
+            aux_a_state: u.aux_a_state.val().to_u64() as u8,
+            aux_b_state: u.aux_b_state.val().to_u64() as u8,
+            chan_a_sample_point: b(&u.chan_a_sample_point),
+            chan_b_sample_point: b(&u.chan_b_sample_point),
+            chan_a_field: field_code(&u.chan_a_field.val()),
+            chan_b_field: field_code(&u.chan_b_field.val()),
+            chan_a_rec: u.chan_a_rec.val().to_u64() as u8,
+            chan_b_rec: u.chan_b_rec.val().to_u64() as u8,
+            chan_a_err_state: u.chan_a_err_state.val().to_u64() as u8,
+            chan_b_err_state: u.chan_b_err_state.val().to_u64() as u8,
+            dmr_state: u.dmr_state.val().to_u64() as u8,
+            acl: b(&u.acl),
+            dcl_tx_fault: b(&u.dcl_tx_fault),
+            dcl_rx_fault: b(&u.dcl_rx_fault),
+            rcl_tx_fault: b(&u.rcl_tx_fault),
+            rcl_rx_fault: b(&u.rcl_rx_fault),
+            dmr_tick: b(&u.dmr_tick),
+        }
+    }};
+}
+pub(crate) use drcc_probes;
 
 /// Settling budget per half clock.
 const MAX_SETTLE_ITERS: usize = 400;
 
 /// The DRCC block with `M` DMR mailboxes in rust-hdl's simulator.
 pub struct DrccCoreRustHdlEngine<const M: usize> {
-    uut: Box<DrccCore<M>>,
+    uut: Box<DrccTop<M>>,
 }
 
 /// The `drcc` top (16 DMR mailboxes) in rust-hdl's simulator.
@@ -43,15 +86,15 @@ impl<const M: usize> Default for DrccCoreRustHdlEngine<M> {
 impl<const M: usize> DrccCoreRustHdlEngine<M> {
     /// A fresh DRCC, clock low, not yet reset (drive `rst` for a few steps).
     pub fn new() -> Self {
-        Self::from_block(Box::<DrccCore<M>>::default())
+        Self::from_block(Box::<DrccTop<M>>::default())
     }
 
     /// A fresh DRCC generated with the sizes of `cfg` (its `mailboxes` is `M`).
     pub fn with_config(cfg: &DrccConfig) -> Self {
-        Self::from_block(Box::new(DrccCore::<M>::with_config(cfg)))
+        Self::from_block(Box::new(DrccTop::<M>::with_config(cfg)))
     }
 
-    fn from_block(mut uut: Box<DrccCore<M>>) -> Self {
+    fn from_block(mut uut: Box<DrccTop<M>>) -> Self {
         uut.connect_all();
         uut.clk.next = Clock::from(false);
         let mut e = DrccCoreRustHdlEngine { uut };
@@ -85,7 +128,6 @@ impl<const M: usize> DrccEngine for DrccCoreRustHdlEngine<M> {
         self.uut.clk.next = Clock::from(true);
         self.settle();
         let u = &self.uut;
-        let b = |s: &Signal<Out, Bit>| s.val();
         DrccOutputs {
             wb_ack: u.wb_ack_o.val(),
             wb_err: u.wb_err_o.val(),
@@ -93,39 +135,7 @@ impl<const M: usize> DrccEngine for DrccCoreRustHdlEngine<M> {
             irq: u.irq.val(),
             chan_a_tx: u.chan_a_tx.val(),
             chan_b_tx: u.chan_b_tx.val(),
-            probes: DrccProbes {
-                state: u.state.val().to_u64() as u8,
-                tx_channel: b(&u.tx_channel),
-                transmission_ack: b(&u.transmission_ack),
-                chan_a_transmission_req: b(&u.chan_a_transmission_req),
-                chan_b_transmission_req: b(&u.chan_b_transmission_req),
-                tx_success: b(&u.tx_success),
-                tx_ok_channel: u.tx_ok_channel.val().to_u64() as u8,
-                tx_failure: b(&u.tx_failure),
-                tx_failure_channel: u.tx_failure_channel.val().to_u64() as u8,
-                tx_going_on: b(&u.tx_going_on),
-                chan_a_bsp_tx_err_cnt: u.chan_a_bsp_tx_err_cnt.val().to_u64() as u16,
-                chan_a_bsp_node_error_passive: b(&u.chan_a_bsp_node_error_passive),
-                chan_b_bsp_tx_err_cnt: u.chan_b_bsp_tx_err_cnt.val().to_u64() as u16,
-                chan_b_bsp_node_error_passive: b(&u.chan_b_bsp_node_error_passive),
-                aux_a_state: u.aux_a_state.val().to_u64() as u8,
-                aux_b_state: u.aux_b_state.val().to_u64() as u8,
-                chan_a_sample_point: b(&u.chan_a_sample_point),
-                chan_b_sample_point: b(&u.chan_b_sample_point),
-                chan_a_field: field_code(&u.chan_a_field.val()),
-                chan_b_field: field_code(&u.chan_b_field.val()),
-                chan_a_rec: u.chan_a_rec.val().to_u64() as u8,
-                chan_b_rec: u.chan_b_rec.val().to_u64() as u8,
-                chan_a_err_state: u.chan_a_err_state.val().to_u64() as u8,
-                chan_b_err_state: u.chan_b_err_state.val().to_u64() as u8,
-                dmr_state: u.dmr_state.val().to_u64() as u8,
-                acl: b(&u.acl),
-                dcl_tx_fault: b(&u.dcl_tx_fault),
-                dcl_rx_fault: b(&u.dcl_rx_fault),
-                rcl_tx_fault: b(&u.rcl_tx_fault),
-                rcl_rx_fault: b(&u.rcl_rx_fault),
-                dmr_tick: b(&u.dmr_tick),
-            },
+            probes: drcc_probes!(u),
         }
     }
 }

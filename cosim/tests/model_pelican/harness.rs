@@ -25,6 +25,9 @@ pub struct Net {
     /// `irq` of every clock since the last `clear_log`.
     pub peer_req: [Option<Frame>; 2],
     pub received: Vec<(usize, Frame)>,
+    /// Whatever the test binary runs beside the model, edge by edge
+    /// (`crate::shadow`: nothing here; the RTL core in the core lock step).
+    pub shadow: crate::shadow::Shadow,
 }
 
 impl Net {
@@ -50,6 +53,7 @@ impl Net {
             clock: 0,
             peer_req: [None, None],
             received: vec![],
+            shadow: crate::shadow::Shadow::new(&p),
         };
         n.clk(PelicanInputs {
             rst: true,
@@ -66,6 +70,7 @@ impl Net {
         i.chan_a_rx = self.cut[0] || pa;
         i.chan_b_rx = self.cut[1] || pb;
         self.out = self.dut.step(&i);
+        self.shadow.edge(&self.dut);
         self.tx = [self.out.chan_a_tx, self.out.chan_b_tx];
         for (x, prx) in [pa, pb].into_iter().enumerate() {
             let rst = self.clock == 0;

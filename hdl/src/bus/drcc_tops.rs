@@ -1,5 +1,5 @@
 //! The DRCC on an APB or an AXI4-Lite bus (`cosim/src/model/bus_contract.md`
-//! §4): the DRCC top ([`DrccCore`]) behind the front end of [`super::apb`] or
+//! §4): the DRCC top ([`DrccTop`]) behind the front end of [`super::apb`] or
 //! [`super::axi_lite`]. The register map, the interrupt and the CAN pins are
 //! the Wishbone top's; the probes are not ports here (an integrator's top has
 //! no use for them, and the register block is signed off on the Wishbone top).
@@ -7,7 +7,7 @@
 use super::apb::ApbBridge;
 use super::axi_lite::AxiLiteBridge;
 use crate::config::DrccConfig;
-use crate::drcc::DrccCore;
+use crate::drcc::DrccTop;
 use rust_hdl::prelude::*;
 
 /// The DRCC with an APB4 slave (`rtl-out/drcc_apb.v` with `M` = 16).
@@ -52,14 +52,14 @@ pub struct DrccApb<const M: usize> {
     pub chan_b_rx: Signal<In, Bit>,
     // ---- blocks ----
     bridge: ApbBridge,
-    core: DrccCore<M>,
+    core: DrccTop<M>,
 }
 
 impl<const M: usize> DrccApb<M> {
     /// The DRCC generated with `cfg` (`drcc generate --config`) behind APB.
     pub fn with_config(cfg: &DrccConfig) -> Self {
         Self {
-            core: DrccCore::with_config(cfg),
+            core: DrccTop::with_config(cfg),
             ..Default::default()
         }
     }
@@ -156,14 +156,14 @@ pub struct DrccAxi<const M: usize> {
     pub chan_b_rx: Signal<In, Bit>,
     // ---- blocks ----
     bridge: AxiLiteBridge,
-    core: DrccCore<M>,
+    core: DrccTop<M>,
 }
 
 impl<const M: usize> DrccAxi<M> {
     /// The DRCC generated with `cfg` (`drcc generate --config`) behind AXI4-Lite.
     pub fn with_config(cfg: &DrccConfig) -> Self {
         Self {
-            core: DrccCore::with_config(cfg),
+            core: DrccTop::with_config(cfg),
             ..Default::default()
         }
     }

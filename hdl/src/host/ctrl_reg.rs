@@ -41,8 +41,14 @@ pub struct CtrlReg {
     pub refused: Signal<In, Bit>,
     /// [`CtrlCheck::k_in`]: the `k` to store.
     pub k_in: Signal<In, Bits<4>>,
-    /// The register's value, for reads.
+    /// The register's value, for reads (a host view's word while `view_on`).
     pub word: Signal<Out, Bits<32>>,
+    // ---- host view (PeliCAN contract §14; 0 in the native top) ----
+    /// 1 = the fields below are `view_word`'s, not the stored ones (which keep
+    /// their values); `reset_mode_d` follows the `reset_mode` in force.
+    pub view_on: Signal<In, Bit>,
+    /// The `CTRL` word a host view composes (P-CFG-3).
+    pub view_word: Signal<In, Bits<32>>,
     // ---- fields ----
     /// `reset_mode`: channels held in reset, queues and FIFO emptied.
     pub reset_mode: Signal<Out, Bit>,
@@ -84,6 +90,9 @@ pub struct CtrlReg {
     single_shot_q: DFF<Bit>,
     dmr_q: DFF<Bit>,
     busoff_manual_q: DFF<Bit>,
+    /// The stored word, and the word in force (stored or the view's).
+    stored: Signal<Local, Bits<32>>,
+    cur: Signal<Local, Bits<32>>,
     // ---- field positions (from the table) ----
     p_reset_mode: Constant<Bits<5>>,
     p_redundancy: Constant<Bits<5>>,
@@ -128,6 +137,10 @@ impl Default for CtrlReg {
             refused: Default::default(),
             k_in: Default::default(),
             word: Default::default(),
+            view_on: Default::default(),
+            view_word: Default::default(),
+            stored: Default::default(),
+            cur: Default::default(),
             reset_mode: Default::default(),
             reset_mode_d: Default::default(),
             redundancy: Default::default(),
@@ -192,7 +205,26 @@ impl Logic for CtrlReg {
             dmr_q,
             busoff_manual_q
         );
-        self.reset_mode_dq.d.next = self.reset_mode_q.q.val();
+        self.stored.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
+            << self.p_reset_mode.val())
+            | (bit_cast::<32, 1>(self.redundancy_q.q.val().into()) << self.p_redundancy.val())
+            | (bit_cast::<32, 2>(self.policy_q.q.val()) << self.p_policy.val())
+            | (bit_cast::<32, 1>(self.dual_tx_q.q.val().into()) << self.p_dual_tx.val())
+            | (bit_cast::<32, 1>(self.star_q.q.val().into()) << self.p_star.val())
+            | (bit_cast::<32, 4>(self.k_q.q.val()) << self.p_k.val())
+            | (bit_cast::<32, 2>(self.mode_a_q.q.val()) << self.p_mode_a.val())
+            | (bit_cast::<32, 2>(self.mode_b_q.q.val()) << self.p_mode_b.val())
+            | (bit_cast::<32, 1>(self.single_shot_q.q.val().into()) << self.p_single_shot.val())
+            | (bit_cast::<32, 1>(self.dmr_q.q.val().into()) << self.p_dmr.val())
+            | (bit_cast::<32, 1>(self.busoff_manual_q.q.val().into())
+                << self.p_busoff_manual.val());
+        if self.view_on.val() {
+            self.cur.next = self.view_word.val();
+        } else {
+            self.cur.next = self.stored.val();
+        }
+        // reset_mode one edge earlier, of the word in force (contract §6)
+        self.reset_mode_dq.d.next = self.cur.val().get_bit(self.p_reset_mode.val().index());
         if self.we.val() {
             if self.reset_mode_q.q.val() {
                 if !self.refused.val() {
@@ -238,30 +270,18 @@ impl Logic for CtrlReg {
             self.busoff_manual_q.d.next = false;
         }
 
-        self.word.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
-            << self.p_reset_mode.val())
-            | (bit_cast::<32, 1>(self.redundancy_q.q.val().into()) << self.p_redundancy.val())
-            | (bit_cast::<32, 2>(self.policy_q.q.val()) << self.p_policy.val())
-            | (bit_cast::<32, 1>(self.dual_tx_q.q.val().into()) << self.p_dual_tx.val())
-            | (bit_cast::<32, 1>(self.star_q.q.val().into()) << self.p_star.val())
-            | (bit_cast::<32, 4>(self.k_q.q.val()) << self.p_k.val())
-            | (bit_cast::<32, 2>(self.mode_a_q.q.val()) << self.p_mode_a.val())
-            | (bit_cast::<32, 2>(self.mode_b_q.q.val()) << self.p_mode_b.val())
-            | (bit_cast::<32, 1>(self.single_shot_q.q.val().into()) << self.p_single_shot.val())
-            | (bit_cast::<32, 1>(self.dmr_q.q.val().into()) << self.p_dmr.val())
-            | (bit_cast::<32, 1>(self.busoff_manual_q.q.val().into())
-                << self.p_busoff_manual.val());
-        self.reset_mode.next = self.reset_mode_q.q.val();
+        self.word.next = self.cur.val();
+        self.reset_mode.next = self.cur.val().get_bit(self.p_reset_mode.val().index());
         self.reset_mode_d.next = self.reset_mode_dq.q.val();
-        self.redundancy.next = self.redundancy_q.q.val();
-        self.policy.next = self.policy_q.q.val();
-        self.dual_tx.next = self.dual_tx_q.q.val();
-        self.star.next = self.star_q.q.val();
-        self.k.next = self.k_q.q.val();
-        self.mode_a.next = self.mode_a_q.q.val();
-        self.mode_b.next = self.mode_b_q.q.val();
-        self.single_shot.next = self.single_shot_q.q.val();
-        self.dmr.next = self.dmr_q.q.val();
-        self.busoff_manual.next = self.busoff_manual_q.q.val();
+        self.redundancy.next = self.cur.val().get_bit(self.p_redundancy.val().index());
+        self.policy.next = self.cur.val().get_bits::<2>(self.p_policy.val().index());
+        self.dual_tx.next = self.cur.val().get_bit(self.p_dual_tx.val().index());
+        self.star.next = self.cur.val().get_bit(self.p_star.val().index());
+        self.k.next = self.cur.val().get_bits::<4>(self.p_k.val().index());
+        self.mode_a.next = self.cur.val().get_bits::<2>(self.p_mode_a.val().index());
+        self.mode_b.next = self.cur.val().get_bits::<2>(self.p_mode_b.val().index());
+        self.single_shot.next = self.cur.val().get_bit(self.p_single_shot.val().index());
+        self.dmr.next = self.cur.val().get_bit(self.p_dmr.val().index());
+        self.busoff_manual.next = self.cur.val().get_bit(self.p_busoff_manual.val().index());
     }
 }

@@ -55,6 +55,14 @@ pub struct WbRegs {
     pub wb_err_o: Signal<Out, Bit>,
     /// Interrupt request (registered).
     pub irq: Signal<Out, Bit>,
+    // ---- host view (PeliCAN contract §14; 0 in the native top) ----
+    /// 1 = `view_ctrl` and `view_btr` replace the stored `CTRL` and `BTR`
+    /// (fields, reads); the registers keep their values.
+    pub view_on: Signal<In, Bit>,
+    /// The `CTRL` word of a host view.
+    pub view_ctrl: Signal<In, Bits<32>>,
+    /// The `BTR` word of a host view.
+    pub view_btr: Signal<In, Bits<28>>,
     // ---- status in ----
     /// The addressed read-only register (`super::status_words`), 0 otherwise.
     pub ro_word: Signal<In, Bits<32>>,
@@ -183,6 +191,8 @@ pub struct WbRegs {
     ctrl_check: CtrlCheck,
     // ---- registers ----
     btr_q: DFF<Bits<28>>,
+    /// The BTR in force: the stored one or a host view's.
+    btr_word: Signal<Local, Bits<28>>,
     rmb_cfg_q: DFF<Bits<32>>,
     window_q: DFF<Bits<15>>,
     tx_id_q: DFF<Bits<31>>,
@@ -367,6 +377,9 @@ impl Default for WbRegs {
             ev_tx_failure_b: Default::default(),
             wr_o: Default::default(),
             brp: Default::default(),
+            view_on: Default::default(),
+            view_ctrl: Default::default(),
+            view_btr: Default::default(),
             tseg1: Default::default(),
             tseg2: Default::default(),
             sjw: Default::default(),
@@ -390,6 +403,7 @@ impl Default for WbRegs {
             ctrl: Default::default(),
             ctrl_check: Default::default(),
             btr_q: Default::default(),
+            btr_word: Default::default(),
             rmb_cfg_q: Default::default(),
             window_q: Default::default(),
             tx_id_q: Default::default(),

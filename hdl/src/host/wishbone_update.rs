@@ -14,6 +14,12 @@ impl Logic for WbRegs {
             self, clk, btr_q, rmb_cfg_q, window_q, tx_id_q, tx_dlc_q, tx_queue_q, tx_data0_q,
             tx_data1_q, es_a_prev, es_b_prev, err_q
         );
+        // a host view's BTR replaces the stored one (PeliCAN contract §14)
+        if self.view_on.val() {
+            self.btr_word.next = self.view_btr.val();
+        } else {
+            self.btr_word.next = self.btr_q.q.val();
+        }
         // ---- Wishbone slave (§2) ----
         self.bus.clk.next = self.clk.val();
         self.bus.rst.next = self.rst.val();
@@ -57,7 +63,7 @@ impl Logic for WbRegs {
         if self.wb_adr_i.val() == self.a_ctrl.val() {
             self.rdata.next = self.ctrl.word.val();
         } else if self.wb_adr_i.val() == self.a_btr.val() {
-            self.rdata.next = bit_cast::<32, 28>(self.btr_q.q.val());
+            self.rdata.next = bit_cast::<32, 28>(self.btr_word.val());
         } else if self.wb_adr_i.val() == self.a_rmb_cfg.val() {
             self.rdata.next = self.rmb_cfg_q.q.val();
         } else if self.wb_adr_i.val() == self.a_dedup_cfg.val() {
@@ -104,6 +110,8 @@ impl Logic for WbRegs {
         self.ctrl.wdat.next = self.wb_dat_i.val();
         self.ctrl.refused.next = self.ctrl_check.refused.val();
         self.ctrl.k_in.next = self.ctrl_check.k_in.val();
+        self.ctrl.view_on.next = self.view_on.val();
+        self.ctrl.view_word.next = self.view_ctrl.val();
         // from the port, not the local copy: Verilator then orders this apart from
         // the decode that reads the verdict (no circular logic, UNOPTFLAT)
         self.ctrl_check.wdat.next = self.wb_dat_i.val();
@@ -292,18 +300,23 @@ impl Logic for WbRegs {
         self.busoff_manual.next = self.ctrl.busoff_manual.val();
         self.wr_o.next = self.wr.val() & self.full.val();
         self.brp.next =
-            bit_cast::<BRP_BITS, 6>(self.btr_q.q.val().get_bits::<6>(self.b_brp.val().index()))
+            bit_cast::<BRP_BITS, 6>(self.btr_word.val().get_bits::<6>(self.b_brp.val().index()))
                 | (bit_cast::<BRP_BITS, 4>(
-                    self.btr_q
-                        .q
+                    self.btr_word
                         .val()
                         .get_bits::<4>(self.b_brp_ext.val().index()),
                 ) << self.brp_ext_shift.val());
-        self.tseg1.next = self.btr_q.q.val().get_bits::<4>(self.b_tseg1.val().index());
-        self.tseg2.next = self.btr_q.q.val().get_bits::<3>(self.b_tseg2.val().index());
-        self.sjw.next = self.btr_q.q.val().get_bits::<2>(self.b_sjw.val().index());
-        self.triple.next = self.btr_q.q.val().get_bit(self.b_triple.val().index());
-        self.ewl.next = self.btr_q.q.val().get_bits::<8>(self.b_ewl.val().index());
+        self.tseg1.next = self
+            .btr_word
+            .val()
+            .get_bits::<4>(self.b_tseg1.val().index());
+        self.tseg2.next = self
+            .btr_word
+            .val()
+            .get_bits::<3>(self.b_tseg2.val().index());
+        self.sjw.next = self.btr_word.val().get_bits::<2>(self.b_sjw.val().index());
+        self.triple.next = self.btr_word.val().get_bit(self.b_triple.val().index());
+        self.ewl.next = self.btr_word.val().get_bits::<8>(self.b_ewl.val().index());
         self.recovery_bits.next = self
             .rmb_cfg_q
             .q

@@ -67,6 +67,7 @@ use super::bram::Bram;
 use super::release_scan::ReleaseScan;
 use super::rx_stats::RxStats;
 use crate::channel::sized::{Const, Param};
+use crate::pelican::acceptance_filter::AcceptanceFilter;
 use rust_hdl::prelude::*;
 
 /// Receive writer with the duplicate-removal history.
@@ -102,6 +103,21 @@ pub struct RxWriter {
     pub filt_id1: Signal<In, Bits<31>>,
     /// `FILT_MASK1`.
     pub filt_mask1: Signal<In, Bits<32>>,
+    // ---- a host view (PeliCAN contract §14, P-CORE-4); 0 in the native top ----
+    /// Source `S`: the view offers this frame at this edge (a self-received
+    /// frame, P-TX-5). It is written after A and B, without the scan and
+    /// without a history entry, with channel bit 0.
+    pub offer_s: Signal<In, Bit>,
+    /// The offered frame (the TX RAM's layout).
+    pub frame_s: Signal<In, Bits<99>>,
+    /// The view's acceptance filter gates the FIFO port too (P-RX-5).
+    pub gate_on: Signal<In, Bit>,
+    /// Its filter mode `MOD.AFM` (1 = single filter).
+    pub gate_afm: Signal<In, Bit>,
+    /// `ACR0..3`, `ACR0` in [7:0].
+    pub gate_acr: Signal<In, Bits<32>>,
+    /// `AMR0..3`, `AMR0` in [7:0].
+    pub gate_amr: Signal<In, Bits<32>>,
     /// `STATS_CLR.clear` (contract §11.4): the statistics clear at this edge.
     pub stats_clear: Signal<In, Bit>,
     // events and statistics
@@ -130,6 +146,8 @@ pub struct RxWriter {
     hist: Bram<Bits<100>, 5>,
     hist_ts: Bram<Bits<16>, 5>,
     rel: ReleaseScan,
+    /// The view's acceptance filter on the frame at the FIFO port.
+    acf: AcceptanceFilter,
     stats: RxStats,
     // registers (the state and the history flags are public for lock-step probes)
     /// Writer FSM state (idle 0, scan 1, decide 2, write 3, rscan 4, fetch 5, release 6).
@@ -140,6 +158,13 @@ pub struct RxWriter {
     rxf_a: DFF<Bits<99>>,
     rxf_b: DFF<Bits<99>>,
     sel: DFF<Bit>,
+    /// The frame in `write` is source `S`'s (P-CORE-4).
+    sel_s: DFF<Bit>,
+    /// Source `S` has a frame pending, and that frame.
+    s_pend: DFF<Bit>,
+    s_pend_frame: DFF<Bits<99>>,
+    /// The frame of `S` being written.
+    s_frame: DFF<Bits<99>>,
     scan_i: DFF<Bits<6>>,
     hit: DFF<Bit>,
     hit_e: DFF<Bits<5>>,

@@ -11,8 +11,32 @@ impl Logic for RxWriter {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, w_state, rxp_a, rxp_b, rxf_a, rxf_b, sel, scan_i, hit, hit_e, free_found,
-            free_e, hist_ptr, exp_q, hist_idle, hv, hu, hd, release_q, w_pcl, hit_hd
+            self,
+            clk,
+            w_state,
+            rxp_a,
+            rxp_b,
+            rxf_a,
+            rxf_b,
+            sel,
+            scan_i,
+            hit,
+            hit_e,
+            free_found,
+            free_e,
+            hist_ptr,
+            exp_q,
+            hist_idle,
+            hv,
+            hu,
+            hd,
+            release_q,
+            w_pcl,
+            hit_hd,
+            sel_s,
+            s_pend,
+            s_pend_frame,
+            s_frame
         );
         self.hist.clk.next = self.clk.val();
         self.hist.read_enable.next = true;
@@ -25,7 +49,9 @@ impl Logic for RxWriter {
 
         // the frame being processed (latched at its rx_valid), and the history
         // entry being read
-        if self.sel.q.val() {
+        if self.sel_s.q.val() {
+            self.frame_sel.next = self.s_frame.q.val();
+        } else if self.sel.q.val() {
             self.frame_sel.next = self.rxf_b.q.val();
         } else {
             self.frame_sel.next = self.rxf_a.q.val();
@@ -78,8 +104,8 @@ impl Logic for RxWriter {
         self.pcl.next = self.sel.q.val() != self.acl.val();
         // write: to the FIFO unless a PCL frame (it waits); to the history unless
         // it was the ACL copy of a waiting frame (hit)
-        self.w_fifo.next = !(self.dmr.val() & self.w_pcl.q.val());
-        self.w_hist.next = self.dedup_on.val() & !self.hit.q.val();
+        self.w_fifo.next = self.sel_s.q.val() | !(self.dmr.val() & self.w_pcl.q.val());
+        self.w_hist.next = self.dedup_on.val() & !self.hit.q.val() & !self.sel_s.q.val();
 
         if self.w_state.q.val() == self.s_fetch.val() {
             self.hist.read_address.next = self.rel.rel_e.val();
@@ -121,9 +147,27 @@ impl Logic for RxWriter {
             & (((self.f_word.val() ^ self.filt_id1.val())
                 & self.filt_mask1.val().get_bits::<31>(0))
                 == self.zero31.val());
-        self.accept.next = !(self.filt_mask0.val().get_bit(31) | self.filt_mask1.val().get_bit(31))
+        // P-RX-5: a host view's acceptance filter on the same frame
+        self.acf.afm.next = self.gate_afm.val();
+        self.acf.acr0.next = self.gate_acr.val().get_bits::<8>(0);
+        self.acf.acr1.next = self.gate_acr.val().get_bits::<8>(8);
+        self.acf.acr2.next = self.gate_acr.val().get_bits::<8>(16);
+        self.acf.acr3.next = self.gate_acr.val().get_bits::<8>(24);
+        self.acf.amr0.next = self.gate_amr.val().get_bits::<8>(0);
+        self.acf.amr1.next = self.gate_amr.val().get_bits::<8>(8);
+        self.acf.amr2.next = self.gate_amr.val().get_bits::<8>(16);
+        self.acf.amr3.next = self.gate_amr.val().get_bits::<8>(24);
+        self.acf.rtr.next = self.fifo_data.val().get_bit(98);
+        self.acf.ide.next = self.fifo_data.val().get_bit(97);
+        self.acf.id.next = self.fifo_data.val().get_bits::<29>(68);
+        self.acf.dlc.next = self.fifo_data.val().get_bits::<4>(64);
+        self.acf.data1.next = self.fifo_data.val().get_bits::<8>(56);
+        self.acf.data2.next = self.fifo_data.val().get_bits::<8>(48);
+        self.accept.next = (!(self.filt_mask0.val().get_bit(31)
+            | self.filt_mask1.val().get_bit(31))
             | self.f_match0.val()
-            | self.f_match1.val();
+            | self.f_match1.val())
+            & (!self.gate_on.val() | self.acf.accept.val());
         self.rx_evt.next = false;
         self.overrun_evt.next = false;
         // release scan: a candidate is a waiting frame of the ACL (§8)
@@ -165,6 +209,10 @@ impl Logic for RxWriter {
         self.rxp_a.d.next = self.rxp_a.q.val();
         self.rxp_b.d.next = self.rxp_b.q.val();
         self.sel.d.next = self.sel.q.val();
+        self.sel_s.d.next = self.sel_s.q.val();
+        self.s_pend.d.next = self.s_pend.q.val();
+        self.s_pend_frame.d.next = self.s_pend_frame.q.val();
+        self.s_frame.d.next = self.s_frame.q.val();
         self.scan_i.d.next = self.scan_i.q.val();
         self.hit.d.next = self.hit.q.val();
         self.hit_e.d.next = self.hit_e.q.val();
@@ -210,6 +258,7 @@ impl Logic for RxWriter {
                     self.sel.d.next = true;
                     self.rxp_b.d.next = false;
                 }
+                self.sel_s.d.next = false;
                 self.hist_idle.d.next = self.zero15.val();
                 self.scan_i.d.next = self.zero6.val();
                 self.hit.d.next = false;
@@ -221,6 +270,13 @@ impl Logic for RxWriter {
                 } else {
                     self.w_state.d.next = self.s_write.val();
                 }
+            } else if self.s_pend.q.val() {
+                // P-CORE-4: source S after A and B, no scan, no history entry
+                self.sel.d.next = false;
+                self.sel_s.d.next = true;
+                self.s_frame.d.next = self.s_pend_frame.q.val();
+                self.s_pend.d.next = false;
+                self.w_state.d.next = self.s_write.val();
             } else if self.dmr.val() & self.release_q.q.val() & self.dedup_on.val() {
                 // §8: a free idle edge looks for the next frame to release
                 self.w_state.d.next = self.s_rscan.val();
@@ -342,12 +398,18 @@ impl Logic for RxWriter {
         if self.release_set.val() {
             self.release_q.d.next = true;
         }
+        if self.offer_s.val() {
+            self.s_pend.d.next = true;
+            self.s_pend_frame.d.next = self.frame_s.val();
+        }
 
         if self.clear.val() {
             self.w_state.d.next = self.s_idle.val();
             self.rxp_a.d.next = false;
             self.rxp_b.d.next = false;
             self.sel.d.next = false;
+            self.sel_s.d.next = false;
+            self.s_pend.d.next = false;
             self.scan_i.d.next = self.zero6.val();
             self.hit.d.next = false;
             self.hit_e.d.next = self.zero5.val();

@@ -8,13 +8,13 @@ use crate::bus::drcc_tops::{DrccApb, DrccAxi};
 use crate::bus::hub_tops::{HubApb, HubAxi};
 use crate::bus::Bus;
 use crate::config::DrccConfig;
-use crate::drcc::DrccCore;
+use crate::drcc::DrccTop;
 use crate::hub::hub::Hub;
 use rust_hdl::prelude::*;
 
 /// The raw Verilog of the DRCC with the sizes of `cfg` (`M` = `cfg.mailboxes`).
 fn raw_verilog_drcc<const M: usize>(cfg: &DrccConfig) -> String {
-    let mut uut = DrccCore::<M>::with_config(cfg);
+    let mut uut = DrccTop::<M>::with_config(cfg);
     uut.connect_all();
     generate_verilog(&uut)
 }

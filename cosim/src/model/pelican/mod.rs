@@ -196,6 +196,18 @@ impl View {
     }
 }
 
+/// What the view gave the core at one edge: the core's own inputs (PeliCAN
+/// contract §14), for a test that runs another core beside the model's.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CoreEdge {
+    /// The edge was a reset edge.
+    pub rst: bool,
+    /// The CAN receive pins, A and B.
+    pub rx: [bool; 2],
+    /// The view's drive of the core.
+    pub drive: HostDrive,
+}
+
 /// The `host = "pelican"` top, clock by clock.
 #[derive(Clone, Debug)]
 pub struct PelicanModel {
@@ -204,6 +216,8 @@ pub struct PelicanModel {
     params: PelicanParams,
     /// The core's events at the last edge.
     ev: HostEvents,
+    /// The core's inputs at the last edge.
+    last: CoreEdge,
 }
 
 impl PelicanModel {
@@ -214,6 +228,7 @@ impl PelicanModel {
             core: DrccModel::with_params(&p.core),
             params: p,
             ev: HostEvents::default(),
+            last: CoreEdge::default(),
         }
     }
 
@@ -225,6 +240,16 @@ impl PelicanModel {
     /// The core underneath (probes).
     pub fn core(&self) -> &DrccModel {
         &self.core
+    }
+
+    /// The core's inputs at the last edge.
+    pub fn last_core_edge(&self) -> &CoreEdge {
+        &self.last
+    }
+
+    /// The core's events at the last edge.
+    pub fn core_events(&self) -> &HostEvents {
+        &self.ev
     }
 
     /// Channel in use `u` (P-LOG-1).
@@ -332,6 +357,11 @@ impl PelicanModel {
         if i.rst {
             self.v = View::reset(&self.params, self.v.txb);
             let d = self.drive(&self.v);
+            self.last = CoreEdge {
+                rst: true,
+                rx: [i.chan_a_rx, i.chan_b_rx],
+                drive: d,
+            };
             self.ev = self.core.step_host(true, [i.chan_a_rx, i.chan_b_rx], d);
             return self.outputs();
         }
@@ -352,6 +382,11 @@ impl PelicanModel {
             // P-BO-2: EI of the bus-off survives.
         }
         n.hrm_q = v.hrm;
+        self.last = CoreEdge {
+            rst: false,
+            rx: [i.chan_a_rx, i.chan_b_rx],
+            drive,
+        };
         let ev = self
             .core
             .step_host(false, [i.chan_a_rx, i.chan_b_rx], drive);

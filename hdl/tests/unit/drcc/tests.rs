@@ -206,7 +206,7 @@ fn star_node_takes_the_echo_of_its_own_frame() {
         b.step();
         let u = &b.uut;
         assert!(!u.chan_b_transmission_req.val());
-        aborted |= u.main.abort_a.val();
+        aborted |= u.core.main.abort_a.val();
         if u.transmission_ack.val() {
             acks += 1;
             assert_eq!(u.tx_ok_channel.val().to_u64(), 1, "A's attempt, heard on B");

@@ -1,8 +1,9 @@
-//! The wiring of the `drcc` top ([`super::DrccCore`], DRCC contract §1-§9; DMR
-//! contract §2-§9): every block's inputs, the channels' configuration and TX
-//! frame, the register block's events and read-only words, and the probes. A
-//! child module of `super` so that it reaches the top's private blocks; split
-//! from `drcc.rs`, which declares the ports and the blocks.
+//! The wiring of the DRCC core ([`super::DrccCore`], DRCC contract §1-§9; DMR
+//! contract §2-§9; the host view of PeliCAN contract §14): every block's
+//! inputs, the channels' configuration and TX frame, the register block's events
+//! and read-only words, the probes and the view outputs. A child module of
+//! `super` so that it reaches the core's private blocks; split from `mod.rs`,
+//! which declares the ports and the blocks.
 
 use super::*;
 
@@ -14,6 +15,15 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.clear.next = self.rst.val() | self.regs.reset_mode.val();
         self.rmb_hold.next =
             self.rst.val() | self.regs.reset_mode.val() | !self.regs.redundancy.val();
+        // the channels' reset: rst, and reset mode with one more clock (§6) or,
+        // behind a host view, the view's (P-CORE-3)
+        if self.view_on.val() {
+            self.chan_reset_a.next = self.rst.val() | self.view_chan_reset.val().get_bit(0);
+            self.chan_reset_b.next = self.rst.val() | self.view_chan_reset.val().get_bit(1);
+        } else {
+            self.chan_reset_a.next = self.clear.val() | self.regs.reset_mode_d.val();
+            self.chan_reset_b.next = self.clear.val() | self.regs.reset_mode_d.val();
+        }
         // the DMR function runs in DMR mode outside reset mode (DMR contract §2)
         self.dmr_hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
         self.rx_frame_a.next = (bit_cast::<99, 1>(self.chan_a.rx_rtr.val().into()) << 98)
@@ -36,6 +46,9 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.regs.wb_adr_i.next = self.wb_adr_i.val();
         self.regs.wb_dat_i.next = self.wb_dat_i.val();
         self.regs.wb_sel_i.next = self.wb_sel_i.val();
+        self.regs.view_on.next = self.view_on.val();
+        self.regs.view_ctrl.next = self.view_ctrl.val();
+        self.regs.view_btr.next = self.view_btr.val();
         self.regs.ro_word.next = self.status.word.val();
         self.regs.es_a.next = self.chan_a.err_state.val();
         self.regs.es_b.next = self.chan_b.err_state.val();
@@ -352,9 +365,15 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.txbuf.off_dcl.next = self.dmr_ctl.off_dcl.val().get_bits::<3>(0);
         self.txbuf.off_rcl.next = self.dmr_ctl.off_rcl.val().get_bits::<3>(0);
         self.txbuf.dmr_pop.next = self.dmr_ctl.pop.val();
-        self.txbuf.push.next = self.regs.push.val();
-        self.txbuf.push_q.next = self.regs.push_q.val();
-        self.txbuf.push_frame.next = self.regs.tx_frame.val();
+        if self.view_on.val() {
+            self.txbuf.push.next = self.view_push.val();
+            self.txbuf.push_q.next = self.view_push_q.val();
+            self.txbuf.push_frame.next = self.view_push_frame.val();
+        } else {
+            self.txbuf.push.next = self.regs.push.val();
+            self.txbuf.push_q.next = self.regs.push_q.val();
+            self.txbuf.push_frame.next = self.regs.tx_frame.val();
+        }
         self.txbuf.pop_red.next = self.main.pop.val();
         self.txbuf.abort_a.next = self.regs.abort_a.val();
         self.txbuf.abort_b.next = self.regs.abort_b.val();
@@ -368,7 +387,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rxfifo.clear.next = self.clear.val();
         self.rxfifo.wr.next = self.rxw.fifo_wr.val();
         self.rxfifo.wr_data.next = self.rxw.fifo_data.val();
-        self.rxfifo.pop.next = self.regs.pop.val();
+        self.rxfifo.pop.next = (self.regs.pop.val() & !self.view_on.val())
+            | (self.view_pop.val() & self.view_on.val());
         self.rxw.clk.next = self.clk.val();
         self.rxw.rst.next = self.rst.val();
         self.rxw.clear.next = self.clear.val();
@@ -386,6 +406,13 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rxw.filt_id1.next = self.filters.id1.val();
         self.rxw.filt_mask1.next = self.filters.mask1.val();
         self.rxw.tick.next = self.ticker.tick.val();
+        // a host view's source S and acceptance gate (P-CORE-4)
+        self.rxw.offer_s.next = self.view_offer_s.val();
+        self.rxw.frame_s.next = self.view_frame_s.val();
+        self.rxw.gate_on.next = self.view_gate_on.val();
+        self.rxw.gate_afm.next = self.view_afm.val();
+        self.rxw.gate_acr.next = self.view_acr.val();
+        self.rxw.gate_amr.next = self.view_amr.val();
         if self.dmr_hold.val() {
             // neither an echo (the node's own frame, §4.4) nor a hub's
             // identification frame (§4.5) is a reception
@@ -404,8 +431,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         // restart | DMR restart (contract §6): the channels capture their
         // configuration while in reset
         self.chan_a.clk.next = self.clk.val();
-        self.chan_a.rst.next = self.clear.val()
-            | self.regs.reset_mode_d.val()
+        self.chan_a.rst.next = self.chan_reset_a.val()
             | (self.aux_a.chan_rst.val() & !self.regs.star.val())
             | self.dmr_ctl.restart_dcl.val();
         // §5: a star node's restart is soft (counters only, no re-integration)
@@ -416,9 +442,11 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.busoff_a.busoff_manual.next = self.regs.busoff_manual.val();
         self.busoff_a.recover.next = self.regs.recover_a.val();
         self.busoff_a.err_state.next = self.chan_a.err_state.val();
-        self.chan_a.boff_hold.next = self.busoff_a.boff_hold.val();
-        // the native map has no per-frame single shot (CTRL.single_shot is per channel)
-        self.chan_a.tx_single.next = false;
+        self.chan_a.boff_hold.next =
+            self.busoff_a.boff_hold.val() | self.view_boff_hold.val().get_bit(0);
+        // the native map has no per-frame single shot (CTRL.single_shot is per
+        // channel); a view's is per request (P-CORE-1)
+        self.chan_a.tx_single.next = self.view_tx_single.val();
         self.chan_a.cfg_brp.next = self.regs.brp.val();
         self.chan_a.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_a.cfg_tseg2.next = self.regs.tseg2.val();
@@ -433,7 +461,8 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.main.req_a.val() | self.txbuf.req_a.val() | self.dmr_ctl.tx_req_dcl.val();
         self.chan_a.tx_abort.next = self.main.abort_a.val()
             | self.dmr_ctl.tx_abort_dcl.val()
-            | self.txbuf.chan_abort_a.val();
+            | self.txbuf.chan_abort_a.val()
+            | self.view_tx_abort.val().get_bit(0);
         if self.dmr_ctl.cs_req_dcl.val() {
             // the CS frame of the line: base format, DLC 0, data frame (§7)
             self.chan_a.tx_rtr.next = false;
@@ -449,8 +478,7 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.chan_a.tx_data.next = self.txbuf.rd_frame.val().get_bits::<64>(0);
         }
         self.chan_b.clk.next = self.clk.val();
-        self.chan_b.rst.next = self.clear.val()
-            | self.regs.reset_mode_d.val()
+        self.chan_b.rst.next = self.chan_reset_b.val()
             | (self.aux_b.chan_rst.val() & !self.regs.star.val())
             | self.dmr_ctl.restart_rcl.val();
         // §5: a star node's restart is soft (counters only, no re-integration)
@@ -460,8 +488,9 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.busoff_b.busoff_manual.next = self.regs.busoff_manual.val();
         self.busoff_b.recover.next = self.regs.recover_b.val();
         self.busoff_b.err_state.next = self.chan_b.err_state.val();
-        self.chan_b.boff_hold.next = self.busoff_b.boff_hold.val();
-        self.chan_b.tx_single.next = false;
+        self.chan_b.boff_hold.next =
+            self.busoff_b.boff_hold.val() | self.view_boff_hold.val().get_bit(1);
+        self.chan_b.tx_single.next = self.view_tx_single.val();
         self.chan_b.cfg_brp.next = self.regs.brp.val();
         self.chan_b.cfg_tseg1.next = self.regs.tseg1.val();
         self.chan_b.cfg_tseg2.next = self.regs.tseg2.val();
@@ -476,7 +505,8 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.main.req_b.val() | self.txbuf.req_b.val() | self.dmr_ctl.tx_req_rcl.val();
         self.chan_b.tx_abort.next = self.main.abort_b.val()
             | self.dmr_ctl.tx_abort_rcl.val()
-            | self.txbuf.chan_abort_b.val();
+            | self.txbuf.chan_abort_b.val()
+            | self.view_tx_abort.val().get_bit(1);
         if self.dmr_ctl.cs_req_rcl.val() {
             // the CS frame of the line: base format, DLC 0, data frame (§7)
             self.chan_b.tx_rtr.next = false;
@@ -526,5 +556,47 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rcl_tx_fault.next = self.dmr_ctl.rcl_tx_fault.val();
         self.rcl_rx_fault.next = self.dmr_ctl.rcl_rx_fault.val();
         self.dmr_tick.next = self.dmr_ctl.dmr_tick.val();
+
+        // ---- view outputs (PeliCAN contract §14) ----
+        self.rx_stored.next = self.rxw.rx_evt.val();
+        self.rx_overrun.next = self.rxw.overrun_evt.val();
+        self.rx_ready.next = self.rxfifo.rx_ready.val();
+        self.rx_count.next = self.rxfifo.count.val();
+        self.rx_head.next = self.rxfifo.rd_data.val();
+        self.dmr_tx_done.next = self.dmr_ctl.tx_done_evt.val();
+        self.ev_switch.next = self.main.switch_evt.val();
+        self.ev_aux.next = self.aux_a.fail_evt.val()
+            | self.aux_a.recover_evt.val()
+            | self.aux_b.fail_evt.val()
+            | self.aux_b.recover_evt.val();
+        self.ev_dmr.next = self.dmr_ctl.int_evt.val();
+        self.ev_domain.next = self.echo.ev_domain.val();
+        self.star_split.next = self.echo.star_split.val();
+        self.chan_a_tx_done.next = self.chan_a.tx_done.val();
+        self.chan_a_tx_failed.next = self.chan_a.tx_failed.val();
+        self.chan_a_tx_pending.next = self.chan_a.tx_pending.val();
+        self.chan_a_is_tx.next = self.chan_a.is_tx.val();
+        self.chan_a_boff_runs.next = self.chan_a.boff_runs.val();
+        self.chan_a_err_warning.next = self.chan_a.err_warning.val();
+        self.chan_a_tec.next = self.chan_a.tec.val();
+        self.chan_a_err_valid.next = self.chan_a.err_valid.val();
+        self.chan_a_err_kind.next = self.chan_a.err_kind.val();
+        self.chan_a_err_field.next = self.chan_a.err_field.val();
+        self.chan_a_err_tx.next = self.chan_a.err_tx.val();
+        self.chan_a_arb_lost.next = self.chan_a.arb_lost.val();
+        self.chan_a_alc.next = self.chan_a.alc.val();
+        self.chan_b_tx_done.next = self.chan_b.tx_done.val();
+        self.chan_b_tx_failed.next = self.chan_b.tx_failed.val();
+        self.chan_b_tx_pending.next = self.chan_b.tx_pending.val();
+        self.chan_b_is_tx.next = self.chan_b.is_tx.val();
+        self.chan_b_boff_runs.next = self.chan_b.boff_runs.val();
+        self.chan_b_err_warning.next = self.chan_b.err_warning.val();
+        self.chan_b_tec.next = self.chan_b.tec.val();
+        self.chan_b_err_valid.next = self.chan_b.err_valid.val();
+        self.chan_b_err_kind.next = self.chan_b.err_kind.val();
+        self.chan_b_err_field.next = self.chan_b.err_field.val();
+        self.chan_b_err_tx.next = self.chan_b.err_tx.val();
+        self.chan_b_arb_lost.next = self.chan_b.arb_lost.val();
+        self.chan_b_alc.next = self.chan_b.alc.val();
     }
 }

@@ -6,6 +6,7 @@ pub mod armed_capture;
 pub mod byte_lanes;
 pub mod ecc_code;
 pub mod interrupts;
+pub mod logical;
 pub mod mode_control;
 pub mod rbsa;
 pub mod rx_window;

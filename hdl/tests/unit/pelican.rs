@@ -5,6 +5,7 @@ mod armed_capture;
 mod byte_lanes;
 mod ecc_code;
 mod interrupts;
+mod logical;
 mod mode_control;
 mod rbsa;
 mod rx_window;

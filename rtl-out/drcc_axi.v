@@ -2815,7 +2815,7 @@ module drcc_axi__core__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         rx_head = rxfifo__rd_data;
         dmr_tx_done = dmr_ctl__tx_done_evt;
         ev_switch = main__switch_evt;
-        ev_aux = aux_a__fail_evt | aux_a__recover_evt | aux_b__fail_evt | aux_b__recover_evt;
+        ev_aux = regs__ev_aux;
         ev_dmr = dmr_ctl__int_evt;
         ev_domain = echo__ev_domain;
         star_split = echo__star_split;

@@ -565,10 +565,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rx_head.next = self.rxfifo.rd_data.val();
         self.dmr_tx_done.next = self.dmr_ctl.tx_done_evt.val();
         self.ev_switch.next = self.main.switch_evt.val();
-        self.ev_aux.next = self.aux_a.fail_evt.val()
-            | self.aux_a.recover_evt.val()
-            | self.aux_b.fail_evt.val()
-            | self.aux_b.recover_evt.val();
+        self.ev_aux.next = self.regs.ev_aux.val();
         self.ev_dmr.next = self.dmr_ctl.int_evt.val();
         self.ev_domain.next = self.echo.ev_domain.val();
         self.star_split.next = self.echo.star_split.val();

@@ -368,6 +368,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
     wire  core__ev_dmr;
     wire  core__ev_domain;
     wire  core__star_split;
+    wire  core__failover;
     wire  core__chan_a_tx_done;
     wire  core__chan_a_tx_failed;
     wire  core__chan_a_tx_pending;
@@ -472,6 +473,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
         .ev_dmr(core__ev_dmr),
         .ev_domain(core__ev_domain),
         .star_split(core__star_split),
+        .failover(core__failover),
         .chan_a_tx_done(core__chan_a_tx_done),
         .chan_a_tx_failed(core__chan_a_tx_failed),
         .chan_a_tx_pending(core__chan_a_tx_pending),
@@ -571,7 +573,7 @@ module drcc(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_
 endmodule // drcc
 
 
-module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,view_on,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,rx_stored,rx_overrun,rx_ready,rx_count,rx_head,dmr_tx_done,ev_switch,ev_aux,ev_dmr,ev_domain,star_split,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_is_tx,chan_a_boff_runs,chan_a_err_warning,chan_a_tec,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_is_tx,chan_b_boff_runs,chan_b_err_warning,chan_b_tec,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc);
+module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,view_on,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,rx_stored,rx_overrun,rx_ready,rx_count,rx_head,dmr_tx_done,ev_switch,ev_aux,ev_dmr,ev_domain,star_split,failover,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_is_tx,chan_a_boff_runs,chan_a_err_warning,chan_a_tec,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_is_tx,chan_b_boff_runs,chan_b_err_warning,chan_b_tec,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [5:0] HISTORY = 6'd32;
@@ -653,6 +655,7 @@ module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     output reg  ev_dmr;
     output reg  ev_domain;
     output reg  star_split;
+    output reg  failover;
     output reg  chan_a_tx_done;
     output reg  chan_a_tx_failed;
     output reg  chan_a_tx_pending;
@@ -1048,6 +1051,7 @@ module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     wire  main__attempted;
     wire  [3:0] main__state;
     wire  main__tx_channel;
+    wire  main__failover;
     wire  main__tx_going_on;
     wire  main__req_a;
     wire  main__req_b;
@@ -1700,6 +1704,7 @@ module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .attempted(main__attempted),
         .state(main__state),
         .tx_channel(main__tx_channel),
+        .failover(main__failover),
         .tx_going_on(main__tx_going_on),
         .req_a(main__req_a),
         .req_b(main__req_b),
@@ -2469,6 +2474,7 @@ module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         ev_dmr = dmr_ctl__int_evt;
         ev_domain = echo__ev_domain;
         star_split = echo__star_split;
+        failover = main__failover;
         chan_a_tx_done = chan_a__tx_done;
         chan_a_tx_failed = chan_a__tx_failed;
         chan_a_tx_pending = chan_a__tx_pending;
@@ -10696,7 +10702,7 @@ module drcc__core__mailbox_cfg__0__mask_ram(clk,read_address,read_enable,read_da
 endmodule // drcc__core__mailbox_cfg__0__mask_ram
 
 
-module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,echo_a,echo_b,attempted,state,tx_channel,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
+module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pending_b,done_a,done_b,failed_a,failed_b,tick,echo_a,echo_b,attempted,state,tx_channel,failover,tx_going_on,req_a,req_b,abort_a,abort_b,transmission_ack,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,last_tx_time,switch_time,pop,success_evt,fail_evt,switch_evt,in_use_a,in_use_b);
 
     // Module arguments
     input wire  clk;
@@ -10718,6 +10724,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
     output reg  attempted;
     output reg  [3:0] state;
     output reg  tx_channel;
+    output reg  failover;
     output reg  tx_going_on;
     output reg  req_a;
     output reg  req_b;
@@ -10783,8 +10790,8 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
     reg  resend__q;
     reg  copy__d;
     reg  copy__q;
-    reg  failover__d;
-    reg  failover__q;
+    reg  failover_q__d;
+    reg  failover_q__q;
     reg  attempted_q__d;
     reg  attempted_q__q;
     reg  [15:0] tx_time__d;
@@ -10809,7 +10816,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
         fail_ch_q__d = fail_ch_q__q;
         resend__d = resend__q;
         copy__d = copy__q;
-        failover__d = failover__q;
+        failover_q__d = failover_q__q;
         attempted_q__d = attempted_q__q;
         tx_time__d = tx_time__q;
         last_time_q__d = last_time_q__q;
@@ -10827,7 +10834,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
         fail_ch_q__d = fail_ch_q__q;
         resend__d = resend__q;
         copy__d = copy__q;
-        failover__d = failover__q;
+        failover_q__d = failover_q__q;
         last_time_q__d = last_time_q__q;
         switch_time_q__d = switch_time_q__q;
         tx_time__d = tx_time__q;
@@ -10857,14 +10864,14 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
             else begin
                 st__d = s_idle1;
                 if (st__q == s_wait4) begin
-                    failover__d = 1'b0;
+                    failover_q__d = 1'b0;
                 end
             end
         end
         else if (st__q == s_idle1) begin
             if (~valid_a & valid_b) begin
                 st__d = s_idle2;
-                failover__d = 1'b1;
+                failover_q__d = 1'b1;
             end
             else if (queued) begin
                 st__d = s_wait1;
@@ -10911,7 +10918,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
                 fail_evt = 1'b1;
                 fail_ch_q__d = ch_a;
                 resend__d = 1'b1;
-                failover__d = 1'b1;
+                failover_q__d = 1'b1;
                 switch_time_q__d = tx_time__q;
             end
         end
@@ -10952,7 +10959,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
                 st__d = s_idle2;
                 if ((st__q == s_wait4) & valid_a) begin
                     st__d = s_idle1;
-                    failover__d = 1'b0;
+                    failover_q__d = 1'b0;
                 end
             end
             else if (st__q == s_ch2) begin
@@ -10967,7 +10974,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
             else if (failed_b | (~pending_b & ~abort_b_q__q)) begin
                 if (valid_a) begin
                     st__d = s_idle1;
-                    failover__d = 1'b0;
+                    failover_q__d = 1'b0;
                 end
                 else begin
                     st__d = s_idle2;
@@ -11012,7 +11019,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
             fail_ch_q__d = ch_none;
             resend__d = 1'b0;
             copy__d = 1'b0;
-            failover__d = 1'b0;
+            failover_q__d = 1'b0;
             attempted_q__d = 1'b0;
             tx_time__d = zero16;
             pop = 1'b0;
@@ -11022,10 +11029,11 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
             last_time_q__d = zero16;
             switch_time_q__d = zero16;
         end
-        switch_evt = (failover__d != failover__q) & ~hold;
+        switch_evt = (failover_q__d != failover_q__q) & ~hold;
         success_evt = success_q__d;
         state = st__q;
         tx_channel = st__q >= s_idle2;
+        failover = failover_q__q;
         tx_going_on = (st__q != s_idle1) & (st__q != s_idle2);
         in_use_a = (st__q >= s_wait1) & (st__q <= s_wait2);
         in_use_b = st__q >= s_wait3;
@@ -11058,7 +11066,7 @@ module drcc__core__main(clk,rst,hold,dual_tx,queued,valid_a,valid_b,pending_a,pe
         fail_ch_q__q <= fail_ch_q__d;
         resend__q <= resend__d;
         copy__q <= copy__d;
-        failover__q <= failover__d;
+        failover_q__q <= failover_q__d;
         attempted_q__q <= attempted_q__d;
         tx_time__q <= tx_time__d;
         last_time_q__q <= last_time_q__d;

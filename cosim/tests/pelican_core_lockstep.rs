@@ -25,7 +25,7 @@ mod map;
 /// The RTL core beside the model.
 mod shadow {
     use drcc_cosim::engine::drcc_core_rusthdl::{CoreViewOutputs, DrccCoreViewEngine, ViewChannel};
-    use drcc_cosim::model::pelican::{PelicanModel, PelicanParams};
+    use drcc_cosim::model::pelican::{PelicanInputs, PelicanModel, PelicanParams};
     use drcc_cosim::ChannelOutputs;
     use drcc_hdl::config::DrccConfig;
 
@@ -91,7 +91,7 @@ mod shadow {
         }
 
         /// Step the RTL core with the model's last core edge and compare.
-        pub fn edge(&mut self, dut: &PelicanModel) {
+        pub fn edge(&mut self, _: &PelicanInputs, dut: &PelicanModel) {
             let k = self.clock;
             self.clock += 1;
             let e = *dut.last_core_edge();

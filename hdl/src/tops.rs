@@ -31,12 +31,15 @@ pub mod shim_table;
 pub mod verilog;
 
 use configured::raw_verilog_small;
-pub use configured::{drcc_with_config, drcc_with_config_on, hub_with_shape, hub_with_shape_on};
+pub use configured::{
+    drcc_with_config, drcc_with_config_on, hub_with_shape, hub_with_shape_on, pelican_with_config,
+};
 
 use crate::bus::drcc_tops::{DrccApb, DrccAxi};
 use crate::channel::can_channel::CanChannel;
 
 use crate::drcc::{Drcc, DrccM0};
+use crate::pelican::top::DrccPelican;
 use crate::hub::hub::{Hub4x2, HubB4x2};
 use crate::redcan::rcm::Rcm;
 use rust_hdl::prelude::*;
@@ -288,6 +291,38 @@ pub static TOPS: &[Top] = &[
         can_rx: &["chan_a_rx", "chan_b_rx"],
         raw_verilog: raw_verilog_of::<DrccAxi<16>>,
         ports: ports_of::<DrccAxi<16>>,
+    },
+    Top {
+        name: "drcc_pelican",
+        summary: "the DRCC behind the SJA1000 (PeliCAN) register view: an unmodified SJA1000 driver runs the dual-redundant controller as one CAN controller",
+        contract: "cosim/src/model/pelican_contract.md",
+        params: &[
+            ("M", "16"),
+            ("RX_FIFO_DEPTH", "32"),
+            ("TX_QUEUE_DEPTH", "8"),
+            ("HISTORY", "32"),
+            ("DMR", "1"),
+            ("STAR", "1"),
+            ("HOST", "pelican"),
+            ("PELICAN_STRIDE", "4"),
+            ("PELICAN_DEFAULT_MODE", "redundancy"),
+            ("PELICAN_POLICY", "error-passive"),
+            ("PELICAN_K", "1"),
+            ("PELICAN_DUAL_TX", "0"),
+            ("PELICAN_STAR", "0"),
+            ("PELICAN_BUSOFF", "sja1000"),
+        ],
+        block: "DrccPelican",
+        source_path: "hdl/src/pelican/top.rs",
+        source: include_str!("pelican/top.rs"),
+        notes: "Registers: the SJA1000 data sheet's PeliCAN mode at stride 4 (register r at\n\
+                byte 4r, Linux reg-io-width = <4>), the DRCC's extension window at 112..127;\n\
+                docs/pelican.md, cosim/src/model/pelican_contract.md. clk is the SJA1000's\n\
+                oscillator (fosc = clk).",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
+        raw_verilog: raw_verilog_of::<DrccPelican<16>>,
+        ports: ports_of::<DrccPelican<16>>,
     },
     Top {
         name: "hub",

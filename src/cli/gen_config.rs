@@ -32,6 +32,7 @@ use std::path::Path;
 
 use drcc_hdl::bus::Bus;
 use drcc_hdl::config::DrccConfig;
+use drcc_hdl::pelican::PelicanKeys;
 
 /// Config files are a few lines; anything larger is refused unread.
 const MAX_CONFIG_BYTES: u64 = 64 * 1024;
@@ -48,6 +49,14 @@ const KEYS: &[&str] = &[
     "star",
     "bus",
     "data_width",
+    "host",
+    "pelican_stride",
+    "pelican_default_mode",
+    "pelican_policy",
+    "pelican_k",
+    "pelican_dual_tx",
+    "pelican_star",
+    "pelican_busoff",
 ];
 
 /// The keys a hub config file may have.
@@ -66,6 +75,9 @@ const HUB_KEYS: &[&str] = &[
 pub enum Shape {
     /// A DRCC with these sizes, on this host bus.
     Drcc(DrccConfig, Bus),
+    /// A DRCC with these sizes behind the SJA1000 (PeliCAN) view (`host =
+    /// "pelican"`), on Wishbone.
+    Pelican(DrccConfig, PelicanKeys),
     /// A hub with N node ports, M interlinks and this identification frame, on
     /// this host bus.
     Hub {
@@ -93,6 +105,7 @@ impl Generated {
         match (drcc_hdl::tops::top(&self.name), self.shape) {
             (Some(t), _) if self.named => Ok(t.verilog()),
             (_, Shape::Drcc(c, bus)) => drcc_hdl::tops::drcc_with_config_on(&self.name, &c, bus),
+            (_, Shape::Pelican(c, k)) => drcc_hdl::tops::pelican_with_config(&self.name, &c, &k),
             (
                 _,
                 Shape::Hub {
@@ -113,6 +126,12 @@ impl Generated {
                 .iter()
                 .map(|(k, v)| format!("{k} = {v}"))
                 .chain((bus != Bus::Wishbone).then(|| format!("BUS = {}", bus.name())))
+                .collect(),
+            Shape::Pelican(c, k) => c
+                .params()
+                .into_iter()
+                .chain(k.params())
+                .map(|(key, v)| format!("{key} = {v}"))
                 .collect(),
             Shape::Hub {
                 nodes,
@@ -268,10 +287,99 @@ pub fn parse(text: &str) -> Result<Generated, String> {
         star: switch("star", d.star)?,
     };
     config.check()?;
+    let pelican = match table.get("host") {
+        None => false,
+        Some(toml::Value::String(h)) if h == "native" => false,
+        Some(toml::Value::String(h)) if h == "pelican" => true,
+        Some(v) => {
+            return Err(format!(
+                "host must be \"native\" or \"pelican\" (the SJA1000 view), not {}",
+                shorten(&v.to_string())
+            ))
+        }
+    };
+    let pelican_keys: Vec<&String> = table.keys().filter(|k| k.starts_with("pelican_")).collect();
+    if !pelican {
+        if let Some(k) = pelican_keys.first() {
+            return Err(format!("{k} needs host = \"pelican\""));
+        }
+        return Ok(Generated {
+            name,
+            shape: Shape::Drcc(config, bus),
+            named: false,
+        });
+    }
+    if bus != Bus::Wishbone {
+        return Err(format!(
+            "the SJA1000 view (host = \"pelican\") is generated on Wishbone; remove bus = \"{}\"",
+            bus.name()
+        ));
+    }
+    let keys = pelican_keys_of(&table, &config)?;
+    keys.check(&config)?;
     Ok(Generated {
         name,
-        shape: Shape::Drcc(config, bus),
+        shape: Shape::Pelican(config, keys),
         named: false,
+    })
+}
+
+/// The `pelican_*` keys of a config file (pelican_contract.md P-GEN-1).
+fn pelican_keys_of(table: &toml::Table, config: &DrccConfig) -> Result<PelicanKeys, String> {
+    let d = PelicanKeys::default();
+    let choice = |key: &str, names: &[&str], default: u8| -> Result<u8, String> {
+        match table.get(key) {
+            None => Ok(default),
+            Some(toml::Value::String(s)) if names.contains(&s.as_str()) => {
+                Ok(names.iter().position(|n| n == s).unwrap_or(0) as u8)
+            }
+            Some(v) => Err(format!(
+                "{key} must be one of {}, not {}",
+                names.join(", "),
+                shorten(&v.to_string())
+            )),
+        }
+    };
+    let int = |key: &str, default: u64| -> Result<u64, String> {
+        match table.get(key) {
+            None => Ok(default),
+            Some(toml::Value::Integer(v)) if *v >= 0 => Ok(*v as u64),
+            Some(v) => Err(format!(
+                "{key} must be a non-negative integer, not {}",
+                shorten(&v.to_string())
+            )),
+        }
+    };
+    let switch = |key: &str, default: bool| -> Result<bool, String> {
+        match table.get(key) {
+            None => Ok(default),
+            Some(toml::Value::Boolean(b)) => Ok(*b),
+            Some(v) => Err(format!(
+                "{key} must be true or false, not {}",
+                shorten(&v.to_string())
+            )),
+        }
+    };
+    let stride = int("pelican_stride", d.stride as u64)?;
+    let k = int("pelican_k", d.k as u64)?;
+    Ok(PelicanKeys {
+        stride: stride.min(u64::from(u8::MAX)) as usize,
+        mode: choice(
+            "pelican_default_mode",
+            &["single_a", "redundancy", "dmr", "single_b"],
+            d.mode,
+        )?,
+        policy: choice(
+            "pelican_policy",
+            &["none", "error-passive", "k-failed", "warning"],
+            d.policy,
+        )?,
+        k: k.min(u64::from(u8::MAX)) as u8,
+        dual_tx: switch("pelican_dual_tx", d.dual_tx)?,
+        star_on: switch("pelican_star", d.star_on)?,
+        bom: choice("pelican_busoff", &["auto", "sja1000"], d.bom as u8)? == 1,
+        dmr: config.dmr,
+        star: config.star,
     })
 }
 
@@ -397,5 +505,47 @@ mod tests {
         );
         assert_eq!(resolve("default").unwrap().name, "drcc");
         assert!(resolve("tiny").unwrap_err().contains("default, m0, small"));
+    }
+
+    #[test]
+    fn host_pelican_takes_the_pelican_keys() {
+        let g = parse(
+            "name = \"my_sja\"\nhost = \"pelican\"\npelican_stride = 1\n\
+             pelican_default_mode = \"single_b\"\npelican_policy = \"k-failed\"\n\
+             pelican_k = 3\npelican_busoff = \"auto\"\n",
+        )
+        .unwrap();
+        assert_eq!(
+            g.shape,
+            Shape::Pelican(
+                DrccConfig::DEFAULT,
+                PelicanKeys {
+                    stride: 1,
+                    mode: 3,
+                    policy: 2,
+                    k: 3,
+                    bom: false,
+                    ..PelicanKeys::default()
+                }
+            )
+        );
+        for (text, says) in [
+            ("pelican_k = 2", "pelican_k needs host = \"pelican\""),
+            ("host = \"sja\"", "host must be \"native\" or \"pelican\""),
+            ("host = \"pelican\"\nbus = \"apb\"", "generated on Wishbone"),
+            ("host = \"pelican\"\npelican_stride = 2", "pelican_stride must be 1 or 4"),
+            ("host = \"pelican\"\npelican_k = 0", "pelican_k must be 1..15"),
+            (
+                "host = \"pelican\"\ndmr = false\npelican_default_mode = \"dmr\"",
+                "needs dmr = true",
+            ),
+            (
+                "host = \"pelican\"\npelican_policy = \"always\"",
+                "pelican_policy must be one of none",
+            ),
+        ] {
+            let e = parse(text).unwrap_err();
+            assert!(e.contains(says), "{text:?}: {e}");
+        }
     }
 }

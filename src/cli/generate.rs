@@ -57,6 +57,7 @@ pub fn run_config(spec: &str, out: Option<PathBuf>, check: bool) -> CliResult {
     let regs = match g.shape {
         gen_config::Shape::Drcc(..) => "docs/registers.md, C header rtl-out/drcc_regs.h",
         gen_config::Shape::Hub { .. } => "docs/hub_registers.md, C header rtl-out/hub_regs.h",
+        gen_config::Shape::Pelican(..) => "the SJA1000's PeliCAN map, docs/pelican.md",
     };
     println!(
         "{}: {} (registers: {regs}, as for every configuration)",

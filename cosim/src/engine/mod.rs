@@ -17,6 +17,7 @@ pub mod hub_model;
 pub mod hub_rusthdl;
 pub mod hub_verilator;
 pub mod model;
+pub mod pelican;
 pub mod rcm;
 pub mod rusthdl;
 pub mod verilator;

@@ -70,7 +70,7 @@ impl Net {
         i.chan_a_rx = self.cut[0] || pa;
         i.chan_b_rx = self.cut[1] || pb;
         self.out = self.dut.step(&i);
-        self.shadow.edge(&self.dut);
+        self.shadow.edge(&i, &self.dut);
         self.tx = [self.out.chan_a_tx, self.out.chan_b_tx];
         for (x, prx) in [pa, pb].into_iter().enumerate() {
             let rst = self.clock == 0;

@@ -11,10 +11,10 @@ mod drivers;
 mod harness;
 mod map;
 
-/// Nothing runs beside the model here (the core lock step,
-/// `pelican_core_lockstep.rs`, runs the RTL core).
+/// Nothing runs beside the model here (the lock steps,
+/// `pelican_core_lockstep.rs` and `pelican_lockstep.rs`, run the RTL).
 mod shadow {
-    use drcc_cosim::model::pelican::{PelicanModel, PelicanParams};
+    use drcc_cosim::model::pelican::{PelicanInputs, PelicanModel, PelicanParams};
 
     #[derive(Clone)]
     pub struct Shadow;
@@ -24,6 +24,6 @@ mod shadow {
             Shadow
         }
 
-        pub fn edge(&mut self, _: &PelicanModel) {}
+        pub fn edge(&mut self, _: &PelicanInputs, _: &PelicanModel) {}
     }
 }

@@ -213,6 +213,8 @@ pub struct DrccCore<const M: usize> {
     pub ev_domain: Signal<Out, Bit>,
     /// Replicated star: the hubs have split (§4.5).
     pub star_split: Signal<Out, Bit>,
+    /// The main FSM's `failover` (§D4): it works on channel B since its last switch.
+    pub failover: Signal<Out, Bit>,
     /// Channel A `tx_done`: its frame was transmitted (§C8).
     pub chan_a_tx_done: Signal<Out, Bit>,
     /// Channel A `tx_failed`: its frame was dropped (single shot, abort; §C8).

@@ -569,6 +569,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.ev_dmr.next = self.dmr_ctl.int_evt.val();
         self.ev_domain.next = self.echo.ev_domain.val();
         self.star_split.next = self.echo.star_split.val();
+        self.failover.next = self.main.failover.val();
         self.chan_a_tx_done.next = self.chan_a.tx_done.val();
         self.chan_a_tx_failed.next = self.chan_a.tx_failed.val();
         self.chan_a_tx_pending.next = self.chan_a.tx_pending.val();

@@ -190,18 +190,26 @@ impl Logic for ModeControl {
             & self.wdata.val().get_bit(1)
             & !self.wdata.val().get_bit(0)
             & !self.wdata.val().get_bit(4);
-        self.push.next = self.start.val() & !self.lom_q.q.val() & !self.rm_rise.val();
+        // a push at the edge where RM rises reaches the core, which the hold
+        // empties at the next edge (P-MOD-5)
+        self.push.next = self.start.val() & !self.lom_q.q.val();
         self.lom_done.d.next = self.start.val() & self.lom_q.q.val();
         if self.start.val() {
             self.tbs_q.d.next = false;
             self.tcs_q.d.next = false;
-            self.one_shot_q.d.next = self.wdata.val().get_bit(1) & self.single.val();
-            self.self_q.d.next = self.wdata.val().get_bit(4);
+            // P-TX-6: a listen-only start latches no one-shot and no self-reception
+            if !self.lom_q.q.val() {
+                self.one_shot_q.d.next = self.wdata.val().get_bit(1) & self.single.val();
+                self.self_q.d.next = self.wdata.val().get_bit(4);
+            }
         }
         if self.abort.val() && self.single.val() {
             self.abort_q.d.next = true;
         }
-        self.ign_evt.next = (self.start.val() & self.wdata.val().get_bit(1) & !self.single.val())
+        self.ign_evt.next = (self.start.val()
+            & !self.lom_q.q.val()
+            & self.wdata.val().get_bit(1)
+            & !self.single.val())
             | (self.abort.val() & !self.single.val())
             | (self.mod_write.val() & self.wdata.val().get_bit(4));
 

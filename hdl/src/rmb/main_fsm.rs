@@ -55,6 +55,8 @@ pub struct MainFsm {
     // paper signals
     pub state: Signal<Out, Bits<4>>,
     pub tx_channel: Signal<Out, Bit>,
+    /// `failover` (§D4): the main FSM works on channel B since its last switch.
+    pub failover: Signal<Out, Bit>,
     pub tx_going_on: Signal<Out, Bit>,
     pub req_a: Signal<Out, Bit>,
     pub req_b: Signal<Out, Bit>,
@@ -89,7 +91,7 @@ pub struct MainFsm {
     fail_ch_q: DFF<Bits<2>>,
     resend: DFF<Bit>,
     copy: DFF<Bit>,
-    failover: DFF<Bit>,
+    failover_q: DFF<Bit>,
     attempted_q: DFF<Bit>,
     tx_time: DFF<Bits<16>>,
     last_time_q: DFF<Bits<16>>,
@@ -136,6 +138,7 @@ impl Default for MainFsm {
             attempted: Default::default(),
             state: Default::default(),
             tx_channel: Default::default(),
+            failover: Default::default(),
             tx_going_on: Default::default(),
             req_a: Default::default(),
             req_b: Default::default(),
@@ -167,7 +170,7 @@ impl Default for MainFsm {
             fail_ch_q: Default::default(),
             resend: Default::default(),
             copy: Default::default(),
-            failover: Default::default(),
+            failover_q: Default::default(),
             attempted_q: Default::default(),
             tx_time: Default::default(),
             last_time_q: Default::default(),
@@ -212,7 +215,7 @@ impl Logic for MainFsm {
             fail_ch_q,
             resend,
             copy,
-            failover,
+            failover_q,
             attempted_q,
             tx_time,
             last_time_q,
@@ -232,7 +235,7 @@ impl Logic for MainFsm {
         self.fail_ch_q.d.next = self.fail_ch_q.q.val();
         self.resend.d.next = self.resend.q.val();
         self.copy.d.next = self.copy.q.val();
-        self.failover.d.next = self.failover.q.val();
+        self.failover_q.d.next = self.failover_q.q.val();
         self.last_time_q.d.next = self.last_time_q.q.val();
         self.switch_time_q.d.next = self.switch_time_q.q.val();
         // §4.3: tx_time counts bit ticks, saturating
@@ -272,14 +275,14 @@ impl Logic for MainFsm {
             } else {
                 self.st.d.next = self.s_idle1.val();
                 if self.st.q.val() == self.s_wait4.val() {
-                    self.failover.d.next = false;
+                    self.failover_q.d.next = false;
                 }
             }
         } else if self.st.q.val() == self.s_idle1.val() {
             // idle1: !VA && VB -> idle2 (failover); Q -> wait1
             if !self.valid_a.val() & self.valid_b.val() {
                 self.st.d.next = self.s_idle2.val();
-                self.failover.d.next = true;
+                self.failover_q.d.next = true;
             } else if self.queued.val() {
                 self.st.d.next = self.s_wait1.val();
             }
@@ -328,7 +331,7 @@ impl Logic for MainFsm {
                 self.fail_evt.next = true;
                 self.fail_ch_q.d.next = self.ch_a.val();
                 self.resend.d.next = true;
-                self.failover.d.next = true;
+                self.failover_q.d.next = true;
                 self.switch_time_q.d.next = self.tx_time.q.val();
             }
         } else if self.st.q.val() == self.s_idle2.val() {
@@ -369,7 +372,7 @@ impl Logic for MainFsm {
                 self.st.d.next = self.s_idle2.val();
                 if (self.st.q.val() == self.s_wait4.val()) & self.valid_a.val() {
                     self.st.d.next = self.s_idle1.val();
-                    self.failover.d.next = false;
+                    self.failover_q.d.next = false;
                 }
             } else if self.st.q.val() == self.s_ch2.val() {
                 // ch2: !VB && VA -> abort2
@@ -384,7 +387,7 @@ impl Logic for MainFsm {
                 // wait4: B failed or quiet -> VA ? idle1 : idle2
                 if self.valid_a.val() {
                     self.st.d.next = self.s_idle1.val();
-                    self.failover.d.next = false;
+                    self.failover_q.d.next = false;
                 } else {
                     self.st.d.next = self.s_idle2.val();
                 }
@@ -433,7 +436,7 @@ impl Logic for MainFsm {
             self.fail_ch_q.d.next = self.ch_none.val();
             self.resend.d.next = false;
             self.copy.d.next = false;
-            self.failover.d.next = false;
+            self.failover_q.d.next = false;
             self.attempted_q.d.next = false;
             self.tx_time.d.next = self.zero16.val();
             self.pop.next = false;
@@ -445,11 +448,12 @@ impl Logic for MainFsm {
         }
         // a switch event is a change of failover while running (clearing it in
         // normal or reset mode is not a switch)
-        self.switch_evt.next = (self.failover.d.val() != self.failover.q.val()) & !self.hold.val();
+        self.switch_evt.next = (self.failover_q.d.val() != self.failover_q.q.val()) & !self.hold.val();
         self.success_evt.next = self.success_q.d.val();
 
         self.state.next = self.st.q.val();
         self.tx_channel.next = self.st.q.val() >= self.s_idle2.val();
+        self.failover.next = self.failover_q.q.val();
         self.tx_going_on.next =
             (self.st.q.val() != self.s_idle1.val()) & (self.st.q.val() != self.s_idle2.val());
         self.in_use_a.next =

@@ -10,6 +10,8 @@ use crate::bus::Bus;
 use crate::config::DrccConfig;
 use crate::drcc::DrccTop;
 use crate::hub::hub::Hub;
+use crate::pelican::top::DrccPelican;
+use crate::pelican::PelicanKeys;
 use rust_hdl::prelude::*;
 
 /// The raw Verilog of the DRCC with the sizes of `cfg` (`M` = `cfg.mailboxes`).
@@ -240,4 +242,37 @@ pub fn hub_with_shape_on(
         }
     }
     Ok(verilog::finish(&t, &raw, &ports))
+}
+
+/// The raw Verilog of the SJA1000 view over a core with the sizes of `cfg`.
+fn raw_verilog_pelican<const M: usize>(cfg: &DrccConfig, keys: &PelicanKeys) -> String {
+    let mut uut = DrccPelican::<M>::with_config(cfg, keys);
+    uut.connect_all();
+    generate_verilog(&uut)
+}
+
+/// The finished Verilog of the SJA1000 (PeliCAN) view generated with `keys` over
+/// a core with `cfg` (`drcc generate --config` with `host = "pelican"`), as
+/// module `name`: the `drcc_pelican` top's header, ports and notes with these
+/// parameters. Wishbone only (the view's bus, pelican_contract.md §2).
+pub fn pelican_with_config(
+    name: &str,
+    cfg: &DrccConfig,
+    keys: &PelicanKeys,
+) -> Result<String, String> {
+    cfg.check()?;
+    keys.check(cfg)?;
+    let raw = match cfg.mailboxes {
+        0 => raw_verilog_pelican::<0>(cfg, keys),
+        _ => raw_verilog_pelican::<16>(cfg, keys),
+    };
+    let mut params = cfg.params();
+    params.extend(keys.params());
+    let t = configured(
+        top("drcc_pelican").expect("the drcc_pelican top"),
+        name,
+        "the DRCC behind the SJA1000 (PeliCAN) view, generated with a configuration of its own (drcc generate --config)",
+        params,
+    );
+    Ok(verilog::finish(&t, &raw, &t.ports()))
 }

@@ -71,6 +71,8 @@ pub struct CoreView<'a> {
     /// DMR state and active CAN line.
     pub dmr_state: u8,
     pub acl: u8,
+    /// Replicated star: the hubs have split (§4.5).
+    pub split: bool,
 }
 
 impl DrccModel {
@@ -107,6 +109,7 @@ impl DrccModel {
             aux: [self.aux[0].state, self.aux[1].state],
             dmr_state: self.dmr.dmr_state,
             acl: self.dmr.acl,
+            split: self.star.split,
         }
     }
 }

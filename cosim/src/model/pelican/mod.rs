@@ -25,7 +25,7 @@
 //! 4. An `RRB` pops only while the FIFO count before the edge is not 0 and the
 //!    view is in operating mode (in reset mode the core's hold empties it).
 //! 5. Events that coincide with the `RM` 0 -> 1 edge lose to P-MOD-5's clearing,
-//!    except `EI` (P-BO-2).
+//!    except `EI` (P-BO-2); an overrun there sets neither `DOS` nor `DOI`.
 //! 6. In `DMR` the completion (P-TX-7) is the DMR function's `tx_done` of the
 //!    previous edge (the pulse as registered by the core's `INT_STATUS`).
 //! 7. A stride-1 Wishbone write with one lane selects register
@@ -391,8 +391,10 @@ impl PelicanModel {
             .core
             .step_host(false, [i.chan_a_rx, i.chan_b_rx], drive);
         // P-RX-6: the writer drops an accepted frame on a full FIFO.
-        if ev.overrun && !v.rm() {
-            if !n.dos && v.ier & regs::ier::DOIE != 0 {
+        if ev.overrun && !v.rm() && !n.rm() {
+            // DOI marks the DOS 0 -> 1 edge: none while DOS was 1, a CDO of
+            // the same edge notwithstanding (P-IR-4).
+            if !v.dos && v.ier & regs::ier::DOIE != 0 {
                 n.ir |= regs::ir::DOI;
             }
             n.dos = true;

@@ -218,7 +218,12 @@ impl PelicanModel {
                     | (a.diag.err_warning as u8) << 4
                     | (b.diag.err_warning as u8) << 5
             }
-            adr::XFSM => (c.fsm_state & 0xF) | (c.dmr_state & 3) << 4 | (c.acl & 1) << 6,
+            adr::XFSM => {
+                (c.fsm_state & 0xF)
+                    | (c.dmr_state & 3) << 4
+                    | (c.acl & 1) << 6
+                    | (c.split as u8) << 7
+            }
             adr::XIR => v.xir,
             adr::XIER => v.xier,
             adr::XWIN_IDX => v.xwin_idx,
@@ -487,12 +492,16 @@ impl PelicanModel {
             n.ir |= ir::EI;
         }
         // Passive -> active counts unless ES falls at the same edge (P-IR-6).
+        // "Becomes ERROR_PASSIVE": from any other state of `u` (a switch from
+        // a bus-off channel to a passive one included).
         let es_falls = v.es_q && !es;
-        let epi = (v.st_q == 0 && st == 1) || (v.st_q == 1 && st == 0 && !es_falls);
+        let epi = (v.st_q != 1 && st == 1) || (v.st_q == 1 && st == 0 && !es_falls);
         if epi && en(ier::EPIE) {
             n.ir |= ir::EPI;
         }
-        if op && bs && !v.bs_q && v.xmode & 0x40 != 0 && v.single() {
+        // P-BO-1 in every mode (a logical bus-off of REDUNDANCY or DMR too);
+        // a host reset taken at the same edge wins (one reset-mode cause).
+        if op && bs && !v.bs_q && v.xmode & 0x40 != 0 && !n.hrm {
             n.boh = true;
         }
         n.es_q = es;

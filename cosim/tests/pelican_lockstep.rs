@@ -1,0 +1,123 @@
+//! The SJA1000 view's top (`drcc_hdl::pelican::top::DrccPelican`,
+//! `rtl-out/drcc_pelican.v`) in lock step with the view's reference model
+//! (`drcc_cosim::model::pelican`, written from `pelican_contract.md`). Every
+//! clock the top's outputs (the Wishbone read data, acknowledge and error, `irq`
+//! and the CAN pins) must equal the model's.
+//!
+//! - The view model's own scenarios (`model_pelican/`, expected values from the
+//!   contract and the SJA1000 data sheet) run again with the RTL beside the
+//!   model: in rust-hdl's simulator for every generation key they use, and, for
+//!   the keys `rtl-out/drcc_pelican.v` is generated with, also Verilated.
+//! - Random register traffic (`random`): every register read and written with
+//!   random bytes and lane patterns, commands, mode and key changes, frames from
+//!   the other nodes, line cuts, in lock step on the Verilated top.
+//!
+//! Without Verilator the Verilated half skips, except in CI.
+
+#[path = "model_support/mod.rs"]
+mod support;
+
+#[path = "model_pelican/acceptance.rs"]
+mod acceptance;
+#[path = "model_pelican/busoff.rs"]
+mod busoff;
+#[path = "model_pelican/drivers.rs"]
+mod drivers;
+#[path = "model_pelican/harness.rs"]
+mod harness;
+#[path = "model_pelican/map.rs"]
+mod map;
+
+/// Verilator is here, or the test may skip (not in CI).
+fn verilator_present() -> bool {
+    if verilator_sys::available() {
+        return true;
+    }
+    assert!(
+        !verilator_sys::required(),
+        "the Verilated drcc_pelican is required in CI: {:?}",
+        verilator_sys::unavailable_reason()
+    );
+    eprintln!("SKIPPED: {:?}", verilator_sys::unavailable_reason());
+    false
+}
+
+/// The RTL beside the model.
+mod shadow {
+    use drcc_cosim::engine::pelican::{PelicanRustHdl, PelicanVerilator};
+    use drcc_cosim::model::pelican::{PelicanInputs, PelicanModel, PelicanParams};
+
+    enum Hdl {
+        M16(PelicanRustHdl<16>),
+        M0(PelicanRustHdl<0>),
+    }
+
+    /// The rust-hdl top and, for `rtl-out`'s keys, the Verilated one; both
+    /// `None` in a cloned `Net`.
+    pub struct Shadow {
+        hdl: Option<Hdl>,
+        rtl: Option<PelicanVerilator>,
+        clock: u64,
+    }
+
+    impl Clone for Shadow {
+        fn clone(&self) -> Self {
+            Shadow {
+                hdl: None,
+                rtl: None,
+                clock: self.clock,
+            }
+        }
+    }
+
+    impl Shadow {
+        pub fn new(p: &PelicanParams) -> Self {
+            Self::with(p, true)
+        }
+
+        /// `hdl`: run rust-hdl's simulator too (the random traffic runs the
+        /// Verilated top alone, for speed).
+        pub fn with(p: &PelicanParams, hdl: bool) -> Self {
+            let hdl = hdl.then(|| match p.core.mailboxes {
+                16 => Hdl::M16(PelicanRustHdl::new(p)),
+                0 => Hdl::M0(PelicanRustHdl::new(p)),
+                m => panic!("no top generated with {m} mailboxes here"),
+            });
+            let rtl = (*p == PelicanVerilator::params() && crate::verilator_present())
+                .then(|| PelicanVerilator::new().expect("Verilated drcc_pelican"));
+            Shadow {
+                hdl,
+                rtl,
+                clock: 0,
+            }
+        }
+
+        /// The Verilated top runs beside the model.
+        pub fn verilated(&self) -> bool {
+            self.rtl.is_some()
+        }
+
+        /// Step the RTL with the model's inputs of this clock and compare.
+        pub fn edge(&mut self, i: &PelicanInputs, dut: &PelicanModel) {
+            let k = self.clock;
+            self.clock += 1;
+            let m = dut.outputs();
+            let o = match self.hdl.as_mut() {
+                Some(Hdl::M16(x)) => Some(x.step(i)),
+                Some(Hdl::M0(x)) => Some(x.step(i)),
+                None => None,
+            };
+            if let Some(o) = o {
+                assert_eq!(o, m, "rust-hdl drcc_pelican against the model, clock {k}");
+            }
+            if let Some(r) = self.rtl.as_mut() {
+                let o = r.step(i);
+                assert_eq!(o, m, "Verilated drcc_pelican against the model, clock {k}");
+            }
+        }
+    }
+}
+
+/// Random register traffic on the Verilated top.
+#[path = "pelican_lockstep/random.rs"]
+mod random;

@@ -14493,13 +14493,13 @@ module drcc_pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb
         txb__wdata = lanes__wbyte;
         txb__rm = mc__rm;
         txb__tbs = mc__tbs;
-        rxwin__frame = rx_head[(32'h11)+:(99)];
+        rxwin__frame = rx_head[(32'h0)+:(99)];
         rxwin__addr = lanes__reg_num;
         rx_start__rst = rst;
         rx_start__pop = mc__pop;
-        rx_start__rtr = rx_head[32'h73];
-        rx_start__ide = rx_head[32'h72];
-        rx_start__dlc = rx_head[(32'h51)+:(4)];
+        rx_start__rtr = rx_head[32'h62];
+        rx_start__ide = rx_head[32'h61];
+        rx_start__dlc = rx_head[(32'h40)+:(4)];
         rx_start__write = wr & (lanes__reg_num == a_rbsa) & mc__rm;
         rx_start__wdata = lanes__wbyte[(32'h0)+:(6)];
         ign = mc__ign_evt;
@@ -14532,7 +14532,7 @@ module drcc_pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb
         ext__aux_b_state = aux_b_state;
         ext__boh = mc__boh;
         ext__rbs = rx_ready;
-        ext__head_ch = rx_head[32'h10];
+        ext__head_ch = rx_head[32'h63];
         ext__err_state_a = chan_a_err_state;
         ext__err_state_b = chan_b_err_state;
         ext__ew_a = chan_a_err_warning;

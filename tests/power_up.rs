@@ -161,6 +161,7 @@ fn rtl_pins_are_recessive_before_any_clock_or_reset() {
         "drcc",
         "drcc_m0",
         "drcc_small",
+        "drcc_pelican",
         "hub",
         "hub_b",
     ] {
@@ -168,7 +169,7 @@ fn rtl_pins_are_recessive_before_any_clock_or_reset() {
         run_icarus(&dir, top, "rtl", &[rtl]);
         checked += 1;
     }
-    assert_eq!(checked, 6);
+    assert_eq!(checked, 7);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -39,8 +39,8 @@ use crate::bus::drcc_tops::{DrccApb, DrccAxi};
 use crate::channel::can_channel::CanChannel;
 
 use crate::drcc::{Drcc, DrccM0};
-use crate::pelican::top::DrccPelican;
 use crate::hub::hub::{Hub4x2, HubB4x2};
+use crate::pelican::top::DrccPelican;
 use crate::redcan::rcm::Rcm;
 use rust_hdl::prelude::*;
 

@@ -533,8 +533,14 @@ mod tests {
             ("pelican_k = 2", "pelican_k needs host = \"pelican\""),
             ("host = \"sja\"", "host must be \"native\" or \"pelican\""),
             ("host = \"pelican\"\nbus = \"apb\"", "generated on Wishbone"),
-            ("host = \"pelican\"\npelican_stride = 2", "pelican_stride must be 1 or 4"),
-            ("host = \"pelican\"\npelican_k = 0", "pelican_k must be 1..15"),
+            (
+                "host = \"pelican\"\npelican_stride = 2",
+                "pelican_stride must be 1 or 4",
+            ),
+            (
+                "host = \"pelican\"\npelican_k = 0",
+                "pelican_k must be 1..15",
+            ),
             (
                 "host = \"pelican\"\ndmr = false\npelican_default_mode = \"dmr\"",
                 "needs dmr = true",

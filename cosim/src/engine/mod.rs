@@ -8,7 +8,6 @@
 //! See `crate::model` for the clock-level timing contract.
 
 pub mod drcc;
-pub mod drcc_core_rusthdl;
 pub mod drcc_model;
 pub mod drcc_rusthdl;
 pub mod drcc_verilator;

@@ -60,6 +60,11 @@ impl<const M: usize> PelicanRustHdl<M> {
         PelicanRustHdl { uut }
     }
 
+    /// The block, for probes.
+    pub fn top(&self) -> &DrccPelican<M> {
+        &self.uut
+    }
+
     /// One clock with `i`.
     pub fn step(&mut self, i: &PelicanInputs) -> PelicanOutputs {
         let u = self.uut.as_mut();

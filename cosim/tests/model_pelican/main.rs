@@ -11,8 +11,8 @@ mod drivers;
 mod harness;
 mod map;
 
-/// Nothing runs beside the model here (the lock steps,
-/// `pelican_core_lockstep.rs` and `pelican_lockstep.rs`, run the RTL).
+/// Nothing runs beside the model here (the lock step, `pelican_lockstep.rs`,
+/// runs the RTL).
 mod shadow {
     use drcc_cosim::model::pelican::{PelicanInputs, PelicanModel, PelicanParams};
 

@@ -56,7 +56,10 @@ fn frame(rng: &mut Rng) -> Frame {
 fn random_write(n: &mut Net, rng: &mut Rng) {
     let (r, b) = match rng.below(16) {
         // MOD: reset / operating with listen-only, self-test, filter mode, SM
-        0 | 1 => (0, [0x00, 0x01, 0x02, 0x04, 0x08, 0x09, 0x10, 0x03][rng.below(8) as usize]),
+        0 | 1 => (
+            0,
+            [0x00, 0x01, 0x02, 0x04, 0x08, 0x09, 0x10, 0x03][rng.below(8) as usize],
+        ),
         // CMR: TR, TR+AT, AT, RRB, CDO, SRR, SRR+AT, anything
         2..=4 => (
             1,

@@ -199,7 +199,7 @@ pub struct DrccCore<const M: usize> {
     pub rx_ready: Signal<Out, Bit>,
     /// The RX FIFO's count.
     pub rx_count: Signal<Out, Bits<6>>,
-    /// The RX FIFO's head: [115:17] frame as the TX RAM, [16] channel, [15:0] time.
+    /// The RX FIFO's head: [115:100] time, [99] channel, [98:0] frame as the TX RAM.
     pub rx_head: Signal<Out, Bits<116>>,
     /// DMR mode: the host's `tx_done` of a message (first copy, §M5).
     pub dmr_tx_done: Signal<Out, Bit>,

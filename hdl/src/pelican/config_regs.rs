@@ -170,7 +170,8 @@ impl Logic for ConfigRegs {
             }
         }
         // ---- the native BTR word (P-CFG-2; drcc_contract.md §3 BTR) ----
-        self.brp.next = (bit_cast::<7, 6>(self.btr0.q.val().get_bits::<6>(0)) << 1) | self.one7.val();
+        self.brp.next =
+            (bit_cast::<7, 6>(self.btr0.q.val().get_bits::<6>(0)) << 1) | self.one7.val();
         self.view_btr.next = bit_cast::<28, 6>(self.brp.val().get_bits::<6>(0))
             | (bit_cast::<28, 1>(self.brp.val().get_bit(6).into()) << 24)
             | (bit_cast::<28, 4>(self.btr1.q.val().get_bits::<4>(0)) << 6)

@@ -280,7 +280,17 @@ impl Default for ExtensionRegs {
 impl Logic for ExtensionRegs {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, xmode_q, xk_q, xir, xier, xwin_idx, xwin_d, xwin_refused);
+        dff_setup!(
+            self,
+            clk,
+            xmode_q,
+            xk_q,
+            xir,
+            xier,
+            xwin_idx,
+            xwin_d,
+            xwin_refused
+        );
         self.d_shift.next = bit_cast::<5, 2>(self.addr.val().get_bits::<2>(0)) << 3;
         self.idx_ok.next = (self.xwin_idx.q.val() == self.i_rmb_cfg.val())
             | (self.xwin_idx.q.val() == self.i_dedup_cfg.val())

@@ -83,10 +83,15 @@ impl PelicanKeys {
     /// outside its range.
     pub fn check(&self, cfg: &crate::config::DrccConfig) -> Result<(), String> {
         if self.stride != 1 && self.stride != 4 {
-            return Err(format!("pelican_stride must be 1 or 4, not {}", self.stride));
+            return Err(format!(
+                "pelican_stride must be 1 or 4, not {}",
+                self.stride
+            ));
         }
         if self.mode > 3 {
-            return Err("pelican_default_mode must be single_a, redundancy, dmr or single_b".into());
+            return Err(
+                "pelican_default_mode must be single_a, redundancy, dmr or single_b".into(),
+            );
         }
         if self.policy > 3 {
             return Err("pelican_policy must be none, error-passive, k-failed or warning".into());

@@ -91,7 +91,7 @@ pub struct PelicanView {
     pub rx_ready: Signal<In, Bit>,
     /// The RX FIFO's count.
     pub rx_count: Signal<In, Bits<6>>,
-    /// The RX FIFO's head: [115:17] frame, [16] channel, [15:0] time.
+    /// The RX FIFO's head: [115:100] time, [99] channel, [98:0] frame.
     pub rx_head: Signal<In, Bits<116>>,
     /// Native `INT_STATUS.switch` event.
     pub ev_switch: Signal<In, Bit>,

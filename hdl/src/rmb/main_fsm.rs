@@ -448,7 +448,8 @@ impl Logic for MainFsm {
         }
         // a switch event is a change of failover while running (clearing it in
         // normal or reset mode is not a switch)
-        self.switch_evt.next = (self.failover_q.d.val() != self.failover_q.q.val()) & !self.hold.val();
+        self.switch_evt.next =
+            (self.failover_q.d.val() != self.failover_q.q.val()) & !self.hold.val();
         self.success_evt.next = self.success_q.d.val();
 
         self.state.next = self.st.q.val();

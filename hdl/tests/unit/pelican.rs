@@ -3,7 +3,9 @@
 mod acceptance_filter;
 mod armed_capture;
 mod byte_lanes;
+mod config_regs;
 mod ecc_code;
+mod extension;
 mod interrupts;
 mod logical;
 mod mode_control;

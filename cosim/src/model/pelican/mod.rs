@@ -382,6 +382,9 @@ impl PelicanModel {
             // P-BO-2: EI of the bus-off survives.
         }
         n.hrm_q = v.hrm;
+        // P-IRQ-1: the register takes IR as it is before the edge (RI with the
+        // core's rx_ready before the edge).
+        n.irq = (v.ir | self.ri(&v)) != 0 || v.xir & v.xier != 0;
         self.last = CoreEdge {
             rst: false,
             rx: [i.chan_a_rx, i.chan_b_rx],
@@ -400,7 +403,6 @@ impl PelicanModel {
             n.dos = true;
         }
         n.xir |= regs::xir_events(ev.ints);
-        n.irq = (v.ir | self.ri(&v)) != 0 || v.xir & v.xier != 0;
         self.ev = ev;
         self.v = n;
         self.outputs()

@@ -18,9 +18,8 @@ impl Logic for PelicanView {
         self.alc.clk.next = self.clk.val();
         self.ecc.clk.next = self.clk.val();
         // ---- the bus access (P-BUS-1..4) ----
-        self.take.next = self.wb_cyc_i.val()
-            & self.wb_stb_i.val()
-            & !(self.ack_q.q.val() | self.err_q.q.val());
+        self.take.next =
+            self.wb_cyc_i.val() & self.wb_stb_i.val() & !(self.ack_q.q.val() | self.err_q.q.val());
         self.lanes.adr.next = self.wb_adr_i.val();
         self.lanes.sel.next = self.wb_sel_i.val();
         self.lanes.we.next = self.wb_we_i.val();
@@ -136,13 +135,13 @@ impl Logic for PelicanView {
         self.txb.wdata.next = self.lanes.wbyte.val();
         self.txb.rm.next = self.mc.rm.val();
         self.txb.tbs.next = self.mc.tbs.val();
-        self.rxwin.frame.next = self.rx_head.val().get_bits::<99>(17);
+        self.rxwin.frame.next = self.rx_head.val().get_bits::<99>(0);
         self.rxwin.addr.next = self.lanes.reg_num.val();
         self.rx_start.rst.next = self.rst.val();
         self.rx_start.pop.next = self.mc.pop.val();
-        self.rx_start.rtr.next = self.rx_head.val().get_bit(115);
-        self.rx_start.ide.next = self.rx_head.val().get_bit(114);
-        self.rx_start.dlc.next = self.rx_head.val().get_bits::<4>(81);
+        self.rx_start.rtr.next = self.rx_head.val().get_bit(98);
+        self.rx_start.ide.next = self.rx_head.val().get_bit(97);
+        self.rx_start.dlc.next = self.rx_head.val().get_bits::<4>(64);
         self.rx_start.write.next =
             self.wr.val() & (self.lanes.reg_num.val() == self.a_rbsa.val()) & self.mc.rm.val();
         self.rx_start.wdata.next = self.lanes.wbyte.val().get_bits::<6>(0);
@@ -185,7 +184,7 @@ impl Logic for PelicanView {
         self.ext.aux_b_state.next = self.aux_b_state.val();
         self.ext.boh.next = self.mc.boh.val();
         self.ext.rbs.next = self.rx_ready.val();
-        self.ext.head_ch.next = self.rx_head.val().get_bit(16);
+        self.ext.head_ch.next = self.rx_head.val().get_bit(99);
         self.ext.err_state_a.next = self.chan_a_err_state.val();
         self.ext.err_state_b.next = self.chan_b_err_state.val();
         self.ext.ew_a.next = self.chan_a_err_warning.val();
@@ -262,8 +261,7 @@ impl Logic for PelicanView {
                 | (bit_cast::<32, 2>(self.chan_mode.val()) << 12)
                 | (bit_cast::<32, 2>(self.chan_mode.val()) << 14)
                 | (bit_cast::<32, 4>(self.ext.xmode.val().get_bits::<4>(2)) << 2);
-            if (self.ext.xmode.val().get_bits::<2>(0) == self.mode_dmr.val()) & !self.mc.lom.val()
-            {
+            if (self.ext.xmode.val().get_bits::<2>(0) == self.mode_dmr.val()) & !self.mc.lom.val() {
                 self.ctrl.next =
                     (self.ctrl.val() & !self.ctrl_redundancy.val()) | self.ctrl_dmr.val();
             }

@@ -14,8 +14,7 @@ use drcc_hdl::config::DrccConfig;
 use drcc_hdl::drcc::DrccTop;
 use rust_hdl::prelude::*;
 
-/// The DRCC probes of a block with the DRCC top's probe ports (the native top
-/// or the core), read after an edge.
+/// The DRCC probes of the native top, read after an edge.
 macro_rules! drcc_probes {
     ($u:expr) => {{
         let u = $u;
@@ -55,7 +54,6 @@ macro_rules! drcc_probes {
         }
     }};
 }
-pub(crate) use drcc_probes;
 
 /// Settling budget per half clock.
 const MAX_SETTLE_ITERS: usize = 400;

@@ -542,7 +542,7 @@ mod tests {
                 "pelican_k must be 1..15",
             ),
             (
-                "host = \"pelican\"\ndmr = false\npelican_default_mode = \"dmr\"",
+                "host = \"pelican\"\nmailboxes = 0\ndmr = false\npelican_default_mode = \"dmr\"",
                 "needs dmr = true",
             ),
             (

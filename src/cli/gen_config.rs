@@ -229,26 +229,8 @@ pub fn parse(text: &str) -> Result<Generated, String> {
         Some(_) => return Err("name must be a string, e.g. name = \"drcc_tiny\"".to_string()),
     };
     check_name(&name)?;
-    let size = |key: &str, default: usize| -> Result<usize, String> {
-        match table.get(key) {
-            None => Ok(default),
-            Some(toml::Value::Integer(v)) if *v >= 0 => Ok(*v as usize),
-            Some(v) => Err(format!(
-                "{key} must be a non-negative integer, not {}",
-                shorten(&v.to_string())
-            )),
-        }
-    };
-    let switch = |key: &str, default: bool| -> Result<bool, String> {
-        match table.get(key) {
-            None => Ok(default),
-            Some(toml::Value::Boolean(b)) => Ok(*b),
-            Some(v) => Err(format!(
-                "{key} must be true or false, not {}",
-                shorten(&v.to_string())
-            )),
-        }
-    };
+    let size = |key: &str, default: usize| size(&table, key, default);
+    let switch = |key: &str, default: bool| switch(&table, key, default);
     let bus = match table.get("bus") {
         None => "wishbone".to_string(),
         Some(toml::Value::String(b)) => b.clone(),
@@ -340,30 +322,10 @@ fn pelican_keys_of(table: &toml::Table, config: &DrccConfig) -> Result<PelicanKe
             )),
         }
     };
-    let int = |key: &str, default: u64| -> Result<u64, String> {
-        match table.get(key) {
-            None => Ok(default),
-            Some(toml::Value::Integer(v)) if *v >= 0 => Ok(*v as u64),
-            Some(v) => Err(format!(
-                "{key} must be a non-negative integer, not {}",
-                shorten(&v.to_string())
-            )),
-        }
-    };
-    let switch = |key: &str, default: bool| -> Result<bool, String> {
-        match table.get(key) {
-            None => Ok(default),
-            Some(toml::Value::Boolean(b)) => Ok(*b),
-            Some(v) => Err(format!(
-                "{key} must be true or false, not {}",
-                shorten(&v.to_string())
-            )),
-        }
-    };
-    let stride = int("pelican_stride", d.stride as u64)?;
-    let k = int("pelican_k", d.k as u64)?;
+    let stride = size(table, "pelican_stride", d.stride)?;
+    let k = size(table, "pelican_k", d.k as usize)?;
     Ok(PelicanKeys {
-        stride: stride.min(u64::from(u8::MAX)) as usize,
+        stride,
         mode: choice(
             "pelican_default_mode",
             &["single_a", "redundancy", "dmr", "single_b"],
@@ -374,13 +336,37 @@ fn pelican_keys_of(table: &toml::Table, config: &DrccConfig) -> Result<PelicanKe
             &["none", "error-passive", "k-failed", "warning"],
             d.policy,
         )?,
-        k: k.min(u64::from(u8::MAX)) as u8,
-        dual_tx: switch("pelican_dual_tx", d.dual_tx)?,
-        star_on: switch("pelican_star", d.star_on)?,
+        k: k.min(u8::MAX as usize) as u8,
+        dual_tx: switch(table, "pelican_dual_tx", d.dual_tx)?,
+        star_on: switch(table, "pelican_star", d.star_on)?,
         bom: choice("pelican_busoff", &["auto", "sja1000"], d.bom as u8)? == 1,
         dmr: config.dmr,
         star: config.star,
     })
+}
+
+/// The non-negative integer at `key`, or `default` without it.
+fn size(table: &toml::Table, key: &str, default: usize) -> Result<usize, String> {
+    match table.get(key) {
+        None => Ok(default),
+        Some(toml::Value::Integer(v)) if *v >= 0 => Ok(*v as usize),
+        Some(v) => Err(format!(
+            "{key} must be a non-negative integer, not {}",
+            shorten(&v.to_string())
+        )),
+    }
+}
+
+/// The boolean at `key`, or `default` without it.
+fn switch(table: &toml::Table, key: &str, default: bool) -> Result<bool, String> {
+    match table.get(key) {
+        None => Ok(default),
+        Some(toml::Value::Boolean(b)) => Ok(*b),
+        Some(v) => Err(format!(
+            "{key} must be true or false, not {}",
+            shorten(&v.to_string())
+        )),
+    }
 }
 
 /// A module name: a Verilog identifier, not an emitted top's name.

@@ -85,6 +85,13 @@ impl ByteLanes {
     }
 }
 
+impl Default for ByteLanes {
+    /// Stride 4, the generator's default.
+    fn default() -> Self {
+        Self::new(4)
+    }
+}
+
 impl Logic for ByteLanes {
     #[hdl_gen]
     fn update(&mut self) {

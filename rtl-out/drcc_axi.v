@@ -387,7 +387,7 @@ module drcc_axi__bridge(clk,rst,s_axi_awaddr,s_axi_awvalid,s_axi_awready,s_axi_w
     localparam  okay = 2'b0;
     localparam  slverr = 2'b10;
     localparam  zero4 = 4'h0;
-    localparam  zero6 = 6'b0;
+    localparam  zero_adr = 6'b0;
     localparam  zero32 = 32'h0;
 
     // Stub signals
@@ -501,12 +501,12 @@ module drcc_axi__bridge(clk,rst,s_axi_awaddr,s_axi_awvalid,s_axi_awready,s_axi_w
         end
         if (rst) begin
             aw_full__d = 1'b0;
-            aw_adr__d = zero6;
+            aw_adr__d = zero_adr;
             w_full__d = 1'b0;
             w_dat__d = zero32;
             w_strb__d = zero4;
             ar_full__d = 1'b0;
-            ar_adr__d = zero6;
+            ar_adr__d = zero_adr;
             cyc__d = 1'b0;
             we__d = 1'b0;
             last_write__d = 1'b0;

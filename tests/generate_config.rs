@@ -6,7 +6,7 @@
 //! vector widths, so its extremes are linted: the smallest (N 2, M 2, hub A) and
 //! the largest (N 8, M 4, hub B), and one hub on each of APB and AXI4-Lite (named
 //! `*_apb` / `*_axi`, which the lint waivers for a bus top's unused probes
-//! match). Also: the files land only in `--out`, and `--check` passes on them.
+//! match), and the SJA1000 view on APB with keys of its own. Also: the files land only in `--out`, and `--check` passes on them.
 //!
 //! Without the tools the lint is skipped, except under CI, where it fails.
 
@@ -68,6 +68,11 @@ fn configurations_of_your_own_are_lint_clean() {
             "top = \"hub\"\nname = \"hub_b_2x3_axi\"\nnodes = 2\ninterlinks = 3\nhub_id = 1\n\
              bus = \"axi4-lite\"\ndata_width = 32\n",
         ),
+        (
+            "drcc_sja_apb",
+            "name = \"drcc_sja_apb\"\nhost = \"pelican\"\nbus = \"apb\"\nmailboxes = 0\n\
+             dmr = false\nrx_fifo_depth = 8\npelican_policy = \"k-failed\"\npelican_k = 3\n",
+        ),
     ];
     let out_dir = dir.join("out");
     let out_s = out_dir.to_str().unwrap().to_string();
@@ -92,6 +97,7 @@ fn configurations_of_your_own_are_lint_clean() {
     assert_eq!(
         written,
         [
+            "drcc_sja_apb.v",
             "drcc_tiny.v",
             "hub_2x2.v",
             "hub_3x2_apb.v",
@@ -116,6 +122,14 @@ fn configurations_of_your_own_are_lint_clean() {
     assert!(
         axi.contains("input wire  [2:0] sublink_in;"),
         "3 interlinks"
+    );
+    // the SJA1000 view on APB: 128 registers at stride 4 need a 9-bit byte address
+    let sja = text("drcc_sja_apb");
+    assert!(
+        sja.contains("BUS = apb")
+            && sja.contains("PELICAN_POLICY = k-failed")
+            && sja.contains("input wire  [8:0] s_apb_paddr;"),
+        "the view's APB top with its keys and a 9-bit address"
     );
     if !drcc_tools::need_all(&[
         drcc_tools::VERILATOR,

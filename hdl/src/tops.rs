@@ -40,6 +40,7 @@ use crate::channel::can_channel::CanChannel;
 
 use crate::drcc::{Drcc, DrccM0};
 use crate::hub::hub::{Hub4x2, HubB4x2};
+use crate::pelican::bus_tops::{DrccPelicanApb, DrccPelicanAxi};
 use crate::pelican::top::DrccPelican;
 use crate::redcan::rcm::Rcm;
 use rust_hdl::prelude::*;
@@ -323,6 +324,74 @@ pub static TOPS: &[Top] = &[
         can_rx: &["chan_a_rx", "chan_b_rx"],
         raw_verilog: raw_verilog_of::<DrccPelican<16>>,
         ports: ports_of::<DrccPelican<16>>,
+    },
+    Top {
+        name: "drcc_pelican_apb",
+        summary: "the drcc_pelican on an AMBA APB4 slave (PSTRB, PREADY, PSLVERR): the same SJA1000 registers at stride 4, interrupt and CAN pins",
+        contract: "cosim/src/model/pelican_contract.md",
+        params: &[
+            ("M", "16"),
+            ("RX_FIFO_DEPTH", "32"),
+            ("TX_QUEUE_DEPTH", "8"),
+            ("HISTORY", "32"),
+            ("DMR", "1"),
+            ("STAR", "1"),
+            ("HOST", "pelican"),
+            ("PELICAN_STRIDE", "4"),
+            ("PELICAN_DEFAULT_MODE", "redundancy"),
+            ("PELICAN_POLICY", "error-passive"),
+            ("PELICAN_K", "1"),
+            ("PELICAN_DUAL_TX", "0"),
+            ("PELICAN_STAR", "0"),
+            ("PELICAN_BUSOFF", "sja1000"),
+            ("BUS", "apb"),
+        ],
+        block: "DrccPelicanApb",
+        source_path: "hdl/src/pelican/bus_tops.rs",
+        source: include_str!("pelican/bus_tops.rs"),
+        notes: "The drcc_pelican behind the APB front end of cosim/src/model/bus_contract.md\n\
+                section 2: every access phase lasts two clocks, a refused write ends with\n\
+                PSLVERR. Registers: the SJA1000 data sheet's PeliCAN mode at stride 4\n\
+                (register r at byte 4r, Linux reg-io-width = <4>), the extension window at\n\
+                112..127; docs/pelican.md. clk is the SJA1000's oscillator (fosc = clk).",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
+        raw_verilog: raw_verilog_of::<DrccPelicanApb<16>>,
+        ports: ports_of::<DrccPelicanApb<16>>,
+    },
+    Top {
+        name: "drcc_pelican_axi",
+        summary: "the drcc_pelican on an AXI4-Lite slave: the same SJA1000 registers at stride 4, interrupt and CAN pins",
+        contract: "cosim/src/model/pelican_contract.md",
+        params: &[
+            ("M", "16"),
+            ("RX_FIFO_DEPTH", "32"),
+            ("TX_QUEUE_DEPTH", "8"),
+            ("HISTORY", "32"),
+            ("DMR", "1"),
+            ("STAR", "1"),
+            ("HOST", "pelican"),
+            ("PELICAN_STRIDE", "4"),
+            ("PELICAN_DEFAULT_MODE", "redundancy"),
+            ("PELICAN_POLICY", "error-passive"),
+            ("PELICAN_K", "1"),
+            ("PELICAN_DUAL_TX", "0"),
+            ("PELICAN_STAR", "0"),
+            ("PELICAN_BUSOFF", "sja1000"),
+            ("BUS", "axi4-lite"),
+        ],
+        block: "DrccPelicanAxi",
+        source_path: "hdl/src/pelican/bus_tops.rs",
+        source: include_str!("pelican/bus_tops.rs"),
+        notes: "The drcc_pelican behind the AXI4-Lite front end of cosim/src/model/bus_contract.md\n\
+                section 3: one access at a time; a refused write answers SLVERR. Registers:\n\
+                the SJA1000 data sheet's PeliCAN mode at stride 4 (register r at byte 4r,\n\
+                Linux reg-io-width = <4>), the extension window at 112..127;\n\
+                docs/pelican.md. clk is the SJA1000's oscillator (fosc = clk).",
+        can_tx: &["chan_a_tx", "chan_b_tx"],
+        can_rx: &["chan_a_rx", "chan_b_rx"],
+        raw_verilog: raw_verilog_of::<DrccPelicanAxi<16>>,
+        ports: ports_of::<DrccPelicanAxi<16>>,
     },
     Top {
         name: "hub",

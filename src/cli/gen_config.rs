@@ -76,8 +76,8 @@ pub enum Shape {
     /// A DRCC with these sizes, on this host bus.
     Drcc(DrccConfig, Bus),
     /// A DRCC with these sizes behind the SJA1000 (PeliCAN) view (`host =
-    /// "pelican"`), on Wishbone.
-    Pelican(DrccConfig, PelicanKeys),
+    /// "pelican"`), on this host bus.
+    Pelican(DrccConfig, PelicanKeys, Bus),
     /// A hub with N node ports, M interlinks and this identification frame, on
     /// this host bus.
     Hub {
@@ -105,7 +105,9 @@ impl Generated {
         match (drcc_hdl::tops::top(&self.name), self.shape) {
             (Some(t), _) if self.named => Ok(t.verilog()),
             (_, Shape::Drcc(c, bus)) => drcc_hdl::tops::drcc_with_config_on(&self.name, &c, bus),
-            (_, Shape::Pelican(c, k)) => drcc_hdl::tops::pelican_with_config(&self.name, &c, &k),
+            (_, Shape::Pelican(c, k, bus)) => {
+                drcc_hdl::tops::pelican_with_config(&self.name, &c, &k, bus)
+            }
             (
                 _,
                 Shape::Hub {
@@ -127,11 +129,12 @@ impl Generated {
                 .map(|(k, v)| format!("{k} = {v}"))
                 .chain((bus != Bus::Wishbone).then(|| format!("BUS = {}", bus.name())))
                 .collect(),
-            Shape::Pelican(c, k) => c
+            Shape::Pelican(c, k, bus) => c
                 .params()
                 .into_iter()
                 .chain(k.params())
                 .map(|(key, v)| format!("{key} = {v}"))
+                .chain((bus != Bus::Wishbone).then(|| format!("BUS = {}", bus.name())))
                 .collect(),
             Shape::Hub {
                 nodes,
@@ -291,17 +294,12 @@ pub fn parse(text: &str) -> Result<Generated, String> {
             named: false,
         });
     }
-    if bus != Bus::Wishbone {
-        return Err(format!(
-            "the SJA1000 view (host = \"pelican\") is generated on Wishbone; remove bus = \"{}\"",
-            bus.name()
-        ));
-    }
     let keys = pelican_keys_of(&table, &config)?;
     keys.check(&config)?;
+    keys.check_bus(bus)?;
     Ok(Generated {
         name,
-        shape: Shape::Pelican(config, keys),
+        shape: Shape::Pelican(config, keys, bus),
         named: false,
     })
 }
@@ -512,13 +510,22 @@ mod tests {
                     k: 3,
                     bom: false,
                     ..PelicanKeys::default()
-                }
+                },
+                Bus::Wishbone
             )
+        );
+        let g = parse("host = \"pelican\"\nbus = \"axi4-lite\"\n").unwrap();
+        assert_eq!(
+            g.shape,
+            Shape::Pelican(DrccConfig::DEFAULT, PelicanKeys::default(), Bus::AxiLite)
         );
         for (text, says) in [
             ("pelican_k = 2", "pelican_k needs host = \"pelican\""),
             ("host = \"sja\"", "host must be \"native\" or \"pelican\""),
-            ("host = \"pelican\"\nbus = \"apb\"", "generated on Wishbone"),
+            (
+                "host = \"pelican\"\nbus = \"apb\"\npelican_stride = 1",
+                "pelican_stride = 1 is offered on Wishbone only",
+            ),
             (
                 "host = \"pelican\"\npelican_stride = 2",
                 "pelican_stride must be 1 or 4",

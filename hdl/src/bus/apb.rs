@@ -8,8 +8,11 @@
 use rust_hdl::prelude::*;
 
 /// APB4 slave to Wishbone B4 classic master (the register port), no state.
+/// `A` is the byte address's width, `W = A - 2` the word index's: 8 and 6 for
+/// the native map and the hub (64 words), 9 and 7 for the SJA1000 view at
+/// stride 4 (128 registers a word each).
 #[derive(LogicBlock, Default)]
-pub struct ApbBridge {
+pub struct ApbBridge<const A: usize, const W: usize> {
     // ---- APB slave (from the master) ----
     /// Select: this slave is addressed (setup and access phases).
     pub s_apb_psel: Signal<In, Bit>,
@@ -18,7 +21,7 @@ pub struct ApbBridge {
     /// Direction: 1 = write.
     pub s_apb_pwrite: Signal<In, Bit>,
     /// Byte address; `[1:0]` are ignored (word registers).
-    pub s_apb_paddr: Signal<In, Bits<8>>,
+    pub s_apb_paddr: Signal<In, Bits<A>>,
     /// Write data.
     pub s_apb_pwdata: Signal<In, Bits<32>>,
     /// Write strobes, lane i = `pwdata[8i+7:8i]` (APB3: tie to `4'b1111`).
@@ -35,8 +38,8 @@ pub struct ApbBridge {
     pub wb_cyc_o: Signal<Out, Bit>,
     /// Write enable.
     pub wb_we_o: Signal<Out, Bit>,
-    /// Word index (`paddr[7:2]`).
-    pub wb_adr_o: Signal<Out, Bits<6>>,
+    /// Word index (`paddr[A-1:2]`).
+    pub wb_adr_o: Signal<Out, Bits<W>>,
     /// Write data.
     pub wb_dat_o: Signal<Out, Bits<32>>,
     /// Byte lanes.
@@ -50,12 +53,12 @@ pub struct ApbBridge {
     pub wb_err_i: Signal<In, Bit>,
 }
 
-impl Logic for ApbBridge {
+impl<const A: usize, const W: usize> Logic for ApbBridge<A, W> {
     #[hdl_gen]
     fn update(&mut self) {
         self.wb_cyc_o.next = self.s_apb_psel.val() & self.s_apb_penable.val();
         self.wb_we_o.next = self.s_apb_pwrite.val();
-        self.wb_adr_o.next = self.s_apb_paddr.val().get_bits::<6>(2);
+        self.wb_adr_o.next = self.s_apb_paddr.val().get_bits::<W>(2);
         self.wb_dat_o.next = self.s_apb_pwdata.val();
         self.wb_sel_o.next = self.s_apb_pstrb.val();
         self.s_apb_prdata.next = self.wb_dat_i.val();

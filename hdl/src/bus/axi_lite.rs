@@ -9,9 +9,10 @@
 
 use rust_hdl::prelude::*;
 
-/// AXI4-Lite slave to Wishbone B4 classic master (the register port).
+/// AXI4-Lite slave to Wishbone B4 classic master (the register port). `A` is
+/// the byte address's width, `W = A - 2` the word index's (as [`super::apb::ApbBridge`]).
 #[derive(LogicBlock)]
-pub struct AxiLiteBridge {
+pub struct AxiLiteBridge<const A: usize, const W: usize> {
     // ---- clock and reset ----
     /// System clock (`ACLK`).
     pub clk: Signal<In, Clock>,
@@ -19,7 +20,7 @@ pub struct AxiLiteBridge {
     pub rst: Signal<In, Bit>,
     // ---- AXI4-Lite write address channel ----
     /// Write byte address; `[1:0]` are ignored (word registers).
-    pub s_axi_awaddr: Signal<In, Bits<8>>,
+    pub s_axi_awaddr: Signal<In, Bits<A>>,
     /// Write address valid.
     pub s_axi_awvalid: Signal<In, Bit>,
     /// Write address ready: no write address is held.
@@ -42,7 +43,7 @@ pub struct AxiLiteBridge {
     pub s_axi_bready: Signal<In, Bit>,
     // ---- AXI4-Lite read address channel ----
     /// Read byte address; `[1:0]` are ignored.
-    pub s_axi_araddr: Signal<In, Bits<8>>,
+    pub s_axi_araddr: Signal<In, Bits<A>>,
     /// Read address valid.
     pub s_axi_arvalid: Signal<In, Bit>,
     /// Read address ready: no read address is held.
@@ -62,7 +63,7 @@ pub struct AxiLiteBridge {
     /// Write enable.
     pub wb_we_o: Signal<Out, Bit>,
     /// Word index.
-    pub wb_adr_o: Signal<Out, Bits<6>>,
+    pub wb_adr_o: Signal<Out, Bits<W>>,
     /// Write data.
     pub wb_dat_o: Signal<Out, Bits<32>>,
     /// Byte lanes.
@@ -76,12 +77,12 @@ pub struct AxiLiteBridge {
     pub wb_err_i: Signal<In, Bit>,
     // ---- held requests ----
     aw_full: DFF<Bit>,
-    aw_adr: DFF<Bits<6>>,
+    aw_adr: DFF<Bits<W>>,
     w_full: DFF<Bit>,
     w_dat: DFF<Bits<32>>,
     w_strb: DFF<Bits<4>>,
     ar_full: DFF<Bit>,
-    ar_adr: DFF<Bits<6>>,
+    ar_adr: DFF<Bits<W>>,
     // ---- the access in progress ----
     cyc: DFF<Bit>,
     we: DFF<Bit>,
@@ -103,11 +104,11 @@ pub struct AxiLiteBridge {
     okay: Constant<Bits<2>>,
     slverr: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
-    zero6: Constant<Bits<6>>,
+    zero_adr: Constant<Bits<W>>,
     zero32: Constant<Bits<32>>,
 }
 
-impl Default for AxiLiteBridge {
+impl<const A: usize, const W: usize> Default for AxiLiteBridge<A, W> {
     fn default() -> Self {
         Self {
             clk: Default::default(),
@@ -158,13 +159,13 @@ impl Default for AxiLiteBridge {
             okay: Constant::new(0.into()),
             slverr: Constant::new(2.into()),
             zero4: Constant::new(0.into()),
-            zero6: Constant::new(0.into()),
+            zero_adr: Constant::new(0.into()),
             zero32: Constant::new(0.into()),
         }
     }
 }
 
-impl Logic for AxiLiteBridge {
+impl<const A: usize, const W: usize> Logic for AxiLiteBridge<A, W> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -174,7 +175,7 @@ impl Logic for AxiLiteBridge {
         // 1. the request channels, each into its holding register
         if self.s_axi_awvalid.val() & !self.aw_full.q.val() {
             self.aw_full.d.next = true;
-            self.aw_adr.d.next = self.s_axi_awaddr.val().get_bits::<6>(2);
+            self.aw_adr.d.next = self.s_axi_awaddr.val().get_bits::<W>(2);
         }
         if self.s_axi_wvalid.val() & !self.w_full.q.val() {
             self.w_full.d.next = true;
@@ -183,7 +184,7 @@ impl Logic for AxiLiteBridge {
         }
         if self.s_axi_arvalid.val() & !self.ar_full.q.val() {
             self.ar_full.d.next = true;
-            self.ar_adr.d.next = self.s_axi_araddr.val().get_bits::<6>(2);
+            self.ar_adr.d.next = self.s_axi_araddr.val().get_bits::<W>(2);
         }
 
         // 2. start an access; a held response blocks only its own kind, and
@@ -235,12 +236,12 @@ impl Logic for AxiLiteBridge {
 
         if self.rst.val() {
             self.aw_full.d.next = false;
-            self.aw_adr.d.next = self.zero6.val();
+            self.aw_adr.d.next = self.zero_adr.val();
             self.w_full.d.next = false;
             self.w_dat.d.next = self.zero32.val();
             self.w_strb.d.next = self.zero4.val();
             self.ar_full.d.next = false;
-            self.ar_adr.d.next = self.zero6.val();
+            self.ar_adr.d.next = self.zero_adr.val();
             self.cyc.d.next = false;
             self.we.d.next = false;
             self.last_write.d.next = false;

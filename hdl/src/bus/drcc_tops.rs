@@ -51,7 +51,7 @@ pub struct DrccApb<const M: usize> {
     /// Channel B CAN receive pin, 1 = recessive; synchronized by two flip-flops.
     pub chan_b_rx: Signal<In, Bit>,
     // ---- blocks ----
-    bridge: ApbBridge,
+    bridge: ApbBridge<8, 6>,
     core: DrccTop<M>,
 }
 
@@ -155,7 +155,7 @@ pub struct DrccAxi<const M: usize> {
     /// Channel B CAN receive pin, 1 = recessive; synchronized by two flip-flops.
     pub chan_b_rx: Signal<In, Bit>,
     // ---- blocks ----
-    bridge: AxiLiteBridge,
+    bridge: AxiLiteBridge<8, 6>,
     core: DrccTop<M>,
 }
 

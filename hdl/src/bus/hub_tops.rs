@@ -53,7 +53,7 @@ pub struct HubApb<const N: usize, const M: usize, const P: usize, const H: usize
     /// synchronized by two flip-flops.
     pub sublink_in: Signal<In, Bits<M>>,
     // ---- blocks ----
-    bridge: ApbBridge,
+    bridge: ApbBridge<8, 6>,
     core: Hub<N, M, P, H>,
 }
 
@@ -150,7 +150,7 @@ pub struct HubAxi<const N: usize, const M: usize, const P: usize, const H: usize
     /// synchronized by two flip-flops.
     pub sublink_in: Signal<In, Bits<M>>,
     // ---- blocks ----
-    bridge: AxiLiteBridge,
+    bridge: AxiLiteBridge<8, 6>,
     core: Hub<N, M, P, H>,
 }
 

@@ -4,6 +4,7 @@
 
 pub mod acceptance_filter;
 pub mod armed_capture;
+pub mod bus_tops;
 pub mod byte_lanes;
 pub mod config_regs;
 pub mod ecc_code;
@@ -104,6 +105,22 @@ impl PelicanKeys {
         }
         if self.star_on && !cfg.star {
             return Err("pelican_star = true needs star = true".into());
+        }
+        Ok(())
+    }
+
+    /// Refuses a stride the host bus cannot carry: APB and AXI4-Lite reads
+    /// carry no byte lanes, so the view is offered on them at stride 4 only
+    /// (pelican_contract.md P-GEN-1).
+    pub fn check_bus(&self, bus: crate::bus::Bus) -> Result<(), String> {
+        if bus != crate::bus::Bus::Wishbone && self.stride != 4 {
+            return Err(format!(
+                "pelican_stride = {} is offered on Wishbone only: {} reads carry no byte \
+                 lanes to pick one of four registers in a word; use pelican_stride = 4 \
+                 (Linux reg-io-width = <4>)",
+                self.stride,
+                bus.name()
+            ));
         }
         Ok(())
     }

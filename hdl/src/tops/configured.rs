@@ -10,6 +10,7 @@ use crate::bus::Bus;
 use crate::config::DrccConfig;
 use crate::drcc::DrccTop;
 use crate::hub::hub::Hub;
+use crate::pelican::bus_tops::{DrccPelicanApb, DrccPelicanAxi};
 use crate::pelican::top::DrccPelican;
 use crate::pelican::PelicanKeys;
 use rust_hdl::prelude::*;
@@ -244,32 +245,57 @@ pub fn hub_with_shape_on(
     Ok(verilog::finish(&t, &raw, &ports))
 }
 
-/// The raw Verilog of the SJA1000 view over a core with the sizes of `cfg`.
-fn raw_verilog_pelican<const M: usize>(cfg: &DrccConfig, keys: &PelicanKeys) -> String {
-    let mut uut = DrccPelican::<M>::with_config(cfg, keys);
-    uut.connect_all();
-    generate_verilog(&uut)
+/// The raw Verilog of the SJA1000 view over a core with the sizes of `cfg`, on `bus`.
+fn raw_verilog_pelican<const M: usize>(cfg: &DrccConfig, keys: &PelicanKeys, bus: Bus) -> String {
+    match bus {
+        Bus::Wishbone => {
+            let mut uut = DrccPelican::<M>::with_config(cfg, keys);
+            uut.connect_all();
+            generate_verilog(&uut)
+        }
+        Bus::Apb => {
+            let mut uut = DrccPelicanApb::<M>::with_config(cfg, keys);
+            uut.connect_all();
+            generate_verilog(&uut)
+        }
+        Bus::AxiLite => {
+            let mut uut = DrccPelicanAxi::<M>::with_config(cfg, keys);
+            uut.connect_all();
+            generate_verilog(&uut)
+        }
+    }
 }
 
 /// The finished Verilog of the SJA1000 (PeliCAN) view generated with `keys` over
-/// a core with `cfg` (`drcc generate --config` with `host = "pelican"`), as
-/// module `name`: the `drcc_pelican` top's header, ports and notes with these
-/// parameters. Wishbone only (the view's bus, pelican_contract.md §2).
+/// a core with `cfg` (`drcc generate --config` with `host = "pelican"`) on `bus`,
+/// as module `name`: the `drcc_pelican`, `drcc_pelican_apb` or `drcc_pelican_axi`
+/// top's header, ports and notes with these parameters. APB and AXI4-Lite take
+/// stride 4 only (their reads carry no byte lanes).
 pub fn pelican_with_config(
     name: &str,
     cfg: &DrccConfig,
     keys: &PelicanKeys,
+    bus: Bus,
 ) -> Result<String, String> {
     cfg.check()?;
     keys.check(cfg)?;
+    keys.check_bus(bus)?;
     let raw = match cfg.mailboxes {
-        0 => raw_verilog_pelican::<0>(cfg, keys),
-        _ => raw_verilog_pelican::<16>(cfg, keys),
+        0 => raw_verilog_pelican::<0>(cfg, keys, bus),
+        _ => raw_verilog_pelican::<16>(cfg, keys, bus),
+    };
+    let base = match bus {
+        Bus::Wishbone => "drcc_pelican",
+        Bus::Apb => "drcc_pelican_apb",
+        Bus::AxiLite => "drcc_pelican_axi",
     };
     let mut params = cfg.params();
     params.extend(keys.params());
+    if bus != Bus::Wishbone {
+        params.push(("BUS", bus.name().to_string()));
+    }
     let t = configured(
-        top("drcc_pelican").expect("the drcc_pelican top"),
+        top(base).expect("the drcc_pelican tops"),
         name,
         "the DRCC behind the SJA1000 (PeliCAN) view, generated with a configuration of its own (drcc generate --config)",
         params,

@@ -12,7 +12,7 @@ pub struct ApbIn {
     pub penable: bool,
     pub pwrite: bool,
     /// Byte address (`paddr[1:0]` are ignored).
-    pub paddr: u8,
+    pub paddr: u16,
     pub pwdata: u32,
     /// `pstrb[3:0]` (an APB3 master ties it to `4'b1111`).
     pub pstrb: u8,
@@ -33,7 +33,7 @@ pub struct ApbBridge;
 impl ApbBridge {
     /// The register port's inputs for this clock's bus inputs:
     /// `wb_cyc_i = wb_stb_i = psel & penable`, `wb_we_i = pwrite`,
-    /// `wb_adr_i = paddr[7:2]`, `wb_dat_i = pwdata`, `wb_sel_i = pstrb`.
+    /// `wb_adr_i = paddr[A-1:2]`, `wb_dat_i = pwdata`, `wb_sel_i = pstrb`.
     pub fn port_in(&self, i: &ApbIn) -> PortIn {
         PortIn {
             cyc: i.psel & i.penable,
@@ -84,7 +84,7 @@ mod tests {
                 psel: true,
                 penable: false,
                 pwrite: write,
-                paddr,
+                paddr: paddr.into(),
                 pwdata,
                 pstrb,
             };
@@ -185,7 +185,7 @@ mod tests {
             psel: true,
             penable: false,
             pwrite: true,
-            paddr: 4 * WHOLE + 2, // paddr[1:0] ignored
+            paddr: u16::from(4 * WHOLE + 2), // paddr[1:0] ignored
             pwdata: 0xDEAD_BEEF,
             pstrb: 0xF,
         };

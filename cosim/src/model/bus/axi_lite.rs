@@ -9,7 +9,7 @@ use super::{strobe, word_index, PortIn, PortOut, OKAY, SLVERR};
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct AxiIn {
     /// Byte address (`awaddr[1:0]` are ignored).
-    pub awaddr: u8,
+    pub awaddr: u16,
     pub awvalid: bool,
     pub wdata: u32,
     /// `wstrb[3:0]`.
@@ -17,7 +17,7 @@ pub struct AxiIn {
     pub wvalid: bool,
     pub bready: bool,
     /// Byte address (`araddr[1:0]` are ignored).
-    pub araddr: u8,
+    pub araddr: u16,
     pub arvalid: bool,
     pub rready: bool,
 }

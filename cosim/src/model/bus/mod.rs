@@ -20,10 +20,12 @@
 //!
 //! ## Interpretations (where the contract leaves a choice)
 //!
-//! 1. Field widths: `PortIn::adr` is the 6-bit word index, `PortIn::sel` and every
-//!    strobe 4 bits. Input bits above a port's width (`pstrb[7:4]`, `wstrb[7:4]`)
-//!    are ignored (masked off), as a narrower port would. Byte addresses are full
-//!    8-bit values, so `paddr[7:2]` / `awaddr[7:2]` / `araddr[7:2]` always fit.
+//! 1. Field widths: `PortIn::adr` is the word index (6 bits on the native and hub
+//!    tops, 7 on the SJA1000 view's), `PortIn::sel` and every strobe 4 bits. Input
+//!    bits above a port's width (`pstrb[7:4]`, `wstrb[7:4]`) are ignored (masked
+//!    off), as a narrower port would. A byte address is the value its port
+//!    carries (8 bits, or 9 on the view's tops: the caller gives no wider one),
+//!    so `paddr[A-1:2]` / `awaddr[A-1:2]` / `araddr[A-1:2]` always fit 7 bits.
 //! 2. APB: the bridge passes the register port straight through, in every clock and
 //!    every phase: `wb_we_i`, `wb_adr_i`, `wb_dat_i` and `wb_sel_i` follow the inputs
 //!    even when `psel & penable` is 0 (only `cyc` gates the port). `prdata` is
@@ -80,7 +82,7 @@ pub struct PortIn {
     pub cyc: bool,
     /// `wb_we_i`.
     pub we: bool,
-    /// `wb_adr_i[5:0]`: the word index (byte address / 4).
+    /// `wb_adr_i[W-1:0]`: the word index (byte address / 4).
     pub adr: u8,
     /// `wb_dat_i`.
     pub dat: u32,
@@ -99,10 +101,12 @@ pub struct PortOut {
     pub dat: u32,
 }
 
-/// The word index of a byte address: `addr[7:2]`.
+/// The word index of a byte address: `addr[A-1:2]`, at most 7 bits (the
+/// port's byte address is `A` = 8 bits wide on the native and hub tops, 9 on
+/// the SJA1000 view's; Interpretation 1).
 #[inline]
-fn word_index(byte_addr: u8) -> u8 {
-    byte_addr >> 2
+fn word_index(byte_addr: u16) -> u8 {
+    ((byte_addr >> 2) & 0x7F) as u8
 }
 
 /// A 4-bit byte-lane strobe from a wider field (Interpretation 1).

@@ -8,7 +8,7 @@ mod tests {
 
     #[test]
     fn axi_lite_bridge_synthesizes() {
-        let mut uut = AxiLiteBridge::default();
+        let mut uut = AxiLiteBridge::<8, 6>::default();
         uut.connect_all();
         crate::synth_check::yosys_check("axi_lite_bridge", &generate_verilog(&uut));
     }

@@ -37,7 +37,7 @@ impl Sys {
     /// high): the response.
     fn write(&mut self, awaddr: u8, wdata: u32, wstrb: u8) -> u8 {
         let i = AxiIn {
-            awaddr,
+            awaddr: awaddr.into(),
             awvalid: true,
             wdata,
             wstrb,
@@ -60,7 +60,7 @@ impl Sys {
     fn read(&mut self, araddr: u8) -> (u32, u8) {
         assert!(self.out().arready);
         self.edge(&AxiIn {
-            araddr,
+            araddr: araddr.into(),
             arvalid: true,
             ..IDLE
         });
@@ -105,7 +105,7 @@ fn aw_and_w_in_one_clock() {
     let mut s = Sys::default();
     assert_eq!(s.out(), READY);
     let i = AxiIn {
-        awaddr: 4 * WHOLE2 + 3, // awaddr[1:0] ignored
+        awaddr: u16::from(4 * WHOLE2 + 3), // awaddr[1:0] ignored
         awvalid: true,
         wdata: 0xCAFE_F00D,
         wstrb: 0xF,
@@ -171,7 +171,7 @@ fn aw_and_w_in_one_clock() {
 fn aw_before_w() {
     let mut s = Sys::default();
     s.edge(&AxiIn {
-        awaddr: 4 * WHOLE,
+        awaddr: u16::from(4 * WHOLE),
         awvalid: true,
         ..IDLE
     }); // E0
@@ -224,7 +224,7 @@ fn w_before_aw() {
         s.edge(&IDLE);
     }
     s.edge(&AxiIn {
-        awaddr: 4 * BYTES,
+        awaddr: u16::from(4 * BYTES),
         awvalid: true,
         ..IDLE
     });
@@ -245,7 +245,7 @@ fn read_held_until_rready() {
     let mut s = Sys::default();
     assert_eq!(s.write(4 * BYTES, 0x1234_5678, 0xF), OKAY);
     s.edge(&AxiIn {
-        araddr: 4 * BYTES + 2,
+        araddr: u16::from(4 * BYTES + 2),
         arvalid: true,
         ..IDLE
     }); // E0
@@ -288,7 +288,7 @@ fn read_held_until_rready() {
     s.edge(&IDLE);
     assert_eq!(s.out(), r);
     s.edge(&AxiIn {
-        araddr: 4 * RO,
+        araddr: u16::from(4 * RO),
         arvalid: true,
         ..IDLE
     });
@@ -353,13 +353,13 @@ fn refused_writes_give_slverr() {
 fn arbitration_alternates() {
     let mut s = Sys::default();
     let all = AxiIn {
-        awaddr: 4 * WHOLE,
+        awaddr: u16::from(4 * WHOLE),
         awvalid: true,
         wdata: 9,
         wstrb: 0xF,
         wvalid: true,
         bready: true,
-        araddr: 4 * RO,
+        araddr: u16::from(4 * RO),
         arvalid: true,
         rready: true,
     };
@@ -383,7 +383,7 @@ fn arbitration_alternates() {
 fn bready_back_pressure() {
     let mut s = Sys::default();
     s.edge(&AxiIn {
-        awaddr: 4 * WHOLE,
+        awaddr: u16::from(4 * WHOLE),
         awvalid: true,
         wdata: 1,
         wstrb: 0xF,
@@ -400,12 +400,12 @@ fn bready_back_pressure() {
     );
     // A read and a second write arrive while B is held (rready low too).
     s.edge(&AxiIn {
-        awaddr: 4 * WHOLE2,
+        awaddr: u16::from(4 * WHOLE2),
         awvalid: true,
         wdata: 2,
         wstrb: 0xF,
         wvalid: true,
-        araddr: 4 * WHOLE,
+        araddr: u16::from(4 * WHOLE),
         arvalid: true,
         ..IDLE
     });

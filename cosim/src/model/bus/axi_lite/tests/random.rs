@@ -79,13 +79,13 @@ fn random_traffic(seed: u64, n: usize, busy: u64, ready: u64) {
         }
         let junk = rng.next();
         let i = AxiIn {
-            awaddr: aw.unwrap_or(junk as u8),
+            awaddr: aw.unwrap_or(junk as u8).into(),
             awvalid: aw.is_some(),
             wdata: w.map_or(junk as u32, |w| w.0),
             wstrb: w.map_or((junk >> 8) as u8 & 0xF, |w| w.1),
             wvalid: w.is_some(),
             bready: rng.chance(ready),
-            araddr: ar.unwrap_or((junk >> 16) as u8),
+            araddr: ar.unwrap_or((junk >> 16) as u8).into(),
             arvalid: ar.is_some(),
             rready: rng.chance(ready),
         };

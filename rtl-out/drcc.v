@@ -2266,6 +2266,9 @@ module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         aux_a__clk = clk;
         aux_a__rst = rst | regs__stats_clear;
         aux_a__hold = rmb_hold;
+        if (view_on) begin
+            aux_a__hold = rst | view_chan_reset[32'h0] | ~regs__redundancy;
+        end
         aux_a__policy = regs__policy;
         aux_a__k = regs__k;
         aux_a__stall_limit = regs__stall_limit;
@@ -2284,6 +2287,9 @@ module drcc__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         aux_b__clk = clk;
         aux_b__rst = rst | regs__stats_clear;
         aux_b__hold = rmb_hold;
+        if (view_on) begin
+            aux_b__hold = rst | view_chan_reset[32'h1] | ~regs__redundancy;
+        end
         aux_b__policy = regs__policy;
         aux_b__k = regs__k;
         aux_b__stall_limit = regs__stall_limit;

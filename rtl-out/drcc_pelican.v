@@ -2311,6 +2311,9 @@ module drcc_pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb
         aux_a__clk = clk;
         aux_a__rst = rst | regs__stats_clear;
         aux_a__hold = rmb_hold;
+        if (view_on) begin
+            aux_a__hold = rst | view_chan_reset[32'h0] | ~regs__redundancy;
+        end
         aux_a__policy = regs__policy;
         aux_a__k = regs__k;
         aux_a__stall_limit = regs__stall_limit;
@@ -2329,6 +2332,9 @@ module drcc_pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb
         aux_b__clk = clk;
         aux_b__rst = rst | regs__stats_clear;
         aux_b__hold = rmb_hold;
+        if (view_on) begin
+            aux_b__hold = rst | view_chan_reset[32'h1] | ~regs__redundancy;
+        end
         aux_b__policy = regs__policy;
         aux_b__k = regs__k;
         aux_b__stall_limit = regs__stall_limit;
@@ -15732,8 +15738,8 @@ module drcc_pelican__view__logical(mode,policy,rm,hrm,tx_channel,acl,aux_a_state
             txerr = zero8;
             rxerr = zero8;
         end
-        ts = rm | is_tx_u;
-        rs = rm | (~is_tx_u & (field_u != Field__Integrating) & (field_u != Field__Idle) & (field_u != Field__Intermission) & (field_u != Field__Suspend) & (field_u != Field__BusOff));
+        ts = rm | is_tx_u | (field_u == Field__Integrating) | (field_u == Field__BusOff);
+        rs = rm | (field_u == Field__Integrating) | (field_u == Field__BusOff) | (~is_tx_u & (field_u != Field__Idle) & (field_u != Field__Intermission) & (field_u != Field__Suspend));
     end
 
 endmodule // drcc_pelican__view__logical

@@ -2691,6 +2691,9 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         aux_a__clk = clk;
         aux_a__rst = rst | regs__stats_clear;
         aux_a__hold = rmb_hold;
+        if (view_on) begin
+            aux_a__hold = rst | view_chan_reset[32'h0] | ~regs__redundancy;
+        end
         aux_a__policy = regs__policy;
         aux_a__k = regs__k;
         aux_a__stall_limit = regs__stall_limit;
@@ -2709,6 +2712,9 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         aux_b__clk = clk;
         aux_b__rst = rst | regs__stats_clear;
         aux_b__hold = rmb_hold;
+        if (view_on) begin
+            aux_b__hold = rst | view_chan_reset[32'h1] | ~regs__redundancy;
+        end
         aux_b__policy = regs__policy;
         aux_b__k = regs__k;
         aux_b__stall_limit = regs__stall_limit;
@@ -16112,8 +16118,8 @@ module drcc_pelican_axi__pelican__view__logical(mode,policy,rm,hrm,tx_channel,ac
             txerr = zero8;
             rxerr = zero8;
         end
-        ts = rm | is_tx_u;
-        rs = rm | (~is_tx_u & (field_u != Field__Integrating) & (field_u != Field__Idle) & (field_u != Field__Intermission) & (field_u != Field__Suspend) & (field_u != Field__BusOff));
+        ts = rm | is_tx_u | (field_u == Field__Integrating) | (field_u == Field__BusOff);
+        rs = rm | (field_u == Field__Integrating) | (field_u == Field__BusOff) | (~is_tx_u & (field_u != Field__Idle) & (field_u != Field__Intermission) & (field_u != Field__Suspend));
     end
 
 endmodule // drcc_pelican_axi__pelican__view__logical

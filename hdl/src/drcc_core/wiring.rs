@@ -320,7 +320,13 @@ impl<const M: usize> Logic for DrccCore<M> {
         // ---- auxiliary FSMs ----
         self.aux_a.clk.next = self.clk.val();
         self.aux_a.rst.next = self.rst.val() | self.regs.stats_clear.val();
+        // P-CORE-3: behind a host view only the channel's reset holds it
         self.aux_a.hold.next = self.rmb_hold.val();
+        if self.view_on.val() {
+            self.aux_a.hold.next = self.rst.val()
+                | self.view_chan_reset.val().get_bit(0)
+                | !self.regs.redundancy.val();
+        }
         self.aux_a.policy.next = self.regs.policy.val();
         self.aux_a.k.next = self.regs.k.val();
         self.aux_a.stall_limit.next = self.regs.stall_limit.val();
@@ -340,6 +346,11 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.aux_b.clk.next = self.clk.val();
         self.aux_b.rst.next = self.rst.val() | self.regs.stats_clear.val();
         self.aux_b.hold.next = self.rmb_hold.val();
+        if self.view_on.val() {
+            self.aux_b.hold.next = self.rst.val()
+                | self.view_chan_reset.val().get_bit(1)
+                | !self.regs.redundancy.val();
+        }
         self.aux_b.policy.next = self.regs.policy.val();
         self.aux_b.k.next = self.regs.k.val();
         self.aux_b.stall_limit.next = self.regs.stall_limit.val();

@@ -177,14 +177,18 @@ impl Logic for LogicalController {
             self.txerr.next = self.zero8.val();
             self.rxerr.next = self.zero8.val();
         }
-        // P-SR-1: the bus activity of u; both 1 in reset mode
-        self.ts.next = self.rm.val() | self.is_tx_u.val();
+        // P-SR-1: the bus activity of u; both 1 in reset mode and while u waits
+        // for the bus to become idle (integrating, bus-off; DS Table 14 note 3)
+        self.ts.next = self.rm.val()
+            | self.is_tx_u.val()
+            | (self.field_u.val() == Field::Integrating)
+            | (self.field_u.val() == Field::BusOff);
         self.rs.next = self.rm.val()
+            | (self.field_u.val() == Field::Integrating)
+            | (self.field_u.val() == Field::BusOff)
             | (!self.is_tx_u.val()
-                & (self.field_u.val() != Field::Integrating)
                 & (self.field_u.val() != Field::Idle)
                 & (self.field_u.val() != Field::Intermission)
-                & (self.field_u.val() != Field::Suspend)
-                & (self.field_u.val() != Field::BusOff));
+                & (self.field_u.val() != Field::Suspend));
     }
 }

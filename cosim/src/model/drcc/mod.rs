@@ -349,7 +349,9 @@ impl DrccModel {
         let a_valid = self.aux[0].state == aux::VALID;
         for (c, o) in [pa, pb].into_iter().enumerate() {
             let aev = self.aux[c].edge(&AuxInputs {
-                running,
+                // P-CORE-3: behind a host view only the channel's reset holds
+                // its aux FSM, which so keeps judging through a bus-off hold
+                running: redundancy && self.host.as_ref().map_or(!reset_mode, |h| !h.chan_reset[c]),
                 policy: r.policy(),
                 k: r.k(),
                 stall_limit: (r.rmb >> 16) as u16,

@@ -16,8 +16,9 @@
 //!    offered to the RX writer's source `S` at the completion edge of a
 //!    successful message started with `SRR`; `S` is taken after A and B when
 //!    the writer is idle, and its FIFO entry's channel reads 2 (`XSTAT[7]` 0).
-//! 2. P-CORE-3: the auxiliary FSMs follow the core's hold (`reset_mode`) as the
-//!    native core does; they are not kept running through a bus-off hold.
+//! 2. P-CORE-3: an auxiliary FSM is held (in `valid`) by its channel's reset
+//!    and outside redundancy mode only, so through a bus-off hold it keeps
+//!    judging (a bus-off channel reads failed in `XFSM`) and raises its events.
 //! 3. P-X-3/P-X-4 native window: `XWIN_IDX` and `XWIN_D0..3` are stored and read
 //!    back; a load returns 0 for every index; a commit is accepted (flag 0) for
 //!    the listed indices while `hrm = 1`, refused (flag 1, `XIR.win`) otherwise,
@@ -446,7 +447,10 @@ impl PelicanModel {
                 | field::SUSPEND
                 | field::BUS_OFF
         );
-        let (rs, ts) = if v.rm() {
+        // DS 6.4.5 Table 14 note 3: both set while waiting for the bus to
+        // become idle (11 recessive bits after reset mode, 128 x 11 after bus-off)
+        let waiting = matches!(f, field::INTEGRATING | field::BUS_OFF);
+        let (rs, ts) = if v.rm() || waiting {
             (true, true)
         } else {
             (active && !is_tx, is_tx)

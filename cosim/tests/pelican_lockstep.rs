@@ -8,6 +8,11 @@
 //!   contract and the SJA1000 data sheet) run again with the RTL beside the
 //!   model: in rust-hdl's simulator for every generation key they use, and, for
 //!   the keys `rtl-out/drcc_pelican.v` is generated with, also Verilated.
+//! - The data sheet's conformance tests (`model_pelican/conformance/`), so the
+//!   RTL meets them too. (The side-by-side runs against the independent SJA1000
+//!   core, `model_pelican/side_by_side.rs`, stay on the model: in rust-hdl's
+//!   simulator they would take ten minutes, and the lock step ties the RTL to
+//!   the model.)
 //! - Random register traffic (`random`): every register read and written with
 //!   random bytes and lane patterns, commands, mode and key changes, frames from
 //!   the other nodes, line cuts, in lock step on the Verilated top.
@@ -24,6 +29,8 @@ mod support;
 mod acceptance;
 #[path = "model_pelican/busoff.rs"]
 mod busoff;
+#[path = "model_pelican/conformance/mod.rs"]
+mod conformance;
 #[path = "model_pelican/drivers.rs"]
 mod drivers;
 #[path = "model_pelican/harness.rs"]

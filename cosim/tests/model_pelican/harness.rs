@@ -28,6 +28,8 @@ pub struct Net {
     /// Whatever the test binary runs beside the model, edge by edge
     /// (`crate::shadow`: nothing here; the RTL core in the core lock step).
     pub shadow: crate::shadow::Shadow,
+    /// Reset the other nodes at the next clock (`reset_peers`).
+    pub peer_rst: bool,
 }
 
 impl Net {
@@ -54,11 +56,15 @@ impl Net {
             peer_req: [None, None],
             received: vec![],
             shadow: crate::shadow::Shadow::new(&p),
+            peer_rst: false,
         };
-        n.clk(PelicanInputs {
-            rst: true,
-            ..Default::default()
-        });
+        // the documented minimum reset: 4 edges with rst high
+        for _ in 0..4 {
+            n.clk(PelicanInputs {
+                rst: true,
+                ..Default::default()
+            });
+        }
         n
     }
 
@@ -73,7 +79,7 @@ impl Net {
         self.shadow.edge(&i, &self.dut);
         self.tx = [self.out.chan_a_tx, self.out.chan_b_tx];
         for (x, prx) in [pa, pb].into_iter().enumerate() {
-            let rst = self.clock == 0;
+            let rst = self.clock == 0 || self.peer_rst;
             let req = self.peer_req[x];
             let o = self.peer[x].step(&ChannelInputs {
                 rst,
@@ -95,8 +101,18 @@ impl Net {
             }
             self.peer_out[x] = o;
         }
+        self.peer_rst = false;
         self.clock += 1;
         self.out
+    }
+
+    /// Reset the other nodes for one clock with `mode` (e.g. SELF_TEST: a
+    /// node that needs no ACK); the DUT runs on. Pending requests are dropped.
+    pub fn reset_peers(&mut self, mode: Mode) {
+        self.peer_mode = mode;
+        self.peer_req = [None, None];
+        self.peer_rst = true;
+        self.idle(1);
     }
 
     pub fn idle(&mut self, n: u64) {

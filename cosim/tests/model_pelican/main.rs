@@ -7,9 +7,12 @@ mod support;
 
 mod acceptance;
 mod busoff;
+mod conformance;
 mod drivers;
 mod harness;
 mod map;
+mod side_by_side;
+mod sja1000_ref;
 
 /// Nothing runs beside the model here (the lock step, `pelican_lockstep.rs`,
 /// runs the RTL).

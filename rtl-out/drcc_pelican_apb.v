@@ -279,8 +279,6 @@ module drcc_pelican_apb__pelican(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_d
     input wire  chan_b_rx;
 
     // Constant declarations
-    localparam  zero6 = 6'b0;
-    localparam  zero32 = 32'h0;
     localparam  all_lanes = 4'hf;
 
     // Enums
@@ -373,6 +371,7 @@ module drcc_pelican_apb__pelican(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_d
     reg  core__view_afm;
     reg  [31:0] core__view_acr;
     reg  [31:0] core__view_amr;
+    reg  [1:0] core__view_cap_rearm;
     wire  core__rx_stored;
     wire  core__rx_overrun;
     wire  core__rx_ready;
@@ -489,6 +488,13 @@ module drcc_pelican_apb__pelican(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_d
     wire  view__view_afm;
     wire  [31:0] view__view_acr;
     wire  [31:0] view__view_amr;
+    wire  [1:0] view__view_cap_rearm;
+    wire  view__nat_cyc;
+    wire  view__nat_we;
+    wire  [5:0] view__nat_adr;
+    wire  [31:0] view__nat_wdat;
+    reg  [31:0] view__nat_rdat;
+    reg  view__nat_err;
 
     // Sub module instances
     drcc_pelican_apb__pelican__core #(.RX_FIFO_DEPTH(RX_FIFO_DEPTH), .TX_QUEUE_DEPTH(TX_QUEUE_DEPTH), .HISTORY(HISTORY), .STAR(STAR)) core(
@@ -556,6 +562,7 @@ module drcc_pelican_apb__pelican(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_d
         .view_afm(core__view_afm),
         .view_acr(core__view_acr),
         .view_amr(core__view_amr),
+        .view_cap_rearm(core__view_cap_rearm),
         .rx_stored(core__rx_stored),
         .rx_overrun(core__rx_overrun),
         .rx_ready(core__rx_ready),
@@ -673,7 +680,14 @@ module drcc_pelican_apb__pelican(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_d
         .view_gate_on(view__view_gate_on),
         .view_afm(view__view_afm),
         .view_acr(view__view_acr),
-        .view_amr(view__view_amr)
+        .view_amr(view__view_amr),
+        .view_cap_rearm(view__view_cap_rearm),
+        .nat_cyc(view__nat_cyc),
+        .nat_we(view__nat_we),
+        .nat_adr(view__nat_adr),
+        .nat_wdat(view__nat_wdat),
+        .nat_rdat(view__nat_rdat),
+        .nat_err(view__nat_err)
     );
 
     // Update code
@@ -692,12 +706,14 @@ module drcc_pelican_apb__pelican(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_d
         wb_ack_o = view__wb_ack_o;
         wb_err_o = view__wb_err_o;
         irq = view__irq;
-        core__wb_cyc_i = 1'b0;
-        core__wb_stb_i = 1'b0;
-        core__wb_we_i = 1'b0;
-        core__wb_adr_i = zero6;
-        core__wb_dat_i = zero32;
+        core__wb_cyc_i = view__nat_cyc;
+        core__wb_stb_i = view__nat_cyc;
+        core__wb_we_i = view__nat_we;
+        core__wb_adr_i = view__nat_adr;
+        core__wb_dat_i = view__nat_wdat;
         core__wb_sel_i = all_lanes;
+        view__nat_rdat = core__wb_dat_o;
+        view__nat_err = core__wb_err_o;
         core__chan_a_rx = chan_a_rx;
         core__chan_b_rx = chan_b_rx;
         chan_a_tx = core__chan_a_tx;
@@ -769,12 +785,13 @@ module drcc_pelican_apb__pelican(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_d
         core__view_afm = view__view_afm;
         core__view_acr = view__view_acr;
         core__view_amr = view__view_amr;
+        core__view_cap_rearm = view__view_cap_rearm;
     end
 
 endmodule // drcc_pelican_apb__pelican
 
 
-module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,view_on,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,rx_stored,rx_overrun,rx_ready,rx_count,rx_head,dmr_tx_done,ev_switch,ev_aux,ev_dmr,ev_domain,star_split,failover,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_is_tx,chan_a_boff_runs,chan_a_err_warning,chan_a_tec,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_is_tx,chan_b_boff_runs,chan_b_err_warning,chan_b_tec,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc);
+module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,view_on,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,view_cap_rearm,rx_stored,rx_overrun,rx_ready,rx_count,rx_head,dmr_tx_done,ev_switch,ev_aux,ev_dmr,ev_domain,star_split,failover,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_is_tx,chan_a_boff_runs,chan_a_err_warning,chan_a_tec,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_is_tx,chan_b_boff_runs,chan_b_err_warning,chan_b_tec,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [5:0] HISTORY = 6'd32;
@@ -845,6 +862,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     input wire  view_afm;
     input wire  [31:0] view_acr;
     input wire  [31:0] view_amr;
+    input wire  [1:0] view_cap_rearm;
     output reg  rx_stored;
     output reg  rx_overrun;
     output reg  rx_ready;
@@ -1214,6 +1232,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     reg  caps__ew_b;
     reg  caps__rearm_err;
     reg  caps__rearm_alc;
+    reg  [1:0] caps__rearm_chan;
     wire  [31:0] caps__cap_a;
     wire  [31:0] caps__cap_b;
     wire  caps__ev_err_warning;
@@ -1861,6 +1880,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .ew_b(caps__ew_b),
         .rearm_err(caps__rearm_err),
         .rearm_alc(caps__rearm_alc),
+        .rearm_chan(caps__rearm_chan),
         .cap_a(caps__cap_a),
         .cap_b(caps__cap_b),
         .ev_err_warning(caps__ev_err_warning),
@@ -2281,6 +2301,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         caps__ew_b = chan_b__err_warning;
         caps__rearm_err = regs__rearm_err;
         caps__rearm_alc = regs__rearm_alc;
+        caps__rearm_chan = view_cap_rearm;
         mb_id_word = zero31;
         mb_mask = zero29;
         mb_state_word = zero32;
@@ -3012,7 +3033,7 @@ module drcc_pelican_apb__pelican__core__busoff(clk,rst,busoff_manual,recover,err
 endmodule // drcc_pelican_apb__pelican__core__busoff
 
 
-module drcc_pelican_apb__pelican__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
+module drcc_pelican_apb__pelican__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,rearm_chan,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
 
     // Module arguments
     input wire  clk;
@@ -3033,6 +3054,7 @@ module drcc_pelican_apb__pelican__core__caps(clk,rst,err_valid_a,err_kind_a,err_
     input wire  ew_b;
     input wire  rearm_err;
     input wire  rearm_alc;
+    input wire  [1:0] rearm_chan;
     output reg  [31:0] cap_a;
     output reg  [31:0] cap_b;
     output reg  ev_err_warning;
@@ -3086,6 +3108,12 @@ module drcc_pelican_apb__pelican__core__caps(clk,rst,err_valid_a,err_kind_a,err_
     reg  ew_b_prev__d;
     reg  ew_b_prev__q;
 
+    // Local signals
+    reg  rearm_err_a;
+    reg  rearm_err_b;
+    reg  rearm_alc_a;
+    reg  rearm_alc_b;
+
     // Update code
     always @(*) begin
         err_a__d = err_a__q;
@@ -3094,28 +3122,32 @@ module drcc_pelican_apb__pelican__core__caps(clk,rst,err_valid_a,err_kind_a,err_
         alc_b_q__d = alc_b_q__q;
         ew_a_prev__d = ew_a_prev__q;
         ew_b_prev__d = ew_b_prev__q;
-        if (err_valid_a & (~err_a__q[32'h9] | rearm_err)) begin
+        rearm_err_a = rearm_err | rearm_chan[32'h0];
+        rearm_err_b = rearm_err | rearm_chan[32'h1];
+        rearm_alc_a = rearm_alc | rearm_chan[32'h0];
+        rearm_alc_b = rearm_alc | rearm_chan[32'h1];
+        if (err_valid_a & (~err_a__q[32'h9] | rearm_err_a)) begin
             err_a__d = ((err_kind_a) & 10'h3ff) | (((err_field_a) & 10'h3ff) << 32'h3) | (((err_tx_a) & 10'h3ff) << 32'h8) | (((1'b1) & 10'h3ff) << 32'h9);
         end
-        else if (rearm_err) begin
+        else if (rearm_err_a) begin
             err_a__d = err_a__q & keep_err;
         end
-        if (err_valid_b & (~err_b__q[32'h9] | rearm_err)) begin
+        if (err_valid_b & (~err_b__q[32'h9] | rearm_err_b)) begin
             err_b__d = ((err_kind_b) & 10'h3ff) | (((err_field_b) & 10'h3ff) << 32'h3) | (((err_tx_b) & 10'h3ff) << 32'h8) | (((1'b1) & 10'h3ff) << 32'h9);
         end
-        else if (rearm_err) begin
+        else if (rearm_err_b) begin
             err_b__d = err_b__q & keep_err;
         end
-        if (arb_lost_a & (~alc_a_q__q[32'h5] | rearm_alc)) begin
+        if (arb_lost_a & (~alc_a_q__q[32'h5] | rearm_alc_a)) begin
             alc_a_q__d = ((alc_a) & 6'h3f) | (((1'b1) & 6'h3f) << 32'h5);
         end
-        else if (rearm_alc) begin
+        else if (rearm_alc_a) begin
             alc_a_q__d = alc_a_q__q & keep_alc;
         end
-        if (arb_lost_b & (~alc_b_q__q[32'h5] | rearm_alc)) begin
+        if (arb_lost_b & (~alc_b_q__q[32'h5] | rearm_alc_b)) begin
             alc_b_q__d = ((alc_b) & 6'h3f) | (((1'b1) & 6'h3f) << 32'h5);
         end
-        else if (rearm_alc) begin
+        else if (rearm_alc_b) begin
             alc_b_q__d = alc_b_q__q & keep_alc;
         end
         ew_a_prev__d = ew_a;
@@ -13977,7 +14009,7 @@ module drcc_pelican_apb__pelican__core__txbuf__ram(clk,read_address,read_enable,
 endmodule // drcc_pelican_apb__pelican__core__txbuf__ram
 
 
-module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,state,tx_channel,failover,tx_success,aux_a_state,aux_b_state,dmr_state,acl,dmr_tx_done,star_split,rx_overrun,rx_ready,rx_count,rx_head,ev_switch,ev_aux,ev_dmr,ev_domain,chan_a_err_state,chan_a_err_warning,chan_a_tec,chan_a_rec,chan_a_boff_runs,chan_a_field,chan_a_is_tx,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_err_state,chan_b_err_warning,chan_b_tec,chan_b_rec,chan_b_boff_runs,chan_b_field,chan_b_is_tx,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr);
+module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,state,tx_channel,failover,tx_success,aux_a_state,aux_b_state,dmr_state,acl,dmr_tx_done,star_split,rx_overrun,rx_ready,rx_count,rx_head,ev_switch,ev_aux,ev_dmr,ev_domain,chan_a_err_state,chan_a_err_warning,chan_a_tec,chan_a_rec,chan_a_boff_runs,chan_a_field,chan_a_is_tx,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_err_state,chan_b_err_warning,chan_b_tec,chan_b_rec,chan_b_boff_runs,chan_b_field,chan_b_is_tx,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,view_cap_rearm,nat_cyc,nat_we,nat_adr,nat_wdat,nat_rdat,nat_err);
 
     // Module arguments
     input wire  clk;
@@ -14058,6 +14090,13 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     output reg  view_afm;
     output reg  [31:0] view_acr;
     output reg  [31:0] view_amr;
+    output reg  [1:0] view_cap_rearm;
+    output reg  nat_cyc;
+    output reg  nat_we;
+    output reg  [5:0] nat_adr;
+    output reg  [31:0] nat_wdat;
+    input wire  [31:0] nat_rdat;
+    input wire  nat_err;
 
     // Constant declarations
     localparam  a_mod = 7'b0;
@@ -14227,7 +14266,6 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     reg  [6:0] ext__addr;
     reg  [7:0] ext__wdata;
     reg  ext__rm;
-    reg  ext__hrm;
     wire  [7:0] ext__rdata;
     reg  ext__ev_switch;
     reg  ext__ev_aux;
@@ -14235,6 +14273,7 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     reg  ext__ev_domain;
     reg  ext__ev_err_state;
     reg  ext__ev_bus;
+    reg  ext__ev_win;
     reg  ext__ev_ign;
     reg  ext__u;
     reg  ext__failover;
@@ -14255,6 +14294,21 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     wire  [3:0] ext__xk;
     wire  ext__reconfig;
     wire  ext__xir_pending;
+    reg  win__clk;
+    reg  win__rst;
+    reg  win__wr;
+    reg  [6:0] win__addr;
+    reg  [7:0] win__wdata;
+    reg  win__hrm;
+    wire  [7:0] win__rdata;
+    wire  win__refused;
+    wire  win__nat_cyc;
+    wire  win__nat_we;
+    wire  [5:0] win__nat_adr;
+    wire  [31:0] win__nat_wdat;
+    reg  [31:0] win__nat_rdat;
+    reg  win__nat_err;
+    wire  [1:0] win__cap_rearm;
     reg  txb__clk;
     reg  txb__rst;
     reg  txb__wr;
@@ -14444,7 +14498,6 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .addr(ext__addr),
         .wdata(ext__wdata),
         .rm(ext__rm),
-        .hrm(ext__hrm),
         .rdata(ext__rdata),
         .ev_switch(ext__ev_switch),
         .ev_aux(ext__ev_aux),
@@ -14452,6 +14505,7 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .ev_domain(ext__ev_domain),
         .ev_err_state(ext__ev_err_state),
         .ev_bus(ext__ev_bus),
+        .ev_win(ext__ev_win),
         .ev_ign(ext__ev_ign),
         .u(ext__u),
         .failover(ext__failover),
@@ -14472,6 +14526,23 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .xk(ext__xk),
         .reconfig(ext__reconfig),
         .xir_pending(ext__xir_pending)
+    );
+    drcc_pelican_apb__pelican__view__win win(
+        .clk(win__clk),
+        .rst(win__rst),
+        .wr(win__wr),
+        .addr(win__addr),
+        .wdata(win__wdata),
+        .hrm(win__hrm),
+        .rdata(win__rdata),
+        .refused(win__refused),
+        .nat_cyc(win__nat_cyc),
+        .nat_we(win__nat_we),
+        .nat_adr(win__nat_adr),
+        .nat_wdat(win__nat_wdat),
+        .nat_rdat(win__nat_rdat),
+        .nat_err(win__nat_err),
+        .cap_rearm(win__cap_rearm)
     );
     drcc_pelican_apb__pelican__view__txb txb(
         .clk(txb__clk),
@@ -14539,6 +14610,7 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         ints__clk = clk;
         cfg__clk = clk;
         ext__clk = clk;
+        win__clk = clk;
         txb__clk = clk;
         rx_start__clk = clk;
         alc__clk = clk;
@@ -14679,7 +14751,6 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         ext__addr = lanes__reg_num;
         ext__wdata = lanes__wbyte;
         ext__rm = mc__rm;
-        ext__hrm = mc__hrm;
         ext__ev_switch = ev_switch;
         ext__ev_aux = ev_aux;
         ext__ev_dmr = ev_dmr;
@@ -14688,6 +14759,7 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         err_state_q__d = (((chan_b_err_state) & 4'hf) << 32'h2) | ((chan_a_err_state) & 4'hf);
         ext__ev_bus = take & lanes__refused;
         ext__ev_ign = ign;
+        ext__ev_win = win__refused;
         ext__u = logical__u;
         ext__failover = failover;
         ext__aux_a_state = aux_a_state;
@@ -14703,8 +14775,20 @@ module drcc_pelican_apb__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         ext__dmr_state = dmr_state;
         ext__acl = acl;
         ext__split = star_split;
+        win__rst = rst;
+        win__wr = wr;
+        win__addr = lanes__reg_num;
+        win__wdata = lanes__wbyte;
+        win__hrm = mc__hrm;
+        win__nat_rdat = nat_rdat;
+        win__nat_err = nat_err;
+        nat_cyc = win__nat_cyc;
+        nat_we = win__nat_we;
+        nat_adr = win__nat_adr;
+        nat_wdat = win__nat_wdat;
+        view_cap_rearm = win__cap_rearm;
         sr = (((logical__bs) & 8'hff) << 32'h7) | (((logical__es) & 8'hff) << 32'h6) | (((logical__ts) & 8'hff) << 32'h5) | (((logical__rs) & 8'hff) << 32'h4) | (((mc__tcs) & 8'hff) << 32'h3) | (((mc__tbs) & 8'hff) << 32'h2) | (((mc__dos) & 8'hff) << 32'h1) | ((rx_ready) & 8'hff);
-        rbyte = cfg__rdata | ext__rdata | txb__rdata;
+        rbyte = cfg__rdata | ext__rdata | win__rdata | txb__rdata;
         if (~mc__rm) begin
             rbyte = rbyte | rxwin__rdata;
         end
@@ -15258,7 +15342,7 @@ module drcc_pelican_apb__pelican__view__ecc_code(err_kind,err_field,err_tx,passi
 endmodule // drcc_pelican_apb__pelican__view__ecc_code
 
 
-module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdata,ev_switch,ev_aux,ev_dmr,ev_domain,ev_err_state,ev_bus,ev_ign,u,failover,aux_a_state,aux_b_state,boh,rbs,head_ch,err_state_a,err_state_b,ew_a,ew_b,fsm_state,dmr_state,acl,split,xmode,xk,reconfig,xir_pending);
+module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,rdata,ev_switch,ev_aux,ev_dmr,ev_domain,ev_err_state,ev_bus,ev_win,ev_ign,u,failover,aux_a_state,aux_b_state,boh,rbs,head_ch,err_state_a,err_state_b,ew_a,ew_b,fsm_state,dmr_state,acl,split,xmode,xk,reconfig,xir_pending);
 
     // Module arguments
     input wire  clk;
@@ -15268,7 +15352,6 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
     input wire  [6:0] addr;
     input wire  [7:0] wdata;
     input wire  rm;
-    input wire  hrm;
     output reg  [7:0] rdata;
     input wire  ev_switch;
     input wire  ev_aux;
@@ -15276,6 +15359,7 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
     input wire  ev_domain;
     input wire  ev_err_state;
     input wire  ev_bus;
+    input wire  ev_win;
     input wire  ev_ign;
     input wire  u;
     input wire  failover;
@@ -15309,34 +15393,17 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
     localparam  a_xfsm = 7'b1110111;
     localparam  a_xir = 7'b1111000;
     localparam  a_xier = 7'b1111001;
-    localparam  a_xwin_idx = 7'b1111010;
-    localparam  a_xwin_cmd = 7'b1111011;
     localparam  a_xid0 = 7'b1110000;
     localparam  a_xid1 = 7'b1110001;
     localparam  a_xver = 7'b1110010;
-    localparam  page_xwin_d = 5'b11111;
     localparam  xid0 = 8'h44;
     localparam  xid1 = 8'h52;
     localparam  xver = 8'h10;
     localparam  mode_dmr = 2'b10;
-    localparam  cmd_commit = 8'h1;
-    localparam  cmd_reload = 8'h2;
     localparam  xmode_mask = 8'h7f;
-    localparam  byte_mask = 32'hff;
     localparam  k_one = 4'h1;
     localparam  zero4 = 4'h0;
-    localparam  zero6 = 6'b0;
     localparam  zero8 = 8'h0;
-    localparam  zero32 = 32'h0;
-    localparam  i_rmb_cfg = 6'b11;
-    localparam  i_dedup_cfg = 6'b100;
-    localparam  i_dmr_cfg = 6'b11001;
-    localparam  i_dmr_time = 6'b11010;
-    localparam  i_dmr_cs = 6'b11011;
-    localparam  i_mb_sel = 6'b11111;
-    localparam  i_mb_id = 6'b100000;
-    localparam  i_mb_mask = 6'b100001;
-    localparam  i_mb_cfg = 6'b100010;
 
     // Stub signals
     reg  [7:0] xmode_q__d;
@@ -15347,20 +15414,11 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
     reg  [7:0] xir__q;
     reg  [7:0] xier__d;
     reg  [7:0] xier__q;
-    reg  [5:0] xwin_idx__d;
-    reg  [5:0] xwin_idx__q;
-    reg  [31:0] xwin_d__d;
-    reg  [31:0] xwin_d__q;
-    reg  xwin_refused__d;
-    reg  xwin_refused__q;
 
     // Local signals
     reg  ign;
-    reg  win_refused;
     reg  [7:0] xir_set;
     reg  [3:0] xk_new;
-    reg  idx_ok;
-    reg  [4:0] d_shift;
     reg  ign_any;
     reg  head_b;
 
@@ -15370,18 +15428,12 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
         xk_q__d = xk_q__q;
         xir__d = xir__q;
         xier__d = xier__q;
-        xwin_idx__d = xwin_idx__q;
-        xwin_d__d = xwin_d__q;
-        xwin_refused__d = xwin_refused__q;
-        d_shift = ((addr[(32'h0)+:(2)]) & 5'h1f) << 32'h3;
-        idx_ok = (xwin_idx__q == i_rmb_cfg) | (xwin_idx__q == i_dedup_cfg) | (xwin_idx__q == i_dmr_cfg) | (xwin_idx__q == i_dmr_time) | (xwin_idx__q == i_dmr_cs) | (xwin_idx__q == i_mb_sel) | (xwin_idx__q == i_mb_id) | (xwin_idx__q == i_mb_mask) | (xwin_idx__q == i_mb_cfg);
         head_b = rbs & head_ch;
         xk_new = wdata[(32'h0)+:(4)];
         if (xk_new == zero4) begin
             xk_new = k_one;
         end
         ign = 1'b0;
-        win_refused = 1'b0;
         reconfig = 1'b0;
         if (wr) begin
             if (addr == a_xmode) begin
@@ -15405,25 +15457,9 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
             if (addr == a_xier) begin
                 xier__d = wdata;
             end
-            if (addr == a_xwin_idx) begin
-                xwin_idx__d = wdata[(32'h0)+:(6)];
-                xwin_d__d = zero32;
-            end
-            if (addr == a_xwin_cmd) begin
-                if (wdata == cmd_commit) begin
-                    win_refused = ~(hrm & idx_ok);
-                    xwin_refused__d = win_refused;
-                end
-                if (wdata == cmd_reload) begin
-                    xwin_d__d = zero32;
-                end
-            end
-            if (addr[(32'h2)+:(5)] == page_xwin_d) begin
-                xwin_d__d = (xwin_d__q & ~(byte_mask << d_shift)) | (((wdata) & 32'hffffffff) << d_shift);
-            end
         end
         ign_any = ign | ev_ign;
-        xir_set = (((ign_any) & 8'hff) << 32'h7) | (((win_refused) & 8'hff) << 32'h6) | (((ev_bus) & 8'hff) << 32'h5) | (((ev_err_state) & 8'hff) << 32'h4) | (((ev_domain) & 8'hff) << 32'h3) | (((ev_dmr) & 8'hff) << 32'h2) | (((ev_aux) & 8'hff) << 32'h1) | ((ev_switch) & 8'hff);
+        xir_set = (((ign_any) & 8'hff) << 32'h7) | (((ev_win) & 8'hff) << 32'h6) | (((ev_bus) & 8'hff) << 32'h5) | (((ev_err_state) & 8'hff) << 32'h4) | (((ev_domain) & 8'hff) << 32'h3) | (((ev_dmr) & 8'hff) << 32'h2) | (((ev_aux) & 8'hff) << 32'h1) | ((ev_switch) & 8'hff);
         if (rd && (addr == a_xir)) begin
             xir__d = xir_set;
         end
@@ -15435,9 +15471,6 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
             xk_q__d = xk_reset;
             xir__d = zero8;
             xier__d = zero8;
-            xwin_idx__d = zero6;
-            xwin_d__d = zero32;
-            xwin_refused__d = 1'b0;
         end
         rdata = zero8;
         if (addr == a_xid0) begin
@@ -15470,32 +15503,6 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
         if (addr == a_xier) begin
             rdata = xier__q;
         end
-        if (addr == a_xwin_idx) begin
-            rdata = ((xwin_idx__q) & 8'hff);
-        end
-        if (addr == a_xwin_cmd) begin
-            rdata = ((xwin_refused__q) & 8'hff);
-        end
-        if (addr[(32'h2)+:(5)] == page_xwin_d) begin
-            case (addr[(32'h0)+:(2)])
-                0:
-                    begin
-                        rdata = xwin_d__q[(32'h0)+:(8)];
-                    end
-                1:
-                    begin
-                        rdata = xwin_d__q[(32'h8)+:(8)];
-                    end
-                2:
-                    begin
-                        rdata = xwin_d__q[(32'h10)+:(8)];
-                    end
-                default:
-                    begin
-                        rdata = xwin_d__q[(32'h18)+:(8)];
-                    end
-            endcase
-        end
         xmode = xmode_q__q;
         xk = xk_q__q;
         xir_pending = |(xir__q & xier__q);
@@ -15507,9 +15514,6 @@ module drcc_pelican_apb__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,hrm,rdat
         xk_q__q <= xk_q__d;
         xir__q <= xir__d;
         xier__q <= xier__d;
-        xwin_idx__q <= xwin_idx__d;
-        xwin_d__q <= xwin_d__d;
-        xwin_refused__q <= xwin_refused__d;
     end
 
 endmodule // drcc_pelican_apb__pelican__view__ext
@@ -16586,3 +16590,168 @@ module drcc_pelican_apb__pelican__view__txb(clk,rst,wr,addr,wdata,rm,tbs,rdata,f
     end
 
 endmodule // drcc_pelican_apb__pelican__view__txb
+
+
+module drcc_pelican_apb__pelican__view__win(clk,rst,wr,addr,wdata,hrm,rdata,refused,nat_cyc,nat_we,nat_adr,nat_wdat,nat_rdat,nat_err,cap_rearm);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wr;
+    input wire  [6:0] addr;
+    input wire  [7:0] wdata;
+    input wire  hrm;
+    output reg  [7:0] rdata;
+    output reg  refused;
+    output reg  nat_cyc;
+    output reg  nat_we;
+    output reg  [5:0] nat_adr;
+    output reg  [31:0] nat_wdat;
+    input wire  [31:0] nat_rdat;
+    input wire  nat_err;
+    output reg  [1:0] cap_rearm;
+
+    // Constant declarations
+    localparam  a_xwin_idx = 7'b1111010;
+    localparam  a_xwin_cmd = 7'b1111011;
+    localparam  page_xwin_d = 5'b11111;
+    localparam  cmd_commit = 8'h1;
+    localparam  cmd_reload = 8'h2;
+    localparam  byte_mask = 32'hff;
+    localparam  zero2 = 2'b0;
+    localparam  zero6 = 6'b0;
+    localparam  zero8 = 8'h0;
+    localparam  zero32 = 32'h0;
+    localparam  bit_a = 2'b1;
+    localparam  bit_b = 2'b10;
+    localparam  i_rmb_cfg = 6'b11;
+    localparam  i_dedup_cfg = 6'b100;
+    localparam  i_int_status = 6'b110;
+    localparam  i_int_enable = 6'b111;
+    localparam  i_tx_id = 6'b1100;
+    localparam  i_rx_cmd = 6'b10101;
+    localparam  i_dmr_cfg = 6'b11001;
+    localparam  i_dmr_time = 6'b11010;
+    localparam  i_dmr_cs = 6'b11011;
+    localparam  i_mb_sel = 6'b11111;
+    localparam  i_mb_id = 6'b100000;
+    localparam  i_mb_mask = 6'b100001;
+    localparam  i_mb_cfg = 6'b100010;
+    localparam  i_cap_a = 6'b101000;
+    localparam  i_cap_b = 6'b101001;
+
+    // Stub signals
+    reg  [5:0] xwin_idx__d;
+    reg  [5:0] xwin_idx__q;
+    reg  [31:0] xwin_d__d;
+    reg  [31:0] xwin_d__q;
+    reg  xwin_refused__d;
+    reg  xwin_refused__q;
+    reg  load_q__d;
+    reg  load_q__q;
+    reg  commit_q__d;
+    reg  commit_q__q;
+
+    // Local signals
+    reg  load;
+    reg  commit;
+    reg  accept;
+    reg  [5:0] load_idx;
+    reg  owned;
+    reg  idx_ok;
+    reg  [4:0] d_shift;
+
+    // Update code
+    always @(*) begin
+        xwin_idx__d = xwin_idx__q;
+        xwin_d__d = xwin_d__q;
+        xwin_refused__d = xwin_refused__q;
+        load_q__d = load_q__q;
+        commit_q__d = commit_q__q;
+        d_shift = ((addr[(32'h0)+:(2)]) & 5'h1f) << 32'h3;
+        idx_ok = (xwin_idx__q == i_rmb_cfg) | (xwin_idx__q == i_dedup_cfg) | (xwin_idx__q == i_dmr_cfg) | (xwin_idx__q == i_dmr_time) | (xwin_idx__q == i_dmr_cs) | (xwin_idx__q == i_mb_sel) | (xwin_idx__q == i_mb_id) | (xwin_idx__q == i_mb_mask) | (xwin_idx__q == i_mb_cfg);
+        load = wr & ((addr == a_xwin_idx) | ((addr == a_xwin_cmd) & (wdata == cmd_reload)));
+        commit = wr & (addr == a_xwin_cmd) & (wdata == cmd_commit);
+        accept = commit & hrm & idx_ok;
+        if (addr == a_xwin_idx) begin
+            load_idx = wdata[(32'h0)+:(6)];
+        end
+        else begin
+            load_idx = xwin_idx__q;
+        end
+        owned = (load_idx == i_int_status) | (load_idx == i_int_enable) | ((load_idx >= i_tx_id) & (load_idx <= i_rx_cmd));
+        nat_cyc = (load & ~owned) | accept;
+        nat_we = accept;
+        nat_adr = load_idx;
+        nat_wdat = xwin_d__q;
+        cap_rearm = zero2;
+        if (load & (load_idx == i_cap_a)) begin
+            cap_rearm = bit_a;
+        end
+        if (load & (load_idx == i_cap_b)) begin
+            cap_rearm = bit_b;
+        end
+        refused = (commit & ~accept) | (commit_q__q & nat_err);
+        load_q__d = load;
+        commit_q__d = accept;
+        if (load_q__q) begin
+            xwin_d__d = nat_rdat;
+        end
+        if (wr & (addr == a_xwin_idx)) begin
+            xwin_idx__d = wdata[(32'h0)+:(6)];
+        end
+        if (commit) begin
+            xwin_refused__d = ~accept;
+        end
+        if (commit_q__q & nat_err) begin
+            xwin_refused__d = 1'b1;
+        end
+        if (wr & (addr[(32'h2)+:(5)] == page_xwin_d)) begin
+            xwin_d__d = (xwin_d__q & ~(byte_mask << d_shift)) | (((wdata) & 32'hffffffff) << d_shift);
+        end
+        if (rst) begin
+            xwin_idx__d = zero6;
+            xwin_d__d = zero32;
+            xwin_refused__d = 1'b0;
+            load_q__d = 1'b0;
+            commit_q__d = 1'b0;
+        end
+        rdata = zero8;
+        if (addr == a_xwin_idx) begin
+            rdata = ((xwin_idx__q) & 8'hff);
+        end
+        if (addr == a_xwin_cmd) begin
+            rdata = ((xwin_refused__q) & 8'hff);
+        end
+        if (addr[(32'h2)+:(5)] == page_xwin_d) begin
+            case (addr[(32'h0)+:(2)])
+                0:
+                    begin
+                        rdata = xwin_d__q[(32'h0)+:(8)];
+                    end
+                1:
+                    begin
+                        rdata = xwin_d__q[(32'h8)+:(8)];
+                    end
+                2:
+                    begin
+                        rdata = xwin_d__q[(32'h10)+:(8)];
+                    end
+                default:
+                    begin
+                        rdata = xwin_d__q[(32'h18)+:(8)];
+                    end
+            endcase
+        end
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        xwin_idx__q <= xwin_idx__d;
+        xwin_d__q <= xwin_d__d;
+        xwin_refused__q <= xwin_refused__d;
+        load_q__q <= load_q__d;
+        commit_q__q <= commit_q__d;
+    end
+
+endmodule // drcc_pelican_apb__pelican__view__win

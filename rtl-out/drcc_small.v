@@ -362,6 +362,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
     reg  core__view_afm;
     reg  [31:0] core__view_acr;
     reg  [31:0] core__view_amr;
+    reg  [1:0] core__view_cap_rearm;
     wire  core__rx_stored;
     wire  core__rx_overrun;
     wire  core__rx_ready;
@@ -467,6 +468,7 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         .view_afm(core__view_afm),
         .view_acr(core__view_acr),
         .view_amr(core__view_amr),
+        .view_cap_rearm(core__view_cap_rearm),
         .rx_stored(core__rx_stored),
         .rx_overrun(core__rx_overrun),
         .rx_ready(core__rx_ready),
@@ -573,12 +575,13 @@ module drcc_small(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,w
         core__view_afm = 1'b0;
         core__view_acr = zero32;
         core__view_amr = zero32;
+        core__view_cap_rearm = zero2;
     end
 
 endmodule // drcc_small
 
 
-module drcc_small__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,view_on,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,rx_stored,rx_overrun,rx_ready,rx_count,rx_head,dmr_tx_done,ev_switch,ev_aux,ev_dmr,ev_domain,star_split,failover,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_is_tx,chan_a_boff_runs,chan_a_err_warning,chan_a_tec,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_is_tx,chan_b_boff_runs,chan_b_err_warning,chan_b_tec,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc);
+module drcc_small__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,chan_a_tx,chan_a_rx,chan_b_tx,chan_b_rx,state,tx_channel,transmission_ack,chan_a_transmission_req,chan_b_transmission_req,tx_success,tx_ok_channel,tx_failure,tx_failure_channel,tx_going_on,chan_a_bsp_tx_err_cnt,chan_a_bsp_node_error_passive,chan_b_bsp_tx_err_cnt,chan_b_bsp_node_error_passive,aux_a_state,aux_b_state,chan_a_sample_point,chan_b_sample_point,chan_a_field,chan_b_field,chan_a_rec,chan_b_rec,chan_a_err_state,chan_b_err_state,dmr_state,acl,dcl_tx_fault,dcl_rx_fault,rcl_tx_fault,rcl_rx_fault,dmr_tick,view_on,view_ctrl,view_btr,view_chan_reset,view_push,view_push_q,view_push_frame,view_pop,view_tx_single,view_tx_abort,view_boff_hold,view_offer_s,view_frame_s,view_gate_on,view_afm,view_acr,view_amr,view_cap_rearm,rx_stored,rx_overrun,rx_ready,rx_count,rx_head,dmr_tx_done,ev_switch,ev_aux,ev_dmr,ev_domain,star_split,failover,chan_a_tx_done,chan_a_tx_failed,chan_a_tx_pending,chan_a_is_tx,chan_a_boff_runs,chan_a_err_warning,chan_a_tec,chan_a_err_valid,chan_a_err_kind,chan_a_err_field,chan_a_err_tx,chan_a_arb_lost,chan_a_alc,chan_b_tx_done,chan_b_tx_failed,chan_b_tx_pending,chan_b_is_tx,chan_b_boff_runs,chan_b_err_warning,chan_b_tec,chan_b_err_valid,chan_b_err_kind,chan_b_err_field,chan_b_err_tx,chan_b_arb_lost,chan_b_alc);
     parameter [5:0] RX_FIFO_DEPTH = 6'd8;
     parameter [3:0] TX_QUEUE_DEPTH = 4'd4;
     parameter [5:0] HISTORY = 6'd16;
@@ -650,6 +653,7 @@ module drcc_small__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
     input wire  view_afm;
     input wire  [31:0] view_acr;
     input wire  [31:0] view_amr;
+    input wire  [1:0] view_cap_rearm;
     output reg  rx_stored;
     output reg  rx_overrun;
     output reg  rx_ready;
@@ -981,6 +985,7 @@ module drcc_small__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
     reg  caps__ew_b;
     reg  caps__rearm_err;
     reg  caps__rearm_alc;
+    reg  [1:0] caps__rearm_chan;
     wire  [31:0] caps__cap_a;
     wire  [31:0] caps__cap_b;
     wire  caps__ev_err_warning;
@@ -1586,6 +1591,7 @@ module drcc_small__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
         .ew_b(caps__ew_b),
         .rearm_err(caps__rearm_err),
         .rearm_alc(caps__rearm_alc),
+        .rearm_chan(caps__rearm_chan),
         .cap_a(caps__cap_a),
         .cap_b(caps__cap_b),
         .ev_err_warning(caps__ev_err_warning),
@@ -2006,6 +2012,7 @@ module drcc_small__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_s
         caps__ew_b = chan_b__err_warning;
         caps__rearm_err = regs__rearm_err;
         caps__rearm_alc = regs__rearm_alc;
+        caps__rearm_chan = view_cap_rearm;
         mb_id_word = zero31;
         mb_mask = zero29;
         mb_state_word = zero32;
@@ -2696,7 +2703,7 @@ module drcc_small__core__busoff(clk,rst,busoff_manual,recover,err_state,boff_hol
 endmodule // drcc_small__core__busoff
 
 
-module drcc_small__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
+module drcc_small__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_a,arb_lost_a,alc_a,ew_a,err_valid_b,err_kind_b,err_field_b,err_tx_b,arb_lost_b,alc_b,ew_b,rearm_err,rearm_alc,rearm_chan,cap_a,cap_b,ev_err_warning,ev_arb_lost,ev_bus_error);
 
     // Module arguments
     input wire  clk;
@@ -2717,6 +2724,7 @@ module drcc_small__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_
     input wire  ew_b;
     input wire  rearm_err;
     input wire  rearm_alc;
+    input wire  [1:0] rearm_chan;
     output reg  [31:0] cap_a;
     output reg  [31:0] cap_b;
     output reg  ev_err_warning;
@@ -2770,6 +2778,12 @@ module drcc_small__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_
     reg  ew_b_prev__d;
     reg  ew_b_prev__q;
 
+    // Local signals
+    reg  rearm_err_a;
+    reg  rearm_err_b;
+    reg  rearm_alc_a;
+    reg  rearm_alc_b;
+
     // Update code
     always @(*) begin
         err_a__d = err_a__q;
@@ -2778,28 +2792,32 @@ module drcc_small__core__caps(clk,rst,err_valid_a,err_kind_a,err_field_a,err_tx_
         alc_b_q__d = alc_b_q__q;
         ew_a_prev__d = ew_a_prev__q;
         ew_b_prev__d = ew_b_prev__q;
-        if (err_valid_a & (~err_a__q[32'h9] | rearm_err)) begin
+        rearm_err_a = rearm_err | rearm_chan[32'h0];
+        rearm_err_b = rearm_err | rearm_chan[32'h1];
+        rearm_alc_a = rearm_alc | rearm_chan[32'h0];
+        rearm_alc_b = rearm_alc | rearm_chan[32'h1];
+        if (err_valid_a & (~err_a__q[32'h9] | rearm_err_a)) begin
             err_a__d = ((err_kind_a) & 10'h3ff) | (((err_field_a) & 10'h3ff) << 32'h3) | (((err_tx_a) & 10'h3ff) << 32'h8) | (((1'b1) & 10'h3ff) << 32'h9);
         end
-        else if (rearm_err) begin
+        else if (rearm_err_a) begin
             err_a__d = err_a__q & keep_err;
         end
-        if (err_valid_b & (~err_b__q[32'h9] | rearm_err)) begin
+        if (err_valid_b & (~err_b__q[32'h9] | rearm_err_b)) begin
             err_b__d = ((err_kind_b) & 10'h3ff) | (((err_field_b) & 10'h3ff) << 32'h3) | (((err_tx_b) & 10'h3ff) << 32'h8) | (((1'b1) & 10'h3ff) << 32'h9);
         end
-        else if (rearm_err) begin
+        else if (rearm_err_b) begin
             err_b__d = err_b__q & keep_err;
         end
-        if (arb_lost_a & (~alc_a_q__q[32'h5] | rearm_alc)) begin
+        if (arb_lost_a & (~alc_a_q__q[32'h5] | rearm_alc_a)) begin
             alc_a_q__d = ((alc_a) & 6'h3f) | (((1'b1) & 6'h3f) << 32'h5);
         end
-        else if (rearm_alc) begin
+        else if (rearm_alc_a) begin
             alc_a_q__d = alc_a_q__q & keep_alc;
         end
-        if (arb_lost_b & (~alc_b_q__q[32'h5] | rearm_alc)) begin
+        if (arb_lost_b & (~alc_b_q__q[32'h5] | rearm_alc_b)) begin
             alc_b_q__d = ((alc_b) & 6'h3f) | (((1'b1) & 6'h3f) << 32'h5);
         end
-        else if (rearm_alc) begin
+        else if (rearm_alc_b) begin
             alc_b_q__d = alc_b_q__q & keep_alc;
         end
         ew_a_prev__d = ew_a;

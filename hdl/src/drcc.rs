@@ -246,5 +246,6 @@ impl<const M: usize> Logic for DrccTop<M> {
         self.core.view_afm.next = false;
         self.core.view_acr.next = self.zero32.val();
         self.core.view_amr.next = self.zero32.val();
+        self.core.view_cap_rearm.next = self.zero2.val();
     }
 }

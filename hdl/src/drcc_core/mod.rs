@@ -190,6 +190,9 @@ pub struct DrccCore<const M: usize> {
     pub view_acr: Signal<In, Bits<32>>,
     /// `AMR0..3`, `AMR0` in [7:0].
     pub view_amr: Signal<In, Bits<32>>,
+    /// The view's native window loaded `CAP_A` (bit 0) or `CAP_B` (bit 1): that
+    /// channel's captures re-arm at this edge (P-X-3).
+    pub view_cap_rearm: Signal<In, Bits<2>>,
     // ---- host view outputs: what a view reads (unused by the native top) ----
     /// The RX writer stored a frame in the FIFO (one-clock pulse).
     pub rx_stored: Signal<Out, Bit>,

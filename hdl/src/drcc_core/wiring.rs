@@ -111,6 +111,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.caps.ew_b.next = self.chan_b.err_warning.val();
         self.caps.rearm_err.next = self.regs.rearm_err.val();
         self.caps.rearm_alc.next = self.regs.rearm_alc.val();
+        self.caps.rearm_chan.next = self.view_cap_rearm.val();
 
         // ---- the mailboxes (DMR contract §4), generated with M > 0 ----
         self.mb_id_word.next = self.zero31.val();

@@ -57,6 +57,9 @@ pub struct Captures {
     pub rearm_err: Signal<In, Bit>,
     /// A taken `INT_STATUS` write with `arb_lost` set: the ALC captures re-arm.
     pub rearm_alc: Signal<In, Bit>,
+    /// A host view's load of `CAP_A` (bit 0) or `CAP_B` (bit 1): both captures
+    /// of that channel re-arm (PeliCAN contract P-X-3; 0 in the native top).
+    pub rearm_chan: Signal<In, Bits<2>>,
     // ---- to the host ----
     /// `CAP_A` as it reads.
     pub cap_a: Signal<Out, Bits<32>>,
@@ -75,6 +78,11 @@ pub struct Captures {
     alc_b_q: DFF<Bits<6>>,
     ew_a_prev: DFF<Bit>,
     ew_b_prev: DFF<Bit>,
+    // ---- the re-arm of each capture ----
+    rearm_err_a: Signal<Local, Bit>,
+    rearm_err_b: Signal<Local, Bit>,
+    rearm_alc_a: Signal<Local, Bit>,
+    rearm_alc_b: Signal<Local, Bit>,
     // ---- field positions (from the table) ----
     at_err: Constant<Bits<5>>,
     at_alc: Constant<Bits<5>>,
@@ -124,6 +132,7 @@ impl Default for Captures {
             ew_b: Default::default(),
             rearm_err: Default::default(),
             rearm_alc: Default::default(),
+            rearm_chan: Default::default(),
             cap_a: Default::default(),
             cap_b: Default::default(),
             ev_err_warning: Default::default(),
@@ -135,6 +144,10 @@ impl Default for Captures {
             alc_b_q: Default::default(),
             ew_a_prev: Default::default(),
             ew_b_prev: Default::default(),
+            rearm_err_a: Default::default(),
+            rearm_err_b: Default::default(),
+            rearm_alc_a: Default::default(),
+            rearm_alc_b: Default::default(),
             at_err: lsb(&MAP, "CAP_A", "err_kind", 3),
             at_alc: lsb(&MAP, "CAP_A", "alc", 5),
             zero6: Constant::new(0.into()),
@@ -151,32 +164,36 @@ impl Logic for Captures {
         dff_setup!(self, clk, err_a, err_b, alc_a_q, alc_b_q, ew_a_prev, ew_b_prev);
         // §10.2: a capture while empty, or re-armed at this edge, loads the event;
         // a re-arm alone empties the capture
-        if self.err_valid_a.val() & (!self.err_a.q.val().get_bit(9) | self.rearm_err.val()) {
+        self.rearm_err_a.next = self.rearm_err.val() | self.rearm_chan.val().get_bit(0);
+        self.rearm_err_b.next = self.rearm_err.val() | self.rearm_chan.val().get_bit(1);
+        self.rearm_alc_a.next = self.rearm_alc.val() | self.rearm_chan.val().get_bit(0);
+        self.rearm_alc_b.next = self.rearm_alc.val() | self.rearm_chan.val().get_bit(1);
+        if self.err_valid_a.val() & (!self.err_a.q.val().get_bit(9) | self.rearm_err_a.val()) {
             self.err_a.d.next = bit_cast::<10, 3>(self.err_kind_a.val())
                 | (bit_cast::<10, 5>(self.err_field_a.val().into()) << 3)
                 | (bit_cast::<10, 1>(self.err_tx_a.val().into()) << 8)
                 | (bit_cast::<10, 1>(true.into()) << 9);
-        } else if self.rearm_err.val() {
+        } else if self.rearm_err_a.val() {
             self.err_a.d.next = self.err_a.q.val() & self.keep_err.val();
         }
-        if self.err_valid_b.val() & (!self.err_b.q.val().get_bit(9) | self.rearm_err.val()) {
+        if self.err_valid_b.val() & (!self.err_b.q.val().get_bit(9) | self.rearm_err_b.val()) {
             self.err_b.d.next = bit_cast::<10, 3>(self.err_kind_b.val())
                 | (bit_cast::<10, 5>(self.err_field_b.val().into()) << 3)
                 | (bit_cast::<10, 1>(self.err_tx_b.val().into()) << 8)
                 | (bit_cast::<10, 1>(true.into()) << 9);
-        } else if self.rearm_err.val() {
+        } else if self.rearm_err_b.val() {
             self.err_b.d.next = self.err_b.q.val() & self.keep_err.val();
         }
-        if self.arb_lost_a.val() & (!self.alc_a_q.q.val().get_bit(5) | self.rearm_alc.val()) {
+        if self.arb_lost_a.val() & (!self.alc_a_q.q.val().get_bit(5) | self.rearm_alc_a.val()) {
             self.alc_a_q.d.next =
                 bit_cast::<6, 5>(self.alc_a.val()) | (bit_cast::<6, 1>(true.into()) << 5);
-        } else if self.rearm_alc.val() {
+        } else if self.rearm_alc_a.val() {
             self.alc_a_q.d.next = self.alc_a_q.q.val() & self.keep_alc.val();
         }
-        if self.arb_lost_b.val() & (!self.alc_b_q.q.val().get_bit(5) | self.rearm_alc.val()) {
+        if self.arb_lost_b.val() & (!self.alc_b_q.q.val().get_bit(5) | self.rearm_alc_b.val()) {
             self.alc_b_q.d.next =
                 bit_cast::<6, 5>(self.alc_b.val()) | (bit_cast::<6, 1>(true.into()) << 5);
-        } else if self.rearm_alc.val() {
+        } else if self.rearm_alc_b.val() {
             self.alc_b_q.d.next = self.alc_b_q.q.val() & self.keep_alc.val();
         }
         self.ew_a_prev.d.next = self.ew_a.val();

@@ -13,18 +13,14 @@
 //! - `XIR` (120) bits are set by their events in every mode and cleared by a read
 //!   taken at the same edge, an event winning (P-X-2); `XIER` (121) gates only
 //!   the interrupt request.
-//! - The native window (P-X-3, P-X-4, the view model's interpretation 3):
-//!   `XWIN_IDX` and `XWIN_D0..3` are stored and read back; a write of
-//!   `XWIN_IDX` or `XWIN_CMD = 0x02` (reload) loads 0 into `XWIN_D0..3`; a commit
-//!   (`XWIN_CMD = 0x01`) is accepted (`XWIN_CMD[0] <= 0`) for the native indices
-//!   the contract lists while the host holds reset mode (`hrm`), refused
-//!   otherwise (`XWIN_CMD[0] <= 1`, `XIR.win`); an accepted commit changes
-//!   nothing in the core.
+//! - The native window, 122..127, is its own block
+//!   ([`super::native_window::NativeWindow`]); its refused commits come in as
+//!   the `XIR.win` event.
 
 use crate::channel::sized::Const;
 use rust_hdl::prelude::*;
 
-/// `XID0/1`, `XVER`, `XMODE`, `XK`, `XSTAT`, `XERR`, `XFSM`, `XIR`, `XIER`, `XWIN_*`.
+/// `XID0/1`, `XVER`, `XMODE`, `XK`, `XSTAT`, `XERR`, `XFSM`, `XIR`, `XIER`.
 #[derive(LogicBlock)]
 pub struct ExtensionRegs {
     // ---- clock and reset ----
@@ -43,9 +39,7 @@ pub struct ExtensionRegs {
     pub wdata: Signal<In, Bits<8>>,
     /// `MOD.RM` before the edge.
     pub rm: Signal<In, Bit>,
-    /// Host reset mode before the edge (`hrm`): window commits are taken only then.
-    pub hrm: Signal<In, Bit>,
-    /// The byte at `addr` for a read (0 outside 112..127).
+    /// The byte at `addr` for a read (0 outside 112..121).
     pub rdata: Signal<Out, Bits<8>>,
     // ---- events of this edge for XIR ----
     /// Native `INT_STATUS.switch` event.
@@ -60,6 +54,8 @@ pub struct ExtensionRegs {
     pub ev_err_state: Signal<In, Bit>,
     /// A bus access was refused (P-BUS-3).
     pub ev_bus: Signal<In, Bit>,
+    /// The native window refused a commit (P-X-4).
+    pub ev_win: Signal<In, Bit>,
     /// A write the view ignores, from outside this block (`MOD.SM`, `CMR.AT`
     /// outside the single modes, counter writes, the RX RAM).
     pub ev_ign: Signal<In, Bit>,
@@ -117,17 +113,10 @@ pub struct ExtensionRegs {
     xk_q: DFF<Bits<4>>,
     xir: DFF<Bits<8>>,
     xier: DFF<Bits<8>>,
-    xwin_idx: DFF<Bits<6>>,
-    xwin_d: DFF<Bits<32>>,
-    xwin_refused: DFF<Bit>,
     // ---- decode ----
     ign: Signal<Local, Bit>,
-    win_refused: Signal<Local, Bit>,
     xir_set: Signal<Local, Bits<8>>,
     xk_new: Signal<Local, Bits<4>>,
-    /// `XWIN_IDX` names a native register a commit may write (P-X-4).
-    idx_ok: Signal<Local, Bit>,
-    d_shift: Signal<Local, Bits<5>>,
     /// `ign` from here or outside; `RBS` with a head from channel B.
     ign_any: Signal<Local, Bit>,
     head_b: Signal<Local, Bit>,
@@ -138,37 +127,17 @@ pub struct ExtensionRegs {
     a_xfsm: Const<7, 119>,
     a_xir: Const<7, 120>,
     a_xier: Const<7, 121>,
-    a_xwin_idx: Const<7, 122>,
-    a_xwin_cmd: Const<7, 123>,
     a_xid0: Const<7, 112>,
     a_xid1: Const<7, 113>,
     a_xver: Const<7, 114>,
-    page_xwin_d: Const<5, 31>,
     xid0: Const<8, 0x44>,
     xid1: Const<8, 0x52>,
     xver: Const<8, 0x10>,
     mode_dmr: Const<2, 2>,
-    cmd_commit: Const<8, 1>,
-    cmd_reload: Const<8, 2>,
     xmode_mask: Const<8, 0x7F>,
-    byte_mask: Const<32, 0xFF>,
     k_one: Const<4, 1>,
     zero4: Const<4, 0>,
-    zero6: Const<6, 0>,
     zero8: Const<8, 0>,
-    zero32: Const<32, 0>,
-    /// Native word indices a commit may write: `RMB_CFG` 3, `DEDUP_CFG` 4,
-    /// `DMR_CFG` 25, `DMR_TIME` 26, `DMR_CS` 27, `MB_SEL` 31, `MB_ID` 32,
-    /// `MB_MASK` 33, `MB_CFG` 34.
-    i_rmb_cfg: Const<6, 3>,
-    i_dedup_cfg: Const<6, 4>,
-    i_dmr_cfg: Const<6, 25>,
-    i_dmr_time: Const<6, 26>,
-    i_dmr_cs: Const<6, 27>,
-    i_mb_sel: Const<6, 31>,
-    i_mb_id: Const<6, 32>,
-    i_mb_mask: Const<6, 33>,
-    i_mb_cfg: Const<6, 34>,
 }
 
 impl ExtensionRegs {
@@ -183,7 +152,6 @@ impl ExtensionRegs {
             addr: Default::default(),
             wdata: Default::default(),
             rm: Default::default(),
-            hrm: Default::default(),
             rdata: Default::default(),
             ev_switch: Default::default(),
             ev_aux: Default::default(),
@@ -191,6 +159,7 @@ impl ExtensionRegs {
             ev_domain: Default::default(),
             ev_err_state: Default::default(),
             ev_bus: Default::default(),
+            ev_win: Default::default(),
             ev_ign: Default::default(),
             u: Default::default(),
             failover: Default::default(),
@@ -219,15 +188,9 @@ impl ExtensionRegs {
             xk_q: Default::default(),
             xir: Default::default(),
             xier: Default::default(),
-            xwin_idx: Default::default(),
-            xwin_d: Default::default(),
-            xwin_refused: Default::default(),
             ign: Default::default(),
-            win_refused: Default::default(),
             xir_set: Default::default(),
             xk_new: Default::default(),
-            idx_ok: Default::default(),
-            d_shift: Default::default(),
             ign_any: Default::default(),
             head_b: Default::default(),
             a_xmode: Default::default(),
@@ -237,34 +200,17 @@ impl ExtensionRegs {
             a_xfsm: Default::default(),
             a_xir: Default::default(),
             a_xier: Default::default(),
-            a_xwin_idx: Default::default(),
-            a_xwin_cmd: Default::default(),
             a_xid0: Default::default(),
             a_xid1: Default::default(),
             a_xver: Default::default(),
-            page_xwin_d: Default::default(),
             xid0: Default::default(),
             xid1: Default::default(),
             xver: Default::default(),
             mode_dmr: Default::default(),
-            cmd_commit: Default::default(),
-            cmd_reload: Default::default(),
             xmode_mask: Default::default(),
-            byte_mask: Default::default(),
             k_one: Default::default(),
             zero4: Default::default(),
-            zero6: Default::default(),
             zero8: Default::default(),
-            zero32: Default::default(),
-            i_rmb_cfg: Default::default(),
-            i_dedup_cfg: Default::default(),
-            i_dmr_cfg: Default::default(),
-            i_dmr_time: Default::default(),
-            i_dmr_cs: Default::default(),
-            i_mb_sel: Default::default(),
-            i_mb_id: Default::default(),
-            i_mb_mask: Default::default(),
-            i_mb_cfg: Default::default(),
         }
     }
 }
@@ -280,35 +226,14 @@ impl Default for ExtensionRegs {
 impl Logic for ExtensionRegs {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self,
-            clk,
-            xmode_q,
-            xk_q,
-            xir,
-            xier,
-            xwin_idx,
-            xwin_d,
-            xwin_refused
-        );
-        self.d_shift.next = bit_cast::<5, 2>(self.addr.val().get_bits::<2>(0)) << 3;
-        self.idx_ok.next = (self.xwin_idx.q.val() == self.i_rmb_cfg.val())
-            | (self.xwin_idx.q.val() == self.i_dedup_cfg.val())
-            | (self.xwin_idx.q.val() == self.i_dmr_cfg.val())
-            | (self.xwin_idx.q.val() == self.i_dmr_time.val())
-            | (self.xwin_idx.q.val() == self.i_dmr_cs.val())
-            | (self.xwin_idx.q.val() == self.i_mb_sel.val())
-            | (self.xwin_idx.q.val() == self.i_mb_id.val())
-            | (self.xwin_idx.q.val() == self.i_mb_mask.val())
-            | (self.xwin_idx.q.val() == self.i_mb_cfg.val());
+        dff_setup!(self, clk, xmode_q, xk_q, xir, xier);
         self.head_b.next = self.rbs.val() & self.head_ch.val();
         self.xk_new.next = self.wdata.val().get_bits::<4>(0);
         if self.xk_new.val() == self.zero4.val() {
             self.xk_new.next = self.k_one.val();
         }
-        // ---- writes (P-X-1, P-X-3, P-X-4) ----
+        // ---- writes (P-X-1) ----
         self.ign.next = false;
-        self.win_refused.next = false;
         self.reconfig.next = false;
         if self.wr.val() {
             if self.addr.val() == self.a_xmode.val() {
@@ -335,29 +260,11 @@ impl Logic for ExtensionRegs {
             if self.addr.val() == self.a_xier.val() {
                 self.xier.d.next = self.wdata.val();
             }
-            if self.addr.val() == self.a_xwin_idx.val() {
-                self.xwin_idx.d.next = self.wdata.val().get_bits::<6>(0);
-                self.xwin_d.d.next = self.zero32.val();
-            }
-            if self.addr.val() == self.a_xwin_cmd.val() {
-                if self.wdata.val() == self.cmd_commit.val() {
-                    self.win_refused.next = !(self.hrm.val() & self.idx_ok.val());
-                    self.xwin_refused.d.next = self.win_refused.val();
-                }
-                if self.wdata.val() == self.cmd_reload.val() {
-                    self.xwin_d.d.next = self.zero32.val();
-                }
-            }
-            if self.addr.val().get_bits::<5>(2) == self.page_xwin_d.val() {
-                self.xwin_d.d.next = (self.xwin_d.q.val()
-                    & !(self.byte_mask.val() << self.d_shift.val()))
-                    | (bit_cast::<32, 8>(self.wdata.val()) << self.d_shift.val());
-            }
         }
         // ---- XIR: a read clears, an event of the same edge wins (P-X-2) ----
         self.ign_any.next = self.ign.val() | self.ev_ign.val();
         self.xir_set.next = (bit_cast::<8, 1>(self.ign_any.val().into()) << 7)
-            | (bit_cast::<8, 1>(self.win_refused.val().into()) << 6)
+            | (bit_cast::<8, 1>(self.ev_win.val().into()) << 6)
             | (bit_cast::<8, 1>(self.ev_bus.val().into()) << 5)
             | (bit_cast::<8, 1>(self.ev_err_state.val().into()) << 4)
             | (bit_cast::<8, 1>(self.ev_domain.val().into()) << 3)
@@ -374,9 +281,6 @@ impl Logic for ExtensionRegs {
             self.xk_q.d.next = self.xk_reset.val();
             self.xir.d.next = self.zero8.val();
             self.xier.d.next = self.zero8.val();
-            self.xwin_idx.d.next = self.zero6.val();
-            self.xwin_d.d.next = self.zero32.val();
-            self.xwin_refused.d.next = false;
         }
         // ---- reads ----
         self.rdata.next = self.zero8.val();
@@ -420,20 +324,6 @@ impl Logic for ExtensionRegs {
         }
         if self.addr.val() == self.a_xier.val() {
             self.rdata.next = self.xier.q.val();
-        }
-        if self.addr.val() == self.a_xwin_idx.val() {
-            self.rdata.next = bit_cast::<8, 6>(self.xwin_idx.q.val());
-        }
-        if self.addr.val() == self.a_xwin_cmd.val() {
-            self.rdata.next = bit_cast::<8, 1>(self.xwin_refused.q.val().into());
-        }
-        if self.addr.val().get_bits::<5>(2) == self.page_xwin_d.val() {
-            match self.addr.val().get_bits::<2>(0).index() {
-                0 => self.rdata.next = self.xwin_d.q.val().get_bits::<8>(0),
-                1 => self.rdata.next = self.xwin_d.q.val().get_bits::<8>(8),
-                2 => self.rdata.next = self.xwin_d.q.val().get_bits::<8>(16),
-                _ => self.rdata.next = self.xwin_d.q.val().get_bits::<8>(24),
-            }
         }
         self.xmode.next = self.xmode_q.q.val();
         self.xk.next = self.xk_q.q.val();

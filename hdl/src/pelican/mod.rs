@@ -12,6 +12,7 @@ pub mod extension;
 pub mod interrupts;
 pub mod logical;
 pub mod mode_control;
+pub mod native_window;
 pub mod rbsa;
 pub mod rx_window;
 pub mod top;

@@ -6,7 +6,8 @@
 //! it and in the extension window (§13). User's page: `docs/pelican.md`.
 //!
 //! The DRCC core ([`DrccCore`]) with its host-view inputs driven by the view's
-//! register block ([`PelicanView`]); the core's native register port is idle.
+//! register block ([`PelicanView`]); the core's native register port is the
+//! view's window onto the native registers (P-X-3, P-X-4).
 
 use super::view::PelicanView;
 use super::PelicanKeys;
@@ -68,8 +69,6 @@ pub struct DrccPelican<const M: usize> {
     pub core: DrccCore<M>,
     /// The SJA1000 register block (public for probes in tests).
     pub view: PelicanView,
-    zero6: Const<6, 0>,
-    zero32: Const<32, 0>,
     all_lanes: Const<4, 0xF>,
 }
 
@@ -97,7 +96,7 @@ impl<const M: usize> Logic for DrccPelican<M> {
         self.core.rst.next = self.rst.val();
         self.view.clk.next = self.clk.val();
         self.view.rst.next = self.rst.val();
-        // the bus goes to the view; the core's native port is idle
+        // the bus goes to the view; the core's native port is the view's window
         self.view.wb_cyc_i.next = self.wb_cyc_i.val();
         self.view.wb_stb_i.next = self.wb_stb_i.val();
         self.view.wb_we_i.next = self.wb_we_i.val();
@@ -108,12 +107,14 @@ impl<const M: usize> Logic for DrccPelican<M> {
         self.wb_ack_o.next = self.view.wb_ack_o.val();
         self.wb_err_o.next = self.view.wb_err_o.val();
         self.irq.next = self.view.irq.val();
-        self.core.wb_cyc_i.next = false;
-        self.core.wb_stb_i.next = false;
-        self.core.wb_we_i.next = false;
-        self.core.wb_adr_i.next = self.zero6.val();
-        self.core.wb_dat_i.next = self.zero32.val();
+        self.core.wb_cyc_i.next = self.view.nat_cyc.val();
+        self.core.wb_stb_i.next = self.view.nat_cyc.val();
+        self.core.wb_we_i.next = self.view.nat_we.val();
+        self.core.wb_adr_i.next = self.view.nat_adr.val();
+        self.core.wb_dat_i.next = self.view.nat_wdat.val();
         self.core.wb_sel_i.next = self.all_lanes.val();
+        self.view.nat_rdat.next = self.core.wb_dat_o.val();
+        self.view.nat_err.next = self.core.wb_err_o.val();
         // CAN pins
         self.core.chan_a_rx.next = self.chan_a_rx.val();
         self.core.chan_b_rx.next = self.chan_b_rx.val();
@@ -188,5 +189,6 @@ impl<const M: usize> Logic for DrccPelican<M> {
         self.core.view_afm.next = self.view.view_afm.val();
         self.core.view_acr.next = self.view.view_acr.val();
         self.core.view_amr.next = self.view.view_amr.val();
+        self.core.view_cap_rearm.next = self.view.view_cap_rearm.val();
     }
 }

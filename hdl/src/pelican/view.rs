@@ -10,7 +10,8 @@
 //! bus-off hold), `Interrupts` (`IR`, `IER`, `irq`), `LogicalController` (`u`,
 //! `SR` bits, the counters), `ConfigRegs` (bit timing, `OCR`, `CDR`, `ACR`,
 //! `AMR`), `TxFrameBuffer`, `RxWindow`, `Rbsa`, the capture registers `ALC` and
-//! `ECC`, and `ExtensionRegs` (112..127). Each read returns the value before the
+//! `ECC`, `ExtensionRegs` (112..121) and `NativeWindow` (122..127, the
+//! window onto the core's native registers). Each read returns the value before the
 //! edge that takes it (§15); a register outside every block reads 0.
 //!
 //! Bus (P-BUS-1..4): Wishbone B4 classic, 32-bit data, one register per access.
@@ -26,6 +27,7 @@ use super::extension::ExtensionRegs;
 use super::interrupts::Interrupts;
 use super::logical::LogicalController;
 use super::mode_control::ModeControl;
+use super::native_window::NativeWindow;
 use super::rbsa::Rbsa;
 use super::rx_window::RxWindow;
 use super::tx_frame_buffer::TxFrameBuffer;
@@ -200,6 +202,21 @@ pub struct PelicanView {
     pub view_acr: Signal<Out, Bits<32>>,
     /// `AMR0..3`.
     pub view_amr: Signal<Out, Bits<32>>,
+    /// The native window re-arms channel A's (bit 0) or B's (bit 1) captures.
+    pub view_cap_rearm: Signal<Out, Bits<2>>,
+    // ---- the core's native register port, for the window (P-X-3, P-X-4) ----
+    /// Native access at this edge (`cyc` and `stb`).
+    pub nat_cyc: Signal<Out, Bit>,
+    /// The native access is a write.
+    pub nat_we: Signal<Out, Bit>,
+    /// Native word index.
+    pub nat_adr: Signal<Out, Bits<6>>,
+    /// Native write data.
+    pub nat_wdat: Signal<Out, Bits<32>>,
+    /// Native read data, valid in the answer clock.
+    pub nat_rdat: Signal<In, Bits<32>>,
+    /// Native error answer.
+    pub nat_err: Signal<In, Bit>,
     // ---- blocks ----
     lanes: ByteLanes,
     mc: ModeControl,
@@ -207,6 +224,7 @@ pub struct PelicanView {
     logical: LogicalController,
     cfg: ConfigRegs,
     ext: ExtensionRegs,
+    win: NativeWindow,
     txb: TxFrameBuffer,
     rxwin: RxWindow,
     rx_start: Rbsa,

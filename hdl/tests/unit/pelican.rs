@@ -9,6 +9,7 @@ mod extension;
 mod interrupts;
 mod logical;
 mod mode_control;
+mod native_window;
 mod rbsa;
 mod rx_window;
 mod tx_frame_buffer;

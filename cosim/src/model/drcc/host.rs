@@ -35,6 +35,22 @@ pub struct HostDrive {
     pub self_frame: Option<Frame>,
     /// The acceptance gate at the RX FIFO's write port (P-CORE-4).
     pub gate: Option<Acf>,
+    /// A full-word access of the native register port at this edge (the view's
+    /// window, P-X-3, P-X-4); its answer is the core's Wishbone outputs after it.
+    pub native: Option<NativeAccess>,
+    /// The window's load of `CAP_A` / `CAP_B` re-arms that channel's captures.
+    pub cap_rearm: [bool; 2],
+}
+
+/// One full-word access of the native register port (DRCC contract §D2).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NativeAccess {
+    /// A write (else a read).
+    pub we: bool,
+    /// The native word index.
+    pub adr: u8,
+    /// The word written.
+    pub dat: u32,
 }
 
 /// The core's events at the last edge, for the host view.
@@ -76,7 +92,8 @@ pub struct CoreView<'a> {
 }
 
 impl DrccModel {
-    /// One clock with `drive` as the host (the native register port idle).
+    /// One clock with `drive` as the host; the native register port makes the
+    /// drive's window access, if any.
     pub fn step_host(&mut self, rst: bool, rx: [bool; 2], drive: HostDrive) -> HostEvents {
         self.host = Some(drive);
         if !rst {
@@ -86,10 +103,18 @@ impl DrccModel {
             self.rx.offer_s = drive.self_frame;
         }
         self.host_ev = HostEvents::default();
+        let nat = drive.native.unwrap_or_default();
+        let on = drive.native.is_some();
         self.step(&DrccInputs {
             rst,
             chan_a_rx: rx[0],
             chan_b_rx: rx[1],
+            wb_cyc: on,
+            wb_stb: on,
+            wb_we: nat.we,
+            wb_adr: nat.adr,
+            wb_dat_w: nat.dat,
+            wb_sel: 0xF,
             ..DrccInputs::default()
         });
         self.host_ev

@@ -98,7 +98,7 @@ use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, 
 use crate::model::{coverage, field, ChannelModel};
 use aux_fsm::{AuxFsm, AuxInputs};
 use dmr::{DmrBlock, DmrInputs};
-pub use host::{HostDrive, HostEvents};
+pub use host::{HostDrive, HostEvents, NativeAccess};
 use main_fsm::{FsmInputs, MainFsm};
 pub use params::DrccParams;
 use register_file::Regs;
@@ -490,10 +490,12 @@ impl DrccModel {
         ints |= features::tx_channel_events(pa, pb);
         // Re-arm: the acknowledgement of the interrupt (an INT_STATUS write that
         // took effect) clears both channels' valid bits; a capture at this edge wins.
+        // A host view's window re-arms one channel's (PeliCAN P-X-3).
         let (rearm_err, rearm_alc) = (w1c & int::BUS_ERROR != 0, w1c & int::ARB_LOST != 0);
+        let view = self.host.map_or([false; 2], |h| h.cap_rearm);
         n.cap = [
-            r.cap[0].edge(pa, rearm_err, rearm_alc),
-            r.cap[1].edge(pb, rearm_err, rearm_alc),
+            r.cap[0].edge(pa, rearm_err || view[0], rearm_alc || view[0]),
+            r.cap[1].edge(pb, rearm_err || view[1], rearm_alc || view[1]),
         ];
         // Every `illegal` comes from the access taken at this edge (§9).
         let refused = take && ints & int::ILLEGAL != 0;

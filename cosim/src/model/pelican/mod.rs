@@ -19,10 +19,10 @@
 //! 2. P-CORE-3: an auxiliary FSM is held (in `valid`) by its channel's reset
 //!    and outside redundancy mode only, so through a bus-off hold it keeps
 //!    judging (a bus-off channel reads failed in `XFSM`) and raises its events.
-//! 3. P-X-3/P-X-4 native window: `XWIN_IDX` and `XWIN_D0..3` are stored and read
-//!    back; a load returns 0 for every index; a commit is accepted (flag 0) for
-//!    the listed indices while `hrm = 1`, refused (flag 1, `XIR.win`) otherwise,
-//!    and an accepted commit does not reach the core's DMR registers.
+//! 3. P-X-3/P-X-4 native window: the load and the commit are one access of the
+//!    core's native register port at the edge that takes the `XWIN_*` write
+//!    ([`HostDrive::native`]); the port's answer of the next edge loads the word
+//!    or refuses the commit (`XIR.win` then, too).
 //! 4. An `RRB` pops only while the FIFO count before the edge is not 0 and the
 //!    view is in operating mode (in reset mode the core's hold empties it).
 //! 5. Events that coincide with the `RM` 0 -> 1 edge lose to P-MOD-5's clearing,
@@ -130,6 +130,9 @@ pub(crate) struct View {
     pub xwin_idx: u8,
     pub xwin_d: [u8; 4],
     pub xwin_refused: bool,
+    /// The window made a native read (load) or write (commit) at the last edge.
+    pub xwin_load_q: bool,
+    pub xwin_commit_q: bool,
     pub ack: bool,
     pub err: bool,
     pub dat: u32,
@@ -178,6 +181,8 @@ impl View {
             xwin_idx: 0,
             xwin_d: [0; 4],
             xwin_refused: false,
+            xwin_load_q: false,
+            xwin_commit_q: false,
             ack: false,
             err: false,
             dat: 0,
@@ -350,6 +355,8 @@ impl PelicanModel {
                 amr: v.amr,
                 single: v.afm,
             }),
+            native: None,
+            cap_rearm: [false; 2],
         }
     }
 
@@ -369,6 +376,7 @@ impl PelicanModel {
         let v = self.v;
         let mut n = v;
         let mut drive = self.drive(&v);
+        self.window_answer(&v, &mut n);
         self.access(i, &mut n, &mut drive);
         drive.self_frame = self.events(&mut n);
         // P-MOD-5: the edge where RM rises.
@@ -407,6 +415,22 @@ impl PelicanModel {
         self.ev = ev;
         self.v = n;
         self.outputs()
+    }
+
+    /// P-X-3, P-X-4: the native port's answer to the window's access of the
+    /// last edge: a load takes the read data (0 when the port stayed idle), a
+    /// commit the native rules refused sets the flag and `XIR.win`.
+    fn window_answer(&self, v: &View, n: &mut View) {
+        let o = self.core.outputs();
+        n.xwin_load_q = false;
+        n.xwin_commit_q = false;
+        if v.xwin_load_q {
+            n.xwin_d = o.wb_dat_r.to_le_bytes();
+        }
+        if v.xwin_commit_q && o.wb_err {
+            n.xwin_refused = true;
+            n.xir |= regs::xir::WIN;
+        }
     }
 
     /// `RI` as a level (P-IR-2) on the registers `v`.

@@ -4,7 +4,7 @@
 use super::{mode, PelicanInputs, PelicanModel, View};
 use crate::frame::Frame;
 use crate::model::drcc::regs::int;
-use crate::model::drcc::HostDrive;
+use crate::model::drcc::{HostDrive, NativeAccess};
 use crate::model::field;
 
 /// Register addresses (§12).
@@ -93,6 +93,26 @@ pub(super) fn xir_events(ints: u32) -> u8 {
 
 /// Native indices a window commit may write (P-X-4).
 const XWIN_OK: [u8; 9] = [3, 4, 25, 26, 27, 31, 32, 33, 34];
+
+/// P-X-3: a window load of native word `idx` at this edge. The words the view
+/// owns (`INT_STATUS` 6, `INT_ENABLE` 7, `TX_*` and `RX_*` 12..21) are not read
+/// and load 0; a load of `CAP_A` (40) or `CAP_B` (41) re-arms that channel's
+/// captures. The answer loads `XWIN_D0..3` at the next edge.
+fn window_load(idx: u8, n: &mut View, d: &mut HostDrive) {
+    n.xwin_load_q = true;
+    if !matches!(idx, 6 | 7 | 12..=21) {
+        d.native = Some(NativeAccess {
+            we: false,
+            adr: idx,
+            dat: 0,
+        });
+    }
+    match idx {
+        40 => d.cap_rearm[0] = true,
+        41 => d.cap_rearm[1] = true,
+        _ => {}
+    }
+}
 
 /// The frame of `TXB` (P-TX-1), normalized.
 pub(super) fn txb_frame(t: &[u8; 13]) -> Frame {
@@ -372,17 +392,24 @@ impl PelicanModel {
             adr::XIER => n.xier = b,
             adr::XWIN_IDX => {
                 n.xwin_idx = b & 0x3F;
-                n.xwin_d = [0; 4];
+                window_load(n.xwin_idx, n, d);
             }
             adr::XWIN_CMD => {
                 if b == 1 {
                     let ok = v.hrm && XWIN_OK.contains(&v.xwin_idx);
                     n.xwin_refused = !ok;
-                    if !ok {
+                    if ok {
+                        n.xwin_commit_q = true;
+                        d.native = Some(NativeAccess {
+                            we: true,
+                            adr: v.xwin_idx,
+                            dat: u32::from_le_bytes(v.xwin_d),
+                        });
+                    } else {
                         n.xir |= xir::WIN;
                     }
                 } else if b == 2 {
-                    n.xwin_d = [0; 4];
+                    window_load(v.xwin_idx, n, d);
                 }
             }
             124..=127 => n.xwin_d[(r - 124) as usize] = b,

@@ -19,6 +19,7 @@
 //! - `filter`: ACR/AMR single and dual filter, own frames.
 //! - `buffers`: TX buffer and RX window layout, RMC, RBSA, FIFO and overrun,
 //!   entering reset mode.
+//! - `window`: the extension's window onto the native registers (P-X-3, P-X-4).
 
 mod buffers;
 mod capture;
@@ -27,6 +28,7 @@ mod filter;
 mod map;
 mod mode;
 mod status_interrupt;
+mod window;
 
 use crate::harness::*;
 use drcc_cosim::model::pelican::{PelicanInputs, PelicanParams};

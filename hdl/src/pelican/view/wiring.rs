@@ -13,6 +13,7 @@ impl Logic for PelicanView {
         self.ints.clk.next = self.clk.val();
         self.cfg.clk.next = self.clk.val();
         self.ext.clk.next = self.clk.val();
+        self.win.clk.next = self.clk.val();
         self.txb.clk.next = self.clk.val();
         self.rx_start.clk.next = self.clk.val();
         self.alc.clk.next = self.clk.val();
@@ -166,7 +167,6 @@ impl Logic for PelicanView {
         self.ext.addr.next = self.lanes.reg_num.val();
         self.ext.wdata.next = self.lanes.wbyte.val();
         self.ext.rm.next = self.mc.rm.val();
-        self.ext.hrm.next = self.mc.hrm.val();
         self.ext.ev_switch.next = self.ev_switch.val();
         self.ext.ev_aux.next = self.ev_aux.val();
         self.ext.ev_dmr.next = self.ev_dmr.val();
@@ -178,6 +178,7 @@ impl Logic for PelicanView {
             | bit_cast::<4, 2>(self.chan_a_err_state.val());
         self.ext.ev_bus.next = self.take.val() & self.lanes.refused.val();
         self.ext.ev_ign.next = self.ign.val();
+        self.ext.ev_win.next = self.win.refused.val();
         self.ext.u.next = self.logical.u.val();
         self.ext.failover.next = self.failover.val();
         self.ext.aux_a_state.next = self.aux_a_state.val();
@@ -193,6 +194,19 @@ impl Logic for PelicanView {
         self.ext.dmr_state.next = self.dmr_state.val();
         self.ext.acl.next = self.acl.val();
         self.ext.split.next = self.star_split.val();
+        // ---- the native window (P-X-3, P-X-4) ----
+        self.win.rst.next = self.rst.val();
+        self.win.wr.next = self.wr.val();
+        self.win.addr.next = self.lanes.reg_num.val();
+        self.win.wdata.next = self.lanes.wbyte.val();
+        self.win.hrm.next = self.mc.hrm.val();
+        self.win.nat_rdat.next = self.nat_rdat.val();
+        self.win.nat_err.next = self.nat_err.val();
+        self.nat_cyc.next = self.win.nat_cyc.val();
+        self.nat_we.next = self.win.nat_we.val();
+        self.nat_adr.next = self.win.nat_adr.val();
+        self.nat_wdat.next = self.win.nat_wdat.val();
+        self.view_cap_rearm.next = self.win.cap_rearm.val();
         // ---- the read multiplexer (P-MAP-1) ----
         self.sr.next = (bit_cast::<8, 1>(self.logical.bs.val().into()) << 7)
             | (bit_cast::<8, 1>(self.logical.es.val().into()) << 6)
@@ -202,7 +216,10 @@ impl Logic for PelicanView {
             | (bit_cast::<8, 1>(self.mc.tbs.val().into()) << 2)
             | (bit_cast::<8, 1>(self.mc.dos.val().into()) << 1)
             | bit_cast::<8, 1>(self.rx_ready.val().into());
-        self.rbyte.next = self.cfg.rdata.val() | self.ext.rdata.val() | self.txb.rdata.val();
+        self.rbyte.next = self.cfg.rdata.val()
+            | self.ext.rdata.val()
+            | self.win.rdata.val()
+            | self.txb.rdata.val();
         if !self.mc.rm.val() {
             self.rbyte.next = self.rbyte.val() | self.rxwin.rdata.val();
         }

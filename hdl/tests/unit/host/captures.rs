@@ -23,6 +23,7 @@ fn idle(uut: &mut Captures) {
     uut.arb_lost_b.next = false;
     uut.rearm_err.next = false;
     uut.rearm_alc.next = false;
+    uut.rearm_chan.next = 0.into();
 }
 
 /// The word `CAP_x` reads for an error (kind, field code, tx) and an ALC.
@@ -121,6 +122,40 @@ fn the_first_lost_arbitration_is_held_until_the_interrupt_is_acknowledged() {
     clock(&mut uut);
     idle(&mut uut);
     assert_eq!(cap_a(&uut), word(None, Some(20)));
+}
+
+/// PeliCAN contract P-X-3: a host view's load of `CAP_A` re-arms channel A's
+/// error and arbitration captures, and leaves channel B's held.
+#[test]
+fn a_view_load_rearms_one_channel() {
+    let mut uut = Captures::default();
+    uut.connect_all();
+    idle(&mut uut);
+    uut.rst.next = true;
+    clock(&mut uut);
+    idle(&mut uut);
+    uut.err_valid_a.next = true;
+    uut.err_valid_b.next = true;
+    uut.err_kind_a.next = 5.into();
+    uut.err_kind_b.next = 5.into();
+    uut.err_field_a.next = Field::AckSlot;
+    uut.err_field_b.next = Field::AckSlot;
+    uut.err_tx_a.next = true;
+    uut.err_tx_b.next = true;
+    uut.arb_lost_a.next = true;
+    uut.alc_a.next = 6.into();
+    clock(&mut uut);
+    idle(&mut uut);
+    let held = word(Some((5, 13, true)), Some(6));
+    assert_eq!(cap_a(&uut), held);
+    let b = uut.cap_b.val().index() as u32;
+    assert_eq!(b, word(Some((5, 13, true)), None));
+    uut.rearm_chan.next = 1.into();
+    clock(&mut uut);
+    idle(&mut uut);
+    let valid = MAP.field("CAP_A", "err_valid").mask() | MAP.field("CAP_A", "alc_valid").mask();
+    assert_eq!(cap_a(&uut), held & !valid, "A re-armed, both kinds");
+    assert_eq!(uut.cap_b.val().index() as u32, b, "B held");
 }
 
 /// §10.2: `err_warning` is an event in both directions, one clock per change.

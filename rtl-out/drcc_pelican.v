@@ -14062,10 +14062,13 @@ module drcc_pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb
     wire  [7:0] ints__ir_q;
     wire  ints__bs_rise;
     wire  ints__irq;
+    reg  logical__clk;
+    reg  logical__rst;
     reg  [1:0] logical__mode;
     reg  [1:0] logical__policy;
     reg  logical__rm;
     reg  logical__hrm;
+    reg  logical__boh;
     reg  logical__tx_channel;
     reg  logical__acl;
     reg  [1:0] logical__aux_a_state;
@@ -14290,10 +14293,13 @@ module drcc_pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb
         .irq(ints__irq)
     );
     drcc_pelican__view__logical logical(
+        .clk(logical__clk),
+        .rst(logical__rst),
         .mode(logical__mode),
         .policy(logical__policy),
         .rm(logical__rm),
         .hrm(logical__hrm),
+        .boh(logical__boh),
         .tx_channel(logical__tx_channel),
         .acl(logical__acl),
         .aux_a_state(logical__aux_a_state),
@@ -14468,6 +14474,9 @@ module drcc_pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb
         rd = take & ~wb_we_i & ~lanes__refused;
         single_b = ext__xmode[(32'h0)+:(2)] == mode_single_b;
         single = single_b | (ext__xmode[(32'h0)+:(2)] == mode_single_a);
+        logical__clk = clk;
+        logical__rst = rst;
+        logical__boh = mc__boh;
         logical__mode = ext__xmode[(32'h0)+:(2)];
         logical__policy = ext__xmode[(32'h2)+:(2)];
         logical__rm = mc__rm;
@@ -15598,13 +15607,16 @@ module drcc_pelican__view__lanes(adr,sel,we,wdat,rbyte,reg_num,wbyte,refused,rda
 endmodule // drcc_pelican__view__lanes
 
 
-module drcc_pelican__view__logical(mode,policy,rm,hrm,tx_channel,acl,aux_a_state,aux_b_state,err_state_a,ew_a,tec_a,rec_a,boff_runs_a,field_a,is_tx_a,err_state_b,ew_b,tec_b,rec_b,boff_runs_b,field_b,is_tx_b,u,bs,es,ep,rs,ts,txerr,rxerr);
+module drcc_pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,tx_channel,acl,aux_a_state,aux_b_state,err_state_a,ew_a,tec_a,rec_a,boff_runs_a,field_a,is_tx_a,err_state_b,ew_b,tec_b,rec_b,boff_runs_b,field_b,is_tx_b,u,bs,es,ep,rs,ts,txerr,rxerr);
 
     // Module arguments
+    input wire  clk;
+    input wire  rst;
     input wire  [1:0] mode;
     input wire  [1:0] policy;
     input wire  rm;
     input wire  hrm;
+    input wire  boh;
     input wire  tx_channel;
     input wire  acl;
     input wire  [1:0] aux_a_state;
@@ -15669,7 +15681,12 @@ module drcc_pelican__view__logical(mode,policy,rm,hrm,tx_channel,acl,aux_a_state
     localparam Field__OverloadDelim = 21;
     localparam Field__BusOff = 22;
 
+    // Stub signals
+    reg  u_q__d;
+    reg  u_q__q;
+
     // Local signals
+    reg  u_live;
     reg  [1:0] err_state_u;
     reg  [8:0] tec_u;
     reg  [4:0] field_u;
@@ -15681,18 +15698,26 @@ module drcc_pelican__view__logical(mode,policy,rm,hrm,tx_channel,acl,aux_a_state
 
     // Update code
     always @(*) begin
+        u_q__d = u_q__q;
         if (mode == single_a) begin
-            u = 1'b0;
+            u_live = 1'b0;
         end
         else if (mode == redundancy) begin
-            u = tx_channel;
+            u_live = tx_channel;
         end
         else if (mode == dmr) begin
-            u = acl;
+            u_live = acl;
         end
         else begin
-            u = 1'b1;
+            u_live = 1'b1;
         end
+        if (boh) begin
+            u = u_q__q;
+        end
+        else begin
+            u = u_live;
+        end
+        u_q__d = u & ~rst;
         if (u) begin
             err_state_u = err_state_b;
             tec_u = tec_b;
@@ -15715,7 +15740,10 @@ module drcc_pelican__view__logical(mode,policy,rm,hrm,tx_channel,acl,aux_a_state
         bo_b = err_state_b == bus_off;
         bo_u = err_state_u == bus_off;
         ep = err_state_u == passive;
-        if (mode == redundancy) begin
+        if (boh) begin
+            bs = bo_u;
+        end
+        else if (mode == redundancy) begin
             bs = bo_u & ((policy == policy_none) | (aux_other != valid));
         end
         else if (mode == dmr) begin
@@ -15744,6 +15772,11 @@ module drcc_pelican__view__logical(mode,policy,rm,hrm,tx_channel,acl,aux_a_state
         end
         ts = rm | is_tx_u | (field_u == Field__Integrating) | (field_u == Field__BusOff);
         rs = rm | (field_u == Field__Integrating) | (field_u == Field__BusOff) | (~is_tx_u & (field_u != Field__Idle) & (field_u != Field__Intermission) & (field_u != Field__Suspend));
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        u_q__q <= u_q__d;
     end
 
 endmodule // drcc_pelican__view__logical

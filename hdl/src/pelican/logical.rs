@@ -5,10 +5,13 @@
 //! activity and error and arbitration events to the registers.
 //!
 //! - `u` (P-LOG-1): `SINGLE_A` A, `SINGLE_B` B, `REDUNDANCY` the main FSM's
-//!   `tx_channel` (§D4), `DMR` the active CAN line `acl` (§M6).
+//!   `tx_channel` (§D4), `DMR` the active CAN line `acl` (§M6). While the
+//!   bus-off hold `boh` lasts, `u` stays the channel it was when the hold began
+//!   (the hold keeps the main FSM in IDLE1, on A).
 //! - `BS` = logical bus-off (P-LOG-3): single modes `bo_u`; `REDUNDANCY`
 //!   `bo_u` while no switch will carry the message away (policy `none`, or the
-//!   other channel's auxiliary FSM not valid, §D4.2); `DMR` both lines bus-off.
+//!   other channel's auxiliary FSM not valid, §D4.2); `DMR` both lines bus-off;
+//!   `bo_u` in every mode while `boh`.
 //! - `ES` = `ew_u`, `EP` = `ep_u` (P-LOG-4).
 //! - `TXERR` = `TEC` of `u`, or `127 - boff_runs` while `u` is bus-off (the
 //!   SJA1000 loads 127 and counts the recovery down, data sheet 6.4.12);
@@ -17,8 +20,9 @@
 //!   transmitter role and `RS` its activity on the bus as a receiver (its field
 //!   is none of integrating, idle, intermission, suspend, bus-off).
 //!
-//! Combinational: every output is a function of registers (the view's mode
-//! bits and the core's registered probes).
+//! Combinational but for the register that keeps `u` through the hold: every
+//! output is a function of registers (the view's mode bits, `u_q` and the
+//! core's registered probes).
 
 use crate::channel::bsp::field::Field;
 use crate::channel::sized::Const;
@@ -27,6 +31,11 @@ use rust_hdl::prelude::*;
 /// The logical controller of the SJA1000 view.
 #[derive(LogicBlock, Default)]
 pub struct LogicalController {
+    // ---- clock and reset ----
+    /// System clock.
+    pub clk: Signal<In, Clock>,
+    /// Synchronous reset: the kept channel is A.
+    pub rst: Signal<In, Bit>,
     // ---- the view's configuration ----
     /// `XMODE.mode`: 0 `SINGLE_A`, 1 `REDUNDANCY`, 2 `DMR`, 3 `SINGLE_B`.
     pub mode: Signal<In, Bits<2>>,
@@ -36,6 +45,8 @@ pub struct LogicalController {
     pub rm: Signal<In, Bit>,
     /// Host reset mode `hrm` (the channels are in reset).
     pub hrm: Signal<In, Bit>,
+    /// The bus-off hold `boh` (P-BO-1): `u` and `BS` are kept through it.
+    pub boh: Signal<In, Bit>,
     // ---- the core's choice of channel ----
     /// The main FSM's `tx_channel` (0 = A).
     pub tx_channel: Signal<In, Bit>,
@@ -92,6 +103,11 @@ pub struct LogicalController {
     pub txerr: Signal<Out, Bits<8>>,
     /// `RXERR`.
     pub rxerr: Signal<Out, Bits<8>>,
+    // ---- the channel in use through the hold ----
+    /// `u` as the mode gives it.
+    u_live: Signal<Local, Bit>,
+    /// `u` of the last clock: kept while `boh`.
+    u_q: DFF<Bit>,
     // ---- channel u's probes ----
     err_state_u: Signal<Local, Bits<2>>,
     tec_u: Signal<Local, Bits<9>>,
@@ -117,16 +133,23 @@ pub struct LogicalController {
 impl Logic for LogicalController {
     #[hdl_gen]
     fn update(&mut self) {
-        // P-LOG-1: the channel in use
+        dff_setup!(self, clk, u_q);
+        // P-LOG-1: the channel in use, kept through the bus-off hold
         if self.mode.val() == self.single_a.val() {
-            self.u.next = false;
+            self.u_live.next = false;
         } else if self.mode.val() == self.redundancy.val() {
-            self.u.next = self.tx_channel.val();
+            self.u_live.next = self.tx_channel.val();
         } else if self.mode.val() == self.dmr.val() {
-            self.u.next = self.acl.val();
+            self.u_live.next = self.acl.val();
         } else {
-            self.u.next = true;
+            self.u_live.next = true;
         }
+        if self.boh.val() {
+            self.u.next = self.u_q.q.val();
+        } else {
+            self.u.next = self.u_live.val();
+        }
+        self.u_q.d.next = self.u.val() & !self.rst.val();
         if self.u.val() {
             self.err_state_u.next = self.err_state_b.val();
             self.tec_u.next = self.tec_b.val();
@@ -149,7 +172,10 @@ impl Logic for LogicalController {
         self.bo_b.next = self.err_state_b.val() == self.bus_off.val();
         self.bo_u.next = self.err_state_u.val() == self.bus_off.val();
         self.ep.next = self.err_state_u.val() == self.passive.val();
-        if self.mode.val() == self.redundancy.val() {
+        if self.boh.val() {
+            // the held channel stays bus-off until the host clears RM (P-BO-3)
+            self.bs.next = self.bo_u.val();
+        } else if self.mode.val() == self.redundancy.val() {
             // only a switch to a valid channel carries the message away (§D4.2)
             self.bs.next = self.bo_u.val()
                 & ((self.policy.val() == self.policy_none.val())

@@ -115,7 +115,6 @@ impl DrccModel {
             wb_adr: nat.adr,
             wb_dat_w: nat.dat,
             wb_sel: 0xF,
-            ..DrccInputs::default()
         });
         self.host_ev
     }

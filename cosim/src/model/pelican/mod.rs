@@ -130,6 +130,8 @@ pub(crate) struct View {
     pub xwin_idx: u8,
     pub xwin_d: [u8; 4],
     pub xwin_refused: bool,
+    /// `u` of the last clock, kept while `boh` (P-LOG-1).
+    pub u_q: bool,
     /// The window made a native read (load) or write (commit) at the last edge.
     pub xwin_load_q: bool,
     pub xwin_commit_q: bool,
@@ -181,6 +183,7 @@ impl View {
             xwin_idx: 0,
             xwin_d: [0; 4],
             xwin_refused: false,
+            u_q: false,
             xwin_load_q: false,
             xwin_commit_q: false,
             ack: false,
@@ -258,8 +261,11 @@ impl PelicanModel {
         &self.ev
     }
 
-    /// Channel in use `u` (P-LOG-1).
+    /// Channel in use `u` (P-LOG-1): kept through the bus-off hold.
     pub fn u(&self) -> usize {
+        if self.v.boh {
+            return self.v.u_q as usize;
+        }
         let c = self.core.core_view();
         match self.v.mode() {
             mode::SINGLE_A => 0,
@@ -274,6 +280,10 @@ impl PelicanModel {
         let c = self.core.core_view();
         let bo = |x: usize| c.chan[x].probes.err_state == 2;
         let u = self.u();
+        if self.v.boh {
+            // P-LOG-3: the held channel stays bus-off until RM is cleared
+            return bo(u);
+        }
         match self.v.mode() {
             mode::REDUNDANCY => {
                 let policy = (self.v.xmode >> 2) & 3;
@@ -391,6 +401,7 @@ impl PelicanModel {
             // P-BO-2: EI of the bus-off survives.
         }
         n.hrm_q = v.hrm;
+        n.u_q = self.u() == 1;
         // P-IRQ-1: the register takes IR as it is before the edge (RI with the
         // core's rx_ready before the edge).
         n.irq = (v.ir | self.ri(&v)) != 0 || v.xir & v.xier != 0;

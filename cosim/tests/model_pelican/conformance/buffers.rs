@@ -164,6 +164,22 @@ fn rmc_rbsa_and_rrb() {
     assert_eq!(n.r(reg::RBSA), 0, "DS 6.4.17: 0 after hardware reset");
 }
 
+/// Differs (DS 6.4.16: RMC.7..5 reserved, read 0): P-RX-1, P-RX-3. At the
+/// default F = 32 the count reaches 32, bit 5, which the SJA1000's 64-byte
+/// FIFO never shows (21 frames at most); the next frame is an overrun.
+#[test]
+fn rmc_counts_to_f_32_with_bit_5() {
+    let mut n = op_single(0x00, 0x00);
+    for k in 0..32u32 {
+        peer_sends(&mut n, 0, Frame::base(0x100 + k, &[]));
+    }
+    assert_eq!(n.r(reg::RMC), 32, "P-RX-3: F = 32, bit 5");
+    assert_eq!(n.r(reg::SR) & sr::DOS, 0, "no overrun at F");
+    peer_sends(&mut n, 0, Frame::base(0x200, &[]));
+    assert_eq!(n.r(reg::SR) & sr::DOS, sr::DOS, "P-RX-6: the 33rd overruns");
+    assert_eq!(n.r(reg::RMC), 32);
+}
+
 /// Differs (64-byte RX FIFO: F frames of any length here), same (data
 /// overrun: frame lost, DOS, DOI; a frame rejected by the filter is no
 /// overrun; CMR.CDO, also with RRB; DOI gated by DOIE): P-RX-1, P-RX-5,

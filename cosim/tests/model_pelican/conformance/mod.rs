@@ -17,6 +17,8 @@
 //! - `status_interrupt`: SR, IR, IER, `irq`.
 //! - `capture`: ALC, ECC, RXERR, TXERR, EWLR, bus-off.
 //! - `filter`: ACR/AMR single and dual filter, own frames.
+//! - `logical`: the channel in use's captures and counters, bus-off with
+//!   redundancy.
 //! - `buffers`: TX buffer and RX window layout, RMC, RBSA, FIFO and overrun,
 //!   entering reset mode.
 //! - `window`: the extension's window onto the native registers (P-X-3, P-X-4).
@@ -25,6 +27,7 @@ mod buffers;
 mod capture;
 mod command;
 mod filter;
+mod logical;
 mod map;
 mod mode;
 mod status_interrupt;
@@ -56,6 +59,7 @@ pub mod reg {
     pub const TXB: u8 = 96;
     pub const XMODE: u8 = 115;
     pub const XK: u8 = 116;
+    pub const XSTAT: u8 = 117;
     pub const XIR: u8 = 120;
     pub const XIER: u8 = 121;
 }

@@ -86,15 +86,16 @@ fn window_loads_native_words_and_the_composed_configuration() {
         0x0060_0501,
         "P-CFG-2: BTR after reset"
     );
-    // BTR0 = 0x41 (SJW 1, BRP 1), BTR1 = 0x2F (TSEG2 2, TSEG1 15), EWLR 10:
-    // brp = 3, tseg1 15 << 6, tseg2 2 << 10, sjw 1 << 13, ewl 10 << 16.
+    // BTR0 = 0x41 (SJW 1, BRP 1), BTR1 = 0xAF (SAM, TSEG2 2, TSEG1 15), EWLR
+    // 10: brp = 3, tseg1 15 << 6, tseg2 2 << 10, sjw 1 << 13, triple 1 << 15,
+    // ewl 10 << 16 (DS 6.5.1, 6.5.2: SJW and SAM reach the channels).
     n.w(reg::BTR0, 0x41);
-    n.w(reg::BTR1, 0x2F);
+    n.w(reg::BTR1, 0xAF);
     n.w(reg::EWLR, 10);
     n.w(XWIN_CMD, RELOAD);
     assert_eq!(
         window_word(&mut n),
-        0x000A_2BC3,
+        0x000A_ABC3,
         "P-X-3: a reload reads BTR again"
     );
     n.w(reg::MOD, 0x00);

@@ -31,6 +31,9 @@ impl Logic for PelicanView {
         self.single.next = self.single_b.val()
             | (self.ext.xmode.val().get_bits::<2>(0) == self.mode_single_a.val());
         // ---- the logical controller (§5) ----
+        self.logical.clk.next = self.clk.val();
+        self.logical.rst.next = self.rst.val();
+        self.logical.boh.next = self.mc.boh.val();
         self.logical.mode.next = self.ext.xmode.val().get_bits::<2>(0);
         self.logical.policy.next = self.ext.xmode.val().get_bits::<2>(2);
         self.logical.rm.next = self.mc.rm.val();

@@ -317,3 +317,46 @@ fn logical_synthesizes() {
     uut.connect_all();
     crate::synth_check::yosys_check("logical", &generate_verilog(&uut));
 }
+
+/// P-LOG-1, P-LOG-3: through the bus-off hold `u` stays the channel in use at
+/// the edge where the hold began, and `BS` is that channel's bus-off, though
+/// the held main FSM idles on A and A becomes valid; after the hold `u`
+/// follows the main FSM again.
+#[test]
+fn p_log_1_u_and_bs_kept_through_the_busoff_hold() {
+    let mut uut = LogicalController::default();
+    uut.connect_all();
+    let clock = |uut: &mut LogicalController| {
+        uut.clk.next = Clock::from(false);
+        assert!(simulate(uut, 100));
+        uut.clk.next = Clock::from(true);
+        assert!(simulate(uut, 100));
+    };
+    uut.mode.next = REDUNDANCY.into();
+    uut.policy.next = 1u64.into();
+    uut.rst.next = true;
+    clock(&mut uut);
+    uut.rst.next = false;
+    // on B, B bus-off, A failed: a logical bus-off
+    uut.tx_channel.next = true;
+    uut.err_state_b.next = BUS_OFF.into();
+    uut.aux_a_state.next = FAILED.into();
+    assert!(simulate(&mut uut, 100));
+    assert!(uut.u.val() && uut.bs.val());
+    clock(&mut uut);
+    // the hold: the main FSM back on A, A valid again
+    uut.boh.next = true;
+    uut.tx_channel.next = false;
+    uut.aux_a_state.next = VALID.into();
+    for _ in 0..3 {
+        clock(&mut uut);
+        assert!(uut.u.val(), "u kept on B");
+        assert!(uut.bs.val(), "BS: B is still bus-off");
+    }
+    uut.boh.next = false;
+    assert!(simulate(&mut uut, 100));
+    assert!(
+        !uut.u.val() && !uut.bs.val(),
+        "after the hold: A carries it"
+    );
+}

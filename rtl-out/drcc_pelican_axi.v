@@ -14449,6 +14449,7 @@ module drcc_pelican_axi__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     reg  logical__rm;
     reg  logical__hrm;
     reg  logical__boh;
+    reg  logical__rep;
     reg  logical__tx_channel;
     reg  logical__acl;
     reg  [1:0] logical__aux_a_state;
@@ -14471,6 +14472,7 @@ module drcc_pelican_axi__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     wire  logical__bs;
     wire  logical__es;
     wire  logical__ep;
+    wire  [1:0] logical__err_state_r;
     wire  logical__rs;
     wire  logical__ts;
     wire  [7:0] logical__txerr;
@@ -14680,6 +14682,7 @@ module drcc_pelican_axi__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .rm(logical__rm),
         .hrm(logical__hrm),
         .boh(logical__boh),
+        .rep(logical__rep),
         .tx_channel(logical__tx_channel),
         .acl(logical__acl),
         .aux_a_state(logical__aux_a_state),
@@ -14702,6 +14705,7 @@ module drcc_pelican_axi__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .bs(logical__bs),
         .es(logical__es),
         .ep(logical__ep),
+        .err_state_r(logical__err_state_r),
         .rs(logical__rs),
         .ts(logical__ts),
         .txerr(logical__txerr),
@@ -14857,6 +14861,7 @@ module drcc_pelican_axi__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         logical__clk = clk;
         logical__rst = rst;
         logical__boh = mc__boh;
+        logical__rep = ext__xmode[32'h7];
         logical__mode = ext__xmode[(32'h0)+:(2)];
         logical__policy = ext__xmode[(32'h2)+:(2)];
         logical__rm = mc__rm;
@@ -14947,7 +14952,7 @@ module drcc_pelican_axi__pelican__view(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         ints__ali_evt = alc__pulse;
         ints__es = logical__es;
         ints__bs = logical__bs;
-        ints__err_state = err_state_u;
+        ints__err_state = logical__err_state_r;
         ints__xir_pending = ext__xir_pending;
         cfg__rst = rst;
         cfg__wr = wr;
@@ -15633,7 +15638,6 @@ module drcc_pelican_axi__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,rdata,ev
     localparam  xid1 = 8'h52;
     localparam  xver = 8'h10;
     localparam  mode_dmr = 2'b10;
-    localparam  xmode_mask = 8'h7f;
     localparam  k_one = 4'h1;
     localparam  zero4 = 4'h0;
     localparam  zero8 = 8'h0;
@@ -15674,8 +15678,8 @@ module drcc_pelican_axi__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,rdata,ev
                     ign = 1'b1;
                 end
                 else begin
-                    xmode_q__d = wdata & xmode_mask;
-                    reconfig = (wdata & xmode_mask) != xmode_q__q;
+                    xmode_q__d = wdata;
+                    reconfig = (wdata) != xmode_q__q;
                 end
             end
             if (addr == a_xk) begin
@@ -15987,7 +15991,7 @@ module drcc_pelican_axi__pelican__view__lanes(adr,sel,we,wdat,rbyte,reg_num,wbyt
 endmodule // drcc_pelican_axi__pelican__view__lanes
 
 
-module drcc_pelican_axi__pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,tx_channel,acl,aux_a_state,aux_b_state,err_state_a,ew_a,tec_a,rec_a,boff_runs_a,field_a,is_tx_a,err_state_b,ew_b,tec_b,rec_b,boff_runs_b,field_b,is_tx_b,u,bs,es,ep,rs,ts,txerr,rxerr);
+module drcc_pelican_axi__pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,rep,tx_channel,acl,aux_a_state,aux_b_state,err_state_a,ew_a,tec_a,rec_a,boff_runs_a,field_a,is_tx_a,err_state_b,ew_b,tec_b,rec_b,boff_runs_b,field_b,is_tx_b,u,bs,es,ep,err_state_r,rs,ts,txerr,rxerr);
 
     // Module arguments
     input wire  clk;
@@ -15997,6 +16001,7 @@ module drcc_pelican_axi__pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,t
     input wire  rm;
     input wire  hrm;
     input wire  boh;
+    input wire  rep;
     input wire  tx_channel;
     input wire  acl;
     input wire  [1:0] aux_a_state;
@@ -16019,6 +16024,7 @@ module drcc_pelican_axi__pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,t
     output reg  bs;
     output reg  es;
     output reg  ep;
+    output reg  [1:0] err_state_r;
     output reg  rs;
     output reg  ts;
     output reg  [7:0] txerr;
@@ -16068,13 +16074,18 @@ module drcc_pelican_axi__pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,t
     // Local signals
     reg  u_live;
     reg  [1:0] err_state_u;
-    reg  [8:0] tec_u;
     reg  [4:0] field_u;
     reg  is_tx_u;
     reg  bo_a;
     reg  bo_b;
     reg  bo_u;
     reg  [1:0] aux_other;
+    reg  [2:0] rank_a;
+    reg  [2:0] rank_b;
+    reg  other_competes;
+    reg  r;
+    reg  [8:0] tec_r;
+    reg  [6:0] boff_runs_r;
 
     // Update code
     always @(*) begin
@@ -16100,26 +16111,54 @@ module drcc_pelican_axi__pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,t
         u_q__d = u & ~rst;
         if (u) begin
             err_state_u = err_state_b;
-            tec_u = tec_b;
             field_u = field_b;
-            es = ew_b;
-            rxerr = rec_b;
             is_tx_u = is_tx_b;
             aux_other = aux_a_state;
         end
         else begin
             err_state_u = err_state_a;
-            tec_u = tec_a;
             field_u = field_a;
-            es = ew_a;
-            rxerr = rec_a;
             is_tx_u = is_tx_a;
             aux_other = aux_b_state;
+        end
+        rank_a = (((err_state_a) & 3'h7) << 32'h1) | ((ew_a) & 3'h7);
+        rank_b = (((err_state_b) & 3'h7) << 32'h1) | ((ew_b) & 3'h7);
+        other_competes = 1'b0;
+        if (rep & ~boh) begin
+            if (mode == redundancy) begin
+                other_competes = (policy != policy_none) & (aux_other == valid);
+            end
+            else if (mode == dmr) begin
+                other_competes = 1'b1;
+            end
+        end
+        r = u;
+        if (other_competes) begin
+            if (u) begin
+                r = rank_a >= rank_b;
+            end
+            else begin
+                r = rank_b < rank_a;
+            end
+        end
+        if (r) begin
+            err_state_r = err_state_b;
+            tec_r = tec_b;
+            boff_runs_r = boff_runs_b;
+            es = ew_b;
+            rxerr = rec_b;
+        end
+        else begin
+            err_state_r = err_state_a;
+            tec_r = tec_a;
+            boff_runs_r = boff_runs_a;
+            es = ew_a;
+            rxerr = rec_a;
         end
         bo_a = err_state_a == bus_off;
         bo_b = err_state_b == bus_off;
         bo_u = err_state_u == bus_off;
-        ep = err_state_u == passive;
+        ep = err_state_r == passive;
         if (boh) begin
             bs = bo_u;
         end
@@ -16132,19 +16171,14 @@ module drcc_pelican_axi__pelican__view__logical(clk,rst,mode,policy,rm,hrm,boh,t
         else begin
             bs = bo_u;
         end
-        if (bo_u) begin
-            if (u) begin
-                txerr = recovery_start - ((boff_runs_b) & 8'hff);
-            end
-            else begin
-                txerr = recovery_start - ((boff_runs_a) & 8'hff);
-            end
+        if (err_state_r == bus_off) begin
+            txerr = recovery_start - ((boff_runs_r) & 8'hff);
         end
-        else if (tec_u > counter_max) begin
+        else if (tec_r > counter_max) begin
             txerr = counter_max[(32'h0)+:(8)];
         end
         else begin
-            txerr = tec_u[(32'h0)+:(8)];
+            txerr = tec_r[(32'h0)+:(8)];
         end
         if (hrm) begin
             txerr = zero8;

@@ -57,6 +57,7 @@ const KEYS: &[&str] = &[
     "pelican_dual_tx",
     "pelican_star",
     "pelican_busoff",
+    "pelican_report",
 ];
 
 /// The keys a hub config file may have.
@@ -338,6 +339,7 @@ fn pelican_keys_of(table: &toml::Table, config: &DrccConfig) -> Result<PelicanKe
         dual_tx: switch(table, "pelican_dual_tx", d.dual_tx)?,
         star_on: switch(table, "pelican_star", d.star_on)?,
         bom: choice("pelican_busoff", &["auto", "sja1000"], d.bom as u8)? == 1,
+        report_best: choice("pelican_report", &["in_use", "best"], d.report_best as u8)? == 1,
         dmr: config.dmr,
         star: config.star,
     })
@@ -496,7 +498,7 @@ mod tests {
         let g = parse(
             "name = \"my_sja\"\nhost = \"pelican\"\npelican_stride = 1\n\
              pelican_default_mode = \"single_b\"\npelican_policy = \"k-failed\"\n\
-             pelican_k = 3\npelican_busoff = \"auto\"\n",
+             pelican_k = 3\npelican_busoff = \"auto\"\npelican_report = \"best\"\n",
         )
         .unwrap();
         assert_eq!(
@@ -509,6 +511,7 @@ mod tests {
                     policy: 2,
                     k: 3,
                     bom: false,
+                    report_best: true,
                     ..PelicanKeys::default()
                 },
                 Bus::Wishbone

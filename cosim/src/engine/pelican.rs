@@ -37,6 +37,7 @@ pub fn hdl_config(p: &PelicanParams) -> (DrccConfig, PelicanKeys) {
         dual_tx: p.dual_tx,
         star_on: p.star,
         bom: p.bom,
+        report_best: p.report_best,
         dmr: c.dmr,
         star: c.star,
     };

@@ -54,10 +54,14 @@ fn isr(n: &mut Net, seen: &mut Seen) {
 }
 
 /// `count` frames each way; line A cut at the DUT in the middle of its
-/// `cut_at`-th frame. Returns what the driver saw and the frames the other
-/// nodes received.
-fn run(p: PelicanParams, ier: u8, count: u32, cut_at: u32) -> (Seen, Net) {
+/// `cut_at`-th frame. `xmode`: an `XMODE` written in reset mode before the
+/// driver starts (the reset value another `pelican_*` key gives). Returns what
+/// the driver saw and the frames the other nodes received.
+fn run(p: PelicanParams, xmode: Option<u8>, ier: u8, count: u32, cut_at: u32) -> (Seen, Net) {
     let mut n = Net::new(p);
+    if let Some(x) = xmode {
+        n.w(115, x);
+    }
     n.linux_start(ier, 0x00);
     let mut seen = Seen::default();
     let (mut sent, mut peer_sent) = (0u32, 0u32);
@@ -136,7 +140,7 @@ fn check_delivery(seen: &Seen, n: &Net, count: u32) {
 /// an overrun, a failed transmission; error active at the end.
 #[test]
 fn line_a_cut_mid_frame_every_frame_once() {
-    let (seen, mut n) = run(PelicanParams::default(), 0x7F, 6, 2);
+    let (seen, mut n) = run(PelicanParams::default(), None, 0x7F, 6, 2);
     check_delivery(&seen, &n, 6);
     let bits: Vec<u8> = seen.errors.iter().map(|&(ir, _)| ir).collect();
     assert_eq!(
@@ -151,4 +155,26 @@ fn line_a_cut_mid_frame_every_frame_once() {
     );
     assert_eq!(n.r(2) & 0xC0, 0, "error active at the end: ES = BS = 0");
     assert_eq!(n.r(117) & 1, 1, "XSTAT.u: line B");
+}
+
+/// The same with `pelican_report = "best"` (`XMODE.rep`, P-LOG-5), as an
+/// unmodified driver gets it from the generation key: the driver's error
+/// state is the better channel that can carry its frames, line B, so the cut
+/// of line A shows nothing at all. Every frame arrives exactly once both ways,
+/// every transmission succeeds, no interrupt but `RI` and `TI`; the DRCC's own
+/// registers tell the cut (`XSTAT.u` = B, `XIR.switch`).
+#[test]
+fn line_a_cut_with_best_report_the_driver_sees_no_error() {
+    let keys = PelicanParams {
+        report_best: true,
+        ..PelicanParams::default()
+    };
+    let (seen, mut n) = run(PelicanParams::default(), Some(keys.xmode()), 0x7F, 6, 2);
+    check_delivery(&seen, &n, 6);
+    assert!(seen.errors.is_empty(), "no error seen: {:?}", seen.errors);
+    assert_eq!(n.r(2) & 0xC0, 0, "error active: ES = BS = 0");
+    assert_eq!(n.r(14), 0, "RXERR of line B");
+    assert_eq!(n.r(15), 0, "TXERR of line B");
+    assert_eq!(n.r(117) & 1, 1, "XSTAT.u: line B");
+    assert_eq!(n.r(120) & 0x01, 0x01, "XIR.switch: the DRCC switched lines");
 }

@@ -91,7 +91,8 @@ pub struct ExtensionRegs {
     /// Replicated star: the hubs have split.
     pub split: Signal<In, Bit>,
     // ---- to the view ----
-    /// `XMODE`: [1:0] mode, [3:2] policy, [4] dual_tx, [5] star, [6] bom.
+    /// `XMODE`: [1:0] mode, [3:2] policy, [4] dual_tx, [5] star, [6] bom,
+    /// [7] rep.
     pub xmode: Signal<Out, Bits<8>>,
     /// `XK` (1..15).
     pub xk: Signal<Out, Bits<4>>,
@@ -134,7 +135,6 @@ pub struct ExtensionRegs {
     xid1: Const<8, 0x52>,
     xver: Const<8, 0x10>,
     mode_dmr: Const<2, 2>,
-    xmode_mask: Const<8, 0x7F>,
     k_one: Const<4, 1>,
     zero4: Const<4, 0>,
     zero8: Const<8, 0>,
@@ -180,7 +180,7 @@ impl ExtensionRegs {
             xk: Default::default(),
             reconfig: Default::default(),
             xir_pending: Default::default(),
-            xmode_reset: Constant::new(((xmode & 0x7F) as u64).into()),
+            xmode_reset: Constant::new((xmode as u64).into()),
             xk_reset: Constant::new((xk.clamp(1, 15) as u64).into()),
             dmr_present: Constant::new(dmr),
             star_present: Constant::new(star),
@@ -207,7 +207,6 @@ impl ExtensionRegs {
             xid1: Default::default(),
             xver: Default::default(),
             mode_dmr: Default::default(),
-            xmode_mask: Default::default(),
             k_one: Default::default(),
             zero4: Default::default(),
             zero8: Default::default(),
@@ -244,9 +243,8 @@ impl Logic for ExtensionRegs {
                 {
                     self.ign.next = true;
                 } else {
-                    self.xmode_q.d.next = self.wdata.val() & self.xmode_mask.val();
-                    self.reconfig.next =
-                        (self.wdata.val() & self.xmode_mask.val()) != self.xmode_q.q.val();
+                    self.xmode_q.d.next = self.wdata.val();
+                    self.reconfig.next = (self.wdata.val()) != self.xmode_q.q.val();
                 }
             }
             if self.addr.val() == self.a_xk.val() {

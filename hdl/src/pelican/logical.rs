@@ -12,10 +12,13 @@
 //!   `bo_u` while no switch will carry the message away (policy `none`, or the
 //!   other channel's auxiliary FSM not valid, §D4.2); `DMR` both lines bus-off;
 //!   `bo_u` in every mode while `boh`.
-//! - `ES` = `ew_u`, `EP` = `ep_u` (P-LOG-4).
-//! - `TXERR` = `TEC` of `u`, or `127 - boff_runs` while `u` is bus-off (the
+//! - The reporting channel `r` (P-LOG-5): `u`; with `XMODE.rep` in
+//!   `REDUNDANCY` and `DMR`, outside the hold, the other channel when it could
+//!   carry the traffic and ranks better (error state, then warning).
+//! - `ES` = `ew_r`, `EP` = `ep_r` (P-LOG-4, P-LOG-5).
+//! - `TXERR` = `TEC` of `r`, or `127 - boff_runs` while `r` is bus-off (the
 //!   SJA1000 loads 127 and counts the recovery down, data sheet 6.4.12);
-//!   `RXERR` = `REC` of `u`; both 0 in host reset mode (P-ERR-1).
+//!   `RXERR` = `REC` of `r`; both 0 in host reset mode (P-ERR-1).
 //! - `RS`, `TS` (P-SR-1): 1 in reset mode; in operating mode `TS` is `u`'s
 //!   transmitter role and `RS` its activity on the bus as a receiver (its field
 //!   is none of integrating, idle, intermission, suspend, bus-off).
@@ -47,6 +50,8 @@ pub struct LogicalController {
     pub hrm: Signal<In, Bit>,
     /// The bus-off hold `boh` (P-BO-1): `u` and `BS` are kept through it.
     pub boh: Signal<In, Bit>,
+    /// `XMODE.rep`: report the better channel that could carry the traffic.
+    pub rep: Signal<In, Bit>,
     // ---- the core's choice of channel ----
     /// The main FSM's `tx_channel` (0 = A).
     pub tx_channel: Signal<In, Bit>,
@@ -93,8 +98,10 @@ pub struct LogicalController {
     pub bs: Signal<Out, Bit>,
     /// `SR.ES`: error warning of `u`.
     pub es: Signal<Out, Bit>,
-    /// Logical error passive: `u` is error passive (for `EPI`, P-IR-6).
+    /// Logical error passive: `r` is error passive.
     pub ep: Signal<Out, Bit>,
+    /// The error state of `r` (for `EPI`, P-IR-6).
+    pub err_state_r: Signal<Out, Bits<2>>,
     /// `SR.RS`: receiving.
     pub rs: Signal<Out, Bit>,
     /// `SR.TS`: transmitting.
@@ -110,13 +117,19 @@ pub struct LogicalController {
     u_q: DFF<Bit>,
     // ---- channel u's probes ----
     err_state_u: Signal<Local, Bits<2>>,
-    tec_u: Signal<Local, Bits<9>>,
     field_u: Signal<Local, Field>,
     is_tx_u: Signal<Local, Bit>,
     bo_a: Signal<Local, Bit>,
     bo_b: Signal<Local, Bit>,
     bo_u: Signal<Local, Bit>,
     aux_other: Signal<Local, Bits<2>>,
+    // ---- the reporting channel r (P-LOG-5) ----
+    rank_a: Signal<Local, Bits<3>>,
+    rank_b: Signal<Local, Bits<3>>,
+    other_competes: Signal<Local, Bit>,
+    r: Signal<Local, Bit>,
+    tec_r: Signal<Local, Bits<9>>,
+    boff_runs_r: Signal<Local, Bits<7>>,
     // ---- codes ----
     single_a: Const<2, 0>,
     redundancy: Const<2, 1>,
@@ -152,26 +165,55 @@ impl Logic for LogicalController {
         self.u_q.d.next = self.u.val() & !self.rst.val();
         if self.u.val() {
             self.err_state_u.next = self.err_state_b.val();
-            self.tec_u.next = self.tec_b.val();
             self.field_u.next = self.field_b.val();
-            self.es.next = self.ew_b.val();
-            self.rxerr.next = self.rec_b.val();
             self.is_tx_u.next = self.is_tx_b.val();
             self.aux_other.next = self.aux_a_state.val();
         } else {
             self.err_state_u.next = self.err_state_a.val();
-            self.tec_u.next = self.tec_a.val();
             self.field_u.next = self.field_a.val();
-            self.es.next = self.ew_a.val();
-            self.rxerr.next = self.rec_a.val();
             self.is_tx_u.next = self.is_tx_a.val();
             self.aux_other.next = self.aux_b_state.val();
+        }
+        // P-LOG-5: the reporting channel; rank = error state, then warning
+        self.rank_a.next = (bit_cast::<3, 2>(self.err_state_a.val()) << 1)
+            | bit_cast::<3, 1>(self.ew_a.val().into());
+        self.rank_b.next = (bit_cast::<3, 2>(self.err_state_b.val()) << 1)
+            | bit_cast::<3, 1>(self.ew_b.val().into());
+        self.other_competes.next = false;
+        if self.rep.val() & !self.boh.val() {
+            if self.mode.val() == self.redundancy.val() {
+                self.other_competes.next = (self.policy.val() != self.policy_none.val())
+                    & (self.aux_other.val() == self.valid.val());
+            } else if self.mode.val() == self.dmr.val() {
+                self.other_competes.next = true;
+            }
+        }
+        self.r.next = self.u.val();
+        if self.other_competes.val() {
+            if self.u.val() {
+                self.r.next = self.rank_a.val() >= self.rank_b.val();
+            } else {
+                self.r.next = self.rank_b.val() < self.rank_a.val();
+            }
+        }
+        if self.r.val() {
+            self.err_state_r.next = self.err_state_b.val();
+            self.tec_r.next = self.tec_b.val();
+            self.boff_runs_r.next = self.boff_runs_b.val();
+            self.es.next = self.ew_b.val();
+            self.rxerr.next = self.rec_b.val();
+        } else {
+            self.err_state_r.next = self.err_state_a.val();
+            self.tec_r.next = self.tec_a.val();
+            self.boff_runs_r.next = self.boff_runs_a.val();
+            self.es.next = self.ew_a.val();
+            self.rxerr.next = self.rec_a.val();
         }
         // P-LOG-2, P-LOG-3: logical bus-off
         self.bo_a.next = self.err_state_a.val() == self.bus_off.val();
         self.bo_b.next = self.err_state_b.val() == self.bus_off.val();
         self.bo_u.next = self.err_state_u.val() == self.bus_off.val();
-        self.ep.next = self.err_state_u.val() == self.passive.val();
+        self.ep.next = self.err_state_r.val() == self.passive.val();
         if self.boh.val() {
             // the held channel stays bus-off until the host clears RM (P-BO-3)
             self.bs.next = self.bo_u.val();
@@ -186,18 +228,12 @@ impl Logic for LogicalController {
             self.bs.next = self.bo_u.val();
         }
         // P-ERR-1: TXERR counts the recovery down from 127 while bus-off
-        if self.bo_u.val() {
-            if self.u.val() {
-                self.txerr.next =
-                    self.recovery_start.val() - bit_cast::<8, 7>(self.boff_runs_b.val());
-            } else {
-                self.txerr.next =
-                    self.recovery_start.val() - bit_cast::<8, 7>(self.boff_runs_a.val());
-            }
-        } else if self.tec_u.val() > self.counter_max.val() {
+        if self.err_state_r.val() == self.bus_off.val() {
+            self.txerr.next = self.recovery_start.val() - bit_cast::<8, 7>(self.boff_runs_r.val());
+        } else if self.tec_r.val() > self.counter_max.val() {
             self.txerr.next = self.counter_max.val().get_bits::<8>(0);
         } else {
-            self.txerr.next = self.tec_u.val().get_bits::<8>(0);
+            self.txerr.next = self.tec_r.val().get_bits::<8>(0);
         }
         if self.hrm.val() {
             self.txerr.next = self.zero8.val();

@@ -46,6 +46,9 @@ pub struct PelicanKeys {
     pub star_on: bool,
     /// `pelican_busoff = "sja1000"`: a bus-off enters reset mode.
     pub bom: bool,
+    /// `pelican_report = "best"`: the error state and counters of the better
+    /// channel that could carry the traffic (`XMODE.rep`, P-LOG-5).
+    pub report_best: bool,
     /// The core has the DMR function.
     pub dmr: bool,
     /// The core has the replicated-star node.
@@ -64,6 +67,7 @@ impl Default for PelicanKeys {
             dual_tx: false,
             star_on: false,
             bom: true,
+            report_best: false,
             dmr: true,
             star: true,
         }
@@ -72,13 +76,14 @@ impl Default for PelicanKeys {
 
 impl PelicanKeys {
     /// The reset value of `XMODE` (§13): [1:0] mode, [3:2] policy, [4] dual_tx,
-    /// [5] star, [6] bom.
+    /// [5] star, [6] bom, [7] rep.
     pub fn xmode(&self) -> u8 {
         (self.mode & 3)
             | (self.policy & 3) << 2
             | (self.dual_tx as u8) << 4
             | (self.star_on as u8) << 5
             | (self.bom as u8) << 6
+            | (self.report_best as u8) << 7
     }
 
     /// `Err` naming the key when the keys ask for what `cfg` lacks or a value
@@ -141,6 +146,10 @@ impl PelicanKeys {
             (
                 "PELICAN_BUSOFF",
                 if self.bom { "sja1000" } else { "auto" }.to_string(),
+            ),
+            (
+                "PELICAN_REPORT",
+                if self.report_best { "best" } else { "in_use" }.to_string(),
             ),
         ]
     }

@@ -294,9 +294,35 @@ impl PelicanModel {
         }
     }
 
-    /// `ES` (P-LOG-4).
+    /// The reporting channel `r` (P-LOG-5): `u`, or with `XMODE.rep` in
+    /// `REDUNDANCY` and `DMR` the other channel when it could carry the
+    /// traffic and ranks better (error state, then warning), outside the hold.
+    pub fn r(&self) -> usize {
+        let u = self.u();
+        let v = &self.v;
+        let c = self.core.core_view();
+        let o = 1 - u;
+        let competes = v.xmode & 0x80 != 0
+            && !v.boh
+            && match v.mode() {
+                mode::REDUNDANCY => {
+                    (v.xmode >> 2) & 3 != 0 && c.aux[o] == crate::model::drcc::regs::aux::VALID
+                }
+                mode::DMR => true,
+                _ => false,
+            };
+        let rank =
+            |x: usize| 2 * (c.chan[x].probes.err_state & 3) + c.chan[x].diag.err_warning as u8;
+        if competes && rank(o) < rank(u) {
+            o
+        } else {
+            u
+        }
+    }
+
+    /// `ES` (P-LOG-4): the reporting channel's warning.
     pub fn es(&self) -> bool {
-        self.core.core_view().chan[self.u()].diag.err_warning
+        self.core.core_view().chan[self.r()].diag.err_warning
     }
 
     /// The core's drive for this edge from the view's registers before it.

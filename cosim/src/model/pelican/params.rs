@@ -19,6 +19,8 @@ pub struct PelicanParams {
     pub star: bool,
     /// `pelican_busoff = "sja1000"` (`XMODE.bom`).
     pub bom: bool,
+    /// `pelican_report = "best"` (`XMODE.rep`, P-LOG-5).
+    pub report_best: bool,
     /// The native sizes (`rx_fifo_depth`, `dmr`, `star`, ...).
     pub core: DrccParams,
 }
@@ -43,6 +45,7 @@ impl Default for PelicanParams {
             dual_tx: false,
             star: false,
             bom: true,
+            report_best: false,
             core: DrccParams::DEFAULT,
         }
     }
@@ -56,5 +59,6 @@ impl PelicanParams {
             | (self.dual_tx as u8) << 4
             | (self.star as u8) << 5
             | (self.bom as u8) << 6
+            | (self.report_best as u8) << 7
     }
 }

@@ -183,8 +183,6 @@ impl PelicanModel {
     pub fn read(&self, r: u8) -> u8 {
         let v = &self.v;
         let c = self.core.core_view();
-        let u = self.u();
-        let ch = c.chan[u];
         match r {
             adr::MOD => v.rm() as u8 | (v.lom as u8) << 1 | (v.stm as u8) << 2 | (v.afm as u8) << 3,
             adr::SR => self.sr(),
@@ -196,12 +194,13 @@ impl PelicanModel {
             adr::ALC => v.alc,
             adr::ECC => v.ecc,
             adr::EWLR => v.ewlr,
-            adr::RXERR if !v.hrm => ch.probes.rec,
+            adr::RXERR if !v.hrm => c.chan[self.r()].probes.rec,
             adr::TXERR if !v.hrm => {
-                if ch.probes.err_state == 2 {
-                    127u8.saturating_sub(ch.probes.boff_runs)
+                let rp = c.chan[self.r()].probes;
+                if rp.err_state == 2 {
+                    127u8.saturating_sub(rp.boff_runs)
                 } else {
-                    ch.probes.tec.min(255) as u8
+                    rp.tec.min(255) as u8
                 }
             }
             16..=23 if v.rm() => {
@@ -224,7 +223,7 @@ impl PelicanModel {
             adr::XMODE => v.xmode,
             adr::XK => v.xk,
             adr::XSTAT => {
-                (u as u8)
+                (self.u() as u8)
                     | (c.failover as u8) << 1
                     | (c.aux[0] & 3) << 2
                     | (c.aux[1] & 3) << 4
@@ -381,8 +380,8 @@ impl PelicanModel {
                 {
                     n.xir |= xir::IGN;
                 } else if r == adr::XMODE {
-                    reconfig(n, v.xmode, b & 0x7F);
-                    n.xmode = b & 0x7F;
+                    reconfig(n, v.xmode, b);
+                    n.xmode = b;
                 } else {
                     let k = (b & 0xF).max(1);
                     reconfig(n, v.xk, k);
@@ -514,12 +513,12 @@ impl PelicanModel {
         }
         // P-IR-5, P-IR-6, P-BO-1.
         let (es, bs) = (self.es(), self.lbo());
-        let st = ch.probes.err_state;
+        let st = c.chan[self.r()].probes.err_state;
         if (es != v.es_q || bs != v.bs_q) && en(ier::EIE) {
             n.ir |= ir::EI;
         }
         // Passive -> active counts unless ES falls at the same edge (P-IR-6).
-        // "Becomes ERROR_PASSIVE": from any other state of `u` (a switch from
+        // "Becomes ERROR_PASSIVE": from any other state of `r` (a switch from
         // a bus-off channel to a passive one included).
         let es_falls = v.es_q && !es;
         let epi = (v.st_q != 1 && st == 1) || (v.st_q == 1 && st == 0 && !es_falls);

@@ -35,6 +35,7 @@ fn reset_value(r: u8, p: &PelicanParams) -> u8 {
                 | (p.dual_tx as u8) << 4
                 | (p.star as u8) << 5
                 | (p.bom as u8) << 6
+                | (p.report_best as u8) << 7
         }
         116 => p.k.max(1),
         // §13 XSTAT[0] = u, P-LOG-1: B in SINGLE_B; the rest 0 (below).
@@ -78,6 +79,7 @@ fn reset_values_every_address_stride1() {
         dual_tx: true,
         star: false,
         bom: false,
+        report_best: true,
         core: DrccParams::DEFAULT,
     });
 }
@@ -274,7 +276,7 @@ fn tx_buffer_ram_96_108_and_free_ram_109_111() {
 }
 
 /// Differs (DS: 112..127 read 0x00): §13 extension. Identification read
-/// only; XMODE / XK reset mode only with XIR.ign (P-X-1); XIER both modes;
+/// only; XMODE (all 8 bits) / XK reset mode only with XIR.ign (P-X-1); XIER both modes;
 /// XIR clears on read (P-X-2); XWIN_IDX [5:0], XWIN_D read back; a commit of
 /// an index outside P-X-4's list is refused (XWIN_CMD[0], XIR.win).
 #[test]
@@ -283,7 +285,7 @@ fn extension_112_127_replaces_the_zero_reads() {
     n.peer_on = [false, false];
     // P-X-1: XMODE [6:0], XK [3:0] with 0 stored as 1.
     n.w(reg::XMODE, 0x80 | 0x46);
-    assert_eq!(n.r(reg::XMODE), 0x46, "§13: XMODE [6:0]");
+    assert_eq!(n.r(reg::XMODE), 0xC6, "§13: XMODE [7:0], rep in [7]");
     n.w(reg::XMODE, 0x44);
     n.w(reg::XK, 0xF7);
     assert_eq!(n.r(reg::XK), 0x07, "§13: XK [3:0]");

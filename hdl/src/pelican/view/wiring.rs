@@ -34,6 +34,7 @@ impl Logic for PelicanView {
         self.logical.clk.next = self.clk.val();
         self.logical.rst.next = self.rst.val();
         self.logical.boh.next = self.mc.boh.val();
+        self.logical.rep.next = self.ext.xmode.val().get_bit(7);
         self.logical.mode.next = self.ext.xmode.val().get_bits::<2>(0);
         self.logical.policy.next = self.ext.xmode.val().get_bits::<2>(2);
         self.logical.rm.next = self.mc.rm.val();
@@ -125,7 +126,7 @@ impl Logic for PelicanView {
         self.ints.ali_evt.next = self.alc.pulse.val();
         self.ints.es.next = self.logical.es.val();
         self.ints.bs.next = self.logical.bs.val();
-        self.ints.err_state.next = self.err_state_u.val();
+        self.ints.err_state.next = self.logical.err_state_r.val();
         self.ints.xir_pending.next = self.ext.xir_pending.val();
         // ---- configuration, buffers, extension ----
         self.cfg.rst.next = self.rst.val();

@@ -46,6 +46,7 @@ struct In {
     policy: u64,
     rm: bool,
     hrm: bool,
+    rep: bool,
     tx_channel: bool,
     acl: bool,
     aux: [u64; 2],
@@ -57,6 +58,7 @@ const OP: In = In {
     policy: 1,
     rm: false,
     hrm: false,
+    rep: false,
     tx_channel: false,
     acl: false,
     aux: [VALID, VALID],
@@ -73,6 +75,7 @@ fn eval(i: In) -> Out {
     uut.policy.next = i.policy.into();
     uut.rm.next = i.rm;
     uut.hrm.next = i.hrm;
+    uut.rep.next = i.rep;
     uut.tx_channel.next = i.tx_channel;
     uut.acl.next = i.acl;
     uut.aux_a_state.next = i.aux[0].into();
@@ -358,5 +361,75 @@ fn p_log_1_u_and_bs_kept_through_the_busoff_hold() {
     assert!(
         !uut.u.val() && !uut.bs.val(),
         "after the hold: A carries it"
+    );
+}
+
+/// P-LOG-5: with `rep`, the other channel reports when it can carry the
+/// traffic and ranks better (error state, then warning); a tie keeps `u`;
+/// `BS` stays the logical bus-off; single modes and policy `none` keep `u`.
+#[test]
+fn p_log_5_best_channel_reports() {
+    let warn = Chan {
+        ew: true,
+        tec: 100,
+        rec: 3,
+        ..IDLE
+    };
+    let passive = Chan {
+        err_state: PASSIVE,
+        tec: 130,
+        ..IDLE
+    };
+    let red = In {
+        mode: REDUNDANCY,
+        rep: true,
+        ch: [warn, IDLE],
+        ..OP
+    };
+    // (u, BS, ES, EP, RS, TS, TXERR, RXERR)
+    let o = eval(red);
+    assert_eq!(
+        (o.0, o.2, o.6, o.7),
+        (false, false, 0, 0),
+        "B reports for A"
+    );
+    let o = eval(In { rep: false, ..red });
+    assert_eq!((o.2, o.6, o.7), (true, 100, 3), "in_use: A's");
+    let o = eval(In {
+        aux: [VALID, FAILED],
+        ..red
+    });
+    assert_eq!((o.2, o.6), (true, 100), "B not valid: A's");
+    let o = eval(In { policy: 0, ..red });
+    assert!(o.2, "policy none: no switch, A's");
+    let o = eval(In {
+        ch: [passive, warn],
+        ..red
+    });
+    assert_eq!(
+        (o.2, o.3, o.6),
+        (true, false, 100),
+        "B warning beats A passive"
+    );
+    let o = eval(In {
+        ch: [warn, warn],
+        ..red
+    });
+    assert_eq!((o.2, o.6), (true, 100), "a tie keeps u");
+    let o = eval(In {
+        mode: SINGLE_A,
+        ..red
+    });
+    assert_eq!(o.6, 100, "single mode: u");
+    let dmr = eval(In {
+        mode: DMR,
+        acl: true,
+        ch: [IDLE, passive],
+        ..red
+    });
+    assert_eq!(
+        (dmr.0, dmr.3, dmr.6),
+        (true, false, 0),
+        "DMR: A reports for B"
     );
 }

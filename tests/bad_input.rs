@@ -1,4 +1,4 @@
-//! Bad input on the command line (issue 15, part 1): every case exits 2 with one
+//! Bad input on the command line: every case exits 2 with one
 //! message that names what is wrong and how to fix it, and changes no file; the
 //! run does not start. (Generated files and the checkout rule:
 //! `tests/generated_files.rs`.)

@@ -1,4 +1,4 @@
-//! `drcc serve` with the tools CAN engineers already use (issue 16): unmodified
+//! `drcc serve` with the tools CAN engineers already use: unmodified
 //! python-can as the client of a served dual bus of DRCC nodes (both directions,
 //! base and extended identifiers, 1,000 frames round trip, a receive filter,
 //! reconnection, two clients at once, a line A cut hidden by the redundancy, the

@@ -1,4 +1,4 @@
-//! Functional coverage (issue 15, part 4): the model's cover points counted over
+//! Functional coverage: the model's cover points counted over
 //! the test suite's workloads (`drcc_testbench::coverage`, the same collection as
 //! `drcc coverage`). Every bin defined from the standard, the papers and the
 //! contracts is hit, and no name is counted that is not a bin (an illegal FSM

@@ -1,5 +1,5 @@
-//! DMR register interface on all three engines (DMR contract §2; issue 12 "bad
-//! input"): every illegal DMR configuration of §2.2 is refused (nothing stored,
+//! DMR register interface on all three engines (DMR contract §2; bad
+//! input): every illegal DMR configuration of §2.2 is refused (nothing stored,
 //! `INT_STATUS.illegal` set), legal ones are stored and read back, and a mode
 //! change outside reset mode is refused. One Wishbone script drives the model,
 //! rust-hdl's simulator and the Verilated RTL in lock step (every output compared

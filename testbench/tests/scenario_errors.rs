@@ -278,7 +278,7 @@ fn controller_configuration_keys() {
     assert!(!sc.to_toml().contains("node_config"));
 }
 
-/// Issue 15: what cannot finish, or would be silently ignored, is refused with the
+/// What cannot finish, or would be silently ignored, is refused with the
 /// limit or the fix named (no run for days, no PASS with a fault never applied).
 #[test]
 fn refused_before_the_run_with_the_limit_named() {

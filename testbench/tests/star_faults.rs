@@ -287,7 +287,7 @@ fn assert_nodes_follow(s: &StarScenario, r: &StarReport, split: bool) {
 
 #[test]
 fn all_interlinks_lost_ends_in_an_agreed_definitive_decoupling_and_loses_nothing() {
-    // Issue 13: before NRAP the hubs decoupled on their own at different times and 2
+    // Before NRAP the hubs decoupled on their own at different times and 2
     // frames were lost. Now both run NRAP (paper section 5), each ends in SPLIT
     // within the §9.5 bound, every node's register says so, and nothing is lost.
     let (s, r) = run(StarFault::AllInterlinksLost);

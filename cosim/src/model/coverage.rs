@@ -1,4 +1,4 @@
-//! Functional coverage of the reference model (issue 15, part 4): named bins,
+//! Functional coverage of the reference model: named bins,
 //! counted where the rule they witness is applied, as CTU CAN FD puts PSL cover
 //! points beside its rules.
 //!

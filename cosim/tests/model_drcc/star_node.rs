@@ -1,4 +1,4 @@
-//! The node side of a replicated star (DRCC contract §4.5, §5, §7, issue 13): a
+//! The node side of a replicated star (DRCC contract §4.5, §5, §7): a
 //! star node takes the hubs' identification frames out of its RX path and follows
 //! their decision (`STAR_STATUS`), counts omissions per channel (`OMISSIONS`), and
 //! the warning-limit policy fails a channel whose TEC reaches `ewl`. Plain

@@ -1,5 +1,5 @@
-//! Functional coverage over the test suite's workloads (issue 15, part 4;
-//! `drcc coverage`): the reference model's cover points
+//! Functional coverage over the test suite's workloads
+//! (`drcc coverage`): the reference model's cover points
 //! ([`drcc_cosim::model::coverage`]) counted while the workloads the tests run
 //! execute on the model: every conformance item, random traffic, random error
 //! stress, the dual-bus and star fault tables, the DMR plan, a hub's random

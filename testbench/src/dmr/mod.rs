@@ -1,4 +1,4 @@
-//! The CiA 701 DMR test plan (issue 12; seed 001 "Dual-modular Redundancy for CAN
+//! The CiA 701 DMR test plan (seed 001 "Dual-modular Redundancy for CAN
 //! networks", Figure 9, Tables 2 and 3; DMR contract §10): four DRCC devices in DMR
 //! mode, COS1, COS2, COS3 and COM1 (nodes 0..3), channel A on the default CAN line
 //! (DCL, line A) and channel B on the redundant CAN line (RCL, line B), at 125 kbit/s

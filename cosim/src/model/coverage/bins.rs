@@ -1,4 +1,4 @@
-//! The coverage catalogue (issue 15, part 4): the bins the product must reach,
+//! The coverage catalogue: the bins the product must reach,
 //! written from the standard, the papers and the contracts (not from what a run
 //! hits), the combinations that cannot occur with the reason, and the bin-name
 //! builders the cover points use. Counting lives in the parent module.

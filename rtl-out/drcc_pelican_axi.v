@@ -6,7 +6,7 @@
 // interrupt and CAN pins.
 // Contract:   cosim/src/model/pelican_contract.md
 // Source:     hdl/src/pelican/bus_tops.rs (`DrccPelicanAxi`, port docs from its `///` comments)
-// Parameters: M = 16, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32, DMR = 1, STAR = 1, HOST = pelican, PELICAN_STRIDE = 4, PELICAN_DEFAULT_MODE = redundancy, PELICAN_POLICY = error-passive, PELICAN_K = 1, PELICAN_DUAL_TX = 0, PELICAN_STAR = 0, PELICAN_BUSOFF = sja1000, BUS = axi4-lite
+// Parameters: M = 16, RX_FIFO_DEPTH = 32, TX_QUEUE_DEPTH = 8, HISTORY = 32, DMR = 1, STAR = 1, HOST = pelican, PELICAN_STRIDE = 4, PELICAN_DEFAULT_MODE = redundancy, PELICAN_POLICY = error-passive, PELICAN_K = 1, PELICAN_DUAL_TX = 0, PELICAN_STAR = 0, PELICAN_BUSOFF = sja1000, PELICAN_REPORT = best, BUS = axi4-lite
 // Verilog parameters: RX_FIFO_DEPTH, TX_QUEUE_DEPTH, HISTORY, STAR, set per instance within their
 // offer (the top's declarations); M (and DMR, which mailboxes need) is fixed when the file is
 // generated.
@@ -15620,7 +15620,7 @@ module drcc_pelican_axi__pelican__view__ext(clk,rst,wr,rd,addr,wdata,rm,rdata,ev
     output reg  xir_pending;
 
     // Constant declarations
-    localparam  xmode_reset = 8'h45;
+    localparam  xmode_reset = 8'hc5;
     localparam  xk_reset = 4'h1;
     localparam  dmr_present = 1'b1;
     localparam  star_present = 1'b1;

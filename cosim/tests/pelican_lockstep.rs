@@ -9,7 +9,9 @@
 //!   model: in rust-hdl's simulator for every generation key they use, and, for
 //!   the keys `rtl-out/drcc_pelican.v` is generated with, also Verilated.
 //! - The data sheet's conformance tests (`model_pelican/conformance/`), so the
-//!   RTL meets them too. (The side-by-side runs against the independent SJA1000
+//!   RTL meets them too: on the Verilated top alone, with the keys that only
+//!   set `XMODE` and `XK` written there after reset (`Net::keyed`); in rust-hdl's
+//!   simulator for other strides and sizes, and without Verilator. (The side-by-side runs against the independent SJA1000
 //!   core, `model_pelican/side_by_side.rs`, stay on the model: in rust-hdl's
 //!   simulator they would take ten minutes, and the lock step ties the RTL to
 //!   the model.)
@@ -96,6 +98,17 @@ mod shadow {
             let rtl = (*p == PelicanVerilator::params() && crate::verilator_present())
                 .then(|| PelicanVerilator::new().expect("Verilated drcc_pelican"));
             Shadow { hdl, rtl, clock: 0 }
+        }
+
+        /// The data sheet's conformance tests (`Net::keyed`): the Verilated
+        /// top alone beside the model, where Verilator is here and `p` has the
+        /// stride and the sizes it was generated with (the other keys are
+        /// `XMODE` and `XK`, which the harness writes). `None` otherwise: the
+        /// test runs on a top generated with `p`, in rust-hdl's simulator.
+        pub fn keyed(p: &PelicanParams) -> Option<(PelicanParams, Self)> {
+            let g = PelicanVerilator::params();
+            (p.stride == g.stride && p.core == g.core && crate::verilator_present())
+                .then(|| (g, Self::with(&g, false)))
         }
 
         /// The Verilated top runs beside the model.

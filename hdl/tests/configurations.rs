@@ -120,3 +120,31 @@ fn the_size_localparams_carry_the_configuration() {
         assert!(v.contains(line), "missing {line}");
     }
 }
+
+/// The SJA1000 view's tops in `rtl-out/` are built with the generator's
+/// default keys: their header parameters name those keys, and the `XMODE`
+/// reset value in their Verilog is the one those keys give (§13, P-GEN-1).
+#[test]
+fn the_pelican_tops_carry_the_default_keys() {
+    use drcc_hdl::pelican::PelicanKeys;
+    let k = PelicanKeys::default();
+    let want: Vec<(String, String)> = k
+        .params()
+        .into_iter()
+        .filter(|(n, _)| n.starts_with("PELICAN_"))
+        .map(|(n, v)| (n.to_string(), v))
+        .collect();
+    for name in ["drcc_pelican", "drcc_pelican_apb", "drcc_pelican_axi"] {
+        let top = drcc_hdl::tops::top(name).expect(name);
+        let have: Vec<(String, String)> = top
+            .params
+            .iter()
+            .filter(|(n, _)| n.starts_with("PELICAN_"))
+            .map(|(n, v)| (n.to_string(), v.to_string()))
+            .collect();
+        assert_eq!(have, want, "{name}: header parameters");
+        let v = top.verilog();
+        let line = format!("localparam  xmode_reset = 8'h{:02x};", k.xmode());
+        assert!(v.contains(&line), "{name}: {line}");
+    }
+}

@@ -19,10 +19,13 @@ pub struct Net {
     pub peer_on: [bool; 2],
     /// Line x is cut at the DUT (it sees recessive, its tx goes nowhere).
     pub cut: [bool; 2],
+    /// Something else drives line x dominant (another node's bit, or a fault):
+    /// the DUT and the peer both see it.
+    pub force_dom: [bool; 2],
     pub tx: [bool; 2],
     pub out: PelicanOutputs,
     pub clock: u64,
-    /// `irq` of every clock since the last `clear_log`.
+    /// The frame the peer of line x is asked to send.
     pub peer_req: [Option<Frame>; 2],
     pub received: Vec<(usize, Frame)>,
     /// Whatever the test binary runs beside the model, edge by edge
@@ -30,10 +33,37 @@ pub struct Net {
     pub shadow: crate::shadow::Shadow,
     /// Reset the other nodes at the next clock (`reset_peers`).
     pub peer_rst: bool,
+    /// `XMODE` and `XK` written in reset mode after every hardware reset
+    /// (`keyed`).
+    pub rekey: Option<(u8, u8)>,
 }
 
 impl Net {
+    /// A top generated with the keys `p`.
     pub fn new(p: PelicanParams) -> Self {
+        Self::build(p, crate::shadow::Shadow::new(&p))
+    }
+
+    /// A top that behaves as one generated with the keys `p`. The keys that
+    /// differ only in what `XMODE` and `XK` hold set only those registers'
+    /// reset values (P-GEN-1, §13), so where the lock step has a top built
+    /// with other such keys (`crate::shadow::Shadow::keyed`), that top runs
+    /// with `XMODE` and `XK` written in reset mode after every hardware reset.
+    /// Elsewhere this is `new(p)`.
+    pub fn keyed(p: PelicanParams) -> Self {
+        match crate::shadow::Shadow::keyed(&p) {
+            Some((built, shadow)) if built != p => {
+                let mut n = Self::build(built, shadow);
+                n.rekey = Some((p.xmode(), p.k));
+                n.write_keys();
+                n
+            }
+            Some((_, shadow)) => Self::build(p, shadow),
+            None => Self::new(p),
+        }
+    }
+
+    fn build(p: PelicanParams, shadow: crate::shadow::Shadow) -> Self {
         let peer = [ChannelModel::new(), ChannelModel::new()];
         let peer_out = [peer[0].outputs(), peer[1].outputs()];
         let mut n = Net {
@@ -43,6 +73,7 @@ impl Net {
             peer_mode: Mode::Normal,
             peer_on: [true, true],
             cut: [false, false],
+            force_dom: [false, false],
             tx: [true, true],
             out: PelicanOutputs {
                 dat: 0,
@@ -55,8 +86,9 @@ impl Net {
             clock: 0,
             peer_req: [None, None],
             received: vec![],
-            shadow: crate::shadow::Shadow::new(&p),
+            shadow,
             peer_rst: false,
+            rekey: None,
         };
         // the documented minimum reset: 4 edges with rst high
         for _ in 0..4 {
@@ -68,10 +100,32 @@ impl Net {
         n
     }
 
+    /// One clock with `rst` (a hardware reset in the middle of a test), then
+    /// the keys of a `keyed` top.
+    pub fn hardware_reset(&mut self) {
+        self.clk(PelicanInputs {
+            rst: true,
+            ..Default::default()
+        });
+        self.write_keys();
+    }
+
+    /// `XMODE` and `XK` of a `keyed` top, written in reset mode (after a
+    /// reset, P-MOD-1).
+    fn write_keys(&mut self) {
+        if let Some((xmode, k)) = self.rekey {
+            self.w(115, xmode);
+            self.w(116, k);
+        }
+    }
+
     /// One clock with the Wishbone inputs of `i`.
     pub fn clk(&mut self, mut i: PelicanInputs) -> PelicanOutputs {
-        // Line x: the peer's tx (if on) AND the DUT's tx (unless cut).
-        let line = |x: usize, s: &Net| (!s.peer_on[x] || s.peer_out[x].tx) && (s.cut[x] || s.tx[x]);
+        // Line x: the peer's tx (if on) AND the DUT's tx (unless cut) AND
+        // whatever else drives it.
+        let line = |x: usize, s: &Net| {
+            (!s.peer_on[x] || s.peer_out[x].tx) && (s.cut[x] || s.tx[x]) && !s.force_dom[x]
+        };
         let (pa, pb) = (line(0, self), line(1, self));
         i.chan_a_rx = self.cut[0] || pa;
         i.chan_b_rx = self.cut[1] || pb;

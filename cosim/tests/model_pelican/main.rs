@@ -27,6 +27,11 @@ mod shadow {
             Shadow
         }
 
+        /// No other top: every key is the model's own.
+        pub fn keyed(_: &PelicanParams) -> Option<(PelicanParams, Self)> {
+            None
+        }
+
         pub fn edge(&mut self, _: &PelicanInputs, _: &PelicanModel) {}
     }
 }

@@ -35,8 +35,9 @@ fn reset_values(stride: u8) {
         (112, 0x44),
         (113, 0x52),
         (114, 0x10),
-        // XMODE: redundancy (1), error-passive (1 << 2), bom (1 << 6).
-        (115, 0x45),
+        // XMODE: redundancy (1), error-passive (1 << 2), bom (1 << 6),
+        // report the best channel (1 << 7).
+        (115, 0xC5),
         (2, 0x3C),
         (116, 0x01),
         (120, 0),
@@ -128,7 +129,7 @@ fn p_map_1_3_refusal_rules() {
         n.w(115, 0x01);
         assert_eq!(n.r(6), 0x00, "P-CFG-1: BTR0 write in op ignored");
         assert_eq!(n.r(96), 0x88, "P-TX-1: 96.. not written in op");
-        assert_eq!(n.r(115), 0x44, "P-X-1: XMODE write in op ignored");
+        assert_eq!(n.r(115), 0xC4, "P-X-1: XMODE write in op ignored");
         assert_eq!(n.r(120) & 0x80, 0x80, "P-X-1: with XIR.ign");
         assert_eq!(n.r(1), 0, "P-MAP-1: CMR reads 0");
         n.w(0, 0x10);

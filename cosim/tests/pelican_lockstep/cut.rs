@@ -130,17 +130,22 @@ fn check_delivery(seen: &Seen, n: &Net, count: u32) {
     assert_eq!(seen.tx_failed, 0);
 }
 
-/// The generator's default keys (redundancy, error-passive policy), Verilated
-/// too, with Linux's interrupt enables without bus-error reporting (`IER =
-/// 0x7F`): every frame arrives exactly once both ways and every transmission
-/// succeeds. What the driver sees of the cut is channel A's error state while it
-/// is the channel in use (P-LOG-4): `EI` as `ES` rises, `EPI` as it turns error
+/// With `pelican_report = "in_use"` (`XMODE.rep = 0`, written in reset mode as
+/// the key's reset value would be; Verilated too), and Linux's interrupt
+/// enables without bus-error reporting (`IER = 0x7F`): every frame arrives
+/// exactly once both ways and every transmission succeeds. What the driver sees
+/// of the cut is channel A's error state while it is the channel in use
+/// (P-LOG-4): `EI` as `ES` rises, `EPI` as it turns error
 /// passive (the DRCC moves a message when its channel fails, §D4, §D5), and `EI`
 /// as `ES` falls at the switch to line B (no `EPI` then: P-IR-6). Never a bus-off,
 /// an overrun, a failed transmission; error active at the end.
 #[test]
-fn line_a_cut_mid_frame_every_frame_once() {
-    let (seen, mut n) = run(PelicanParams::default(), None, 0x7F, 6, 2);
+fn line_a_cut_with_in_use_report_shows_channel_a_failing() {
+    let keys = PelicanParams {
+        report_best: false,
+        ..PelicanParams::default()
+    };
+    let (seen, mut n) = run(PelicanParams::default(), Some(keys.xmode()), 0x7F, 6, 2);
     check_delivery(&seen, &n, 6);
     let bits: Vec<u8> = seen.errors.iter().map(|&(ir, _)| ir).collect();
     assert_eq!(
@@ -157,19 +162,16 @@ fn line_a_cut_mid_frame_every_frame_once() {
     assert_eq!(n.r(117) & 1, 1, "XSTAT.u: line B");
 }
 
-/// The same with `pelican_report = "best"` (`XMODE.rep`, P-LOG-5), as an
-/// unmodified driver gets it from the generation key: the driver's error
+/// The generator's default keys (redundancy, error-passive policy,
+/// `pelican_report = "best"`: `XMODE.rep`, P-LOG-5), Verilated too, with an
+/// unmodified Linux driver's interrupt enables (`IER = 0x7F`): the driver's error
 /// state is the better channel that can carry its frames, line B, so the cut
 /// of line A shows nothing at all. Every frame arrives exactly once both ways,
 /// every transmission succeeds, no interrupt but `RI` and `TI`; the DRCC's own
 /// registers tell the cut (`XSTAT.u` = B, `XIR.switch`).
 #[test]
-fn line_a_cut_with_best_report_the_driver_sees_no_error() {
-    let keys = PelicanParams {
-        report_best: true,
-        ..PelicanParams::default()
-    };
-    let (seen, mut n) = run(PelicanParams::default(), Some(keys.xmode()), 0x7F, 6, 2);
+fn line_a_cut_mid_frame_every_frame_once_and_the_driver_sees_no_error() {
+    let (seen, mut n) = run(PelicanParams::default(), None, 0x7F, 6, 2);
     check_delivery(&seen, &n, 6);
     assert!(seen.errors.is_empty(), "no error seen: {:?}", seen.errors);
     assert_eq!(n.r(2) & 0xC0, 0, "error active: ES = BS = 0");

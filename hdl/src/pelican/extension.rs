@@ -215,10 +215,10 @@ impl ExtensionRegs {
 }
 
 impl Default for ExtensionRegs {
-    /// The generator's defaults: redundancy, error-passive, SJA1000 bus-off,
-    /// `k = 1`, with the DMR function and the star node.
+    /// The generator's defaults ([`super::PelicanKeys::default`]).
     fn default() -> Self {
-        Self::new(0x45, 1, true, true)
+        let k = super::PelicanKeys::default();
+        Self::new(k.xmode(), k.k, k.dmr, k.star)
     }
 }
 

@@ -57,7 +57,8 @@ pub struct PelicanKeys {
 
 impl Default for PelicanKeys {
     /// The generator's defaults: stride 4, redundancy, error-passive, `k = 1`,
-    /// no dual TX, star off, SJA1000 bus-off, with the DMR function and the star node.
+    /// no dual TX, star off, SJA1000 bus-off, the best channel
+    /// reported, with the DMR function and the star node.
     fn default() -> Self {
         PelicanKeys {
             stride: 4,
@@ -67,7 +68,7 @@ impl Default for PelicanKeys {
             dual_tx: false,
             star_on: false,
             bom: true,
-            report_best: false,
+            report_best: true,
             dmr: true,
             star: true,
         }

@@ -35,7 +35,7 @@ pub mod mode {
 
 impl Default for PelicanParams {
     /// The generator's defaults: stride 4, redundancy, error-passive, k = 1,
-    /// no dual TX, no star, SJA1000 bus-off.
+    /// no dual TX, no star, SJA1000 bus-off, the best channel reported.
     fn default() -> Self {
         PelicanParams {
             stride: 4,
@@ -45,7 +45,7 @@ impl Default for PelicanParams {
             dual_tx: false,
             star: false,
             bom: true,
-            report_best: false,
+            report_best: true,
             core: DrccParams::DEFAULT,
         }
     }

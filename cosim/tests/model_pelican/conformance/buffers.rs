@@ -132,7 +132,7 @@ fn rx_window_extended_layout_rtr_copy_and_zero_past_the_frame() {
 /// only, kept by reset mode, cleared by `rst`.
 #[test]
 fn rmc_rbsa_and_rrb() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::RBSA, 60);
     n.w(reg::MOD, 0x00);
     n.w(reg::RBSA, 5);
@@ -186,7 +186,7 @@ fn rmc_counts_to_f_32_with_bit_5() {
 /// P-RX-6, P-IR-2, P-IR-4, P-CMR-5; DS 6.4.5 SR.1, 6.4.6 IR.3, 6.4.4 CMR.3.
 #[test]
 fn rx_fifo_of_f_frames_overrun_dos_doi_cdo() {
-    let mut n = Net::new(PelicanParams {
+    let mut n = Net::keyed(PelicanParams {
         core: DrccParams::SMALL,
         ..single_a(4, true)
     });
@@ -237,7 +237,7 @@ fn rx_fifo_of_f_frames_overrun_dos_doi_cdo() {
 /// BEI clears, EI stays.
 #[test]
 fn entering_reset_mode_aborts_tx_clears_fifo_and_ir_but_ei() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::EWLR, 8);
     n.linux_start(0xFF, 0x00);
     peer_sends(&mut n, 0, Frame::base(0x060, &[1]));

@@ -148,6 +148,78 @@ fn ecc_crc_error_reads_form_error_at_ack_delimiter() {
     assert_eq!(e, 0x40 | 0x20 | 0x1B, "P-CAP-2: CRC error code");
 }
 
+/// A one-shot frame with no other node on line A: an ACK error as transmitter
+/// (TXERR + 8). ECC (0xD9) and IR (BEI) are read while the DUT's active error
+/// flag is on the line, which re-arms ECC; returns at the first clock after
+/// the flag (the DUT's tx recessive again): the start of the error delimiter.
+fn ack_error_to_the_delimiter(n: &mut Net) {
+    let tec = n.dut.read(reg::TXERR);
+    n.peer_on = [false, false];
+    n.load_tx(&Frame::base(0x123, &[1]));
+    n.w(reg::CMR, cmd::TR | cmd::AT);
+    n.until(200 * BIT, |n| n.dut.read(reg::TXERR) == tec + 8);
+    // Two clocks until a read sees the capture (§15).
+    n.idle(2);
+    assert_eq!(n.r(reg::ECC), 0xD9, "DS 6.4.9: the ACK error");
+    assert_eq!(n.r(reg::IR), ir::BEI, "DS 6.4.6: BEI");
+    n.until(8 * BIT, |n| !n.tx[0]);
+    n.until(8 * BIT, |n| n.tx[0]);
+}
+
+/// Same (ECC segment code 10111, "error delimiter"): DS 6.4.9, P-CAP-2; ISO
+/// 11898-1 (a dominant bit in the error delimiter is a form error). Another
+/// node's dominant bit in the third bit of the DUT's error delimiter, after an
+/// ACK error as transmitter: ERRC form (01), DIR TX (0), SEG 0x17 = 0x57, with
+/// BEI and TXERR 8 + 8.
+#[test]
+fn ecc_form_error_in_the_error_delimiter_reads_0x17() {
+    let mut n = op_single(ir::BEI, 0x00);
+    ack_error_to_the_delimiter(&mut n);
+    n.idle(2 * BIT);
+    n.force_dom[0] = true;
+    n.idle(BIT);
+    n.force_dom[0] = false;
+    n.until(20 * BIT, |n| n.dut.read(reg::TXERR) == 16);
+    n.idle(2);
+    assert_eq!(n.r(reg::IR), ir::BEI, "DS 6.4.6: BEI at the form error");
+    assert_eq!(n.r(reg::ECC), 0x40 | 0x17, "DS 6.4.9: form, TX, delimiter");
+}
+
+/// Differs (ECC segment code 10011, "tolerate dominant bits"): P-CAP-2; ISO
+/// 11898-1 12.1.4.2 f. After its active error flag a node tolerates 7 more
+/// dominant bits: nothing is counted or captured. At the 14th dominant bit
+/// from the flag's start a transmitter's TEC rises by 8, which the channel
+/// counts without a bus-error event: no BEI and no ECC capture (the chip
+/// captures SEG 0x13), ECC keeps the ACK error.
+#[test]
+fn dominant_bits_after_the_error_flag_tolerated_then_counted_without_capture() {
+    let mut n = op_single(ir::BEI, 0x00);
+    ack_error_to_the_delimiter(&mut n);
+    n.force_dom[0] = true;
+    n.idle(7 * BIT);
+    n.force_dom[0] = false;
+    n.idle(20 * BIT);
+    assert_eq!(
+        n.r(reg::TXERR),
+        8,
+        "ISO 12.1.4.2: 7 dominant bits tolerated"
+    );
+    assert_eq!(n.r(reg::IR), 0, "no bus error");
+    assert_eq!(n.r(reg::ECC), 0xD9, "nothing captured after the re-arm");
+    ack_error_to_the_delimiter(&mut n);
+    n.force_dom[0] = true;
+    n.idle(8 * BIT);
+    n.force_dom[0] = false;
+    n.idle(20 * BIT);
+    assert_eq!(
+        n.r(reg::TXERR),
+        24,
+        "ISO 12.1.4.2 f: ACK error + 8, 14th bit + 8"
+    );
+    assert_eq!(n.r(reg::IR), 0, "P-CAP-2: no BEI for rule f");
+    assert_eq!(n.r(reg::ECC), 0xD9, "P-CAP-2: no capture for rule f");
+}
+
 /// Same (RXERR, TXERR read "of the channel in use"): DS 6.4.12, P-ERR-1,
 /// P-LOG-1. In `single_b` TXERR is channel B's: one ACK error reads 8.
 #[test]
@@ -202,7 +274,7 @@ fn rxerr_txerr_writes_and_software_reset() {
 /// no bus-off follows.
 #[test]
 fn txerr_write_255_does_not_force_bus_off() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::TXERR, 255);
     assert_eq!(n.r(reg::XIR), xir::IGN, "P-ERR-2: XIR.ign");
     n.w(reg::MOD, 0x00);
@@ -215,7 +287,7 @@ fn txerr_write_255_does_not_force_bus_off() {
 /// Same (EWLR, default 96, reset mode only): DS 6.4.10, P-CFG-1.
 #[test]
 fn ewlr_default_96_writable_in_reset_mode_only() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     assert_eq!(n.r(reg::EWLR), 96, "DS 6.4.10: 96 after reset");
     n.w(reg::EWLR, 200);
     assert_eq!(n.r(reg::EWLR), 200, "DS 6.4.10: written in reset mode");

@@ -10,7 +10,7 @@ use drcc_cosim::Frame;
 /// DS 6.4.4 / P-MAP-1: CMR reads 0x00 in both modes, also after a write.
 #[test]
 fn cmr_reads_zero() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::CMR, 0xFF);
     assert_eq!(n.r(reg::CMR), 0, "DS 6.4.4: CMR reads 0 (rm)");
     n.w(reg::MOD, 0x00);
@@ -24,7 +24,7 @@ fn cmr_reads_zero() {
 /// nothing is sent after reset mode ends.
 #[test]
 fn cmr_tr_at_srr_ignored_in_reset_mode() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::TXB, 0x01);
     n.w(reg::TXB + 1, 0x24);
     for c in [cmd::TR, cmd::SRR, cmd::TR | cmd::AT, cmd::AT] {

@@ -10,7 +10,7 @@ use drcc_cosim::Frame;
 /// The frames of `frames`, sent by line A's peer, that the DUT stores with
 /// `ACR = acr`, `AMR = amr`, `AFM = afm` (read back through the RX window).
 fn stored(afm: bool, acr: [u8; 4], amr: [u8; 4], frames: &[Frame]) -> Vec<Frame> {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     for k in 0..4u8 {
         n.w(reg::WIN + k, acr[k as usize]);
         n.w(reg::WIN + 4 + k, amr[k as usize]);
@@ -157,7 +157,7 @@ fn mod_afm_selects_single_or_dual_filter() {
 /// rejected one not at all.
 #[test]
 fn acf_in_redundancy_both_copies_same_verdict() {
-    let mut n = Net::new(PelicanParams::default());
+    let mut n = Net::keyed(PelicanParams::default());
     // Single filter: standard id 0x2A5 with any data.
     for (k, (c, m)) in [(0x54, 0x00), (0xA0, 0x0F), (0, 0xFF), (0, 0xFF)]
         .into_iter()
@@ -181,7 +181,7 @@ fn acf_in_redundancy_both_copies_same_verdict() {
 /// a self-received frame passes the acceptance filter too.
 #[test]
 fn own_frame_self_received_only_through_the_filter() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::WIN, 0x54);
     n.w(reg::WIN + 1, 0xA0);
     n.w(reg::WIN + 4, 0x00);

@@ -89,3 +89,46 @@ fn busoff_in_redundancy_sets_rm_only_when_no_channel_is_left() {
     );
     assert_eq!(n.r(reg::IR) & ir::EI, ir::EI, "P-IR-5: EI at the BS fall");
 }
+
+/// Differs (IR.EPI, "raised when the channel in use changes to a passive
+/// one"): P-IR-6, P-LOG-4, P-LOG-5, with either `pelican_report`. Redundancy
+/// with the k-failed policy, k = 1 (§D5: an error-passive channel stays
+/// valid). Line B is held dominant until its receive errors make it error
+/// passive (REC >= 128, ISO 11898-1 12.1.4.2 b, f); then line A is cut under
+/// a transmission: the first failed attempt fails A and the DRCC moves the
+/// message to B. The logical controller goes from A (error active, below the
+/// warning limit) to B (error passive, REC >= 96): `EPI` and `EI` (`ES`
+/// rises) together, and the message is delivered on B.
+#[test]
+fn epi_when_the_channel_in_use_changes_to_a_passive_one() {
+    for report_best in [false, true] {
+        let p = PelicanParams {
+            policy: 2,
+            k: 1,
+            report_best,
+            ..PelicanParams::default()
+        };
+        let mut n = op_with(p, ir::EI | ir::EPI, 0x00);
+        n.force_dom[1] = true;
+        n.until(400 * BIT, |n| n.dut.read(reg::XERR) & 0x0C == 0x04);
+        n.force_dom[1] = false;
+        n.idle(30 * BIT);
+        assert_eq!(n.r(reg::XERR) & 0x0C, 0x04, "§13: B error passive");
+        assert_eq!(n.r(reg::XSTAT) & 0x31, 0x00, "§13: A in use, B's aux valid");
+        assert_eq!(n.r(reg::IR), 0, "B's state is not the controller's");
+        n.cut[0] = true;
+        n.load_tx(&Frame::base(0x2A5, &[0x11]));
+        n.w(reg::CMR, cmd::TR);
+        n.until(100 * BIT, |n| n.dut.u() == 1);
+        n.idle(3);
+        assert_eq!(
+            n.r(reg::IR),
+            ir::EI | ir::EPI,
+            "P-IR-6: EPI at the switch to a passive channel (rep {report_best})"
+        );
+        let s = n.r(reg::SR);
+        assert_eq!(s & (sr::ES | sr::BS), sr::ES, "P-LOG-4: B's ES");
+        wait_tbs(&mut n, 400);
+        assert_eq!(n.r(reg::SR) & sr::TCS, sr::TCS, "sent on B");
+    }
+}

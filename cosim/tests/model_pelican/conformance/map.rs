@@ -50,7 +50,7 @@ fn reset_value(r: u8, p: &PelicanParams) -> u8 {
 }
 
 fn every_address_reads_its_reset_value(p: PelicanParams) {
-    let mut n = Net::new(p);
+    let mut n = Net::keyed(p);
     for r in 0..128u8 {
         assert_eq!(
             n.r(r),
@@ -79,7 +79,7 @@ fn reset_values_every_address_stride1() {
         dual_tx: true,
         star: false,
         bom: false,
-        report_best: true,
+        report_best: false,
         core: DrccParams::DEFAULT,
     });
 }
@@ -118,7 +118,7 @@ fn after_rm_sweep(r: u8, rm: bool) -> Option<u8> {
 }
 
 fn sweep(stride: u8) {
-    let mut n = Net::new(single_a(stride, true));
+    let mut n = Net::keyed(single_a(stride, true));
     n.peer_on = [false, false];
     // P-MAP-1, P-MAP-2: every address 1..114 written in reset mode.
     for r in 1..=114u8 {
@@ -195,7 +195,7 @@ fn every_address_write_rules_reset_and_operating_mode_stride1() {
 /// modes.
 #[test]
 fn read_only_registers_ignore_writes() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     let ro = [2u8, 3, 11, 12, 29, 112, 113, 114, 117, 118, 119];
     for rm in [true, false] {
@@ -218,7 +218,7 @@ fn read_only_registers_ignore_writes() {
 /// reads 0, writes ignored (refused), in both modes.
 #[test]
 fn reserved_5_10_and_test_register_9_read_zero() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     for rm in [true, false] {
         for r in [5u8, 9, 10] {
             n.w(r, 0xFF);
@@ -232,7 +232,7 @@ fn reserved_5_10_and_test_register_9_read_zero() {
 /// writes ignored, XIR.ign only for a reset-mode write (P-MAP-1).
 #[test]
 fn rx_fifo_ram_32_to_95_reads_zero() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     for r in 32..=95u8 {
         n.w(r, 0xA5);
@@ -255,7 +255,7 @@ fn rx_fifo_ram_32_to_95_reads_zero() {
 /// operating mode; TXB is not reset by `rst` (§16), SCR0..2 are (reset 0).
 #[test]
 fn tx_buffer_ram_96_108_and_free_ram_109_111() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     for r in 96..=111u8 {
         n.w(r, r.wrapping_mul(7));
     }
@@ -281,7 +281,7 @@ fn tx_buffer_ram_96_108_and_free_ram_109_111() {
 /// an index outside P-X-4's list is refused (XWIN_CMD[0], XIR.win).
 #[test]
 fn extension_112_127_replaces_the_zero_reads() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     // P-X-1: XMODE [6:0], XK [3:0] with 0 stored as 1.
     n.w(reg::XMODE, 0x80 | 0x46);
@@ -325,15 +325,15 @@ fn extension_112_127_replaces_the_zero_reads() {
 /// P-X-1: XMODE `mode = DMR` or `star` on a top without them: ignored, XIR.ign.
 #[test]
 fn extension_xmode_refuses_dmr_and_star_without_them() {
-    let mut n = Net::new(PelicanParams {
+    let mut n = Net::keyed(PelicanParams {
         core: DrccParams::SMALL,
         ..single_a(4, true)
     });
-    n.w(reg::XMODE, 0x42);
-    assert_eq!(n.r(reg::XMODE), 0x44, "P-X-1: DMR refused");
+    n.w(reg::XMODE, 0xC2);
+    assert_eq!(n.r(reg::XMODE), 0xC4, "P-X-1: DMR refused");
     assert_eq!(n.r(reg::XIR), xir::IGN);
-    n.w(reg::XMODE, 0x64);
-    assert_eq!(n.r(reg::XMODE), 0x44, "P-X-1: star refused");
+    n.w(reg::XMODE, 0xE4);
+    assert_eq!(n.r(reg::XMODE), 0xC4, "P-X-1: star refused");
     assert_eq!(n.r(reg::XIR), xir::IGN);
 }
 
@@ -343,7 +343,7 @@ fn extension_xmode_refuses_dmr_and_star_without_them() {
 /// ignores `sel`.
 #[test]
 fn wrong_lane_access_ends_with_bus_error() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     let (_, ack, err) = n.access(true, reg::MOD, 0x00, 0x2);
     assert!(!ack && err, "P-BUS-1: write without lane 0 refused");
     assert_eq!(
@@ -355,7 +355,7 @@ fn wrong_lane_access_ends_with_bus_error() {
     assert!(ack && !err && d == 96, "P-BUS-1: a read ignores sel");
     assert_eq!(n.r(reg::XIR), xir::BUS, "P-BUS-3: XIR.bus");
 
-    let mut n = Net::new(single_a(1, true));
+    let mut n = Net::keyed(single_a(1, true));
     n.w(reg::MOD, md::SM | md::RM);
     // XIR = 120 = word 30, lane 0; read with lanes 0 and 1.
     let (_, ack, err) = n.access(false, 30, 0, 0x3);

@@ -34,7 +34,7 @@ mod status_interrupt;
 mod window;
 
 use crate::harness::*;
-use drcc_cosim::model::pelican::{PelicanInputs, PelicanParams};
+use drcc_cosim::model::pelican::PelicanParams;
 use drcc_cosim::Frame;
 
 /// Register addresses (DS 6.4.1, PeliCAN address allocation; P-MAP-1, §13).
@@ -60,6 +60,7 @@ pub mod reg {
     pub const XMODE: u8 = 115;
     pub const XK: u8 = 116;
     pub const XSTAT: u8 = 117;
+    pub const XERR: u8 = 118;
     pub const XIR: u8 = 120;
     pub const XIER: u8 = 121;
 }
@@ -118,14 +119,14 @@ pub mod xir {
 /// (reset mode, accept all, `ier`), in operating mode with `mod_` and
 /// integrated on the bus.
 pub fn op_single(ier: u8, mod_: u8) -> Net {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.linux_start(ier, mod_);
     n
 }
 
 /// The same on a top with parameters `p`.
 pub fn op_with(p: PelicanParams, ier: u8, mod_: u8) -> Net {
-    let mut n = Net::new(p);
+    let mut n = Net::keyed(p);
     n.linux_start(ier, mod_);
     n
 }
@@ -160,10 +161,7 @@ pub fn peers_send_both(n: &mut Net, f: Frame) {
 
 /// One clock with `rst`: a hardware reset in the middle of a test.
 pub fn hardware_reset(n: &mut Net) {
-    n.clk(PelicanInputs {
-        rst: true,
-        ..Default::default()
-    });
+    n.hardware_reset();
 }
 
 /// A standard remote frame.

@@ -12,7 +12,7 @@ use drcc_cosim::{Frame, Mode};
 /// and the registers with a reset value, also in the middle of operation.
 #[test]
 fn mod_rm_set_at_hardware_reset() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     assert_eq!(n.r(reg::MOD), md::RM, "DS 6.4.2: MOD = 0x01 after reset");
     n.w(reg::MOD, md::RM | md::LOM | md::STM | md::AFM);
     n.w(reg::BTR0, 0x01);
@@ -30,7 +30,7 @@ fn mod_rm_set_at_hardware_reset() {
 /// mode, with RM = 1 enters it, in both directions on the next access.
 #[test]
 fn mod_rm_host_write_enters_and_leaves_reset_mode() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     n.w(reg::MOD, 0x00);
     assert_eq!(n.r(reg::MOD), 0x00, "P-MOD-3: RM cleared");
@@ -52,7 +52,7 @@ fn mod_rm_host_write_enters_and_leaves_reset_mode() {
 /// operating-mode write, which takes RM only.
 #[test]
 fn mod_lom_stm_afm_writable_in_reset_mode_only() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     n.w(reg::MOD, 0x0F);
     assert_eq!(n.r(reg::MOD), 0x0F, "P-MOD-2: taken in reset mode");
@@ -75,7 +75,7 @@ fn mod_lom_stm_afm_writable_in_reset_mode_only() {
 /// set, even with WUIE and bus activity.
 #[test]
 fn mod_sm_refused_reads_zero_wui_never_set() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::MOD, md::SM | md::RM);
     assert_eq!(n.r(reg::MOD), md::RM, "P-MOD-7: SM reads 0 (rm)");
     assert_eq!(n.r(reg::XIR), xir::IGN, "P-MOD-7: XIR.ign (rm)");
@@ -163,7 +163,7 @@ fn mod_lom_in_redundancy_both_channels_listen() {
 /// DS 6.4.3 MOD.2 STM (same), P-CFG-3: a transmission succeeds without ACK.
 #[test]
 fn mod_stm_self_test_needs_no_ack() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     n.linux_start(0x00, md::STM);
     assert_eq!(n.r(reg::MOD), md::STM);
@@ -184,7 +184,7 @@ fn mod_stm_self_test_needs_no_ack() {
 /// (ID.10..ID.6, five bits, before the first stuff bit), after leaving reset
 /// mode with `btr0`, `btr1`.
 fn five_bits(btr0: u8, btr1: u8) -> u64 {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     n.w(reg::BTR0, btr0);
     n.w(reg::BTR1, btr1);
@@ -224,7 +224,7 @@ fn btr_below_8_tq_lengthened_to_8_tq() {
 /// (1) and a frame is sent at logic level whatever OCR holds.
 #[test]
 fn ocr_stored_read_back_no_effect() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::OCR, 0xFF);
     assert_eq!(n.r(reg::OCR), 0xFF, "P-CFG-4: stored");
     n.w(reg::MOD, 0x00);
@@ -244,7 +244,7 @@ fn ocr_stored_read_back_no_effect() {
 /// it); bit 4 is not defined and reads 0.
 #[test]
 fn cdr_bits_stored_cd_writable_in_both_modes() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::CDR, 0xFF);
     assert_eq!(n.r(reg::CDR), 0xEF, "P-CFG-5: all defined bits stored");
     n.w(reg::CDR, 0x80);
@@ -258,7 +258,7 @@ fn cdr_bits_stored_cd_writable_in_both_modes() {
 /// PeliCAN: MOD, IER at 4, EWLR at 13, ACR/AMR at 16..23, RMC, TXB at 96.
 #[test]
 fn basiccan_refused_layout_stays_pelican() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::CDR, 0x00);
     assert_eq!(n.r(reg::CDR), 0x00);
     n.w(reg::IER, 0x55);

@@ -24,7 +24,7 @@ fn sr_reads_0x3c_in_reset_mode_0x0c_idle() {
 /// ends, RS = TS = 1 until the bus integration is done, then 0.
 #[test]
 fn sr_rs_ts_set_while_waiting_for_bus_idle() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.peer_on = [false, false];
     n.w(reg::MOD, 0x00);
     let s = n.r(reg::SR);
@@ -88,7 +88,7 @@ fn sr_rbs_and_ir_ri_level_while_fifo_not_empty() {
 /// ES when a counter reaches EWLR; EI when ES rises and when it falls.
 #[test]
 fn sr_es_at_ewlr_and_ei_on_every_change() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::EWLR, 8);
     n.linux_start(ir::EI, 0x00);
     n.peer_on = [false, false];
@@ -128,7 +128,7 @@ fn ir_read_clears_all_but_ri() {
 /// event; with RIE | EIE only, a success raises EI but not TI.
 #[test]
 fn ier_gates_every_source_and_a_late_enable_raises_nothing() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     n.w(reg::EWLR, 8);
     n.linux_start(0x00, 0x00);
     n.peer_on = [false, false];
@@ -197,12 +197,17 @@ fn ir_epi_error_passive_left_gated_by_epie() {
     assert_eq!(n.r(reg::IR), ir::EPI, "DS 6.4.6: EPI at active again");
 }
 
-/// Differs (IR.EPI): P-IR-6. In redundancy, line A cut: EPI when A becomes
-/// passive; at the switch to B (A passive -> B active, ES falls in the same
-/// clock) EI alone, no EPI; XIR.switch says why.
+/// Differs (IR.EPI): P-IR-6. In redundancy with `pelican_report = "in_use"`
+/// (P-LOG-5), line A cut: EPI when A becomes passive; at the switch to B (A
+/// passive -> B active, ES falls in the same clock) EI alone, no EPI;
+/// XIR.switch says why.
 #[test]
 fn ir_epi_not_raised_at_a_switchover_ei_alone() {
-    let mut n = op_with(PelicanParams::default(), ir::EI | ir::EPI, 0x00);
+    let p = PelicanParams {
+        report_best: false,
+        ..PelicanParams::default()
+    };
+    let mut n = op_with(p, ir::EI | ir::EPI, 0x00);
     n.load_tx(&Frame::base(0x555, &[]));
     n.cut[0] = true;
     n.w(reg::CMR, cmd::TR);

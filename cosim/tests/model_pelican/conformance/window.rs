@@ -54,7 +54,7 @@ fn commit(n: &mut Net, w: u32) {
 
 /// The default top (redundancy, error-passive policy, k = 1) in reset mode.
 fn default_top() -> Net {
-    let mut n = Net::new(PelicanParams::default());
+    let mut n = Net::keyed(PelicanParams::default());
     n.peer_on = [false, false];
     n
 }

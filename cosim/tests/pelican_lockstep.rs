@@ -11,7 +11,8 @@
 //! - The data sheet's conformance tests (`model_pelican/conformance/`), so the
 //!   RTL meets them too: on the Verilated top alone, with the keys that only
 //!   set `XMODE` and `XK` written there after reset (`Net::keyed`); in rust-hdl's
-//!   simulator for other strides and sizes, and without Verilator. (The side-by-side runs against the independent SJA1000
+//!   simulator for other strides and sizes, and without Verilator. The model's
+//!   bus-off scenarios (`busoff`: recoveries of 128 x 11 bits) run the same way. (The side-by-side runs against the independent SJA1000
 //!   core, `model_pelican/side_by_side.rs`, stay on the model: in rust-hdl's
 //!   simulator they would take ten minutes, and the lock step ties the RTL to
 //!   the model.)
@@ -100,8 +101,8 @@ mod shadow {
             Shadow { hdl, rtl, clock: 0 }
         }
 
-        /// The data sheet's conformance tests (`Net::keyed`): the Verilated
-        /// top alone beside the model, where Verilator is here and `p` has the
+        /// The top of `Net::keyed` (the conformance and bus-off tests): the
+        /// Verilated top alone beside the model, where Verilator is here and `p` has the
         /// stride and the sizes it was generated with (the other keys are
         /// `XMODE` and `XK`, which the harness writes). `None` otherwise: the
         /// test runs on a top generated with `p`, in rust-hdl's simulator.

@@ -18,7 +18,7 @@ fn to_busoff(n: &mut Net) {
 /// restart by clearing RM takes 128 x 11 recessive bits.
 #[test]
 fn busoff_sja1000_hold_and_restart() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     to_busoff(&mut n);
     n.idle(2);
     assert_eq!(n.r(0) & 1, 1, "P-BO-1: RM set by bus-off");
@@ -55,7 +55,7 @@ fn busoff_sja1000_hold_and_restart() {
 /// P-BO-7: "auto" keeps RM 0 and recovers by itself, EI at both ends.
 #[test]
 fn busoff_auto_recovers() {
-    let mut n = Net::new(single_a(4, false));
+    let mut n = Net::keyed(single_a(4, false));
     to_busoff(&mut n);
     n.idle(2);
     assert_eq!(n.r(0) & 1, 0, "P-BO-7: RM not set");
@@ -69,7 +69,7 @@ fn busoff_auto_recovers() {
 /// P-ERR-2 / P-BO-5: TXERR writes while held are ignored with XIR.ign.
 #[test]
 fn busoff_txerr_write_ignored() {
-    let mut n = Net::new(single_a(4, true));
+    let mut n = Net::keyed(single_a(4, true));
     to_busoff(&mut n);
     n.idle(2);
     n.w(15, 0);

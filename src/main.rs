@@ -297,6 +297,10 @@ enum Command {
         /// Where netlists, logs, the scan wrapper and bitstreams go (default: out/synth).
         #[arg(long, value_name = "DIR")]
         build_dir: Option<PathBuf>,
+        /// Minutes nextpnr may place and route one top (1 to 600, default 20); a
+        /// top still routing then is reported as not routed.
+        #[arg(long, value_name = "MINUTES")]
+        pnr_minutes: Option<u64>,
     },
 }
 
@@ -455,6 +459,7 @@ fn main() -> ExitCode {
             json,
             breakdown,
             build_dir,
+            pnr_minutes,
         } => cli::synth::run(cli::synth::SynthArgs {
             target,
             top,
@@ -463,6 +468,7 @@ fn main() -> ExitCode {
             markdown,
             breakdown,
             build_dir,
+            pnr_minutes,
         }),
     };
     match result {

@@ -3,6 +3,7 @@
 //! iCE40 nextpnr and icepack; the outcome as a [`SynthReport`].
 
 use std::path::{Path, PathBuf};
+use std::time::Duration;
 
 use drcc_hdl::tops::Top;
 
@@ -26,6 +27,9 @@ pub struct Flow<'a> {
     /// Also synthesise each top with its blocks kept apart, for the area block
     /// by block ([`crate::breakdown`]), on the targets whose name is listed.
     pub breakdown_on: &'a [&'a str],
+    /// How long nextpnr may run on one top before the top is reported as not
+    /// routed ([`nextpnr::DEFAULT_LIMIT`] unless asked otherwise).
+    pub pnr_limit: Duration,
 }
 
 fn abs(p: &Path) -> Result<PathBuf, Error> {
@@ -178,7 +182,7 @@ impl Flow<'_> {
             device.join(" "),
             t.constraints
         ));
-        let log = match nextpnr::run(dir, device, &wrapper.module, &pcf)? {
+        let log = match nextpnr::run(dir, device, &wrapper.module, &pcf, self.pnr_limit)? {
             Ok(log) => log,
             Err(nf) => return Ok(Err(nf)),
         };
@@ -208,6 +212,7 @@ mod tests {
             env: ToolEnv::default(),
             progress: &|_| {},
             breakdown_on: &[],
+            pnr_limit: nextpnr::DEFAULT_LIMIT,
         }
     }
 

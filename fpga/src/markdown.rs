@@ -16,7 +16,15 @@ pub const README_END: &str = "<!-- synth-results:end -->";
 
 fn fmax_cell(r: &SynthReport) -> String {
     if let Some(nf) = r.measured.as_ref().and_then(|m| m.no_fit.as_ref()) {
-        return format!("does not fit: {}/{} LCs", nf.used, nf.available);
+        return match nf.unrouted_after_s {
+            Some(s) => format!(
+                "not routed in {} min ({}/{} LCs)",
+                s.div_ceil(60),
+                nf.used,
+                nf.available
+            ),
+            None => format!("does not fit: {}/{} LCs", nf.used, nf.available),
+        };
     }
     match r.measured.as_ref().and_then(|m| m.pnr.as_ref()) {
         Some(p) => format!(
@@ -195,6 +203,7 @@ fn wrapper_section(s: &mut String, results: &[SynthReport]) {
         };
         let (w, o) = (&m.wrapper, &m.wrapper_overhead);
         let dev = match (&m.pnr, &m.no_fit) {
+            (_, Some(nf)) if nf.unrouted_after_s.is_some() => nf.describe(),
             (_, Some(nf)) => format!("does not fit: {}", nf.describe()),
             (Some(p), None) => p.logic_cells().unwrap_or_else(|| "placed".to_string()),
             (None, None) => "not placed".to_string(),
@@ -293,6 +302,31 @@ mod tests {
     use crate::report::tests::sample;
 
     #[test]
+    fn a_top_that_does_not_route_says_so_in_both_tables() {
+        let mut r = sample("ice40");
+        let m = r.measured.as_mut().unwrap();
+        m.pnr = None;
+        m.no_fit = Some(crate::report::NoFit {
+            resource: "ICESTORM_LC".into(),
+            used: 7016,
+            available: 7680,
+            unrouted_after_s: Some(1201),
+        });
+        let t = table(std::slice::from_ref(&r));
+        assert!(
+            t.contains("| not routed in 21 min (7016/7680 LCs) |"),
+            "{t}"
+        );
+        let mut s = String::new();
+        wrapper_section(&mut s, std::slice::from_ref(&r));
+        assert!(
+            s.contains("| not routed in 21 min (7016/7680 ICESTORM_LC placed) |"),
+            "{s}"
+        );
+        assert!(r.text().contains("DOES NOT ROUTE on the"), "{}", r.text());
+    }
+
+    #[test]
     fn a_top_that_does_not_fit_says_so_in_both_tables() {
         let mut r = sample("ice40");
         let m = r.measured.as_mut().unwrap();
@@ -301,6 +335,7 @@ mod tests {
             resource: "ICESTORM_LC".into(),
             used: 5308,
             available: 5280,
+            unrouted_after_s: None,
         });
         let t = table(std::slice::from_ref(&r));
         assert!(t.contains("| does not fit: 5308/5280 LCs |"), "{t}");

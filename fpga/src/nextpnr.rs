@@ -4,12 +4,13 @@
 
 use std::collections::BTreeMap;
 use std::path::Path;
+use std::time::Duration;
 
 use serde::{Deserialize, Serialize};
 
 use crate::json::round3;
 use crate::report::NoFit;
-use crate::tools::{run_logged, NEXTPNR_ICE40};
+use crate::tools::{run_logged_within, Ran, NEXTPNR_ICE40};
 use crate::Error;
 
 /// The nextpnr log file, in the build directory.
@@ -87,27 +88,55 @@ pub fn args(device: &[&str], module: &str, pcf: &Path) -> Vec<String> {
     args
 }
 
+/// How long place and route may run by default before the design is reported
+/// as not routing (a congested netlist can keep nextpnr's router busy for hours).
+pub const DEFAULT_LIMIT: Duration = Duration::from_secs(20 * 60);
+
 /// Places and routes `<module>.json` in `dir`; returns the parsed log, or
 /// `Err(NoFit)` inside when nextpnr stopped because the design needs more of a
-/// resource than the part has (any other failure is an [`Error`]).
+/// resource than the part has, or was still routing at `limit` (any other
+/// failure is an [`Error`]).
 pub fn run(
     dir: &Path,
     device: &[&str],
     module: &str,
     pcf: &Path,
+    limit: Duration,
 ) -> Result<Result<NextpnrLog, NoFit>, Error> {
     let _ = std::fs::remove_file(dir.join(LOG));
-    let ran = run_logged(&NEXTPNR_ICE40, &args(device, module, pcf), dir, LOG);
+    let ran = run_logged_within(
+        &NEXTPNR_ICE40,
+        &args(device, module, pcf),
+        dir,
+        LOG,
+        Some(limit),
+    );
     let log = std::fs::read_to_string(dir.join(LOG)).unwrap_or_default();
-    if let Err(e) = ran {
-        return match no_fit(&log) {
+    match ran {
+        Err(e) => match no_fit(&log) {
             Some(nf) => Ok(Err(nf)),
             None => Err(e),
-        };
+        },
+        Ok(Ran::Stopped(after)) => Ok(Err(unrouted(&log, after))),
+        Ok(Ran::Finished) => parse_log(&log)
+            .map(Ok)
+            .map_err(|msg| Error(format!("{}: {msg}", dir.join(LOG).display()))),
     }
-    parse_log(&log)
-        .map(Ok)
-        .map_err(|msg| Error(format!("{}: {msg}", dir.join(LOG).display())))
+}
+
+/// A design stopped while routing: the logic cells placed (from the
+/// utilisation block nextpnr logs before placing) and how long it tried.
+pub fn unrouted(text: &str, after: Duration) -> NoFit {
+    let (used, available) = parse_utilisation(text)
+        .get("ICESTORM_LC")
+        .copied()
+        .unwrap_or((0, 0));
+    NoFit {
+        resource: "ICESTORM_LC".to_string(),
+        used,
+        available,
+        unrouted_after_s: Some(after.as_secs()),
+    }
 }
 
 /// The first resource (in nextpnr's order) the design uses more of than the part
@@ -130,6 +159,7 @@ pub fn no_fit(text: &str) -> Option<NoFit> {
             resource,
             used,
             available,
+            unrouted_after_s: None,
         })
 }
 
@@ -346,5 +376,19 @@ ERROR: Failed to expand region (0, 0) |_> (25, 31) of 5308 ICESTORM_LCs
         assert!(no_fit(&NO_FIT_LOG.replace("5308/", "5280/")).is_none());
         // A failure without a utilisation block is not a no-fit.
         assert!(no_fit("ERROR: cannot open file\n").is_none());
+    }
+
+    #[test]
+    fn a_design_stopped_while_routing_names_the_cells_placed_and_the_time() {
+        let log = NO_FIT_LOG.replace("5308/ 5280", "7016/ 7680");
+        let nf = unrouted(&log, Duration::from_secs(20 * 60));
+        assert_eq!(
+            (nf.used, nf.available, nf.unrouted_after_s),
+            (7016, 7680, Some(1200))
+        );
+        assert_eq!(
+            nf.describe(),
+            "not routed in 20 min (7016/7680 ICESTORM_LC placed)"
+        );
     }
 }

@@ -133,18 +133,24 @@ pub struct NoFit {
     pub used: u64,
     /// How many the part has.
     pub available: u64,
+    /// Set when the part has room for the logic but nextpnr was still routing
+    /// when the flow's time limit stopped it: the seconds it ran.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unrouted_after_s: Option<u64>,
 }
 
 impl NoFit {
-    /// `5308/5280 ICESTORM_LC (100.5 %)`.
+    /// `5308/5280 ICESTORM_LC (100.5 %)`, or for a design stopped while routing
+    /// `not routed in 20 min (7016/7680 ICESTORM_LC placed)`.
     pub fn describe(&self) -> String {
-        format!(
-            "{}/{} {} ({:.1} %)",
-            self.used,
-            self.available,
-            self.resource,
-            100.0 * ratio(self.used, self.available)
-        )
+        let cells = format!("{}/{} {}", self.used, self.available, self.resource);
+        match self.unrouted_after_s {
+            Some(s) => format!("not routed in {} min ({cells} placed)", s.div_ceil(60)),
+            None => format!(
+                "{cells} ({:.1} %)",
+                100.0 * ratio(self.used, self.available)
+            ),
+        }
     }
 }
 
@@ -293,6 +299,14 @@ impl SynthReport {
         }
         match (&m.pnr, &m.no_fit) {
             (Some(p), _) => pnr_text(&mut s, p),
+            (None, Some(nf)) if nf.unrouted_after_s.is_some() => {
+                let _ = writeln!(
+                    s,
+                    "  place and route: DOES NOT ROUTE on the {}: {}",
+                    t.device,
+                    nf.describe()
+                );
+            }
             (None, Some(nf)) => {
                 let _ = writeln!(
                     s,

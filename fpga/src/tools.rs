@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 use std::io::ErrorKind;
 use std::path::Path;
 use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
 
 use crate::target::Target;
 use crate::Error;
@@ -195,11 +196,45 @@ pub fn parse_nextpnr_version(text: &str) -> Option<String> {
 /// tool wrote that log itself (then to `<log>.out`); on failure, the error names
 /// the tool, the first error line of the log and the log file.
 pub fn run_logged(tool: &Tool, args: &[String], cwd: &Path, log: &str) -> Result<(), Error> {
-    let out = Command::new(tool.cmd)
+    match run_logged_within(tool, args, cwd, log, None)? {
+        Ran::Finished => Ok(()),
+        Ran::Stopped(_) => unreachable!("no time limit was set"),
+    }
+}
+
+/// How a tool run with a time limit ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ran {
+    /// It exited successfully.
+    Finished,
+    /// It was still running at the limit and was killed (its log is kept).
+    Stopped(Duration),
+}
+
+/// [`run_logged`] with an optional time limit: a tool still running at `limit`
+/// is killed and reported as [`Ran::Stopped`], not as an error (nextpnr can
+/// route a congested design for hours without converging).
+pub fn run_logged_within(
+    tool: &Tool,
+    args: &[String],
+    cwd: &Path,
+    log: &str,
+    limit: Option<Duration>,
+) -> Result<Ran, Error> {
+    let log_path = cwd.join(log);
+    let out_path = log_path.with_extension("out");
+    let out = std::fs::File::create(&out_path)
+        .map_err(|e| Error(format!("cannot write {}: {e}", out_path.display())))?;
+    let err = out
+        .try_clone()
+        .map_err(|e| Error(format!("cannot write {}: {e}", out_path.display())))?;
+    let mut child = Command::new(tool.cmd)
         .args(args)
         .current_dir(cwd)
         .stdin(Stdio::null())
-        .output()
+        .stdout(out)
+        .stderr(err)
+        .spawn()
         .map_err(|e| {
             if e.kind() == ErrorKind::NotFound {
                 Error(missing_message(&[*tool]))
@@ -207,16 +242,35 @@ pub fn run_logged(tool: &Tool, args: &[String], cwd: &Path, log: &str) -> Result
                 Error(format!("cannot run {}: {e}", tool.cmd))
             }
         })?;
-    let mut text = String::from_utf8_lossy(&out.stdout).into_owned();
-    text.push_str(&String::from_utf8_lossy(&out.stderr));
-    let log_path = cwd.join(log);
+    let started = Instant::now();
+    let status = loop {
+        let polled = child
+            .try_wait()
+            .map_err(|e| Error(format!("cannot wait for {}: {e}", tool.cmd)))?;
+        if let Some(status) = polled {
+            break Some(status);
+        }
+        if limit.is_some_and(|l| started.elapsed() >= l) {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    };
+    let text = std::fs::read_to_string(&out_path).unwrap_or_default();
+    // The tool's own log is kept; its console output goes beside it only
+    // when it has something to say, else it becomes the log.
     if !log_path.exists() || std::fs::metadata(&log_path).is_ok_and(|m| m.len() == 0) {
-        let _ = std::fs::write(&log_path, &text);
-    } else if !text.trim().is_empty() {
-        let _ = std::fs::write(log_path.with_extension("out"), &text);
+        std::fs::rename(&out_path, &log_path)
+            .map_err(|e| Error(format!("cannot write {}: {e}", log_path.display())))?;
+    } else if text.trim().is_empty() {
+        let _ = std::fs::remove_file(&out_path);
     }
-    if out.status.success() {
-        return Ok(());
+    let Some(status) = status else {
+        return Ok(Ran::Stopped(started.elapsed()));
+    };
+    if status.success() {
+        return Ok(Ran::Finished);
     }
     let logged = std::fs::read_to_string(&log_path).unwrap_or_default();
     let first_error = logged
@@ -224,7 +278,7 @@ pub fn run_logged(tool: &Tool, args: &[String], cwd: &Path, log: &str) -> Result
         .chain(text.lines())
         .find(|l| l.contains("ERROR") || l.contains("Error"))
         .map(|l| l.trim().to_string())
-        .unwrap_or_else(|| format!("exit status {}", out.status));
+        .unwrap_or_else(|| format!("exit status {status}"));
     Err(Error(format!(
         "{} failed: {first_error} (full log: {})",
         tool.cmd,
@@ -251,6 +305,32 @@ mod tests {
             Some("0.4-1+b1")
         );
         assert_eq!(parse_yosys_version("command not found\n"), None);
+    }
+
+    #[test]
+    fn a_tool_past_its_limit_is_stopped_and_its_output_kept() {
+        let dir = std::env::temp_dir().join(format!("drcc-fpga-limit-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let sh = Tool {
+            cmd: "sh",
+            package: "dash",
+            probe: "-c true",
+        };
+        let script = |s: &str| vec!["-c".to_string(), s.to_string()];
+        let limit = Some(Duration::from_millis(300));
+        let ran = run_logged_within(&sh, &script("echo routing; sleep 30"), &dir, "t.log", limit);
+        assert!(
+            matches!(ran, Ok(Ran::Stopped(d)) if d < Duration::from_secs(10)),
+            "{ran:?}"
+        );
+        let log = std::fs::read_to_string(dir.join("t.log")).unwrap();
+        assert_eq!(log, "routing\n");
+        // within the limit: finished; a failure names the tool and the log
+        let ran = run_logged_within(&sh, &script("echo ok"), &dir, "u.log", limit);
+        assert_eq!(ran.unwrap(), Ran::Finished);
+        let e = run_logged(&sh, &script("echo 'ERROR: no room'; exit 3"), &dir, "v.log");
+        assert!(e.unwrap_err().0.starts_with("sh failed: ERROR: no room"));
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

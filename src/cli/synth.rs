@@ -4,13 +4,14 @@
 //!
 //! ```text
 //! drcc synth --target ice40|ice40hx|xc3s|xc7 [--top NAME] [--json] [--build-dir DIR]
-//! drcc synth --all [--markdown] [--json] [--build-dir DIR]
+//! drcc synth --all [--markdown] [--json] [--build-dir DIR] [--pnr-minutes N]
 //! ```
 
 use std::path::{Path, PathBuf};
+use std::time::Duration;
 
 use drcc_fpga::markdown::{self, README_BEGIN, README_END};
-use drcc_fpga::{tools, Flow, SynthReport, Target, ToolEnv, TARGETS};
+use drcc_fpga::{nextpnr, tools, Flow, SynthReport, Target, ToolEnv, TARGETS};
 use drcc_hdl::tops::{self, Top};
 
 use super::{
@@ -34,6 +35,9 @@ pub struct SynthArgs {
     pub breakdown: bool,
     /// `--build-dir`: where the netlists, logs and bitstreams go.
     pub build_dir: Option<PathBuf>,
+    /// `--pnr-minutes`: nextpnr's time limit per top (default
+    /// [`nextpnr::DEFAULT_LIMIT`]).
+    pub pnr_minutes: Option<u64>,
 }
 
 impl From<drcc_fpga::Error> for CliError {
@@ -44,6 +48,12 @@ impl From<drcc_fpga::Error> for CliError {
 
 /// The tops and targets the arguments ask for.
 fn selection(args: &SynthArgs) -> Result<(Vec<&'static Top>, Vec<&'static Target>), CliError> {
+    if let Some(m @ (0 | 601..)) = args.pnr_minutes {
+        return Err(CliError::Error(format!(
+            "--pnr-minutes {m}: give 1 to 600 minutes (default {})",
+            nextpnr::DEFAULT_LIMIT.as_secs() / 60
+        )));
+    }
     if args.markdown && !args.all {
         return Err(CliError::Error(
             "--markdown regenerates the whole results table: use it with --all".to_string(),
@@ -114,6 +124,9 @@ pub fn run(args: SynthArgs) -> CliResult {
         env: ToolEnv::probe(&targets)?,
         progress: &progress,
         breakdown_on: &breakdown_on,
+        pnr_limit: args
+            .pnr_minutes
+            .map_or(nextpnr::DEFAULT_LIMIT, |m| Duration::from_secs(60 * m)),
     };
 
     let mut results: Vec<SynthReport> = Vec::new();
@@ -197,5 +210,19 @@ mod tests {
             ..SynthArgs::default()
         };
         assert!(selection(&both).is_err());
+        for m in [0, 601] {
+            let limit = SynthArgs {
+                all: true,
+                pnr_minutes: Some(m),
+                ..SynthArgs::default()
+            };
+            let Err(CliError::Error(e)) = selection(&limit) else {
+                panic!("--pnr-minutes {m} accepted");
+            };
+            assert!(
+                e.starts_with(&format!("--pnr-minutes {m}: give 1 to 600")),
+                "{e}"
+            );
+        }
     }
 }

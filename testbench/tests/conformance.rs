@@ -6,8 +6,8 @@
 //! `drcc_testbench::conformance`; `docs/conformance.md` lists the ISO 16845-1 items
 //! and their tests.
 //!
-//! Run: `cargo test --release -p drcc-testbench --test conformance` (add `_model`
-//! or `_verilator` to select one engine).
+//! Run: `cargo test --release -p drcc-testbench --test suite conformance::` (the
+//! tests end in `_model` or `_verilator`, one per engine).
 
 use drcc_testbench::conformance::{model_iut, receiver, timing, transmitter, with_verilator};
 

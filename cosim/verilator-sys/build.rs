@@ -198,27 +198,27 @@ fn build(manifest: &Path, shim_dir: &Path, tops: &[TopTable]) -> Result<String, 
     let base_key = stamp_key(&verilator, &version, None)?;
     let runtime_dir = cache.join(format!("runtime-{:016x}", fnv1a(&base_key)));
     let runtime = runtime_dir.join("libdrcc_verilated_rt.a");
-    let mut mdirs = Vec::new();
-    let mut defines: Vec<(String, String)> = Vec::new();
+    // Which models are stale: verilated and compiled below, two at a time.
+    let mut stale = Vec::new();
+    let mut planned = Vec::new();
     for top in tops {
         let file = rtl_dir.join(rtl_file(top));
         let key = stamp_key(&verilator, &version, Some(&file))?;
         let mdir = cache.join(format!("V{}-{:016x}", top.name, fnv1a(&key)));
         let archive = format!("V{}__ALL.a", top.name);
-        let stamp = mdir.join("drcc-stamp");
-        let current = fs::read(&stamp).is_ok_and(|s| s == key) && mdir.join(&archive).is_file();
+        let current = fs::read(mdir.join("drcc-stamp")).is_ok_and(|s| s == key)
+            && mdir.join(&archive).is_file();
         if !current {
-            let started = Instant::now();
-            let _ = fs::remove_file(&stamp);
-            verilate(&verilator, top, &file, &mdir, jobs)?;
-            fs::write(&stamp, &key).ok();
-            fs::write(
-                mdir.join("drcc-build-seconds.txt"),
-                format!("{:.1}\n", started.elapsed().as_secs_f64()),
-            )
-            .ok();
-            prune(&cache, &format!("V{}-", top.name), &mdir);
+            let size = fs::metadata(&file).map_or(0, |m| m.len());
+            stale.push((size, top, file, mdir.clone(), key));
         }
+        planned.push((top, mdir, archive));
+    }
+    build_stale(&verilator, &cache, stale, jobs)?;
+
+    let mut mdirs = Vec::new();
+    let mut defines: Vec<(String, String)> = Vec::new();
+    for (top, mdir, archive) in planned {
         if let Some(member) = eval_step::clk_prev_member(top, &mdir) {
             let upper = top.name.to_uppercase();
             defines.push((format!("DRCC_{upper}_CLK_PREV"), member));
@@ -345,6 +345,45 @@ fn is_executable(p: &Path) -> bool {
 }
 
 /// Runs `cmd` and returns its stdout, or a `Missing::Failed` that names `what`.
+/// Verilates and compiles the stale models, largest RTL first, on two workers
+/// (each runs its own `make -j`): Verilator's front end and each model's last
+/// file compile on one core, so two models at a time keep both busy. Each model
+/// gets its stamp and build time when it is done.
+fn build_stale(
+    verilator: &Path,
+    cache: &Path,
+    mut stale: Vec<(u64, &TopTable, PathBuf, PathBuf, Vec<u8>)>,
+    jobs: usize,
+) -> Result<(), Missing> {
+    stale.sort_by_key(|s| std::cmp::Reverse(s.0));
+    let queue = std::sync::Mutex::new(stale.into_iter());
+    let worker = || -> Result<(), Missing> {
+        loop {
+            let next = queue.lock().expect("queue").next();
+            let Some((_, top, file, mdir, key)) = next else {
+                return Ok(());
+            };
+            let started = Instant::now();
+            let stamp = mdir.join("drcc-stamp");
+            let _ = fs::remove_file(&stamp);
+            verilate(verilator, top, &file, &mdir, jobs)?;
+            fs::write(&stamp, &key).ok();
+            fs::write(
+                mdir.join("drcc-build-seconds.txt"),
+                format!("{:.1}\n", started.elapsed().as_secs_f64()),
+            )
+            .ok();
+            prune(cache, &format!("V{}-", top.name), &mdir);
+        }
+    };
+    std::thread::scope(|s| {
+        let other = s.spawn(worker);
+        let mine = worker();
+        let theirs = other.join().expect("a Verilator worker panicked");
+        mine.and(theirs)
+    })
+}
+
 fn run(cmd: &mut Command, what: &str) -> Result<String, Missing> {
     // An outer make's flags (jobserver, -n, ...) must not leak into Verilator's make.
     for var in ["MAKEFLAGS", "MFLAGS", "MAKELEVEL"] {

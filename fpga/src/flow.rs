@@ -132,8 +132,12 @@ impl Flow<'_> {
             Some(device) => match self.place_and_route(top, t, device, &dir, &wrapper)? {
                 Ok(p) => (Some(p), None),
                 Err(nf) => {
+                    let verdict = match nf.unrouted_after_s {
+                        Some(_) => "does not route on",
+                        None => "does not fit",
+                    };
                     (self.progress)(&format!(
-                        "{} on {}: does not fit the {}: {}",
+                        "{} on {}: {verdict} the {}: {}",
                         top.name,
                         t.name,
                         t.device,

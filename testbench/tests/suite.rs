@@ -39,20 +39,7 @@ mod star_faults;
 #[test]
 fn every_test_file_is_built() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
-    let this = include_str!("suite.rs");
-    let mut unbuilt = Vec::new();
-    for entry in std::fs::read_dir(&dir).unwrap() {
-        let path = entry.unwrap().path();
-        let name = path.file_stem().unwrap().to_string_lossy().to_string();
-        let is_module =
-            path.extension().is_some_and(|x| x == "rs") || path.join("mod.rs").is_file();
-        if !is_module || name == "suite" || name == "coverage" {
-            continue;
-        }
-        if !this.contains(&format!("\nmod {name};\n")) {
-            unbuilt.push(name);
-        }
-    }
+    let unbuilt = drcc_tools::unbuilt_test_files(&dir, include_str!("suite.rs"), &["coverage"]);
     assert!(
         unbuilt.is_empty(),
         "tests/ files no test target builds: {unbuilt:?}"

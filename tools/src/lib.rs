@@ -1,13 +1,16 @@
 //! The external tools the tests drive (Verilator, yosys, nextpnr, Icarus,
 //! sigrok-cli, tshark, cocotb, FuseSoC), and the one rule every test follows when
 //! one is missing: skipped with a one-line note on a developer's machine, a
-//! failure naming the install command when tools are [`required`] (CI).
+//! failure naming the install command when tools are [`required`] (CI); and the
+//! rule the one-binary test suites share ([`unbuilt_test_files`]).
 //!
 //! Standard library only, so every crate of the workspace (the HDL crate's
 //! synthesis tests included) can use it without pulling anything in.
 
 mod required;
+mod suite;
 pub use required::{is_on, required, REQUIRE_VARS};
+pub use suite::unbuilt_test_files;
 
 use std::process::{Command, Stdio};
 

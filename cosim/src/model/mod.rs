@@ -99,6 +99,14 @@ impl ChannelModel {
     /// everything else goes through the out-of-line `step_special`.
     #[inline]
     pub fn step(&mut self, inputs: &ChannelInputs) -> ChannelOutputs {
+        self.clock(inputs);
+        self.outputs()
+    }
+
+    /// [`Self::step`] without its return value: a caller that keeps the outputs
+    /// in a field of its own assigns [`Self::outputs`] there, which the compiler
+    /// builds in place instead of copying a returned struct.
+    pub fn clock(&mut self, inputs: &ChannelInputs) {
         // Bitwise `|` on bools: one test instead of four branches.
         if inputs.rst | inputs.tx_abort | inputs.err_reset | self.special | self.bsp.abort_pending()
         {
@@ -106,7 +114,6 @@ impl ChannelModel {
         } else {
             self.edge(inputs, inputs.rx, false);
         }
-        self.outputs()
     }
 
     /// Reset edges, the first edge of a new model, `tx_abort` or a remembered

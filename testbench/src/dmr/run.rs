@@ -169,6 +169,9 @@ pub fn run_row_traced(
     };
     let mut acl_at_onset = vec![false; DEVICES.len()];
     let mut checked = false;
+    // Debugging aid: DRCC_DEBUG_RTL_TRACE=NODE:CYCLE:FILE opens the RTL trace
+    // of one device at that cycle (read once: not a lookup at every clock).
+    let debug_trace = std::env::var("DRCC_DEBUG_RTL_TRACE").ok();
     loop {
         let cycle = main.cycle();
         if cycle >= total && devices(&main).iter().all(|n| n.host.reads.len() >= READS) {
@@ -194,8 +197,7 @@ pub fn run_row_traced(
                 }
             }
         }
-        if let Ok(spec) = std::env::var("DRCC_DEBUG_RTL_TRACE") {
-            // debugging aid: NODE:CYCLE:FILE opens the RTL trace of one device
+        if let Some(spec) = &debug_trace {
             let p: Vec<&str> = spec.splitn(3, ':').collect();
             if p.len() == 3 && p[1].parse::<u64>().ok() == Some(cycle) {
                 let n: usize = p[0].parse().unwrap_or(0);

@@ -257,8 +257,9 @@ impl DrccModel {
         } else {
             self.edge(i);
         }
-        self.out[0] = self.chan[0].step(&ca);
-        self.out[1] = self.chan[1].step(&cb);
+        self.chan[0].clock(&ca);
+        self.chan[1].clock(&cb);
+        self.out = [self.chan[0].outputs(), self.chan[1].outputs()];
         self.outputs()
     }
 

@@ -319,128 +319,136 @@ impl DrccModel {
     /// The Wishbone access of this edge (§2, §3, §9, §11): the writes to the
     /// register file go to `n` (the registers after the edge), the rest is
     /// returned for the blocks it drives.
+    #[inline]
     pub(super) fn access(&self, i: &DrccInputs, n: &mut Regs) -> Access {
+        let r = &self.r;
+        n.wb_dat = 0;
+        // bus_contract.md §1: an access is taken unless it is the one just
+        // answered; a refused one (it raises `illegal`) ends with ERR.
+        if i.wb_cyc && i.wb_stb && !(r.wb_ack || r.wb_err) {
+            self.access_taken(i, n)
+        } else {
+            // Most clocks: no access, decided here without the call.
+            Access::default()
+        }
+    }
+
+    /// [`Self::access`] of an access taken at this edge.
+    #[inline(never)]
+    fn access_taken(&self, i: &DrccInputs, n: &mut Regs) -> Access {
         let r = &self.r;
         let reset_mode = r.reset_mode();
         let (redundancy, dmr_mode) = (r.redundancy(), r.dmr());
-        // bus_contract.md §1: an access is taken unless it is the one just
-        // answered; a refused one (it raises `illegal`) ends with ERR.
         let mut a = Access {
-            take: i.wb_cyc && i.wb_stb && !(r.wb_ack || r.wb_err),
+            take: true,
             ..Access::default()
         };
-        n.wb_dat = 0;
-        if a.take {
-            let adr = i.wb_adr & 0x3F;
-            // Byte lanes: the staged frame's words merge the selected bytes into
-            // their value; every other word takes only a whole-word write.
-            let lanes = (0..4)
-                .filter(|b| i.wb_sel >> b & 1 != 0)
-                .fold(0u32, |m, b| m | 0xFF << (8 * b));
-            let laned = matches!(
-                adr,
-                idx::TX_ID | idx::TX_CTRL | idx::TX_DATA0 | idx::TX_DATA1
-            );
-            let d = if laned {
-                (self.read_reg(adr) & !lanes) | (i.wb_dat_w & lanes)
-            } else {
-                i.wb_dat_w
-            };
-            if !i.wb_we {
-                n.wb_dat = self.read_reg(adr);
-            } else if lanes != u32::MAX && !laned {
-                coverage::hit("drcc register port: a partial write to a whole word is refused");
-                a.ints |= int::ILLEGAL;
-            } else {
-                if lanes != u32::MAX {
-                    coverage::hit("drcc register port: a partial write to a staged TX word");
+        let adr = i.wb_adr & 0x3F;
+        // Byte lanes: the staged frame's words merge the selected bytes into
+        // their value; every other word takes only a whole-word write.
+        let lanes = (0..4)
+            .filter(|b| i.wb_sel >> b & 1 != 0)
+            .fold(0u32, |m, b| m | 0xFF << (8 * b));
+        let laned = matches!(
+            adr,
+            idx::TX_ID | idx::TX_CTRL | idx::TX_DATA0 | idx::TX_DATA1
+        );
+        let d = if laned {
+            (self.read_reg(adr) & !lanes) | (i.wb_dat_w & lanes)
+        } else {
+            i.wb_dat_w
+        };
+        if !i.wb_we {
+            n.wb_dat = self.read_reg(adr);
+        } else if lanes != u32::MAX && !laned {
+            coverage::hit("drcc register port: a partial write to a whole word is refused");
+            a.ints |= int::ILLEGAL;
+        } else {
+            if lanes != u32::MAX {
+                coverage::hit("drcc register port: a partial write to a staged TX word");
+            }
+            match adr {
+                idx::CTRL => {
+                    let w = clamp_k(d & ctrl::DEFINED);
+                    if reset_mode {
+                        let listen_only = |shift: u32| (w >> shift) & 3 == 1;
+                        let any_listen_only =
+                            listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
+                        let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
+                        // §1.1: a mode the configuration lacks is refused.
+                        let absent =
+                            (dmr && !self.params.dmr) || (w & ctrl::STAR != 0 && !self.params.star);
+                        // DMR §2: one mode at a time; both lines must transmit.
+                        if (red && (any_listen_only || dmr)) || (dmr && any_listen_only) || absent {
+                            a.ints |= int::ILLEGAL;
+                        } else {
+                            n.ctrl = w;
+                        }
+                    } else {
+                        if w & ctrl::CFG != r.ctrl & ctrl::CFG {
+                            a.ints |= int::ILLEGAL;
+                        }
+                        n.ctrl = (r.ctrl & !ctrl::RESET_MODE) | (w & ctrl::RESET_MODE);
+                    }
                 }
-                match adr {
-                    idx::CTRL => {
-                        let w = clamp_k(d & ctrl::DEFINED);
-                        if reset_mode {
-                            let listen_only = |shift: u32| (w >> shift) & 3 == 1;
-                            let any_listen_only =
-                                listen_only(ctrl::MODE_A_SHIFT) || listen_only(ctrl::MODE_B_SHIFT);
-                            let (red, dmr) = (w & ctrl::REDUNDANCY != 0, w & ctrl::DMR != 0);
-                            // §1.1: a mode the configuration lacks is refused.
-                            let absent = (dmr && !self.params.dmr)
-                                || (w & ctrl::STAR != 0 && !self.params.star);
-                            // DMR §2: one mode at a time; both lines must transmit.
-                            if (red && (any_listen_only || dmr))
-                                || (dmr && any_listen_only)
-                                || absent
-                            {
-                                a.ints |= int::ILLEGAL;
-                            } else {
-                                n.ctrl = w;
-                            }
-                        } else {
-                            if w & ctrl::CFG != r.ctrl & ctrl::CFG {
-                                a.ints |= int::ILLEGAL;
-                            }
-                            n.ctrl = (r.ctrl & !ctrl::RESET_MODE) | (w & ctrl::RESET_MODE);
-                        }
+                idx::BTR | idx::RMB_CFG | idx::DEDUP_CFG => {
+                    if !reset_mode {
+                        a.ints |= int::ILLEGAL;
+                    } else if adr == idx::BTR {
+                        n.btr = d & btr::DEFINED;
+                    } else if adr == idx::RMB_CFG {
+                        n.rmb = d;
+                    } else {
+                        n.dedup = d & dedup::WINDOW_MASK;
                     }
-                    idx::BTR | idx::RMB_CFG | idx::DEDUP_CFG => {
-                        if !reset_mode {
-                            a.ints |= int::ILLEGAL;
-                        } else if adr == idx::BTR {
-                            n.btr = d & btr::DEFINED;
-                        } else if adr == idx::RMB_CFG {
-                            n.rmb = d;
-                        } else {
-                            n.dedup = d & dedup::WINDOW_MASK;
-                        }
-                    }
-                    idx::INT_STATUS => a.w1c = d & int::ALL,
-                    idx::INT_ENABLE => n.int_enable = d & int::ALL,
-                    idx::TX_ID => n.tx_id = d & (frame_id::ID_MASK | frame_id::IDE | frame_id::RTR),
-                    idx::TX_CTRL => n.tx_ctrl = d & frame_ctrl::DEFINED,
-                    idx::TX_DATA0 => n.tx_data[0] = d,
-                    idx::TX_DATA1 => n.tx_data[1] = d,
-                    idx::TX_CMD => {
-                        let aborts = [tx_cmd::ABORT_A, tx_cmd::ABORT_B].map(|b| d & b != 0);
-                        if aborts.contains(&true) && (d & tx_cmd::PUSH != 0 || dmr_mode) {
-                            // §11.5: an abort with a push, or in DMR mode; the
-                            // refused write takes no recover either (§11.6).
-                            a.ints |= int::ILLEGAL;
-                        } else {
-                            // §11.6: never refused on its own; acts by its own rule
-                            // beside a push or an abort (a refused push takes it
-                            // back, in the edge).
-                            a.recover = [tx_cmd::RECOVER_A, tx_cmd::RECOVER_B].map(|b| d & b != 0);
-                            if d & tx_cmd::PUSH == 0 {
-                                a.abort = aborts;
-                            } else {
-                                let q = if redundancy || dmr_mode {
-                                    0
-                                } else {
-                                    (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
-                                };
-                                a.push = Some((q, r.staged()));
-                            }
-                        }
-                    }
-                    idx::RX_CMD => a.pop = d & 1 != 0,
-                    // DMR registers: applied after the DMR block's edge.
-                    idx::DMR_CFG..=idx::MB_STATE => a.dmr_write = Some((adr, d)),
-                    // §11.1: the filters are cfg registers.
-                    idx::FILT_ID0..=idx::FILT_MASK1 => {
-                        let (k, mask) = ((adr - idx::FILT_ID0) as usize / 2, adr & 1 != 0);
-                        if !reset_mode {
-                            a.ints |= int::ILLEGAL;
-                        } else if !mask {
-                            n.filt.id[k] = d & filt::WORD;
-                        } else {
-                            n.filt.mask[k] = d;
-                        }
-                    }
-                    // §11.4: never refused; bit 0 = 0 does nothing.
-                    idx::STATS_CLR => a.stats_clr = d & 1 != 0,
-                    // Read-only and unmapped words.
-                    _ => a.ints |= int::ILLEGAL,
                 }
+                idx::INT_STATUS => a.w1c = d & int::ALL,
+                idx::INT_ENABLE => n.int_enable = d & int::ALL,
+                idx::TX_ID => n.tx_id = d & (frame_id::ID_MASK | frame_id::IDE | frame_id::RTR),
+                idx::TX_CTRL => n.tx_ctrl = d & frame_ctrl::DEFINED,
+                idx::TX_DATA0 => n.tx_data[0] = d,
+                idx::TX_DATA1 => n.tx_data[1] = d,
+                idx::TX_CMD => {
+                    let aborts = [tx_cmd::ABORT_A, tx_cmd::ABORT_B].map(|b| d & b != 0);
+                    if aborts.contains(&true) && (d & tx_cmd::PUSH != 0 || dmr_mode) {
+                        // §11.5: an abort with a push, or in DMR mode; the
+                        // refused write takes no recover either (§11.6).
+                        a.ints |= int::ILLEGAL;
+                    } else {
+                        // §11.6: never refused on its own; acts by its own rule
+                        // beside a push or an abort (a refused push takes it
+                        // back, in the edge).
+                        a.recover = [tx_cmd::RECOVER_A, tx_cmd::RECOVER_B].map(|b| d & b != 0);
+                        if d & tx_cmd::PUSH == 0 {
+                            a.abort = aborts;
+                        } else {
+                            let q = if redundancy || dmr_mode {
+                                0
+                            } else {
+                                (r.tx_ctrl & frame_ctrl::QUEUE != 0) as usize
+                            };
+                            a.push = Some((q, r.staged()));
+                        }
+                    }
+                }
+                idx::RX_CMD => a.pop = d & 1 != 0,
+                // DMR registers: applied after the DMR block's edge.
+                idx::DMR_CFG..=idx::MB_STATE => a.dmr_write = Some((adr, d)),
+                // §11.1: the filters are cfg registers.
+                idx::FILT_ID0..=idx::FILT_MASK1 => {
+                    let (k, mask) = ((adr - idx::FILT_ID0) as usize / 2, adr & 1 != 0);
+                    if !reset_mode {
+                        a.ints |= int::ILLEGAL;
+                    } else if !mask {
+                        n.filt.id[k] = d & filt::WORD;
+                    } else {
+                        n.filt.mask[k] = d;
+                    }
+                }
+                // §11.4: never refused; bit 0 = 0 does nothing.
+                idx::STATS_CLR => a.stats_clr = d & 1 != 0,
+                // Read-only and unmapped words.
+                _ => a.ints |= int::ILLEGAL,
             }
         }
         a

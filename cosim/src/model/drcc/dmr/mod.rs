@@ -120,6 +120,11 @@ pub struct DmrBlock {
     pub acl_switches: u8,
     /// DCL good, DCL bad, RCL good, RCL bad.
     pub cs_count: [u8; 4],
+    /// Not a register: the block is in its held state ([`Self::hold`] ran and
+    /// neither an edge in DMR mode nor `rst` came since), so holding again
+    /// changes only `busoff_q`. Spares a node outside DMR mode the whole hold
+    /// at every clock.
+    held: bool,
 }
 
 impl DmrBlock {
@@ -159,6 +164,7 @@ impl DmrBlock {
             state_changes: 0,
             acl_switches: 0,
             cs_count: [0; 4],
+            held: false,
         }
     }
 
@@ -205,6 +211,12 @@ impl DmrBlock {
 
     /// Hold the reset-mode state (reset mode, or a mode other than DMR).
     fn hold(&mut self, i: &DmrInputs) {
+        // Idempotent but for `busoff_q`: while held, only `write` changes the
+        // block, and only fields the hold keeps (configuration, identifier memory).
+        if self.held {
+            self.busoff_q = [i.err_state[0] == 2, i.err_state[1] == 2];
+            return;
+        }
         let keep = DmrBlock {
             cfg: self.cfg,
             time: self.time,
@@ -220,6 +232,7 @@ impl DmrBlock {
         };
         *self = keep;
         self.mbx.clear_state();
+        self.held = true;
     }
 
     /// A frame of the connection service (§7): `ide = 0`, `rtr = 0`, `dlc = 0`,
@@ -234,6 +247,7 @@ impl DmrBlock {
             self.hold(i);
             return DmrEvents::default();
         }
+        self.held = false;
         let c = self.clone();
         let mut ev = DmrEvents::default();
         // §3 time base: `dmr_tick` pulses when `tb_cnt` wraps at a bit tick.

@@ -32,7 +32,7 @@ pub mod verilog;
 
 use configured::raw_verilog_small;
 pub use configured::{
-    drcc_with_config, drcc_with_config_on, hub_with_shape, hub_with_shape_on, pelican_with_config,
+    drcc_with_config, drcc_with_config_on, finish_shaped_hub, pelican_with_config,
 };
 
 use crate::bus::drcc_tops::{DrccApb, DrccAxi};
@@ -129,11 +129,13 @@ fn connected<B: Block + Default>() -> B {
     uut
 }
 
+/// The Verilog rust-hdl writes for top block `B`, before `drcc generate`'s header.
 pub fn raw_verilog_of<B: Block + Default>() -> String {
     generate_verilog(&connected::<B>())
 }
 
-fn ports_of<B: Block + Default>() -> Vec<Port> {
+/// The ports of top block `B`, from its probe walk (their docs still empty).
+pub fn ports_of<B: Block + Default>() -> Vec<Port> {
     let uut = connected::<B>();
     let mut probe = PortProbe::default();
     uut.accept("top", &mut probe);

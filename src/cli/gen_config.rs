@@ -117,7 +117,7 @@ impl Generated {
                     hub_id,
                     bus,
                 },
-            ) => drcc_hdl::tops::hub_with_shape_on(&self.name, nodes, interlinks, hub_id, bus),
+            ) => drcc_hdl_shapes::hub_with_shape_on(&self.name, nodes, interlinks, hub_id, bus),
         }
     }
 

@@ -27,34 +27,6 @@ fn drcc_tops_follow_their_configurations() {
     assert!(drcc_with_config("x", &bad).is_err());
 }
 
-/// `hub_with_shape` of the emitted shapes is the `hub` / `hub_b` Verilog
-/// body; another shape has its own port widths; shapes outside 2..8 x 1..4
-/// are refused.
-#[test]
-fn hub_shapes_are_generated_with_their_widths() {
-    for (name, id) in [("hub", 0), ("hub_b", 1)] {
-        let emitted = top(name).unwrap().verilog();
-        let shaped = hub_with_shape(name, 4, 2, id).unwrap();
-        let body = |t: &str| t[t.find(&format!("module {name}(")).unwrap()..].to_string();
-        assert_eq!(body(&emitted), body(&shaped), "{name}");
-    }
-    let v = hub_with_shape("hub_6x3", 6, 3, 0).unwrap();
-    assert!(
-        v.contains("Parameters: HUB_ID = 0, N = 6, M = 3"),
-        "{}",
-        &v[..600]
-    );
-    assert!(v.contains("output reg  [5:0] downlink;"), "6 downlinks");
-    assert!(v.contains("input wire  [2:0] sublink_in;"), "3 interlinks");
-    assert!(hub_with_shape("x", 9, 2, 0)
-        .unwrap_err()
-        .contains("nodes 2..8"));
-    assert!(hub_with_shape("x", 4, 1, 0)
-        .unwrap_err()
-        .contains("interlinks 2..4"));
-    assert!(hub_with_shape("x", 4, 2, 2).is_err());
-}
-
 /// The probe walk finds exactly the ports the Verilog module header declares.
 #[test]
 fn ports_match_the_emitted_module_header() {

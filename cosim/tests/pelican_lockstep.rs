@@ -60,15 +60,10 @@ mod shadow {
     use drcc_cosim::engine::pelican::{PelicanRustHdl, PelicanVerilator};
     use drcc_cosim::model::pelican::{PelicanInputs, PelicanModel, PelicanParams};
 
-    enum Hdl {
-        M16(PelicanRustHdl<16>),
-        M0(PelicanRustHdl<0>),
-    }
-
     /// The rust-hdl top and, for `rtl-out`'s keys, the Verilated one; both
     /// `None` in a cloned `Net`.
     pub struct Shadow {
-        hdl: Option<Hdl>,
+        hdl: Option<PelicanRustHdl>,
         rtl: Option<PelicanVerilator>,
         clock: u64,
     }
@@ -91,11 +86,7 @@ mod shadow {
         /// `hdl`: run rust-hdl's simulator too (the random traffic runs the
         /// Verilated top alone, for speed).
         pub fn with(p: &PelicanParams, hdl: bool) -> Self {
-            let hdl = hdl.then(|| match p.core.mailboxes {
-                16 => Hdl::M16(PelicanRustHdl::new(p)),
-                0 => Hdl::M0(PelicanRustHdl::new(p)),
-                m => panic!("no top generated with {m} mailboxes here"),
-            });
+            let hdl = hdl.then(|| PelicanRustHdl::new(p).unwrap_or_else(|e| panic!("{e}")));
             let rtl = (*p == PelicanVerilator::params() && crate::verilator_present())
                 .then(|| PelicanVerilator::new().expect("Verilated drcc_pelican"));
             Shadow { hdl, rtl, clock: 0 }
@@ -122,19 +113,12 @@ mod shadow {
             let k = self.clock;
             self.clock += 1;
             let m = dut.outputs();
-            let o = match self.hdl.as_mut() {
-                Some(Hdl::M16(x)) => Some(x.step(i)),
-                Some(Hdl::M0(x)) => Some(x.step(i)),
-                None => None,
-            };
-            if let (Some(o), Some(Hdl::M16(x))) = (o, self.hdl.as_ref()) {
+            let o = self.hdl.as_mut().map(|x| x.step(i));
+            if let (Some(o), Some(x)) = (o, self.hdl.as_ref()) {
                 if o != m {
-                    let t = x.top();
+                    let (head, count, ready) = x.rx_fifo();
                     eprintln!(
-                        "on the mismatch: RTL FIFO head {:x}, count {}, rx_ready {}; model head {:?}, count {}",
-                        t.core.rx_head.val().to_u128(),
-                        t.core.rx_count.val().to_u64(),
-                        t.core.rx_ready.val(),
+                        "on the mismatch: RTL FIFO head {head:x}, count {count}, rx_ready {ready}; model head {:?}, count {}",
                         dut.core().core_view().head,
                         dut.core().core_view().rx_count
                     );

@@ -44,53 +44,88 @@ pub fn hdl_config(p: &PelicanParams) -> (DrccConfig, PelicanKeys) {
     (cfg, keys)
 }
 
-/// The top in rust-hdl's simulator, `M` DMR mailboxes.
-pub struct PelicanRustHdl<const M: usize> {
-    uut: Box<DrccPelican<M>>,
+/// The top in rust-hdl's simulator, generated with the model's parameters (0
+/// or 16 DMR mailboxes). Neither generic nor holding the top by type: a test
+/// that owned a `DrccPelican<M>` would compile the top's simulation and its
+/// drop glue for itself (a minute of `cargo test`'s build), so the top is
+/// behind [`PelicanSim`], all of whose code is compiled here.
+pub struct PelicanRustHdl(Box<dyn PelicanSim>);
+
+/// One clock and the probes, for a top of any mailbox count.
+trait PelicanSim {
+    fn step(&mut self, i: &PelicanInputs) -> PelicanOutputs;
+    fn rx_fifo(&self) -> (u128, u64, bool);
 }
 
-impl<const M: usize> PelicanRustHdl<M> {
-    /// A top generated with `p` (its `core.mailboxes` must be `M`), clock low,
-    /// not yet reset.
-    pub fn new(p: &PelicanParams) -> Self {
-        let (cfg, keys) = hdl_config(p);
-        let mut uut = Box::new(DrccPelican::<M>::with_config(&cfg, &keys));
-        uut.connect_all();
-        uut.clk.next = Clock::from(false);
-        settle(uut.as_mut(), MAX_SETTLE_ITERS, "drcc_pelican");
-        PelicanRustHdl { uut }
+impl<const M: usize> PelicanSim for DrccPelican<M> {
+    fn step(&mut self, i: &PelicanInputs) -> PelicanOutputs {
+        step(self, i)
     }
 
-    /// The block, for probes.
-    pub fn top(&self) -> &DrccPelican<M> {
-        &self.uut
+    fn rx_fifo(&self) -> (u128, u64, bool) {
+        let c = &self.core;
+        (
+            c.rx_head.val().to_u128(),
+            c.rx_count.val().to_u64(),
+            c.rx_ready.val(),
+        )
+    }
+}
+
+impl PelicanRustHdl {
+    /// A top generated with `p`, clock low, not yet reset; refuses a mailbox
+    /// count the generator does not take.
+    pub fn new(p: &PelicanParams) -> Result<Self, String> {
+        Ok(PelicanRustHdl(match p.core.mailboxes {
+            0 => top::<0>(p),
+            16 => top::<16>(p),
+            m => return Err(format!("drcc_pelican: {m} DMR mailboxes; 0 or 16")),
+        }))
     }
 
     /// One clock with `i`.
     pub fn step(&mut self, i: &PelicanInputs) -> PelicanOutputs {
-        let u = self.uut.as_mut();
-        u.clk.next = Clock::from(false);
-        u.rst.next = i.rst;
-        u.wb_cyc_i.next = i.cyc;
-        u.wb_stb_i.next = i.stb;
-        u.wb_we_i.next = i.we;
-        u.wb_adr_i.next = (i.adr as u64 & 0x7F).into();
-        u.wb_dat_i.next = (i.dat as u64).into();
-        u.wb_sel_i.next = (i.sel as u64 & 0xF).into();
-        u.chan_a_rx.next = i.chan_a_rx;
-        u.chan_b_rx.next = i.chan_b_rx;
-        settle(self.uut.as_mut(), MAX_SETTLE_ITERS, "drcc_pelican");
-        self.uut.clk.next = Clock::from(true);
-        settle(self.uut.as_mut(), MAX_SETTLE_ITERS, "drcc_pelican");
-        let u = &self.uut;
-        PelicanOutputs {
-            dat: u.wb_dat_o.val().to_u64() as u32,
-            ack: u.wb_ack_o.val(),
-            err: u.wb_err_o.val(),
-            irq: u.irq.val(),
-            chan_a_tx: u.chan_a_tx.val(),
-            chan_b_tx: u.chan_b_tx.val(),
-        }
+        self.0.step(i)
+    }
+
+    /// The core's RX FIFO head word, fill count and `rx_ready`, for a report.
+    pub fn rx_fifo(&self) -> (u128, u64, bool) {
+        self.0.rx_fifo()
+    }
+}
+
+/// A top generated with `p` (its `core.mailboxes` is `M`), clock low.
+fn top<const M: usize>(p: &PelicanParams) -> Box<dyn PelicanSim> {
+    let (cfg, keys) = hdl_config(p);
+    let mut uut = Box::new(DrccPelican::<M>::with_config(&cfg, &keys));
+    uut.connect_all();
+    uut.clk.next = Clock::from(false);
+    settle(uut.as_mut(), MAX_SETTLE_ITERS, "drcc_pelican");
+    uut
+}
+
+/// One clock of `u` with `i`.
+fn step<const M: usize>(u: &mut DrccPelican<M>, i: &PelicanInputs) -> PelicanOutputs {
+    u.clk.next = Clock::from(false);
+    u.rst.next = i.rst;
+    u.wb_cyc_i.next = i.cyc;
+    u.wb_stb_i.next = i.stb;
+    u.wb_we_i.next = i.we;
+    u.wb_adr_i.next = (i.adr as u64 & 0x7F).into();
+    u.wb_dat_i.next = (i.dat as u64).into();
+    u.wb_sel_i.next = (i.sel as u64 & 0xF).into();
+    u.chan_a_rx.next = i.chan_a_rx;
+    u.chan_b_rx.next = i.chan_b_rx;
+    settle(u, MAX_SETTLE_ITERS, "drcc_pelican");
+    u.clk.next = Clock::from(true);
+    settle(u, MAX_SETTLE_ITERS, "drcc_pelican");
+    PelicanOutputs {
+        dat: u.wb_dat_o.val().to_u64() as u32,
+        ack: u.wb_ack_o.val(),
+        err: u.wb_err_o.val(),
+        irq: u.irq.val(),
+        chan_a_tx: u.chan_a_tx.val(),
+        chan_b_tx: u.chan_b_tx.val(),
     }
 }
 

@@ -25,7 +25,7 @@ use std::time::{Duration, Instant};
 
 use drcc_cosim::dual::DualBusSystem;
 use drcc_cosim::engine::drcc::DrccEngine;
-use drcc_cosim::engine::drcc_rusthdl::DrccRustHdlEngine;
+use drcc_cosim::engine::drcc_rusthdl;
 use drcc_cosim::engine::hub::HubOutputs;
 
 use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT};
@@ -136,7 +136,7 @@ pub fn measure(
 /// engine, which the scenario runners refuse for being too slow for network runs.
 fn dual_node(engine: EngineKind) -> Result<Box<dyn DrccEngine>, String> {
     match engine {
-        EngineKind::RustHdl => Ok(Box::new(DrccRustHdlEngine::new())),
+        EngineKind::RustHdl => Ok(drcc_rusthdl::drcc()),
         k => drcc_engine(k),
     }
 }

@@ -12,7 +12,7 @@
 
 use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
-use drcc_cosim::engine::drcc_rusthdl::{DrccM0RustHdlEngine, DrccRustHdlEngine};
+use drcc_cosim::engine::drcc_rusthdl;
 use drcc_cosim::engine::drcc_verilator::{DrccM0VerilatorEngine, DrccVerilatorEngine};
 use drcc_hdl::host::registers::{self as map, ChannelMode, Mode, SwitchPolicy, MAP};
 use drcc_testbench::engines::verilator_required;
@@ -29,10 +29,8 @@ struct Bench {
 impl Bench {
     /// The `drcc` top (16 DMR mailboxes) on three engines.
     fn new() -> Self {
-        let mut engines: Vec<Box<dyn DrccEngine>> = vec![
-            Box::new(DrccModelEngine::new()),
-            Box::new(DrccRustHdlEngine::new()),
-        ];
+        let mut engines: Vec<Box<dyn DrccEngine>> =
+            vec![Box::new(DrccModelEngine::new()), drcc_rusthdl::drcc()];
         match DrccVerilatorEngine::new() {
             Ok(v) => engines.push(Box::new(v)),
             Err(e) => assert!(!verilator_required(), "Verilator is required here: {e}"),
@@ -45,7 +43,7 @@ impl Bench {
     fn without_mailboxes() -> Self {
         let mut engines: Vec<Box<dyn DrccEngine>> = vec![
             Box::new(DrccModelEngine::with_mailboxes(0)),
-            Box::new(DrccM0RustHdlEngine::new()),
+            drcc_rusthdl::drcc_m0(),
         ];
         match DrccM0VerilatorEngine::new() {
             Ok(v) => engines.push(Box::new(v)),

@@ -12,7 +12,7 @@
 use drcc_cosim::dual::host::btr;
 use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
-use drcc_cosim::engine::drcc_rusthdl::{DrccM0RustHdlEngine, DrccRustHdlEngine};
+use drcc_cosim::engine::drcc_rusthdl;
 use drcc_cosim::engine::drcc_verilator::{DrccSmallVerilatorEngine, DrccVerilatorEngine};
 use drcc_cosim::model::drcc::DrccParams;
 use drcc_hdl::config::DrccConfig;
@@ -34,7 +34,7 @@ impl Bench {
         Self::start(
             vec![
                 Box::new(DrccModelEngine::with_params(&DrccParams::DEFAULT)),
-                Box::new(DrccRustHdlEngine::new()),
+                drcc_rusthdl::drcc(),
             ],
             v,
         )
@@ -46,7 +46,7 @@ impl Bench {
         Self::start(
             vec![
                 Box::new(DrccModelEngine::with_params(&DrccParams::SMALL)),
-                Box::new(DrccM0RustHdlEngine::with_config(&DrccConfig::SMALL)),
+                drcc_rusthdl::with_config(&DrccConfig::SMALL),
             ],
             v,
         )

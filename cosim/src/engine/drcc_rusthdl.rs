@@ -58,26 +58,37 @@ macro_rules! drcc_probes {
 /// Settling budget per half clock.
 const MAX_SETTLE_ITERS: usize = 400;
 
-/// The DRCC block with `M` DMR mailboxes in rust-hdl's simulator.
-pub struct DrccCoreRustHdlEngine<const M: usize> {
+/// The DRCC block with `M` DMR mailboxes in rust-hdl's simulator. Its users
+/// get it as a `Box<dyn DrccEngine>` ([`drcc`], [`drcc_m0`], [`with_config`]),
+/// so that its simulation and drop glue are compiled here once, not again in
+/// every crate or test that owns one (a minute of `cargo test`'s build each).
+struct DrccCoreRustHdlEngine<const M: usize> {
     uut: Box<DrccTop<M>>,
 }
 
-/// The `drcc` top (16 DMR mailboxes) in rust-hdl's simulator.
-pub type DrccRustHdlEngine = DrccCoreRustHdlEngine<16>;
+/// The `drcc` top (16 DMR mailboxes) in rust-hdl's simulator, clock low, not
+/// yet reset (drive `rst` for a few steps).
+pub fn drcc() -> Box<dyn DrccEngine> {
+    Box::new(DrccCoreRustHdlEngine::<16>::new())
+}
 
 /// The `drcc_m0` top (no DMR mailboxes) in rust-hdl's simulator.
-pub type DrccM0RustHdlEngine = DrccCoreRustHdlEngine<0>;
+pub fn drcc_m0() -> Box<dyn DrccEngine> {
+    Box::new(DrccCoreRustHdlEngine::<0>::new())
+}
+
+/// A DRCC generated with the sizes of `cfg` in rust-hdl's simulator: with 16
+/// DMR mailboxes when `cfg.mailboxes` is not 0 (the generator's two builds).
+pub fn with_config(cfg: &DrccConfig) -> Box<dyn DrccEngine> {
+    match cfg.mailboxes {
+        0 => Box::new(DrccCoreRustHdlEngine::<0>::with_config(cfg)),
+        _ => Box::new(DrccCoreRustHdlEngine::<16>::with_config(cfg)),
+    }
+}
 
 impl<const M: usize> std::fmt::Debug for DrccCoreRustHdlEngine<M> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("DrccRustHdlEngine").finish_non_exhaustive()
-    }
-}
-
-impl<const M: usize> Default for DrccCoreRustHdlEngine<M> {
-    fn default() -> Self {
-        Self::new()
     }
 }
 

@@ -61,7 +61,8 @@ const MAX_SETTLE_ITERS: usize = 400;
 /// The DRCC block with `M` DMR mailboxes in rust-hdl's simulator. Its users
 /// get it as a `Box<dyn DrccEngine>` ([`drcc`], [`drcc_m0`], [`with_config`]),
 /// so that its simulation and drop glue are compiled here once, not again in
-/// every crate or test that owns one (a minute of `cargo test`'s build each).
+/// every crate or test that owns one (half a minute of `cargo test`'s build
+/// each, measured on the testbench suite).
 struct DrccCoreRustHdlEngine<const M: usize> {
     uut: Box<DrccTop<M>>,
 }

@@ -1776,7 +1776,6 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     reg  rmb_hold;
     reg  chan_reset_a;
     reg  chan_reset_b;
-    reg  dmr_hold;
     reg  [98:0] rx_frame_a;
     reg  [98:0] rx_frame_b;
     reg  [30:0] mb_id_word;
@@ -2458,7 +2457,6 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
             chan_reset_a = clear | regs__reset_mode_d;
             chan_reset_b = clear | regs__reset_mode_d;
         end
-        dmr_hold = regs__reset_mode | ~regs__dmr;
         rx_frame_a = (((chan_a__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_a__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_a__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_a__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_a__rx_data) & 99'h7ffffffffffffffffffffffff);
         rx_frame_b = (((chan_b__rx_rtr) & 99'h7ffffffffffffffffffffffff) << 32'h62) | (((chan_b__rx_ide) & 99'h7ffffffffffffffffffffffff) << 32'h61) | (((chan_b__rx_id) & 99'h7ffffffffffffffffffffffff) << 32'h44) | (((chan_b__rx_dlc) & 99'h7ffffffffffffffffffffffff) << 32'h40) | ((chan_b__rx_data) & 99'h7ffffffffffffffffffffffff);
         regs__clk = clk;
@@ -2535,7 +2533,7 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         eval_deviation = 1'b0;
         eval_mb = zero4;
         mailbox_cfg__0__clk = clk;
-        if (dmr_hold) begin
+        if (regs__reset_mode | ~regs__dmr) begin
             mailbox_cfg__0__read_address = dmr_regs__mb_sel;
         end
         else begin
@@ -2548,7 +2546,7 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         mb_id_word = mailbox_cfg__0__id_word;
         mb_mask = mailbox_cfg__0__mask;
         dmr_eng__0__clk = clk;
-        dmr_eng__0__hold = dmr_hold;
+        dmr_eng__0__hold = regs__reset_mode | ~regs__dmr;
         dmr_eng__0__clear_state = dmr_ctl__clear_mailboxes;
         dmr_eng__0__timeout = dmr_regs__timeout;
         dmr_eng__0__tx_dcl = dmr_ctl__raise_tx_dcl;
@@ -2600,7 +2598,7 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         dmr_regs__refused = dmr_check__illegal;
         dmr_ctl__clk = clk;
         dmr_ctl__rst = rst;
-        dmr_ctl__hold = dmr_hold;
+        dmr_ctl__hold = regs__reset_mode | ~regs__dmr;
         dmr_ctl__timeout = dmr_regs__timeout;
         dmr_ctl__cs_period = dmr_regs__cs_period;
         dmr_ctl__tick_bits = dmr_regs__tick_bits;
@@ -2801,7 +2799,7 @@ module drcc_pelican_axi__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         rxw__gate_afm = view_afm;
         rxw__gate_acr = view_acr;
         rxw__gate_amr = view_amr;
-        if (dmr_hold) begin
+        if (regs__reset_mode | ~regs__dmr) begin
             rxw__rxv_a = echo__rxv_a;
             rxw__rxv_b = echo__rxv_b;
         end
@@ -9074,9 +9072,6 @@ module drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_
     output reg  deliver_rcl;
     output reg  [31:0] cs_count_word;
 
-    // Constant declarations
-    localparam  zero4 = 4'h0;
-
     // Stub signals
     reg  dcl_good__clk;
     reg  dcl_good__rst;
@@ -9094,16 +9089,26 @@ module drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_
     reg  rcl_bad__rst;
     reg  rcl_bad__inc;
     wire  [7:0] rcl_bad__count;
-
-    // Local signals
-    reg  base_dcl;
-    reg  base_rcl;
-    reg  dcl_id_dcl;
-    reg  dcl_id_rcl;
-    reg  rcl_id_dcl;
-    reg  rcl_id_rcl;
-    reg  cs_dcl;
-    reg  cs_rcl;
+    reg  [10:0] detect_dcl__cs_id_own;
+    reg  [10:0] detect_dcl__cs_id_other;
+    reg  detect_dcl__rx_valid;
+    reg  detect_dcl__rx_ide;
+    reg  detect_dcl__rx_rtr;
+    reg  [3:0] detect_dcl__rx_dlc;
+    reg  [10:0] detect_dcl__rx_id;
+    wire  detect_dcl__good;
+    wire  detect_dcl__bad;
+    wire  detect_dcl__deliver;
+    reg  [10:0] detect_rcl__cs_id_own;
+    reg  [10:0] detect_rcl__cs_id_other;
+    reg  detect_rcl__rx_valid;
+    reg  detect_rcl__rx_ide;
+    reg  detect_rcl__rx_rtr;
+    reg  [3:0] detect_rcl__rx_dlc;
+    reg  [10:0] detect_rcl__rx_id;
+    wire  detect_rcl__good;
+    wire  detect_rcl__bad;
+    wire  detect_rcl__deliver;
 
     // Sub module instances
     drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx__dcl_bad dcl_good(
@@ -9130,6 +9135,30 @@ module drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_
         .inc(rcl_bad__inc),
         .count(rcl_bad__count)
     );
+    drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx__detect detect_dcl(
+        .cs_id_own(detect_dcl__cs_id_own),
+        .cs_id_other(detect_dcl__cs_id_other),
+        .rx_valid(detect_dcl__rx_valid),
+        .rx_ide(detect_dcl__rx_ide),
+        .rx_rtr(detect_dcl__rx_rtr),
+        .rx_dlc(detect_dcl__rx_dlc),
+        .rx_id(detect_dcl__rx_id),
+        .good(detect_dcl__good),
+        .bad(detect_dcl__bad),
+        .deliver(detect_dcl__deliver)
+    );
+    drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx__detect detect_rcl(
+        .cs_id_own(detect_rcl__cs_id_own),
+        .cs_id_other(detect_rcl__cs_id_other),
+        .rx_valid(detect_rcl__rx_valid),
+        .rx_ide(detect_rcl__rx_ide),
+        .rx_rtr(detect_rcl__rx_rtr),
+        .rx_dlc(detect_rcl__rx_dlc),
+        .rx_id(detect_rcl__rx_id),
+        .good(detect_rcl__good),
+        .bad(detect_rcl__bad),
+        .deliver(detect_rcl__deliver)
+    );
 
     // Update code
     always @(*) begin
@@ -9137,24 +9166,30 @@ module drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx(clk,rst,run,cs_id_dcl,cs_
         dcl_bad__clk = clk;
         rcl_good__clk = clk;
         rcl_bad__clk = clk;
-        base_dcl = rx_valid_dcl & ~rx_ide_dcl & ~rx_rtr_dcl & (rx_dlc_dcl == zero4);
-        dcl_id_dcl = rx_id_dcl == cs_id_dcl;
-        dcl_id_rcl = rx_id_dcl == cs_id_rcl;
-        cs_dcl = base_dcl & (dcl_id_dcl | dcl_id_rcl);
-        base_rcl = rx_valid_rcl & ~rx_ide_rcl & ~rx_rtr_rcl & (rx_dlc_rcl == zero4);
-        rcl_id_dcl = rx_id_rcl == cs_id_dcl;
-        rcl_id_rcl = rx_id_rcl == cs_id_rcl;
-        cs_rcl = base_rcl & (rcl_id_dcl | rcl_id_rcl);
-        dcl_good__inc = run & cs_dcl & dcl_id_dcl;
-        dcl_bad__inc = run & cs_dcl & ~dcl_id_dcl;
-        rcl_good__inc = run & cs_rcl & rcl_id_rcl;
-        rcl_bad__inc = run & cs_rcl & ~rcl_id_rcl;
+        detect_dcl__rx_valid = rx_valid_dcl;
+        detect_dcl__rx_ide = rx_ide_dcl;
+        detect_dcl__rx_rtr = rx_rtr_dcl;
+        detect_dcl__rx_dlc = rx_dlc_dcl;
+        detect_dcl__rx_id = rx_id_dcl;
+        detect_dcl__cs_id_own = cs_id_dcl;
+        detect_dcl__cs_id_other = cs_id_rcl;
+        detect_rcl__rx_valid = rx_valid_rcl;
+        detect_rcl__rx_ide = rx_ide_rcl;
+        detect_rcl__rx_rtr = rx_rtr_rcl;
+        detect_rcl__rx_dlc = rx_dlc_rcl;
+        detect_rcl__rx_id = rx_id_rcl;
+        detect_rcl__cs_id_own = cs_id_rcl;
+        detect_rcl__cs_id_other = cs_id_dcl;
+        dcl_good__inc = run & detect_dcl__good;
+        dcl_bad__inc = run & detect_dcl__bad;
+        rcl_good__inc = run & detect_rcl__good;
+        rcl_bad__inc = run & detect_rcl__bad;
         dcl_good__rst = rst;
         dcl_bad__rst = rst;
         rcl_good__rst = rst;
         rcl_bad__rst = rst;
-        deliver_dcl = rx_valid_dcl & ~cs_dcl;
-        deliver_rcl = rx_valid_rcl & ~cs_rcl;
+        deliver_dcl = detect_dcl__deliver;
+        deliver_rcl = detect_rcl__deliver;
         cs_count_word = ((dcl_good__count) & 32'hffffffff) | (((dcl_bad__count) & 32'hffffffff) << 32'h8) | (((rcl_good__count) & 32'hffffffff) << 32'h10) | (((rcl_bad__count) & 32'hffffffff) << 32'h18);
     end
 
@@ -9196,6 +9231,41 @@ module drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx__dcl_bad(clk,rst,inc,coun
     end
 
 endmodule // drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx__dcl_bad
+
+
+module drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx__detect(cs_id_own,cs_id_other,rx_valid,rx_ide,rx_rtr,rx_dlc,rx_id,good,bad,deliver);
+
+    // Module arguments
+    input wire  [10:0] cs_id_own;
+    input wire  [10:0] cs_id_other;
+    input wire  rx_valid;
+    input wire  rx_ide;
+    input wire  rx_rtr;
+    input wire  [3:0] rx_dlc;
+    input wire  [10:0] rx_id;
+    output reg  good;
+    output reg  bad;
+    output reg  deliver;
+
+    // Constant declarations
+    localparam  zero4 = 4'h0;
+
+    // Local signals
+    reg  base;
+    reg  id_own;
+    reg  id_other;
+
+    // Update code
+    always @(*) begin
+        base = rx_valid & ~rx_ide & ~rx_rtr & (rx_dlc == zero4);
+        id_own = rx_id == cs_id_own;
+        id_other = rx_id == cs_id_other;
+        good = base & id_own;
+        bad = base & id_other & ~id_own;
+        deliver = rx_valid & ~(base & (id_own | id_other));
+    end
+
+endmodule // drcc_pelican_axi__pelican__core__dmr_ctl__cs_rx__detect
 
 
 module drcc_pelican_axi__pelican__core__dmr_ctl__dcl(clk,rst,hold,timeout,recovery_delay,dmr_tick,period_due,mine,more,rd_key,reset_mode_q,done,failed,err_state,tx_req,cs_req,abort,restart,other_sends,eval_here,eval_tx,raise_req,raise_tx,key_tx,complete,cs_fail,busoff,against,sends_next,recovered,tx_fault,rx_fault);

@@ -300,7 +300,6 @@ pub struct DrccCore<const M: usize> {
     /// Each channel's reset before the restarts (rst, reset mode, the view's).
     chan_reset_a: Signal<Local, Bit>,
     chan_reset_b: Signal<Local, Bit>,
-    dmr_hold: Signal<Local, Bit>,
     // the channels' received frames, laid out as the TX RAM (id, ide, rtr, dlc, data)
     rx_frame_a: Signal<Local, Bits<99>>,
     rx_frame_b: Signal<Local, Bits<99>>,

@@ -24,8 +24,6 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.chan_reset_a.next = self.clear.val() | self.regs.reset_mode_d.val();
             self.chan_reset_b.next = self.clear.val() | self.regs.reset_mode_d.val();
         }
-        // the DMR function runs in DMR mode outside reset mode (DMR contract §2)
-        self.dmr_hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
         self.rx_frame_a.next = (bit_cast::<99, 1>(self.chan_a.rx_rtr.val().into()) << 98)
             | (bit_cast::<99, 1>(self.chan_a.rx_ide.val().into()) << 97)
             | (bit_cast::<99, 29>(self.chan_a.rx_id.val()) << 68)
@@ -126,7 +124,7 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.mailbox_cfg[i].clk.next = self.clk.val();
             // the memory's read port is the host's in reset mode, the engine's
             // while DMR runs (DMR contract §2.1)
-            if self.dmr_hold.val() {
+            if self.regs.reset_mode.val() | !self.regs.dmr.val() {
                 self.mailbox_cfg[i].read_address.next = self.dmr_regs.mb_sel.val();
             } else {
                 self.mailbox_cfg[i].read_address.next = self.dmr_eng[i].cfg_addr.val();
@@ -138,7 +136,7 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.mb_id_word.next = self.mailbox_cfg[i].id_word.val();
             self.mb_mask.next = self.mailbox_cfg[i].mask.val();
             self.dmr_eng[i].clk.next = self.clk.val();
-            self.dmr_eng[i].hold.next = self.dmr_hold.val();
+            self.dmr_eng[i].hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
             self.dmr_eng[i].clear_state.next = self.dmr_ctl.clear_mailboxes.val();
             self.dmr_eng[i].timeout.next = self.dmr_regs.timeout.val();
             self.dmr_eng[i].tx_dcl.next = self.dmr_ctl.raise_tx_dcl.val();
@@ -196,7 +194,13 @@ impl<const M: usize> Logic for DrccCore<M> {
         // ---- DMR function (DMR contract §3-§7): control and mailbox engine ----
         self.dmr_ctl.clk.next = self.clk.val();
         self.dmr_ctl.rst.next = self.rst.val();
-        self.dmr_ctl.hold.next = self.dmr_hold.val();
+        // The DMR function is held outside DMR mode and in reset mode (DMR contract
+        // §2). Written out at each use, not kept in a local of this block: a local
+        // written here would join every statement that reads it into one group for
+        // Verilator, which then sees a combinational loop through the DMR blocks
+        // (they take `hold` and give back `cfg_addr` and `rx_deliver_*`) and
+        // evaluates them again until they settle, at every clock.
+        self.dmr_ctl.hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
         self.dmr_ctl.timeout.next = self.dmr_regs.timeout.val();
         self.dmr_ctl.cs_period.next = self.dmr_regs.cs_period.val();
         self.dmr_ctl.tick_bits.next = self.dmr_regs.tick_bits.val();
@@ -425,7 +429,7 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rxw.gate_afm.next = self.view_afm.val();
         self.rxw.gate_acr.next = self.view_acr.val();
         self.rxw.gate_amr.next = self.view_amr.val();
-        if self.dmr_hold.val() {
+        if self.regs.reset_mode.val() | !self.regs.dmr.val() {
             // neither an echo (the node's own frame, §4.4) nor a hub's
             // identification frame (§4.5) is a reception
             self.rxw.rxv_a.next = self.echo.rxv_a.val();

@@ -420,3 +420,29 @@ fn ring_refuses_bad_faults_sizes_and_positions() {
     );
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// A trace that cannot be written is an error naming the file, not a PASS: the
+/// full device (every write fails, ENOSPC) as `--vcd` exits 2 naming it, and
+/// stays a device (an output is written in place there, never replaced by a
+/// renamed file).
+#[cfg(target_os = "linux")]
+#[test]
+fn a_trace_that_cannot_be_written_is_an_error_and_a_device_stays_a_device() {
+    use std::os::unix::fs::FileTypeExt;
+    let full = Path::new("/dev/full");
+    assert!(
+        std::fs::metadata(full).is_ok_and(|m| m.file_type().is_char_device()),
+        "/dev/full is a character device on Linux"
+    );
+    let d = scratch("devfull");
+    let o = drcc_in(&d, &["sim", "x.toml", "--vcd", "/dev/full"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("cannot write /dev/full"), "{err}");
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("PASS"));
+    assert!(
+        std::fs::metadata(full).is_ok_and(|m| m.file_type().is_char_device()),
+        "/dev/full was replaced by a file"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -111,9 +111,20 @@ fn tmp_path(path: &Path) -> PathBuf {
     path.with_file_name(format!(".{name}.{}-{n}.drcc-tmp", std::process::id()))
 }
 
+/// Whether `path` is a device, a pipe or a socket (`/dev/null`, `/dev/stdout`, a
+/// FIFO): written in place, never replaced by a renamed file.
+fn is_special(path: &Path) -> bool {
+    std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir())
+}
+
 /// Writes `text` to `path` through a temporary file beside it and a rename, so an
 /// interrupted write leaves the old file or the new one, never a truncated one.
+/// A device or a pipe is written in place.
 pub fn write_atomic(path: &Path, text: impl AsRef<[u8]>) -> Result<(), CliError> {
+    if is_special(path) {
+        return std::fs::write(path, text)
+            .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())));
+    }
     let tmp = tmp_path(path);
     std::fs::write(&tmp, text).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
@@ -180,10 +191,13 @@ pub fn check_outputs(inputs: &[&Path], outputs: &[(&str, &Path)]) -> CliResult {
 
 /// An output file written under a temporary name beside it and renamed into place
 /// by [`AtomicFile::commit`]; dropped uncommitted (an error, an interrupt), it
-/// removes the temporary file and leaves the old file, if any, as it was.
+/// removes the temporary file and leaves the old file, if any, as it was. A device
+/// or a pipe (`/dev/null`, a FIFO) is written in place: renaming a file over it
+/// would replace the device with a file.
 pub struct AtomicFile {
     path: PathBuf,
-    tmp: PathBuf,
+    /// The temporary file, or none for a device or a pipe.
+    tmp: Option<PathBuf>,
     writer: Option<std::io::BufWriter<std::fs::File>>,
 }
 
@@ -194,8 +208,8 @@ impl AtomicFile {
             std::fs::create_dir_all(dir)
                 .map_err(|e| CliError::Error(format!("cannot create {}: {e}", dir.display())))?;
         }
-        let tmp = tmp_path(path);
-        let f = std::fs::File::create(&tmp)
+        let tmp = (!is_special(path)).then(|| tmp_path(path));
+        let f = std::fs::File::create(tmp.as_deref().unwrap_or(path))
             .map_err(|e| CliError::Error(format!("cannot create {}: {e}", path.display())))?;
         Ok(AtomicFile {
             path: path.to_path_buf(),
@@ -216,8 +230,12 @@ impl AtomicFile {
         w.flush()
             .map_err(|e| CliError::Error(format!("cannot write {}: {e}", self.path.display())))?;
         drop(w);
-        std::fs::rename(&self.tmp, &self.path)
-            .map_err(|e| CliError::Error(format!("cannot replace {}: {e}", self.path.display())))
+        match &self.tmp {
+            Some(tmp) => std::fs::rename(tmp, &self.path).map_err(|e| {
+                CliError::Error(format!("cannot replace {}: {e}", self.path.display()))
+            }),
+            None => Ok(()),
+        }
     }
 }
 
@@ -235,8 +253,8 @@ impl std::io::Write for AtomicFile {
 
 impl Drop for AtomicFile {
     fn drop(&mut self) {
-        if self.writer.take().is_some() {
-            let _ = std::fs::remove_file(&self.tmp);
+        if let (Some(_), Some(tmp)) = (self.writer.take(), &self.tmp) {
+            let _ = std::fs::remove_file(tmp);
         }
     }
 }

@@ -57,11 +57,11 @@ fn engine() -> EngineKind {
 /// five of Table 3 (a device cut from the RCL or the RCL short-circuited, at
 /// startup), F1 and F9 at startup and at run time (a device cut from the DCL, the
 /// DCL short-circuited: the ACL switches), and F10 at run time (the RCL lost while
-/// the network runs). Every device's DMR block takes each role in them. The other
-/// ten rows run here on the model, with the same checks, and in lock step in the
-/// soak (`soak_every_other_row_in_lock_step_with_the_rtl`): a row in lock step
-/// costs about five times a row on the model (12 s against 2.4 s on a 2-core
-/// machine).
+/// the network runs); in Table 3's rows each device in turn is the one cut off.
+/// The other ten rows run here on the model, with the same checks, and in lock
+/// step in the soak (`soak_every_other_row_in_lock_step_with_the_rtl`): a row in
+/// lock step costs about five times a row on the model (12 s against 2.4 s on a
+/// 2-core machine).
 fn in_lock_step_here(row: Row) -> bool {
     use Marker::*;
     matches!(

@@ -194,12 +194,8 @@ impl<const M: usize> Logic for DrccCore<M> {
         // ---- DMR function (DMR contract §3-§7): control and mailbox engine ----
         self.dmr_ctl.clk.next = self.clk.val();
         self.dmr_ctl.rst.next = self.rst.val();
-        // The DMR function is held outside DMR mode and in reset mode (DMR contract
-        // §2). Written out at each use, not kept in a local of this block: a local
-        // written here would join every statement that reads it into one group for
-        // Verilator, which then sees a combinational loop through the DMR blocks
-        // (they take `hold` and give back `cfg_addr` and `rx_deliver_*`) and
-        // evaluates them again until they settle, at every clock.
+        // DMR held outside DMR mode and in reset mode (DMR contract §2), written out
+        // at each use: a local would close a false loop for Verilator (design.md)
         self.dmr_ctl.hold.next = self.regs.reset_mode.val() | !self.regs.dmr.val();
         self.dmr_ctl.timeout.next = self.dmr_regs.timeout.val();
         self.dmr_ctl.cs_period.next = self.dmr_regs.cs_period.val();

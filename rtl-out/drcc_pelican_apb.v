@@ -987,6 +987,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     wire  regs__single_shot;
     wire  regs__dmr;
     wire  regs__busoff_manual;
+    wire  regs__first_copy;
     wire  [9:0] regs__brp;
     wire  [3:0] regs__tseg1;
     wire  [2:0] regs__tseg2;
@@ -1426,7 +1427,8 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     wire  [15:0] rxw__overruns;
     wire  [15:0] rxw__omissions_a;
     wire  [15:0] rxw__omissions_b;
-    reg  rxw__dmr;
+    reg  rxw__acl_rule;
+    reg  rxw__count_pcl;
     reg  rxw__acl;
     reg  rxw__release_set;
     wire  [15:0] rxw__pcl_frames;
@@ -1618,6 +1620,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .single_shot(regs__single_shot),
         .dmr(regs__dmr),
         .busoff_manual(regs__busoff_manual),
+        .first_copy(regs__first_copy),
         .brp(regs__brp),
         .tseg1(regs__tseg1),
         .tseg2(regs__tseg2),
@@ -2091,7 +2094,8 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .overruns(rxw__overruns),
         .omissions_a(rxw__omissions_a),
         .omissions_b(rxw__omissions_b),
-        .dmr(rxw__dmr),
+        .acl_rule(rxw__acl_rule),
+        .count_pcl(rxw__count_pcl),
         .acl(rxw__acl),
         .release_set(rxw__release_set),
         .pcl_frames(rxw__pcl_frames),
@@ -2558,7 +2562,8 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         rxw__rst = rst;
         rxw__clear = clear;
         rxw__dedup_on = (regs__redundancy | regs__dmr) & |regs__window;
-        rxw__dmr = regs__dmr;
+        rxw__acl_rule = regs__dmr & ~(regs__first_copy & |regs__window);
+        rxw__count_pcl = regs__dmr;
         rxw__acl = dmr_ctl__acl;
         rxw__release_set = dmr_ctl__acl_switch;
         rxw__window = regs__window;
@@ -11385,7 +11390,7 @@ module drcc_pelican_apb__pelican__core__main(clk,rst,hold,dual_tx,queued,valid_a
 endmodule // drcc_pelican_apb__pelican__core__main
 
 
-module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,view_on,view_ctrl,view_btr,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,recover_a,recover_b,pop,rearm_err,rearm_alc,stats_clear);
+module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,view_on,view_ctrl,view_btr,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,first_copy,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,recover_a,recover_b,pop,rearm_err,rearm_alc,stats_clear);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [0:0] STAR = 1'd1;
 
@@ -11443,6 +11448,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     output reg  single_shot;
     output reg  dmr;
     output reg  busoff_manual;
+    output reg  first_copy;
     output reg  [9:0] brp;
     output reg  [3:0] tseg1;
     output reg  [2:0] tseg2;
@@ -11573,6 +11579,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     wire  ctrl__single_shot;
     wire  ctrl__dmr;
     wire  ctrl__busoff_manual;
+    wire  ctrl__first_copy;
     reg  [31:0] ctrl_check__wdat;
     reg  ctrl_check__reset_mode;
     reg  ctrl_check__redundancy;
@@ -11585,6 +11592,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     reg  ctrl_check__single_shot;
     reg  ctrl_check__dmr;
     reg  ctrl_check__busoff_manual;
+    reg  ctrl_check__first_copy;
     wire  [3:0] ctrl_check__k_in;
     wire  ctrl_check__refused;
     wire  ctrl_check__illegal;
@@ -11667,7 +11675,8 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
         .mode_b(ctrl__mode_b),
         .single_shot(ctrl__single_shot),
         .dmr(ctrl__dmr),
-        .busoff_manual(ctrl__busoff_manual)
+        .busoff_manual(ctrl__busoff_manual),
+        .first_copy(ctrl__first_copy)
     );
     drcc_pelican_apb__pelican__core__regs__ctrl_check #(.STAR(STAR)) ctrl_check(
         .wdat(ctrl_check__wdat),
@@ -11682,6 +11691,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
         .single_shot(ctrl_check__single_shot),
         .dmr(ctrl_check__dmr),
         .busoff_manual(ctrl_check__busoff_manual),
+        .first_copy(ctrl_check__first_copy),
         .k_in(ctrl_check__k_in),
         .refused(ctrl_check__refused),
         .illegal(ctrl_check__illegal)
@@ -11801,6 +11811,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
         ctrl_check__single_shot = ctrl__single_shot;
         ctrl_check__dmr = ctrl__dmr;
         ctrl_check__busoff_manual = ctrl__busoff_manual;
+        ctrl_check__first_copy = ctrl__first_copy;
         illegal = 1'b0;
         w1c = zero17;
         bus__int_enable_we = 1'b0;
@@ -11952,6 +11963,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
         single_shot = ctrl__single_shot;
         dmr = ctrl__dmr;
         busoff_manual = ctrl__busoff_manual;
+        first_copy = ctrl__first_copy;
         wr_o = wr & full;
         brp = ((btr_word[(b_brp)+:(6)]) & 10'h3ff) | (((btr_word[(b_brp_ext)+:(4)]) & 10'h3ff) << brp_ext_shift);
         tseg1 = btr_word[(b_tseg1)+:(4)];
@@ -12069,7 +12081,7 @@ module drcc_pelican_apb__pelican__core__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_w
 endmodule // drcc_pelican_apb__pelican__core__regs__bus
 
 
-module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,view_on,view_word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual);
+module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,word,view_on,view_word,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,first_copy);
     parameter [0:0] STAR = 1'd1;
 
     // Module arguments
@@ -12094,6 +12106,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
     output reg  single_shot;
     output reg  dmr;
     output reg  busoff_manual;
+    output reg  first_copy;
 
     // Constant declarations
     localparam  p_reset_mode = 5'b0;
@@ -12107,6 +12120,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
     localparam  p_single_shot = 5'b10000;
     localparam  p_dmr = 5'b10001;
     localparam  p_busoff_manual = 5'b10010;
+    localparam  p_first_copy = 5'b10011;
     localparam  redundancy_reset = 1'b0;
     localparam  policy_reset = 2'b1;
     localparam  k_reset = 4'h1;
@@ -12139,6 +12153,8 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
     reg  dmr_q__q;
     reg  busoff_manual_q__d;
     reg  busoff_manual_q__q;
+    reg  first_copy_q__d;
+    reg  first_copy_q__q;
 
     // Local signals
     reg  [31:0] stored;
@@ -12158,7 +12174,8 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
         single_shot_q__d = single_shot_q__q;
         dmr_q__d = dmr_q__q;
         busoff_manual_q__d = busoff_manual_q__q;
-        stored = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((star_q__q) & 32'hffffffff) << p_star) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr) | (((busoff_manual_q__q) & 32'hffffffff) << p_busoff_manual);
+        first_copy_q__d = first_copy_q__q;
+        stored = (((reset_mode_q__q) & 32'hffffffff) << p_reset_mode) | (((redundancy_q__q) & 32'hffffffff) << p_redundancy) | (((policy_q__q) & 32'hffffffff) << p_policy) | (((dual_tx_q__q) & 32'hffffffff) << p_dual_tx) | (((star_q__q) & 32'hffffffff) << p_star) | (((k_q__q) & 32'hffffffff) << p_k) | (((mode_a_q__q) & 32'hffffffff) << p_mode_a) | (((mode_b_q__q) & 32'hffffffff) << p_mode_b) | (((single_shot_q__q) & 32'hffffffff) << p_single_shot) | (((dmr_q__q) & 32'hffffffff) << p_dmr) | (((busoff_manual_q__q) & 32'hffffffff) << p_busoff_manual) | (((first_copy_q__q) & 32'hffffffff) << p_first_copy);
         if (view_on) begin
             cur = view_word;
         end
@@ -12180,6 +12197,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
                     single_shot_q__d = wdat[p_single_shot];
                     dmr_q__d = wdat[p_dmr] & |dmr_present;
                     busoff_manual_q__d = wdat[p_busoff_manual];
+                    first_copy_q__d = wdat[p_first_copy] & |dmr_present;
                 end
             end
             else begin
@@ -12199,6 +12217,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
             single_shot_q__d = 1'b0;
             dmr_q__d = 1'b0;
             busoff_manual_q__d = 1'b0;
+            first_copy_q__d = 1'b0;
         end
         word = cur;
         reset_mode = cur[p_reset_mode];
@@ -12213,6 +12232,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
         single_shot = cur[p_single_shot];
         dmr = cur[p_dmr];
         busoff_manual = cur[p_busoff_manual];
+        first_copy = cur[p_first_copy];
     end
 
     // Flip-flops
@@ -12229,12 +12249,13 @@ module drcc_pelican_apb__pelican__core__regs__ctrl(clk,rst,we,wdat,refused,k_in,
         single_shot_q__q <= single_shot_q__d;
         dmr_q__q <= dmr_q__d;
         busoff_manual_q__q <= busoff_manual_q__d;
+        first_copy_q__q <= first_copy_q__d;
     end
 
 endmodule // drcc_pelican_apb__pelican__core__regs__ctrl
 
 
-module drcc_pelican_apb__pelican__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,k_in,refused,illegal);
+module drcc_pelican_apb__pelican__core__regs__ctrl_check(wdat,reset_mode,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,first_copy,k_in,refused,illegal);
     parameter [0:0] STAR = 1'd1;
 
     // Module arguments
@@ -12250,6 +12271,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl_check(wdat,reset_mode,redunda
     input wire  single_shot;
     input wire  dmr;
     input wire  busoff_manual;
+    input wire  first_copy;
     output reg  [3:0] k_in;
     output reg  refused;
     output reg  illegal;
@@ -12265,6 +12287,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl_check(wdat,reset_mode,redunda
     localparam  p_single_shot = 5'b10000;
     localparam  p_dmr = 5'b10001;
     localparam  p_busoff_manual = 5'b10010;
+    localparam  p_first_copy = 5'b10011;
     localparam  mode_listen = 2'b1;
     localparam  zero4 = 4'h0;
     localparam  one4 = 4'h1;
@@ -12285,7 +12308,7 @@ module drcc_pelican_apb__pelican__core__regs__ctrl_check(wdat,reset_mode,redunda
         end
         listen = (wdat[(p_mode_a)+:(2)] == mode_listen) | (wdat[(p_mode_b)+:(2)] == mode_listen);
         refused = ((wdat[p_redundancy] | wdat[p_dmr]) & listen) | (wdat[p_redundancy] & wdat[p_dmr]) | (wdat[p_dmr] & ~|dmr_present) | (wdat[p_star] & ~|star_present);
-        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (wdat[p_star] != star) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr) | (wdat[p_busoff_manual] != busoff_manual);
+        cfg_differs = (wdat[p_redundancy] != redundancy) | (wdat[(p_policy)+:(2)] != policy) | (wdat[p_dual_tx] != dual_tx) | (wdat[p_star] != star) | (k_in != k) | (wdat[(p_mode_a)+:(2)] != mode_a) | (wdat[(p_mode_b)+:(2)] != mode_b) | (wdat[p_single_shot] != single_shot) | (wdat[p_dmr] != dmr) | (wdat[p_busoff_manual] != busoff_manual) | (wdat[p_first_copy] != first_copy);
         if (reset_mode) begin
             illegal = refused;
         end
@@ -12420,7 +12443,7 @@ module drcc_pelican_apb__pelican__core__rxfifo__ram(clk,read_address,read_enable
 endmodule // drcc_pelican_apb__pelican__core__rxfifo__ram
 
 
-module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,filt_id0,filt_mask0,filt_id1,filt_mask1,offer_s,frame_s,gate_on,gate_afm,gate_acr,gate_amr,stats_clear,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,dmr,acl,release_set,pcl_frames,released,expired);
+module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,tick,rxv_a,rxv_b,frame_a,frame_b,fifo_count,fifo_wr,fifo_data,filt_id0,filt_mask0,filt_id1,filt_mask1,offer_s,frame_s,gate_on,gate_afm,gate_acr,gate_amr,stats_clear,rx_evt,overrun_evt,duplicates,overruns,omissions_a,omissions_b,acl_rule,count_pcl,acl,release_set,pcl_frames,released,expired);
     parameter [5:0] RX_FIFO_DEPTH = 6'd32;
     parameter [5:0] HISTORY = 6'd32;
 
@@ -12456,7 +12479,8 @@ module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
     output reg  [15:0] overruns;
     output reg  [15:0] omissions_a;
     output reg  [15:0] omissions_b;
-    input wire  dmr;
+    input wire  acl_rule;
+    input wire  count_pcl;
     input wire  acl;
     input wire  release_set;
     output reg  [15:0] pcl_frames;
@@ -12769,7 +12793,7 @@ module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         in_scan = (w_state__q == s_scan) | (w_state__q == s_rscan);
         judging = in_scan & (scan_i__q != zero6);
         pcl = sel__q != acl;
-        w_fifo = sel_s__q | ~(dmr & w_pcl__q);
+        w_fifo = sel_s__q | ~(acl_rule & w_pcl__q);
         w_hist = dedup_on & ~hit__q & ~sel_s__q;
         if (w_state__q == s_fetch) begin
             hist__read_address = rel__rel_e;
@@ -12826,8 +12850,8 @@ module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         rel__tick = tick;
         stats__pcl_inc = 1'b0;
         stats__released_inc = 1'b0;
-        stats__expired_inc = dmr & judging & e_hv & e_expired & ~e_hu & ~e_hd;
-        omit = ~dmr & judging & (w_state__q == s_scan) & e_hv & e_expired & ~e_hu;
+        stats__expired_inc = acl_rule & judging & e_hv & e_expired & ~e_hu & ~e_hd;
+        omit = ~acl_rule & judging & (w_state__q == s_scan) & e_hv & e_expired & ~e_hu;
         stats__omit_a = omit & e_ch;
         stats__omit_b = omit & ~e_ch;
         stats__dup_inc = 1'b0;
@@ -12886,7 +12910,7 @@ module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
                 if (dedup_on) begin
                     w_state__d = s_scan;
                 end
-                else if (dmr) begin
+                else if (acl_rule) begin
                     w_state__d = s_decide;
                 end
                 else begin
@@ -12900,7 +12924,7 @@ module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
                 s_pend__d = 1'b0;
                 w_state__d = s_write;
             end
-            else if (dmr & release_q__q & dedup_on) begin
+            else if (acl_rule & release_q__q & dedup_on) begin
                 w_state__d = s_rscan;
                 scan_i__d = zero6;
                 rel__start = 1'b1;
@@ -12931,15 +12955,15 @@ module drcc_pelican_apb__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
             end
         end
         else if (w_state__q == s_decide) begin
-            if (dmr) begin
+            if (acl_rule) begin
                 w_pcl__d = pcl;
-                stats__pcl_inc = pcl;
             end
+            stats__pcl_inc = count_pcl & pcl;
             if (hit__q) begin
-                if (~dmr | ~pcl | hit_hd__q) begin
+                if (~acl_rule | ~pcl | hit_hd__q) begin
                     hu__d = hu__q | mask;
                 end
-                if (dmr & ~hit_hd__q & ~pcl) begin
+                if (acl_rule & ~hit_hd__q & ~pcl) begin
                     w_state__d = s_write;
                 end
                 else begin
@@ -13548,7 +13572,7 @@ module drcc_pelican_apb__pelican__core__status(adr,word,state,tx_channel,tx_goin
     localparam  a_cap_b = 6'b101001;
     localparam  a_rx_time = 6'b101110;
     localparam  id_value = 32'h44524343;
-    localparam  version_value = 32'h103;
+    localparam  version_value = 32'h104;
     localparam  zero32 = 32'h0;
     localparam  st_state = 5'b0;
     localparam  st_tx_channel = 5'b100;

@@ -54,6 +54,8 @@
 #define DRCC_CTRL_DMR_MASK 0x00020000u
 #define DRCC_CTRL_BUSOFF_MANUAL_SHIFT 18u
 #define DRCC_CTRL_BUSOFF_MANUAL_MASK 0x00040000u
+#define DRCC_CTRL_FIRST_COPY_SHIFT 19u
+#define DRCC_CTRL_FIRST_COPY_MASK 0x00080000u
 
 /* BTR: Bit timing of both channels (fields carry value - 1); writable only in reset mode (RW) */
 #define DRCC_BTR_OFFSET 0x08u
@@ -534,7 +536,7 @@
 /* VERSION: Version of this register map (contract §10.1; 0 on maps before it) (RO) */
 #define DRCC_VERSION_OFFSET 0x98u
 #define DRCC_VERSION_INDEX 38u
-#define DRCC_VERSION_RESET 0x00000103u
+#define DRCC_VERSION_RESET 0x00000104u
 #define DRCC_VERSION_MINOR_SHIFT 0u
 #define DRCC_VERSION_MINOR_MASK 0x000000FFu
 #define DRCC_VERSION_MAJOR_SHIFT 8u

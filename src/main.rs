@@ -190,6 +190,10 @@ enum Command {
         /// a line fault sooner (less extra latency) and tolerates less skew.
         #[arg(long, value_name = "N")]
         limit: Option<u8>,
+        /// One row with first-copy delivery (`CTRL.first_copy`, DMR contract §8.1)
+        /// instead of the seed's ACL rule; the table always has both.
+        #[arg(long)]
+        first_copy: bool,
     },
     /// Serve a simulated network over the socketcand protocol (python-can's
     /// `socketcand` interface and other tools): every node is a bus named after it.
@@ -417,6 +421,7 @@ fn main() -> ExitCode {
             vcd,
             recovery_ms,
             limit,
+            first_copy,
         } => cli::dmr::run(&cli::dmr::DmrArgs {
             what: &what,
             startup,
@@ -427,6 +432,7 @@ fn main() -> ExitCode {
             vcd: vcd.as_deref(),
             recovery_ms,
             limit,
+            first_copy,
         }),
         Command::Campaign {
             args,

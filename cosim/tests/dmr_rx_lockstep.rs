@@ -5,12 +5,13 @@
 //! hundred clocks apart in random order, some on one line only, some lost; random
 //! pops with stalls (FIFO overruns), ACL switches at random (`release_set` with
 //! `acl` toggling at that edge), windows small enough that entries expire, reset
-//! mode episodes, and runs with `dmr` = 0 (redundancy dedup, regression).
+//! mode episodes, runs with first-copy delivery (DMR contract §8.1), and runs
+//! with `dmr` = 0 (redundancy dedup, regression).
 //!
 //! Compared at every clock: the FIFO write (`fifo_wr`, `fifo_data` against the
 //! model's RAM slot written), `rx_evt`, `overrun_evt`, FIFO `head`, `count`,
 //! `rx_ready` and read data, `duplicates`, `overruns`, the three `DMR_RX_STATS`
-//! counts, `w_state`, and `hv` / `hu` / `hd` (un-rotated during scans: the block
+//! counts, the two `OMISSIONS` counts, `w_state`, and `hv` / `hu` / `hd` (un-rotated during scans: the block
 //! rotates them right by one at every judging scan edge, the model does not).
 
 use drcc_cosim::frame::Frame;
@@ -35,6 +36,7 @@ struct RxBench {
     reset_mode: Signal<In, Bit>,
     dedup_on: Signal<In, Bit>,
     dmr: Signal<In, Bit>,
+    first_copy: Signal<In, Bit>,
     acl: Signal<In, Bit>,
     release_set: Signal<In, Bit>,
     window: Signal<In, Bits<15>>,
@@ -72,7 +74,10 @@ impl Logic for RxBench {
         w.frame_a.next = self.frame_a.val();
         w.frame_b.next = self.frame_b.val();
         w.fifo_count.next = self.fifo.count.val();
-        w.dmr.next = self.dmr.val();
+        // the core's wiring (DMR contract §8.1): the ACL rule unless first copy
+        // with a history
+        w.acl_rule.next = self.dmr.val() & !(self.first_copy.val() & self.dedup_on.val());
+        w.count_pcl.next = self.dmr.val();
         w.acl.next = self.acl.val();
         w.release_set.next = self.release_set.val();
         // the filters (DRCC contract §11.1) are the system lock step's: disabled here
@@ -111,6 +116,8 @@ struct Run {
     seed: u64,
     clocks: usize,
     dmr: bool,
+    /// `CTRL.first_copy` (DMR contract §8.1).
+    first_copy: bool,
     /// `DEDUP_CFG.window`, bit times.
     window: u16,
     /// Clocks per bit `tick`.
@@ -141,6 +148,8 @@ struct Coverage {
     release_overruns: u64,
     hist_recorded_pcl: u64,
     resets: u64,
+    /// Entries that expired unmatched and counted as an omission.
+    omissions: u64,
 }
 
 /// Arrivals per clock and line, at least `GAP` clocks apart on a line.
@@ -258,6 +267,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
             reset_mode,
             dedup_on,
             dmr: run.dmr,
+            first_copy: run.first_copy,
             acl,
             release_set,
             window: run.window,
@@ -272,6 +282,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         uut.reset_mode.next = reset_mode;
         uut.dedup_on.next = dedup_on;
         uut.dmr.next = run.dmr;
+        uut.first_copy.next = run.first_copy;
         uut.acl.next = acl != 0;
         uut.release_set.next = release_set;
         uut.window.next = (run.window as u64).into();
@@ -340,6 +351,8 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         );
         assert_eq!(w.released.val().to_u8(), m.released, "released, {}", ctx());
         assert_eq!(w.expired.val().to_u8(), m.expired, "expired, {}", ctx());
+        let omissions = [w.omissions_a.val().to_u16(), w.omissions_b.val().to_u16()];
+        assert_eq!(omissions, m.omissions, "omissions, {}", ctx());
         let f = &uut.fifo;
         assert_eq!(f.head.q.val().to_u8(), m.head, "head, {}", ctx());
         assert_eq!(f.count.val().to_u8(), m.count, "count, {}", ctx());
@@ -363,6 +376,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
             cov.duplicates += (m.duplicates != pre.duplicates) as u64;
             cov.overruns += ev.overrun as u64;
             cov.pcl_frames += (m.pcl_frames != pre.pcl_frames) as u64;
+            cov.omissions += (m.omissions != pre.omissions) as u64;
             cov.acl_switches += release_set as u64;
             // an undelivered, unmatched entry left hv in a scan (§8 `expired`)
             let expired_now = run.dmr && pre.hv & !m.hv & !pre.hu & !pre.hd != 0;
@@ -424,6 +438,7 @@ fn dmr_run(seed: u64) -> Run {
         seed,
         clocks: 60_000,
         dmr: true,
+        first_copy: false,
         window,
         tick_period,
         max_delay: 600,
@@ -504,4 +519,38 @@ fn dmr_rx_lockstep_redundancy_regression() {
     println!("{cov:#?}");
     assert!(cov.duplicates > 0 && cov.overruns > 0 && cov.frames > 0);
     assert_eq!(cov.pcl_frames + cov.releases + cov.rscans, 0);
+}
+
+/// DMR first-copy delivery (§8.1): the first copy from either line is
+/// delivered and the second dropped, as in redundancy mode, while the PCL's
+/// frames are still counted; nothing waits, so no release scan ever runs, and
+/// entries that expire unmatched count as omissions. With `window = 0` the ACL
+/// rule stays.
+#[test]
+fn dmr_rx_lockstep_first_copy() {
+    let mut cov = Coverage::default();
+    for seed in 31..=34 {
+        let run = Run {
+            first_copy: true,
+            ..dmr_run(seed)
+        };
+        run_lockstep(&run, &mut cov);
+    }
+    println!("{cov:#?}");
+    assert!(cov.duplicates > 0 && cov.pcl_frames > 0 && cov.acl_switches > 0);
+    assert!(cov.omissions > 0 && cov.overruns > 0);
+    assert_eq!(
+        cov.rscans + cov.releases + cov.expired_scan + cov.expired_rscan + cov.hist_recorded_pcl,
+        0,
+        "nothing waits"
+    );
+    let mut cov = Coverage::default();
+    let run = Run {
+        first_copy: true,
+        window: 0,
+        ..dmr_run(35)
+    };
+    run_lockstep(&run, &mut cov);
+    assert!(cov.pcl_frames > 0 && cov.frames > 0);
+    assert_eq!(cov.duplicates + cov.rscans, 0, "no history: the ACL rule");
 }

@@ -28,6 +28,7 @@ pub struct DmrArgs<'a> {
     pub vcd: Option<&'a Path>,
     pub recovery_ms: Option<u16>,
     pub limit: Option<u8>,
+    pub first_copy: bool,
 }
 
 /// What `drcc dmr` was asked to run.
@@ -74,6 +75,16 @@ pub fn parse(a: &DmrArgs) -> Result<(Job, PlanConfig, EngineKind, Option<EngineK
                 "--limit {n}: MB_CFG.limit is 1 .. 127 (0 is refused, DMR contract §2.2; the field has 7 bits); give 1 .. 127 (the plan's default is 3)"
             )))
         }
+    };
+    let plan = match (a.first_copy, a.what) {
+        (false, _) => plan,
+        (true, "table") => {
+            return Err(error(
+                "--first-copy chooses the rule of one row: the table has the seed's ACL rule                  and first-copy delivery side by side; leave it out, or give a row (F1 .. F10,                  baseline)"
+                    .to_string(),
+            ))
+        }
+        (true, _) => plan.first_copy(),
     };
     if a.startup && a.runtime {
         return Err(error(
@@ -135,13 +146,18 @@ pub fn run(a: &DmrArgs) -> CliResult {
     eprintln!(
         "traffic: 125 kbit/s (1 MHz clock, 8 clocks per bit), offered load {:.2} % from exact \
          frame lengths ({} .. {} bit times with stuff bits and intermission), recovery delay \
-         {} ms, deviation limit {}, run {} ms",
+         {} ms, deviation limit {}, run {} ms, reception: {}",
         load.load * 100.0,
         load.min_bits,
         load.max_bits,
         plan.recovery_ms,
         plan.limit,
-        plan.run_ms
+        plan.run_ms,
+        match (job, plan.first_copy) {
+            (Job::Table { .. }, _) => "the ACL rule and first copy (CTRL.first_copy), each row",
+            (_, true) => "first copy (CTRL.first_copy, DMR contract §8.1)",
+            (_, false) => "the seed's ACL rule",
+        }
     );
     for (d, (frames, bits, period)) in load.devices.iter().enumerate() {
         eprintln!(
@@ -153,8 +169,13 @@ pub fn run(a: &DmrArgs) -> CliResult {
         Job::Table { markdown } => {
             let table = dmr_table(&plan, kind, other, |r| {
                 eprintln!(
-                    "  {:<12} {:.1} s ({} clocks)",
+                    "  {:<12} {:<10} {:.1} s ({} clocks)",
                     r.row.name(),
+                    if r.first_copy {
+                        "first copy"
+                    } else {
+                        "ACL rule"
+                    },
                     r.wall.as_secs_f64(),
                     r.cycles
                 )
@@ -387,6 +408,18 @@ mod tests {
             ..args("F1")
         };
         assert!(err(&engine).contains("the engines are"));
+        // the table always has both rules; one row takes either
+        let fc_table = DmrArgs {
+            first_copy: true,
+            ..args("table")
+        };
+        assert!(err(&fc_table).contains("side by side"));
+        let fc_row = DmrArgs {
+            first_copy: true,
+            ..args("F1")
+        };
+        assert!(parse(&fc_row).unwrap().1.first_copy);
+        assert!(!parse(&args("F1")).unwrap().1.first_copy);
     }
 
     #[test]

@@ -18,6 +18,10 @@
 //! - rows that reach the rest of the DMR function: F1 at run time (a receive fault
 //!   against the ACL, the ACL switch and the release of waiting frames), F9 at run
 //!   time (every device loses the DCL at once; CS attempts fail; it returns).
+//! - first-copy delivery (`CTRL.first_copy`, DMR contract §8.1) on the same rows:
+//!   Table 3's cells as with the ACL rule, nothing lost or duplicated, and no
+//!   message later than one frame time against the fault-free run (three of its
+//!   rows in lock step here, the other 18 in the soak).
 //!
 //! Without Verilator (outside CI) the rows run on the model alone, and say so.
 //!
@@ -33,7 +37,10 @@ use drcc_cosim::dual::host::{btr, HostConfig, Policy};
 use drcc_cosim::dual::{DualBusSystem, Line};
 use drcc_cosim::Frame;
 use drcc_hdl::host::registers::DmrState;
-use drcc_testbench::dmr::{run_row, Marker, Onset, PlanConfig, Row, RowReport, DEVICES};
+use drcc_testbench::dmr::load::{schedule, summary};
+use drcc_testbench::dmr::{
+    run_row, Marker, Onset, PlanConfig, Row, RowReport, CLOCKS_PER_BIT, DEVICES,
+};
 use drcc_testbench::dual::drcc_engine;
 use drcc_testbench::engines::{available, verilator_required};
 use drcc_testbench::EngineKind;
@@ -72,29 +79,67 @@ fn in_lock_step_here(row: Row) -> bool {
     )
 }
 
-/// Each row runs once per test binary, shared by the tests that look at it: a
-/// test asking for a row another test is running waits for it instead of
-/// running it too.
-fn report(row: Row) -> RowReport {
+/// The first-copy rows (DMR contract §8.1) `.ci/run` runs in lock step: the
+/// baseline (both lines deliver, the first copy wins), F1 at run time (a device
+/// cut from the ACL: its frames come only on the PCL, delivered at once, and the
+/// ACL still switches) and F9 at run time (the whole ACL lost at once). The
+/// others run on the model here, in lock step in the soak.
+fn first_copy_in_lock_step_here(row: Row) -> bool {
+    use Marker::*;
+    matches!(
+        (row.marker, row.onset),
+        (None, _) | (Some(F1 | F9), Onset::Runtime)
+    )
+}
+
+/// Each row runs once per test binary and rule (`first_copy`), shared by the
+/// tests that look at it: a test asking for a row another test is running waits
+/// for it instead of running it too.
+fn report_with(row: Row, first_copy: bool) -> RowReport {
     type Cell = Arc<OnceLock<RowReport>>;
-    static CACHE: OnceLock<Mutex<HashMap<Row, Cell>>> = OnceLock::new();
+    static CACHE: OnceLock<Mutex<HashMap<(Row, bool), Cell>>> = OnceLock::new();
     let cell = CACHE
         .get_or_init(|| Mutex::new(HashMap::new()))
         .lock()
         .unwrap()
-        .entry(row)
+        .entry((row, first_copy))
         .or_default()
         .clone();
     cell.get_or_init(|| {
-        let on = if in_lock_step_here(row) {
+        let (plan, lock_step) = if first_copy {
+            (
+                PlanConfig::standard().first_copy(),
+                first_copy_in_lock_step_here(row),
+            )
+        } else {
+            (PlanConfig::standard(), in_lock_step_here(row))
+        };
+        let on = if lock_step {
             engine()
         } else {
             EngineKind::Model
         };
-        run_row(&PlanConfig::standard(), row, on, None)
-            .unwrap_or_else(|e| panic!("{}: {e}", row.name()))
+        run_row(&plan, row, on, None).unwrap_or_else(|e| panic!("{}: {e}", row.name()))
     })
     .clone()
+}
+
+/// A row with the seed's ACL rule.
+fn report(row: Row) -> RowReport {
+    report_with(row, false)
+}
+
+/// Runs `rows` of one rule on two threads (the rows are independent; the other
+/// tests of this binary take theirs from the cache).
+fn run_all(rows: &[Row], first_copy: bool) {
+    std::thread::scope(|s| {
+        for half in rows.chunks(rows.len().div_ceil(2)) {
+            s.spawn(move || {
+                half.iter()
+                    .for_each(|&row| drop(report_with(row, first_copy)))
+            });
+        }
+    });
 }
 
 fn startup(m: Marker) -> Row {
@@ -143,14 +188,8 @@ fn table_3_rcl_startup_failures_cell_for_cell() {
 
 #[test]
 fn no_single_fault_loses_or_duplicates_a_frame_or_relapses() {
-    // the rows are independent: run them on two threads (the other tests of this
-    // binary take theirs from the cache)
     let rows = Row::all();
-    std::thread::scope(|s| {
-        for half in rows.chunks(rows.len().div_ceil(2)) {
-            s.spawn(move || half.iter().for_each(|&row| drop(report(row))));
-        }
-    });
+    run_all(&rows, false);
     let bad: Vec<String> = rows
         .into_iter()
         .flat_map(|row| problems(&report(row)))
@@ -160,6 +199,48 @@ fn no_single_fault_loses_or_duplicates_a_frame_or_relapses() {
         "(receiver, sender, seq):\n{}",
         bad.join("\n")
     );
+}
+
+/// First-copy delivery (DMR contract §8.1) on the same 21 rows: every device's
+/// DMR state and ACL at the end of the fault window are those of the ACL rule
+/// (the seed's Table 3 unchanged: the diagnosis does not depend on the delivery
+/// rule), nothing is lost or duplicated, every device is back to "redundancy
+/// active" without a relapse, and no message comes later than one frame time
+/// (the plan's longest frame, stuff bits and intermission included) after the
+/// fault-free first-copy run delivered it.
+#[test]
+fn first_copy_keeps_table_3_and_loses_no_time() {
+    let rows = Row::all();
+    run_all(&rows, true);
+    run_all(&rows, false);
+    let plan = PlanConfig::standard().first_copy();
+    let frame_time = summary(&plan, &schedule(&plan)).max_bits * CLOCKS_PER_BIT;
+    let base = report_with(Row::BASELINE, true);
+    let mut bad = Vec::new();
+    for row in rows {
+        let (acl, fc) = (report(row), report_with(row, true));
+        let name = row.name();
+        for (d, (a, f)) in acl.during.iter().zip(&fc.during).enumerate() {
+            if a.cell() != f.cell() {
+                bad.push(format!(
+                    "{name} {}: ACL rule {}, first copy {}",
+                    DEVICES[d],
+                    a.cell(),
+                    f.cell()
+                ));
+            }
+        }
+        bad.extend(problems(&fc));
+        match fc.extra_latency(&base) {
+            Some(late) if late > frame_time as i64 => bad.push(format!(
+                "{name}: a message {late} clocks later than without the fault (one frame \
+                 time: {frame_time})"
+            )),
+            Some(_) => {}
+            None => bad.push(format!("{name}: no message delivered in both runs")),
+        }
+    }
+    assert!(bad.is_empty(), "first copy:\n{}", bad.join("\n"));
 }
 
 /// What is wrong with a row: a frame lost, duplicated, foreign or never pushed,
@@ -191,22 +272,34 @@ fn problems(r: &RowReport) -> Vec<String> {
 }
 
 /// The soak (scripts/soak.sh): the rows the suite runs on the model alone, in
-/// lock step with the Verilated RTL, with the same checks.
+/// lock step with the Verilated RTL, with the same checks (each rule's).
 #[test]
 #[ignore = "soak: scripts/soak.sh runs it"]
 fn soak_every_other_row_in_lock_step_with_the_rtl() {
-    let rows: Vec<Row> = Row::all()
+    let rows: Vec<(Row, bool)> = Row::all()
         .into_iter()
         .filter(|&r| !in_lock_step_here(r))
+        .map(|r| (r, false))
+        .chain(
+            Row::all()
+                .into_iter()
+                .filter(|&r| !first_copy_in_lock_step_here(r))
+                .map(|r| (r, true)),
+        )
         .collect();
-    assert_eq!(rows.len(), 10);
+    assert_eq!(rows.len(), 10 + 18);
     let reports = std::sync::Mutex::new(Vec::new());
     std::thread::scope(|s| {
         for half in rows.chunks(rows.len().div_ceil(2)) {
             let reports = &reports;
             s.spawn(move || {
-                for &row in half {
-                    let r = run_row(&PlanConfig::standard(), row, engine(), None)
+                for &(row, first_copy) in half {
+                    let plan = if first_copy {
+                        PlanConfig::standard().first_copy()
+                    } else {
+                        PlanConfig::standard()
+                    };
+                    let r = run_row(&plan, row, engine(), None)
                         .unwrap_or_else(|e| panic!("{}: {e}", row.name()));
                     reports.lock().unwrap().push(r);
                 }

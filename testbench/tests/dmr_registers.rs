@@ -223,6 +223,10 @@ fn dmr_configuration_is_refused_or_stored_as_the_contract_says() {
     assert_eq!(b.read(map::CTRL) & put("CTRL", "dmr", 1), 0);
     assert!(!b.refused(map::CTRL, ctrl(true, &[("dmr", 1)])));
     assert_eq!(b.read(map::CTRL), ctrl(true, &[("dmr", 1)]));
+    // §2: first-copy delivery is a cfg field of its own
+    let first_copy = [("dmr", 1), ("first_copy", 1)];
+    assert!(!b.refused(map::CTRL, ctrl(true, &first_copy)));
+    assert_eq!(b.read(map::CTRL), ctrl(true, &first_copy));
     assert!(!b.refused(map::CTRL, ctrl(true, &[])));
 
     // outside reset mode (normal mode): no mode change, no DMR configuration;
@@ -231,6 +235,10 @@ fn dmr_configuration_is_refused_or_stored_as_the_contract_says() {
     assert!(
         b.refused(map::CTRL, ctrl(false, &[("dmr", 1)])),
         "mode change"
+    );
+    assert!(
+        b.refused(map::CTRL, ctrl(false, &[("first_copy", 1)])),
+        "a cfg field outside reset mode"
     );
     assert_eq!(b.read(map::CTRL), ctrl(false, &[]));
     assert!(b.refused(map::DMR_CFG, 60));

@@ -58,6 +58,9 @@ pub struct DmrConfig {
     pub cs_id_rcl: u16,
     /// Mailbox `i` (enabled iff `Some`).
     pub mailboxes: [Option<DmrMailbox>; MB_COUNT],
+    /// `CTRL.first_copy` (DMR contract §8.1): the first copy of a frame from
+    /// either line reaches the host, instead of the ACL's copies only.
+    pub first_copy: bool,
 }
 
 impl Default for DmrConfig {
@@ -71,6 +74,7 @@ impl Default for DmrConfig {
             cs_id_dcl: reset("DMR_CS", "cs_id_dcl") as u16,
             cs_id_rcl: reset("DMR_CS", "cs_id_rcl") as u16,
             mailboxes: [None; MB_COUNT],
+            first_copy: reset("CTRL", "first_copy") != 0,
         }
     }
 }

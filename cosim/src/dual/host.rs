@@ -197,6 +197,11 @@ impl HostConfig {
             | put("CTRL", "mode_b", self.mode_b as u32)
             | put("CTRL", "dmr", self.dmr.is_some() as u32)
             | put("CTRL", "busoff_manual", self.busoff_manual as u32)
+            | put(
+                "CTRL",
+                "first_copy",
+                self.dmr.is_some_and(|d| d.first_copy) as u32,
+            )
     }
 
     /// DMR mode (redundancy off) with `dmr`, the given bit timing and duplicate

@@ -406,8 +406,11 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.rxw.clear.next = self.clear.val();
         self.rxw.dedup_on.next =
             (self.regs.redundancy.val() | self.regs.dmr.val()) & self.regs.window.val().any();
-        // DMR: the ACL rule (DMR contract §8); CS frames never reach the RX path
-        self.rxw.dmr.next = self.regs.dmr.val();
+        // DMR: the ACL rule (DMR contract §8), or first copy with a history
+        // (§8.1); CS frames never reach the RX path
+        self.rxw.acl_rule.next =
+            self.regs.dmr.val() & !(self.regs.first_copy.val() & self.regs.window.val().any());
+        self.rxw.count_pcl.next = self.regs.dmr.val();
         self.rxw.acl.next = self.dmr_ctl.acl.val();
         self.rxw.release_set.next = self.dmr_ctl.acl_switch.val();
         self.rxw.window.next = self.regs.window.val();

@@ -47,6 +47,8 @@ pub struct CtrlCheck {
     pub dmr: Signal<In, Bit>,
     /// Stored `busoff_manual`.
     pub busoff_manual: Signal<In, Bit>,
+    /// Stored `first_copy`.
+    pub first_copy: Signal<In, Bit>,
     // ---- verdict ----
     /// The `k` to store: the written one, 0 read as 1.
     pub k_in: Signal<Out, Bits<4>>,
@@ -68,6 +70,7 @@ pub struct CtrlCheck {
     p_single_shot: Constant<Bits<5>>,
     p_dmr: Constant<Bits<5>>,
     p_busoff_manual: Constant<Bits<5>>,
+    p_first_copy: Constant<Bits<5>>,
     mode_listen: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     one4: Constant<Bits<4>>,
@@ -92,6 +95,7 @@ impl Default for CtrlCheck {
             single_shot: Default::default(),
             dmr: Default::default(),
             busoff_manual: Default::default(),
+            first_copy: Default::default(),
             k_in: Default::default(),
             refused: Default::default(),
             illegal: Default::default(),
@@ -107,6 +111,7 @@ impl Default for CtrlCheck {
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
             p_dmr: lsb(&MAP, "CTRL", "dmr", 1),
             p_busoff_manual: lsb(&MAP, "CTRL", "busoff_manual", 1),
+            p_first_copy: lsb(&MAP, "CTRL", "first_copy", 1),
             mode_listen: Constant::new((ChannelMode::ListenOnly.code() as u64).into()),
             zero4: Constant::new(0.into()),
             one4: Constant::new(1.into()),
@@ -149,7 +154,8 @@ impl Logic for CtrlCheck {
             | (self.wdat.val().get_bit(self.p_single_shot.val().index()) != self.single_shot.val())
             | (self.wdat.val().get_bit(self.p_dmr.val().index()) != self.dmr.val())
             | (self.wdat.val().get_bit(self.p_busoff_manual.val().index())
-                != self.busoff_manual.val());
+                != self.busoff_manual.val())
+            | (self.wdat.val().get_bit(self.p_first_copy.val().index()) != self.first_copy.val());
         if self.reset_mode.val() {
             self.illegal.next = self.refused.val();
         } else {

@@ -1,6 +1,6 @@
 //! The DRCC's `CTRL` register (DRCC contract §3, §9): the storage of reset
 //! mode, the operating mode ([`Mode`], and `dmr`), the switch policy, `dual_tx`,
-//! `star`, `k`, the channel modes ([`ChannelMode`]), `single_shot` and `busoff_manual`. The refusals of §9 are
+//! `star`, `k`, the channel modes ([`ChannelMode`]), `single_shot`, `busoff_manual` and `first_copy`. The refusals of §9 are
 //! decided by [`CtrlCheck`] (combinational, beside it in the register block, so
 //! that no always block both takes the write and flags it):
 //!
@@ -77,6 +77,8 @@ pub struct CtrlReg {
     pub dmr: Signal<Out, Bit>,
     /// A bus-off channel waits for the host's `recover` (contract §11.6).
     pub busoff_manual: Signal<Out, Bit>,
+    /// DMR first-copy delivery (DMR contract §8.1); 0 without the DMR function.
+    pub first_copy: Signal<Out, Bit>,
     // ---- state ----
     reset_mode_q: DFF<Bit>,
     reset_mode_dq: DFF<Bit>,
@@ -90,6 +92,7 @@ pub struct CtrlReg {
     single_shot_q: DFF<Bit>,
     dmr_q: DFF<Bit>,
     busoff_manual_q: DFF<Bit>,
+    first_copy_q: DFF<Bit>,
     /// The stored word, and the word in force (stored or the view's).
     stored: Signal<Local, Bits<32>>,
     cur: Signal<Local, Bits<32>>,
@@ -105,6 +108,7 @@ pub struct CtrlReg {
     p_single_shot: Constant<Bits<5>>,
     p_dmr: Constant<Bits<5>>,
     p_busoff_manual: Constant<Bits<5>>,
+    p_first_copy: Constant<Bits<5>>,
     // ---- codes and reset values ----
     redundancy_reset: Constant<Bit>,
     policy_reset: Constant<Bits<2>>,
@@ -125,7 +129,8 @@ impl Default for CtrlReg {
                 + reset("star")
                 + reset("single_shot")
                 + reset("dmr")
-                + reset("busoff_manual"),
+                + reset("busoff_manual")
+                + reset("first_copy"),
             0
         );
         assert_eq!(reset("mode_a"), reset("mode_b"));
@@ -153,6 +158,7 @@ impl Default for CtrlReg {
             single_shot: Default::default(),
             dmr: Default::default(),
             busoff_manual: Default::default(),
+            first_copy: Default::default(),
             reset_mode_q: Default::default(),
             reset_mode_dq: Default::default(),
             redundancy_q: Default::default(),
@@ -165,6 +171,7 @@ impl Default for CtrlReg {
             single_shot_q: Default::default(),
             dmr_q: Default::default(),
             busoff_manual_q: Default::default(),
+            first_copy_q: Default::default(),
             p_reset_mode: lsb(&MAP, "CTRL", "reset_mode", 1),
             p_redundancy: lsb(&MAP, "CTRL", "redundancy", 1),
             p_policy: lsb(&MAP, "CTRL", "policy", 2),
@@ -176,6 +183,7 @@ impl Default for CtrlReg {
             p_single_shot: lsb(&MAP, "CTRL", "single_shot", 1),
             p_dmr: lsb(&MAP, "CTRL", "dmr", 1),
             p_busoff_manual: lsb(&MAP, "CTRL", "busoff_manual", 1),
+            p_first_copy: lsb(&MAP, "CTRL", "first_copy", 1),
             redundancy_reset: Constant::new(reset("redundancy") == Mode::Redundancy.code() as u64),
             policy_reset: Constant::new(reset("policy").into()),
             k_reset: Constant::new(reset("k").into()),
@@ -203,7 +211,8 @@ impl Logic for CtrlReg {
             mode_b_q,
             single_shot_q,
             dmr_q,
-            busoff_manual_q
+            busoff_manual_q,
+            first_copy_q
         );
         self.stored.next = (bit_cast::<32, 1>(self.reset_mode_q.q.val().into())
             << self.p_reset_mode.val())
@@ -217,7 +226,8 @@ impl Logic for CtrlReg {
             | (bit_cast::<32, 1>(self.single_shot_q.q.val().into()) << self.p_single_shot.val())
             | (bit_cast::<32, 1>(self.dmr_q.q.val().into()) << self.p_dmr.val())
             | (bit_cast::<32, 1>(self.busoff_manual_q.q.val().into())
-                << self.p_busoff_manual.val());
+                << self.p_busoff_manual.val())
+            | (bit_cast::<32, 1>(self.first_copy_q.q.val().into()) << self.p_first_copy.val());
         if self.view_on.val() {
             self.cur.next = self.view_word.val();
         } else {
@@ -248,6 +258,9 @@ impl Logic for CtrlReg {
                         & self.dmr_present.val().any();
                     self.busoff_manual_q.d.next =
                         self.wdat.val().get_bit(self.p_busoff_manual.val().index());
+                    self.first_copy_q.d.next =
+                        self.wdat.val().get_bit(self.p_first_copy.val().index())
+                            & self.dmr_present.val().any();
                 }
             } else {
                 // outside reset mode only reset_mode is taken
@@ -268,6 +281,7 @@ impl Logic for CtrlReg {
             self.single_shot_q.d.next = false;
             self.dmr_q.d.next = false;
             self.busoff_manual_q.d.next = false;
+            self.first_copy_q.d.next = false;
         }
 
         self.word.next = self.cur.val();
@@ -283,5 +297,6 @@ impl Logic for CtrlReg {
         self.single_shot.next = self.cur.val().get_bit(self.p_single_shot.val().index());
         self.dmr.next = self.cur.val().get_bit(self.p_dmr.val().index());
         self.busoff_manual.next = self.cur.val().get_bit(self.p_busoff_manual.val().index());
+        self.first_copy.next = self.cur.val().get_bit(self.p_first_copy.val().index());
     }
 }

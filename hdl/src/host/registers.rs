@@ -77,7 +77,7 @@ pub const ID_VALUE: u32 = 0x4452_4343;
 /// changes its meaning.
 pub const VERSION_MAJOR: u32 = 1;
 /// `VERSION.minor`: changes when a register or field is added.
-pub const VERSION_MINOR: u32 = 3;
+pub const VERSION_MINOR: u32 = 4;
 
 /// The register map, in index order.
 pub const REGISTERS: &[Register] = &[
@@ -105,6 +105,7 @@ pub const REGISTERS: &[Register] = &[
             cfg("single_shot", 16, 1, 0, "no automatic retransmission (normal mode only)"),
             cfg("dmr", 17, 1, 0, "CiA 701 DMR mode (DMR contract; refused with redundancy or a listen-only channel)"),
             cfg("busoff_manual", 18, 1, 0, "a bus-off channel starts its recovery only after `TX_CMD.recover_x` (contract §11.6)"),
+            cfg("first_copy", 19, 1, 0, "DMR mode: deliver the first copy of a frame from either line instead of the ACL's only (DMR contract §8.1)"),
         ],
     },
     Register {

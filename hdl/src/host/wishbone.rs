@@ -144,6 +144,8 @@ pub struct WbRegs {
     pub dmr: Signal<Out, Bit>,
     /// `CTRL.busoff_manual`: bus-off recovery at the host's request (§11.6).
     pub busoff_manual: Signal<Out, Bit>,
+    /// `CTRL.first_copy`: DMR first-copy delivery (DMR contract §8.1).
+    pub first_copy: Signal<Out, Bit>,
     /// The prescaler BRP, `{BTR.brp_ext, BTR.brp}` (0..1023).
     pub brp: Signal<Out, Bits<BRP_BITS>>,
     /// `BTR.tseg1`.
@@ -362,6 +364,7 @@ impl Default for WbRegs {
             single_shot: Default::default(),
             dmr: Default::default(),
             busoff_manual: Default::default(),
+            first_copy: Default::default(),
             ext_hit: Default::default(),
             ext_word: Default::default(),
             ext_writable: Default::default(),

@@ -126,6 +126,7 @@ impl Logic for WbRegs {
         self.ctrl_check.single_shot.next = self.ctrl.single_shot.val();
         self.ctrl_check.dmr.next = self.ctrl.dmr.val();
         self.ctrl_check.busoff_manual.next = self.ctrl.busoff_manual.val();
+        self.ctrl_check.first_copy.next = self.ctrl.first_copy.val();
         self.illegal.next = false;
         self.w1c.next = self.zero17.val();
         self.bus.int_enable_we.next = false;
@@ -298,6 +299,7 @@ impl Logic for WbRegs {
         self.single_shot.next = self.ctrl.single_shot.val();
         self.dmr.next = self.ctrl.dmr.val();
         self.busoff_manual.next = self.ctrl.busoff_manual.val();
+        self.first_copy.next = self.ctrl.first_copy.val();
         self.wr_o.next = self.wr.val() & self.full.val();
         self.brp.next =
             bit_cast::<BRP_BITS, 6>(self.btr_word.val().get_bits::<6>(self.b_brp.val().index()))

@@ -130,8 +130,11 @@ pub struct RxWriter {
     /// `OMISSIONS[31:16]`: frames only channel A delivered (omissions of B).
     pub omissions_b: Signal<Out, Bits<16>>,
     // ---- DMR mode (DMR contract §8) ----
-    /// `CTRL.dmr`: the ACL rule instead of first-copy-wins.
-    pub dmr: Signal<In, Bit>,
+    /// DMR mode with the ACL rule instead of first-copy-wins: `CTRL.dmr`, unless
+    /// `CTRL.first_copy` with a history (DMR contract §8.1).
+    pub acl_rule: Signal<In, Bit>,
+    /// `CTRL.dmr`: frames of the passive line count in `pcl_frames` (§8, §8.1).
+    pub count_pcl: Signal<In, Bit>,
     /// The ACL register before the edge (0 DCL = channel A, 1 RCL = channel B).
     pub acl: Signal<In, Bit>,
     /// An ACL switch at this edge: the waiting frames of the new ACL are released.

@@ -104,7 +104,7 @@ impl Logic for RxWriter {
         self.pcl.next = self.sel.q.val() != self.acl.val();
         // write: to the FIFO unless a PCL frame (it waits); to the history unless
         // it was the ACL copy of a waiting frame (hit)
-        self.w_fifo.next = self.sel_s.q.val() | !(self.dmr.val() & self.w_pcl.q.val());
+        self.w_fifo.next = self.sel_s.q.val() | !(self.acl_rule.val() & self.w_pcl.q.val());
         self.w_hist.next = self.dedup_on.val() & !self.hit.q.val() & !self.sel_s.q.val();
 
         if self.w_state.q.val() == self.s_fetch.val() {
@@ -186,14 +186,14 @@ impl Logic for RxWriter {
         self.stats.pcl_inc.next = false;
         self.stats.released_inc.next = false;
         // §8: an undelivered, unmatched entry that expires in either scan
-        self.stats.expired_inc.next = self.dmr.val()
+        self.stats.expired_inc.next = self.acl_rule.val()
             & self.judging.val()
             & self.e_hv.val()
             & self.e_expired.val()
             & !self.e_hu.val()
             & !self.e_hd.val();
         // §7 omissions: an entry only its channel delivered expires in scan
-        self.omit.next = !self.dmr.val()
+        self.omit.next = !self.acl_rule.val()
             & self.judging.val()
             & (self.w_state.q.val() == self.s_scan.val())
             & self.e_hv.val()
@@ -265,7 +265,7 @@ impl Logic for RxWriter {
                 self.free_found.d.next = false;
                 if self.dedup_on.val() {
                     self.w_state.d.next = self.s_scan.val();
-                } else if self.dmr.val() {
+                } else if self.acl_rule.val() {
                     self.w_state.d.next = self.s_decide.val();
                 } else {
                     self.w_state.d.next = self.s_write.val();
@@ -277,7 +277,7 @@ impl Logic for RxWriter {
                 self.s_frame.d.next = self.s_pend_frame.q.val();
                 self.s_pend.d.next = false;
                 self.w_state.d.next = self.s_write.val();
-            } else if self.dmr.val() & self.release_q.q.val() & self.dedup_on.val() {
+            } else if self.acl_rule.val() & self.release_q.q.val() & self.dedup_on.val() {
                 // §8: a free idle edge looks for the next frame to release
                 self.w_state.d.next = self.s_rscan.val();
                 self.scan_i.d.next = self.zero6.val();
@@ -318,18 +318,18 @@ impl Logic for RxWriter {
                 }
             }
         } else if self.w_state.q.val() == self.s_decide.val() {
-            if self.dmr.val() {
+            if self.acl_rule.val() {
                 self.w_pcl.d.next = self.pcl.val();
-                self.stats.pcl_inc.next = self.pcl.val();
             }
+            self.stats.pcl_inc.next = self.count_pcl.val() & self.pcl.val();
             if self.hit.q.val() {
                 // duplicate: it cancels the history entry and is dropped. DMR:
                 // a PCL copy of a frame still waiting on the ACL leaves the entry
                 // for the release
-                if !self.dmr.val() | !self.pcl.val() | self.hit_hd.q.val() {
+                if !self.acl_rule.val() | !self.pcl.val() | self.hit_hd.q.val() {
                     self.hu.d.next = self.hu.q.val() | self.mask.val();
                 }
-                if self.dmr.val() & !self.hit_hd.q.val() & !self.pcl.val() {
+                if self.acl_rule.val() & !self.hit_hd.q.val() & !self.pcl.val() {
                     // DMR: the PCL copy came first and waited: delivered now
                     self.w_state.d.next = self.s_write.val();
                 } else {

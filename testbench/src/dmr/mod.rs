@@ -28,7 +28,7 @@ pub mod run;
 pub mod setup;
 
 pub use marker::{Marker, Onset, PlanFault, Row, DEVICES};
-pub use report::{dmr_table, row_line, DeviceStatus, RowReport};
+pub use report::{dmr_table, first_copy_cells, row_line, DeviceStatus, RowReport};
 pub use run::{run_row, run_row_traced};
 pub use setup::PlanConfig;
 

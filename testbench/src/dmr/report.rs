@@ -67,6 +67,8 @@ impl DeviceStatus {
 pub struct RowReport {
     pub row: Row,
     pub engine: String,
+    /// The devices delivered the first copy from either line (DMR contract §8.1).
+    pub first_copy: bool,
     pub cycles: u64,
     /// Clocks at which the fault started (0 for a startup failure) and ended.
     pub onset: u64,
@@ -150,18 +152,37 @@ impl RowReport {
     }
 }
 
-/// The table's header.
-pub fn table_header() -> String {
+/// The columns after the devices' cells, for the rule a row ran with.
+const RULE_COLUMNS: &str = " at the end | lost | duplicated | onset -> detection (ms) \
+     | onset -> ACL switch (ms) | removal -> redundancy active (ms) | worst extra latency (ms) |";
+
+/// The first-copy column set (DMR contract §8.1) of the whole table.
+const FIRST_COPY_COLUMNS: &str = " first copy: Table 3 cells | first copy: lost \
+     | first copy: duplicated | first copy: worst extra latency (ms) |";
+
+fn header(first_copy_columns: bool) -> String {
     let mut h = String::from("| row | fault |");
     for d in DEVICES {
         h.push_str(&format!(" {d} |"));
     }
-    h.push_str(
-        " at the end | lost | duplicated | onset -> detection (ms) | onset -> ACL switch (ms) \
-         | removal -> redundancy active (ms) | worst extra latency (ms) |\n",
-    );
-    h.push_str("|---|---|---|---|---|---|---|---:|---:|---:|---:|---:|---:|\n");
-    h
+    h.push_str(RULE_COLUMNS);
+    let mut align = String::from("|---|---|---|---|---|---|---|---:|---:|---:|---:|---:|---:|");
+    if first_copy_columns {
+        h.push_str(FIRST_COPY_COLUMNS);
+        align.push_str("---|---:|---:|---:|");
+    }
+    format!("{h}\n{align}\n")
+}
+
+/// The header of one row's table (the rule it ran with).
+pub fn table_header() -> String {
+    header(false)
+}
+
+/// The header of the whole table: the seed's ACL rule, then the first-copy
+/// column set (DMR contract §8.1).
+pub fn table_header_both() -> String {
+    header(true)
 }
 
 fn ms_cell(clocks: Option<u64>) -> String {
@@ -206,22 +227,60 @@ pub fn row_line(r: &RowReport, base: Option<&RowReport>) -> String {
     line
 }
 
-/// Runs every row ([`Row::all`]) of `c` and renders the table; `each` sees every
-/// report as it is done (progress, run times).
+/// The first-copy column set of a row: `fc` is the row run with first-copy
+/// delivery, `acl` the same row with the seed's ACL rule, `fc_base` the
+/// first-copy baseline. The cells are "same" when every device's DMR state and
+/// ACL at the end of the fault window are those of the ACL rule (the diagnosis
+/// does not depend on the delivery rule), else the first-copy cells.
+pub fn first_copy_cells(acl: &RowReport, fc: &RowReport, fc_base: &RowReport) -> String {
+    let cells = if fc
+        .during
+        .iter()
+        .map(DeviceStatus::cell)
+        .eq(acl.during.iter().map(DeviceStatus::cell))
+    {
+        "same".to_string()
+    } else {
+        RowReport::summary(&fc.during)
+    };
+    let latency = match fc.extra_latency(fc_base) {
+        Some(c) => format!("{:.1}", c.max(0) as f64 / super::CLOCKS_PER_MS as f64),
+        None => "-".to_string(),
+    };
+    format!(
+        " {cells} | {} | {} | {latency} |",
+        fc.lost.len(),
+        fc.duplicated.len() + fc.foreign
+    )
+}
+
+/// Runs every row ([`Row::all`]) of `c`, each with the seed's ACL rule and with
+/// first-copy delivery, and renders the table; `each` sees every report as it is
+/// done (progress, run times).
 pub fn dmr_table(
     c: &PlanConfig,
     kind: EngineKind,
     cosim: Option<EngineKind>,
     mut each: impl FnMut(&RowReport),
 ) -> Result<String, String> {
-    let mut t = table_header();
-    let mut base: Option<RowReport> = None;
+    let acl_plan = PlanConfig {
+        first_copy: false,
+        ..*c
+    };
+    let fc_plan = c.first_copy();
+    let mut t = table_header_both();
+    let mut bases: Option<(RowReport, RowReport)> = None;
     for row in Row::all() {
-        let r = run_row(c, row, kind, cosim)?;
+        let r = run_row(&acl_plan, row, kind, cosim)?;
         each(&r);
-        t.push_str(&row_line(&r, base.as_ref().or(Some(&r))));
+        let f = run_row(&fc_plan, row, kind, cosim)?;
+        each(&f);
+        let (base, fc_base) = bases.as_ref().map_or((&r, &f), |(b, fb)| (b, fb));
+        t.push_str(row_line(&r, Some(base)).trim_end());
+        t.push_str(&first_copy_cells(&r, &f, fc_base));
+        t.push('\n');
         if row == Row::BASELINE {
-            base = Some(r);
+            bases = Some((r, f));
         }
     }
     Ok(t)

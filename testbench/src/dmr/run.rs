@@ -163,6 +163,7 @@ pub fn run_row_traced(
     let mut r = RowReport {
         row,
         engine: kind.name().to_string(),
+        first_copy: c.first_copy,
         onset,
         fault_end,
         ..RowReport::default()

@@ -77,6 +77,9 @@ pub struct PlanConfig {
     pub run_ms: u64,
     /// A monitor node on both lines (module docs).
     pub monitor: bool,
+    /// `CTRL.first_copy` on every device (DMR contract §8.1): the first copy of a
+    /// frame from either line is delivered; false is the seed's ACL rule.
+    pub first_copy: bool,
 }
 
 impl PlanConfig {
@@ -107,6 +110,15 @@ impl PlanConfig {
             traffic_end_ms: run_ms - 100,
             run_ms,
             monitor: true,
+            first_copy: false,
+        }
+    }
+
+    /// The same plan with first-copy delivery (DMR contract §8.1) on every device.
+    pub fn first_copy(self) -> Self {
+        PlanConfig {
+            first_copy: true,
+            ..self
         }
     }
 
@@ -117,6 +129,7 @@ impl PlanConfig {
             cs_period: 0,
             tick_bits: super::BITS_PER_MS as u16,
             recovery_delay: self.recovery_ms,
+            first_copy: self.first_copy,
             ..DmrConfig::default()
         };
         let mailbox = |d: usize, transmit: bool| DmrMailbox {

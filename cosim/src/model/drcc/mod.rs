@@ -439,6 +439,7 @@ impl DrccModel {
                 reset_mode,
                 dedup_on: (redundancy || dmr_mode) && r.window() != 0,
                 dmr: dmr_mode,
+                first_copy: r.first_copy(),
                 acl: acl_q,
                 release_set: dev.acl_switch,
                 window: r.window(),

@@ -96,6 +96,10 @@ impl Regs {
     pub(super) fn star(&self) -> bool {
         self.ctrl & ctrl::STAR != 0
     }
+    /// DMR first-copy delivery (dmr_contract.md §8.1).
+    pub(super) fn first_copy(&self) -> bool {
+        self.ctrl & ctrl::FIRST_COPY != 0
+    }
     /// Manual bus-off recovery (§11.6).
     pub(super) fn busoff_manual(&self) -> bool {
         self.ctrl & ctrl::BUSOFF_MANUAL != 0
@@ -381,6 +385,9 @@ impl DrccModel {
                         // DMR §2: one mode at a time; both lines must transmit.
                         if (red && (any_listen_only || dmr)) || (dmr && any_listen_only) || absent {
                             a.ints |= int::ILLEGAL;
+                        } else if !self.params.dmr {
+                            // DMR §2: `first_copy` is stored only with the DMR function.
+                            n.ctrl = w & !ctrl::FIRST_COPY;
                         } else {
                             n.ctrl = w;
                         }

@@ -4,9 +4,9 @@
 /// `ID` register value: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
 
-/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 3 in [7:0]
-/// (§11.1-§11.5 added registers, §11.6 fields).
-pub const VERSION_VALUE: u32 = 0x0000_0103;
+/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 4 in [7:0]
+/// (§11.1-§11.5 added registers, §11.6 fields, `CTRL.first_copy` of DMR §8.1).
+pub const VERSION_VALUE: u32 = 0x0000_0104;
 
 /// Word indices (`wb_adr_i`, byte offset / 4).
 pub mod idx {
@@ -86,8 +86,10 @@ pub mod ctrl {
     pub const DMR: u32 = 1 << 17;
     /// Manual bus-off recovery (§11.6).
     pub const BUSOFF_MANUAL: u32 = 1 << 18;
+    /// DMR mode: first-copy delivery instead of the ACL rule (dmr_contract.md §8.1).
+    pub const FIRST_COPY: u32 = 1 << 19;
     /// Every defined bit (reserved bits read 0).
-    pub const DEFINED: u32 = 0x7_FF3F;
+    pub const DEFINED: u32 = 0xF_FF3F;
     /// Every cfg field (all defined bits but `reset_mode`).
     pub const CFG: u32 = DEFINED & !RESET_MODE;
     /// Reset value: reset mode, policy error-passive, k = 1.

@@ -49,8 +49,11 @@ pub struct RxInputs {
     pub reset_mode: bool,
     /// `redundancy && window != 0`; in DMR mode `hist_on = window != 0`.
     pub dedup_on: bool,
-    /// DMR mode (dmr_contract.md §8): the ACL rule.
+    /// DMR mode (dmr_contract.md §8): the ACL rule, unless `first_copy`.
     pub dmr: bool,
+    /// `CTRL.first_copy` (dmr_contract.md §8.1): in DMR mode with a history, the
+    /// first copy from either line is delivered (§D.7's rule) instead.
+    pub first_copy: bool,
     /// The ACL register before the edge (0 DCL = A, 1 RCL = B).
     pub acl: u8,
     /// An ACL switch at this edge: `release <= 1`.
@@ -289,11 +292,14 @@ impl RxPath {
                 self.rxf[s] = **f;
             }
         }
-        // Expiry of a history entry; in DMR mode an undelivered, unmatched one
-        // counts in `expired` (§8).
+        // DMR §8.1: with first-copy delivery and a history the writer follows
+        // §D.7; without a history it keeps the ACL rule.
+        let acl_rule = i.dmr && !(i.first_copy && i.dedup_on);
+        // Expiry of a history entry; under the ACL rule an undelivered, unmatched
+        // one counts in `expired` (§8).
         let expire = |s: &mut Self, bit: u32| {
             s.hv &= !bit;
-            if i.dmr && c.hu & bit == 0 && c.hd & bit == 0 {
+            if acl_rule && c.hu & bit == 0 && c.hd & bit == 0 {
                 s.expired = c.expired.saturating_add(1);
             }
         };
@@ -308,7 +314,7 @@ impl RxPath {
                     self.hist_idle = 0;
                     self.w_state = if i.dedup_on {
                         W_SCAN
-                    } else if i.dmr {
+                    } else if acl_rule {
                         W_DECIDE
                     } else {
                         W_WRITE
@@ -328,7 +334,7 @@ impl RxPath {
                     self.w_state = W_WRITE;
                     self.w_fifo = true;
                     self.w_hist = false;
-                } else if i.dmr && c.release && i.dedup_on {
+                } else if acl_rule && c.release && i.dedup_on {
                     self.w_state = W_RSCAN;
                     self.scan_i = 0;
                     self.rel_found = false;
@@ -346,7 +352,7 @@ impl RxPath {
                         self.free_e = e;
                     }
                     if c.hv & bit != 0 && age > i.window {
-                        if !i.dmr && c.hu & bit == 0 {
+                        if !acl_rule && c.hu & bit == 0 {
                             // Only channel ch delivered it: an omission of the other.
                             let miss = 1 - (entry.ch as usize & 1);
                             self.omissions[miss] = c.omissions[miss].saturating_add(1);
@@ -368,7 +374,7 @@ impl RxPath {
                     self.w_state = W_DECIDE;
                 }
             }
-            W_DECIDE if i.dmr => {
+            W_DECIDE if acl_rule => {
                 // §8 the ACL rule.
                 let pcl = c.sel != i.acl;
                 if pcl {
@@ -399,6 +405,10 @@ impl RxPath {
                 }
             }
             W_DECIDE => {
+                // §8.1: the frames of the passive line are still counted.
+                if i.dmr && c.sel != i.acl {
+                    self.pcl_frames = c.pcl_frames.saturating_add(1);
+                }
                 if c.hit {
                     self.hu |= 1 << c.hit_e;
                     self.duplicates = c.duplicates.saturating_add(1);
@@ -469,7 +479,7 @@ impl RxPath {
                     };
                     self.hv |= 1 << p;
                     self.hu &= !(1 << p);
-                    if c.w_pcl && i.dmr {
+                    if c.w_pcl && acl_rule {
                         self.hd &= !(1 << p);
                     } else {
                         self.hd |= 1 << p;

@@ -112,6 +112,7 @@ void drcc_config_default(drcc_config *cfg)
     cfg->mode_b = DRCC_CHAN_NORMAL;
     cfg->single_shot = 0;
     cfg->busoff_manual = 0;
+    cfg->dmr_first_copy = 0;
     cfg->recovery_bits = (uint16_t)FIELD_GET(DRCC_RMB_CFG_RECOVERY_BITS, DRCC_RMB_CFG_RESET);
     cfg->stall_limit = (uint16_t)FIELD_GET(DRCC_RMB_CFG_STALL_LIMIT, DRCC_RMB_CFG_RESET);
     cfg->dedup_window = (uint16_t)FIELD_GET(DRCC_DEDUP_CFG_WINDOW, DRCC_DEDUP_CFG_RESET);
@@ -183,7 +184,8 @@ static uint32_t ctrl_word(const drcc_config *cfg)
            FIELD_PUT(DRCC_CTRL_STAR, cfg->star != 0) | FIELD_PUT(DRCC_CTRL_K, k) |
            FIELD_PUT(DRCC_CTRL_MODE_A, cfg->mode_a) | FIELD_PUT(DRCC_CTRL_MODE_B, cfg->mode_b) |
            FIELD_PUT(DRCC_CTRL_SINGLE_SHOT, cfg->single_shot != 0) |
-           FIELD_PUT(DRCC_CTRL_BUSOFF_MANUAL, cfg->busoff_manual != 0);
+           FIELD_PUT(DRCC_CTRL_BUSOFF_MANUAL, cfg->busoff_manual != 0) |
+           FIELD_PUT(DRCC_CTRL_FIRST_COPY, cfg->mode == DRCC_MODE_DMR && cfg->dmr_first_copy != 0);
 }
 
 /* Writes `value` to a configuration register and checks it was taken. */
@@ -218,6 +220,9 @@ int drcc_configure(drcc_dev *dev, const drcc_config *cfg)
         return DRCC_E_INVAL;
     }
     if (cfg->busoff_manual && dev->ident.minor < DRCC_MINOR_BUSOFF_MANUAL) {
+        return DRCC_E_UNSUPPORTED;
+    }
+    if ((ctrl & DRCC_CTRL_FIRST_COPY_MASK) != 0u && dev->ident.minor < DRCC_MINOR_FIRST_COPY) {
         return DRCC_E_UNSUPPORTED;
     }
     rc = drcc_enter_reset(dev);

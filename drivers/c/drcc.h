@@ -5,7 +5,8 @@
  *
  * Features newer than the map 1.0 need the instance's VERSION.minor (read by
  * drcc_init()): transmit abort (drcc_abort) needs minor 2, manual bus-off
- * recovery (drcc_config.busoff_manual, drcc_recover) minor 3. On an older
+ * recovery (drcc_config.busoff_manual, drcc_recover) minor 3, DMR first-copy
+ * delivery (drcc_config.dmr_first_copy) minor 4. On an older
  * instance those calls return DRCC_E_UNSUPPORTED and write nothing. */
 #ifndef DRCC_DRIVER_H
 #define DRCC_DRIVER_H
@@ -46,7 +47,8 @@ enum drcc_result {
     /** VERSION.major is not 1: a register map this driver does not know. */
     DRCC_E_VERSION = -8,
     /** The instance's VERSION.minor is below the one the feature needs
-     * (DRCC_MINOR_ABORT, DRCC_MINOR_BUSOFF_MANUAL); nothing was written. */
+     * (DRCC_MINOR_ABORT, DRCC_MINOR_BUSOFF_MANUAL, DRCC_MINOR_FIRST_COPY);
+     * nothing was written. */
     DRCC_E_UNSUPPORTED = -9
 };
 
@@ -55,6 +57,8 @@ enum drcc_result {
 /** VERSION.minor from which CTRL.busoff_manual and TX_CMD.recover_a/recover_b
  * exist (contract §11.6). */
 #define DRCC_MINOR_BUSOFF_MANUAL 3u
+/** VERSION.minor from which CTRL.first_copy exists (DMR contract §8.1). */
+#define DRCC_MINOR_FIRST_COPY 4u
 
 /** A set of channels (a bit mask) for drcc_abort() and drcc_recover(). */
 enum drcc_channels {
@@ -138,6 +142,11 @@ typedef struct drcc_config {
     uint16_t dmr_recovery_delay; /**< DMR_TIME.recovery_delay in ticks, not 0 */
     uint16_t dmr_cs_id_dcl;      /**< DMR_CS.cs_id_dcl (11 bits) */
     uint16_t dmr_cs_id_rcl;      /**< DMR_CS.cs_id_rcl (11 bits, != dcl) */
+    /** CTRL.first_copy (map 1.4): deliver the first copy of each frame from
+     * either line instead of the active line's only (DMR contract §8.1; needs
+     * dedup_window). 1 on an instance older than 1.4: drcc_configure() returns
+     * DRCC_E_UNSUPPORTED. */
+    int dmr_first_copy;
 } drcc_config;
 
 /** A classical CAN frame as the registers carry it. */

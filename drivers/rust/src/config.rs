@@ -81,7 +81,14 @@ pub struct DmrConfig {
     pub cs_id_dcl: u16,
     /// Connection-service identifier on the RCL (channel B), 11 bits, not `cs_id_dcl`.
     pub cs_id_rcl: u16,
+    /// `CTRL.first_copy` (map 1.4, [`MINOR_FIRST_COPY`]): deliver the first copy
+    /// of each frame from either line instead of the active line's only (DMR
+    /// contract §8.1; needs a duplicate window).
+    pub first_copy: bool,
 }
+
+/// `VERSION.minor` from which `CTRL.first_copy` exists.
+pub const MINOR_FIRST_COPY: u8 = 4;
 
 impl Default for DmrConfig {
     /// The registers' reset values.
@@ -117,6 +124,11 @@ impl Default for DmrConfig {
                 regs::DMR_CS_CS_ID_RCL_SHIFT,
                 regs::DMR_CS_RESET,
             ) as u16,
+            first_copy: regs::get(
+                regs::CTRL_FIRST_COPY_MASK,
+                regs::CTRL_FIRST_COPY_SHIFT,
+                regs::CTRL_RESET,
+            ) != 0,
         }
     }
 }

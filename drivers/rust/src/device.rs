@@ -184,6 +184,11 @@ impl<R: Registers> Drcc<R> {
                 regs::CTRL_BUSOFF_MANUAL_MASK,
                 regs::CTRL_BUSOFF_MANUAL_SHIFT,
                 u32::from(cfg.busoff_manual),
+            )
+            | put(
+                regs::CTRL_FIRST_COPY_MASK,
+                regs::CTRL_FIRST_COPY_SHIFT,
+                u32::from(cfg.mode == Mode::Dmr && cfg.dmr.first_copy),
             ))
     }
 
@@ -191,11 +196,15 @@ impl<R: Registers> Drcc<R> {
     /// with `CTRL` (the mode) in one write. [`Error::Refused`] if the controller
     /// did not take a word (it then stays in reset mode);
     /// [`Error::Unsupported`] (nothing written) for
-    /// [`Config::busoff_manual`] on an instance older than map 1.3.
+    /// [`Config::busoff_manual`] on an instance older than map 1.3, and for
+    /// DMR first-copy delivery on one older than map 1.4.
     pub fn configure(&mut self, cfg: &Config) -> Result<(), Error> {
         let btr = cfg.timing.btr(cfg.ewl)?;
         let ctrl = Self::ctrl_word(cfg)?;
         if cfg.busoff_manual && self.ident.minor < crate::MINOR_BUSOFF_MANUAL {
+            return Err(Error::Unsupported);
+        }
+        if ctrl & regs::CTRL_FIRST_COPY_MASK != 0 && self.ident.minor < crate::MINOR_FIRST_COPY {
             return Err(Error::Unsupported);
         }
         if cfg.dedup_window > 0x7FFF

@@ -40,7 +40,7 @@ mod status;
 mod timing;
 mod txctl;
 
-pub use config::{ChanMode, Config, DmrConfig, Mode, Policy};
+pub use config::{ChanMode, Config, DmrConfig, Mode, Policy, MINOR_FIRST_COPY};
 pub use device::{Drcc, IrqResult};
 pub use features::{Capture, Filter, Ident};
 pub use frame::{Channel, Frame};
@@ -87,7 +87,8 @@ pub enum Error {
     /// `VERSION.major` is not 1: a register map this driver does not know.
     Version,
     /// The instance's `VERSION.minor` is below the one the feature needs
-    /// ([`MINOR_ABORT`], [`MINOR_BUSOFF_MANUAL`]); nothing was written.
+    /// ([`MINOR_ABORT`], [`MINOR_BUSOFF_MANUAL`], [`MINOR_FIRST_COPY`]); nothing
+    /// was written.
     Unsupported,
 }
 

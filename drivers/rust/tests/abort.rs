@@ -38,8 +38,8 @@ use both::{
     drain, node, node_with, send_now, std_frame, wait_bits, wait_until, Kind, Node, E_STATE,
     E_UNSUPPORTED, KINDS,
 };
-use common::{bus_or_skip, Sent, FRAME_BITS};
-use drcc_driver::{regs, Channel, Channels, Drcc, Error, Mode, Registers};
+use common::{bus_or_skip, Fake, Sent, FRAME_BITS};
+use drcc_driver::{regs, Channel, Channels, Drcc, Error, Mode};
 use drcc_driver_sim::{c_call_with_version, CCall, Fault, Line};
 
 fn has(events: u32, mask: u32) -> bool {
@@ -267,27 +267,6 @@ fn c_driver_abort_in_dmr_mode_is_refused_without_a_write() {
 #[test]
 fn rust_driver_abort_in_dmr_mode_is_refused_without_a_write() {
     dmr_refused(KINDS[1]);
-}
-
-/// Registers where `ID` reads "DRCC", `VERSION` reads `version`, `SIZES`
-/// the default top's, everything else 0; writes are counted.
-struct Fake {
-    version: u32,
-    writes: Vec<(u32, u32)>,
-}
-
-impl Registers for Fake {
-    fn read32(&mut self, offset: u32) -> u32 {
-        match offset {
-            regs::ID_OFFSET => regs::ID_VALUE,
-            regs::VERSION_OFFSET => self.version,
-            regs::SIZES_OFFSET => regs::SIZES_RESET,
-            _ => 0,
-        }
-    }
-    fn write32(&mut self, offset: u32, value: u32) {
-        self.writes.push((offset, value));
-    }
 }
 
 #[test]

@@ -38,8 +38,8 @@ use both::{
     drain, node, node_with, send_now, std_frame, wait_bits, wait_until, Kind, Node, E_UNSUPPORTED,
     KINDS,
 };
-use common::{bus_or_skip, BIT, FRAME_BITS};
-use drcc_driver::{regs, Channels, Config, Drcc, Error, Mode, Registers};
+use common::{bus_or_skip, Fake, BIT, FRAME_BITS};
+use drcc_driver::{regs, Channels, Config, Drcc, Error, Mode};
 use drcc_driver_sim::{c_call_with_version, CCall, DualBus, Fault, Line};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -184,27 +184,6 @@ fn c_driver_automatic_bus_off_recovery() {
 #[test]
 fn rust_driver_automatic_bus_off_recovery() {
     automatic(KINDS[1]);
-}
-
-/// Registers where `ID` reads "DRCC", `VERSION` reads `version`, `SIZES`
-/// the default top's, everything else 0; writes are recorded.
-struct Fake {
-    version: u32,
-    writes: Vec<(u32, u32)>,
-}
-
-impl Registers for Fake {
-    fn read32(&mut self, offset: u32) -> u32 {
-        match offset {
-            regs::ID_OFFSET => regs::ID_VALUE,
-            regs::VERSION_OFFSET => self.version,
-            regs::SIZES_OFFSET => regs::SIZES_RESET,
-            _ => 0,
-        }
-    }
-    fn write32(&mut self, offset: u32, value: u32) {
-        self.writes.push((offset, value));
-    }
 }
 
 fn fake(version: u32) -> Drcc<Fake> {

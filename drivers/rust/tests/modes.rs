@@ -14,7 +14,7 @@ use common::{
 use drcc_driver::{
     regs, BitTiming, ChanMode, Channel, Config, DmrConfig, Drcc, Error, Mode, Registers,
 };
-use drcc_driver_sim::{CConfig, CDriver};
+use drcc_driver_sim::{c_call_with_version, CCall, CConfig, CDriver};
 
 /// DRCC_MODE_DMR of the C driver.
 const C_MODE_DMR: i32 = 2;
@@ -83,6 +83,71 @@ fn dmr_mode_delivers_every_frame_once_from_the_default_line() {
         regs::DMR_REDUNDANCY_ACTIVE,
         "no fault on either line"
     );
+    assert_eq!(bus.borrow().refused(), 0, "no register access was refused");
+}
+
+/// DMR first-copy delivery (`CTRL.first_copy`, DMR contract §8.1, map 1.4):
+/// the Rust driver sets the bit on the Verilated DRCC and the frames still
+/// arrive once each; on an instance older than 1.4 both drivers refuse it
+/// before any write (`Error::Unsupported`, `DRCC_E_UNSUPPORTED` -9).
+#[test]
+fn both_drivers_set_dmr_first_copy_from_map_1_4() {
+    let first_copy = Config {
+        dedup_window: DMR_WINDOW,
+        dmr: DmrConfig {
+            first_copy: true,
+            ..DmrConfig::default()
+        },
+        ..config(Mode::Dmr)
+    };
+    let mut old = Drcc::new(common::Fake {
+        version: 0x103,
+        writes: vec![],
+    })
+    .expect("major 1");
+    assert_eq!(old.configure(&first_copy), Err(Error::Unsupported));
+    assert_eq!(old.release().writes, vec![], "Rust: nothing written");
+    assert_eq!(
+        c_call_with_version(0x103, 0, CCall::ConfigureFirstCopy(true)),
+        (-9, 0, (0, 0)),
+        "C on 1.3"
+    );
+    // On 1.4 both go on (these fake registers never enter reset mode, so they
+    // stop after the reset-mode write with Refused, -4).
+    let reset_mode = (regs::CTRL_OFFSET, regs::CTRL_RESET_MODE_MASK);
+    assert_eq!(
+        c_call_with_version(0x104, 0, CCall::ConfigureFirstCopy(true)),
+        (-4, 1, reset_mode),
+        "C on 1.4"
+    );
+
+    let Some(bus) = bus_or_skip() else { return };
+    let mut tx = Drcc::new(Regs(port(&bus, 0))).expect("the DRCC answers");
+    tx.configure(&Config {
+        dedup_window: DMR_WINDOW,
+        ..config(Mode::Dmr)
+    })
+    .expect("DMR mode");
+    let mut rx = Drcc::new(Regs(port(&bus, 1))).expect("the DRCC answers");
+    rx.configure(&first_copy).expect("DMR mode with first copy");
+    let ctrl = rx.registers().read32(regs::CTRL_OFFSET);
+    assert_ne!(ctrl & regs::CTRL_FIRST_COPY_MASK, 0, "CTRL {ctrl:#x}");
+    bus.borrow_mut().tick(20 * BIT);
+    let sent = frames();
+    let got = exchange(
+        &bus,
+        1,
+        &sent,
+        common::rust_send(&mut tx),
+        rust_isr(&mut rx),
+        |_, _| {},
+        Budget {
+            settle_bits: 3 * FRAME_BITS,
+            budget_bits: 30 * FRAME_BITS,
+        },
+    );
+    let frames_got: Vec<_> = got.into_iter().map(|(f, _)| f).collect();
+    assert_eq!(frames_got, sent, "every frame once, from either line");
     assert_eq!(bus.borrow().refused(), 0, "no register access was refused");
 }
 

@@ -199,7 +199,8 @@ static void counting_write(void *ctx, uint32_t off, uint32_t value)
 
 /* On a device whose VERSION reads `version` and CTRL `ctrl`: what = 0
  * drcc_abort(channels), 1 drcc_recover(channels), 2 drcc_configure() with
- * busoff_manual = channels. Returns the result code; *writes = register
+ * busoff_manual = channels, 3 drcc_configure() in DMR mode with
+ * dmr_first_copy = channels. Returns the result code; *writes = register
  * writes the call made, last[0] / last[1] the offset and value of the last. */
 int sim_c_call_with_version(uint32_t version, uint32_t ctrl, int what, unsigned channels,
                             unsigned *writes, uint32_t last[2])
@@ -224,7 +225,12 @@ int sim_c_call_with_version(uint32_t version, uint32_t ctrl, int what, unsigned 
     } else {
         drcc_config cfg;
         drcc_config_default(&cfg);
-        cfg.busoff_manual = (int)channels;
+        if (what == 2) {
+            cfg.busoff_manual = (int)channels;
+        } else {
+            cfg.mode = DRCC_MODE_DMR;
+            cfg.dmr_first_copy = (int)channels;
+        }
         rc = drcc_configure(&dev, &cfg);
     }
     *writes = f.writes;

@@ -538,6 +538,8 @@ pub enum CCall {
     Recover(u32),
     /// `drcc_configure` with `busoff_manual`.
     Configure(bool),
+    /// `drcc_configure` in DMR mode with `dmr_first_copy`.
+    ConfigureFirstCopy(bool),
 }
 
 /// After `drcc_init` on fake registers whose `VERSION` reads `version` and
@@ -548,6 +550,7 @@ pub fn c_call_with_version(version: u32, ctrl: u32, call: CCall) -> (i32, u32, (
         CCall::Abort(c) => (0, c),
         CCall::Recover(c) => (1, c),
         CCall::Configure(m) => (2, u32::from(m)),
+        CCall::ConfigureFirstCopy(f) => (3, u32::from(f)),
     };
     let mut writes = 0;
     let mut last = [0; 2];

@@ -5,7 +5,7 @@
 #
 # - every test named `soak_*` (ignored by `cargo test`; each one's doc comment
 #   says what `.ci/run` runs of it instead);
-# - the dual-bus and star fault campaigns at full size, sharded over the
+# - the dual-bus, DMR (first copy) and star fault campaigns at full size, sharded over the
 #   machine's cores (`drcc campaign`; for a cluster see scripts/campaign/).
 #
 # Usage: bash scripts/soak.sh [CAMPAIGN_COUNT]   (default 100000 per topology)
@@ -31,8 +31,8 @@ cargo build --release
 out="soak-results/$(date -u +%Y%m%dT%H%M%SZ)"
 mkdir -p "$out"
 # each run fails (exit 1) when a single-fault scenario loses, duplicates or locks up
-for topology in dual star; do
+for topology in dual dmr star; do
   ./target/release/drcc campaign --topology "$topology" --faults single \
     --count "$count" --seed 1 --out "$out/$topology.jsonl"
 done
-./target/release/drcc campaign merge "$out/dual.jsonl" "$out/star.jsonl"
+./target/release/drcc campaign merge "$out/dual.jsonl" "$out/dmr.jsonl" "$out/star.jsonl"

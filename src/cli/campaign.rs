@@ -46,7 +46,7 @@ const MAX_COUNT: u64 = 100_000_000;
 pub fn parse(a: &CampaignArgs) -> Result<Campaign, CliError> {
     let topology = Topology::from_name(a.topology).ok_or_else(|| {
         error(format!(
-            "--topology {}: the topologies are dual and star",
+            "--topology {}: the topologies are dual, dmr and star",
             a.topology
         ))
     })?;

@@ -1,5 +1,6 @@
 //! The smoke fault campaign: 500 random single-fault scenarios on a dual bus of
-//! 3..6 DRCC nodes (`drcc_testbench::campaign`), and 100 on the star, on the
+//! 3..6 DRCC nodes (`drcc_testbench::campaign`), 60 with the nodes in DMR mode
+//! with first-copy delivery, and 100 on the star, on the
 //! reference model (the full 10^5 of each run in the soak, scripts/soak.sh). Every one: no frame lost, none delivered from both lines, none
 //! that nobody sent, no node left out of normal operation. CAN's own double
 //! reception (a line carrying a frame twice after an error in the last EOF bit) is
@@ -7,6 +8,7 @@
 //! seed, and shards add up to the whole campaign.
 
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_testbench::campaign::draw::{DrawnFault, FaultClass, Side};
 use drcc_testbench::campaign::summary::Summary;
 use drcc_testbench::campaign::{self, draw, Campaign, Topology};
 use drcc_testbench::engines::verilator_required;
@@ -59,6 +61,69 @@ fn five_hundred_single_faults_lose_duplicate_and_lock_up_nothing() {
     }
     assert_eq!(s.classes.len(), 7, "every fault class drawn");
     assert_eq!(s.failing(), 0);
+}
+
+/// The DMR smoke campaign: 60 of the dual bus's random single faults with the
+/// nodes in CiA 701 DMR mode and first-copy delivery (DMR contract §8.1) beside a
+/// monitor node: nothing lost, duplicated or foreign, every node "redundancy
+/// active" again at the end (the 2,000-scenario campaign of docs/campaign.md
+/// runs in the soak).
+#[test]
+fn sixty_single_faults_on_dmr_first_copy_nodes_lose_and_lock_up_nothing() {
+    let (_, s) = run(&on(Topology::Dmr, 60, 2024, (1, 1)));
+    println!("{}", s.table());
+    assert_eq!(s.scenarios(), 60);
+    for ((topology, class), t) in &s.classes {
+        assert_eq!(topology, "dmr");
+        assert_eq!(
+            (t.lost, t.duplicated, t.foreign, t.lockups),
+            (0, 0, 0, 0),
+            "{class}: lost, duplicated, foreign, lockups"
+        );
+    }
+    assert_eq!(s.classes.len(), 7, "every dual-bus fault class drawn");
+    assert_eq!(s.failing(), 0);
+}
+
+/// The DMR campaign's faults reach the DMR function, and its "back to normal"
+/// means it recovered: a line stuck dominant for 3000 bit times takes every
+/// node's DCL out (a fault flag, the state leaves "redundancy active", the ACL
+/// switches to the RCL) while the frames keep arriving once over the RCL, and
+/// after it every node is "redundancy active" again.
+#[test]
+fn a_stuck_dcl_is_judged_by_every_dmr_node_and_every_node_recovers() {
+    let mut spec = draw(Topology::Dmr, 1, 1, 0);
+    spec.faults = vec![DrawnFault {
+        class: FaultClass::StuckDominant,
+        line: Side::A,
+        node: 0,
+        start_bit: 500,
+        bits: 3000,
+        flips: vec![],
+    }];
+    let mut left_active = vec![false; spec.nodes];
+    let mut switched = vec![false; spec.nodes];
+    let o = campaign::dual::run(&spec, EngineKind::Model, |sys| {
+        for n in 0..spec.nodes {
+            let p = &sys.nodes()[n].outputs.probes;
+            left_active[n] |= p.dmr_state != 0;
+            switched[n] |= p.acl;
+        }
+        Ok(())
+    })
+    .unwrap();
+    assert_eq!(
+        left_active,
+        vec![true; spec.nodes],
+        "every node judged the DCL"
+    );
+    assert_eq!(
+        switched,
+        vec![true; spec.nodes],
+        "every ACL went to the RCL"
+    );
+    assert!(o.clean(), "{o:?}");
+    assert!(o.deliveries > 0);
 }
 
 /// The star smoke campaign: 100 random single faults on the links of two coupled

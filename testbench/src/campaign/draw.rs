@@ -24,6 +24,9 @@ use crate::random::SplitMix64;
 pub enum Topology {
     /// DRCC nodes in redundancy mode on lines A and B.
     Dual,
+    /// DRCC nodes in CiA 701 DMR mode with first-copy delivery (DMR contract
+    /// §8.1) on lines A (the DCL) and B (the RCL), beside a monitor node.
+    Dmr,
     /// DRCC nodes on two coupled ReCANcentrate hubs (channel A on hub 1, B on hub 2).
     Star,
 }
@@ -33,13 +36,14 @@ impl Topology {
     pub fn name(self) -> &'static str {
         match self {
             Topology::Dual => "dual",
+            Topology::Dmr => "dmr",
             Topology::Star => "star",
         }
     }
 
     /// The topology of a name.
     pub fn from_name(s: &str) -> Option<Topology> {
-        [Topology::Dual, Topology::Star]
+        [Topology::Dual, Topology::Dmr, Topology::Star]
             .into_iter()
             .find(|t| t.name() == s)
     }
@@ -47,7 +51,7 @@ impl Topology {
     /// The fault classes of this topology's fault model.
     pub fn classes(self) -> &'static [FaultClass] {
         match self {
-            Topology::Dual => &FaultClass::DUAL,
+            Topology::Dual | Topology::Dmr => &FaultClass::DUAL,
             Topology::Star => &FaultClass::STAR,
         }
     }
@@ -248,7 +252,7 @@ impl ScenarioSpec {
             .iter()
             .map(|f| {
                 let on = match self.topology {
-                    Topology::Dual => format!("on line {}", f.line.name()),
+                    Topology::Dual | Topology::Dmr => format!("on line {}", f.line.name()),
                     Topology::Star => format!("on hub {}", f.line as usize + 1),
                 };
                 let at = match f.class {
@@ -291,7 +295,7 @@ fn rng(seed: u64, index: u64) -> SplitMix64 {
 pub fn draw(topology: Topology, faults: usize, seed: u64, index: u64) -> ScenarioSpec {
     let mut r = rng(seed, index);
     let nodes = match topology {
-        Topology::Dual => 3 + r.below(4) as usize, // 3..=6
+        Topology::Dual | Topology::Dmr => 3 + r.below(4) as usize, // 3..=6
         // the emitted hub.v has 4 node ports; a free port is isolated as silent
         Topology::Star => 4,
     };

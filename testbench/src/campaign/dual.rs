@@ -15,13 +15,22 @@
 //! may still be error passive: ISO 11898-1 lowers TEC by one per successful
 //! transmission, so a transmitter that reached TEC 200 needs over 70 frames to be
 //! error active again, which is CAN's rule, not a lockup.
+//!
+//! The `dmr` topology runs the same scenarios with the nodes in CiA 701 DMR mode
+//! and first-copy delivery (DMR contract §8.1), line A the DCL and line B the RCL
+//! ([`dmr_config`]), beside a monitor node at the end of both lines that sends
+//! nothing and is never faulted (the test system of the seed's Figure 9: devices
+//! that start together send identical connection-service frames, which only a
+//! node that is not sending acknowledges, DMR contract §7). Back to normal is
+//! then "redundancy active" (both lines judged sound) with no channel bus-off.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
+use drcc_cosim::dual::dmr_config::{DmrConfig, DmrMailbox};
 use drcc_cosim::dual::host::HostConfig;
 use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
 use drcc_cosim::Frame;
 
-use super::draw::{FaultClass, ScenarioSpec, Side};
+use super::draw::{FaultClass, ScenarioSpec, Side, Topology};
 use super::tally::{run_and_tally, submit_traffic};
 use super::Outcome;
 use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT};
@@ -40,6 +49,61 @@ pub const TAIL_END_BITS: u64 = 4_000;
 /// The product's recommended redundancy configuration: the dual-bus table's.
 fn host_config() -> HostConfig {
     DualScenario::standard(DualFault::None).host_config()
+}
+
+/// The DMR configuration of node `node` of `nodes` in the `dmr` topology: DMR
+/// ticks of 16 bit times, a 20-tick mailbox and connection-service timeout (320
+/// bit times: a line missing a node's frames is judged within a frame or two of
+/// the drawn traffic), a 100-tick recovery delay (1600 bit times, so a line is
+/// back within the tail), first-copy delivery; mailbox 0 counts the node's own
+/// frames (`frame` gives node `n` the identifiers `0x100 + 0x40 n + k`), mailbox
+/// `1 + i` those of the `i`-th other node, each with the deviation limit 3.
+pub fn dmr_config(node: usize, nodes: usize) -> DmrConfig {
+    let mut c = DmrConfig {
+        timeout: 20,
+        cs_period: 0,
+        tick_bits: 16,
+        recovery_delay: 100,
+        first_copy: true,
+        ..DmrConfig::default()
+    };
+    let mailbox = |n: usize, transmit: bool| DmrMailbox {
+        transmit,
+        ide: false,
+        id: 0x100 + 0x40 * n as u32,
+        mask: 0x7C0,
+        limit: 3,
+    };
+    c.mailboxes[0] = Some(mailbox(node, true));
+    for (slot, other) in (0..nodes).filter(|&m| m != node).enumerate() {
+        c.mailboxes[1 + slot] = Some(mailbox(other, false));
+    }
+    c
+}
+
+/// The host configurations of the scenario's system: every node in redundancy
+/// mode (`dual`), or in DMR mode with first-copy delivery and the monitor node
+/// after them (`dmr`; normal mode, both channels on, sending nothing).
+pub fn host_configs(spec: &ScenarioSpec) -> Vec<HostConfig> {
+    let redundancy = host_config();
+    match spec.topology {
+        Topology::Dmr => (0..spec.nodes)
+            .map(|n| {
+                HostConfig::dmr(
+                    redundancy.btr,
+                    dmr_config(n, spec.nodes),
+                    redundancy.dedup_window,
+                )
+            })
+            .chain(std::iter::once(HostConfig {
+                redundancy: false,
+                dedup_window: 0,
+                dmr: None,
+                ..redundancy
+            }))
+            .collect(),
+        _ => vec![redundancy; spec.nodes],
+    }
 }
 
 /// The `k`-th frame of host `node` (`k >= frames_per_node`: a tail frame, 8 bytes):
@@ -81,10 +145,12 @@ fn line(s: Side) -> Line {
 
 /// Builds the system of `spec` on `kind`, traffic and faults in place.
 pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<DualBusSystem, String> {
-    let engines = (0..spec.nodes)
+    let configs = host_configs(spec);
+    let engines = configs
+        .iter()
         .map(|_| drcc_engine(kind))
         .collect::<Result<Vec<_>, _>>()?;
-    let mut sys = DualBusSystem::new(engines, vec![host_config(); spec.nodes])?;
+    let mut sys = DualBusSystem::new(engines, configs)?;
     submit_traffic(
         spec,
         &mut sys,

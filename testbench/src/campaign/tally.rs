@@ -10,7 +10,7 @@ use drcc_cosim::model::field;
 use drcc_cosim::star::StarSystem;
 
 use super::dual::{frame, frames};
-use super::{Outcome, ScenarioSpec};
+use super::{Outcome, ScenarioSpec, Topology};
 
 /// A system of DRCC nodes a campaign runs: the dual bus or the star.
 pub trait NodeSystem {
@@ -99,10 +99,11 @@ pub fn run_and_tally<S: NodeSystem>(
         }
         observe(sys)?;
     }
+    // the first `spec.nodes` are the scenario's nodes (a monitor may follow)
     Ok(tally(
         spec,
         frames(spec),
-        &sys.views(),
+        &sys.views()[..spec.nodes],
         &overloads,
         sys.cycle(),
         clocks_per_bit,
@@ -204,6 +205,13 @@ pub fn node_normal(o: &DrccOutputs) -> bool {
         && p.state <= 4
 }
 
+/// A node in DMR mode is back to normal: "redundancy active" (no fault flag on
+/// either line, DMR contract §6) and neither channel bus-off.
+pub fn dmr_normal(o: &DrccOutputs) -> bool {
+    let p = &o.probes;
+    p.dmr_state == 0 && p.chan_a_err_state != 2 && p.chan_b_err_state != 2
+}
+
 /// Tallies the deliveries of every node (`nodes[i]`: its host and outputs at the
 /// end), `frames` per sender, over `cycles` clocks of `clocks_per_bit`.
 pub fn tally(
@@ -270,7 +278,11 @@ pub fn tally(
                 }
             }
         }
-        if !node_normal(outputs) {
+        let normal = match spec.topology {
+            Topology::Dmr => dmr_normal(outputs),
+            _ => node_normal(outputs),
+        };
+        if !normal {
             o.lockups.push(rx_node);
         }
     }

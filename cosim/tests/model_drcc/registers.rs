@@ -103,8 +103,9 @@ fn illegal_writes_set_illegal_with_the_documented_effect() {
     assert_eq!(sys.read(0, CTRL), RESET_MODE | policy(2) | k(1));
     // Reserved bits are not stored.
     // (Bit 5 is `star`, DRCC contract §4.4; bit 17 is `dmr`, dmr_contract.md §2;
-    // bit 18 is `busoff_manual`, §11.6.)
-    sys.write(0, CTRL, RESET_MODE | policy(1) | k(1) | 0xC0 | 0xFFF8_0000);
+    // bit 18 is `busoff_manual`, §11.6; bit 19 is `first_copy`, dmr_contract.md
+    // §8.1.)
+    sys.write(0, CTRL, RESET_MODE | policy(1) | k(1) | 0xC0 | 0xFFF0_0000);
     assert!(!take_illegal(&mut sys));
     assert_eq!(sys.read(0, CTRL), RESET_MODE | policy(1) | k(1));
 

@@ -58,6 +58,20 @@ impl DistTiming {
             plain_silence: 250_000,
         }
     }
+
+    /// The silence that judges a plain node lost, for plain nodes that send every
+    /// `period` (ring contract §6, "plain nodes"): one period plus 2 Ta, the
+    /// tolerance the alive letters get, for the queueing of a periodic frame.
+    pub fn plain_silence_for(&self, period: u64) -> u64 {
+        period + 2 * self.ta
+    }
+
+    /// How long before its detection a fault may have begun (ring contract §5.1):
+    /// the longest silence judged (2 Ta for a ring node, `plain_silence` for a
+    /// plain node), plus Ta for the skew between the parts of a broken ring.
+    pub fn resend_horizon(&self) -> u64 {
+        (2 * self.ta).max(self.plain_silence) + self.ta
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -108,7 +122,9 @@ impl DistNode {
             state: State::Run,
             next_alive: now,
             heard: vec![Some(now); n],
-            plain_heard: (0..total).map(|k| (k >= n).then_some(now)).collect(),
+            // A plain node is watched from its first frame on: the application
+            // starts after the algorithm, up to a period later for the last node.
+            plain_heard: vec![None; total],
             app_base,
             alive_at_detection: vec![true; n],
             left_ok: false,
@@ -132,6 +148,12 @@ impl DistNode {
     /// Whether no rebuild is going on.
     pub fn running(&self) -> bool {
         !matches!(self.state, State::Rebuild { .. })
+    }
+
+    /// Whether the ring is settled: no rebuild, and no holder's decision pending
+    /// (whose relay change would restart the controller).
+    pub fn settled(&self) -> bool {
+        self.state == State::Run
     }
 
     fn set(&mut self, mode: u8) {

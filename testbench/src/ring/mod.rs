@@ -5,6 +5,7 @@
 //! Time: the ring runs at 125 kbit/s with 8 clocks per bit, so one clock is one
 //! microsecond and the hosts' clocks (`now_us`) are the cycle count.
 
+pub mod app;
 pub mod central;
 pub mod distributed;
 pub mod lockstep;
@@ -13,6 +14,7 @@ pub mod table;
 
 use crate::dual::drcc_engine;
 use crate::engines::EngineKind;
+use app::{AppTraffic, RingState};
 use cankingdom::king::{ExpectedCity, KingPhase, Membership};
 use cankingdom::king_pages::Action;
 use cankingdom::{Envelope, King, KingConfig, Mayor, MayorConfig};
@@ -217,6 +219,11 @@ pub struct RingReport {
     pub lost: Vec<(usize, u32)>,
     /// Application frames submitted after the onset by working nodes.
     pub app_frames: usize,
+    /// Of those, the ring nodes' (the rest are the plain nodes').
+    pub ring_app_frames: usize,
+    /// Application frames that ring nodes submitted again after a detection
+    /// (`app`: delivered at least once).
+    pub resent: usize,
     /// Relay states in force at the end (1 left, 2 right, 3 transparent).
     pub final_modes: Vec<u8>,
     /// Illegal RCM writes refused (ring contract §2).
@@ -290,7 +297,7 @@ pub fn run_observed(
     let mut timing = CentralTiming::paper(s.relay_us);
     timing.plain_silence = s.app_period_us * 5 / 2;
     let mut dist_timing = DistTiming::standard(s.relay_us);
-    dist_timing.plain_silence = s.app_period_us * 5 / 2;
+    dist_timing.plain_silence = dist_timing.plain_silence_for(s.app_period_us);
     let mut apps: Vec<App> = Vec::with_capacity(total);
     apps.push(App::King {
         king: capital(&cities)?,
@@ -315,7 +322,6 @@ pub fn run_observed(
         onset,
         ..RingReport::default()
     };
-    let mut app_seq = vec![0u32; total];
     let mut sent: Vec<(usize, u32, u64)> = Vec::new();
     // Each node's application period starts at its own phase (nodes do not share
     // a clock): twenty frames submitted in the same microsecond would queue the
@@ -323,7 +329,18 @@ pub fn run_observed(
     let app_phase: Vec<u64> = (0..total)
         .map(|i| i as u64 * s.app_period_us / total as u64)
         .collect();
-    let mut next_app = vec![0u64; total];
+    // Distributed: held frames resent from the horizon, one per 2 Ta; the
+    // centralized algorithm keeps the seed's behaviour (`app`).
+    let horizon = dist_timing.resend_horizon();
+    let mut traffic: Vec<AppTraffic> = (0..total)
+        .map(|i| {
+            let t = AppTraffic::new(i, APP_BASE, s.app_period_us, 0, horizon, 2 * dist_timing.ta);
+            match s.algorithm {
+                Algorithm::Centralized => t.without_keeping(),
+                Algorithm::Distributed => t,
+            }
+        })
+        .collect();
     let end = onset + s.after_us;
     let mut relays = sys.wiring().relays().to_vec();
     let host_dead = |i: usize, now: u64| match s.fault {
@@ -448,42 +465,46 @@ pub fn run_observed(
             if let Some(c) = command {
                 sys.module_mut(i).command = Some(c);
             }
-            // Application traffic once the kingdom runs; a ring node holds its
-            // application while it rebuilds the ring (its frames could not get
-            // through, and would queue ahead of its answers to the master).
-            let holding = match &apps[i] {
-                App::King { master, dist, .. } => {
-                    master.as_ref().is_some_and(|m| !m.running())
-                        || dist.as_ref().is_some_and(|d| !d.running())
-                }
-                App::City { slave, dist, .. } => {
-                    slave.as_ref().is_some_and(|s| !s.running())
-                        || dist.as_ref().is_some_and(|d| !d.running())
-                }
-            };
-            if report
+            // Application traffic once the kingdom runs (`app`: a ring node
+            // holds its frames while it rebuilds the ring and resends those the
+            // fault may have cut off).
+            let state = ring_state(&apps[i]);
+            let due = report
                 .kingdom_at
-                .is_some_and(|k| now >= k + 50 * MS + app_phase[i])
-                && now >= next_app[i]
-                && !holding
-            {
-                let seq = app_seq[i];
-                app_seq[i] += 1;
-                next_app[i] = now + s.app_period_us;
-                let f = Frame::base(
-                    APP_BASE + i as u32,
-                    &[(seq >> 8) as u8, seq as u8, i as u8, 0x5A],
-                );
-                sys.node_mut(i).host.submit(now, f, 0);
+                .is_some_and(|k| now >= k + 50 * MS + app_phase[i]);
+            let (produced, out) = traffic[i].poll(now, due, state);
+            if let Some(seq) = produced {
                 sent.push((i, seq, now));
+            }
+            for f in out {
+                sys.node_mut(i).host.submit(now, f, 0);
             }
         }
         if now == onset && report.kingdom_at.is_none() {
             return Err("the kingdom was not running at the fault onset".to_string());
         }
     }
+    report.resent = traffic.iter().map(|t| t.resent).sum();
     judge(s, &sys, &shape, &sent, &mut report);
     Ok(report)
+}
+
+/// What a node's REDCAN says of its application frames (`app`).
+fn ring_state(app: &App) -> RingState {
+    let (master, slave, dist) = match app {
+        App::King { master, dist, .. } => (master.as_ref(), None, dist.as_ref()),
+        App::City { slave, dist, .. } => (None, slave.as_ref(), dist.as_ref()),
+    };
+    let rebuilding = master.is_some_and(|m| !m.running())
+        || slave.is_some_and(|s| !s.running())
+        || dist.is_some_and(|d| !d.settled());
+    if rebuilding {
+        RingState::Rebuilding
+    } else if master.is_some() || slave.is_some() || dist.is_some() {
+        RingState::Settled
+    } else {
+        RingState::Plain
+    }
 }
 
 /// One poll of a node's distributed REDCAN: its letters (after a flush when it
@@ -554,6 +575,7 @@ fn judge(
             continue;
         }
         r.app_frames += 1;
+        r.ring_app_frames += (from < n) as usize;
         let id = APP_BASE + from as u32;
         let missed = (0..total).any(|to| {
             to != from

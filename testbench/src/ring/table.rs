@@ -51,7 +51,7 @@ fn ms(us: u64) -> String {
 }
 
 /// The header of the table.
-pub const HEADER: &str = "| algorithm | ring nodes | fault | position | detection: bit times (ms) | rebuilt: bit times (ms) | frames lost (of sent) | reachable afterwards | no partition | single termination | paper (seed 000 §3) |\n|---|---:|---|---|---|---|---:|---|---|---|---|\n";
+pub const HEADER: &str = "| algorithm | ring nodes | fault | position | detection: bit times (ms) | rebuilt: bit times (ms) | ring nodes' frames lost (of sent) | plain nodes' frames lost (of sent) | resent | reachable afterwards | no partition | single termination | paper (seed 000 §3) |\n|---|---:|---|---|---|---|---:|---:|---:|---|---|---|---|\n";
 
 /// One row.
 pub fn row(s: &RingScenario, r: &RingReport) -> String {
@@ -65,8 +65,13 @@ pub fn row(s: &RingScenario, r: &RingReport) -> String {
         .map(|(i, _)| i.to_string())
         .collect();
     let yes = |b: bool| if b { "yes" } else { "**no**" };
+    let ring_lost = r
+        .lost
+        .iter()
+        .filter(|&&(from, _)| from < s.ring_nodes)
+        .count();
     format!(
-        "| {} | {} | {} | {} | {} | {} | {} of {} | {} of {} working: {} | {} | {} | T1 30 ms, T2 500 ms, recovery <= ~1 s |\n",
+        "| {} | {} | {} | {} | {} | {} | {} of {} | {} of {} | {} | {} of {} working: {} | {} | {} | T1 30 ms, T2 500 ms, recovery <= ~1 s |\n",
         match s.algorithm {
             Algorithm::Centralized => "centralized",
             Algorithm::Distributed => "distributed",
@@ -76,8 +81,11 @@ pub fn row(s: &RingScenario, r: &RingReport) -> String {
         s.fault.position(),
         det,
         rebuilt,
-        r.lost.len(),
-        r.app_frames,
+        ring_lost,
+        r.ring_app_frames,
+        r.lost.len() - ring_lost,
+        r.app_frames - r.ring_app_frames,
+        r.resent,
         reach.len(),
         r.working.iter().filter(|&&w| w).count(),
         reach.join(" "),

@@ -9653,6 +9653,9 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
     reg  mbx__settle_none;
     reg  mbx__settle_drop;
     wire  [15:0] mbx__settles;
+    reg  mbx__owe_set;
+    reg  mbx__owe_drop;
+    wire  [15:0] mbx__oweds;
 
     // Local signals
     reg  [3:0] mb;
@@ -9672,6 +9675,7 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
     reg  deviation;
     reg  expired;
     reg  rebalance;
+    reg  owed;
 
     // Sub module instances
     drcc_apb__core__core__dmr_eng__0__mbx mbx(
@@ -9689,7 +9693,10 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
         .settle_all(mbx__settle_all),
         .settle_none(mbx__settle_none),
         .settle_drop(mbx__settle_drop),
-        .settles(mbx__settles)
+        .settles(mbx__settles),
+        .owe_set(mbx__owe_set),
+        .owe_drop(mbx__owe_drop),
+        .oweds(mbx__oweds)
     );
 
     // Update code
@@ -9722,6 +9729,7 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
             mb = e_i__q;
         end
         mbx__sel = mb;
+        owed = mbx__oweds[mb];
         mb_c = ((mb) & 7'h7f) << 32'h3;
         c = mbx__rd_counter;
         t = mbx__rd_timer;
@@ -9769,7 +9777,7 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
         if (c_step == zero8) begin
             t_step = zero16;
         end
-        else if ((c == zero8) | toward) begin
+        else if (~owed & ((c == zero8) | toward)) begin
             t_step = timeout;
         end
         else begin
@@ -9788,8 +9796,8 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
             t_dec = t - one16;
         end
         deviation = c_abs > limit;
-        expired = (c != zero8) & (t_dec == zero16);
-        rebalance = expired & ~deviation & mbx__settles[e_i__q] & ~cfg_id_word[32'h1e];
+        expired = (c != zero8) & (t_dec == zero16) & ~owed;
+        rebalance = expired & ~deviation & mbx__settles[e_i__q];
         fault = ~hold & (state__q == s_eval) & en & (deviation | expired) & ~rebalance;
         fault_line = ~c[32'h7];
         fault_tx = cfg_id_word[32'h1e];
@@ -9803,6 +9811,8 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
         mbx__settle_all = clear_state;
         mbx__settle_none = hold;
         mbx__settle_drop = 1'b0;
+        mbx__owe_set = 1'b0;
+        mbx__owe_drop = 1'b0;
         if (tx_dcl) begin
             pend_tx_dcl__d = 1'b1;
             k_tx_dcl__d = key_tx_dcl;
@@ -9901,6 +9911,7 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
                 else begin
                     mbx__counter_d = c_step;
                     mbx__timer_d = t_step;
+                    mbx__owe_drop = c_step == zero8;
                 end
             end
             state__d = s_idle;
@@ -9909,7 +9920,13 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
             if (en) begin
                 mbx__we = 1'b1;
                 if (deviation | expired) begin
-                    mbx__counter_d = zero8;
+                    if (deviation | rebalance) begin
+                        mbx__counter_d = zero8;
+                        mbx__owe_drop = 1'b1;
+                    end
+                    else begin
+                        mbx__owe_set = 1'b1;
+                    end
                     mbx__timer_d = zero16;
                     mbx__settle_drop = 1'b1;
                 end
@@ -9965,7 +9982,7 @@ module drcc_apb__core__core__dmr_eng__0(clk,hold,clear_state,timeout,tx_dcl,tx_r
 endmodule // drcc_apb__core__core__dmr_eng__0
 
 
-module drcc_apb__core__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers,settle_all,settle_none,settle_drop,settles);
+module drcc_apb__core__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers,settle_all,settle_none,settle_drop,settles,owe_set,owe_drop,oweds);
 
     // Module arguments
     input wire  clk;
@@ -9983,6 +10000,9 @@ module drcc_apb__core__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,
     input wire  settle_none;
     input wire  settle_drop;
     output reg  [15:0] settles;
+    input wire  owe_set;
+    input wire  owe_drop;
+    output reg  [15:0] oweds;
 
     // Constant declarations
     localparam  one16 = 16'h1;
@@ -10068,6 +10088,8 @@ module drcc_apb__core__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,
     reg  [15:0] valid__q;
     reg  [15:0] settle__d;
     reg  [15:0] settle__q;
+    reg  [15:0] owed__d;
+    reg  [15:0] owed__q;
     reg  [3:0] rd_q__d;
     reg  [3:0] rd_q__q;
 
@@ -10093,6 +10115,7 @@ module drcc_apb__core__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,
     always @(*) begin
         valid__d = valid__q;
         settle__d = settle__q;
+        owed__d = owed__q;
         rd_q__d = rd_q__q;
         slot = one16 << sel;
         word = ((counter_d) & 24'hffffff) | (((timer_d) & 24'hffffff) << 32'h8);
@@ -10127,6 +10150,16 @@ module drcc_apb__core__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,
             settle__d = zero16;
         end
         settles = settle__q;
+        if (owe_drop) begin
+            owed__d = owed__q & ~slot;
+        end
+        if (owe_set) begin
+            owed__d = owed__q | slot;
+        end
+        if (clear) begin
+            owed__d = zero16;
+        end
+        oweds = owed__q;
         counters = zero128;
         timers = zero256;
         mb__0__d = mb__0__q;
@@ -10327,6 +10360,7 @@ module drcc_apb__core__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,
         mb__15__q <= mb__15__d;
         valid__q <= valid__d;
         settle__q <= settle__d;
+        owed__q <= owed__d;
         rd_q__q <= rd_q__d;
     end
 

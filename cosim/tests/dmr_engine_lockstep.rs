@@ -113,8 +113,10 @@ struct Coverage {
     eval_overrun: u64,
     clear_over_write: u64,
     holds: u64,
-    /// §4.2 settling: a receive mailbox's first timeout after a recovery re-balanced.
+    /// §4.2 settling: a mailbox's first timeout after a recovery re-balanced.
     rebalanced: u64,
+    /// §4.2 debt: a copy brought an owed mailbox's counter back to 0.
+    debts_paid: u64,
 }
 
 /// A run phase's character.
@@ -324,6 +326,10 @@ impl<const M: usize> Lockstep<M> {
                 c.saturated += (at_limit
                     && pre.e_kind != drcc_cosim::model::drcc::dmr::engine::Kind::Req)
                     as u64;
+                let step = if pre.e_line == 0 { 1 } else { -1 };
+                c.debts_paid += (b.owed
+                    && pre.e_kind != drcc_cosim::model::drcc::dmr::engine::Kind::Req
+                    && b.counter as i16 + step == 0) as u64;
                 c.clear_over_write += i.clear_state as u64;
             } else {
                 c.missed += 1;
@@ -333,7 +339,7 @@ impl<const M: usize> Lockstep<M> {
             let b = &pre_mbx.mb[pre.e_i as usize];
             let expired = b.counter != 0 && b.timer <= 1;
             let within = (b.counter as i16).abs() <= b.limit as i16;
-            c.rebalanced += (b.enable && b.settle && b.dir == RECEIVE && expired && within) as u64;
+            c.rebalanced += (b.enable && b.settle && !b.owed && expired && within) as u64;
         }
         if pre.e_state == E_EVAL && i.clear_state && pre_mbx.mb[pre.e_i as usize].enable {
             c.clear_over_write += 1;
@@ -574,7 +580,8 @@ fn lockstep_covers_every_case<const M: usize>(seeds: std::ops::RangeInclusive<u6
     assert!(t.eval_overrun > 0, "pend_eval set while pending");
     assert!(t.clear_over_write > 0, "clear_state over an engine write");
     assert!(t.holds > 0);
-    assert!(t.rebalanced > 0, "a settling receive mailbox re-balanced");
+    assert!(t.rebalanced > 0, "a settling mailbox re-balanced");
+    assert!(t.debts_paid > 0, "a late copy paid an owed mailbox's debt");
 }
 
 #[test]

@@ -156,6 +156,92 @@ fn timeout_verdict_against_the_dcl_on_a_negative_counter_switches_the_acl() {
     assert!(sys.nodes[0].out.irq, "INT_ENABLE.dmr -> irq");
 }
 
+/// §4.2 debt: a timeout keeps the counter. A copy that comes later than the
+/// timeout pays the judged line's debt back instead of starting an imbalance
+/// that the next expiry would judge against the other line (which carried every
+/// frame); while the debt is owed no copy starts the timer and only a deviation
+/// judges.
+#[test]
+fn a_late_copy_pays_the_debt_of_a_timeout_instead_of_judging_the_other_line() {
+    const TO: u64 = 6;
+    let (mut sys, pa, pb) = device(16, |s| {
+        s.dmr_times(0, 1000, TO as u32, 1000);
+        s.mailbox(0, 7, 0x0, 0x0, 3); // receive every base frame, limit 3
+    });
+    sys.run_ticks(0, 1);
+    sys.run(40);
+    let f = frame(0x77, false, 2, &[1, 2]);
+    sys.send(pb, f);
+    sys.run_ticks(0, TO);
+    sys.run(40);
+    // The timeout judged the DCL; the counter is kept as its debt, the timer stopped.
+    let st = status(&mut sys, 0);
+    assert_eq!(st.flags(), [false, true, false, false], "dcl_rx_fault only");
+    assert_eq!((st.cause(), st.cause_line()), (TIMEOUT, DCL));
+    assert_eq!(mb_state(&mut sys, 0, 7), (-1, 0), "the debt: counter kept");
+    // No second timeout while it is owed, however long.
+    sys.run_ticks(0, 2 * TO);
+    sys.run(40);
+    assert_eq!(mb_state(&mut sys, 0, 7), (-1, 0));
+    // The late DCL copy pays it back: balanced, timer stopped.
+    sys.send(pa, f);
+    sys.run(40);
+    assert_eq!(mb_state(&mut sys, 0, 7), (0, 0));
+    sys.run_ticks(0, 2 * TO);
+    sys.run(40);
+    let st = status(&mut sys, 0);
+    assert_eq!(
+        st.flags(),
+        [false, true, false, false],
+        "the sound RCL is never judged"
+    );
+    // Paid off: the next copy starts the timer again (§4.1).
+    sys.send(pb, f);
+    sys.run(40);
+    assert_eq!(mb_state(&mut sys, 0, 7), (-1, TO as u16));
+}
+
+/// §4.2 debt: while owed, copies of the other line move the counter without a
+/// timer, and a line that keeps losing copies is judged by the deviation, which
+/// clears the counter and the debt.
+#[test]
+fn an_owed_mailbox_is_judged_again_only_by_the_deviation() {
+    const TO: u64 = 6;
+    let (mut sys, _, pb) = device(16, |s| {
+        s.dmr_times(0, 1000, TO as u32, 1000);
+        s.mailbox(0, 7, 0x0, 0x0, 3);
+    });
+    sys.run_ticks(0, 1);
+    sys.run(40);
+    sys.send(pb, frame(0x70, false, 0, &[]));
+    sys.run_ticks(0, TO);
+    sys.run(40);
+    assert_eq!(mb_state(&mut sys, 0, 7), (-1, 0));
+    for (i, want) in [(1u32, -2i8), (2, -3)] {
+        sys.send(pb, frame(0x70 + i, false, 0, &[]));
+        sys.run_ticks(0, 2 * TO);
+        sys.run(40);
+        assert_eq!(mb_state(&mut sys, 0, 7), (want, 0), "no timer while owed");
+    }
+    let before = status(&mut sys, 0);
+    assert_eq!((before.cause(), before.cause_line()), (TIMEOUT, DCL));
+    sys.send(pb, frame(0x73, false, 0, &[]));
+    sys.run_ticks(0, 1);
+    sys.run(40);
+    // |-4| > 3: DEVIATION against the DCL; counter and debt cleared.
+    let st = status(&mut sys, 0);
+    assert_eq!((st.cause(), st.cause_line()), (DEVIATION, DCL));
+    assert_eq!(st.flags(), [false, true, false, false]);
+    assert_eq!(mb_state(&mut sys, 0, 7), (0, 0));
+    sys.send(pb, frame(0x74, false, 0, &[]));
+    sys.run(40);
+    assert_eq!(
+        mb_state(&mut sys, 0, 7),
+        (-1, TO as u16),
+        "the timer runs again"
+    );
+}
+
 /// The clock at which the DRCC's channel delivered the frame (a plain receiver on
 /// the same line delivers it at the same clock) and every MB_STATE read of
 /// mailbox 0 after it, as (request clock - that clock, counter).

@@ -126,8 +126,11 @@ fn faulty_line_copies_are_deleted_and_it_returns_after_recovery() {
     sys.run_until(200 * CPB, "m4 on the DCL", |s| s.got(pa, &m4) == 1);
     sys.run(10);
     assert_eq!(txq_count(&mut sys, 0), 0);
-    // (REQ(DCL) still loads the timer; with the counter at 0 it judges nothing.)
-    assert_eq!(mb_state(&mut sys, 0, 0).0, 0);
+    // §4.2 debt: the timeout kept the counter (the RCL owes its three copies),
+    // and m4 did not count; REQ(DCL) still loads the timer, but an owed mailbox
+    // is judged only by a deviation.
+    assert_eq!(mb_state(&mut sys, 0, 0).0, 3);
+    assert_eq!(status(&mut sys, 0).flags(), [false, false, true, false]);
     // Repair the RCL; after `recovery_delay` ticks the line restarts and sends its
     // CS frame; success clears the flag (§7).
     sys.nodes[0].wire[RCL] = Some(RCL);

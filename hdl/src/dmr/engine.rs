@@ -156,6 +156,8 @@ pub struct DmrEngine<const M: usize> {
     deviation: Signal<Local, Bit>,
     expired: Signal<Local, Bit>,
     rebalance: Signal<Local, Bit>,
+    /// §4.2 debt of the mailbox worked on: a timeout judged it, the counter kept.
+    owed: Signal<Local, Bit>,
     s_idle: Const<2, E_IDLE>,
     s_scan: Const<2, E_SCAN>,
     s_update: Const<2, E_UPDATE>,
@@ -210,6 +212,7 @@ impl<const M: usize> Logic for DmrEngine<M> {
             self.mb.next = self.e_i.q.val();
         }
         self.mbx.sel.next = self.mb.val();
+        self.owed.next = self.mbx.oweds.val().get_bit(self.mb.val().index());
         self.mb_c.next = bit_cast::<7, 4>(self.mb.val()) << 3;
         // Its state, from the block RAM copy read at the previous edge.
         self.c.next = self.mbx.rd_counter.val();
@@ -274,10 +277,11 @@ impl<const M: usize> Logic for DmrEngine<M> {
             }
             self.toward.next = !self.c.val().get_bit(7) & (self.c.val() != self.zero8.val());
         }
-        // balanced stops the timer; the first copy or a lagging one (re)starts it
+        // balanced stops the timer; the first copy or a lagging one (re)starts
+        // it, unless a debt is owed (§4.2)
         if self.c_step.val() == self.zero8.val() {
             self.t_step.next = self.zero16.val();
-        } else if (self.c.val() == self.zero8.val()) | self.toward.val() {
+        } else if !self.owed.val() & ((self.c.val() == self.zero8.val()) | self.toward.val()) {
             self.t_step.next = self.timeout.val();
         } else {
             self.t_step.next = self.t.val();
@@ -295,14 +299,15 @@ impl<const M: usize> Logic for DmrEngine<M> {
             self.t_dec.next = self.t.val() - self.one16.val();
         }
         self.deviation.next = self.c_abs.val() > self.limit.val();
-        self.expired.next =
-            (self.c.val() != self.zero8.val()) & (self.t_dec.val() == self.zero16.val());
-        // §4.2 settling: a receive mailbox's first timeout after its counters
-        // were cleared re-balances it instead of judging a line.
+        // while a debt is owed only a deviation judges (§4.2)
+        self.expired.next = (self.c.val() != self.zero8.val())
+            & (self.t_dec.val() == self.zero16.val())
+            & !self.owed.val();
+        // §4.2 settling: a mailbox's first timeout after its counters were
+        // cleared re-balances it instead of judging a line.
         self.rebalance.next = self.expired.val()
             & !self.deviation.val()
-            & self.mbx.settles.val().get_bit(self.e_i.q.val().index())
-            & !self.cfg_id_word.val().get_bit(30);
+            & self.mbx.settles.val().get_bit(self.e_i.q.val().index());
         // The verdict, on the values before the edge. A fault's counter is not 0:
         // its sign names the line ("a positive value ... hence the RCL is faulty").
         self.fault.next = !self.hold.val()
@@ -324,6 +329,8 @@ impl<const M: usize> Logic for DmrEngine<M> {
         self.mbx.settle_all.next = self.clear_state.val();
         self.mbx.settle_none.next = self.hold.val();
         self.mbx.settle_drop.next = false;
+        self.mbx.owe_set.next = false;
+        self.mbx.owe_drop.next = false;
         // §4.3: the sources set their flags (the newer key wins).
         if self.tx_dcl.val() {
             self.pend_tx_dcl.d.next = true;
@@ -418,6 +425,8 @@ impl<const M: usize> Logic for DmrEngine<M> {
                 } else {
                     self.mbx.counter_d.next = self.c_step.val();
                     self.mbx.timer_d.next = self.t_step.val();
+                    // a counter back at 0 has paid its debt
+                    self.mbx.owe_drop.next = self.c_step.val() == self.zero8.val();
                 }
             }
             self.state.d.next = self.s_idle.val();
@@ -426,7 +435,14 @@ impl<const M: usize> Logic for DmrEngine<M> {
             if self.en.val() {
                 self.mbx.we.next = true;
                 if self.deviation.val() | self.expired.val() {
-                    self.mbx.counter_d.next = self.zero8.val();
+                    // a timeout keeps the counter as the judged line's debt; a
+                    // deviation or a re-balance clears it
+                    if self.deviation.val() | self.rebalance.val() {
+                        self.mbx.counter_d.next = self.zero8.val();
+                        self.mbx.owe_drop.next = true;
+                    } else {
+                        self.mbx.owe_set.next = true;
+                    }
                     self.mbx.timer_d.next = self.zero16.val();
                     self.mbx.settle_drop.next = true;
                 } else {

@@ -22,6 +22,10 @@
 //! last `EVAL` edge and at the `UPDATE` edge belongs to the `IDLE` clock after
 //! them, which does not read it.
 //!
+//! The §4.2 debt bits (`owed`): set by a timeout verdict, which keeps the
+//! counter; dropped when the counter returns to 0 or by a deviation; cleared
+//! with everything by `clear`.
+//!
 //! The register outputs are the registers themselves: the readers (the engine's
 //! mailbox, the host window) slice them in the parent, so no combinational path
 //! runs from this block's inputs to its outputs (one `always` block per module:
@@ -68,11 +72,19 @@ pub struct MailboxState<const M: usize> {
     pub settle_drop: Signal<In, Bit>,
     /// The settling bits, bit i = mailbox i.
     pub settles: Signal<Out, Bits<16>>,
+    // ---- §4.2 debt: a timeout keeps the counter as the judged line's debt ----
+    /// Mailbox `sel` was judged by a timeout at this edge: it owes (over `owe_drop`).
+    pub owe_set: Signal<In, Bit>,
+    /// Mailbox `sel`'s counter is back at 0, or it was judged by a deviation.
+    pub owe_drop: Signal<In, Bit>,
+    /// The debt bits, bit i = mailbox i (0 after `clear`).
+    pub oweds: Signal<Out, Bits<16>>,
     // ---- registers: mailbox i = {timer [23:8], counter [7:0]} ----
     mb: [DFF<Bits<24>>; M],
     copy: Bram<Bits<24>, 4>,
     valid: DFF<Bits<16>>,
     settle: DFF<Bits<16>>,
+    owed: DFF<Bits<16>>,
     rd_q: DFF<Bits<4>>,
     // ---- internals ----
     rd_word: Signal<Local, Bits<24>>,
@@ -109,10 +121,14 @@ impl<const M: usize> Default for MailboxState<M> {
             settle_none: Default::default(),
             settle_drop: Default::default(),
             settles: Default::default(),
+            owe_set: Default::default(),
+            owe_drop: Default::default(),
+            oweds: Default::default(),
             mb: std::array::from_fn(|_| Default::default()),
             copy: Default::default(),
             valid: Default::default(),
             settle: Default::default(),
+            owed: Default::default(),
             rd_q: Default::default(),
             rd_word: Default::default(),
             slot: Default::default(),
@@ -134,7 +150,7 @@ impl<const M: usize> Default for MailboxState<M> {
 impl<const M: usize> Logic for MailboxState<M> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, valid, settle, rd_q);
+        dff_setup!(self, clk, valid, settle, owed, rd_q);
         // the write: one enable per mailbox, the same word to all
         self.slot.next = self.one16.val() << self.sel.val();
         self.word.next =
@@ -170,6 +186,16 @@ impl<const M: usize> Logic for MailboxState<M> {
             self.settle.d.next = self.zero16.val();
         }
         self.settles.next = self.settle.q.val();
+        if self.owe_drop.val() {
+            self.owed.d.next = self.owed.q.val() & !self.slot.val();
+        }
+        if self.owe_set.val() {
+            self.owed.d.next = self.owed.q.val() | self.slot.val();
+        }
+        if self.clear.val() {
+            self.owed.d.next = self.zero16.val();
+        }
+        self.oweds.next = self.owed.q.val();
         // the registers, and the packed outputs (wiring)
         self.counters.next = self.zero128.val();
         self.timers.next = self.zero256.val();

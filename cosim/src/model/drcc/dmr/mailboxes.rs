@@ -41,9 +41,13 @@ pub struct Mailbox {
     pub counter: i8,
     /// DMR ticks left, 0 = stopped.
     pub timer: u16,
-    /// §4.2 settling: set where a recovery clears counter and timer; a receive
+    /// §4.2 settling: set where a recovery clears counter and timer; the
     /// mailbox's first timeout after that re-balances it. 0 in reset mode.
     pub settle: bool,
+    /// §4.2 debt: set by a timeout, which keeps the counter: the copies the
+    /// judged line owes pay it back instead of starting a new imbalance. Cleared
+    /// when the counter is back at 0, by a deviation and by every clearing.
+    pub owed: bool,
 }
 
 impl Default for Mailbox {
@@ -58,6 +62,7 @@ impl Default for Mailbox {
             counter: 0,
             timer: 0,
             settle: false,
+            owed: false,
         }
     }
 }
@@ -103,14 +108,16 @@ impl Mailbox {
     }
 
     /// Counter step of a transfer on `line` (§4.1): +1 for the DCL, -1 for the RCL;
-    /// balanced stops the timer, the first copy or a copy from the lagging line
-    /// (re)starts it, a copy from the leading line leaves it.
+    /// balanced stops the timer (and pays off a debt), the first copy or a copy
+    /// from the lagging line (re)starts it, a copy from the leading line leaves
+    /// it; while a debt is owed (§4.2) no copy starts the timer.
     pub fn step(&mut self, line: usize, timeout: u16) {
         let c = self.counter as i16;
         let c1 = (c + if line == 0 { 1 } else { -1 }).clamp(-128, 127);
         if c1 == 0 {
             self.timer = 0;
-        } else if c == 0 || c1.abs() < c.abs() {
+            self.owed = false;
+        } else if !self.owed && (c == 0 || c1.abs() < c.abs()) {
             self.timer = timeout;
         }
         self.counter = c1 as i8;
@@ -129,10 +136,10 @@ impl Mailbox {
         };
         let (v, judged) = if c.abs() > self.limit as i16 {
             (Some(verdict(true)), true)
-        } else if c != 0 && t1 == 0 {
-            // A receive mailbox's first timeout after a clearing is a new balance
-            // point: the skew of the copies in flight at the clearing (§4.2).
-            let rebalance = self.settle && self.dir == RECEIVE;
+        } else if c != 0 && t1 == 0 && !self.owed {
+            // A mailbox's first timeout after a clearing is a new balance point:
+            // the skew of the copies in flight at the clearing (§4.2).
+            let rebalance = self.settle;
             (
                 if rebalance {
                     crate::model::coverage::hit(
@@ -148,7 +155,13 @@ impl Mailbox {
             (None, false)
         };
         if judged {
-            self.counter = 0;
+            // A timeout keeps the counter as the judged line's debt (§4.2): its
+            // late copies pay it back; a deviation or a re-balance clears it.
+            let timeout = v.is_some_and(|v| !v.deviation);
+            if !timeout {
+                self.counter = 0;
+            }
+            self.owed = timeout;
             self.timer = 0;
             self.settle = false;
         } else {
@@ -198,6 +211,7 @@ impl Mailboxes {
             b.counter = 0;
             b.timer = 0;
             b.settle = false;
+            b.owed = false;
         }
     }
 
@@ -207,6 +221,7 @@ impl Mailboxes {
             b.counter = 0;
             b.timer = 0;
             b.settle = true;
+            b.owed = false;
         }
     }
 

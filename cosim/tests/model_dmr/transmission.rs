@@ -157,3 +157,82 @@ fn faulty_line_copies_are_deleted_and_it_returns_after_recovery() {
         "both copies counted again"
     );
 }
+
+/// §4.2 settling of a transmit mailbox: a recovery clears the counters while the
+/// device's own frame has gone out on the DCL and still waits on the RCL (busy
+/// with frames no mailbox counts), so the RCL copy unbalances the cleared
+/// counter. Its first timeout re-balances it: no fault against the DCL, which
+/// carried the frame. (A transmit mailbox that did not settle judged the DCL
+/// here, and the deletion of §5 then sent the device's frames on the RCL only.)
+#[test]
+fn a_transmit_mailbox_settles_after_a_recovery_between_two_copies() {
+    let mut sys = Sys::new(1);
+    let pa = sys.add_plain(DCL);
+    let pb = sys.add_plain(RCL);
+    // Ticks of 100 bit times, a 20-tick timeout, a 10-tick recovery delay.
+    sys.dmr_times(0, 100, 20, 10);
+    sys.mailbox(0, 0, 0x300 | MB_TX, 0x700, 10);
+    sys.mailbox(0, 1, 0x100, 0x700, 10);
+    sys.start(0);
+    sys.run_until(300 * CPB, "the start-up CS frames", |s| {
+        s.got(pa, &cs(0x7EA)) == 1 && s.got(pb, &cs(0x7EB)) == 1
+    });
+    sys.run(20 * CPB);
+    // A receive fault against the DCL: a frame of mailbox 1 on the RCL only.
+    sys.send(pb, frame(0x101, false, 0, &[]));
+    sys.run_until(30 * 100 * CPB, "dcl_rx_fault", |s| s.probes(0).dcl_rx_fault);
+    // The RCL busy with 14 frames of 0x050 (no mailbox; it wins arbitration), the
+    // device's own frame pushed at once: its DCL copy goes now, its RCL copy after
+    // them, and the DCL's recovery (10 ticks, then the CS frame) comes between.
+    let filler = frame(0x050, false, 8, &[0x55; 8]);
+    let f = frame(0x301, false, 1, &[7]);
+    let mut fillers = 1;
+    let mut done = sys.plain[pb].done;
+    sys.plain[pb].req = Some(filler);
+    sys.push(0, &f);
+    let (mut dcl_copy, mut recovered, mut rcl_copy) = (None, None, None);
+    let end = sys.clock + 60 * 100 * CPB;
+    while sys.clock < end {
+        sys.step();
+        if sys.plain[pb].done > done {
+            done = sys.plain[pb].done;
+            if fillers < 14 {
+                sys.plain[pb].req = Some(filler);
+                fillers += 1;
+            }
+        }
+        let p = sys.probes(0);
+        assert!(
+            !p.dcl_tx_fault && !p.rcl_tx_fault,
+            "a transmit fault at clock {}",
+            sys.clock
+        );
+        if dcl_copy.is_none() && sys.got(pa, &f) == 1 {
+            dcl_copy = Some(sys.clock);
+        }
+        if recovered.is_none() && !p.dcl_rx_fault {
+            recovered = Some(sys.clock);
+        }
+        if rcl_copy.is_none() && sys.got(pb, &f) == 1 {
+            rcl_copy = Some(sys.clock);
+        }
+    }
+    let (d, r, c) = (
+        dcl_copy.expect("the DCL copy"),
+        recovered.expect("the recovery"),
+        rcl_copy.expect("the RCL copy"),
+    );
+    assert!(
+        d < r && r < c,
+        "the recovery between the two copies: {d} {r} {c}"
+    );
+    // 60 ticks: well past the RCL copy's timeout (20 ticks), re-balanced.
+    assert!(end > c + 25 * 100 * CPB);
+    let st = status(&mut sys, 0);
+    assert_eq!(st.flags(), [false; 4], "no line judged");
+    // Active again; the receive fault against the ACL had switched it (§6).
+    assert_eq!((st.state(), st.acl()), (ACTIVE, RCL));
+    // Re-balanced (§4.2: counter 0, no debt); the timer may still run down a
+    // REQ's load (§4.1), which judges nothing at a balanced counter.
+    assert_eq!(mb_state(&mut sys, 0, 0).0, 0, "re-balanced");
+}

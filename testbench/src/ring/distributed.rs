@@ -145,11 +145,6 @@ impl DistNode {
         self
     }
 
-    /// Whether no rebuild is going on.
-    pub fn running(&self) -> bool {
-        !matches!(self.state, State::Rebuild { .. })
-    }
-
     /// Whether the ring is settled: no rebuild, and no holder's decision pending
     /// (whose relay change would restart the controller).
     pub fn settled(&self) -> bool {

@@ -10,6 +10,7 @@ pub mod ctrl_reg;
 pub mod dmr_check;
 pub mod dmr_registers;
 pub mod dmr_regs;
+pub mod ecss_registers;
 pub mod filters;
 pub mod generate;
 pub mod hub_registers;

@@ -102,6 +102,13 @@ pub(super) const INT_FIELDS: &[Field] = &[
         "channel A's tx_failed: it dropped the frame it held (single shot, an abort, a refusal)",
     ),
     f("tx_failure_b", 16, 1, 0, "channel B's tx_failed"),
+    f(
+        "bus_toggle",
+        17,
+        1,
+        0,
+        "ECSS bus selection: the node toggled bus, or stopped toggling (contract §12)",
+    ),
 ];
 
 /// `FILT_IDk` (contract §11.1): the `TX_ID` layout.

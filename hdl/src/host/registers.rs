@@ -69,6 +69,10 @@ pub const FILT_ID1: u32 = 44;
 pub const FILT_MASK1: u32 = 45;
 pub const RX_TIME: u32 = 46;
 pub const STATS_CLR: u32 = 47;
+pub const ECSS_CFG: u32 = 48;
+pub const ECSS_HB: u32 = 49;
+pub const ECSS_PERIOD: u32 = 50;
+pub const ECSS_STATUS: u32 = 51;
 
 /// The constant read from `ID`: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
@@ -77,7 +81,7 @@ pub const ID_VALUE: u32 = 0x4452_4343;
 /// changes its meaning.
 pub const VERSION_MAJOR: u32 = 1;
 /// `VERSION.minor`: changes when a register or field is added.
-pub const VERSION_MINOR: u32 = 4;
+pub const VERSION_MINOR: u32 = 5;
 
 /// The register map, in index order.
 pub const REGISTERS: &[Register] = &[
@@ -438,9 +442,13 @@ pub const REGISTERS: &[Register] = &[
         name: "STATS_CLR",
         index: STATS_CLR,
         access: Access::Wo,
-        desc: "Clears STATS0, STATS1, OMISSIONS, DMR_RX_STATS and the AUX_x failures and recoveries counts (contract §11.4)",
+        desc: "Clears STATS0, STATS1, OMISSIONS, DMR_RX_STATS, ECSS_STATUS.ctoggle and the AUX_x failures and recoveries counts (contract §11.4)",
         fields: &[cmd("clear", 0, "1 = clear the statistics")],
     },
+    super::ecss_registers::ECSS_CFG_REG,
+    super::ecss_registers::ECSS_HB_REG,
+    super::ecss_registers::ECSS_PERIOD_REG,
+    super::ecss_registers::ECSS_STATUS_REG,
 ];
 
 /// Main FSM state encodings (paper Table 1), for the header (`DRCC_STATE_*`).
@@ -461,7 +469,8 @@ pub static MAP: RegisterMap = RegisterMap {
         write to a read-only or unmapped address, a cfg field written outside reset mode, a \
         CTRL write with redundancy and a listen-only channel (refused as a whole), a refused \
         push or pop sets `INT_STATUS.illegal`. DMR mode (registers 25..35): \
-        `cosim/src/model/dmr_contract.md` §2; its illegal configurations are refused the same way.",
+        `cosim/src/model/dmr_contract.md` §2; its illegal configurations are refused the same way. \
+        ECSS bus selection (registers 48..51): contract §12.",
     registers: REGISTERS,
     lists: &[
         CodeList {

@@ -35,6 +35,7 @@ use crate::host::busoff_recovery::BusoffRecovery;
 use crate::host::captures::Captures;
 use crate::host::dmr_check::DmrCheck;
 use crate::host::dmr_regs::DmrRegs;
+use crate::host::ecss_regs::EcssRegs;
 use crate::host::filters::FilterRegs;
 use crate::host::status_words::StatusWords;
 use crate::host::wishbone::WbRegs;
@@ -44,6 +45,7 @@ use crate::memory::tx_buffer::TxBuffer;
 use crate::rmb::aux_fsm::AuxFsm;
 use crate::rmb::bit_tick::BitTick;
 use crate::rmb::echo::Echo;
+use crate::rmb::ecss::BusSelect;
 use crate::rmb::main_fsm::MainFsm;
 use crate::rmb::stats::RedundancyStats;
 use rust_hdl::prelude::*;
@@ -275,6 +277,9 @@ pub struct DrccCore<const M: usize> {
     dmr_check: DmrCheck<M>,
     dmr_regs: DmrRegs<M>,
     filters: FilterRegs,
+    // ECSS bus selection (§12)
+    ecss_regs: EcssRegs,
+    ecss: BusSelect,
     mailbox_cfg: IfMailboxes<MailboxCfg, M>,
     dmr_ctl: DmrControl,
     dmr_eng: IfMailboxes<DmrEngine<M>, M>,

@@ -69,10 +69,41 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.wb_err_o.next = self.regs.wb_err_o.val();
         self.irq.next = self.regs.irq.val();
         // the registers kept outside the block: DMR (25..35) and filters (§11.1)
-        self.regs.ext_hit.next = self.dmr_check.hit.val() | self.filters.hit.val();
-        self.regs.ext_word.next = self.dmr_check.word.val() | self.filters.word.val();
-        self.regs.ext_writable.next = self.dmr_check.writable.val() | self.filters.hit.val();
-        self.regs.ext_illegal.next = self.dmr_check.illegal.val() | self.filters.illegal.val();
+        self.regs.ext_hit.next =
+            self.dmr_check.hit.val() | self.filters.hit.val() | self.ecss_regs.hit.val();
+        self.regs.ext_word.next =
+            self.dmr_check.word.val() | self.filters.word.val() | self.ecss_regs.word.val();
+        self.regs.ext_writable.next = self.dmr_check.writable.val()
+            | self.filters.hit.val()
+            | self.ecss_regs.writable.val();
+        self.regs.ext_illegal.next = self.dmr_check.illegal.val()
+            | self.filters.illegal.val()
+            | self.ecss_regs.illegal.val();
+        self.regs.ev_bus_toggle.next = self.ecss.ev_toggle.val();
+        // ---- ECSS bus selection (§12) ----
+        self.ecss_regs.clk.next = self.clk.val();
+        self.ecss_regs.rst.next = self.rst.val();
+        self.ecss_regs.wr.next = self.regs.wr_o.val();
+        self.ecss_regs.adr.next = self.wb_adr_i.val();
+        self.ecss_regs.wdat.next = self.wb_dat_i.val();
+        self.ecss_regs.reset_mode.next = self.regs.reset_mode.val();
+        self.ecss_regs.status_word.next = self.ecss.word.val();
+        self.ecss.clk.next = self.clk.val();
+        self.ecss.rst.next = self.rst.val();
+        self.ecss.on.next = self.regs.redundancy.val()
+            & self.ecss_regs.enable.val()
+            & !self.regs.reset_mode.val();
+        self.ecss.stats_clear.next = self.regs.stats_clear.val();
+        self.ecss.tick.next = self.ticker.tick.val();
+        self.ecss.bdefault.next = self.ecss_regs.bdefault.val();
+        self.ecss.ttoggle.next = self.ecss_regs.ttoggle.val();
+        self.ecss.ntoggle.next = self.ecss_regs.ntoggle.val();
+        self.ecss.period.next = self.ecss_regs.period.val();
+        self.ecss.hb.next = self.ecss_regs.hb.val();
+        self.ecss.rx_valid_a.next = self.chan_a.rx_valid.val();
+        self.ecss.key_a.next = self.rx_frame_a.val().get_bits::<31>(68);
+        self.ecss.rx_valid_b.next = self.chan_b.rx_valid.val();
+        self.ecss.key_b.next = self.rx_frame_b.val().get_bits::<31>(68);
         self.filters.clk.next = self.clk.val();
         self.filters.rst.next = self.rst.val();
         self.filters.wr.next = self.regs.wr_o.val();
@@ -294,8 +325,14 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.main.dual_tx.next =
             self.regs.dual_tx.val() & (!self.regs.star.val() | self.echo.star_split.val());
         self.main.queued.next = self.txbuf.count_a.val().any();
-        self.main.valid_a.next = self.aux_a.valid.val();
-        self.main.valid_b.next = self.aux_b.valid.val();
+        // §12.2: under the ECSS policy the bus in use is the only valid channel
+        if self.regs.redundancy.val() & self.ecss_regs.enable.val() {
+            self.main.valid_a.next = !self.ecss.bus.val();
+            self.main.valid_b.next = self.ecss.bus.val();
+        } else {
+            self.main.valid_a.next = self.aux_a.valid.val();
+            self.main.valid_b.next = self.aux_b.valid.val();
+        }
         self.main.pending_a.next = self.chan_a.tx_pending.val();
         self.main.pending_b.next = self.chan_b.tx_pending.val();
         self.main.done_a.next = self.chan_a.tx_done.val();

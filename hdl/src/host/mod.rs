@@ -11,6 +11,7 @@ pub mod dmr_check;
 pub mod dmr_registers;
 pub mod dmr_regs;
 pub mod ecss_registers;
+pub mod ecss_regs;
 pub mod filters;
 pub mod generate;
 pub mod hub_registers;

@@ -116,6 +116,8 @@ pub struct WbRegs {
     pub ev_tx_failure_a: Signal<In, Bit>,
     /// Channel B's `tx_failed`.
     pub ev_tx_failure_b: Signal<In, Bit>,
+    /// The ECSS bus selection toggled or gave up (`INT_STATUS.bus_toggle`, §12).
+    pub ev_bus_toggle: Signal<In, Bit>,
     /// A whole-word write is taken at this edge (the DMR registers take no other).
     pub wr_o: Signal<Out, Bit>,
     // ---- configuration out ----
@@ -188,7 +190,7 @@ pub struct WbRegs {
     /// `STATS_CLR.clear` written 1: the statistics clear at this edge (§11.4).
     pub stats_clear: Signal<Out, Bit>,
     // ---- blocks ----
-    bus: WbSlave<17>,
+    bus: WbSlave<18>,
     ctrl: CtrlReg,
     ctrl_check: CtrlCheck,
     // ---- registers ----
@@ -221,7 +223,7 @@ pub struct WbRegs {
     rdata: Signal<Local, Bits<32>>,
     wdat: Signal<Local, Bits<32>>,
     illegal: Signal<Local, Bit>,
-    w1c: Signal<Local, Bits<17>>,
+    w1c: Signal<Local, Bits<18>>,
     target_count: Signal<Local, Bits<4>>,
     es_evt: Signal<Local, Bit>,
     tx_data64: Signal<Local, Bits<64>>,
@@ -277,10 +279,11 @@ pub struct WbRegs {
     i_tx_done_b: Constant<Bits<5>>,
     i_tx_failure_a: Constant<Bits<5>>,
     i_tx_failure_b: Constant<Bits<5>>,
+    i_bus_toggle: Constant<Bits<5>>,
     /// `INT_STATUS.bus_error` as a mask (the re-arm of §10.2).
-    m_bus_error: Constant<Bits<17>>,
+    m_bus_error: Constant<Bits<18>>,
     /// `INT_STATUS.arb_lost` as a mask.
-    m_arb_lost: Constant<Bits<17>>,
+    m_arb_lost: Constant<Bits<18>>,
     // ---- reset values and codes ----
     btr_reset: Constant<Bits<28>>,
     rmb_cfg_reset: Constant<Bits<32>>,
@@ -289,7 +292,7 @@ pub struct WbRegs {
     zero2: Constant<Bits<2>>,
     zero4: Constant<Bits<4>>,
     zero6: Constant<Bits<6>>,
-    zero17: Constant<Bits<17>>,
+    zero18: Constant<Bits<18>>,
     zero15: Constant<Bits<15>>,
     zero16: Constant<Bits<16>>,
     zero31: Constant<Bits<31>>,
@@ -324,8 +327,8 @@ impl Default for WbRegs {
     fn default() -> Self {
         stored_in("BTR", 28);
         stored_in("RMB_CFG", 32);
-        stored_in("INT_STATUS", 17);
-        stored_in("INT_ENABLE", 17);
+        stored_in("INT_STATUS", 18);
+        stored_in("INT_ENABLE", 18);
         let field_reset = |reg: &str, field: &str| MAP.field(reg, field).reset;
         Self {
             clk: Default::default(),
@@ -378,6 +381,7 @@ impl Default for WbRegs {
             ev_tx_done_b: Default::default(),
             ev_tx_failure_a: Default::default(),
             ev_tx_failure_b: Default::default(),
+            ev_bus_toggle: Default::default(),
             wr_o: Default::default(),
             brp: Default::default(),
             view_on: Default::default(),
@@ -480,6 +484,7 @@ impl Default for WbRegs {
             i_tx_done_b: lsb(&MAP, "INT_STATUS", "tx_done_b", 1),
             i_tx_failure_a: lsb(&MAP, "INT_STATUS", "tx_failure_a", 1),
             i_tx_failure_b: lsb(&MAP, "INT_STATUS", "tx_failure_b", 1),
+            i_bus_toggle: lsb(&MAP, "INT_STATUS", "bus_toggle", 1),
             m_bus_error: Constant::new((MAP.field("INT_STATUS", "bus_error").mask() as u64).into()),
             m_arb_lost: Constant::new((MAP.field("INT_STATUS", "arb_lost").mask() as u64).into()),
             btr_reset: reset(map::register("BTR").unwrap().reset_value()),
@@ -489,7 +494,7 @@ impl Default for WbRegs {
             zero2: Constant::new(0.into()),
             zero4: Constant::new(0.into()),
             zero6: Constant::new(0.into()),
-            zero17: Constant::new(0.into()),
+            zero18: Constant::new(0.into()),
             zero15: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
             zero31: Constant::new(0.into()),

@@ -69,9 +69,9 @@ impl Logic for WbRegs {
         } else if self.wb_adr_i.val() == self.a_dedup_cfg.val() {
             self.rdata.next = bit_cast::<32, 15>(self.window_q.q.val()) << self.d_window.val();
         } else if self.wb_adr_i.val() == self.a_int_status.val() {
-            self.rdata.next = bit_cast::<32, 17>(self.bus.int_status.val());
+            self.rdata.next = bit_cast::<32, 18>(self.bus.int_status.val());
         } else if self.wb_adr_i.val() == self.a_int_enable.val() {
-            self.rdata.next = bit_cast::<32, 17>(self.bus.int_enable.val());
+            self.rdata.next = bit_cast::<32, 18>(self.bus.int_enable.val());
         } else if self.wb_adr_i.val() == self.a_tx_id.val() {
             self.rdata.next = bit_cast::<32, 31>(self.tx_id_q.q.val());
         } else if self.wb_adr_i.val() == self.a_tx_ctrl.val() {
@@ -128,9 +128,9 @@ impl Logic for WbRegs {
         self.ctrl_check.busoff_manual.next = self.ctrl.busoff_manual.val();
         self.ctrl_check.first_copy.next = self.ctrl.first_copy.val();
         self.illegal.next = false;
-        self.w1c.next = self.zero17.val();
+        self.w1c.next = self.zero18.val();
         self.bus.int_enable_we.next = false;
-        self.bus.int_enable_d.next = self.wb_dat_i.val().get_bits::<17>(0);
+        self.bus.int_enable_d.next = self.wb_dat_i.val().get_bits::<18>(0);
         self.push.next = false;
         self.pop.next = false;
         self.stats_clear.next = false;
@@ -175,7 +175,7 @@ impl Logic for WbRegs {
                     self.illegal.next = true;
                 }
             } else if self.wb_adr_i.val() == self.a_int_status.val() {
-                self.w1c.next = self.wb_dat_i.val().get_bits::<17>(0);
+                self.w1c.next = self.wb_dat_i.val().get_bits::<18>(0);
             } else if self.wb_adr_i.val() == self.a_int_enable.val() {
                 self.bus.int_enable_we.next = true;
             } else if self.wb_adr_i.val() == self.a_tx_id.val() {
@@ -235,27 +235,28 @@ impl Logic for WbRegs {
         }
 
         // ---- interrupts (§8) and statistics ----
-        self.bus.events.next = (bit_cast::<17, 1>(self.ev_rx.val().into()) << self.i_rx.val())
-            | (bit_cast::<17, 1>(self.ev_tx_done.val().into()) << self.i_tx_done.val())
-            | (bit_cast::<17, 1>(self.ev_switch.val().into()) << self.i_switch.val())
-            | (bit_cast::<17, 1>(self.es_evt.val().into()) << self.i_err_state.val())
-            | (bit_cast::<17, 1>(self.ev_overrun.val().into()) << self.i_overrun.val())
-            | (bit_cast::<17, 1>(self.ev_tx_failure.val().into()) << self.i_tx_failure.val())
-            | (bit_cast::<17, 1>(self.illegal.val().into()) << self.i_illegal.val())
-            | (bit_cast::<17, 1>(self.ev_aux.val().into()) << self.i_aux.val())
-            | (bit_cast::<17, 1>(self.ev_dmr.val().into()) << self.i_dmr.val())
-            | (bit_cast::<17, 1>(self.ev_domain.val().into()) << self.i_domain.val())
-            | (bit_cast::<17, 1>(self.ev_err_warning.val().into()) << self.i_err_warning.val())
-            | (bit_cast::<17, 1>(self.ev_arb_lost.val().into()) << self.i_arb_lost.val())
-            | (bit_cast::<17, 1>(self.ev_bus_error.val().into()) << self.i_bus_error.val())
-            | (bit_cast::<17, 1>(self.ev_tx_done_a.val().into()) << self.i_tx_done_a.val())
-            | (bit_cast::<17, 1>(self.ev_tx_done_b.val().into()) << self.i_tx_done_b.val())
-            | (bit_cast::<17, 1>(self.ev_tx_failure_a.val().into()) << self.i_tx_failure_a.val())
-            | (bit_cast::<17, 1>(self.ev_tx_failure_b.val().into()) << self.i_tx_failure_b.val());
+        self.bus.events.next = (bit_cast::<18, 1>(self.ev_rx.val().into()) << self.i_rx.val())
+            | (bit_cast::<18, 1>(self.ev_tx_done.val().into()) << self.i_tx_done.val())
+            | (bit_cast::<18, 1>(self.ev_switch.val().into()) << self.i_switch.val())
+            | (bit_cast::<18, 1>(self.es_evt.val().into()) << self.i_err_state.val())
+            | (bit_cast::<18, 1>(self.ev_overrun.val().into()) << self.i_overrun.val())
+            | (bit_cast::<18, 1>(self.ev_tx_failure.val().into()) << self.i_tx_failure.val())
+            | (bit_cast::<18, 1>(self.illegal.val().into()) << self.i_illegal.val())
+            | (bit_cast::<18, 1>(self.ev_aux.val().into()) << self.i_aux.val())
+            | (bit_cast::<18, 1>(self.ev_dmr.val().into()) << self.i_dmr.val())
+            | (bit_cast::<18, 1>(self.ev_domain.val().into()) << self.i_domain.val())
+            | (bit_cast::<18, 1>(self.ev_err_warning.val().into()) << self.i_err_warning.val())
+            | (bit_cast::<18, 1>(self.ev_arb_lost.val().into()) << self.i_arb_lost.val())
+            | (bit_cast::<18, 1>(self.ev_bus_error.val().into()) << self.i_bus_error.val())
+            | (bit_cast::<18, 1>(self.ev_tx_done_a.val().into()) << self.i_tx_done_a.val())
+            | (bit_cast::<18, 1>(self.ev_tx_done_b.val().into()) << self.i_tx_done_b.val())
+            | (bit_cast::<18, 1>(self.ev_tx_failure_a.val().into()) << self.i_tx_failure_a.val())
+            | (bit_cast::<18, 1>(self.ev_tx_failure_b.val().into()) << self.i_tx_failure_b.val())
+            | (bit_cast::<18, 1>(self.ev_bus_toggle.val().into()) << self.i_bus_toggle.val());
         self.bus.w1c.next = self.w1c.val();
         // §10.2: acknowledging bus_error / arb_lost re-arms the captures
-        self.rearm_err.next = (self.w1c.val() & self.m_bus_error.val()) != self.zero17.val();
-        self.rearm_alc.next = (self.w1c.val() & self.m_arb_lost.val()) != self.zero17.val();
+        self.rearm_err.next = (self.w1c.val() & self.m_bus_error.val()) != self.zero18.val();
+        self.rearm_alc.next = (self.w1c.val() & self.m_arb_lost.val()) != self.zero18.val();
         // the refused write's answer is ERR (illegal comes only with a write)
         self.err_q.d.next = self.illegal.val();
         self.es_a_prev.d.next = self.es_a.val();

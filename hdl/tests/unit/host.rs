@@ -6,6 +6,7 @@ mod ctrl_check;
 mod ctrl_reg;
 mod dmr_check;
 mod dmr_regs;
+mod ecss_regs;
 mod filters;
 mod hub_registers;
 mod map;

@@ -3,6 +3,7 @@
 mod aux_fsm;
 mod bit_tick;
 mod echo;
+mod ecss;
 mod main_fsm;
 mod star;
 mod stats;

@@ -974,6 +974,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     reg  regs__ev_tx_done_b;
     reg  regs__ev_tx_failure_a;
     reg  regs__ev_tx_failure_b;
+    reg  regs__ev_bus_toggle;
     wire  regs__wr_o;
     wire  regs__reset_mode;
     wire  regs__reset_mode_d;
@@ -1061,6 +1062,51 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     wire  [31:0] filters__mask0;
     wire  [30:0] filters__id1;
     wire  [31:0] filters__mask1;
+    reg  ecss_regs__clk;
+    reg  ecss_regs__rst;
+    reg  ecss_regs__wr;
+    reg  [5:0] ecss_regs__adr;
+    reg  [31:0] ecss_regs__wdat;
+    reg  ecss_regs__reset_mode;
+    reg  [31:0] ecss_regs__status_word;
+    wire  ecss_regs__hit;
+    wire  ecss_regs__writable;
+    wire  [31:0] ecss_regs__word;
+    wire  ecss_regs__illegal;
+    wire  [7:0] ecss_regs__ttoggle;
+    wire  [7:0] ecss_regs__ntoggle;
+    wire  ecss_regs__bdefault;
+    wire  ecss_regs__enable;
+    wire  [29:0] ecss_regs__hb;
+    wire  [23:0] ecss_regs__period;
+    reg  ecss__clk;
+    reg  ecss__rst;
+    reg  ecss__on;
+    reg  [23:0] ecss__hb_cnt;
+    reg  ecss__bdefault;
+    reg  [7:0] ecss__ttoggle;
+    reg  [7:0] ecss__ntoggle;
+    reg  [23:0] ecss__period;
+    reg  [29:0] ecss__hb;
+    reg  ecss__rx_valid_a;
+    reg  [30:0] ecss__key_a;
+    reg  ecss__rx_valid_b;
+    reg  [30:0] ecss__key_b;
+    wire  ecss__bus;
+    wire  ecss__ev_toggle;
+    wire  ecss__toggled;
+    wire  [31:0] ecss__word;
+    wire  ecss__clock_restart;
+    wire  ecss__clock_run;
+    reg  ecss_count__clk;
+    reg  ecss_count__clear;
+    reg  ecss_count__toggled;
+    wire  [7:0] ecss_count__count;
+    reg  ecss_clock__clk;
+    reg  ecss_clock__tick;
+    reg  ecss_clock__restart;
+    reg  ecss_clock__run;
+    wire  [23:0] ecss_clock__count;
     reg  mailbox_cfg__0__clk;
     reg  [3:0] mailbox_cfg__0__read_address;
     wire  [30:0] mailbox_cfg__0__id_word;
@@ -1607,6 +1653,7 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .ev_tx_done_b(regs__ev_tx_done_b),
         .ev_tx_failure_a(regs__ev_tx_failure_a),
         .ev_tx_failure_b(regs__ev_tx_failure_b),
+        .ev_bus_toggle(regs__ev_bus_toggle),
         .wr_o(regs__wr_o),
         .reset_mode(regs__reset_mode),
         .reset_mode_d(regs__reset_mode_d),
@@ -1700,6 +1747,59 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .mask0(filters__mask0),
         .id1(filters__id1),
         .mask1(filters__mask1)
+    );
+    drcc_pelican_apb__pelican__core__ecss_regs ecss_regs(
+        .clk(ecss_regs__clk),
+        .rst(ecss_regs__rst),
+        .wr(ecss_regs__wr),
+        .adr(ecss_regs__adr),
+        .wdat(ecss_regs__wdat),
+        .reset_mode(ecss_regs__reset_mode),
+        .status_word(ecss_regs__status_word),
+        .hit(ecss_regs__hit),
+        .writable(ecss_regs__writable),
+        .word(ecss_regs__word),
+        .illegal(ecss_regs__illegal),
+        .ttoggle(ecss_regs__ttoggle),
+        .ntoggle(ecss_regs__ntoggle),
+        .bdefault(ecss_regs__bdefault),
+        .enable(ecss_regs__enable),
+        .hb(ecss_regs__hb),
+        .period(ecss_regs__period)
+    );
+    drcc_pelican_apb__pelican__core__ecss ecss(
+        .clk(ecss__clk),
+        .rst(ecss__rst),
+        .on(ecss__on),
+        .hb_cnt(ecss__hb_cnt),
+        .bdefault(ecss__bdefault),
+        .ttoggle(ecss__ttoggle),
+        .ntoggle(ecss__ntoggle),
+        .period(ecss__period),
+        .hb(ecss__hb),
+        .rx_valid_a(ecss__rx_valid_a),
+        .key_a(ecss__key_a),
+        .rx_valid_b(ecss__rx_valid_b),
+        .key_b(ecss__key_b),
+        .bus(ecss__bus),
+        .ev_toggle(ecss__ev_toggle),
+        .toggled(ecss__toggled),
+        .word(ecss__word),
+        .clock_restart(ecss__clock_restart),
+        .clock_run(ecss__clock_run)
+    );
+    drcc_pelican_apb__pelican__core__ecss_count ecss_count(
+        .clk(ecss_count__clk),
+        .clear(ecss_count__clear),
+        .toggled(ecss_count__toggled),
+        .count(ecss_count__count)
+    );
+    drcc_pelican_apb__pelican__core__ecss_clock ecss_clock(
+        .clk(ecss_clock__clk),
+        .tick(ecss_clock__tick),
+        .restart(ecss_clock__restart),
+        .run(ecss_clock__run),
+        .count(ecss_clock__count)
     );
     drcc_pelican_apb__pelican__core__mailbox_cfg__0 mailbox_cfg__0(
         .clk(mailbox_cfg__0__clk),
@@ -2266,10 +2366,38 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         wb_ack_o = regs__wb_ack_o;
         wb_err_o = regs__wb_err_o;
         irq = regs__irq;
-        regs__ext_hit = dmr_check__hit | filters__hit;
-        regs__ext_word = dmr_check__word | filters__word;
-        regs__ext_writable = dmr_check__writable | filters__hit;
-        regs__ext_illegal = dmr_check__illegal | filters__illegal;
+        regs__ext_hit = dmr_check__hit | filters__hit | ecss_regs__hit;
+        regs__ext_word = dmr_check__word | filters__word | ecss_regs__word;
+        regs__ext_writable = dmr_check__writable | filters__hit | ecss_regs__writable;
+        regs__ext_illegal = dmr_check__illegal | filters__illegal | ecss_regs__illegal;
+        regs__ev_bus_toggle = ecss__ev_toggle;
+        ecss_regs__clk = clk;
+        ecss_regs__rst = rst;
+        ecss_regs__wr = regs__wr_o;
+        ecss_regs__adr = wb_adr_i;
+        ecss_regs__wdat = wb_dat_i;
+        ecss_regs__reset_mode = regs__reset_mode;
+        ecss_regs__status_word = ecss__word | ((ecss_count__count) & 32'hffffffff);
+        ecss_count__clk = clk;
+        ecss_count__clear = rst | regs__stats_clear;
+        ecss_count__toggled = ecss__toggled;
+        ecss__clk = clk;
+        ecss__rst = rst;
+        ecss__on = regs__redundancy & ecss_regs__enable & ~regs__reset_mode;
+        ecss__hb_cnt = ecss_clock__count;
+        ecss_clock__clk = clk;
+        ecss_clock__tick = ticker__tick;
+        ecss_clock__restart = ecss__clock_restart;
+        ecss_clock__run = ecss__clock_run;
+        ecss__bdefault = ecss_regs__bdefault;
+        ecss__ttoggle = ecss_regs__ttoggle;
+        ecss__ntoggle = ecss_regs__ntoggle;
+        ecss__period = ecss_regs__period;
+        ecss__hb = ecss_regs__hb;
+        ecss__rx_valid_a = chan_a__rx_valid;
+        ecss__key_a = rx_frame_a[(32'h44)+:(31)];
+        ecss__rx_valid_b = chan_b__rx_valid;
+        ecss__key_b = rx_frame_b[(32'h44)+:(31)];
         filters__clk = clk;
         filters__rst = rst;
         filters__wr = regs__wr_o;
@@ -2467,8 +2595,14 @@ module drcc_pelican_apb__pelican__core(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         main__hold = rmb_hold;
         main__dual_tx = regs__dual_tx & (~regs__star | echo__star_split);
         main__queued = |txbuf__count_a;
-        main__valid_a = aux_a__valid;
-        main__valid_b = aux_b__valid;
+        if (regs__redundancy & ecss_regs__enable) begin
+            main__valid_a = ~ecss__bus;
+            main__valid_b = ecss__bus;
+        end
+        else begin
+            main__valid_a = aux_a__valid;
+            main__valid_b = aux_b__valid;
+        end
         main__pending_a = chan_a__tx_pending;
         main__pending_b = chan_b__tx_pending;
         main__done_a = chan_a__tx_done;
@@ -10828,6 +10962,453 @@ module drcc_pelican_apb__pelican__core__echo__follow(clk,clear,on,rx_valid_a,key
 endmodule // drcc_pelican_apb__pelican__core__echo__follow
 
 
+module drcc_pelican_apb__pelican__core__ecss(clk,rst,on,hb_cnt,bdefault,ttoggle,ntoggle,period,hb,rx_valid_a,key_a,rx_valid_b,key_b,bus,ev_toggle,toggled,word,clock_restart,clock_run);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  on;
+    input wire  [23:0] hb_cnt;
+    input wire  bdefault;
+    input wire  [7:0] ttoggle;
+    input wire  [7:0] ntoggle;
+    input wire  [23:0] period;
+    input wire  [29:0] hb;
+    input wire  rx_valid_a;
+    input wire  [30:0] key_a;
+    input wire  rx_valid_b;
+    input wire  [30:0] key_b;
+    output reg  bus;
+    output reg  ev_toggle;
+    output reg  toggled;
+    output reg  [31:0] word;
+    output reg  clock_restart;
+    output reg  clock_run;
+
+    // Constant declarations
+    localparam  mask_base = 31'h600007ff;
+    localparam  mask_ext = 31'h7fffffff;
+    localparam  one8 = 8'h1;
+    localparam  zero8 = 8'h0;
+    localparam  s_bus = 5'b1000;
+    localparam  s_no_master = 5'b1001;
+    localparam  s_missed = 5'b10000;
+
+    // Stub signals
+    reg  bus_q__d;
+    reg  bus_q__q;
+    reg  [7:0] missed__d;
+    reg  [7:0] missed__q;
+    reg  [7:0] run__d;
+    reg  [7:0] run__q;
+    reg  no_master__d;
+    reg  no_master__q;
+
+    // Local signals
+    reg  [30:0] want;
+    reg  [30:0] cmp;
+    reg  hb_a;
+    reg  hb_b;
+    reg  hb_own;
+    reg  hb_other;
+    reg  toggle;
+    reg  give_up;
+    reg  restart;
+
+    // Update code
+    always @(*) begin
+        bus_q__d = bus_q__q;
+        missed__d = missed__q;
+        run__d = run__q;
+        no_master__d = no_master__q;
+        if (hb[32'h1d]) begin
+            cmp = mask_ext;
+        end
+        else begin
+            cmp = mask_base;
+        end
+        want = ((hb) & 31'h7fffffff) & cmp;
+        hb_a = rx_valid_a & ((key_a & cmp) == want);
+        hb_b = rx_valid_b & ((key_b & cmp) == want);
+        if (bus_q__q) begin
+            hb_own = hb_b;
+            hb_other = hb_a;
+        end
+        else begin
+            hb_own = hb_a;
+            hb_other = hb_b;
+        end
+        toggle = 1'b0;
+        give_up = 1'b0;
+        restart = 1'b1;
+        if (rst | ~on) begin
+            if (rst) begin
+                bus_q__d = 1'b0;
+            end
+            else begin
+                bus_q__d = bdefault;
+            end
+            missed__d = zero8;
+            run__d = zero8;
+            no_master__d = 1'b0;
+        end
+        else if (hb_own) begin
+            missed__d = zero8;
+            run__d = zero8;
+            no_master__d = 1'b0;
+        end
+        else if (no_master__q & hb_other) begin
+            toggle = 1'b1;
+            run__d = zero8;
+            no_master__d = 1'b0;
+        end
+        else if (~no_master__q & (hb_cnt >= period)) begin
+            if ((missed__q + one8) < ttoggle) begin
+                missed__d = missed__q + one8;
+            end
+            else begin
+                missed__d = zero8;
+                if (run__q < ntoggle) begin
+                    toggle = 1'b1;
+                    run__d = run__q + one8;
+                end
+                else begin
+                    no_master__d = 1'b1;
+                    give_up = 1'b1;
+                end
+            end
+        end
+        else begin
+            restart = 1'b0;
+        end
+        if (toggle) begin
+            bus_q__d = ~bus_q__q;
+            missed__d = zero8;
+        end
+        clock_restart = restart;
+        clock_run = ~no_master__q;
+        ev_toggle = toggle | give_up;
+        toggled = toggle;
+        bus = bus_q__q;
+        word = (((bus_q__q) & 32'hffffffff) << s_bus) | (((no_master__q) & 32'hffffffff) << s_no_master) | (((missed__q) & 32'hffffffff) << s_missed);
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        bus_q__q <= bus_q__d;
+        missed__q <= missed__d;
+        run__q <= run__d;
+        no_master__q <= no_master__d;
+    end
+
+endmodule // drcc_pelican_apb__pelican__core__ecss
+
+
+module drcc_pelican_apb__pelican__core__ecss_clock(clk,tick,restart,run,count);
+
+    // Module arguments
+    input wire  clk;
+    input wire  tick;
+    input wire  restart;
+    input wire  run;
+    output reg  [23:0] count;
+
+    // Constant declarations
+    localparam  one24 = 24'h1;
+    localparam  zero24 = 24'h0;
+
+    // Stub signals
+    reg  [23:0] hb_cnt__d;
+    reg  [23:0] hb_cnt__q;
+
+    // Update code
+    always @(*) begin
+        hb_cnt__d = hb_cnt__q;
+        if (restart) begin
+            hb_cnt__d = zero24;
+        end
+        else if (run & tick) begin
+            hb_cnt__d = hb_cnt__q + one24;
+        end
+        count = hb_cnt__q;
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        hb_cnt__q <= hb_cnt__d;
+    end
+
+endmodule // drcc_pelican_apb__pelican__core__ecss_clock
+
+
+module drcc_pelican_apb__pelican__core__ecss_count(clk,clear,toggled,count);
+
+    // Module arguments
+    input wire  clk;
+    input wire  clear;
+    input wire  toggled;
+    output reg  [7:0] count;
+
+    // Constant declarations
+    localparam  one8 = 8'h1;
+    localparam  max8 = 8'hff;
+    localparam  zero8 = 8'h0;
+
+    // Stub signals
+    reg  [7:0] ctoggle__d;
+    reg  [7:0] ctoggle__q;
+
+    // Update code
+    always @(*) begin
+        ctoggle__d = ctoggle__q;
+        if (toggled & (ctoggle__q != max8)) begin
+            ctoggle__d = ctoggle__q + one8;
+        end
+        if (clear) begin
+            ctoggle__d = zero8;
+        end
+        count = ctoggle__q;
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        ctoggle__q <= ctoggle__d;
+    end
+
+endmodule // drcc_pelican_apb__pelican__core__ecss_count
+
+
+module drcc_pelican_apb__pelican__core__ecss_regs(clk,rst,wr,adr,wdat,reset_mode,status_word,hit,writable,word,illegal,ttoggle,ntoggle,bdefault,enable,hb,period);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wr;
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  reset_mode;
+    input wire  [31:0] status_word;
+    output reg  hit;
+    output reg  writable;
+    output reg  [31:0] word;
+    output reg  illegal;
+    output reg  [7:0] ttoggle;
+    output reg  [7:0] ntoggle;
+    output reg  bdefault;
+    output reg  enable;
+    output reg  [29:0] hb;
+    output reg  [23:0] period;
+
+    // Constant declarations
+    localparam  p_bdefault = 5'b11000;
+    localparam  p_enable = 5'b11111;
+
+    // Stub signals
+    reg  [5:0] decode__adr;
+    reg  [31:0] decode__wdat;
+    reg  decode__reset_mode;
+    reg  [31:0] decode__cfg_word;
+    reg  [29:0] decode__hb_word;
+    reg  [23:0] decode__period_word;
+    reg  [31:0] decode__status_word;
+    wire  decode__hit;
+    wire  decode__writable;
+    wire  [31:0] decode__word;
+    wire  decode__illegal;
+    reg  store__clk;
+    reg  store__rst;
+    reg  store__wr;
+    reg  [5:0] store__adr;
+    reg  [31:0] store__wdat;
+    reg  store__refused;
+    wire  [31:0] store__cfg_word;
+    wire  [29:0] store__hb_word;
+    wire  [23:0] store__period_word;
+
+    // Sub module instances
+    drcc_pelican_apb__pelican__core__ecss_regs__decode decode(
+        .adr(decode__adr),
+        .wdat(decode__wdat),
+        .reset_mode(decode__reset_mode),
+        .cfg_word(decode__cfg_word),
+        .hb_word(decode__hb_word),
+        .period_word(decode__period_word),
+        .status_word(decode__status_word),
+        .hit(decode__hit),
+        .writable(decode__writable),
+        .word(decode__word),
+        .illegal(decode__illegal)
+    );
+    drcc_pelican_apb__pelican__core__ecss_regs__store store(
+        .clk(store__clk),
+        .rst(store__rst),
+        .wr(store__wr),
+        .adr(store__adr),
+        .wdat(store__wdat),
+        .refused(store__refused),
+        .cfg_word(store__cfg_word),
+        .hb_word(store__hb_word),
+        .period_word(store__period_word)
+    );
+
+    // Update code
+    always @(*) begin
+        decode__adr = adr;
+        decode__wdat = wdat;
+        decode__reset_mode = reset_mode;
+        decode__cfg_word = store__cfg_word;
+        decode__hb_word = store__hb_word;
+        decode__period_word = store__period_word;
+        decode__status_word = status_word;
+        hit = decode__hit;
+        writable = decode__writable;
+        word = decode__word;
+        illegal = decode__illegal;
+        store__clk = clk;
+        store__rst = rst;
+        store__wr = wr;
+        store__adr = adr;
+        store__wdat = wdat;
+        store__refused = decode__illegal;
+        ttoggle = store__cfg_word[(32'h0)+:(8)];
+        ntoggle = store__cfg_word[(32'h8)+:(8)];
+        bdefault = store__cfg_word[p_bdefault];
+        enable = store__cfg_word[p_enable];
+        hb = store__hb_word;
+        period = store__period_word;
+    end
+
+endmodule // drcc_pelican_apb__pelican__core__ecss_regs
+
+
+module drcc_pelican_apb__pelican__core__ecss_regs__decode(adr,wdat,reset_mode,cfg_word,hb_word,period_word,status_word,hit,writable,word,illegal);
+
+    // Module arguments
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  reset_mode;
+    input wire  [31:0] cfg_word;
+    input wire  [29:0] hb_word;
+    input wire  [23:0] period_word;
+    input wire  [31:0] status_word;
+    output reg  hit;
+    output reg  writable;
+    output reg  [31:0] word;
+    output reg  illegal;
+
+    // Constant declarations
+    localparam  a_cfg = 6'b110000;
+    localparam  a_hb = 6'b110001;
+    localparam  a_period = 6'b110010;
+    localparam  a_status = 6'b110011;
+    localparam  cfg_reserved = 32'h7eff0000;
+    localparam  hb_reserved = 32'hc0000000;
+    localparam  period_reserved = 32'hff000000;
+    localparam  zero8 = 8'h0;
+    localparam  zero24 = 24'h0;
+    localparam  zero32 = 32'h0;
+
+    // Local signals
+    reg  bad;
+
+    // Update code
+    always @(*) begin
+        writable = (adr == a_cfg) | (adr == a_hb) | (adr == a_period);
+        hit = writable | (adr == a_status);
+        word = zero32;
+        if (adr == a_cfg) begin
+            word = cfg_word;
+        end
+        else if (adr == a_hb) begin
+            word = ((hb_word) & 32'hffffffff);
+        end
+        else if (adr == a_period) begin
+            word = ((period_word) & 32'hffffffff);
+        end
+        else if (adr == a_status) begin
+            word = status_word;
+        end
+        bad = 1'b0;
+        if (adr == a_cfg) begin
+            bad = ((wdat & cfg_reserved) != zero32) | (wdat[(32'h0)+:(8)] == zero8);
+        end
+        else if (adr == a_hb) begin
+            bad = (wdat & hb_reserved) != zero32;
+        end
+        else if (adr == a_period) begin
+            bad = ((wdat & period_reserved) != zero32) | (wdat[(32'h0)+:(24)] == zero24);
+        end
+        illegal = writable & (~reset_mode | bad);
+    end
+
+endmodule // drcc_pelican_apb__pelican__core__ecss_regs__decode
+
+
+module drcc_pelican_apb__pelican__core__ecss_regs__store(clk,rst,wr,adr,wdat,refused,cfg_word,hb_word,period_word);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  wr;
+    input wire  [5:0] adr;
+    input wire  [31:0] wdat;
+    input wire  refused;
+    output reg  [31:0] cfg_word;
+    output reg  [29:0] hb_word;
+    output reg  [23:0] period_word;
+
+    // Constant declarations
+    localparam  a_cfg = 6'b110000;
+    localparam  a_hb = 6'b110001;
+    localparam  a_period = 6'b110010;
+    localparam  cfg_reset = 32'h303;
+    localparam  hb_reset = 30'h701;
+    localparam  period_reset = 24'h186a0;
+
+    // Stub signals
+    reg  [31:0] cfg_q__d;
+    reg  [31:0] cfg_q__q;
+    reg  [29:0] hb_q__d;
+    reg  [29:0] hb_q__q;
+    reg  [23:0] period_q__d;
+    reg  [23:0] period_q__q;
+
+    // Update code
+    always @(*) begin
+        cfg_q__d = cfg_q__q;
+        hb_q__d = hb_q__q;
+        period_q__d = period_q__q;
+        if (wr & ~refused) begin
+            if (adr == a_cfg) begin
+                cfg_q__d = wdat;
+            end
+            else if (adr == a_hb) begin
+                hb_q__d = wdat[(32'h0)+:(30)];
+            end
+            else if (adr == a_period) begin
+                period_q__d = wdat[(32'h0)+:(24)];
+            end
+        end
+        if (rst) begin
+            cfg_q__d = cfg_reset;
+            hb_q__d = hb_reset;
+            period_q__d = period_reset;
+        end
+        cfg_word = cfg_q__q;
+        hb_word = hb_q__q;
+        period_word = period_q__q;
+    end
+
+    // Flip-flops
+    always @(posedge clk) begin
+        cfg_q__q <= cfg_q__d;
+        hb_q__q <= hb_q__d;
+        period_q__q <= period_q__d;
+    end
+
+endmodule // drcc_pelican_apb__pelican__core__ecss_regs__store
+
+
 module drcc_pelican_apb__pelican__core__filters(clk,rst,wr,adr,wdat,reset_mode,hit,word,illegal,id0,mask0,id1,mask1);
 
     // Module arguments
@@ -11424,7 +12005,7 @@ module drcc_pelican_apb__pelican__core__main(clk,rst,hold,dual_tx,queued,valid_a
 endmodule // drcc_pelican_apb__pelican__core__main
 
 
-module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,view_on,view_ctrl,view_btr,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,first_copy,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,recover_a,recover_b,pop,rearm_err,rearm_alc,stats_clear);
+module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,wb_err_o,irq,view_on,view_ctrl,view_btr,ro_word,es_a,es_b,txq_a,txq_b,rx_count,ev_rx,ev_tx_done,ev_switch,ev_overrun,ev_tx_failure,ev_aux,ext_hit,ext_word,ext_writable,ext_illegal,ev_dmr,ev_domain,ev_err_warning,ev_arb_lost,ev_bus_error,ev_tx_done_a,ev_tx_done_b,ev_tx_failure_a,ev_tx_failure_b,ev_bus_toggle,wr_o,reset_mode,reset_mode_d,redundancy,policy,dual_tx,star,k,mode_a,mode_b,single_shot,dmr,busoff_manual,first_copy,brp,tseg1,tseg2,sjw,triple,ewl,recovery_bits,stall_limit,window,push,push_q,tx_frame,abort_a,abort_b,recover_a,recover_b,pop,rearm_err,rearm_alc,stats_clear);
     parameter [3:0] TX_QUEUE_DEPTH = 4'd8;
     parameter [0:0] STAR = 1'd1;
 
@@ -11469,6 +12050,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     input wire  ev_tx_done_b;
     input wire  ev_tx_failure_a;
     input wire  ev_tx_failure_b;
+    input wire  ev_bus_toggle;
     output reg  wr_o;
     output reg  reset_mode;
     output reg  reset_mode_d;
@@ -11555,8 +12137,9 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     localparam  i_tx_done_b = 5'b1110;
     localparam  i_tx_failure_a = 5'b1111;
     localparam  i_tx_failure_b = 5'b10000;
-    localparam  m_bus_error = 17'b1000000000000;
-    localparam  m_arb_lost = 17'b100000000000;
+    localparam  i_bus_toggle = 5'b10001;
+    localparam  m_bus_error = 18'b1000000000000;
+    localparam  m_arb_lost = 18'b100000000000;
     localparam  btr_reset = 28'h600500;
     localparam  rmb_cfg_reset = 32'h400;
     localparam  window_reset = 15'b10000000000;
@@ -11564,7 +12147,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     localparam  zero2 = 2'b0;
     localparam  zero4 = 4'h0;
     localparam  zero6 = 6'b0;
-    localparam  zero17 = 17'b0;
+    localparam  zero18 = 18'b0;
     localparam  zero15 = 15'b0;
     localparam  zero16 = 16'h0;
     localparam  zero31 = 31'h0;
@@ -11585,13 +12168,13 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     wire  bus__wb_ack_o;
     wire  bus__irq;
     wire  bus__wr;
-    wire  [16:0] bus__int_status;
-    wire  [16:0] bus__int_enable;
+    wire  [17:0] bus__int_status;
+    wire  [17:0] bus__int_enable;
     reg  [31:0] bus__rdata;
-    reg  [16:0] bus__events;
-    reg  [16:0] bus__w1c;
+    reg  [17:0] bus__events;
+    reg  [17:0] bus__w1c;
     reg  bus__int_enable_we;
-    reg  [16:0] bus__int_enable_d;
+    reg  [17:0] bus__int_enable_d;
     reg  ctrl__clk;
     reg  ctrl__rst;
     reg  ctrl__we;
@@ -11664,7 +12247,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
     reg  [31:0] rdata;
     reg  [31:0] wdat;
     reg  illegal;
-    reg  [16:0] w1c;
+    reg  [17:0] w1c;
     reg  [3:0] target_count;
     reg  es_evt;
     reg  [63:0] tx_data64;
@@ -11847,9 +12430,9 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
         ctrl_check__busoff_manual = ctrl__busoff_manual;
         ctrl_check__first_copy = ctrl__first_copy;
         illegal = 1'b0;
-        w1c = zero17;
+        w1c = zero18;
         bus__int_enable_we = 1'b0;
-        bus__int_enable_d = wb_dat_i[(32'h0)+:(17)];
+        bus__int_enable_d = wb_dat_i[(32'h0)+:(18)];
         push = 1'b0;
         pop = 1'b0;
         stats_clear = 1'b0;
@@ -11895,7 +12478,7 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
                 end
             end
             else if (wb_adr_i == a_int_status) begin
-                w1c = wb_dat_i[(32'h0)+:(17)];
+                w1c = wb_dat_i[(32'h0)+:(18)];
             end
             else if (wb_adr_i == a_int_enable) begin
                 bus__int_enable_we = 1'b1;
@@ -11954,10 +12537,10 @@ module drcc_pelican_apb__pelican__core__regs(clk,rst,wb_cyc_i,wb_stb_i,wb_we_i,w
                 illegal = 1'b1;
             end
         end
-        bus__events = (((ev_rx) & 17'h1ffff) << i_rx) | (((ev_tx_done) & 17'h1ffff) << i_tx_done) | (((ev_switch) & 17'h1ffff) << i_switch) | (((es_evt) & 17'h1ffff) << i_err_state) | (((ev_overrun) & 17'h1ffff) << i_overrun) | (((ev_tx_failure) & 17'h1ffff) << i_tx_failure) | (((illegal) & 17'h1ffff) << i_illegal) | (((ev_aux) & 17'h1ffff) << i_aux) | (((ev_dmr) & 17'h1ffff) << i_dmr) | (((ev_domain) & 17'h1ffff) << i_domain) | (((ev_err_warning) & 17'h1ffff) << i_err_warning) | (((ev_arb_lost) & 17'h1ffff) << i_arb_lost) | (((ev_bus_error) & 17'h1ffff) << i_bus_error) | (((ev_tx_done_a) & 17'h1ffff) << i_tx_done_a) | (((ev_tx_done_b) & 17'h1ffff) << i_tx_done_b) | (((ev_tx_failure_a) & 17'h1ffff) << i_tx_failure_a) | (((ev_tx_failure_b) & 17'h1ffff) << i_tx_failure_b);
+        bus__events = (((ev_rx) & 18'h3ffff) << i_rx) | (((ev_tx_done) & 18'h3ffff) << i_tx_done) | (((ev_switch) & 18'h3ffff) << i_switch) | (((es_evt) & 18'h3ffff) << i_err_state) | (((ev_overrun) & 18'h3ffff) << i_overrun) | (((ev_tx_failure) & 18'h3ffff) << i_tx_failure) | (((illegal) & 18'h3ffff) << i_illegal) | (((ev_aux) & 18'h3ffff) << i_aux) | (((ev_dmr) & 18'h3ffff) << i_dmr) | (((ev_domain) & 18'h3ffff) << i_domain) | (((ev_err_warning) & 18'h3ffff) << i_err_warning) | (((ev_arb_lost) & 18'h3ffff) << i_arb_lost) | (((ev_bus_error) & 18'h3ffff) << i_bus_error) | (((ev_tx_done_a) & 18'h3ffff) << i_tx_done_a) | (((ev_tx_done_b) & 18'h3ffff) << i_tx_done_b) | (((ev_tx_failure_a) & 18'h3ffff) << i_tx_failure_a) | (((ev_tx_failure_b) & 18'h3ffff) << i_tx_failure_b) | (((ev_bus_toggle) & 18'h3ffff) << i_bus_toggle);
         bus__w1c = w1c;
-        rearm_err = (w1c & m_bus_error) != zero17;
-        rearm_alc = (w1c & m_arb_lost) != zero17;
+        rearm_err = (w1c & m_bus_error) != zero18;
+        rearm_alc = (w1c & m_arb_lost) != zero18;
         err_q__d = illegal;
         es_a_prev__d = es_a;
         es_b_prev__d = es_b;
@@ -12042,16 +12625,16 @@ module drcc_pelican_apb__pelican__core__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_w
     output reg  wb_ack_o;
     output reg  irq;
     output reg  wr;
-    output reg  [16:0] int_status;
-    output reg  [16:0] int_enable;
+    output reg  [17:0] int_status;
+    output reg  [17:0] int_enable;
     input wire  [31:0] rdata;
-    input wire  [16:0] events;
-    input wire  [16:0] w1c;
+    input wire  [17:0] events;
+    input wire  [17:0] w1c;
     input wire  int_enable_we;
-    input wire  [16:0] int_enable_d;
+    input wire  [17:0] int_enable_d;
 
     // Constant declarations
-    localparam  zero_w = 17'b0;
+    localparam  zero_w = 18'b0;
     localparam  zero32 = 32'h0;
 
     // Stub signals
@@ -12061,10 +12644,10 @@ module drcc_pelican_apb__pelican__core__regs__bus(clk,rst,wb_cyc_i,wb_stb_i,wb_w
     reg  [31:0] dat_q__q;
     reg  irq_q__d;
     reg  irq_q__q;
-    reg  [16:0] int_status_q__d;
-    reg  [16:0] int_status_q__q;
-    reg  [16:0] int_enable_q__d;
-    reg  [16:0] int_enable_q__q;
+    reg  [17:0] int_status_q__d;
+    reg  [17:0] int_status_q__q;
+    reg  [17:0] int_enable_q__d;
+    reg  [17:0] int_enable_q__q;
 
     // Local signals
     reg  taken;
@@ -13606,7 +14189,7 @@ module drcc_pelican_apb__pelican__core__status(adr,word,state,tx_channel,tx_goin
     localparam  a_cap_b = 6'b101001;
     localparam  a_rx_time = 6'b101110;
     localparam  id_value = 32'h44524343;
-    localparam  version_value = 32'h104;
+    localparam  version_value = 32'h105;
     localparam  zero32 = 32'h0;
     localparam  st_state = 5'b0;
     localparam  st_tx_channel = 5'b100;

@@ -87,7 +87,8 @@ enum Command {
     /// Run the demo scenario (Verilator if available, else rust-hdl); writes out/demo_bus.vcd.
     Demo,
     /// DRCC redundancy scenarios on a dual bus: `paper` (Figs. 5-8), `switchover`
-    /// (the benchmark table), `table` (the fault scenarios as Markdown), a fault (`cut_a`, `a_stuck_dominant`,
+    /// (the benchmark table), `table` (the fault scenarios as Markdown), `ecss` (the ECSS
+    /// bus-selection rows as Markdown), a fault (`cut_a`, `a_stuck_dominant`,
     /// `a_stuck_recessive`, `dead_transceiver`, `a_bus_off`, `no_fault`) or `all`.
     Redundancy {
         /// What to run.

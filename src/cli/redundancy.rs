@@ -1,6 +1,7 @@
 //! `drcc redundancy`: the DRCC's redundancy scenarios on a dual bus — the paper's
 //! Figs. 5-8 experiment (`paper`), the fault scenarios of 4 DRCC nodes (`cut_a`,
-//! `a_stuck_dominant`, ..., or `all`), and the switchover table (`switchover`) — on
+//! `a_stuck_dominant`, ..., or `all`), the switchover table (`switchover`) and the
+//! ECSS bus-selection table (`ecss`, DRCC contract §12) — on
 //! one engine, or on two in lock step with `--cosim`. `paper` and the faults can
 //! export their traffic (`--candump`, `--pcap`; `all`: one file per fault).
 
@@ -98,14 +99,14 @@ pub fn run(
              tables run their own documented policies (docs/drcc.md); leave out --policy"
         )));
     }
-    if let (Some(path), "table" | "switchover") = (vcd, what) {
+    if let (Some(path), "table" | "switchover" | "ecss") = (vcd, what) {
         return Err(CliError::Error(format!(
             "--vcd {}: `{what}` runs many scenarios and writes no trace; give `paper` or \
              one fault (or `all`, one file per fault) to trace it",
             path.display()
         )));
     }
-    if let "table" | "switchover" = what {
+    if let "table" | "switchover" | "ecss" = what {
         traffic.refuse(what, "`paper` or one fault (or `all`, one file per fault)")?;
     }
     match what {
@@ -153,6 +154,13 @@ pub fn run(
             print!("{}", switchover_table(kind).map_err(CliError::Error)?);
             Ok(())
         }
+        "ecss" => {
+            print!(
+                "{}",
+                drcc_testbench::ecss::ecss_table(kind, other).map_err(CliError::Error)?
+            );
+            Ok(())
+        }
         _ => {
             let faults: Vec<DualFault> = if what == "all" {
                 DualFault::ALL.to_vec()
@@ -162,7 +170,7 @@ pub fn run(
                     None => {
                         let names: Vec<_> = DualFault::ALL.iter().map(|f| f.name()).collect();
                         return Err(CliError::Error(format!(
-                            "unknown scenario {what:?}: give paper, switchover, table, all, or one of {}",
+                            "unknown scenario {what:?}: give paper, switchover, table, ecss, all, or one of {}",
                             names.join(", ")
                         )));
                     }

@@ -11,6 +11,7 @@ pub mod coverage;
 pub mod dmr;
 pub mod drcc_build;
 pub mod dual;
+pub mod ecss;
 pub mod engines;
 pub mod fault_gen;
 pub mod hub_stim;

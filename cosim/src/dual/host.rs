@@ -17,6 +17,7 @@
 //! table by `cosim/tests/register_maps.rs`.
 
 use super::dmr_config::DmrConfig;
+use super::ecss_config::EcssConfig;
 use crate::engine::drcc::{DrccInputs, DrccOutputs};
 use crate::frame::Frame;
 use drcc_hdl::host::map::Field;
@@ -76,6 +77,10 @@ pub mod reg {
     pub const MB_MASK: u8 = map::MB_MASK as u8;
     pub const MB_CFG: u8 = map::MB_CFG as u8;
     pub const MB_STATE: u8 = map::MB_STATE as u8;
+    pub const ECSS_CFG: u8 = map::ECSS_CFG as u8;
+    pub const ECSS_HB: u8 = map::ECSS_HB as u8;
+    pub const ECSS_PERIOD: u8 = map::ECSS_PERIOD as u8;
+    pub const ECSS_STATUS: u8 = map::ECSS_STATUS as u8;
 }
 
 /// `reg.field` placed in a register word (positions from the table).
@@ -141,6 +146,8 @@ pub struct HostConfig {
     /// `CTRL.busoff_manual` (DRCC contract §11.6): a bus-off channel recovers
     /// only after the host's `TX_CMD.recover_x`.
     pub busoff_manual: bool,
+    /// The ECSS bus selection (DRCC contract §12), enabled with these values.
+    pub ecss: Option<EcssConfig>,
 }
 
 impl Default for HostConfig {
@@ -162,6 +169,7 @@ impl Default for HostConfig {
             dmr: None,
             tx_queue_depth: 8,
             busoff_manual: false,
+            ecss: None,
         }
     }
 }
@@ -333,6 +341,9 @@ impl HostDriver {
         ];
         if let Some(dmr) = c.dmr {
             writes.extend(dmr.writes());
+        }
+        if let Some(ecss) = c.ecss {
+            writes.extend(ecss.writes());
         }
         writes.push((reg::INT_ENABLE, c.int_enable));
         writes.push((reg::CTRL, c.ctrl(false)));

@@ -8,6 +8,7 @@
 //! the `tx` outputs of step n-1.
 
 pub mod dmr_config;
+pub mod ecss_config;
 pub mod fault;
 pub mod host;
 pub mod lockstep;

@@ -45,7 +45,7 @@ use crate::memory::tx_buffer::TxBuffer;
 use crate::rmb::aux_fsm::AuxFsm;
 use crate::rmb::bit_tick::BitTick;
 use crate::rmb::echo::Echo;
-use crate::rmb::ecss::BusSelect;
+use crate::rmb::ecss::{BusSelect, HbClock, ToggleCount};
 use crate::rmb::main_fsm::MainFsm;
 use crate::rmb::stats::RedundancyStats;
 use rust_hdl::prelude::*;
@@ -280,6 +280,8 @@ pub struct DrccCore<const M: usize> {
     // ECSS bus selection (§12)
     ecss_regs: EcssRegs,
     ecss: BusSelect,
+    ecss_count: ToggleCount,
+    ecss_clock: HbClock,
     mailbox_cfg: IfMailboxes<MailboxCfg, M>,
     dmr_ctl: DmrControl,
     dmr_eng: IfMailboxes<DmrEngine<M>, M>,

@@ -73,9 +73,8 @@ impl<const M: usize> Logic for DrccCore<M> {
             self.dmr_check.hit.val() | self.filters.hit.val() | self.ecss_regs.hit.val();
         self.regs.ext_word.next =
             self.dmr_check.word.val() | self.filters.word.val() | self.ecss_regs.word.val();
-        self.regs.ext_writable.next = self.dmr_check.writable.val()
-            | self.filters.hit.val()
-            | self.ecss_regs.writable.val();
+        self.regs.ext_writable.next =
+            self.dmr_check.writable.val() | self.filters.hit.val() | self.ecss_regs.writable.val();
         self.regs.ext_illegal.next = self.dmr_check.illegal.val()
             | self.filters.illegal.val()
             | self.ecss_regs.illegal.val();
@@ -87,14 +86,21 @@ impl<const M: usize> Logic for DrccCore<M> {
         self.ecss_regs.adr.next = self.wb_adr_i.val();
         self.ecss_regs.wdat.next = self.wb_dat_i.val();
         self.ecss_regs.reset_mode.next = self.regs.reset_mode.val();
-        self.ecss_regs.status_word.next = self.ecss.word.val();
+        // ECSS_STATUS: the selection's fields and Ctoggle in [7:0]
+        self.ecss_regs.status_word.next =
+            self.ecss.word.val() | bit_cast::<32, 8>(self.ecss_count.count.val());
+        self.ecss_count.clk.next = self.clk.val();
+        self.ecss_count.clear.next = self.rst.val() | self.regs.stats_clear.val();
+        self.ecss_count.toggled.next = self.ecss.toggled.val();
         self.ecss.clk.next = self.clk.val();
         self.ecss.rst.next = self.rst.val();
-        self.ecss.on.next = self.regs.redundancy.val()
-            & self.ecss_regs.enable.val()
-            & !self.regs.reset_mode.val();
-        self.ecss.stats_clear.next = self.regs.stats_clear.val();
-        self.ecss.tick.next = self.ticker.tick.val();
+        self.ecss.on.next =
+            self.regs.redundancy.val() & self.ecss_regs.enable.val() & !self.regs.reset_mode.val();
+        self.ecss.hb_cnt.next = self.ecss_clock.count.val();
+        self.ecss_clock.clk.next = self.clk.val();
+        self.ecss_clock.tick.next = self.ticker.tick.val();
+        self.ecss_clock.restart.next = self.ecss.clock_restart.val();
+        self.ecss_clock.run.next = self.ecss.clock_run.val();
         self.ecss.bdefault.next = self.ecss_regs.bdefault.val();
         self.ecss.ttoggle.next = self.ecss_regs.ttoggle.val();
         self.ecss.ntoggle.next = self.ecss_regs.ntoggle.val();

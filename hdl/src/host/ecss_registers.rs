@@ -23,9 +23,16 @@ pub const ECSS_HB_REG: Register = Register {
     name: "ECSS_HB",
     index: map::ECSS_HB,
     access: Access::Rw,
-    desc: "The master's heartbeat (contract §12); writable only in reset mode; [31:30] set is refused",
+    desc:
+        "The master's heartbeat (contract §12); writable only in reset mode; [31:30] set is refused",
     fields: &[
-        cfg("id", 0, 29, 0x701, "identifier (base frame: id[10:0]; CANopen: 0x700 + the master's node-ID)"),
+        cfg(
+            "id",
+            0,
+            29,
+            0x701,
+            "identifier (base frame: id[10:0]; CANopen: 0x700 + the master's node-ID)",
+        ),
         cfg("ide", 29, 1, 0, "extended frame"),
     ],
 };
@@ -50,9 +57,27 @@ pub const ECSS_STATUS_REG: Register = Register {
     access: Access::Ro,
     desc: "ECSS bus selection state (contract §12)",
     fields: &[
-        f("ctoggle", 0, 8, 0, "toggles (Ctoggle, saturating; cleared by rst and STATS_CLR)"),
+        f(
+            "ctoggle",
+            0,
+            8,
+            0,
+            "toggles (Ctoggle, saturating; cleared by rst and STATS_CLR)",
+        ),
         f("bus", 8, 1, 0, "the bus in use: 0 A, 1 B"),
-        f("no_master", 9, 1, 0, "ntoggle toggles in a row found no heartbeat: the node stays"),
-        f("missed", 16, 8, 0, "heartbeat periods missed since the last heartbeat or toggle"),
+        f(
+            "no_master",
+            9,
+            1,
+            0,
+            "ntoggle toggles in a row found no heartbeat: the node stays",
+        ),
+        f(
+            "missed",
+            16,
+            8,
+            0,
+            "heartbeat periods missed since the last heartbeat or toggle",
+        ),
     ],
 };

@@ -76,7 +76,10 @@ fn illegal_values_are_refused_and_not_stored() {
     assert!(!write(&mut uut, map::ECSS_PERIOD, 0xFF_FFFF));
     assert_eq!(read(&mut uut, map::ECSS_PERIOD), 0xFF_FFFF);
     for bad in [0, 1 << 24 | 5] {
-        assert!(write(&mut uut, map::ECSS_PERIOD, bad), "period {bad:#x}: refused");
+        assert!(
+            write(&mut uut, map::ECSS_PERIOD, bad),
+            "period {bad:#x}: refused"
+        );
         assert_eq!(read(&mut uut, map::ECSS_PERIOD), 0xFF_FFFF);
     }
 }

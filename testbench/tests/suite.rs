@@ -13,6 +13,7 @@ mod conformance;
 mod cosim;
 mod dmr_plan;
 mod dmr_registers;
+mod ecss_policy;
 mod drcc_cosim;
 mod drcc_faults;
 mod drcc_paper;

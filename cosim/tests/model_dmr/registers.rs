@@ -22,9 +22,9 @@ fn dmr_registers_reset_values() {
     assert_eq!(sys.read(0, MB_STATE), 0);
     // INT_ENABLE[8] dmr is a real bit (and [9] domain, DRCC contract §4.5, and
     // [12:10] err_warning, arb_lost, bus_error, §10.2, and [16:13] the
-    // per-channel transmit events, §11.3): 17 bits.
+    // per-channel transmit events, §11.3, and [17] bus_toggle, §12): 18 bits.
     sys.write(0, INT_ENABLE, 0xFFFF_FFFF);
-    assert_eq!(sys.read(0, INT_ENABLE), 0x1_FFFF);
+    assert_eq!(sys.read(0, INT_ENABLE), 0x3_FFFF);
     // Probes: all 0 outside DMR mode (§9).
     let p = sys.probes(0);
     assert_eq!(

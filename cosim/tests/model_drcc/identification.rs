@@ -9,8 +9,9 @@ const STAR: u32 = 1 << 5;
 const DMR: u32 = 1 << 17;
 const FIRST_COPY: u32 = 1 << 19;
 
-/// VERSION is 0x104 (§10.1: major 1, minor 4 since DMR §8.1 added
-/// `CTRL.first_copy`; minor 3 was §11.6, minor 2 §11.1-§11.5) and
+/// VERSION is 0x105 (§10.1, §12.1: major 1, minor 5 since §12 added the ECSS
+/// registers; minor 4 was DMR §8.1's `CTRL.first_copy`, minor 3 §11.6, minor 2
+/// §11.1-§11.5) and
 /// SIZES the configuration's sizes, in every configuration
 /// of §1.1; `dmr` and `star` say whether CTRL takes those bits; all four new
 /// registers are read-only.
@@ -40,7 +41,7 @@ fn version_and_sizes_identify_the_instance() {
     ];
     for (name, p, sizes) in cases {
         let mut sys = Sys::with_params(1, &p);
-        assert_eq!(sys.read(0, VERSION), 0x104, "{name}: major 1, minor 4");
+        assert_eq!(sys.read(0, VERSION), 0x105, "{name}: major 1, minor 5");
         assert_eq!(sys.read(0, SIZES), sizes, "{name}: SIZES");
         // CTRL.dmr / CTRL.star are taken (in reset mode) iff SIZES says they can be
         // set. (CTRL.star is written with redundancy, where it means something.)
@@ -67,7 +68,7 @@ fn version_and_sizes_identify_the_instance() {
             if running {
                 sys.start(0, policy(1) | k(1));
             }
-            for (adr, value) in [(VERSION, 0x104), (SIZES, sizes), (CAP_A, 0), (CAP_B, 0)] {
+            for (adr, value) in [(VERSION, 0x105), (SIZES, sizes), (CAP_A, 0), (CAP_B, 0)] {
                 let (_, err) = sys.access_lanes(0, adr, true, 0xFFFF_FFFF, 0xF);
                 assert!(err, "{name}: a write to word {adr} is refused (ERR)");
                 assert_eq!(
@@ -86,7 +87,7 @@ fn version_and_sizes_identify_the_instance() {
         sys.nodes[0].wb.rst = true;
         sys.step();
         sys.nodes[0].wb.rst = false;
-        assert_eq!(sys.read(0, VERSION), 0x104);
+        assert_eq!(sys.read(0, VERSION), 0x105);
         assert_eq!(sys.read(0, SIZES), sizes, "{name}: SIZES after rst");
     }
 }

@@ -13,6 +13,7 @@ use drcc_cosim::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Fra
 mod busoff_recovery;
 mod channel_switching;
 mod driver_features;
+mod ecss;
 mod filters;
 mod identification;
 mod reception;

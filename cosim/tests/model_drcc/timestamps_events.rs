@@ -115,7 +115,11 @@ fn per_channel_transmit_events_in_normal_mode() {
     let _pa = sys.add_plain(0, true);
     let _pb = sys.add_plain(1, true);
     sys.write(0, INT_ENABLE, 0xFFFF_FFFF);
-    assert_eq!(sys.read(0, INT_ENABLE), 0x1_FFFF, "17 bits");
+    assert_eq!(
+        sys.read(0, INT_ENABLE),
+        0x3_FFFF,
+        "18 bits (§12: bus_toggle)"
+    );
     sys.write(0, INT_ENABLE, I_TX_DONE_B);
     sys.start(0, policy(1) | k(1));
     sys.run(20 * CPB);

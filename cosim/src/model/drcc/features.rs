@@ -61,9 +61,9 @@ pub(super) fn tx_channel_events(a: &ChannelOutputs, b: &ChannelOutputs) -> u32 {
 impl DrccModel {
     /// `STATS_CLR.clear` (§11.4), applied after every block's edge so that the
     /// clear wins over an event at the same edge: `STATS0`, `STATS1`,
-    /// `OMISSIONS`, `DMR_RX_STATS` and the `failures` / `recoveries` counts of
-    /// `AUX_A` / `AUX_B`. Kept: the failed attempts, `TIMES`, `DMR_CS_COUNT`, the
-    /// DMR state counts and every state.
+    /// `OMISSIONS`, `DMR_RX_STATS`, the `failures` / `recoveries` counts of
+    /// `AUX_A` / `AUX_B` and `ECSS_STATUS.ctoggle` (§12.1). Kept: the failed
+    /// attempts, `TIMES`, `DMR_CS_COUNT`, the DMR state counts and every state.
     pub(super) fn clear_statistics(&mut self) {
         let rx = &mut self.rx;
         rx.duplicates = 0;
@@ -78,5 +78,7 @@ impl DrccModel {
             a.failures = 0;
             a.recoveries = 0;
         }
+        // §12.1: the ECSS toggle count.
+        self.r.ecss.sel.ctoggle = 0;
     }
 }

@@ -79,10 +79,15 @@
 //!     partial write (§2), an abort with `push` or in DMR mode (§11.5), both
 //!     decoded at the register port, and a `push` the queue refuses (§6: reset
 //!     mode, queue full), judged by the TX queues at the same edge.
+//! 17. §12.2 a heartbeat is judged on the channel's raw `rx_valid` / `rx_frame`:
+//!     the acceptance filters, duplicate removal and the star node's echo and
+//!     identification rules do not hide it. `bus` follows `bdefault` in reset
+//!     mode too (rule `!on`), so `ECSS_STATUS.bus` reads `bdefault` there.
 #![doc = include_str!("../drcc_contract.md")]
 
 pub mod aux_fsm;
 pub mod dmr;
+pub mod ecss;
 pub mod features;
 mod host;
 pub mod main_fsm;
@@ -315,12 +320,31 @@ impl DrccModel {
             self.star = star::StarFollow::default();
         }
 
-        // Main FSM (§4), on pre-edge values of the aux FSMs and TX queue A.
+        // ECSS bus selection (§12.2), on pre-edge values.
+        let ecss_on = redundancy && r.ecss.cfg.enable() && !reset_mode;
+        let toggle = n.ecss.sel.edge(
+            &r.ecss.cfg,
+            ecss_on,
+            tick,
+            [pa.rx_valid, pb.rx_valid],
+            [&pa.rx_frame, &pb.rx_frame],
+        );
+        if toggle {
+            coverage::hit("drcc ecss: the bus selection toggles or gives up");
+            ints |= int::BUS_TOGGLE;
+        }
+
+        // Main FSM (§4), on pre-edge values of the aux FSMs (or the ECSS
+        // selection, §12.2) and TX queue A.
+        let (va, vb) = r.ecss.validity(redundancy).unwrap_or((
+            self.aux[0].state == aux::VALID,
+            self.aux[1].state == aux::VALID,
+        ));
         let fsm_in = FsmInputs {
             running,
             q: self.txq.count[0] > 0,
-            va: self.aux[0].state == aux::VALID,
-            vb: self.aux[1].state == aux::VALID,
+            va,
+            vb,
             // §4.4/§4.5: a star node sends the copy only after the hubs split.
             dual_tx: r.dual_tx() && (!r.star() || self.star.split),
             tick,

@@ -2,6 +2,7 @@
 //! stored registers and the read side of the Wishbone map. The write side stays
 //! in the edge of [`super::DrccModel`], beside the blocks it drives.
 
+use super::ecss::Ecss;
 use super::features::Filters;
 use super::regs::*;
 use super::DrccModel;
@@ -43,6 +44,8 @@ pub(super) struct Regs {
     /// `recover_a`, `recover_b` (§11.6): the host's permission for a bus-off
     /// channel to count its recovery; taken only while the channel is bus-off.
     pub(super) recover: [bool; 2],
+    /// `ECSS_CFG`, `ECSS_HB`, `ECSS_PERIOD` and the bus selection (§12).
+    pub(super) ecss: Ecss,
     /// `reset_mode` one edge earlier: the channels stay in reset one clock longer
     /// so that they capture the configuration written with the write that leaves
     /// reset mode (contract §6).
@@ -73,6 +76,7 @@ impl Regs {
             recoveries: 0,
             filt: Filters::default(),
             recover: [false; 2],
+            ecss: Ecss::default(),
             reset_mode_q: true,
         }
     }
@@ -285,6 +289,8 @@ impl DrccModel {
             idx::FILT_MASK1 => r.filt.mask[1],
             idx::RX_TIME => self.rx.rd_ts as u32 | (self.rx.now as u32) << 16,
             idx::STATS_CLR => 0,
+            // §12.1: the ECSS registers.
+            idx::ECSS_CFG..=idx::ECSS_STATUS => r.ecss.read(adr).unwrap_or(0),
             // DMR registers (dmr_contract.md §2.1); TX_CMD, RX_CMD (write only) and
             // unmapped words read 0.
             _ => self
@@ -454,6 +460,13 @@ impl DrccModel {
                 }
                 // §11.4: never refused; bit 0 = 0 does nothing.
                 idx::STATS_CLR => a.stats_clr = d & 1 != 0,
+                // §12.1: cfg registers holding legal values only (ECSS_STATUS
+                // is read-only, below).
+                idx::ECSS_CFG..=idx::ECSS_PERIOD => {
+                    if !n.ecss.cfg.write(adr, d, reset_mode) {
+                        a.ints |= int::ILLEGAL;
+                    }
+                }
                 // Read-only and unmapped words.
                 _ => a.ints |= int::ILLEGAL,
             }

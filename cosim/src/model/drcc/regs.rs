@@ -4,9 +4,10 @@
 /// `ID` register value: "DRCC" in ASCII.
 pub const ID_VALUE: u32 = 0x4452_4343;
 
-/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 4 in [7:0]
-/// (§11.1-§11.5 added registers, §11.6 fields, `CTRL.first_copy` of DMR §8.1).
-pub const VERSION_VALUE: u32 = 0x0000_0104;
+/// `VERSION` register value (§10.1): `major` 1 in [15:8], `minor` 5 in [7:0]
+/// (§11.1-§11.5 added registers, §11.6 fields, `CTRL.first_copy` of DMR §8.1,
+/// the ECSS registers of §12).
+pub const VERSION_VALUE: u32 = 0x0000_0105;
 
 /// Word indices (`wb_adr_i`, byte offset / 4).
 pub mod idx {
@@ -66,6 +67,11 @@ pub mod idx {
     pub const RX_TIME: u8 = 46;
     /// Clearing the statistics (§11.4).
     pub const STATS_CLR: u8 = 47;
+    /// ECSS bus selection (§12.1).
+    pub const ECSS_CFG: u8 = 48;
+    pub const ECSS_HB: u8 = 49;
+    pub const ECSS_PERIOD: u8 = 50;
+    pub const ECSS_STATUS: u8 = 51;
 }
 
 /// `CTRL` fields.
@@ -160,8 +166,33 @@ pub mod int {
     pub const TX_DONE_B: u32 = 1 << 14;
     pub const TX_FAILURE_A: u32 = 1 << 15;
     pub const TX_FAILURE_B: u32 = 1 << 16;
-    /// The 17 bits of `INT_STATUS` / `INT_ENABLE` (§11).
-    pub const ALL: u32 = 0x1_FFFF;
+    /// The ECSS bus selection toggled or gave up (`no_master` rose, §12).
+    pub const BUS_TOGGLE: u32 = 1 << 17;
+    /// The 18 bits of `INT_STATUS` / `INT_ENABLE` (§12).
+    pub const ALL: u32 = 0x3_FFFF;
+}
+
+/// ECSS registers (§12.1): fields and reset values.
+pub mod ecss {
+    /// `ECSS_CFG`: [7:0] ttoggle [3], [15:8] ntoggle [3], [24] bdefault [0],
+    /// [31] enable [0]; [23:16] and [30:25] reserved.
+    pub const TTOGGLE_MASK: u32 = 0xFF;
+    pub const NTOGGLE_SHIFT: u32 = 8;
+    pub const BDEFAULT: u32 = 1 << 24;
+    pub const ENABLE: u32 = 1 << 31;
+    pub const CFG_RESERVED: u32 = 0x7E00_0000 | 0x00FF_0000;
+    pub const CFG_RESET: u32 = 3 | 3 << NTOGGLE_SHIFT;
+    /// `ECSS_HB`: [28:0] id [0x701], [29] ide [0]; [31:30] reserved.
+    pub const HB_IDE: u32 = 1 << 29;
+    pub const HB_RESERVED: u32 = 0xC000_0000;
+    pub const HB_RESET: u32 = 0x701;
+    /// `ECSS_PERIOD`: [23:0] period [100000]; [31:24] reserved.
+    pub const PERIOD_MASK: u32 = 0x00FF_FFFF;
+    pub const PERIOD_RESET: u32 = 100_000;
+    /// `ECSS_STATUS`: [7:0] ctoggle, [8] bus, [9] no_master, [23:16] missed.
+    pub const BUS: u32 = 1 << 8;
+    pub const NO_MASTER: u32 = 1 << 9;
+    pub const MISSED_SHIFT: u32 = 16;
 }
 
 /// `SIZES` fields (§10.1): the generation parameters of §1.1.

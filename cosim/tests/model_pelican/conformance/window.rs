@@ -69,8 +69,8 @@ fn window_loads_native_words_and_the_composed_configuration() {
     assert_eq!(load(&mut n, idx::ID), 0x4452_4343, "§D3: ID \"DRCC\"");
     assert_eq!(
         load(&mut n, idx::VERSION),
-        0x0000_0104,
-        "§D10.1: VERSION 1.4"
+        0x0000_0105,
+        "§D10.1: VERSION 1.5"
     );
     // P-CFG-3 in REDUNDANCY: reset_mode = RM (1), redundancy, policy
     // error-passive (1 << 2), k = 1 (1 << 8), both channels NORMAL.

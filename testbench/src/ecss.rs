@@ -251,7 +251,11 @@ impl EcssReport {
 
     /// The clock of the master's last heartbeat delivered before the fault.
     pub fn last_hb_sent_before_fault(&self) -> Option<u64> {
-        self.hb_sent.iter().copied().filter(|&c| c < self.fault_start).last()
+        self.hb_sent
+            .iter()
+            .copied()
+            .filter(|&c| c < self.fault_start)
+            .last()
     }
 
     /// Bit times from the master's last heartbeat before the fault to node

@@ -10,6 +10,7 @@
 //! (the oracle written from the contract), never the RTL's.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
+use drcc_cosim::dual::ecss_config::EcssConfig;
 use drcc_cosim::dual::host::{btr, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::{DualBusSystem, Line};
@@ -90,6 +91,16 @@ fn random_config(rng: &mut SplitMix64, timing: u32) -> HostConfig {
         // Drawn after the rest for the same reason; a channel that goes bus-off
         // then stays held (the random host never writes recover, §11.6).
         busoff_manual: rng.percent(25),
+        // Drawn last again: the ECSS bus selection (contract §12) with a random
+        // heartbeat; without a master the nodes toggle by silence, so the lock
+        // step covers the missed-period clock, the toggles and the bound.
+        ecss: (redundancy && rng.percent(30)).then(|| EcssConfig {
+            ttoggle: 1 + rng.below(3) as u8,
+            ntoggle: rng.below(4) as u8,
+            bdefault_b: rng.percent(50),
+            hb_id: rng.below(0x800) as u16,
+            period_bits: 20 + rng.below(300) as u32,
+        }),
     }
 }
 

@@ -38,7 +38,12 @@ fn run(s: &EcssScenario) -> EcssReport {
         r.missing,
         r.duplicates
     );
-    assert!(r.expected > 200, "{}: the traffic ran ({} expected)", s.label(), r.expected);
+    assert!(
+        r.expected > 200,
+        "{}: the traffic ran ({} expected)",
+        s.label(),
+        r.expected
+    );
     r
 }
 
@@ -57,13 +62,23 @@ fn nodes_follow_the_master_through_line_faults() {
         let r = run(&s);
         let bound = s.toggle_bound_bits();
         for n in FOLLOWERS {
-            let follow = r.follow_bits(n).unwrap_or_else(|| panic!("{fault:?}: node {n} never moved"));
+            let follow = r
+                .follow_bits(n)
+                .unwrap_or_else(|| panic!("{fault:?}: node {n} never moved"));
             assert!(
                 (bound - 3..=bound + 160).contains(&follow),
                 "{fault:?}: node {n} moved {follow} bit times after the master's last heartbeat on A (Ttoggle x consumer time = {bound})"
             );
-            assert_eq!(r.status(n, "ctoggle"), 2, "{fault:?}: node {n} went to B and back");
-            assert_eq!(r.moves[n].len(), 2, "{fault:?}: node {n}'s traffic moved twice");
+            assert_eq!(
+                r.status(n, "ctoggle"),
+                2,
+                "{fault:?}: node {n} went to B and back"
+            );
+            assert_eq!(
+                r.moves[n].len(),
+                2,
+                "{fault:?}: node {n}'s traffic moved twice"
+            );
             assert_eq!(r.status(n, "bus"), 0, "{fault:?}: node {n} ends on A");
             assert_eq!(r.status(n, "no_master"), 0);
         }
@@ -94,9 +109,24 @@ fn ntoggle_bounds_the_search_for_a_silent_master() {
         let r = run(&s);
         let bound = s.toggle_bound_bits();
         for n in FOLLOWERS {
-            assert_eq!(r.status(n, "ctoggle"), ntoggle as u32, "{}: node {n}", s.label());
-            assert_eq!(r.moves[n].len(), ntoggle as usize, "{}: node {n}", s.label());
-            assert_eq!(r.status(n, "no_master"), 1, "{}: node {n} gave up", s.label());
+            assert_eq!(
+                r.status(n, "ctoggle"),
+                ntoggle as u32,
+                "{}: node {n}",
+                s.label()
+            );
+            assert_eq!(
+                r.moves[n].len(),
+                ntoggle as usize,
+                "{}: node {n}",
+                s.label()
+            );
+            assert_eq!(
+                r.status(n, "no_master"),
+                1,
+                "{}: node {n} gave up",
+                s.label()
+            );
             for w in r.moves[n].windows(2) {
                 let apart = (w[1] - w[0]) / drcc_testbench::dual::CLOCKS_PER_BIT;
                 assert!(
@@ -114,8 +144,9 @@ fn ntoggle_bounds_the_search_for_a_silent_master() {
 /// the legal ones are stored.
 #[test]
 fn illegal_ecss_values_are_refused_on_both_engines() {
-    let kinds: Vec<EngineKind> =
-        std::iter::once(EngineKind::Model).chain(cosim_engine()).collect();
+    let kinds: Vec<EngineKind> = std::iter::once(EngineKind::Model)
+        .chain(cosim_engine())
+        .collect();
     let put = |r: &str, f: &str, v: u32| MAP.field(r, f).put(v);
     let illegal = MAP.field("INT_STATUS", "illegal").put(1);
     let legal_cfg = put("ECSS_CFG", "ttoggle", 2) | put("ECSS_CFG", "ntoggle", 4);
@@ -123,8 +154,8 @@ fn illegal_ecss_values_are_refused_on_both_engines() {
     let writes = [
         (reg::ECSS_CFG, legal_cfg, false),
         (reg::ECSS_CFG, put("ECSS_CFG", "ntoggle", 1), true), // ttoggle 0
-        (reg::ECSS_CFG, 5 | 0x100 << 8, true),                  // ntoggle 256
-        (reg::ECSS_CFG, 5 | 1 << 27, true),                     // reserved
+        (reg::ECSS_CFG, 5 | 0x100 << 8, true),                // ntoggle 256
+        (reg::ECSS_CFG, 5 | 1 << 27, true),                   // reserved
         (reg::ECSS_HB, 0x3 << 30 | 0x701, true),
         (reg::ECSS_HB, 0x123, false),
         (reg::ECSS_PERIOD, 0, true),
@@ -150,7 +181,10 @@ fn illegal_ecss_values_are_refused_on_both_engines() {
             if !refused {
                 stored[(r - reg::ECSS_CFG) as usize] = v;
             }
-            expect.push((refused, stored[(r.min(reg::ECSS_PERIOD) - reg::ECSS_CFG) as usize]));
+            expect.push((
+                refused,
+                stored[(r.min(reg::ECSS_PERIOD) - reg::ECSS_CFG) as usize],
+            ));
         }
         let mut clocks = 0;
         while sys.node(0).host.reads.len() < 2 * writes.len() {
@@ -165,5 +199,8 @@ fn illegal_ecss_values_are_refused_on_both_engines() {
         assert_eq!(got, expect, "{kind}: (refused, stored) after each write");
         results.push(got);
     }
-    assert!(results.windows(2).all(|w| w[0] == w[1]), "the engines agree");
+    assert!(
+        results.windows(2).all(|w| w[0] == w[1]),
+        "the engines agree"
+    );
 }

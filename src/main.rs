@@ -243,7 +243,7 @@ enum Command {
     Campaign {
         /// Nothing (run), `merge FILE...` or `replay FILE`.
         args: Vec<String>,
-        /// Topology: dual.
+        /// Topology: dual, dmr, star or ecss.
         #[arg(long, default_value = "dual")]
         topology: String,
         /// Faults per scenario: single (judged) or double (reported).

@@ -1,6 +1,6 @@
 //! `drcc campaign`: random fault campaigns (`drcc_testbench::campaign`).
 //!
-//! - `drcc campaign [--topology dual|star] [--faults single|double] [--count N] [--seed S]
+//! - `drcc campaign [--topology dual|dmr|star|ecss] [--faults single|double] [--count N] [--seed S]
 //!   [--shard i/n] [--jobs J] [--out FILE] [--engine E]` runs the scenarios of one
 //!   shard, writes one JSON line per scenario to `FILE` (never over an existing
 //!   file), writes a replay file for every failing single-fault scenario into
@@ -46,7 +46,7 @@ const MAX_COUNT: u64 = 100_000_000;
 pub fn parse(a: &CampaignArgs) -> Result<Campaign, CliError> {
     let topology = Topology::from_name(a.topology).ok_or_else(|| {
         error(format!(
-            "--topology {}: the topologies are dual, dmr and star",
+            "--topology {}: the topologies are dual, dmr, star and ecss",
             a.topology
         ))
     })?;

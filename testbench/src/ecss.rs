@@ -16,7 +16,7 @@
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
 use drcc_cosim::dual::ecss_config::EcssConfig;
-use drcc_cosim::dual::host::{reg, HostConfig};
+use drcc_cosim::dual::host::{reg, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::{DualBusSystem, Line};
 use drcc_cosim::Frame;
@@ -114,15 +114,15 @@ impl EcssScenario {
 
     /// The master's configuration: the product's (`DualScenario::standard`),
     /// one copy per message (the heartbeat marks one bus).
-    fn master_config(&self) -> HostConfig {
+    pub fn master_config(&self) -> HostConfig {
         HostConfig {
             dual_tx: false,
             ..DualScenario::standard(DualFault::None).host_config()
         }
     }
 
-    /// A node's: the master's with the ECSS policy on.
-    fn node_config(&self) -> HostConfig {
+    /// A node's: the master's with the ECSS policy on and no channel policy.
+    pub fn node_config(&self) -> HostConfig {
         HostConfig {
             ecss: Some(EcssConfig {
                 ttoggle: self.ttoggle,
@@ -131,6 +131,11 @@ impl EcssScenario {
                 hb_id: HB_ID,
                 period_bits: self.consumer_bits,
             }),
+            // no channel judgement: the selection alone decides, and a restart
+            // (a controller reset) would cost a frame on a bus that carries
+            // one copy (docs/drcc.md "ECSS bus selection")
+            policy: Policy::None,
+            stall_limit: 0,
             ..self.master_config()
         }
     }
@@ -168,7 +173,8 @@ impl EcssScenario {
         traffic.max(after)
     }
 
-    fn heartbeat(seq: u64) -> Frame {
+    /// The master's `seq`-th heartbeat.
+    pub fn heartbeat(seq: u64) -> Frame {
         let mut data = [0u8; 8];
         // CANopen heartbeat: the NMT state (operational); byte 1 only tells the
         // frames apart in a trace
@@ -254,8 +260,7 @@ impl EcssReport {
         self.hb_sent
             .iter()
             .copied()
-            .filter(|&c| c < self.fault_start)
-            .last()
+            .rfind(|&c| c < self.fault_start)
     }
 
     /// Bit times from the master's last heartbeat before the fault to node

@@ -236,3 +236,39 @@ fn lockups_name_nodes_and_hubs() {
     let none = campaign::Outcome::default();
     assert_eq!(campaign::describe_lockups(&spec, &none), "none");
 }
+
+/// The ECSS topology (DRCC contract §12, `docs/campaign.md`): a fault on the
+/// bus nobody uses (line B: the master and the nodes follow its heartbeat on
+/// A) loses, duplicates and locks up nothing, and the master's heartbeats are
+/// not counted as traffic (no foreign frame). Faults on the bus in use are
+/// measured by the 2,000-scenario campaign, not judged: selective bus access
+/// loses frames there by the standard's design (`docs/drcc.md`).
+#[test]
+fn ecss_faults_on_the_idle_bus_lose_nothing() {
+    let classes = [
+        FaultClass::StuckDominant,
+        FaultClass::StuckRecessive,
+        FaultClass::Cut,
+        FaultClass::DeadTransceiver,
+        FaultClass::Babbling,
+        FaultClass::DeafReceiver,
+    ];
+    for (i, class) in classes.into_iter().enumerate() {
+        let mut spec = draw(Topology::Ecss, 1, 7, i as u64);
+        spec.faults = vec![DrawnFault {
+            class,
+            line: Side::B,
+            node: 1,
+            start_bit: 1_000,
+            bits: 4_000,
+            flips: vec![],
+        }];
+        let o = campaign::dual::run(&spec, EngineKind::Model, |_| Ok(())).unwrap();
+        assert!(o.deliveries > 20, "{class:?}: traffic ran");
+        assert_eq!(
+            (o.lost.len(), o.duplicated.len(), o.foreign, o.lockups.len()),
+            (0, 0, 0, 0),
+            "{class:?} on line B: lost, duplicated, foreign, lockups"
+        );
+    }
+}

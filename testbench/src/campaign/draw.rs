@@ -29,6 +29,9 @@ pub enum Topology {
     Dmr,
     /// DRCC nodes on two coupled ReCANcentrate hubs (channel A on hub 1, B on hub 2).
     Star,
+    /// DRCC nodes on lines A and B under the ECSS bus selection (DRCC contract
+    /// §12): node 0 the heartbeat master, the others following it.
+    Ecss,
 }
 
 impl Topology {
@@ -38,20 +41,26 @@ impl Topology {
             Topology::Dual => "dual",
             Topology::Dmr => "dmr",
             Topology::Star => "star",
+            Topology::Ecss => "ecss",
         }
     }
 
     /// The topology of a name.
     pub fn from_name(s: &str) -> Option<Topology> {
-        [Topology::Dual, Topology::Dmr, Topology::Star]
-            .into_iter()
-            .find(|t| t.name() == s)
+        [
+            Topology::Dual,
+            Topology::Dmr,
+            Topology::Star,
+            Topology::Ecss,
+        ]
+        .into_iter()
+        .find(|t| t.name() == s)
     }
 
     /// The fault classes of this topology's fault model.
     pub fn classes(self) -> &'static [FaultClass] {
         match self {
-            Topology::Dual | Topology::Dmr => &FaultClass::DUAL,
+            Topology::Dual | Topology::Dmr | Topology::Ecss => &FaultClass::DUAL,
             Topology::Star => &FaultClass::STAR,
         }
     }
@@ -252,7 +261,9 @@ impl ScenarioSpec {
             .iter()
             .map(|f| {
                 let on = match self.topology {
-                    Topology::Dual | Topology::Dmr => format!("on line {}", f.line.name()),
+                    Topology::Dual | Topology::Dmr | Topology::Ecss => {
+                        format!("on line {}", f.line.name())
+                    }
                     Topology::Star => format!("on hub {}", f.line as usize + 1),
                 };
                 let at = match f.class {
@@ -295,7 +306,7 @@ fn rng(seed: u64, index: u64) -> SplitMix64 {
 pub fn draw(topology: Topology, faults: usize, seed: u64, index: u64) -> ScenarioSpec {
     let mut r = rng(seed, index);
     let nodes = match topology {
-        Topology::Dual | Topology::Dmr => 3 + r.below(4) as usize, // 3..=6
+        Topology::Dual | Topology::Dmr | Topology::Ecss => 3 + r.below(4) as usize, // 3..=6
         // the emitted hub.v has 4 node ports; a free port is isolated as silent
         Topology::Star => 4,
     };

@@ -23,6 +23,13 @@
 //! that start together send identical connection-service frames, which only a
 //! node that is not sending acknowledges, DMR contract §7). Back to normal is
 //! then "redundancy active" (both lines judged sound) with no channel bus-off.
+//!
+//! The `ecss` topology runs them under the ECSS bus selection (DRCC contract
+//! §12) with the configuration of `drcc redundancy ecss`
+//! (`crate::ecss::EcssScenario::standard`): node 0 the master, sending one copy
+//! per message and its heartbeat every [`ECSS_HB_BITS`] bit times to the end
+//! of the run, the others following it. Its heartbeats are not traffic: the
+//! tally leaves them out.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
 use drcc_cosim::dual::dmr_config::{DmrConfig, DmrMailbox};
@@ -34,6 +41,7 @@ use super::draw::{FaultClass, ScenarioSpec, Side, Topology};
 use super::tally::{run_and_tally, submit_traffic};
 use super::Outcome;
 use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT};
+use crate::ecss::{EcssFault, EcssScenario};
 use crate::engines::EngineKind;
 
 /// Frames every host sends after the last fault and the last submission.
@@ -45,6 +53,9 @@ pub const TAIL_FRAMES: usize = 3;
 pub const TAIL_START_BITS: u64 = 1_500;
 pub const TAIL_PERIOD_BITS: u64 = 1_500;
 pub const TAIL_END_BITS: u64 = 4_000;
+
+/// The `ecss` topology's heartbeat period (the ECSS table's).
+pub const ECSS_HB_BITS: u64 = 1_000;
 
 /// The product's recommended redundancy configuration: the dual-bus table's.
 fn host_config() -> HostConfig {
@@ -104,6 +115,19 @@ pub fn host_configs(spec: &ScenarioSpec) -> Vec<HostConfig> {
                 ..redundancy
             }))
             .collect(),
+        Topology::Ecss => {
+            let e = EcssScenario::standard(EcssFault::None);
+            assert_eq!(e.hb_bits, ECSS_HB_BITS);
+            (0..spec.nodes)
+                .map(|n| {
+                    if n == 0 {
+                        e.master_config()
+                    } else {
+                        e.node_config()
+                    }
+                })
+                .collect()
+        }
         _ => vec![redundancy; spec.nodes],
     }
 }
@@ -160,6 +184,15 @@ pub fn build(spec: &ScenarioSpec, kind: EngineKind) -> Result<DualBusSystem, Str
         TAIL_PERIOD_BITS,
         CLOCKS_PER_BIT,
     );
+    if spec.topology == Topology::Ecss {
+        let end = end_cycle(spec) / CLOCKS_PER_BIT;
+        for seq in 0..end / ECSS_HB_BITS {
+            let due = (50 + seq * ECSS_HB_BITS) * CLOCKS_PER_BIT;
+            sys.node_mut(0)
+                .host
+                .submit(due, EcssScenario::heartbeat(seq), 0);
+        }
+    }
     for f in &spec.faults {
         let start = f.start_bit * CLOCKS_PER_BIT;
         let cycles = f.bits * CLOCKS_PER_BIT;

@@ -172,7 +172,7 @@ pub fn parse_replay(text: &str) -> Result<(Topology, usize, u64, u64), String> {
     })?;
     let topology = Topology::from_name(&r.topology).ok_or_else(|| {
         format!(
-            "unknown topology {:?}: the topologies are dual, dmr and star",
+            "unknown topology {:?}: the topologies are dual, dmr, star and ecss",
             r.topology
         )
     })?;
@@ -188,7 +188,7 @@ pub fn parse_replay(text: &str) -> Result<(Topology, usize, u64, u64), String> {
 /// Runs one scenario.
 pub fn run_one(spec: &ScenarioSpec, engine: EngineKind) -> Result<Outcome, String> {
     match spec.topology {
-        Topology::Dual | Topology::Dmr => dual::run(spec, engine, |_| Ok(())),
+        Topology::Dual | Topology::Dmr | Topology::Ecss => dual::run(spec, engine, |_| Ok(())),
         Topology::Star => star::run(spec, engine, |_| Ok(())),
     }
 }

@@ -231,6 +231,9 @@ pub fn tally(
         let mut seen: Vec<Vec<Vec<(u8, u64)>>> = vec![vec![Vec::new(); frames]; spec.nodes];
         for got in &host.received {
             let f = got.frame;
+            if spec.topology == Topology::Ecss && f.id == crate::ecss::HB_ID as u32 {
+                continue; // the master's heartbeat, not traffic
+            }
             let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
             if sender < spec.nodes && k < frames && f == frame(spec, sender, k) {
                 seen[sender][k].push((got.channel, got.cycle));

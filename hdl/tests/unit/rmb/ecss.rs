@@ -37,7 +37,7 @@ fn settle(uut: &mut Pair) {
 
 /// Edge `clk` (counted from 1 after the reset): the tick is set before it.
 fn clock(uut: &mut Pair, clk: u64) {
-    uut.hbc.tick.next = clk % 4 == 0;
+    uut.hbc.tick.next = clk.is_multiple_of(4);
     settle(uut);
     for level in [false, true] {
         uut.sel.clk.next = Clock::from(level);
@@ -87,7 +87,7 @@ fn run(
     let (mut events, mut toggles) = (vec![], 0);
     for clk in from..=to {
         rx(&mut uut.sel, clk);
-        uut.hbc.tick.next = clk % 4 == 0;
+        uut.hbc.tick.next = clk.is_multiple_of(4);
         settle(uut);
         if uut.ev_toggle.val() {
             events.push(clk);
@@ -123,7 +123,7 @@ fn heartbeats_on_the_bus_in_use_hold_it() {
     let mut uut = fresh(2, 1, 5);
     // a heartbeat every 9 bit times (36 clocks) < 10: no toggle
     let (events, _) = run(&mut uut, 1, 180, |u, clk| {
-        u.rx_valid_a.next = clk % 36 == 0;
+        u.rx_valid_a.next = clk.is_multiple_of(36);
         u.key_a.next = HB.into();
     });
     assert!(
@@ -133,7 +133,7 @@ fn heartbeats_on_the_bus_in_use_hold_it() {
     // then a remote frame and another identifier at every clock: silence
     let (events, toggles) = run(&mut uut, 181, 230, |u, clk| {
         u.rx_valid_a.next = true;
-        u.key_a.next = if clk % 2 == 0 {
+        u.key_a.next = if clk.is_multiple_of(2) {
             (1u64 << 30 | HB).into()
         } else {
             0x702u64.into()

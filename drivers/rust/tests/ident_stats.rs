@@ -25,10 +25,10 @@ use common::{bus_or_skip, FRAME_BITS};
 use drcc_driver::{regs, Drcc, Error, Ident, Registers};
 use drcc_driver_sim::c_init_with_version;
 
-/// The default top's VERSION and SIZES (contract §1.1, §10.1; minor 4: DMR §8.1).
+/// The default top's VERSION and SIZES (contract §1.1, §10.1; minor 5: the ECSS bus selection, §12).
 const DEFAULT_TOP: Ident = Ident {
     major: 1,
-    minor: 4,
+    minor: 5,
     rx_fifo_depth: 32,
     tx_queue_depth: 8,
     history: 32,

@@ -77,6 +77,10 @@ fn model_host_and_generated_header_agree_on_every_register() {
         ("FILT_MASK1", idx::FILT_MASK1, reg::FILT_MASK1),
         ("RX_TIME", idx::RX_TIME, reg::RX_TIME),
         ("STATS_CLR", idx::STATS_CLR, reg::STATS_CLR),
+        ("ECSS_CFG", idx::ECSS_CFG, reg::ECSS_CFG),
+        ("ECSS_HB", idx::ECSS_HB, reg::ECSS_HB),
+        ("ECSS_PERIOD", idx::ECSS_PERIOD, reg::ECSS_PERIOD),
+        ("ECSS_STATUS", idx::ECSS_STATUS, reg::ECSS_STATUS),
     ];
     let header = header_offsets();
     assert_eq!(

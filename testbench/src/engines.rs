@@ -92,3 +92,21 @@ pub use drcc_cosim::engine::verilator::verilator_required;
 pub fn tools_required() -> bool {
     verilator_required()
 }
+
+/// The engine to run in lock step with the model: Verilator when `probe` (the
+/// Verilated top's constructor, `what` its name) succeeds; without it, a panic
+/// where Verilator is required (CI) and the model alone elsewhere, said on
+/// stderr.
+pub fn lockstep_engine(
+    what: &str,
+    probe: impl FnOnce() -> Result<(), String>,
+) -> Option<EngineKind> {
+    match probe() {
+        Ok(()) => Some(EngineKind::Verilator),
+        Err(e) if verilator_required() => panic!("the Verilated {what} is required in CI: {e}"),
+        Err(e) => {
+            eprintln!("model only, no lock step with the RTL: {e}");
+            None
+        }
+    }
+}

@@ -8,18 +8,11 @@
 
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
 use drcc_testbench::dual::{run_dual, DualFault, DualReport, DualScenario};
-use drcc_testbench::engines::verilator_required;
+use drcc_testbench::engines::lockstep_engine;
 use drcc_testbench::EngineKind;
 
 fn cosim_engine() -> Option<EngineKind> {
-    match DrccVerilatorEngine::new() {
-        Ok(_) => Some(EngineKind::Verilator),
-        Err(e) if verilator_required() => panic!("the Verilated DRCC is required in CI: {e}"),
-        Err(e) => {
-            eprintln!("model only, no lock step with the RTL: {e}");
-            None
-        }
-    }
+    lockstep_engine("DRCC", || DrccVerilatorEngine::new().map(|_| ()))
 }
 
 fn run(fault: DualFault) -> DualReport {

@@ -11,7 +11,7 @@
 
 use drcc_cosim::dual::host::Policy;
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
-use drcc_testbench::engines::verilator_required;
+use drcc_testbench::engines::lockstep_engine;
 use drcc_testbench::paper::{run_paper, PaperReport, Rate};
 use drcc_testbench::EngineKind;
 
@@ -20,14 +20,7 @@ const SWITCH_PATH: [u8; 9] = [0, 1, 2, 3, 4, 5, 6, 7, 5];
 
 /// The Verilated RTL to run in lock step with the model; required in CI.
 fn cosim_engine() -> Option<EngineKind> {
-    match DrccVerilatorEngine::new() {
-        Ok(_) => Some(EngineKind::Verilator),
-        Err(e) if verilator_required() => panic!("the Verilated DRCC is required in CI: {e}"),
-        Err(e) => {
-            eprintln!("model only, no lock step with the RTL: {e}");
-            None
-        }
-    }
+    lockstep_engine("DRCC", || DrccVerilatorEngine::new().map(|_| ()))
 }
 
 fn check_switch(r: &PaperReport, attempts_on_a: usize) {

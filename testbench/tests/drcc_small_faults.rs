@@ -8,18 +8,11 @@
 use drcc_cosim::engine::drcc_verilator::DrccSmallVerilatorEngine;
 use drcc_testbench::drcc_build::DrccBuild;
 use drcc_testbench::dual::{run_dual, DualFault, DualScenario};
-use drcc_testbench::engines::verilator_required;
+use drcc_testbench::engines::lockstep_engine;
 use drcc_testbench::EngineKind;
 
 fn cosim_engine() -> Option<EngineKind> {
-    match DrccSmallVerilatorEngine::new() {
-        Ok(_) => Some(EngineKind::Verilator),
-        Err(e) if verilator_required() => panic!("the Verilated drcc_small is required in CI: {e}"),
-        Err(e) => {
-            eprintln!("model only, no lock step with the RTL: {e}");
-            None
-        }
-    }
+    lockstep_engine("drcc_small", || DrccSmallVerilatorEngine::new().map(|_| ()))
 }
 
 fn run(fault: DualFault) {

@@ -17,19 +17,12 @@
 
 use drcc_cosim::engine::hub_verilator::HubVerilatorEngine;
 use drcc_cosim::star::hub_host::HubConfig;
-use drcc_testbench::engines::verilator_required;
+use drcc_testbench::engines::lockstep_engine;
 use drcc_testbench::star::{run_star, StarFault, StarReport, StarScenario, CLOCKS_PER_BIT, HUB_N};
 use drcc_testbench::EngineKind;
 
 fn cosim_engine() -> Option<EngineKind> {
-    match HubVerilatorEngine::new() {
-        Ok(_) => Some(EngineKind::Verilator),
-        Err(e) if verilator_required() => panic!("the Verilated hub is required in CI: {e}"),
-        Err(e) => {
-            eprintln!("model only, no lock step with the RTL: {e}");
-            None
-        }
-    }
+    lockstep_engine("hub", || HubVerilatorEngine::new().map(|_| ()))
 }
 
 fn run(fault: StarFault) -> (StarScenario, StarReport) {

@@ -25,63 +25,7 @@ use drcc_hdl::host::registers::{SwitchPolicy, MAP};
 use std::collections::VecDeque;
 use std::sync::LazyLock;
 
-/// Word indices of the DRCC registers, from the register table of drcc-hdl
-/// (`drcc_hdl::host::registers`, contract §3) as the `u8` the bus carries.
-pub mod reg {
-    use drcc_hdl::host::registers as map;
-    pub const ID: u8 = map::ID as u8;
-    pub const CTRL: u8 = map::CTRL as u8;
-    pub const BTR: u8 = map::BTR as u8;
-    pub const RMB_CFG: u8 = map::RMB_CFG as u8;
-    pub const DEDUP_CFG: u8 = map::DEDUP_CFG as u8;
-    pub const STATUS: u8 = map::STATUS as u8;
-    pub const INT_STATUS: u8 = map::INT_STATUS as u8;
-    pub const INT_ENABLE: u8 = map::INT_ENABLE as u8;
-    pub const CHAN_A_ERR: u8 = map::CHAN_A_ERR as u8;
-    pub const CHAN_B_ERR: u8 = map::CHAN_B_ERR as u8;
-    pub const AUX_A: u8 = map::AUX_A as u8;
-    pub const AUX_B: u8 = map::AUX_B as u8;
-    pub const TX_ID: u8 = map::TX_ID as u8;
-    pub const TX_CTRL: u8 = map::TX_CTRL as u8;
-    pub const TX_DATA0: u8 = map::TX_DATA0 as u8;
-    pub const TX_DATA1: u8 = map::TX_DATA1 as u8;
-    pub const TX_CMD: u8 = map::TX_CMD as u8;
-    pub const RX_ID: u8 = map::RX_ID as u8;
-    pub const RX_CTRL: u8 = map::RX_CTRL as u8;
-    pub const RX_DATA0: u8 = map::RX_DATA0 as u8;
-    pub const RX_DATA1: u8 = map::RX_DATA1 as u8;
-    pub const RX_CMD: u8 = map::RX_CMD as u8;
-    pub const STATS0: u8 = map::STATS0 as u8;
-    pub const STATS1: u8 = map::STATS1 as u8;
-    pub const TIMES: u8 = map::TIMES as u8;
-    pub const STAR_STATUS: u8 = map::STAR_STATUS as u8;
-    pub const OMISSIONS: u8 = map::OMISSIONS as u8;
-    pub const VERSION: u8 = map::VERSION as u8;
-    pub const SIZES: u8 = map::SIZES as u8;
-    pub const CAP_A: u8 = map::CAP_A as u8;
-    pub const CAP_B: u8 = map::CAP_B as u8;
-    pub const FILT_ID0: u8 = map::FILT_ID0 as u8;
-    pub const FILT_MASK0: u8 = map::FILT_MASK0 as u8;
-    pub const FILT_ID1: u8 = map::FILT_ID1 as u8;
-    pub const FILT_MASK1: u8 = map::FILT_MASK1 as u8;
-    pub const RX_TIME: u8 = map::RX_TIME as u8;
-    pub const STATS_CLR: u8 = map::STATS_CLR as u8;
-    pub const DMR_CFG: u8 = map::DMR_CFG as u8;
-    pub const DMR_TIME: u8 = map::DMR_TIME as u8;
-    pub const DMR_CS: u8 = map::DMR_CS as u8;
-    pub const DMR_STATUS: u8 = map::DMR_STATUS as u8;
-    pub const DMR_CS_COUNT: u8 = map::DMR_CS_COUNT as u8;
-    pub const DMR_RX_STATS: u8 = map::DMR_RX_STATS as u8;
-    pub const MB_SEL: u8 = map::MB_SEL as u8;
-    pub const MB_ID: u8 = map::MB_ID as u8;
-    pub const MB_MASK: u8 = map::MB_MASK as u8;
-    pub const MB_CFG: u8 = map::MB_CFG as u8;
-    pub const MB_STATE: u8 = map::MB_STATE as u8;
-    pub const ECSS_CFG: u8 = map::ECSS_CFG as u8;
-    pub const ECSS_HB: u8 = map::ECSS_HB as u8;
-    pub const ECSS_PERIOD: u8 = map::ECSS_PERIOD as u8;
-    pub const ECSS_STATUS: u8 = map::ECSS_STATUS as u8;
-}
+pub mod reg;
 
 /// `reg.field` placed in a register word (positions from the table).
 fn put(reg: &str, field: &str, value: u32) -> u32 {

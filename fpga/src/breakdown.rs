@@ -84,10 +84,30 @@ pub fn percent(a: u64, b: u64) -> f64 {
     }
 }
 
-/// The modules of the direct children of `top` in its rust-hdl Verilog, in the
-/// order of their first instance. rust-hdl names the module of a child field
-/// `x` of `top` `top__x` and instantiates it as `top__x x(...)`.
+/// The blocks of `top` in its rust-hdl Verilog, in the order of their first
+/// instance: its direct children, except that a DRCC core (a child module named
+/// `*__core`, which the native and the bus tops wrap whole) stands for its own
+/// children, so that the report names the channels, FSMs and memories rather
+/// than one core. rust-hdl names the module of a child field `x` of `top`
+/// `top__x` and instantiates it as `top__x x(...)`.
 pub fn children(verilog: &str, top: &str) -> Vec<String> {
+    let mut blocks = Vec::new();
+    for c in direct_children(verilog, top) {
+        let inner = if c.ends_with("__core") {
+            direct_children(verilog, &c)
+        } else {
+            Vec::new()
+        };
+        if inner.is_empty() {
+            blocks.push(c);
+        } else {
+            blocks.extend(inner);
+        }
+    }
+    blocks
+}
+
+fn direct_children(verilog: &str, top: &str) -> Vec<String> {
     let head = format!("module {top}(");
     let Some(start) = verilog.find(&head) else {
         return Vec::new();
@@ -107,15 +127,45 @@ pub fn children(verilog: &str, top: &str) -> Vec<String> {
     found
 }
 
-/// The yosys script: the family's synthesis of `top` with the `children`
-/// modules kept.
-pub fn script(t: &Target, rtl: &Path, top: &str, children: &[String]) -> String {
-    let mut s = format!("read_verilog {}\nhierarchy -top {top}\n", quote(rtl));
-    for c in children {
-        s.push_str(&format!("setattr -mod -set keep_hierarchy 1 {c}\n"));
+/// The yosys script: the family's synthesis of `top` (Verilog `rtl`, in which
+/// [`keep`] has marked the blocks).
+pub fn script(t: &Target, rtl: &Path, top: &str) -> String {
+    format!(
+        "read_verilog {}\nhierarchy -top {top}\n{} -top {top}\n",
+        quote(rtl),
+        t.synth
+    )
+}
+
+/// `verilog` with `(* keep_hierarchy *)` on the declarations of the `children`
+/// modules. An attribute in the source, unlike a `setattr` after `hierarchy`,
+/// also reaches the copies yosys derives for a module with parameters
+/// (`$paramod...`), which the sized blocks are.
+pub fn keep(verilog: &str, children: &[String]) -> String {
+    let mut out = String::with_capacity(verilog.len() + 32 * children.len());
+    for line in verilog.split_inclusive('\n') {
+        let kept = line
+            .strip_prefix("module ")
+            .and_then(|r| r.split(['(', ' ', '#']).next())
+            .is_some_and(|name| children.iter().any(|c| c == name));
+        if kept {
+            out.push_str("(* keep_hierarchy *)\n");
+        }
+        out.push_str(line);
     }
-    s.push_str(&format!("{} -top {top}\n", t.synth));
-    s
+    out
+}
+
+/// A module name as the top's Verilog spells it: yosys names the copy of a
+/// module with parameters `$paramod\name\P=...` (or `$paramod$hash\name`).
+fn base_name(name: &str) -> &str {
+    match name.strip_prefix("$paramod") {
+        Some(rest) => {
+            let rest = &rest[rest.find('\\').map_or(0, |i| i + 1)..];
+            rest.split('\\').next().unwrap_or(rest)
+        }
+        None => name,
+    }
 }
 
 /// Cell counts of every module section (`=== name ===`) of a yosys `stat`
@@ -127,7 +177,7 @@ pub fn parse_sections(text: &str) -> BTreeMap<String, BTreeMap<String, u64>> {
     for line in text.lines() {
         let t = line.trim();
         if let Some(name) = t.strip_prefix("=== ").and_then(|r| r.strip_suffix(" ===")) {
-            current = (name != "design hierarchy").then(|| name.to_string());
+            current = (name != "design hierarchy").then(|| base_name(name).to_string());
             in_cells = false;
             continue;
         }
@@ -145,7 +195,7 @@ pub fn parse_sections(text: &str) -> BTreeMap<String, BTreeMap<String, u64>> {
             ([name, _], Some(Ok(n))) => {
                 *out.entry(module.clone())
                     .or_default()
-                    .entry(name.to_string())
+                    .entry(base_name(name).to_string())
                     .or_insert(0) += n;
             }
             _ => in_cells = false,
@@ -171,17 +221,30 @@ pub fn from_sections(
             .collect();
         Area::from_cells(t.arch, own)
     };
-    let glue = area(
-        sections
-            .get(top)
-            .ok_or_else(|| format!("no section for {top} in the yosys statistics"))?,
-    );
+    let top_cells = sections
+        .get(top)
+        .ok_or_else(|| format!("no section for {top} in the yosys statistics"))?;
+    let glue = area(top_cells);
+    // A module the top instantiates n times (the two channels share one since
+    // the readable Verilog) counts n times, and says so in its name.
     let mut blocks: Vec<BlockArea> = sections
         .iter()
         .filter_map(|(m, cells)| {
-            m.strip_prefix(&prefix).map(|b| BlockArea {
-                block: b.to_string(),
-                area: area(cells),
+            let name = m.strip_prefix(&prefix)?;
+            let name = name.strip_prefix("core__").unwrap_or(name);
+            let n = top_cells.get(m).copied().unwrap_or(1).max(1);
+            let one = area(cells);
+            let mut all = one.clone();
+            for _ in 1..n {
+                all = all.plus(&one);
+            }
+            Some(BlockArea {
+                block: if n > 1 {
+                    format!("{name} (x{n})")
+                } else {
+                    name.to_string()
+                },
+                area: all,
             })
         })
         .collect();
@@ -197,21 +260,14 @@ pub fn from_sections(
     })
 }
 
-/// Runs the breakdown synthesis of `top` (Verilog `rtl`, text `verilog`) in
+/// Runs the breakdown synthesis of `top` (its Verilog text `verilog`) in
 /// `dir` (`<top>_blocks.ys`, `_blocks_stat.txt`, `_blocks_yosys.log`).
-pub fn run(
-    dir: &Path,
-    t: &Target,
-    rtl: &Path,
-    top: &str,
-    verilog: &str,
-) -> Result<Breakdown, Error> {
+pub fn run(dir: &Path, t: &Target, top: &str, verilog: &str) -> Result<Breakdown, Error> {
     let children = children(verilog, top);
-    let (text, stat_path) = yosys::run_stat(
-        dir,
-        &format!("{top}_blocks"),
-        &script(t, rtl, top, &children),
-    )?;
+    let marked = dir.join(format!("{top}_blocks.v"));
+    crate::write_file(&marked, &keep(verilog, &children))?;
+    let (text, stat_path) =
+        yosys::run_stat(dir, &format!("{top}_blocks"), &script(t, &marked, top))?;
     from_sections(t, top, &parse_sections(&text))
         .map_err(|m| Error(format!("{}: {m}", stat_path.display())))
 }
@@ -228,6 +284,16 @@ mod tests {
         assert!(children(v, "missing").is_empty());
     }
 
+    /// A core the top wraps stands for its own children.
+    #[test]
+    fn a_core_stands_for_its_blocks() {
+        let v = "module t(clk);\n  t__core core(.clk(clk));\n  t__view view(.clk(clk));\nendmodule\nmodule t__core(clk);\n  t__core__rxw rxw(.clk(clk));\n  t__core__chan chan_a(.clk(clk));\nendmodule\n";
+        assert_eq!(
+            children(v, "t"),
+            vec!["t__core__rxw", "t__core__chan", "t__view"]
+        );
+    }
+
     /// A stat report of two kept children: each block counts its own cells, the
     /// top's SB_LUT4 are the glue, and instances of kept modules are not cells.
     #[test]
@@ -242,5 +308,33 @@ mod tests {
         assert_eq!((b.blocks[1].area.lut, b.blocks[1].area.ff), (10, 3));
         assert_eq!(b.glue.lut, 2);
         assert_eq!((b.total.lut, b.total.ff, b.total.bram), (32, 3, 5));
+    }
+
+    /// The kept blocks carry the attribute in the source; others do not.
+    #[test]
+    fn keep_marks_the_blocks_declarations() {
+        let v = "module t(clk);\nendmodule\nmodule t__a #(parameter D = 4) (clk);\nendmodule\nmodule t__ab(clk);\nendmodule\n";
+        let k = keep(v, &["t__a".to_string()]);
+        assert!(k.contains("(* keep_hierarchy *)\nmodule t__a #"));
+        assert_eq!(k.matches("keep_hierarchy").count(), 1);
+    }
+
+    /// Derived copies of a module with parameters count as the module.
+    #[test]
+    fn paramod_names_are_the_modules() {
+        assert_eq!(base_name("$paramod\\t__rxw\\DEPTH=s32'00100000"), "t__rxw");
+        assert_eq!(base_name("$paramod$3f2a\\t__rxw"), "t__rxw");
+        assert_eq!(base_name("t__chan"), "t__chan");
+    }
+
+    /// A module instantiated twice (a core's two channels) counts twice.
+    #[test]
+    fn a_shared_module_counts_once_per_instance() {
+        let text = "\n=== t ===\n\n   Number of cells:   3\n     SB_LUT4    1\n     t__core__chan  2\n\n=== t__core__chan ===\n\n   Number of cells:   12\n     SB_DFF     4\n     SB_LUT4    8\n";
+        let t = Target::by_name("ice40").unwrap();
+        let b = from_sections(t, "t", &parse_sections(text)).unwrap();
+        assert_eq!(b.blocks[0].block, "chan (x2)");
+        assert_eq!((b.blocks[0].area.lut, b.blocks[0].area.ff), (16, 8));
+        assert_eq!(b.total.lut, 17);
     }
 }

@@ -123,7 +123,7 @@ impl Flow<'_> {
                 "{} on {}: yosys with each block of the top kept apart (area by block)",
                 top.name, t.name
             ));
-            Some(breakdown::run(&dir, t, &rtl, top.name, &top.verilog())?)
+            Some(breakdown::run(&dir, t, top.name, &top.verilog())?)
         } else {
             None
         };

@@ -13344,8 +13344,9 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
     localparam [4:0] hmask = HISTORY[4:0] - 5'd1;
     localparam [5:0] fifo_depth = RX_FIFO_DEPTH;
     localparam  zero31 = 31'h0;
-    localparam  zero32 = 32'h0;
-    localparam  one32 = 32'h1;
+    localparam  one3 = 3'b1;
+    localparam  three3 = 3'b11;
+    localparam  five3 = 3'b101;
     localparam  zero15 = 15'b0;
     localparam  one15 = 15'b1;
     localparam  max15 = 15'b111111111111111;
@@ -13366,6 +13367,13 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
     reg  [4:0] hist_ts__write_address;
     reg  [15:0] hist_ts__write_data;
     reg  hist_ts__write_enable;
+    reg  flags__clk;
+    reg  [4:0] flags__read_address;
+    reg  flags__read_enable;
+    wire  [2:0] flags__read_data;
+    reg  [4:0] flags__write_address;
+    reg  [2:0] flags__write_data;
+    reg  flags__write_enable;
     reg  rel__clk;
     reg  rel__clear;
     reg  rel__start;
@@ -13443,12 +13451,8 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
     reg  exp_q__q;
     reg  [14:0] hist_idle__d;
     reg  [14:0] hist_idle__q;
-    reg  [31:0] hv__d;
-    reg  [31:0] hv__q;
-    reg  [31:0] hu__d;
-    reg  [31:0] hu__q;
-    reg  [31:0] hd__d;
-    reg  [31:0] hd__q;
+    reg  forget__d;
+    reg  forget__q;
     reg  release_q__d;
     reg  release_q__q;
     reg  w_pcl__d;
@@ -13471,10 +13475,8 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
     reg  e_ge;
     reg  e_keep;
     reg  [4:0] slot;
-    reg  [4:0] mask_e;
-    reg  [31:0] mask;
+    reg  forget_now;
     reg  fifo_full;
-    reg  [31:0] hv_base;
     reg  in_scan;
     reg  judging;
     reg  pcl;
@@ -13505,6 +13507,15 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         .write_address(hist_ts__write_address),
         .write_data(hist_ts__write_data),
         .write_enable(hist_ts__write_enable)
+    );
+    drcc_pelican_axi__pelican__core__rxw__flags flags(
+        .clk(flags__clk),
+        .read_address(flags__read_address),
+        .read_enable(flags__read_enable),
+        .read_data(flags__read_data),
+        .write_address(flags__write_address),
+        .write_data(flags__write_data),
+        .write_enable(flags__write_enable)
     );
     drcc_pelican_axi__pelican__core__rxw__rel rel(
         .clk(rel__clk),
@@ -13570,9 +13581,7 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         hist_ptr__d = hist_ptr__q;
         exp_q__d = exp_q__q;
         hist_idle__d = hist_idle__q;
-        hv__d = hv__q;
-        hu__d = hu__q;
-        hd__d = hd__q;
+        forget__d = forget__q;
         release_q__d = release_q__q;
         w_pcl__d = w_pcl__q;
         hit_hd__d = hit_hd__q;
@@ -13584,6 +13593,8 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         hist__read_enable = 1'b1;
         hist_ts__clk = clk;
         hist_ts__read_enable = 1'b1;
+        flags__clk = clk;
+        flags__read_enable = 1'b1;
         rel__clk = clk;
         rel__clear = clear;
         stats__clk = clk;
@@ -13605,15 +13616,19 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
             slot = hist_ptr__q;
         end
         if (w_state__q == s_decide) begin
-            mask_e = hit_e__q;
+            flags__write_address = hit_e__q;
         end
         else if (w_state__q == s_release) begin
-            mask_e = rel__rel_e;
+            flags__write_address = rel__rel_e;
+        end
+        else if (w_state__q == s_write) begin
+            flags__write_address = slot;
         end
         else begin
-            mask_e = slot;
+            flags__write_address = scan_e;
         end
-        mask = one32 << mask_e;
+        flags__write_enable = 1'b0;
+        flags__write_data = flags__read_data;
         e_ch = hist__read_data[32'h0];
         e_frame = hist__read_data[(32'h1)+:(99)];
         e_ts = hist_ts__read_data;
@@ -13626,9 +13641,9 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         else begin
             exp_q__d = e_gt;
         end
-        e_hv = hv__q[32'h0];
-        e_hu = hu__q[32'h0];
-        e_hd = hd__q[32'h0];
+        e_hv = flags__read_data[32'h0] & ~forget__q;
+        e_hu = flags__read_data[32'h1];
+        e_hd = flags__read_data[32'h2];
         e_expired = exp_q__q;
         fifo_full = fifo_count == fifo_depth;
         in_scan = (w_state__q == s_scan) | (w_state__q == s_rscan);
@@ -13642,6 +13657,7 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         else begin
             hist__read_address = scan_i__q[(32'h0)+:(5)] & hmask;
         end
+        flags__read_address = scan_i__q[(32'h0)+:(5)] & hmask;
         hist__write_enable = 1'b0;
         hist__write_address = slot;
         hist__write_data = (((frame_sel) & 100'hfffffffffffffffffffffffff) << 32'h1) | ((sel__q) & 100'hfffffffffffffffffffffffff);
@@ -13712,26 +13728,21 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         free_found__d = free_found__q;
         free_e__d = free_e__q;
         hist_ptr__d = hist_ptr__q;
-        hu__d = hu__q;
-        hd__d = hd__q;
         release_q__d = release_q__q;
         w_pcl__d = w_pcl__q;
         hist_idle__d = hist_idle__q;
         if (tick & (hist_idle__q != max15)) begin
             hist_idle__d = hist_idle__q + one15;
         end
-        if (hist_idle__q == max15) begin
-            hv_base = zero32;
-        end
-        else begin
-            hv_base = hv__q;
-        end
-        e_keep = hv_base[32'h0] & ~e_expired;
-        hv__d = hv_base;
+        forget_now = clear | (hist_idle__q == max15);
+        forget__d = forget__q | forget_now;
+        e_keep = e_hv & ~e_expired;
         if (judging) begin
-            hv__d = (hv_base >> one32) | (((e_keep) & 32'hffffffff) << hmask);
-            hu__d = (hu__q >> one32) | (((hu__q[32'h0]) & 32'hffffffff) << hmask);
-            hd__d = (hd__q >> one32) | (((hd__q[32'h0]) & 32'hffffffff) << hmask);
+            flags__write_enable = 1'b1;
+            flags__write_data = (((e_keep) & 3'h7)) | (((e_hu) & 3'h7) << 32'h1) | (((e_hd) & 3'h7) << 32'h2);
+            if (scan_i__q == last_scan) begin
+                forget__d = forget_now;
+            end
         end
         if (w_state__q == s_idle) begin
             if (rxp_a__q | rxp_b__q) begin
@@ -13802,7 +13813,8 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
             stats__pcl_inc = count_pcl & pcl;
             if (hit__q) begin
                 if (~acl_rule | ~pcl | hit_hd__q) begin
-                    hu__d = hu__q | mask;
+                    flags__write_enable = 1'b1;
+                    flags__write_data = three3 | (((hit_hd__q) & 3'h7) << 32'h2);
                 end
                 if (acl_rule & ~hit_hd__q & ~pcl) begin
                     w_state__d = s_write;
@@ -13832,14 +13844,8 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
             if (w_hist) begin
                 hist__write_enable = 1'b1;
                 hist_ts__write_enable = 1'b1;
-                hv__d = hv_base | mask;
-                hu__d = hu__q & ~mask;
-                if (~w_fifo) begin
-                    hd__d = hd__q & ~mask;
-                end
-                else begin
-                    hd__d = hd__q | mask;
-                end
+                flags__write_enable = 1'b1;
+                flags__write_data = one3 | (((w_fifo) & 3'h7) << 32'h2);
                 if (~free_found__q) begin
                     hist_ptr__d = (hist_ptr__q + one5) & hmask;
                 end
@@ -13860,7 +13866,8 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
                 fifo_wr = 1'b1;
                 rx_evt = 1'b1;
             end
-            hd__d = hd__q | mask;
+            flags__write_enable = 1'b1;
+            flags__write_data = five3;
             stats__released_inc = 1'b1;
             w_state__d = s_idle;
         end
@@ -13894,9 +13901,8 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
             free_e__d = zero5;
             hist_ptr__d = zero5;
             hist_idle__d = zero15;
-            hv__d = zero32;
-            hu__d = zero32;
-            hd__d = zero32;
+            forget__d = 1'b1;
+            flags__write_enable = 1'b0;
             release_q__d = 1'b0;
             w_pcl__d = 1'b0;
             fifo_wr = 1'b0;
@@ -13941,9 +13947,7 @@ module drcc_pelican_axi__pelican__core__rxw(clk,rst,clear,dedup_on,window,now,ti
         hist_ptr__q <= hist_ptr__d;
         exp_q__q <= exp_q__d;
         hist_idle__q <= hist_idle__d;
-        hv__q <= hv__d;
-        hu__q <= hu__d;
-        hd__q <= hd__d;
+        forget__q <= forget__d;
         release_q__q <= release_q__d;
         w_pcl__q <= w_pcl__d;
         hit_hd__q <= hit_hd__d;
@@ -14034,6 +14038,36 @@ module drcc_pelican_axi__pelican__core__rxw__acf(acr0,acr1,acr2,acr3,amr0,amr1,a
     end
 
 endmodule // drcc_pelican_axi__pelican__core__rxw__acf
+
+
+module drcc_pelican_axi__pelican__core__rxw__flags(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);
+
+    // Module arguments
+    input wire  clk;
+    input wire  [4:0] read_address;
+    input wire  read_enable;
+    output reg  [2:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [2:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    (* no_rw_check *)
+    reg[2:0] mem[31:0];
+
+    always @(posedge clk) begin
+       if (read_enable) begin
+          read_data <= mem[read_address];
+       end
+    end
+
+    always @(posedge clk) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+
+endmodule // drcc_pelican_axi__pelican__core__rxw__flags
 
 
 module drcc_pelican_axi__pelican__core__rxw__hist(clk,read_address,read_enable,read_data,write_address,write_data,write_enable);

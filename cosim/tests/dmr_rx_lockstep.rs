@@ -126,6 +126,9 @@ struct Run {
     max_delay: u64,
     /// ACL switch probability per clock (1 in `acl_every`), DMR runs.
     acl_every: u64,
+    /// A pause of this many clocks between frames now and then (0: none), for
+    /// a history left idle long enough to be forgotten (DRCC contract §7).
+    pause: u64,
 }
 
 /// Paths reached (asserted non-zero so the stimulus keeps reaching them).
@@ -150,6 +153,17 @@ struct Coverage {
     resets: u64,
     /// Entries that expired unmatched and counted as an omission.
     omissions: u64,
+    /// Edges where the idle history was forgotten (`hist_idle` reached 32767).
+    forgets: u64,
+    /// ... of them in a release scan.
+    forgets_in_rscan: u64,
+    /// ... of them with valid entries left to forget.
+    forgets_valid: u64,
+    /// ... of them in a release scan that has already judged a valid entry
+    /// (forgetting must outlast this scan).
+    forgets_valid_in_rscan: u64,
+    /// Frames recorded in a history that had been forgotten.
+    recorded_after_forget: u64,
 }
 
 /// Arrivals per clock and line, at least `GAP` clocks apart on a line.
@@ -203,7 +217,9 @@ fn schedule(run: &Run, rng: &mut Rng) -> Vec<[Option<Frame>; 2]> {
             put(1 - first, t + d);
         } // else lost on both lines
           // bursts and pauses
-        t += if rng.chance(1, 20) {
+        t += if run.pause > 0 && rng.chance(1, 6) {
+            run.pause + rng.below(run.pause / 8)
+        } else if rng.chance(1, 20) {
             300 + rng.below(1500)
         } else {
             20 + rng.below(120)
@@ -212,13 +228,20 @@ fn schedule(run: &Run, rng: &mut Rng) -> Vec<[Option<Frame>; 2]> {
     lines
 }
 
-fn rot_back(v: Bits<32>, w_state: u8, scan_i: u8) -> u32 {
-    let v = v.to_u32();
-    if w_state == W_SCAN || w_state == W_RSCAN {
-        v.rotate_left(scan_i.max(1) as u32 - 1)
-    } else {
-        v
+/// The writer's flags as the model's three vectors (valid, used, delivered),
+/// each read from its flags RAM; `forget` makes every entry invalid, and an
+/// entry's used and delivered flags mean something only while it is valid.
+fn flags_of(w: &RxWriter) -> (u32, u32, u32) {
+    let (mut v, mut u, mut d) = (0u32, 0u32, 0u32);
+    for e in 0..32u64 {
+        let f = w.flags.peek(e.to_bits()).to_u8();
+        if f & 1 == 1 && !w.forget.q.val() {
+            v |= 1 << e;
+            u |= ((f >> 1) as u32 & 1) << e;
+            d |= ((f >> 2) as u32 & 1) << e;
+        }
     }
+    (v, u, d)
 }
 
 fn run_lockstep(run: &Run, cov: &mut Coverage) {
@@ -331,10 +354,10 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         }
         let w = &uut.rxw;
         assert_eq!(w.w_state.q.val().to_u8(), m.w_state, "w_state, {}", ctx());
-        let (ws, si) = (m.w_state, m.scan_i);
-        assert_eq!(rot_back(w.hv.q.val(), ws, si), m.hv, "hv, {}", ctx());
-        assert_eq!(rot_back(w.hu.q.val(), ws, si), m.hu, "hu, {}", ctx());
-        assert_eq!(rot_back(w.hd.q.val(), ws, si), m.hd, "hd, {}", ctx());
+        let (hv, hu, hd) = flags_of(w);
+        assert_eq!(hv, m.hv, "hv, {}", ctx());
+        assert_eq!(hu, m.hu & m.hv, "hu of the valid entries, {}", ctx());
+        assert_eq!(hd, m.hd & m.hv, "hd of the valid entries, {}", ctx());
         assert_eq!(w.release_q.q.val(), m.release, "release, {}", ctx());
         assert_eq!(
             w.duplicates.val().to_u16(),
@@ -422,6 +445,17 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
                 cov.releases += 1;
                 cov.release_overruns += ev.overrun as u64;
             }
+            if pre.hist_idle < 32767 && m.hist_idle == 32767 {
+                cov.forgets += 1;
+                cov.forgets_in_rscan += (pre.w_state == W_RSCAN) as u64;
+                cov.forgets_valid += (pre.hv != 0) as u64;
+                let judged = (1u64 << pre.scan_i.saturating_sub(1)) - 1;
+                cov.forgets_valid_in_rscan +=
+                    (pre.hv as u64 & judged != 0 && pre.w_state == W_RSCAN) as u64;
+            }
+            if pre.w_state == W_WRITE && pre.w_hist && pre.hv == 0 && m.hv.count_ones() == 1 {
+                cov.recorded_after_forget += 1;
+            }
         }
         if release_set {
             acl ^= 1;
@@ -443,6 +477,7 @@ fn dmr_run(seed: u64) -> Run {
         tick_period,
         max_delay: 600,
         acl_every: 1200,
+        pause: 0,
     }
 }
 
@@ -553,4 +588,37 @@ fn dmr_rx_lockstep_first_copy() {
     run_lockstep(&run, &mut cov);
     assert!(cov.pcl_frames > 0 && cov.frames > 0);
     assert_eq!(cov.duplicates + cov.rscans, 0, "no history: the ACL rule");
+}
+
+/// A history left idle for 32767 bit times is forgotten (§7), also in the
+/// middle of a release scan, and the next frames are recorded afresh: a bit
+/// tick every clock, pauses past 32767 ticks, and ACL switches every few dozen
+/// clocks so that release scans run through the pauses.
+#[test]
+fn dmr_rx_lockstep_idle_history_forgotten() {
+    let mut cov = Coverage::default();
+    for seed in 41..=46 {
+        let run = Run {
+            tick_period: 1,
+            // the longest window: entries still valid when the history is forgotten
+            window: 32767,
+            clocks: 160_000,
+            acl_every: 40,
+            pause: 34_000,
+            ..dmr_run(seed)
+        };
+        run_lockstep(&run, &mut cov);
+    }
+    println!("{cov:#?}");
+    assert!(cov.forgets > 0, "the history was never forgotten");
+    assert!(
+        cov.forgets_in_rscan > 0,
+        "never forgotten in a release scan"
+    );
+    assert!(cov.forgets_valid > 0, "never forgot a valid entry");
+    assert!(
+        cov.forgets_valid_in_rscan > 0,
+        "never forgot a valid entry in the middle of a release scan"
+    );
+    assert!(cov.recorded_after_forget > 0 && cov.rscans > 0 && cov.releases > 0);
 }

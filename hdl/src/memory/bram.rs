@@ -28,6 +28,14 @@ pub struct Bram<D: Synth, const N: usize> {
     _sim: BTreeMap<Bits<N>, D>,
 }
 
+impl<D: Synth, const N: usize> Bram<D, N> {
+    /// The simulated word at `address` (what a read would return): for lock-step
+    /// benches that compare a memory's contents with a model's.
+    pub fn peek(&self, address: Bits<N>) -> D {
+        *self._sim.get(&address).unwrap_or(&D::default())
+    }
+}
+
 impl<D: Synth, const N: usize> Logic for Bram<D, N> {
     fn update(&mut self) {
         if self.clk.pos_edge() {

@@ -17,8 +17,8 @@
 //!
 //! Generation parameters (`crate::config`, contract §1.1): the history size `H`
 //! (4, 8, 16 or 32; default 32) and the RX FIFO depth (its full count). Entry
-//! indices keep their 5 bits and `hv` / `hu` / `hd` their 32, wrapped at `H`
-//! (`hmask = H - 1`, the rotation enters at bit `H - 1`): a smaller history is
+//! indices keep their 5 bits, wrapped at `H` (`hmask = H - 1`), and the RAMs
+//! their 32 entries, of which the first `H` are used: a smaller history is
 //! the same logic with constant-zero upper bits, which synthesis removes.
 //!
 //! Timing (iCE40 Fmax): the timestamps live in a RAM of their own (`hist_ts`,
@@ -34,8 +34,8 @@
 //! entry (not valid, already used, or expired) seen by the scan is where the new
 //! frame is recorded; with all H live, the round-robin `hist_ptr` is the victim.
 //!
-//! Omissions (§7, outside DMR mode): an entry that expires in `scan` (`hv[e]`
-//! and its age above `window`) without having cancelled a copy (`!hu[e]`) was
+//! Omissions (§7, outside DMR mode): an entry that expires in `scan` (valid
+//! and its age above `window`) without having cancelled a copy (not used) was
 //! delivered only by its channel `ch_e`: `omissions[1 - ch_e] += 1`. The
 //! statistics (`STATS0`, `OMISSIONS`, `DMR_RX_STATS`) are counted in
 //! `super::rx_stats`, cleared by `rst` only; no event counts at a `clear` edge.
@@ -45,19 +45,32 @@
 //! in `scan` edges with `scan_i >= 1`, loaded at the previous `scan` edge, where
 //! nothing is written; a colliding read is never observed.
 //!
-//! `hv` / `hu` are rotated right by one at every `scan` edge with `scan_i >= 1`,
-//! so the entry being judged is always bit 0 (no 32-way index multiplexer, no
-//! decoder of `scan_i`); the H rotations of a scan bring them back into place
-//! before `decide` and `write` use them. One decoder serves `decide` (`hit_e`),
-//! `write` (the recorded slot) and `release` (`rel_e`).
+//! The entry flags (valid `v`, used `u`: it cancelled a copy, DMR delivered `d`)
+//! live in a third RAM, `flags` (H x 3, one block RAM instead of three H-bit
+//! registers with their rotations and a 5-to-32 decoder: about 300 LUT4 and 96
+//! flip-flops). It is read at the `hist` address, so the judged entry's flags
+//! come with its frame. Each state writes one entry: a judging edge of either
+//! scan writes the entry it judges back (its `v` cleared when it expired; the
+//! read at that edge is of the next entry), `decide` the hit entry (`u`),
+//! `write` the recorded slot, `release` the released entry (`d`). Nothing
+//! clears a RAM at once, so `forget` stands for "every `v` is 0" (set by `clear`
+//! and by a history idle for 32767 bit times) until a scan has written every
+//! entry back invalid and the history is no longer idle (`hist_idle` is
+//! cleared only by a frame's scan, so a scan that began with `forget` clears
+//! it, and one it was set in the middle of keeps it). An entry's `u` and `d` mean
+//! something only while its `v` is 1. A colliding read is never observed: a
+//! judging edge writes entry `scan_i - 1` and reads `scan_i`; `decide`, `write`
+//! and `release` write while the read address rests at 0, and each is followed
+//! by an idle edge, and a scan's first read (of entry 0, at the edge with
+//! `scan_i = 0`) is at a scan edge that writes nothing. The RAM's contents
+//! after power-up do not matter: `rst` sets `forget`.
 //!
 //! DMR mode (DMR contract §8, `dmr` = 1): the ACL rule replaces first-copy-wins.
 //! `decide` delivers a frame of the ACL (`sel == acl`) and records one of the
-//! passive line (PCL) undelivered (`hd` = 0); a PCL frame waits for its ACL copy,
+//! passive line (PCL) undelivered (`d` = 0); a PCL frame waits for its ACL copy,
 //! which then delivers it (no second history entry). At an ACL switch
 //! (`release_set`) `release` is set, and every free idle edge runs a release scan
-//! (`rscan`, H + 1 clocks as `scan`, with the same expiry and rotations; `hd` rotates
-//! with `hv` / `hu`): the oldest waiting frame of the new ACL (`release_scan.rs`)
+//! (`rscan`, H + 1 clocks as `scan`, with the same expiry and write-back): the oldest waiting frame of the new ACL (`release_scan.rs`)
 //! is read back (`fetch`, history address `rel_e`) and written to the FIFO with
 //! channel `acl` (`release`). A scan that finds none ends the release. The
 //! history read in `release` was loaded at the `fetch` edge, where nothing is
@@ -148,6 +161,9 @@ pub struct RxWriter {
     // history
     hist: Bram<Bits<100>, 5>,
     hist_ts: Bram<Bits<16>, 5>,
+    /// The entries' flags: [0] valid, [1] used (cancelled a copy), [2] DMR
+    /// delivered.
+    pub flags: Bram<Bits<3>, 5>,
     rel: ReleaseScan,
     /// The view's acceptance filter on the frame at the FIFO port.
     acf: AcceptanceFilter,
@@ -176,17 +192,14 @@ pub struct RxWriter {
     hist_ptr: DFF<Bits<5>>,
     exp_q: DFF<Bit>,
     hist_idle: DFF<Bits<15>>,
-    /// History entry valid (rotated right by one at every judging scan edge).
-    pub hv: DFF<Bits<32>>,
-    /// History entry used: it cancelled a copy (rotated as `hv`).
-    pub hu: DFF<Bits<32>>,
-    /// DMR: history entry delivered to the FIFO (rotated as `hv`).
-    pub hd: DFF<Bits<32>>,
+    /// Every entry counts as invalid (`flags` ignored): set by `clear` and by
+    /// an idle history, cleared at the end of a scan once neither holds.
+    pub forget: DFF<Bit>,
     /// DMR: an ACL switch left frames to release (`release` of §8; a Verilog keyword).
     pub release_q: DFF<Bit>,
     /// DMR: the frame in `decide` came from the passive line.
     w_pcl: DFF<Bit>,
-    /// DMR: `hd` of the hit entry, taken with `hit`.
+    /// DMR: `d` of the hit entry, taken with `hit`.
     hit_hd: DFF<Bit>,
     // judgement of the history entry being read
     frame_sel: Signal<Local, Bits<99>>,
@@ -203,10 +216,9 @@ pub struct RxWriter {
     e_ge: Signal<Local, Bit>,
     e_keep: Signal<Local, Bit>,
     slot: Signal<Local, Bits<5>>,
-    mask_e: Signal<Local, Bits<5>>,
-    mask: Signal<Local, Bits<32>>,
+    /// A history idle for 32767 bit times, or `clear`: every entry forgotten.
+    forget_now: Signal<Local, Bit>,
     fifo_full: Signal<Local, Bit>,
-    hv_base: Signal<Local, Bits<32>>,
     in_scan: Signal<Local, Bit>,
     judging: Signal<Local, Bit>,
     pcl: Signal<Local, Bit>,
@@ -234,13 +246,14 @@ pub struct RxWriter {
     one6: Const<6, 1>,
     /// `H`: the last `scan_i` of a scan (generation parameter).
     last_scan: Param<6, 32>,
-    /// `H - 1`: the entry-index wrap and the bit the rotations enter at.
+    /// `H - 1`: the entry-index wrap.
     hmask: Param<5, 31>,
     /// The RX FIFO depth: its count when full (generation parameter).
     fifo_depth: Param<6, 32>,
     zero31: Const<31, 0>,
-    zero32: Const<32, 0>,
-    one32: Const<32, 1>,
+    one3: Const<3, 1>,
+    three3: Const<3, 3>,
+    five3: Const<3, 5>,
     zero15: Const<15, 0>,
     one15: Const<15, 1>,
     max15: Const<15, 0x7FFF>,

@@ -27,9 +27,7 @@ impl Logic for RxWriter {
             hist_ptr,
             exp_q,
             hist_idle,
-            hv,
-            hu,
-            hd,
+            forget,
             release_q,
             w_pcl,
             hit_hd,
@@ -42,6 +40,8 @@ impl Logic for RxWriter {
         self.hist.read_enable.next = true;
         self.hist_ts.clk.next = self.clk.val();
         self.hist_ts.read_enable.next = true;
+        self.flags.clk.next = self.clk.val();
+        self.flags.read_enable.next = true;
         self.rel.clk.next = self.clk.val();
         self.rel.clear.next = self.clear.val();
         self.stats.clk.next = self.clk.val();
@@ -66,16 +66,20 @@ impl Logic for RxWriter {
         } else {
             self.slot.next = self.hist_ptr.q.val();
         }
-        // one decoder: the hit entry in decide, the released entry in release,
-        // the recorded slot in write
+        // the one entry whose flags each state writes: the judged entry in a
+        // scan, the hit entry in decide, the released entry in release, the
+        // recorded slot in write
         if self.w_state.q.val() == self.s_decide.val() {
-            self.mask_e.next = self.hit_e.q.val();
+            self.flags.write_address.next = self.hit_e.q.val();
         } else if self.w_state.q.val() == self.s_release.val() {
-            self.mask_e.next = self.rel.rel_e.val();
+            self.flags.write_address.next = self.rel.rel_e.val();
+        } else if self.w_state.q.val() == self.s_write.val() {
+            self.flags.write_address.next = self.slot.val();
         } else {
-            self.mask_e.next = self.slot.val();
+            self.flags.write_address.next = self.scan_e.val();
         }
-        self.mask.next = self.one32.val() << self.mask_e.val();
+        self.flags.write_enable.next = false;
+        self.flags.write_data.next = self.flags.read_data.val();
         self.e_ch.next = self.hist.read_data.val().get_bit(0);
         self.e_frame.next = self.hist.read_data.val().get_bits::<99>(1);
         // timing: expiry one clock ahead (module doc). In scan, e_ts is the entry
@@ -90,10 +94,10 @@ impl Logic for RxWriter {
         } else {
             self.exp_q.d.next = self.e_gt.val();
         }
-        // in scan, entry scan_e has been rotated into bit 0
-        self.e_hv.next = self.hv.q.val().get_bit(0);
-        self.e_hu.next = self.hu.q.val().get_bit(0);
-        self.e_hd.next = self.hd.q.val().get_bit(0);
+        // in scan, the flags of entry scan_e, read with its frame
+        self.e_hv.next = self.flags.read_data.val().get_bit(0) & !self.forget.q.val();
+        self.e_hu.next = self.flags.read_data.val().get_bit(1);
+        self.e_hd.next = self.flags.read_data.val().get_bit(2);
         self.e_expired.next = self.exp_q.q.val();
         self.fifo_full.next = self.fifo_count.val() == self.fifo_depth.val();
         // both scans judge one entry per edge with scan_i >= 1
@@ -112,6 +116,7 @@ impl Logic for RxWriter {
         } else {
             self.hist.read_address.next = self.scan_i.q.val().get_bits::<5>(0) & self.hmask.val();
         }
+        self.flags.read_address.next = self.scan_i.q.val().get_bits::<5>(0) & self.hmask.val();
         self.hist.write_enable.next = false;
         self.hist.write_address.next = self.slot.val();
         self.hist.write_data.next = (bit_cast::<100, 99>(self.frame_sel.val()) << 1)
@@ -220,8 +225,6 @@ impl Logic for RxWriter {
         self.free_found.d.next = self.free_found.q.val();
         self.free_e.d.next = self.free_e.q.val();
         self.hist_ptr.d.next = self.hist_ptr.q.val();
-        self.hu.d.next = self.hu.q.val();
-        self.hd.d.next = self.hd.q.val();
         self.release_q.d.next = self.release_q.q.val();
         self.w_pcl.d.next = self.w_pcl.q.val();
         self.hist_idle.d.next = self.hist_idle.q.val();
@@ -230,24 +233,25 @@ impl Logic for RxWriter {
         }
         // a history left idle for 32767 bit times is forgotten, so an entry is
         // never judged by a wrapped age
-        if self.hist_idle.q.val() == self.max15.val() {
-            self.hv_base.next = self.zero32.val();
-        } else {
-            self.hv_base.next = self.hv.q.val();
-        }
-        // in scan: entry scan_e (bit 0) stays valid unless it expired
-        self.e_keep.next = self.hv_base.val().get_bit(0) & !self.e_expired.val();
-        self.hv.d.next = self.hv_base.val();
+        self.forget_now.next = self.clear.val() | (self.hist_idle.q.val() == self.max15.val());
+        self.forget.d.next = self.forget.q.val() | self.forget_now.val();
+        // in scan: entry scan_e stays valid unless it expired
+        self.e_keep.next = self.e_hv.val() & !self.e_expired.val();
 
         if self.judging.val() {
-            // rotate right over H bits: entry scan_e (bit 0) goes to bit H - 1,
-            // expired entries leave hv
-            self.hv.d.next = (self.hv_base.val() >> self.one32.val())
-                | (bit_cast::<32, 1>(self.e_keep.val().into()) << self.hmask.val());
-            self.hu.d.next = (self.hu.q.val() >> self.one32.val())
-                | (bit_cast::<32, 1>(self.hu.q.val().get_bit(0).into()) << self.hmask.val());
-            self.hd.d.next = (self.hd.q.val() >> self.one32.val())
-                | (bit_cast::<32, 1>(self.hd.q.val().get_bit(0).into()) << self.hmask.val());
+            // the judged entry written back: expired entries (all of them while
+            // forgetting) leave the history
+            self.flags.write_enable.next = true;
+            // (u and d of an invalid entry are never read)
+            self.flags.write_data.next = (bit_cast::<3, 1>(self.e_keep.val().into()))
+                | (bit_cast::<3, 1>(self.e_hu.val().into()) << 1)
+                | (bit_cast::<3, 1>(self.e_hd.val().into()) << 2);
+            if self.scan_i.q.val() == self.last_scan.val() {
+                // every entry is now written back, invalid if forgotten; a
+                // history still idle (`hist_idle` stays 32767 until the next
+                // frame's scan) stays forgotten
+                self.forget.d.next = self.forget_now.val();
+            }
         }
         if self.w_state.q.val() == self.s_idle.val() {
             if self.rxp_a.q.val() | self.rxp_b.q.val() {
@@ -327,7 +331,10 @@ impl Logic for RxWriter {
                 // a PCL copy of a frame still waiting on the ACL leaves the entry
                 // for the release
                 if !self.acl_rule.val() | !self.pcl.val() | self.hit_hd.q.val() {
-                    self.hu.d.next = self.hu.q.val() | self.mask.val();
+                    // the hit entry is used: {v, u, d} = {1, 1, hit_hd}
+                    self.flags.write_enable.next = true;
+                    self.flags.write_data.next =
+                        self.three3.val() | (bit_cast::<3, 1>(self.hit_hd.q.val().into()) << 2);
                 }
                 if self.acl_rule.val() & !self.hit_hd.q.val() & !self.pcl.val() {
                     // DMR: the PCL copy came first and waited: delivered now
@@ -354,13 +361,10 @@ impl Logic for RxWriter {
             if self.w_hist.val() {
                 self.hist.write_enable.next = true;
                 self.hist_ts.write_enable.next = true;
-                self.hv.d.next = self.hv_base.val() | self.mask.val();
-                self.hu.d.next = self.hu.q.val() & !self.mask.val();
-                if !self.w_fifo.val() {
-                    self.hd.d.next = self.hd.q.val() & !self.mask.val();
-                } else {
-                    self.hd.d.next = self.hd.q.val() | self.mask.val();
-                }
+                // the recorded slot: {v, u, d} = {1, 0, delivered}
+                self.flags.write_enable.next = true;
+                self.flags.write_data.next =
+                    self.one3.val() | (bit_cast::<3, 1>(self.w_fifo.val().into()) << 2);
                 if !self.free_found.q.val() {
                     self.hist_ptr.d.next =
                         (self.hist_ptr.q.val() + self.one5.val()) & self.hmask.val();
@@ -381,7 +385,9 @@ impl Logic for RxWriter {
                 self.fifo_wr.next = true;
                 self.rx_evt.next = true;
             }
-            self.hd.d.next = self.hd.q.val() | self.mask.val();
+            // the released entry is delivered: {v, u, d} = {1, 0, 1}
+            self.flags.write_enable.next = true;
+            self.flags.write_data.next = self.five3.val();
             self.stats.released_inc.next = true;
             self.w_state.d.next = self.s_idle.val();
         }
@@ -418,9 +424,8 @@ impl Logic for RxWriter {
             self.free_e.d.next = self.zero5.val();
             self.hist_ptr.d.next = self.zero5.val();
             self.hist_idle.d.next = self.zero15.val();
-            self.hv.d.next = self.zero32.val();
-            self.hu.d.next = self.zero32.val();
-            self.hd.d.next = self.zero32.val();
+            self.forget.d.next = true;
+            self.flags.write_enable.next = false;
             self.release_q.d.next = false;
             self.w_pcl.d.next = false;
             self.fifo_wr.next = false;

@@ -4038,6 +4038,7 @@ module can_channel__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shif
     output reg  [63:0] rx_data;
 
     // Constant declarations
+    localparam  rx_hold = 1'b1;
     localparam  zero7 = 7'b0;
     localparam  n7_64 = 7'b1000000;
     localparam  n6_63 = 6'b111111;
@@ -4152,11 +4153,20 @@ module can_channel__bsp__rx_frame(clk,rst,sampled,bit_cnt,bit_cnt_inc,clear,shif
             rx_data_q__d = data__q;
         end
         rx_valid = rx_valid_q__q;
-        rx_id = rx_id_q__q;
-        rx_ide = rx_ide_q__q;
-        rx_rtr = rx_rtr_q__q;
-        rx_dlc = rx_dlc_q__q;
-        rx_data = rx_data_q__q;
+        if (rx_hold[32'h0]) begin
+            rx_id = rx_id_q__q;
+            rx_ide = rx_ide_q__q;
+            rx_rtr = rx_rtr_q__q;
+            rx_dlc = rx_dlc_q__q;
+            rx_data = rx_data_q__q;
+        end
+        else begin
+            rx_id = id__q;
+            rx_ide = ide__q;
+            rx_rtr = rtr__q;
+            rx_dlc = dlc__q;
+            rx_data = data__q;
+        end
         if (rst) begin
             rx_valid_q__d = 1'b0;
             rx_id_q__d = zero29;

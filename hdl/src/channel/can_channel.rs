@@ -13,7 +13,7 @@ use rust_hdl::prelude::*;
 
 /// One CAN channel: BTL + BSP.
 #[derive(LogicBlock)]
-pub struct CanChannel {
+pub struct CanChannel<const RX_HOLD: u64 = 1> {
     // clock and reset
     /// Clock. Every register changes at its rising edge; the bit timing is counted
     /// in its periods (a time quantum is `cfg_brp + 1` clocks).
@@ -179,11 +179,11 @@ pub struct CanChannel {
     cfg_regs: ChannelConfig,
     rx_sync: RxSynchronizer,
     btl: BitTimingLogic,
-    bsp: ProtocolController,
+    bsp: ProtocolController<RX_HOLD>,
     loopback_mode: Constant<Bits<2>>,
 }
 
-impl Default for CanChannel {
+impl<const RX_HOLD: u64> Default for CanChannel<RX_HOLD> {
     fn default() -> Self {
         Self {
             clk: Default::default(),
@@ -246,7 +246,7 @@ impl Default for CanChannel {
     }
 }
 
-impl Logic for CanChannel {
+impl<const RX_HOLD: u64> Logic for CanChannel<RX_HOLD> {
     #[hdl_gen]
     fn update(&mut self) {
         self.cfg_regs.clk.next = self.clk.val();

@@ -296,8 +296,10 @@ pub struct DrccCore<const M: usize> {
     txbuf: TxBuffer,
     rxfifo: RxFifo,
     rxw: RxWriter,
-    chan_a: CanChannel,
-    chan_b: CanChannel,
+    // every reader takes a frame at rx_valid: the channels' rx outputs are
+    // valid with it only (RX_HOLD = 0, `crate::channel::bsp::rx_frame`)
+    chan_a: CanChannel<0>,
+    chan_b: CanChannel<0>,
     // manual bus-off recovery of each channel (§11.6)
     busoff_a: BusoffRecovery,
     busoff_b: BusoffRecovery,

@@ -49,7 +49,7 @@ use rust_hdl::prelude::*;
 
 /// The bit stream processor of one channel.
 #[derive(LogicBlock, Default)]
-pub struct ProtocolController {
+pub struct ProtocolController<const RX_HOLD: u64 = 1> {
     // clock and reset
     /// Clock of the channel.
     pub clk: Signal<In, Clock>,
@@ -167,14 +167,14 @@ pub struct ProtocolController {
     stuffing: BitStuffing,
     frame_crc: FrameCrc,
     tx_frame: TxFrame,
-    rx_frame: RxFrame,
+    rx_frame: RxFrame<RX_HOLD>,
     detect: ErrorDecision,
     rules: RulesDecision,
     fc: FaultConfinement,
     err_capture: ErrorCapture,
 }
 
-impl Logic for ProtocolController {
+impl<const RX_HOLD: u64> Logic for ProtocolController<RX_HOLD> {
     #[hdl_gen]
     fn update(&mut self) {
         // ---- clocks and resets

@@ -5,13 +5,22 @@
 //! The protocol controller says which field the sampled bit belongs to (one
 //! strobe per capture); this block only stores. The capture registers are not
 //! reset: SOF clears what a frame needs cleared.
+//!
+//! Generation parameter `RX_HOLD` (`rx_hold` in the Verilog; 1 by default, the channel contract's
+//! outputs): the `rx_*` outputs hold the published frame until the next one
+//! (timing contract §5). With 0 (the DRCC's channels, whose every reader takes
+//! the frame at `rx_valid`: the RX writer latches it, the DMR, echo and ECSS
+//! logic compare it there) they show the capture registers instead, which at
+//! `rx_valid` hold the same frame: the publish edge copies them, and nothing
+//! changes them before the next frame's SOF, bit times later. The published
+//! copy (99 flip-flops) then has no reader and synthesis removes it.
 
-use crate::channel::sized::Const;
+use crate::channel::sized::{Const, Param};
 use rust_hdl::prelude::*;
 
 /// The receive shift registers and the published frame.
 #[derive(LogicBlock, Default)]
-pub struct RxFrame {
+pub struct RxFrame<const RX_HOLD: u64 = 1> {
     /// Clock of the channel.
     pub clk: Signal<In, Clock>,
     /// Synchronous reset (of the published frame).
@@ -58,6 +67,9 @@ pub struct RxFrame {
     pub rx_dlc: Signal<Out, Bits<4>>,
     /// Published data, byte 0 in bits 63..56.
     pub rx_data: Signal<Out, Bits<64>>,
+    /// 1: the `rx_*` outputs hold the published frame; 0: valid with
+    /// `rx_valid` only (module doc).
+    rx_hold: Param<1, RX_HOLD>,
     // capture registers
     id: DFF<Bits<29>>,
     srr_rtr: DFF<Bit>,
@@ -87,7 +99,7 @@ pub struct RxFrame {
     zero64: Const<64, 0>,
 }
 
-impl Logic for RxFrame {
+impl<const RX_HOLD: u64> Logic for RxFrame<RX_HOLD> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -158,11 +170,19 @@ impl Logic for RxFrame {
             self.rx_data_q.d.next = self.data.q.val();
         }
         self.rx_valid.next = self.rx_valid_q.q.val();
-        self.rx_id.next = self.rx_id_q.q.val();
-        self.rx_ide.next = self.rx_ide_q.q.val();
-        self.rx_rtr.next = self.rx_rtr_q.q.val();
-        self.rx_dlc.next = self.rx_dlc_q.q.val();
-        self.rx_data.next = self.rx_data_q.q.val();
+        if self.rx_hold.val().get_bit(0) {
+            self.rx_id.next = self.rx_id_q.q.val();
+            self.rx_ide.next = self.rx_ide_q.q.val();
+            self.rx_rtr.next = self.rx_rtr_q.q.val();
+            self.rx_dlc.next = self.rx_dlc_q.q.val();
+            self.rx_data.next = self.rx_data_q.q.val();
+        } else {
+            self.rx_id.next = self.id.q.val();
+            self.rx_ide.next = self.ide.q.val();
+            self.rx_rtr.next = self.rtr.q.val();
+            self.rx_dlc.next = self.dlc.q.val();
+            self.rx_data.next = self.data.q.val();
+        }
         if self.rst.val() {
             self.rx_valid_q.d.next = false;
             self.rx_id_q.d.next = self.zero29.val();

@@ -37,7 +37,11 @@ mod tests {
         uut.clear.next = true;
         clock(&mut uut);
         uut.clear.next = false;
-        assert_eq!(uut.rx_id.val(), Bits::<29>::from(0), "SOF cleared the capture");
+        assert_eq!(
+            uut.rx_id.val(),
+            Bits::<29>::from(0),
+            "SOF cleared the capture"
+        );
         assert_eq!(uut.rx_data.val(), Bits::<64>::from(0));
     }
 
@@ -98,7 +102,11 @@ mod tests {
         assert_eq!(uut.rx_data.val(), Bits::<64>::from(0xA5u64 << 56));
         clock(uut);
         assert!(!uut.rx_valid.val(), "rx_valid is one clock");
-        assert_eq!(uut.rx_id.val(), Bits::<29>::from(0x123), "until the next SOF");
+        assert_eq!(
+            uut.rx_id.val(),
+            Bits::<29>::from(0x123),
+            "until the next SOF"
+        );
     }
 
     #[test]

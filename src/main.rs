@@ -295,8 +295,9 @@ enum Command {
         /// Print the results as JSON.
         #[arg(long)]
         json: bool,
-        /// Also the area block by block (each block the top instantiates kept apart
-        /// in one more yosys run); --all --markdown always has it on ice40.
+        /// Also the area block by block (each block the top instantiates, or the
+        /// DRCC core it wraps, kept apart in one more yosys run; a block used
+        /// twice counts twice); --all --markdown always has it on ice40.
         #[arg(long)]
         breakdown: bool,
         /// Where netlists, logs, the scan wrapper and bitstreams go (default: out/synth).

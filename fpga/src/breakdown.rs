@@ -1,8 +1,9 @@
 //! Where a top's logic goes: yosys synthesises the top once more with each of
-//! its direct children (the blocks the top instantiates: channels, FSMs,
-//! memories, register block ...) kept as a module of its own (`keep_hierarchy`
-//! on those modules only; everything inside a child is flattened as in the main
-//! run), and counts each module's cells. A kept boundary stops constant
+//! its blocks (the modules the top instantiates, or the DRCC core it wraps
+//! instantiates: channels, FSMs, memories, register block ...) kept as a module
+//! of its own (`keep_hierarchy` on those modules only; everything inside a
+//! block is flattened as in the main run), and counts each module's cells, once
+//! per instance. A kept boundary stops constant
 //! propagation and logic sharing between two blocks, so the sum of the blocks
 //! is a little larger than the flattened top: the report shows both, and the
 //! blocks' shares are of their sum.

@@ -9876,8 +9876,9 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0(clk,hold,clear_state,timeout,
     reg  [3:0] mbx__rd_addr;
     wire  [7:0] mbx__rd_counter;
     wire  [15:0] mbx__rd_timer;
-    wire  [127:0] mbx__counters;
-    wire  [255:0] mbx__timers;
+    reg  [3:0] mbx__win_addr;
+    wire  [7:0] mbx__win_counter;
+    wire  [15:0] mbx__win_timer;
     reg  mbx__settle_all;
     reg  mbx__settle_none;
     reg  mbx__settle_drop;
@@ -9889,8 +9890,6 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0(clk,hold,clear_state,timeout,
     // Local signals
     reg  [3:0] mb;
     reg  [6:0] mb_c;
-    reg  [6:0] win_c;
-    reg  [7:0] win_t;
     reg  en;
     reg  [7:0] limit;
     reg  [7:0] c;
@@ -9917,8 +9916,9 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0(clk,hold,clear_state,timeout,
         .rd_addr(mbx__rd_addr),
         .rd_counter(mbx__rd_counter),
         .rd_timer(mbx__rd_timer),
-        .counters(mbx__counters),
-        .timers(mbx__timers),
+        .win_addr(mbx__win_addr),
+        .win_counter(mbx__win_counter),
+        .win_timer(mbx__win_timer),
         .settle_all(mbx__settle_all),
         .settle_none(mbx__settle_none),
         .settle_drop(mbx__settle_drop),
@@ -9962,9 +9962,8 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0(clk,hold,clear_state,timeout,
         mb_c = ((mb) & 7'h7f) << 32'h3;
         c = mbx__rd_counter;
         t = mbx__rd_timer;
-        win_c = ((mb_sel) & 7'h7f) << 32'h3;
-        win_t = ((mb_sel) & 8'hff) << 32'h4;
-        mb_state_word = ((mbx__counters[(win_c)+:(8)]) & 32'hffffffff) | (((mbx__timers[(win_t)+:(16)]) & 32'hffffffff) << 32'h10);
+        mbx__win_addr = mb_sel;
+        mb_state_word = ((mbx__win_counter) & 32'hffffffff) | (((mbx__win_timer) & 32'hffffffff) << 32'h10);
         en = mb_enable[mb];
         limit = ((mb_limits[(mb_c)+:(7)]) & 8'hff);
         if ((state__q == s_scan) | (state__q == s_eval)) begin
@@ -10211,7 +10210,7 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0(clk,hold,clear_state,timeout,
 endmodule // drcc_pelican_apb__pelican__core__dmr_eng__0
 
 
-module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,counters,timers,settle_all,settle_none,settle_drop,settles,owe_set,owe_drop,oweds);
+module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter_d,timer_d,rd_addr,rd_counter,rd_timer,win_addr,win_counter,win_timer,settle_all,settle_none,settle_drop,settles,owe_set,owe_drop,oweds);
 
     // Module arguments
     input wire  clk;
@@ -10223,8 +10222,9 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
     input wire  [3:0] rd_addr;
     output reg  [7:0] rd_counter;
     output reg  [15:0] rd_timer;
-    output reg  [127:0] counters;
-    output reg  [255:0] timers;
+    input wire  [3:0] win_addr;
+    output reg  [7:0] win_counter;
+    output reg  [15:0] win_timer;
     input wire  settle_all;
     input wire  settle_none;
     input wire  settle_drop;
@@ -10238,74 +10238,8 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
     localparam  zero24 = 24'h0;
     localparam  zero16 = 16'h0;
     localparam  ones16 = 16'hffff;
-    localparam  zero128 = 128'h0;
-    localparam  zero256 = 256'h0;
-    localparam  at_c__0 = 8'h0;
-    localparam  at_c__1 = 8'h8;
-    localparam  at_c__2 = 8'h10;
-    localparam  at_c__3 = 8'h18;
-    localparam  at_c__4 = 8'h20;
-    localparam  at_c__5 = 8'h28;
-    localparam  at_c__6 = 8'h30;
-    localparam  at_c__7 = 8'h38;
-    localparam  at_c__8 = 8'h40;
-    localparam  at_c__9 = 8'h48;
-    localparam  at_c__10 = 8'h50;
-    localparam  at_c__11 = 8'h58;
-    localparam  at_c__12 = 8'h60;
-    localparam  at_c__13 = 8'h68;
-    localparam  at_c__14 = 8'h70;
-    localparam  at_c__15 = 8'h78;
-    localparam  at_t__0 = 9'b0;
-    localparam  at_t__1 = 9'b10000;
-    localparam  at_t__2 = 9'b100000;
-    localparam  at_t__3 = 9'b110000;
-    localparam  at_t__4 = 9'b1000000;
-    localparam  at_t__5 = 9'b1010000;
-    localparam  at_t__6 = 9'b1100000;
-    localparam  at_t__7 = 9'b1110000;
-    localparam  at_t__8 = 9'b10000000;
-    localparam  at_t__9 = 9'b10010000;
-    localparam  at_t__10 = 9'b10100000;
-    localparam  at_t__11 = 9'b10110000;
-    localparam  at_t__12 = 9'b11000000;
-    localparam  at_t__13 = 9'b11010000;
-    localparam  at_t__14 = 9'b11100000;
-    localparam  at_t__15 = 9'b11110000;
 
     // Stub signals
-    reg  [23:0] mb__0__d;
-    reg  [23:0] mb__0__q;
-    reg  [23:0] mb__1__d;
-    reg  [23:0] mb__1__q;
-    reg  [23:0] mb__2__d;
-    reg  [23:0] mb__2__q;
-    reg  [23:0] mb__3__d;
-    reg  [23:0] mb__3__q;
-    reg  [23:0] mb__4__d;
-    reg  [23:0] mb__4__q;
-    reg  [23:0] mb__5__d;
-    reg  [23:0] mb__5__q;
-    reg  [23:0] mb__6__d;
-    reg  [23:0] mb__6__q;
-    reg  [23:0] mb__7__d;
-    reg  [23:0] mb__7__q;
-    reg  [23:0] mb__8__d;
-    reg  [23:0] mb__8__q;
-    reg  [23:0] mb__9__d;
-    reg  [23:0] mb__9__q;
-    reg  [23:0] mb__10__d;
-    reg  [23:0] mb__10__q;
-    reg  [23:0] mb__11__d;
-    reg  [23:0] mb__11__q;
-    reg  [23:0] mb__12__d;
-    reg  [23:0] mb__12__q;
-    reg  [23:0] mb__13__d;
-    reg  [23:0] mb__13__q;
-    reg  [23:0] mb__14__d;
-    reg  [23:0] mb__14__q;
-    reg  [23:0] mb__15__d;
-    reg  [23:0] mb__15__q;
     reg  copy__clk;
     reg  [3:0] copy__read_address;
     reg  copy__read_enable;
@@ -10313,6 +10247,13 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
     reg  [3:0] copy__write_address;
     reg  [23:0] copy__write_data;
     reg  copy__write_enable;
+    reg  win__clk;
+    reg  [3:0] win__read_address;
+    reg  win__read_enable;
+    wire  [23:0] win__read_data;
+    reg  [3:0] win__write_address;
+    reg  [23:0] win__write_data;
+    reg  win__write_enable;
     reg  [15:0] valid__d;
     reg  [15:0] valid__q;
     reg  [15:0] settle__d;
@@ -10321,13 +10262,18 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
     reg  [15:0] owed__q;
     reg  [3:0] rd_q__d;
     reg  [3:0] rd_q__q;
+    reg  [3:0] win_q__d;
+    reg  [3:0] win_q__q;
+    reg  win_hit__d;
+    reg  win_hit__q;
+    reg  [23:0] win_word__d;
+    reg  [23:0] win_word__q;
 
     // Local signals
     reg  [23:0] rd_word;
+    reg  [23:0] win_data;
     reg  [15:0] slot;
     reg  [23:0] word;
-    reg  [7:0] mb_counter;
-    reg  [15:0] mb_timer;
 
     // Sub module instances
     drcc_pelican_apb__pelican__core__dmr_eng__0__mbx__copy copy(
@@ -10339,6 +10285,15 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
         .write_data(copy__write_data),
         .write_enable(copy__write_enable)
     );
+    drcc_pelican_apb__pelican__core__dmr_eng__0__mbx__copy win(
+        .clk(win__clk),
+        .read_address(win__read_address),
+        .read_enable(win__read_enable),
+        .read_data(win__read_data),
+        .write_address(win__write_address),
+        .write_data(win__write_data),
+        .write_enable(win__write_enable)
+    );
 
     // Update code
     always @(*) begin
@@ -10346,6 +10301,9 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
         settle__d = settle__q;
         owed__d = owed__q;
         rd_q__d = rd_q__q;
+        win_q__d = win_q__q;
+        win_hit__d = win_hit__q;
+        win_word__d = win_word__q;
         slot = one16 << sel;
         word = ((counter_d) & 24'hffffff) | (((timer_d) & 24'hffffff) << 32'h8);
         copy__clk = clk;
@@ -10363,6 +10321,26 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
         end
         rd_counter = rd_word[(32'h0)+:(8)];
         rd_timer = rd_word[(32'h8)+:(16)];
+        win__clk = clk;
+        win__write_address = sel;
+        win__write_data = word;
+        win__write_enable = we;
+        win__read_address = win_addr;
+        win__read_enable = 1'b1;
+        win_q__d = win_addr;
+        win_hit__d = we & (sel == win_addr) & ~clear;
+        win_word__d = word;
+        if (win_hit__q) begin
+            win_data = win_word__q;
+        end
+        else if (valid__q[win_q__q]) begin
+            win_data = win__read_data;
+        end
+        else begin
+            win_data = zero24;
+        end
+        win_counter = win_data[(32'h0)+:(8)];
+        win_timer = win_data[(32'h8)+:(16)];
         if (we) begin
             valid__d = valid__q | slot;
         end
@@ -10389,208 +10367,17 @@ module drcc_pelican_apb__pelican__core__dmr_eng__0__mbx(clk,clear,sel,we,counter
             owed__d = zero16;
         end
         oweds = owed__q;
-        counters = zero128;
-        timers = zero256;
-        mb__0__d = mb__0__q;
-        if (we & slot[0]) begin
-            mb__0__d = word;
-        end
-        if (clear) begin
-            mb__0__d = zero24;
-        end
-        mb_counter = mb__0__q[(32'h0)+:(8)];
-        mb_timer = mb__0__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__0);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__0);
-        mb__1__d = mb__1__q;
-        if (we & slot[1]) begin
-            mb__1__d = word;
-        end
-        if (clear) begin
-            mb__1__d = zero24;
-        end
-        mb_counter = mb__1__q[(32'h0)+:(8)];
-        mb_timer = mb__1__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__1);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__1);
-        mb__2__d = mb__2__q;
-        if (we & slot[2]) begin
-            mb__2__d = word;
-        end
-        if (clear) begin
-            mb__2__d = zero24;
-        end
-        mb_counter = mb__2__q[(32'h0)+:(8)];
-        mb_timer = mb__2__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__2);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__2);
-        mb__3__d = mb__3__q;
-        if (we & slot[3]) begin
-            mb__3__d = word;
-        end
-        if (clear) begin
-            mb__3__d = zero24;
-        end
-        mb_counter = mb__3__q[(32'h0)+:(8)];
-        mb_timer = mb__3__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__3);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__3);
-        mb__4__d = mb__4__q;
-        if (we & slot[4]) begin
-            mb__4__d = word;
-        end
-        if (clear) begin
-            mb__4__d = zero24;
-        end
-        mb_counter = mb__4__q[(32'h0)+:(8)];
-        mb_timer = mb__4__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__4);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__4);
-        mb__5__d = mb__5__q;
-        if (we & slot[5]) begin
-            mb__5__d = word;
-        end
-        if (clear) begin
-            mb__5__d = zero24;
-        end
-        mb_counter = mb__5__q[(32'h0)+:(8)];
-        mb_timer = mb__5__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__5);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__5);
-        mb__6__d = mb__6__q;
-        if (we & slot[6]) begin
-            mb__6__d = word;
-        end
-        if (clear) begin
-            mb__6__d = zero24;
-        end
-        mb_counter = mb__6__q[(32'h0)+:(8)];
-        mb_timer = mb__6__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__6);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__6);
-        mb__7__d = mb__7__q;
-        if (we & slot[7]) begin
-            mb__7__d = word;
-        end
-        if (clear) begin
-            mb__7__d = zero24;
-        end
-        mb_counter = mb__7__q[(32'h0)+:(8)];
-        mb_timer = mb__7__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__7);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__7);
-        mb__8__d = mb__8__q;
-        if (we & slot[8]) begin
-            mb__8__d = word;
-        end
-        if (clear) begin
-            mb__8__d = zero24;
-        end
-        mb_counter = mb__8__q[(32'h0)+:(8)];
-        mb_timer = mb__8__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__8);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__8);
-        mb__9__d = mb__9__q;
-        if (we & slot[9]) begin
-            mb__9__d = word;
-        end
-        if (clear) begin
-            mb__9__d = zero24;
-        end
-        mb_counter = mb__9__q[(32'h0)+:(8)];
-        mb_timer = mb__9__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__9);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__9);
-        mb__10__d = mb__10__q;
-        if (we & slot[10]) begin
-            mb__10__d = word;
-        end
-        if (clear) begin
-            mb__10__d = zero24;
-        end
-        mb_counter = mb__10__q[(32'h0)+:(8)];
-        mb_timer = mb__10__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__10);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__10);
-        mb__11__d = mb__11__q;
-        if (we & slot[11]) begin
-            mb__11__d = word;
-        end
-        if (clear) begin
-            mb__11__d = zero24;
-        end
-        mb_counter = mb__11__q[(32'h0)+:(8)];
-        mb_timer = mb__11__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__11);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__11);
-        mb__12__d = mb__12__q;
-        if (we & slot[12]) begin
-            mb__12__d = word;
-        end
-        if (clear) begin
-            mb__12__d = zero24;
-        end
-        mb_counter = mb__12__q[(32'h0)+:(8)];
-        mb_timer = mb__12__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__12);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__12);
-        mb__13__d = mb__13__q;
-        if (we & slot[13]) begin
-            mb__13__d = word;
-        end
-        if (clear) begin
-            mb__13__d = zero24;
-        end
-        mb_counter = mb__13__q[(32'h0)+:(8)];
-        mb_timer = mb__13__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__13);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__13);
-        mb__14__d = mb__14__q;
-        if (we & slot[14]) begin
-            mb__14__d = word;
-        end
-        if (clear) begin
-            mb__14__d = zero24;
-        end
-        mb_counter = mb__14__q[(32'h0)+:(8)];
-        mb_timer = mb__14__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__14);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__14);
-        mb__15__d = mb__15__q;
-        if (we & slot[15]) begin
-            mb__15__d = word;
-        end
-        if (clear) begin
-            mb__15__d = zero24;
-        end
-        mb_counter = mb__15__q[(32'h0)+:(8)];
-        mb_timer = mb__15__q[(32'h8)+:(16)];
-        counters = counters | (((mb_counter) & 128'hffffffffffffffffffffffffffffffff) << at_c__15);
-        timers = timers | (((mb_timer) & 256'hffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff) << at_t__15);
     end
 
     // Flip-flops
     always @(posedge clk) begin
-        mb__0__q <= mb__0__d;
-        mb__1__q <= mb__1__d;
-        mb__2__q <= mb__2__d;
-        mb__3__q <= mb__3__d;
-        mb__4__q <= mb__4__d;
-        mb__5__q <= mb__5__d;
-        mb__6__q <= mb__6__d;
-        mb__7__q <= mb__7__d;
-        mb__8__q <= mb__8__d;
-        mb__9__q <= mb__9__d;
-        mb__10__q <= mb__10__d;
-        mb__11__q <= mb__11__d;
-        mb__12__q <= mb__12__d;
-        mb__13__q <= mb__13__d;
-        mb__14__q <= mb__14__d;
-        mb__15__q <= mb__15__d;
         valid__q <= valid__d;
         settle__q <= settle__d;
         owed__q <= owed__d;
         rd_q__q <= rd_q__d;
+        win_q__q <= win_q__d;
+        win_hit__q <= win_hit__d;
+        win_word__q <= win_word__d;
     end
 
 endmodule // drcc_pelican_apb__pelican__core__dmr_eng__0__mbx

@@ -98,7 +98,8 @@ pub struct DmrEngine<const M: usize> {
     // ---- host window ----
     /// `MB_SEL`.
     pub mb_sel: Signal<In, Bits<4>>,
-    /// `MB_STATE` of mailbox `mb_sel`: [7:0] counter, [31:16] timer.
+    /// `MB_STATE` of mailbox `mb_sel`: [7:0] counter, [31:16] timer; after an
+    /// edge, the state after it of the mailbox `mb_sel` named at it.
     pub mb_state_word: Signal<Out, Bits<32>>,
     // ---- the evaluation's verdict at this edge (§4.2) ----
     /// A fault is found.
@@ -141,8 +142,6 @@ pub struct DmrEngine<const M: usize> {
     // ---- internals ----
     mb: Signal<Local, Bits<4>>,
     mb_c: Signal<Local, Bits<7>>,
-    win_c: Signal<Local, Bits<7>>,
-    win_t: Signal<Local, Bits<8>>,
     en: Signal<Local, Bit>,
     limit: Signal<Local, Bits<8>>,
     c: Signal<Local, Bits<8>>,
@@ -217,20 +216,11 @@ impl<const M: usize> Logic for DmrEngine<M> {
         // Its state, from the block RAM copy read at the previous edge.
         self.c.next = self.mbx.rd_counter.val();
         self.t.next = self.mbx.rd_timer.val();
-        // The host window (`MB_STATE`), live.
-        self.win_c.next = bit_cast::<7, 4>(self.mb_sel.val()) << 3;
-        self.win_t.next = bit_cast::<8, 4>(self.mb_sel.val()) << 4;
-        self.mb_state_word.next = bit_cast::<32, 8>(
-            self.mbx
-                .counters
-                .val()
-                .get_bits::<8>(self.win_c.val().index()),
-        ) | (bit_cast::<32, 16>(
-            self.mbx
-                .timers
-                .val()
-                .get_bits::<16>(self.win_t.val().index()),
-        ) << 16);
+        // The host window (`MB_STATE`): the state after the previous edge of
+        // the mailbox `MB_SEL` named there (`super::mailbox_state`).
+        self.mbx.win_addr.next = self.mb_sel.val();
+        self.mb_state_word.next = bit_cast::<32, 8>(self.mbx.win_counter.val())
+            | (bit_cast::<32, 16>(self.mbx.win_timer.val()) << 16);
         self.en.next = self.mb_enable.val().get_bit(self.mb.val().index());
         self.limit.next =
             bit_cast::<8, 7>(self.mb_limits.val().get_bits::<7>(self.mb_c.val().index()));

@@ -1,35 +1,38 @@
 //! The DMR mailboxes' state (DMR contract §4.1, §4.2, `MB_STATE` of §2.1): the
 //! `counter` (8-bit two's complement) and `timer` (16 bits) of each of the `M`
-//! mailboxes (generation parameter, 1..16),
-//! in registers, read by the host window live, and a copy in block RAM, read by
-//! the engine. The engine writes one mailbox per clock (`sel`).
+//! mailboxes (generation parameter, 1..16), in two block RAM copies written
+//! together, one mailbox per clock (`sel`): one read by the engine, one by the
+//! host window. No mailbox state lives in flip-flops (16 x 24 of them and the
+//! window's 24-bit 16-way multiplexer were about 630 iCE40 logic cells).
 //!
-//! One register per mailbox, written by its own enable (a one-hot decode of
-//! `sel`) with the shared value: on the iCE40 each bit is a flip-flop with clock
-//! enable and synchronous reset and no LUT (a packed register written as
-//! `q & !slot | value & slot` costs one LUT per bit, 384 for 16). `clear` zeroes
-//! every mailbox at once (reset mode, another DRCC mode, a recovery: §2.1, §7)
-//! and wins over a write.
+//! Both copies have a registered read: the reader names the mailbox one edge
+//! ahead (`rd_addr`, `win_addr`). A block RAM cannot clear at once, so a `valid`
+//! bit per mailbox clears with `clear` (reset mode, another DRCC mode, a
+//! recovery: §2.1, §7; it wins over a write), sets with a write, and a mailbox
+//! whose bit is 0 reads 0.
 //!
-//! The engine's copy: a block RAM with a registered read (the engine gives the
-//! address one edge ahead, `rd_addr`) saves the engine a 24-bit 16-way
-//! multiplexer (about 250 LUT4) for two `SB_RAM40_4K`. A block RAM cannot clear
-//! at once, so a `valid` bit per mailbox clears with `clear`, sets with a write,
-//! and the read data of a mailbox whose bit is 0 reads 0. Collisions (the read
-//! and write addresses meet at an edge, the RAM's read data is undefined there,
-//! `crate::memory::bram`): the engine writes only in `UPDATE` and `EVAL`; in
-//! `EVAL` it writes `e_i` while it loads `e_i + 1`, and the data loaded at the
-//! last `EVAL` edge and at the `UPDATE` edge belongs to the `IDLE` clock after
-//! them, which does not read it.
+//! Collisions (the read and write addresses meet at an edge; the RAM's read data
+//! is undefined there, `crate::memory::bram`):
+//! - the engine's copy: the engine writes only in `UPDATE` and `EVAL`; in
+//!   `EVAL` it writes `e_i` while it loads `e_i + 1`, and the data loaded at the
+//!   last `EVAL` edge and at the `UPDATE` edge belongs to the `IDLE` clock after
+//!   them, which does not read it.
+//! - the window: a write at an edge to the mailbox the window loads there is
+//!   kept in a bypass register (`win_hit`, `win_word`), which the window shows
+//!   instead of the RAM's read data. So after every edge the window shows the
+//!   state after that edge of the mailbox `win_addr` named at it, as the
+//!   registers did. `win_addr` is `MB_SEL`, a register: after a write of
+//!   `MB_SEL` the window follows one clock later, and no bus access can be taken
+//!   in that clock (the write's acknowledge is up, bus contract §1).
 //!
 //! The §4.2 debt bits (`owed`): set by a timeout verdict, which keeps the
 //! counter; dropped when the counter returns to 0 or by a deviation; cleared
 //! with everything by `clear`.
 //!
-//! The register outputs are the registers themselves: the readers (the engine's
-//! mailbox, the host window) slice them in the parent, so no combinational path
-//! runs from this block's inputs to its outputs (one `always` block per module:
-//! a read here would close a false loop through the engine's write data).
+//! The outputs are registers or RAM outputs, selected by registers: no
+//! combinational path runs from this block's inputs to its outputs (one `always`
+//! block per module: a read here would close a false loop through the engine's
+//! write data).
 
 use crate::channel::sized::Const;
 use crate::memory::bram::Bram;
@@ -58,11 +61,14 @@ pub struct MailboxState<const M: usize> {
     pub rd_counter: Signal<Out, Bits<8>>,
     /// `timer` of the mailbox `rd_addr` named at the previous edge.
     pub rd_timer: Signal<Out, Bits<16>>,
-    // ---- the state ----
-    /// Every counter (two's complement): mailbox i in `[8i+7:8i]` (0 beyond `M`).
-    pub counters: Signal<Out, Bits<128>>,
-    /// Every timer (DMR ticks left, 0 = stopped): mailbox i in `[16i+15:16i]`.
-    pub timers: Signal<Out, Bits<256>>,
+    // ---- the host window's read port (block RAM copy and bypass) ----
+    /// The mailbox whose state `win_counter` / `win_timer` show after this edge
+    /// (`MB_SEL`).
+    pub win_addr: Signal<In, Bits<4>>,
+    /// `counter` after the previous edge of the mailbox `win_addr` named there.
+    pub win_counter: Signal<Out, Bits<8>>,
+    /// `timer` after the previous edge of the mailbox `win_addr` named there.
+    pub win_timer: Signal<Out, Bits<16>>,
     // ---- §4.2 settling ----
     /// A recovery: every mailbox settles at this edge (over `settle_drop`).
     pub settle_all: Signal<In, Bit>,
@@ -79,27 +85,25 @@ pub struct MailboxState<const M: usize> {
     pub owe_drop: Signal<In, Bit>,
     /// The debt bits, bit i = mailbox i (0 after `clear`).
     pub oweds: Signal<Out, Bits<16>>,
-    // ---- registers: mailbox i = {timer [23:8], counter [7:0]} ----
-    mb: [DFF<Bits<24>>; M],
+    // ---- storage: mailbox i = {timer [23:8], counter [7:0]} ----
     copy: Bram<Bits<24>, 4>,
+    win: Bram<Bits<24>, 4>,
     valid: DFF<Bits<16>>,
     settle: DFF<Bits<16>>,
     owed: DFF<Bits<16>>,
     rd_q: DFF<Bits<4>>,
+    win_q: DFF<Bits<4>>,
+    win_hit: DFF<Bit>,
+    win_word: DFF<Bits<24>>,
     // ---- internals ----
     rd_word: Signal<Local, Bits<24>>,
+    win_data: Signal<Local, Bits<24>>,
     slot: Signal<Local, Bits<16>>,
     word: Signal<Local, Bits<24>>,
-    mb_counter: Signal<Local, Bits<8>>,
-    mb_timer: Signal<Local, Bits<16>>,
     one16: Const<16, 1>,
     zero24: Const<24, 0>,
     zero16: Const<16, 0>,
     ones16: Const<16, 0xFFFF>,
-    zero128: Const<128, 0>,
-    zero256: Const<256, 0>,
-    at_c: [Constant<Bits<8>>; M],
-    at_t: [Constant<Bits<9>>; M],
 }
 
 impl<const M: usize> Default for MailboxState<M> {
@@ -115,8 +119,9 @@ impl<const M: usize> Default for MailboxState<M> {
             rd_addr: Default::default(),
             rd_counter: Default::default(),
             rd_timer: Default::default(),
-            counters: Default::default(),
-            timers: Default::default(),
+            win_addr: Default::default(),
+            win_counter: Default::default(),
+            win_timer: Default::default(),
             settle_all: Default::default(),
             settle_none: Default::default(),
             settle_drop: Default::default(),
@@ -124,25 +129,23 @@ impl<const M: usize> Default for MailboxState<M> {
             owe_set: Default::default(),
             owe_drop: Default::default(),
             oweds: Default::default(),
-            mb: std::array::from_fn(|_| Default::default()),
             copy: Default::default(),
+            win: Default::default(),
             valid: Default::default(),
             settle: Default::default(),
             owed: Default::default(),
             rd_q: Default::default(),
+            win_q: Default::default(),
+            win_hit: Default::default(),
+            win_word: Default::default(),
             rd_word: Default::default(),
+            win_data: Default::default(),
             slot: Default::default(),
             word: Default::default(),
-            mb_counter: Default::default(),
-            mb_timer: Default::default(),
             one16: Default::default(),
             zero24: Default::default(),
             zero16: Default::default(),
             ones16: Default::default(),
-            zero128: Default::default(),
-            zero256: Default::default(),
-            at_c: std::array::from_fn(|i| Constant::new(((8 * i) as u64).into())),
-            at_t: std::array::from_fn(|i| Constant::new(((16 * i) as u64).into())),
         }
     }
 }
@@ -150,12 +153,12 @@ impl<const M: usize> Default for MailboxState<M> {
 impl<const M: usize> Logic for MailboxState<M> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, valid, settle, owed, rd_q);
-        // the write: one enable per mailbox, the same word to all
+        dff_setup!(self, clk, valid, settle, owed, rd_q, win_q, win_hit, win_word);
+        // the write: one mailbox, the same word to both copies
         self.slot.next = self.one16.val() << self.sel.val();
         self.word.next =
             bit_cast::<24, 8>(self.counter_d.val()) | (bit_cast::<24, 16>(self.timer_d.val()) << 8);
-        // the engine's copy: written with the registers, read one edge ahead
+        // the engine's copy, read one edge ahead
         self.copy.clk.next = self.clk.val();
         self.copy.write_address.next = self.sel.val();
         self.copy.write_data.next = self.word.val();
@@ -170,6 +173,27 @@ impl<const M: usize> Logic for MailboxState<M> {
         }
         self.rd_counter.next = self.rd_word.val().get_bits::<8>(0);
         self.rd_timer.next = self.rd_word.val().get_bits::<16>(8);
+        // the window's copy, read one edge ahead; a write to the mailbox it
+        // loads at the same edge is taken from the bypass (the collision)
+        self.win.clk.next = self.clk.val();
+        self.win.write_address.next = self.sel.val();
+        self.win.write_data.next = self.word.val();
+        self.win.write_enable.next = self.we.val();
+        self.win.read_address.next = self.win_addr.val();
+        self.win.read_enable.next = true;
+        self.win_q.d.next = self.win_addr.val();
+        self.win_hit.d.next =
+            self.we.val() & (self.sel.val() == self.win_addr.val()) & !self.clear.val();
+        self.win_word.d.next = self.word.val();
+        if self.win_hit.q.val() {
+            self.win_data.next = self.win_word.q.val();
+        } else if self.valid.q.val().get_bit(self.win_q.q.val().index()) {
+            self.win_data.next = self.win.read_data.val();
+        } else {
+            self.win_data.next = self.zero24.val();
+        }
+        self.win_counter.next = self.win_data.val().get_bits::<8>(0);
+        self.win_timer.next = self.win_data.val().get_bits::<16>(8);
         if self.we.val() {
             self.valid.d.next = self.valid.q.val() | self.slot.val();
         }
@@ -196,24 +220,5 @@ impl<const M: usize> Logic for MailboxState<M> {
             self.owed.d.next = self.zero16.val();
         }
         self.oweds.next = self.owed.q.val();
-        // the registers, and the packed outputs (wiring)
-        self.counters.next = self.zero128.val();
-        self.timers.next = self.zero256.val();
-        for i in 0..M {
-            self.mb[i].clock.next = self.clk.val();
-            self.mb[i].d.next = self.mb[i].q.val();
-            if self.we.val() & self.slot.val().get_bit(i) {
-                self.mb[i].d.next = self.word.val();
-            }
-            if self.clear.val() {
-                self.mb[i].d.next = self.zero24.val();
-            }
-            self.mb_counter.next = self.mb[i].q.val().get_bits::<8>(0);
-            self.mb_timer.next = self.mb[i].q.val().get_bits::<16>(8);
-            self.counters.next = self.counters.val()
-                | (bit_cast::<128, 8>(self.mb_counter.val()) << self.at_c[i].val());
-            self.timers.next = self.timers.val()
-                | (bit_cast::<256, 16>(self.mb_timer.val()) << self.at_t[i].val());
-        }
     }
 }

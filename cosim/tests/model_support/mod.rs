@@ -36,7 +36,7 @@ pub mod code {
     pub const BUS_OFF: u8 = 22;
 }
 
-/// The timing of the brief: 8 tq, sample point after 6 tq, SJW 1.
+/// The reference bit timing: 8 tq, sample point after 6 tq, SJW 1.
 pub fn timing(brp: u16) -> BitTiming {
     BitTiming {
         brp,

@@ -7,6 +7,7 @@
 
 mod bad_input;
 mod cocotb;
+mod doc_links;
 mod fusesoc;
 mod generate_config;
 mod generated_files;

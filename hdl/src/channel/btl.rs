@@ -35,28 +35,45 @@ pub enum Segment {
 #[derive(LogicBlock)]
 pub struct BitTimingLogic {
     // clock and reset
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// Channel reset: the bit timing restarts in SYNC_SEG with the bus taken as recessive.
     pub rst: Signal<In, Bit>,
     // configuration (minus-one encodings for the segment lengths)
     /// The BRP the prescaler counts from the next clock on (the configuration
     /// input while `rst` captures it).
     pub cfg_brp_next: Signal<In, Bits<BRP_BITS>>,
+    /// TSEG1' in time quanta, clamped (`super::config`'s `tseg1_len`).
     pub cfg_tseg1_len: Signal<In, Bits<5>>,
+    /// TSEG2 (PHASE_SEG2) in time quanta.
     pub cfg_tseg2_len: Signal<In, Bits<4>>,
+    /// Resynchronisation jump width in time quanta, at most TSEG2.
     pub cfg_sjw_len: Signal<In, Bits<4>>,
+    /// Triple sampling: the sample is the majority of the last three time quanta.
     pub cfg_triple: Signal<In, Bit>,
     // bus side
+    /// Synchronized bus value, 1 = recessive (two clocks after the pin).
     pub rx_s: Signal<In, Bit>,
+    /// The bit this node drives, 1 = recessive: a node sending a dominant bit never resynchronises
+    /// (8.7.7).
     pub tx: Signal<In, Bit>,
     // from the bit stream processor
+    /// Hard synchronisation is allowed (between frames, 11.3.2.1).
     pub hard_sync_enable: Signal<In, Bit>,
     // to the bit stream processor (valid in the clock of the event)
+    /// The sample point of the current bit (one clock).
     pub sample: Signal<Out, Bit>,
+    /// The bus level at the sample point, 1 = recessive (the majority of three with triple
+    /// sampling).
     pub sampled: Signal<Out, Bit>,
+    /// The start of a bit: the transmit pin may change.
     pub bit_start: Signal<Out, Bit>,
+    /// This bit start is a hard synchronisation.
     pub hard_sync: Signal<Out, Bit>,
     // probes
+    /// One-clock pulse, the clock after each sample point.
     pub sample_point: Signal<Out, Bit>,
+    /// Bus value taken at the last sample point, 1 = recessive.
     pub last_sample: Signal<Out, Bit>,
     // state
     brp_cnt: DFF<Bits<BRP_BITS>>,

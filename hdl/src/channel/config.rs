@@ -19,29 +19,47 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct ChannelConfig {
     // clock and reset (reset mode = capture)
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// Channel reset, reset mode: while high the configuration inputs are captured.
     pub rst: Signal<In, Bit>,
     // configuration inputs
+    /// Baud-rate prescaler BRP as is: a time quantum lasts `cfg_brp + 1` clocks.
     pub cfg_brp: Signal<In, Bits<BRP_BITS>>,
+    /// TSEG1 (PROP_SEG + PHASE_SEG1) minus one; clamped at capture (module doc).
     pub cfg_tseg1: Signal<In, Bits<4>>,
+    /// TSEG2 (PHASE_SEG2) minus one.
     pub cfg_tseg2: Signal<In, Bits<3>>,
+    /// Resynchronisation jump width SJW minus one; clamped to TSEG2 at capture.
     pub cfg_sjw: Signal<In, Bits<2>>,
+    /// Triple sampling, 1 = on.
     pub cfg_triple: Signal<In, Bit>,
+    /// Operating mode: 0 normal, 1 listen-only, 2 self-test, 3 loop-back.
     pub cfg_mode: Signal<In, Bits<2>>,
+    /// Error warning limit EWL (`err_warning`: TEC or REC at or above it).
     pub cfg_ewl: Signal<In, Bits<8>>,
+    /// 1 = single shot: no automatic retransmission.
     pub cfg_single_shot: Signal<In, Bit>,
     // held configuration
     /// The BRP held from the next clock on (the input while capturing), so the
     /// prescaler can register its tick one clock ahead.
     pub brp_next: Signal<Out, Bits<BRP_BITS>>,
+    /// Triple sampling as captured in reset mode.
     pub triple: Signal<Out, Bit>,
+    /// Operating mode as captured (0 normal, 1 listen-only, 2 self-test, 3 loop-back).
     pub mode: Signal<Out, Bits<2>>,
+    /// Error warning limit as captured.
     pub ewl: Signal<Out, Bits<8>>,
+    /// Single-shot mode as captured.
     pub single_shot: Signal<Out, Bit>,
     // derived lengths in time quanta (registered, so the bit timing logic has
     // no adders on its sample-point path): TSEG1', TSEG2, SJW'
+    /// TSEG1' in time quanta (1..16, not minus one): lengthened to at least 8 tq per bit and 3
+    /// clocks.
     pub tseg1_len: Signal<Out, Bits<5>>,
+    /// TSEG2 in time quanta (1..8).
     pub tseg2_len: Signal<Out, Bits<4>>,
+    /// SJW' = min(SJW, TSEG2) in time quanta (1..4).
     pub sjw_len: Signal<Out, Bits<4>>,
     tseg1_len_q: DFF<Bits<5>>,
     tseg2_len_q: DFF<Bits<4>>,

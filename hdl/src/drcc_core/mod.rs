@@ -289,6 +289,7 @@ pub struct DrccCore<const M: usize> {
     caps: Captures,
     ticker: BitTick,
     stats: RedundancyStats,
+    /// The main FSM (paper Table 1); public so the unit tests can watch its pulses.
     pub main: MainFsm,
     echo: Echo,
     aux_a: AuxFsm,

@@ -41,7 +41,9 @@ pub struct EcssDecode {
     pub reset_mode: Signal<In, Bit>,
     /// The stored `ECSS_CFG`, `ECSS_HB`, `ECSS_PERIOD`.
     pub cfg_word: Signal<In, Bits<32>>,
+    /// The stored `ECSS_HB`: [28:0] id, [29] ide.
     pub hb_word: Signal<In, Bits<30>>,
+    /// The stored `ECSS_PERIOD.period`, in nominal bit times.
     pub period_word: Signal<In, Bits<24>>,
     /// `ECSS_STATUS`.
     pub status_word: Signal<In, Bits<32>>,
@@ -152,7 +154,9 @@ pub struct EcssStore {
     pub refused: Signal<In, Bit>,
     /// The stored words.
     pub cfg_word: Signal<Out, Bits<32>>,
+    /// `ECSS_HB`: [28:0] the master's heartbeat identifier, [29] ide.
     pub hb_word: Signal<Out, Bits<30>>,
+    /// `ECSS_PERIOD.period`: the heartbeat period in nominal bit times (never 0).
     pub period_word: Signal<Out, Bits<24>>,
     cfg_q: DFF<Bits<32>>,
     hb_q: DFF<Bits<30>>,

@@ -22,15 +22,24 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct Coupler<const N: usize, const M: usize> {
     // clock and reset
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset: every register to 1 (recessive).
     pub rst: Signal<In, Bit>,
     // pins (1 = recessive)
+    /// Node transmit values, bit i = node port i (the hub's `uplink` pins).
     pub uplink: Signal<In, Bits<N>>,
+    /// The twin hub's contribution, bit j = interlink j (the hub's `sublink_in` pins).
     pub sublink_in: Signal<In, Bits<M>>,
+    /// This hub's own contribution (stage 1) to the twin, on every interlink; registered, recessive
+    /// while `quiet_twin`.
     pub sublink_out: Signal<Out, Bits<M>>,
     // control (registered values of the guards and the register block)
+    /// Enabled node ports, bit i = node port i: a disabled port counts as recessive.
     pub node_en: Signal<In, Bits<N>>,
+    /// Enabled sublinks, bit j = interlink j: a disabled one counts as recessive.
     pub sub_en: Signal<In, Bits<M>>,
+    /// The hub is decoupled (§7): stage 2 leaves out the twin's contribution.
     pub decoupled: Signal<In, Bit>,
     /// The hub's own transmitter in stage 1, `tx_q & !forcing` (§9.4; registers),
     /// 1 = recessive.
@@ -47,8 +56,11 @@ pub struct Coupler<const N: usize, const M: usize> {
     /// `(ack_mask & !fi_ack_leak) ? twin : view`, 1 = recessive.
     pub dl_next: Signal<Out, Bit>,
     // to the tracker and the guards
+    /// `coupled_q`: the registered stage-2 AND, the bus value the hub judges, 1 = recessive.
     pub coupled: Signal<Out, Bit>,
+    /// `port_q` of the node ports, bit i = node port i: each uplink after its synchronizer (§2).
     pub node_q: Signal<Out, Bits<N>>,
+    /// `port_q` of the sublinks, bit j = interlink j.
     pub sub_q: Signal<Out, Bits<M>>,
     // synchronizers (§2)
     node_s1: DFF<Bits<N>>,

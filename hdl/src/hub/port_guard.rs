@@ -65,7 +65,9 @@ pub const KIND_RESERVED_ID: u64 = 4;
 #[derive(LogicBlock)]
 pub struct PortGuard {
     // clock and reset
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// `rst | reset_mode`: the guard holds its reset values.
     pub rst: Signal<In, Bit>,
     /// Hold every field (a sublink guard while decoupled).
     pub freeze: Signal<In, Bit>,
@@ -75,15 +77,25 @@ pub struct PortGuard {
     /// late like every input (§6.1); `enabled` shows it at once.
     pub recouple: Signal<In, Bit>,
     // SAMPLE edge, port value and bus value (before the edge)
+    /// A SAMPLE edge of the hub's bit timing logic (one clock).
     pub sample: Signal<In, Bit>,
+    /// `port_q` of this port: its value at the edge, 1 = recessive.
     pub pb: Signal<In, Bit>,
+    /// `coupled_q`: the bus value at the edge, 1 = recessive.
     pub b: Signal<In, Bit>,
     // tracker events (each implies `sample`)
+    /// Tracker `SOF_PORTS`: a start of frame (a dominant bit after at least 10 recessive ones).
     pub ev_sof: Signal<In, Bit>,
+    /// Tracker `FRAME_PORTS`: a sampled bit of the frame, stuff bits and the CRC delimiter
+    /// included.
     pub ev_frame: Signal<In, Bit>,
+    /// Tracker: the bit is in the arbitration field (candidate transmitters are tracked).
     pub in_arb: Signal<In, Bit>,
+    /// Tracker: a stuff error on a recessive bit (rule BF blames the transmitter).
     pub ev_stuff_rec: Signal<In, Bit>,
+    /// Tracker: data bit 10 of identifier 0x000/0x001 (rule RID).
     pub ev_rid: Signal<In, Bit>,
+    /// Tracker `ACK_PORTS`: the ACK slot (rule SR; a frame without blame decrements `pec`).
     pub ev_ack: Signal<In, Bit>,
     // NRAP strobes (§9.2; each implies `sample`)
     /// `SRP_EXCHANGE` (sublinks): count recessive samples while disabled, enable at 11.
@@ -98,17 +110,23 @@ pub struct PortGuard {
     /// Enable with `pec = silent = restore_cnt = 0` (node ports).
     pub n_enable: Signal<In, Bit>,
     // limits (§8)
+    /// Rule SD: the dominant run, in bits, that isolates the port as stuck-at-dominant.
     pub sd_limit: Signal<In, Bits<6>>,
+    /// Rule BF: the `pec` that isolates the port as bit-flipping (BLAME adds 8).
     pub bf_limit: Signal<In, Bits<8>>,
+    /// Rule SR: frames without a dominant bit from the port that isolate it as silent (0 = off).
     pub sr_frames: Signal<In, Bits<4>>,
+    /// SAMPLE edges without a symptom after which a disabled port is restored (0 = never).
     pub restore_bits: Signal<In, Bits<16>>,
     // outputs
+    /// The port takes part in the coupling (`PORT_p.enabled`); a `recouple` shows here at once.
     pub enabled: Signal<Out, Bit>,
     /// PORT_p register value: [0] enabled, [3:1] kind, [15:8] pec,
     /// [23:16] isolations, [31:24] restorations.
     pub word: Signal<Out, Bits<32>>,
     /// One-clock events for INT_STATUS (valid in the clock of the edge).
     pub iso_evt: Signal<Out, Bit>,
+    /// The port was restored at this edge (INT_STATUS; one clock, like `iso_evt`).
     pub rest_evt: Signal<Out, Bit>,
     // registers
     enabled_q: DFF<Bit>,

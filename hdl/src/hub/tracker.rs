@@ -25,22 +25,34 @@ pub const ACK_DELIM: u64 = 3;
 #[derive(LogicBlock)]
 pub struct FrameTracker {
     // clock and reset
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// `rst | reset_mode`: every register held at its reset value.
     pub rst: Signal<In, Bit>,
     // from the bit timing logic and the coupler
+    /// A SAMPLE edge of the hub's bit timing logic (one clock).
     pub sample: Signal<In, Bit>,
     /// `coupled_q`: the sampled bus value at a SAMPLE edge.
     pub b: Signal<In, Bit>,
     // state and statistics
+    /// Tracker state (`STATUS.trk`): 0 IDLE_WAIT, 1 FRAME, 2 ACK_SLOT, 3 ACK_DELIM.
     pub trk: Signal<Out, Bits<2>>,
+    /// Frames tracked to their ACK slot (saturating).
     pub frames: Signal<Out, Bits<16>>,
+    /// The tracker's own stuff and CRC-delimiter form errors (saturating).
     pub errors: Signal<Out, Bits<16>>,
     // events for the guards (valid in the clock of the SAMPLE edge)
+    /// `SOF_PORTS`: a dominant bit after at least 10 recessive ones, a start of frame.
     pub ev_sof: Signal<Out, Bit>,
+    /// `FRAME_PORTS`: every sampled bit of FRAME (stuff bits and the CRC delimiter included).
     pub ev_frame: Signal<Out, Bit>,
+    /// The bit at this edge is in the arbitration field (`pos <= 13`, or `pos <= 32` with IDE).
     pub in_arb: Signal<Out, Bit>,
+    /// A stuff error on a recessive bit.
     pub ev_stuff_rec: Signal<Out, Bit>,
+    /// Data bit 10 of a frame with identifier 0x000 or 0x001 (reserved identifiers).
     pub ev_rid: Signal<Out, Bit>,
+    /// `ACK_PORTS`: the ACK slot is sampled.
     pub ev_ack: Signal<Out, Bit>,
     // registers
     trk_q: DFF<Bits<2>>,

@@ -18,12 +18,19 @@ use std::collections::BTreeMap;
 /// Block RAM: `2^N` words of `D`, one clock, read enable, undefined collisions.
 #[derive(LogicBlock, Default)]
 pub struct Bram<D: Synth, const N: usize> {
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// The word read at this edge.
     pub read_address: Signal<In, Bits<N>>,
+    /// Load `read_data` at this edge; 0 holds it.
     pub read_enable: Signal<In, Bit>,
+    /// Read data register: the word at `read_address` before this edge's write.
     pub read_data: Signal<Out, D>,
+    /// The word written at this edge.
     pub write_address: Signal<In, Bits<N>>,
+    /// The value written.
     pub write_data: Signal<In, D>,
+    /// Write `write_data` at this edge.
     pub write_enable: Signal<In, Bit>,
     _sim: BTreeMap<Bits<N>, D>,
 }

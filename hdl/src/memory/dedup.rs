@@ -87,22 +87,38 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock, Default)]
 pub struct RxWriter {
     // clock, reset (statistics) and clear (rst or reset mode)
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset: clears the statistics.
     pub rst: Signal<In, Bit>,
+    /// `rst` or reset mode: the writer goes idle, pending frames are dropped and the history
+    /// forgotten.
     pub clear: Signal<In, Bit>,
     // configuration and time
+    /// Duplicate removal: redundancy or DMR mode with a non-zero window (the history is used).
     pub dedup_on: Signal<In, Bit>,
+    /// `DEDUP_CFG.window`: how far back, in nominal bit times, a copy from the other channel is a
+    /// duplicate.
     pub window: Signal<In, Bits<15>>,
+    /// Bit-time clock (`BitTick`'s `now`): the history's and the RX timestamp.
     pub now: Signal<In, Bits<16>>,
+    /// Nominal bit tick: `now` advances at it.
     pub tick: Signal<In, Bit>,
     // channels: rx_valid pulses and the received frames (valid with the pulse;
     // latched here, since a channel restart clears the channel's rx outputs)
+    /// One-clock pulse: channel A delivers `frame_a` (its `rx_valid` less echoes; DMR: the DCL's
+    /// delivery).
     pub rxv_a: Signal<In, Bit>,
+    /// One-clock pulse: channel B delivers `frame_b` (DMR: the RCL's delivery).
     pub rxv_b: Signal<In, Bit>,
+    /// Channel A's frame, valid with `rxv_a`: [98:68] {rtr, ide, id}, [67:64] dlc, [63:0] data.
     pub frame_a: Signal<In, Bits<99>>,
+    /// Channel B's frame, valid with `rxv_b` (layout of `frame_a`).
     pub frame_b: Signal<In, Bits<99>>,
     // RX FIFO
+    /// RX FIFO count: a frame for a full FIFO is an overrun.
     pub fifo_count: Signal<In, Bits<6>>,
+    /// Write `fifo_data` to the RX FIFO at this edge.
     pub fifo_wr: Signal<Out, Bit>,
     /// The FIFO entry: [115:100] `now` (the RX timestamp, contract §11.2), [99]
     /// channel, [98:0] frame.
@@ -134,9 +150,13 @@ pub struct RxWriter {
     /// `STATS_CLR.clear` (contract §11.4): the statistics clear at this edge.
     pub stats_clear: Signal<In, Bit>,
     // events and statistics
+    /// A frame was written to the RX FIFO at this edge (`INT_STATUS.rx`).
     pub rx_evt: Signal<Out, Bit>,
+    /// A frame was dropped at this edge because the RX FIFO was full (`INT_STATUS.overrun`).
     pub overrun_evt: Signal<Out, Bit>,
+    /// `STATS0.duplicates`: duplicates dropped (saturating).
     pub duplicates: Signal<Out, Bits<16>>,
+    /// `STATS0.overruns`: frames dropped because the RX FIFO was full (saturating).
     pub overruns: Signal<Out, Bits<16>>,
     /// `OMISSIONS[15:0]`: frames only channel B delivered (omissions of A).
     pub omissions_a: Signal<Out, Bits<16>>,

@@ -30,15 +30,23 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct RxFifo {
     // clock and clear (rst or reset mode: emptied)
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// `rst` or reset mode: the FIFO is emptied.
     pub clear: Signal<In, Bit>,
     // write side (writer FSM) and pop (RX_CMD)
+    /// Write `wr_data` behind the last entry at this edge (only when not full).
     pub wr: Signal<In, Bit>,
+    /// The entry: [115:100] timestamp, [99] channel, [98:0] frame (the TX RAM's layout).
     pub wr_data: Signal<In, Bits<116>>,
+    /// `RX_CMD` pop: the head leaves at this edge (only when not empty).
     pub pop: Signal<In, Bit>,
     // outputs
+    /// Entries in the FIFO (`STATUS.rx_count`).
     pub count: Signal<Out, Bits<6>>,
+    /// The head entry (the RAM's read data register), laid out as `wr_data`.
     pub rd_data: Signal<Out, Bits<116>>,
+    /// `RX_ID.rx_ready`: `count != 0` registered (0 in reset mode).
     pub rx_ready: Signal<Out, Bit>,
     ram: Bram<Bits<116>, 5>,
     /// `depth - 1`: the pointer wrap (generation parameter).

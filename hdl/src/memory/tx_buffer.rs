@@ -46,8 +46,11 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct TxBuffer {
     // clock and clear (rst or reset mode: both queues emptied)
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// `rst` or reset mode: both queues are emptied.
     pub clear: Signal<In, Bit>,
+    /// Redundancy mode: queue A is the one logical queue, popped by the main FSM; no requests here.
     pub redundancy: Signal<In, Bit>,
     // DMR mode: the lines' read offsets and the entries they left behind
     /// `CTRL.dmr`: queue A is read at `head_a + off[rd_sel]`, popped by `dmr_pop`.
@@ -59,11 +62,14 @@ pub struct TxBuffer {
     /// DMR: entries of queue A both lines have sent, popped at this edge.
     pub dmr_pop: Signal<In, Bits<4>>,
     // push (already accepted by the register block) and the staged frame
+    /// Push the staged frame at this edge (the register block checked the queue is not full).
     pub push: Signal<In, Bit>,
+    /// The queue a push goes to: 0 = A, 1 = B.
     pub push_q: Signal<In, Bit>,
     /// The staged frame (layout above); the RAM stores it normalized (§6).
     pub push_frame: Signal<In, Bits<99>>,
     // redundancy mode: the main FSM's finish
+    /// The main FSM's finish (its `pop`): queue A's head leaves (redundancy mode).
     pub pop_red: Signal<In, Bit>,
     // host abort (contract §11.5, already accepted by the register block)
     /// `TX_CMD.abort_a`: queue A keeps only the frame a channel holds.
@@ -76,19 +82,31 @@ pub struct TxBuffer {
     /// Normal mode: channel B's `tx_abort`.
     pub chan_abort_b: Signal<Out, Bit>,
     // channel events
+    /// Channel A's `tx_done` pulse: in normal mode queue A's head leaves.
     pub done_a: Signal<In, Bit>,
+    /// Channel A's `tx_failed` pulse: in normal mode queue A's head is dropped.
     pub failed_a: Signal<In, Bit>,
+    /// Channel B's `tx_done` pulse: in normal mode queue B's head leaves.
     pub done_b: Signal<In, Bit>,
+    /// Channel B's `tx_failed` pulse: in normal mode queue B's head is dropped.
     pub failed_b: Signal<In, Bit>,
     // outputs
+    /// Frames in queue A (`STATUS.txq_a_count`).
     pub count_a: Signal<Out, Bits<4>>,
+    /// Frames in queue B (`STATUS.txq_b_count`).
     pub count_b: Signal<Out, Bits<4>>,
+    /// RAM read data: the head (DMR: a line's entry) the read port served at the last edge; layout
+    /// above.
     pub rd_frame: Signal<Out, Bits<99>>,
     /// The line (queue in normal mode) the read port serves before this edge.
     pub rd_sel_o: Signal<Out, Bit>,
+    /// Normal mode: channel A's `tx_req`, a one-clock pulse while `rd_frame` is queue A's head.
     pub req_a: Signal<Out, Bit>,
+    /// Normal mode: channel B's `tx_req`, a one-clock pulse while `rd_frame` is queue B's head.
     pub req_b: Signal<Out, Bit>,
+    /// Normal mode: a channel sent its frame at this edge (`INT_STATUS.tx_done`).
     pub done_evt: Signal<Out, Bit>,
+    /// Normal mode: a channel dropped its frame at this edge (`INT_STATUS.tx_failure`).
     pub failed_evt: Signal<Out, Bit>,
     // storage and queue state
     ram: Bram<Bits<99>, 4>,

@@ -35,40 +35,74 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct AuxFsm {
     // clock, reset, hold (rst, normal or reset mode)
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset (the top ORs in `STATS_CLR`): clears the `failures` and `recoveries`
+    /// counts.
     pub rst: Signal<In, Bit>,
+    /// Normal or reset mode: the FSM sits in valid with its working counters and cause bits
+    /// cleared.
     pub hold: Signal<In, Bit>,
     // configuration
+    /// `CTRL.policy`: the switch policy code (`SwitchPolicy`: which causes fail the channel,
+    /// contract §5).
     pub policy: Signal<In, Bits<2>>,
+    /// `CTRL.k`: failed attempts that fail the channel under the k-failed policy.
     pub k: Signal<In, Bits<4>>,
+    /// `RMB_CFG.stall_limit`: bit times a message may stay pending before the channel is judged
+    /// failed (0 = off).
     pub stall_limit: Signal<In, Bits<16>>,
+    /// `RMB_CFG.recovery_bits`: error-free sample points in probation before the channel is valid
+    /// again (0 counts as 1).
     pub recovery_bits: Signal<In, Bits<16>>,
     // bit tick and main FSM
+    /// Nominal bit tick: the stall count advances at it while a message is pending.
     pub tick: Signal<In, Bit>,
+    /// The main FSM uses this channel (its `in_use_a` / `in_use_b`): a failed channel is not
+    /// restarted.
     pub in_use: Signal<In, Bit>,
     /// A restart cannot cost a frame: the channel at bus idle, and for B, A valid.
     pub restart_ok: Signal<In, Bit>,
     // channel
+    /// The channel's `err_valid` pulse: an error was detected (with `err_tx` a failed attempt; it
+    /// restarts probation).
     pub err_valid: Signal<In, Bit>,
+    /// The channel's `err_tx`: the node was transmitter at that error.
     pub err_tx: Signal<In, Bit>,
+    /// The channel's `tx_done` pulse: a frame was sent, the failed-attempt count clears.
     pub tx_done: Signal<In, Bit>,
+    /// The channel's `tx_pending`: the stall count runs while it is set; a failed channel restarts
+    /// only without it.
     pub tx_pending: Signal<In, Bit>,
     /// A frame received without error: the line works (clears the stall count).
     pub rx_valid: Signal<In, Bit>,
+    /// The channel's fault confinement state (`ErrState`: 0 error active, 1 error passive, 2
+    /// bus-off).
     pub err_state: Signal<In, Bits<2>>,
     /// The channel's `err_warning` (TEC or REC at or above `ewl`): the cause of
     /// the warning policy.
     pub err_warning: Signal<In, Bit>,
+    /// The channel's `sample_point` pulse: probation counts these.
     pub sample_point: Signal<In, Bit>,
     // outputs
+    /// FSM state `aux_state[1:0]` (`AUX_x.state`): valid 0, failed 1, restart 2, probation 3.
     pub aux_state: Signal<Out, Bits<2>>,
+    /// The channel is valid (state valid): the main FSM's `VA` / `VB`.
     pub valid: Signal<Out, Bit>,
+    /// State restart: the channel is reset for this clock and re-integrates with the bus.
     pub chan_rst: Signal<Out, Bit>,
+    /// Latched failure causes `AUX_x[6:2]`: [0] error passive, [1] bus-off, [2] k failed, [3]
+    /// stall, [4] warning.
     pub causes: Signal<Out, Bits<5>>,
+    /// `AUX_x.fail_cnt`: failed attempts since the last success (saturating at 15).
     pub fail_cnt: Signal<Out, Bits<4>>,
+    /// `AUX_x.failures`: times the channel was judged failed (saturating).
     pub failures: Signal<Out, Bits<8>>,
+    /// `AUX_x.recoveries`: times the channel became valid again after probation (saturating).
     pub recoveries: Signal<Out, Bits<8>>,
+    /// Valid -> failed at this edge (`INT_STATUS.aux`; combinational).
     pub fail_evt: Signal<Out, Bit>,
+    /// Probation -> valid at this edge (`INT_STATUS.aux`, `STATS1.recoveries`; combinational).
     pub recover_evt: Signal<Out, Bit>,
     // registers
     st: DFF<Bits<2>>,

@@ -12,14 +12,22 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct BitTick {
     // clock and hold (rst or reset mode)
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// `rst` or reset mode: the counters and `now` are 0, no tick.
     pub hold: Signal<In, Bit>,
     // BTR fields (value - 1 encodings)
+    /// `BTR.brp` as written: a time quantum lasts `brp + 1` clocks.
     pub brp: Signal<In, Bits<BRP_BITS>>,
+    /// `BTR.tseg1` as written (minus one, not clamped).
     pub tseg1: Signal<In, Bits<4>>,
+    /// `BTR.tseg2` as written (minus one, not clamped).
     pub tseg2: Signal<In, Bits<3>>,
     // outputs
+    /// Nominal bit tick: one clock every `(brp+1) * (1 + (tseg1+1) + (tseg2+1))` clocks
+    /// (combinational).
     pub tick: Signal<Out, Bit>,
+    /// Bit-time clock: counts ticks, 16 bits, wrapping (the RX timestamps, contract §7, §11.2).
     pub now: Signal<Out, Bits<16>>,
     tq_cnt: DFF<Bits<BRP_BITS>>,
     bit_cnt: DFF<Bits<5>>,

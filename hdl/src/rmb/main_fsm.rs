@@ -30,20 +30,38 @@ fn state(s: MainState) -> Constant<Bits<4>> {
 #[derive(LogicBlock)]
 pub struct MainFsm {
     // clock, reset, hold (normal or reset mode)
+    /// System clock.
     pub clk: Signal<In, Clock>,
+    /// Synchronous reset: also clears the TIMES registers (`last_tx_time`, `switch_time`), which
+    /// `hold` keeps.
     pub rst: Signal<In, Bit>,
+    /// Normal or reset mode: the FSM sits in idle1 with its registers cleared (contract §4).
     pub hold: Signal<In, Bit>,
     // inputs
+    /// `CTRL.dual_tx`: a message delivered on A is sent again on B (§4.1; a star node only after
+    /// the hubs split, §4.4).
     pub dual_tx: Signal<In, Bit>,
+    /// `Q`: TX queue A, the one logical queue of redundancy mode, is not empty.
     pub queued: Signal<In, Bit>,
+    /// `VA`: channel A is valid (aux FSM A in valid, or under the ECSS policy the bus in use is A,
+    /// §12.2).
     pub valid_a: Signal<In, Bit>,
+    /// `VB`: channel B is valid.
     pub valid_b: Signal<In, Bit>,
+    /// Channel A's `tx_pending`: it holds a frame not yet sent or dropped.
     pub pending_a: Signal<In, Bit>,
+    /// Channel B's `tx_pending`.
     pub pending_b: Signal<In, Bit>,
+    /// Channel A's `tx_done` pulse: it sent the frame it held.
     pub done_a: Signal<In, Bit>,
+    /// Channel B's `tx_done` pulse.
     pub done_b: Signal<In, Bit>,
+    /// Channel A's `tx_failed` pulse: it dropped the frame it held (abort carried out, single
+    /// shot).
     pub failed_a: Signal<In, Bit>,
+    /// Channel B's `tx_failed` pulse.
     pub failed_b: Signal<In, Bit>,
+    /// Nominal bit tick (`super::bit_tick`): `tx_time` counts it (§4.3).
     pub tick: Signal<In, Bit>,
     // star node (§4.4)
     /// Channel A received the attempted head message (an echo, `super::echo`).
@@ -53,29 +71,59 @@ pub struct MainFsm {
     /// `attempted`: the head message was handed to a channel and is not finished.
     pub attempted: Signal<Out, Bit>,
     // paper signals
+    /// Main FSM state `state[3:0]`, paper Table 1 codes (idle1 0 .. wait4 9, module doc).
     pub state: Signal<Out, Bits<4>>,
+    /// Channel the FSM transmits on: 0 = A, 1 = B (`state >= idle2`).
     pub tx_channel: Signal<Out, Bit>,
     /// `failover` (§D4): the main FSM works on channel B since its last switch.
     pub failover: Signal<Out, Bit>,
+    /// A transmission is in progress: the state is neither idle1 nor idle2.
     pub tx_going_on: Signal<Out, Bit>,
+    /// Channel A transmit request (its `tx_req`), a one-clock pulse on entering ch1.
     pub req_a: Signal<Out, Bit>,
+    /// Channel B transmit request (its `tx_req`), a one-clock pulse on entering ch2.
     pub req_b: Signal<Out, Bit>,
+    /// Channel A abort (its `tx_abort`), a one-clock pulse: from abort1, or at an echo while A
+    /// attempts the message.
     pub abort_a: Signal<Out, Bit>,
+    /// Channel B abort (its `tx_abort`), a one-clock pulse: from abort2, or at an echo while B
+    /// attempts the message.
     pub abort_b: Signal<Out, Bit>,
+    /// One-clock pulse: a channel delivered the message in flight (§4.1), or an echo showed it
+    /// delivered (§4.4).
     pub transmission_ack: Signal<Out, Bit>,
+    /// One-clock pulse, the clock after the `transmission_ack` of a finish (never for the first
+    /// copy of a dual message).
     pub tx_success: Signal<Out, Bit>,
+    /// Channel(s) that delivered the last message, latched: bit 0 = A, bit 1 = B (11: both,
+    /// `dual_tx`).
     pub tx_ok_channel: Signal<Out, Bits<2>>,
+    /// One-clock pulse: the FSM judged a channel failed for the message (the wait2 and wait4 rows).
     pub tx_failure: Signal<Out, Bit>,
+    /// Latched failed channel(s): bit 0 = A, bit 1 = B (11: B failed while A is not valid either).
     pub tx_failure_channel: Signal<Out, Bits<2>>,
     // host-visible times
+    /// `TIMES.last_tx_time`: bit times from the first request to the delivery of the last message
+    /// (saturating).
     pub last_tx_time: Signal<Out, Bits<16>>,
+    /// `TIMES.switch_time`: bit times from the first request to the failover of the last switch
+    /// (saturating).
     pub switch_time: Signal<Out, Bits<16>>,
     // events and channel use for the rest of the top
+    /// A finish: the head of TX queue A leaves at this edge (combinational).
     pub pop: Signal<Out, Bit>,
+    /// `tx_success` rises at this edge (`INT_STATUS.tx_done`; combinational).
     pub success_evt: Signal<Out, Bit>,
+    /// `tx_failure` is set at this edge (`INT_STATUS.tx_failure`; combinational).
     pub fail_evt: Signal<Out, Bit>,
+    /// A switch event: `failover` changes at this edge while running (§4.3: `STATS1.switches`,
+    /// `INT_STATUS.switch`).
     pub switch_evt: Signal<Out, Bit>,
+    /// The FSM is in {wait1, ch1, abort1, wait2}: channel A is in use, so aux FSM A does not
+    /// restart it.
     pub in_use_a: Signal<Out, Bit>,
+    /// The FSM is in {wait3, ch2, abort2, wait4}: channel B is in use, so aux FSM B does not
+    /// restart it.
     pub in_use_b: Signal<Out, Bit>,
     // registers
     st: DFF<Bits<4>>,

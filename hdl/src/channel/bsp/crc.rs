@@ -8,8 +8,11 @@ use rust_hdl::prelude::*;
 /// One step of the CRC-15 shift register.
 #[derive(LogicBlock)]
 pub struct Crc15Step {
+    /// The CRC register before this bit.
     pub crc: Signal<In, Bits<15>>,
+    /// The destuffed bit shifted in.
     pub data_bit: Signal<In, Bit>,
+    /// The CRC register after this bit: `crc << 1`, XOR 0x4599 when `crc[14] ^ data_bit`.
     pub crc_next: Signal<Out, Bits<15>>,
     polynomial: Constant<Bits<15>>,
     zero: Constant<Bits<15>>,

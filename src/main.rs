@@ -122,7 +122,7 @@ enum Command {
         /// Also run this engine in lock step and compare every clock.
         #[arg(long, value_name = "ENGINE")]
         cosim: Option<String>,
-        /// With `table`: rewrite the table in README.md and docs/hub.md.
+        /// With `table`: rewrite the table in docs/hub.md.
         #[arg(long)]
         markdown: bool,
         #[command(flatten)]
@@ -172,7 +172,7 @@ enum Command {
         /// The fault arises at run time.
         #[arg(long)]
         runtime: bool,
-        /// With `table`: rewrite the table in README.md and docs/dmr.md.
+        /// With `table`: rewrite the table in docs/dmr.md.
         #[arg(long)]
         markdown: bool,
         /// Engine: model or verilator (verilator runs with the model in lock step).
@@ -289,7 +289,8 @@ enum Command {
         /// Every top on every family.
         #[arg(long)]
         all: bool,
-        /// With --all: rewrite docs/synthesis.md and the results table in README.md.
+        /// With --all: rewrite docs/synthesis.md (the results table, the area by block,
+        /// the scan wrapper and the clock).
         #[arg(long)]
         markdown: bool,
         /// Print the results as JSON.

@@ -10,13 +10,11 @@
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use drcc_fpga::markdown::{self, README_BEGIN, README_END};
+use drcc_fpga::markdown;
 use drcc_fpga::{nextpnr, tools, Flow, SynthReport, Target, ToolEnv, TARGETS};
 use drcc_hdl::tops::{self, Top};
 
-use super::{
-    project_root, rewrite_between_atomic, workspace_path, write_atomic, CliError, CliResult,
-};
+use super::{project_root, workspace_path, write_atomic, CliError, CliResult};
 
 /// The options of `drcc synth`.
 #[derive(Debug, Default)]
@@ -29,7 +27,7 @@ pub struct SynthArgs {
     pub all: bool,
     /// `--json`: machine-readable report on stdout.
     pub json: bool,
-    /// `--markdown`: rewrite docs/synthesis.md and the README table.
+    /// `--markdown`: rewrite docs/synthesis.md (which holds the results table).
     pub markdown: bool,
     /// `--breakdown`: the area block by block on every selected target.
     pub breakdown: bool,
@@ -95,7 +93,7 @@ fn selection(args: &SynthArgs) -> Result<(Vec<&'static Top>, Vec<&'static Target
 pub fn run(args: SynthArgs) -> CliResult {
     let (tops, targets) = selection(&args)?;
     tools::check(&targets)?;
-    // the checkout whose tables --markdown rewrites, found before the long run
+    // the checkout whose docs/synthesis.md --markdown rewrites, found before the long run
     let root = match args.markdown {
         true => Some(project_root(", or leave out --markdown (or use --json)")?),
         false => None,
@@ -150,44 +148,38 @@ pub fn run(args: SynthArgs) -> CliResult {
         println!("{json}");
     }
     if let Some(root) = root {
-        let table = markdown::table(&results);
-        let doc_path = root.join("docs/synthesis.md");
-        let readme_path = root.join("README.md");
-        // the README's markers are checked (and its new text staged) before the
-        // document is replaced, so a bad README changes neither file
-        rewrite_between_atomic(
-            std::slice::from_ref(&readme_path),
-            README_BEGIN,
-            README_END,
-            &table,
-        )?;
+        // the whole document, results table included, through a temporary file
+        // and a rename: an interrupted run leaves the old file or the new one
+        let doc_path = root.join(DOC_PAGE);
         write_atomic(&doc_path, markdown::doc(&results, &flow.env))?;
         if !args.json {
-            print!("{table}");
-            println!(
-                "wrote {} and the table in {}",
-                doc_path.display(),
-                readme_path.display()
-            );
+            print!("{}", markdown::table(&results));
+            println!("wrote {}", doc_path.display());
         }
     }
     Ok(())
 }
 
+/// The document `--all --markdown` rewrites, whole (the README links to it).
+const DOC_PAGE: &str = "docs/synthesis.md";
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// The results table lives in docs/synthesis.md, written whole; the README
+    /// holds no generated copy of it.
     #[test]
-    fn markers_are_replaced() {
-        let text = format!("head\n{README_BEGIN}\nold\n{README_END}\ntail\n");
-        let new =
-            crate::cli::replace_between(&text, README_BEGIN, README_END, "| new |\n").unwrap();
-        assert_eq!(
-            new,
-            format!("head\n{README_BEGIN}\n| new |\n{README_END}\ntail\n")
+    fn the_results_table_lives_in_the_document_only() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let doc = std::fs::read_to_string(root.join(DOC_PAGE)).unwrap();
+        assert!(doc.starts_with("# Synthesis results\n"), "{DOC_PAGE}");
+        assert!(
+            doc.contains("\n| top | target: board (FPGA) | LUTs |"),
+            "{DOC_PAGE}"
         );
-        assert!(crate::cli::replace_between("nothing", README_BEGIN, README_END, "x").is_err());
+        let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+        assert!(!readme.contains("synth-results:begin"), "README.md");
     }
 
     #[test]

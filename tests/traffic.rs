@@ -14,7 +14,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use drcc_cosim::dual::host::HostRx;
+use drcc_cosim::host::HostRx;
 use drcc_cosim::Frame;
 use drcc_testbench::dual::{run_dual_observed, DualFault, DualScenario};
 use drcc_testbench::ring::{RingFault, RingScenario};

@@ -6,6 +6,7 @@ pub mod cosim;
 pub mod dual;
 pub mod engine;
 pub mod frame;
+pub mod host;
 pub mod model;
 pub mod ring;
 pub mod star;

@@ -1,12 +1,12 @@
 //! The register indices live twice on purpose: in the register table
 //! `hdl/src/host/registers.rs` (the source of the RTL and of the testbench host
-//! `dual::host::reg`, from which `rtl-out/drcc_regs.h` is generated) and in the
+//! `host::reg`, from which `rtl-out/drcc_regs.h` is generated) and in the
 //! reference model (`model::drcc::regs`, written from the contract). Independence
 //! keeps them apart; this test keeps them equal, reading the generated C header a
 //! firmware author would use (`register_maps.rs` checks every field through the
 //! model's bus).
 
-use drcc_cosim::dual::host::reg;
+use drcc_cosim::host::reg;
 use drcc_cosim::model::drcc::regs::idx;
 use std::collections::BTreeMap;
 

@@ -7,9 +7,9 @@
 
 use super::traffic::{check_owned, TrafficArgs, TrafficFiles};
 use super::{check_outputs, write_atomic, CliError, CliResult};
-use drcc_cosim::dual::host::Policy;
 use drcc_cosim::dual::DualBusSystem;
-use drcc_cosim::traffic::DualTap;
+use drcc_cosim::host::Policy;
+use drcc_cosim::traffic::NodeTap;
 use drcc_testbench::dual::{run_dual_observed, DualFault, DualScenario, CLOCK_HZ};
 use drcc_testbench::paper::{run_paper_observed, switchover_table, Rate};
 use drcc_testbench::EngineKind;
@@ -41,7 +41,7 @@ fn observer<'a>(
     files: &'a mut TrafficFiles,
     nodes: usize,
 ) -> impl FnMut(&DualBusSystem) -> Result<(), String> + 'a {
-    let mut tap = DualTap::new(nodes);
+    let mut tap = NodeTap::new(nodes);
     move |sys| files.take(|out| tap.poll(sys, out))
 }
 

@@ -6,12 +6,12 @@
 //! the table between the `ring-table` markers of docs/redcan.md. A fault can run
 //! again on a second engine in lock step (`--cosim`, `drcc_testbench::ring::lockstep`)
 //! and export its traffic (`--candump`, `--pcap`: the `--engine` run's, through
-//! `RingTap`); `table` refuses all three.
+//! `NodeTap`); `table` refuses all three.
 
 use super::traffic::{check_owned, TrafficArgs, TrafficFiles};
 use super::{project_root, rewrite_between_atomic, CliError, CliResult};
 use drcc_cosim::ring::RingSystem;
-use drcc_cosim::traffic::RingTap;
+use drcc_cosim::traffic::NodeTap;
 use drcc_testbench::ring::lockstep::run_lockstep;
 use drcc_testbench::ring::table::{fault_from_name, ring_table, row, RingTable, HEADER};
 use drcc_testbench::ring::{run_observed, Algorithm, RingScenario, CLOCK_HZ};
@@ -133,7 +133,7 @@ pub fn run_ring(a: &RingArgs) -> CliResult {
     };
     check_owned(&traffic.owned_outputs())?;
     let mut files = TrafficFiles::create(traffic, CLOCK_HZ)?;
-    let mut tap = RingTap::new(n * (1 + s.plain_per_section));
+    let mut tap = NodeTap::new(n * (1 + s.plain_per_section));
     let observe = |sys: &RingSystem| files.take(|out| tap.poll(sys, out));
     let (r, lockstep) = match other {
         None => (run_observed(&s, kind, observe), None),

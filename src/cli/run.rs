@@ -395,7 +395,7 @@ pub fn demo() -> CliResult {
 /// DRCC or, without Verilator, on the reference model (the DRCC has no rust-hdl
 /// engine run here: too slow for two nodes of two channels each).
 fn demo_drcc(channel_engine: EngineKind) -> CliResult {
-    use drcc_cosim::dual::host::Policy;
+    use drcc_cosim::host::Policy;
     use drcc_testbench::paper::{run_paper, Rate};
     let kind = if channel_engine == EngineKind::Verilator {
         EngineKind::Verilator

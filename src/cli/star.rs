@@ -7,7 +7,7 @@
 
 use super::traffic::{check_owned, TrafficArgs, TrafficFiles};
 use super::{project_root, rewrite_between_atomic, CliError, CliResult};
-use drcc_cosim::traffic::StarTap;
+use drcc_cosim::traffic::NodeTap;
 use drcc_testbench::star::{
     run_star_observed, star_table, table_row, StarFault, StarReport, StarScenario, CLOCK_HZ,
 };
@@ -25,7 +25,7 @@ fn run_fault(
     traffic: &TrafficArgs,
 ) -> Result<StarReport, CliError> {
     let mut files = TrafficFiles::create(traffic, CLOCK_HZ)?;
-    let mut tap = StarTap::new(s.nodes);
+    let mut tap = NodeTap::new(s.nodes);
     let r = run_star_observed(s, kind, other, &mut |sys| {
         files.take(|out| tap.poll(sys, out))
     })

@@ -15,13 +15,13 @@
 //!   transceiver) until fault confinement takes node 0's channel A to bus-off.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
-use drcc_cosim::dual::host::{btr, reg, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::{compare, DrccDivergence};
 use drcc_cosim::dual::vcd::DrccVcdWriter;
 use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
 use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_cosim::host::{btr, reg, HostConfig, Policy};
 use drcc_cosim::Frame;
 
 use crate::drcc_build::DrccBuild;

@@ -15,10 +15,10 @@
 //! `Ntoggle` 3 and 0.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
-use drcc_cosim::dual::ecss_config::EcssConfig;
-use drcc_cosim::dual::host::{reg, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::{DualBusSystem, Line};
+use drcc_cosim::host::ecss_config::EcssConfig;
+use drcc_cosim::host::{reg, HostConfig, Policy};
 use drcc_cosim::Frame;
 use drcc_hdl::host::registers::MAP;
 

@@ -9,10 +9,10 @@
 //! The run measures the switchover: from the start of node 0's first attempt (its
 //! first SOF on line A) to its SOF on line B and to `tx_success`, in bit times.
 
-use drcc_cosim::dual::host::{btr, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::vcd::DrccVcdWriter;
 use drcc_cosim::dual::DualBusSystem;
+use drcc_cosim::host::{btr, HostConfig, Policy};
 use drcc_cosim::Frame;
 
 use crate::dual::{drcc_engine, DualObserver};

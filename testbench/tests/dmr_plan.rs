@@ -33,8 +33,8 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use drcc_cosim::dual::fault::Detach;
-use drcc_cosim::dual::host::{btr, HostConfig, Policy};
 use drcc_cosim::dual::{DualBusSystem, Line};
+use drcc_cosim::host::{btr, HostConfig, Policy};
 use drcc_cosim::Frame;
 use drcc_hdl::host::registers::DmrState;
 use drcc_testbench::dmr::load::{schedule, summary};

@@ -10,13 +10,13 @@
 //! (the oracle written from the contract), never the RTL's.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
-use drcc_cosim::dual::ecss_config::EcssConfig;
-use drcc_cosim::dual::host::{btr, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::{DualBusSystem, Line};
 use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_cosim::host::ecss_config::EcssConfig;
+use drcc_cosim::host::{btr, HostConfig, Policy};
 use drcc_cosim::Frame;
 use drcc_hdl::host::registers as map;
 use drcc_testbench::engines::verilator_required;

@@ -9,8 +9,8 @@
 //! the reference model's trace (the oracle), and the Verilated RTL must produce the
 //! same outputs clock by clock (lock step in the same run).
 
-use drcc_cosim::dual::host::Policy;
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_cosim::host::Policy;
 use drcc_testbench::engines::lockstep_engine;
 use drcc_testbench::paper::{run_paper, PaperReport, Rate};
 use drcc_testbench::EngineKind;

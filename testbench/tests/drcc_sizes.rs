@@ -9,11 +9,11 @@
 //! The history size `H` is exercised by `drcc_small_faults.rs` (every dual-bus
 //! fault scenario on `drcc_small`, model and RTL in lock step).
 
-use drcc_cosim::dual::host::btr;
 use drcc_cosim::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use drcc_cosim::engine::drcc_model::DrccModelEngine;
 use drcc_cosim::engine::drcc_rusthdl;
 use drcc_cosim::engine::drcc_verilator::{DrccSmallVerilatorEngine, DrccVerilatorEngine};
+use drcc_cosim::host::btr;
 use drcc_cosim::model::drcc::DrccParams;
 use drcc_hdl::config::DrccConfig;
 use drcc_hdl::host::registers::{self as map, SwitchPolicy, MAP};

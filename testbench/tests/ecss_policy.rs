@@ -9,9 +9,9 @@
 //! divergence fails), and the refusals of §12.1 are compared register by
 //! register on both.
 
-use drcc_cosim::dual::host::{reg, HostConfig};
 use drcc_cosim::dual::DualBusSystem;
 use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
+use drcc_cosim::host::{reg, HostConfig};
 use drcc_hdl::host::registers::MAP;
 use drcc_testbench::drcc_build::DrccBuild;
 use drcc_testbench::ecss::{run_ecss, EcssFault, EcssReport, EcssScenario};

@@ -24,8 +24,8 @@
 
 use std::time::Instant;
 
-use drcc_cosim::dual::host::reg;
 use drcc_cosim::engine::rcm::rcm_engine;
+use drcc_cosim::host::reg;
 use drcc_cosim::model::field::ERROR_FLAG;
 use drcc_cosim::ring::RingSystem;
 use drcc_hdl::host::registers::MAP;

@@ -1,23 +1,21 @@
 //! A dual-bus network of DRCC nodes: every node's channel A on line A, channel B on
 //! line B (two independent wired-AND lines, DRCC paper Fig. 1), each node driven by
-//! its own [`host::HostDriver`]. Faults: everything [`crate::bus::Bus`] injects, per
+//! its own [`crate::host::HostDriver`]. Faults: everything [`crate::bus::Bus`] injects, per
 //! line, plus a cut of a line between two nodes ([`LineCut`]), a node detached from a
 //! line ([`fault::Detach`]) and the short circuit of a line ([`fault::short_circuit`]).
 //!
 //! Clock contract as for one channel: the `rx` inputs of clock n are computed from
 //! the `tx` outputs of step n-1.
 
-pub mod dmr_config;
-pub mod ecss_config;
 pub mod fault;
-pub mod host;
 pub mod lockstep;
 pub mod vcd;
 
 use crate::bus::{Bus, Fault};
 use crate::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
+use crate::host::{HostConfig, HostDriver};
+use crate::system::{DrccNode, NodeSystem};
 use fault::Detach;
-use host::{HostConfig, HostDriver};
 
 /// Which line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -127,17 +125,9 @@ impl Wire {
     }
 }
 
-/// One node: its DUT engine and its host.
-pub struct DualNode {
-    pub engine: Box<dyn DrccEngine>,
-    pub host: HostDriver,
-    pub inputs: DrccInputs,
-    pub outputs: DrccOutputs,
-}
-
 /// N DRCC nodes on two lines.
 pub struct DualBusSystem {
-    nodes: Vec<DualNode>,
+    nodes: Vec<DrccNode>,
     wires: [Wire; 2],
     cycle: u64,
     reset_cycles: u64,
@@ -165,7 +155,7 @@ impl DualBusSystem {
             nodes: engines
                 .into_iter()
                 .zip(configs)
-                .map(|(engine, c)| DualNode {
+                .map(|(engine, c)| DrccNode {
                     engine,
                     host: HostDriver::new(c),
                     inputs: DrccInputs::default(),
@@ -268,17 +258,17 @@ impl DualBusSystem {
     }
 
     /// Node `i`.
-    pub fn node(&self, i: usize) -> &DualNode {
+    pub fn node(&self, i: usize) -> &DrccNode {
         &self.nodes[i]
     }
 
     /// Node `i`, mutable (to submit frames or ask for register reads).
-    pub fn node_mut(&mut self, i: usize) -> &mut DualNode {
+    pub fn node_mut(&mut self, i: usize) -> &mut DrccNode {
         &mut self.nodes[i]
     }
 
     /// The nodes.
-    pub fn nodes(&self) -> &[DualNode] {
+    pub fn nodes(&self) -> &[DrccNode] {
         &self.nodes
     }
 
@@ -337,6 +327,21 @@ impl DualBusSystem {
             }
         }
         false
+    }
+}
+
+impl NodeSystem for DualBusSystem {
+    fn step(&mut self) {
+        DualBusSystem::step(self)
+    }
+    fn cycle(&self) -> u64 {
+        DualBusSystem::cycle(self)
+    }
+    fn nodes(&self) -> &[DrccNode] {
+        DualBusSystem::nodes(self)
+    }
+    fn node_mut(&mut self, n: usize) -> &mut DrccNode {
+        DualBusSystem::node_mut(self, n)
     }
 }
 

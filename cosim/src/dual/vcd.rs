@@ -6,7 +6,8 @@
 //! `clk` toggles are written, so the file stays small enough to be a golden
 //! snapshot and to be diffed with `drcc wave-diff`.
 
-use super::{DualBusSystem, DualNode};
+use super::DualBusSystem;
+use crate::system::DrccNode;
 use crate::trace::TimeBase;
 use std::io::{self, Write};
 use vcd::{IdCode, ReferenceIndex, Value, VarType};
@@ -15,7 +16,7 @@ use vcd::{IdCode, ReferenceIndex, Value, VarType};
 pub struct DrccSignal {
     pub name: &'static str,
     pub width: u32,
-    pub get: fn(&DualNode) -> u64,
+    pub get: fn(&DrccNode) -> u64,
 }
 
 macro_rules! probe {

@@ -10,18 +10,11 @@
 
 pub mod wiring;
 
-use crate::dual::host::{HostConfig, HostDriver};
 use crate::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use crate::engine::rcm::{RcmEngine, RcmInputs, RcmOutputs};
+use crate::host::{HostConfig, HostDriver};
+use crate::system::{DrccNode, NodeSystem};
 pub use wiring::{BusShape, End, Relay, SectionFaults, Shape, Wiring};
-
-/// One node: its DRCC, its host, and (ring nodes only) its RCM.
-pub struct RingNode {
-    pub engine: Box<dyn DrccEngine>,
-    pub host: HostDriver,
-    pub inputs: DrccInputs,
-    pub outputs: DrccOutputs,
-}
 
 /// One ring node's relay module and the relay it drives.
 pub struct RingModule {
@@ -47,7 +40,7 @@ pub enum NodeFault {
 /// A ring of DRCC nodes.
 pub struct RingSystem {
     wiring: Wiring,
-    nodes: Vec<RingNode>,
+    nodes: Vec<DrccNode>,
     modules: Vec<RingModule>,
     /// Relay operate time in clocks (§1).
     relay_clocks: u64,
@@ -84,7 +77,7 @@ impl RingSystem {
         Ok(RingSystem {
             nodes: engines
                 .into_iter()
-                .map(|engine| RingNode {
+                .map(|engine| DrccNode {
                     engine,
                     host: HostDriver::new(config),
                     inputs: DrccInputs::default(),
@@ -148,7 +141,7 @@ impl RingSystem {
     }
 
     /// Every node: ring nodes `0..N`, then the plain nodes section by section.
-    pub fn nodes(&self) -> &[RingNode] {
+    pub fn nodes(&self) -> &[DrccNode] {
         &self.nodes
     }
 
@@ -158,12 +151,12 @@ impl RingSystem {
     }
 
     /// Node `i`.
-    pub fn node(&self, i: usize) -> &RingNode {
+    pub fn node(&self, i: usize) -> &DrccNode {
         &self.nodes[i]
     }
 
     /// Node `i`, mutable (its host).
-    pub fn node_mut(&mut self, i: usize) -> &mut RingNode {
+    pub fn node_mut(&mut self, i: usize) -> &mut DrccNode {
         &mut self.nodes[i]
     }
 
@@ -256,5 +249,23 @@ impl RingSystem {
         }
         self.wiring.set_relays(&relays);
         self.cycle += 1;
+    }
+}
+
+impl NodeSystem for RingSystem {
+    fn step(&mut self) {
+        RingSystem::step(self)
+    }
+    fn cycle(&self) -> u64 {
+        RingSystem::cycle(self)
+    }
+    fn nodes(&self) -> &[DrccNode] {
+        RingSystem::nodes(self)
+    }
+    fn node_mut(&mut self, n: usize) -> &mut DrccNode {
+        RingSystem::node_mut(self, n)
+    }
+    fn channel_b_wired(&self) -> bool {
+        false
     }
 }

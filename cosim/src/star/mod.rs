@@ -17,9 +17,10 @@
 pub mod hub_host;
 pub mod lockstep;
 
-use crate::dual::host::{HostConfig, HostDriver};
 use crate::engine::drcc::{DrccEngine, DrccInputs, DrccOutputs};
 use crate::engine::hub::{HubEngine, HubInputs, HubOutputs};
+use crate::host::{HostConfig, HostDriver};
+use crate::system::{DrccNode, NodeSystem};
 use hub_host::{HubConfig, HubHost};
 
 /// A link of the star.
@@ -73,14 +74,6 @@ impl LinkFault {
     }
 }
 
-/// One DRCC node with its host.
-pub struct StarNode {
-    pub engine: Box<dyn DrccEngine>,
-    pub host: HostDriver,
-    pub inputs: DrccInputs,
-    pub outputs: DrccOutputs,
-}
-
 /// One hub with its host.
 pub struct StarHub {
     pub engine: Box<dyn HubEngine>,
@@ -91,7 +84,7 @@ pub struct StarHub {
 
 /// Two hubs and their DRCC nodes.
 pub struct StarSystem {
-    nodes: Vec<StarNode>,
+    nodes: Vec<DrccNode>,
     hubs: Vec<StarHub>,
     faults: Vec<LinkFault>,
     cycle: u64,
@@ -136,7 +129,7 @@ impl StarSystem {
         let nodes = engines
             .into_iter()
             .zip(configs)
-            .map(|(engine, c)| StarNode {
+            .map(|(engine, c)| DrccNode {
                 engine,
                 host: HostDriver::new(c),
                 inputs: DrccInputs::default(),
@@ -216,15 +209,15 @@ impl StarSystem {
         self.nodes.is_empty()
     }
 
-    pub fn node(&self, i: usize) -> &StarNode {
+    pub fn node(&self, i: usize) -> &DrccNode {
         &self.nodes[i]
     }
 
-    pub fn node_mut(&mut self, i: usize) -> &mut StarNode {
+    pub fn node_mut(&mut self, i: usize) -> &mut DrccNode {
         &mut self.nodes[i]
     }
 
-    pub fn nodes(&self) -> &[StarNode] {
+    pub fn nodes(&self) -> &[DrccNode] {
         &self.nodes
     }
 
@@ -308,5 +301,20 @@ impl StarSystem {
             hub.outputs = hub.engine.step(&hub.inputs);
         }
         self.cycle += 1;
+    }
+}
+
+impl NodeSystem for StarSystem {
+    fn step(&mut self) {
+        StarSystem::step(self)
+    }
+    fn cycle(&self) -> u64 {
+        StarSystem::cycle(self)
+    }
+    fn nodes(&self) -> &[DrccNode] {
+        StarSystem::nodes(self)
+    }
+    fn node_mut(&mut self, n: usize) -> &mut DrccNode {
+        StarSystem::node_mut(self, n)
     }
 }

@@ -521,7 +521,10 @@ fn idle_outputs() -> ChannelOutputs {
     }
 }
 
+pub mod node;
 mod quiet;
+
+pub use node::{DrccNode, NodeSystem};
 
 #[cfg(test)]
 pub(crate) mod tests;

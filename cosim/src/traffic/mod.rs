@@ -17,8 +17,8 @@
 //!
 //! Every error frame carries TEC and REC after the event ([`error::CAN_ERR_CNT`]).
 //!
-//! DRCC nodes on a dual bus ([`DualTap`]) or a replicated star ([`StarTap`]), per
-//! node and per channel (on a REDCAN ring, [`RingTap`], channel A only):
+//! DRCC nodes ([`NodeTap`]: on a dual bus or a replicated star), per node and per
+//! channel (on a REDCAN ring, channel A only):
 //!
 //! | signal | event |
 //! |---|---|
@@ -48,7 +48,7 @@ mod tap;
 mod tests;
 
 pub use error::ErrorFrame;
-pub use tap::{ChannelTap, DualTap, RingTap, StarTap};
+pub use tap::{ChannelTap, NodeTap};
 
 use crate::frame::Frame;
 

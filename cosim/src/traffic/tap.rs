@@ -1,13 +1,11 @@
 //! Taps: they watch a running system after every clock and turn what its nodes
 //! deliver, the errors they detect and their fault-confinement state changes into
-//! [`TrafficEvent`]s. One tap per topology: [`ChannelTap`] for a bus of CAN
-//! channels ([`System`]), [`DualTap`] for DRCC nodes on a dual bus
-//! ([`DualBusSystem`]), [`StarTap`] for DRCC nodes on a replicated star
-//! ([`StarSystem`]), [`RingTap`] for the DRCC nodes of a REDCAN ring
-//! ([`RingSystem`]). The module docs of [`super`] say which signal becomes which
+//! [`TrafficEvent`]s. Two taps: [`ChannelTap`] for a bus of CAN channels
+//! ([`System`]), [`NodeTap`] for any system of DRCC nodes ([`NodeSystem`]: the
+//! dual bus, the replicated star, the REDCAN ring). The module docs of [`super`] say which signal becomes which
 //! event.
 //!
-//! Use: after every `step`, [`ChannelTap::observe`] (or `DualTap`'s, `StarTap`'s)
+//! Use: after every `step`, [`ChannelTap::observe`] (or [`NodeTap::observe`])
 //! the system; [`ChannelTap::drain`] hands out the events collected since the last
 //! drain, oldest first. [`ChannelTap::poll`] does both. A tap must see every clock:
 //! pulses (`rx_valid`, `err_valid`) and field changes of a clock it did not see are
@@ -16,14 +14,11 @@
 use super::error::ErrorFrame;
 use super::state::Confinement;
 use super::{TrafficEvent, TrafficKind};
-use crate::dual::host::HostDriver;
-use crate::dual::DualBusSystem;
 use crate::engine::drcc::DrccOutputs;
 use crate::engine::{ChannelOutputs, ControllerConfig};
+use crate::host::HostDriver;
 use crate::model::field;
-use crate::ring::RingSystem;
-use crate::star::StarSystem;
-use crate::system::{Sample, System};
+use crate::system::{NodeSystem, Sample, System};
 use drcc_hdl::host::registers::MAP;
 
 /// Events collected and not yet drained, and the last clock seen.
@@ -145,7 +140,7 @@ struct DrccWatch {
     lines: [LineWatch; 2],
 }
 
-/// The common part of [`DualTap`], [`StarTap`] and [`RingTap`]: DRCC nodes with
+/// The common part of [`NodeTap`], [`NodeTap`] and [`NodeTap`]: DRCC nodes with
 /// their hosts.
 #[derive(Debug, Default)]
 struct DrccTap {
@@ -245,23 +240,34 @@ fn drcc_line_events(
     }
 }
 
-/// The tap of DRCC nodes on a dual bus ([`DualBusSystem`]): the frames every host
-/// popped from its DRCC's RX FIFO (`line` = the channel it came from), and per
-/// channel the error flags and state changes (`line` 0 = A, 1 = B).
+/// The tap of a system of DRCC nodes ([`NodeSystem`]: the dual bus, the star,
+/// the ring): the frames every host popped from its DRCC's RX FIFO (`line` = the
+/// channel it came from), and per channel the error flags and state changes
+/// (`line` 0 = A, 1 = B; on a replicated star A is on hub 1, B on hub 2; the
+/// hubs' own traffic is not tapped, what they relay reaches the nodes).
+///
+/// On a REDCAN ring ([`NodeSystem::channel_b_wired`] false) every node, ring and
+/// plain, is tapped in the ring's numbering (ring nodes `0..N`, then the plain
+/// nodes section by section) with `line` always `None` (interface `node<i>`): a
+/// ring node's channel A is its only CAN connection, on whichever section its
+/// relay puts it; channel B is unwired (`rx` recessive) and, the hosts running
+/// normal mode with every frame in TX queue A, never transmits, so it is not
+/// watched. The relay modules have no CAN traffic.
 #[derive(Debug, Default)]
-pub struct DualTap(DrccTap);
+pub struct NodeTap(DrccTap);
 
-impl DualTap {
-    /// A tap for `nodes` DRCC nodes.
+impl NodeTap {
+    /// A tap for a system of `nodes` DRCC nodes.
     pub fn new(nodes: usize) -> Self {
-        DualTap(DrccTap::new(nodes))
+        NodeTap(DrccTap::new(nodes))
     }
 
     /// Takes the clock the system just made.
-    pub fn observe(&mut self, sys: &DualBusSystem) {
+    pub fn observe(&mut self, sys: &impl NodeSystem) {
         let Some(cycle) = sys.cycle().checked_sub(1) else {
             return;
         };
+        self.0.channel_a_only = !sys.channel_b_wired();
         let nodes = sys.nodes().iter().map(|n| (&n.host, &n.outputs));
         self.0.observe(cycle, nodes);
     }
@@ -271,82 +277,8 @@ impl DualTap {
         self.0.pending.drain(out);
     }
 
-    /// [`DualTap::observe`], then [`DualTap::drain`].
-    pub fn poll(&mut self, sys: &DualBusSystem, out: &mut Vec<TrafficEvent>) {
-        self.observe(sys);
-        self.drain(out);
-    }
-}
-
-/// The tap of DRCC nodes on a replicated star ([`StarSystem`]): as [`DualTap`],
-/// `line` 0 = channel A on hub 1, 1 = channel B on hub 2. The hubs' own traffic
-/// is not tapped (what they relay reaches the nodes).
-#[derive(Debug, Default)]
-pub struct StarTap(DrccTap);
-
-impl StarTap {
-    /// A tap for `nodes` DRCC nodes.
-    pub fn new(nodes: usize) -> Self {
-        StarTap(DrccTap::new(nodes))
-    }
-
-    /// Takes the clock the system just made.
-    pub fn observe(&mut self, sys: &StarSystem) {
-        let Some(cycle) = sys.cycle().checked_sub(1) else {
-            return;
-        };
-        let nodes = sys.nodes().iter().map(|n| (&n.host, &n.outputs));
-        self.0.observe(cycle, nodes);
-    }
-
-    /// Moves the events collected since the last drain to `out`, oldest first.
-    pub fn drain(&mut self, out: &mut Vec<TrafficEvent>) {
-        self.0.pending.drain(out);
-    }
-
-    /// [`StarTap::observe`], then [`StarTap::drain`].
-    pub fn poll(&mut self, sys: &StarSystem, out: &mut Vec<TrafficEvent>) {
-        self.observe(sys);
-        self.drain(out);
-    }
-}
-
-/// The tap of the DRCC nodes of a REDCAN ring ([`RingSystem`]): every node, ring
-/// and plain (node index as the ring numbers them: ring nodes `0..N`, then the
-/// plain nodes section by section), with `line` always `None` (interface
-/// `node<i>`): a ring node's channel A is its only CAN connection, on whichever
-/// section its relay puts it; channel B is unwired (`rx` recessive) and, the hosts
-/// running normal mode with every frame in TX queue A, never transmits, so it is
-/// not watched. Events: the frames every host popped, channel A's error flags and
-/// state changes, as for [`DualTap`]. The relay modules have no CAN traffic.
-#[derive(Debug, Default)]
-pub struct RingTap(DrccTap);
-
-impl RingTap {
-    /// A tap for a ring of `nodes` DRCC nodes (ring and plain).
-    pub fn new(nodes: usize) -> Self {
-        RingTap(DrccTap {
-            channel_a_only: true,
-            ..DrccTap::new(nodes)
-        })
-    }
-
-    /// Takes the clock the system just made.
-    pub fn observe(&mut self, sys: &RingSystem) {
-        let Some(cycle) = sys.cycle().checked_sub(1) else {
-            return;
-        };
-        let nodes = sys.nodes().iter().map(|n| (&n.host, &n.outputs));
-        self.0.observe(cycle, nodes);
-    }
-
-    /// Moves the events collected since the last drain to `out`, oldest first.
-    pub fn drain(&mut self, out: &mut Vec<TrafficEvent>) {
-        self.0.pending.drain(out);
-    }
-
-    /// [`RingTap::observe`], then [`RingTap::drain`].
-    pub fn poll(&mut self, sys: &RingSystem, out: &mut Vec<TrafficEvent>) {
+    /// [`NodeTap::observe`], then [`NodeTap::drain`].
+    pub fn poll(&mut self, sys: &impl NodeSystem, out: &mut Vec<TrafficEvent>) {
         self.observe(sys);
         self.drain(out);
     }

@@ -4,10 +4,10 @@
 
 use super::error::*;
 use super::*;
-use crate::dual::host::{HostConfig, Policy};
 use crate::engine::drcc_model::DrccModelEngine;
 use crate::engine::model::ModelEngine;
 use crate::engine::{BitTiming, ChannelEngine};
+use crate::host::{HostConfig, Policy};
 use crate::system::System;
 
 fn model_bus(nodes: usize) -> System {
@@ -117,7 +117,7 @@ fn a_dual_tap_yields_host_frames_and_channel_errors() {
     let mut sys = dual(vec![node0, node1]);
     let f = Frame::base(0x0A5, &[0xAA; 8]);
     sys.node_mut(0).host.submit(40 * 8, f, 0);
-    let mut tap = DualTap::new(2);
+    let mut tap = NodeTap::new(2);
     let mut events = Vec::new();
     for _ in 0..8 * 1_500 {
         sys.step();
@@ -197,7 +197,7 @@ fn a_ring_tap_yields_host_frames_without_a_line() {
     let mut sys = RingSystem::new(shape, engines, rcms, config, 16).unwrap();
     let f = Frame::base(0x1A5, &[1, 2, 3]);
     sys.node_mut(0).host.submit(40 * 8, f, 0);
-    let mut tap = RingTap::new(3);
+    let mut tap = NodeTap::new(3);
     let mut events = Vec::new();
     for _ in 0..8 * 400 {
         sys.step();

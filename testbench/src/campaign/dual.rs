@@ -32,9 +32,9 @@
 //! tally leaves them out.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
-use drcc_cosim::dual::dmr_config::{DmrConfig, DmrMailbox};
-use drcc_cosim::dual::host::HostConfig;
 use drcc_cosim::dual::{DualBusSystem, Line, LineCut};
+use drcc_cosim::host::dmr_config::{DmrConfig, DmrMailbox};
+use drcc_cosim::host::HostConfig;
 use drcc_cosim::Frame;
 
 use super::draw::{FaultClass, ScenarioSpec, Side, Topology};

@@ -3,62 +3,13 @@
 //! duplicated (popped once from each channel) or foreign (popped but never sent),
 //! CAN's own double reception counted apart, and nodes not back to normal.
 
-use drcc_cosim::dual::host::HostDriver;
-use drcc_cosim::dual::DualBusSystem;
 use drcc_cosim::engine::drcc::DrccOutputs;
+use drcc_cosim::host::HostDriver;
 use drcc_cosim::model::field;
-use drcc_cosim::star::StarSystem;
+use drcc_cosim::system::NodeSystem;
 
 use super::dual::{frame, frames};
 use super::{Outcome, ScenarioSpec, Topology};
-
-/// A system of DRCC nodes a campaign runs: the dual bus or the star.
-pub trait NodeSystem {
-    fn step(&mut self);
-    fn cycle(&self) -> u64;
-    /// Node `n`'s host.
-    fn host_mut(&mut self, n: usize) -> &mut HostDriver;
-    /// Node `n`'s outputs after the last clock.
-    fn outputs(&self, n: usize) -> &DrccOutputs;
-    /// Every node's host and outputs.
-    fn views(&self) -> Vec<(&HostDriver, &DrccOutputs)>;
-}
-
-impl NodeSystem for DualBusSystem {
-    fn step(&mut self) {
-        DualBusSystem::step(self)
-    }
-    fn cycle(&self) -> u64 {
-        DualBusSystem::cycle(self)
-    }
-    fn host_mut(&mut self, n: usize) -> &mut HostDriver {
-        &mut self.node_mut(n).host
-    }
-    fn outputs(&self, n: usize) -> &DrccOutputs {
-        &self.nodes()[n].outputs
-    }
-    fn views(&self) -> Vec<(&HostDriver, &DrccOutputs)> {
-        self.nodes().iter().map(|n| (&n.host, &n.outputs)).collect()
-    }
-}
-
-impl NodeSystem for StarSystem {
-    fn step(&mut self) {
-        StarSystem::step(self)
-    }
-    fn cycle(&self) -> u64 {
-        StarSystem::cycle(self)
-    }
-    fn host_mut(&mut self, n: usize) -> &mut HostDriver {
-        &mut self.node_mut(n).host
-    }
-    fn outputs(&self, n: usize) -> &DrccOutputs {
-        &self.nodes()[n].outputs
-    }
-    fn views(&self) -> Vec<(&HostDriver, &DrccOutputs)> {
-        self.nodes().iter().map(|n| (&n.host, &n.outputs)).collect()
-    }
-}
 
 /// Submits the drawn traffic of `spec` to every host: the drawn frames, then the
 /// tail frames from bit time `tail_start`, one every `tail_period` bit times.

@@ -156,7 +156,7 @@ fn dual_table() -> Result<(), String> {
     // The warning-limit policy (DRCC contract §5, policy 3) on a line stuck
     // dominant: the counters pass `ewl` before error passive.
     let mut s = crate::dual::DualScenario::standard(crate::dual::DualFault::AStuckDominant);
-    s.policy = drcc_cosim::dual::host::Policy::Warning;
+    s.policy = drcc_cosim::host::Policy::Warning;
     crate::dual::run_dual(&s, EngineKind::Model, None)?;
     Ok(())
 }

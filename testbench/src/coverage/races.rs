@@ -9,9 +9,9 @@
 //! runs only feed the cover points. Deterministic: run `i` draws from seed `i`.
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
-use drcc_cosim::dual::host::{btr, HostConfig, Policy};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::{DualBusSystem, Line};
+use drcc_cosim::host::{btr, HostConfig, Policy};
 use drcc_cosim::Frame;
 
 use crate::dual::{drcc_engine, CLOCKS_PER_BIT};

@@ -16,10 +16,11 @@ use std::collections::HashMap;
 use std::time::Instant;
 
 use drcc_cosim::dual::fault::Detach;
-use drcc_cosim::dual::host::{reg, HostRead};
 use drcc_cosim::dual::lockstep::compare;
 use drcc_cosim::dual::vcd::DrccVcdWriter;
-use drcc_cosim::dual::{DualBusSystem, DualNode};
+use drcc_cosim::dual::DualBusSystem;
+use drcc_cosim::host::{reg, HostRead};
+use drcc_cosim::system::DrccNode;
 use drcc_hdl::host::registers::MAP;
 
 use super::load::{decode, schedule};
@@ -88,7 +89,7 @@ fn build(c: &PlanConfig, row: Row, kind: EngineKind) -> Result<DualBusSystem, St
 }
 
 /// The four devices of the plan (without the monitor node, `PlanConfig::monitor`).
-fn devices(sys: &DualBusSystem) -> &[DualNode] {
+fn devices(sys: &DualBusSystem) -> &[DrccNode] {
     &sys.nodes()[..DEVICES.len()]
 }
 

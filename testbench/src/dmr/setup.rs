@@ -39,8 +39,8 @@
 //! three recovery delays plus 100 ms beyond (a sender's recovery, then its receivers',
 //! each a delay plus a timeout).
 
-use drcc_cosim::dual::dmr_config::{DmrConfig, DmrMailbox};
-use drcc_cosim::dual::host::{btr, HostConfig};
+use drcc_cosim::host::dmr_config::{DmrConfig, DmrMailbox};
+use drcc_cosim::host::{btr, HostConfig};
 
 use super::marker::{Onset, Row, DEVICES};
 use super::CLOCKS_PER_MS;

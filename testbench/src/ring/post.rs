@@ -13,7 +13,7 @@
 //!   125 kbit/s bus cannot be heard at: a City with a wrong presumed rate stays out.
 
 use cankingdom::postmaster::{BitRate, CommMode, Postmaster};
-use drcc_cosim::dual::host::{btr, reg, HostConfig, HostDriver};
+use drcc_cosim::host::{btr, reg, HostConfig, HostDriver};
 use drcc_cosim::Frame;
 use embedded_can::{ErrorKind, ExtendedId, Id, StandardId};
 

@@ -1,6 +1,6 @@
 //! The networks `drcc serve` can serve, behind one interface: a bus of CAN channels
-//! (from a scenario file), a dual bus of DRCC nodes and a replicated star of DRCC
-//! nodes. Each is stepped one clock at a time by the server, takes frames to send
+//! (from a scenario file), and DRCC nodes on a dual bus or a replicated star (one
+//! body, [`NodeNetwork`], over the topology's [`ServedSystem`]). Each is stepped one clock at a time by the server, takes frames to send
 //! from clients (`send`), hands out what its nodes delivered (`poll`, through the
 //! traffic taps of `drcc_cosim::traffic`) and takes faults while it runs (`fault`,
 //! the `< fault ... >` command of docs/serve.md).
@@ -8,8 +8,8 @@
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
 use drcc_cosim::dual::{fault::Detach, DualBusSystem, Line, LineCut};
 use drcc_cosim::star::{Link, LinkFault, LinkFaultKind, StarSystem};
-use drcc_cosim::system::System;
-use drcc_cosim::traffic::{ChannelTap, DualTap, StarTap, TrafficEvent};
+use drcc_cosim::system::{NodeSystem, System};
+use drcc_cosim::traffic::{ChannelTap, NodeTap, TrafficEvent};
 use drcc_cosim::Frame;
 
 use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT as DUAL_CLOCKS_PER_BIT};
@@ -174,13 +174,81 @@ impl Network for BusNetwork {
     }
 }
 
-/// DRCC nodes in redundancy mode on a dual bus (the default network).
-pub struct DualNetwork {
-    sys: DualBusSystem,
-    tap: DualTap,
+/// What a topology of DRCC nodes adds to the body every served DRCC network
+/// shares ([`NodeNetwork`]): its clock, its fault command, what it refuses to
+/// send, and its description.
+pub trait ServedSystem: NodeSystem {
+    /// The clock of every node, in Hz.
+    const CLOCK_HZ: u64;
+    /// Clock cycles per bit time.
+    const CLOCKS_PER_BIT: u64;
+    /// Refuses a frame the topology cannot carry (the default takes every frame).
+    fn check_send(&self, _frame: &Frame) -> Result<(), String> {
+        Ok(())
+    }
+    /// Applies a `< fault ... >` command now; returns what was done.
+    fn fault(&mut self, args: &[String]) -> Result<String, String>;
+    /// One line naming the topology, its `nodes` and the engine.
+    fn describe(&self, nodes: usize, engine: &str) -> String;
+}
+
+/// DRCC nodes on a served topology, with the tap that hands out what their hosts
+/// popped.
+pub struct NodeNetwork<S> {
+    sys: S,
+    tap: NodeTap,
     names: Vec<String>,
     engine: EngineKind,
 }
+
+impl<S: ServedSystem> NodeNetwork<S> {
+    fn with(sys: S, engine: EngineKind) -> Self {
+        let n = sys.nodes().len();
+        NodeNetwork {
+            sys,
+            tap: NodeTap::new(n),
+            names: default_names(n),
+            engine,
+        }
+    }
+}
+
+impl<S: ServedSystem> Network for NodeNetwork<S> {
+    fn names(&self) -> &[String] {
+        &self.names
+    }
+    fn clock_hz(&self) -> u64 {
+        S::CLOCK_HZ
+    }
+    fn cycle(&self) -> u64 {
+        self.sys.cycle()
+    }
+    fn clocks_per_bit(&self) -> u64 {
+        S::CLOCKS_PER_BIT
+    }
+    fn step(&mut self) {
+        self.sys.step();
+        self.tap.observe(&self.sys);
+    }
+    fn send(&mut self, node: usize, frame: Frame) -> Result<(), String> {
+        self.sys.check_send(&frame)?;
+        let now = self.sys.cycle();
+        self.sys.host_mut(node).submit(now, frame, 0);
+        Ok(())
+    }
+    fn poll(&mut self, out: &mut Vec<TrafficEvent>) {
+        self.tap.drain(out);
+    }
+    fn fault(&mut self, args: &[String]) -> Result<String, String> {
+        self.sys.fault(args)
+    }
+    fn describe(&self) -> String {
+        self.sys.describe(self.names.len(), self.engine.name())
+    }
+}
+
+/// DRCC nodes in redundancy mode on a dual bus (the default network).
+pub type DualNetwork = NodeNetwork<DualBusSystem>;
 
 /// Usage of the dual bus's fault command.
 pub const DUAL_FAULTS: &str = "`fault cut a|b AT [BITS]` (the line broken between \
@@ -188,7 +256,7 @@ pub const DUAL_FAULTS: &str = "`fault cut a|b AT [BITS]` (the line broken betwee
      stuck_recessive a|b [BITS]` (a short circuit: every node reads recessive), \
      `fault detach NODE a|b [BITS]`, `fault heal`";
 
-impl DualNetwork {
+impl NodeNetwork<DualBusSystem> {
     /// `n` DRCC nodes on `kind` in the product's recommended redundancy
     /// configuration (the dual-bus scenarios': switch after 2 failed attempts,
     /// every message on both lines, duplicate window 2,000 bit times), so that a
@@ -202,48 +270,21 @@ impl DualNetwork {
             .collect::<Result<Vec<_>, _>>()?;
         let config = DualScenario::standard(DualFault::None).host_config();
         let sys = DualBusSystem::new(engines, vec![config; n])?;
-        Ok(DualNetwork {
-            tap: DualTap::new(n),
-            sys,
-            names: default_names(n),
-            engine: kind,
-        })
+        Ok(Self::with(sys, kind))
     }
 }
 
-impl Network for DualNetwork {
-    fn names(&self) -> &[String] {
-        &self.names
-    }
-    fn clock_hz(&self) -> u64 {
-        crate::dual::CLOCK_HZ
-    }
-    fn cycle(&self) -> u64 {
-        self.sys.cycle()
-    }
-    fn clocks_per_bit(&self) -> u64 {
-        DUAL_CLOCKS_PER_BIT
-    }
-    fn step(&mut self) {
-        self.sys.step();
-        self.tap.observe(&self.sys);
-    }
-    fn send(&mut self, node: usize, frame: Frame) -> Result<(), String> {
-        let now = self.sys.cycle();
-        self.sys.node_mut(node).host.submit(now, frame, 0);
-        Ok(())
-    }
-    fn poll(&mut self, out: &mut Vec<TrafficEvent>) {
-        self.tap.drain(out);
-    }
+impl ServedSystem for DualBusSystem {
+    const CLOCK_HZ: u64 = crate::dual::CLOCK_HZ;
+    const CLOCKS_PER_BIT: u64 = DUAL_CLOCKS_PER_BIT;
     fn fault(&mut self, args: &[String]) -> Result<String, String> {
-        let now = self.sys.cycle();
-        let n = self.sys.len();
+        let now = NodeSystem::cycle(self);
+        let n = self.len();
         let words: Vec<&str> = args.iter().map(String::as_str).collect();
         let cpb = DUAL_CLOCKS_PER_BIT;
         match words.as_slice() {
             ["heal"] => {
-                self.sys.end_faults(now);
+                self.end_faults(now);
                 Ok("every fault ended".into())
             }
             ["cut", l, at, ..] => {
@@ -253,7 +294,7 @@ impl Network for DualNetwork {
                     _ => return Err(format!("cut at `{at}`: give 1..{}", n - 1)),
                 };
                 let (start, cycles) = window(now, bits, cpb);
-                self.sys.add_cut(line(l)?, LineCut { at, start, cycles })?;
+                self.add_cut(line(l)?, LineCut { at, start, cycles })?;
                 Ok(format!(
                     "line {l} cut between node{} and node{at} {}",
                     at - 1,
@@ -273,14 +314,14 @@ impl Network for DualNetwork {
                     start,
                     cycles,
                 };
-                self.sys.add_fault(line(l)?, fault)?;
+                self.add_fault(line(l)?, fault)?;
                 Ok(format!("line {l} {kind} {}", for_text(bits)))
             }
             ["detach", node, l, ..] => {
                 let bits = duration(args, 3, DUAL_FAULTS)?;
                 let node = index(node, "node", n)?;
                 let (start, cycles) = window(now, bits, cpb);
-                self.sys.detach(
+                self.detach(
                     line(l)?,
                     Detach {
                         node,
@@ -296,42 +337,29 @@ impl Network for DualNetwork {
             _ => Err(format!("give {DUAL_FAULTS}")),
         }
     }
-    fn describe(&self) -> String {
+    fn describe(&self, nodes: usize, engine: &str) -> String {
         format!(
-            "a dual bus of {} DRCC nodes in redundancy mode (dual_tx) on the {} engine, 1 Mbit/s",
-            self.names.len(),
-            self.engine.name()
+            "a dual bus of {nodes} DRCC nodes in redundancy mode (dual_tx) on the {engine} engine, 1 Mbit/s"
         )
     }
 }
 
 /// DRCC nodes on a ReCANcentrate replicated star (two coupled hubs, NRAP on).
-pub struct StarNetwork {
-    sys: StarSystem,
-    tap: StarTap,
-    names: Vec<String>,
-    engine: EngineKind,
-}
+pub type StarNetwork = NodeNetwork<StarSystem>;
 
 /// Usage of the star's fault command.
 pub const STAR_FAULTS: &str = "`fault uplink|downlink NODE HUB KIND [BITS]`, \
      `fault sublink HUB INTERLINK KIND [BITS]` with KIND stuck_dominant, \
      stuck_recessive (a cut) or flip (1 bit time in every 23), `fault heal`";
 
-impl StarNetwork {
+impl NodeNetwork<StarSystem> {
     /// The star of the star scenarios (4 nodes, NRAP on) on `kind`, no traffic.
     pub fn new(kind: EngineKind) -> Result<Self, String> {
         let s = StarScenario {
             frames_per_node: 0,
             ..StarScenario::standard(StarFault::None)
         };
-        let sys = build_star(&s, kind)?;
-        Ok(StarNetwork {
-            tap: StarTap::new(s.nodes),
-            names: default_names(s.nodes),
-            sys,
-            engine: kind,
-        })
+        Ok(Self::with(build_star(&s, kind)?, kind))
     }
 }
 
@@ -356,25 +384,11 @@ fn link_kind(text: &str) -> Result<LinkFaultKind, String> {
     }
 }
 
-impl Network for StarNetwork {
-    fn names(&self) -> &[String] {
-        &self.names
-    }
-    fn clock_hz(&self) -> u64 {
-        crate::star::CLOCK_HZ
-    }
-    fn cycle(&self) -> u64 {
-        self.sys.cycle()
-    }
-    fn clocks_per_bit(&self) -> u64 {
-        STAR_CLOCKS_PER_BIT
-    }
-    fn step(&mut self) {
-        self.sys.step();
-        self.tap.observe(&self.sys);
-    }
-    fn send(&mut self, node: usize, frame: Frame) -> Result<(), String> {
-        if reserved_on_star(&frame) {
+impl ServedSystem for StarSystem {
+    const CLOCK_HZ: u64 = crate::star::CLOCK_HZ;
+    const CLOCKS_PER_BIT: u64 = STAR_CLOCKS_PER_BIT;
+    fn check_send(&self, frame: &Frame) -> Result<(), String> {
+        if reserved_on_star(frame) {
             return Err(format!(
                 "identifier {:X}: on the star, base identifiers 000 and 001 (and extended \
                  ones below 00080000, whose base part is 000 or 001) are the hubs' \
@@ -383,20 +397,15 @@ impl Network for StarNetwork {
                 frame.id
             ));
         }
-        let now = self.sys.cycle();
-        self.sys.node_mut(node).host.submit(now, frame, 0);
         Ok(())
     }
-    fn poll(&mut self, out: &mut Vec<TrafficEvent>) {
-        self.tap.drain(out);
-    }
     fn fault(&mut self, args: &[String]) -> Result<String, String> {
-        let now = self.sys.cycle();
-        let n = self.sys.len();
+        let now = NodeSystem::cycle(self);
+        let n = self.len();
         let words: Vec<&str> = args.iter().map(String::as_str).collect();
         let (link, kind, what) = match words.as_slice() {
             ["heal"] => {
-                self.sys.end_faults(now);
+                self.end_faults(now);
                 return Ok("every fault ended".into());
             }
             [dir @ ("uplink" | "downlink"), node, hub, kind, ..] => {
@@ -422,7 +431,7 @@ impl Network for StarNetwork {
         };
         let bits = duration(args, 4, STAR_FAULTS)?;
         let (start, cycles) = window(now, bits, STAR_CLOCKS_PER_BIT);
-        self.sys.add_fault(LinkFault {
+        self.add_fault(LinkFault {
             link,
             kind: link_kind(kind)?,
             start,
@@ -430,11 +439,9 @@ impl Network for StarNetwork {
         })?;
         Ok(format!("{what} {kind} {}", for_text(bits)))
     }
-    fn describe(&self) -> String {
+    fn describe(&self, nodes: usize, engine: &str) -> String {
         format!(
-            "a replicated star (2 hubs, NRAP on) of {} DRCC nodes on the {} engine, 1 Mbit/s",
-            self.names.len(),
-            self.engine.name()
+            "a replicated star (2 hubs, NRAP on) of {nodes} DRCC nodes on the {engine} engine, 1 Mbit/s"
         )
     }
 }

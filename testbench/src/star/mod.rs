@@ -19,9 +19,9 @@
 //! star only when no echo came, i.e. once the hubs are decoupled (`dual_tx`).
 //! The hubs run NRAP (hub contract §9); the report gives each hub's phases.
 
-use drcc_cosim::dual::host::{btr, reg, HostConfig, Policy};
 use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::hub::HubEngine;
+use drcc_cosim::host::{btr, reg, HostConfig, Policy};
 use drcc_cosim::star::hub_host::{hub_reg, HubConfig};
 use drcc_cosim::star::lockstep::compare;
 use drcc_cosim::star::{Link, LinkFault, LinkFaultKind, StarSystem};

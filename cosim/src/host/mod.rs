@@ -3,7 +3,7 @@
 //!
 //! 1. configuration: `CTRL` (reset mode + configuration), `BTR`, `RMB_CFG`,
 //!    `DEDUP_CFG`, in DMR mode the DMR registers and mailboxes
-//!    ([`super::dmr_config`]), `INT_ENABLE`, then `CTRL` with reset mode cleared;
+//!    ([`dmr_config`]), `INT_ENABLE`, then `CTRL` with reset mode cleared;
 //! 2. forever: when a submitted frame is due, read `STATUS` and, if its TX queue has
 //!    room, write `TX_ID`, `TX_CTRL`, `TX_DATA0/1` and `TX_CMD.push`; otherwise poll
 //!    `RX_ID` and, when the FIFO is not empty, read the frame and pop it; explicit
@@ -16,8 +16,6 @@
 //! from that header; the reference model keeps its own copy, checked against the
 //! table by `cosim/tests/register_maps.rs`.
 
-use super::dmr_config::DmrConfig;
-use super::ecss_config::EcssConfig;
 use crate::engine::drcc::{DrccInputs, DrccOutputs};
 use crate::frame::Frame;
 use drcc_hdl::host::map::Field;
@@ -25,7 +23,12 @@ use drcc_hdl::host::registers::{SwitchPolicy, MAP};
 use std::collections::VecDeque;
 use std::sync::LazyLock;
 
+pub mod dmr_config;
+pub mod ecss_config;
 pub mod reg;
+
+use dmr_config::DmrConfig;
+use ecss_config::EcssConfig;
 
 /// `reg.field` placed in a register word (positions from the table).
 fn put(reg: &str, field: &str, value: u32) -> u32 {

@@ -26,18 +26,15 @@ impl EcssConfig {
         let put = |reg: &str, field: &str, v: u32| MAP.field(reg, field).put(v);
         vec![
             (
-                super::host::reg::ECSS_CFG,
+                super::reg::ECSS_CFG,
                 put("ECSS_CFG", "ttoggle", self.ttoggle as u32)
                     | put("ECSS_CFG", "ntoggle", self.ntoggle as u32)
                     | put("ECSS_CFG", "bdefault", self.bdefault_b as u32)
                     | put("ECSS_CFG", "enable", 1),
             ),
+            (super::reg::ECSS_HB, put("ECSS_HB", "id", self.hb_id as u32)),
             (
-                super::host::reg::ECSS_HB,
-                put("ECSS_HB", "id", self.hb_id as u32),
-            ),
-            (
-                super::host::reg::ECSS_PERIOD,
+                super::reg::ECSS_PERIOD,
                 put("ECSS_PERIOD", "period", self.period_bits),
             ),
         ]

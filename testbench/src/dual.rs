@@ -24,6 +24,7 @@ use drcc_cosim::engine::drcc_verilator::DrccVerilatorEngine;
 use drcc_cosim::host::{btr, reg, HostConfig, Policy};
 use drcc_cosim::Frame;
 
+use crate::delivery::Deliveries;
 use crate::drcc_build::DrccBuild;
 use crate::engines::{EngineKind, VERILATOR_HINT};
 
@@ -488,29 +489,17 @@ fn divergence_message(s: &DualScenario, d: &DrccDivergence) -> String {
 fn tally(s: &DualScenario, sys: &DualBusSystem, r: &mut DualReport) {
     r.submitted = s.nodes * s.frames_per_node;
     for (rx_node, n) in sys.nodes().iter().enumerate() {
-        let mut seen = vec![vec![0usize; s.frames_per_node]; s.nodes];
-        for got in &n.host.received {
-            let f = got.frame;
-            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
-            if sender < s.nodes && k < s.frames_per_node && f == DualScenario::frame(sender, k) {
-                seen[sender][k] += 1;
-            } else {
-                r.foreign += 1;
-            }
-        }
+        let received = n.host.received.iter().map(|got| got.frame);
+        let d = Deliveries::count(
+            received,
+            s.nodes,
+            s.frames_per_node,
+            |_| false,
+            DualScenario::frame,
+        );
+        r.foreign += d.foreign;
         r.delivered += n.host.received.len();
-        for (sender, counts) in seen.iter().enumerate() {
-            if sender == rx_node {
-                continue;
-            }
-            for (k, &c) in counts.iter().enumerate() {
-                if c == 0 {
-                    r.missing.push((rx_node, sender, k));
-                } else if c > 1 {
-                    r.duplicates.push((rx_node, sender, k));
-                }
-            }
-        }
+        d.judge(rx_node, |_, _| true, &mut r.missing, &mut r.duplicates);
         let reads = &n.host.reads;
         let get = |idx: usize| reads.get(idx).map(|x| x.value).unwrap_or(0);
         r.aux_a_during.push(get(0));

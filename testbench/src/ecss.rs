@@ -22,6 +22,7 @@ use drcc_cosim::host::{reg, HostConfig, Policy};
 use drcc_cosim::Frame;
 use drcc_hdl::host::registers::MAP;
 
+use crate::delivery::Deliveries;
 use crate::dual::{DualFault, DualScenario, CLOCKS_PER_BIT};
 use crate::engines::EngineKind;
 
@@ -340,32 +341,18 @@ pub fn run_ecss(
 
 fn tally(s: &EcssScenario, sys: &DualBusSystem, r: &mut EcssReport) {
     for (rx, n) in sys.nodes().iter().enumerate() {
-        let mut seen = vec![vec![0usize; s.frames_per_node]; s.nodes];
-        for got in &n.host.received {
-            let f = got.frame;
-            if f.id == HB_ID as u32 {
-                r.heartbeats += 1;
-                continue;
-            }
-            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
-            if sender < s.nodes && k < s.frames_per_node && f == DualScenario::frame(sender, k) {
-                seen[sender][k] += 1;
-                r.delivered += 1;
-            }
-        }
-        for (sender, counts) in seen.iter().enumerate() {
-            for (k, &c) in counts.iter().enumerate() {
-                if sender == rx || !s.submits(sender, s.due(sender, k)) {
-                    continue;
-                }
-                r.expected += 1;
-                if c == 0 {
-                    r.missing.push((rx, sender, k));
-                } else if c > 1 {
-                    r.duplicates.push((rx, sender, k));
-                }
-            }
-        }
+        let received = n.host.received.iter().map(|got| got.frame);
+        let d = Deliveries::count(
+            received,
+            s.nodes,
+            s.frames_per_node,
+            |f| f.id == HB_ID as u32,
+            DualScenario::frame,
+        );
+        r.heartbeats += d.skipped;
+        r.delivered += d.total();
+        let sent = |sender: usize, k: usize| s.submits(sender, s.due(sender, k));
+        r.expected += d.judge(rx, sent, &mut r.missing, &mut r.duplicates);
         r.ecss_status
             .push(n.host.reads.first().map_or(0, |x| x.value));
     }

@@ -8,6 +8,7 @@ pub mod bitrate;
 pub mod campaign;
 pub mod conformance;
 pub mod coverage;
+pub mod delivery;
 pub mod dmr;
 pub mod drcc_build;
 pub mod dual;

@@ -3,6 +3,7 @@
 //! [`StarReport`].
 
 use super::*;
+use crate::delivery::Deliveries;
 
 /// Runs `s` on `kind`, or on two engines in lock step (`cosim`): then the first
 /// divergence is an error.
@@ -166,49 +167,24 @@ pub fn run_star_observed(
 fn tally(s: &StarScenario, sys: &StarSystem, r: &mut StarReport) {
     r.submitted = s.nodes * s.frames_per_node;
     for (rx_node, n) in sys.nodes().iter().enumerate() {
-        let mut seen = vec![vec![0usize; s.frames_per_node]; s.nodes];
-        let mut from_others = 0;
-        let mut own = 0;
-        let mut hub_frames = 0;
-        for got in &n.host.received {
-            let f = got.frame;
-            if is_identification_frame(&f) {
-                hub_frames += 1;
-                continue;
-            }
-            let (sender, k) = (f.data[0] as usize, f.data[1] as usize);
-            if sender < s.nodes
-                && k < s.frames_per_node
-                && f == StarScenario::frame(sender, k).normalized()
-            {
-                seen[sender][k] += 1;
-                if sender != rx_node {
-                    from_others += 1;
-                } else {
-                    own += 1;
-                }
-            } else {
-                r.foreign += 1;
-            }
-        }
+        let received = n.host.received.iter().map(|got| got.frame);
+        let d = Deliveries::count(
+            received,
+            s.nodes,
+            s.frames_per_node,
+            is_identification_frame,
+            |sender, k| StarScenario::frame(sender, k).normalized(),
+        );
+        let own = d.of(rx_node);
+        let from_others = d.total() - own;
+        r.foreign += d.foreign;
         r.delivered += from_others;
         r.received_at
             .push(n.host.received.iter().map(|got| got.cycle).collect());
         r.from_others.push(from_others);
-        r.hub_frames.push(hub_frames);
+        r.hub_frames.push(d.skipped);
         r.own.push(own);
-        for (sender, counts) in seen.iter().enumerate() {
-            if sender == rx_node {
-                continue;
-            }
-            for (k, &c) in counts.iter().enumerate() {
-                if c == 0 {
-                    r.missing.push((rx_node, sender, k));
-                } else if c > 1 {
-                    r.duplicates.push((rx_node, sender, k));
-                }
-            }
-        }
+        d.judge(rx_node, |_, _| true, &mut r.missing, &mut r.duplicates);
         r.dups_dropped
             .push(n.host.reads.first().map(|x| x.value & 0xFFFF).unwrap_or(0));
         r.star_status

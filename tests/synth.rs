@@ -18,11 +18,11 @@ fn drcc(args: &[&str]) -> Output {
         .expect("cannot run the drcc binary")
 }
 
-/// Whether missing tools fail the test: the one rule of `verilator_sys::required`
+/// Whether missing tools fail the test: `drcc_tools::required`, the one rule
 /// (`DRCC_REQUIRE_VERILATOR` or `CI` set to anything but empty, `0`, `false`,
-/// `no` or `off`), shared with every test that needs an external tool.
+/// `no` or `off`) every test that needs an external tool follows.
 fn ci() -> bool {
-    drcc_testbench::engines::tools_required()
+    drcc_tools::required()
 }
 
 #[test]

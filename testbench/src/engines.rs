@@ -88,11 +88,6 @@ pub fn available(kind: EngineKind) -> Result<(), String> {
 /// but empty, `0`, `false`, `no` or `off`).
 pub use drcc_cosim::engine::verilator::verilator_required;
 
-/// Whether external tools (sigrok-cli) must be present: same rule as Verilator.
-pub fn tools_required() -> bool {
-    verilator_required()
-}
-
 /// The engine to run in lock step with the model: Verilator when `probe` (the
 /// Verilated top's constructor, `what` its name) succeeds; without it, a panic
 /// where Verilator is required (CI) and the model alone elsewhere, said on

@@ -15,7 +15,6 @@ use drcc_cosim::engine::drcc_model::DrccModelEngine;
 use drcc_cosim::engine::drcc_rusthdl;
 use drcc_cosim::engine::drcc_verilator::{DrccM0VerilatorEngine, DrccVerilatorEngine};
 use drcc_hdl::host::registers::{self as map, ChannelMode, Mode, SwitchPolicy, MAP};
-use drcc_testbench::engines::verilator_required;
 
 /// The engines in lock step; reads return the model's data.
 struct Bench {
@@ -31,9 +30,8 @@ impl Bench {
     fn new() -> Self {
         let mut engines: Vec<Box<dyn DrccEngine>> =
             vec![Box::new(DrccModelEngine::new()), drcc_rusthdl::drcc()];
-        match DrccVerilatorEngine::new() {
-            Ok(v) => engines.push(Box::new(v)),
-            Err(e) => assert!(!verilator_required(), "Verilator is required here: {e}"),
+        if let Some(v) = drcc_tools::verilated("drcc top", DrccVerilatorEngine::new()) {
+            engines.push(Box::new(v));
         }
         Self::start(engines)
     }
@@ -45,9 +43,8 @@ impl Bench {
             Box::new(DrccModelEngine::with_mailboxes(0)),
             drcc_rusthdl::drcc_m0(),
         ];
-        match DrccM0VerilatorEngine::new() {
-            Ok(v) => engines.push(Box::new(v)),
-            Err(e) => assert!(!verilator_required(), "Verilator is required here: {e}"),
+        if let Some(v) = drcc_tools::verilated("drcc_m0 top", DrccM0VerilatorEngine::new()) {
+            engines.push(Box::new(v));
         }
         Self::start(engines)
     }

@@ -10,7 +10,6 @@ use drcc_cosim::engine::model::ModelEngine;
 use drcc_cosim::engine::rusthdl::RustHdlEngine;
 use drcc_cosim::engine::verilator::VerilatorEngine;
 use drcc_cosim::{BitTiming, ChannelEngine, ChannelInputs, ChannelOutputs, Frame};
-use drcc_testbench::engines::verilator_required;
 
 /// Clocks per bit of the default timing (8 tq of one clock).
 const BIT: usize = 8;
@@ -41,12 +40,8 @@ impl Lone {
             ("model", Box::new(ModelEngine::new())),
             ("rust-hdl", Box::new(RustHdlEngine::new())),
         ];
-        match VerilatorEngine::new() {
-            Ok(v) => engines.push(("verilator", Box::new(v))),
-            Err(e) => {
-                assert!(!verilator_required(), "Verilator required: {e}");
-                eprintln!("Verilator not found ({e}); model and rust-hdl only");
-            }
+        if let Some(v) = drcc_tools::verilated("can_channel top", VerilatorEngine::new()) {
+            engines.push(("verilator", Box::new(v)));
         }
         Some(Lone {
             engines,

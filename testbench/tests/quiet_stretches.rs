@@ -13,7 +13,7 @@ use drcc_cosim::engine::model::ModelEngine;
 use drcc_cosim::engine::{ChannelInputs, ChannelOutputs, ControllerConfig, Mode};
 use drcc_cosim::system::System;
 use drcc_cosim::ChannelEngine;
-use drcc_testbench::engines::{available, make_engine, verilator_required, VERILATOR_HINT};
+use drcc_testbench::engines::{available, make_engine};
 use drcc_testbench::random::Traffic;
 use drcc_testbench::run::build_system_with;
 use drcc_testbench::scenario::ScheduledAbort;
@@ -21,17 +21,11 @@ use drcc_testbench::{scenarios_dir, EngineKind, Scenario};
 
 /// Whether `kind` can run here; Verilator missing fails when it is required.
 fn engine_here(kind: EngineKind) -> bool {
-    match available(kind) {
-        Ok(()) => true,
-        Err(e) => {
-            assert!(
-                !verilator_required(),
-                "the Verilator engine is required: {e} ({VERILATOR_HINT})"
-            );
-            eprintln!("skipped on {}: {e}", kind.name());
-            false
-        }
-    }
+    drcc_tools::verilated(
+        &format!("can_channel top ({})", kind.name()),
+        available(kind),
+    )
+    .is_some()
 }
 
 /// The model, taking quiet stretches (the default `step_quiet`).

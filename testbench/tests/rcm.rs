@@ -7,7 +7,6 @@
 use drcc_cosim::engine::rcm::{
     RcmEngine, RcmInputs, RcmModelEngine, RcmOutputs, RcmRustHdlEngine, RcmVerilatorEngine,
 };
-use drcc_testbench::engines::verilator_required;
 use drcc_testbench::random::SplitMix64;
 
 /// The contract's table (§2) for a mode in force.
@@ -26,12 +25,8 @@ fn rcm_engines_agree_clock_by_clock_and_follow_the_table() {
         Box::<RcmModelEngine>::default(),
         Box::<RcmRustHdlEngine>::default(),
     ];
-    match RcmVerilatorEngine::new() {
-        Ok(v) => engines.push(Box::new(v)),
-        Err(e) => {
-            assert!(!verilator_required(), "Verilator required: {e}");
-            eprintln!("Verilator not found ({e}); model and rust-hdl only");
-        }
+    if let Some(v) = drcc_tools::verilated("rcm top", RcmVerilatorEngine::new()) {
+        engines.push(Box::new(v));
     }
     let mut rng = SplitMix64::new(0x002E_0CA9);
     let (mut refused, mut changes_seen) = (0, 0u32);

@@ -13,25 +13,12 @@ use std::process::Command;
 
 use drcc_cosim::trace::BusVcdWriter;
 use drcc_cosim::Frame;
-use drcc_testbench::engines::tools_required;
 use drcc_testbench::random::Traffic;
 use drcc_testbench::run::{build_system, run_system};
 use drcc_testbench::{scenarios_dir, EngineKind, Scenario};
 
 fn sigrok_present() -> bool {
-    match Command::new("sigrok-cli").arg("--version").output() {
-        Ok(o) if o.status.success() => true,
-        _ => {
-            assert!(
-                !tools_required(),
-                "sigrok-cli is required in CI: install it with `apt-get install sigrok-cli`"
-            );
-            eprintln!(
-                "SKIPPED: sigrok-cli not found (install it with `apt-get install sigrok-cli`)"
-            );
-            false
-        }
-    }
+    drcc_tools::need(&drcc_tools::SIGROK_CLI)
 }
 
 /// Runs the scenario on the model, writing the bus-only VCD; returns the frames

@@ -129,6 +129,25 @@ pub fn need(tool: &Tool) -> bool {
     present(tool) || skip(tool.cmd, tool.install)
 }
 
+/// What a test does about the Verilated RTL it needs, `what` (a top's model,
+/// built by verilator-sys when Verilator is installed): the model when `built`
+/// has it; when not, the rule of [`skip`] with the reason (a panic in CI, one
+/// `SKIPPED:` line here) and `None`: the caller returns, or runs without it.
+pub fn verilated<T, E: std::fmt::Display>(what: &str, built: Result<T, E>) -> Option<T> {
+    match built {
+        Ok(model) => Some(model),
+        Err(e) => {
+            let how = format!(
+                "the Verilated {what} is not built ({e}): install Verilator (`{}`) and build again",
+                VERILATOR.install
+            );
+            assert!(!required(), "{how} (tools are required in CI)");
+            eprintln!("SKIPPED: {how}");
+            None
+        }
+    }
+}
+
 /// [`need`] for several tools at once: true only when all are present.
 pub fn need_all(tools: &[Tool]) -> bool {
     tools.iter().all(need)
@@ -198,5 +217,18 @@ mod tests {
             install: "nothing",
         };
         assert!(!present(&ghost));
+    }
+
+    /// A built model is handed back; a missing one fails where tools are
+    /// required (CI) and is skipped (`None`) elsewhere.
+    #[test]
+    fn a_missing_model_follows_the_rule() {
+        assert_eq!(verilated("test top", Ok::<u8, &str>(7)), Some(7));
+        let missing =
+            std::panic::catch_unwind(|| verilated("test top", Err::<u8, &str>("no build")));
+        match missing {
+            Ok(got) => assert!(!required() && got.is_none()),
+            Err(_) => assert!(required(), "a panic only where tools are required"),
+        }
     }
 }

@@ -243,7 +243,8 @@ fn traffic_exports_never_replace_an_input_and_need_a_writable_place() {
 /// `wave-diff` names the real cause: a file cut inside a line is not a VCD (exit 2);
 /// one cut at a line is a valid but shorter trace, which is not equal to the whole
 /// one (exit 1, naming the shorter file), even though every signal agrees over the
-/// span both cover; a different timescale alone is no difference.
+/// span both cover; a different timescale alone is no difference, and is said. A
+/// file that does not parse is named with where it ends (inside which line).
 #[test]
 fn wave_diff_names_truncated_files_and_compares_across_timescales() {
     let d = scratch("wave");
@@ -278,6 +279,10 @@ fn wave_diff_names_truncated_files_and_compares_across_timescales() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("cut.vcd: not a valid VCD file"), "{err}");
+    assert!(
+        err.contains("the file ends inside line"),
+        "where it was cut: {err}"
+    );
 
     let o = drcc_in(&d, &["wave-diff", "a.vcd", "short.vcd"]);
     let err = String::from_utf8_lossy(&o.stderr);
@@ -287,6 +292,10 @@ fn wave_diff_names_truncated_files_and_compares_across_timescales() {
 
     let o = drcc_in(&d, &["wave-diff", "ps.vcd", "a.vcd"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("timescales differ (1 ps and 1 ns)"), "{out}");
+    let o = drcc_in(&d, &["wave-diff", "a.vcd", "a.vcd"]);
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("timescales differ"));
     let _ = std::fs::remove_dir_all(&d);
 }
 

@@ -14,6 +14,14 @@ pub fn diff(a: &Path, b: &Path, signals: &[String]) -> CliResult {
     let report = first_difference(&ta, &tb, signals)?;
     println!("first file:  {}", a.display());
     println!("second file: {}", b.display());
+    if ta.unit_fs() != tb.unit_fs() {
+        let scale = |t: &drcc_cosim::trace::Trace| format!("{} {}", t.timescale.0, t.timescale.1);
+        println!(
+            "timescales differ ({} and {}): compared in absolute time, times below in the first file's",
+            scale(&ta),
+            scale(&tb)
+        );
+    }
     println!("{report}");
     if report.differs() {
         return Err(CliError::Failed("the waveforms differ".to_string()));

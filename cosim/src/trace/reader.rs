@@ -96,7 +96,27 @@ impl Trace {
 pub fn read_vcd(path: &Path) -> Result<Trace, String> {
     let f =
         File::open(path).map_err(|e| format!("cannot open VCD file {}: {e}", path.display()))?;
-    read_vcd_from(BufReader::new(f), &path.display().to_string())
+    read_vcd_from(BufReader::new(f), &path.display().to_string()).map_err(|e| {
+        match file_end(path) {
+            Some(end) => format!("{e}; {end}"),
+            None => e,
+        }
+    })
+}
+
+/// Where a file that did not parse ends, so that a user sees a truncated file
+/// for what it is: inside a line (cut) or after its last line.
+fn file_end(path: &Path) -> Option<String> {
+    let bytes = std::fs::read(path).ok()?;
+    let lines = bytes.iter().filter(|&&b| b == b'\n').count();
+    Some(match bytes.last() {
+        Some(&last) if last != b'\n' => format!(
+            "the file ends inside line {} (byte {}): it was cut or is still being written",
+            lines + 1,
+            bytes.len()
+        ),
+        _ => format!("the file ends after line {lines} (byte {})", bytes.len()),
+    })
 }
 
 fn format_value(width: u32, v: &[Value]) -> String {

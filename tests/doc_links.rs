@@ -30,18 +30,22 @@ fn markdown_files(dir: &Path, found: &mut Vec<PathBuf>) {
     }
 }
 
+/// The lines of `text` outside fenced code blocks (the fences dropped too).
+fn outside_fences(text: &str) -> impl Iterator<Item = &str> {
+    let mut fenced = false;
+    text.lines().filter(move |line| {
+        if line.trim_start().starts_with("```") {
+            fenced = !fenced;
+            return false;
+        }
+        !fenced
+    })
+}
+
 /// The text without fenced code blocks and inline code spans.
 fn prose(text: &str) -> String {
     let mut out = String::new();
-    let mut fenced = false;
-    for line in text.lines() {
-        if line.trim_start().starts_with("```") {
-            fenced = !fenced;
-            continue;
-        }
-        if fenced {
-            continue;
-        }
+    for line in outside_fences(text) {
         let mut in_code = false;
         for c in line.chars() {
             if c == '`' {
@@ -91,14 +95,9 @@ fn slug(heading: &str) -> String {
 fn anchors(text: &str) -> HashSet<String> {
     let mut seen: HashMap<String, usize> = HashMap::new();
     let mut out = HashSet::new();
-    let mut fenced = false;
-    for line in text.lines() {
-        if line.trim_start().starts_with("```") {
-            fenced = !fenced;
-            continue;
-        }
+    for line in outside_fences(text) {
         let hashes = line.chars().take_while(|&c| c == '#').count();
-        if fenced || hashes == 0 || !line[hashes..].starts_with(' ') {
+        if hashes == 0 || !line[hashes..].starts_with(' ') {
             continue;
         }
         let base = slug(&line[hashes..]);

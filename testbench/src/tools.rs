@@ -5,20 +5,13 @@
 
 use std::path::PathBuf;
 
-/// The virtual environment `.ci/run` installs python-can into, relative to the
-/// workspace.
-pub const PY_VENV: &str = drcc_tools::PY_VENV;
-
 /// A Python interpreter that imports python-can: `$DRCC_PYTHON`, else the
 /// workspace's `target/py-venv/bin/python` (made by `.ci/run`), else `python3`.
 /// None (with a SKIPPED message) when there is none; a panic in CI.
 pub fn python_with_can() -> Option<PathBuf> {
     drcc_tools::python_with(
         &["can"],
-        &format!(
-            "python3 -m venv {PY_VENV} && {PY_VENV}/bin/pip install python-can` in the \
-             workspace (as .ci/run does), or set DRCC_PYTHON to a python that imports `can"
-        ),
+        "pip install python-can (.ci/run installs it into target/py-venv; or set DRCC_PYTHON)",
     )
 }
 

@@ -2,8 +2,8 @@
 //! deliver, the errors they detect and their fault-confinement state changes into
 //! [`TrafficEvent`]s. Two taps: [`ChannelTap`] for a bus of CAN channels
 //! ([`System`]), [`NodeTap`] for any system of DRCC nodes ([`NodeSystem`]: the
-//! dual bus, the replicated star, the REDCAN ring). The module docs of [`super`] say which signal becomes which
-//! event.
+//! dual bus, the replicated star, the REDCAN ring). The module docs of [`super`]
+//! say which signal becomes which event.
 //!
 //! Use: after every `step`, [`ChannelTap::observe`] (or [`NodeTap::observe`])
 //! the system; [`ChannelTap::drain`] hands out the events collected since the last
@@ -140,8 +140,7 @@ struct DrccWatch {
     lines: [LineWatch; 2],
 }
 
-/// The common part of [`NodeTap`], [`NodeTap`] and [`NodeTap`]: DRCC nodes with
-/// their hosts.
+/// What [`NodeTap`] keeps per DRCC node (with its host), whatever joins the nodes.
 #[derive(Debug, Default)]
 struct DrccTap {
     nodes: Vec<DrccWatch>,

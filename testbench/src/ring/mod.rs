@@ -6,8 +6,6 @@
 //! microsecond and the hosts' clocks (`now_us`) are the cycle count.
 
 pub mod app;
-pub mod central;
-pub mod distributed;
 mod judge;
 pub mod lockstep;
 pub mod post;
@@ -19,8 +17,6 @@ use app::{AppTraffic, RingState};
 use cankingdom::king::{ExpectedCity, KingPhase, Membership};
 use cankingdom::king_pages::Action;
 use cankingdom::{Envelope, King, KingConfig, Mayor, MayorConfig};
-use central::{CentralTiming, Master, Slave, BASE};
-use distributed::{DistNode, DistTiming};
 use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::rcm::{rcm_engine, RcmEngine};
 use drcc_cosim::host::{HostConfig, Policy};
@@ -28,6 +24,8 @@ use drcc_cosim::ring::{NodeFault, RingSystem, SectionFaults, Shape};
 use drcc_cosim::Frame;
 use judge::judge;
 use post::{ring_btr, CkFrame, DrccPost, PostState};
+use redcan::central::{self, CentralTiming, Master, Slave, BASE};
+use redcan::distributed::{DistNode, DistTiming};
 
 /// Clocks per bit (125 kbit/s at 1 MHz).
 pub const CLOCKS_PER_BIT: u64 = 8;
@@ -186,14 +184,14 @@ enum App {
     /// Ring node 0: the King, then the REDCAN master.
     King {
         king: Box<dyn Capital>,
-        master: Option<Master>,
-        dist: Option<DistNode>,
+        master: Option<Master<CkFrame>>,
+        dist: Option<DistNode<CkFrame>>,
     },
     /// A City: its Mayor, and on a ring node the REDCAN slave.
     City {
         mayor: Box<Mayor>,
         slave: Option<Slave>,
-        dist: Option<DistNode>,
+        dist: Option<DistNode<CkFrame>>,
         ring: bool,
     },
 }
@@ -385,7 +383,15 @@ pub fn run_observed(
                         while let Ok(f) = embedded_can::nb::Can::receive(&mut post) {
                             other.push(f.0);
                         }
-                        m.poll(now, &other, &mut post);
+                        m.poll(now, &letters(&other));
+                        // The flush first: the poll's letters are for the side the
+                        // relay is still on.
+                        if std::mem::take(&mut m.flush) {
+                            post.flush();
+                        }
+                        for f in m.outbox.drain(..) {
+                            post.host.submit(now, f.0, 0);
+                        }
                         if let Some(t) = m.detected_at {
                             report.detected.get_or_insert((i, t));
                         }
@@ -449,7 +455,7 @@ pub fn run_observed(
                     if let Some(d) = dist {
                         dist_step(d, now, &other, &mut post, i, &mut report)
                     } else if let Some(sl) = slave {
-                        sl.poll(now, mayor, &other);
+                        sl.poll(now, mayor, &letters(&other));
                         if std::mem::take(&mut sl.flush) {
                             post.flush();
                         }
@@ -512,19 +518,19 @@ fn ring_state(app: &App) -> RingState {
 /// One poll of a node's distributed REDCAN: its letters (after a flush when it
 /// has just detected), its detection time, its RCM command.
 fn dist_step(
-    d: &mut DistNode,
+    d: &mut DistNode<CkFrame>,
     now: u64,
     rx: &[Frame],
     post: &mut DrccPost,
     i: usize,
     report: &mut RingReport,
 ) -> Option<u8> {
-    d.poll(now, rx);
+    d.poll(now, &letters(rx));
     if std::mem::take(&mut d.flush) {
         post.flush();
     }
     for f in d.outbox.drain(..) {
-        post.host.submit(now, f, 0);
+        post.host.submit(now, f.0, 0);
     }
     if let Some(t) = d.detected_at {
         if report.detected.is_none_or(|(_, e)| t < e) {
@@ -532,4 +538,9 @@ fn dist_step(
         }
     }
     d.command.take()
+}
+
+/// The frames a host received, as the `redcan` algorithms take them.
+fn letters(rx: &[Frame]) -> Vec<CkFrame> {
+    rx.iter().map(|&f| CkFrame(f)).collect()
 }

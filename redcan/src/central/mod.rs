@@ -32,9 +32,12 @@
 //!   the side it was reached from (the end of its arm); a slave flushes its queue
 //!   on detection, so that its answers are not stuck behind application frames.
 
+use crate::{base_data, letter};
 use cankingdom::king_pages::{BaseNumber, Initiation, KingLetter, KingPage};
 use cankingdom::MayorPage;
-use drcc_cosim::Frame;
+use embedded_can::Frame;
+
+pub use crate::{CONNECT_LEFT, CONNECT_RIGHT, TRANSPARENT};
 
 mod master;
 mod slave;
@@ -48,13 +51,6 @@ pub const REDCAN_ENVELOPE: u32 = 0x010;
 pub const KING_ENVELOPE: u32 = 0x000;
 /// The Kingdom's base number: a City answers on `BASE + address`.
 pub const BASE: u32 = 0x400;
-
-/// RCM control words (ring contract §2).
-pub const CONNECT_LEFT: u8 = 0b01;
-/// Connect right, disconnect left.
-pub const CONNECT_RIGHT: u8 = 0b10;
-/// Relay closed.
-pub const TRANSPARENT: u8 = 0b11;
 
 /// The algorithm's times, in microseconds (= clocks of the ring's 1 MHz clock).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -97,7 +93,7 @@ pub const RING_GROUP: u8 = 0xF0;
 
 /// The King's Page 1 with base "keep" and "respond with Mayor's Page 0" to
 /// `address` (0 = all Cities): the heartbeat and the poll.
-pub fn page1_letter(address: u8) -> Frame {
+pub fn page1_letter<F: Frame>(address: u8) -> F {
     let page = KingLetter {
         address,
         page: KingPage::Page1(Initiation {
@@ -107,21 +103,22 @@ pub fn page1_letter(address: u8) -> Frame {
     }
     .encode()
     .expect("a valid King's Page 1");
-    Frame::base(KING_ENVELOPE, &page)
+    letter(KING_ENVELOPE, &page)
 }
 
 /// The REDCAN letter "the node beyond you answered", to City `address`.
-pub fn beyond_letter(address: u8) -> Frame {
-    Frame::base(REDCAN_ENVELOPE, &[address, 1])
+pub fn beyond_letter<F: Frame>(address: u8) -> F {
+    letter(REDCAN_ENVELOPE, &[address, 1])
 }
 
 /// The City address that answered with `f` (a Mayor's Page on `BASE + address`).
-pub fn answer_of(f: &Frame) -> Option<u8> {
-    if f.ide || f.rtr || f.id <= BASE || f.id > BASE + 255 {
+pub fn answer_of<F: Frame>(f: &F) -> Option<u8> {
+    let (id, data) = base_data(f)?;
+    if id <= BASE || id > BASE + 255 {
         return None;
     }
-    MayorPage::decode(&f.data[..f.dlc.min(8) as usize]).ok()?;
-    Some((f.id - BASE) as u8)
+    MayorPage::decode(data).ok()?;
+    Some((id - BASE) as u8)
 }
 
 /// How long after 2 T2 a slave takes its final decision: the master's scan began

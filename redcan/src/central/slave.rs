@@ -5,8 +5,9 @@
 use super::{
     decide, final_lag, CentralTiming, CONNECT_LEFT, CONNECT_RIGHT, REDCAN_ENVELOPE, TRANSPARENT,
 };
+use crate::base_data;
 use cankingdom::Mayor;
-use drcc_cosim::Frame;
+use embedded_can::Frame;
 
 /// What a slave is doing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,7 +71,7 @@ impl Slave {
 
     /// One poll at `now`: `mayor` has just handled the King's Letters; `rx` are the
     /// other frames received since the last poll.
-    pub fn poll(&mut self, now: u64, mayor: &Mayor, rx: &[Frame]) {
+    pub fn poll<F: Frame>(&mut self, now: u64, mayor: &Mayor, rx: &[F]) {
         let t = self.timing;
         let letters = mayor.letters_accepted();
         let new_letter = letters != self.accepted;
@@ -105,12 +106,8 @@ impl Slave {
                     self.waiting_beyond = Some(now);
                     self.set(TRANSPARENT);
                 }
-                let beyond = rx.iter().any(|f| {
-                    f.id == REDCAN_ENVELOPE
-                        && !f.ide
-                        && f.dlc >= 2
-                        && f.data[0] == self.address
-                        && f.data[1] == 1
+                let beyond = rx.iter().filter_map(base_data).any(|(id, data)| {
+                    id == REDCAN_ENVELOPE && data.len() >= 2 && data[..2] == [self.address, 1]
                 });
                 if beyond {
                     self.waiting_beyond = None;

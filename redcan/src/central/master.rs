@@ -6,8 +6,10 @@ use super::{
     answer_of, beyond_letter, final_lag, page1_letter, CentralTiming, CONNECT_LEFT, CONNECT_RIGHT,
     RING_GROUP, TRANSPARENT,
 };
-use crate::ring::post::DrccPost;
-use drcc_cosim::Frame;
+use crate::raw_id;
+use alloc::vec;
+use alloc::vec::Vec;
+use embedded_can::Frame;
 
 /// What the master is doing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,7 +37,7 @@ enum MState {
 
 /// The REDCAN master on ring node 0 (after the King's start-up).
 #[derive(Clone, Debug)]
-pub struct Master {
+pub struct Master<F> {
     n: usize,
     app_base: u32,
     timing: CentralTiming,
@@ -56,17 +58,20 @@ pub struct Master {
     told: Vec<u8>,
     /// Before the master's relay changes side, it gives up the frames it queued
     /// (polls nobody on the old side acknowledged would reach the new side late,
-    /// where a slave would take them for a poll): taken by [`Master::poll`].
-    flush: bool,
-    /// Letters of this step, submitted after the flush.
-    outbox: Vec<Frame>,
+    /// where a slave would take them for a poll): taken by the runner, before
+    /// the letters of the same poll.
+    pub flush: bool,
+    /// Letters to send (taken by the runner, after a flush if `flush`: the
+    /// letters of a poll are for the side the relay is still on, which changes
+    /// `settle` later).
+    pub outbox: Vec<F>,
     /// RCM command to write (taken by the runner).
     pub command: Option<u8>,
     /// When the master detected the fault (left `Run`).
     pub detected_at: Option<u64>,
 }
 
-impl Master {
+impl<F: Frame> Master<F> {
     /// A master of `n` ring nodes among `cities + 1` nodes (every node a City but
     /// the master), starting its heartbeat at `now`.
     pub fn new(n: usize, cities: usize, app_base: u32, timing: CentralTiming, now: u64) -> Self {
@@ -94,25 +99,13 @@ impl Master {
     }
 
     /// One poll at `now` with the frames received since the last one.
-    pub fn poll(&mut self, now: u64, rx: &[Frame], post: &mut DrccPost) {
-        self.step(now, rx);
-        // The flush first: the letters of this step are for the side the relay
-        // is still on (it changes `settle` later).
-        if std::mem::take(&mut self.flush) {
-            post.flush();
-        }
-        for f in self.outbox.drain(..) {
-            post.host.submit(now, f, 0);
-        }
-    }
-
-    fn step(&mut self, now: u64, rx: &[Frame]) {
+    pub fn poll(&mut self, now: u64, rx: &[F]) {
         let t = self.timing;
         let answers: Vec<u8> = rx.iter().filter_map(answer_of).collect();
         // A plain node is alive while its frames come (its answers, or any frame
         // on an envelope of its own: the application's `app_base + node`).
         for f in rx {
-            let from = f.id.checked_sub(self.app_base).map(|k| k as usize);
+            let from = raw_id(f).checked_sub(self.app_base).map(|k| k as usize);
             if let Some(i) = from.filter(|&i| i >= self.n && i < self.last_answer.len()) {
                 self.last_answer[i] = now;
                 self.expected[i] = true;
@@ -247,7 +240,7 @@ impl Master {
             }
             MState::Retell { at } => {
                 if now >= at {
-                    let told: Vec<Frame> = self.told.iter().map(|&k| beyond_letter(k)).collect();
+                    let told: Vec<F> = self.told.iter().map(|&k| beyond_letter(k)).collect();
                     self.outbox.extend(told);
                     // The heartbeat resumes once every slave has decided: a King's
                     // Letter before that would count as a poll.

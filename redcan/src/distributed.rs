@@ -13,8 +13,10 @@
 //!   ring node it heard alive, hearing no end, holds both terminations (connect
 //!   left): without an end the ring would be closed.
 
-use super::central::{CONNECT_LEFT, CONNECT_RIGHT, TRANSPARENT};
-use drcc_cosim::Frame;
+use crate::{base_data, letter, CONNECT_LEFT, CONNECT_RIGHT, TRANSPARENT};
+use alloc::vec;
+use alloc::vec::Vec;
+use embedded_can::Frame;
 
 /// Envelope of the alive letters: `ALIVE_BASE + node`.
 pub const ALIVE_BASE: u32 = 0x020;
@@ -83,7 +85,7 @@ enum State {
 
 /// One ring node's distributed REDCAN.
 #[derive(Clone, Debug)]
-pub struct DistNode {
+pub struct DistNode<F> {
     i: usize,
     n: usize,
     t: DistTiming,
@@ -100,7 +102,7 @@ pub struct DistNode {
     last_probe: u64,
     mode: u8,
     /// Letters to send (taken by the runner, after a flush if `flush`).
-    pub outbox: Vec<Frame>,
+    pub outbox: Vec<F>,
     /// Give up what is queued before sending (on detection).
     pub flush: bool,
     /// RCM command to write (taken by the runner).
@@ -109,7 +111,7 @@ pub struct DistNode {
     pub detected_at: Option<u64>,
 }
 
-impl DistNode {
+impl<F: Frame> DistNode<F> {
     /// Ring node `i` of `n` among `total` nodes (plain nodes `n..`, whose
     /// application frames come on `app_base + node`), running from `now`; node 0
     /// holds both terminations in the fault-free ring.
@@ -184,33 +186,29 @@ impl DistNode {
         self.right_ok = false;
         self.end_heard = false;
         self.flush = true;
-        self.outbox
-            .push(Frame::base(DETECT_ENVELOPE, &[self.i as u8]));
+        self.outbox.push(letter(DETECT_ENVELOPE, &[self.i as u8]));
         self.state = State::Rebuild { t0: now };
     }
 
     /// One poll at `now` with the frames received since the last one.
-    pub fn poll(&mut self, now: u64, rx: &[Frame]) {
+    pub fn poll(&mut self, now: u64, rx: &[F]) {
         let (n, i) = (self.n, self.i);
         let left = (i + n - 1) % n;
         let right = (i + 1) % n;
         let mut detect_letter = false;
-        for f in rx {
-            if f.ide || f.rtr {
-                continue;
-            }
-            if f.id >= ALIVE_BASE && f.id < ALIVE_BASE + n as u32 {
-                self.heard[(f.id - ALIVE_BASE) as usize] = Some(now);
-            } else if let Some(k) =
-                f.id.checked_sub(self.app_base)
-                    .map(|k| k as usize)
-                    .filter(|&k| k >= n && k < self.plain_heard.len())
+        for (id, data) in rx.iter().filter_map(base_data) {
+            if id >= ALIVE_BASE && id < ALIVE_BASE + n as u32 {
+                self.heard[(id - ALIVE_BASE) as usize] = Some(now);
+            } else if let Some(k) = id
+                .checked_sub(self.app_base)
+                .map(|k| k as usize)
+                .filter(|&k| k >= n && k < self.plain_heard.len())
             {
                 self.plain_heard[k] = Some(now);
-            } else if f.id == DETECT_ENVELOPE {
+            } else if id == DETECT_ENVELOPE {
                 detect_letter = true;
-            } else if f.id == LINK_ENVELOPE && f.dlc >= 3 {
-                let (kind, from, to) = (f.data[0], f.data[1] as usize, f.data[2] as usize);
+            } else if id == LINK_ENVELOPE && data.len() >= 3 {
+                let (kind, from, to) = (data[0], data[1] as usize, data[2] as usize);
                 match kind {
                     PROBE if to == i => {
                         // The prober is on the side this node is connected to.
@@ -223,7 +221,7 @@ impl DistNode {
                             }
                         }
                         self.outbox
-                            .push(Frame::base(LINK_ENVELOPE, &[REPLY, i as u8, from as u8]));
+                            .push(letter(LINK_ENVELOPE, &[REPLY, i as u8, from as u8]));
                     }
                     REPLY if to == i => match self.mode {
                         CONNECT_RIGHT => self.right_ok = true,
@@ -259,8 +257,7 @@ impl DistNode {
                     {
                         // An end announces itself until the holders decide.
                         self.last_probe = now;
-                        self.outbox
-                            .push(Frame::base(LINK_ENVELOPE, &[END, i as u8, 0]));
+                        self.outbox.push(letter(LINK_ENVELOPE, &[END, i as u8, 0]));
                     }
                 }
                 if self.state == State::Run {
@@ -277,8 +274,7 @@ impl DistNode {
                     }
                     if now >= self.next_alive {
                         self.next_alive = now + self.t.ta;
-                        self.outbox
-                            .push(Frame::base(ALIVE_BASE + i as u32, &[i as u8]));
+                        self.outbox.push(letter(ALIVE_BASE + i as u32, &[i as u8]));
                     }
                 }
             }
@@ -300,7 +296,7 @@ impl DistNode {
                     {
                         self.last_probe = now;
                         self.outbox
-                            .push(Frame::base(LINK_ENVELOPE, &[PROBE, i as u8, right as u8]));
+                            .push(letter(LINK_ENVELOPE, &[PROBE, i as u8, right as u8]));
                     }
                 } else if p == 3 {
                     // A silent neighbour: test for the node beyond it.
@@ -312,10 +308,8 @@ impl DistNode {
                             {
                                 self.last_probe = now;
                                 let beyond = (i + 2) % n;
-                                self.outbox.push(Frame::base(
-                                    LINK_ENVELOPE,
-                                    &[PROBE, i as u8, beyond as u8],
-                                ));
+                                self.outbox
+                                    .push(letter(LINK_ENVELOPE, &[PROBE, i as u8, beyond as u8]));
                             }
                         }
                         (false, true) => {
@@ -324,10 +318,8 @@ impl DistNode {
                             {
                                 self.last_probe = now;
                                 let beyond = (i + n - 2) % n;
-                                self.outbox.push(Frame::base(
-                                    LINK_ENVELOPE,
-                                    &[PROBE, i as u8, beyond as u8],
-                                ));
+                                self.outbox
+                                    .push(letter(LINK_ENVELOPE, &[PROBE, i as u8, beyond as u8]));
                             }
                         }
                         (false, false) => self.set(CONNECT_LEFT),

@@ -104,6 +104,15 @@ impl Top {
         verilog::finish(self, &(self.raw_verilog)(), &self.ports())
     }
 
+    /// The Verilog of this top without the readable step of [`readable`]: rust-hdl's
+    /// text with its modules renamed and no `initial` blocks, a module per
+    /// flip-flop and per block instance, and no header or parameters. The same
+    /// logic as [`Top::verilog`]; `examples/emit.rs --unreadable` prints it, to
+    /// compare the two texts' area and Fmax.
+    pub fn unreadable_verilog(&self) -> String {
+        verilog::strip_initial_blocks(&verilog::rename_modules(self.name, &(self.raw_verilog)()))
+    }
+
     /// The top-level ports, in declaration order, with their docs.
     pub fn ports(&self) -> Vec<Port> {
         let docs = port_docs::port_docs(self.source, self.block);

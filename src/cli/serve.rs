@@ -1,7 +1,7 @@
 //! `drcc serve`: checks the options, builds the network, binds the port (a port in
 //! use is refused naming it), installs the Ctrl-C / SIGTERM handler that stops the
 //! server cleanly (the export files are then completed and renamed into place),
-//! and runs the server of `drcc_testbench::serve`.
+//! and runs the server of `drcc_serve` on a network of `drcc_testbench::served`.
 
 use std::net::{IpAddr, SocketAddr};
 use std::path::{Path, PathBuf};
@@ -9,9 +9,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 
-use drcc_testbench::serve::{
-    bind, serve, BusNetwork, DualNetwork, Network, Pacing, ServeOptions, StarNetwork,
-};
+use drcc_serve::{bind, serve, Network, Pacing, ServeOptions};
+use drcc_testbench::served::{BusNetwork, DualNetwork, StarNetwork};
 use drcc_testbench::{EngineKind, Scenario};
 
 use super::traffic::{TrafficArgs, TrafficFiles};
@@ -133,7 +132,7 @@ pub fn run(a: ServeArgs) -> CliResult {
         "drcc serve: stopped after {} clocks ({} s simulated): {} frames delivered, {} error \
          frames, {} connections",
         summary.cycles,
-        drcc_testbench::serve::protocol::timestamp(
+        drcc_serve::protocol::timestamp(
             (summary.cycles as u128 * 1_000_000_000 / net.clock_hz() as u128) as u64
         ),
         summary.frames,

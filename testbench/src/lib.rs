@@ -1,7 +1,12 @@
-//! drcc-testbench: the scenario format and its loader, the bit-rate solver,
-//! random traffic, the scenario runner (on one engine or co-simulated on two)
-//! and the engine benchmark. Scenario files live in `scenarios/`, integration
-//! tests in `tests/`.
+//! drcc-testbench: what the product is tested and measured with. The scenario
+//! format and its loader, the bit-rate solver, random traffic, the scenario
+//! runner (on one engine or co-simulated on two); the fault scenarios of the
+//! dual bus, the star, DMR and the ECSS policy; the DRCC paper's experiment, the
+//! ISO 16845-1 conformance suite, the fault campaigns and the coverage; the
+//! REDCAN ring runs (their hosts run the `cankingdom` and `redcan` crates); the
+//! networks `drcc serve` serves (`served`, for the `drcc-serve` server); and the
+//! engine benchmark. Scenario files live in `scenarios/`, integration tests in
+//! `tests/`.
 
 pub mod bench;
 pub mod bitrate;
@@ -21,7 +26,7 @@ pub mod random;
 pub mod ring;
 pub mod run;
 pub mod scenario;
-pub mod serve;
+pub mod served;
 pub mod star;
 pub mod tools;
 

@@ -1,9 +1,11 @@
-//! The networks `drcc serve` can serve, behind one interface: a bus of CAN channels
+//! The networks `drcc serve` serves, built from the testbench's scenarios, behind
+//! the server's one interface ([`drcc_serve::Network`]): a bus of CAN channels
 //! (from a scenario file), and DRCC nodes on a dual bus or a replicated star (one
-//! body, [`NodeNetwork`], over the topology's [`ServedSystem`]). Each is stepped one clock at a time by the server, takes frames to send
-//! from clients (`send`), hands out what its nodes delivered (`poll`, through the
-//! traffic taps of `drcc_cosim::traffic`) and takes faults while it runs (`fault`,
-//! the `< fault ... >` command of docs/serve.md).
+//! body, [`NodeNetwork`], over the topology's [`ServedSystem`]). Each is stepped
+//! one clock at a time by the server, takes frames to send from clients (`send`),
+//! hands out what its nodes delivered (`poll`, through the traffic taps of
+//! `drcc_cosim::traffic`) and takes faults while it runs (`fault`, the
+//! `< fault ... >` command of docs/serve.md).
 
 use drcc_cosim::bus::{Fault, FaultKind, FaultTarget};
 use drcc_cosim::dual::{fault::Detach, DualBusSystem, Line, LineCut};
@@ -11,34 +13,13 @@ use drcc_cosim::star::{Link, LinkFault, LinkFaultKind, StarSystem};
 use drcc_cosim::system::{NodeSystem, System};
 use drcc_cosim::traffic::{ChannelTap, NodeTap, TrafficEvent};
 use drcc_cosim::Frame;
+pub use drcc_serve::Network;
 
 use crate::dual::{drcc_engine, DualFault, DualScenario, CLOCKS_PER_BIT as DUAL_CLOCKS_PER_BIT};
 use crate::engines::EngineKind;
 use crate::run::build_system;
 use crate::scenario::Scenario;
 use crate::star::{build_star, StarFault, StarScenario, CLOCKS_PER_BIT as STAR_CLOCKS_PER_BIT};
-
-/// A simulated network a server steps and clients use.
-pub trait Network {
-    /// The node names, which are the bus names clients open.
-    fn names(&self) -> &[String];
-    /// The clock of every node, in Hz (time = cycle / clock).
-    fn clock_hz(&self) -> u64;
-    /// Clock cycles stepped so far.
-    fn cycle(&self) -> u64;
-    /// Clock cycles per bit time.
-    fn clocks_per_bit(&self) -> u64;
-    /// One clock for the whole network.
-    fn step(&mut self);
-    /// Node `node` transmits `frame` as soon as it can.
-    fn send(&mut self, node: usize, frame: Frame) -> Result<(), String>;
-    /// Appends what the nodes delivered since the last call, in order.
-    fn poll(&mut self, out: &mut Vec<TrafficEvent>);
-    /// Applies a `< fault ... >` command now; returns what was done.
-    fn fault(&mut self, args: &[String]) -> Result<String, String>;
-    /// One line naming the topology and the engine.
-    fn describe(&self) -> String;
-}
 
 /// The node names `node0`, `node1`, ...
 pub fn default_names(n: usize) -> Vec<String> {

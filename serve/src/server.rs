@@ -19,8 +19,8 @@ use std::time::{Duration, Instant};
 
 use drcc_cosim::traffic::{TrafficEvent, TrafficKind};
 
-use super::network::Network;
-use super::protocol::{self, Command, Framer};
+use crate::protocol::{self, Command, Framer};
+use crate::Network;
 
 /// The socketcand default port.
 pub const DEFAULT_PORT: u16 = 29536;

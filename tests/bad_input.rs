@@ -193,7 +193,7 @@ fn traffic_exports_never_replace_an_input_and_need_a_writable_place() {
     ];
     refused(&d, &dual, "--candump and --pcap both name", own);
     // x.toml is a file, so no directory x.toml/ can be made
-    let writable = "give a file in a writable directory";
+    let writable = "give a path whose folders can be created";
     for args in [
         &["sim", "x.toml", "--candump", "x.toml/t.log"][..],
         &["redundancy", "paper", "--candump", "x.toml/t.log"],
@@ -202,14 +202,14 @@ fn traffic_exports_never_replace_an_input_and_need_a_writable_place() {
         refused(
             &d,
             args,
-            "--candump x.toml/t.log: cannot create x.toml",
+            "--candump x.toml/t.log: cannot create the directory x.toml",
             writable,
         );
     }
     refused(
         &d,
         &["sim", "x.toml", "--pcap", "x.toml/t.pcap"],
-        "--pcap x.toml/t.pcap: cannot create x.toml",
+        "--pcap x.toml/t.pcap: cannot create the directory x.toml",
         writable,
     );
     let many = "runs many scenarios and exports no traffic";
@@ -452,6 +452,52 @@ fn a_trace_that_cannot_be_written_is_an_error_and_a_device_stays_a_device() {
     assert!(
         std::fs::metadata(full).is_ok_and(|m| m.file_type().is_char_device()),
         "/dev/full was replaced by a file"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// An output that cannot be written is an error naming it (exit 2, one message
+/// with the fix), and nothing is left behind: `generate --out` under a file,
+/// `campaign --out` under a file, `synth --build-dir` under a file (with yosys,
+/// which `synth` probes first), and a generated file on the full device.
+#[test]
+fn outputs_that_cannot_be_written_are_errors_naming_them() {
+    let d = scratch("unwritable");
+    std::fs::write(d.join("blocker"), "a file, not a folder").unwrap();
+    let fix = "give a path whose folders can be created";
+    refused(
+        &d,
+        &["generate", "--out", "blocker/rtl"],
+        "cannot create the directory blocker/rtl",
+        fix,
+    );
+    refused(
+        &d,
+        &["campaign", "--count", "1", "--out", "blocker/r.jsonl"],
+        "cannot create the directory blocker",
+        fix,
+    );
+    if drcc_tools::need(&drcc_tools::YOSYS) {
+        // `synth` reads the checkout's rtl-out/, so it runs in the repository.
+        let repo = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let build = d.join("blocker/b");
+        let o = drcc_in(
+            repo,
+            &[
+                "synth",
+                "--target",
+                "ice40",
+                "--build-dir",
+                build.to_str().unwrap(),
+            ],
+        );
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains("blocker/b") && err.contains(fix), "{err}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(d.join("blocker")).unwrap(),
+        "a file, not a folder"
     );
     let _ = std::fs::remove_dir_all(&d);
 }

@@ -89,8 +89,7 @@ impl Flow<'_> {
         let wrapper = scan_wrapper(top.name, &top.ports())
             .map_err(|m| Error(format!("{}: {m}", rtl.display())))?;
         let dir = self.build_root.join(format!("{}-{}", top.name, t.name));
-        std::fs::create_dir_all(&dir)
-            .map_err(|e| Error(format!("cannot create {}: {e}", dir.display())))?;
+        drcc_tools::atomic::create_dir(&dir).map_err(Error)?;
         let dir = abs(&dir)?;
         let wrap_file = format!("{}.v", wrapper.module);
         write_file(&dir.join(&wrap_file), &wrapper.verilog)?;

@@ -55,11 +55,11 @@ impl std::fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
-/// Writes `text` to `path`, creating its folder.
+/// Writes `text` to `path` whole or not at all ([`drcc_tools::atomic`]),
+/// creating its folder.
 pub fn write_file(path: &Path, text: &str) -> Result<(), Error> {
     if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| Error(format!("cannot create {}: {e}", dir.display())))?;
+        drcc_tools::atomic::create_dir(dir).map_err(Error)?;
     }
-    std::fs::write(path, text).map_err(|e| Error(format!("cannot write {}: {e}", path.display())))
+    drcc_tools::atomic::write(path, text).map_err(Error)
 }

@@ -178,8 +178,7 @@ fn run_campaign(a: &CampaignArgs) -> CliResult {
         jobs,
         writer,
         |spec, o| {
-            std::fs::create_dir_all(&fail_dir)
-                .map_err(|e| format!("cannot create {}: {e}", fail_dir.display()))?;
+            drcc_tools::atomic::create_dir(&fail_dir)?;
             let path = fail_dir.join(format!(
                 "{}-s{}-i{}.toml",
                 spec.topology.name(),

@@ -113,8 +113,7 @@ pub fn run(out: Option<PathBuf>, check: bool) -> CliResult {
 fn write_files(files: &[(PathBuf, String)]) -> CliResult {
     for (path, text) in files {
         if let Some(parent) = path.parent() {
-            std::fs::create_dir_all(parent)
-                .map_err(|e| CliError::Error(format!("cannot create {}: {e}", parent.display())))?;
+            drcc_tools::atomic::create_dir(parent).map_err(CliError::Error)?;
         }
         if std::fs::read_to_string(path).is_ok_and(|old| old == *text) {
             println!("unchanged {}", path.display());
@@ -146,8 +145,7 @@ fn check_files(files: &[(PathBuf, String)]) -> CliResult {
 }
 
 fn write_dir(dir: &Path, tops: &[(&str, String)]) -> CliResult {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| CliError::Error(format!("cannot create {}: {e}", dir.display())))?;
+    drcc_tools::atomic::create_dir(dir).map_err(CliError::Error)?;
     for (name, text) in tops {
         let path = dir.join(format!("{name}.v"));
         let same = std::fs::read_to_string(&path).is_ok_and(|old| old == *text);

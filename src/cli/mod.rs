@@ -18,6 +18,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Duration;
 
+use drcc_tools::atomic::{is_special, tmp_path};
+
 /// Why a command failed.
 #[derive(Debug)]
 pub enum CliError {
@@ -100,43 +102,11 @@ pub fn project_root(instead: &str) -> Result<PathBuf, CliError> {
         })
 }
 
-/// The temporary file beside `path` that an atomic write goes through.
-fn tmp_path(path: &Path) -> PathBuf {
-    // Unique per process and per call: several `drcc` processes writing one
-    // directory at once (a parallel build, CI jobs sharing a workspace) must not
-    // rename one another's temporary files away.
-    static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("file");
-    path.with_file_name(format!(".{name}.{}-{n}.drcc-tmp", std::process::id()))
-}
-
-/// Whether `path` is a device, a pipe or a socket (`/dev/null`, `/dev/stdout`, a
-/// FIFO): written in place, never replaced by a renamed file.
-fn is_special(path: &Path) -> bool {
-    std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir())
-}
-
 /// Writes `text` to `path` through a temporary file beside it and a rename, so an
 /// interrupted write leaves the old file or the new one, never a truncated one.
-/// A device or a pipe is written in place.
+/// A device or a pipe is written in place ([`drcc_tools::atomic`]).
 pub fn write_atomic(path: &Path, text: impl AsRef<[u8]>) -> Result<(), CliError> {
-    if is_special(path) {
-        return std::fs::write(path, text)
-            .map_err(|e| CliError::Error(format!("cannot write {}: {e}", path.display())));
-    }
-    let tmp = tmp_path(path);
-    std::fs::write(&tmp, text).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        CliError::Error(format!(
-            "cannot write {} ({e}): make its directory writable",
-            tmp.display()
-        ))
-    })?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        CliError::Error(format!("cannot replace {}: {e}", path.display()))
-    })
+    drcc_tools::atomic::write(path, text).map_err(CliError::Error)
 }
 
 /// Whether two paths name the same file: the same file on disk if both exist,
@@ -205,12 +175,15 @@ impl AtomicFile {
     /// Creates the temporary file (and the missing directories of `path`).
     pub fn create(path: &Path) -> Result<Self, CliError> {
         if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-            std::fs::create_dir_all(dir)
-                .map_err(|e| CliError::Error(format!("cannot create {}: {e}", dir.display())))?;
+            drcc_tools::atomic::create_dir(dir).map_err(CliError::Error)?;
         }
         let tmp = (!is_special(path)).then(|| tmp_path(path));
-        let f = std::fs::File::create(tmp.as_deref().unwrap_or(path))
-            .map_err(|e| CliError::Error(format!("cannot create {}: {e}", path.display())))?;
+        let f = std::fs::File::create(tmp.as_deref().unwrap_or(path)).map_err(|e| {
+            CliError::Error(format!(
+                "cannot create {} ({e}): give a file in a writable directory",
+                path.display()
+            ))
+        })?;
         Ok(AtomicFile {
             path: path.to_path_buf(),
             tmp,

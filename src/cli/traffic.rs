@@ -107,10 +107,9 @@ impl TrafficFiles {
     pub fn create(args: &TrafficArgs, clock_hz: u64) -> Result<Self, CliError> {
         let open = |opt: &str, path: &Path| {
             AtomicFile::create(path).map_err(|e| match e {
-                CliError::Error(m) | CliError::Failed(m) => CliError::Error(format!(
-                    "{opt} {}: {m}; give a file in a writable directory",
-                    path.display()
-                )),
+                CliError::Error(m) | CliError::Failed(m) => {
+                    CliError::Error(format!("{opt} {}: {m}", path.display()))
+                }
             })
         };
         let candump = match args.candump.as_deref() {

@@ -2,11 +2,13 @@
 //! sigrok-cli, tshark, cocotb, FuseSoC), and the one rule every test follows when
 //! one is missing: skipped with a one-line note on a developer's machine, a
 //! failure naming the install command when tools are [`required`] (CI); and the
-//! rule the one-binary test suites share ([`unbuilt_test_files`]).
+//! rule the one-binary test suites share ([`unbuilt_test_files`]); and the one
+//! way every crate writes a file for a user ([`atomic`]: whole or not at all).
 //!
 //! Standard library only, so every crate of the workspace (the HDL crate's
 //! synthesis tests included) can use it without pulling anything in.
 
+pub mod atomic;
 mod required;
 mod suite;
 pub use required::{is_on, required, REQUIRE_VARS};

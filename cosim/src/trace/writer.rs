@@ -258,17 +258,14 @@ impl VcdWriter<&mut BufWriter<File>> {
     where
         I: IntoIterator<Item = Vec<&'a Sample>>,
     {
-        let err = |e: io::Error| format!("cannot write VCD file {}: {e}", path.display());
-        let file = File::create(path).map_err(err)?;
-        let mut buf = BufWriter::new(file);
-        {
-            let mut w = VcdWriter::new(&mut buf, clock_hz, systems, comment).map_err(err)?;
+        drcc_tools::atomic::write_with(path, |buf| {
+            let mut w = VcdWriter::new(buf, clock_hz, systems, comment)?;
             for samples in cycles {
-                w.write_cycle(&samples).map_err(err)?;
+                w.write_cycle(&samples)?;
             }
-            w.finish().map_err(err)?;
-        }
-        buf.flush().map_err(err)
+            w.finish()
+        })
+        .map_err(|e| format!("VCD trace: {e}"))
     }
 }
 
@@ -394,16 +391,13 @@ impl BusVcdWriter<&mut BufWriter<File>> {
     where
         I: IntoIterator<Item = &'a Sample>,
     {
-        let err = |e: io::Error| format!("cannot write VCD file {}: {e}", path.display());
-        let file = File::create(path).map_err(err)?;
-        let mut buf = BufWriter::new(file);
-        {
-            let mut w = BusVcdWriter::new(&mut buf, clock_hz, nodes, comment).map_err(err)?;
+        drcc_tools::atomic::write_with(path, |buf| {
+            let mut w = BusVcdWriter::new(buf, clock_hz, nodes, comment)?;
             for s in samples {
-                w.write_cycle(s).map_err(err)?;
+                w.write_cycle(s)?;
             }
-            w.finish().map_err(err)?;
-        }
-        buf.flush().map_err(err)
+            w.finish()
+        })
+        .map_err(|e| format!("VCD trace: {e}"))
     }
 }

@@ -132,19 +132,17 @@ impl Loader<'_> {
         }
     }
 
-    pub(super) fn resolve(&self, raw: RawScenario) -> Result<Scenario, ScenarioError> {
-        // Nodes.
-        let names: Vec<String> = match raw.nodes.get_ref() {
+    /// The node names: `nodes = N` (named `node0`..) or a list of distinct names.
+    fn node_names(&self, raw: &RawScenario) -> Result<Vec<String>, ScenarioError> {
+        match raw.nodes.get_ref() {
             toml::Value::Integer(n) if (1..=64).contains(n) => {
-                (0..*n).map(|i| format!("node{i}")).collect()
+                Ok((0..*n).map(|i| format!("node{i}")).collect())
             }
-            toml::Value::Integer(n) => {
-                return Err(self.err(
-                    raw.nodes.span(),
-                    "nodes",
-                    format!("{n} nodes: legal counts are 1..=64"),
-                ))
-            }
+            toml::Value::Integer(n) => Err(self.err(
+                raw.nodes.span(),
+                "nodes",
+                format!("{n} nodes: legal counts are 1..=64"),
+            )),
             toml::Value::Array(list) => {
                 let mut v = Vec::new();
                 for item in list {
@@ -184,21 +182,22 @@ impl Loader<'_> {
                         format!("{} nodes: legal counts are 1..=64", v.len()),
                     ));
                 }
-                v
+                Ok(v)
             }
-            other => {
-                return Err(self.err(
-                    raw.nodes.span(),
-                    "nodes",
-                    format!(
-                        "expected a node count or a list of names, found {}",
-                        other.type_str()
-                    ),
-                ))
-            }
-        };
+            other => Err(self.err(
+                raw.nodes.span(),
+                "nodes",
+                format!(
+                    "expected a node count or a list of names, found {}",
+                    other.type_str()
+                ),
+            )),
+        }
+    }
 
-        // Clock and bit timing.
+    /// The clock (1 Hz to [`MAX_CLOCK_HZ`]) and the bit timing: `bitrate`, solved
+    /// for the clock, or a `[timing]` table, not both.
+    fn clock_and_timing(&self, raw: &RawScenario) -> Result<(u64, BitTiming), ScenarioError> {
         let clock_hz = *raw.clock_hz.get_ref();
         if clock_hz == 0 {
             return Err(self.err(raw.clock_hz.span(), "clock_hz", "must be at least 1 Hz"));
@@ -214,28 +213,32 @@ impl Loader<'_> {
             ));
         }
         let timing = match (&raw.bitrate, &raw.timing) {
-            (Some(_), Some(t)) => {
-                return Err(self.err(
-                    t.span(),
-                    "timing",
-                    "give either `bitrate` or a [timing] table, not both",
-                ))
+            (Some(_), Some(t)) => Err(self.err(
+                t.span(),
+                "timing",
+                "give either `bitrate` or a [timing] table, not both",
+            )),
+            (None, None) => Err(ScenarioError {
+                file: self.file.to_string(),
+                line: None,
+                field: Some("bitrate".to_string()),
+                message: "missing: give `bitrate` (bit/s) or a [timing] table".to_string(),
+            }),
+            (Some(b), None) => {
+                bitrate::solve(clock_hz, *b.get_ref()).map_err(|e| self.err(b.span(), "bitrate", e))
             }
-            (None, None) => {
-                return Err(ScenarioError {
-                    file: self.file.to_string(),
-                    line: None,
-                    field: Some("bitrate".to_string()),
-                    message: "missing: give `bitrate` (bit/s) or a [timing] table".to_string(),
-                })
-            }
-            (Some(b), None) => bitrate::solve(clock_hz, *b.get_ref())
-                .map_err(|e| self.err(b.span(), "bitrate", e))?,
-            (None, Some(t)) => self.timing(t.get_ref(), t.span())?,
+            (None, Some(t)) => self.timing(t.get_ref(), t.span()),
         };
-        let cpb = timing.clocks_per_bit() as u64;
+        Ok((clock_hz, timing?))
+    }
 
-        // Controller configuration: scenario keys, then per-node overrides.
+    /// Each node's controller configuration: the scenario's keys, then its
+    /// `[[node_config]]` overrides (at most one entry per node).
+    fn configs(
+        &self,
+        raw: &RawScenario,
+        names: &[String],
+    ) -> Result<Vec<ControllerConfig>, ScenarioError> {
         let base = self.config(
             ControllerConfig::default(),
             &raw.mode,
@@ -248,7 +251,7 @@ impl Loader<'_> {
         for (i, nc) in raw.node_config.iter().enumerate() {
             let nc = nc.get_ref();
             let field = format!("node_config[{i}]");
-            let node = self.node_ref(&nc.node, &names, &format!("{field}.node"))?;
+            let node = self.node_ref(&nc.node, names, &format!("{field}.node"))?;
             if configured.contains(&node) {
                 return Err(self.err(
                     nc.node.span(),
@@ -265,21 +268,24 @@ impl Loader<'_> {
                 &format!("{field}."),
             )?;
         }
+        Ok(configs)
+    }
 
-        // Frames.
-        let mut frames = Vec::new();
-        for (i, sf) in raw.frame.iter().enumerate() {
-            frames.push(self.frame(i, sf, &names, cpb)?);
-        }
-
-        // Expectations.
-        let expect = match &raw.expect {
+    /// The `[[expect]]` entries (at most one per node, each frame listed once and
+    /// existing among the file's `frames`), or every frame to every other node.
+    fn expectations(
+        &self,
+        raw: &RawScenario,
+        names: &[String],
+        frames: usize,
+    ) -> Result<Expectations, ScenarioError> {
+        Ok(match &raw.expect {
             None => Expectations::EveryFrameToEveryOtherNode,
             Some(list) => {
                 let mut v: Vec<NodeExpectation> = Vec::new();
                 for (i, e) in list.iter().enumerate() {
                     let e = e.get_ref();
-                    let node = self.node_ref(&e.node, &names, &format!("expect[{i}].node"))?;
+                    let node = self.node_ref(&e.node, names, &format!("expect[{i}].node"))?;
                     if v.iter().any(|x| x.node == node) {
                         return Err(self.err(
                             e.node.span(),
@@ -305,13 +311,13 @@ impl Loader<'_> {
                                     ),
                                 ));
                             }
-                            if let Some(bad) = l.get_ref().iter().find(|&&k| k >= frames.len()) {
+                            if let Some(bad) = l.get_ref().iter().find(|&&k| k >= frames) {
                                 return Err(self.err(
                                     l.span(),
                                     &format!("expect[{i}].{what}"),
                                     format!(
                                         "frame {bad} does not exist: the file has {} frame(s), numbered from 0 in file order",
-                                        frames.len()
+                                        frames
                                     ),
                                 ));
                             }
@@ -330,8 +336,59 @@ impl Loader<'_> {
                 }
                 Expectations::Explicit(v)
             }
-        };
+        })
+    }
 
+    /// The run's length in clock cycles: at most one of `max_cycles`, `max_bits`
+    /// (times `cpb`) and `max_ms`, else long enough for every frame.
+    fn max_cycles(
+        &self,
+        raw: &RawScenario,
+        frames: &[ScheduledFrame],
+        clock_hz: u64,
+        cpb: u64,
+    ) -> Result<u64, ScenarioError> {
+        let mut limits: Vec<(Range<usize>, &str)> = [
+            raw.max_cycles.as_ref().map(|s| (s.span(), "max_cycles")),
+            raw.max_bits.as_ref().map(|s| (s.span(), "max_bits")),
+            raw.max_ms.as_ref().map(|s| (s.span(), "max_ms")),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        limits.sort_by_key(|(sp, _)| sp.start);
+        if let Some((span, name)) = limits.get(1) {
+            return Err(self.err(
+                span.clone(),
+                name,
+                "give at most one of `max_cycles`, `max_bits`, `max_ms`",
+            ));
+        }
+        Ok(if let Some(c) = &raw.max_cycles {
+            *c.get_ref()
+        } else if let Some(b) = &raw.max_bits {
+            b.get_ref().saturating_mul(cpb)
+        } else if let Some(ms) = &raw.max_ms {
+            let v = *ms.get_ref();
+            if !(v.is_finite() && v > 0.0) {
+                return Err(self.err(ms.span(), "max_ms", "must be a positive number"));
+            }
+            (v * clock_hz as f64 / 1000.0).ceil() as u64
+        } else {
+            Scenario::default_max_cycles(&frames, cpb)
+        })
+    }
+
+    pub(super) fn resolve(&self, raw: RawScenario) -> Result<Scenario, ScenarioError> {
+        let names = self.node_names(&raw)?;
+        let (clock_hz, timing) = self.clock_and_timing(&raw)?;
+        let cpb = timing.clocks_per_bit() as u64;
+        let configs = self.configs(&raw, &names)?;
+        let mut frames = Vec::new();
+        for (i, sf) in raw.frame.iter().enumerate() {
+            frames.push(self.frame(i, sf, &names, cpb)?);
+        }
+        let expect = self.expectations(&raw, &names, frames.len())?;
         // Faults.
         let mut faults = Vec::new();
         for (i, f) in raw.fault.iter().enumerate() {
@@ -349,36 +406,7 @@ impl Loader<'_> {
             });
         }
 
-        // Limits.
-        let mut limits: Vec<(Range<usize>, &str)> = [
-            raw.max_cycles.as_ref().map(|s| (s.span(), "max_cycles")),
-            raw.max_bits.as_ref().map(|s| (s.span(), "max_bits")),
-            raw.max_ms.as_ref().map(|s| (s.span(), "max_ms")),
-        ]
-        .into_iter()
-        .flatten()
-        .collect();
-        limits.sort_by_key(|(sp, _)| sp.start);
-        if let Some((span, name)) = limits.get(1) {
-            return Err(self.err(
-                span.clone(),
-                name,
-                "give at most one of `max_cycles`, `max_bits`, `max_ms`",
-            ));
-        }
-        let max_cycles = if let Some(c) = &raw.max_cycles {
-            *c.get_ref()
-        } else if let Some(b) = &raw.max_bits {
-            b.get_ref().saturating_mul(cpb)
-        } else if let Some(ms) = &raw.max_ms {
-            let v = *ms.get_ref();
-            if !(v.is_finite() && v > 0.0) {
-                return Err(self.err(ms.span(), "max_ms", "must be a positive number"));
-            }
-            (v * clock_hz as f64 / 1000.0).ceil() as u64
-        } else {
-            Scenario::default_max_cycles(&frames, cpb)
-        };
+        let max_cycles = self.max_cycles(&raw, &frames, clock_hz, cpb)?;
         self.within_run(&raw, &frames, &faults, &aborts, max_cycles)?;
         let reset_cycles = match &raw.reset_cycles {
             Some(r) if (1..=1000).contains(r.get_ref()) => *r.get_ref(),

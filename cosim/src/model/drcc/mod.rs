@@ -88,6 +88,7 @@
 pub mod aux_fsm;
 pub mod dmr;
 pub mod ecss;
+mod edge;
 pub mod features;
 mod host;
 pub mod main_fsm;
@@ -100,17 +101,17 @@ pub mod tx_queues;
 
 use crate::engine::drcc::{DrccInputs, DrccOutputs, DrccProbes};
 use crate::engine::{BitTiming, ChannelInputs, ChannelOutputs, ControllerConfig, Mode};
-use crate::model::{coverage, field, ChannelModel};
-use aux_fsm::{AuxFsm, AuxInputs};
-use dmr::{DmrBlock, DmrInputs};
+use crate::model::ChannelModel;
+use aux_fsm::AuxFsm;
+use dmr::DmrBlock;
 pub use host::{HostDrive, HostEvents, NativeAccess};
-use main_fsm::{FsmInputs, MainFsm};
+use main_fsm::MainFsm;
 pub use params::DrccParams;
 use register_file::Regs;
 use regs::dmr as dmr_regs;
 use regs::*;
-use rx_path::{RxInputs, RxPath, RxSizes};
-use tx_queues::{TxQueues, TxqInputs};
+use rx_path::{RxPath, RxSizes};
+use tx_queues::TxQueues;
 
 /// The DRCC top, simulated clock by clock.
 #[derive(Clone, Debug)]
@@ -266,284 +267,6 @@ impl DrccModel {
         self.chan[1].clock(&cb);
         self.out = [self.chan[0].outputs(), self.chan[1].outputs()];
         self.outputs()
-    }
-
-    /// Every DRCC register at a non-reset edge (the channels are stepped after).
-    fn edge(&mut self, i: &DrccInputs) {
-        let r = self.r;
-        let [pa, pb] = &self.out;
-        let reset_mode = r.reset_mode();
-        let redundancy = r.redundancy();
-        let dmr_mode = r.dmr();
-        let running = redundancy && !reset_mode;
-
-        // Nominal bit tick (§4.3).
-        let tpb1 = r.tq_per_bit() - 1;
-        let tq_wrap = r.tq_cnt == r.brp();
-        let tick = tq_wrap && r.bit_cnt == tpb1;
-        let mut n = r;
-        n.reset_mode_q = reset_mode;
-        if reset_mode {
-            n.tq_cnt = 0;
-            n.bit_cnt = 0;
-        } else if tq_wrap {
-            n.tq_cnt = 0;
-            n.bit_cnt = if r.bit_cnt == tpb1 { 0 } else { r.bit_cnt + 1 };
-        } else {
-            n.tq_cnt = r.tq_cnt + 1;
-        }
-
-        // Wishbone (§2, §3, §9, §11).
-        let mut acc = self.access(i, &mut n);
-        if let Some(h) = &self.host {
-            acc.push = h.push;
-            acc.pop = h.pop;
-        }
-        let mut ints = acc.ints;
-        let (take, w1c, push, pop, abort) = (acc.take, acc.w1c, acc.push, acc.pop, acc.abort);
-        // Echo (§4.4): in a star node, a channel's reception of the attempted head
-        // message (the TX RAM read data) is the node's own frame heard through the
-        // other hub.
-        let star_on = running && r.star() && self.fsm.attempted;
-        let echo = [pa, pb].map(|o| star_on && o.rx_valid && o.rx_frame == self.txq.rd);
-        // The hubs' identification frames (§4.5).
-        let (hubf, domain) = self.star.edge(
-            running && r.star(),
-            [pa.rx_valid, pb.rx_valid],
-            [&pa.rx_frame, &pb.rx_frame],
-        );
-        if domain {
-            coverage::hit("drcc star: the hubs' decision changes the domain");
-            ints |= int::DOMAIN;
-        }
-        if reset_mode {
-            self.star = star::StarFollow::default();
-        }
-
-        // ECSS bus selection (§12.2), on pre-edge values.
-        let ecss_on = redundancy && r.ecss.cfg.enable() && !reset_mode;
-        let toggle = n.ecss.sel.edge(
-            &r.ecss.cfg,
-            ecss_on,
-            tick,
-            [pa.rx_valid, pb.rx_valid],
-            [&pa.rx_frame, &pb.rx_frame],
-        );
-        if toggle {
-            coverage::hit("drcc ecss: the bus selection toggles or gives up");
-            ints |= int::BUS_TOGGLE;
-        }
-
-        // Main FSM (§4), on pre-edge values of the aux FSMs (or the ECSS
-        // selection, §12.2) and TX queue A.
-        let (va, vb) = r.ecss.validity(redundancy).unwrap_or((
-            self.aux[0].state == aux::VALID,
-            self.aux[1].state == aux::VALID,
-        ));
-        let fsm_in = FsmInputs {
-            running,
-            q: self.txq.count[0] > 0,
-            va,
-            vb,
-            // §4.4/§4.5: a star node sends the copy only after the hubs split.
-            dual_tx: r.dual_tx() && (!r.star() || self.star.split),
-            tick,
-            pending_a: pa.tx_pending,
-            done_a: pa.tx_done,
-            failed_a: pa.tx_failed,
-            pending_b: pb.tx_pending,
-            done_b: pb.tx_done,
-            failed_b: pb.tx_failed,
-            echo_a: echo[0],
-            echo_b: echo[1],
-        };
-        let in_use = [self.fsm.uses_a(), self.fsm.uses_b()];
-        let fev = self.fsm.edge(&fsm_in);
-        if fev.tx_success {
-            ints |= int::TX_DONE;
-        }
-        if fev.tx_failure {
-            ints |= int::TX_FAILURE;
-        }
-        if fev.switch {
-            ints |= int::SWITCH;
-        }
-
-        // Aux FSMs (§5). A channel is restarted only at bus idle, B only while A is
-        // valid (pre-edge state).
-        let a_valid = self.aux[0].state == aux::VALID;
-        for (c, o) in [pa, pb].into_iter().enumerate() {
-            let aev = self.aux[c].edge(&AuxInputs {
-                // P-CORE-3: behind a host view only the channel's reset holds
-                // its aux FSM, which so keeps judging through a bus-off hold
-                running: redundancy && self.host.as_ref().map_or(!reset_mode, |h| !h.chan_reset[c]),
-                policy: r.policy(),
-                k: r.k(),
-                stall_limit: (r.rmb >> 16) as u16,
-                recovery_bits: r.rmb as u16,
-                tick,
-                in_use: in_use[c],
-                restart_ok: o.probes.field == field::IDLE && (c == 0 || a_valid),
-                tx_pending: o.tx_pending,
-                tx_done: o.tx_done,
-                rx_valid: o.rx_valid,
-                err_valid: o.diag.err_valid,
-                err_tx: o.diag.err_tx,
-                err_state: o.probes.err_state,
-                err_warning: o.diag.err_warning,
-                sample_point: o.probes.sample_point,
-            });
-            if aev.int {
-                ints |= int::AUX;
-            }
-            if aev.recovered {
-                n.recoveries = n.recoveries.saturating_add(1);
-            }
-        }
-
-        // DMR block (dmr_contract.md §3-§7), on pre-edge channel outputs and queue.
-        let dmr_off = self.dmr.off[self.txq.rd_sel as usize & 1];
-        let acl_q = self.dmr.acl;
-        let dev = self.dmr.edge(&DmrInputs {
-            running: dmr_mode && !reset_mode,
-            tick,
-            reset_mode_q: r.reset_mode_q,
-            done: [pa.tx_done, pb.tx_done],
-            failed: [pa.tx_failed, pb.tx_failed],
-            rx_valid: [pa.rx_valid, pb.rx_valid],
-            rx_frame: [pa.rx_frame, pb.rx_frame],
-            err_state: [pa.probes.err_state, pb.probes.err_state],
-            q_count: self.txq.count[0],
-            rd: self.txq.rd,
-            rd_sel: self.txq.rd_sel,
-        });
-        if let Some((adr, d)) = acc.dmr_write {
-            // §1.1: without the DMR function its registers take no write.
-            if !self.params.dmr || self.dmr.write(adr, d, reset_mode) != Some(true) {
-                ints |= int::ILLEGAL;
-            }
-        }
-        if dev.tx_done {
-            ints |= int::TX_DONE;
-        }
-        if dev.int {
-            ints |= int::DMR;
-        }
-
-        // TX queues (§6).
-        let tev = self.txq.edge(&TxqInputs {
-            reset_mode,
-            redundancy,
-            dmr: dmr_mode.then_some((dmr_off, dev.pop)),
-            push,
-            abort,
-            fsm_pop: fev.pop,
-            done: [pa.tx_done, pb.tx_done],
-            failed: [pa.tx_failed, pb.tx_failed],
-        });
-        if tev.push_refused {
-            ints |= int::ILLEGAL;
-        }
-        // §11.6: the host's permission, taken and kept only while bus-off; a
-        // write refused for any reason (here: its push, §6) takes none.
-        for (c, o) in [pa, pb].into_iter().enumerate() {
-            let w = acc.recover[c] && !tev.push_refused;
-            n.recover[c] = o.probes.err_state == 2 && (r.recover[c] || w);
-        }
-        if tev.tx_done {
-            ints |= int::TX_DONE;
-        }
-        if tev.tx_failure {
-            ints |= int::TX_FAILURE;
-        }
-
-        // RX FIFO and duplicate removal (§7), the filters at its write port (§11.1).
-        let rev = self.rx.edge_filtered(
-            &RxInputs {
-                reset_mode,
-                dedup_on: (redundancy || dmr_mode) && r.window() != 0,
-                dmr: dmr_mode,
-                first_copy: r.first_copy(),
-                acl: acl_q,
-                release_set: dev.acl_switch,
-                window: r.window(),
-                tick,
-                pop,
-                // DMR §7: CS frames never reach the RX path.
-                rx_valid: if dmr_mode && !reset_mode {
-                    dev.rx_deliver
-                } else {
-                    // An echo is the node's own frame, not a reception (§4.4); an
-                    // identification frame is the hubs' (§4.5).
-                    [
-                        pa.rx_valid && !echo[0] && !hubf[0],
-                        pb.rx_valid && !echo[1] && !hubf[1],
-                    ]
-                },
-            },
-            [&pa.rx_frame, &pb.rx_frame],
-            &r.filt,
-        );
-        if rev.pop_refused {
-            ints |= int::ILLEGAL;
-        }
-        if rev.rx {
-            ints |= int::RX;
-        }
-        if rev.overrun {
-            ints |= int::OVERRUN;
-        }
-
-        // Interrupts (§8).
-        let es = [pa.probes.err_state, pb.probes.err_state];
-        if es != r.err_q {
-            ints |= int::ERR_STATE;
-        }
-        n.err_q = es;
-        // §10.2: the driver's events and the captures, the same in every mode.
-        let warn = [pa.diag.err_warning, pb.diag.err_warning];
-        if warn != r.warn_q {
-            ints |= int::ERR_WARNING;
-        }
-        n.warn_q = warn;
-        if pa.arb_lost || pb.arb_lost {
-            ints |= int::ARB_LOST;
-        }
-        if pa.diag.err_valid || pb.diag.err_valid {
-            ints |= int::BUS_ERROR;
-        }
-        // §11.3: which channel completed or dropped its frame, in every mode.
-        ints |= features::tx_channel_events(pa, pb);
-        // Re-arm: the acknowledgement of the interrupt (an INT_STATUS write that
-        // took effect) clears both channels' valid bits; a capture at this edge wins.
-        // A host view's window re-arms one channel's (PeliCAN P-X-3).
-        let (rearm_err, rearm_alc) = (w1c & int::BUS_ERROR != 0, w1c & int::ARB_LOST != 0);
-        let view = self.host.map_or([false; 2], |h| h.cap_rearm);
-        n.cap = [
-            r.cap[0].edge(pa, rearm_err || view[0], rearm_alc || view[0]),
-            r.cap[1].edge(pb, rearm_err || view[1], rearm_alc || view[1]),
-        ];
-        // Every `illegal` comes from the access taken at this edge (§9).
-        let refused = take && ints & int::ILLEGAL != 0;
-        n.wb_ack = take && !refused;
-        n.wb_err = refused;
-        if refused {
-            n.wb_dat = 0;
-        }
-        self.host_ev = HostEvents {
-            ints,
-            tx_success: fev.tx_success,
-            stored: rev.rx,
-            overrun: rev.overrun,
-            dmr_tx_done: dev.tx_done,
-        };
-        n.int_status = (r.int_status & !w1c) | ints;
-        n.irq = r.int_status & r.int_enable != 0;
-        self.r = n;
-        // §11.4: the clear wins over every count's event at this edge.
-        if acc.stats_clr {
-            self.clear_statistics();
-        }
     }
 
     /// The outputs after the last edge.

@@ -5,6 +5,8 @@
 //! frames of the passive line wait in the history (`hd` = 0) and are released,
 //! oldest first, at an ACL switch (states `RSCAN`, `FETCH`, `RELEASE`).
 
+mod writer;
+
 use super::features::Filters;
 use crate::frame::Frame;
 use crate::model::coverage;
@@ -247,36 +249,80 @@ impl RxPath {
         self.rd = self.ram[c.head as usize];
         self.rd_ts = self.ts[c.head as usize];
         self.hist_rd = self.hist[self.hist_addr(c.w_state, c.scan_i, c.rel_e)];
-        let (depth, hist_size) = (self.sizes.fifo_depth, self.sizes.history);
+        let depth = self.sizes.fifo_depth;
         ev.pop_refused = i.pop && c.count == 0;
         self.rx_ready = !i.reset_mode && c.count != 0;
         if i.reset_mode {
-            self.head = 0;
-            self.count = 0;
-            self.rxp = [false; 2];
-            self.w_state = W_IDLE;
-            self.sel = 0;
-            self.scan_i = 0;
-            self.hit = false;
-            self.hit_e = 0;
-            self.hv = 0;
-            self.hu = 0;
-            self.free_found = false;
-            self.free_e = 0;
-            self.hist_ptr = 0;
-            self.hist_idle = 0;
-            self.now = 0;
-            self.hd = 0;
-            self.release = false;
-            self.rel_found = false;
-            self.rel_e = 0;
-            self.rel_age = 0;
-            self.w_fifo = false;
-            self.w_hist = false;
-            self.w_pcl = false;
-            self.s_pend = None;
+            self.clear_in_reset_mode();
             return ev;
         }
+        self.count_and_receive(i, &c, rx_frame, s_pend, offer);
+        // DMR §8.1: with first-copy delivery and a history the writer follows
+        // §D.7; without a history it keeps the ACL rule.
+        let acl_rule = i.dmr && !(i.first_copy && i.dedup_on);
+        let mut pushed = false;
+        match c.w_state {
+            W_IDLE => self.writer_idle(i, &c, acl_rule, s_pend, offer),
+            W_SCAN => self.writer_scan(i, &c, acl_rule),
+            W_DECIDE if acl_rule => self.writer_decide_acl(i, &c),
+            W_DECIDE => self.writer_decide(i, &c),
+            W_RSCAN => self.writer_rscan(i, &c, acl_rule),
+            W_FETCH => self.w_state = W_RELEASE,
+            W_RELEASE => pushed = self.writer_release(i, &c, filt, &mut ev),
+            _ => pushed = self.writer_write(&c, s_frame, acl_rule, filt, &mut ev),
+        }
+        if i.release_set {
+            self.release = true;
+        }
+        let popped = i.pop && c.count > 0;
+        if popped {
+            self.head = (c.head + 1) & (depth - 1);
+        }
+        self.count = c.count + pushed as u8 - popped as u8;
+        ev
+    }
+
+    /// Reset mode, a synchronous clear: the FIFO, the writer FSM, the history's
+    /// flags and pointer, `rxp`, source S and the `now` / `hist_idle` counters
+    /// are held cleared; the RAMs, the last frames and the statistics are kept.
+    fn clear_in_reset_mode(&mut self) {
+        self.head = 0;
+        self.count = 0;
+        self.rxp = [false; 2];
+        self.w_state = W_IDLE;
+        self.sel = 0;
+        self.scan_i = 0;
+        self.hit = false;
+        self.hit_e = 0;
+        self.hv = 0;
+        self.hu = 0;
+        self.free_found = false;
+        self.free_e = 0;
+        self.hist_ptr = 0;
+        self.hist_idle = 0;
+        self.now = 0;
+        self.hd = 0;
+        self.release = false;
+        self.rel_found = false;
+        self.rel_e = 0;
+        self.rel_age = 0;
+        self.w_fifo = false;
+        self.w_hist = false;
+        self.w_pcl = false;
+        self.s_pend = None;
+    }
+
+    /// The tick counters `now` and `hist_idle` (a `hist_idle` saturated before
+    /// the edge drops every history entry), and the receptions of this edge:
+    /// the pending flags `rxp`, source S's offer and each channel's last frame.
+    fn count_and_receive(
+        &mut self,
+        i: &RxInputs,
+        c: &RxRegs,
+        rx_frame: [&Frame; 2],
+        s_pend: Option<Frame>,
+        offer: Option<Frame>,
+    ) {
         if i.tick {
             self.now = c.now.wrapping_add(1);
             self.hist_idle = (c.hist_idle + 1).min(HIST_IDLE_MAX);
@@ -292,214 +338,6 @@ impl RxPath {
                 self.rxf[s] = **f;
             }
         }
-        // DMR §8.1: with first-copy delivery and a history the writer follows
-        // §D.7; without a history it keeps the ACL rule.
-        let acl_rule = i.dmr && !(i.first_copy && i.dedup_on);
-        // Expiry of a history entry; under the ACL rule an undelivered, unmatched
-        // one counts in `expired` (§8).
-        let expire = |s: &mut Self, bit: u32| {
-            s.hv &= !bit;
-            if acl_rule && c.hu & bit == 0 && c.hd & bit == 0 {
-                s.expired = c.expired.saturating_add(1);
-            }
-        };
-        let mut pushed = false;
-        match c.w_state {
-            W_IDLE => {
-                if c.rxp[0] || c.rxp[1] {
-                    let s = if c.rxp[0] { 0 } else { 1 };
-                    self.sel = s as u8;
-                    // A new rx_valid at this edge sets it again (set wins).
-                    self.rxp[s] = i.rx_valid[s];
-                    self.hist_idle = 0;
-                    self.w_state = if i.dedup_on {
-                        W_SCAN
-                    } else if acl_rule {
-                        W_DECIDE
-                    } else {
-                        W_WRITE
-                    };
-                    // Outside DMR mode every frame goes to the FIFO (§D.7).
-                    self.w_fifo = true;
-                    self.w_hist = i.dedup_on;
-                    self.scan_i = 0;
-                    self.hit = false;
-                    self.free_found = false;
-                } else if let Some(f) = s_pend {
-                    // P-CORE-4: source S after A and B, written without the
-                    // scan and without a history entry.
-                    self.sel = 2;
-                    self.s_frame = f;
-                    self.s_pend = offer;
-                    self.w_state = W_WRITE;
-                    self.w_fifo = true;
-                    self.w_hist = false;
-                } else if acl_rule && c.release && i.dedup_on {
-                    self.w_state = W_RSCAN;
-                    self.scan_i = 0;
-                    self.rel_found = false;
-                }
-            }
-            W_SCAN => {
-                if c.scan_i >= 1 {
-                    let e = c.scan_i - 1;
-                    let bit = 1u32 << e;
-                    let entry = c.hist_rd;
-                    let age = c.now.wrapping_sub(entry.ts);
-                    let live = c.hv & bit != 0;
-                    if (!live || c.hu & bit != 0 || age > i.window) && !c.free_found {
-                        self.free_found = true;
-                        self.free_e = e;
-                    }
-                    if c.hv & bit != 0 && age > i.window {
-                        if !acl_rule && c.hu & bit == 0 {
-                            // Only channel ch delivered it: an omission of the other.
-                            let miss = 1 - (entry.ch as usize & 1);
-                            self.omissions[miss] = c.omissions[miss].saturating_add(1);
-                            coverage::hit("rx: an omission (history entry expired unmatched)");
-                        }
-                        expire(self, bit);
-                    } else if c.hv & bit != 0
-                        && c.hu & bit == 0
-                        && entry.ch != c.sel
-                        && entry.frame == c.rxf[c.sel as usize]
-                        && !c.hit
-                    {
-                        self.hit = true;
-                        self.hit_e = e;
-                    }
-                }
-                self.scan_i = c.scan_i + 1;
-                if c.scan_i == hist_size {
-                    self.w_state = W_DECIDE;
-                }
-            }
-            W_DECIDE if acl_rule => {
-                // §8 the ACL rule.
-                let pcl = c.sel != i.acl;
-                if pcl {
-                    self.pcl_frames = c.pcl_frames.saturating_add(1);
-                }
-                self.w_pcl = pcl;
-                if c.hit {
-                    let bit = 1u32 << c.hit_e;
-                    // Interpretation: a PCL copy of a frame still waiting on the
-                    // ACL (recorded before the switch, not yet released) leaves the
-                    // entry for the release, or that frame would be lost.
-                    if !(pcl && c.hd & bit == 0) {
-                        self.hu |= bit;
-                    }
-                    if c.hd & bit == 0 && !pcl {
-                        // The PCL copy came first and waited: delivered now.
-                        self.w_fifo = true;
-                        self.w_hist = false;
-                        self.w_state = W_WRITE;
-                    } else {
-                        self.duplicates = c.duplicates.saturating_add(1);
-                        self.w_state = W_IDLE;
-                    }
-                } else {
-                    self.w_fifo = !pcl;
-                    self.w_hist = i.dedup_on;
-                    self.w_state = W_WRITE;
-                }
-            }
-            W_DECIDE => {
-                // §8.1: the frames of the passive line are still counted.
-                if i.dmr && c.sel != i.acl {
-                    self.pcl_frames = c.pcl_frames.saturating_add(1);
-                }
-                if c.hit {
-                    self.hu |= 1 << c.hit_e;
-                    self.duplicates = c.duplicates.saturating_add(1);
-                    self.w_state = W_IDLE;
-                } else {
-                    self.w_state = W_WRITE;
-                }
-            }
-            W_RSCAN => {
-                if c.scan_i >= 1 {
-                    let e = c.scan_i - 1;
-                    let bit = 1u32 << e;
-                    let entry = c.hist_rd;
-                    let age = c.now.wrapping_sub(entry.ts);
-                    if c.hv & bit != 0 && age > i.window {
-                        expire(self, bit);
-                    } else if c.hv & bit != 0
-                        && c.hu & bit == 0
-                        && c.hd & bit == 0
-                        && entry.ch == i.acl
-                        && (!c.rel_found || age > c.rel_age)
-                    {
-                        // The oldest waiting frame of the new ACL.
-                        self.rel_found = true;
-                        self.rel_e = e;
-                        self.rel_age = age;
-                    }
-                }
-                self.scan_i = c.scan_i + 1;
-                if c.scan_i == hist_size {
-                    // Interpretation: entry H - 1, judged at this edge, counts.
-                    if self.rel_found {
-                        self.w_state = W_FETCH;
-                    } else {
-                        self.release = false;
-                        self.w_state = W_IDLE;
-                    }
-                }
-            }
-            W_FETCH => self.w_state = W_RELEASE,
-            W_RELEASE => {
-                let frame = c.hist_rd.frame;
-                pushed = self.fifo_write(&c, &frame, i.acl, filt, &mut ev);
-                self.hd |= 1 << c.rel_e;
-                self.released = c.released.saturating_add(1);
-                self.w_state = W_IDLE;
-            }
-            _ => {
-                let frame = if c.sel == 2 {
-                    s_frame
-                } else {
-                    c.rxf[c.sel as usize]
-                };
-                // A PCL frame (!w_fifo) waits in the history (§8).
-                if c.w_fifo {
-                    pushed = self.fifo_write(&c, &frame, c.sel, filt, &mut ev);
-                }
-                if c.w_hist {
-                    let p = if c.free_found {
-                        c.free_e
-                    } else {
-                        c.hist_ptr & (hist_size - 1)
-                    };
-                    self.hist[p as usize] = HistEntry {
-                        frame,
-                        ch: c.sel,
-                        ts: c.now,
-                    };
-                    self.hv |= 1 << p;
-                    self.hu &= !(1 << p);
-                    if c.w_pcl && acl_rule {
-                        self.hd &= !(1 << p);
-                    } else {
-                        self.hd |= 1 << p;
-                    }
-                    if !c.free_found {
-                        self.hist_ptr = (p + 1) & (hist_size - 1);
-                    }
-                }
-                self.w_state = W_IDLE;
-            }
-        }
-        if i.release_set {
-            self.release = true;
-        }
-        let popped = i.pop && c.count > 0;
-        if popped {
-            self.head = (c.head + 1) & (depth - 1);
-        }
-        self.count = c.count + pushed as u8 - popped as u8;
-        ev
     }
 
     /// The small registers before the edge (everything but the RAMs).

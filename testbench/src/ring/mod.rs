@@ -6,6 +6,7 @@
 //! microsecond and the hosts' clocks (`now_us`) are the cycle count.
 
 pub mod app;
+mod hosts;
 mod judge;
 pub mod lockstep;
 pub mod post;
@@ -13,19 +14,17 @@ pub mod table;
 
 use crate::dual::drcc_engine;
 use crate::engines::EngineKind;
-use app::{AppTraffic, RingState};
-use cankingdom::king::{ExpectedCity, KingPhase, Membership};
-use cankingdom::king_pages::Action;
-use cankingdom::{Envelope, King, KingConfig, Mayor, MayorConfig};
+use app::AppTraffic;
 use drcc_cosim::engine::drcc::DrccEngine;
 use drcc_cosim::engine::rcm::{rcm_engine, RcmEngine};
 use drcc_cosim::host::{HostConfig, Policy};
 use drcc_cosim::ring::{NodeFault, RingSystem, SectionFaults, Shape};
 use drcc_cosim::Frame;
+use hosts::{host_apps, Hosts};
 use judge::judge;
-use post::{ring_btr, CkFrame, DrccPost, PostState};
-use redcan::central::{self, CentralTiming, Master, Slave, BASE};
-use redcan::distributed::{DistNode, DistTiming};
+use post::{ring_btr, DrccPost, PostState};
+use redcan::central::CentralTiming;
+use redcan::distributed::DistTiming;
 
 /// Clocks per bit (125 kbit/s at 1 MHz).
 pub const CLOCKS_PER_BIT: u64 = 8;
@@ -139,61 +138,9 @@ impl RingScenario {
     }
 }
 
-/// The Capital's King behind one object type (its City count is a const generic).
-trait Capital {
-    fn poll(&mut self, now: u64, post: &mut DrccPost, other: &mut dyn FnMut(&CkFrame));
-    fn phase(&self) -> KingPhase;
-    fn membership(&self) -> Membership;
-}
-
-impl<const N: usize> Capital for King<N> {
-    fn poll(&mut self, now: u64, post: &mut DrccPost, other: &mut dyn FnMut(&CkFrame)) {
-        self.poll_with(now, post, |f| other(f));
-    }
-    fn phase(&self) -> KingPhase {
-        King::phase(self)
-    }
-    fn membership(&self) -> Membership {
-        King::membership(self)
-    }
-}
-
-fn capital(cities: &[ExpectedCity]) -> Result<Box<dyn Capital>, String> {
-    let base = Envelope::standard(BASE).expect("an 11-bit base");
-    macro_rules! kings {
-        ($($n:literal)*) => {
-            match cities.len() {
-                $($n => {
-                    let c: [ExpectedCity; $n] = cities.try_into().expect("length checked");
-                    Ok(Box::new(King::<$n>::new(KingConfig::new(c, base)).map_err(|e| format!("{e:?}"))?))
-                })*
-                n => Err(format!("a kingdom of {n} Cities: the ring runs 2..=40")),
-            }
-        };
-    }
-    kings!(2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32 33 34 35 36 37 38 39 40)
-}
-
 /// The EAN a City reports (40 bits; the test Kingdom's product numbers).
 pub fn ean_of(address: u8) -> u64 {
     0x00_4711_0000 + address as u64
-}
-
-/// One node's software.
-enum App {
-    /// Ring node 0: the King, then the REDCAN master.
-    King {
-        king: Box<dyn Capital>,
-        master: Option<Master<CkFrame>>,
-        dist: Option<DistNode<CkFrame>>,
-    },
-    /// A City: its Mayor, and on a ring node the REDCAN slave.
-    City {
-        mayor: Box<Mayor>,
-        slave: Option<Slave>,
-        dist: Option<DistNode<CkFrame>>,
-        ring: bool,
-    },
 }
 
 /// What a run showed.
@@ -288,35 +235,18 @@ pub fn run_observed(
             return Err(format!("ring node {node}: the ring has ring nodes 0..{n}"));
         }
     }
-    let cities: Vec<ExpectedCity> = (1..total)
-        .map(|i| ExpectedCity {
-            address: i as u8,
-            ean: ean_of(i as u8),
-        })
-        .collect();
-    let mut timing = CentralTiming::paper(s.relay_us);
-    timing.plain_silence = s.app_period_us * 5 / 2;
-    let mut dist_timing = DistTiming::standard(s.relay_us);
-    dist_timing.plain_silence = dist_timing.plain_silence_for(s.app_period_us);
-    let mut apps: Vec<App> = Vec::with_capacity(total);
-    apps.push(App::King {
-        king: capital(&cities)?,
-        master: None,
-        dist: None,
-    });
-    for i in 1..total {
-        let mut cfg = MayorConfig::new(i as u8, ean_of(i as u8), 1000 + i as u64);
-        cfg.king_envelope = Envelope::standard(central::KING_ENVELOPE).expect("0");
-        if i < n {
-            cfg.groups[0] = central::RING_GROUP;
-        }
-        apps.push(App::City {
-            mayor: Box::new(Mayor::new(cfg).map_err(|e| format!("{e:?}"))?),
-            slave: None,
-            dist: None,
-            ring: i < n,
-        });
-    }
+    let mut central = CentralTiming::paper(s.relay_us);
+    central.plain_silence = s.app_period_us * 5 / 2;
+    let mut dist = DistTiming::standard(s.relay_us);
+    dist.plain_silence = dist.plain_silence_for(s.app_period_us);
+    let hosts = Hosts {
+        algorithm: s.algorithm,
+        n,
+        total,
+        central,
+        dist,
+    };
+    let mut apps = host_apps(&hosts)?;
     let mut posts: Vec<PostState> = (0..total).map(|_| PostState::new(config)).collect();
     let mut report = RingReport {
         onset,
@@ -331,10 +261,10 @@ pub fn run_observed(
         .collect();
     // Distributed: held frames resent from the horizon, one per 2 Ta; the
     // centralized algorithm keeps the seed's behaviour (`app`).
-    let horizon = dist_timing.resend_horizon();
+    let horizon = hosts.dist.resend_horizon();
     let mut traffic: Vec<AppTraffic> = (0..total)
         .map(|i| {
-            let t = AppTraffic::new(i, APP_BASE, s.app_period_us, 0, horizon, 2 * dist_timing.ta);
+            let t = AppTraffic::new(i, APP_BASE, s.app_period_us, 0, horizon, 2 * hosts.dist.ta);
             match s.algorithm {
                 Algorithm::Centralized => t.without_keeping(),
                 Algorithm::Distributed => t,
@@ -370,113 +300,14 @@ pub fn run_observed(
                 state: &mut posts[i],
                 now,
             };
-            let mut other: Vec<Frame> = Vec::new();
-            let command = match &mut apps[i] {
-                App::King { dist: Some(d), .. } => {
-                    while let Ok(f) = embedded_can::nb::Can::receive(&mut post) {
-                        other.push(f.0);
-                    }
-                    dist_step(d, now, &other, &mut post, i, &mut report)
-                }
-                App::King { king, master, dist } => {
-                    if let Some(m) = master {
-                        while let Ok(f) = embedded_can::nb::Can::receive(&mut post) {
-                            other.push(f.0);
-                        }
-                        m.poll(now, &letters(&other));
-                        // The flush first: the poll's letters are for the side the
-                        // relay is still on.
-                        if std::mem::take(&mut m.flush) {
-                            post.flush();
-                        }
-                        for f in m.outbox.drain(..) {
-                            post.host.submit(now, f.0, 0);
-                        }
-                        if let Some(t) = m.detected_at {
-                            report.detected.get_or_insert((i, t));
-                        }
-                        m.command.take()
-                    } else {
-                        king.poll(now, &mut post, &mut |f| other.push(f.0));
-                        match king.phase() {
-                            KingPhase::Running if king.membership() == Membership::Agreed => {
-                                report.kingdom_at.get_or_insert(now);
-                                match s.algorithm {
-                                    Algorithm::Centralized => {
-                                        *master = Some(Master::new(
-                                            n,
-                                            total - 1,
-                                            APP_BASE,
-                                            timing,
-                                            now + 10 * MS,
-                                        ))
-                                    }
-                                    Algorithm::Distributed => {
-                                        *dist = Some(DistNode::new(
-                                            0,
-                                            n,
-                                            total,
-                                            APP_BASE,
-                                            dist_timing,
-                                            now + 10 * MS,
-                                        ))
-                                    }
-                                }
-                            }
-                            KingPhase::Halted => {
-                                return Err(format!(
-                                    "the King's start-up did not agree: {:?}",
-                                    king.membership()
-                                ))
-                            }
-                            _ => {}
-                        }
-                        None
-                    }
-                }
-                App::City {
-                    mayor,
-                    slave,
-                    dist,
-                    ring,
-                } => {
-                    mayor.poll_with(now, &mut post, |f| other.push(f.0));
-                    let started = slave.is_some() || dist.is_some();
-                    if *ring && !started && mayor.action() == Some(Action::Run) {
-                        match s.algorithm {
-                            Algorithm::Centralized => {
-                                *slave = Some(Slave::new(i as u8, timing, now))
-                            }
-                            Algorithm::Distributed => {
-                                *dist = Some(DistNode::new(i, n, total, APP_BASE, dist_timing, now))
-                            }
-                        }
-                    }
-                    if let Some(d) = dist {
-                        dist_step(d, now, &other, &mut post, i, &mut report)
-                    } else if let Some(sl) = slave {
-                        sl.poll(now, mayor, &letters(&other));
-                        if std::mem::take(&mut sl.flush) {
-                            post.flush();
-                        }
-                        if let Some(t) = sl.detected_at {
-                            if report.detected.is_none_or(|(_, d)| t < d) {
-                                report.detected = Some((i, t));
-                            }
-                        }
-                        sl.command.take()
-                    } else {
-                        None
-                    }
-                }
-            };
+            let command = apps[i].poll(i, now, &mut post, &hosts, &mut report)?;
             if let Some(c) = command {
                 sys.module_mut(i).command = Some(c);
             }
             // Application traffic once the kingdom runs (`app`: a ring node
             // holds its frames while it rebuilds the ring and resends those the
             // fault may have cut off).
-            let state = ring_state(&apps[i]);
+            let state = hosts::ring_state(&apps[i]);
             let due = report
                 .kingdom_at
                 .is_some_and(|k| now >= k + 50 * MS + app_phase[i]);
@@ -495,52 +326,4 @@ pub fn run_observed(
     report.resent = traffic.iter().map(|t| t.resent).sum();
     judge(s, &sys, &shape, &sent, &mut report);
     Ok(report)
-}
-
-/// What a node's REDCAN says of its application frames (`app`).
-fn ring_state(app: &App) -> RingState {
-    let (master, slave, dist) = match app {
-        App::King { master, dist, .. } => (master.as_ref(), None, dist.as_ref()),
-        App::City { slave, dist, .. } => (None, slave.as_ref(), dist.as_ref()),
-    };
-    let rebuilding = master.is_some_and(|m| !m.running())
-        || slave.is_some_and(|s| !s.running())
-        || dist.is_some_and(|d| !d.settled());
-    if rebuilding {
-        RingState::Rebuilding
-    } else if master.is_some() || slave.is_some() || dist.is_some() {
-        RingState::Settled
-    } else {
-        RingState::Plain
-    }
-}
-
-/// One poll of a node's distributed REDCAN: its letters (after a flush when it
-/// has just detected), its detection time, its RCM command.
-fn dist_step(
-    d: &mut DistNode<CkFrame>,
-    now: u64,
-    rx: &[Frame],
-    post: &mut DrccPost,
-    i: usize,
-    report: &mut RingReport,
-) -> Option<u8> {
-    d.poll(now, &letters(rx));
-    if std::mem::take(&mut d.flush) {
-        post.flush();
-    }
-    for f in d.outbox.drain(..) {
-        post.host.submit(now, f.0, 0);
-    }
-    if let Some(t) = d.detected_at {
-        if report.detected.is_none_or(|(_, e)| t < e) {
-            report.detected = Some((i, t));
-        }
-    }
-    d.command.take()
-}
-
-/// The frames a host received, as the `redcan` algorithms take them.
-fn letters(rx: &[Frame]) -> Vec<CkFrame> {
-    rx.iter().map(|&f| CkFrame(f)).collect()
 }

@@ -375,7 +375,7 @@ impl Loader<'_> {
             }
             (v * clock_hz as f64 / 1000.0).ceil() as u64
         } else {
-            Scenario::default_max_cycles(&frames, cpb)
+            Scenario::default_max_cycles(frames, cpb)
         })
     }
 

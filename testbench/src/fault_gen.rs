@@ -373,93 +373,9 @@ impl Planner {
                 self.add(event, FaultTarget::Bus, FaultKind::Flip, start, cpb);
                 now
             }
-            FaultEvent::FieldFlip => {
-                let n = self.node();
-                let (want, skip_max) =
-                    AIMED_FIELDS[self.rng.below(AIMED_FIELDS.len() as u64) as usize];
-                let limit = now + 600 * cpb;
-                // Find a sample point after which node n expects a bit of `want`;
-                // give up (flip whatever comes next) at the limit.
-                let mut last = None;
-                while let Some(s) = self.next_sample(n, limit) {
-                    last = Some(s);
-                    if self.sys.sample().outputs[n].probes.field == want {
-                        break;
-                    }
-                }
-                let skip = self.rng.below(skip_max + 1);
-                for _ in 0..skip {
-                    if let Some(s) = self.next_sample(n, limit + 40 * cpb) {
-                        last = Some(s);
-                    }
-                }
-                let s = match last {
-                    Some(s) => s,
-                    None => self.sys.cycle(),
-                };
-                // The next SAMPLE edge (one bit later, if no resynchronisation
-                // moves it) reads rx of cycle s + cpb - 2; cover it with margins
-                // of up to SJW (and two quanta more for triple sampling).
-                let c = s + cpb - 2;
-                let extra = if self.triple { 2 * self.tq } else { 0 };
-                let before = extra + self.rng.below(self.sjw + 1);
-                let after = self.rng.below(self.sjw + 1);
-                let target = if self.rng.percent(60) {
-                    FaultTarget::Bus
-                } else {
-                    FaultTarget::Rx(n)
-                };
-                let kind = match self.rng.below(10) {
-                    0..=6 => FaultKind::Flip,
-                    7 | 8 => FaultKind::StuckDominant,
-                    _ => FaultKind::StuckRecessive,
-                };
-                self.add(
-                    event,
-                    target,
-                    kind,
-                    c.saturating_sub(before),
-                    before + after + 1,
-                );
-                self.sys.cycle()
-            }
-            FaultEvent::Glitch => {
-                let target = match self.rng.below(4) {
-                    0 | 1 => FaultTarget::Bus,
-                    2 => FaultTarget::Tx(self.node()),
-                    _ => FaultTarget::Rx(self.node()),
-                };
-                let kind = if self.rng.percent(70) {
-                    FaultKind::Flip
-                } else {
-                    FaultKind::StuckDominant
-                };
-                let len = if self.rng.percent(50) {
-                    self.range(1, (2 * self.tq).min(cpb / 2))
-                } else {
-                    self.range(1, cpb / 2)
-                };
-                let start = now + self.rng.below(4 * cpb);
-                self.add(event, target, kind, start, len);
-                now
-            }
-            FaultEvent::SampleGlitch => {
-                let n = self.node();
-                if let Some(s) = self.next_sample(n, now + 4 * cpb) {
-                    let c = s + cpb - 2;
-                    let len = self.range(1, 2 * self.tq);
-                    // From two quanta early to one quantum late: sometimes it hits
-                    // the sample, sometimes it only moves an edge.
-                    let start = (c + self.rng.below(3 * self.tq + 1)).saturating_sub(2 * self.tq);
-                    let target = if self.rng.percent(50) {
-                        FaultTarget::Bus
-                    } else {
-                        FaultTarget::Rx(n)
-                    };
-                    self.add(event, target, FaultKind::Flip, start, len);
-                }
-                self.sys.cycle()
-            }
+            FaultEvent::FieldFlip => self.field_flip(event, now),
+            FaultEvent::Glitch => self.glitch(event, now),
+            FaultEvent::SampleGlitch => self.sample_glitch(event, now),
             FaultEvent::RxFlip => {
                 let n = self.node();
                 let bits = self.range(1, 3);
@@ -501,67 +417,172 @@ impl Planner {
                 self.add(event, target, FaultKind::StuckRecessive, start, len);
                 now + len
             }
-            FaultEvent::BusOff => {
-                // Wait (up to 2000 bits) until node n is inside a frame, past
-                // arbitration: exactly one node is transmitter then.
-                let n = self.node();
-                let limit = now + 2000 * cpb;
-                while self.sys.cycle() < limit {
-                    self.step();
-                    let f = self.sys.sample().outputs[n].probes.field;
-                    if (field::R1..=field::CRC).contains(&f) {
-                        break;
-                    }
-                }
-                let target = if self.rng.percent(70) {
-                    FaultTarget::Bus
-                } else {
-                    FaultTarget::Tx(self.node())
-                };
-                // In chunks of 150 bits until some node is bus-off.
-                let chunk = 150 * cpb;
-                let mut spent = 0;
-                loop {
-                    let start = self.sys.cycle() + self.rng.below(cpb);
-                    self.add(event, target, FaultKind::StuckDominant, start, chunk);
-                    spent += 150;
-                    let mut off = false;
-                    while self.sys.cycle() < start + chunk {
-                        self.step();
-                        off |= self.err_state.contains(&2);
-                    }
-                    if off || spent >= params.max_attack_bits {
-                        break;
-                    }
-                }
-                self.sys.cycle()
-            }
-            FaultEvent::DeadNode => {
-                // A node with a frame pending (wait up to 1000 bits for one).
-                let limit = now + 1000 * cpb;
-                let n = loop {
-                    let pending: Vec<usize> = (0..self.nodes)
-                        .filter(|&i| self.sys.sample().outputs[i].tx_pending)
-                        .collect();
-                    if !pending.is_empty() {
-                        break pending[self.rng.below(pending.len() as u64) as usize];
-                    }
-                    if self.sys.cycle() >= limit {
-                        break self.node();
-                    }
-                    self.step();
-                };
-                let target = if self.rng.percent(50) {
-                    FaultTarget::Tx(n)
-                } else {
-                    FaultTarget::Rx(n)
-                };
-                let len = self.range(20, 400) * cpb + self.rng.below(cpb);
-                let start = self.sys.cycle();
-                self.add(event, target, FaultKind::StuckRecessive, start, len);
-                start + len
+            FaultEvent::BusOff => self.bus_off(event, now, params),
+            FaultEvent::DeadNode => self.dead_node(event, now),
+        }
+    }
+
+    /// A flip or a stuck level aimed at a bit of one of [`AIMED_FIELDS`] as node `n`
+    /// samples it, with margins of up to SJW around the sample point.
+    fn field_flip(&mut self, event: FaultEvent, now: u64) -> u64 {
+        let cpb = self.cpb;
+        let n = self.node();
+        let (want, skip_max) = AIMED_FIELDS[self.rng.below(AIMED_FIELDS.len() as u64) as usize];
+        let limit = now + 600 * cpb;
+        // Find a sample point after which node n expects a bit of `want`;
+        // give up (flip whatever comes next) at the limit.
+        let mut last = None;
+        while let Some(s) = self.next_sample(n, limit) {
+            last = Some(s);
+            if self.sys.sample().outputs[n].probes.field == want {
+                break;
             }
         }
+        let skip = self.rng.below(skip_max + 1);
+        for _ in 0..skip {
+            if let Some(s) = self.next_sample(n, limit + 40 * cpb) {
+                last = Some(s);
+            }
+        }
+        let s = match last {
+            Some(s) => s,
+            None => self.sys.cycle(),
+        };
+        // The next SAMPLE edge (one bit later, if no resynchronisation
+        // moves it) reads rx of cycle s + cpb - 2; cover it with margins
+        // of up to SJW (and two quanta more for triple sampling).
+        let c = s + cpb - 2;
+        let extra = if self.triple { 2 * self.tq } else { 0 };
+        let before = extra + self.rng.below(self.sjw + 1);
+        let after = self.rng.below(self.sjw + 1);
+        let target = if self.rng.percent(60) {
+            FaultTarget::Bus
+        } else {
+            FaultTarget::Rx(n)
+        };
+        let kind = match self.rng.below(10) {
+            0..=6 => FaultKind::Flip,
+            7 | 8 => FaultKind::StuckDominant,
+            _ => FaultKind::StuckRecessive,
+        };
+        self.add(
+            event,
+            target,
+            kind,
+            c.saturating_sub(before),
+            before + after + 1,
+        );
+        self.sys.cycle()
+    }
+
+    /// A glitch shorter than half a bit on the bus, a TX or an RX line.
+    fn glitch(&mut self, event: FaultEvent, now: u64) -> u64 {
+        let cpb = self.cpb;
+        let target = match self.rng.below(4) {
+            0 | 1 => FaultTarget::Bus,
+            2 => FaultTarget::Tx(self.node()),
+            _ => FaultTarget::Rx(self.node()),
+        };
+        let kind = if self.rng.percent(70) {
+            FaultKind::Flip
+        } else {
+            FaultKind::StuckDominant
+        };
+        let len = if self.rng.percent(50) {
+            self.range(1, (2 * self.tq).min(cpb / 2))
+        } else {
+            self.range(1, cpb / 2)
+        };
+        let start = now + self.rng.below(4 * cpb);
+        self.add(event, target, kind, start, len);
+        now
+    }
+
+    /// A glitch of up to two quanta around a node's next sample point.
+    fn sample_glitch(&mut self, event: FaultEvent, now: u64) -> u64 {
+        let cpb = self.cpb;
+        let n = self.node();
+        if let Some(s) = self.next_sample(n, now + 4 * cpb) {
+            let c = s + cpb - 2;
+            let len = self.range(1, 2 * self.tq);
+            // From two quanta early to one quantum late: sometimes it hits
+            // the sample, sometimes it only moves an edge.
+            let start = (c + self.rng.below(3 * self.tq + 1)).saturating_sub(2 * self.tq);
+            let target = if self.rng.percent(50) {
+                FaultTarget::Bus
+            } else {
+                FaultTarget::Rx(n)
+            };
+            self.add(event, target, FaultKind::Flip, start, len);
+        }
+        self.sys.cycle()
+    }
+
+    /// A dominant level in chunks of 150 bits, once a node is inside a frame past
+    /// arbitration, until some node is bus-off (or `params.max_attack_bits`).
+    fn bus_off(&mut self, event: FaultEvent, now: u64, params: &FaultParams) -> u64 {
+        let cpb = self.cpb;
+        // Wait (up to 2000 bits) until node n is inside a frame, past
+        // arbitration: exactly one node is transmitter then.
+        let n = self.node();
+        let limit = now + 2000 * cpb;
+        while self.sys.cycle() < limit {
+            self.step();
+            let f = self.sys.sample().outputs[n].probes.field;
+            if (field::R1..=field::CRC).contains(&f) {
+                break;
+            }
+        }
+        let target = if self.rng.percent(70) {
+            FaultTarget::Bus
+        } else {
+            FaultTarget::Tx(self.node())
+        };
+        // In chunks of 150 bits until some node is bus-off.
+        let chunk = 150 * cpb;
+        let mut spent = 0;
+        loop {
+            let start = self.sys.cycle() + self.rng.below(cpb);
+            self.add(event, target, FaultKind::StuckDominant, start, chunk);
+            spent += 150;
+            let mut off = false;
+            while self.sys.cycle() < start + chunk {
+                self.step();
+                off |= self.err_state.contains(&2);
+            }
+            if off || spent >= params.max_attack_bits {
+                break;
+            }
+        }
+        self.sys.cycle()
+    }
+
+    /// A node with a frame pending loses its TX or its RX line for 20 to 400 bits.
+    fn dead_node(&mut self, event: FaultEvent, now: u64) -> u64 {
+        let cpb = self.cpb;
+        // A node with a frame pending (wait up to 1000 bits for one).
+        let limit = now + 1000 * cpb;
+        let n = loop {
+            let pending: Vec<usize> = (0..self.nodes)
+                .filter(|&i| self.sys.sample().outputs[i].tx_pending)
+                .collect();
+            if !pending.is_empty() {
+                break pending[self.rng.below(pending.len() as u64) as usize];
+            }
+            if self.sys.cycle() >= limit {
+                break self.node();
+            }
+            self.step();
+        };
+        let target = if self.rng.percent(50) {
+            FaultTarget::Tx(n)
+        } else {
+            FaultTarget::Rx(n)
+        };
+        let len = self.range(20, 400) * cpb + self.rng.below(cpb);
+        let start = self.sys.cycle();
+        self.add(event, target, FaultKind::StuckRecessive, start, len);
+        start + len
     }
 }
 

@@ -29,8 +29,37 @@ impl DmrBlock {
         eval: Option<EvalFault>,
         ev: &mut DmrEvents,
     ) -> [bool; 2] {
-        let dt = c.dmr_tick;
         let mut faults: Vec<Fault> = Vec::new();
+        let recovered = self.cs_attempts(c, i, &mut faults);
+        self.busoff_faults(c, i, &mut faults);
+        // §4.2: the evaluation's verdict against a line.
+        if let Some(f) = eval {
+            faults.push(Fault {
+                line: f.verdict.line,
+                tx: f.verdict.dir,
+                cause: if f.verdict.deviation {
+                    CAUSE_DEVIATION
+                } else {
+                    CAUSE_TIMEOUT
+                },
+                mb: Some(f.mb),
+            });
+        }
+        self.recovery_timers(c, i);
+        self.periodic_cs(c);
+        let (against, tx_set) = self.set_faults(c, &faults);
+        if recovered {
+            self.mbx.clear_for_recovery();
+        }
+        self.acl_and_state(c, against, ev);
+        tx_set
+    }
+
+    /// §7 the connection service attempts: the timeout of a live attempt (a
+    /// failed CS is a fault) and its success, which clears the line's flags.
+    /// Returns whether a line recovered (it had a flag).
+    fn cs_attempts(&mut self, c: &DmrBlock, i: &DmrInputs, faults: &mut Vec<Fault>) -> bool {
+        let dt = c.dmr_tick;
         let mut recovered = false;
         for l in 0..2 {
             // §7 CS attempt: its timeout counts DMR ticks while it is live.
@@ -60,6 +89,11 @@ impl DmrBlock {
                 }
             }
         }
+        recovered
+    }
+
+    /// §6 bus-off: a channel entering bus-off at this edge is a fault.
+    fn busoff_faults(&mut self, c: &DmrBlock, i: &DmrInputs, faults: &mut Vec<Fault>) {
         for l in 0..2 {
             // §6 bus-off: the channel enters bus-off at this edge.
             let busoff = i.err_state[l] == 2;
@@ -73,18 +107,12 @@ impl DmrBlock {
                 });
             }
         }
-        if let Some(f) = eval {
-            faults.push(Fault {
-                line: f.verdict.line,
-                tx: f.verdict.dir,
-                cause: if f.verdict.deviation {
-                    CAUSE_DEVIATION
-                } else {
-                    CAUSE_TIMEOUT
-                },
-                mb: Some(f.mb),
-            });
-        }
+    }
+
+    /// §7 recovery: the recovery delay of a flagged line and the channel
+    /// restart it leads to.
+    fn recovery_timers(&mut self, c: &DmrBlock, i: &DmrInputs) {
+        let dt = c.dmr_tick;
         // §7 recovery: while L has a flag, `rec_timer` counts DMR ticks; at 1 -> 0
         // the line is due for a restart and a CS frame.
         for l in 0..2 {
@@ -104,6 +132,11 @@ impl DmrBlock {
                 self.restart[l] = true;
             }
         }
+    }
+
+    /// §7 periodic CS: every CS period, a CS is due on each sound line.
+    fn periodic_cs(&mut self, c: &DmrBlock) {
+        let dt = c.dmr_tick;
         // §7 periodic CS for each line without a flag and no CS due or busy.
         if dt && c.cs_period() != 0 {
             if c.period_cnt >= c.cs_period() - 1 {
@@ -117,10 +150,16 @@ impl DmrBlock {
                 self.period_cnt = c.period_cnt + 1;
             }
         }
+    }
+
+    /// §6 the faults of this edge set their flags, cause and recovery delay and
+    /// cancel the line's connection service. Returns the lines a fault counts
+    /// against and those whose `tx_fault` is set.
+    fn set_faults(&mut self, c: &DmrBlock, faults: &[Fault]) -> ([bool; 2], [bool; 2]) {
         // §6 set the faults (they win over a success at the same edge).
         let mut against = [false; 2];
         let mut tx_set = [false; 2];
-        for f in &faults {
+        for f in faults {
             let l = f.line;
             coverage::hit_with(|| {
                 let cause = match f.cause {
@@ -171,9 +210,11 @@ impl DmrBlock {
                 self.abort[l] = true;
             }
         }
-        if recovered {
-            self.mbx.clear_for_recovery();
-        }
+        (against, tx_set)
+    }
+
+    /// §6 the ACL switch, `dmr_state` and their counts (`INT_STATUS.dmr`).
+    fn acl_and_state(&mut self, c: &DmrBlock, against: [bool; 2], ev: &mut DmrEvents) {
         // ACL switch: a fault against the ACL while the other line is sound.
         let a = c.acl as usize;
         let o = 1 - a;
@@ -206,6 +247,5 @@ impl DmrBlock {
             self.acl_switches = c.acl_switches.saturating_add(1);
             ev.int = true;
         }
-        tx_set
     }
 }

@@ -295,34 +295,34 @@ pub fn run_dual_traced(
     run_dual_observed(s, kind, cosim, vcd, &mut |_| Ok(()))
 }
 
-/// [`run_dual_traced`], also calling `observe` with the main system after every
-/// clock.
-pub fn run_dual_observed(
+/// The dual bus of `s` on engines of `kind`, its faults from `fault_start` (none
+/// without), and every host's frames submitted, staggered so that they contend.
+fn build_dual(
     s: &DualScenario,
     kind: EngineKind,
-    cosim: Option<EngineKind>,
-    vcd: Option<&mut Vec<u8>>,
-    observe: DualObserver,
-) -> Result<DualReport, String> {
-    let build = |k: EngineKind, fault_start: Option<u64>| -> Result<DualBusSystem, String> {
-        let engines = (0..s.nodes)
-            .map(|_| s.build.engine(k))
-            .collect::<Result<Vec<_>, _>>()?;
-        let mut sys = DualBusSystem::new(engines, vec![s.host_config(); s.nodes])?;
-        if let Some(start) = fault_start {
-            s.faults(&mut sys, start)?;
+    fault_start: Option<u64>,
+) -> Result<DualBusSystem, String> {
+    let engines = (0..s.nodes)
+        .map(|_| s.build.engine(kind))
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut sys = DualBusSystem::new(engines, vec![s.host_config(); s.nodes])?;
+    if let Some(start) = fault_start {
+        s.faults(&mut sys, start)?;
+    }
+    for n in 0..s.nodes {
+        for k in 0..s.frames_per_node {
+            // Stagger the hosts so that frames also contend for the bus.
+            let due = (100 + k as u64 * s.period_bits + n as u64 * 37) * CLOCKS_PER_BIT;
+            sys.node_mut(n)
+                .host
+                .submit(due, DualScenario::frame(n, k), 0);
         }
-        for n in 0..s.nodes {
-            for k in 0..s.frames_per_node {
-                // Stagger the hosts so that frames also contend for the bus.
-                let due = (100 + k as u64 * s.period_bits + n as u64 * 37) * CLOCKS_PER_BIT;
-                sys.node_mut(n)
-                    .host
-                    .submit(due, DualScenario::frame(n, k), 0);
-            }
-        }
-        Ok(sys)
-    };
+    }
+    Ok(sys)
+}
+
+/// The clock the fault starts at: `fault_start_bits`, except for `a_bus_off`.
+fn fault_start(s: &DualScenario) -> Result<u64, String> {
     // The babbling transmitter must hit node 0 while it transmits (else another
     // node's frame takes the hit; in arbitration it would only make node 0 lose):
     // the fault starts in the data field of node 0's first frame on A at or after
@@ -330,7 +330,7 @@ pub fn run_dual_observed(
     // deterministic up to the fault).
     let mut start = s.fault_start_bits * CLOCKS_PER_BIT;
     if s.fault == DualFault::ABusOff {
-        let mut probe = build(EngineKind::Model, None)?;
+        let mut probe = build_dual(s, EngineKind::Model, None)?;
         loop {
             probe.step();
             let n0 = probe.node(0).outputs;
@@ -345,9 +345,81 @@ pub fn run_dual_observed(
             }
         }
     }
-    let mut main = build(kind, Some(start))?;
+    Ok(start)
+}
+
+/// What the dual-bus run follows of channel A on every node, clock by clock:
+/// when its auxiliary FSM failed it, when the node came back to A, and the
+/// frames it sent on A after the fault.
+struct ChannelAWatch {
+    prev_state: Vec<u8>,
+    prev_aux: Vec<u8>,
+    awaiting_return: Vec<bool>,
+    counted_frame: Vec<bool>,
+}
+
+impl ChannelAWatch {
+    fn new(nodes: usize) -> Self {
+        ChannelAWatch {
+            prev_state: vec![0; nodes],
+            prev_aux: vec![0; nodes],
+            awaiting_return: vec![false; nodes],
+            counted_frame: vec![false; nodes],
+        }
+    }
+
+    /// The probes of every node of `main` after clock `cycle`, into `report`.
+    fn sample(
+        &mut self,
+        main: &DualBusSystem,
+        cycle: u64,
+        fault_end: u64,
+        report: &mut DualReport,
+    ) {
+        for (i, n) in main.nodes().iter().enumerate() {
+            let p = &n.outputs.probes;
+            if report.first_aux_failure.is_none() && p.aux_a_state != 0 {
+                report.first_aux_failure = Some(cycle);
+            }
+            if p.aux_a_state != 0 {
+                report.a_failed[i] = true;
+                report.back_on_a[i] = None;
+                self.awaiting_return[i] = false;
+            } else if self.prev_aux[i] != 0 {
+                self.awaiting_return[i] = true;
+            }
+            self.prev_aux[i] = p.aux_a_state;
+            if self.awaiting_return[i] && self.prev_state[i] == 9 && p.state == 0 {
+                report.back_on_a[i] = Some(cycle);
+                self.awaiting_return[i] = false;
+            }
+            self.prev_state[i] = p.state;
+            // Transmitter on A: a dominant bit of its own in a data field.
+            if p.chan_a_field == FIELD_DATA && !n.outputs.chan_a_tx {
+                if !self.counted_frame[i] && report.back_on_a[i].is_some() && cycle >= fault_end {
+                    report.a_frames_after[i] += 1;
+                }
+                self.counted_frame[i] = true;
+            } else if p.chan_a_field != FIELD_DATA {
+                self.counted_frame[i] = false;
+            }
+        }
+    }
+}
+
+/// [`run_dual_traced`], also calling `observe` with the main system after every
+/// clock.
+pub fn run_dual_observed(
+    s: &DualScenario,
+    kind: EngineKind,
+    cosim: Option<EngineKind>,
+    vcd: Option<&mut Vec<u8>>,
+    observe: DualObserver,
+) -> Result<DualReport, String> {
+    let start = fault_start(s)?;
+    let mut main = build_dual(s, kind, Some(start))?;
     let mut other = match cosim {
-        Some(k) => Some(build(k, Some(start))?),
+        Some(k) => Some(build_dual(s, k, Some(start))?),
         None => None,
     };
     let mut writer = match vcd {
@@ -379,10 +451,7 @@ pub fn run_dual_observed(
         a_frames_after: vec![0; s.nodes],
         ..DualReport::default()
     };
-    let mut prev_state = vec![0u8; s.nodes];
-    let mut prev_aux = vec![0u8; s.nodes];
-    let mut awaiting_return = vec![false; s.nodes];
-    let mut counted_frame = vec![false; s.nodes];
+    let mut watch = ChannelAWatch::new(s.nodes);
     let mut cycle = 0;
     let read_regs = |sys: &mut DualBusSystem, regs: &[u8]| {
         for n in 0..sys.len() {
@@ -431,34 +500,7 @@ pub fn run_dual_observed(
                 return Err(divergence_message(s, &d));
             }
         }
-        for (i, n) in main.nodes().iter().enumerate() {
-            let p = &n.outputs.probes;
-            if report.first_aux_failure.is_none() && p.aux_a_state != 0 {
-                report.first_aux_failure = Some(cycle);
-            }
-            if p.aux_a_state != 0 {
-                report.a_failed[i] = true;
-                report.back_on_a[i] = None;
-                awaiting_return[i] = false;
-            } else if prev_aux[i] != 0 {
-                awaiting_return[i] = true;
-            }
-            prev_aux[i] = p.aux_a_state;
-            if awaiting_return[i] && prev_state[i] == 9 && p.state == 0 {
-                report.back_on_a[i] = Some(cycle);
-                awaiting_return[i] = false;
-            }
-            prev_state[i] = p.state;
-            // Transmitter on A: a dominant bit of its own in a data field.
-            if p.chan_a_field == FIELD_DATA && !n.outputs.chan_a_tx {
-                if !counted_frame[i] && report.back_on_a[i].is_some() && cycle >= fault_end {
-                    report.a_frames_after[i] += 1;
-                }
-                counted_frame[i] = true;
-            } else if p.chan_a_field != FIELD_DATA {
-                counted_frame[i] = false;
-            }
-        }
+        watch.sample(&main, cycle, fault_end, &mut report);
         cycle += 1;
         if cycle > total + 100_000 {
             return Err(format!(

@@ -114,175 +114,214 @@ impl MainFsm {
         }
         let c = *self;
         let mut n = c;
-        // Pulse registers.
-        n.req_a = false;
-        n.req_b = false;
-        n.abort_a = false;
-        n.abort_b = false;
-        n.transmission_ack = false;
-        n.tx_failure = false;
-        n.tx_success = c.finish_q;
-        if i.tick {
-            n.tx_time = c.tx_time.saturating_add(1);
-        }
-        // "finish" with the given tx_ok_channel (§4.1).
-        let finish = |n: &mut MainFsm, ev: &mut FsmEvents, ok: u8| {
-            ev.pop = true;
-            n.resend = false;
-            n.copy = false;
-            n.attempted = false;
-            n.last_tx_time = c.tx_time;
-            n.tx_ok_channel = ok;
-        };
-        // "A delivered" (§4.1).
-        let a_delivered = |n: &mut MainFsm, ev: &mut FsmEvents| {
-            n.transmission_ack = true;
-            if i.dual_tx && i.vb {
-                n.copy = true;
-                n.state = IDLE2;
-            } else {
-                finish(n, ev, 0b01);
-                n.state = IDLE1;
-            }
-        };
-        // "B delivered" (§4.1); the caller sets the next state.
-        let b_delivered = |n: &mut MainFsm, ev: &mut FsmEvents| {
-            n.transmission_ack = true;
-            finish(n, ev, if c.copy { 0b11 } else { 0b10 });
-        };
+        n.pulses_and_time(&c, i);
         // Star node (§4.4): the other channel heard the attempted message, which was
         // therefore exchanged on the one domain; this row comes first in every state.
         let echo = i.echo_a || i.echo_b;
         match c.state {
-            _ if echo => {
-                coverage::hit_with(|| coverage::star_echo(c.state));
-                n.transmission_ack = true;
-                finish(&mut n, &mut ev, if i.echo_b { 0b01 } else { 0b10 });
-                n.abort_a = matches!(c.state, CH1 | ABORT1 | WAIT2);
-                n.abort_b = matches!(c.state, CH2 | ABORT2);
-                n.state = match c.state {
-                    IDLE2 | WAIT3 | CH2 | ABORT2 => IDLE2,
-                    WAIT4 if !i.va => IDLE2,
-                    _ => IDLE1,
-                };
-                if c.state == WAIT4 && n.state == IDLE1 {
-                    n.failover = false;
-                }
-            }
+            _ if echo => n.star_echo(&c, i, &mut ev),
+            IDLE1 | WAIT1 | CH1 | ABORT1 | WAIT2 => n.rows_a(&c, i, &mut ev),
+            IDLE2 | WAIT3 | CH2 | ABORT2 | WAIT4 => n.rows_b(&c, i, &mut ev),
+            // Unused encodings 10..15: back to idle1.
+            _ => n.state = IDLE1,
+        }
+        n.edge_end(&c, &mut ev);
+        *self = n;
+        ev
+    }
+
+    /// The edge's start, on the registers after it (`self`, a copy of `c`): the
+    /// pulse registers fall, `tx_success` follows `finish_q`, `tx_time` counts
+    /// the tick.
+    fn pulses_and_time(&mut self, c: &MainFsm, i: &FsmInputs) {
+        // Pulse registers.
+        self.req_a = false;
+        self.req_b = false;
+        self.abort_a = false;
+        self.abort_b = false;
+        self.transmission_ack = false;
+        self.tx_failure = false;
+        self.tx_success = c.finish_q;
+        if i.tick {
+            self.tx_time = c.tx_time.saturating_add(1);
+        }
+    }
+
+    /// "finish" with the given tx_ok_channel (§4.1).
+    fn finish(&mut self, c: &MainFsm, ev: &mut FsmEvents, ok: u8) {
+        ev.pop = true;
+        self.resend = false;
+        self.copy = false;
+        self.attempted = false;
+        self.last_tx_time = c.tx_time;
+        self.tx_ok_channel = ok;
+    }
+
+    /// "A delivered" (§4.1).
+    fn a_delivered(&mut self, c: &MainFsm, i: &FsmInputs, ev: &mut FsmEvents) {
+        self.transmission_ack = true;
+        if i.dual_tx && i.vb {
+            self.copy = true;
+            self.state = IDLE2;
+        } else {
+            self.finish(c, ev, 0b01);
+            self.state = IDLE1;
+        }
+    }
+
+    /// "B delivered" (§4.1); the caller sets the next state.
+    fn b_delivered(&mut self, c: &MainFsm, ev: &mut FsmEvents) {
+        self.transmission_ack = true;
+        self.finish(c, ev, if c.copy { 0b11 } else { 0b10 });
+    }
+
+    /// The star node's echo row (§4.4), in any state: the message is finished,
+    /// the attempt in flight aborted.
+    fn star_echo(&mut self, c: &MainFsm, i: &FsmInputs, ev: &mut FsmEvents) {
+        coverage::hit_with(|| coverage::star_echo(c.state));
+        self.transmission_ack = true;
+        self.finish(c, ev, if i.echo_b { 0b01 } else { 0b10 });
+        self.abort_a = matches!(c.state, CH1 | ABORT1 | WAIT2);
+        self.abort_b = matches!(c.state, CH2 | ABORT2);
+        self.state = match c.state {
+            IDLE2 | WAIT3 | CH2 | ABORT2 => IDLE2,
+            WAIT4 if !i.va => IDLE2,
+            _ => IDLE1,
+        };
+        if c.state == WAIT4 && self.state == IDLE1 {
+            self.failover = false;
+        }
+    }
+
+    /// Table 1's rows of the states on channel A (idle1, wait1, ch1, abort1,
+    /// wait2): start an attempt on A, judge it, abort it or fail over to B.
+    fn rows_a(&mut self, c: &MainFsm, i: &FsmInputs, ev: &mut FsmEvents) {
+        match c.state {
             IDLE1 => {
                 if !i.va && i.vb {
-                    n.state = IDLE2;
-                    n.failover = true;
+                    self.state = IDLE2;
+                    self.failover = true;
                 } else if i.q {
-                    n.state = WAIT1;
+                    self.state = WAIT1;
                 }
             }
             WAIT1 => {
                 if !i.pending_a {
-                    n.state = CH1;
-                    n.req_a = true;
+                    self.state = CH1;
+                    self.req_a = true;
                     if !c.resend && !c.copy {
-                        n.tx_time = 0;
+                        self.tx_time = 0;
                     }
                 }
             }
             CH1 => {
                 if i.done_a {
-                    a_delivered(&mut n, &mut ev);
+                    self.a_delivered(c, i, ev);
                 } else if !i.va && i.vb {
-                    n.state = ABORT1;
+                    self.state = ABORT1;
                 }
             }
             ABORT1 => {
                 if i.done_a {
-                    a_delivered(&mut n, &mut ev);
+                    self.a_delivered(c, i, ev);
                 } else {
-                    n.state = WAIT2;
-                    n.abort_a = true;
+                    self.state = WAIT2;
+                    self.abort_a = true;
                 }
             }
             WAIT2 => {
                 if i.done_a {
-                    a_delivered(&mut n, &mut ev);
+                    self.a_delivered(c, i, ev);
                 } else if i.failed_a || (!i.pending_a && !c.abort_a) {
-                    n.state = IDLE2;
-                    n.tx_failure = true;
-                    n.tx_failure_channel = 0b01;
-                    n.resend = true;
-                    n.failover = true;
-                    n.switch_time = c.tx_time;
+                    self.state = IDLE2;
+                    self.tx_failure = true;
+                    self.tx_failure_channel = 0b01;
+                    self.resend = true;
+                    self.failover = true;
+                    self.switch_time = c.tx_time;
                 }
             }
+            _ => unreachable!("not a state on channel A"),
+        }
+    }
+
+    /// Table 1's rows of the states on channel B (idle2, wait3, ch2, abort2,
+    /// wait4): start an attempt on B (a resend, a copy or a new message),
+    /// judge it, abort it or go back to A.
+    fn rows_b(&mut self, c: &MainFsm, i: &FsmInputs, ev: &mut FsmEvents) {
+        match c.state {
             IDLE2 => {
                 if c.resend || c.copy {
-                    n.state = WAIT3;
+                    self.state = WAIT3;
                 } else if i.va {
-                    n.state = WAIT4;
+                    self.state = WAIT4;
                 } else if i.q {
-                    n.state = WAIT3;
+                    self.state = WAIT3;
                 }
             }
             WAIT3 => {
                 if !i.pending_b {
-                    n.state = CH2;
-                    n.req_b = true;
+                    self.state = CH2;
+                    self.req_b = true;
                     if !c.resend && !c.copy {
-                        n.tx_time = 0;
+                        self.tx_time = 0;
                     }
                 }
             }
             CH2 => {
                 if i.done_b {
-                    b_delivered(&mut n, &mut ev);
-                    n.state = IDLE2;
+                    self.b_delivered(c, ev);
+                    self.state = IDLE2;
                 } else if !i.vb && i.va {
-                    n.state = ABORT2;
+                    self.state = ABORT2;
                 }
             }
             ABORT2 => {
                 if i.done_b {
-                    b_delivered(&mut n, &mut ev);
-                    n.state = IDLE2;
+                    self.b_delivered(c, ev);
+                    self.state = IDLE2;
                 } else {
-                    n.state = WAIT4;
-                    n.abort_b = true;
+                    self.state = WAIT4;
+                    self.abort_b = true;
                 }
             }
             WAIT4 => {
                 if i.done_b {
-                    b_delivered(&mut n, &mut ev);
-                    n.state = if i.va { IDLE1 } else { IDLE2 };
+                    self.b_delivered(c, ev);
+                    self.state = if i.va { IDLE1 } else { IDLE2 };
                 } else if i.failed_b || (!i.pending_b && !c.abort_b) {
-                    n.state = if i.va { IDLE1 } else { IDLE2 };
+                    self.state = if i.va { IDLE1 } else { IDLE2 };
                     if i.failed_b {
-                        n.tx_failure = true;
-                        n.tx_failure_channel = if i.va { 0b10 } else { 0b11 };
+                        self.tx_failure = true;
+                        self.tx_failure_channel = if i.va { 0b10 } else { 0b11 };
                     }
                     if c.copy {
-                        finish(&mut n, &mut ev, 0b01);
+                        self.finish(c, ev, 0b01);
                     }
                 }
-                if n.state == IDLE1 {
-                    n.failover = false;
+                if self.state == IDLE1 {
+                    self.failover = false;
                 }
             }
-            // Unused encodings 10..15: back to idle1.
-            _ => n.state = IDLE1,
+            _ => unreachable!("not a state on channel B"),
         }
-        if n.state != c.state {
-            coverage::hit_with(|| coverage::main_transition(c.state, n.state));
+    }
+
+    /// The edge's end: the transition's coverage, `attempted`, `finish_q`, the
+    /// switch count and the events.
+    fn edge_end(&mut self, c: &MainFsm, ev: &mut FsmEvents) {
+        if self.state != c.state {
+            coverage::hit_with(|| coverage::main_transition(c.state, self.state));
         }
-        if n.req_a || n.req_b {
-            n.attempted = true;
+        if self.req_a || self.req_b {
+            self.attempted = true;
         }
-        n.finish_q = n.transmission_ack && ev.pop;
-        if n.failover != c.failover {
+        self.finish_q = self.transmission_ack && ev.pop;
+        if self.failover != c.failover {
             ev.switch = true;
-            n.switches = c.switches.saturating_add(1);
+            self.switches = c.switches.saturating_add(1);
         }
-        ev.tx_success = n.tx_success;
-        ev.tx_failure = n.tx_failure;
-        *self = n;
-        ev
+        ev.tx_success = self.tx_success;
+        ev.tx_failure = self.tx_failure;
     }
 }

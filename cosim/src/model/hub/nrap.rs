@@ -13,6 +13,9 @@ use super::tracker::TrkEvent;
 use crate::model::coverage;
 use crate::model::crc::crc15;
 
+mod phases;
+use phases::SampleEdge;
+
 /// `nrap` phase encodings (§9.2).
 pub mod phase {
     pub const RUN: u8 = 0;
@@ -364,10 +367,50 @@ impl Nrap {
         n: usize,
         cfg: &NrapCfg,
     ) -> SampleEffects {
-        let mut fx = SampleEffects::default();
         let before = self.phase;
         let acting = matches!(before, phase::SRP_EXCHANGE | phase::NRP | phase::DDSP_SEND);
 
+        self.transmitter_sample(i);
+
+        // Recogniser.
+        let id_frame = self.r_own || self.r_twin;
+        let (own_frame, twin_frame) = self.recognise(i, acting);
+
+        // Blocked-network count, in every phase (only RUN acts on it).
+        if i.ack_delim {
+            self.unacked = if i.b { 0 } else { (self.unacked + 1).min(31) };
+        }
+
+        let mut e = SampleEdge {
+            id_frame,
+            own_frame,
+            twin_frame,
+            nt: self.nt.saturating_add(1),
+            ncnt: self.ncnt,
+            sub_enabled: i.enabled & !((1u16 << n) - 1),
+            fx: SampleEffects::default(),
+        };
+        let left = match before {
+            phase::RUN => self.run(i, &mut e, cfg),
+            phase::SRP_FORCE if e.nt >= cfg.force_bits => self.end_srp_force(&mut e, ports, n),
+            phase::SRP_EXCHANGE => self.srp_exchange(i, &mut e, ports, n, cfg),
+            phase::NRP => self.nrp(i, &mut e, ports, n, cfg),
+            phase::DDSP_FORCE if e.nt >= cfg.force_bits => self.end_ddsp_force(&mut e, ports, n),
+            phase::DDSP_SEND => self.ddsp_send(i, &mut e, ports, n, cfg),
+            _ => false,
+        };
+        // A phase left restarts its timer and counter (`goto`).
+        if !left {
+            self.nt = e.nt;
+            self.ncnt = e.ncnt;
+        }
+        e.fx
+    }
+
+    /// The transmitter's side of the sampled bit (§9.3): the run of recessive
+    /// samples it waits for before it sends, and its withdrawal when arbitration
+    /// is lost or a bit error ends the attempt.
+    fn transmitter_sample(&mut self, i: &SampleInputs) {
         self.quiet = if i.b { (self.quiet + 1).min(15) } else { 0 };
         // Transmitter: arbitration lost or a bit error ends the attempt.
         if self.tx_on && i.b != self.tx_q {
@@ -375,9 +418,13 @@ impl Nrap {
             self.tx_on = false;
             self.tx_q = true;
         }
+    }
 
-        // Recogniser.
-        let id_frame = self.r_own || self.r_twin;
+    /// The recogniser of identification frames (§9.3): matches the frame on the
+    /// bus against both ROMs, asks for the acknowledgement of the twin's frame
+    /// (`acting`: in a phase that acknowledges) and returns, at the ACK slot,
+    /// whether the frame was the own or the twin's.
+    fn recognise(&mut self, i: &SampleInputs, acting: bool) -> (bool, bool) {
         let (mut own_frame, mut twin_frame) = (false, false);
         match i.ev {
             TrkEvent::Sof => {
@@ -401,120 +448,7 @@ impl Nrap {
             TrkEvent::None => {}
         }
 
-        // Blocked-network count, in every phase (only RUN acts on it).
-        if i.ack_delim {
-            self.unacked = if i.b { 0 } else { (self.unacked + 1).min(31) };
-        }
-
-        let nt = self.nt.saturating_add(1);
-        let mut ncnt = self.ncnt;
-        let sub_enabled = i.enabled & !((1u16 << n) - 1);
-        match before {
-            phase::RUN => {
-                let blocked = cfg.block_frames != 0 && self.unacked >= cfg.block_frames;
-                if i.nrap_on && !i.decoupled && blocked {
-                    coverage::hit("hub nrap: triggered (network blocked)");
-                }
-                if i.nrap_on && !i.decoupled && (sub_enabled == 0 || blocked) {
-                    coverage::hit("hub nrap: triggered (no sublink left)");
-                    self.goto(phase::SRP_FORCE, &mut fx);
-                    self.last = 0;
-                    self.runs = (self.runs + 1).min(15);
-                    return fx;
-                }
-                if i.nrap_on && !i.decoupled && twin_frame {
-                    coverage::hit("hub nrap: joins the twin's exchange");
-                    self.goto(phase::SRP_EXCHANGE, &mut fx);
-                    self.runs = (self.runs + 1).min(15);
-                    self.rrun = [0; 16];
-                    // The joining frame counts for the pairs as in SRP_EXCHANGE.
-                    self.pairs(false, true, i.b);
-                    return fx;
-                }
-            }
-            phase::SRP_FORCE if nt >= cfg.force_bits => {
-                self.goto(phase::SRP_EXCHANGE, &mut fx);
-                for g in ports[n..].iter_mut() {
-                    g.enabled = false;
-                }
-                self.rrun = [0; 16];
-                return fx;
-            }
-            phase::SRP_EXCHANGE => {
-                for (p, g) in ports.iter_mut().enumerate().skip(n) {
-                    // the guard's own `enabled` (§6.1), not the late copy
-                    if !g.enabled {
-                        let r = if (i.pq >> p) & 1 == 1 {
-                            (self.rrun[p] + 1).min(15)
-                        } else {
-                            0
-                        };
-                        self.rrun[p] = r;
-                        if r >= SILENT_SUBLINK {
-                            coverage::hit("hub nrap: silent sublink restored");
-                            g.enabled = true;
-                            g.pec = 0;
-                            g.silent = 0;
-                            g.restore_cnt = 0;
-                        }
-                    }
-                }
-                // The ACK of the own frame must come through an interlink: the
-                // AND of the enabled sublinks (1 when none is enabled).
-                let twin_b = i.pq | !sub_enabled | ((1u16 << n) - 1) == u16::MAX;
-                let acked = if own_frame { twin_b } else { i.b };
-                if self.pairs(own_frame, twin_frame, acked) {
-                    ncnt = (ncnt + 1).min(15);
-                }
-                if ncnt >= cfg.srp_pairs {
-                    coverage::hit("hub nrap: sublinks agreed (to node restoration)");
-                    self.goto(phase::NRP, &mut fx);
-                    self.restore_nodes(ports, n);
-                    return fx;
-                }
-                if nt >= cfg.srp_bits {
-                    self.enter_ddsp(ports, n, &mut fx);
-                    return fx;
-                }
-            }
-            phase::NRP => {
-                self.drop_erring(ports, n, i, id_frame);
-                if self.pairs(own_frame, twin_frame, i.b) {
-                    ncnt = (ncnt + 1).min(15);
-                }
-                if ncnt >= cfg.nrp_pairs {
-                    coverage::hit("hub nrap: recoupled");
-                    self.goto(phase::RUN, &mut fx);
-                    self.outcome = true;
-                    return fx;
-                }
-                if nt >= cfg.nrp_bits {
-                    self.enter_ddsp(ports, n, &mut fx);
-                    return fx;
-                }
-            }
-            phase::DDSP_FORCE if nt >= cfg.force_bits => {
-                self.goto(phase::DDSP_SEND, &mut fx);
-                self.restore_nodes(ports, n);
-                return fx;
-            }
-            phase::DDSP_SEND => {
-                self.drop_erring(ports, n, i, id_frame);
-                if own_frame && !i.b {
-                    ncnt = (ncnt + 1).min(15);
-                }
-                if ncnt >= cfg.ddsp_frames || nt >= cfg.ddsp_bits {
-                    coverage::hit("hub nrap: split (each star on its own)");
-                    self.goto(phase::SPLIT, &mut fx);
-                    self.outcome = false;
-                    return fx;
-                }
-            }
-            _ => {}
-        }
-        self.nt = nt;
-        self.ncnt = ncnt;
-        fx
+        (own_frame, twin_frame)
     }
 
     /// `CTRL.force_decouple` (NRAP on) or `CTRL.recouple`: the phase a command

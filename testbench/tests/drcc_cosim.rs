@@ -104,48 +104,30 @@ fn random_config(rng: &mut SplitMix64, timing: u32) -> HostConfig {
     }
 }
 
-fn run_seed(seed: u64, cycles: u64) {
-    let Some(_) = verilated() else { return };
-    let mut rng = SplitMix64::new(seed);
-    // 1 Mbit/s at 8 MHz or 500 kbit/s (BRP 1), 8 tq.
-    let brp = rng.below(2) as u16;
-    let timing = btr(brp, 5, 2, 1, false, 96);
-    let cpb = 8 * (brp as u64 + 1);
-    let nodes = 3;
-    let configs: Vec<HostConfig> = (0..nodes)
-        .map(|_| random_config(&mut rng, timing))
-        .collect();
-    let build = |verilator: bool| {
-        let engines: Vec<Box<dyn DrccEngine>> = (0..nodes)
-            .map(|i| {
-                if verilator {
-                    if let (Ok(path), 0) = (std::env::var("DRCC_DEBUG_VCD"), i) {
-                        let mut e = DrccVerilatorEngine::new().unwrap();
-                        e.open_vcd(format!("{path}_{seed}.vcd")).unwrap();
-                        return Box::new(e) as Box<dyn DrccEngine>;
-                    }
-                    verilated().expect("checked above")
-                } else {
-                    Box::new(DrccModelEngine::new()) as Box<dyn DrccEngine>
-                }
-            })
-            .collect();
-        DualBusSystem::new(engines, configs.clone()).expect("valid system")
-    };
-    let mut model = build(false);
-    let mut rtl = build(true);
-    // Frames: bursts that can fill the 8-deep queues.
+/// Frames: bursts that can fill the 8-deep queues, the same on both systems.
+fn submit_frames(rng: &mut SplitMix64, systems: [&mut DualBusSystem; 2], nodes: usize, cpb: u64) {
+    let [model, rtl] = systems;
     for n in 0..nodes {
         let mut t = 50 * cpb;
         for _ in 0..(10 + rng.below(20)) {
             t += rng.below(400) * cpb;
-            let f = random_frame(&mut rng);
+            let f = random_frame(rng);
             let q = rng.below(2) as u8;
             model.node_mut(n).host.submit(t, f, q);
             rtl.node_mut(n).host.submit(t, f, q);
         }
     }
-    // Faults on either line.
+}
+
+/// Up to three faults on either line, the same on both systems.
+fn add_faults(
+    rng: &mut SplitMix64,
+    systems: [&mut DualBusSystem; 2],
+    nodes: usize,
+    cycles: u64,
+    cpb: u64,
+) {
+    let [model, rtl] = systems;
     for _ in 0..rng.below(4) {
         let line = if rng.percent(50) { Line::A } else { Line::B };
         let target = match rng.below(3) {
@@ -167,6 +149,21 @@ fn run_seed(seed: u64, cycles: u64) {
         model.add_fault(line, f).unwrap();
         rtl.add_fault(line, f).unwrap();
     }
+}
+
+/// The hosts' register accesses of a run, drawn after every other choice.
+struct HostPlan {
+    /// (cycle, node, register, value, byte lanes), in time order.
+    writes: Vec<(u64, usize, u8, u32, u8)>,
+    /// (cycle, node, register), in time order.
+    reads: Vec<(u64, usize, u8)>,
+    /// (cycle, node, the four filter words) of a node's reset-mode visit.
+    reconf: Vec<(u64, usize, [u32; 4])>,
+    /// (cycle, node) of a statistics clear.
+    clears: Vec<(u64, usize)>,
+}
+
+fn draw_host_plan(rng: &mut SplitMix64, nodes: usize, cycles: u64) -> HostPlan {
     // Register writes at random times: any address, random or edge values,
     // a third of them with random byte lanes (bus_contract.md §1).
     let mut writes: Vec<(u64, usize, u8, u32, u8)> = (0..rng.below(25))
@@ -245,71 +242,135 @@ fn run_seed(seed: u64, cycles: u64) {
             clears.push((rng.below(cycles), n));
         }
     }
+    HostPlan {
+        writes,
+        reads,
+        reconf,
+        clears,
+    }
+}
+
+/// The plan's accesses due at `cycle`, on both systems; `next` and `next_read`
+/// are the first write and read not yet made.
+fn apply_host_plan(
+    plan: &HostPlan,
+    cycle: u64,
+    configs: &[HostConfig],
+    systems: [&mut DualBusSystem; 2],
+    next: &mut usize,
+    next_read: &mut usize,
+) {
+    let [model, rtl] = systems;
+    while *next < plan.writes.len() && plan.writes[*next].0 == cycle {
+        let (_, n, reg, value, sel) = plan.writes[*next];
+        model.node_mut(n).host.write_lanes(reg, value, sel);
+        rtl.node_mut(n).host.write_lanes(reg, value, sel);
+        if reg % 7 == 0 {
+            model.node_mut(n).host.read(reg);
+            rtl.node_mut(n).host.read(reg);
+        }
+        *next += 1;
+    }
+    for &(_, n, words) in plan.reconf.iter().filter(|r| r.0 == cycle) {
+        let c = &configs[n];
+        for sys in [&mut *model, &mut *rtl] {
+            let host = &mut sys.node_mut(n).host;
+            host.write(map::CTRL as u8, c.ctrl(true));
+            for (k, w) in words.iter().enumerate() {
+                host.write((map::FILT_ID0 as usize + k) as u8, *w);
+            }
+            host.write(map::CTRL as u8, c.ctrl(false));
+        }
+    }
+    for &(_, n) in plan.clears.iter().filter(|r| r.0 == cycle) {
+        model.node_mut(n).host.write(map::STATS_CLR as u8, 1);
+        rtl.node_mut(n).host.write(map::STATS_CLR as u8, 1);
+    }
+    while *next_read < plan.reads.len() && plan.reads[*next_read].0 == cycle {
+        let (_, n, reg) = plan.reads[*next_read];
+        model.node_mut(n).host.read(reg);
+        rtl.node_mut(n).host.read(reg);
+        *next_read += 1;
+    }
+}
+
+/// One clock of a system, as the divergence report prints the last ones.
+fn clock_line(sys: &DualBusSystem) -> String {
+    sys.nodes()
+        .iter()
+        .map(|n| {
+            let p = &n.outputs.probes;
+            format!(
+                "[st {} ch {} aux {}/{} err {}/{} tec {}/{} wb {}{}{:02}:{:08x}]",
+                p.state,
+                p.tx_channel as u8,
+                p.aux_a_state,
+                p.aux_b_state,
+                p.chan_a_err_state,
+                p.chan_b_err_state,
+                p.chan_a_bsp_tx_err_cnt,
+                p.chan_b_bsp_tx_err_cnt,
+                n.inputs.wb_stb as u8,
+                n.inputs.wb_we as u8,
+                n.inputs.wb_adr,
+                n.inputs.wb_dat_w
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+fn run_seed(seed: u64, cycles: u64) {
+    let Some(_) = verilated() else { return };
+    let mut rng = SplitMix64::new(seed);
+    // 1 Mbit/s at 8 MHz or 500 kbit/s (BRP 1), 8 tq.
+    let brp = rng.below(2) as u16;
+    let timing = btr(brp, 5, 2, 1, false, 96);
+    let cpb = 8 * (brp as u64 + 1);
+    let nodes = 3;
+    let configs: Vec<HostConfig> = (0..nodes)
+        .map(|_| random_config(&mut rng, timing))
+        .collect();
+    let build = |verilator: bool| {
+        let engines: Vec<Box<dyn DrccEngine>> = (0..nodes)
+            .map(|i| {
+                if verilator {
+                    if let (Ok(path), 0) = (std::env::var("DRCC_DEBUG_VCD"), i) {
+                        let mut e = DrccVerilatorEngine::new().unwrap();
+                        e.open_vcd(format!("{path}_{seed}.vcd")).unwrap();
+                        return Box::new(e) as Box<dyn DrccEngine>;
+                    }
+                    verilated().expect("checked above")
+                } else {
+                    Box::new(DrccModelEngine::new()) as Box<dyn DrccEngine>
+                }
+            })
+            .collect();
+        DualBusSystem::new(engines, configs.clone()).expect("valid system")
+    };
+    let mut model = build(false);
+    let mut rtl = build(true);
+    submit_frames(&mut rng, [&mut model, &mut rtl], nodes, cpb);
+    add_faults(&mut rng, [&mut model, &mut rtl], nodes, cycles, cpb);
+    let plan = draw_host_plan(&mut rng, nodes, cycles);
     let mut next_read = 0;
     let mut next = 0;
     let mut recent: std::collections::VecDeque<String> = std::collections::VecDeque::new();
     for cycle in 0..cycles {
-        while next < writes.len() && writes[next].0 == cycle {
-            let (_, n, reg, value, sel) = writes[next];
-            model.node_mut(n).host.write_lanes(reg, value, sel);
-            rtl.node_mut(n).host.write_lanes(reg, value, sel);
-            if reg % 7 == 0 {
-                model.node_mut(n).host.read(reg);
-                rtl.node_mut(n).host.read(reg);
-            }
-            next += 1;
-        }
-        for &(_, n, words) in reconf.iter().filter(|r| r.0 == cycle) {
-            let c = &configs[n];
-            for sys in [&mut model, &mut rtl] {
-                let host = &mut sys.node_mut(n).host;
-                host.write(map::CTRL as u8, c.ctrl(true));
-                for (k, w) in words.iter().enumerate() {
-                    host.write((map::FILT_ID0 as usize + k) as u8, *w);
-                }
-                host.write(map::CTRL as u8, c.ctrl(false));
-            }
-        }
-        for &(_, n) in clears.iter().filter(|r| r.0 == cycle) {
-            model.node_mut(n).host.write(map::STATS_CLR as u8, 1);
-            rtl.node_mut(n).host.write(map::STATS_CLR as u8, 1);
-        }
-        while next_read < reads.len() && reads[next_read].0 == cycle {
-            let (_, n, reg) = reads[next_read];
-            model.node_mut(n).host.read(reg);
-            rtl.node_mut(n).host.read(reg);
-            next_read += 1;
-        }
+        apply_host_plan(
+            &plan,
+            cycle,
+            &configs,
+            [&mut model, &mut rtl],
+            &mut next,
+            &mut next_read,
+        );
         model.step();
         rtl.step();
-        let line = |sys: &DualBusSystem| {
-            sys.nodes()
-                .iter()
-                .map(|n| {
-                    let p = &n.outputs.probes;
-                    format!(
-                        "[st {} ch {} aux {}/{} err {}/{} tec {}/{} wb {}{}{:02}:{:08x}]",
-                        p.state,
-                        p.tx_channel as u8,
-                        p.aux_a_state,
-                        p.aux_b_state,
-                        p.chan_a_err_state,
-                        p.chan_b_err_state,
-                        p.chan_a_bsp_tx_err_cnt,
-                        p.chan_b_bsp_tx_err_cnt,
-                        n.inputs.wb_stb as u8,
-                        n.inputs.wb_we as u8,
-                        n.inputs.wb_adr,
-                        n.inputs.wb_dat_w
-                    )
-                })
-                .collect::<Vec<_>>()
-                .join(" ")
-        };
         recent.push_back(format!(
             "{cycle}: model {}\n{cycle}: rtl   {}",
-            line(&model),
-            line(&rtl)
+            clock_line(&model),
+            clock_line(&rtl)
         ));
         if recent.len() > 12 {
             recent.pop_front();

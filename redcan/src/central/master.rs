@@ -119,28 +119,7 @@ impl<F: Frame> Master<F> {
             }
         }
         match self.state {
-            MState::Run { next_hb } => {
-                let late = (1..self.last_answer.len()).any(|i| {
-                    let limit = if i < self.n {
-                        2 * t.t1
-                    } else {
-                        t.plain_silence
-                    };
-                    self.expected[i] && now.saturating_sub(self.last_answer[i]) > limit
-                });
-                if late {
-                    self.detected_at = Some(now);
-                    self.state = MState::Quiet {
-                        until: self.last_hb + 2 * t.t1 + t.settle,
-                    };
-                } else if now >= next_hb {
-                    self.outbox.push(page1_letter(RING_GROUP));
-                    self.last_hb = now;
-                    self.state = MState::Run {
-                        next_hb: now + t.t1,
-                    };
-                }
-            }
+            MState::Run { next_hb } => self.heartbeat(now, next_hb),
             MState::Quiet { until } => {
                 if now >= until {
                     self.scan_start = now;
@@ -218,26 +197,7 @@ impl<F: Frame> Master<F> {
                     }
                 }
             }
-            MState::Final { at } => {
-                let done = self.scan_start + 2 * t.t2;
-                if now >= done.max(at) {
-                    // Holding both terminations when the ring is whole; else
-                    // joining the two arms, or ending the one arm there is.
-                    self.flush = true;
-                    self.command = Some(match (self.fault_found, self.arm_right, self.arm_left) {
-                        (true, true, true) => TRANSPARENT,
-                        (true, true, false) => CONNECT_RIGHT,
-                        _ => CONNECT_LEFT,
-                    });
-                    // Expected again once they answer: a City cut off by the
-                    // fault is not looked for again and again.
-                    self.last_answer
-                        .iter_mut()
-                        .for_each(|a| *a = now + t.settle);
-                    self.expected.iter_mut().for_each(|e| *e = false);
-                    self.state = MState::Retell { at: now + t.settle };
-                }
-            }
+            MState::Final { at } => self.final_decision(now, at),
             MState::Retell { at } => {
                 if now >= at {
                     let told: Vec<F> = self.told.iter().map(|&k| beyond_letter(k)).collect();
@@ -252,6 +212,55 @@ impl<F: Frame> Master<F> {
                     };
                 }
             }
+        }
+    }
+
+    /// Running: the heartbeat every T1, until a ring slave misses 2 T1 of
+    /// answers or a plain node is silent for `plain_silence` (the detection).
+    fn heartbeat(&mut self, now: u64, next_hb: u64) {
+        let t = self.timing;
+        let late = (1..self.last_answer.len()).any(|i| {
+            let limit = if i < self.n {
+                2 * t.t1
+            } else {
+                t.plain_silence
+            };
+            self.expected[i] && now.saturating_sub(self.last_answer[i]) > limit
+        });
+        if late {
+            self.detected_at = Some(now);
+            self.state = MState::Quiet {
+                until: self.last_hb + 2 * t.t1 + t.settle,
+            };
+        } else if now >= next_hb {
+            self.outbox.push(page1_letter(RING_GROUP));
+            self.last_hb = now;
+            self.state = MState::Run {
+                next_hb: now + t.t1,
+            };
+        }
+    }
+
+    /// The final decision at 2 T2 after the scan began (or later, at `at`).
+    fn final_decision(&mut self, now: u64, at: u64) {
+        let t = self.timing;
+        let done = self.scan_start + 2 * t.t2;
+        if now >= done.max(at) {
+            // Holding both terminations when the ring is whole; else
+            // joining the two arms, or ending the one arm there is.
+            self.flush = true;
+            self.command = Some(match (self.fault_found, self.arm_right, self.arm_left) {
+                (true, true, true) => TRANSPARENT,
+                (true, true, false) => CONNECT_RIGHT,
+                _ => CONNECT_LEFT,
+            });
+            // Expected again once they answer: a City cut off by the
+            // fault is not looked for again and again.
+            self.last_answer
+                .iter_mut()
+                .for_each(|a| *a = now + t.settle);
+            self.expected.iter_mut().for_each(|e| *e = false);
+            self.state = MState::Retell { at: now + t.settle };
         }
     }
 

@@ -19,17 +19,59 @@ pub(super) fn check(
     tot: &mut Totals,
     problems: &mut Vec<String>,
 ) {
-    let cpb = sc.clocks_per_bit();
-    let ff = fp.end;
-    let bit = |c: u64| c / cpb;
-    let phase = |c: u64| {
-        if c < ff {
+    let t = Times {
+        cpb: sc.clocks_per_bit(),
+        ff: fp.end,
+    };
+    check_integrity(sc, sys, &t, problems);
+    let bound = check_settling(logs, &t, problems);
+    let settled = logs.iter().filter_map(|l| l.settled).max().unwrap_or(t.ff);
+
+    // All nodes idle together: from here on the nodes agree on the bus.
+    let quiet = all_idle_from(logs, t.ff);
+    let Some(quiet) = quiet else {
+        problems.push(format!(
+            "LIVENESS: the nodes were never all idle at once after the faults stopped (bit {})",
+            t.bit(t.ff)
+        ));
+        return;
+    };
+    if quiet > bound + 4 * MAX_FRAME_BITS * t.cpb {
+        problems.push(format!(
+            "LIVENESS: all nodes idle together only {} bit times after the faults stopped",
+            t.bit(quiet - t.ff)
+        ));
+    }
+    check_quiet_nodes(logs, quiet, &t, problems);
+    let late = check_fault_free_deliveries(sc, sys, quiet, &t, problems);
+    check_recoveries(fp, logs, problems);
+    tot.settle_bits = tot.settle_bits.max(t.bit(settled.saturating_sub(t.ff)));
+    tot.quiet_bits = tot.quiet_bits.max(t.bit(quiet - t.ff));
+    tot.synchronised_frames += late;
+}
+
+/// An episode's clock: clocks per bit and the cycle the faults stopped at.
+struct Times {
+    cpb: u64,
+    ff: u64,
+}
+
+impl Times {
+    fn bit(&self, c: u64) -> u64 {
+        c / self.cpb
+    }
+
+    fn phase(&self, c: u64) -> &'static str {
+        if c < self.ff {
             "during faults"
         } else {
             "fault free"
         }
-    };
+    }
+}
 
+fn check_integrity(sc: &Scenario, sys: &System, t: &Times, problems: &mut Vec<String>) {
+    let (bit, phase) = (|c| t.bit(c), |c| t.phase(c));
     // Integrity: deliveries are submitted frames of other nodes; every frame is
     // sent exactly once.
     let submitted: HashMap<Key, (usize, Frame)> = sc
@@ -82,7 +124,12 @@ pub(super) fn check(
             ));
         }
     }
+}
 
+/// Every node idle within [`SETTLE_BOUND_BITS`] of the faults' end; returns that
+/// bound (a cycle).
+fn check_settling(logs: &[NodeLog], t: &Times, problems: &mut Vec<String>) -> u64 {
+    let (cpb, ff, bit) = (t.cpb, t.ff, |c| t.bit(c));
     // Liveness: every node idle within the bound after the faults stopped.
     let bound = ff + SETTLE_BOUND_BITS * cpb;
     for (n, l) in logs.iter().enumerate() {
@@ -99,23 +146,14 @@ pub(super) fn check(
             )),
         }
     }
-    let settled = logs.iter().filter_map(|l| l.settled).max().unwrap_or(ff);
+    bound
+}
 
-    // All nodes idle together: from here on the nodes agree on the bus.
-    let quiet = all_idle_from(logs, ff);
-    let Some(quiet) = quiet else {
-        problems.push(format!(
-            "LIVENESS: the nodes were never all idle at once after the faults stopped (bit {})",
-            bit(ff)
-        ));
-        return;
-    };
-    if quiet > bound + 4 * MAX_FRAME_BITS * cpb {
-        problems.push(format!(
-            "LIVENESS: all nodes idle together only {} bit times after the faults stopped",
-            bit(quiet - ff)
-        ));
-    }
+/// Once all nodes were idle together on a fault-free bus: no error or overload
+/// frame, no bus-off, no counter rising, and every node idle after 11 recessive
+/// bits.
+fn check_quiet_nodes(logs: &[NodeLog], quiet: u64, t: &Times, problems: &mut Vec<String>) {
+    let bit = |c| t.bit(c);
     for (n, l) in logs.iter().enumerate() {
         let mut prev: Option<Mark> = None;
         for m in l.trail.iter().filter(|m| m.cycle > quiet) {
@@ -167,7 +205,18 @@ pub(super) fn check(
             ));
         }
     }
-    // Every frame sent once the nodes agree reaches every other node, once.
+}
+
+/// Every frame sent once the nodes agree reaches every other node, once;
+/// returns how many frames were sent then.
+fn check_fault_free_deliveries(
+    sc: &Scenario,
+    sys: &System,
+    quiet: u64,
+    t: &Times,
+    problems: &mut Vec<String>,
+) -> usize {
+    let (cpb, bit) = (t.cpb, |c| t.bit(c));
     let mut got: HashMap<(usize, Key), Vec<u64>> = HashMap::new();
     for d in sys.deliveries() {
         got.entry((d.node, key(&d.frame)))
@@ -199,7 +248,12 @@ pub(super) fn check(
             late.len()
         ));
     }
+    late.len()
+}
 
+/// Every bus-off ended in a recovery, and the faults reached every node's
+/// counters.
+fn check_recoveries(fp: &FaultPlan, logs: &[NodeLog], problems: &mut Vec<String>) {
     let (offs, recovered): (usize, usize) = logs
         .iter()
         .fold((0, 0), |(o, r), l| (o + l.bus_off, r + l.recovered));
@@ -215,9 +269,6 @@ pub(super) fn check(
             ));
         }
     }
-    tot.settle_bits = tot.settle_bits.max(bit(settled.saturating_sub(ff)));
-    tot.quiet_bits = tot.quiet_bits.max(bit(quiet - ff));
-    tot.synchronised_frames += late.len();
 }
 
 /// The first cycle at or after `from` at which every node is idle (and not

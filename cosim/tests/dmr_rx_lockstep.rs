@@ -17,7 +17,7 @@
 
 use drcc_cosim::frame::Frame;
 use drcc_cosim::model::drcc::rx_path::{
-    RxInputs, RxPath, W_DECIDE, W_FETCH, W_IDLE, W_RELEASE, W_RSCAN, W_SCAN, W_WRITE,
+    RxEvents, RxInputs, RxPath, W_DECIDE, W_FETCH, W_IDLE, W_RELEASE, W_RSCAN, W_SCAN, W_WRITE,
 };
 use drcc_hdl::memory::dedup::RxWriter;
 use rust_hdl::prelude::*;
@@ -162,6 +162,166 @@ fn flags_of(w: &RxWriter) -> (u32, u32, u32) {
     (v, u, d)
 }
 
+/// The block's inputs for one clock (before its edge), from the model's inputs.
+fn drive(uut: &mut RxBench, i: &RxInputs, rst: bool, frame: &[Frame; 2]) {
+    uut.clk.next = Clock::from(false);
+    uut.rst.next = rst;
+    uut.reset_mode.next = i.reset_mode;
+    uut.dedup_on.next = i.dedup_on;
+    uut.dmr.next = i.dmr;
+    uut.first_copy.next = i.first_copy;
+    uut.acl.next = i.acl != 0;
+    uut.release_set.next = i.release_set;
+    uut.window.next = (i.window as u64).into();
+    uut.tick.next = i.tick;
+    uut.pop.next = i.pop;
+    uut.rxv_a.next = i.rx_valid[0];
+    uut.rxv_b.next = i.rx_valid[1];
+    uut.frame_a.next = frame_bits(&frame[0]);
+    uut.frame_b.next = frame_bits(&frame[1]);
+}
+
+/// The block's outputs and state after the edge against the model's: the
+/// events (`fifo`: its pre-edge `fifo_wr`, `fifo_data`, `rx_evt`,
+/// `overrun_evt`), the writer's state and flags, the statistics and the FIFO.
+fn compare(
+    uut: &RxBench,
+    m: &RxPath,
+    pre: &RxPath,
+    ev: &RxEvents,
+    fifo: (bool, Bits<116>, bool, bool),
+    popped: bool,
+    ctx: &dyn Fn() -> String,
+) {
+    let (fifo_wr, fifo_data, rx_evt, overrun_evt) = fifo;
+    assert_eq!(rx_evt, ev.rx, "rx_evt, {}", ctx());
+    assert_eq!(fifo_wr, ev.rx, "fifo_wr, {}", ctx());
+    assert_eq!(overrun_evt, ev.overrun, "overrun_evt, {}", ctx());
+    if ev.rx {
+        let slot = ((pre.head + pre.count) & 31) as usize;
+        // [115:100], the timestamp (§11.2), is the system lock step's
+        assert_eq!(
+            fifo_data.get_bits::<100>(0),
+            entry_bits(&m.ram[slot]),
+            "fifo_data, {}",
+            ctx()
+        );
+    }
+    let w = &uut.rxw;
+    assert_eq!(w.w_state.q.val().to_u8(), m.w_state, "w_state, {}", ctx());
+    let (hv, hu, hd) = flags_of(w);
+    assert_eq!(hv, m.hv, "hv, {}", ctx());
+    assert_eq!(hu, m.hu & m.hv, "hu of the valid entries, {}", ctx());
+    assert_eq!(hd, m.hd & m.hv, "hd of the valid entries, {}", ctx());
+    assert_eq!(w.release_q.q.val(), m.release, "release, {}", ctx());
+    assert_eq!(
+        w.duplicates.val().to_u16(),
+        m.duplicates,
+        "duplicates, {}",
+        ctx()
+    );
+    assert_eq!(w.overruns.val().to_u16(), m.overruns, "overruns, {}", ctx());
+    assert_eq!(
+        w.pcl_frames.val().to_u16(),
+        m.pcl_frames,
+        "pcl_frames, {}",
+        ctx()
+    );
+    assert_eq!(w.released.val().to_u8(), m.released, "released, {}", ctx());
+    assert_eq!(w.expired.val().to_u8(), m.expired, "expired, {}", ctx());
+    let omissions = [w.omissions_a.val().to_u16(), w.omissions_b.val().to_u16()];
+    assert_eq!(omissions, m.omissions, "omissions, {}", ctx());
+    let f = &uut.fifo;
+    assert_eq!(f.head.q.val().to_u8(), m.head, "head, {}", ctx());
+    assert_eq!(f.count.val().to_u8(), m.count, "count, {}", ctx());
+    assert_eq!(f.rx_ready.val(), m.rx_ready, "rx_ready, {}", ctx());
+    // the block's read data runs one pop ahead at a pop edge (rx_fifo.rs),
+    // never observed: the register block blocks the access after a pop
+    if m.rx_ready && !popped {
+        assert_eq!(
+            f.rd_data.val().get_bits::<100>(0),
+            entry_bits(&m.rd),
+            "FIFO head data, {}",
+            ctx()
+        );
+    }
+}
+
+/// What this clock covered, from the model's pre-edge state and what it did.
+fn count_coverage(
+    cov: &mut Coverage,
+    run: &Run,
+    pre: &RxPath,
+    m: &RxPath,
+    ev: &RxEvents,
+    inputs: &RxInputs,
+) {
+    let (rxv, release_set, acl) = (inputs.rx_valid, inputs.release_set, inputs.acl);
+    if !inputs.reset_mode {
+        cov.frames += rxv.iter().filter(|&&v| v).count() as u64;
+        cov.duplicates += (m.duplicates != pre.duplicates) as u64;
+        cov.overruns += ev.overrun as u64;
+        cov.pcl_frames += (m.pcl_frames != pre.pcl_frames) as u64;
+        cov.omissions += (m.omissions != pre.omissions) as u64;
+        cov.acl_switches += release_set as u64;
+        // an undelivered, unmatched entry left hv in a scan (§8 `expired`)
+        let expired_now = run.dmr && pre.hv & !m.hv & !pre.hu & !pre.hd != 0;
+        if expired_now && pre.w_state == W_SCAN {
+            cov.expired_scan += 1;
+        }
+        if expired_now && pre.w_state == W_RSCAN {
+            cov.expired_rscan += 1;
+        }
+        if run.dmr && pre.w_state == W_DECIDE && pre.hit {
+            let waiting = pre.hd & (1 << pre.hit_e) == 0;
+            let pcl = pre.sel != acl;
+            if waiting && !pcl {
+                assert_eq!(m.w_state, W_WRITE);
+                cov.waiting_delivered += 1;
+            }
+            if waiting && pcl {
+                cov.pcl_copy_of_waiting += 1;
+            }
+        }
+        if run.dmr && pre.w_state == W_WRITE && pre.w_hist && pre.w_pcl {
+            cov.hist_recorded_pcl += 1;
+        }
+        if pre.w_state == W_IDLE && m.w_state == W_RSCAN {
+            cov.rscans += 1;
+        }
+        if pre.w_state == W_RSCAN && m.w_state == W_IDLE {
+            cov.rscan_empty += 1;
+        }
+        if pre.w_state == W_RSCAN && pre.scan_i >= 1 && pre.rel_found {
+            let e = pre.scan_i as usize - 1;
+            let h = pre.hist[e];
+            let age = pre.now.wrapping_sub(h.ts);
+            let free = (pre.hv & !pre.hu & !pre.hd) >> e & 1 != 0;
+            if free && h.ch == acl && age <= run.window && age == pre.rel_age {
+                cov.release_ties += 1;
+            }
+        }
+        if pre.w_state == W_RSCAN && m.w_state == W_FETCH {
+            assert!(pre.scan_i == 32);
+        }
+        if pre.w_state == W_RELEASE {
+            cov.releases += 1;
+            cov.release_overruns += ev.overrun as u64;
+        }
+        if pre.hist_idle < 32767 && m.hist_idle == 32767 {
+            cov.forgets += 1;
+            cov.forgets_in_rscan += (pre.w_state == W_RSCAN) as u64;
+            cov.forgets_valid += (pre.hv != 0) as u64;
+            let judged = (1u64 << pre.scan_i.saturating_sub(1)) - 1;
+            cov.forgets_valid_in_rscan +=
+                (pre.hv as u64 & judged != 0 && pre.w_state == W_RSCAN) as u64;
+        }
+        if pre.w_state == W_WRITE && pre.w_hist && pre.hv == 0 && m.hv.count_ones() == 1 {
+            cov.recorded_after_forget += 1;
+        }
+    }
+}
+
 fn run_lockstep(run: &Run, cov: &mut Coverage) {
     let mut rng = Rng::new(run.seed);
     let arrivals = schedule(run, &mut rng);
@@ -218,21 +378,7 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
         };
 
         // ---- drive the block, read its pre-edge outputs ----
-        uut.clk.next = Clock::from(false);
-        uut.rst.next = rst;
-        uut.reset_mode.next = reset_mode;
-        uut.dedup_on.next = dedup_on;
-        uut.dmr.next = run.dmr;
-        uut.first_copy.next = run.first_copy;
-        uut.acl.next = acl != 0;
-        uut.release_set.next = release_set;
-        uut.window.next = (run.window as u64).into();
-        uut.tick.next = tick;
-        uut.pop.next = pop;
-        uut.rxv_a.next = rxv[0];
-        uut.rxv_b.next = rxv[1];
-        uut.frame_a.next = frame_bits(&frame[0]);
-        uut.frame_b.next = frame_bits(&frame[1]);
+        drive(&mut uut, &inputs, rst, &frame);
         settle(&mut uut, "the RX writer bench");
         let fifo_wr = uut.rxw.fifo_wr.val();
         let fifo_data = uut.rxw.fifo_data.val();
@@ -257,123 +403,21 @@ fn run_lockstep(run: &Run, cov: &mut Coverage) {
                 run.seed, clk, pre.w_state, pre.scan_i, pre.sel, pre.hit, pre.hit_e, inputs
             )
         };
-        assert_eq!(rx_evt, ev.rx, "rx_evt, {}", ctx());
-        assert_eq!(fifo_wr, ev.rx, "fifo_wr, {}", ctx());
-        assert_eq!(overrun_evt, ev.overrun, "overrun_evt, {}", ctx());
-        if ev.rx {
-            let slot = ((pre.head + pre.count) & 31) as usize;
-            // [115:100], the timestamp (§11.2), is the system lock step's
-            assert_eq!(
-                fifo_data.get_bits::<100>(0),
-                entry_bits(&m.ram[slot]),
-                "fifo_data, {}",
-                ctx()
-            );
-        }
-        let w = &uut.rxw;
-        assert_eq!(w.w_state.q.val().to_u8(), m.w_state, "w_state, {}", ctx());
-        let (hv, hu, hd) = flags_of(w);
-        assert_eq!(hv, m.hv, "hv, {}", ctx());
-        assert_eq!(hu, m.hu & m.hv, "hu of the valid entries, {}", ctx());
-        assert_eq!(hd, m.hd & m.hv, "hd of the valid entries, {}", ctx());
-        assert_eq!(w.release_q.q.val(), m.release, "release, {}", ctx());
-        assert_eq!(
-            w.duplicates.val().to_u16(),
-            m.duplicates,
-            "duplicates, {}",
-            ctx()
-        );
-        assert_eq!(w.overruns.val().to_u16(), m.overruns, "overruns, {}", ctx());
-        assert_eq!(
-            w.pcl_frames.val().to_u16(),
-            m.pcl_frames,
-            "pcl_frames, {}",
-            ctx()
-        );
-        assert_eq!(w.released.val().to_u8(), m.released, "released, {}", ctx());
-        assert_eq!(w.expired.val().to_u8(), m.expired, "expired, {}", ctx());
-        let omissions = [w.omissions_a.val().to_u16(), w.omissions_b.val().to_u16()];
-        assert_eq!(omissions, m.omissions, "omissions, {}", ctx());
-        let f = &uut.fifo;
-        assert_eq!(f.head.q.val().to_u8(), m.head, "head, {}", ctx());
-        assert_eq!(f.count.val().to_u8(), m.count, "count, {}", ctx());
-        assert_eq!(f.rx_ready.val(), m.rx_ready, "rx_ready, {}", ctx());
-        // the block's read data runs one pop ahead at a pop edge (rx_fifo.rs),
-        // never observed: the register block blocks the access after a pop
         let popped = pop && pre.count != 0 && !rst && !reset_mode;
-        if m.rx_ready && !popped {
-            assert_eq!(
-                f.rd_data.val().get_bits::<100>(0),
-                entry_bits(&m.rd),
-                "FIFO head data, {}",
-                ctx()
-            );
-        }
+        compare(
+            &uut,
+            &m,
+            &pre,
+            &ev,
+            (fifo_wr, fifo_data, rx_evt, overrun_evt),
+            popped,
+            &ctx,
+        );
         prev_pop = pop;
 
         // ---- coverage (from the model's pre-edge state and what it did) ----
-        if !rst && !reset_mode {
-            cov.frames += rxv.iter().filter(|&&v| v).count() as u64;
-            cov.duplicates += (m.duplicates != pre.duplicates) as u64;
-            cov.overruns += ev.overrun as u64;
-            cov.pcl_frames += (m.pcl_frames != pre.pcl_frames) as u64;
-            cov.omissions += (m.omissions != pre.omissions) as u64;
-            cov.acl_switches += release_set as u64;
-            // an undelivered, unmatched entry left hv in a scan (§8 `expired`)
-            let expired_now = run.dmr && pre.hv & !m.hv & !pre.hu & !pre.hd != 0;
-            if expired_now && pre.w_state == W_SCAN {
-                cov.expired_scan += 1;
-            }
-            if expired_now && pre.w_state == W_RSCAN {
-                cov.expired_rscan += 1;
-            }
-            if run.dmr && pre.w_state == W_DECIDE && pre.hit {
-                let waiting = pre.hd & (1 << pre.hit_e) == 0;
-                let pcl = pre.sel != acl;
-                if waiting && !pcl {
-                    assert_eq!(m.w_state, W_WRITE);
-                    cov.waiting_delivered += 1;
-                }
-                if waiting && pcl {
-                    cov.pcl_copy_of_waiting += 1;
-                }
-            }
-            if run.dmr && pre.w_state == W_WRITE && pre.w_hist && pre.w_pcl {
-                cov.hist_recorded_pcl += 1;
-            }
-            if pre.w_state == W_IDLE && m.w_state == W_RSCAN {
-                cov.rscans += 1;
-            }
-            if pre.w_state == W_RSCAN && m.w_state == W_IDLE {
-                cov.rscan_empty += 1;
-            }
-            if pre.w_state == W_RSCAN && pre.scan_i >= 1 && pre.rel_found {
-                let e = pre.scan_i as usize - 1;
-                let h = pre.hist[e];
-                let age = pre.now.wrapping_sub(h.ts);
-                let free = (pre.hv & !pre.hu & !pre.hd) >> e & 1 != 0;
-                if free && h.ch == acl && age <= run.window && age == pre.rel_age {
-                    cov.release_ties += 1;
-                }
-            }
-            if pre.w_state == W_RSCAN && m.w_state == W_FETCH {
-                assert!(pre.scan_i == 32);
-            }
-            if pre.w_state == W_RELEASE {
-                cov.releases += 1;
-                cov.release_overruns += ev.overrun as u64;
-            }
-            if pre.hist_idle < 32767 && m.hist_idle == 32767 {
-                cov.forgets += 1;
-                cov.forgets_in_rscan += (pre.w_state == W_RSCAN) as u64;
-                cov.forgets_valid += (pre.hv != 0) as u64;
-                let judged = (1u64 << pre.scan_i.saturating_sub(1)) - 1;
-                cov.forgets_valid_in_rscan +=
-                    (pre.hv as u64 & judged != 0 && pre.w_state == W_RSCAN) as u64;
-            }
-            if pre.w_state == W_WRITE && pre.w_hist && pre.hv == 0 && m.hv.count_ones() == 1 {
-                cov.recorded_after_forget += 1;
-            }
+        if !rst {
+            count_coverage(cov, run, &pre, &m, &ev, &inputs);
         }
         if release_set {
             acl ^= 1;

@@ -149,147 +149,11 @@ impl Bench {
 
     pub fn step(&mut self) {
         self.clock += 1;
-        // ---- this clock's inputs ----
-        let rst = self.clock <= 2 || self.r.chance(0.0003);
-        if self.hold_left > 0 {
-            self.hold_left -= 1;
-            self.hold = self.hold_left > 0;
-        } else if self.r.chance(0.0008) {
-            self.hold = true;
-            self.hold_left = self.r.range(1, 40) as u32;
-        }
-        if self.hold && self.r.chance(0.05) {
-            // the configuration changes only in reset mode
-            self.cfg = Cfg::random(&mut self.r);
-        }
-        let hold = self.hold;
-        // reset_mode_q: the DRCC's registered reset mode, 1 the clock after hold
-        let reset_mode_q = self.prev_hold;
-        self.prev_hold = hold;
-        let tick = self.r.chance(0.3);
-        let mut done = [false; 2];
-        let mut failed = [false; 2];
-        let mut rx_valid = [false; 2];
-        let mut rx_frame = [Frame::default(); 2];
-        for l in 0..2 {
-            if let Some(mut a) = self.chan[l].att {
-                a.left -= 1;
-                if a.left == 0 {
-                    done[l] = !a.fail;
-                    failed[l] = a.fail;
-                    self.chan[l].att = None;
-                } else {
-                    self.chan[l].att = Some(a);
-                }
-            }
-            // with mailboxes, frames a frame's time apart (§4.4: else the engine's
-            // event jobs starve the evaluation)
-            if self.r.chance(if self.mailboxes { 0.012 } else { 0.06 }) {
-                rx_valid[l] = true;
-                rx_frame[l] = self.frame(0.3);
-            } else if self.r.chance(0.5) {
-                // an idle channel's rx outputs hold old values
-                rx_frame[l] = self.frame(0.3);
-            }
-            self.walk_err_state(l);
-        }
-        let push =
-            !hold && self.q_count < 8 && self.r.chance(if self.mailboxes { 0.03 } else { 0.08 });
-        // the read data register: the entry of the line rd_sel served last edge
-        let (ide, id) = if self.mailboxes || self.r.chance(0.5) {
-            POOL[self.r.below(4) as usize]
-        } else {
-            (true, self.r.below(1 << 29) as u32)
-        };
-        self.rd = Frame {
-            id,
-            ide,
-            ..Frame::default()
-        };
-        let rd_sel = self.rd_sel;
-        let inputs = DmrInputs {
-            running: !hold,
-            tick,
-            reset_mode_q,
-            done,
-            failed,
-            rx_valid,
-            rx_frame,
-            err_state: [self.chan[0].err_state, self.chan[1].err_state],
-            q_count: self.q_count,
-            rd: self.rd,
-            rd_sel: rd_sel as u8,
-        };
-
-        // ---- the block: clk low, inputs, settle ----
-        let u = self.uut.as_mut();
-        u.clk.next = Clock::from(false);
-        u.rst.next = rst;
-        u.hold.next = hold;
-        u.timeout.next = bits(self.cfg.timeout as u64);
-        u.cs_period.next = bits(self.cfg.cs_period as u64);
-        u.tick_bits.next = bits(self.cfg.tick_bits as u64);
-        u.recovery_delay.next = bits(self.cfg.recovery_delay as u64);
-        u.cs_id_dcl.next = bits(self.cfg.cs_id[0] as u64);
-        u.cs_id_rcl.next = bits(self.cfg.cs_id[1] as u64);
-        u.tick.next = tick;
-        u.reset_mode_q.next = reset_mode_q;
-        u.done_dcl.next = done[0];
-        u.done_rcl.next = done[1];
-        u.failed_dcl.next = failed[0];
-        u.failed_rcl.next = failed[1];
-        u.rx_valid_dcl.next = rx_valid[0];
-        u.rx_valid_rcl.next = rx_valid[1];
-        u.rx_ide_dcl.next = rx_frame[0].ide;
-        u.rx_ide_rcl.next = rx_frame[1].ide;
-        u.rx_rtr_dcl.next = rx_frame[0].rtr;
-        u.rx_rtr_rcl.next = rx_frame[1].rtr;
-        u.rx_dlc_dcl.next = bits(rx_frame[0].dlc as u64);
-        u.rx_dlc_rcl.next = bits(rx_frame[1].dlc as u64);
-        u.rx_id_dcl.next = bits(rx_frame[0].id as u64);
-        u.rx_id_rcl.next = bits(rx_frame[1].id as u64);
-        u.err_state_dcl.next = bits(self.chan[0].err_state as u64);
-        u.err_state_rcl.next = bits(self.chan[1].err_state as u64);
-        u.q_count.next = bits(self.q_count as u64);
-        u.rd_ide.next = self.rd.ide;
-        u.rd_id.next = bits(self.rd.id as u64);
-        u.rd_sel.next = rd_sel;
-        u.eval_fault.next = false;
-        u.eval_line.next = false;
-        u.eval_tx.next = false;
-        u.eval_deviation.next = false;
-        u.eval_mb.next = bits(0);
-        assert!(simulate(u, 400), "did not settle");
+        let (rst, hold, push, inputs) = self.draw_inputs();
+        self.drive(rst, hold, &inputs);
 
         // ---- the raises, and the engine's verdict on them (shadow of the model) ----
-        let u = &self.uut;
-        let raised = Raised {
-            tx: [
-                u.raise_tx_dcl
-                    .val()
-                    .then(|| key_of(u.key_tx_dcl.val().to_u64())),
-                u.raise_tx_rcl
-                    .val()
-                    .then(|| key_of(u.key_tx_rcl.val().to_u64())),
-            ],
-            rx: [
-                u.raise_rx_dcl
-                    .val()
-                    .then(|| key_of(u.key_rx_dcl.val().to_u64())),
-                u.raise_rx_rcl
-                    .val()
-                    .then(|| key_of(u.key_rx_rcl.val().to_u64())),
-            ],
-            req: [
-                u.raise_req_dcl
-                    .val()
-                    .then(|| key_of(u.key_req_dcl.val().to_u64())),
-                u.raise_req_rcl
-                    .val()
-                    .then(|| key_of(u.key_req_rcl.val().to_u64())),
-            ],
-            eval: u.raise_eval.val(),
-        };
+        let raised = self.raises();
         let c = self.model.clone();
         let running = !rst && !hold;
         let mut shadow_eng: Engine = c.eng;
@@ -369,6 +233,163 @@ impl Bench {
         self.cov.raise_req += n(&raised.req);
 
         // ---- the environment follows the block's outputs ----
+        self.follow(rst, hold, push, &ev, &at);
+    }
+
+    /// This clock's inputs, drawn: reset, hold (reset mode), the channels'
+    /// attempts, frames and error states, a push, the read data register.
+    /// Returns (rst, hold, push, the model's inputs).
+    fn draw_inputs(&mut self) -> (bool, bool, bool, DmrInputs) {
+        let rst = self.clock <= 2 || self.r.chance(0.0003);
+        if self.hold_left > 0 {
+            self.hold_left -= 1;
+            self.hold = self.hold_left > 0;
+        } else if self.r.chance(0.0008) {
+            self.hold = true;
+            self.hold_left = self.r.range(1, 40) as u32;
+        }
+        if self.hold && self.r.chance(0.05) {
+            // the configuration changes only in reset mode
+            self.cfg = Cfg::random(&mut self.r);
+        }
+        let hold = self.hold;
+        // reset_mode_q: the DRCC's registered reset mode, 1 the clock after hold
+        let reset_mode_q = self.prev_hold;
+        self.prev_hold = hold;
+        let tick = self.r.chance(0.3);
+        let mut done = [false; 2];
+        let mut failed = [false; 2];
+        let mut rx_valid = [false; 2];
+        let mut rx_frame = [Frame::default(); 2];
+        for l in 0..2 {
+            if let Some(mut a) = self.chan[l].att {
+                a.left -= 1;
+                if a.left == 0 {
+                    done[l] = !a.fail;
+                    failed[l] = a.fail;
+                    self.chan[l].att = None;
+                } else {
+                    self.chan[l].att = Some(a);
+                }
+            }
+            // with mailboxes, frames a frame's time apart (§4.4: else the engine's
+            // event jobs starve the evaluation)
+            if self.r.chance(if self.mailboxes { 0.012 } else { 0.06 }) {
+                rx_valid[l] = true;
+                rx_frame[l] = self.frame(0.3);
+            } else if self.r.chance(0.5) {
+                // an idle channel's rx outputs hold old values
+                rx_frame[l] = self.frame(0.3);
+            }
+            self.walk_err_state(l);
+        }
+        let push =
+            !hold && self.q_count < 8 && self.r.chance(if self.mailboxes { 0.03 } else { 0.08 });
+        // the read data register: the entry of the line rd_sel served last edge
+        let (ide, id) = if self.mailboxes || self.r.chance(0.5) {
+            POOL[self.r.below(4) as usize]
+        } else {
+            (true, self.r.below(1 << 29) as u32)
+        };
+        self.rd = Frame {
+            id,
+            ide,
+            ..Frame::default()
+        };
+        let rd_sel = self.rd_sel;
+        let inputs = DmrInputs {
+            running: !hold,
+            tick,
+            reset_mode_q,
+            done,
+            failed,
+            rx_valid,
+            rx_frame,
+            err_state: [self.chan[0].err_state, self.chan[1].err_state],
+            q_count: self.q_count,
+            rd: self.rd,
+            rd_sel: rd_sel as u8,
+        };
+        (rst, hold, push, inputs)
+    }
+
+    /// The block's inputs for this clock, clock low, settled.
+    fn drive(&mut self, rst: bool, hold: bool, inputs: &DmrInputs) {
+        let u = self.uut.as_mut();
+        u.clk.next = Clock::from(false);
+        u.rst.next = rst;
+        u.hold.next = hold;
+        u.timeout.next = bits(self.cfg.timeout as u64);
+        u.cs_period.next = bits(self.cfg.cs_period as u64);
+        u.tick_bits.next = bits(self.cfg.tick_bits as u64);
+        u.recovery_delay.next = bits(self.cfg.recovery_delay as u64);
+        u.cs_id_dcl.next = bits(self.cfg.cs_id[0] as u64);
+        u.cs_id_rcl.next = bits(self.cfg.cs_id[1] as u64);
+        u.tick.next = inputs.tick;
+        u.reset_mode_q.next = inputs.reset_mode_q;
+        u.done_dcl.next = inputs.done[0];
+        u.done_rcl.next = inputs.done[1];
+        u.failed_dcl.next = inputs.failed[0];
+        u.failed_rcl.next = inputs.failed[1];
+        u.rx_valid_dcl.next = inputs.rx_valid[0];
+        u.rx_valid_rcl.next = inputs.rx_valid[1];
+        u.rx_ide_dcl.next = inputs.rx_frame[0].ide;
+        u.rx_ide_rcl.next = inputs.rx_frame[1].ide;
+        u.rx_rtr_dcl.next = inputs.rx_frame[0].rtr;
+        u.rx_rtr_rcl.next = inputs.rx_frame[1].rtr;
+        u.rx_dlc_dcl.next = bits(inputs.rx_frame[0].dlc as u64);
+        u.rx_dlc_rcl.next = bits(inputs.rx_frame[1].dlc as u64);
+        u.rx_id_dcl.next = bits(inputs.rx_frame[0].id as u64);
+        u.rx_id_rcl.next = bits(inputs.rx_frame[1].id as u64);
+        u.err_state_dcl.next = bits(self.chan[0].err_state as u64);
+        u.err_state_rcl.next = bits(self.chan[1].err_state as u64);
+        u.q_count.next = bits(self.q_count as u64);
+        u.rd_ide.next = self.rd.ide;
+        u.rd_id.next = bits(self.rd.id as u64);
+        u.rd_sel.next = self.rd_sel;
+        u.eval_fault.next = false;
+        u.eval_line.next = false;
+        u.eval_tx.next = false;
+        u.eval_deviation.next = false;
+        u.eval_mb.next = bits(0);
+        assert!(simulate(u, 400), "did not settle");
+    }
+
+    /// The block's raises of this clock (before the edge).
+    fn raises(&self) -> Raised {
+        let u = &self.uut;
+        Raised {
+            tx: [
+                u.raise_tx_dcl
+                    .val()
+                    .then(|| key_of(u.key_tx_dcl.val().to_u64())),
+                u.raise_tx_rcl
+                    .val()
+                    .then(|| key_of(u.key_tx_rcl.val().to_u64())),
+            ],
+            rx: [
+                u.raise_rx_dcl
+                    .val()
+                    .then(|| key_of(u.key_rx_dcl.val().to_u64())),
+                u.raise_rx_rcl
+                    .val()
+                    .then(|| key_of(u.key_rx_rcl.val().to_u64())),
+            ],
+            req: [
+                u.raise_req_dcl
+                    .val()
+                    .then(|| key_of(u.key_req_dcl.val().to_u64())),
+                u.raise_req_rcl
+                    .val()
+                    .then(|| key_of(u.key_req_rcl.val().to_u64())),
+            ],
+            eval: u.raise_eval.val(),
+        }
+    }
+
+    /// The environment follows the block's outputs: the TX queue, the read
+    /// selection, the channels' attempts (started, aborted, ended by a restart).
+    fn follow(&mut self, rst: bool, hold: bool, push: bool, ev: &DmrEvents, at: &str) {
         assert!(ev.pop <= self.q_count, "{at}: pop beyond the queue");
         self.q_count = self.q_count - ev.pop + push as u8;
         self.rd_sel = !hold && !rst && !self.rd_sel;

@@ -3,8 +3,9 @@
 //! (seed 003, Table 1 and section IV). Two [`ChannelModel`]s (the channel oracle) are
 //! paired under the redundancy manager: main FSM ([`main_fsm`]), one auxiliary FSM
 //! per channel ([`aux_fsm`]), the TX queues ([`tx_queues`]), the RX FIFO with
-//! duplicate removal ([`rx_path`]) and the Wishbone register file (this file, map in
-//! [`regs`]). The third mode, CiA 701 dual-modular redundancy (`CTRL.dmr`), is the
+//! duplicate removal ([`rx_path`]) and the Wishbone register file
+//! (`register_file.rs`, map in [`regs`]); one clock edge, phase by phase, is
+//! `edge.rs`. The third mode, CiA 701 dual-modular redundancy (`CTRL.dmr`), is the
 //! DMR block ([`dmr`], `dmr_contract.md`).
 //!
 //! Step order (a registered design): every next-state value is computed from the

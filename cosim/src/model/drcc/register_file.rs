@@ -1,6 +1,7 @@
 //! The DRCC model's register file (DRCC contract §3, DMR contract §2.1): the
 //! stored registers and the read side of the Wishbone map. The write side stays
-//! in the edge of [`super::DrccModel`], beside the blocks it drives.
+//! in the edge of [`super::DrccModel`] (`edge.rs`, its host-access phase), beside
+//! the blocks it drives.
 
 use super::ecss::Ecss;
 use super::features::Filters;

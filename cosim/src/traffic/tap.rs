@@ -140,70 +140,6 @@ struct DrccWatch {
     lines: [LineWatch; 2],
 }
 
-/// What [`NodeTap`] keeps per DRCC node (with its host), whatever joins the nodes.
-#[derive(Debug, Default)]
-struct DrccTap {
-    nodes: Vec<DrccWatch>,
-    pending: Pending,
-    /// Only channel A is wired (the ring): events without a line, channel B
-    /// not watched.
-    channel_a_only: bool,
-}
-
-impl DrccTap {
-    fn new(nodes: usize) -> Self {
-        DrccTap {
-            nodes: vec![DrccWatch::default(); nodes],
-            pending: Pending::default(),
-            channel_a_only: false,
-        }
-    }
-
-    /// Takes the clock `cycle` of the nodes `(host, outputs)`.
-    fn observe<'a>(
-        &mut self,
-        cycle: u64,
-        nodes: impl Iterator<Item = (&'a HostDriver, &'a DrccOutputs)>,
-    ) {
-        if !self.pending.is_new(cycle) {
-            return;
-        }
-        let a_only = self.channel_a_only;
-        let channels = if a_only { 1 } else { 2 };
-        for (node, (host, o)) in nodes.enumerate() {
-            if node >= self.nodes.len() {
-                self.nodes.resize(node + 1, DrccWatch::default());
-            }
-            let w = &mut self.nodes[node];
-            let events = &mut self.pending.events;
-            for rx in &host.received[w.received.min(host.received.len())..] {
-                events.push(TrafficEvent {
-                    cycle: rx.cycle,
-                    node,
-                    line: (!a_only).then_some(rx.channel),
-                    kind: TrafficKind::Frame(rx.frame),
-                });
-            }
-            w.received = host.received.len();
-            let ewl = *w
-                .ewl
-                .get_or_insert_with(|| MAP.field("BTR", "ewl").get(host.config().btr) as u8);
-            for (line, watch) in w.lines.iter_mut().enumerate().take(channels) {
-                let line = line as u8;
-                let tag = (!a_only).then_some(line);
-                drcc_line_events(o, line, ewl, watch, &mut |kind| {
-                    events.push(TrafficEvent {
-                        cycle,
-                        node,
-                        line: tag,
-                        kind,
-                    })
-                });
-            }
-        }
-    }
-}
-
 /// One DRCC channel's clock: an error flag that starts (the `field` probe enters
 /// ERROR_FLAG; the field it left is where the error was), then a state change.
 fn drcc_line_events(
@@ -253,12 +189,23 @@ fn drcc_line_events(
 /// normal mode with every frame in TX queue A, never transmits, so it is not
 /// watched. The relay modules have no CAN traffic.
 #[derive(Debug, Default)]
-pub struct NodeTap(DrccTap);
+pub struct NodeTap {
+    /// Per DRCC node (with its host): what was already reported.
+    nodes: Vec<DrccWatch>,
+    pending: Pending,
+    /// Only channel A is wired (the ring): events without a line, channel B
+    /// not watched.
+    channel_a_only: bool,
+}
 
 impl NodeTap {
     /// A tap for a system of `nodes` DRCC nodes.
     pub fn new(nodes: usize) -> Self {
-        NodeTap(DrccTap::new(nodes))
+        NodeTap {
+            nodes: vec![DrccWatch::default(); nodes],
+            pending: Pending::default(),
+            channel_a_only: false,
+        }
     }
 
     /// Takes the clock the system just made.
@@ -266,14 +213,58 @@ impl NodeTap {
         let Some(cycle) = sys.cycle().checked_sub(1) else {
             return;
         };
-        self.0.channel_a_only = !sys.channel_b_wired();
+        self.channel_a_only = !sys.channel_b_wired();
         let nodes = sys.nodes().iter().map(|n| (&n.host, &n.outputs));
-        self.0.observe(cycle, nodes);
+        self.observe_nodes(cycle, nodes);
+    }
+
+    /// Takes the clock `cycle` of the nodes `(host, outputs)`.
+    fn observe_nodes<'a>(
+        &mut self,
+        cycle: u64,
+        nodes: impl Iterator<Item = (&'a HostDriver, &'a DrccOutputs)>,
+    ) {
+        if !self.pending.is_new(cycle) {
+            return;
+        }
+        let a_only = self.channel_a_only;
+        let channels = if a_only { 1 } else { 2 };
+        for (node, (host, o)) in nodes.enumerate() {
+            if node >= self.nodes.len() {
+                self.nodes.resize(node + 1, DrccWatch::default());
+            }
+            let w = &mut self.nodes[node];
+            let events = &mut self.pending.events;
+            for rx in &host.received[w.received.min(host.received.len())..] {
+                events.push(TrafficEvent {
+                    cycle: rx.cycle,
+                    node,
+                    line: (!a_only).then_some(rx.channel),
+                    kind: TrafficKind::Frame(rx.frame),
+                });
+            }
+            w.received = host.received.len();
+            let ewl = *w
+                .ewl
+                .get_or_insert_with(|| MAP.field("BTR", "ewl").get(host.config().btr) as u8);
+            for (line, watch) in w.lines.iter_mut().enumerate().take(channels) {
+                let line = line as u8;
+                let tag = (!a_only).then_some(line);
+                drcc_line_events(o, line, ewl, watch, &mut |kind| {
+                    events.push(TrafficEvent {
+                        cycle,
+                        node,
+                        line: tag,
+                        kind,
+                    })
+                });
+            }
+        }
     }
 
     /// Moves the events collected since the last drain to `out`, oldest first.
     pub fn drain(&mut self, out: &mut Vec<TrafficEvent>) {
-        self.0.pending.drain(out);
+        self.pending.drain(out);
     }
 
     /// [`NodeTap::observe`], then [`NodeTap::drain`].

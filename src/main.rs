@@ -317,7 +317,16 @@ fn main() -> ExitCode {
         Ok(c) => c,
         Err(e) => e.exit(),
     };
-    let result = match cli.command {
+    match run(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => e.report(),
+    }
+}
+
+/// Runs one subcommand: the tools (generate, sim, cosim, wave-diff, demo, bench,
+/// coverage, synth) here, the systems' commands in [`run_system`].
+fn run(command: Command) -> cli::CliResult {
+    match command {
         Command::Generate {
             out,
             check,
@@ -349,6 +358,35 @@ fn main() -> ExitCode {
         } => cli::run::cosim(&scenario, &engines, vcd_dir, &traffic),
         Command::WaveDiff { a, b, signals } => cli::wave::diff(&a, &b, &signals),
         Command::Demo => cli::run::demo(),
+        Command::Bench { seconds } => cli::bench(seconds),
+        Command::Coverage => cli::coverage(),
+        Command::Synth {
+            target,
+            top,
+            all,
+            markdown,
+            json,
+            breakdown,
+            build_dir,
+            pnr_minutes,
+        } => cli::synth::run(cli::synth::SynthArgs {
+            target,
+            top,
+            all,
+            json,
+            markdown,
+            breakdown,
+            build_dir,
+            pnr_minutes,
+        }),
+        command => run_system(command),
+    }
+}
+
+/// Runs a command of the seed systems and their tables: redundancy, star, serve,
+/// ring, dmr, campaign.
+fn run_system(command: Command) -> cli::CliResult {
+    match command {
         Command::Redundancy {
             what,
             engine,
@@ -458,30 +496,6 @@ fn main() -> ExitCode {
             out: out.as_deref(),
             engine: &engine,
         }),
-        Command::Bench { seconds } => cli::bench(seconds),
-        Command::Coverage => cli::coverage(),
-        Command::Synth {
-            target,
-            top,
-            all,
-            markdown,
-            json,
-            breakdown,
-            build_dir,
-            pnr_minutes,
-        } => cli::synth::run(cli::synth::SynthArgs {
-            target,
-            top,
-            all,
-            json,
-            markdown,
-            breakdown,
-            build_dir,
-            pnr_minutes,
-        }),
-    };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => e.report(),
+        _ => unreachable!("run sends only the systems' commands here"),
     }
 }
